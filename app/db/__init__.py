@@ -1,0 +1,1 @@
+"""Storage: SQLAlchemy 2 tables, sessions and repositories; SQLite by default, PostgreSQL by URL."""

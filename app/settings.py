@@ -1,0 +1,40 @@
+"""All configuration, read once from `PHYSCHECK_*` environment variables (or passed in by tests)."""
+
+from __future__ import annotations
+
+from functools import lru_cache
+from pathlib import Path
+
+from pydantic import Field
+from pydantic_settings import BaseSettings, SettingsConfigDict
+
+
+class Settings(BaseSettings):
+    model_config = SettingsConfigDict(env_prefix="PHYSCHECK_", extra="ignore")
+
+    database_url: str = "sqlite:///./physcheck.db"
+    # Server secret for per-student variants and session cookies; a fresh one per start is safe
+    # for development only, since variants would change between restarts.
+    secret: str = Field(default="dev-secret-change-me", min_length=8)
+    base_url: str = "http://127.0.0.1:8000"
+
+    # Bounded work: every check runs in a killable worker process.
+    check_timeout_seconds: float = Field(default=2.0, gt=0)
+    check_memory_mb: int = Field(default=1024, ge=128)
+    check_workers: int = Field(default=2, ge=1)
+    check_queue_size: int = Field(default=64, ge=1)
+    worker_max_tasks: int = Field(default=500, ge=1)
+
+    max_body_bytes: int = Field(default=64 * 1024, ge=1024)
+    max_answer_chars: int = Field(default=2000, ge=10)
+
+    rate_limit_per_minute: int = Field(default=600, ge=1)
+    student_rate_limit_per_minute: int = Field(default=60, ge=1)
+
+    bank_dir: Path | None = None
+    log_level: str = "INFO"
+
+
+@lru_cache
+def get_settings() -> Settings:
+    return Settings()

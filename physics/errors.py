@@ -1,0 +1,120 @@
+"""Errors of the physics core, each carrying fields rather than a bare string.
+
+    PhyscheckError
+     ├── AnswerError        an answer could not be read: an `invalid` verdict, no attempt used
+     │    ├── ParseError          reason parse_error
+     │    ├── AmbiguousInput      reason ambiguous (carries both readings)
+     │    ├── UnknownSymbol       reason unknown_symbol (carries the allowed names)
+     │    ├── UnknownFunction     reason unknown_function (carries the allowed functions)
+     │    ├── TooLarge            reason too_large (a size limit checked before evaluation)
+     │    ├── CheckTimeout        reason timeout (the worker ran out of time)
+     │    ├── MissingUnits        reason missing_units
+     │    ├── UnexpectedUnits     reason unexpected_units
+     │    ├── UnknownUnit         reason unknown_unit
+     │    └── SigfigsError        reason sigfigs (not a literal with the asked significant figures)
+     ├── SpecError          the reference side (expected, symbols, units, a problem file) is unusable;
+     │                      the author's fault, reported as 422 with a path
+     └── DerivationError    the engine could not derive an answer, or its methods disagree
+
+The web layer maps these to HTTP in one place (`app/errors.py`); AnswerError never becomes an HTTP
+error, it becomes an `invalid` verdict.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+
+class PhyscheckError(Exception):
+    """Base of every error the physics core raises on purpose."""
+
+
+class AnswerError(PhyscheckError):
+    """An answer that could not be read; `position` is a 0-based character offset into the text."""
+
+    reason: str = "parse_error"
+
+    def __init__(self, message: str, position: int | None = None) -> None:
+        super().__init__(message)
+        self.message = message
+        self.position = position
+
+
+class ParseError(AnswerError):
+    reason = "parse_error"
+
+
+class AmbiguousInput(AnswerError):
+    reason = "ambiguous"
+
+    def __init__(self, message: str, position: int | None, readings: Sequence[str]) -> None:
+        super().__init__(message, position)
+        self.readings = tuple(readings)
+
+
+class UnknownSymbol(AnswerError):
+    reason = "unknown_symbol"
+
+    def __init__(self, message: str, position: int | None, symbol: str, allowed: Sequence[str]) -> None:
+        super().__init__(message, position)
+        self.symbol = symbol
+        self.allowed = tuple(allowed)
+
+
+class UnknownFunction(AnswerError):
+    reason = "unknown_function"
+
+    def __init__(self, message: str, position: int | None, function: str, allowed: Sequence[str]) -> None:
+        super().__init__(message, position)
+        self.function = function
+        self.allowed = tuple(allowed)
+
+
+class TooLarge(AnswerError):
+    reason = "too_large"
+
+
+class CheckTimeout(AnswerError):
+    reason = "timeout"
+
+
+class MissingUnits(AnswerError):
+    reason = "missing_units"
+
+
+class UnexpectedUnits(AnswerError):
+    reason = "unexpected_units"
+
+
+class UnknownUnit(AnswerError):
+    reason = "unknown_unit"
+
+    def __init__(self, message: str, position: int | None, unit: str) -> None:
+        super().__init__(message, position)
+        self.unit = unit
+
+
+class SigfigsError(AnswerError):
+    reason = "sigfigs"
+
+
+class SpecError(PhyscheckError):
+    """A reference, symbol table, unit or problem file that cannot be used.
+
+    `path` locates the fault in the author's document, e.g. ("symbols", "theta", "range").
+    """
+
+    def __init__(self, message: str, path: Sequence[str | int] = ()) -> None:
+        super().__init__(message)
+        self.message = message
+        self.path = tuple(path)
+
+
+class DerivationError(PhyscheckError):
+    """The engine failed to derive a quantity, or two methods gave different answers."""
+
+    def __init__(self, message: str, problem: str | None = None, quantity: str | None = None) -> None:
+        super().__init__(message)
+        self.message = message
+        self.problem = problem
+        self.quantity = quantity
