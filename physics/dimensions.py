@@ -54,3 +54,92 @@ class Dimension:
 
 
 DIMENSIONLESS = Dimension()
+
+
+def _dim(**exponents: int) -> Dimension:
+    return Dimension(exponents)
+
+
+# Common dimensions named for feedback. Where two quantities share a dimension, the one a mechanics
+# student most often means comes first (a torque reads as "an energy": N·m and J are the same).
+_NAMED: dict[Dimension, str] = {
+    DIMENSIONLESS: "a pure number",
+    _dim(mass=1): "a mass",
+    _dim(length=1): "a length",
+    _dim(time=1): "a time",
+    _dim(current=1): "a current",
+    _dim(temperature=1): "a temperature",
+    _dim(amount=1): "an amount of substance",
+    _dim(luminosity=1): "a luminous intensity",
+    _dim(length=2): "an area",
+    _dim(length=3): "a volume",
+    _dim(length=1, time=-1): "a speed",
+    _dim(length=1, time=-2): "an acceleration",
+    _dim(time=-1): "an angular frequency or rate",
+    _dim(time=-2): "an angular acceleration",
+    _dim(mass=1, length=1, time=-2): "a force",
+    _dim(mass=1, length=2, time=-2): "an energy",
+    _dim(mass=1, length=2, time=-3): "a power",
+    _dim(mass=1, length=-1, time=-2): "a pressure",
+    _dim(mass=1, length=1, time=-1): "a momentum",
+    _dim(mass=1, length=2, time=-1): "an angular momentum",
+    _dim(mass=1, length=2): "a moment of inertia",
+    _dim(mass=1, time=-2): "a spring constant",
+    _dim(mass=1, length=-3): "a density",
+    _dim(mass=1, time=-1): "a mass flow rate",
+    _dim(length=3, time=-1): "a volume flow rate",
+    _dim(length=2, time=-2, temperature=-1): "a specific heat capacity",
+    _dim(mass=1, length=2, time=-2, temperature=-1): "a heat capacity",
+    _dim(current=1, time=1): "an electric charge",
+    _dim(mass=1, length=2, time=-3, current=-1): "a voltage",
+    _dim(mass=1, length=2, time=-3, current=-2): "a resistance",
+    _dim(mass=-1, length=-2, time=4, current=2): "a capacitance",
+    _dim(mass=1, length=2, time=-2, current=-2): "an inductance",
+    _dim(mass=1, time=-2, current=-1): "a magnetic field",
+    _dim(mass=1, length=1, time=-3, current=-1): "an electric field",
+    _dim(mass=-1, length=3, time=-2): "a gravitational constant",
+}
+
+_SI_SYMBOLS = {
+    "mass": "kg",
+    "length": "m",
+    "time": "s",
+    "current": "A",
+    "temperature": "K",
+    "amount": "mol",
+    "luminosity": "cd",
+}
+_SI_ORDER = ("mass", "length", "time", "current", "temperature", "amount", "luminosity")
+_SUPERSCRIPTS = str.maketrans("0123456789", "⁰¹²³⁴⁵⁶⁷⁸⁹")
+
+
+def _si_power(base: str, power: Fraction) -> str:
+    symbol = _SI_SYMBOLS[base]
+    if power == 1:
+        return symbol
+    if power.denominator == 1:
+        return symbol + str(power.numerator).translate(_SUPERSCRIPTS)
+    return f"{symbol}^({power})"
+
+
+def si_form(dim: Dimension) -> str:
+    """The dimension as SI base units: `kg·m²/s³`, `1/s`, `kg/(m·s²)`, `1` for a pure number."""
+    exponents = dim.exponents
+    top = [_si_power(b, exponents[b]) for b in _SI_ORDER if exponents.get(b, 0) > 0]
+    bottom = [_si_power(b, -exponents[b]) for b in _SI_ORDER if exponents.get(b, 0) < 0]
+    numerator = "·".join(top) if top else "1"
+    if not bottom:
+        return numerator
+    denominator = "·".join(bottom)
+    return f"{numerator}/({denominator})" if len(bottom) > 1 else f"{numerator}/{denominator}"
+
+
+def describe(dim: Dimension) -> str:
+    """A phrase naming the quantity, for feedback: "a force", "an acceleration", "a pure number".
+
+    Falls back to the SI form ("a quantity in kg·m²/s³") for dimensions without a common name.
+    """
+    named = _NAMED.get(dim)
+    if named is not None:
+        return named
+    return f"a quantity in {si_form(dim)}"

@@ -14,6 +14,7 @@
      │    └── SigfigsError        reason sigfigs (not a literal with the asked significant figures)
      ├── SpecError          the reference side (expected, symbols, units, a problem file) is unusable;
      │                      the author's fault, reported as 422 with a path
+     │    └── SpecErrors      several SpecErrors of one document, all at once (`.errors`)
      └── DerivationError    the engine could not derive an answer, or its methods disagree
 
 The web layer maps these to HTTP in one place (`app/errors.py`); AnswerError never becomes an HTTP
@@ -118,3 +119,13 @@ class DerivationError(PhyscheckError):
         self.message = message
         self.problem = problem
         self.quantity = quantity
+
+
+class SpecErrors(SpecError):
+    """Several SpecErrors found in one document, reported together (each keeps its own path)."""
+
+    def __init__(self, errors: Sequence[SpecError]) -> None:
+        self.errors = tuple(errors)
+        lines = [f"{'/'.join(str(p) for p in e.path) or '(document)'}: {e.message}" for e in self.errors]
+        first_path = self.errors[0].path if self.errors else ()
+        super().__init__(f"{len(self.errors)} error(s):\n" + "\n".join(lines), first_path)

@@ -1,0 +1,31 @@
+# The two commands of the README: `make serve` and `make test`. Both set up .venv from the lock first.
+PYTHON ?= python3
+VENV := .venv
+BIN := $(VENV)/bin
+
+.PHONY: serve test lint lock
+
+$(BIN)/physcheck: requirements-dev.lock pyproject.toml
+	$(PYTHON) -m venv $(VENV)
+	$(BIN)/pip install --quiet --upgrade pip
+	$(BIN)/pip install --quiet -r requirements-dev.lock
+	$(BIN)/pip install --quiet --no-deps -e .
+	touch $@
+
+serve: $(BIN)/physcheck
+	$(BIN)/physcheck serve
+
+lint: $(BIN)/physcheck
+	$(BIN)/ruff check .
+	$(BIN)/ruff format --check app physics problems
+	$(BIN)/mypy
+
+test: lint
+	$(BIN)/physcheck bank verify --variants 5
+	$(BIN)/pytest -q
+
+# Re-pin both locks from pyproject.toml (needs the network to PyPI).
+lock:
+	rm -rf /tmp/physcheck-lock && $(PYTHON) -m venv /tmp/physcheck-lock
+	/tmp/physcheck-lock/bin/pip install --quiet . && /tmp/physcheck-lock/bin/pip freeze --exclude physcheck > requirements.lock
+	/tmp/physcheck-lock/bin/pip install --quiet '.[dev]' && /tmp/physcheck-lock/bin/pip freeze --exclude physcheck > requirements-dev.lock

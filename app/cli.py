@@ -1,0 +1,98 @@
+"""The `physcheck` command: serve, keys, bank verify, problems, submissions, lti (API.md "Command line")."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from collections.abc import Callable, Sequence
+
+from app.settings import Settings, get_settings
+
+Handler = Callable[[argparse.Namespace, Settings], int]
+
+
+def _serve(args: argparse.Namespace, settings: Settings) -> int:
+    import uvicorn
+
+    from app.main import create_app
+
+    uvicorn.run(create_app(settings), host=args.host, port=args.port, log_config=None, proxy_headers=True)
+    return 0
+
+
+def _keys_create(args: argparse.Namespace, settings: Settings) -> int:
+    from app.keys import create_key
+    from app.startup import open_database
+
+    database = open_database(settings)
+    try:
+        plaintext, record = create_key(database, role=args.role, name=args.name, student=args.student)
+    finally:
+        database.dispose()
+    print(
+        f"Created {record.role} key {record.id} ({record.name or 'unnamed'}); it is shown only once:",
+        file=sys.stderr,
+    )
+    print(plaintext)
+    return 0
+
+
+def _keys_revoke(args: argparse.Namespace, settings: Settings) -> int:
+    from app.keys import revoke_key
+    from app.startup import open_database
+
+    database = open_database(settings)
+    try:
+        revoke_key(database, args.key_id)
+    finally:
+        database.dispose()
+    print(f"Revoked key {args.key_id}.")
+    return 0
+
+
+def _bank_verify(args: argparse.Namespace, settings: Settings) -> int:
+    from app.bank_verify import verify_command
+
+    return verify_command(variants=args.variants, only=args.problem)
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(prog="physcheck", description=__doc__)
+    commands = parser.add_subparsers(dest="command", required=True)
+
+    serve = commands.add_parser("serve", help="apply migrations, load the bank, serve the API and pages")
+    serve.add_argument("--host", default="127.0.0.1")
+    serve.add_argument("--port", type=int, default=8000)
+    serve.set_defaults(handler=_serve)
+
+    keys = commands.add_parser("keys", help="API keys").add_subparsers(dest="keys_command", required=True)
+    create = keys.add_parser("create", help="create a key and print it as the last line (shown once)")
+    create.add_argument("--role", choices=["instructor", "student"], required=True)
+    create.add_argument("--name", default=None)
+    create.add_argument(
+        "--student", default=None, help="identity a student key files submissions under (default: a fresh id)"
+    )
+    create.set_defaults(handler=_keys_create)
+    revoke = keys.add_parser("revoke", help="revoke a key by its id")
+    revoke.add_argument("key_id", type=int)
+    revoke.set_defaults(handler=_keys_revoke)
+
+    bank = commands.add_parser("bank", help="the built-in problem bank").add_subparsers(
+        dest="bank_command", required=True
+    )
+    verify = bank.add_parser("verify", help="re-derive and self-test every problem; non-zero exit on failure")
+    verify.add_argument("--variants", type=int, default=20, help="random student variants per problem")
+    verify.add_argument("--problem", action="append", default=None, help="only this problem (repeatable)")
+    verify.set_defaults(handler=_bank_verify)
+
+    return parser
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    args = build_parser().parse_args(argv)
+    handler: Handler = args.handler
+    return handler(args, get_settings())
+
+
+if __name__ == "__main__":
+    sys.exit(main())

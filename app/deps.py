@@ -1,0 +1,48 @@
+"""FastAPI dependencies as `Annotated` aliases: the services, the caller, and role checks."""
+
+from __future__ import annotations
+
+from typing import Annotated
+
+from fastapi import Depends, Header, Request
+
+from app.auth import Principal, bearer_token
+from app.errors import Forbidden, RateLimited, Unauthenticated
+from app.services import Services
+
+
+def get_services(request: Request) -> Services:
+    services: Services = request.app.state.services
+    return services
+
+
+ServicesDep = Annotated[Services, Depends(get_services)]
+
+
+def current_principal(
+    services: ServicesDep, authorization: Annotated[str | None, Header()] = None
+) -> Principal:
+    token = bearer_token(authorization)
+    if token is None:
+        raise Unauthenticated("Send an API key as 'Authorization: Bearer <key>'.")
+    principal = services.keys.authenticate(token)
+    if principal is None:
+        raise Unauthenticated("This API key is unknown or revoked.")
+    wait = services.key_limiter.retry_after(principal.key_id)
+    if wait is None and principal.student is not None:
+        wait = services.student_limiter.retry_after(principal.student)
+    if wait is not None:
+        raise RateLimited(f"Too many requests; try again in {wait} s.", retry_after=wait)
+    return principal
+
+
+CurrentPrincipal = Annotated[Principal, Depends(current_principal)]
+
+
+def instructor(principal: CurrentPrincipal) -> Principal:
+    if not principal.is_instructor:
+        raise Forbidden("This needs an instructor key.")
+    return principal
+
+
+Instructor = Annotated[Principal, Depends(instructor)]

@@ -1,0 +1,137 @@
+"""Every error the service reports, and the one place they become HTTP responses.
+
+    AppError                       carries status, code, message, details
+     ├── Unauthenticated   401    no key, unknown or revoked key
+     ├── Forbidden         403    the key's role may not do this
+     ├── NotFound          404    unknown problem, part or submission (or not yours)
+     ├── Conflict          409    e.g. no attempts left
+     ├── PayloadTooLarge   413
+     ├── RateLimited       429    with Retry-After
+     └── Busy              503    the grading queue is full, with Retry-After
+
+Domain errors from the core (`physics.errors.SpecError`) and from storage are mapped here too; an
+answer that cannot be read is never an error: it is an `invalid` verdict with status 200.
+"""
+
+from __future__ import annotations
+
+import logging
+from collections.abc import Sequence
+from typing import Any
+
+from fastapi import FastAPI, Request
+from fastapi.exceptions import RequestValidationError
+from fastapi.responses import JSONResponse
+from starlette.exceptions import HTTPException as StarletteHTTPException
+
+from physics.errors import SpecError
+
+log = logging.getLogger("physcheck.errors")
+
+
+class AppError(Exception):
+    status = 500
+    code = "internal"
+
+    def __init__(
+        self, message: str, details: Sequence[dict[str, Any]] = (), headers: dict[str, str] | None = None
+    ):
+        super().__init__(message)
+        self.message = message
+        self.details = list(details)
+        self.headers = headers or {}
+
+
+class Unauthenticated(AppError):
+    status, code = 401, "unauthenticated"
+
+
+class Forbidden(AppError):
+    status, code = 403, "forbidden"
+
+
+class NotFound(AppError):
+    status, code = 404, "not_found"
+
+
+class Conflict(AppError):
+    status, code = 409, "conflict"
+
+
+class PayloadTooLarge(AppError):
+    status, code = 413, "payload_too_large"
+
+
+class RateLimited(AppError):
+    status, code = 429, "rate_limited"
+
+    def __init__(self, message: str, retry_after: int):
+        super().__init__(message, headers={"Retry-After": str(retry_after)})
+
+
+class Busy(AppError):
+    status, code = 503, "busy"
+
+    def __init__(self, message: str, retry_after: int = 1):
+        super().__init__(message, headers={"Retry-After": str(retry_after)})
+
+
+def error_body(code: str, message: str, details: Sequence[dict[str, Any]] = ()) -> dict[str, Any]:
+    return {"error": {"code": code, "message": message, "details": list(details)}}
+
+
+def _json(
+    status: int,
+    code: str,
+    message: str,
+    details: Sequence[dict[str, Any]] = (),
+    headers: dict[str, str] | None = None,
+) -> JSONResponse:
+    return JSONResponse(error_body(code, message, details), status_code=status, headers=headers)
+
+
+_HTTP_CODES = {
+    400: "bad_request",
+    401: "unauthenticated",
+    403: "forbidden",
+    404: "not_found",
+    405: "method_not_allowed",
+    413: "payload_too_large",
+    415: "unsupported_media_type",
+    422: "malformed_request",
+    429: "rate_limited",
+}
+
+
+def _path(loc: Sequence[Any]) -> str:
+    parts = [str(p) for p in loc if p not in ("body",)]
+    return ".".join(parts)
+
+
+def install_error_handlers(app: FastAPI) -> None:
+    @app.exception_handler(AppError)
+    async def app_error(request: Request, error: AppError) -> JSONResponse:
+        return _json(error.status, error.code, error.message, error.details, error.headers)
+
+    @app.exception_handler(SpecError)
+    async def spec_error(request: Request, error: SpecError) -> JSONResponse:
+        details = [{"path": ".".join(str(p) for p in error.path), "message": error.message}]
+        return _json(422, "invalid_reference", error.message, details)
+
+    @app.exception_handler(RequestValidationError)
+    async def malformed(request: Request, error: RequestValidationError) -> JSONResponse:
+        details = [
+            {"path": _path(e.get("loc", ())), "message": e.get("msg", "invalid")} for e in error.errors()
+        ]
+        return _json(422, "malformed_request", "The request is malformed: see details.", details)
+
+    @app.exception_handler(StarletteHTTPException)
+    async def http_error(request: Request, error: StarletteHTTPException) -> JSONResponse:
+        code = _HTTP_CODES.get(error.status_code, "error")
+        return _json(error.status_code, code, str(error.detail), headers=getattr(error, "headers", None))
+
+    @app.exception_handler(Exception)
+    async def fault(request: Request, error: Exception) -> JSONResponse:
+        request_id = getattr(request.state, "request_id", None)
+        log.exception("unhandled error", extra={"request_id": request_id})
+        return _json(500, "internal", f"Internal error (request {request_id}); it has been logged.")

@@ -1,0 +1,89 @@
+"""A pool of killable worker processes with a bounded queue in front of it."""
+
+from __future__ import annotations
+
+import asyncio
+import logging
+import multiprocessing
+from collections.abc import Callable
+from concurrent.futures import TimeoutError as FutureTimeout
+
+from pebble import ProcessExpired, ProcessPool
+
+from app.errors import Busy
+from app.grading.worker import WARM_UP_JOBS, SpecProblem, grade, limit_memory
+from physics.checking import CheckJob
+from physics.errors import CheckTimeout, SpecError, TooLarge
+from physics.verdict import Verdict
+
+log = logging.getLogger("physcheck.grading")
+
+TIMEOUT_MESSAGE = "Could not check this in time; simplify your answer."
+
+
+class GradingPool:
+    def __init__(
+        self,
+        workers: int,
+        timeout: float,
+        memory_mb: int,
+        max_tasks: int,
+        queue_size: int,
+        task: Callable[[CheckJob], Verdict | SpecProblem] = grade,
+    ):
+        self._task = task
+        self._workers = workers
+        self._timeout = timeout
+        self._memory_mb = memory_mb
+        self._max_tasks = max_tasks
+        self._capacity = workers + queue_size
+        self._in_flight = 0
+        self._pool: ProcessPool | None = None
+
+    def start(self) -> None:
+        # forkserver: workers fork from a clean, pre-warmed process, not from the threaded server.
+        context = multiprocessing.get_context("forkserver")
+        context.set_forkserver_preload(["app.grading.worker"])
+        self._pool = ProcessPool(
+            max_workers=self._workers,
+            max_tasks=self._max_tasks,
+            initializer=limit_memory,
+            initargs=(self._memory_mb,),
+            context=context,
+        )
+        # One small job per worker so the first real request does not pay for lazy imports.
+        warm = [self._submit(job) for _ in range(self._workers) for job in WARM_UP_JOBS]
+        for future in warm:
+            future.result(timeout=60)
+
+    def close(self) -> None:
+        if self._pool is not None:
+            self._pool.stop()
+            self._pool.join(timeout=5)
+            self._pool = None
+
+    @property
+    def in_flight(self) -> int:
+        return self._in_flight
+
+    def _submit(self, job: CheckJob):  # type: ignore[no-untyped-def]
+        assert self._pool is not None, "GradingPool.start() was not called"
+        return self._pool.schedule(self._task, args=(job,), timeout=self._timeout)
+
+    async def check(self, job: CheckJob) -> Verdict:
+        """Grade in a worker; a timeout or a killed worker is an `invalid` verdict, never a hang."""
+        if self._in_flight >= self._capacity:
+            raise Busy("The grading queue is full; try again shortly.", retry_after=1)
+        self._in_flight += 1
+        try:
+            outcome = await asyncio.wrap_future(self._submit(job))
+        except FutureTimeout:
+            return Verdict.invalid(CheckTimeout(TIMEOUT_MESSAGE))
+        except ProcessExpired as error:
+            log.error("grading worker died (exit code %s)", error.exitcode)
+            return Verdict.invalid(TooLarge("This answer is too large to check; simplify it."))
+        finally:
+            self._in_flight -= 1
+        if isinstance(outcome, SpecProblem):
+            raise SpecError(outcome.message, outcome.path)
+        return outcome

@@ -1,0 +1,49 @@
+"""Everything the LTI routes need, in one object: the app keeps it in `app.state.lti`, and
+`get_lti_context` (a FastAPI dependency, overridable) hands it to the routes."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from datetime import datetime
+from urllib.parse import urlsplit
+
+import httpx
+from fastapi import Request
+
+from app.db.database import Database
+from app.db.types import utc_now
+from app.lti.platform_keys import PlatformKeyCache
+from app.settings import Settings
+
+HTTP_TIMEOUT_SECONDS = 10.0
+
+
+@dataclass
+class LtiContext:
+    database: Database
+    settings: Settings
+    # Outgoing HTTP (platform JWKS); tests pass a loopback transport to a fake LMS.
+    transport: httpx.AsyncBaseTransport | None = None
+    clock: Callable[[], datetime] = utc_now
+    platform_keys: PlatformKeyCache = field(init=False)
+
+    def __post_init__(self) -> None:
+        self.platform_keys = PlatformKeyCache(self.http_client, self.clock)
+
+    def http_client(self) -> httpx.AsyncClient:
+        return httpx.AsyncClient(transport=self.transport, timeout=HTTP_TIMEOUT_SECONDS)
+
+    def url(self, path: str) -> str:
+        """An absolute URL of ours, from the configured `base_url`."""
+        return self.settings.base_url.rstrip("/") + path
+
+    @property
+    def origin(self) -> str:
+        parts = urlsplit(self.settings.base_url)
+        return f"{parts.scheme}://{parts.netloc}"
+
+
+def get_lti_context(request: Request) -> LtiContext:
+    context: LtiContext = request.app.state.lti
+    return context

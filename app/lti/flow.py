@@ -1,0 +1,339 @@
+"""The LTI 1.3 message flow: OIDC login initiation, launch, and the deep-linking answer.
+
+Login stores (state hash, nonce, platform, browser) and sends the browser to the platform; launch
+takes that row back exactly once (deleted on first use, whatever the outcome), verifies the id_token,
+spends the nonce, and opens a session. Database work runs in a worker thread; HTTP stays async.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+import secrets
+import uuid
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from datetime import datetime, timedelta
+from typing import Any
+from urllib.parse import urlencode, urlsplit
+
+from sqlalchemy import delete, select
+from sqlalchemy.exc import IntegrityError
+from sqlalchemy.orm import Session
+from starlette.concurrency import run_in_threadpool
+
+from app.auth import Role
+from app.db.problems import list_problems
+from app.lti import keys
+from app.lti.context import LtiContext
+from app.lti.errors import MalformedRequest, NotPermitted, PlatformNotFound
+from app.lti.id_token import (
+    CLAIM_DEPLOYMENT_ID,
+    CLAIM_MESSAGE_TYPE,
+    CLAIM_VERSION,
+    DEEP_LINKING_REQUEST,
+    LTI_VERSION,
+    LaunchClaims,
+    verify_id_token,
+)
+from app.lti.models import LtiDeepLinkRequest, LtiGradeTarget, LtiLoginState, LtiSession, LtiUsedNonce
+from app.lti.pages import ProblemChoice
+from app.lti.platforms import PlatformRecord, find_platform, get_platform, is_deployed
+from app.lti.sessions import SessionRecord, open_session, role_from_claims, token_hash
+
+LOGIN_LIFETIME = timedelta(minutes=10)
+DEEP_LINK_LIFETIME = timedelta(hours=1)
+# Nonces are remembered a while past the longest id_token life we accept.
+NONCE_RETENTION = timedelta(hours=2)
+BROWSER_COOKIE = "physcheck_lti_browser"
+PROBLEM_ID = re.compile(r"^[A-Za-z0-9][A-Za-z0-9._-]{0,99}$")
+_MAX_PARAM_CHARS = 2048
+
+CLAIM_CONTENT_ITEMS = "https://purl.imsglobal.org/spec/lti-dl/claim/content_items"
+CLAIM_DL_DATA = "https://purl.imsglobal.org/spec/lti-dl/claim/data"
+
+
+def _param(params: Mapping[str, str], name: str, *, required: bool = True) -> str | None:
+    value = params.get(name)
+    if value is None or value == "":
+        if required:
+            raise MalformedRequest(f"missing_{name}", f"The request lacks the '{name}' parameter.")
+        return None
+    if len(value) > _MAX_PARAM_CHARS:
+        raise MalformedRequest(f"bad_{name}", f"The '{name}' parameter is too long.")
+    return value
+
+
+# ---- login initiation ------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class LoginRedirect:
+    url: str
+    browser_token: str  # the cookie that binds the state to this browser (new or kept)
+
+
+async def begin_login(
+    context: LtiContext, params: Mapping[str, str], browser_token: str | None
+) -> LoginRedirect:
+    issuer = _param(params, "iss")
+    login_hint = _param(params, "login_hint")
+    target = _param(params, "target_link_uri")
+    client_id = _param(params, "client_id", required=False)
+    deployment_id = _param(params, "lti_deployment_id", required=False)
+    message_hint = _param(params, "lti_message_hint", required=False)
+    assert issuer is not None and login_hint is not None and target is not None
+    parts = urlsplit(target)
+    if f"{parts.scheme}://{parts.netloc}" != context.origin:
+        raise MalformedRequest("foreign_target", "The target_link_uri does not point to this tool.")
+    if browser_token is None or not 20 <= len(browser_token) <= 100:
+        browser_token = secrets.token_urlsafe(32)
+    state = secrets.token_urlsafe(32)
+    nonce = secrets.token_urlsafe(32)
+
+    def store() -> PlatformRecord:
+        now = context.clock()
+        with context.database.session() as session:
+            try:
+                platform = find_platform(session, issuer, client_id)
+            except PlatformNotFound as error:
+                raise MalformedRequest(
+                    "unknown_platform", "This LMS is not registered with the tool."
+                ) from error
+            if deployment_id is not None and not is_deployed(session, platform.id, deployment_id):
+                raise NotPermitted("unknown_deployment", "This deployment is not registered with the tool.")
+            session.execute(delete(LtiLoginState).where(LtiLoginState.expires_at < now))
+            session.add(
+                LtiLoginState(
+                    state_hash=token_hash(state),
+                    nonce=nonce,
+                    browser_hash=token_hash(browser_token),
+                    platform_id=platform.id,
+                    expires_at=now + LOGIN_LIFETIME,
+                )
+            )
+            return platform
+
+    platform = await run_in_threadpool(store)
+    query = {
+        "scope": "openid",
+        "response_type": "id_token",
+        "response_mode": "form_post",
+        "prompt": "none",
+        "client_id": platform.client_id,
+        "redirect_uri": context.url("/lti/launch"),
+        "login_hint": login_hint,
+        "state": state,
+        "nonce": nonce,
+    }
+    if message_hint is not None:
+        query["lti_message_hint"] = message_hint
+    separator = "&" if urlsplit(platform.auth_url).query else "?"
+    return LoginRedirect(platform.auth_url + separator + urlencode(query), browser_token)
+
+
+# ---- launch ----------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class LaunchOutcome:
+    session_id: str
+    session: SessionRecord
+    claims: LaunchClaims
+    platform: PlatformRecord
+    problem_id: str | None  # resource link launches
+    deep_link_id: str | None  # deep linking launches
+
+
+async def complete_launch(
+    context: LtiContext, form: Mapping[str, str], browser_token: str | None
+) -> LaunchOutcome:
+    id_token = _param(form, "id_token")
+    state = _param(form, "state")
+    assert id_token is not None and state is not None
+
+    def take_state() -> tuple[PlatformRecord, LtiLoginState]:
+        # Deleted on first use, whatever the outcome: the checks run after the transaction commits.
+        with context.database.session() as session:
+            row = session.get(LtiLoginState, token_hash(state))
+            if row is None:
+                raise MalformedRequest("unknown_state", "This launch does not match a login in progress.")
+            session.delete(row)
+            return get_platform(session, row.platform_id), row
+
+    platform, login = await run_in_threadpool(take_state)
+    if login.expires_at < context.clock():
+        raise MalformedRequest("expired_state", "The login took too long; open the activity again.")
+    if browser_token is None or not secrets.compare_digest(login.browser_hash, token_hash(browser_token)):
+        raise MalformedRequest(
+            "state_mismatch", "This launch was started in another browser (or cookies are blocked)."
+        )
+    nonce = login.nonce
+    claims = await verify_id_token(
+        id_token, platform, context.platform_keys, now=context.clock(), expected_nonce=nonce
+    )
+    problem_id: str | None = None
+    if claims.message_type != DEEP_LINKING_REQUEST:
+        problem = claims.custom.get("problem")
+        if not isinstance(problem, str) or not PROBLEM_ID.match(problem):
+            raise MalformedRequest(
+                "no_problem", "This link names no physcheck problem (custom parameter 'problem')."
+            )
+        problem_id = problem
+    role = role_from_claims(claims.roles)
+    if claims.message_type == DEEP_LINKING_REQUEST and role is not Role.INSTRUCTOR:
+        raise NotPermitted("not_instructor", "Only instructors can add problems to a course.")
+
+    def open_launch() -> LaunchOutcome:
+        now = context.clock()
+        with context.database.session() as session:
+            if not is_deployed(session, platform.id, claims.deployment_id):
+                raise NotPermitted("unknown_deployment", "This deployment is not registered with the tool.")
+            _spend_nonce(session, platform.id, claims.nonce, now)
+            session_id, record = open_session(
+                session, platform_id=platform.id, sub=claims.sub, role=role, name=claims.name, now=now
+            )
+            deep_link_id: str | None = None
+            if claims.deep_link_return_url is not None:
+                deep_link_id = secrets.token_urlsafe(32)
+                session.add(
+                    LtiDeepLinkRequest(
+                        id=deep_link_id,
+                        session_hash=token_hash(session_id),
+                        platform_id=platform.id,
+                        deployment_id=claims.deployment_id,
+                        return_url=claims.deep_link_return_url,
+                        data=None if claims.deep_link_data is None else json.dumps(claims.deep_link_data),
+                        expires_at=now + DEEP_LINK_LIFETIME,
+                    )
+                )
+            if problem_id is not None and claims.lineitem_url is not None:
+                _record_grade_target(session, platform.id, record.student, problem_id, claims)
+            return LaunchOutcome(session_id, record, claims, platform, problem_id, deep_link_id)
+
+    return await run_in_threadpool(open_launch)
+
+
+def _spend_nonce(session: Session, platform_id: int, nonce: str, now: datetime) -> None:
+    session.execute(delete(LtiUsedNonce).where(LtiUsedNonce.expires_at < now))
+    try:
+        with session.begin_nested():
+            session.add(
+                LtiUsedNonce(platform_id=platform_id, nonce=nonce[:255], expires_at=now + NONCE_RETENTION)
+            )
+    except IntegrityError as error:
+        raise NotPermitted("replayed", "This launch was already used; open the activity again.") from error
+
+
+def _record_grade_target(
+    session: Session, platform_id: int, student: str, problem_id: str, claims: LaunchClaims
+) -> None:
+    assert claims.lineitem_url is not None
+    existing = session.scalars(
+        select(LtiGradeTarget).where(
+            LtiGradeTarget.platform_id == platform_id,
+            LtiGradeTarget.student == student,
+            LtiGradeTarget.problem_id == problem_id,
+            LtiGradeTarget.lineitem_url == claims.lineitem_url,
+        )
+    ).one_or_none()
+    if existing is None:
+        try:
+            with session.begin_nested():
+                session.add(
+                    LtiGradeTarget(
+                        platform_id=platform_id,
+                        student=student,
+                        problem_id=problem_id,
+                        lineitem_url=claims.lineitem_url,
+                        sub=claims.sub,
+                        last_timestamp=None,
+                    )
+                )
+        except IntegrityError:
+            pass  # a concurrent launch recorded it
+
+
+# ---- deep linking ----------------------------------------------------------------------------------
+
+
+def problem_choices(session: Session) -> list[ProblemChoice]:
+    """Every live problem (the bank and instructors' own), with its line item's maximum: one point
+    per part."""
+    choices = []
+    for record in list_problems(session):
+        title = record.document.get("title")
+        parts = record.document.get("parts")
+        count = len(parts) if isinstance(parts, list) and parts else 1
+        choices.append(ProblemChoice(record.id, title if isinstance(title, str) else record.id, float(count)))
+    return choices
+
+
+@dataclass(frozen=True)
+class DeepLinkRequestRecord:
+    id: str
+    platform: PlatformRecord
+    deployment_id: str
+    return_url: str
+    data: Any
+    csrf_token: str
+
+
+def load_deep_link(
+    session: Session, request_id: str, csrf_token: str, now: datetime
+) -> DeepLinkRequestRecord:
+    """The pending request, if the form carries the CSRF token of the session that opened it."""
+    row = session.get(LtiDeepLinkRequest, request_id) if len(request_id) <= 64 else None
+    if row is None or row.expires_at < now:
+        raise MalformedRequest("unknown_deep_link", "This selection has expired; start again from the LMS.")
+    owner = session.get(LtiSession, row.session_hash)
+    if owner is None or not secrets.compare_digest(owner.csrf_token.encode(), csrf_token.encode()):
+        raise NotPermitted("bad_csrf_token", "The form is not one this tool issued to you.")
+    return DeepLinkRequestRecord(
+        id=row.id,
+        platform=get_platform(session, row.platform_id),
+        deployment_id=row.deployment_id,
+        return_url=row.return_url,
+        data=None if row.data is None else json.loads(row.data),
+        csrf_token=owner.csrf_token,
+    )
+
+
+def content_item(context: LtiContext, choice: ProblemChoice) -> dict[str, Any]:
+    return {
+        "type": "ltiResourceLink",
+        "title": choice.title,
+        "url": context.url("/lti/launch"),
+        "custom": {"problem": choice.id},
+        "lineItem": {"scoreMaximum": choice.score_maximum, "label": choice.title, "resourceId": choice.id},
+    }
+
+
+def finish_deep_link(
+    context: LtiContext, request_id: str, csrf_token: str, problem_ids: Sequence[str]
+) -> tuple[str, str]:
+    """Sign the deep-linking response for the chosen problems; returns (return URL, JWT). The
+    request is used up."""
+    now = context.clock()
+    with context.database.session() as session:
+        request = load_deep_link(session, request_id, csrf_token, now)
+        by_id = {choice.id: choice for choice in problem_choices(session)}
+        unknown = [pid for pid in problem_ids if pid not in by_id]
+        if unknown:
+            raise MalformedRequest("unknown_problem", f"No such problem: {', '.join(unknown)[:200]}.")
+        claims: dict[str, Any] = {
+            "iss": request.platform.client_id,
+            "aud": request.platform.issuer,
+            "iat": int(now.timestamp()),
+            "exp": int((now + timedelta(minutes=5)).timestamp()),
+            "nonce": uuid.uuid4().hex,
+            CLAIM_DEPLOYMENT_ID: request.deployment_id,
+            CLAIM_MESSAGE_TYPE: "LtiDeepLinkingResponse",
+            CLAIM_VERSION: LTI_VERSION,
+            CLAIM_CONTENT_ITEMS: [content_item(context, by_id[pid]) for pid in dict.fromkeys(problem_ids)],
+        }
+        if request.data is not None:
+            claims[CLAIM_DL_DATA] = request.data
+        token = keys.sign(session, claims, clock=context.clock)
+        session.execute(delete(LtiDeepLinkRequest).where(LtiDeepLinkRequest.id == request_id))
+        return request.return_url, token

@@ -1,0 +1,146 @@
+"""Sessions of our own, opened by a launch: a random id in a cookie, its hash and the identity in the
+database. The API accepts the cookie as well as a bearer key (`principal_from_session`)."""
+
+from __future__ import annotations
+
+import hashlib
+import hmac
+import secrets
+from collections.abc import Callable
+from dataclasses import dataclass
+from datetime import datetime, timedelta
+
+from fastapi import Request
+from sqlalchemy import delete
+from sqlalchemy.orm import Session
+
+from app.auth import Principal, Role
+from app.db.database import Database
+from app.lti.models import LtiSession
+
+SESSION_COOKIE = "physcheck_session"
+CSRF_HEADER = "X-CSRF-Token"
+SESSION_LIFETIME = timedelta(hours=8)
+SAFE_METHODS = frozenset({"GET", "HEAD", "OPTIONS"})
+_STUDENT_ID_LIMIT = 200
+
+# LIS roles that may see solutions and deep-link (context roles, and the system/institution admins).
+INSTRUCTOR_ROLES = frozenset(
+    {
+        "http://purl.imsglobal.org/vocab/lis/v2/membership#Instructor",
+        "http://purl.imsglobal.org/vocab/lis/v2/membership#Administrator",
+        "http://purl.imsglobal.org/vocab/lis/v2/membership#ContentDeveloper",
+        "http://purl.imsglobal.org/vocab/lis/v2/membership/Instructor#TeachingAssistant",
+        "http://purl.imsglobal.org/vocab/lis/v2/institution/person#Administrator",
+        "http://purl.imsglobal.org/vocab/lis/v2/system/person#Administrator",
+    }
+)
+
+
+def token_hash(token: str) -> str:
+    return hashlib.sha256(token.encode("utf-8")).hexdigest()
+
+
+def role_from_claims(roles: tuple[str, ...] | list[str]) -> Role:
+    """Instructor when any signed role is a teaching or administrative one; otherwise student."""
+    return Role.INSTRUCTOR if any(role in INSTRUCTOR_ROLES for role in roles) else Role.STUDENT
+
+
+def student_id(platform_id: int, sub: str) -> str:
+    """The identity an LTI user's submissions are filed under: `lti:<platform id>:<sub>` (hashed
+    when the platform's sub is too long for the column)."""
+    plain = f"lti:{platform_id}:{sub}"
+    if len(plain) <= _STUDENT_ID_LIMIT:
+        return plain
+    return f"lti:{platform_id}:sha256:{hashlib.sha256(sub.encode('utf-8')).hexdigest()}"
+
+
+@dataclass(frozen=True)
+class SessionRecord:
+    platform_id: int
+    sub: str
+    student: str
+    role: Role
+    name: str
+    csrf_token: str
+    expires_at: datetime
+
+    def principal(self, id_hash: str) -> Principal:
+        return Principal(
+            key_id=f"lti-session:{id_hash[:16]}",
+            role=self.role,
+            name=self.name or self.student,
+            student=self.student if self.role is Role.STUDENT else None,
+        )
+
+
+def open_session(
+    session: Session, *, platform_id: int, sub: str, role: Role, name: str, now: datetime
+) -> tuple[str, SessionRecord]:
+    """A new session row; returns the cookie value (shown once) and the record."""
+    session_id = secrets.token_urlsafe(32)
+    record = SessionRecord(
+        platform_id=platform_id,
+        sub=sub,
+        student=student_id(platform_id, sub),
+        role=role,
+        name=name[:200],
+        csrf_token=secrets.token_urlsafe(32),
+        expires_at=now + SESSION_LIFETIME,
+    )
+    session.execute(delete(LtiSession).where(LtiSession.expires_at < now))
+    session.add(
+        LtiSession(
+            id_hash=token_hash(session_id),
+            platform_id=platform_id,
+            sub=sub,
+            student=record.student,
+            role=role.value,
+            name=record.name,
+            csrf_token=record.csrf_token,
+            created_at=now,
+            expires_at=record.expires_at,
+        )
+    )
+    return session_id, record
+
+
+def find_session(database: Database, session_id: str, *, now: datetime) -> SessionRecord | None:
+    if not session_id or len(session_id) > 100:
+        return None
+    with database.session(read_only=True) as session:
+        row = session.get(LtiSession, token_hash(session_id))
+        if row is None or row.expires_at <= now:
+            return None
+        return SessionRecord(
+            platform_id=row.platform_id,
+            sub=row.sub,
+            student=row.student,
+            role=Role(row.role),
+            name=row.name,
+            csrf_token=row.csrf_token,
+            expires_at=row.expires_at,
+        )
+
+
+def principal_from_session(
+    request: Request, *, clock: Callable[[], datetime] | None = None
+) -> Principal | None:
+    """The caller named by the session cookie, or None. A request that changes state must also send
+    the session's CSRF token in `X-CSRF-Token` (the cookie is SameSite=None, so it rides along on
+    cross-site requests too). Uses `request.app.state.lti` (an `LtiContext`)."""
+    session_id = request.cookies.get(SESSION_COOKIE)
+    if not session_id:
+        return None
+    context = getattr(request.app.state, "lti", None)
+    if context is None:
+        return None
+    now = (clock or context.clock)()
+    record = find_session(context.database, session_id, now=now)
+    if record is None:
+        return None
+    if request.method not in SAFE_METHODS:
+        sent = request.headers.get(CSRF_HEADER, "")
+        if not hmac.compare_digest(sent.encode("utf-8"), record.csrf_token.encode("utf-8")):
+            return None
+    return record.principal(token_hash(session_id))

@@ -1,0 +1,64 @@
+"""The application factory: settings in, a FastAPI app out; nothing is built at import time."""
+
+from __future__ import annotations
+
+from collections.abc import AsyncIterator
+from contextlib import asynccontextmanager
+
+from fastapi import FastAPI
+from starlette.concurrency import run_in_threadpool
+
+from app.errors import install_error_handlers
+from app.grading.pool import GradingPool
+from app.middleware import BodyLimit, RequestContext, configure_logging
+from app.ratelimit import RateLimiter
+from app.routers import check, health
+from app.services import Services
+from app.settings import Settings, get_settings
+from app.startup import open_storage
+
+
+def create_app(settings: Settings | None = None, *, pool: GradingPool | None = None) -> FastAPI:
+    """Build the app; a `pool` passed in is shared (tests) and not closed by the app."""
+    settings = settings or get_settings()
+    configure_logging(settings.log_level)
+
+    @asynccontextmanager
+    async def lifespan(app: FastAPI) -> AsyncIterator[None]:
+        storage = await run_in_threadpool(open_storage, settings)
+        grading = pool or GradingPool(
+            workers=settings.check_workers,
+            timeout=settings.check_timeout_seconds,
+            memory_mb=settings.check_memory_mb,
+            max_tasks=settings.worker_max_tasks,
+            queue_size=settings.check_queue_size,
+        )
+        if pool is None:
+            await run_in_threadpool(grading.start)
+        app.state.services = Services(
+            settings=settings,
+            database=storage.database,
+            pool=grading,
+            keys=storage.keys,
+            key_limiter=RateLimiter(settings.rate_limit_per_minute),
+            student_limiter=RateLimiter(settings.student_rate_limit_per_minute),
+        )
+        try:
+            yield
+        finally:
+            if pool is None:
+                grading.close()
+            storage.close()
+
+    app = FastAPI(
+        title="physcheck",
+        version="1",
+        summary="Checks physics answers: symbolic, numeric with units, against engine-derived references.",
+        lifespan=lifespan,
+    )
+    install_error_handlers(app)
+    app.add_middleware(BodyLimit, max_bytes=settings.max_body_bytes)
+    app.add_middleware(RequestContext)
+    app.include_router(health.router)
+    app.include_router(check.router)
+    return app

@@ -1,0 +1,26 @@
+"""Liveness and readiness for load balancers and orchestrators."""
+
+from __future__ import annotations
+
+from fastapi import APIRouter
+from fastapi.responses import JSONResponse
+from starlette.concurrency import run_in_threadpool
+
+from app.deps import ServicesDep
+from app.errors import error_body
+
+router = APIRouter(tags=["health"])
+
+
+@router.get("/health")
+async def health() -> dict[str, str]:
+    """The process is up (it does not look at the database)."""
+    return {"status": "ok"}
+
+
+@router.get("/ready", response_model=None)
+async def ready(services: ServicesDep) -> dict[str, str] | JSONResponse:
+    """Ready for traffic: the database answers."""
+    if await run_in_threadpool(services.database.ping):
+        return {"status": "ready"}
+    return JSONResponse(error_body("not_ready", "The database is not reachable."), status_code=503)

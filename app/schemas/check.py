@@ -1,0 +1,167 @@
+"""Request and response bodies of `POST /v1/check` (API.md)."""
+
+from __future__ import annotations
+
+from decimal import Decimal, InvalidOperation
+from typing import Annotated, Literal
+
+from pydantic import (
+    BaseModel,
+    ConfigDict,
+    Field,
+    StrictBool,
+    StrictFloat,
+    StrictInt,
+    StrictStr,
+    field_validator,
+)
+
+from physics.checking import NumericJob, SymbolDecl, SymbolicJob
+from physics.numeric import DEFAULT_TOLERANCE, NumericSpec, Tolerance
+from physics.verdict import Verdict
+
+Number = StrictInt | StrictFloat
+ShortText = Annotated[StrictStr, Field(max_length=2000)]
+
+
+def exact_decimal(value: Number | str) -> Decimal:
+    """JSON numbers arrive as floats; their shortest repr is the decimal the client wrote."""
+    try:
+        result = Decimal(value if isinstance(value, str) else repr(value))
+    except InvalidOperation:
+        raise ValueError(f"not a decimal number: {value!r}") from None
+    if not result.is_finite():
+        raise ValueError("must be a finite number")
+    return result
+
+
+class Strict(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+
+
+class SymbolIn(Strict):
+    dimension: ShortText | None = None
+    real: StrictBool = False
+    nonzero: StrictBool = False
+    negative: StrictBool = False
+    integer: StrictBool = False
+    range: tuple[Number | ShortText, Number | ShortText] | None = None
+    meaning: ShortText | None = None
+
+    def decl(self, name: str) -> SymbolDecl:
+        bounds = (
+            None if self.range is None else tuple(b if isinstance(b, str) else repr(b) for b in self.range)
+        )
+        return SymbolDecl(
+            name=name,
+            dimension=self.dimension,
+            real=self.real,
+            nonzero=self.nonzero,
+            negative=self.negative,
+            integer=self.integer,
+            range=bounds,  # type: ignore[arg-type]
+        )
+
+
+class MistakeIn(Strict):
+    answer: ShortText
+    feedback: ShortText
+
+
+class ToleranceIn(Strict):
+    rel: Number | StrictStr | None = None
+    abs: Number | StrictStr | None = None
+    sigfigs: Annotated[StrictInt, Field(ge=1, le=15)] | None = None
+
+    @field_validator("rel", "abs")
+    @classmethod
+    def non_negative(cls, value: Number | str | None) -> Number | str | None:
+        if value is not None and exact_decimal(value) < 0:
+            raise ValueError("must not be negative")
+        return value
+
+    def tolerance(self) -> Tolerance:
+        return Tolerance(
+            rel=None if self.rel is None else exact_decimal(self.rel),
+            abs=None if self.abs is None else exact_decimal(self.abs),
+            sigfigs=self.sigfigs,
+        )
+
+
+class SymbolicCheckIn(Strict):
+    kind: Literal["symbolic"]
+    answer: StrictStr
+    expected: ShortText
+    symbols: dict[Annotated[str, Field(max_length=40)], SymbolIn] = Field(default_factory=dict, max_length=50)
+    constraints: list[ShortText] = Field(default_factory=list, max_length=20)
+    mistakes: list[MistakeIn] = Field(default_factory=list, max_length=50)
+
+    def job(self) -> SymbolicJob:
+        return SymbolicJob(
+            answer=self.answer,
+            expected=self.expected,
+            symbols=tuple(spec.decl(name) for name, spec in self.symbols.items()),
+            constraints=tuple(self.constraints),
+            mistakes=tuple((m.answer, m.feedback) for m in self.mistakes),
+        )
+
+
+class NumericCheckIn(Strict):
+    kind: Literal["numeric"]
+    answer: StrictStr
+    expected: Number | ShortText
+    units: ShortText | None = None
+    units_required: StrictBool = True
+    tolerance: ToleranceIn | None = None
+
+    @field_validator("expected")
+    @classmethod
+    def finite(cls, value: Number | str) -> Number | str:
+        exact_decimal(value)
+        return value
+
+    def job(self) -> NumericJob:
+        spec = NumericSpec(
+            expected=exact_decimal(self.expected),
+            units=self.units,
+            units_required=self.units_required,
+            tolerance=DEFAULT_TOLERANCE if self.tolerance is None else self.tolerance.tolerance(),
+        )
+        return NumericJob(answer=self.answer, spec=spec)
+
+
+CheckIn = Annotated[SymbolicCheckIn | NumericCheckIn, Field(discriminator="kind")]
+
+
+class ReadAsPublic(BaseModel):
+    text: str
+    latex: str
+
+
+class InputErrorPublic(BaseModel):
+    message: str
+    position: int | None
+
+
+class VerdictPublic(BaseModel):
+    verdict: Literal["correct", "incorrect", "invalid"]
+    score: float
+    reason: str
+    feedback: str
+    read_as: ReadAsPublic | None
+    error: InputErrorPublic | None
+
+    @classmethod
+    def of(cls, verdict: Verdict) -> VerdictPublic:
+        return cls(
+            verdict=verdict.outcome.value,
+            score=verdict.score,
+            reason=verdict.reason.value,
+            feedback=verdict.feedback,
+            read_as=None
+            if verdict.read_as is None
+            else ReadAsPublic(text=verdict.read_as.text, latex=verdict.read_as.latex),
+            error=None
+            if verdict.error is None
+            else InputErrorPublic(message=verdict.error.message, position=verdict.error.position),
+        )

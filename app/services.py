@@ -1,0 +1,21 @@
+"""What the routes need, built once per application in the lifespan and reached through `deps`."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from app.auth import KeyStore
+from app.db.database import Database
+from app.grading.pool import GradingPool
+from app.ratelimit import RateLimiter
+from app.settings import Settings
+
+
+@dataclass
+class Services:
+    settings: Settings
+    database: Database
+    pool: GradingPool
+    keys: KeyStore
+    key_limiter: RateLimiter
+    student_limiter: RateLimiter

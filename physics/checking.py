@@ -1,0 +1,192 @@
+"""One entry point for checking an answer, used in-process (bank self-test) and in worker processes.
+
+A `CheckJob` is plain, picklable data (texts and flags) so it can cross into a killable worker; the
+worker reads every text with the whitelist parser, because instructor text is as untrusted as a
+student's. Prepared references are cached per worker, keyed on the job's reference-side fields.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from functools import lru_cache
+
+import sympy
+
+from physics.errors import AnswerError, SpecError
+from physics.mathinput import InputLimits, parse_math
+from physics.numeric import NumericSpec, check_numeric
+from physics.symbolic import (
+    KnownMistake,
+    LimitCase,
+    PreparedReference,
+    SymbolicContext,
+    SymbolSpec,
+    judge_symbolic,
+    make_symbol,
+    prepare_reference,
+)
+from physics.units import unit_dimension
+from physics.verdict import Verdict
+
+
+@dataclass(frozen=True)
+class SymbolDecl:
+    """A symbol as an author declares it: text fields only, read in the worker."""
+
+    name: str
+    dimension: str | None = None
+    real: bool = False
+    nonzero: bool = False
+    negative: bool = False
+    integer: bool = False
+    range: tuple[str, str] | None = None
+
+
+@dataclass(frozen=True)
+class LimitDecl:
+    substitutions: tuple[tuple[str, str], ...]  # (symbol name, value text such as "oo" or "0")
+    description: str
+
+
+@dataclass(frozen=True)
+class SymbolicJob:
+    answer: str
+    expected: str
+    symbols: tuple[SymbolDecl, ...]
+    constraints: tuple[str, ...] = ()
+    mistakes: tuple[tuple[str, str], ...] = ()  # (expression text, feedback)
+    limits: tuple[LimitDecl, ...] = ()
+    allowed: tuple[str, ...] | None = None  # names the answer may use; None: every declared symbol
+    limits_config: InputLimits = field(default_factory=InputLimits)
+
+
+@dataclass(frozen=True)
+class NumericJob:
+    answer: str
+    spec: NumericSpec
+
+
+CheckJob = SymbolicJob | NumericJob
+
+
+@dataclass(frozen=True)
+class SymbolicQuestion:
+    """A symbolic part ready to grade: the reference prepared once, the names the answer may use."""
+
+    names: Mapping[str, sympy.Symbol]
+    reference: PreparedReference
+
+
+def check_answer(
+    answer: str, question: SymbolicQuestion | NumericSpec, limits: InputLimits | None = None
+) -> Verdict:
+    """Grade one answer; an unreadable answer is an `invalid` verdict, never an exception."""
+    if isinstance(question, NumericSpec):
+        return check_numeric(answer, question)
+    try:
+        parsed = parse_math(answer, question.names, limits=limits or InputLimits())
+    except AnswerError as error:
+        return Verdict.invalid(error)
+    return Verdict.graded(judge_symbolic(parsed.expr, question.reference), parsed.read_as)
+
+
+def run_job(job: CheckJob) -> Verdict:
+    """Grade a job of plain texts; raises SpecError when the reference side is unusable."""
+    if isinstance(job, NumericJob):
+        return check_numeric(job.answer, job.spec)
+    question = symbolic_question(
+        job.expected, job.symbols, job.constraints, job.mistakes, job.limits, job.allowed
+    )
+    return check_answer(job.answer, question, job.limits_config)
+
+
+@lru_cache(maxsize=256)
+def symbolic_question(
+    expected: str,
+    symbols: tuple[SymbolDecl, ...],
+    constraints: tuple[str, ...] = (),
+    mistakes: tuple[tuple[str, str], ...] = (),
+    limits: tuple[LimitDecl, ...] = (),
+    allowed: tuple[str, ...] | None = None,
+) -> SymbolicQuestion:
+    """Read and prepare the reference side of a symbolic job (cached: a course re-uses its references)."""
+    specs = {decl.name: _symbol_spec(decl) for decl in symbols}
+    table = {name: make_symbol(spec) for name, spec in specs.items()}
+    context = SymbolicContext(
+        symbols={table[name]: spec for name, spec in specs.items()},
+        constraints=tuple(
+            _read_relation(text, table, ("constraints", i)) for i, text in enumerate(constraints)
+        ),
+        mistakes=tuple(
+            KnownMistake(_read(text, table, ("mistakes", i)), feedback)
+            for i, (text, feedback) in enumerate(mistakes)
+        ),
+        limits=tuple(_limit_case(decl, table, i) for i, decl in enumerate(limits)),
+    )
+    reference = prepare_reference(_read(expected, table, ("expected",)), context)
+    names = table if allowed is None else {name: table[name] for name in allowed if name in table}
+    return SymbolicQuestion(names=names, reference=reference)
+
+
+def _symbol_spec(decl: SymbolDecl) -> SymbolSpec:
+    dimension = None
+    if decl.dimension is not None:
+        try:
+            dimension = unit_dimension(decl.dimension)
+        except AnswerError as error:
+            raise SpecError(
+                f"dimension of {decl.name}: {error.message}", ("symbols", decl.name, "dimension")
+            ) from None
+    low = high = None
+    if decl.range is not None:
+        low, high = (_read(text, {}, ("symbols", decl.name, "range", i)) for i, text in enumerate(decl.range))
+    return SymbolSpec(
+        name=decl.name,
+        dimension=dimension,
+        real=decl.real,
+        nonzero=decl.nonzero,
+        negative=decl.negative,
+        integer=decl.integer,
+        low=low,
+        high=high,
+    )
+
+
+def _limit_case(decl: LimitDecl, table: Mapping[str, sympy.Symbol], index: int) -> LimitCase:
+    substitutions: dict[sympy.Symbol, sympy.Expr] = {}
+    for name, value in decl.substitutions:
+        if name not in table:
+            raise SpecError(f"limit names an undeclared symbol {name!r}", ("limits", index, name))
+        substitutions[table[name]] = _read(value, {}, ("limits", index, name))
+    return LimitCase(substitutions=substitutions, description=decl.description)
+
+
+_INFINITY_WORDS = {"oo": sympy.oo, "inf": sympy.oo, "infinity": sympy.oo, "∞": sympy.oo, "-oo": -sympy.oo}
+
+
+def _read(text: str, table: Mapping[str, sympy.Symbol], path: tuple[str | int, ...]) -> sympy.Expr:
+    if text.strip() in _INFINITY_WORDS:
+        return _INFINITY_WORDS[text.strip()]
+    try:
+        return parse_math(text, table).expr
+    except AnswerError as error:
+        where = f" at character {error.position}" if error.position is not None else ""
+        raise SpecError(f"{error.message}{where}", path) from None
+
+
+_RELATIONS = {"<=": sympy.Le, ">=": sympy.Ge, "≤": sympy.Le, "≥": sympy.Ge, "<": sympy.Lt, ">": sympy.Gt}
+
+
+def _read_relation(text: str, table: Mapping[str, sympy.Symbol], path: tuple[str | int, ...]) -> sympy.Basic:
+    """Read `lhs < rhs` (one of < > <= >= ≤ ≥, exactly once); each side with the whitelist parser."""
+    found = [(text.find(op), op) for op in _RELATIONS if op in text]
+    # "<=" also contains "<": keep the longest operator at the first position.
+    found.sort(key=lambda hit: (hit[0], -len(hit[1])))
+    if not found:
+        raise SpecError("a constraint needs one of < > <= >=", path)
+    position, op = found[0]
+    lhs, rhs = text[:position], text[position + len(op) :]
+    if any(other in rhs for other in _RELATIONS):
+        raise SpecError("a constraint may compare only two sides", path)
+    return _RELATIONS[op](_read(lhs, table, path), _read(rhs, table, path))

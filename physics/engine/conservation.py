@@ -1,0 +1,112 @@
+"""Conservation laws: momentum of each cyclic coordinate, then energy d/dt(T + V) = 0 per degree of freedom.
+
+Applies to conservative systems (no friction) that, once the conserved momenta are used to remove the
+cyclic coordinates, fall apart into independent one-degree-of-freedom parts.
+"""
+
+from __future__ import annotations
+
+from functools import cached_property
+
+import sympy
+
+from physics.engine import collision
+from physics.engine.mechanics import solve_linear, time_derivative
+from physics.engine.method import Method, NotApplicable
+from physics.engine.model import QuantityKind
+
+
+class ConservationMethod(Method):
+    name = "conservation"
+    title = "Conservation of momentum and energy"
+
+    def derive(self) -> None:
+        if self.model.frictions:
+            self.step("Not conservative", r"\text{kinetic friction dissipates energy}")
+
+    @cached_property
+    def reduced(self) -> tuple[dict[sympy.Symbol, sympy.Expr], sympy.Expr, list[sympy.Symbol]]:
+        """(cyclic velocities in terms of the others, reduced kinetic energy, remaining coordinates)."""
+        if self.model.frictions:
+            raise NotApplicable("energy is not conserved with kinetic friction")
+        mech = self.mech
+        mass, potential = mech.mass_matrix, mech.potential
+        cyclic = [i for i, q in enumerate(mech.q)
+                  if not potential.has(q) and not mass.has(q)]
+        state = dict(self.model.state)
+        velocities: dict[sympy.Symbol, sympy.Expr] = {}
+        if cyclic:
+            momenta = [sympy.Add(*(mass[i, j] * mech.qd[j] for j in range(len(mech.q)))) for i in cyclic]
+            initial = [p.subs(state) for p in momenta]
+            for i, p, p0 in zip(cyclic, momenta, initial, strict=True):
+                self.step(f"Momentum conjugate to {mech.q[i]} is conserved",
+                          sympy.latex(sympy.Eq(p, p0)))
+            velocities = solve_linear([p - p0 for p, p0 in zip(momenta, initial, strict=True)],
+                                      [mech.qd[i] for i in cyclic], self.title)
+        kinetic = sympy.simplify(mech.kinetic.subs(velocities))
+        remaining = [q for i, q in enumerate(mech.q) if i not in cyclic]
+        return velocities, kinetic, remaining
+
+    @cached_property
+    def accelerations(self) -> dict[sympy.Symbol, sympy.Expr]:
+        mech, model = self.mech, self.model
+        velocities, kinetic, remaining = self.reduced
+        potential = mech.potential
+        result: dict[sympy.Symbol, sympy.Expr] = {}
+        for q in remaining:
+            c = next(c for c in model.coordinates if c.symbol == q)
+            others = [o for o in remaining if o != q]
+            others_dot = [next(x.velocity for x in model.coordinates if x.symbol == o) for o in others]
+            part_t = sympy.expand(kinetic).coeff(c.velocity, 2) * c.velocity**2
+            part_v = sympy.Add(*(t for t in sympy.Add.make_args(sympy.expand(potential)) if t.has(q)))
+            if part_t.has(*others, *others_dot) or part_v.has(*others) or sympy.expand(
+                    kinetic - part_t).has(c.velocity):
+                raise NotApplicable(f"{c.name} is coupled to other coordinates: more than one degree of freedom")
+            energy = part_t + part_v
+            rate = sympy.expand(time_derivative(energy, model) / c.velocity)
+            self.step(f"Energy of {c.name} is conserved",
+                      rf"E = {sympy.latex(energy)},\ \frac{{dE}}{{dt}} = 0 \Rightarrow "
+                      + sympy.latex(sympy.Eq(sympy.simplify(rate), 0)))
+            result[c.acceleration] = sympy.solve(rate, c.acceleration)[0]
+        for velocity, expr in velocities.items():
+            c = next(c for c in model.coordinates if c.velocity == velocity)
+            result[c.acceleration] = sympy.simplify(time_derivative(expr, model).subs(result))
+            self.step(f"Acceleration of {c.name} from its momentum",
+                      sympy.latex(sympy.Eq(c.acceleration, result[c.acceleration])))
+        return result
+
+    def acceleration(self, coordinate: str) -> sympy.Expr:
+        c = self.model.coordinate(coordinate)
+        return self.at_state(self.accelerations[c.acceleration])
+
+    def potential_force(self, coordinate: str) -> sympy.Expr:
+        q = self.model.coordinate(coordinate).symbol
+        if q not in self.reduced[2]:
+            raise NotApplicable(f"{coordinate} is cyclic")
+        return sympy.simplify(-sympy.diff(self.mech.potential, q))
+
+    def frequency(self, coordinate: str, equilibrium: sympy.Expr) -> sympy.Expr:
+        """E = 1/2 M q'^2 + V(q) near the minimum: omega^2 = V''(q0)/M(q0)."""
+        c = self.model.coordinate(coordinate)
+        _, kinetic, remaining = self.reduced
+        if c.symbol not in remaining:
+            raise NotApplicable(f"{coordinate} is cyclic")
+        inertia = sympy.expand(kinetic).coeff(c.velocity, 2) * 2
+        others = [o for o in remaining if o != c.symbol]
+        if inertia.has(*others):
+            raise NotApplicable(f"{coordinate} is coupled to other coordinates")
+        curvature = sympy.diff(self.mech.potential, c.symbol, 2).subs(c.symbol, equilibrium)
+        omega2 = sympy.simplify(curvature / inertia.subs(c.symbol, equilibrium))
+        self.step("Small oscillations from the energy",
+                  r"E \approx \tfrac12 M_0 \dot q^2 + \tfrac12 V''(q_0)\,\delta q^2,\ \omega^2 = "
+                  + sympy.latex(omega2))
+        return sympy.simplify(sympy.sqrt(omega2))
+
+    def collision(self, item: QuantityKind) -> sympy.Expr:
+        if self.model.collision is None:
+            raise NotApplicable("no collision in the model")
+        steps: list[tuple[str, str]] = []
+        result = collision.by_conservation(self.model, item, steps)
+        for title, latex in steps:
+            self.step(title, latex)
+        return result

@@ -1,0 +1,391 @@
+"""`load_model`: a model section (parsed YAML/JSON data) validated into a `Model`, every fault at once."""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable, Mapping
+from typing import Any, TypeVar
+
+import sympy
+
+from physics.engine.model import (
+    AXES,
+    Body,
+    Collision,
+    Constraint,
+    ConstraintKind,
+    Coordinate,
+    Friction,
+    Model,
+    PairPotential,
+    Quantity,
+    QuantityKind,
+)
+from physics.engine.text import Path, read_expr
+from physics.errors import SpecError, SpecErrors
+
+_NAME = re.compile(r"^[A-Za-z][A-Za-z0-9]*$")
+_SECTIONS = frozenset(
+    {"coordinates", "bodies", "gravity", "constraints", "friction", "potentials", "collision", "state",
+     "domain", "quantities"}
+)
+_QUANTITY_TARGET = {
+    QuantityKind.ACCELERATION: "coordinate",
+    QuantityKind.FORCE: "constraint",
+    QuantityKind.EQUILIBRIUM: "coordinate",
+    QuantityKind.POTENTIAL_FORCE: "coordinate",
+    QuantityKind.STIFFNESS: "coordinate",
+    QuantityKind.ANGULAR_FREQUENCY: "coordinate",
+    QuantityKind.PERIOD: "coordinate",
+}
+T = TypeVar("T")
+
+
+class _Collector:
+    """Runs validation steps, keeping every SpecError instead of stopping at the first."""
+
+    def __init__(self) -> None:
+        self.errors: list[SpecError] = []
+
+    def add(self, message: str, path: Path) -> None:
+        self.errors.append(SpecError(message, path))
+
+    def attempt(self, step: Callable[[], T]) -> T | None:
+        try:
+            return step()
+        except SpecErrors as group:
+            self.errors.extend(group.errors)
+        except SpecError as error:
+            self.errors.append(error)
+        return None
+
+    def read(self, text: Any, scope: Mapping[str, sympy.Symbol], path: Path) -> sympy.Expr | None:
+        return self.attempt(lambda: read_expr(text, scope, path))
+
+
+def load_model(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]) -> Model:
+    """Validate a model section into a Model; raises SpecErrors listing every fault with its path."""
+    errors = _Collector()
+    if not isinstance(data, Mapping):
+        raise SpecErrors([SpecError("the model must be a mapping", ())])
+    for key in data:
+        if key not in _SECTIONS:
+            errors.add(f"unknown section {key!r}; expected one of {sorted(_SECTIONS)}", (str(key),))
+    coordinates = _coordinates(data.get("coordinates"), symbols, errors)
+    coord_names = {c.name: c.symbol for c in coordinates}
+    coord_scope = {**symbols, **coord_names}
+    bodies = _bodies(data.get("bodies"), symbols, coord_scope, errors)
+    cartesian = tuple(
+        (name, sympy.Symbol(name, real=True)) for body in bodies for name in body.cartesian_names()
+    )
+    clashes = sorted(set(dict(cartesian)) & (set(symbols) | set(coord_names)))
+    for name in clashes:
+        errors.add(f"Cartesian name {name!r} clashes with a symbol or coordinate", ("bodies",))
+    gravity = None
+    if data.get("gravity") is not None:
+        gravity = errors.read(data["gravity"], symbols, ("gravity",))
+    constraints = _constraints(data.get("constraints"), {**symbols, **dict(cartesian)}, errors)
+    frictions = _frictions(data.get("friction"), symbols, bodies, constraints, coordinates, errors)
+    potentials = _potentials(data.get("potentials"), symbols, bodies, errors)
+    collision = _collision(data.get("collision"), symbols, bodies, coordinates, errors)
+    state = _state(data.get("state"), symbols, coordinates, errors)
+    ranges, positive = _domain(data.get("domain"), symbols, errors)
+    quantities = _quantities(data.get("quantities"), symbols, coordinates, constraints, collision, errors)
+    if errors.errors:
+        raise SpecErrors(errors.errors)
+    return Model(
+        coordinates=coordinates,
+        bodies=bodies,
+        constraints=constraints,
+        frictions=frictions,
+        potentials=potentials,
+        gravity=gravity,
+        collision=collision,
+        state=state,
+        ranges=ranges,
+        positive=positive,
+        quantities=quantities,
+        parameters=tuple(symbols.values()),
+        cartesian=cartesian,
+    )
+
+
+def _mapping(value: Any, path: Path, errors: _Collector, required: bool = True) -> Mapping[str, Any]:
+    if value is None and not required:
+        return {}
+    if not isinstance(value, Mapping):
+        errors.add("expected a mapping" if value is not None else "required", path)
+        return {}
+    return value
+
+
+def _sequence(value: Any, path: Path, errors: _Collector, required: bool = False) -> list[Any]:
+    if value is None and not required:
+        return []
+    if not isinstance(value, list):
+        errors.add("expected a list" if value is not None else "required", path)
+        return []
+    return value
+
+
+def _check_keys(entry: Mapping[str, Any], allowed: set[str], required: set[str], path: Path,
+                errors: _Collector) -> None:
+    for key in entry:
+        if key not in allowed:
+            errors.add(f"unknown key {key!r}; expected one of {sorted(allowed)}", (*path, str(key)))
+    for key in sorted(required - set(entry)):
+        errors.add("required", (*path, key))
+
+
+def _coordinates(value: Any, symbols: Mapping[str, sympy.Symbol],
+                 errors: _Collector) -> tuple[Coordinate, ...]:
+    result: list[Coordinate] = []
+    for index, name in enumerate(_sequence(value, ("coordinates",), errors, required=True)):
+        if not isinstance(name, str) or not _NAME.match(name):
+            errors.add("a coordinate is a plain name (letters and digits)", ("coordinates", index))
+            continue
+        if any(c.name == name for c in result):
+            errors.add(f"coordinate {name!r} declared twice", ("coordinates", index))
+            continue
+        symbol = symbols.get(name, sympy.Symbol(name, real=True))
+        result.append(Coordinate(name, symbol, sympy.Symbol(f"{name}_dot", real=True),
+                                 sympy.Symbol(f"{name}_ddot", real=True)))
+    return tuple(result)
+
+
+def _bodies(value: Any, symbols: Mapping[str, sympy.Symbol], scope: Mapping[str, sympy.Symbol],
+            errors: _Collector) -> tuple[Body, ...]:
+    result: list[Body] = []
+    for name, entry in _mapping(value, ("bodies",), errors).items():
+        path: Path = ("bodies", str(name))
+        if not isinstance(name, str) or not _NAME.match(name):
+            errors.add("a body name is a plain name (letters and digits)", path)
+            continue
+        spec = _mapping(entry, path, errors)
+        _check_keys(spec, {"mass", "inertia", "position", "angle"}, {"mass", "position"}, path, errors)
+        mass = errors.read(spec.get("mass"), symbols, (*path, "mass"))
+        inertia: sympy.Expr | None = sympy.Integer(0)
+        if "inertia" in spec:
+            inertia = errors.read(spec["inertia"], symbols, (*path, "inertia"))
+        angle = None
+        if "angle" in spec:
+            angle = errors.read(spec["angle"], scope, (*path, "angle"))
+        elif "inertia" in spec:
+            errors.add("a body with a moment of inertia needs an angle", (*path, "angle"))
+        position = _axes(spec.get("position"), scope, (*path, "position"), errors)
+        if mass is not None and inertia is not None and position:
+            result.append(Body(name, mass, inertia, position, angle))
+    return tuple(result)
+
+
+def _axes(value: Any, scope: Mapping[str, sympy.Symbol], path: Path,
+          errors: _Collector) -> tuple[tuple[str, sympy.Expr], ...]:
+    spec = _mapping(value, path, errors)
+    result: list[tuple[str, sympy.Expr]] = []
+    for axis in spec:
+        if axis not in AXES:
+            errors.add(f"unknown axis {axis!r}; expected x and/or y", (*path, str(axis)))
+    for axis in AXES:
+        if axis in spec:
+            expr = errors.read(spec[axis], scope, (*path, axis))
+            if expr is not None:
+                result.append((axis, expr))
+    if value is not None and not spec:
+        errors.add("give at least one of x, y", path)
+    return tuple(result)
+
+
+def _constraints(value: Any, scope: Mapping[str, sympy.Symbol], errors: _Collector) -> tuple[Constraint, ...]:
+    result: list[Constraint] = []
+    for name, entry in _mapping(value, ("constraints",), errors, required=False).items():
+        path: Path = ("constraints", str(name))
+        spec = _mapping(entry, path, errors)
+        _check_keys(spec, {"gap", "kind"}, {"gap"}, path, errors)
+        kind_text = spec.get("kind", "other")
+        if kind_text not in set(ConstraintKind):
+            errors.add(f"unknown kind {kind_text!r}; expected one of {[k.value for k in ConstraintKind]}",
+                       (*path, "kind"))
+            continue
+        gap = errors.read(spec.get("gap"), scope, (*path, "gap"))
+        if gap is not None:
+            result.append(Constraint(str(name), gap, ConstraintKind(kind_text)))
+    return tuple(result)
+
+
+def _frictions(value: Any, symbols: Mapping[str, sympy.Symbol], bodies: tuple[Body, ...],
+               constraints: tuple[Constraint, ...], coordinates: tuple[Coordinate, ...],
+               errors: _Collector) -> tuple[Friction, ...]:
+    result: list[Friction] = []
+    for index, entry in enumerate(_sequence(value, ("friction",), errors)):
+        path: Path = ("friction", index)
+        spec = _mapping(entry, path, errors)
+        keys = {"constraint", "body", "coefficient", "sliding"}
+        _check_keys(spec, keys, keys, path, errors)
+        body = next((b for b in bodies if b.name == spec.get("body")), None)
+        if body is None:
+            errors.add(f"unknown body {spec.get('body')!r}", (*path, "body"))
+        elif body.angle is not None:
+            errors.add("kinetic friction is supported on particles only", (*path, "body"))
+        if not any(c.name == spec.get("constraint") for c in constraints):
+            errors.add(f"unknown constraint {spec.get('constraint')!r}", (*path, "constraint"))
+        if not any(c.name == spec.get("sliding") for c in coordinates):
+            errors.add(f"unknown coordinate {spec.get('sliding')!r}", (*path, "sliding"))
+        mu = errors.read(spec.get("coefficient"), symbols,
+                                                                    (*path, "coefficient"))
+        if mu is not None and body is not None:
+            result.append(Friction(str(spec["constraint"]), body.name, mu, str(spec["sliding"])))
+    return tuple(result)
+
+
+def _potentials(value: Any, symbols: Mapping[str, sympy.Symbol], bodies: tuple[Body, ...],
+                errors: _Collector) -> tuple[PairPotential, ...]:
+    result: list[PairPotential] = []
+    names = {b.name for b in bodies}
+    for index, entry in enumerate(_sequence(value, ("potentials",), errors)):
+        path: Path = ("potentials", index)
+        spec = _mapping(entry, path, errors)
+        _check_keys(spec, {"bodies", "anchor", "energy", "distance"}, {"bodies", "energy", "distance"}, path,
+                    errors)
+        members = spec.get("bodies")
+        if not isinstance(members, list) or not 1 <= len(members) <= 2:
+            errors.add("one or two body names", (*path, "bodies"))
+            continue
+        for position, member in enumerate(members):
+            if member not in names:
+                errors.add(f"unknown body {member!r}", (*path, "bodies", position))
+        anchor: tuple[tuple[str, sympy.Expr], ...] = ()
+        if len(members) == 1:
+            anchor = _axes(spec.get("anchor"), symbols, (*path, "anchor"), errors)
+        elif "anchor" in spec:
+            errors.add("an anchor is only for a potential on one body", (*path, "anchor"))
+        distance_name = spec.get("distance")
+        if not isinstance(distance_name, str) or not _NAME.match(distance_name):
+            errors.add("the name of the distance variable", (*path, "distance"))
+            continue
+        distance = symbols.get(distance_name, sympy.Symbol(distance_name, positive=True))
+        energy = errors.read(
+            spec.get("energy"), {**symbols, distance_name: distance}, (*path, "energy"))
+        if energy is not None and all(m in names for m in members):
+            result.append(PairPotential(f"potential{index}", tuple(members), anchor, energy, distance))
+    return tuple(result)
+
+
+def _collision(value: Any, symbols: Mapping[str, sympy.Symbol], bodies: tuple[Body, ...],
+               coordinates: tuple[Coordinate, ...], errors: _Collector) -> Collision | None:
+    if value is None:
+        return None
+    path: Path = ("collision",)
+    spec = _mapping(value, path, errors)
+    keys = {"projectile", "mass", "direction", "target", "at", "reaches"}
+    _check_keys(spec, keys, keys, path, errors)
+    projectile = spec.get("projectile")
+    if not isinstance(projectile, str) or not _NAME.match(projectile):
+        errors.add("the projectile's name", (*path, "projectile"))
+    target = spec.get("target")
+    if not any(b.name == target for b in bodies):
+        errors.add(f"unknown body {target!r}", (*path, "target"))
+    mass = errors.read(spec.get("mass"), symbols, (*path, "mass"))
+    direction = _axes(spec.get("direction"), symbols, (*path, "direction"), errors)
+    at = _coordinate_values(spec.get("at"), symbols, coordinates, (*path, "at"), errors)
+    reaches = _coordinate_values(spec.get("reaches"), symbols, coordinates, (*path, "reaches"), errors)
+    if mass is None or not direction or not isinstance(projectile, str) or not isinstance(target, str):
+        return None
+    return Collision(projectile, mass, direction, target, at, reaches)
+
+
+def _coordinate_values(value: Any, symbols: Mapping[str, sympy.Symbol], coordinates: tuple[Coordinate, ...],
+                       path: Path, errors: _Collector) -> tuple[tuple[str, sympy.Expr], ...]:
+    result: list[tuple[str, sympy.Expr]] = []
+    names = {c.name for c in coordinates}
+    for name, text in _mapping(value, path, errors).items():
+        if name not in names:
+            errors.add(f"unknown coordinate {name!r}", (*path, str(name)))
+            continue
+        expr = errors.read(text, symbols, (*path, str(name)))
+        if expr is not None:
+            result.append((str(name), expr))
+    return tuple(result)
+
+
+def _state(value: Any, symbols: Mapping[str, sympy.Symbol], coordinates: tuple[Coordinate, ...],
+           errors: _Collector) -> tuple[tuple[sympy.Symbol, sympy.Expr], ...]:
+    known = {c.name: c.symbol for c in coordinates} | {f"{c.name}_dot": c.velocity for c in coordinates}
+    given: dict[sympy.Symbol, sympy.Expr] = {c.velocity: sympy.Integer(0) for c in coordinates}
+    for name, text in _mapping(value, ("state",), errors, required=False).items():
+        if name not in known:
+            errors.add(f"unknown coordinate or velocity {name!r}", ("state", str(name)))
+            continue
+        expr = errors.read(text, symbols, ("state", str(name)))
+        if expr is not None:
+            given[known[name]] = expr
+    return tuple(given.items())
+
+
+def _domain(value: Any, symbols: Mapping[str, sympy.Symbol], errors: _Collector) -> tuple[
+        tuple[tuple[sympy.Symbol, sympy.Expr, sympy.Expr], ...], tuple[sympy.Expr, ...]]:
+    spec = _mapping(value, ("domain",), errors, required=False)
+    _check_keys(spec, {"ranges", "positive"}, set(), ("domain",), errors)
+    ranges: list[tuple[sympy.Symbol, sympy.Expr, sympy.Expr]] = []
+    for name, bounds in _mapping(spec.get("ranges"), ("domain", "ranges"), errors, required=False).items():
+        path: Path = ("domain", "ranges", str(name))
+        if name not in symbols:
+            errors.add(f"unknown symbol {name!r}", path)
+            continue
+        if not isinstance(bounds, list) or len(bounds) != 2:
+            errors.add("a range is [low, high]", path)
+            continue
+        low = errors.read(bounds[0], symbols, (*path, 0))
+        high = errors.read(bounds[1], symbols, (*path, 1))
+        if low is not None and high is not None:
+            ranges.append((symbols[name], low, high))
+    positive: list[sympy.Expr] = []
+    for index, text in enumerate(_sequence(spec.get("positive"), ("domain", "positive"), errors)):
+        expr = errors.read(text, symbols, ("domain", "positive", index))
+        if expr is not None:
+            positive.append(expr)
+    return tuple(ranges), tuple(positive)
+
+
+def _quantities(value: Any, symbols: Mapping[str, sympy.Symbol], coordinates: tuple[Coordinate, ...],
+                constraints: tuple[Constraint, ...], collision: Collision | None,
+                errors: _Collector) -> tuple[Quantity, ...]:
+    result: list[Quantity] = []
+    for name, entry in _mapping(value, ("quantities",), errors).items():
+        quantity = _quantity(str(name), entry, ("quantities", str(name)), symbols, coordinates, constraints,
+                             collision, errors)
+        if quantity is not None:
+            result.append(quantity)
+    return tuple(result)
+
+
+def _quantity(name: str, entry: Any, path: Path, symbols: Mapping[str, sympy.Symbol],
+              coordinates: tuple[Coordinate, ...], constraints: tuple[Constraint, ...],
+              collision: Collision | None, errors: _Collector) -> Quantity | None:
+    spec = _mapping(entry, path, errors)
+    kinds = [k for k in spec if k in set(QuantityKind)]
+    if len(kinds) != 1:
+        errors.add(f"give exactly one of {[k.value for k in QuantityKind]}", path)
+        return None
+    kind = QuantityKind(kinds[0])
+    allowed = {kind.value} | ({"zero"} if kind is QuantityKind.SOLVE else set())
+    _check_keys(spec, allowed, allowed, path, errors)
+    target = spec[kind.value]
+    where: Path = (*path, kind.value)
+    if kind in _QUANTITY_TARGET:
+        pool = {c.name for c in coordinates} if _QUANTITY_TARGET[kind] == "coordinate" else {
+            c.name for c in constraints}
+        if target not in pool:
+            errors.add(f"unknown {_QUANTITY_TARGET[kind]} {target!r}", where)
+            return None
+        return Quantity(name, kind, str(target))
+    if kind is QuantityKind.SOLVE:
+        if target not in symbols:
+            errors.add(f"unknown symbol {target!r}", where)
+            return None
+        inner = _quantity(f"{name}.zero", spec.get("zero"), (*path, "zero"), symbols, coordinates,
+                          constraints, collision, errors)
+        return Quantity(name, kind, parameter=symbols[target], inner=inner) if inner is not None else None
+    if collision is None:
+        errors.add("this quantity needs a collision section", where)
+        return None
+    return Quantity(name, kind)

@@ -1,0 +1,182 @@
+"""Shared building blocks of the methods: Cartesian degrees of freedom, energies, forces, time derivatives.
+
+Coordinates are plain symbols with separate velocity and acceleration symbols; d/dt is the chain rule
+over them (`time_derivative`), which keeps every expression free of sympy's Function(t) machinery.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from functools import cached_property
+
+import sympy
+
+from physics.engine.model import Body, Model, PairPotential
+from physics.errors import DerivationError
+
+
+@dataclass(frozen=True)
+class CartesianDof:
+    """One Cartesian degree of freedom of a body: x, y or the angle phi."""
+
+    body: str
+    name: str  # e.g. "x_block"
+    symbol: sympy.Symbol
+    velocity: sympy.Symbol
+    acceleration: sympy.Symbol
+    inertia: sympy.Expr  # mass for x and y, moment of inertia for phi
+    mapping: sympy.Expr  # the same coordinate in terms of the generalized coordinates
+
+
+def time_derivative(expr: sympy.Expr, model: Model) -> sympy.Expr:
+    """d/dt of an expression in the coordinates and their velocities."""
+    result = sympy.Integer(0)
+    for c in model.coordinates:
+        result += sympy.diff(expr, c.symbol) * c.velocity + sympy.diff(expr, c.velocity) * c.acceleration
+    return result
+
+
+class Mechanics:
+    """The model's energies and forces in both descriptions (generalized and Cartesian)."""
+
+    def __init__(self, model: Model) -> None:
+        self.model = model
+
+    @cached_property
+    def dofs(self) -> tuple[CartesianDof, ...]:
+        result: list[CartesianDof] = []
+        for body in self.model.bodies:
+            entries: list[tuple[str, sympy.Expr, sympy.Expr]] = [
+                (f"{axis}_{body.name}", body.mass, expr) for axis, expr in body.position]
+            if body.angle is not None:
+                entries.append((f"phi_{body.name}", body.inertia, body.angle))
+            for name, inertia, mapping in entries:
+                result.append(CartesianDof(
+                    body.name, name, self.model.cartesian_symbol(name), sympy.Symbol(f"v_{name}", real=True),
+                    sympy.Symbol(f"a_{name}", real=True), inertia, mapping))
+        return tuple(result)
+
+    @cached_property
+    def q(self) -> tuple[sympy.Symbol, ...]:
+        return tuple(c.symbol for c in self.model.coordinates)
+
+    @cached_property
+    def qd(self) -> tuple[sympy.Symbol, ...]:
+        return tuple(c.velocity for c in self.model.coordinates)
+
+    @cached_property
+    def qdd(self) -> tuple[sympy.Symbol, ...]:
+        return tuple(c.acceleration for c in self.model.coordinates)
+
+    @cached_property
+    def multipliers(self) -> tuple[sympy.Symbol, ...]:
+        return tuple(sympy.Symbol(f"lambda_{c.name}", real=True) for c in self.model.constraints)
+
+    # --- generalized description -------------------------------------------------------------
+
+    @cached_property
+    def kinetic(self) -> sympy.Expr:
+        """T = sum of 1/2 m v^2 and 1/2 I omega^2, velocities from the positions in the coordinates."""
+        return sympy.Add(*(sympy.Rational(1, 2) * d.inertia * time_derivative(d.mapping, self.model) ** 2
+                           for d in self.dofs))
+
+    @cached_property
+    def potential(self) -> sympy.Expr:
+        """V in the generalized coordinates: gravity plus the pair potentials at the mapped distance."""
+        by_name = {d.name: d.mapping for d in self.dofs}
+        return self._potential(by_name)
+
+    @cached_property
+    def mass_matrix(self) -> sympy.Matrix:
+        return sympy.Matrix([[sympy.expand(sympy.diff(self.kinetic, a, b)) for b in self.qd] for a in self.qd])
+
+    # --- Cartesian description ---------------------------------------------------------------
+
+    @cached_property
+    def cartesian_potential(self) -> sympy.Expr:
+        return self._potential({d.name: d.symbol for d in self.dofs})
+
+    def cartesian_state(self) -> dict[sympy.Symbol, sympy.Expr]:
+        """Cartesian positions and velocities of the current configuration, from the mapping."""
+        result: dict[sympy.Symbol, sympy.Expr] = {}
+        for d in self.dofs:
+            result[d.symbol] = d.mapping
+            result[d.velocity] = time_derivative(d.mapping, self.model)
+        return result
+
+    def gap_gradient(self, index: int) -> list[sympy.Expr]:
+        gap = self.model.constraints[index].gap
+        return [sympy.diff(gap, d.symbol) for d in self.dofs]
+
+    def sliding_direction(self, body: str, coordinate: str) -> list[sympy.Expr]:
+        """Unit vector (over the Cartesian dofs) along which `body` slides as `coordinate` increases."""
+        q = self.model.coordinate(coordinate).symbol
+        tangent = [sympy.diff(d.mapping, q) if d.body == body and not d.name.startswith("phi_") else
+                   sympy.Integer(0) for d in self.dofs]
+        norm = sympy.sqrt(sympy.Add(*(t**2 for t in tangent)))
+        norm = sympy.simplify(norm)
+        if norm == 0:
+            raise DerivationError(f"body {body!r} does not move with coordinate {coordinate!r}")
+        return [sympy.simplify(t / norm) for t in tangent]
+
+    def friction_forces(self, multipliers: Sequence[sympy.Expr]) -> list[sympy.Expr]:
+        """Kinetic friction on each Cartesian dof: -mu * lambda along the sliding direction."""
+        total = [sympy.Integer(0) for _ in self.dofs]
+        names = [c.name for c in self.model.constraints]
+        for friction in self.model.frictions:
+            normal = multipliers[names.index(friction.constraint)]
+            direction = self.sliding_direction(friction.body, friction.sliding)
+            total = [t - friction.coefficient * normal * u for t, u in zip(total, direction, strict=True)]
+        return total
+
+    # --- shared ------------------------------------------------------------------------------
+
+    def _potential(self, place: Mapping[str, sympy.Expr]) -> sympy.Expr:
+        total = sympy.Integer(0)
+        if self.model.gravity is not None:
+            for body in self.model.bodies:
+                if f"y_{body.name}" in place:
+                    total += body.mass * self.model.gravity * place[f"y_{body.name}"]
+        for pair in self.model.potentials:
+            total += pair.energy.subs(pair.distance, self.distance(pair, place))
+        return total
+
+    def distance(self, pair: PairPotential, place: Mapping[str, sympy.Expr]) -> sympy.Expr:
+        """Distance between the pair's bodies (or body and anchor); signed x_b - x_a on a line."""
+        first = self.model.body(pair.bodies[0])
+        if len(pair.bodies) == 2:
+            second: Body | None = self.model.body(pair.bodies[1])
+            axes = [a for a, _ in first.position if any(b == a for b, _ in second.position)] if second else []
+            ends = [(place[f"{a}_{first.name}"], place[f"{a}_{pair.bodies[1]}"]) for a in axes]
+        else:
+            anchor = dict(pair.anchor)
+            axes = [a for a, _ in first.position if a in anchor]
+            ends = [(anchor[a], place[f"{a}_{first.name}"]) for a in axes]
+        if not ends:
+            raise DerivationError(f"the bodies of {pair.bodies} share no axis")
+        if len(ends) == 1:
+            return ends[0][1] - ends[0][0]
+        return sympy.sqrt(sympy.Add(*((b - a) ** 2 for a, b in ends)))
+
+
+def solve_linear(equations: Sequence[sympy.Expr], unknowns: Sequence[sympy.Symbol],
+                 what: str) -> dict[sympy.Symbol, sympy.Expr]:
+    """The unique solution of linear equations (each `= 0`); DerivationError if there is none."""
+    matrix, rhs = sympy.linear_eq_to_matrix(list(equations), list(unknowns))
+    if matrix.shape[0] < matrix.shape[1] or matrix.rank(simplify=True) < len(unknowns):
+        raise DerivationError(f"{what}: the equations do not determine {', '.join(map(str, unknowns))}")
+    if matrix.shape[0] > matrix.shape[1]:
+        rows = _independent_rows(matrix)
+        matrix, rhs = matrix.extract(rows, list(range(matrix.shape[1]))), rhs.extract(rows, [0])
+    solution = matrix.LUsolve(rhs)
+    return {u: sympy.simplify(v) for u, v in zip(unknowns, solution, strict=True)}
+
+
+def _independent_rows(matrix: sympy.Matrix) -> list[int]:
+    chosen: list[int] = []
+    for row in range(matrix.shape[0]):
+        trial = [*chosen, row]
+        if matrix.extract(trial, list(range(matrix.shape[1]))).rank(simplify=True) == len(trial):
+            chosen.append(row)
+    return chosen

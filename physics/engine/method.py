@@ -1,0 +1,129 @@
+"""What every derivation method provides, and the quantities built on top of those basics."""
+
+from __future__ import annotations
+
+from abc import ABC, abstractmethod
+
+import sympy
+
+from physics.engine.mechanics import Mechanics
+from physics.engine.model import Model, Quantity, QuantityKind
+from physics.engine.results import MethodReport, Step
+from physics.errors import DerivationError
+
+
+class NotApplicable(Exception):
+    """This method cannot give this quantity (recorded as a note, not a failure)."""
+
+
+class Method(ABC):
+    name: str
+    title: str
+
+    def __init__(self, model: Model, mechanics: Mechanics) -> None:
+        self.model = model
+        self.mech = mechanics
+        self.steps: list[Step] = []
+        self._logged: set[str] = set()
+
+    def step(self, title: str, latex: str) -> None:
+        if title not in self._logged:
+            self._logged.add(title)
+            self.steps.append(Step(title, latex))
+
+    # --- basics each method may provide --------------------------------------------------------
+
+    def acceleration(self, coordinate: str) -> sympy.Expr:
+        raise NotApplicable(f"{self.title} does not give accelerations here")
+
+    def force(self, constraint: str) -> sympy.Expr:
+        raise NotApplicable(f"{self.title} does not give constraint forces")
+
+    def potential_force(self, coordinate: str) -> sympy.Expr:
+        raise NotApplicable(f"{self.title} does not give generalized forces")
+
+    def frequency(self, coordinate: str, equilibrium: sympy.Expr) -> sympy.Expr:
+        raise NotApplicable(f"{self.title} does not give oscillation frequencies")
+
+    def collision(self, item: QuantityKind) -> sympy.Expr:
+        raise NotApplicable(f"{self.title} does not treat collisions")
+
+    # --- quantities -------------------------------------------------------------------------------
+
+    def answer(self, quantity: Quantity) -> sympy.Expr:
+        kind = quantity.kind
+        if kind is QuantityKind.ACCELERATION:
+            return self.acceleration(quantity.target)
+        if kind is QuantityKind.FORCE:
+            return self.force(quantity.target)
+        if kind is QuantityKind.POTENTIAL_FORCE:
+            return self.potential_force(quantity.target)
+        if kind is QuantityKind.EQUILIBRIUM:
+            return self.equilibrium(quantity.target)
+        if kind is QuantityKind.STIFFNESS:
+            q = self.model.coordinate(quantity.target).symbol
+            q0 = self.equilibrium(quantity.target)
+            stiffness = sympy.simplify(-sympy.diff(self.potential_force(quantity.target), q).subs(q, q0))
+            self.step(f"Stiffness at the equilibrium ({quantity.target})",
+                      rf"k = -\left.\frac{{\partial Q}}{{\partial {sympy.latex(q)}}}\right|_0 = "
+                      + sympy.latex(stiffness))
+            return stiffness
+        if kind is QuantityKind.ANGULAR_FREQUENCY:
+            return self.frequency(quantity.target, self.equilibrium(quantity.target))
+        if kind is QuantityKind.PERIOD:
+            omega = self.frequency(quantity.target, self.equilibrium(quantity.target))
+            return sympy.simplify(2 * sympy.pi / omega)
+        if kind is QuantityKind.SOLVE:
+            assert quantity.inner is not None and quantity.parameter is not None
+            return self.solve_for(quantity.parameter, self.answer(quantity.inner), quantity.name)
+        return self.collision(kind)
+
+    def equilibrium(self, coordinate: str) -> sympy.Expr:
+        """The stable root of the generalized force Q(q) = 0: Q'(q0) < 0 on the domain."""
+        q = self.model.coordinate(coordinate).symbol
+        force = self.potential_force(coordinate)
+        others = (force.free_symbols & set(self.mech.q)) - {q}
+        if others:
+            raise NotApplicable(f"the force on {coordinate} depends on other coordinates {sorted(map(str, others))}")
+        roots = [r for r in sympy.solve(force, q) if r.is_real is not False and not
+                 (q.is_positive and r.is_positive is False)]
+        slope = sympy.diff(force, q)
+        stable = []
+        for root in roots:
+            curvature = sympy.simplify(slope.subs(q, root))
+            if curvature.is_negative or (curvature.is_negative is None and _negative_somewhere(curvature)):
+                stable.append(root)
+        if len(stable) != 1:
+            raise DerivationError(
+                f"{self.title}: expected one stable equilibrium of {coordinate}, found {len(stable)} among "
+                f"the roots {roots} of Q = {force}", quantity=coordinate)
+        self.step(f"Equilibrium of {coordinate}",
+                  rf"Q({sympy.latex(q)}) = {sympy.latex(force)} = 0 \Rightarrow {sympy.latex(q)}_0 = "
+                  + sympy.latex(stable[0]) + r",\quad Q'(" + sympy.latex(q) + "_0) < 0")
+        return sympy.simplify(stable[0])
+
+    def solve_for(self, parameter: sympy.Symbol, expr: sympy.Expr, name: str) -> sympy.Expr:
+        roots = [r for r in sympy.solve(expr, parameter)
+                 if not (parameter.is_positive and r.is_positive is False) and r.is_real is not False]
+        if len(roots) != 1:
+            raise DerivationError(f"{self.title}: {name}: expected one value of {parameter}, found {roots}",
+                                  quantity=name)
+        self.step(f"Solve for {parameter}", sympy.latex(sympy.Eq(expr, 0)) + r"\Rightarrow "
+                  + sympy.latex(sympy.Eq(parameter, roots[0])))
+        return sympy.simplify(roots[0])
+
+    @abstractmethod
+    def derive(self) -> None:
+        """Write the method's general steps (the equations of motion) before quantities are asked."""
+
+    def report(self, results: dict[str, sympy.Expr], notes: list[str]) -> MethodReport:
+        return MethodReport(self.name, self.title, tuple(self.steps), dict(results), tuple(notes))
+
+    def at_state(self, expr: sympy.Expr) -> sympy.Expr:
+        return sympy.simplify(expr.subs(dict(self.model.state)))
+
+
+def _negative_somewhere(expr: sympy.Expr) -> bool:
+    """A cheap sign test at a point where every positive symbol is 1 (used only when sympy is unsure)."""
+    value = expr.subs({s: 1 for s in expr.free_symbols})
+    return bool(value.is_negative)

@@ -1,0 +1,142 @@
+"""A mechanical model as data: coordinates, bodies, constraints, forces, events and asked quantities.
+
+Two descriptions of the same system live side by side on purpose: each body's position (and angle)
+in terms of the generalized coordinates, used by the Lagrangian methods, and the constraints written
+as gap functions of the bodies' own Cartesian coordinates (`x_<body>`, `y_<body>`, `phi_<body>`), used
+by Newton's method. A gap is kept at zero; its force on the bodies is lambda * grad(gap), so writing the
+gap as "how far from violating the constraint" makes lambda the magnitude (normal force, tension).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from enum import StrEnum
+
+import sympy
+
+AXES = ("x", "y")
+
+
+@dataclass(frozen=True)
+class Coordinate:
+    """A generalized coordinate with its velocity and acceleration symbols."""
+
+    name: str
+    symbol: sympy.Symbol
+    velocity: sympy.Symbol
+    acceleration: sympy.Symbol
+
+
+@dataclass(frozen=True)
+class Body:
+    """A particle (inertia 0, no angle) or a rigid body in the plane, placed by the coordinates."""
+
+    name: str
+    mass: sympy.Expr
+    inertia: sympy.Expr
+    position: tuple[tuple[str, sympy.Expr], ...]  # (axis, expression in the coordinates)
+    angle: sympy.Expr | None = None
+
+    def cartesian_names(self) -> tuple[str, ...]:
+        names = tuple(f"{axis}_{self.name}" for axis, _ in self.position)
+        return names + ((f"phi_{self.name}",) if self.angle is not None else ())
+
+
+class ConstraintKind(StrEnum):
+    SURFACE = "surface"
+    STRING = "string"
+    ROLLING = "rolling"
+    OTHER = "other"
+
+
+@dataclass(frozen=True)
+class Constraint:
+    name: str
+    gap: sympy.Expr  # in the bodies' Cartesian symbols
+    kind: ConstraintKind
+
+
+@dataclass(frozen=True)
+class Friction:
+    """Kinetic friction mu*lambda at a constraint between a particle and a fixed surface, opposing
+    the sliding, which is towards increasing `sliding` coordinate."""
+
+    constraint: str
+    body: str
+    coefficient: sympy.Expr
+    sliding: str
+
+
+@dataclass(frozen=True)
+class PairPotential:
+    """A potential energy U(d) of the distance d between two bodies, or a body and a fixed anchor."""
+
+    name: str
+    bodies: tuple[str, ...]
+    anchor: tuple[tuple[str, sympy.Expr], ...]
+    energy: sympy.Expr
+    distance: sympy.Symbol
+
+
+@dataclass(frozen=True)
+class Collision:
+    """A projectile particle hits `target` (at rest at `at`) along `direction` and sticks; the
+    merged body then moves until the coordinates reach `reaches` with zero velocity."""
+
+    projectile: str
+    projectile_mass: sympy.Expr
+    direction: tuple[tuple[str, sympy.Expr], ...]
+    target: str
+    at: tuple[tuple[str, sympy.Expr], ...]
+    reaches: tuple[tuple[str, sympy.Expr], ...]
+
+
+class QuantityKind(StrEnum):
+    ACCELERATION = "acceleration"  # second derivative of a coordinate
+    FORCE = "force"  # the multiplier of a constraint
+    EQUILIBRIUM = "equilibrium"  # stable equilibrium value of a coordinate
+    POTENTIAL_FORCE = "potential_force"  # generalized force of the potentials on a coordinate
+    STIFFNESS = "stiffness"  # second derivative of the potential at the equilibrium
+    ANGULAR_FREQUENCY = "angular_frequency"  # of small oscillations about the equilibrium
+    PERIOD = "period"
+    SOLVE = "solve"  # the parameter value that makes another quantity vanish
+    PROJECTILE_SPEED = "projectile_speed"
+    ENERGY_FRACTION_LOST = "energy_fraction_lost"
+
+
+@dataclass(frozen=True)
+class Quantity:
+    name: str
+    kind: QuantityKind
+    target: str = ""  # coordinate or constraint name
+    parameter: sympy.Symbol | None = None  # for SOLVE
+    inner: Quantity | None = None  # for SOLVE: the quantity set to zero
+
+
+@dataclass(frozen=True)
+class Model:
+    coordinates: tuple[Coordinate, ...]
+    bodies: tuple[Body, ...]
+    constraints: tuple[Constraint, ...]
+    frictions: tuple[Friction, ...]
+    potentials: tuple[PairPotential, ...]
+    gravity: sympy.Expr | None
+    collision: Collision | None
+    state: tuple[tuple[sympy.Symbol, sympy.Expr], ...]  # coordinate/velocity symbol -> value
+    ranges: tuple[tuple[sympy.Symbol, sympy.Expr, sympy.Expr], ...]
+    positive: tuple[sympy.Expr, ...]  # expressions the domain keeps positive
+    quantities: tuple[Quantity, ...]
+    parameters: tuple[sympy.Symbol, ...]  # the problem's symbols, in table order
+    cartesian: tuple[tuple[str, sympy.Symbol], ...]  # Cartesian symbol names of every body
+
+    def body(self, name: str) -> Body:
+        return next(b for b in self.bodies if b.name == name)
+
+    def coordinate(self, name: str) -> Coordinate:
+        return next(c for c in self.coordinates if c.name == name)
+
+    def constraint(self, name: str) -> Constraint:
+        return next(c for c in self.constraints if c.name == name)
+
+    def cartesian_symbol(self, name: str) -> sympy.Symbol:
+        return dict(self.cartesian)[name]

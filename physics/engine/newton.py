@@ -1,0 +1,132 @@
+"""Newton's second law for every body and axis in Cartesian coordinates, constraint forces unknown.
+
+Each constraint gap g(x) = 0 acts on the bodies with the force lambda * grad g (the multiplier is the
+force's magnitude when the gap is written as a clearance); its second time derivative vanishing
+closes the system. Nothing here uses the Lagrangian: the generalized coordinates only say where the
+bodies are now, and turn Cartesian accelerations back into coordinate accelerations.
+"""
+
+from __future__ import annotations
+
+from functools import cached_property
+
+import sympy
+
+from physics.engine import collision
+from physics.engine.mechanics import solve_linear, time_derivative
+from physics.engine.method import Method, NotApplicable
+from physics.engine.model import QuantityKind
+
+
+class NewtonMethod(Method):
+    name = "newton"
+    title = "Newton's laws with the constraint forces as unknowns"
+
+    def derive(self) -> None:
+        mech = self.mech
+        applied = self.applied_forces
+        for d, force in zip(mech.dofs, applied, strict=True):
+            constraint_terms = sympy.Add(*(lam * g for lam, g in zip(
+                mech.multipliers, (sympy.diff(c.gap, d.symbol) for c in self.model.constraints), strict=True)))
+            self.step(f"Newton's second law, {d.name}",
+                      sympy.latex(sympy.Eq(d.inertia * d.acceleration, force + constraint_terms)))
+        for constraint in self.model.constraints:
+            self.step(f"Constraint {constraint.name}", sympy.latex(sympy.Eq(constraint.gap, 0)))
+
+    @cached_property
+    def applied_forces(self) -> list[sympy.Expr]:
+        """Gravity and potentials as -grad V in Cartesian coordinates, plus kinetic friction."""
+        mech = self.mech
+        friction = mech.friction_forces(mech.multipliers)
+        return [-sympy.diff(mech.cartesian_potential, d.symbol) + f for d, f in zip(mech.dofs, friction,
+                                                                                     strict=True)]
+
+    @cached_property
+    def solution(self) -> dict[sympy.Symbol, sympy.Expr]:
+        """Cartesian accelerations and multipliers at the model's state."""
+        mech, model = self.mech, self.model
+        equations: list[sympy.Expr] = []
+        for d, force in zip(mech.dofs, self.applied_forces, strict=True):
+            constraint_terms = sympy.Add(*(lam * sympy.diff(c.gap, d.symbol)
+                                           for lam, c in zip(mech.multipliers, model.constraints, strict=True)))
+            equations.append(d.inertia * d.acceleration - force - constraint_terms)
+        for c in model.constraints:
+            gradient = [sympy.diff(c.gap, d.symbol) for d in mech.dofs]
+            second = sympy.Add(*(g * d.acceleration for g, d in zip(gradient, mech.dofs, strict=True)))
+            second += sympy.Add(*(sympy.diff(c.gap, a.symbol, b.symbol) * a.velocity * b.velocity
+                                  for a in mech.dofs for b in mech.dofs))
+            self.step(f"Constraint {c.name} differentiated twice", sympy.latex(sympy.Eq(second, 0)))
+            equations.append(second)
+        place = mech.cartesian_state()
+        state = dict(model.state)
+        equations = [e.subs(place).subs(state) for e in equations]
+        unknowns = [d.acceleration for d in mech.dofs] + list(mech.multipliers)
+        solution = solve_linear(equations, unknowns, self.title)
+        self.step("Solved for the accelerations and constraint forces",
+                  r",\quad ".join(sympy.latex(sympy.Eq(k, v)) for k, v in solution.items()))
+        return solution
+
+    @cached_property
+    def coordinate_accelerations(self) -> dict[sympy.Symbol, sympy.Expr]:
+        """q'' from the Cartesian accelerations: a = d2x/dt2 (q), solved in the least-squares sense."""
+        mech, model = self.mech, self.model
+        state = dict(model.state)
+        jac = sympy.Matrix([[sympy.diff(d.mapping, q) for q in mech.q] for d in mech.dofs]).subs(state)
+        rest = sympy.Matrix([
+            (time_derivative(time_derivative(d.mapping, model), model).subs(dict.fromkeys(mech.qdd, 0))
+             ).subs(state) for d in mech.dofs])
+        measured = sympy.Matrix([self.solution[d.acceleration] for d in mech.dofs])
+        normal = jac.T * jac
+        if normal.det() == 0:
+            raise NotApplicable("the coordinates are not determined by the Cartesian positions")
+        qdd = normal.inv() * jac.T * (measured - rest)
+        return {a: sympy.simplify(v) for a, v in zip(mech.qdd, qdd, strict=True)}
+
+    def acceleration(self, coordinate: str) -> sympy.Expr:
+        return self.at_state(self.coordinate_accelerations[self.model.coordinate(coordinate).acceleration])
+
+    def force(self, constraint: str) -> sympy.Expr:
+        index = [c.name for c in self.model.constraints].index(constraint)
+        return self.at_state(self.solution[self.mech.multipliers[index]])
+
+    def potential_force(self, coordinate: str) -> sympy.Expr:
+        """Virtual work of the Cartesian forces of the potentials: Q = sum F_i dx_i/dq."""
+        mech = self.mech
+        q = self.model.coordinate(coordinate).symbol
+        place = mech.cartesian_state()
+        force = sympy.Add(*((-sympy.diff(mech.cartesian_potential, d.symbol)).subs(place)
+                            * sympy.diff(d.mapping, q) for d in mech.dofs))
+        force = sympy.simplify(force)
+        self.step(f"Virtual work of the forces along {coordinate}",
+                  rf"Q_{{{sympy.latex(q)}}} = \sum_i F_i \frac{{\partial x_i}}{{\partial {sympy.latex(q)}}} = "
+                  + sympy.latex(force))
+        return force
+
+    def frequency(self, coordinate: str, equilibrium: sympy.Expr) -> sympy.Expr:
+        """Linearized Cartesian equations m x'' = -K x (no constraints): omega^2 from eig(M^-1 K)."""
+        mech = self.mech
+        if self.model.constraints:
+            raise NotApplicable("Cartesian small oscillations are done here only without constraints")
+        q = self.model.coordinate(coordinate).symbol
+        at = {q: equilibrium, **{c: 0 for c in mech.q if c != q}}
+        point = {d.symbol: d.mapping.subs(at) for d in mech.dofs}
+        symbols = [d.symbol for d in mech.dofs]
+        stiffness = sympy.hessian(mech.cartesian_potential, symbols).subs(point)
+        mass = sympy.diag(*[d.inertia for d in mech.dofs])
+        values = [sympy.simplify(v) for v in (mass.inv() * stiffness).eigenvals()]
+        nonzero = [v for v in values if v != 0]
+        if len(nonzero) != 1:
+            raise NotApplicable(f"expected one oscillating mode, found eigenvalues {values}")
+        self.step("Small oscillations of the Cartesian equations",
+                  r"M\ddot{x} = -Kx,\ K = " + sympy.latex(sympy.simplify(stiffness))
+                  + r",\ \omega^2 = " + sympy.latex(nonzero[0]))
+        return sympy.simplify(sympy.sqrt(nonzero[0]))
+
+    def collision(self, item: QuantityKind) -> sympy.Expr:
+        if self.model.collision is None:
+            raise NotApplicable("no collision in the model")
+        steps: list[tuple[str, str]] = []
+        result = collision.by_newton(self.model, item, steps)
+        for title, latex in steps:
+            self.step(title, latex)
+        return result

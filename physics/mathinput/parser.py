@@ -1,0 +1,377 @@
+"""A hand-written precedence parser from tokens to the parse tree; it never evaluates text.
+
+Grammar (loosest first):
+    sum      := term (("+" | "-") term)*
+    term     := ("-" | "+") term | product
+    product  := power (("*" | "/") signed | juxtaposed power)*     juxtaposition binds like *
+    signed   := ("-" | "+") signed | power
+    power    := postfixed ("^" exponent | superscript)*            ^ is right-associative
+    exponent := ("-" | "+") exponent | power
+    postfixed:= atom ("!" | "%" | "°" | deg)*
+    atom     := number | name | constant | function call | "√" argument | bracketed | "|" sum "|"
+Recursion is bounded by `max_depth`, so deep nesting is a TooLarge, never a RecursionError.
+"""
+
+from __future__ import annotations
+
+from typing import Literal, NoReturn
+
+from physics.errors import AmbiguousInput, ParseError, TooLarge
+from physics.mathinput.limits import InputLimits
+from physics.mathinput.render import STUDENT_STYLE, render_text
+from physics.mathinput.tokens import Kind, Token
+from physics.mathinput.tree import (
+    Call,
+    Const,
+    Group,
+    Name,
+    Neg,
+    Node,
+    Num,
+    Postfix,
+    PostfixKind,
+    Power,
+    Product,
+    Sum,
+    ungroup,
+)
+from physics.mathinput.vocabulary import INVERSES, OPENERS
+
+_POSTFIX_KINDS: dict[str, PostfixKind] = {"!": "factorial", "%": "percent", "°": "degrees"}
+_FACTOR_STARTS = frozenset({Kind.NUM, Kind.NAME, Kind.CONST, Kind.FUNC, Kind.LPAREN, Kind.SQRT})
+
+
+class _Item:
+    """One step of a product while it is being read: operator, operand, and the token that began it."""
+
+    __slots__ = ("juxtaposed", "node", "op", "token")
+
+    def __init__(self, op: Literal["*", "/"], node: Node, token: Token, juxtaposed: bool) -> None:
+        self.op: Literal["*", "/"] = op
+        self.node = node
+        self.token = token
+        self.juxtaposed = juxtaposed
+
+
+class Parser:
+    def __init__(self, source: str, tokens: list[Token], limits: InputLimits) -> None:
+        self._source = source
+        self._tokens = tokens
+        self._limits = limits
+        self._i = 0
+        self._depth = 0
+        self._abs_depth = 0  # open |...| in the current bracket level; a | there closes instead of opening
+
+    # -- helpers -------------------------------------------------------------------------------
+    @property
+    def _peek(self) -> Token:
+        return self._tokens[self._i]
+
+    @property
+    def _prev(self) -> Token | None:
+        return self._tokens[self._i - 1] if self._i > 0 else None
+
+    def _advance(self) -> Token:
+        tok = self._tokens[self._i]
+        if tok.kind is not Kind.END:
+            self._i += 1
+        return tok
+
+    def _is_op(self, tok: Token, ops: str) -> bool:
+        return tok.kind is Kind.OP and tok.text in ops
+
+    def _typed(self, tok: Token) -> str:
+        return self._source[tok.pos : tok.end] or tok.text
+
+    def _enter(self, tok: Token) -> None:
+        self._depth += 1
+        if self._depth > self._limits.max_depth:
+            raise TooLarge(
+                f"The answer is nested too deeply (at most {self._limits.max_depth} levels).", tok.pos
+            )
+
+    def _leave(self) -> None:
+        self._depth -= 1
+
+    # -- grammar -------------------------------------------------------------------------------
+    def parse(self) -> Node:
+        if self._peek.kind is Kind.END:
+            raise ParseError("The answer is empty.", 0)
+        node = self._sum()
+        tok = self._peek
+        if tok.kind is not Kind.END:
+            self._fail_after_expression(tok)
+        return node
+
+    def _sum(self) -> Node:
+        self._enter(self._peek)
+        first = self._term()
+        rest: list[tuple[Literal["+", "-"], Node]] = []
+        while self._is_op(self._peek, "+-"):
+            op = self._advance()
+            rest.append(("+" if op.text == "+" else "-", self._term()))
+        self._leave()
+        return Sum(first, tuple(rest)) if rest else first
+
+    def _term(self) -> Node:
+        tok = self._peek
+        if self._is_op(tok, "+-"):
+            self._advance()
+            self._enter(tok)
+            operand = self._term()
+            self._leave()
+            return Neg(operand) if tok.text == "-" else operand
+        return self._product()
+
+    def _signed(self) -> Node:
+        tok = self._peek
+        if self._is_op(tok, "+-"):
+            self._advance()
+            self._enter(tok)
+            operand = self._signed()
+            self._leave()
+            return Neg(operand) if tok.text == "-" else operand
+        return self._power()
+
+    def _starts_factor(self, tok: Token) -> bool:
+        return tok.kind in _FACTOR_STARTS or (tok.kind is Kind.BAR and self._abs_depth == 0)
+
+    def _product(self) -> Node:
+        first = self._power()
+        items: list[_Item] = []
+        while True:
+            tok = self._peek
+            if self._is_op(tok, "*/"):
+                self._advance()
+                items.append(_Item("*" if tok.text == "*" else "/", self._signed(), tok, False))
+            elif self._starts_factor(tok):
+                prev = self._prev
+                if tok.kind is Kind.NUM and prev is not None and prev.kind is Kind.NUM:
+                    raise ParseError(
+                        f'Two numbers side by side ("{self._source[prev.pos : tok.end]}"): remove the '
+                        "space if it is one number, or write * between them.",
+                        tok.pos,
+                    )
+                items.append(_Item("*", self._power(), tok, True))
+            else:
+                break
+        if not items:
+            return first
+        self._refuse_ambiguous_division(first, items)
+        return Product(first, tuple((item.op, item.node) for item in items))
+
+    def _refuse_ambiguous_division(self, first: Node, items: list[_Item]) -> None:
+        """`a/b c` could be (a/b)·c or a/(b·c); only an integer fraction opening a term is a coefficient."""
+        for k, item in enumerate(items):
+            if item.op != "/" or k + 1 >= len(items) or not items[k + 1].juxtaposed:
+                continue
+            if (
+                k == 0
+                and isinstance(first, Num)
+                and first.integer_literal
+                and isinstance(item.node, Num)
+                and item.node.integer_literal
+                and items[k + 1].token.space_before
+            ):
+                continue
+            run_end = k + 1
+            while run_end < len(items) and items[run_end].juxtaposed:
+                run_end += 1
+            numerator = Product(first, tuple((i.op, i.node) for i in items[:k]))
+            run = [i.node for i in items[k + 1 : run_end]]
+            left = render_text(Product(numerator, (("/", item.node),)), STUDENT_STYLE)
+            after = render_text(Product(run[0], tuple(("*", n) for n in run[1:])), STUDENT_STYLE)
+            denominator = render_text(
+                Product(item.node, tuple(("*", n) for n in run)), STUDENT_STYLE
+            )
+            readings = (f"({left})·{after}", f"{render_text(numerator, STUDENT_STYLE)}/({denominator})")
+            raise AmbiguousInput(
+                f"Did you mean {readings[0]} or {readings[1]}? Add parentheses.", item.token.pos, readings
+            )
+
+    def _power(self) -> Node:
+        node = self._postfixed()
+        while True:
+            tok = self._peek
+            if self._is_op(tok, "^"):
+                self._advance()
+                self._enter(tok)
+                node = Power(node, self._exponent(), tok.pos)
+                self._leave()
+            elif tok.kind is Kind.SUP:
+                self._advance()
+                node = Power(node, _superscript_node(tok), tok.pos)
+            else:
+                return node
+
+    def _exponent(self) -> Node:
+        tok = self._peek
+        if self._is_op(tok, "+-"):
+            self._advance()
+            self._enter(tok)
+            operand = self._exponent()
+            self._leave()
+            return Neg(operand) if tok.text == "-" else operand
+        return self._power()
+
+    def _postfixed(self) -> Node:
+        node = self._atom()
+        while self._peek.kind is Kind.POSTFIX:
+            tok = self._advance()
+            node = Postfix(_POSTFIX_KINDS[tok.text], node, tok.pos)
+        return node
+
+    def _atom(self) -> Node:
+        tok = self._peek
+        if tok.kind is Kind.NUM:
+            self._advance()
+            assert tok.value is not None
+            return Num(tok.text, tok.value, tok.is_integer_literal)
+        if tok.kind is Kind.NAME:
+            self._advance()
+            return Name(tok.text)
+        if tok.kind is Kind.CONST:
+            self._advance()
+            return Const("pi" if tok.text == "pi" else "e")
+        if tok.kind is Kind.FUNC:
+            self._advance()
+            return self._call(tok)
+        if tok.kind is Kind.SQRT:
+            self._advance()
+            return Call("sqrt", self._argument(tok, "√"), tok.pos)
+        if tok.kind is Kind.LPAREN:
+            return Group(self._bracketed())
+        if tok.kind is Kind.BAR:
+            return self._bars()
+        self._fail_atom(tok)
+
+    def _bracketed(self) -> Node:
+        opening = self._advance()
+        if self._peek.kind is Kind.RPAREN:
+            raise ParseError("Empty brackets: write something inside them.", opening.pos)
+        saved, self._abs_depth = self._abs_depth, 0
+        inner = self._sum()
+        self._abs_depth = saved
+        closing = self._peek
+        if closing.kind is Kind.RPAREN:
+            if closing.text != OPENERS[opening.text]:
+                raise ParseError(
+                    f"'{closing.text}' does not match the '{opening.text}' at position {opening.pos}.",
+                    closing.pos,
+                )
+            self._advance()
+            return inner
+        if closing.kind is Kind.END:
+            raise ParseError(f"Unbalanced bracket: this '{opening.text}' is never closed.", opening.pos)
+        self._fail_after_expression(closing)
+
+    def _bars(self) -> Node:
+        opening = self._advance()  # a | right after it opens a nested |...|, as in ||x| - 1|
+        self._abs_depth += 1
+        inner = self._sum()
+        self._abs_depth -= 1
+        closing = self._peek
+        if closing.kind is Kind.BAR:
+            self._advance()
+            return Call("abs", inner, opening.pos)
+        if closing.kind is Kind.END:
+            raise ParseError("Unbalanced '|': this one is never closed.", opening.pos)
+        self._fail_after_expression(closing)
+
+    def _call(self, func_tok: Token) -> Node:
+        func = func_tok.text
+        typed = self._typed(func_tok)
+        power: Node | None = None
+        tok = self._peek
+        if self._is_op(tok, "^"):
+            self._advance()
+            power = self._function_power(typed)
+        elif tok.kind is Kind.SUP:
+            self._advance()
+            power = _superscript_node(tok)
+        if power is not None and _is_minus_one(power) and func in INVERSES:
+            func, power = INVERSES[func], None
+        node: Node = Call(func, self._argument(func_tok, typed), func_tok.pos)
+        return Power(node, power, func_tok.pos) if power is not None else node
+
+    def _function_power(self, typed: str) -> Node:
+        tok = self._peek
+        if self._is_op(tok, "+-") and self._tokens[self._i + 1].kind is Kind.NUM:
+            self._advance()
+            number = self._advance()
+            assert number.value is not None
+            node = Num(number.text, number.value, number.is_integer_literal)
+            return Neg(node) if tok.text == "-" else node
+        if tok.kind is Kind.NUM:
+            self._advance()
+            assert tok.value is not None
+            return Num(tok.text, tok.value, tok.is_integer_literal)
+        if tok.kind is Kind.LPAREN:
+            return Group(self._bracketed())
+        raise ParseError(f"Write a power of {typed} as {typed}^2(x) or {typed}(x)^2.", tok.pos)
+
+    def _argument(self, func_tok: Token, typed: str) -> Node:
+        """A function written without brackets takes the next factor: `sin 2θ`, `sin θ^2`, `√x`."""
+        tok = self._peek
+        if tok.kind is Kind.LPAREN:
+            return Group(self._bracketed())
+        if tok.kind is Kind.BAR:
+            return self._bars()
+        if tok.kind in (Kind.NUM, Kind.NAME, Kind.CONST, Kind.FUNC, Kind.SQRT):
+            self._enter(tok)
+            node = self._power()
+            follower = self._peek
+            if (
+                tok.kind is Kind.NUM
+                and follower.kind in (Kind.NAME, Kind.CONST)
+                and not follower.space_before
+            ):
+                node = Product(node, (("*", self._power()),))
+            self._leave()
+            return node
+        if self._is_op(tok, "+-"):
+            raise ParseError(f"Put the argument of {typed} in brackets, as in {typed}(-x).", tok.pos)
+        raise ParseError(f"{typed} needs an argument, as in {typed}(x).", func_tok.pos)
+
+    # -- errors --------------------------------------------------------------------------------
+    def _fail_atom(self, tok: Token) -> NoReturn:
+        prev = self._prev
+        if tok.kind is Kind.END:
+            if prev is not None and prev.kind is Kind.OP:
+                raise ParseError(f"Nothing after '{self._typed(prev)}'.", prev.pos)
+            if prev is not None and prev.kind in (Kind.LPAREN, Kind.BAR):
+                raise ParseError(f"Unbalanced bracket: this '{prev.text}' is never closed.", prev.pos)
+            raise ParseError("The answer ends too early.", tok.pos)
+        if tok.kind is Kind.OP:
+            if prev is not None and prev.kind is Kind.OP:
+                raise ParseError(
+                    f"Nothing between '{self._typed(prev)}' and '{self._typed(tok)}'.", tok.pos
+                )
+            raise ParseError(f"Nothing before '{self._typed(tok)}'.", tok.pos)
+        if tok.kind is Kind.RPAREN:
+            if prev is not None and prev.kind is Kind.OP:
+                raise ParseError(f"Nothing after '{self._typed(prev)}'.", prev.pos)
+            raise ParseError(f"Unexpected '{tok.text}'.", tok.pos)
+        raise ParseError(f"Unexpected '{self._typed(tok)}'.", tok.pos)
+
+    def _fail_after_expression(self, tok: Token) -> NoReturn:
+        if tok.kind is Kind.RPAREN:
+            raise ParseError(f"Unmatched '{tok.text}': no bracket opens it.", tok.pos)
+        if tok.kind is Kind.BAR:
+            raise ParseError("Unexpected '|'.", tok.pos)
+        raise ParseError(f"Unexpected '{self._typed(tok)}'.", tok.pos)
+
+
+def _superscript_node(tok: Token) -> Node:
+    assert tok.value is not None
+    magnitude = abs(tok.value)
+    node = Num(str(magnitude), magnitude, True)
+    return Neg(node) if tok.value < 0 else node
+
+
+def _is_minus_one(node: Node) -> bool:
+    node = ungroup(node)
+    if isinstance(node, Neg):
+        inner = ungroup(node.operand)
+        return isinstance(inner, Num) and inner.value == 1
+    return isinstance(node, Num) and node.value == -1

@@ -1,0 +1,44 @@
+"""`parse_math`: untrusted text to a sympy expression plus how it was read, without evaluating text."""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+import sympy
+
+from physics.errors import TooLarge
+from physics.mathinput.build import Builder
+from physics.mathinput.limits import DEFAULT_LIMITS, InputLimits
+from physics.mathinput.names import NameTable
+from physics.mathinput.parser import Parser
+from physics.mathinput.render import render_latex, render_text
+from physics.mathinput.tokens import tokenize
+from physics.mathinput.words import resolve_words
+from physics.verdict import ReadAs
+
+
+@dataclass(frozen=True)
+class ParsedMath:
+    expr: sympy.Expr
+    read_as: ReadAs  # rendered from the parse tree, so it shows how the input was grouped
+
+
+def parse_math(
+    text: str, names: Mapping[str, sympy.Symbol], *, limits: InputLimits = DEFAULT_LIMITS
+) -> ParsedMath:
+    """Read `text` using only the declared `names` (spelling -> Symbol to use).
+
+    Raises ParseError, AmbiguousInput, UnknownSymbol, UnknownFunction or TooLarge, each with a 0-based
+    `position` into `text`; sizes are checked before any value is computed.
+    """
+    table = NameTable(names)
+    tokens = resolve_words(tokenize(text, limits), table)
+    try:
+        tree = Parser(text, tokens, limits).parse()
+        expr = Builder(table.symbols, limits).build(tree)
+        read_as = ReadAs(render_text(tree), render_latex(tree))
+    except RecursionError:
+        # Only reachable when a caller raises max_depth far above the default.
+        raise TooLarge("The answer is nested too deeply.", 0) from None
+    return ParsedMath(expr, read_as)

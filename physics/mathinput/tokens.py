@@ -1,0 +1,182 @@
+"""Tokenizer: splits math text into tokens that carry their 0-based position in the original text.
+
+Nothing here interprets names; words are resolved later by `names.NameTable`. Size limits on the
+text, the token count and number literals are enforced here, before any value is built.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from enum import Enum
+from fractions import Fraction
+
+from physics.errors import ParseError, TooLarge
+from physics.mathinput.limits import InputLimits
+from physics.mathinput.vocabulary import (
+    CHARACTER_VARIANTS,
+    CLOSERS,
+    OPENERS,
+    SUPERSCRIPT_DIGITS,
+    SUPERSCRIPT_SIGNS,
+)
+
+# More exponent digits than this is refused before int() is asked to read them.
+_MAX_SCI_EXPONENT_DIGITS = 6
+
+
+class Kind(Enum):
+    NUM = "number"
+    WORD = "word"  # a run of letters/digits/underscores, resolved by the name table
+    NAME = "name"  # a declared name (canonical spelling in `text`)
+    CONST = "constant"  # pi or e
+    FUNC = "function"  # canonical function name in `text`
+    OP = "operator"  # one of + - * / ^
+    LPAREN = "opening bracket"
+    RPAREN = "closing bracket"
+    BAR = "|"
+    SUP = "superscript"
+    POSTFIX = "postfix"  # ! % ° (and the word deg, after resolution)
+    SQRT = "√"
+    END = "end"
+
+
+@dataclass(frozen=True, slots=True)
+class Token:
+    kind: Kind
+    text: str  # normalized: "^" for ** as well, "*" for × · ⋅, "-" for −; "°" for the word deg
+    pos: int
+    end: int
+    space_before: bool = False
+    value: Fraction | None = None  # NUM and SUP only
+
+    @property
+    def is_integer_literal(self) -> bool:
+        return self.kind is Kind.NUM and self.text.isdigit()
+
+
+def _is_word_start(ch: str) -> bool:
+    return ch.isalpha()
+
+
+def _is_word_char(ch: str) -> bool:
+    return ch.isalpha() or ch in "0123456789_"
+
+
+def tokenize(text: str, limits: InputLimits) -> list[Token]:
+    """Split `text` into tokens ending with an END token; raise ParseError/TooLarge with a position."""
+    if len(text) > limits.max_length:
+        raise TooLarge(
+            f"The answer is too long ({len(text)} characters; at most {limits.max_length}).",
+            limits.max_length,
+        )
+    chars = [CHARACTER_VARIANTS.get(ch, ch) for ch in text]
+    tokens: list[Token] = []
+    n = len(chars)
+    i = 0
+    space = False
+    while i < n:
+        ch = chars[i]
+        if ch.isspace():
+            space = True
+            i += 1
+            continue
+        if len(tokens) >= limits.max_tokens:
+            raise TooLarge(f"The answer has too many parts (at most {limits.max_tokens} tokens).", i)
+        start = i
+        if (ch.isdigit() and ch.isascii()) or (ch == "." and i + 1 < n and chars[i + 1].isdigit()):
+            token, i = _read_number(chars, i, space, limits)
+        elif _is_word_start(ch):
+            while i < n and _is_word_char(chars[i]):
+                i += 1
+            token = Token(Kind.WORD, "".join(chars[start:i]), start, i, space)
+        elif ch == "*" and i + 1 < n and chars[i + 1] == "*":
+            i += 2
+            token = Token(Kind.OP, "^", start, i, space)
+        elif ch in "+-*/^":
+            i += 1
+            token = Token(Kind.OP, ch, start, i, space)
+        elif ch in OPENERS:
+            i += 1
+            token = Token(Kind.LPAREN, ch, start, i, space)
+        elif ch in CLOSERS:
+            i += 1
+            token = Token(Kind.RPAREN, ch, start, i, space)
+        elif ch == "|":
+            i += 1
+            token = Token(Kind.BAR, ch, start, i, space)
+        elif ch in "!%°":
+            i += 1
+            token = Token(Kind.POSTFIX, ch, start, i, space)
+        elif ch == "√":
+            i += 1
+            token = Token(Kind.SQRT, ch, start, i, space)
+        elif ch in SUPERSCRIPT_DIGITS or ch in SUPERSCRIPT_SIGNS:
+            token, i = _read_superscript(chars, i, space)
+        elif ch == ",":
+            raise ParseError("Commas are not used in answers; write a product with * or a space.", i)
+        else:
+            raise ParseError(f"Unexpected character {text[i]!r}.", i)
+        tokens.append(token)
+        space = False
+    tokens.append(Token(Kind.END, "", n, n, space))
+    return tokens
+
+
+def _read_number(chars: list[str], i: int, space: bool, limits: InputLimits) -> tuple[Token, int]:
+    n = len(chars)
+    start = i
+    while i < n and chars[i].isascii() and chars[i].isdigit():
+        i += 1
+    whole = "".join(chars[start:i])
+    fraction = ""
+    if i < n and chars[i] == ".":
+        i += 1
+        frac_start = i
+        while i < n and chars[i].isascii() and chars[i].isdigit():
+            i += 1
+        fraction = "".join(chars[frac_start:i])
+    if i + 1 < n and chars[i] == "," and chars[i + 1].isdigit():
+        raise ParseError("Use a decimal point, not a comma, inside a number (write 4.58, not 4,58).", i)
+    digits = len(whole) + len(fraction)
+    if digits > limits.max_number_digits:
+        raise TooLarge(f"A number has too many digits (at most {limits.max_number_digits}).", start)
+    shift = 0
+    literal = (whole or "0") + ("." + fraction if fraction else "")
+    if i < n and chars[i] in "eE":
+        j = i + 1
+        sign = ""
+        if j < n and chars[j] in "+-":
+            sign = chars[j]
+            j += 1
+        exp_start = j
+        while j < n and chars[j].isascii() and chars[j].isdigit():
+            j += 1
+        if j > exp_start:  # otherwise the e is a name (2e is 2 times e)
+            exp_digits = "".join(chars[exp_start:j])
+            if len(exp_digits) > _MAX_SCI_EXPONENT_DIGITS or int(exp_digits) > limits.max_sci_exponent:
+                raise TooLarge(
+                    f"A power of ten is too large (at most 10^{limits.max_sci_exponent}).", start
+                )
+            shift = int(exp_digits) * (-1 if sign == "-" else 1)
+            literal += "e" + ("-" if sign == "-" else "") + exp_digits.lstrip("0").rjust(1, "0")
+            i = j
+    value = Fraction(int(whole + fraction or "0"), 10 ** len(fraction)) * Fraction(10) ** shift
+    return Token(Kind.NUM, literal, start, i, space, value), i
+
+
+def _read_superscript(chars: list[str], i: int, space: bool) -> tuple[Token, int]:
+    n = len(chars)
+    start = i
+    sign = 1
+    while i < n and chars[i] in SUPERSCRIPT_SIGNS:
+        sign *= SUPERSCRIPT_SIGNS[chars[i]]
+        i += 1
+    digits_start = i
+    value = 0
+    while i < n and chars[i] in SUPERSCRIPT_DIGITS and i - digits_start < _MAX_SCI_EXPONENT_DIGITS:
+        value = value * 10 + SUPERSCRIPT_DIGITS[chars[i]]
+        i += 1
+    if i == digits_start:
+        raise ParseError("A superscript sign needs superscript digits after it (as in s⁻²).", start)
+    text = "".join(chars[start:i])
+    return Token(Kind.SUP, text, start, i, space, Fraction(sign * value)), i

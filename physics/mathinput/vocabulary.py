@@ -1,0 +1,89 @@
+"""The words and characters the math reader knows: functions, constants, Greek letters, Unicode operators.
+
+Data only; the tokenizer, name table and renderers look things up here.
+"""
+
+from __future__ import annotations
+
+from types import MappingProxyType
+from typing import Final
+
+GREEK_LETTERS: Final = MappingProxyType(
+    {
+        "alpha": "α", "beta": "β", "gamma": "γ", "delta": "δ", "epsilon": "ε", "zeta": "ζ",
+        "eta": "η", "theta": "θ", "iota": "ι", "kappa": "κ", "lambda": "λ", "mu": "μ",
+        "nu": "ν", "xi": "ξ", "omicron": "ο", "pi": "π", "rho": "ρ", "sigma": "σ",
+        "tau": "τ", "upsilon": "υ", "phi": "φ", "chi": "χ", "psi": "ψ", "omega": "ω",
+        "Alpha": "Α", "Beta": "Β", "Gamma": "Γ", "Delta": "Δ", "Epsilon": "Ε", "Zeta": "Ζ",
+        "Eta": "Η", "Theta": "Θ", "Iota": "Ι", "Kappa": "Κ", "Lambda": "Λ", "Mu": "Μ",
+        "Nu": "Ν", "Xi": "Ξ", "Omicron": "Ο", "Pi": "Π", "Rho": "Ρ", "Sigma": "Σ",
+        "Tau": "Τ", "Upsilon": "Υ", "Phi": "Φ", "Chi": "Χ", "Psi": "Ψ", "Omega": "Ω",
+    }
+)  # fmt: skip
+GREEK_NAMES: Final = MappingProxyType({letter: name for name, letter in GREEK_LETTERS.items()})
+
+# Capital Greek letters that LaTeX writes as the Latin letter (there is no \Alpha).
+LATIN_LOOKING_CAPITALS: Final = frozenset(
+    {"Alpha", "Beta", "Epsilon", "Zeta", "Eta", "Iota", "Kappa", "Mu", "Nu", "Omicron", "Rho", "Tau", "Chi"}
+)
+
+# Characters read as another one; every mapping is one character to one, so positions stay exact.
+CHARACTER_VARIANTS: Final = MappingProxyType(
+    {
+        "ϑ": "θ", "ϕ": "φ", "ϵ": "ε", "ϱ": "ρ", "ς": "σ", "µ": "μ", "º": "°",
+        "−": "-", "–": "-", "‐": "-", "‑": "-", "﹣": "-", "＋": "+",
+        "×": "*", "·": "*", "⋅": "*", "∙": "*", "÷": "/",
+    }
+)  # fmt: skip
+
+SUPERSCRIPT_DIGITS: Final = MappingProxyType(
+    {"⁰": 0, "¹": 1, "²": 2, "³": 3, "⁴": 4, "⁵": 5, "⁶": 6, "⁷": 7, "⁸": 8, "⁹": 9}
+)
+SUPERSCRIPT_SIGNS: Final = MappingProxyType({"⁻": -1, "⁺": 1})
+
+OPENERS: Final = MappingProxyType({"(": ")", "[": "]", "{": "}"})
+CLOSERS: Final = frozenset(OPENERS.values())
+
+# Function names a student may type, mapped to the canonical name the tree and renderers use.
+FUNCTIONS: Final = MappingProxyType(
+    {
+        "sqrt": "sqrt", "exp": "exp", "ln": "log", "log": "log", "log10": "log10", "abs": "abs",
+        "sin": "sin", "cos": "cos", "tan": "tan", "sec": "sec", "csc": "csc", "cot": "cot",
+        "asin": "asin", "acos": "acos", "atan": "atan", "arcsin": "asin", "arccos": "acos",
+        "arctan": "atan", "asec": "asec", "acsc": "acsc", "acot": "acot", "arcsec": "asec",
+        "arccsc": "acsc", "arccot": "acot", "sinh": "sinh", "cosh": "cosh", "tanh": "tanh",
+        "asinh": "asinh", "acosh": "acosh", "atanh": "atanh", "arsinh": "asinh", "arcosh": "acosh",
+        "artanh": "atanh", "factorial": "factorial",
+    }
+)  # fmt: skip
+
+# What `f^-1` means for each function that has a named inverse (sin^-1(x) is asin(x)).
+INVERSES: Final = MappingProxyType(
+    {
+        "sin": "asin", "cos": "acos", "tan": "atan", "sec": "asec", "csc": "acsc", "cot": "acot",
+        "sinh": "asinh", "cosh": "acosh", "tanh": "atanh",
+    }
+)  # fmt: skip
+
+# The functions listed to a student in an unknown-function message (the common spellings only).
+LISTED_FUNCTIONS: Final = (
+    "sqrt", "exp", "ln", "log", "log10", "abs", "sin", "cos", "tan", "sec", "csc", "cot",
+    "asin", "acos", "atan", "sinh", "cosh", "tanh", "factorial",
+)  # fmt: skip
+
+PI_SPELLINGS: Final = ("pi", "π")
+EULER_SPELLING: Final = "e"
+DEGREE_WORD: Final = "deg"
+TIMES_WORD: Final = "x"
+MAX_WORD_LENGTH: Final = 64
+
+LATEX_FUNCTIONS: Final = MappingProxyType(
+    {
+        "sin": r"\sin", "cos": r"\cos", "tan": r"\tan", "sec": r"\sec", "csc": r"\csc", "cot": r"\cot",
+        "asin": r"\arcsin", "acos": r"\arccos", "atan": r"\arctan", "asec": r"\operatorname{arcsec}",
+        "acsc": r"\operatorname{arccsc}", "acot": r"\operatorname{arccot}", "sinh": r"\sinh",
+        "cosh": r"\cosh", "tanh": r"\tanh", "asinh": r"\operatorname{arsinh}",
+        "acosh": r"\operatorname{arcosh}", "atanh": r"\operatorname{artanh}", "log": r"\ln",
+        "log10": r"\log_{10}",
+    }
+)  # fmt: skip

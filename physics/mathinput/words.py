@@ -1,0 +1,92 @@
+"""Turning WORD tokens into names, constants, functions and the postfix word `deg`.
+
+A glued run (`mgsin`) becomes several tokens, each with its own position in the original text.
+"""
+
+from __future__ import annotations
+
+from physics.errors import AmbiguousInput, TooLarge, UnknownFunction, UnknownSymbol
+from physics.mathinput.names import NameTable, Part
+from physics.mathinput.tokens import Kind, Token
+from physics.mathinput.vocabulary import DEGREE_WORD, LISTED_FUNCTIONS, MAX_WORD_LENGTH, TIMES_WORD
+
+_ENDS_OPERAND = frozenset({Kind.NUM, Kind.NAME, Kind.CONST, Kind.RPAREN, Kind.POSTFIX, Kind.SUP})
+_PART_KINDS = {"name": Kind.NAME, "const": Kind.CONST, "func": Kind.FUNC}
+
+
+def reading_text(reading: tuple[Part, ...]) -> str:
+    return "*".join(part.canonical for part in reading)
+
+
+def allowed_names(table: NameTable) -> tuple[str, ...]:
+    return table.declared
+
+
+def resolve_words(tokens: list[Token], table: NameTable) -> list[Token]:
+    """Replace every WORD token; raise on the first word that is unknown or reads two ways."""
+    out: list[Token] = []
+    for index, tok in enumerate(tokens):
+        if tok.kind is not Kind.WORD:
+            out.append(tok)
+            continue
+        word = tok.text
+        prev = out[-1] if out else None
+        nxt = tokens[index + 1]
+        if word == DEGREE_WORD and not table.is_declared(word) and prev and prev.kind in _ENDS_OPERAND:
+            out.append(Token(Kind.POSTFIX, "°", tok.pos, tok.end, tok.space_before))
+            continue
+        if (
+            word == TIMES_WORD
+            and not table.is_declared(word)
+            and prev is not None
+            and prev.kind is Kind.NUM
+            and nxt.kind is Kind.NUM
+        ):
+            out.append(Token(Kind.OP, "*", tok.pos, tok.end, tok.space_before))
+            continue
+        if len(word) > MAX_WORD_LENGTH and not table.is_declared(word):
+            raise TooLarge(
+                f"A run of {len(word)} letters is too long to read (at most {MAX_WORD_LENGTH}); "
+                "put spaces or * between the names.",
+                tok.pos,
+            )
+        resolution = table.resolve(word)
+        reading = resolution.unique
+        if reading is not None:
+            for k, part in enumerate(reading):
+                out.append(
+                    Token(
+                        _PART_KINDS[part.kind],
+                        part.canonical,
+                        tok.pos + part.start,
+                        tok.pos + part.end,
+                        tok.space_before if k == 0 else False,
+                    )
+                )
+            continue
+        if resolution.readings:
+            texts = [reading_text(r) for r in resolution.readings]
+            raise AmbiguousInput(
+                f'"{word}" can be read as {texts[0]} or {texts[1]}. '
+                "Write * or a space between the names you mean.",
+                tok.pos,
+                texts,
+            )
+        if nxt.kind is Kind.LPAREN:
+            raise UnknownFunction(
+                f'Unknown function "{word}". Functions you can use: {", ".join(LISTED_FUNCTIONS)}.',
+                tok.pos,
+                word,
+                LISTED_FUNCTIONS,
+            )
+        allowed = allowed_names(table)
+        listed = ", ".join(allowed) if allowed else "none"
+        raise UnknownSymbol(
+            f'Unknown symbol "{word}". Symbols you can use: {listed} (and the constants pi and e).'
+            if table.euler_available
+            else f'Unknown symbol "{word}". Symbols you can use: {listed} (and the constant pi).',
+            tok.pos,
+            word,
+            allowed,
+        )
+    return out

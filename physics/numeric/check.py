@@ -1,0 +1,136 @@
+"""check_numeric: read a numeric answer, check its units and figures, then compare exactly."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from fractions import Fraction
+from functools import cached_property
+
+from physics.dimensions import describe
+from physics.errors import AnswerError, MissingUnits, SigfigsError, UnexpectedUnits
+from physics.numeric.answer import NumericAnswer, read_numeric_answer
+from physics.numeric.diagnosis import diagnose
+from physics.numeric.literal import NumberLiteral
+from physics.numeric.spec import NumericSpec
+from physics.numeric.tolerance import (
+    Tolerance,
+    ToleranceKind,
+    matches_sigfigs,
+    within_absolute,
+    within_relative,
+)
+from physics.units import ParsedUnits
+from physics.verdict import Judgement, Reason, Verdict
+
+CORRECT = Judgement(True, Reason.EQUIVALENT, "Correct.")
+
+
+def _units_of(read: NumericAnswer, spec: NumericSpec, target: ParsedUnits | None) -> ParsedUnits | None:
+    """The units the answer's number is in (None: a pure number), or MissingUnits / UnexpectedUnits."""
+    if read.units is None:
+        if target is not None and spec.units_required:
+            raise MissingUnits(
+                f"Your answer needs units, for example {read.number.text} {target.text}.", read.number.end
+            )
+        return target
+    if target is None:
+        raise UnexpectedUnits("This answer is a pure number: remove the units.", read.units_position)
+    return read.units
+
+
+def _check_figures_shown(number: NumberLiteral, tolerance: Tolerance) -> None:
+    if tolerance.sigfigs is None:
+        return
+    fewest, most = number.sigfig_range
+    if fewest <= tolerance.sigfigs <= most:
+        return
+    shown = str(fewest) if fewest == most else f"{fewest} to {most}"
+    raise SigfigsError(
+        f"Give your answer to {tolerance.sigfigs} significant figures (yours shows {shown}).", number.position
+    )
+
+
+@dataclass(frozen=True)
+class _Comparison:
+    """The expected value in the spec's units and in the answer's, and the answer's path between them."""
+
+    expected: Fraction
+    expected_as_written: Fraction
+    answer_units: ParsedUnits | None
+    target: ParsedUnits | None
+    tolerance: Tolerance
+
+    @cached_property
+    def _linear(self) -> tuple[Fraction, Fraction]:
+        """(scale, shift) with value_in_target = value_as_written · scale + shift."""
+        if self.answer_units is None or self.target is None:
+            return Fraction(1), Fraction(0)
+        shift = self.answer_units.convert(Fraction(0), self.target)
+        return self.answer_units.convert(Fraction(1), self.target) - shift, shift
+
+    def in_target(self, value: Fraction) -> Fraction:
+        scale, shift = self._linear
+        return value * scale + shift
+
+    def passes(self, written: Fraction, exact: bool = True) -> bool:
+        """Whether `written` (a value in the answer's units) meets every tolerance key given."""
+        value = self.in_target(written)
+        tolerance = self.tolerance
+        kinds = tolerance.kinds
+        if not kinds:
+            return value == self.expected
+        for kind in kinds:
+            match kind:
+                case ToleranceKind.RELATIVE:
+                    assert tolerance.rel is not None
+                    ok = within_relative(value, self.expected, Fraction(tolerance.rel))
+                case ToleranceKind.ABSOLUTE:
+                    assert tolerance.abs is not None
+                    ok = within_absolute(value, self.expected, Fraction(tolerance.abs))
+                case ToleranceKind.SIGFIGS:
+                    assert tolerance.sigfigs is not None
+                    if exact:
+                        ok = matches_sigfigs(written, self.expected_as_written, tolerance.sigfigs)
+                    else:  # a corrected guess has lost the literal's digits: half a unit in the last place
+                        rel = Fraction(5, 10**tolerance.sigfigs)
+                        ok = within_relative(written, self.expected_as_written, rel)
+            if not ok:
+                return False
+        return True
+
+
+def _wrong_dimension(answer_units: ParsedUnits, target: ParsedUnits) -> Judgement:
+    return Judgement(
+        False,
+        Reason.WRONG_DIMENSION,
+        f"Your answer has the units of {describe(answer_units.dimension)}; "
+        f"{describe(target.dimension)} is expected.",
+    )
+
+
+def check_numeric(answer: str, spec: NumericSpec) -> Verdict:
+    """Check a numeric answer (`4.58 m/s^2`) against `spec`: invalid, or graded with a reason.
+
+    Raises SpecError only for a spec that cannot be used; anything about the answer is a verdict.
+    """
+    target = spec.target_units()
+    try:
+        read = read_numeric_answer(answer)
+        answer_units = _units_of(read, spec, target)
+    except AnswerError as error:
+        return Verdict.invalid(error)
+    read_as = read.read_as(answer_units)
+    try:
+        _check_figures_shown(read.number, spec.tolerance)
+    except SigfigsError as error:
+        return Verdict.invalid(error, read_as)
+    if answer_units is not None and target is not None and answer_units.dimension != target.dimension:
+        return Verdict.graded(_wrong_dimension(answer_units, target), read_as)
+    expected = spec.expected_value
+    expected_as_written = expected
+    if answer_units is not None and target is not None:
+        expected_as_written = target.convert(expected, answer_units)
+    comparison = _Comparison(expected, expected_as_written, answer_units, target, spec.tolerance)
+    if comparison.passes(read.value):
+        return Verdict.graded(CORRECT, read_as)
+    return Verdict.graded(diagnose(read.value, expected_as_written, comparison.passes), read_as)

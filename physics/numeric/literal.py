@@ -1,0 +1,215 @@
+"""Reading the number at the start of a numeric answer, exactly, with its significant figures.
+
+Accepted: an optional sign (`-`, `−`, `+`), a decimal literal (`4.58`, `.5`, `1500`, `100.`), an
+optional power of ten (`e3`, `E-3`, `×10^3`, `x 10^3`, `*10**3`, `·10⁻³`) and an optional `%`.
+Size limits are checked on the raw characters before any arithmetic, so `1e999999` costs nothing.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from fractions import Fraction
+
+from physics.errors import ParseError, TooLarge
+
+MAX_DIGITS = 40
+MAX_EXPONENT = 400
+
+_DIGITS = "0123456789"
+_MINUS_SIGNS = "-−"
+_TIMES_SIGNS = "×xX*·⋅"
+_SUPERSCRIPT_DIGITS = {c: i for i, c in enumerate("⁰¹²³⁴⁵⁶⁷⁸⁹")}
+_SUPERSCRIPT_SIGNS = "⁻⁺"
+
+
+@dataclass(frozen=True)
+class NumberLiteral:
+    """A number as the student wrote it: exact value, and the digits that fix its significant figures."""
+
+    negative: bool
+    integer_digits: str  # before the decimal point ("" for `.5`)
+    fraction_digits: str  # after it
+    has_point: bool
+    exponent: int | None  # the power of ten, when written
+    percent: bool
+    position: int  # where the number starts in the answer
+    end: int  # just past the number (and its `%`)
+
+    @property
+    def value(self) -> Fraction:
+        mantissa = Fraction(int(self.integer_digits + self.fraction_digits or "0"), 10 ** len(self.fraction_digits))
+        result = mantissa * Fraction(10) ** (self.exponent or 0)
+        if self.percent:
+            result /= 100
+        return -result if self.negative else result
+
+    @property
+    def sigfig_range(self) -> tuple[int, int]:
+        """The significant figures shown, as (fewest, most): trailing zeros of `1500` may or may not count."""
+        digits = (self.integer_digits + self.fraction_digits).lstrip("0")
+        if not digits:  # zero: the places shown after the point, at least one
+            shown = max(1, len(self.fraction_digits))
+            return shown, shown
+        if self.has_point:
+            return len(digits), len(digits)
+        return len(digits.rstrip("0")), len(digits)
+
+    def _mantissa_text(self) -> str:
+        text = (self.integer_digits or "0") + ("." + self.fraction_digits if self.has_point else "")
+        return ("-" if self.negative else "") + text
+
+    @property
+    def text(self) -> str:
+        """Plain text: `4.58e3`, `-0.5`, `45%`."""
+        exponent = f"e{self.exponent}" if self.exponent is not None else ""
+        return self._mantissa_text() + exponent + ("%" if self.percent else "")
+
+    @property
+    def latex(self) -> str:
+        """LaTeX: `4.58 \\times 10^{3}`, `45\\,\\%`."""
+        text = self._mantissa_text()
+        if self.exponent is not None:
+            text += rf" \times 10^{{{self.exponent}}}"
+        return text + (r"\,\%" if self.percent else "")
+
+
+def _skip_spaces(text: str, i: int) -> int:
+    while i < len(text) and text[i].isspace():
+        i += 1
+    return i
+
+
+def _run(text: str, i: int, alphabet: str | dict[str, int]) -> int:
+    while i < len(text) and text[i] in alphabet:
+        i += 1
+    return i
+
+
+def _exponent_value(digits: str, sign: int, position: int) -> int:
+    significant = digits.lstrip("0")
+    if len(significant) > len(str(MAX_EXPONENT)) or int(significant or "0") > MAX_EXPONENT:
+        raise TooLarge(f"The power of ten is too large (at most {MAX_EXPONENT} either way)", position)
+    return sign * int(significant or "0")
+
+
+def _signed_exponent(text: str, i: int) -> tuple[int, int] | None:
+    """An ASCII exponent `3`, `-3`, `−3`, `+3`, `(-3)` at i: (value, end), or None if there is none."""
+    parenthesised = i < len(text) and text[i] == "("
+    j = i + 1 if parenthesised else i
+    sign = 1
+    if j < len(text) and text[j] in _MINUS_SIGNS + "+":
+        sign = -1 if text[j] in _MINUS_SIGNS else 1
+        j += 1
+    end = _run(text, j, _DIGITS)
+    if end == j:
+        return None
+    if parenthesised:
+        if end >= len(text) or text[end] != ")":
+            return None
+        return _exponent_value(text[j:end], sign, j), end + 1
+    return _exponent_value(text[j:end], sign, j), end
+
+
+def _superscript_exponent(text: str, i: int) -> tuple[int, int] | None:
+    sign = 1
+    j = i
+    if j < len(text) and text[j] in _SUPERSCRIPT_SIGNS:
+        sign = -1 if text[j] == "⁻" else 1
+        j += 1
+    end = _run(text, j, _SUPERSCRIPT_DIGITS)
+    if end == j:
+        return None
+    digits = "".join(str(_SUPERSCRIPT_DIGITS[c]) for c in text[j:end])
+    return _exponent_value(digits, sign, j), end
+
+
+def _power_of_ten(text: str, i: int) -> tuple[int, int] | None:
+    """`^3`, `**3`, `^(-3)` or `⁻³` right after a `10`: (exponent, end), or None."""
+    if text.startswith("**", i):
+        return _signed_exponent(text, i + 2)
+    if i < len(text) and text[i] == "^":
+        return _signed_exponent(text, i + 1)
+    return _superscript_exponent(text, i)
+
+
+def _scientific(text: str, i: int) -> tuple[int, int] | None:
+    """A power of ten after the mantissa ending at i: (exponent, end), or None if none is written."""
+    if i < len(text) and text[i] in "eE":
+        return _signed_exponent(text, i + 1)
+    j = _skip_spaces(text, i)
+    if j < len(text) and text[j] in _TIMES_SIGNS:
+        k = _skip_spaces(text, j + 1)
+        if text.startswith("10", k):
+            after = k + 2
+            if after < len(text) and text[after] in _DIGITS + ".,":
+                return None  # `4 × 100`: not a power of ten; the unit reader will refuse it
+            found = _power_of_ten(text, after)
+            if found is None:
+                raise ParseError("Write a power of ten with its exponent, for example 4.58×10^3", after)
+            return found
+    return None
+
+
+def read_number(text: str, start: int = 0) -> NumberLiteral:
+    """The number at the start of `text` (after spaces), or ParseError / TooLarge with a position."""
+    i = _skip_spaces(text, start)
+    position = i
+    negative = False
+    if i < len(text) and text[i] in _MINUS_SIGNS + "+":
+        negative = text[i] in _MINUS_SIGNS
+        i = _skip_spaces(text, i + 1)
+    integer_end = _run(text, i, _DIGITS)
+    integer_digits = text[i:integer_end]
+    has_point = integer_end < len(text) and text[integer_end] == "."
+    fraction_start = integer_end + 1 if has_point else integer_end
+    fraction_end = _run(text, fraction_start, _DIGITS)
+    fraction_digits = text[fraction_start:fraction_end]
+    if not integer_digits and not fraction_digits:
+        raise ParseError("The answer must start with a number, such as 4.58 or -0.5", i)
+    if len(integer_digits) + len(fraction_digits) > MAX_DIGITS:
+        raise TooLarge(f"A number may have at most {MAX_DIGITS} digits", i)
+    i = fraction_end
+    if i + 1 < len(text) and text[i] == "," and text[i + 1] in _DIGITS:
+        raise ParseError(
+            "A comma cannot appear in a number: use a decimal point (4.58) and no thousands separators "
+            "(1500)",
+            i,
+        )
+    if i < len(text) and text[i] == "." and i + 1 < len(text) and text[i + 1] in _DIGITS:
+        raise ParseError("A number has at most one decimal point", i)
+    exponent: int | None = None
+    if not has_point and integer_digits == "10" and not negative:
+        # A bare power of ten, `10^3`, is 1×10^3.
+        bare = _power_of_ten(text, i)
+        if bare is not None:
+            return _finish(text, "1", "", False, bare[0], bare[1], negative, position)
+    found = _scientific(text, i)
+    if found is not None:
+        exponent, i = found
+    return _finish(text, integer_digits, fraction_digits, has_point, exponent, i, negative, position)
+
+
+def _finish(
+    text: str,
+    integer_digits: str,
+    fraction_digits: str,
+    has_point: bool,
+    exponent: int | None,
+    i: int,
+    negative: bool,
+    position: int,
+) -> NumberLiteral:
+    j = _skip_spaces(text, i)
+    percent = j < len(text) and text[j] == "%"
+    if percent:
+        i = j + 1
+    return NumberLiteral(
+        negative=negative,
+        integer_digits=integer_digits,
+        fraction_digits=fraction_digits,
+        has_point=has_point,
+        exponent=exponent,
+        percent=percent,
+        position=position,
+        end=i,
+    )

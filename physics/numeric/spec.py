@@ -1,0 +1,39 @@
+"""What a numeric answer is checked against: the exact reference value, its units and the tolerance."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from decimal import Decimal
+from fractions import Fraction
+
+from physics.errors import AnswerError, SpecError
+from physics.numeric.tolerance import DEFAULT_TOLERANCE, Tolerance
+from physics.units import ParsedUnits, parse_units
+
+
+@dataclass(frozen=True)
+class NumericSpec:
+    expected: Decimal  # exact decimal of the reference value, in `units`
+    units: str | None = None  # None: the answer is a pure number
+    units_required: bool = True
+    tolerance: Tolerance = DEFAULT_TOLERANCE
+
+    def __post_init__(self) -> None:
+        if not isinstance(self.expected, Decimal) or not self.expected.is_finite():
+            raise SpecError(f"expected must be a finite decimal, not {self.expected!r}", ("expected",))
+        self.target_units()  # refuse unusable units when the spec is made, not when a student answers
+
+    @property
+    def expected_value(self) -> Fraction:
+        return Fraction(self.expected)
+
+    def target_units(self) -> ParsedUnits | None:
+        """The parsed `units`, or None when the answer is a pure number (`units` None or `1`)."""
+        if self.units is None:
+            return None
+        try:
+            parsed = parse_units(self.units)
+        except AnswerError as error:
+            where = f" at position {error.position}" if error.position is not None else ""
+            raise SpecError(f"bad units {self.units!r}{where}: {error.message}", ("units",)) from error
+        return None if parsed.is_dimensionless_number else parsed

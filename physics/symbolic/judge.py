@@ -1,0 +1,158 @@
+"""Grade a symbolic answer against a prepared reference, and say why a wrong one is wrong.
+
+Deciding equivalence (the rule):
+1. Sampling refutes: a domain point where both sides are defined and differ beyond the tolerance
+   (physics.symbolic.compare) makes the answer wrong. Final; no symbolic step is started.
+2. Sampling accepts: agreement at every sample point, confirmed at two points with twice the precision,
+   makes the answer right. sympy's simplify is not consulted: it is incomplete on restricted domains
+   (θ ∈ (0, π/2)), so its failure to reach 0 is no evidence against an answer.
+3. Inconclusive: the answer agrees wherever it is defined but is undefined (or not real) at some point
+   where the reference is defined, and nudging the point does not help (not a removable singularity).
+   Then a bounded symbolic proof (physics.symbolic.proof) may still accept it; otherwise it is wrong.
+
+Why a wrong answer is wrong, first match wins: wrong_dimension, known_mistake, sign_error,
+constant_factor, wrong_value (with hints on limiting cases). Feedback never shows the reference, and
+a constant factor is not named: with it the answer would give the reference away.
+"""
+
+from __future__ import annotations
+
+import sympy
+from mpmath import libmp
+
+from physics.dimensions import describe
+from physics.errors import ParseError, UnknownSymbol
+from physics.symbolic.compare import (
+    PREC,
+    PRECISE_PREC,
+    PRECISE_TOLERANCE_BITS,
+    agreement,
+    close,
+    constant_ratio,
+    negated,
+)
+from physics.symbolic.dimensional import DimensionMismatch, UnknownDimension, expression_dimension
+from physics.symbolic.limits import breaks_limit
+from physics.symbolic.numeric import ONE, RND, Column, Evaluator
+from physics.symbolic.proof import proves_equal
+from physics.symbolic.reference import PreparedReference, exact_numbers, rename_symbols
+from physics.verdict import Judgement, Reason
+
+CORRECT = "Correct."
+SIGN_FEEDBACK = "Check the sign of your answer."
+FACTOR_FEEDBACK = (
+    "Your answer is off by a constant factor: check the numerical factors (such as 2, π or a square root)."
+)
+WRONG_VALUE_FEEDBACK = "Your answer is not equivalent to the expected one."
+UNDEFINED_FEEDBACK = "Your expression is not defined (or not real) for some allowed values of the symbols."
+_NUDGE_BITS = 60
+_NUDGE_TOLERANCE_BITS = 40
+
+
+def _normalize_answer(answer: sympy.Basic, reference: PreparedReference) -> sympy.Expr:
+    if not isinstance(answer, sympy.Expr) or isinstance(answer, sympy.logic.boolalg.Boolean):
+        raise ParseError("the answer must be an expression, not an equation or a relation")
+    try:
+        renamed = rename_symbols(exact_numbers(answer), reference.context)
+    except KeyError as missing:
+        name = str(missing.args[0])
+        allowed = sorted(reference.context.by_name)
+        raise UnknownSymbol(f"unknown symbol {name}", None, name, allowed) from None
+    return renamed
+
+
+def _nudged(reference: PreparedReference, index: int) -> dict[sympy.Symbol, Column]:
+    """The sample point moved by a relative 2^-60, to step off an isolated singular point."""
+    return {
+        s: [libmp.mpf_add(v, libmp.mpf_shift(v, -_NUDGE_BITS), PREC, RND)]
+        for s in reference.sample.symbols
+        for v in (reference.sample.columns[s][index],)
+    }
+
+
+def _removable(answer: sympy.Expr, reference: PreparedReference, indexes: tuple[int, ...]) -> bool:
+    """True when at each point the answer is undefined, it is defined right next to it and agrees."""
+    for index in indexes:
+        columns = _nudged(reference, index)
+        mine = Evaluator(columns, 1, PREC)(answer)[0]
+        theirs = Evaluator(columns, 1, PREC)(reference.expected)[0]
+        if mine is None or theirs is None or not close(mine, theirs, reference.scale, _NUDGE_TOLERANCE_BITS):
+            return False
+    return True
+
+
+def _precisely_equal(answer: sympy.Expr, reference: PreparedReference) -> bool:
+    size = len(reference.precise_values)
+    values = Evaluator(reference.precise_columns, size, PRECISE_PREC)(answer)
+    return all(
+        a is not None and b is not None and close(a, b, reference.scale, PRECISE_TOLERANCE_BITS)
+        for a, b in zip(values, reference.precise_values, strict=True)
+    )
+
+
+def _equivalent(answer: sympy.Expr, values: Column, reference: PreparedReference) -> tuple[bool, bool]:
+    """(equivalent, undefined somewhere) by the rule in the module docstring."""
+    found = agreement(values, reference.values, reference.scale)
+    if found.differs:
+        return False, bool(found.answer_missing)
+    if found.answer_missing and not _removable(answer, reference, found.answer_missing):
+        return proves_equal(answer, reference.expected), True
+    return _precisely_equal(answer, reference), False
+
+
+def _dimension_problem(answer: sympy.Expr, reference: PreparedReference) -> str | None:
+    if answer == 0:
+        return None  # zero is a value of every dimension
+    try:
+        found = expression_dimension(answer, reference.dims)
+    except UnknownDimension:
+        return None
+    except DimensionMismatch as error:
+        return f"Your expression {error.message}."
+    expected = reference.dimension
+    if expected is None or found == expected:
+        return None
+    return f"Your expression has the dimension of {describe(found)}; {describe(expected)} is expected."
+
+
+def _limit_hints(answer: sympy.Expr, reference: PreparedReference) -> list[str]:
+    return [
+        f"Check the limit of {limit.description}: your answer does not give the right behaviour there."
+        for limit in reference.limits
+        if breaks_limit(answer, limit, reference.scale)
+    ]
+
+
+def diagnose(answer: sympy.Expr, values: Column, reference: PreparedReference, undefined: bool) -> Judgement:
+    """Why an answer that is not equivalent is wrong (order in the module docstring)."""
+    dimension = _dimension_problem(answer, reference)
+    if dimension is not None:
+        return Judgement(False, Reason.WRONG_DIMENSION, dimension)
+    for mistake in reference.mistakes:
+        if agreement(values, mistake.values, reference.scale).agrees:
+            return Judgement(False, Reason.KNOWN_MISTAKE, mistake.feedback)
+    if agreement(values, negated(reference.values), reference.scale).agrees:
+        return Judgement(False, Reason.SIGN_ERROR, SIGN_FEEDBACK)
+    ratio = constant_ratio(values, reference.values, reference.scale)
+    if ratio is not None and not close(libmp.mpf_abs(ratio), ONE, ONE, 40) and ratio != libmp.fzero:
+        return Judgement(False, Reason.CONSTANT_FACTOR, FACTOR_FEEDBACK)
+    sentences = [WRONG_VALUE_FEEDBACK]
+    if undefined:
+        sentences.append(UNDEFINED_FEEDBACK)
+    sentences.extend(_limit_hints(answer, reference))
+    return Judgement(False, Reason.WRONG_VALUE, " ".join(sentences))
+
+
+def judge_symbolic(answer: sympy.Expr, reference: PreparedReference) -> Judgement:
+    """Correct when the answer equals the reference on the whole domain; else the first reason found.
+
+    Raises UnknownSymbol (an AnswerError) for a name the context does not declare.
+    """
+    expr = _normalize_answer(answer, reference)
+    if expr == reference.expected:
+        return Judgement(True, Reason.EQUIVALENT, CORRECT)
+    values = Evaluator(reference.sample.columns, reference.sample.size, PREC)(expr)
+    equivalent, undefined = _equivalent(expr, values, reference)
+    if equivalent:
+        return Judgement(True, Reason.EQUIVALENT, CORRECT)
+    return diagnose(expr, values, reference, undefined)

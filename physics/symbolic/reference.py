@@ -1,0 +1,167 @@
+"""Everything about a reference answer that does not depend on the student: prepared once, cached.
+
+The sample points, the reference's values there (and at two points with twice the precision), the
+known mistakes' values, the limiting cases, and the dimension the answer must have.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+from decimal import Decimal
+from fractions import Fraction
+
+import sympy
+
+from physics.dimensions import Dimension, describe
+from physics.errors import SpecError
+from physics.symbolic.compare import PREC, PRECISE_PREC, typical_scale
+from physics.symbolic.dimensional import DimensionMismatch, UnknownDimension, expression_dimension
+from physics.symbolic.domain import LimitCase, SymbolicContext
+from physics.symbolic.limits import PreparedLimit, prepare_limit
+from physics.symbolic.numeric import Column, Evaluator, Mpf
+from physics.symbolic.sampling import DomainSample, sample_domain, seed_for
+
+SAMPLE_SIZE = 24
+PRECISE_POINTS = 2
+
+
+@dataclass(frozen=True)
+class PreparedMistake:
+    expr: sympy.Expr
+    feedback: str
+    values: Column
+
+
+@dataclass(frozen=True)
+class PreparedReference:
+    expected: sympy.Expr
+    context: SymbolicContext
+    sample: DomainSample
+    values: Column  # the reference at every sample point (all defined)
+    scale: Mpf  # typical |reference|: the absolute floor of comparisons
+    precise_columns: Mapping[sympy.Symbol, Column]  # PRECISE_POINTS of the sample...
+    precise_values: Column  # ...and the reference there at PRECISE_PREC
+    dimension: Dimension | None  # what the answer must have; None when unknown
+    dims: Mapping[sympy.Symbol, Dimension]  # the symbols whose dimension is declared
+    mistakes: tuple[PreparedMistake, ...]
+    limits: tuple[PreparedLimit, ...]
+
+
+def exact_numbers(expr: sympy.Basic) -> sympy.Basic:
+    """Floats become the decimals they print as (API: decimals are exact; 0.1 is 1/10)."""
+    floats = expr.atoms(sympy.Float)
+    if not floats:
+        return expr
+    table = {}
+    for number in floats:
+        text = repr(float(number)) if number._prec <= 53 else str(number)
+        fraction = Fraction(Decimal(text))
+        table[number] = sympy.Rational(fraction.numerator, fraction.denominator)
+    return expr.xreplace(table)
+
+
+def rename_symbols(expr: sympy.Basic, context: SymbolicContext) -> sympy.Basic:
+    """The same expression over the context's symbols, matched by name (assumptions may differ).
+
+    Raises KeyError with the first unknown name.
+    """
+    foreign = {s for s in expr.free_symbols if s not in context.symbols}
+    if not foreign:
+        return expr
+    return expr.xreplace({s: context.by_name[s.name] for s in foreign})
+
+
+def _reference_side(expr: sympy.Basic, context: SymbolicContext, path: tuple[str | int, ...]) -> sympy.Expr:
+    if not isinstance(expr, sympy.Expr):
+        raise SpecError(f"{expr} is not an expression", path)
+    try:
+        renamed = rename_symbols(exact_numbers(expr), context)
+    except KeyError as missing:
+        raise SpecError(f"{missing.args[0]} is not a declared symbol", path) from None
+    return renamed
+
+
+def _declared_dimensions(context: SymbolicContext) -> dict[sympy.Symbol, Dimension]:
+    return {s: spec.dimension for s, spec in context.symbols.items() if spec.dimension is not None}
+
+
+def _reference_dimension(
+    expected: sympy.Expr, context: SymbolicContext, dims: Mapping[sympy.Symbol, Dimension]
+) -> Dimension | None:
+    try:
+        computed = expression_dimension(expected, dims)
+    except UnknownDimension:
+        return context.expected_dimension
+    except DimensionMismatch as error:
+        raise SpecError(f"the reference {error.message}", ("expected",)) from None
+    if context.expected_dimension is not None and computed != context.expected_dimension:
+        raise SpecError(
+            f"the reference has the dimension of {describe(computed)}, "
+            f"but {describe(context.expected_dimension)} is expected",
+            ("expected",),
+        )
+    return computed
+
+
+def prepare_reference(expected: sympy.Expr, context: SymbolicContext) -> PreparedReference:
+    """Sample the domain and evaluate the reference side; raises SpecError when it is unusable."""
+    reference = _reference_side(expected, context, ("expected",))
+    constraints = tuple(
+        _reference_side_relation(c, context, ("constraints", i)) for i, c in enumerate(context.constraints)
+    )
+    seed = seed_for(
+        sympy.srepr(reference),
+        sorted((s.name, repr(spec)) for s, spec in context.symbols.items()),
+        [sympy.srepr(c) for c in constraints],
+    )
+    sample = sample_domain(context, constraints, (reference,), SAMPLE_SIZE, seed, PREC)
+    values = Evaluator(sample.columns, sample.size, PREC)(reference)
+    scale = typical_scale(values)
+    precise = min(PRECISE_POINTS, sample.size)
+    precise_columns = {s: list(sample.columns[s][:precise]) for s in sample.symbols}
+    precise_values = Evaluator(precise_columns, precise, PRECISE_PREC)(reference)
+    dims = _declared_dimensions(context)
+    mistakes = []
+    for index, mistake in enumerate(context.mistakes):
+        expr = _reference_side(mistake.expr, context, ("mistakes", index))
+        mistakes.append(
+            PreparedMistake(expr, mistake.feedback, Evaluator(sample.columns, sample.size, PREC)(expr))
+        )
+    limits = tuple(
+        prepare_limit(_renamed_limit(case, context, index), reference, sample, scale)
+        for index, case in enumerate(context.limits)
+    )
+    return PreparedReference(
+        expected=reference,
+        context=context,
+        sample=sample,
+        values=values,
+        scale=scale,
+        precise_columns=precise_columns,
+        precise_values=precise_values,
+        dimension=_reference_dimension(reference, context, dims),
+        dims=dims,
+        mistakes=tuple(mistakes),
+        limits=limits,
+    )
+
+
+def _reference_side_relation(
+    relation: sympy.Basic, context: SymbolicContext, path: tuple[str | int, ...]
+) -> sympy.Basic:
+    try:
+        return rename_symbols(exact_numbers(relation), context)
+    except KeyError as missing:
+        raise SpecError(f"{missing.args[0]} is not a declared symbol", path) from None
+
+
+def _renamed_limit(case: LimitCase, context: SymbolicContext, index: int) -> LimitCase:
+    substitutions: dict[sympy.Symbol, sympy.Expr] = {}
+    for symbol, value in case.substitutions.items():
+        if symbol.name not in context.by_name:
+            raise SpecError(
+                f"the limit names {symbol.name}, which is not a declared symbol", ("limits", index)
+            )
+        substitutions[context.by_name[symbol.name]] = _reference_side(value, context, ("limits", index))
+    return LimitCase(substitutions, case.description)

@@ -1,0 +1,207 @@
+"""Random points of a symbolic question's domain, reproducible from a seed.
+
+Each batch is a Latin hypercube (every symbol's range is cut into as many strata as there are points,
+one point per stratum), so both halves of θ ∈ (0, π) are always visited; points that break a
+constraint, or where the reference is undefined, are rejected and another batch is drawn.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import math
+import random
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass
+
+import sympy
+from mpmath import libmp
+
+from physics.errors import SpecError
+from physics.symbolic.domain import SymbolicContext, SymbolSpec, symbol_assumptions
+from physics.symbolic.numeric import (
+    RND,
+    Column,
+    Evaluator,
+    Mpf,
+    as_mpf,
+    evaluate_constant,
+    from_int,
+    is_negative,
+)
+
+# Unbounded positive values are drawn log-uniformly over two decades around 1: dimensions are checked
+# apart, so the scale of a value carries no physics, and wider spreads only lose precision.
+_LOG10_SPAN = 1.0
+_EDGE = 1e-9  # keeps points strictly inside open ranges
+_INTEGER_SPAN = 12
+MAX_BATCHES = 40
+
+Axis = Callable[[float], Mpf]
+
+
+@dataclass(frozen=True)
+class DomainSample:
+    symbols: tuple[sympy.Symbol, ...]
+    columns: Mapping[sympy.Symbol, Column]
+    size: int
+
+    def point(self, index: int) -> dict[sympy.Symbol, Mpf]:
+        return {s: self.columns[s][index] for s in self.symbols}  # type: ignore[misc]
+
+
+def seed_for(*parts: object) -> int:
+    """A seed that depends only on the reference side (not on Python's per-run string hashing)."""
+    digest = hashlib.sha256(repr(parts).encode()).digest()
+    return int.from_bytes(digest[:8], "big")
+
+
+def _float(value: float, prec: int) -> Mpf:
+    return as_mpf(libmp.mpf_pos(libmp.from_float(value), prec, RND))
+
+
+def _log_uniform(u: float) -> float:
+    return float(10 ** (_LOG10_SPAN * (2 * u - 1)))
+
+
+def _bound(spec: SymbolSpec, which: int, prec: int) -> Mpf | None:
+    bound = spec.low if which == 0 else spec.high
+    if bound is None or bound in (sympy.oo, -sympy.oo):
+        return None
+    value = evaluate_constant(bound, prec)
+    if value is None:
+        path = ("symbols", spec.name, "range", which)
+        raise SpecError(f"the range bound {bound} is not a real number", path)
+    return value
+
+
+def _integer_axis(spec: SymbolSpec, low: Mpf | None, high: Mpf | None) -> Axis:
+    assumptions = symbol_assumptions(spec)
+    if low is not None or high is not None:
+        first = int(libmp.to_int(libmp.mpf_floor(low))) + 1 if low is not None else None
+        last = int(libmp.to_int(libmp.mpf_ceil(high))) - 1 if high is not None else None
+        if first is None:
+            first = (last if last is not None else 0) - _INTEGER_SPAN
+        if last is None:
+            last = first + _INTEGER_SPAN
+    elif assumptions.get("negative"):
+        first, last = -_INTEGER_SPAN, -1
+    elif assumptions.get("real"):
+        first, last = -_INTEGER_SPAN, _INTEGER_SPAN
+    else:
+        first, last = 1, _INTEGER_SPAN
+    values = [n for n in range(first, last + 1) if not (n == 0 and spec.nonzero)]
+    if not values:
+        raise SpecError(f"no integer lies in the range of {spec.name}", ("symbols", spec.name, "range"))
+    return lambda u: from_int(values[min(int(u * len(values)), len(values) - 1)])
+
+
+def axis_for(spec: SymbolSpec, prec: int) -> Axis:
+    """Maps u in (0, 1) to a value of the symbol's domain."""
+    low, high = _bound(spec, 0, prec), _bound(spec, 1, prec)
+    if spec.negative and (high is None or not is_negative(high)):
+        high = libmp.fzero
+    if spec.integer:
+        return _integer_axis(spec, low, high)
+    if low is not None and high is not None:
+        if libmp.mpf_le(high, low):
+            raise SpecError(f"the range of {spec.name} is empty", ("symbols", spec.name, "range"))
+        width = libmp.mpf_sub(high, low, prec, RND)
+        return lambda u: libmp.mpf_add(low, libmp.mpf_mul(width, _float(u, prec), prec, RND), prec, RND)
+    if low is not None:
+        return lambda u: libmp.mpf_add(low, _float(_log_uniform(u), prec), prec, RND)
+    if high is not None:
+        return lambda u: libmp.mpf_sub(high, _float(_log_uniform(u), prec), prec, RND)
+    if symbol_assumptions(spec).get("real"):
+        # Either sign, magnitudes log-uniform as for positive symbols.
+        def either_sign(u: float) -> Mpf:
+            v = 2 * u - 1
+            magnitude = _float(_log_uniform(abs(v)), prec)
+            return libmp.mpf_neg(magnitude) if v < 0 else magnitude
+
+        return either_sign
+    return lambda u: _float(_log_uniform(u), prec)
+
+
+def _latin_hypercube(rng: random.Random, dimensions: int, size: int) -> list[list[float]]:
+    """`dimensions` rows of `size` values in (0, 1), one per stratum, each row independently shuffled."""
+    rows = []
+    for _ in range(dimensions):
+        strata = list(range(size))
+        rng.shuffle(strata)
+        rows.append([min(max((k + rng.random()) / size, _EDGE), 1 - _EDGE) for k in strata])
+    return rows
+
+
+def _holds(relation: sympy.Basic, evaluate: Evaluator, size: int) -> list[bool]:
+    """Where a constraint holds; undefined counts as not holding."""
+    if relation is sympy.true:
+        return [True] * size
+    if relation is sympy.false:
+        return [False] * size
+    if isinstance(relation, sympy.And | sympy.Or):
+        parts = [_holds(arg, evaluate, size) for arg in relation.args]
+        combine = all if isinstance(relation, sympy.And) else any
+        return [combine(row) for row in zip(*parts, strict=True)]
+    if isinstance(relation, sympy.Not):
+        return [not ok for ok in _holds(relation.args[0], evaluate, size)]
+    if isinstance(relation, sympy.Ne):
+        return [True] * size  # excludes a set of measure zero
+    if not isinstance(relation, sympy.Lt | sympy.Le | sympy.Gt | sympy.Ge):
+        raise SpecError(f"a constraint must be an inequality, not {relation}", ("constraints",))
+    difference = evaluate(relation.lhs - relation.rhs)
+    wants_negative = isinstance(relation, sympy.Lt | sympy.Le)
+    strict = isinstance(relation, sympy.Lt | sympy.Gt)
+    out = []
+    for d in difference:
+        if d is None:
+            out.append(False)
+        elif d == libmp.fzero:
+            out.append(not strict)
+        else:
+            out.append(is_negative(d) == wants_negative)
+    return out
+
+
+def sample_domain(
+    context: SymbolicContext,
+    constraints: Sequence[sympy.Basic],
+    required: Sequence[sympy.Basic],
+    size: int,
+    seed: int,
+    prec: int,
+) -> DomainSample:
+    """`size` points satisfying every constraint, where every `required` expression is defined.
+
+    Raises SpecError when the domain looks empty (fewer than half the points found).
+    """
+    symbols = tuple(sorted(context.symbols, key=lambda s: s.name))
+    axes = [axis_for(context.symbols[s], prec) for s in symbols]
+    rng = random.Random(seed)  # noqa: S311 - reproducible sampling, not secrecy
+    kept: dict[sympy.Symbol, Column] = {s: [] for s in symbols}
+    found = 0
+    for _ in range(MAX_BATCHES):
+        grid = _latin_hypercube(rng, len(symbols), size)
+        columns: dict[sympy.Symbol, Column] = {
+            s: [axis(u) for u in row] for s, axis, row in zip(symbols, axes, grid, strict=True)
+        }
+        evaluate = Evaluator(columns, size, prec)
+        ok = [True] * size
+        for relation in constraints:
+            ok = [a and b for a, b in zip(ok, _holds(relation, evaluate, size), strict=True)]
+        for expr in required:
+            ok = [a and v is not None for a, v in zip(ok, evaluate(expr), strict=True)]
+        for index in (i for i in range(size) if ok[i]):
+            if found == size:
+                break
+            for s in symbols:
+                kept[s].append(columns[s][index])
+            found += 1
+        if found == size:
+            break
+    if found < math.ceil(size / 2):
+        raise SpecError(
+            "could not find enough points where the symbols' ranges and constraints hold "
+            "and the reference is defined",
+            ("constraints",) if constraints else ("expected",),
+        )
+    return DomainSample(symbols, kept, found)

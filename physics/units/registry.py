@@ -1,0 +1,198 @@
+"""The pint registry (built once, lazily) and the table of unit spellings a unit string may use.
+
+pint supplies every conversion factor and dimension, as exact Fractions (`non_int_type=Fraction`).
+pint's own string parser is never given outside text: a spelling is looked up in a table built from
+the definitions of the units in `catalogue.CATALOGUE`, with SI prefixes, so that the lookup is a
+dictionary access and nothing else.
+"""
+
+from __future__ import annotations
+
+import unicodedata
+from dataclasses import dataclass
+from fractions import Fraction
+from functools import cache
+from typing import Any
+
+import pint
+
+from physics.dimensions import Dimension
+from physics.units.catalogue import (
+    CATALOGUE,
+    PINT_DIMENSIONS,
+    PREFIX_LATEX,
+    SI_PREFIXES,
+    CatalogueEntry,
+)
+
+# A symbol-style spelling takes prefix symbols (`km`); a name-style one takes prefix names
+# (`kilometer`) and a plural `s`. pint's short aliases (`sec`, `hr`) count as symbols.
+_MAX_SYMBOL_LENGTH = 3
+
+
+@dataclass(frozen=True)
+class UnitAtom:
+    """One unit with its prefix, e.g. the kilometre: how to show it and how it relates to SI."""
+
+    name: str  # pint's name, e.g. "kilometer"; identifies the atom
+    symbol: str  # canonical display, e.g. "km"
+    latex: str  # e.g. r"\mathrm{km}"
+    scale: Fraction  # value in coherent SI units (kg, m, s, A, K, mol, cd) of one of this unit
+    dimension: Dimension
+    offset: Fraction | None = None  # for an offset unit (°C): SI value of its zero
+
+
+@dataclass(frozen=True)
+class _Spelling:
+    prefix: str  # pint prefix name, "" for none
+    entry: CatalogueEntry
+
+
+@cache
+def registry() -> pint.UnitRegistry[Fraction]:
+    """The one pint registry, with exact (Fraction) arithmetic."""
+    return pint.UnitRegistry(non_int_type=Fraction)
+
+
+def _unit_definition(ureg: pint.UnitRegistry[Fraction], name: str) -> Any:
+    # pint has no public accessor for a unit's symbol and aliases together.
+    return ureg._units[name]
+
+
+def _spellings_of_unit(
+    ureg: pint.UnitRegistry[Fraction], entry: CatalogueEntry
+) -> tuple[list[str], list[str]]:
+    definition = _unit_definition(ureg, entry.name)
+    symbols: list[str] = []
+    names: list[str] = []
+    candidates = [entry.name, *definition.aliases, *entry.extra_spellings]
+    if definition.symbol and definition.symbol != "_":
+        candidates.append(definition.symbol)
+    if entry.symbol:
+        candidates.append(entry.symbol)
+    for spelling in candidates:
+        is_name = len(spelling) > _MAX_SYMBOL_LENGTH and spelling.isascii()
+        (names if is_name else symbols).append(spelling)
+    return symbols, names
+
+
+def _plural(name: str) -> str | None:
+    if name.islower() and name.isascii() and name[-1] not in "sxz":
+        return name + "s"
+    return None
+
+
+@cache
+def spelling_table() -> dict[str, _Spelling]:
+    """Every accepted spelling (`km`, `kilometres`, `µs`, `°C`) mapped to its prefix and unit."""
+    ureg = registry()
+    table: dict[str, _Spelling] = {}
+
+    def add(spelling: str, prefix: str, entry: CatalogueEntry) -> None:
+        new = _Spelling(prefix, entry)
+        old = table.get(spelling)
+        # An unprefixed unit wins a clash with a prefixed one (the `ms` / `m·s` rule, one level down).
+        if old is None or (old.prefix and not prefix):
+            table[spelling] = new
+
+    prefix_symbols: list[tuple[str, str]] = []
+    prefix_names: list[tuple[str, str]] = []
+    for prefix in SI_PREFIXES:
+        definition = ureg._prefixes[prefix]
+        prefix_names.append((prefix, prefix))
+        prefix_symbols.append((prefix, definition.symbol))
+        for alias in definition.aliases:
+            (prefix_symbols if len(alias) == 1 else prefix_names).append((prefix, alias))
+
+    for entry in CATALOGUE:
+        symbols, names = _spellings_of_unit(ureg, entry)
+        for symbol in symbols:
+            add(symbol, "", entry)
+        for name in names:
+            plural = _plural(name)
+            for form in (name, plural) if plural else (name,):
+                add(form, "", entry)
+    for entry in CATALOGUE:
+        if not entry.prefixable:
+            continue
+        symbols, names = _spellings_of_unit(ureg, entry)
+        for symbol in symbols:
+            for prefix, prefix_symbol in prefix_symbols:
+                add(prefix_symbol + symbol, prefix, entry)
+        for name in names:
+            plural = _plural(name)
+            for prefix, prefix_name in prefix_names:
+                for form in (name, plural) if plural else (name,):
+                    add(prefix_name + form, prefix, entry)
+    return table
+
+
+def _dimension_of(ureg: pint.UnitRegistry[Fraction], name: str) -> Dimension:
+    exponents: dict[str, Fraction] = {}
+    for pint_dimension, power in ureg.get_dimensionality(name).items():
+        exponents[PINT_DIMENSIONS[pint_dimension]] = _exact(power)
+    return Dimension(exponents)
+
+
+def _exact(number: object) -> Fraction:
+    # The registry is built with non_int_type=Fraction, so factors are Fractions or ints.
+    if not isinstance(number, Fraction | int):
+        raise TypeError(f"pint gave an inexact factor {number!r}")
+    return Fraction(number)
+
+
+@cache
+def _atom(prefix: str, entry: CatalogueEntry) -> UnitAtom:
+    ureg = registry()
+    definition = _unit_definition(ureg, entry.name)
+    dimension = _dimension_of(ureg, entry.name)
+    root_factor = _exact(ureg.get_root_units(entry.name)[0])
+    prefix_scale = _exact(ureg._prefixes[prefix].converter.scale) if prefix else Fraction(1)
+    # pint's root unit of mass is the gram; SI's is the kilogram.
+    mass_power = dimension.exponents.get("mass", Fraction(0))
+    scale = prefix_scale * root_factor / Fraction(1000) ** int(mass_power)
+    offset: Fraction | None = None
+    converter_offset = getattr(definition.converter, "offset", 0)
+    if converter_offset:
+        offset = Fraction(converter_offset) * scale
+    unit_symbol = entry.symbol or definition.symbol or entry.name
+    prefix_symbol = ureg._prefixes[prefix].symbol if prefix else ""
+    prefix_latex = PREFIX_LATEX.get(prefix_symbol, prefix_symbol)
+    if entry.latex is not None:
+        latex = (rf"\mathrm{{{prefix_latex}}}" if prefix else "") + entry.latex
+    else:
+        latex = rf"\mathrm{{{prefix_latex}{unit_symbol}}}"
+    return UnitAtom(
+        name=prefix + entry.name,
+        symbol=prefix_symbol + unit_symbol,
+        latex=latex,
+        scale=scale,
+        dimension=dimension,
+        offset=offset,
+    )
+
+
+def lookup(spelling: str) -> UnitAtom | None:
+    """The unit a single spelling names (`ms`, `kN`, `µm`, `um`, `Ω`, `°C`), or None."""
+    table = spelling_table()
+    found = table.get(spelling)
+    if found is None:
+        # Compatibility forms: the micro sign and the Greek mu, the ohm sign and capital omega, `ℓ`.
+        found = table.get(unicodedata.normalize("NFKC", spelling))
+    if found is None:
+        return None
+    return _atom(found.prefix, found.entry)
+
+
+@cache
+def _by_folded_case() -> dict[str, str]:
+    index: dict[str, str] = {}
+    for spelling in sorted(spelling_table()):
+        index.setdefault(spelling.casefold(), spelling)
+    return index
+
+
+def suggestion(spelling: str) -> str | None:
+    """A spelling that differs only in letter case (`KG` → `kg`), to help with an unknown unit."""
+    match = _by_folded_case().get(spelling.casefold())
+    return match if match != spelling else None

@@ -1,0 +1,331 @@
+"""A problem compiled for grading: per part the question the checker needs, no YAML left.
+
+Compiling derives the model (sympy-heavy), reconciles hand-typed answers with the derivation, and
+merges the engine's known mistakes and limits with the author's. The result is cached per
+(id, version, document hash), so a course's thousand submissions compile the problem once.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import threading
+from collections import OrderedDict
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from decimal import Decimal
+from functools import cached_property
+
+import sympy
+
+from physics.checking import LimitDecl as CheckLimitDecl
+from physics.checking import NumericJob, SymbolicJob, SymbolicQuestion
+from physics.checking import SymbolDecl as CheckSymbolDecl
+from physics.errors import SpecError
+from physics.numeric import NumericSpec, Tolerance
+from physics.symbolic import KnownMistake, LimitCase, SymbolicContext, SymbolSpec
+from problems.errors import ErrorItem, ProblemInvalid
+from problems.modelinfo import Derived, derive_doc, spec_error_items
+from problems.schema import NumericPart, ProblemDocument, SymbolicPart, format_path
+from problems.semantics import read_relation
+from problems.symbols import bound_text, check_decls, read_bound, read_expression, symbol_specs
+from problems.variants import Variant, evaluate_reference, si_values
+
+CACHE_SIZE = 64
+
+
+@dataclass(frozen=True)
+class CompiledSymbolicPart:
+    """A symbolic part: the reference and everything the checker weighs it against."""
+
+    id: str
+    quantity: str
+    expected: sympy.Expr
+    names: Mapping[str, sympy.Symbol]  # what the answer may use
+    context: SymbolicContext
+    # The same, as text, for check jobs that cross into worker processes (read back by the parser).
+    job_template: SymbolicJob
+
+    @cached_property
+    def question(self) -> SymbolicQuestion:
+        """The prepared reference (sampling the domain once; sympy-heavy, hence lazy and cached)."""
+        from physics.symbolic import prepare_reference
+
+        return SymbolicQuestion(names=self.names, reference=prepare_reference(self.expected, self.context))
+
+    def job(self, answer: str) -> SymbolicJob:
+        t = self.job_template
+        return SymbolicJob(answer, t.expected, t.symbols, t.constraints, t.mistakes, t.limits, t.allowed)
+
+
+@dataclass(frozen=True)
+class CompiledNumericPart:
+    """A numeric part: its expression, evaluated per student at their given values."""
+
+    id: str
+    of: str
+    expr: sympy.Expr
+    units: str
+    units_required: bool
+    tolerance: Tolerance
+    document: ProblemDocument = field(repr=False)
+    table: Mapping[str, sympy.Symbol] = field(repr=False)
+
+    def reference(self, variant: Variant) -> Decimal:
+        """The expected value for this student, in `units`, to 12 significant figures."""
+        values = si_values(self.document, variant, self.table)
+        return evaluate_reference(self.expr, values, self.units, where=self.id)
+
+    def spec(self, variant: Variant) -> NumericSpec:
+        dimensionless = self.units.strip() == "1"
+        return NumericSpec(
+            expected=self.reference(variant),
+            units=None if dimensionless else self.units,
+            units_required=self.units_required and not dimensionless,
+            tolerance=self.tolerance,
+        )
+
+    def job(self, answer: str, variant: Variant) -> NumericJob:
+        return NumericJob(answer, self.spec(variant))
+
+
+CompiledPart = CompiledSymbolicPart | CompiledNumericPart
+
+
+@dataclass(frozen=True)
+class CompiledProblem:
+    document: ProblemDocument
+    version: int
+    digest: str
+    table: Mapping[str, sympy.Symbol]
+    parts: Mapping[str, CompiledPart]
+    derived: Derived | None = None
+
+    def part(self, part_id: str) -> CompiledPart:
+        return self.parts[part_id]
+
+    def question(self, part_id: str, variant: Variant | None = None) -> SymbolicQuestion | NumericSpec:
+        """What `physics.checking.check_answer` needs; numeric parts need the student's variant."""
+        part = self.parts[part_id]
+        if isinstance(part, CompiledSymbolicPart):
+            return part.question
+        if variant is None:
+            raise ValueError(f"part {part_id!r} is numeric: its question depends on the student's variant")
+        return part.spec(variant)
+
+    def job(self, part_id: str, answer: str, variant: Variant | None = None) -> SymbolicJob | NumericJob:
+        """A picklable check job for a worker process."""
+        part = self.parts[part_id]
+        if isinstance(part, CompiledSymbolicPart):
+            return part.job(answer)
+        if variant is None:
+            raise ValueError(f"part {part_id!r} is numeric: its job depends on the student's variant")
+        return part.job(answer, variant)
+
+    def reference_expressions(self) -> dict[str, sympy.Expr]:
+        """Every part's reference expression (instructor-only: the solutions page)."""
+        return {
+            pid: p.expected if isinstance(p, CompiledSymbolicPart) else p.expr for pid, p in self.parts.items()
+        }
+
+
+def document_digest(doc: ProblemDocument) -> str:
+    canonical = json.dumps(doc.model_dump(mode="json"), sort_keys=True, separators=(",", ":"), ensure_ascii=False)
+    return hashlib.sha256(canonical.encode("utf-8")).hexdigest()
+
+
+_cache: OrderedDict[tuple[str, int, str], CompiledProblem] = OrderedDict()
+_cache_lock = threading.Lock()
+
+
+def compile_problem(doc: ProblemDocument, version: int = 0, *, use_model: bool = True) -> CompiledProblem:
+    """Compile (cached by id, version and document hash); raises ProblemInvalid or DerivationError.
+
+    `use_model=False` grades against the hand-typed answers only (no engine run).
+    """
+    key = (doc.id, version, document_digest(doc) + ("" if use_model else ":hand"))
+    with _cache_lock:
+        if key in _cache:
+            _cache.move_to_end(key)
+            return _cache[key]
+    compiled = _compile(doc, version, key[2], use_model)
+    with _cache_lock:
+        _cache[key] = compiled
+        while len(_cache) > CACHE_SIZE:
+            _cache.popitem(last=False)
+    return compiled
+
+
+def clear_cache() -> None:
+    with _cache_lock:
+        _cache.clear()
+
+
+def _compile(doc: ProblemDocument, version: int, digest: str, use_model: bool) -> CompiledProblem:
+    errors: list[ErrorItem] = []
+    try:
+        specs = symbol_specs(doc)
+    except SpecError as error:
+        raise ProblemInvalid([(format_path(error.path), error.message)], doc.id) from None
+    from physics.symbolic import make_symbol
+
+    table = {name: make_symbol(spec) for name, spec in specs.items()}
+    derived: Derived | None = None
+    if use_model and doc.model is not None:
+        try:
+            derived = derive_doc(doc, table)
+        except SpecError as error:
+            raise ProblemInvalid(
+                [(format_path(("model", *path)), message) for path, message in spec_error_items(error)], doc.id
+            ) from None
+    constraints = _constraints(doc, table)
+    decls = check_decls(doc)
+
+    symbolic: dict[str, CompiledSymbolicPart] = {}
+    for index, part in enumerate(doc.parts):
+        if isinstance(part, SymbolicPart):
+            try:
+                symbolic[part.id] = _symbolic_part(doc, part, index, table, specs, constraints, decls, derived)
+            except SpecError as error:
+                errors.append((format_path(error.path or ("parts", index)), error.message))
+    parts: dict[str, CompiledPart] = {}
+    for index, part in enumerate(doc.parts):
+        if isinstance(part, SymbolicPart) and part.id in symbolic:
+            parts[part.id] = symbolic[part.id]
+        elif isinstance(part, NumericPart):
+            try:
+                parts[part.id] = _numeric_part(doc, part, index, table, specs, symbolic, derived)
+            except SpecError as error:
+                errors.append((format_path(error.path or ("parts", index)), error.message))
+    if errors:
+        raise ProblemInvalid(errors, doc.id)
+    return CompiledProblem(doc, version, digest, table, parts, derived)
+
+
+def _constraints(doc: ProblemDocument, table: Mapping[str, sympy.Symbol]) -> tuple[sympy.Basic, ...]:
+    return tuple(read_relation(text, table, ("constraints", i)) for i, text in enumerate(doc.constraints))
+
+
+def _symbolic_part(
+    doc: ProblemDocument,
+    part: SymbolicPart,
+    index: int,
+    table: Mapping[str, sympy.Symbol],
+    specs: Mapping[str, SymbolSpec],
+    constraints: tuple[sympy.Basic, ...],
+    decls: tuple[CheckSymbolDecl, ...],
+    derived: Derived | None,
+) -> CompiledSymbolicPart:
+    path: tuple[str | int, ...] = ("parts", index)
+    allowed_names = tuple(part.symbols) if part.symbols is not None else None
+    names = dict(table) if allowed_names is None else {n: table[n] for n in allowed_names if n in table}
+    hand = read_expression(part.answer, names, (*path, "answer")) if part.answer is not None else None
+    derived_expr = derived.quantities.get(part.quantity_name) if derived is not None else None
+    if derived is not None and derived_expr is None and hand is None:
+        raise SpecError(f"the model has no quantity {part.quantity_name!r}", (*path, "quantity"))
+    expected = derived_expr if derived_expr is not None else hand
+    if expected is None:
+        raise SpecError("needs an answer (there is no model to derive it from)", path)
+
+    mistakes = [
+        (read_expression(m.answer, table, (*path, "mistakes", j, "answer")), m.feedback)
+        for j, m in enumerate(part.mistakes)
+    ]
+    limits = [
+        (
+            {table[name]: read_bound(value, (*path, "limits", j, "where", name)) for name, value in lim.where.items()},
+            lim.description,
+            tuple((name, bound_text(value)) for name, value in lim.where.items()),
+        )
+        for j, lim in enumerate(part.limits)
+    ]
+    engine_mistakes = derived.mistakes.get(part.quantity_name, ()) if derived is not None else ()
+    engine_limits = derived.limits.get(part.quantity_name, ()) if derived is not None else ()
+    context = SymbolicContext(
+        symbols={table[name]: spec for name, spec in specs.items()},
+        constraints=constraints,
+        mistakes=tuple(KnownMistake(e, f) for e, f in [*mistakes, *engine_mistakes]),
+        limits=tuple(LimitCase(subs, d) for subs, d, _ in limits)
+        + tuple(LimitCase(subs, d) for subs, d in engine_limits),
+    )
+    if hand is not None and derived_expr is not None:
+        _require_agreement(hand, derived_expr, names, context, (*path, "answer"))
+    template = SymbolicJob(
+        answer="",
+        expected=sympy.sstr(expected),
+        symbols=decls,
+        constraints=tuple(doc.constraints),
+        mistakes=tuple((sympy.sstr(e), f) for e, f in [*mistakes, *engine_mistakes]),
+        limits=tuple(CheckLimitDecl(texts, d) for _, d, texts in limits)
+        + tuple(
+            CheckLimitDecl(tuple((str(s), sympy.sstr(v)) for s, v in subs.items()), d) for subs, d in engine_limits
+        ),
+        allowed=allowed_names,
+    )
+    return CompiledSymbolicPart(part.id, part.quantity_name, expected, names, context, template)
+
+
+def _require_agreement(
+    hand: sympy.Expr,
+    derived: sympy.Expr,
+    names: Mapping[str, sympy.Symbol],
+    context: SymbolicContext,
+    path: tuple[str | int, ...],
+) -> None:
+    """A hand-typed answer must be equivalent to the engine's derivation, on the problem's domain."""
+    from physics.symbolic import judge_symbolic, prepare_reference
+
+    if sympy.simplify(hand - derived) == 0:
+        return
+    bare = SymbolicContext(symbols=context.symbols, constraints=context.constraints)
+    judgement = judge_symbolic(hand, prepare_reference(derived, bare))
+    if not judgement.correct:
+        raise SpecError(f"disagrees with the model, which derives {sympy.sstr(derived)}", path)
+
+
+def _numeric_part(
+    doc: ProblemDocument,
+    part: NumericPart,
+    index: int,
+    table: Mapping[str, sympy.Symbol],
+    specs: Mapping[str, SymbolSpec],
+    symbolic: Mapping[str, CompiledSymbolicPart],
+    derived: Derived | None,
+) -> CompiledNumericPart:
+    path: tuple[str | int, ...] = ("parts", index)
+    if part.of in symbolic:
+        expr = symbolic[part.of].expected
+    elif derived is not None and part.of in derived.quantities:
+        expr = derived.quantities[part.of]
+    else:
+        raise SpecError(f"{part.of!r} is neither a symbolic part nor a model quantity", (*path, "of"))
+    missing = sorted(s.name for s in expr.free_symbols if s.name not in doc.given)
+    if missing:
+        raise SpecError(f"needs given values for {', '.join(missing)}", (*path, "of"))
+    _require_dimension(expr, part, specs, table, path)
+    tolerance = Tolerance(rel=part.tolerance.rel, abs=part.tolerance.abs, sigfigs=part.tolerance.sigfigs)
+    return CompiledNumericPart(part.id, part.of, expr, part.units, part.units_required, tolerance, doc, table)
+
+
+def _require_dimension(
+    expr: sympy.Expr,
+    part: NumericPart,
+    specs: Mapping[str, SymbolSpec],
+    table: Mapping[str, sympy.Symbol],
+    path: tuple[str | int, ...],
+) -> None:
+    from physics.dimensions import DIMENSIONLESS
+    from physics.symbolic.dimensional import DimensionMismatch, UnknownDimension, expression_dimension
+    from physics.units import unit_dimension
+
+    dims = {table[n]: s.dimension for n, s in specs.items() if s.dimension is not None}
+    try:
+        have = expression_dimension(expr, dims)
+    except UnknownDimension:
+        return  # a symbol without a declared dimension: nothing to compare against
+    except DimensionMismatch as error:
+        raise SpecError(f"the expression for {part.of} is dimensionally inconsistent: {error}", (*path, "of")) from None
+    want = DIMENSIONLESS if part.dimensionless else unit_dimension(part.units)
+    if have != want:
+        raise SpecError(f"{part.units} does not match the dimension of {part.of}", (*path, "units"))
+

@@ -1,0 +1,174 @@
+"""Reading problem documents: YAML (safe subset, no aliases) or JSON, then shape and meaning checks.
+
+`parse_problem` is the one way in, for the built-in bank and for uploads alike: instructors upload
+these files, so the text is read with the safe loader only, its size is bounded, anchors/aliases
+(the "billion laughs" bomb) and non-standard tags are refused, and every expression goes through the
+whitelist parser in `problems.semantics`.
+"""
+
+from __future__ import annotations
+
+import json
+from collections.abc import Mapping
+from pathlib import Path
+from typing import Any, Literal
+
+import yaml
+from pydantic import ValidationError
+
+from problems.errors import ErrorItem, ProblemInvalid
+from problems.schema import ProblemDocument, shape_errors
+
+Format = Literal["yaml", "json"]
+
+MAX_DOCUMENT_BYTES = 256 * 1024
+BANK_DIR = Path(__file__).parent / "bank"
+PROBLEM_FILES = ("problem.yaml", "problem.yml", "problem.json")
+MODEL_FILES = ("model.yaml", "model.yml", "model.json")
+
+
+class _SafeNoAliasLoader(yaml.SafeLoader):
+    """The safe loader, minus aliases (exponential expansion) and silently repeated keys."""
+
+    def compose_node(self, parent: Any, index: Any) -> Any:
+        if self.check_event(yaml.AliasEvent):
+            event = self.peek_event()  # type: ignore[no-untyped-call]
+            raise yaml.composer.ComposerError(
+                None, None, "anchors and aliases (*name) are not allowed", event.start_mark
+            )
+        return super().compose_node(parent, index)
+
+    def construct_mapping(self, node: Any, deep: bool = False) -> Any:
+        if isinstance(node, yaml.MappingNode):
+            seen: set[Any] = set()
+            for key_node, _ in node.value:
+                key = self.construct_object(key_node, deep=deep)
+                if isinstance(key, list | dict):
+                    raise yaml.constructor.ConstructorError(
+                        None, None, "a mapping key must be a plain value", key_node.start_mark
+                    )
+                if key in seen:
+                    raise yaml.constructor.ConstructorError(
+                        None, None, f"duplicate key {key!r}", key_node.start_mark
+                    )
+                seen.add(key)
+        return super().construct_mapping(node, deep=deep)
+
+
+def read_text(text: str | bytes, fmt: Format = "yaml") -> Any:
+    """Text -> plain data (dicts, lists, scalars); raises ProblemInvalid with a path-less error."""
+    if isinstance(text, bytes):
+        if len(text) > MAX_DOCUMENT_BYTES:
+            raise ProblemInvalid([("", f"document is larger than {MAX_DOCUMENT_BYTES} bytes")])
+        try:
+            text = text.decode("utf-8")
+        except UnicodeDecodeError as error:
+            raise ProblemInvalid([("", f"document is not UTF-8 (byte {error.start})")]) from None
+    if len(text.encode("utf-8")) > MAX_DOCUMENT_BYTES:
+        raise ProblemInvalid([("", f"document is larger than {MAX_DOCUMENT_BYTES} bytes")])
+    try:
+        if fmt == "json":
+            return json.loads(text, object_pairs_hook=_no_duplicate_keys, parse_constant=_no_constants)
+        return yaml.load(text, Loader=_SafeNoAliasLoader)  # noqa: S506 -- a SafeLoader subclass
+    except yaml.YAMLError as error:
+        raise ProblemInvalid([("", f"YAML: {_yaml_message(error)}")]) from None
+    except json.JSONDecodeError as error:
+        raise ProblemInvalid([("", f"JSON: {error.msg} at line {error.lineno} column {error.colno}")]) from None
+    except ValueError as error:
+        raise ProblemInvalid([("", f"JSON: {error}")]) from None
+    except RecursionError:
+        raise ProblemInvalid([("", "document is nested too deeply")]) from None
+
+
+def _yaml_message(error: yaml.YAMLError) -> str:
+    if isinstance(error, yaml.MarkedYAMLError):
+        where = f" at line {error.problem_mark.line + 1}" if error.problem_mark is not None else ""
+        return f"{error.problem or error.context}{where}"
+    return str(error)
+
+
+def _no_duplicate_keys(pairs: list[tuple[str, Any]]) -> dict[str, Any]:
+    out: dict[str, Any] = {}
+    for key, value in pairs:
+        if key in out:
+            raise ValueError(f"duplicate key {key!r}")
+        out[key] = value
+    return out
+
+
+def _no_constants(name: str) -> Any:
+    raise ValueError(f"{name} is not a number")
+
+
+def parse_problem(
+    source: str | bytes | Mapping[str, Any],
+    fmt: Format = "yaml",
+    *,
+    model: Mapping[str, Any] | None = None,
+    check_meaning: bool = True,
+) -> ProblemDocument:
+    """Read and validate one problem; raises ProblemInvalid listing every fault with its path.
+
+    `model` (the contents of a `model.yaml` kept beside the problem) fills a missing `model` key.
+    `check_meaning=False` checks the shape only (no expression is parsed).
+    """
+    data = source if isinstance(source, Mapping) else read_text(source, fmt)
+    if not isinstance(data, Mapping):
+        raise ProblemInvalid([("", "a problem document must be a mapping at the top level")])
+    data = dict(data)
+    if model is not None and data.get("model") is None:
+        data["model"] = dict(model)
+    problem_id = data.get("id") if isinstance(data.get("id"), str) else None
+    try:
+        document = ProblemDocument.model_validate(data)
+    except ValidationError as error:
+        raise ProblemInvalid(shape_errors(error), problem_id) from None
+    if check_meaning:
+        # Imported here: the meaning checks pull in sympy and the parser, the shape check does not.
+        from problems.semantics import semantic_errors
+
+        errors = semantic_errors(document)
+        if errors:
+            raise ProblemInvalid(errors, document.id)
+    return document
+
+
+def load_problem_dir(directory: Path, *, check_meaning: bool = True) -> ProblemDocument:
+    """One bank directory: `problem.yaml` (or .json) with an optional `model.yaml` beside it."""
+    problem_file = next((directory / name for name in PROBLEM_FILES if (directory / name).is_file()), None)
+    if problem_file is None:
+        raise ProblemInvalid([("", f"no {' or '.join(PROBLEM_FILES)} in {directory.name}")], directory.name)
+    model_file = next((directory / name for name in MODEL_FILES if (directory / name).is_file()), None)
+    model: Any = None
+    if model_file is not None:
+        model = read_text(model_file.read_bytes(), _format_of(model_file))
+        if not isinstance(model, Mapping):
+            raise ProblemInvalid([("model", f"{model_file.name} must be a mapping")], directory.name)
+    document = parse_problem(
+        problem_file.read_bytes(), _format_of(problem_file), model=model, check_meaning=check_meaning
+    )
+    if document.id != directory.name:
+        raise ProblemInvalid([("id", f"must match its directory name {directory.name!r}")], document.id)
+    return document
+
+
+def load_bank(dir: Path | str | None = None, *, check_meaning: bool = True) -> list[ProblemDocument]:
+    """Every problem under `dir` (default: the built-in bank), sorted by id.
+
+    Raises ProblemInvalid with the faults of every broken problem, each path prefixed by its id.
+    """
+    root = Path(dir) if dir is not None else BANK_DIR
+    documents: list[ProblemDocument] = []
+    errors: list[ErrorItem] = []
+    for directory in sorted(p for p in root.iterdir() if p.is_dir() and not p.name.startswith((".", "_"))):
+        try:
+            documents.append(load_problem_dir(directory, check_meaning=check_meaning))
+        except ProblemInvalid as error:
+            errors.extend((f"{directory.name}:{path}" if path else directory.name, msg) for path, msg in error.errors)
+    if errors:
+        raise ProblemInvalid(errors, f"bank {root}")
+    return documents
+
+
+def _format_of(path: Path) -> Format:
+    return "json" if path.suffix == ".json" else "yaml"

@@ -1,0 +1,100 @@
+"""The bank's one seam to the engine: load a document's model, list its quantities, derive them.
+
+The model section is opaque to the bank; `physics.engine` validates and derives it. Everything the
+bank needs from a derivation is copied here into plain typed data (`Derived`), so the rest of
+`problems/` does not depend on the engine's internal shapes.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass, field
+from typing import Any
+
+import sympy
+
+from physics.errors import SpecError, SpecErrors
+from problems.schema import ProblemDocument
+
+
+@dataclass(frozen=True)
+class Derived:
+    """A derivation, reduced to what the bank uses; `raw` keeps the engine's object (solutions page)."""
+
+    quantities: Mapping[str, sympy.Expr]
+    mistakes: Mapping[str, tuple[tuple[sympy.Expr, str], ...]] = field(default_factory=dict)
+    limits: Mapping[str, tuple[tuple[Mapping[sympy.Symbol, sympy.Expr], str], ...]] = field(default_factory=dict)
+    disagreements: tuple[str, ...] = ()  # one line per quantity whose methods disagree
+    raw: Any = None
+
+
+def spec_error_items(error: SpecError) -> list[tuple[tuple[str | int, ...], str]]:
+    """(path, message) for a SpecError or each member of a SpecErrors."""
+    if isinstance(error, SpecErrors):
+        return [(e.path, e.message) for e in error.errors]
+    return [(error.path, error.message)]
+
+
+def load_doc_model(doc: ProblemDocument, table: Mapping[str, sympy.Symbol]) -> Any:
+    """The engine's Model for `doc.model`; raises SpecError/SpecErrors with paths inside the model."""
+    from physics.engine import load_model
+
+    if doc.model is None:
+        raise SpecError("the problem has no model", ("model",))
+    return load_model(doc.model, table)
+
+
+def model_quantity_names(doc: ProblemDocument) -> frozenset[str]:
+    """Names of the quantities the model defines (cheap: loads, does not derive)."""
+    from problems.symbols import symbol_table
+
+    model = load_doc_model(doc, symbol_table(doc))
+    return frozenset(q.name for q in model.quantities)
+
+
+def derive_doc(doc: ProblemDocument, table: Mapping[str, sympy.Symbol]) -> Derived:
+    """Run the engine on the document's model (sympy-heavy; callers cache)."""
+    from physics.engine import derive
+
+    derivation = derive(load_doc_model(doc, table))
+    return Derived(
+        quantities=dict(derivation.quantities),
+        mistakes={name: tuple(_mistake(m) for m in items) for name, items in _per_quantity(derivation, "mistakes")},
+        limits={name: tuple(_limit(c) for c in items) for name, items in _per_quantity(derivation, "limits")},
+        disagreements=tuple(_disagreements(getattr(derivation, "agreement", None))),
+        raw=derivation,
+    )
+
+
+def _per_quantity(derivation: Any, attribute: str) -> Iterable[tuple[str, Iterable[Any]]]:
+    value = getattr(derivation, attribute, None) or {}
+    return value.items() if isinstance(value, Mapping) else ()
+
+
+def _mistake(item: Any) -> tuple[sympy.Expr, str]:
+    # KnownMistake(expr, feedback), or a plain (expr, feedback) pair.
+    if isinstance(item, tuple):
+        return item[0], str(item[1])
+    return item.expr, str(item.feedback)
+
+
+def _limit(item: Any) -> tuple[Mapping[sympy.Symbol, sympy.Expr], str]:
+    if isinstance(item, tuple):
+        return dict(item[0]), str(item[1])
+    return dict(item.substitutions), str(item.description)
+
+
+def _disagreements(agreement: Any) -> Iterable[str]:
+    """Lines describing methods that disagree, whatever shape the engine reports agreement in."""
+    if agreement is None or agreement is True:
+        return
+    if agreement is False:
+        yield "the methods disagree"
+        return
+    if isinstance(agreement, Mapping):
+        for name, verdict in agreement.items():
+            yield from (f"{name}: {line}" for line in _disagreements(verdict))
+        return
+    agree = getattr(agreement, "agree", getattr(agreement, "ok", None))
+    if agree is False:
+        yield str(getattr(agreement, "detail", agreement))

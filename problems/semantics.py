@@ -1,0 +1,228 @@
+"""Meaning checks on a well-shaped problem document; every fault is collected, none stops the rest.
+
+Each expression is read with the whitelist parser (`problems.symbols.read_expression`); unknown
+symbols, unknown units, empty ranges, givens for undeclared symbols, duplicate part ids, parts that
+name no quantity, and placeholders with no given value are reported with their paths.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+from functools import partial
+from typing import Any, TypeVar
+
+import sympy
+
+from physics.dimensions import DIMENSIONLESS, Dimension
+from physics.errors import AnswerError, SpecError
+from physics.symbolic import SymbolSpec
+from problems.errors import ErrorItem
+from problems.schema import GivenDecl, NumericPart, ProblemDocument, SymbolDecl, SymbolicPart, format_path
+from problems.variants import placeholders, unit_scale, valid_range_errors
+
+T = TypeVar("T")
+
+# The relation operators `physics.checking` reads in constraints; longest first so "<=" beats "<".
+RELATIONS: Mapping[str, Any] = {"<=": sympy.Le, ">=": sympy.Ge, "≤": sympy.Le, "≥": sympy.Ge, "<": sympy.Lt, ">": sympy.Gt}
+
+
+class _Collector:
+    """Runs checks, turning each SpecError into one (path, message) and carrying on."""
+
+    def __init__(self) -> None:
+        self.errors: list[ErrorItem] = []
+
+    def add(self, path: tuple[str | int, ...], message: str) -> None:
+        item = (format_path(path), message)
+        if item not in self.errors:
+            self.errors.append(item)
+
+    def attempt(self, check: Callable[[], T], path: tuple[str | int, ...] = ()) -> T | None:
+        try:
+            return check()
+        except SpecError as error:
+            self.add(error.path or path, error.message)
+        except AnswerError as error:
+            self.add(path, error.message)
+        return None
+
+
+def semantic_errors(doc: ProblemDocument, model_quantities: frozenset[str] | None = None) -> list[ErrorItem]:
+    """Every meaning fault of `doc`, in document order. `model_quantities` defaults to the engine's view."""
+    from problems.symbols import symbol_spec
+
+    out = _Collector()
+    table: dict[str, sympy.Symbol] = {}
+    symbols_ok = True
+    bad_ranges: set[str] = set()
+    for name, decl in doc.symbols.items():
+        if not name.isidentifier() or name.startswith("_"):
+            out.add(("symbols", name), "a symbol name must be letters, digits and _ (not first)")
+            symbols_ok = False
+            continue
+        spec = out.attempt(partial(symbol_spec, name, decl), ("symbols", name))
+        if spec is not None and spec.low is not None and spec.high is not None and _not_below(spec.low, spec.high):
+            out.add(("symbols", name, "range"), "low must be < high")
+            spec = None
+        if spec is None:
+            # Keep the name readable in expressions, so one bad declaration is reported once.
+            symbols_ok = False
+            bad_ranges.add(name)
+            spec = SymbolSpec(name, real=decl.real, nonzero=decl.nonzero, negative=decl.negative)
+        symbol = out.attempt(partial(_make_symbol, spec), ("symbols", name))
+        if symbol is not None:
+            table[name] = symbol
+
+    for index, text in enumerate(doc.constraints):
+        out.attempt(partial(read_relation, text, table, ("constraints", index)))
+
+    for name, given in doc.given.items():
+        _check_given(out, doc, name, given, doc.symbols.get(name), check_range=name not in bad_ranges)
+
+    for name in placeholders(doc.statement):
+        if name not in doc.given:
+            out.add(("statement",), f"{{{name}}} names no given value")
+
+    quantities = model_quantities if model_quantities is not None else _model_quantities(doc, out, symbols_ok)
+    _check_parts(out, doc, table, quantities)
+    return out.errors
+
+
+def _make_symbol(spec: SymbolSpec) -> sympy.Symbol:
+    from physics.symbolic import make_symbol
+
+    return make_symbol(spec)
+
+
+def _not_below(low: sympy.Expr, high: sympy.Expr) -> bool:
+    difference = (high - low).evalf(30)
+    return bool(difference.is_number and difference <= 0)
+
+
+def read_relation(text: str, table: Mapping[str, sympy.Symbol], path: tuple[str | int, ...]) -> sympy.Basic:
+    """`lhs < rhs` with exactly one of < > <= >= ≤ ≥, each side through the whitelist parser."""
+    from problems.symbols import read_expression
+
+    found = sorted((text.find(op), -len(op), op) for op in RELATIONS if op in text)
+    if not found:
+        raise SpecError("a constraint needs one of < > <= >=", path)
+    position, _, op = found[0]
+    lhs, rhs = text[:position], text[position + len(op) :]
+    if any(other in rhs for other in RELATIONS):
+        raise SpecError("a constraint may compare only two sides", path)
+    return RELATIONS[op](read_expression(lhs, table, path), read_expression(rhs, table, path))
+
+
+def _unit_dimension(text: str, path: tuple[str | int, ...]) -> Dimension:
+    from physics.units import unit_dimension
+
+    if text.strip() == "1":
+        return DIMENSIONLESS
+    try:
+        return unit_dimension(text)
+    except (AnswerError, SpecError) as error:
+        raise SpecError(error.message, path) from None
+
+
+def _check_given(
+    out: _Collector, doc: ProblemDocument, name: str, given: GivenDecl, decl: SymbolDecl | None, check_range: bool
+) -> None:
+    path: tuple[str | int, ...] = ("given", name)
+    if decl is None:
+        out.add(path, f"{name!r} is not a declared symbol")
+        return
+    for message in valid_range_errors(given):
+        out.add(path, message)
+    unit_dim = out.attempt(lambda: _unit_dimension(given.unit, (*path, "unit")))
+    symbol_dim = out.attempt(lambda: _unit_dimension(decl.dimension, ("symbols", name, "dimension")))
+    if unit_dim is not None and symbol_dim is not None and unit_dim != symbol_dim:
+        out.add((*path, "unit"), f"{given.unit} does not have the dimension of {name} ({decl.dimension})")
+        return
+    if unit_dim is None:
+        return
+    scale = out.attempt(lambda: unit_scale(given.unit), (*path, "unit"))
+    if scale is None:
+        return
+    low_si, high_si = (sympy.Rational(*v.as_integer_ratio()) * scale for v in (given.min, given.max))
+    if not decl.real and not decl.negative and low_si <= 0:
+        out.add((*path, "min"), f"must be > 0 ({name} is declared positive)")
+    if decl.negative and high_si >= 0:
+        out.add((*path, "max"), f"must be < 0 ({name} is declared negative)")
+    if decl.range is not None and check_range:
+        from problems.symbols import read_bound
+
+        try:
+            low = read_bound(decl.range[0], ("symbols", name, "range", 0))
+            high = read_bound(decl.range[1], ("symbols", name, "range", 1))
+        except SpecError:
+            return  # reported with the symbol
+        if bool((low_si - low).evalf(30) <= 0) or bool((high - high_si).evalf(30) <= 0):
+            out.add(path, f"values must lie inside the range of {name} ({low}, {high})")
+
+
+class _AnyName(frozenset[str]):
+    """Stands for a model whose quantities could not be listed (its faults are reported already)."""
+
+    def __contains__(self, item: object) -> bool:
+        return True
+
+
+def _model_quantities(doc: ProblemDocument, out: _Collector, symbols_ok: bool) -> frozenset[str] | None:
+    """The quantity names the model defines (None: no model); model faults are reported under `model`."""
+    if doc.model is None:
+        return None
+    if not symbols_ok:
+        return _AnyName()
+    from problems.modelinfo import model_quantity_names, spec_error_items
+
+    try:
+        return model_quantity_names(doc)
+    except SpecError as error:
+        for path, message in spec_error_items(error):
+            out.add(("model", *path), message)
+        return _AnyName()
+
+
+def _check_parts(
+    out: _Collector, doc: ProblemDocument, table: Mapping[str, sympy.Symbol], quantities: frozenset[str] | None
+) -> None:
+    from problems.symbols import read_bound, read_expression
+
+    seen: dict[str, int] = {}
+    symbolic_ids = {p.id for p in doc.parts if isinstance(p, SymbolicPart)}
+    for index, part in enumerate(doc.parts):
+        path: tuple[str | int, ...] = ("parts", index)
+        if part.id in seen:
+            out.add((*path, "id"), f"duplicate part id {part.id!r} (also parts[{seen[part.id]}])")
+        else:
+            seen[part.id] = index
+        if isinstance(part, SymbolicPart):
+            allowed = dict(table)
+            if part.symbols is not None:
+                allowed = {}
+                for j, name in enumerate(part.symbols):
+                    if name not in doc.symbols:
+                        out.add((*path, "symbols", j), f"{name!r} is not a declared symbol")
+                    elif name in table:
+                        allowed[name] = table[name]
+            if part.answer is not None:
+                out.attempt(partial(read_expression, part.answer, allowed, (*path, "answer")))
+            if quantities is None and part.answer is None:
+                out.add(path, "needs an answer (there is no model to derive it from)")
+            elif quantities is not None and part.quantity_name not in quantities and part.answer is None:
+                out.add((*path, "quantity"), f"the model has no quantity {part.quantity_name!r}")
+            for j, mistake in enumerate(part.mistakes):
+                mpath = (*path, "mistakes", j, "answer")
+                out.attempt(partial(read_expression, mistake.answer, table, mpath))
+            for j, limit in enumerate(part.limits):
+                for name, value in limit.where.items():
+                    lpath = (*path, "limits", j, "where", name)
+                    if name not in doc.symbols:
+                        out.add(lpath, f"{name!r} is not a declared symbol")
+                    else:
+                        out.attempt(partial(read_bound, value, lpath))
+        elif isinstance(part, NumericPart):
+            if part.of not in symbolic_ids and (quantities is None or part.of not in quantities):
+                out.add((*path, "of"), f"{part.of!r} is neither a symbolic part nor a model quantity")
+            if not part.dimensionless:
+                out.attempt(partial(_unit_dimension, part.units, (*path, "units")))

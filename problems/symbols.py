@@ -1,0 +1,107 @@
+"""A problem's symbols in the forms the core needs: SymbolSpecs, sympy Symbols, and text declarations.
+
+Every text (a range bound such as "pi/2") is read with the whitelist parser; the same names give
+the same sympy Symbols here, in the engine and in the checker (assumptions come from the spec).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from decimal import Decimal
+
+import sympy
+
+from physics.checking import SymbolDecl as CheckSymbolDecl
+from physics.dimensions import DIMENSIONLESS, Dimension
+from physics.errors import AnswerError, SpecError
+from physics.symbolic import SymbolSpec, make_symbol
+from physics.units import unit_dimension
+from problems.schema import ProblemDocument, SymbolDecl
+
+INFINITY_WORDS: Mapping[str, sympy.Expr] = {
+    "oo": sympy.oo,
+    "inf": sympy.oo,
+    "infinity": sympy.oo,
+    "∞": sympy.oo,
+    "-oo": -sympy.oo,
+    "-inf": -sympy.oo,
+    "-∞": -sympy.oo,
+}
+
+
+def read_expression(text: str, names: Mapping[str, sympy.Symbol], path: tuple[str | int, ...]) -> sympy.Expr:
+    """Author text -> sympy, through `physics.mathinput.parse_math` only; faults become SpecError."""
+    from physics.mathinput import parse_math
+
+    stripped = text.strip()
+    if stripped in INFINITY_WORDS:
+        return INFINITY_WORDS[stripped]
+    try:
+        expr: sympy.Expr = parse_math(text, names).expr
+    except AnswerError as error:
+        where = f" (at character {error.position})" if error.position is not None else ""
+        raise SpecError(f"{error.message}{where}", path) from None
+    return expr
+
+
+def read_bound(value: Decimal | str, path: tuple[str | int, ...]) -> sympy.Expr:
+    """A range bound or limit value: an exact decimal, or expression text without symbols."""
+    if isinstance(value, Decimal):
+        numerator, denominator = value.as_integer_ratio()
+        return sympy.Rational(numerator, denominator)
+    return read_expression(value, {}, path)
+
+
+def bound_text(value: Decimal | str) -> str:
+    return str(value) if isinstance(value, Decimal) else value
+
+
+def symbol_spec(name: str, decl: SymbolDecl) -> SymbolSpec:
+    """The core's spec for one declared symbol; raises SpecError (with path) on a bad dimension or range."""
+    dimension = DIMENSIONLESS if decl.dimension.strip() == "1" else _dimension(name, decl.dimension)
+    low = high = None
+    if decl.range is not None:
+        low = read_bound(decl.range[0], ("symbols", name, "range", 0))
+        high = read_bound(decl.range[1], ("symbols", name, "range", 1))
+    return SymbolSpec(
+        name=name,
+        dimension=dimension,
+        real=decl.real,
+        nonzero=decl.nonzero,
+        negative=decl.negative,
+        integer=decl.integer,
+        low=low,
+        high=high,
+    )
+
+
+def _dimension(name: str, text: str) -> Dimension:
+    try:
+        return unit_dimension(text)
+    except (AnswerError, SpecError) as error:
+        raise SpecError(error.message, ("symbols", name, "dimension")) from None
+
+
+def symbol_specs(doc: ProblemDocument) -> dict[str, SymbolSpec]:
+    return {name: symbol_spec(name, decl) for name, decl in doc.symbols.items()}
+
+
+def symbol_table(doc: ProblemDocument) -> dict[str, sympy.Symbol]:
+    """name -> sympy Symbol with the declared assumptions (positive unless said otherwise)."""
+    return {name: make_symbol(spec) for name, spec in symbol_specs(doc).items()}
+
+
+def check_decls(doc: ProblemDocument) -> tuple[CheckSymbolDecl, ...]:
+    """The symbols as plain text declarations, for check jobs that cross into worker processes."""
+    return tuple(
+        CheckSymbolDecl(
+            name=name,
+            dimension=decl.dimension,
+            real=decl.real,
+            nonzero=decl.nonzero,
+            negative=decl.negative,
+            integer=decl.integer,
+            range=(bound_text(decl.range[0]), bound_text(decl.range[1])) if decl.range is not None else None,
+        )
+        for name, decl in doc.symbols.items()
+    )

@@ -1,0 +1,120 @@
+"""The tool (our router on a migrated SQLite database) and a fake LMS, both on loopback ASGI."""
+
+from __future__ import annotations
+
+import base64
+import json
+from collections.abc import AsyncIterator, Iterator
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+from urllib.parse import parse_qs, urlsplit
+
+import httpx
+import pytest
+from fastapi import FastAPI
+
+from app.db.database import Database
+from app.db.migrate import migrate
+from app.db.problems import save_builtin
+from app.lti.context import LtiContext
+from app.lti.platforms import add_platform
+from app.lti.router import router
+from app.settings import Settings
+from tests.lti.fake_lms import CLIENT_ID, DEPLOYMENT_ID, ISSUER, TOOL, FakeLms
+
+PROBLEMS = {
+    "moving-wedge": {"title": "Block on a moving wedge", "parts": [{"id": "a"}, {"id": "b"}]},
+    "yo-yo": {"title": "Yo-yo", "parts": [{"id": "acceleration"}]},
+}
+
+
+@pytest.fixture
+def anyio_backend() -> str:
+    return "asyncio"
+
+
+@pytest.fixture
+def database(tmp_path: Path) -> Iterator[Database]:
+    url = f"sqlite:///{tmp_path / 'tool.db'}"
+    migrate(url)
+    database = Database(url)
+    with database.session() as session:
+        for problem_id, document in PROBLEMS.items():
+            save_builtin(session, problem_id, document)
+    add_platform(
+        database, ISSUER, CLIENT_ID, [DEPLOYMENT_ID], f"{ISSUER}/auth", f"{ISSUER}/token", f"{ISSUER}/jwks"
+    )
+    yield database
+    database.dispose()
+
+
+@pytest.fixture
+def lms() -> FakeLms:
+    return FakeLms()
+
+
+@pytest.fixture
+def settings(database: Database) -> Settings:
+    return Settings(database_url=database.url, base_url=TOOL, secret="test-secret-123")
+
+
+@pytest.fixture
+def context(database: Database, settings: Settings, lms: FakeLms) -> LtiContext:
+    return LtiContext(database=database, settings=settings, transport=httpx.ASGITransport(app=lms.app))
+
+
+@pytest.fixture
+def tool_app(context: LtiContext) -> FastAPI:
+    app = FastAPI()
+    app.include_router(router)
+    app.state.lti = context
+    return app
+
+
+@pytest.fixture
+async def browser(tool_app: FastAPI, lms: FakeLms) -> AsyncIterator[httpx.AsyncClient]:
+    """A browser that reaches both sites (and keeps their cookies); the LMS already trusts our keys."""
+    mounts = {
+        "all://tool.test": httpx.ASGITransport(app=tool_app),
+        "all://lms.test": httpx.ASGITransport(app=lms.app),
+    }
+    async with httpx.AsyncClient(mounts=mounts) as client:
+        lms.trust_tool_keys((await client.get(f"{TOOL}/lti/jwks")).json())
+        yield client
+
+
+@dataclass
+class Login:
+    auth_url: str
+    state: str
+    nonce: str
+
+
+async def start_login(browser: httpx.AsyncClient, **overrides: str) -> Login:
+    params = {
+        "iss": ISSUER,
+        "login_hint": "student-1",
+        "target_link_uri": f"{TOOL}/lti/launch",
+        "client_id": CLIENT_ID,
+        "lti_deployment_id": DEPLOYMENT_ID,
+        "lti_message_hint": "link-1",
+        **overrides,
+    }
+    response = await browser.get(f"{TOOL}/lti/login", params=params)
+    assert response.status_code == 302, response.text
+    location = response.headers["location"]
+    query = {k: v[0] for k, v in parse_qs(urlsplit(location).query).items()}
+    return Login(location, query["state"], query["nonce"])
+
+
+async def platform_launch(browser: httpx.AsyncClient) -> httpx.Response:
+    """The whole flow with the real platform: login, authorization, form post to the tool."""
+    login = await start_login(browser)
+    answer = (await browser.get(login.auth_url)).json()
+    return await browser.post(answer["launch_url"], data={"id_token": answer["id_token"], "state": answer["state"]})
+
+
+def unverified_claims(token: str) -> dict[str, Any]:
+    payload = token.split(".")[1]
+    return json.loads(base64.urlsafe_b64decode(payload + "=" * (-len(payload) % 4)))

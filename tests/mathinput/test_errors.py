@@ -1,0 +1,88 @@
+"""Every error kind a student can cause, with a message they understand and a position into the text."""
+
+from __future__ import annotations
+
+import pytest
+
+from physics.errors import AmbiguousInput, ParseError
+from tests.mathinput.support import read
+
+PARSE_ERRORS = [
+    # (text, position, words the message must contain)
+    ("", 0, "empty"),
+    ("   ", 0, "empty"),
+    ("2+", 1, "Nothing after '+'"),
+    ("x*", 1, "Nothing after '*'"),
+    ("x^", 1, "Nothing after '^'"),
+    ("x**", 1, "Nothing after '**'"),
+    ("(x+)", 2, "Nothing after '+'"),
+    ("*x", 0, "Nothing before '*'"),
+    ("/x", 0, "Nothing before '/'"),
+    ("(*x)", 1, "Nothing before '*'"),
+    ("x+*y", 2, "Nothing between '+' and '*'"),
+    ("(x+1", 0, "never closed"),
+    ("x*(y+(x)", 2, "never closed"),
+    ("x(", 1, "never closed"),
+    ("x+1)", 3, "Unmatched ')'"),
+    ("(x]", 2, "does not match"),
+    ("|x", 0, "never closed"),
+    ("()", 0, "Empty brackets"),
+    ("x # y", 2, "Unexpected character '#'"),
+    ("x; y", 1, "Unexpected character ';'"),
+    ("4,58", 1, "decimal point"),
+    ("x, y", 1, "Commas"),
+    ("12 500", 3, "Two numbers side by side"),
+    ("x^2 3", 4, "Two numbers side by side"),
+    ("sin", 0, "sin needs an argument"),
+    ("sin^2", 0, "sin needs an argument"),
+    ("x + sin -x", 8, "brackets"),
+    ("sin^(2)", 0, "sin needs an argument"),
+    ("sin^x", 4, "Write a power of sin as sin^2(x)"),
+    ("!x", 0, "Unexpected '!'"),
+    ("x⁻", 1, "superscript"),
+    ("x y)", 3, "Unmatched"),
+]
+
+
+@pytest.mark.parametrize(("text", "position", "words"), PARSE_ERRORS, ids=[repr(p[0]) for p in PARSE_ERRORS])
+def test_parse_error_points_at_the_fault(text, position, words):
+    with pytest.raises(ParseError) as caught:
+        read(text, "x", "y")
+    assert caught.value.position == position
+    assert caught.value.reason == "parse_error"
+    if words:
+        assert words in caught.value.message
+
+
+AMBIGUOUS_DIVISIONS = [
+    # (text, position of the /, reading 1, reading 2)
+    ("p^2/2m", 3, "(p^2/2)·m", "p^2/(2·m)"),
+    ("v^2/2g", 3, "(v^2/2)·g", "v^2/(2·g)"),
+    ("m v/q B", 3, "(m·v/q)·B", "m·v/(q·B)"),
+    ("a/b c", 1, "(a/b)·c", "a/(b·c)"),
+    ("a/b(a+b)", 1, "(a/b)·(a + b)", "a/(b·(a + b))"),
+    ("1/2m", 1, "(1/2)·m", "1/(2·m)"),  # no space: reads like 2m, not a coefficient
+    ("a*1/2 m", 3, "(a·1/2)·m", "a·1/(2·m)"),  # not at the start of the term
+    ("0.5/2 m", 3, "(0.5/2)·m", "0.5/(2·m)"),  # not an integer fraction
+    ("m + a/b c", 5, "(a/b)·c", "a/(b·c)"),
+]
+
+
+@pytest.mark.parametrize(
+    ("text", "position", "first", "second"), AMBIGUOUS_DIVISIONS, ids=[a[0] for a in AMBIGUOUS_DIVISIONS]
+)
+def test_division_before_a_juxtaposed_product_is_refused_with_both_readings(text, position, first, second):
+    with pytest.raises(AmbiguousInput) as caught:
+        read(text, "p", "m", "v", "g", "q", "B", "a", "b", "c")
+    error = caught.value
+    assert error.position == position
+    assert error.readings == (first, second)
+    assert error.message == f"Did you mean {first} or {second}? Add parentheses."
+
+
+NOT_AMBIGUOUS = ["a/b*c", "a/(b c)", "a b/c", "(a/b) c", "a/b + c", "a/b/c", "1/2 a b", "a/b^2*c"]
+
+
+@pytest.mark.parametrize("text", NOT_AMBIGUOUS)
+def test_division_without_a_juxtaposed_product_after_it_is_read(text):
+    read(text, "a", "b", "c")

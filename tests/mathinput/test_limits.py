@@ -1,0 +1,100 @@
+"""Hostile answers are refused as TooLarge before anything expensive runs (no timing asserts: each
+case here would run for minutes or eat gigabytes if a check were missing, and the test timeout catches it)."""
+
+from __future__ import annotations
+
+import pytest
+
+from physics.errors import TooLarge
+from physics.mathinput import DEFAULT_LIMITS, InputLimits, parse_math
+from tests.mathinput.support import names, read
+
+HOSTILE = [
+    ("one megabyte", "x" * 1_000_000),
+    ("one megabyte of spaces", " " * 1_000_000),
+    ("9^9^9", "9^9^9"),
+    ("2^2^2^2^2^2", "2^2^2^2^2^2"),
+    ("1e999999", "1e999999"),
+    ("1e-999999", "1e-999999"),
+    ("long sci exponent", "1e" + "9" * 100),
+    ("factorial(10^9)", "factorial(10^9)"),
+    ("10^9!", "10^9!"),
+    ("(10^9)!", "(10^9)!"),
+    ("101!", "101!"),
+    ("100000 nested brackets", "(" * 100_000 + "x" + ")" * 100_000),
+    ("(x+2)^10000", "(x+2)^10000"),
+    ("x^(2^100)", "x^(2^100)"),
+    ("x^(-101)", "x^(-101)"),
+    ("merged powers", "((x+2)^100)^100"),
+    ("merged product of powers", "(x+2)^60 (x+2)^60"),
+    ("10^401", "10^401"),
+    ("10^-401", "10^-401"),
+    ("big power of a fraction", "(1/3)^-3000"),
+    ("product of big numbers", "(2^4000)(2^4000)"),
+    ("deep root of a number", "16^(1/2^100)"),
+    ("sqrt(2)^1000", "sqrt(2)^1000"),
+    ("pi^1000", "pi^1000"),
+    ("41 digits", "1" * 41),
+    ("too many tokens", "x+" * 300 + "x"),
+    ("41 nested brackets", "(" * 41 + "x" + ")" * 41),
+    ("41 unary minus", "-" * 41 + "x"),
+    ("41 nested powers", "x" + "^x" * 41),
+    ("glued run too long", "x" * 100),
+    ("superscript flood", "x" + "⁹" * 30),
+]
+
+
+@pytest.mark.parametrize("text", [h[1] for h in HOSTILE], ids=[h[0] for h in HOSTILE])
+def test_hostile_input_is_refused_as_too_large(text):
+    with pytest.raises(TooLarge) as caught:
+        read(text, "x")
+    assert caught.value.reason == "too_large"
+    assert caught.value.position is not None
+    assert 0 <= caught.value.position <= len(text)
+
+
+def test_deep_nesting_is_too_large_not_a_recursion_error_even_with_lifted_size_limits():
+    lifted = InputLimits(max_length=10**6, max_tokens=10**6)
+    with pytest.raises(TooLarge):
+        parse_math("(" * 100_000 + "x" + ")" * 100_000, names("x"), limits=lifted)
+
+
+WITHIN_LIMITS = [
+    "(x+2)^100",
+    "x^-100",
+    "10^400",
+    "1e400",
+    "1e-400",
+    "100!",
+    "2^4000",
+    "1" * 40,
+    "(" * 30 + "x" + ")" * 30,
+    "x+" * 199 + "x",
+    "1^(10^300)",
+    "e^200",
+    "exp(10^6)",
+    "x^(1/100)",
+]
+
+
+@pytest.mark.parametrize("text", WITHIN_LIMITS)
+def test_input_at_the_limits_is_read(text):
+    read(text, "x")
+
+
+def test_limits_are_configurable():
+    tight = InputLimits(max_length=5)
+    with pytest.raises(TooLarge):
+        parse_math("x+x+x", names("x"), limits=InputLimits(max_length=4))
+    parse_math("x+x+x", names("x"), limits=InputLimits(max_length=5))
+    assert tight.max_tokens == DEFAULT_LIMITS.max_tokens
+    with pytest.raises(TooLarge):
+        parse_math("x^3", names("x"), limits=InputLimits(max_exponent=2))
+    with pytest.raises(TooLarge):
+        parse_math("4!", names("x"), limits=InputLimits(max_factorial=3))
+
+
+def test_too_long_points_at_the_first_character_past_the_limit():
+    with pytest.raises(TooLarge) as caught:
+        read("x" * 2001, "x")
+    assert caught.value.position == DEFAULT_LIMITS.max_length

@@ -1,0 +1,139 @@
+"""Declared names: Greek spellings, subscripts, case, glued runs, and refusing what reads two ways."""
+
+from __future__ import annotations
+
+import pytest
+import sympy
+
+from physics.errors import AmbiguousInput, UnknownFunction, UnknownSymbol
+from tests.mathinput.support import read, same, sym
+
+SPELLINGS = [
+    # (typed, declared, the declared name it must mean)
+    ("theta", ("theta",), "theta"),
+    ("θ", ("theta",), "theta"),
+    ("theta", ("θ",), "θ"),
+    ("θ", ("θ",), "θ"),
+    ("ϑ", ("theta",), "theta"),
+    ("α", ("alpha",), "alpha"),
+    ("μ", ("mu",), "mu"),
+    ("µ", ("mu",), "mu"),  # the micro sign
+    ("ω", ("omega",), "omega"),
+    ("Δ", ("Delta",), "Delta"),
+    ("Delta", ("Δ",), "Δ"),
+    ("λ", ("lambda",), "lambda"),
+    ("v_0", ("v_0",), "v_0"),
+    ("v0", ("v_0",), "v_0"),
+    ("U0", ("U0",), "U0"),
+    ("U_0", ("U0",), "U0"),
+    ("r0", ("r0", "r"), "r0"),
+    ("v0", ("v_0", "v"), "v_0"),
+    ("θ_0", ("theta_0",), "theta_0"),
+    ("θ0", ("theta_0",), "theta_0"),
+    ("theta0", ("theta_0",), "theta_0"),
+    ("mu_k", ("mu_k",), "mu_k"),
+    ("μ_k", ("mu_k",), "mu_k"),
+    ("μk", ("mu_k",), "mu_k"),
+    ("m1", ("m1", "m2"), "m1"),
+    ("m_1", ("m1",), "m1"),
+    ("M", ("m", "M"), "M"),
+    ("m", ("m", "M"), "m"),
+    ("mu", ("mu", "m", "u"), "mu"),  # a declared name beats a split
+]
+
+
+@pytest.mark.parametrize(("typed", "declared", "meant"), SPELLINGS, ids=[f"{s[0]}-as-{s[2]}" for s in SPELLINGS])
+def test_each_spelling_reads_as_its_declared_name(typed, declared, meant):
+    parsed = read(typed, *declared)
+    assert parsed.expr == sym(meant)
+    assert parsed.read_as.text == meant
+
+
+GLUED = [
+    ("mgh", ("m", "g", "h"), sym("m") * sym("g") * sym("h")),
+    ("mgsin(theta)", ("m", "g", "theta"), sym("m") * sym("g") * sympy.sin(sym("theta"))),
+    ("mgsinθ", ("m", "g", "theta"), sym("m") * sym("g") * sympy.sin(sym("theta"))),
+    ("mgcosθ", ("m", "g", "theta"), sym("m") * sym("g") * sympy.cos(sym("theta"))),
+    ("2mg", ("m", "g"), 2 * sym("m") * sym("g")),
+    ("πr²", ("r",), sympy.pi * sym("r") ** 2),
+    ("m1m2", ("m1", "m2"), sym("m1") * sym("m2")),
+    ("Mm", ("m", "M"), sym("m") * sym("M")),
+    ("μmg", ("mu", "m", "g"), sym("mu") * sym("m") * sym("g")),
+    ("mumg", ("mu", "m", "g"), sym("mu") * sym("m") * sym("g")),
+    ("mv0", ("m", "v_0"), sym("m") * sym("v_0")),
+]
+
+
+@pytest.mark.parametrize(("typed", "declared", "expected"), GLUED, ids=[g[0] for g in GLUED])
+def test_glued_run_that_splits_one_way_is_that_product(typed, declared, expected):
+    assert same(read(typed, *declared).expr, expected)
+
+
+def test_glued_run_reads_back_with_explicit_products():
+    assert read("mgh", "m", "g", "h").read_as.text == "m*g*h"
+
+
+AMBIGUOUS_NAMES = [
+    ("mgh", ("m", "g", "h", "gh"), {"m*g*h", "m*gh"}),
+    ("vx", ("v_x", "v", "x"), {"v*x", "v_x"}),
+    ("Δx", ("Delta_x", "Delta", "x"), {"Delta*x", "Delta_x"}),
+]
+
+
+@pytest.mark.parametrize(("typed", "declared", "readings"), AMBIGUOUS_NAMES, ids=[a[0] for a in AMBIGUOUS_NAMES])
+def test_glued_run_that_splits_two_ways_is_refused_listing_both(typed, declared, readings):
+    with pytest.raises(AmbiguousInput) as caught:
+        read(typed, *declared)
+    assert set(caught.value.readings) == readings
+    assert caught.value.position == 0
+    for reading in readings:
+        assert reading in caught.value.message
+
+
+def test_undeclared_greek_name_does_not_join_a_split():
+    assert read("mu", "m", "u").expr == sym("m") * sym("u")
+
+
+UNKNOWN = [
+    ("q", ("m", "g"), "q", 0),
+    ("m g q", ("m", "g"), "q", 4),
+    ("xyz", ("x", "y"), "xyz", 0),
+    ("omega", ("theta",), "omega", 0),
+    ("ω", ("theta",), "ω", 0),
+    ("Theta", ("theta",), "Theta", 0),
+    ("mgk", ("m", "g"), "mgk", 0),
+    ("E", ("e",), "E", 0),
+]
+
+
+@pytest.mark.parametrize(("typed", "declared", "symbol", "position"), UNKNOWN, ids=[u[0] for u in UNKNOWN])
+def test_unknown_symbol_is_refused_listing_the_allowed_names(typed, declared, symbol, position):
+    with pytest.raises(UnknownSymbol) as caught:
+        read(typed, *declared)
+    assert caught.value.symbol == symbol
+    assert caught.value.position == position
+    assert caught.value.allowed == declared
+    for name in declared:
+        assert name in caught.value.message
+
+
+UNKNOWN_FUNCTIONS = [
+    ("f(x)", "f", 0),
+    ("2 + g(x)", "g", 4),
+    ("exec(x)", "exec", 0),
+    ("Sin(x)", "Sin", 0),
+]
+
+
+@pytest.mark.parametrize(("typed", "function", "position"), UNKNOWN_FUNCTIONS, ids=[u[0] for u in UNKNOWN_FUNCTIONS])
+def test_undeclared_name_before_a_bracket_is_an_unknown_function(typed, function, position):
+    with pytest.raises(UnknownFunction) as caught:
+        read(typed, "x")
+    assert caught.value.function == function
+    assert caught.value.position == position
+    assert "sin" in caught.value.allowed
+    assert "sqrt" in caught.value.message
+
+
+def test_declared_name_before_a_bracket_is_multiplication():
+    assert same(read("m(g+M)", "m", "g", "M").expr, sym("m") * (sym("g") + sym("M")))

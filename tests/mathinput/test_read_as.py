@@ -1,0 +1,90 @@
+"""read_as shows the student how their input was grouped, rendered from the parse tree."""
+
+from __future__ import annotations
+
+import pytest
+
+from physics.mathinput import parse_math
+from tests.mathinput.support import names, read, same
+
+WEDGE = ("m", "M", "g", "theta")
+
+TEXT = [
+    ("-m g sin(θ)cos(θ)/(M + m sin^2 θ)", WEDGE, "-m*g*sin(theta)*cos(theta)/(M + m*sin(theta)**2)"),
+    ("mgh", ("m", "g", "h"), "m*g*h"),
+    ("((m))", WEDGE, "m"),
+    ("m (g + M)", WEDGE, "m*(g + M)"),
+    ("(m g)/(M)", WEDGE, "m*g/M"),
+    ("m/(g M)", WEDGE, "m/(g*M)"),
+    ("m/(g/M)", WEDGE, "m/(g/M)"),
+    ("m - (g + M)", WEDGE, "m - (g + M)"),
+    ("m - (g - M)", WEDGE, "m - (g - M)"),
+    ("m + (g + M)", WEDGE, "m + g + M"),
+    ("-(m + g)", WEDGE, "-(m + g)"),
+    ("m^2^g", WEDGE, "m**g**g"[:0] + "m**2**g"),
+    ("(m^2)^g", WEDGE, "(m**2)**g"),
+    ("(-m)^2", WEDGE, "(-m)**2"),
+    ("m^(-2)", WEDGE, "m**(-2)"),
+    ("m^(g M)", WEDGE, "m**(g*M)"),
+    ("m^(1/2)", WEDGE, "m**(1/2)"),
+    ("m v0^2", ("m", "v_0"), "m*v_0**2"),
+    ("U_0", ("U0",), "U0"),
+    ("θ", WEDGE, "theta"),
+    ("sin^-1(m/M)", WEDGE, "asin(m/M)"),
+    ("arctan θ", WEDGE, "atan(theta)"),
+    ("ln m", WEDGE, "log(m)"),
+    ("|m - M|", WEDGE, "abs(m - M)"),
+    ("√(m g)", WEDGE, "sqrt(m*g)"),
+    ("1/2 m g^2", WEDGE, "1/2*m*g**2"),
+    ("4.58E3", WEDGE, "4.58e3"),
+    ("30°", WEDGE, "30*pi/180"),
+    ("50%", WEDGE, "50/100"),
+    ("3!", WEDGE, "factorial(3)"),
+    ("2πm", WEDGE, "2*pi*m"),
+    ("e^m", WEDGE, "e**m"),
+    ("m·g × M", WEDGE, "m*g*M"),
+    ("m*(-g)", WEDGE, "m*(-g)"),
+    ("m + (-g)", WEDGE, "m + (-g)"),
+]
+
+
+@pytest.mark.parametrize(("text", "declared", "expected"), TEXT, ids=[t[0] for t in TEXT])
+def test_read_as_text_shows_the_grouping_in_contract_style(text, declared, expected):
+    assert read(text, *declared).read_as.text == expected
+
+
+@pytest.mark.parametrize(("text", "declared", "expected"), TEXT, ids=[t[0] for t in TEXT])
+def test_read_as_text_parses_back_to_the_same_expression(text, declared, expected):
+    first = read(text, *declared)
+    again = parse_math(first.read_as.text, names(*declared))
+    assert same(again.expr, first.expr)
+
+
+LATEX = [
+    (
+        "-m g sin(θ)cos(θ)/(M + m sin^2 θ)",
+        WEDGE,
+        r"-\frac{m g \sin\left(\theta\right) \cos\left(\theta\right)}{M + m \sin^{2}\left(\theta\right)}",
+    ),
+    ("1/2 m v_0^2", ("m", "v_0"), r"\frac{1}{2} m v_{0}^{2}"),
+    ("U0/r0", ("U0", "r0"), r"\frac{U_{0}}{r_{0}}"),
+    ("sqrt(m/M)", WEDGE, r"\sqrt{\frac{m}{M}}"),
+    ("(m+M)^2", WEDGE, r"\left(m + M\right)^{2}"),
+    ("|m|", WEDGE, r"\left|m\right|"),
+    ("mu_k g", ("mu_k", "g"), r"\mu_{k} g"),
+    ("Δ", ("Delta",), r"\Delta"),
+    ("2 3.5", WEDGE, None),
+    ("2*3", WEDGE, r"2 \cdot 3"),
+    ("asin m", WEDGE, r"\arcsin\left(m\right)"),
+    ("30°", WEDGE, r"30^{\circ}"),
+    ("4.58e-3", WEDGE, r"4.58 \cdot 10^{-3}"),
+    ("e^m", WEDGE, r"e^{m}"),
+    ("pi m", WEDGE, r"\pi m"),
+    ("log10(m)", WEDGE, r"\log_{10}\left(m\right)"),
+]
+LATEX = [case for case in LATEX if case[2] is not None]
+
+
+@pytest.mark.parametrize(("text", "declared", "expected"), LATEX, ids=[t[0] for t in LATEX])
+def test_read_as_latex_uses_frac_and_named_functions(text, declared, expected):
+    assert read(text, *declared).read_as.latex == expected

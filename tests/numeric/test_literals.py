@@ -1,0 +1,168 @@
+"""Number literals: every accepted form read exactly, significant figures shown, and refused forms."""
+
+from __future__ import annotations
+
+import time
+from fractions import Fraction
+
+import pytest
+
+from physics.errors import AnswerError, ParseError, TooLarge
+from physics.numeric import read_number, read_numeric_answer
+
+F = Fraction
+
+VALUES = [
+    # (text, exact value)
+    ("4.58", F("4.58")),
+    (".5", F(1, 2)),
+    ("0.5", F(1, 2)),
+    ("1500", F(1500)),
+    ("100.", F(100)),
+    ("-4.58", F("-4.58")),
+    ("−4.58", F("-4.58")),  # Unicode minus
+    ("+4.58", F("4.58")),
+    ("- 4.58", F("-4.58")),
+    ("4.58e3", F(4580)),
+    ("4.58E-3", F("0.00458")),
+    ("4.58e+3", F(4580)),
+    ("4.58e−3", F("0.00458")),
+    ("4.58×10^3", F(4580)),
+    ("4.58 × 10^3", F(4580)),
+    ("4.58 x 10^3", F(4580)),
+    ("4.58X10^3", F(4580)),
+    ("4.58*10^3", F(4580)),
+    ("4.58*10**3", F(4580)),
+    ("4.58·10⁻³", F("0.00458")),
+    ("4.58⋅10³", F(4580)),
+    ("4.58×10^-3", F("0.00458")),
+    ("4.58×10^(-3)", F("0.00458")),
+    ("4.58×10^−3", F("0.00458")),
+    ("10^3", F(1000)),
+    ("45%", F(45, 100)),
+    ("45 %", F(45, 100)),
+    ("4.5e1%", F(45, 100)),
+    ("0.1", F(1, 10)),  # exact: not the binary float 0.1000000000000000055…
+    ("3.1416", F(31416, 10000)),
+    ("1e400", F(10) ** 400),
+    ("1e-400", F(1, 10**400)),
+    ("0", F(0)),
+    ("-0.0", F(0)),
+]
+
+
+@pytest.mark.parametrize(("text", "value"), VALUES, ids=[c[0] for c in VALUES])
+def test_literal_is_read_exactly(text: str, value: Fraction) -> None:
+    assert read_number(text).value == value
+
+
+SIGFIGS = [
+    # (text, fewest, most)
+    ("4.58", 3, 3),
+    ("1500", 2, 4),
+    ("1500.", 4, 4),
+    ("1.500e3", 4, 4),
+    ("1.50e3", 3, 3),
+    ("1.5e3", 2, 2),
+    ("0.00120", 3, 3),
+    ("0.0450", 3, 3),
+    ("100.", 3, 3),
+    ("100", 1, 3),
+    ("100.0", 4, 4),
+    ("12", 2, 2),
+    ("10", 1, 2),
+    ("7", 1, 1),
+    (".5", 1, 1),
+    ("0.5", 1, 1),
+    ("-0.0450", 3, 3),
+    ("45.0%", 3, 3),
+    ("4.58×10^3", 3, 3),
+    ("1200e3", 2, 4),
+    ("0", 1, 1),
+    ("0.00", 2, 2),
+]
+
+
+@pytest.mark.parametrize(("text", "fewest", "most"), SIGFIGS, ids=[c[0] for c in SIGFIGS])
+def test_significant_figures_shown(text: str, fewest: int, most: int) -> None:
+    assert read_number(text).sigfig_range == (fewest, most)
+
+
+RENDERED = [
+    # (answer, read_as text, read_as latex)
+    ("4.58 m/s^2", "4.58 m/s^2", r"4.58\,\mathrm{m}/\mathrm{s}^{2}"),
+    ("4.58×10^3 N", "4.58e3 N", r"4.58 \times 10^{3}\,\mathrm{N}"),
+    ("−.5 m·s⁻²", "-0.5 m/s^2", r"-0.5\,\mathrm{m}/\mathrm{s}^{2}"),
+    ("45%", "45%", r"45\,\%"),
+    ("16.49km/h", "16.49 km/h", r"16.49\,\mathrm{km}/\mathrm{h}"),
+    ("4.58eV", "4.58 eV", r"4.58\,\mathrm{eV}"),
+    ("30°", "30 °", r"30\,{}^{\circ}"),
+]
+
+
+@pytest.mark.parametrize(("answer", "text", "latex"), RENDERED, ids=[c[0] for c in RENDERED])
+def test_answer_is_shown_as_read(answer: str, text: str, latex: str) -> None:
+    read_as = read_numeric_answer(answer).read_as()
+    assert (read_as.text, read_as.latex) == (text, latex)
+
+
+REFUSED = [
+    # (text, error type, position, words the message must contain)
+    ("4,58", ParseError, 1, "decimal point"),
+    ("1,500 m", ParseError, 1, "decimal point"),
+    ("12 500", ParseError, 3, "side by side"),
+    ("12 500 m", ParseError, 3, "side by side"),
+    ("4.58 m 3", ParseError, 7, ""),
+    ("", ParseError, 0, "number"),
+    ("m/s", ParseError, 0, "number"),
+    ("abc", ParseError, 0, "number"),
+    ("-", ParseError, 1, "number"),
+    (".", ParseError, 0, "number"),
+    ("4.5.8", ParseError, 3, "decimal point"),
+    ("4.58 × 10", ParseError, 9, "power of ten"),
+    ("4.58×10^", ParseError, 7, "power of ten"),
+    ("1e999999", TooLarge, 2, "power of ten"),
+    ("1e-401", TooLarge, 3, "power of ten"),
+    ("4.58×10^9999", TooLarge, 8, "power of ten"),
+    ("1" * 41, TooLarge, 0, "digits"),
+    ("0." + "0" * 39 + "1", TooLarge, 0, "digits"),
+    ("1" * 201, TooLarge, 200, "characters"),
+]
+
+
+@pytest.mark.parametrize(
+    ("text", "error", "position", "words"), REFUSED, ids=[repr(c[0])[:24] for c in REFUSED]
+)
+def test_refused_literal(text: str, error: type[AnswerError], position: int, words: str) -> None:
+    with pytest.raises(error) as caught:
+        read_numeric_answer(text)
+    assert caught.value.position == position
+    assert words in caught.value.message
+
+
+def test_forty_digits_are_accepted() -> None:
+    assert read_number("1" * 40).value == int("1" * 40)
+
+
+HOSTILE = [
+    "1e999999999999999999999999",
+    "9" * 200,
+    "1" + "0" * 199,
+    "1e" + "9" * 198,
+    "1×10^" + "9" * 190,
+    "4.58 " + "(" * 190,
+    "4.58 " + "m/" * 97,
+    "4.58 " + "Nm" * 97,
+    "1" * 10_000,
+    "4.58 \x00",
+    "__import__('os').system('true')",
+    "4.58 m; DROP TABLE submissions",
+]
+
+
+@pytest.mark.parametrize("text", HOSTILE, ids=[f"hostile-{i}" for i in range(len(HOSTILE))])
+def test_hostile_answer_is_refused_quickly(text: str) -> None:
+    start = time.perf_counter()
+    with pytest.raises(AnswerError):
+        read_numeric_answer(text)
+    assert time.perf_counter() - start < 2  # a guard against hangs, not a timing claim

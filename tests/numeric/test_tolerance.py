@@ -1,0 +1,110 @@
+"""Tolerance bounds are inclusive and exact; sig-fig rounding is half away from zero, exactly."""
+
+from __future__ import annotations
+
+from decimal import Decimal
+from fractions import Fraction
+
+import pytest
+
+from physics.errors import SpecError
+from physics.numeric import NumericSpec, Tolerance, check_numeric, round_sigfigs
+from physics.verdict import Outcome
+
+D = Decimal
+F = Fraction
+
+EDGES = [
+    # (answer, expected, tolerance, correct?): expected 4.5807 ± 1 % is [4.534893, 4.626507]
+    ("4.5807", "4.5807", Tolerance(rel=D("0.01")), True),
+    ("4.535", "4.5807", Tolerance(rel=D("0.01")), True),
+    ("4.5349", "4.5807", Tolerance(rel=D("0.01")), True),
+    ("4.534893", "4.5807", Tolerance(rel=D("0.01")), True),  # exactly on the lower bound
+    ("4.5348929999", "4.5807", Tolerance(rel=D("0.01")), False),
+    ("4.534892", "4.5807", Tolerance(rel=D("0.01")), False),
+    ("4.5348", "4.5807", Tolerance(rel=D("0.01")), False),
+    ("4.626507", "4.5807", Tolerance(rel=D("0.01")), True),  # exactly on the upper bound
+    ("4.6265070001", "4.5807", Tolerance(rel=D("0.01")), False),
+    ("1.01", "1", Tolerance(rel=D("0.01")), True),  # 1.01 is not 1.0100000000000000088817… here
+    ("0.99", "1", Tolerance(rel=D("0.01")), True),
+    ("0.3", "0.1", Tolerance(abs=D("0.2")), True),  # 0.1 + 0.2 is exactly 0.3
+    ("0.30001", "0.1", Tolerance(abs=D("0.2")), False),
+    ("-0.1", "0.1", Tolerance(abs=D("0.2")), True),
+    ("5.05", "5", Tolerance(abs=D("0.05")), True),
+    ("5.0500001", "5", Tolerance(abs=D("0.05")), False),
+    ("0", "0", Tolerance(rel=D("0.01")), True),
+    ("0.0000001", "0", Tolerance(rel=D("0.01")), False),  # rel of zero admits only zero
+    ("4.58", "4.58", Tolerance(), True),  # no keys: exact
+    ("4.5800001", "4.58", Tolerance(), False),
+    # every key given must pass
+    ("4.6", "4.5807", Tolerance(rel=D("0.01"), abs=D("0.001")), False),
+    ("4.581", "4.5807", Tolerance(rel=D("0.01"), abs=D("0.001")), True),
+    ("4.58", "4.5807", Tolerance(rel=D("0.01"), sigfigs=3), True),
+    ("4.59", "4.5857", Tolerance(rel=D("0.01"), sigfigs=3), True),
+    ("4.58", "4.5857", Tolerance(rel=D("0.01"), sigfigs=3), False),  # within 1 % but rounded wrongly
+]
+
+
+@pytest.mark.parametrize(
+    ("answer", "expected", "tolerance", "correct"), EDGES, ids=[f"{c[0]} vs {c[1]} {c[2]}" for c in EDGES]
+)
+def test_tolerance_edge(answer: str, expected: str, tolerance: Tolerance, correct: bool) -> None:
+    verdict = check_numeric(answer, NumericSpec(D(expected), tolerance=tolerance))
+    assert verdict.outcome == (Outcome.CORRECT if correct else Outcome.INCORRECT)
+
+
+def test_default_tolerance_is_one_percent_relative() -> None:
+    assert NumericSpec(D(1)).tolerance == Tolerance(rel=D("0.01"))
+
+
+ROUNDING = [
+    # (value, figures, rounded)
+    (F("4.585"), 3, F("4.59")),
+    (F("-4.585"), 3, F("-4.59")),
+    (F("4.5849999"), 3, F("4.58")),
+    (F("9.995"), 3, F(10)),
+    (F(1498), 3, F(1500)),
+    (F("0.00044995"), 4, F("0.0004500")),
+    (F(123456), 1, F(100000)),
+    (F(2, 3), 2, F("0.67")),
+    (F(1, 3), 40, F("0." + "3" * 40)),
+    (F(0), 3, F(0)),
+    (F(10) ** 400, 3, F(10) ** 400),
+    (F(1, 10**400) * 15, 1, F(2, 10**399)),
+]
+
+
+@pytest.mark.parametrize(("value", "figures", "rounded"), ROUNDING, ids=[f"{c[0]}@{c[1]}"[:40] for c in ROUNDING])
+def test_round_sigfigs_half_away_from_zero(value: Fraction, figures: int, rounded: Fraction) -> None:
+    assert round_sigfigs(value, figures) == rounded
+
+
+BAD_TOLERANCES = [
+    ({"rel": D("-0.01")}, ("tolerance", "rel")),
+    ({"abs": D("NaN")}, ("tolerance", "abs")),
+    ({"rel": D("Infinity")}, ("tolerance", "rel")),
+    ({"sigfigs": 0}, ("tolerance", "sigfigs")),
+    ({"sigfigs": 41}, ("tolerance", "sigfigs")),
+]
+
+
+@pytest.mark.parametrize(("fields", "path"), BAD_TOLERANCES, ids=[str(c[0]) for c in BAD_TOLERANCES])
+def test_unusable_tolerance_is_a_spec_error(fields: dict[str, object], path: tuple[str, ...]) -> None:
+    with pytest.raises(SpecError) as caught:
+        Tolerance(**fields)  # type: ignore[arg-type]
+    assert caught.value.path == path
+
+
+@pytest.mark.parametrize(
+    ("fields", "path"),
+    [
+        ({"expected": D("NaN")}, ("expected",)),
+        ({"expected": D(1), "units": "furlong"}, ("units",)),
+        ({"expected": D(1), "units": "m/"}, ("units",)),
+    ],
+    ids=["nan-expected", "unknown-units", "malformed-units"],
+)
+def test_unusable_spec_is_a_spec_error(fields: dict[str, object], path: tuple[str, ...]) -> None:
+    with pytest.raises(SpecError) as caught:
+        NumericSpec(**fields)  # type: ignore[arg-type]
+    assert caught.value.path == path

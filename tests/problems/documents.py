@@ -1,0 +1,46 @@
+"""Small problem documents for the bank's tests (fresh copies: tests mutate them)."""
+
+from __future__ import annotations
+
+import copy
+from typing import Any
+
+_SPRING: dict[str, Any] = {
+    "id": "tiny-spring",
+    "title": "Tiny spring",
+    "topics": ["oscillations"],
+    "statement": "A mass $m$ on a spring $k$. Here $m$ = {m} and $k$ = {k}; note $\\frac{m}{k}$ stays.",
+    "symbols": {
+        "m": {"meaning": "mass", "dimension": "kg"},
+        "k": {"meaning": "spring constant", "dimension": "N/m"},
+        "theta": {"meaning": "an angle", "dimension": "1", "range": [0, "pi/2"]},
+    },
+    "constraints": [],
+    "given": {
+        "m": {"min": 0.5, "max": 2.0, "unit": "kg", "sigfigs": 2},
+        "k": {"min": 10, "max": 100, "unit": "N/m", "step": 5},
+        "theta": {"min": 10, "max": 40, "unit": "deg", "step": 1},
+    },
+    "parts": [
+        {
+            "id": "angular_frequency",
+            "kind": "symbolic",
+            "prompt": "Find the angular frequency.",
+            "answer": "sqrt(k/m)",
+            "symbols": ["m", "k"],
+            "mistakes": [{"answer": "sqrt(m/k)", "feedback": "Upside down: omega grows with k."}],
+            "limits": [{"where": {"m": "oo"}, "description": "a huge mass barely moves"}],
+        },
+        {
+            "id": "angular_frequency_numeric",
+            "kind": "numeric",
+            "prompt": "Find it numerically.",
+            "of": "angular_frequency",
+            "units": "rad/s",
+        },
+    ],
+}
+
+
+def spring() -> dict[str, Any]:
+    return copy.deepcopy(_SPRING)

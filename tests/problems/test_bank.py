@@ -1,0 +1,77 @@
+"""The built-in bank: the contract's problems, symbols and parts exist exactly as named."""
+
+from __future__ import annotations
+
+from decimal import Decimal
+from functools import cache
+
+import pytest
+
+from problems.loader import load_bank
+from problems.schema import NumericPart, ProblemDocument
+
+# API.md's table, plus the task's additions; (symbols, parts) per problem id.
+CONTRACT: dict[str, tuple[set[str], list[str]]] = {
+    "moving-wedge": (
+        {"m", "M", "theta", "g"},
+        ["wedge_acceleration", "block_relative_acceleration", "normal_force", "wedge_acceleration_numeric"],
+    ),
+    "yo-yo": ({"m", "r", "k", "g"}, ["acceleration", "tension", "acceleration_numeric"]),
+    "lennard-jones": (
+        {"U0", "r0", "r", "m"},
+        ["equilibrium_separation", "force", "spring_constant", "oscillation_frequency", "oscillation_frequency_numeric"],
+    ),
+    "ballistic-pendulum": (
+        {"m", "M", "L", "theta", "g"},
+        ["bullet_speed", "energy_fraction_lost", "bullet_speed_numeric"],
+    ),
+    "skier-friction": (
+        {"alpha", "mu", "g", "m"},
+        ["friction_coefficient", "acceleration", "friction_coefficient_numeric", "acceleration_numeric"],
+    ),
+    "incline-pulley": ({"m1", "m2", "theta", "g"}, ["acceleration", "tension", "acceleration_numeric"]),
+    "rolling-incline": (
+        {"m", "R", "theta", "g"},
+        ["acceleration_cylinder", "acceleration_hoop", "acceleration_sphere", "acceleration_sliding",
+         "acceleration_cylinder_numeric"],
+    ),
+    "mass-spring": ({"m", "k"}, ["angular_frequency", "period", "period_numeric"]),
+    "atwood": ({"m1", "m2", "g"}, ["acceleration", "tension", "acceleration_numeric"]),
+}
+
+
+@cache
+def bank() -> dict[str, ProblemDocument]:
+    return {doc.id: doc for doc in load_bank(check_meaning=False)}
+
+
+def test_bank_holds_exactly_the_contract_problems() -> None:
+    assert set(bank()) == set(CONTRACT)
+
+
+@pytest.mark.parametrize("problem_id", sorted(CONTRACT))
+def test_problem_has_the_contract_symbols_and_parts(problem_id: str) -> None:
+    symbols, parts = CONTRACT[problem_id]
+    doc = bank()[problem_id]
+    assert set(doc.symbols) == symbols
+    assert [p.id for p in doc.parts] == parts
+
+
+@pytest.mark.parametrize("problem_id", sorted(CONTRACT))
+def test_numeric_parts_are_the_numeric_ones_and_have_givens_for_g(problem_id: str) -> None:
+    doc = bank()[problem_id]
+    for part in doc.parts:
+        assert isinstance(part, NumericPart) == part.id.endswith("_numeric")
+    if "g" in doc.given:
+        assert doc.given["g"].min == doc.given["g"].max == Decimal("9.81") and doc.given["g"].unit == "m/s^2"
+    for name, given in doc.given.items():
+        if doc.symbols[name].dimension == "1" and given.unit != "1":
+            assert given.unit == "deg", f"{problem_id}: angles are given in degrees"
+
+
+def test_skier_slides_for_every_allowed_slope_and_friction() -> None:
+    import math
+
+    doc = bank()["skier-friction"]
+    alpha, mu = doc.given["alpha"], doc.given["mu"]
+    assert float(mu.max) < math.tan(math.radians(float(alpha.min)))

@@ -1,0 +1,118 @@
+"""Dimensions of expressions, and answers graded wrong for their dimension."""
+
+from __future__ import annotations
+
+import pytest
+import sympy
+
+from physics.dimensions import DIMENSIONLESS
+from physics.symbolic import DimensionMismatch, UnknownDimension, describe, expression_dimension
+from physics.verdict import Reason
+from tests.symbolic.support import (
+    ACCELERATION,
+    ENERGY,
+    FORCE,
+    KG,
+    METRE,
+    SECOND,
+    SPEED,
+    L,
+    M,
+    a,
+    context,
+    cos,
+    g,
+    judge,
+    log,
+    m,
+    mu,
+    sin,
+    sqrt,
+    t,
+    theta,
+    v,
+)
+
+DIMS = {m: KG, M: KG, g: ACCELERATION, v: SPEED, L: METRE, t: SECOND, mu: DIMENSIONLESS, theta: DIMENSIONLESS}
+
+CONSISTENT = [
+    ("force", m * g * sin(theta), FORCE),
+    ("kinetic-energy", m * v**2 / 2, ENERGY),
+    ("sum-of-masses", (m + M) * g, FORCE),
+    ("square-root", sqrt(2 * L / g), SECOND),
+    ("rational-power", (L**3) ** sympy.Rational(1, 3), METRE),
+    ("ratio-in-log", log(M / m), DIMENSIONLESS),
+    ("ratio-in-exp", v * sympy.exp(-g * t / v), SPEED),
+    ("abs-keeps-dimension", sympy.Abs(v), SPEED),
+    ("pure-number", 2 * sympy.pi, DIMENSIONLESS),
+    ("friction", g * (sin(theta) - mu * cos(theta)), ACCELERATION),
+    ("atan2-of-lengths", sympy.atan2(L, v * t), DIMENSIONLESS),
+]
+
+
+@pytest.mark.parametrize(("expr", "dim"), [c[1:] for c in CONSISTENT], ids=[c[0] for c in CONSISTENT])
+def test_consistent_expressions_have_their_dimension(expr, dim):
+    assert expression_dimension(expr, DIMS) == dim
+
+
+INCONSISTENT = [
+    ("mass-plus-acceleration", m + g, "add", "adds"),
+    ("number-plus-length", 1 + L, "add", "adds"),
+    ("sin-of-mass", sin(m), "function", "takes sin of"),
+    ("exp-of-time", sympy.exp(t), "function", "takes exp of"),
+    ("log-of-length", log(L), "function", "takes log of"),
+    ("dimensional-exponent", g**t, "exponent", "exponent"),
+    ("symbolic-power-of-length", L**mu, "power", "raises"),
+]
+
+
+@pytest.mark.parametrize(
+    ("expr", "kind", "words"), [c[1:] for c in INCONSISTENT], ids=[c[0] for c in INCONSISTENT]
+)
+def test_inconsistent_expressions_raise_a_mismatch_saying_which(expr, kind, words):
+    with pytest.raises(DimensionMismatch) as raised:
+        expression_dimension(expr, DIMS)
+    assert raised.value.kind == kind
+    assert words in raised.value.message
+
+
+def test_mismatch_names_both_dimensions_of_a_sum():
+    with pytest.raises(DimensionMismatch) as raised:
+        expression_dimension(m + g, DIMS)
+    assert describe(KG) in raised.value.message
+    assert describe(ACCELERATION) in raised.value.message
+
+
+def test_a_symbol_without_dimension_is_reported():
+    with pytest.raises(UnknownDimension) as raised:
+        expression_dimension(m * a, DIMS)
+    assert raised.value.symbol == "a"
+
+
+WRONG_DIMENSION = [
+    ("force-for-acceleration", m * g * sin(theta), g * sin(theta), [describe(FORCE), describe(ACCELERATION)]),
+    ("adds-mass-to-acceleration", g * sin(theta) + m, g * sin(theta), ["adds"]),
+    ("sin-of-dimensional", g * sin(m), g * sin(theta), ["takes sin of"]),
+    ("missing-square", m * v / 2, m * v**2 / 2, [describe(ENERGY)]),
+]
+
+
+@pytest.mark.parametrize(
+    ("answer", "expected", "words"), [c[1:] for c in WRONG_DIMENSION], ids=[c[0] for c in WRONG_DIMENSION]
+)
+def test_an_answer_of_the_wrong_dimension_is_graded_so(answer, expected, words):
+    judgement = judge(answer, expected)
+    assert judgement.reason is Reason.WRONG_DIMENSION
+    assert not judgement.correct
+    for word in words:
+        assert word in judgement.feedback
+
+
+def test_no_dimension_verdict_when_a_symbol_of_the_answer_has_no_dimension():
+    judgement = judge(a * g, g, context(a * g, g))
+    assert judgement.reason is not Reason.WRONG_DIMENSION
+
+
+def test_an_equivalent_answer_is_correct_even_written_with_logs_of_dimensional_quantities():
+    answer = log(M) - log(m)
+    assert judge(answer, log(M / m)).correct

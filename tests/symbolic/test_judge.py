@@ -1,0 +1,56 @@
+"""judge_symbolic as callers use it: reproducible, strict about names, and its bench cases."""
+
+from __future__ import annotations
+
+import pickle
+
+import pytest
+import sympy
+
+from physics.errors import ParseError, UnknownSymbol
+from physics.symbolic import bench_equivalence_cases, judge_symbolic, prepare_reference
+from physics.verdict import Reason
+from tests.symbolic.support import context, g, m, sin, theta
+
+
+def test_an_undeclared_symbol_in_the_answer_is_an_unknown_symbol_error():
+    reference = prepare_reference(m * g, context(m * g))
+    with pytest.raises(UnknownSymbol) as raised:
+        judge_symbolic(m * g * sympy.Symbol("h"), reference)
+    assert raised.value.symbol == "h"
+    assert raised.value.allowed == ("g", "m")
+
+
+def test_a_relation_is_not_an_answer():
+    reference = prepare_reference(m * g, context(m * g))
+    with pytest.raises(ParseError):
+        judge_symbolic(sympy.Eq(m, g), reference)
+
+
+def test_judging_twice_gives_the_same_judgement():
+    expected = m * g * sin(theta)
+    answer = m * g * sin(theta) * (1 + sympy.Rational(1, 10**9))
+    first = judge_symbolic(answer, prepare_reference(expected, context(expected)))
+    second = judge_symbolic(answer, prepare_reference(expected, context(expected)))
+    assert first == second
+    assert first.reason is Reason.CONSTANT_FACTOR
+
+
+def test_a_prepared_reference_survives_pickling_for_worker_processes():
+    expected = m * g * sin(theta)
+    reference = pickle.loads(pickle.dumps(prepare_reference(expected, context(expected))))
+    assert judge_symbolic(g * m * sin(theta), reference).correct
+
+
+BENCH = bench_equivalence_cases()
+BENCH_VERDICTS = [True, True, False, True, False, True, False, True, True, True]
+
+
+@pytest.mark.parametrize(
+    ("case", "correct"),
+    list(zip(BENCH, BENCH_VERDICTS, strict=True)),
+    ids=[f"bench-{i}" for i in range(len(BENCH))],
+)
+def test_bench_cases_get_their_known_verdicts(case, correct):
+    answer, expected, ctx = case
+    assert judge_symbolic(answer, prepare_reference(expected, ctx)).correct is correct

@@ -1,0 +1,110 @@
+"""The sample points: inside every range and constraint, reproducible, and refused when none exist."""
+
+from __future__ import annotations
+
+import pytest
+import sympy
+from mpmath import libmp
+
+from physics.errors import SpecError
+from physics.symbolic import SymbolicContext, SymbolSpec, make_symbol, prepare_reference
+from tests.symbolic.support import M, context, g, m, mu, pi, sin, sqrt, tan, theta
+
+HALF_PI = float(pi / 2)
+
+
+def values(reference, symbol):
+    return [libmp.to_float(value) for value in reference.sample.columns[symbol]]
+
+
+def test_points_lie_strictly_inside_an_open_range():
+    reference = prepare_reference(g * sin(theta), context(g * sin(theta)))
+    thetas = values(reference, theta)
+    assert all(0 < value < HALF_PI for value in thetas)
+
+
+def test_latin_hypercube_visits_both_halves_of_a_range():
+    reference = prepare_reference(g * sin(theta), context(g * sin(theta)))
+    thetas = values(reference, theta)
+    assert min(thetas) < HALF_PI / 4
+    assert max(thetas) > 3 * HALF_PI / 4
+
+
+def test_every_point_satisfies_the_constraints():
+    friction = mu * tan(theta) < 1
+    reference = prepare_reference(g * sin(theta) * mu, context(g * sin(theta) * mu, constraints=(friction,)))
+    for mu_value, theta_value in zip(values(reference, mu), values(reference, theta), strict=True):
+        assert mu_value * __import__("math").tan(theta_value) < 1
+    assert reference.sample.size == 24
+
+
+@pytest.mark.parametrize(
+    ("spec", "check"),
+    [
+        pytest.param(SymbolSpec("q", negative=True), lambda v: v < 0, id="negative"),
+        pytest.param(SymbolSpec("q", real=True), lambda v: v != 0, id="real"),
+        pytest.param(SymbolSpec("q", integer=True), lambda v: v == int(v) and v >= 1, id="positive-integer"),
+        pytest.param(
+            SymbolSpec("q", low=sympy.Integer(-1), high=sympy.Integer(1)), lambda v: -1 < v < 1, id="range"
+        ),
+        pytest.param(SymbolSpec("q", low=sympy.Integer(3), high=sympy.oo), lambda v: v > 3, id="half-line"),
+        pytest.param(
+            SymbolSpec("q", integer=True, low=sympy.Integer(2), high=sympy.Integer(5)),
+            lambda v: v in (3, 4),
+            id="integer-range",
+        ),
+    ],
+)
+def test_points_respect_the_symbol_spec(spec, check):
+    q = make_symbol(spec)
+    reference = prepare_reference(q, SymbolicContext({q: spec}))
+    assert all(check(value) for value in values(reference, q))
+
+
+def test_real_symbols_take_both_signs():
+    spec = SymbolSpec("q", real=True)
+    q = make_symbol(spec)
+    signs = {value > 0 for value in values(prepare_reference(q, SymbolicContext({q: spec})), q)}
+    assert signs == {True, False}
+
+
+def test_the_same_reference_gets_the_same_points():
+    first = prepare_reference(m * g, context(m * g))
+    second = prepare_reference(m * g, context(m * g))
+    assert first.sample == second.sample
+
+
+def test_different_references_get_different_points():
+    assert prepare_reference(m * g, context(m * g)).sample != prepare_reference(M * g, context(M * g)).sample
+
+
+SPEC_ERRORS = [
+    ("empty-constraint", g * mu, (mu < 0,), ("constraints",)),
+    ("equation-as-constraint", g * mu, (sympy.Eq(mu, 1),), ("constraints",)),
+    ("reference-never-real", sqrt(-g), (), ("expected",)),
+    ("undeclared-symbol", g * sympy.Symbol("zeta"), (), ("expected",)),
+]
+
+
+@pytest.mark.parametrize(
+    ("expected", "constraints", "path"), [e[1:] for e in SPEC_ERRORS], ids=[e[0] for e in SPEC_ERRORS]
+)
+def test_an_unusable_reference_side_is_a_spec_error(expected, constraints, path):
+    ctx = context(g * mu, constraints=constraints)
+    with pytest.raises(SpecError) as raised:
+        prepare_reference(expected, ctx)
+    assert raised.value.path[: len(path)] == path
+
+
+def test_an_empty_range_is_a_spec_error():
+    spec = SymbolSpec("q", low=sympy.Integer(2), high=sympy.Integer(1))
+    q = make_symbol(spec)
+    with pytest.raises(SpecError) as raised:
+        prepare_reference(q, SymbolicContext({q: spec}))
+    assert raised.value.path == ("symbols", "q", "range")
+
+
+def test_a_dimensionally_inconsistent_reference_is_a_spec_error():
+    with pytest.raises(SpecError) as raised:
+        prepare_reference(m + g, context(m + g))
+    assert "adds" in raised.value.message
