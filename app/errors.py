@@ -24,7 +24,9 @@ from fastapi.exceptions import RequestValidationError
 from fastapi.responses import JSONResponse
 from starlette.exceptions import HTTPException as StarletteHTTPException
 
-from physics.errors import SpecError
+from app.db import errors as storage
+from physics.errors import DerivationError, SpecError
+from problems.errors import ProblemInvalid
 
 log = logging.getLogger("physcheck.errors")
 
@@ -103,6 +105,14 @@ _HTTP_CODES = {
 }
 
 
+_STORAGE_ERRORS: dict[type[storage.StorageError], tuple[int, str]] = {
+    storage.AttemptsExhausted: (409, "attempts_exhausted"),
+    storage.ProblemExists: (409, "problem_exists"),
+    storage.NotFound: (404, "not_found"),
+    storage.InvalidPage: (422, "malformed_request"),
+}
+
+
 def _path(loc: Sequence[Any]) -> str:
     parts = [str(p) for p in loc if p not in ("body",)]
     return ".".join(parts)
@@ -113,10 +123,32 @@ def install_error_handlers(app: FastAPI) -> None:
     async def app_error(request: Request, error: AppError) -> JSONResponse:
         return _json(error.status, error.code, error.message, error.details, error.headers)
 
+    @app.exception_handler(ProblemInvalid)
+    async def problem_invalid(request: Request, error: ProblemInvalid) -> JSONResponse:
+        details = [{"path": path, "message": message} for path, message in error.errors]
+        count = len(details)
+        return _json(422, "invalid_problem", f"The problem has {count} error(s): see details.", details)
+
     @app.exception_handler(SpecError)
     async def spec_error(request: Request, error: SpecError) -> JSONResponse:
         details = [{"path": ".".join(str(p) for p in error.path), "message": error.message}]
         return _json(422, "invalid_reference", error.message, details)
+
+    @app.exception_handler(DerivationError)
+    async def derivation_error(request: Request, error: DerivationError) -> JSONResponse:
+        details = [
+            {"path": f"model.{error.quantity}" if error.quantity else "model", "message": error.message}
+        ]
+        return _json(422, "derivation_failed", error.message, details)
+
+    @app.exception_handler(storage.StorageError)
+    async def storage_error(request: Request, error: storage.StorageError) -> JSONResponse:
+        status, code = next(
+            (_STORAGE_ERRORS[k] for k in type(error).__mro__ if k in _STORAGE_ERRORS), (500, "internal")
+        )
+        if status == 500:
+            log.error("unmapped storage error: %r", error)
+        return _json(status, code, str(error))
 
     @app.exception_handler(RequestValidationError)
     async def malformed(request: Request, error: RequestValidationError) -> JSONResponse:

@@ -8,11 +8,13 @@ from contextlib import asynccontextmanager
 from fastapi import FastAPI
 from starlette.concurrency import run_in_threadpool
 
+from app.authoring import AuthoringPool
 from app.errors import install_error_handlers
 from app.grading.pool import GradingPool
 from app.middleware import BodyLimit, RequestContext, configure_logging
 from app.ratelimit import RateLimiter
-from app.routers import check, health
+from app.routers import authoring as authoring_routes
+from app.routers import check, health, problems, submissions
 from app.services import Services
 from app.settings import Settings, get_settings
 from app.startup import open_storage
@@ -32,9 +34,12 @@ def create_app(settings: Settings | None = None, *, pool: GradingPool | None = N
             memory_mb=settings.check_memory_mb,
             max_tasks=settings.worker_max_tasks,
             queue_size=settings.check_queue_size,
+            max_answer_chars=settings.max_answer_chars,
         )
         if pool is None:
             await run_in_threadpool(grading.start)
+        # Started on the first upload: most instances never vet one.
+        authoring = AuthoringPool(settings.upload_timeout_seconds, settings.check_memory_mb)
         app.state.services = Services(
             settings=settings,
             database=storage.database,
@@ -42,12 +47,15 @@ def create_app(settings: Settings | None = None, *, pool: GradingPool | None = N
             keys=storage.keys,
             key_limiter=RateLimiter(settings.rate_limit_per_minute),
             student_limiter=RateLimiter(settings.student_rate_limit_per_minute),
+            catalog=storage.catalog,
+            authoring=authoring,
         )
         try:
             yield
         finally:
             if pool is None:
                 grading.close()
+            authoring.close()
             storage.close()
 
     app = FastAPI(
@@ -61,4 +69,7 @@ def create_app(settings: Settings | None = None, *, pool: GradingPool | None = N
     app.add_middleware(RequestContext)
     app.include_router(health.router)
     app.include_router(check.router)
+    app.include_router(problems.router)
+    app.include_router(submissions.router)
+    app.include_router(authoring_routes.router)
     return app

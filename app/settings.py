@@ -25,7 +25,10 @@ class Settings(BaseSettings):
     check_queue_size: int = Field(default=64, ge=1)
     worker_max_tasks: int = Field(default=500, ge=1)
 
-    max_body_bytes: int = Field(default=64 * 1024, ge=1024)
+    # Above the answer limit on purpose: an over-long answer gets an `invalid` verdict, not a 413.
+    upload_timeout_seconds: float = Field(default=120.0, gt=0)
+
+    max_body_bytes: int = Field(default=2 * 1024 * 1024, ge=1024)
     max_answer_chars: int = Field(default=2000, ge=10)
 
     rate_limit_per_minute: int = Field(default=600, ge=1)

@@ -5,6 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from app.auth import Principal
+from app.catalog import Catalog
 from app.db import keys as key_repository
 from app.db.database import Database
 from app.db.migrate import migrate
@@ -35,6 +36,7 @@ class DatabaseKeyStore:
 class Storage:
     database: Database
     keys: DatabaseKeyStore
+    catalog: Catalog
 
     def close(self) -> None:
         self.database.dispose()
@@ -42,4 +44,6 @@ class Storage:
 
 def open_storage(settings: Settings) -> Storage:
     database = open_database(settings)
-    return Storage(database=database, keys=DatabaseKeyStore(database))
+    catalog = Catalog(database, settings.secret)
+    catalog.sync_builtin()
+    return Storage(database=database, keys=DatabaseKeyStore(database), catalog=catalog)

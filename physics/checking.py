@@ -86,9 +86,10 @@ def check_answer(
         return check_numeric(answer, question)
     try:
         parsed = parse_math(answer, question.names, limits=limits or InputLimits())
+        judgement = judge_symbolic(parsed.expr, question.reference)
     except AnswerError as error:
         return Verdict.invalid(error)
-    return Verdict.graded(judge_symbolic(parsed.expr, question.reference), parsed.read_as)
+    return Verdict.graded(judgement, parsed.read_as)
 
 
 def run_job(job: CheckJob) -> Verdict:

@@ -27,8 +27,7 @@ from physics.symbolic import KnownMistake, LimitCase, SymbolicContext, SymbolSpe
 from problems.errors import ErrorItem, ProblemInvalid
 from problems.modelinfo import Derived, derive_doc, spec_error_items
 from problems.schema import NumericPart, ProblemDocument, SymbolicPart, format_path
-from problems.semantics import read_relation
-from problems.symbols import bound_text, check_decls, read_bound, read_expression, symbol_specs
+from problems.symbols import bound_text, check_decls, read_bound, read_expression, read_relation, symbol_specs
 from problems.variants import Variant, evaluate_reference, si_values
 
 CACHE_SIZE = 64
@@ -239,8 +238,8 @@ def _symbolic_part(
         )
         for j, lim in enumerate(part.limits)
     ]
-    engine_mistakes = derived.mistakes.get(part.quantity_name, ()) if derived is not None else ()
-    engine_limits = derived.limits.get(part.quantity_name, ()) if derived is not None else ()
+    engine_mistakes = _new_mistakes(mistakes, derived.mistakes.get(part.quantity_name, ()) if derived else ())
+    engine_limits = _new_limits(limits, derived.limits.get(part.quantity_name, ()) if derived else ())
     context = SymbolicContext(
         symbols={table[name]: spec for name, spec in specs.items()},
         constraints=constraints,
@@ -263,6 +262,39 @@ def _symbolic_part(
         allowed=allowed_names,
     )
     return CompiledSymbolicPart(part.id, part.quantity_name, expected, names, context, template)
+
+
+def _new_mistakes(
+    hand: list[tuple[sympy.Expr, str]], engine: tuple[tuple[sympy.Expr, str], ...]
+) -> list[tuple[sympy.Expr, str]]:
+    """The engine's mistakes that the author has not already described (the author's wording wins)."""
+    kept = list(hand)
+    for expr, feedback in engine:
+        if not any(_same_expression(expr, other) for other, _ in kept):
+            kept.append((expr, feedback))
+    return kept[len(hand) :]
+
+
+def _new_limits(
+    hand: list[tuple[dict[sympy.Symbol, sympy.Expr], str, tuple[tuple[str, str], ...]]],
+    engine: tuple[tuple[Mapping[sympy.Symbol, sympy.Expr], str], ...],
+) -> list[tuple[Mapping[sympy.Symbol, sympy.Expr], str]]:
+    seen = [dict(subs) for subs, _, _ in hand]
+    kept: list[tuple[Mapping[sympy.Symbol, sympy.Expr], str]] = []
+    for subs, description in engine:
+        if dict(subs) not in seen:
+            seen.append(dict(subs))
+            kept.append((subs, description))
+    return kept
+
+
+def _same_expression(a: sympy.Expr, b: sympy.Expr) -> bool:
+    if a == b:
+        return True
+    try:
+        return bool(sympy.simplify(a - b) == 0)
+    except (TypeError, ValueError, NotImplementedError):
+        return False
 
 
 def _require_agreement(

@@ -24,7 +24,9 @@ class Derived:
     quantities: Mapping[str, sympy.Expr]
     mistakes: Mapping[str, tuple[tuple[sympy.Expr, str], ...]] = field(default_factory=dict)
     limits: Mapping[str, tuple[tuple[Mapping[sympy.Symbol, sympy.Expr], str], ...]] = field(default_factory=dict)
-    disagreements: tuple[str, ...] = ()  # one line per quantity whose methods disagree
+    # quantity -> the methods that derived it and agree (the engine raises when methods disagree)
+    agreement: Mapping[str, tuple[str, ...]] = field(default_factory=dict)
+    proofs: Mapping[str, str] = field(default_factory=dict)  # quantity -> how agreement was shown
     raw: Any = None
 
 
@@ -61,7 +63,8 @@ def derive_doc(doc: ProblemDocument, table: Mapping[str, sympy.Symbol]) -> Deriv
         quantities=dict(derivation.quantities),
         mistakes={name: tuple(_mistake(m) for m in items) for name, items in _per_quantity(derivation, "mistakes")},
         limits={name: tuple(_limit(c) for c in items) for name, items in _per_quantity(derivation, "limits")},
-        disagreements=tuple(_disagreements(getattr(derivation, "agreement", None))),
+        agreement={name: tuple(methods) for name, methods in derivation.agreement.items()},
+        proofs=dict(derivation.proofs),
         raw=derivation,
     )
 
@@ -82,19 +85,3 @@ def _limit(item: Any) -> tuple[Mapping[sympy.Symbol, sympy.Expr], str]:
     if isinstance(item, tuple):
         return dict(item[0]), str(item[1])
     return dict(item.substitutions), str(item.description)
-
-
-def _disagreements(agreement: Any) -> Iterable[str]:
-    """Lines describing methods that disagree, whatever shape the engine reports agreement in."""
-    if agreement is None or agreement is True:
-        return
-    if agreement is False:
-        yield "the methods disagree"
-        return
-    if isinstance(agreement, Mapping):
-        for name, verdict in agreement.items():
-            yield from (f"{name}: {line}" for line in _disagreements(verdict))
-        return
-    agree = getattr(agreement, "agree", getattr(agreement, "ok", None))
-    if agree is False:
-        yield str(getattr(agreement, "detail", agreement))

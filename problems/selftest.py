@@ -27,7 +27,8 @@ from problems.variants import Variant, draw_variant, format_number, round_sigfig
 # Not a credential: self-test variants only need to be reproducible.
 SELFTEST_SECRET = "physcheck-bank-selftest"  # noqa: S105
 DEFAULT_VARIANTS = 20
-OFF_BY = Decimal("1.10")  # a value this far off must be rejected
+OFF_BY = Decimal("1.10")
+MIN_AGREEING_METHODS = 2  # a value this far off must be rejected
 
 # (label, done, total): one call per finished part within a problem, or per problem within the bank.
 Progress = Callable[[str, int, int], None]
@@ -117,10 +118,12 @@ def verify_problem(
     except PhyscheckError as error:
         report.results.append(CheckResult(doc.id, None, "derive", False, str(error)))
         return Report([report])
+    except Exception as error:  # a fault in the engine must not hide the other problems' results
+        report.results.append(CheckResult(doc.id, None, "derive", False, f"{type(error).__name__}: {error}"))
+        return Report([report])
 
     if compiled.derived is not None:
-        lines = compiled.derived.disagreements
-        report.results.append(CheckResult(doc.id, None, "methods agree", not lines, "; ".join(lines)))
+        report.results.extend(_agreement_checks(doc.id, compiled))
     total = len(compiled.parts)
     students = [draw_variant(doc, version, f"selftest-{i}", secret) for i in range(variants)]
     for done, (part_id, part) in enumerate(compiled.parts.items(), start=1):
@@ -131,6 +134,8 @@ def verify_problem(
                 report.results.extend(_numeric_checks(doc.id, compiled, part, students))
         except PhyscheckError as error:
             report.results.append(CheckResult(doc.id, part_id, "prepare", False, str(error)))
+        except Exception as error:  # a grader fault on one part must not stop the rest
+            report.results.append(CheckResult(doc.id, part_id, "grader fault", False, f"{type(error).__name__}: {error}"))
         if progress is not None:
             progress(f"{doc.id}:{part_id}", done, total)
     return Report([report])
@@ -160,6 +165,21 @@ def verify_bank(
         if progress is not None:
             progress(doc.id, done, len(docs))
     return report
+
+
+def _agreement_checks(problem: str, compiled: CompiledProblem) -> list[CheckResult]:
+    """Each derived quantity a part asks for was found by at least two methods that agree."""
+    assert compiled.derived is not None
+    results = []
+    for part in compiled.parts.values():
+        if not isinstance(part, CompiledSymbolicPart) or part.quantity not in compiled.derived.quantities:
+            continue
+        methods = compiled.derived.agreement.get(part.quantity, ())
+        proof = compiled.derived.proofs.get(part.quantity, "")
+        ok = len(methods) >= MIN_AGREEING_METHODS
+        detail = proof if ok else f"derived by {', '.join(methods) or 'no method'} only"
+        results.append(CheckResult(problem, part.id, "methods agree", ok, detail))
+    return results
 
 
 # ---- symbolic parts ---------------------------------------------------------------------------

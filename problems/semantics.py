@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping
 from functools import partial
-from typing import Any, TypeVar
+from typing import TypeVar
 
 import sympy
 
@@ -18,13 +18,10 @@ from physics.errors import AnswerError, SpecError
 from physics.symbolic import SymbolSpec
 from problems.errors import ErrorItem
 from problems.schema import GivenDecl, NumericPart, ProblemDocument, SymbolDecl, SymbolicPart, format_path
+from problems.symbols import read_relation
 from problems.variants import placeholders, unit_scale, valid_range_errors
 
 T = TypeVar("T")
-
-# The relation operators `physics.checking` reads in constraints; longest first so "<=" beats "<".
-RELATIONS: Mapping[str, Any] = {"<=": sympy.Le, ">=": sympy.Ge, "≤": sympy.Le, "≥": sympy.Ge, "<": sympy.Lt, ">": sympy.Gt}
-
 
 class _Collector:
     """Runs checks, turning each SpecError into one (path, message) and carrying on."""
@@ -97,20 +94,6 @@ def _make_symbol(spec: SymbolSpec) -> sympy.Symbol:
 def _not_below(low: sympy.Expr, high: sympy.Expr) -> bool:
     difference = (high - low).evalf(30)
     return bool(difference.is_number and difference <= 0)
-
-
-def read_relation(text: str, table: Mapping[str, sympy.Symbol], path: tuple[str | int, ...]) -> sympy.Basic:
-    """`lhs < rhs` with exactly one of < > <= >= ≤ ≥, each side through the whitelist parser."""
-    from problems.symbols import read_expression
-
-    found = sorted((text.find(op), -len(op), op) for op in RELATIONS if op in text)
-    if not found:
-        raise SpecError("a constraint needs one of < > <= >=", path)
-    position, _, op = found[0]
-    lhs, rhs = text[:position], text[position + len(op) :]
-    if any(other in rhs for other in RELATIONS):
-        raise SpecError("a constraint may compare only two sides", path)
-    return RELATIONS[op](read_expression(lhs, table, path), read_expression(rhs, table, path))
 
 
 def _unit_dimension(text: str, path: tuple[str | int, ...]) -> Dimension:

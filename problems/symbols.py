@@ -12,36 +12,27 @@ from decimal import Decimal
 import sympy
 
 from physics.checking import SymbolDecl as CheckSymbolDecl
+from physics.checking import _read as _checker_read
+from physics.checking import _read_relation as _checker_read_relation
 from physics.dimensions import DIMENSIONLESS, Dimension
 from physics.errors import AnswerError, SpecError
 from physics.symbolic import SymbolSpec, make_symbol
 from physics.units import unit_dimension
 from problems.schema import ProblemDocument, SymbolDecl
 
-INFINITY_WORDS: Mapping[str, sympy.Expr] = {
-    "oo": sympy.oo,
-    "inf": sympy.oo,
-    "infinity": sympy.oo,
-    "∞": sympy.oo,
-    "-oo": -sympy.oo,
-    "-inf": -sympy.oo,
-    "-∞": -sympy.oo,
-}
-
 
 def read_expression(text: str, names: Mapping[str, sympy.Symbol], path: tuple[str | int, ...]) -> sympy.Expr:
-    """Author text -> sympy, through `physics.mathinput.parse_math` only; faults become SpecError."""
-    from physics.mathinput import parse_math
+    """Author text -> sympy through the whitelist parser (and `oo` for infinity); faults are SpecErrors.
 
-    stripped = text.strip()
-    if stripped in INFINITY_WORDS:
-        return INFINITY_WORDS[stripped]
-    try:
-        expr: sympy.Expr = parse_math(text, names).expr
-    except AnswerError as error:
-        where = f" (at character {error.position})" if error.position is not None else ""
-        raise SpecError(f"{error.message}{where}", path) from None
-    return expr
+    The checker reads the same texts again inside its workers, so the bank uses the checker's own
+    reader rather than a copy that could drift from it.
+    """
+    return _checker_read(text, names, path)
+
+
+def read_relation(text: str, names: Mapping[str, sympy.Symbol], path: tuple[str | int, ...]) -> sympy.Basic:
+    """A constraint such as `mu < tan(alpha)`, read exactly as the checker reads it."""
+    return _checker_read_relation(text, names, path)
 
 
 def read_bound(value: Decimal | str, path: tuple[str | int, ...]) -> sympy.Expr:

@@ -29,9 +29,11 @@ class GradingPool:
         memory_mb: int,
         max_tasks: int,
         queue_size: int,
+        max_answer_chars: int = 2000,
         task: Callable[[CheckJob], Verdict | SpecProblem] = grade,
     ):
         self._task = task
+        self._max_answer_chars = max_answer_chars
         self._workers = workers
         self._timeout = timeout
         self._memory_mb = memory_mb
@@ -72,6 +74,12 @@ class GradingPool:
 
     async def check(self, job: CheckJob) -> Verdict:
         """Grade in a worker; a timeout or a killed worker is an `invalid` verdict, never a hang."""
+        if len(job.answer) > self._max_answer_chars:
+            # Refused before any worker sees it: the cheapest hostile answer is the longest.
+            limit = self._max_answer_chars
+            return Verdict.invalid(
+                TooLarge(f"The answer is longer than {limit} characters; shorten it.", limit)
+            )
         if self._in_flight >= self._capacity:
             raise Busy("The grading queue is full; try again shortly.", retry_after=1)
         self._in_flight += 1

@@ -17,7 +17,11 @@ from physics.verdict import Verdict
 
 # Touch every lazily built table (parser, unit registry, sampler) before real requests arrive.
 WARM_UP_JOBS: tuple[CheckJob, ...] = (
-    SymbolicJob("m g sin(θ)", "g*m*sin(theta)", (SymbolDecl("m", "kg"), SymbolDecl("g", "m/s^2"), SymbolDecl("theta", "1"))),
+    SymbolicJob(
+        "m g sin(θ)",
+        "g*m*sin(theta)",
+        (SymbolDecl("m", "kg"), SymbolDecl("g", "m/s^2"), SymbolDecl("theta", "1")),
+    ),
     NumericJob("4.58 km/h", NumericSpec(expected=Decimal("1.27"), units="m/s")),
 )
 

@@ -42,7 +42,8 @@ def set_cross_site_cookie(response: Response, name: str, value: str, max_age: in
     top-level site (CHIPS), hidden from scripts. Written by hand: the standard library only learns the
     Partitioned attribute in Python 3.14. Values are ours (URL-safe base64), so nothing needs quoting."""
     response.headers.append(
-        "set-cookie", f"{name}={value}; Max-Age={max_age}; Path=/; Secure; HttpOnly; SameSite=None; Partitioned"
+        "set-cookie",
+        f"{name}={value}; Max-Age={max_age}; Path=/; Secure; HttpOnly; SameSite=None; Partitioned",
     )
 
 

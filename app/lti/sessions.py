@@ -6,7 +6,6 @@ from __future__ import annotations
 import hashlib
 import hmac
 import secrets
-from collections.abc import Callable
 from dataclasses import dataclass
 from datetime import datetime, timedelta
 
@@ -123,24 +122,27 @@ def find_session(database: Database, session_id: str, *, now: datetime) -> Sessi
         )
 
 
-def principal_from_session(
-    request: Request, *, clock: Callable[[], datetime] | None = None
-) -> Principal | None:
+def current_session(request: Request) -> tuple[str, SessionRecord] | None:
+    """(id hash, record) of the session named by the cookie, if live. The student page takes the
+    CSRF token from here to put in its page for its scripts to send back."""
+    session_id = request.cookies.get(SESSION_COOKIE)
+    context = getattr(request.app.state, "lti", None)
+    if not session_id or context is None:
+        return None
+    record = find_session(context.database, session_id, now=context.clock())
+    return None if record is None else (token_hash(session_id), record)
+
+
+def principal_from_session(request: Request) -> Principal | None:
     """The caller named by the session cookie, or None. A request that changes state must also send
     the session's CSRF token in `X-CSRF-Token` (the cookie is SameSite=None, so it rides along on
     cross-site requests too). Uses `request.app.state.lti` (an `LtiContext`)."""
-    session_id = request.cookies.get(SESSION_COOKIE)
-    if not session_id:
+    found = current_session(request)
+    if found is None:
         return None
-    context = getattr(request.app.state, "lti", None)
-    if context is None:
-        return None
-    now = (clock or context.clock)()
-    record = find_session(context.database, session_id, now=now)
-    if record is None:
-        return None
+    id_hash, record = found
     if request.method not in SAFE_METHODS:
         sent = request.headers.get(CSRF_HEADER, "")
         if not hmac.compare_digest(sent.encode("utf-8"), record.csrf_token.encode("utf-8")):
             return None
-    return record.principal(token_hash(session_id))
+    return record.principal(id_hash)

@@ -29,7 +29,7 @@ class LagrangeMethod(Method):
         """Lagrange's equations (and the constraint-force equations), unsolved: (equations = 0, unknowns)."""
         mech, model = self.mech, self.model
         lagrangian = mech.kinetic - mech.potential
-        self.step("Lagrangian", "L = T - V = " + sympy.latex(sympy.simplify(lagrangian)))
+        self.step("Lagrangian", "L = T - V")
         lam = mech.multipliers
         friction = mech.friction_forces(lam)
         equations = []
@@ -37,7 +37,7 @@ class LagrangeMethod(Method):
             generalized = sympy.Add(*(f * sympy.diff(d.mapping, c.symbol) for f, d in zip(friction, mech.dofs,
                                                                                            strict=True)))
             el = time_derivative(sympy.diff(lagrangian, c.velocity), model) - sympy.diff(lagrangian, c.symbol)
-            equation = sympy.simplify(el - generalized)
+            equation = sympy.collect(sympy.expand(el - generalized), list(mech.qdd))
             self.step(f"Lagrange's equation for {c.name}",
                       rf"\frac{{d}}{{dt}}\frac{{\partial L}}{{\partial \dot{{{sympy.latex(c.symbol)}}}}} - "
                       rf"\frac{{\partial L}}{{\partial {sympy.latex(c.symbol)}}} = Q_{{{sympy.latex(c.symbol)}}}"

@@ -164,13 +164,20 @@ def solve_linear(equations: Sequence[sympy.Expr], unknowns: Sequence[sympy.Symbo
                  what: str) -> dict[sympy.Symbol, sympy.Expr]:
     """The unique solution of linear equations (each `= 0`); DerivationError if there is none."""
     matrix, rhs = sympy.linear_eq_to_matrix(list(equations), list(unknowns))
-    if matrix.shape[0] < matrix.shape[1] or matrix.rank(simplify=True) < len(unknowns):
-        raise DerivationError(f"{what}: the equations do not determine {', '.join(map(str, unknowns))}")
     if matrix.shape[0] > matrix.shape[1]:
         rows = _independent_rows(matrix)
         matrix, rhs = matrix.extract(rows, list(range(matrix.shape[1]))), rhs.extract(rows, [0])
-    solution = matrix.LUsolve(rhs)
-    return {u: sympy.simplify(v) for u, v in zip(unknowns, solution, strict=True)}
+    if matrix.shape[0] != matrix.shape[1]:
+        raise DerivationError(f"{what}: the equations do not determine {', '.join(map(str, unknowns))}")
+    try:
+        solution = matrix.LUsolve(rhs)
+    except (ValueError, ZeroDivisionError) as error:
+        raise DerivationError(f"{what}: the equations do not determine "
+                              f"{', '.join(map(str, unknowns))} ({error})") from error
+    result = {u: sympy.simplify(v) for u, v in zip(unknowns, solution, strict=True)}
+    if any(v.has(sympy.zoo, sympy.nan, sympy.oo) for v in result.values()):
+        raise DerivationError(f"{what}: the equations are singular for {', '.join(map(str, unknowns))}")
+    return result
 
 
 def _independent_rows(matrix: sympy.Matrix) -> list[int]:

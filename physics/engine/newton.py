@@ -80,7 +80,7 @@ class NewtonMethod(Method):
         if normal.det() == 0:
             raise NotApplicable("the coordinates are not determined by the Cartesian positions")
         qdd = normal.inv() * jac.T * (measured - rest)
-        return {a: sympy.simplify(v) for a, v in zip(mech.qdd, qdd, strict=True)}
+        return dict(zip(mech.qdd, qdd, strict=True))
 
     def acceleration(self, coordinate: str) -> sympy.Expr:
         return self.at_state(self.coordinate_accelerations[self.model.coordinate(coordinate).acceleration])

@@ -17,8 +17,15 @@ from physics.errors import TooLarge
 from physics.mathinput.limits import InputLimits
 from physics.mathinput.tree import Call, Const, Group, Name, Neg, Node, Num, Power, Product, Sum
 
+# sympy factors the number under a numeric root (seconds for a 2000-bit fraction; a q-th root of a
+# fraction first raises its denominator to the power q-1) and merges roots in products, so all numeric
+# roots of one answer share this budget of radicand bits times root degree.
+_ROOT_BITS_BUDGET = 512
+# Exact numbers above this size each cost sympy real work (trig of pi/big, logs, gcds); an answer may
+# build distinct ones only up to twice max_int_bits in total.
+_BIG_NUMBER_BITS = 256
+
 _FUNCTIONS: dict[str, Callable[[sympy.Expr], sympy.Expr]] = {
-    "sqrt": sympy.sqrt,
     "exp": sympy.exp,
     "log": sympy.log,
     "log10": lambda x: sympy.log(x, 10),
@@ -49,6 +56,9 @@ class Builder:
         self._symbols = symbols
         self._limits = limits
         self._position = 0  # of the operator being built, for size errors
+        self._root_bits = 0
+        self._big_numbers: set[sympy.Rational] = set()
+        self._big_bits = 0
 
     def build(self, node: Node) -> sympy.Expr:
         return self._checked(self._build(node))
@@ -90,6 +100,8 @@ class Builder:
             self._position = node.pos
             if node.func == "factorial":
                 return self._factorial(arg)
+            if node.func == "sqrt":
+                return self._power(arg, sympy.Rational(1, 2))
             return self._checked(_FUNCTIONS[node.func](arg))
         operand = self._build(node.operand)
         self._position = node.pos
@@ -110,7 +122,12 @@ class Builder:
                 if base != 0 and size > 1:
                     if q > limits.max_exponent:
                         raise self._too_large("A root of a number is too deep to compute exactly.")
-                    if abs(p) * math.log2(size) > limits.max_int_bits * q:
+                    if q > 1:
+                        self._root_bits += (int(base.p).bit_length() + int(base.q).bit_length()) * q
+                        if self._root_bits > _ROOT_BITS_BUDGET:
+                            raise self._too_large("The numbers under roots in the answer are too large.")
+                    budget = limits.max_int_bits * q  # the first test keeps a huge p out of float()
+                    if abs(p) > budget or abs(p) * math.log2(size) > budget:
                         raise self._too_large("A power of numbers in the answer is too large to compute.")
             elif base is not sympy.E and (abs(p) > limits.max_exponent * q or q > limits.max_exponent):
                 raise self._too_large(f"An exponent is too large (at most {limits.max_exponent}).")
@@ -125,8 +142,14 @@ class Builder:
         """Refuse an exact number that grew too large, or a power that sympy merged past the cap."""
         for part in (expr, *expr.args):
             if part.is_Rational:
-                if max(abs(int(part.p)), int(part.q)).bit_length() > self._limits.max_int_bits:
+                bits = max(abs(int(part.p)), int(part.q)).bit_length()
+                if bits > self._limits.max_int_bits:
                     raise self._too_large("A number in the answer is too large to compute exactly.")
+                if bits > _BIG_NUMBER_BITS and part not in self._big_numbers:
+                    self._big_numbers.add(part)
+                    self._big_bits += bits
+                    if self._big_bits > 2 * self._limits.max_int_bits:
+                        raise self._too_large("The answer computes with too many large numbers.")
             elif part.is_Pow and part.exp.is_Rational and not part.base.is_Rational:
                 exp = part.exp
                 if abs(int(exp.p)) > self._limits.max_exponent * int(exp.q):

@@ -7,7 +7,7 @@ from dataclasses import dataclass
 
 import sympy
 
-from physics.errors import TooLarge
+from physics.errors import ParseError, TooLarge
 from physics.mathinput.build import Builder
 from physics.mathinput.limits import DEFAULT_LIMITS, InputLimits
 from physics.mathinput.names import NameTable
@@ -16,6 +16,9 @@ from physics.mathinput.render import render_latex, render_text
 from physics.mathinput.tokens import tokenize
 from physics.mathinput.words import resolve_words
 from physics.verdict import ReadAs
+
+# Values sympy gives to 1/0, 0/0, log(0): no checker can compare them, so they are refused here.
+_UNDEFINED = (sympy.zoo, sympy.nan, sympy.oo, -sympy.oo)
 
 
 @dataclass(frozen=True)
@@ -41,4 +44,6 @@ def parse_math(
     except RecursionError:
         # Only reachable when a caller raises max_depth far above the default.
         raise TooLarge("The answer is nested too deeply.", 0) from None
+    if expr.has(*_UNDEFINED):
+        raise ParseError("The answer has no value: it divides by zero or takes the log of zero.", 0)
     return ParsedMath(expr, read_as)

@@ -1,8 +1,8 @@
 """Numeric answers with units: reading them exactly and comparing them with a tolerance.
 
-    check_numeric(answer, spec) -> Verdict
-    NumericSpec(expected, units=None, units_required=True, tolerance=DEFAULT_TOLERANCE)
-    Tolerance(rel=None, abs=None, sigfigs=None)
+check_numeric(answer, spec) -> Verdict
+NumericSpec(expected, units=None, units_required=True, tolerance=DEFAULT_TOLERANCE)
+Tolerance(rel=None, abs=None, sigfigs=None)
 """
 
 from __future__ import annotations

@@ -18,6 +18,7 @@ class NumericAnswer:
     number: NumberLiteral
     units: ParsedUnits | None  # None when no units were written
     units_position: int | None  # where the units start in the answer
+    units_text: str = ""  # the units as typed
 
     @property
     def value(self) -> Fraction:
@@ -29,6 +30,8 @@ class NumericAnswer:
         shown = self.units if self.units is not None else units
         if shown is None or shown.is_dimensionless_number:
             return ReadAs(self.number.text, self.number.latex)
+        if shown.text == "°":  # 30°, not 30 °
+            return ReadAs(f"{self.number.text}°", f"{self.number.latex}{shown.latex}")
         return ReadAs(f"{self.number.text} {shown.text}", rf"{self.number.latex}\,{shown.latex}")
 
 
@@ -54,4 +57,4 @@ def read_numeric_answer(text: str) -> NumericAnswer:
         if error.position is not None:
             error.position += rest_start
         raise
-    return NumericAnswer(number, units, rest_start)
+    return NumericAnswer(number, units, rest_start, unit_text)

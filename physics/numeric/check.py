@@ -19,7 +19,8 @@ from physics.numeric.tolerance import (
     within_absolute,
     within_relative,
 )
-from physics.units import ParsedUnits
+from physics.units import ParsedUnits, parse_units
+from physics.units.registry import suggestion
 from physics.verdict import Judgement, Reason, Verdict
 
 CORRECT = Judgement(True, Reason.EQUIVALENT, "Correct.")
@@ -68,6 +69,11 @@ class _Comparison:
         shift = self.answer_units.convert(Fraction(0), self.target)
         return self.answer_units.convert(Fraction(1), self.target) - shift, shift
 
+    @cached_property
+    def _bounds(self) -> tuple[Fraction, Fraction]:
+        """The rel and abs bounds as Fractions (0 where not given; `kinds` says which apply)."""
+        return Fraction(self.tolerance.rel or 0), Fraction(self.tolerance.abs or 0)
+
     def in_target(self, value: Fraction) -> Fraction:
         scale, shift = self._linear
         return value * scale + shift
@@ -79,14 +85,13 @@ class _Comparison:
         kinds = tolerance.kinds
         if not kinds:
             return value == self.expected
+        rel, absolute = self._bounds
         for kind in kinds:
             match kind:
                 case ToleranceKind.RELATIVE:
-                    assert tolerance.rel is not None
-                    ok = within_relative(value, self.expected, Fraction(tolerance.rel))
+                    ok = within_relative(value, self.expected, rel)
                 case ToleranceKind.ABSOLUTE:
-                    assert tolerance.abs is not None
-                    ok = within_absolute(value, self.expected, Fraction(tolerance.abs))
+                    ok = within_absolute(value, self.expected, absolute)
                 case ToleranceKind.SIGFIGS:
                     assert tolerance.sigfigs is not None
                     if exact:
@@ -99,12 +104,24 @@ class _Comparison:
         return True
 
 
-def _wrong_dimension(answer_units: ParsedUnits, target: ParsedUnits) -> Judgement:
+def _case_hint(typed: str, target: ParsedUnits) -> str:
+    """`Kg` is read as kelvin·gram (a glued name splits); say so when `kg` is what fits."""
+    hint = suggestion(typed)
+    if hint is None:
+        return ""
+    try:
+        fits = parse_units(hint).dimension == target.dimension
+    except AnswerError:
+        return ""
+    return f" Units are case-sensitive: did you mean {hint}?" if fits else ""
+
+
+def _wrong_dimension(read: NumericAnswer, answer_units: ParsedUnits, target: ParsedUnits) -> Judgement:
     return Judgement(
         False,
         Reason.WRONG_DIMENSION,
         f"Your answer has the units of {describe(answer_units.dimension)}; "
-        f"{describe(target.dimension)} is expected.",
+        f"{describe(target.dimension)} is expected." + _case_hint(read.units_text, target),
     )
 
 
@@ -125,7 +142,7 @@ def check_numeric(answer: str, spec: NumericSpec) -> Verdict:
     except SigfigsError as error:
         return Verdict.invalid(error, read_as)
     if answer_units is not None and target is not None and answer_units.dimension != target.dimension:
-        return Verdict.graded(_wrong_dimension(answer_units, target), read_as)
+        return Verdict.graded(_wrong_dimension(read, answer_units, target), read_as)
     expected = spec.expected_value
     expected_as_written = expected
     if answer_units is not None and target is not None:

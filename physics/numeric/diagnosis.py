@@ -14,7 +14,7 @@ from physics.numeric.tolerance import floor_log10
 from physics.verdict import Judgement, Reason
 
 # π to far more places than any tolerance can see; used only to recognise 2π and degree slips.
-_PI = Fraction("3.14159265358979323846264338327950288419716939937510")
+_PI = Fraction("3.141592653589793238462643")  # 25 digits: short keeps Fraction arithmetic fast
 _MAX_POWER_OF_TEN = 15
 
 

@@ -37,7 +37,9 @@ class NumberLiteral:
 
     @property
     def value(self) -> Fraction:
-        mantissa = Fraction(int(self.integer_digits + self.fraction_digits or "0"), 10 ** len(self.fraction_digits))
+        mantissa = Fraction(
+            int(self.integer_digits + self.fraction_digits or "0"), 10 ** len(self.fraction_digits)
+        )
         result = mantissa * Fraction(10) ** (self.exponent or 0)
         if self.percent:
             result /= 100
@@ -145,7 +147,7 @@ def _scientific(text: str, i: int) -> tuple[int, int] | None:
                 return None  # `4 × 100`: not a power of ten; the unit reader will refuse it
             found = _power_of_ten(text, after)
             if found is None:
-                raise ParseError("Write a power of ten with its exponent, for example 4.58×10^3", after)
+                raise ParseError("Write a power of ten with its exponent, for example 2.5×10^3", after)
             return found
     return None
 
@@ -165,14 +167,13 @@ def read_number(text: str, start: int = 0) -> NumberLiteral:
     fraction_end = _run(text, fraction_start, _DIGITS)
     fraction_digits = text[fraction_start:fraction_end]
     if not integer_digits and not fraction_digits:
-        raise ParseError("The answer must start with a number, such as 4.58 or -0.5", i)
+        raise ParseError("The answer must start with a number, such as 2.5 or -0.5", i)
     if len(integer_digits) + len(fraction_digits) > MAX_DIGITS:
         raise TooLarge(f"A number may have at most {MAX_DIGITS} digits", i)
     i = fraction_end
     if i + 1 < len(text) and text[i] == "," and text[i + 1] in _DIGITS:
         raise ParseError(
-            "A comma cannot appear in a number: use a decimal point (4.58) and no thousands separators "
-            "(1500)",
+            "A comma cannot appear in a number: use a decimal point (2.5) and no thousands separators (1500)",
             i,
         )
     if i < len(text) and text[i] == "." and i + 1 < len(text) and text[i + 1] in _DIGITS:

@@ -7,7 +7,7 @@ from decimal import Decimal
 from fractions import Fraction
 
 from physics.errors import AnswerError, SpecError
-from physics.numeric.tolerance import DEFAULT_TOLERANCE, Tolerance
+from physics.numeric.tolerance import DEFAULT_TOLERANCE, Tolerance, as_decimal
 from physics.units import ParsedUnits, parse_units
 
 
@@ -19,8 +19,10 @@ class NumericSpec:
     tolerance: Tolerance = DEFAULT_TOLERANCE
 
     def __post_init__(self) -> None:
-        if not isinstance(self.expected, Decimal) or not self.expected.is_finite():
-            raise SpecError(f"expected must be a finite decimal, not {self.expected!r}", ("expected",))
+        # frozen: normalising what the author passed (a JSON float 4.5807 means the decimal 4.5807)
+        object.__setattr__(self, "expected", as_decimal(self.expected, ("expected",)))
+        if self.units is not None and not isinstance(self.units, str):
+            raise SpecError(f"units must be text, not {self.units!r}", ("units",))
         self.target_units()  # refuse unusable units when the spec is made, not when a student answers
 
     @property

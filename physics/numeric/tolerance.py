@@ -13,6 +13,30 @@ from fractions import Fraction
 from physics.errors import SpecError
 
 MAX_SIGFIGS = 40
+MAX_SPEC_EXPONENT = 400  # |exponent| of a reference or tolerance value, so Fraction() stays cheap
+MAX_SPEC_DIGITS = 60
+
+
+def as_decimal(value: object, path: tuple[str, ...]) -> Decimal:
+    """An author's number as an exact Decimal. A float is read by its shortest repr (4.5807 → 4.5807),
+    which is what a JSON number meant; anything unusable is a SpecError at `path`."""
+    if isinstance(value, bool) or not isinstance(value, Decimal | int | float | str):
+        raise SpecError(f"{path[-1]} must be a number, not {value!r}", path)
+    try:
+        exact = (
+            value
+            if isinstance(value, Decimal)
+            else Decimal(repr(value) if isinstance(value, float) else value)
+        )
+    except ArithmeticError as error:  # decimal.InvalidOperation for text that is not a number
+        raise SpecError(f"{path[-1]} must be a number, not {value!r}", path) from error
+    if not exact.is_finite():
+        raise SpecError(f"{path[-1]} must be a finite number, not {value!r}", path)
+    if exact and (
+        abs(exact.adjusted()) > MAX_SPEC_EXPONENT or len(exact.as_tuple().digits) > MAX_SPEC_DIGITS
+    ):
+        raise SpecError(f"{path[-1]} is too large or too precise to check against", path)
+    return exact
 
 
 class ToleranceKind(Enum):
@@ -31,10 +55,19 @@ class Tolerance:
     sigfigs: int | None = None
 
     def __post_init__(self) -> None:
-        for key, bound in (("rel", self.rel), ("abs", self.abs)):
-            if bound is not None and (not bound.is_finite() or bound < 0):
-                raise SpecError(f"tolerance {key} must be a finite number ≥ 0, not {bound}", ("tolerance", key))
-        if self.sigfigs is not None and not 1 <= self.sigfigs <= MAX_SIGFIGS:
+        for key in ("rel", "abs"):
+            bound = getattr(self, key)
+            if bound is None:
+                continue
+            exact = as_decimal(bound, ("tolerance", key))
+            if exact < 0:
+                raise SpecError(f"tolerance {key} must be ≥ 0, not {exact}", ("tolerance", key))
+            object.__setattr__(self, key, exact)  # frozen: normalising what the author passed
+        if self.sigfigs is not None and (
+            isinstance(self.sigfigs, bool)
+            or not isinstance(self.sigfigs, int)
+            or not 1 <= self.sigfigs <= MAX_SIGFIGS
+        ):
             raise SpecError(
                 f"tolerance sigfigs must be a whole number from 1 to {MAX_SIGFIGS}", ("tolerance", "sigfigs")
             )

@@ -12,7 +12,7 @@ from dataclasses import dataclass
 
 from mpmath import libmp
 
-from physics.symbolic.numeric import ONE, RND, ZERO, Column, Mpf
+from physics.symbolic.numeric import BY_VALUE, ONE, RND, ZERO, Column, Mpf
 
 PREC = 133
 TOLERANCE_BITS = 83
@@ -26,14 +26,14 @@ def close(a: Mpf, b: Mpf, scale: Mpf, tolerance_bits: int) -> bool:
     difference = libmp.mpf_abs(libmp.mpf_sub(a, b, 64, RND))
     if difference == ZERO:
         return True
-    largest = max(libmp.mpf_abs(a), libmp.mpf_abs(b), key=libmp.to_float)
+    largest = max(libmp.mpf_abs(a), libmp.mpf_abs(b), key=BY_VALUE)
     allowed = libmp.mpf_shift(libmp.mpf_add(largest, scale, 64, RND), -tolerance_bits)
     return bool(libmp.mpf_le(difference, allowed))
 
 
 def typical_scale(values: Sequence[Mpf | None]) -> Mpf:
     """Median |value| over the defined points; 1 when they are all zero (values are O(1) by design)."""
-    magnitudes = sorted((libmp.mpf_abs(v) for v in values if v is not None), key=libmp.to_float)
+    magnitudes = sorted((libmp.mpf_abs(v) for v in values if v is not None), key=BY_VALUE)
     if not magnitudes:
         return ONE
     median: Mpf = magnitudes[len(magnitudes) // 2]

@@ -6,9 +6,11 @@ Deciding equivalence (the rule):
 2. Sampling accepts: agreement at every sample point, confirmed at two points with twice the precision,
    makes the answer right. sympy's simplify is not consulted: it is incomplete on restricted domains
    (θ ∈ (0, π/2)), so its failure to reach 0 is no evidence against an answer.
-3. Inconclusive: the answer agrees wherever it is defined but is undefined (or not real) at some point
-   where the reference is defined, and nudging the point does not help (not a removable singularity).
-   Then a bounded symbolic proof (physics.symbolic.proof) may still accept it; otherwise it is wrong.
+3. Inconclusive: the answer agrees wherever it has a real value, but the real evaluator finds none at
+   some point where the reference is defined, and nudging the point does not help (not a removable
+   singularity). There sympy evaluates it in complex arithmetic: not real or different is wrong; real
+   and equal (complex intermediates, e.g. (e^{iθ} + e^{-iθ})) counts as agreement. Only where even that
+   gives no number does a bounded symbolic proof (physics.symbolic.proof) decide: proved or wrong.
 
 Why a wrong answer is wrong, first match wins: wrong_dimension, known_mistake, sign_error,
 constant_factor, wrong_value (with hints on limiting cases). Feedback never shows the reference, and
@@ -26,6 +28,7 @@ from physics.symbolic.compare import (
     PREC,
     PRECISE_PREC,
     PRECISE_TOLERANCE_BITS,
+    TOLERANCE_BITS,
     agreement,
     close,
     constant_ratio,
@@ -33,7 +36,7 @@ from physics.symbolic.compare import (
 )
 from physics.symbolic.dimensional import DimensionMismatch, UnknownDimension, expression_dimension
 from physics.symbolic.limits import breaks_limit
-from physics.symbolic.numeric import ONE, RND, Column, Evaluator
+from physics.symbolic.numeric import ONE, RND, Column, Evaluator, complex_value
 from physics.symbolic.proof import proves_equal
 from physics.symbolic.reference import PreparedReference, exact_numbers, rename_symbols
 from physics.verdict import Judgement, Reason
@@ -50,7 +53,9 @@ _NUDGE_TOLERANCE_BITS = 40
 
 
 def _normalize_answer(answer: sympy.Basic, reference: PreparedReference) -> sympy.Expr:
-    if not isinstance(answer, sympy.Expr) or isinstance(answer, sympy.logic.boolalg.Boolean):
+    # Not `Boolean`: sympy's Symbol is a Boolean too, and a bare `m` is a fine answer.
+    relation = (sympy.core.relational.Relational, sympy.logic.boolalg.BooleanFunction, sympy.logic.boolalg.BooleanAtom)
+    if not isinstance(answer, sympy.Expr) or isinstance(answer, relation):
         raise ParseError("the answer must be an expression, not an equation or a relation")
     try:
         renamed = rename_symbols(exact_numbers(answer), reference.context)
@@ -82,22 +87,46 @@ def _removable(answer: sympy.Expr, reference: PreparedReference, indexes: tuple[
 
 
 def _precisely_equal(answer: sympy.Expr, reference: PreparedReference) -> bool:
+    """Agreement at twice the precision wherever the answer has a real value among the check points."""
     size = len(reference.precise_values)
     values = Evaluator(reference.precise_columns, size, PRECISE_PREC)(answer)
     return all(
-        a is not None and b is not None and close(a, b, reference.scale, PRECISE_TOLERANCE_BITS)
+        a is None or (b is not None and close(a, b, reference.scale, PRECISE_TOLERANCE_BITS))
         for a, b in zip(values, reference.precise_values, strict=True)
     )
 
 
-def _equivalent(answer: sympy.Expr, values: Column, reference: PreparedReference) -> tuple[bool, bool]:
-    """(equivalent, undefined somewhere) by the rule in the module docstring."""
+def _complex_agrees(
+    answer: sympy.Expr, reference: PreparedReference, indexes: tuple[int, ...]
+) -> bool | None:
+    """Where the real evaluator found no value: True if the answer is real there and equal to the reference
+    (it went through complex intermediates), False if it is not real or differs, None if it cannot tell."""
+    zero = libmp.fzero
+    for index in indexes:
+        found = complex_value(answer, reference.sample.point(index), PREC)
+        expected = reference.values[index]
+        if found is None or expected is None:
+            return None
+        real, imaginary = found
+        if not close(imaginary, zero, reference.scale, TOLERANCE_BITS) or not close(
+            real, expected, reference.scale, TOLERANCE_BITS
+        ):
+            return False
+    return True
+
+
+def _equivalent(answer: sympy.Expr, values: Column, reference: PreparedReference) -> bool:
+    """The rule in the module docstring."""
     found = agreement(values, reference.values, reference.scale)
     if found.differs:
-        return False, bool(found.answer_missing)
+        return False
     if found.answer_missing and not _removable(answer, reference, found.answer_missing):
-        return proves_equal(answer, reference.expected), True
-    return _precisely_equal(answer, reference), False
+        complex_check = _complex_agrees(answer, reference, found.answer_missing)
+        if complex_check is None:
+            return proves_equal(answer, reference.expected)
+        if not complex_check:
+            return False
+    return _precisely_equal(answer, reference)
 
 
 def _dimension_problem(answer: sympy.Expr, reference: PreparedReference) -> str | None:
@@ -133,7 +162,10 @@ def diagnose(answer: sympy.Expr, values: Column, reference: PreparedReference, u
             return Judgement(False, Reason.KNOWN_MISTAKE, mistake.feedback)
     if agreement(values, negated(reference.values), reference.scale).agrees:
         return Judgement(False, Reason.SIGN_ERROR, SIGN_FEEDBACK)
-    ratio = constant_ratio(values, reference.values, reference.scale)
+    # Between two plain numbers every ratio is constant: the reason would say nothing.
+    ratio = (
+        constant_ratio(values, reference.values, reference.scale) if reference.expected.free_symbols else None
+    )
     if ratio is not None and not close(libmp.mpf_abs(ratio), ONE, ONE, 40) and ratio != libmp.fzero:
         return Judgement(False, Reason.CONSTANT_FACTOR, FACTOR_FEEDBACK)
     sentences = [WRONG_VALUE_FEEDBACK]
@@ -152,7 +184,7 @@ def judge_symbolic(answer: sympy.Expr, reference: PreparedReference) -> Judgemen
     if expr == reference.expected:
         return Judgement(True, Reason.EQUIVALENT, CORRECT)
     values = Evaluator(reference.sample.columns, reference.sample.size, PREC)(expr)
-    equivalent, undefined = _equivalent(expr, values, reference)
-    if equivalent:
+    if _equivalent(expr, values, reference):
         return Judgement(True, Reason.EQUIVALENT, CORRECT)
-    return diagnose(expr, values, reference, undefined)
+    # The reference is defined at every sample point, so a missing value is the answer's own gap.
+    return diagnose(expr, values, reference, undefined=any(v is None for v in values))

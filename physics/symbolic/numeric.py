@@ -8,6 +8,7 @@ the grader skips or judges such points, it never guesses a value for them. This 
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Callable, Mapping, Sequence
 from typing import Any
 
@@ -25,6 +26,8 @@ _SPECIAL = (libmp.fnan, libmp.finf, libmp.fninf)
 # A sum that cancels down to fewer than this many significant bits of its largest term is rounding
 # noise: it is set to exact zero, so that `sin²θ + cos²θ - 1` is 0 and not 1e-40.
 _CANCELLATION_KEEP_BITS = 24
+# Orders libmp values exactly (floats would overflow to inf or underflow to 0 beyond 1e±308).
+BY_VALUE = functools.cmp_to_key(libmp.mpf_cmp)
 _FAILURES = (ValueError, ZeroDivisionError, OverflowError, ArithmeticError)
 
 Unary = Callable[[Mpf, int], Mpf | None]
@@ -216,7 +219,7 @@ class Evaluator:
             pick = min if isinstance(expr, sympy.Min) else max
             columns = [self(arg) for arg in expr.args]
             return [
-                None if any(v is None for v in row) else pick(row, key=libmp.to_float)
+                None if any(v is None for v in row) else pick(row, key=BY_VALUE)
                 for row in zip(*columns, strict=True)
             ]
         if expr.is_number and (expr.is_extended_real is False or not expr.is_finite):
@@ -278,12 +281,18 @@ class Evaluator:
         out: Column = []
         for index in range(self.size):
             row = [column[index] for column in columns]
-            if any(v is None for v in row):
+            present = [v for v in row if v is not None]
+            if len(present) < len(row):
                 out.append(None)
                 continue
-            subs = {s: sympy.Float(mpmath.mpf(v), dps) for s, v in zip(symbols, row, strict=True)}
+            subs = {s: sympy_float(v, self.prec) for s, v in zip(symbols, present, strict=True)}
             out.append(_real_mpf(expr, subs, dps, self.prec))
         return out
+
+
+def sympy_float(value: Mpf, prec: int) -> sympy.Float:
+    """The exact same binary number as a sympy Float (mpmath.mpf() would round it to 53 bits)."""
+    return sympy.Float(mpmath.mp.make_mpf(value), precision=max(prec, value[3]))
 
 
 def _real_mpf(expr: sympy.Basic, subs: Mapping[sympy.Symbol, Any], dps: int, prec: int) -> Mpf | None:
@@ -303,3 +312,24 @@ def _real_mpf(expr: sympy.Basic, subs: Mapping[sympy.Symbol, Any], dps: int, pre
 def evaluate_constant(expr: sympy.Basic, prec: int) -> Mpf | None:
     """The real value of an expression without symbols (a range bound such as pi/2), or None."""
     return Evaluator({}, 1, prec)(expr)[0]
+
+
+def complex_value(expr: sympy.Basic, point: Mapping[sympy.Symbol, Mpf], prec: int) -> tuple[Mpf, Mpf] | None:
+    """(real, imaginary) parts by sympy's evalf, for answers with complex intermediates; None if undefined."""
+    dps = libmp.prec_to_dps(prec)
+    symbols = expr.free_symbols
+    subs = {s: sympy_float(v, prec) for s, v in point.items() if s in symbols}
+    try:
+        parts = expr.evalf(dps, subs=subs).as_real_imag()
+    except (*_FAILURES, TypeError, AttributeError):
+        return None
+    out = []
+    for part in parts:
+        part = part.evalf(dps)
+        if not part.is_Number:
+            return None
+        value = from_rational(int(part.p), int(part.q), prec) if part.is_Rational else _finite(part._mpf_)
+        if value is None:
+            return None
+        out.append(value)
+    return out[0], out[1]

@@ -12,9 +12,9 @@ from collections.abc import Callable
 import sympy
 
 # count_ops limits per step, measured to keep each step well under ~100 ms on typical answers.
-_CANCEL_OPS = 120
-_TRIG_OPS = 60
-_SIMPLIFY_OPS = 40
+_CANCEL_OPS = 80
+_TRIG_OPS = 40
+_SIMPLIFY_OPS = 25
 _MAX_POWER = 12  # expanding (a + b)**n beyond this grows too fast
 
 

@@ -34,7 +34,7 @@ from physics.symbolic.numeric import (
 _LOG10_SPAN = 1.0
 _EDGE = 1e-9  # keeps points strictly inside open ranges
 _INTEGER_SPAN = 12
-MAX_BATCHES = 40
+MAX_BATCHES = 100  # a constraint may keep only a few percent of the candidates
 
 Axis = Callable[[float], Mpf]
 

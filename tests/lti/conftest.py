@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import base64
 import json
+import shutil
 from collections.abc import AsyncIterator, Iterator
 from dataclasses import dataclass
 from pathlib import Path
@@ -17,6 +18,7 @@ from fastapi import FastAPI
 from app.db.database import Database
 from app.db.migrate import migrate
 from app.db.problems import save_builtin
+from app.lti import keys
 from app.lti.context import LtiContext
 from app.lti.platforms import add_platform
 from app.lti.router import router
@@ -34,17 +36,30 @@ def anyio_backend() -> str:
     return "asyncio"
 
 
-@pytest.fixture
-def database(tmp_path: Path) -> Iterator[Database]:
-    url = f"sqlite:///{tmp_path / 'tool.db'}"
+@pytest.fixture(scope="session")
+def template_database(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """Migrated once per run, with the problems, the fake LMS registered and our first signing key;
+    each test gets a copy (migrating and making an RSA key per test would dominate the run time)."""
+    path = tmp_path_factory.mktemp("template") / "tool.db"
+    url = f"sqlite:///{path}"
     migrate(url)
     database = Database(url)
     with database.session() as session:
         for problem_id, document in PROBLEMS.items():
             save_builtin(session, problem_id, document)
+        keys.create_key(session)
     add_platform(
         database, ISSUER, CLIENT_ID, [DEPLOYMENT_ID], f"{ISSUER}/auth", f"{ISSUER}/token", f"{ISSUER}/jwks"
     )
+    database.dispose()
+    return path
+
+
+@pytest.fixture
+def database(template_database: Path, tmp_path: Path) -> Iterator[Database]:
+    path = tmp_path / "tool.db"
+    shutil.copyfile(template_database, path)
+    database = Database(f"sqlite:///{path}")
     yield database
     database.dispose()
 
@@ -112,7 +127,9 @@ async def platform_launch(browser: httpx.AsyncClient) -> httpx.Response:
     """The whole flow with the real platform: login, authorization, form post to the tool."""
     login = await start_login(browser)
     answer = (await browser.get(login.auth_url)).json()
-    return await browser.post(answer["launch_url"], data={"id_token": answer["id_token"], "state": answer["state"]})
+    return await browser.post(
+        answer["launch_url"], data={"id_token": answer["id_token"], "state": answer["state"]}
+    )
 
 
 def unverified_claims(token: str) -> dict[str, Any]:

@@ -1,14 +1,15 @@
 """A real LTI 1.3 platform (lti1p3platform==0.1.8) playing the LMS, as a small FastAPI app.
 
-    GET  /auth                    OIDC authorization endpoint: answers the tool's login redirect with
-                                  the launch it was told to make next, as JSON {id_token, state, launch_url}
-    GET  /jwks                    the platform's public key
-    POST /token                   client-credentials grant with a client assertion
-    POST /lineitems/{id}/scores   the AGS score service; `fail_scores` makes it answer 503 for a while
+GET  /auth                    OIDC authorization endpoint: answers the tool's login redirect with
+                              the launch it was told to make next, as JSON {id_token, state, launch_url}
+GET  /jwks                    the platform's public key
+POST /token                   client-credentials grant with a client assertion
+POST /lineitems/{id}/scores   the AGS score service; `fail_scores` makes it answer 503 for a while
 """
 
 from __future__ import annotations
 
+import functools
 import typing as t
 from dataclasses import dataclass, field
 
@@ -39,11 +40,25 @@ def new_private_key_pem() -> str:
     ).decode()
 
 
+@functools.cache
+def platform_private_key_pem() -> str:
+    """One platform key per test run: RSA generation is the slow part of every fixture."""
+    return new_private_key_pem()
+
+
+@functools.cache
+def other_private_key_pem() -> str:
+    """A second key, for forgeries and for the platform's key rotation."""
+    return new_private_key_pem()
+
+
 def public_pem(private_pem: str) -> str:
     key = serialization.load_pem_private_key(private_pem.encode(), password=None)
-    return key.public_key().public_bytes(
-        serialization.Encoding.PEM, serialization.PublicFormat.SubjectPublicKeyInfo
-    ).decode()
+    return (
+        key.public_key()
+        .public_bytes(serialization.Encoding.PEM, serialization.PublicFormat.SubjectPublicKeyInfo)
+        .decode()
+    )
 
 
 class PlatformConfig(LTI1P3PlatformConfAbstract):
@@ -87,7 +102,7 @@ class ReceivedScore:
 
 class FakeLms:
     def __init__(self) -> None:
-        self.private_pem = new_private_key_pem()
+        self.private_pem = platform_private_key_pem()
         self.registration = (
             Registration()
             .set_iss(ISSUER)
@@ -104,6 +119,9 @@ class FakeLms:
         self.fail_scores = 0  # answer this many score posts with 503 first
         self.score_status: int | None = None  # force a status (e.g. 422) for every score post
         self.token_requests = 0
+        self.assertions: list[str] = []  # client assertions received at the token endpoint
+        self.token_lifetime: int | None = None  # override the platform's expires_in
+        self.retry_after: str | None = None  # sent with the 503s
         self.app = self._build_app()
 
     @property
@@ -143,10 +161,14 @@ class FakeLms:
         async def token(request: Request) -> Response:
             self.token_requests += 1
             form = dict((await request.form()).items())
+            self.assertions.append(str(form.get("client_assertion")))
             config = self.config()
             config.get_registration()
             try:
-                return JSONResponse(config.get_access_token(form))
+                answer = dict(config.get_access_token(form))
+                if self.token_lifetime is not None:
+                    answer["expires_in"] = self.token_lifetime
+                return JSONResponse(answer)
             except Exception as error:
                 return JSONResponse({"error": "invalid_client", "detail": str(error)}, status_code=401)
 
@@ -154,7 +176,8 @@ class FakeLms:
         async def scores(line_item_id: str, request: Request) -> Response:
             if self.fail_scores > 0:
                 self.fail_scores -= 1
-                return JSONResponse({"error": "down"}, status_code=503)
+                headers = {"Retry-After": self.retry_after} if self.retry_after else None
+                return JSONResponse({"error": "down"}, status_code=503, headers=headers)
             if self.score_status is not None:
                 return JSONResponse({"error": "refused by test"}, status_code=self.score_status)
             lms = self
@@ -190,7 +213,9 @@ class FakeLms:
             lti_request = DictRequest(
                 {"method": "POST", "headers": request.headers, "json": body, "get_data": {}, "form_data": {}}
             )
-            service = Service(lti_request, config, f"{ISSUER}/lineitems", f"{ISSUER}/lineitems/{line_item_id}")
+            service = Service(
+                lti_request, config, f"{ISSUER}/lineitems", f"{ISSUER}/lineitems/{line_item_id}"
+            )
             result = service.handle_resp(service.handle_update_score, line_item_id=line_item_id)
             return JSONResponse({"message": result.message}, status_code=result.code)
 

@@ -7,6 +7,7 @@ import hashlib
 import hmac
 import json
 import time
+from dataclasses import dataclass
 from typing import Any
 
 from cryptography.hazmat.primitives import hashes, serialization
@@ -40,9 +41,18 @@ def launch_claims(login_nonce: str, /, **overrides: Any) -> dict[str, Any]:
     for name, value in overrides.items():
         if value is _DROP:
             claims.pop(name, None)
+        elif isinstance(value, FromNow):
+            claims[name] = now + value.seconds
         else:
             claims[name] = value
     return claims
+
+
+@dataclass(frozen=True)
+class FromNow:
+    """A time claim relative to when the token is made (not when the test module was imported)."""
+
+    seconds: int
 
 
 _DROP = object()

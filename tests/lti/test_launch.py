@@ -13,7 +13,9 @@ from tests.lti.fake_lms import INSTRUCTOR, FakeLms
 pytestmark = pytest.mark.anyio
 
 
-async def test_launch_opens_session_and_redirects_to_problem_page(browser: httpx.AsyncClient, context: LtiContext):
+async def test_launch_opens_session_and_redirects_to_problem_page(
+    browser: httpx.AsyncClient, context: LtiContext
+):
     response = await platform_launch(browser)
     assert response.status_code == 303, response.text
     assert response.headers["location"] == "/p/moving-wedge"
@@ -26,7 +28,9 @@ async def test_launch_opens_session_and_redirects_to_problem_page(browser: httpx
 
 async def test_session_cookie_is_cross_site_secure_partitioned_and_http_only(browser: httpx.AsyncClient):
     response = await platform_launch(browser)
-    cookie = next(v for k, v in response.headers.multi_items() if k == "set-cookie" and "physcheck_session" in v)
+    cookie = next(
+        v for k, v in response.headers.multi_items() if k == "set-cookie" and "physcheck_session" in v
+    )
     attributes = {part.strip().lower() for part in cookie.split(";")}
     assert {"samesite=none", "secure", "partitioned", "httponly"} <= attributes
 
@@ -42,7 +46,9 @@ async def test_launch_records_grade_target_from_ags_claim(browser: httpx.AsyncCl
         )
 
 
-async def test_instructor_role_comes_from_signed_roles(browser: httpx.AsyncClient, lms: FakeLms, context: LtiContext):
+async def test_instructor_role_comes_from_signed_roles(
+    browser: httpx.AsyncClient, lms: FakeLms, context: LtiContext
+):
     lms.next_launch.roles = [INSTRUCTOR]
     await platform_launch(browser)
     with context.database.session() as session:

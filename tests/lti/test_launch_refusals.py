@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import time
 from collections.abc import Callable
 from typing import Any
 
@@ -12,8 +11,14 @@ import pytest
 from app.lti.context import LtiContext
 from app.lti.models import LtiSession
 from tests.lti.conftest import start_login
-from tests.lti.fake_lms import CLIENT_ID, TOOL, FakeLms, new_private_key_pem, public_pem
-from tests.lti.forge import DROP, LTI, hs256, launch_claims, rs256, unsigned
+from tests.lti.fake_lms import (
+    CLIENT_ID,
+    TOOL,
+    FakeLms,
+    other_private_key_pem,
+    public_pem,
+)
+from tests.lti.forge import DROP, LTI, FromNow, hs256, launch_claims, rs256, unsigned
 
 pytestmark = pytest.mark.anyio
 
@@ -26,28 +31,43 @@ def signed(**overrides: Any) -> Forger:
 
 REFUSED: list[Any] = [
     pytest.param(
-        lambda lms, nonce: rs256(launch_claims(nonce), new_private_key_pem(), lms.kid),
-        401, "bad_signature", id="signed-by-another-key",
+        lambda lms, nonce: rs256(launch_claims(nonce), other_private_key_pem(), lms.kid),
+        401,
+        "bad_signature",
+        id="signed-by-another-key",
     ),
-    pytest.param(lambda lms, nonce: unsigned(launch_claims(nonce), lms.kid), 401, "algorithm_not_allowed", id="alg-none"),
+    pytest.param(
+        lambda lms, nonce: unsigned(launch_claims(nonce), lms.kid),
+        401,
+        "algorithm_not_allowed",
+        id="alg-none",
+    ),
     pytest.param(
         lambda lms, nonce: hs256(launch_claims(nonce), public_pem(lms.private_pem).encode(), lms.kid),
-        401, "algorithm_not_allowed", id="hs256-keyed-with-public-key",
+        401,
+        "algorithm_not_allowed",
+        id="hs256-keyed-with-public-key",
     ),
     pytest.param(
         lambda lms, nonce: rs256(launch_claims(nonce), lms.private_pem, None), 401, "missing_kid", id="no-kid"
     ),
     pytest.param(
         lambda lms, nonce: rs256(launch_claims(nonce), lms.private_pem, "not-published"),
-        401, "unknown_kid", id="unknown-kid",
+        401,
+        "unknown_kid",
+        id="unknown-kid",
     ),
     pytest.param(signed(iss="https://evil.test"), 401, "wrong_issuer", id="wrong-issuer"),
     pytest.param(signed(aud="someone-else"), 401, "wrong_audience", id="wrong-audience"),
     pytest.param(signed(aud=[CLIENT_ID, "other"]), 401, "missing_azp", id="several-audiences-without-azp"),
-    pytest.param(signed(aud=[CLIENT_ID, "other"], azp="other"), 401, "wrong_azp", id="azp-names-another-client"),
-    pytest.param(signed(**{LTI + "deployment_id": "unknown"}), 403, "unknown_deployment", id="unknown-deployment"),
-    pytest.param(signed(exp=int(time.time()) - 61 - 5), 401, "expired", id="expired-beyond-leeway"),
-    pytest.param(signed(iat=int(time.time()) + 120), 401, "issued_in_future", id="future-iat-beyond-leeway"),
+    pytest.param(
+        signed(aud=[CLIENT_ID, "other"], azp="other"), 401, "wrong_azp", id="azp-names-another-client"
+    ),
+    pytest.param(
+        signed(**{LTI + "deployment_id": "unknown"}), 403, "unknown_deployment", id="unknown-deployment"
+    ),
+    pytest.param(signed(exp=FromNow(-61 - 5)), 401, "expired", id="expired-beyond-leeway"),
+    pytest.param(signed(iat=FromNow(120)), 401, "issued_in_future", id="future-iat-beyond-leeway"),
     pytest.param(signed(iat=DROP), 401, "missing_iat", id="no-iat"),
     pytest.param(signed(nonce="another-nonce"), 401, "nonce_mismatch", id="wrong-nonce"),
     pytest.param(signed(**{LTI + "version": "1.1"}), 401, "unsupported_version", id="wrong-version"),
@@ -76,14 +96,16 @@ async def test_forged_or_invalid_launch_is_refused(
     browser: httpx.AsyncClient, lms: FakeLms, context: LtiContext, forge: Forger, status: int, code: str
 ):
     login = await start_login(browser)
-    response = await browser.post(f"{TOOL}/lti/launch", data={"id_token": forge(lms, login.nonce), "state": login.state})
+    response = await browser.post(
+        f"{TOOL}/lti/launch", data={"id_token": forge(lms, login.nonce), "state": login.state}
+    )
     assert_refusal_page(response, status, code)
     assert session_count(context) == 0
 
 
 ACCEPTED: list[Any] = [
-    pytest.param(signed(exp=int(time.time()) - 30), id="expired-within-leeway"),
-    pytest.param(signed(iat=int(time.time()) + 30), id="future-iat-within-leeway"),
+    pytest.param(signed(exp=FromNow(-30)), id="expired-within-leeway"),
+    pytest.param(signed(iat=FromNow(30)), id="future-iat-within-leeway"),
     pytest.param(signed(aud=[CLIENT_ID, "other"], azp=CLIENT_ID), id="several-audiences-with-our-azp"),
     pytest.param(signed(aud=[CLIENT_ID]), id="audience-as-list"),
 ]
@@ -92,7 +114,9 @@ ACCEPTED: list[Any] = [
 @pytest.mark.parametrize("forge", ACCEPTED)
 async def test_launch_within_rules_is_accepted(browser: httpx.AsyncClient, lms: FakeLms, forge: Forger):
     login = await start_login(browser)
-    response = await browser.post(f"{TOOL}/lti/launch", data={"id_token": forge(lms, login.nonce), "state": login.state})
+    response = await browser.post(
+        f"{TOOL}/lti/launch", data={"id_token": forge(lms, login.nonce), "state": login.state}
+    )
     assert response.status_code == 303, response.text
 
 
@@ -106,7 +130,9 @@ async def test_replayed_launch_is_refused(browser: httpx.AsyncClient, lms: FakeL
 async def test_replayed_id_token_with_fresh_state_is_refused(browser: httpx.AsyncClient, lms: FakeLms):
     first = await start_login(browser)
     token = signed()(lms, first.nonce)
-    assert (await browser.post(f"{TOOL}/lti/launch", data={"id_token": token, "state": first.state})).status_code == 303
+    assert (
+        await browser.post(f"{TOOL}/lti/launch", data={"id_token": token, "state": first.state})
+    ).status_code == 303
     second = await start_login(browser)
     response = await browser.post(f"{TOOL}/lti/launch", data={"id_token": token, "state": second.state})
     assert_refusal_page(response, 401, "nonce_mismatch")
@@ -130,7 +156,9 @@ async def test_unknown_state_is_refused(browser: httpx.AsyncClient, lms: FakeLms
 
 
 async def test_launch_without_id_token_is_refused(browser: httpx.AsyncClient):
-    assert_refusal_page(await browser.post(f"{TOOL}/lti/launch", data={"state": "x"}), 400, "missing_id_token")
+    assert_refusal_page(
+        await browser.post(f"{TOOL}/lti/launch", data={"state": "x"}), 400, "missing_id_token"
+    )
 
 
 LOGIN_REFUSED: list[Any] = [
@@ -160,9 +188,15 @@ async def test_bad_login_initiation_is_refused(
 async def test_platform_key_rotation_is_picked_up_by_one_refetch(browser: httpx.AsyncClient, lms: FakeLms):
     first = await start_login(browser)
     token = signed()(lms, first.nonce)
-    assert (await browser.post(f"{TOOL}/lti/launch", data={"id_token": token, "state": first.state})).status_code == 303
-    lms.private_pem = new_private_key_pem()
-    lms.registration.set_platform_private_key(lms.private_pem).set_platform_public_key(public_pem(lms.private_pem))
+    assert (
+        await browser.post(f"{TOOL}/lti/launch", data={"id_token": token, "state": first.state})
+    ).status_code == 303
+    lms.private_pem = other_private_key_pem()
+    lms.registration.set_platform_private_key(lms.private_pem).set_platform_public_key(
+        public_pem(lms.private_pem)
+    )
     second = await start_login(browser)
     token = signed()(lms, second.nonce)
-    assert (await browser.post(f"{TOOL}/lti/launch", data={"id_token": token, "state": second.state})).status_code == 303
+    assert (
+        await browser.post(f"{TOOL}/lti/launch", data={"id_token": token, "state": second.state})
+    ).status_code == 303

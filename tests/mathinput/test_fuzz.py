@@ -9,8 +9,9 @@ from __future__ import annotations
 import random
 
 import pytest
+import sympy
 
-from physics.errors import AnswerError, TooLarge
+from physics.errors import AnswerError, ParseError, TooLarge
 from physics.mathinput import parse_math
 from tests.mathinput.support import names, same
 
@@ -70,3 +71,65 @@ def test_arbitrary_token_sequences_raise_only_answer_errors():
         check_one("".join(parts))
 
     run()
+
+
+# -- generated expressions with a known meaning ---------------------------------------------------
+_SUM, _NEG, _PRODUCT, _POWER, _ATOM = 1, 2, 3, 4, 5
+_X, _Y, _THETA = (DECLARED[n] for n in ("x", "y", "theta"))
+
+
+def _generate(rng: random.Random, depth: int) -> tuple[str, object, int]:
+    """A random expression as (minimal-bracket text, the sympy value built directly, precedence)."""
+    if depth <= 0 or rng.random() < 0.25:
+        choice = rng.randrange(7)
+        if choice == 0:
+            n = rng.randint(1, 9)
+            return str(n), sympy.Integer(n), _ATOM
+        if choice == 1:
+            return "2.5", sympy.Rational(5, 2), _ATOM
+        if choice == 2:
+            return rng.choice(["pi", "π"]), sympy.pi, _ATOM
+        if choice == 3:
+            return rng.choice(["theta", "θ"]), _THETA, _ATOM
+        name, symbol = rng.choice([("x", _X), ("y", _Y)])
+        return name, symbol, _ATOM
+
+    def wrap(piece: tuple[str, object, int], needs: bool) -> str:
+        return f"({piece[0]})" if needs else piece[0]
+
+    kind = rng.randrange(6)
+    left = _generate(rng, depth - 1)
+    if kind == 0:
+        right = _generate(rng, depth - 1)
+        op = rng.choice(["+", "-"])
+        text = f"{left[0]} {op} {wrap(right, right[2] <= _SUM)}"
+        return text, (left[1] + right[1] if op == "+" else left[1] - right[1]), _SUM
+    if kind == 1:
+        right = _generate(rng, depth - 1)
+        op = rng.choice(["*", "/", "×", "÷", "·"])
+        text = f"{wrap(left, left[2] < _PRODUCT)}{op}{wrap(right, right[2] <= _PRODUCT)}"
+        value = left[1] * right[1] if op in "*×·" else left[1] / right[1]
+        return text, value, _PRODUCT
+    if kind == 2:
+        exponent = rng.choice([("2", 2), ("3", 3), ("-1", -1), ("y", _Y), ("1/2", sympy.Rational(1, 2))])
+        needs_brackets = exponent[0] in ("-1", "1/2")
+        text = f"{wrap(left, left[2] <= _POWER)}^{'(' + exponent[0] + ')' if needs_brackets else exponent[0]}"
+        return text, left[1] ** exponent[1], _POWER
+    if kind == 3:
+        return f"-{wrap(left, left[2] < _POWER)}", -left[1], _NEG
+    name, func = rng.choice([("sin", sympy.sin), ("sqrt", sympy.sqrt), ("ln", sympy.log), ("abs", sympy.Abs)])
+    return f"{name}({left[0]})", func(left[1]), _ATOM
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_generated_expressions_read_as_built_and_read_back(seed):
+    rng = random.Random(seed)
+    for _ in range(120):
+        text, expected, _ = _generate(rng, 4)
+        if expected.has(sympy.zoo, sympy.nan):  # e.g. 1/(x - x)
+            with pytest.raises(ParseError):
+                parse_math(text, DECLARED)
+            continue
+        parsed = parse_math(text, DECLARED)
+        assert same(parsed.expr, expected), (text, parsed.expr, expected)
+        check_one(text)

@@ -13,6 +13,8 @@ HOSTILE = [
     ("one megabyte", "x" * 1_000_000),
     ("one megabyte of spaces", " " * 1_000_000),
     ("9^9^9", "9^9^9"),
+    ("exponent too big for a float", "9^9^922"),
+    ("fractional exponent too big for a float", "3^(9^922/7)"),
     ("2^2^2^2^2^2", "2^2^2^2^2^2"),
     ("1e999999", "1e999999"),
     ("1e-999999", "1e-999999"),
@@ -98,3 +100,36 @@ def test_too_long_points_at_the_first_character_past_the_limit():
     with pytest.raises(TooLarge) as caught:
         read("x" * 2001, "x")
     assert caught.value.position == DEFAULT_LIMITS.max_length
+
+
+def _repeated(piece: str, joiner: str, count: int) -> str:
+    return joiner.join([piece] * count)
+
+
+COSTLY_NUMBERS = [
+    # sympy would factor each radicand (seconds in total), so roots share a budget
+    ("many roots of 38-digit numbers", _repeated("sqrt(30062827503801437255781353093407281)", "*", 40)),
+    ("root of a big fraction", "(12345678901234567890123/98765432109876543210987)^(1/7)"),
+    ("high root of a fraction", "(123456789/987654321)^(1/99)"),
+    ("root of a huge number", "sqrt(2^4000+1)"),
+    # each distinct huge number costs sympy work in trig/log, so their total size is bounded
+    ("trig of pi over huge numbers", _repeated("sin(pi/(2^4000+1))", "+", 20)),
+]
+
+
+@pytest.mark.parametrize("text", [c[1] for c in COSTLY_NUMBERS], ids=[c[0] for c in COSTLY_NUMBERS])
+def test_costly_exact_numbers_are_refused_as_too_large(text):
+    with pytest.raises(TooLarge):
+        read(text, "x")
+
+
+UNDEFINED = ["1/0", "0^-1", "log(0)", "0/0", "x/(x-x)", "factorial(-1)"]
+
+
+@pytest.mark.parametrize("text", UNDEFINED)
+def test_answer_without_a_value_is_a_parse_error(text):
+    from physics.errors import ParseError
+
+    with pytest.raises(ParseError) as caught:
+        read(text, "x")
+    assert "divides by zero" in caught.value.message

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import time
 from fractions import Fraction
 
 import pytest
@@ -96,7 +95,9 @@ RENDERED = [
     ("45%", "45%", r"45\,\%"),
     ("16.49km/h", "16.49 km/h", r"16.49\,\mathrm{km}/\mathrm{h}"),
     ("4.58eV", "4.58 eV", r"4.58\,\mathrm{eV}"),
-    ("30°", "30 °", r"30\,{}^{\circ}"),
+    ("30°", "30°", r"30{}^{\circ}"),
+    ("30 deg", "30°", r"30{}^{\circ}"),
+    ("25 °C", "25 °C", r"25\,{}^{\circ}\mathrm{C}"),
 ]
 
 
@@ -160,9 +161,8 @@ HOSTILE = [
 ]
 
 
+@pytest.mark.timeout(10)  # hostile input must fail fast; a hang fails here
 @pytest.mark.parametrize("text", HOSTILE, ids=[f"hostile-{i}" for i in range(len(HOSTILE))])
 def test_hostile_answer_is_refused_quickly(text: str) -> None:
-    start = time.perf_counter()
     with pytest.raises(AnswerError):
         read_numeric_answer(text)
-    assert time.perf_counter() - start < 2  # a guard against hangs, not a timing claim

@@ -74,7 +74,9 @@ ROUNDING = [
 ]
 
 
-@pytest.mark.parametrize(("value", "figures", "rounded"), ROUNDING, ids=[f"{c[0]}@{c[1]}"[:40] for c in ROUNDING])
+@pytest.mark.parametrize(
+    ("value", "figures", "rounded"), ROUNDING, ids=[f"{c[0]}@{c[1]}"[:40] for c in ROUNDING]
+)
 def test_round_sigfigs_half_away_from_zero(value: Fraction, figures: int, rounded: Fraction) -> None:
     assert round_sigfigs(value, figures) == rounded
 
@@ -108,3 +110,27 @@ def test_unusable_spec_is_a_spec_error(fields: dict[str, object], path: tuple[st
     with pytest.raises(SpecError) as caught:
         NumericSpec(**fields)  # type: ignore[arg-type]
     assert caught.value.path == path
+
+
+def test_float_from_json_is_read_as_its_shortest_decimal() -> None:
+    spec = NumericSpec(4.5807, "m/s^2", tolerance=Tolerance(rel=0.01))  # type: ignore[arg-type]
+    assert spec.expected == D("4.5807")
+    assert spec.tolerance.rel == D("0.01")
+    assert check_numeric("4.534893 m/s^2", spec).outcome is Outcome.CORRECT
+
+
+@pytest.mark.parametrize(
+    "expected",
+    [D("1e999999999"), D("1e-999999999"), "1" * 61, True, None, "abc", D("sNaN"), float("inf"), [1]],
+    ids=["huge", "tiny", "too-many-digits", "bool", "none", "text", "snan", "inf", "list"],
+)
+def test_unusable_expected_value_is_a_spec_error_cheaply(expected: object) -> None:
+    with pytest.raises(SpecError) as caught:
+        NumericSpec(expected)  # type: ignore[arg-type]
+    assert caught.value.path == ("expected",)
+
+
+@pytest.mark.parametrize("sigfigs", [2.0, True, "3"], ids=["float", "bool", "text"])
+def test_sigfigs_must_be_a_whole_number(sigfigs: object) -> None:
+    with pytest.raises(SpecError):
+        Tolerance(sigfigs=sigfigs)  # type: ignore[arg-type]

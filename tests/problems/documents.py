@@ -28,7 +28,7 @@ _SPRING: dict[str, Any] = {
             "prompt": "Find the angular frequency.",
             "answer": "sqrt(k/m)",
             "symbols": ["m", "k"],
-            "mistakes": [{"answer": "sqrt(m/k)", "feedback": "Upside down: omega grows with k."}],
+            "mistakes": [{"answer": "sqrt(k/m)/(2*pi)", "feedback": "That is the frequency f, not omega."}],
             "limits": [{"where": {"m": "oo"}, "description": "a huge mass barely moves"}],
         },
         {

@@ -31,7 +31,7 @@ def _eval_attempt(d: Doc) -> None:
 
 
 def _unknown_mistake_symbol(d: Doc) -> None:
-    d["parts"][0]["mistakes"][0]["answer"] = "sqrt(m/z)"
+    d["parts"][0]["mistakes"][0]["answer"] = "sqrt(k/z)"
 
 
 def _given_for_unknown_symbol(d: Doc) -> None:

@@ -6,7 +6,15 @@ import pytest
 import sympy
 
 from physics.dimensions import DIMENSIONLESS
-from physics.symbolic import DimensionMismatch, UnknownDimension, describe, expression_dimension
+from physics.symbolic import (
+    DimensionMismatch,
+    SymbolicContext,
+    UnknownDimension,
+    describe,
+    expression_dimension,
+    judge_symbolic,
+    prepare_reference,
+)
 from physics.verdict import Reason
 from tests.symbolic.support import (
     ACCELERATION,
@@ -116,3 +124,15 @@ def test_no_dimension_verdict_when_a_symbol_of_the_answer_has_no_dimension():
 def test_an_equivalent_answer_is_correct_even_written_with_logs_of_dimensional_quantities():
     answer = log(M) - log(m)
     assert judge(answer, log(M / m)).correct
+
+
+def test_the_declared_expected_dimension_is_used_when_the_reference_has_symbols_without_one():
+    base = context(a * g, v)
+    reference = prepare_reference(a * g, SymbolicContext(base.symbols, expected_dimension=ACCELERATION))
+    answer = g * v  # every symbol of the answer has a dimension: it can be checked
+    assert judge_symbolic(answer, reference).reason is Reason.WRONG_DIMENSION
+
+
+def test_a_zero_answer_has_every_dimension():
+    judgement = judge(0 * g, g * sin(theta))
+    assert judgement.reason is Reason.WRONG_VALUE

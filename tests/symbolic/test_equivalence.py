@@ -79,6 +79,9 @@ ACCEPTED = [
     ("lj-omega-reduced-mass", sqrt(72 * U0 / (r0**2 * (m * m / (m + m)))), LJ_OMEGA),
     ("pendulum-energy", sqrt(2 * g * L * (1 - c)), 2 * sqrt(g * L) * sin(theta / 2)),
     ("falling-time", sqrt(2 * L / g), sqrt(L / g) * sqrt(2)),
+    ("functions-evaluated-by-sympy", sympy.gamma(n + 1), sympy.factorial(n)),
+    ("beyond-double-range", sympy.exp(1000 * a) ** 2 * sympy.exp(-5000 * b), sympy.exp(2000 * a - 5000 * b)),
+    ("euler-form-of-sine", (sympy.exp(sympy.I * theta) - sympy.exp(-sympy.I * theta)) / (2 * sympy.I), s),
 ]
 
 
@@ -107,6 +110,13 @@ NEAR_MISSES = [
     ("sqrt2-vs-decimal", sympy.Rational(141421356, 10**8) * v, sqrt(2) * v, Reason.CONSTANT_FACTOR),
     ("lj-force-wrong-power", 12 * U0 / r * ((r0 / r) ** 12 - (r0 / r) ** 5), LJ_FORCE, Reason.WRONG_VALUE),
     ("lj-omega-full-mass", sqrt(72 * U0 / (m * r0**2)), LJ_OMEGA, Reason.CONSTANT_FACTOR),
+    ("tiny-values-factor", 2 * sympy.exp(-1000 * a), sympy.exp(-1000 * a), Reason.CONSTANT_FACTOR),
+    (
+        "huge-values-near-factor",
+        sympy.exp(1000 * a) * (1 + sympy.Rational(1, 10**6)),
+        sympy.exp(1000 * a),
+        Reason.CONSTANT_FACTOR,
+    ),
     ("shifted-by-constant", m * g * s + m * g / 1000, m * g * s, Reason.WRONG_VALUE),
     ("swapped-masses", -M * g * s * c / (m + M * s**2), WEDGE, Reason.WRONG_VALUE),
     ("time-instead-of-length", sqrt(2 * t / g), sqrt(2 * L / g), Reason.WRONG_DIMENSION),
@@ -179,3 +189,26 @@ def test_an_answer_undefined_on_part_of_the_domain_is_wrong_and_told_so():
 def test_answer_symbols_are_matched_by_name_whatever_their_assumptions():
     plain_m, plain_g = sympy.Symbol("m"), sympy.Symbol("g")
     assert judge(plain_m * plain_g, m * g, context(m * g)).correct
+
+
+CONSTANTS = [
+    ("same-constant-written-otherwise", sympy.atan(1) * 4, pi, True, Reason.EQUIVALENT),
+    ("decimal-for-a-constant", sympy.Rational(785, 1000), pi / 4, False, Reason.WRONG_VALUE),
+    ("negated-constant", -pi / 4, pi / 4, False, Reason.SIGN_ERROR),
+]
+
+
+@pytest.mark.parametrize(
+    ("answer", "expected", "correct", "reason"), [c[1:] for c in CONSTANTS], ids=[c[0] for c in CONSTANTS]
+)
+def test_plain_numbers_are_compared_without_talking_of_factors(answer, expected, correct, reason):
+    from physics.symbolic import SymbolicContext, judge_symbolic, prepare_reference
+
+    judgement = judge_symbolic(answer, prepare_reference(expected, SymbolicContext({})))
+    assert (judgement.correct, judgement.reason) == (correct, reason)
+
+
+def test_a_complex_valued_answer_is_wrong_where_it_is_not_real():
+    answer = sympy.exp(sympy.I * theta)  # its real part is the reference, but it is not real
+    judgement = judge(answer, c)
+    assert not judgement.correct

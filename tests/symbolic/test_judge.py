@@ -27,6 +27,13 @@ def test_a_relation_is_not_an_answer():
         judge_symbolic(sympy.Eq(m, g), reference)
 
 
+@pytest.mark.parametrize("answer", [m, -m, sympy.Integer(0)], ids=["bare-symbol", "negated-symbol", "zero"])
+def test_a_lone_symbol_or_number_is_an_answer_not_a_relation(answer):
+    # sympy's Symbol is also a Boolean: that must not make `m` look like a relation.
+    judgement = judge_symbolic(answer, prepare_reference(m, context(m)))
+    assert judgement.correct == (answer == m)
+
+
 def test_judging_twice_gives_the_same_judgement():
     expected = m * g * sin(theta)
     answer = m * g * sin(theta) * (1 + sympy.Rational(1, 10**9))

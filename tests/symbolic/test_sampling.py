@@ -2,13 +2,15 @@
 
 from __future__ import annotations
 
+import math
+
 import pytest
 import sympy
 from mpmath import libmp
 
 from physics.errors import SpecError
 from physics.symbolic import SymbolicContext, SymbolSpec, make_symbol, prepare_reference
-from tests.symbolic.support import M, context, g, m, mu, pi, sin, sqrt, tan, theta
+from tests.symbolic.support import ACCELERATION, FORCE, M, context, g, m, mu, pi, sin, sqrt, tan, theta
 
 HALF_PI = float(pi / 2)
 
@@ -34,7 +36,7 @@ def test_every_point_satisfies_the_constraints():
     friction = mu * tan(theta) < 1
     reference = prepare_reference(g * sin(theta) * mu, context(g * sin(theta) * mu, constraints=(friction,)))
     for mu_value, theta_value in zip(values(reference, mu), values(reference, theta), strict=True):
-        assert mu_value * __import__("math").tan(theta_value) < 1
+        assert mu_value * math.tan(theta_value) < 1
     assert reference.sample.size == 24
 
 
@@ -108,3 +110,19 @@ def test_a_dimensionally_inconsistent_reference_is_a_spec_error():
     with pytest.raises(SpecError) as raised:
         prepare_reference(m + g, context(m + g))
     assert "adds" in raised.value.message
+
+
+def test_the_declared_expected_dimension_must_match_the_reference():
+    base = context(m * g)
+    with pytest.raises(SpecError) as raised:
+        prepare_reference(m * g, SymbolicContext(base.symbols, expected_dimension=ACCELERATION))
+    assert raised.value.path == ("expected",)
+    assert (
+        prepare_reference(m * g, SymbolicContext(base.symbols, expected_dimension=FORCE)).dimension == FORCE
+    )
+
+
+def test_a_thin_constrained_domain_is_still_sampled():
+    thin = (mu * tan(theta) > 8,)
+    reference = prepare_reference(mu * g, context(mu * g * theta, constraints=thin))
+    assert reference.sample.size == 24

@@ -27,9 +27,13 @@ CONVERSIONS = [
 
 
 @pytest.mark.parametrize(
-    ("value", "source", "target", "expected"), CONVERSIONS, ids=[f"{c[0]} {c[1]} to {c[2]}" for c in CONVERSIONS]
+    ("value", "source", "target", "expected"),
+    CONVERSIONS,
+    ids=[f"{c[0]} {c[1]} to {c[2]}" for c in CONVERSIONS],
 )
-def test_temperature_conversion_is_exact(value: Fraction, source: str, target: str, expected: Fraction) -> None:
+def test_temperature_conversion_is_exact(
+    value: Fraction, source: str, target: str, expected: Fraction
+) -> None:
     assert parse_units(source).convert(value, parse_units(target)) == expected
 
 

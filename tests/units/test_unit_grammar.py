@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import time
-
 import pytest
 
 from physics.errors import AmbiguousInput, AnswerError, ParseError, TooLarge, UnknownUnit
@@ -111,7 +109,9 @@ UNKNOWN = [
 
 
 @pytest.mark.parametrize(
-    ("text", "name", "position"), [c for c in UNKNOWN if c[1] is not None], ids=[c[0] for c in UNKNOWN if c[1]]
+    ("text", "name", "position"),
+    [c for c in UNKNOWN if c[1] is not None],
+    ids=[c[0] for c in UNKNOWN if c[1]],
 )
 def test_unknown_unit_names_the_unit_and_its_position(text: str, name: str, position: int) -> None:
     with pytest.raises(UnknownUnit) as caught:
@@ -188,12 +188,11 @@ HOSTILE = [
 ]
 
 
+@pytest.mark.timeout(10)  # hostile input must fail fast; a hang fails here
 @pytest.mark.parametrize("text", HOSTILE, ids=[f"hostile-{i}" for i in range(len(HOSTILE))])
 def test_hostile_unit_strings_fail_fast_as_answer_errors(text: str) -> None:
-    start = time.perf_counter()
     with pytest.raises(AnswerError):
         parse_units(text)
-    assert time.perf_counter() - start < 2  # a guard against hangs, not a timing claim
 
 
 def test_over_long_unit_string_is_too_large() -> None:

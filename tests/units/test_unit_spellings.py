@@ -84,7 +84,9 @@ EXACT_SPELLINGS = [
 
 
 @pytest.mark.parametrize(("text", "dimension", "scale"), EXACT_SPELLINGS, ids=[c[0] for c in EXACT_SPELLINGS])
-def test_spelling_reads_as_unit_with_exact_si_factor(text: str, dimension: Dimension, scale: Fraction) -> None:
+def test_spelling_reads_as_unit_with_exact_si_factor(
+    text: str, dimension: Dimension, scale: Fraction
+) -> None:
     units = parse_units(text)
     assert units.dimension == dimension
     assert units.scale == scale
@@ -101,7 +103,9 @@ ANGLE_RATIOS = [
 ]
 
 
-@pytest.mark.parametrize(("text", "other", "ratio"), ANGLE_RATIOS, ids=[f"{a}-per-{b}" for a, b, _ in ANGLE_RATIOS])
+@pytest.mark.parametrize(
+    ("text", "other", "ratio"), ANGLE_RATIOS, ids=[f"{a}-per-{b}" for a, b, _ in ANGLE_RATIOS]
+)
 def test_angle_units_relate_exactly(text: str, other: str, ratio: Fraction) -> None:
     assert parse_units(text).scale / parse_units(other).scale == ratio
 

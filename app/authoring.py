@@ -1,0 +1,79 @@
+"""Vetting an instructor's upload: validate, derive and self-test it in a killable worker process.
+
+An upload is untrusted text whose model the engine must derive (sympy-heavy), so it never runs in the
+server process: one worker, a generous but hard time limit, the same memory limit as grading.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import multiprocessing
+from concurrent.futures import TimeoutError as FutureTimeout
+from dataclasses import dataclass, field
+from typing import Any, Literal
+
+from pebble import ProcessExpired, ProcessPool
+
+from app.grading.worker import limit_memory
+from problems.errors import ProblemInvalid
+from problems.loader import parse_problem
+from problems.selftest import verify_problem
+
+UPLOAD_SELFTEST_VARIANTS = 5
+
+
+@dataclass(frozen=True)
+class Vetted:
+    """The outcome of vetting: a clean document (JSON-ready) or every error found, with paths."""
+
+    document: dict[str, Any] | None
+    errors: list[tuple[str, str]] = field(default_factory=list)
+
+
+def vet(source: bytes, fmt: Literal["json", "yaml"]) -> Vetted:
+    try:
+        doc = parse_problem(source, fmt)
+    except ProblemInvalid as error:
+        return Vetted(None, error.errors)
+    report = verify_problem(doc, variants=UPLOAD_SELFTEST_VARIANTS)
+    if not report.ok:
+        errors = []
+        for failure in report.failures:
+            path = f"parts.{failure.part}" if failure.part else "model"
+            errors.append((path, f"self-test {failure.check}: {failure.detail}"))
+        return Vetted(None, errors)
+    return Vetted(doc.model_dump(mode="json"))
+
+
+class AuthoringPool:
+    def __init__(self, timeout: float, memory_mb: int):
+        self._timeout = timeout
+        self._memory_mb = memory_mb
+        self._pool: ProcessPool | None = None
+
+    def start(self) -> None:
+        context = multiprocessing.get_context("forkserver")
+        self._pool = ProcessPool(
+            max_workers=1, initializer=limit_memory, initargs=(self._memory_mb,), context=context
+        )
+
+    def close(self) -> None:
+        if self._pool is not None:
+            self._pool.stop()
+            self._pool.join(timeout=5)
+            self._pool = None
+
+    async def vet(self, source: bytes, fmt: Literal["json", "yaml"]) -> Vetted:
+        if self._pool is None:
+            self.start()
+        assert self._pool is not None
+        try:
+            return await asyncio.wrap_future(
+                self._pool.schedule(vet, args=(source, fmt), timeout=self._timeout)
+            )
+        except FutureTimeout:
+            return Vetted(
+                None, [("model", f"deriving and self-testing took longer than {self._timeout:.0f} s")]
+            )
+        except ProcessExpired:
+            return Vetted(None, [("model", "deriving and self-testing ran out of memory")])

@@ -1,0 +1,77 @@
+"""Problems as the service sees them: stored versions, read and compiled once per process, per variant."""
+
+from __future__ import annotations
+
+import logging
+import threading
+from collections import OrderedDict
+
+from app.db import problems as problem_repository
+from app.db.database import Database
+from app.db.errors import ProblemExists
+from app.db.records import ProblemRecord
+from problems.compiled import CompiledProblem, compile_problem
+from problems.loader import load_bank, parse_problem
+from problems.schema import ProblemDocument
+from problems.variants import Variant, draw_variant
+
+log = logging.getLogger("physcheck.catalog")
+
+
+class Catalog:
+    def __init__(self, database: Database, secret: str, documents_cached: int = 256):
+        self._database = database
+        self._secret = secret
+        self._documents: OrderedDict[str, ProblemDocument] = OrderedDict()
+        self._limit = documents_cached
+        self._lock = threading.Lock()
+
+    def sync_builtin(self) -> list[ProblemRecord]:
+        """Store the built-in bank: unchanged files keep their version, edited ones get a new one."""
+        saved = []
+        for doc in load_bank():
+            try:
+                with self._database.session() as session:
+                    saved.append(
+                        problem_repository.save_builtin(session, doc.id, doc.model_dump(mode="json"))
+                    )
+            except ProblemExists:
+                log.warning(
+                    "an uploaded problem already uses the bank id %r; the bank's is not served", doc.id
+                )
+        return saved
+
+    def get(self, problem_id: str, version: int | None = None) -> ProblemRecord:
+        with self._database.session(read_only=True) as session:
+            return problem_repository.get_problem(session, problem_id, version)
+
+    def list(self) -> list[ProblemRecord]:
+        with self._database.session(read_only=True) as session:
+            return problem_repository.list_problems(session)
+
+    def document(self, record: ProblemRecord) -> ProblemDocument:
+        """The stored document, validated when it was stored, so only its shape is read again."""
+        with self._lock:
+            cached = self._documents.get(record.document_hash)
+            if cached is not None:
+                self._documents.move_to_end(record.document_hash)
+                return cached
+        doc = parse_problem(dict(record.document), "json", check_meaning=False)
+        with self._lock:
+            self._documents[record.document_hash] = doc
+            while len(self._documents) > self._limit:
+                self._documents.popitem(last=False)
+        return doc
+
+    def compiled(self, record: ProblemRecord) -> CompiledProblem:
+        """Derivations and prepared references, cached by the bank's compiler per (id, version, hash)."""
+        return compile_problem(self.document(record), record.version)
+
+    def max_attempts(self, record: ProblemRecord, part_id: str) -> int | None:
+        """The part's own limit, else the problem's; None: unlimited."""
+        doc = self.document(record)
+        limit: int | None = getattr(doc.part(part_id), "max_attempts", None)
+        return limit if limit is not None else getattr(doc, "max_attempts", None)
+
+    def variant(self, record: ProblemRecord, student: str) -> Variant:
+        return draw_variant(self.document(record), record.version, student, self._secret)

@@ -1,0 +1,67 @@
+"""Grading a submission to a stored problem and filing it: acknowledged only once it is committed."""
+
+from __future__ import annotations
+
+from starlette.concurrency import run_in_threadpool
+
+from app.db import submissions as submission_repository
+from app.db.errors import AttemptsExhausted
+from app.db.records import ProblemRecord, SubmissionRecord
+from app.schemas.check import VerdictPublic
+from app.schemas.problems import SubmissionResult
+from app.services import Services
+from physics.verdict import Verdict
+
+
+async def submit_answer(
+    services: Services, record: ProblemRecord, part_id: str, student: str, answer: str
+) -> SubmissionResult:
+    catalog = services.catalog
+    max_attempts = catalog.max_attempts(record, part_id)
+    if max_attempts is not None:
+        used = await run_in_threadpool(_attempts_used, services, record, part_id, student)
+        if used >= max_attempts:  # spare the grading work; the insert below re-checks under lock
+            raise AttemptsExhausted(record.id, part_id, student, max_attempts)
+    compiled = await run_in_threadpool(catalog.compiled, record)
+    job = compiled.job(part_id, answer, catalog.variant(record, student))
+    verdict = await services.pool.check(job)
+    stored, used = await run_in_threadpool(
+        _file, services, record, part_id, student, answer, verdict, max_attempts
+    )
+    return SubmissionResult(
+        **VerdictPublic.of(verdict).model_dump(),
+        submission_id=stored.id,
+        attempts_used=used,
+        max_attempts=max_attempts,
+    )
+
+
+def _attempts_used(services: Services, record: ProblemRecord, part_id: str, student: str) -> int:
+    with services.database.session(read_only=True) as session:
+        return submission_repository.attempts_used(session, record.id, part_id, student)
+
+
+def _file(
+    services: Services,
+    record: ProblemRecord,
+    part_id: str,
+    student: str,
+    answer: str,
+    verdict: Verdict,
+    max_attempts: int | None,
+) -> tuple[SubmissionRecord, int]:
+    with services.database.session() as session:
+        stored = submission_repository.record_submission(
+            session,
+            problem_id=record.id,
+            problem_version=record.version,
+            part_id=part_id,
+            student=student,
+            answer=answer,
+            verdict=verdict,
+            max_attempts=max_attempts,
+        )
+        used = stored.attempt or submission_repository.attempts_used(session, record.id, part_id, student)
+        for hook in services.on_graded:
+            hook(session, stored)
+    return stored, used

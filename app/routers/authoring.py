@@ -1,0 +1,110 @@
+"""Instructors' problems: upload (JSON or YAML), new versions, retirement, and worked solutions."""
+
+from __future__ import annotations
+
+from typing import Any, Literal
+
+from fastapi import APIRouter, Request, Response
+from starlette.concurrency import run_in_threadpool
+
+from app.auth import Principal
+from app.db import problems as problem_repository
+from app.db.records import ProblemRecord
+from app.deps import Instructor, ServicesDep
+from app.errors import AppError, Forbidden
+from app.schemas.problems import ProblemCreated
+from app.services import Services
+from problems.errors import ProblemInvalid
+
+router = APIRouter(tags=["authoring"])
+
+_YAML_TYPES = {"application/yaml", "application/x-yaml", "text/yaml", "text/x-yaml"}
+_BODY_DOC: dict[str, Any] = {
+    "requestBody": {
+        "required": True,
+        "description": "A problem in the bank's own format (see problems/bank/*/problem.yaml).",
+        "content": {
+            "application/json": {"schema": {"type": "object"}},
+            "application/yaml": {"schema": {"type": "string"}},
+        },
+    }
+}
+
+
+class UnsupportedMediaType(AppError):
+    status, code = 415, "unsupported_media_type"
+
+
+class IdMismatch(AppError):
+    status, code = 422, "invalid_problem"
+
+
+def _format(request: Request) -> Literal["json", "yaml"]:
+    media = request.headers.get("content-type", "application/json").split(";")[0].strip().lower()
+    if media == "application/json":
+        return "json"
+    if media in _YAML_TYPES:
+        return "yaml"
+    raise UnsupportedMediaType(f"Send the problem as application/json or application/yaml, not {media}.")
+
+
+async def _vetted_document(request: Request, services: Services) -> dict[str, Any]:
+    vetted = await services.authoring.vet(await request.body(), _format(request))
+    if vetted.document is None:
+        raise ProblemInvalid(vetted.errors)
+    return vetted.document
+
+
+def _owned(services: Services, problem_id: str, principal: Principal) -> ProblemRecord:
+    record = services.catalog.get(problem_id)
+    if record.builtin or str(record.owner_key_id) != principal.key_id:
+        raise Forbidden(
+            "Only the instructor who uploaded a problem may change it; the built-in bank is read-only."
+        )
+    return record
+
+
+@router.post("/v1/problems", status_code=201, response_model=ProblemCreated, openapi_extra=_BODY_DOC)
+async def upload(request: Request, services: ServicesDep, principal: Instructor) -> ProblemCreated:
+    document = await _vetted_document(request, services)
+
+    def store() -> ProblemRecord:
+        with services.database.session() as session:
+            return problem_repository.create_problem(
+                session, document["id"], document, owner_key_id=int(principal.key_id)
+            )
+
+    record = await run_in_threadpool(store)
+    return ProblemCreated(id=record.id, version=record.version)
+
+
+@router.put("/v1/problems/{problem_id}", response_model=ProblemCreated, openapi_extra=_BODY_DOC)
+async def new_version(
+    problem_id: str, request: Request, services: ServicesDep, principal: Instructor
+) -> ProblemCreated:
+    await run_in_threadpool(_owned, services, problem_id, principal)
+    document = await _vetted_document(request, services)
+    if document["id"] != problem_id:
+        raise IdMismatch(
+            f"The document's id {document['id']!r} is not {problem_id!r}.",
+            [{"path": "id", "message": f"must be {problem_id!r}"}],
+        )
+
+    def store() -> ProblemRecord:
+        with services.database.session() as session:
+            return problem_repository.add_version(session, problem_id, document)
+
+    record = await run_in_threadpool(store)
+    return ProblemCreated(id=record.id, version=record.version)
+
+
+@router.delete("/v1/problems/{problem_id}", status_code=204)
+async def retire(problem_id: str, services: ServicesDep, principal: Instructor) -> Response:
+    await run_in_threadpool(_owned, services, problem_id, principal)
+
+    def store() -> None:
+        with services.database.session() as session:
+            problem_repository.retire_problem(session, problem_id)
+
+    await run_in_threadpool(store)
+    return Response(status_code=204)

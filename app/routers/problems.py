@@ -1,0 +1,84 @@
+"""Problems: the list, one student's variant, and submissions of answers to a part."""
+
+from __future__ import annotations
+
+from typing import Annotated
+
+from fastapi import APIRouter, Query
+from starlette.concurrency import run_in_threadpool
+
+from app.auth import Principal
+from app.deps import CurrentPrincipal, ServicesDep
+from app.errors import AppError, NotFound
+from app.grading.submit import submit_answer
+from app.schemas.problems import (
+    PartSummary,
+    ProblemPublic,
+    ProblemSummary,
+    StudentId,
+    SubmissionIn,
+    SubmissionResult,
+)
+from problems.variants import student_view
+
+router = APIRouter(tags=["problems"])
+
+
+class StudentNotAllowed(AppError):
+    status, code = 422, "malformed_request"
+
+
+def student_of(principal: Principal, named: str | None) -> str:
+    """Whose work this is: a student key's own identity, or the student an instructor names."""
+    if principal.student is not None:
+        if named is not None and named != principal.student:
+            raise StudentNotAllowed(
+                "A student key cannot name a student.", [{"path": "student", "message": "not allowed"}]
+            )
+        return principal.student
+    return named if named is not None else f"preview:{principal.key_id}"
+
+
+@router.get("/v1/problems", response_model=list[ProblemSummary])
+async def list_problems(services: ServicesDep, _: CurrentPrincipal) -> list[ProblemSummary]:
+    records = await run_in_threadpool(services.catalog.list)
+    summaries = []
+    for record in records:
+        doc = services.catalog.document(record)
+        summaries.append(
+            ProblemSummary(
+                id=doc.id,
+                title=doc.title,
+                topics=list(doc.topics),
+                parts=[PartSummary(id=p.id, kind=p.kind, prompt=p.prompt) for p in doc.parts],
+                version=record.version,
+                builtin=record.builtin,
+            )
+        )
+    return summaries
+
+
+@router.get("/v1/problems/{problem_id}", response_model=ProblemPublic)
+async def get_problem(
+    problem_id: str,
+    services: ServicesDep,
+    principal: CurrentPrincipal,
+    student: Annotated[StudentId | None, Query()] = None,
+) -> ProblemPublic:
+    who = student_of(principal, student)
+    record = await run_in_threadpool(services.catalog.get, problem_id)
+    view = student_view(services.catalog.document(record), services.catalog.variant(record, who))
+    return ProblemPublic.model_validate({**view, "version": record.version, "student": who})
+
+
+@router.post(
+    "/v1/problems/{problem_id}/parts/{part_id}/submissions", status_code=201, response_model=SubmissionResult
+)
+async def submit(
+    problem_id: str, part_id: str, body: SubmissionIn, services: ServicesDep, principal: CurrentPrincipal
+) -> SubmissionResult:
+    who = student_of(principal, body.student)
+    record = await run_in_threadpool(services.catalog.get, problem_id)
+    if part_id not in {p.id for p in services.catalog.document(record).parts}:
+        raise NotFound(f"Problem {problem_id!r} has no part {part_id!r}.")
+    return await submit_answer(services, record, part_id, who, body.answer)

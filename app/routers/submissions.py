@@ -1,0 +1,58 @@
+"""`GET /v1/submissions`: instructors see every submission, a student only its own."""
+
+from __future__ import annotations
+
+from typing import Annotated
+
+from fastapi import APIRouter, Query
+from starlette.concurrency import run_in_threadpool
+
+from app.db import submissions as submission_repository
+from app.db.records import Page, SubmissionRecord
+from app.deps import CurrentPrincipal, ServicesDep
+from app.errors import Forbidden
+from app.schemas.problems import StudentId, SubmissionPage, SubmissionPublic
+
+router = APIRouter(tags=["submissions"])
+
+MAX_PAGE = 1000
+
+
+@router.get("/v1/submissions", response_model=SubmissionPage)
+async def list_submissions(
+    services: ServicesDep,
+    principal: CurrentPrincipal,
+    problem: Annotated[str | None, Query(max_length=100)] = None,
+    student: Annotated[StudentId | None, Query()] = None,
+    limit: Annotated[int, Query(ge=1, le=MAX_PAGE)] = 100,
+    cursor: Annotated[str | None, Query(max_length=200)] = None,
+) -> SubmissionPage:
+    if principal.student is not None:
+        if student is not None and student != principal.student:
+            raise Forbidden("A student key sees only its own submissions.")
+        student = principal.student
+
+    def read() -> Page[SubmissionRecord]:
+        with services.database.session(read_only=True) as session:
+            return submission_repository.list_submissions(
+                session, problem_id=problem, student=student, limit=limit, cursor=cursor
+            )
+
+    page = await run_in_threadpool(read)
+    return SubmissionPage(items=[public(item) for item in page.items], next=page.next)
+
+
+def public(item: SubmissionRecord) -> SubmissionPublic:
+    return SubmissionPublic(
+        submission_id=item.id,
+        problem=item.problem_id,
+        part=item.part_id,
+        student=item.student,
+        answer=item.answer,
+        verdict=item.verdict.value,
+        score=item.score,
+        reason=item.reason.value,
+        feedback=item.feedback,
+        created_at=item.created_at,
+        problem_version=item.problem_version,
+    )

@@ -1,0 +1,116 @@
+"""Bodies of the problem and submission endpoints (API.md, "Problems and submissions")."""
+
+from __future__ import annotations
+
+import uuid
+from datetime import datetime
+from typing import Annotated, Any
+
+from pydantic import BaseModel, ConfigDict, Field, StrictStr
+
+from app.schemas.check import VerdictPublic
+
+StudentId = Annotated[StrictStr, Field(min_length=1, max_length=200)]
+
+
+class PartSummary(BaseModel):
+    id: str
+    kind: str
+    prompt: str
+
+
+class ProblemSummary(BaseModel):
+    id: str
+    title: str
+    topics: list[str]
+    parts: list[PartSummary]
+    version: int
+    builtin: bool
+
+
+class GivenValue(BaseModel):
+    value: int | float
+    unit: str
+    text: str
+
+
+class PartPublic(BaseModel):
+    id: str
+    kind: str
+    prompt: str
+    units: str | None
+    symbols: list[str]
+
+
+class ProblemPublic(BaseModel):
+    """One student's variant; never a reference answer."""
+
+    id: str
+    title: str
+    statement: str
+    given: dict[str, GivenValue]
+    symbols: dict[str, dict[str, Any]]
+    parts: list[PartPublic]
+    version: int
+    student: str
+
+
+class SubmissionIn(BaseModel):
+    # extra="forbid": a client may not send `score`, `correct`, `verdict` or anything else of ours.
+    model_config = ConfigDict(extra="forbid")
+
+    answer: StrictStr
+    student: StudentId | None = None
+
+
+class SubmissionResult(VerdictPublic):
+    submission_id: uuid.UUID
+    attempts_used: int
+    max_attempts: int | None
+
+
+class SubmissionPublic(BaseModel):
+    submission_id: uuid.UUID
+    problem: str
+    part: str
+    student: str
+    answer: str
+    verdict: str
+    score: float
+    reason: str
+    feedback: str
+    created_at: datetime
+    problem_version: int
+
+
+class SubmissionPage(BaseModel):
+    items: list[SubmissionPublic]
+    next: str | None
+
+
+class ProblemCreated(BaseModel):
+    id: str
+    version: int
+
+
+class ReferencePublic(BaseModel):
+    part: str
+    kind: str
+    text: str
+    latex: str
+    units: str | None = None
+
+
+class MethodPublic(BaseModel):
+    name: str
+    title: str
+    steps: list[dict[str, str]]
+
+
+class SolutionPublic(BaseModel):
+    id: str
+    version: int
+    references: list[ReferencePublic]
+    methods: list[MethodPublic]
+    agreement: dict[str, list[str]]
+    methods_agree: bool

@@ -1,0 +1,141 @@
+"""`derive`: every quantity by every method that reaches it, proved equal, checked by simulation."""
+
+from __future__ import annotations
+
+from functools import lru_cache
+
+import sympy
+
+from physics.engine.conservation import ConservationMethod
+from physics.engine.lagrange import LagrangeMethod
+from physics.engine.mechanics import Mechanics
+from physics.engine.method import Method, NotApplicable
+from physics.engine.mistakes import generate_limits, generate_mistakes
+from physics.engine.model import Model, Quantity
+from physics.engine.newton import NewtonMethod
+from physics.engine.proof import domain_points, prove_equal
+from physics.engine.results import Derivation, KnownMistake, LimitCase, MethodReport, SimulationCheck
+from physics.engine.simulation import Simulator
+from physics.errors import DerivationError
+
+SIMULATION_POINTS = 3
+MIN_METHODS = 2
+
+
+def _methods() -> tuple[type[Method], ...]:
+    return (LagrangeMethod, NewtonMethod, ConservationMethod)
+
+
+def derive(model: Model) -> Derivation:
+    """Derive every quantity of the model; DerivationError if fewer than two methods reach one, if they
+    disagree, or if the simulation disagrees. Cached per model (models are immutable and hashable)."""
+    return _derive(model)
+
+
+@lru_cache(maxsize=64)
+def _derive(model: Model) -> Derivation:
+    mech = Mechanics(model)
+    check_consistency(model, mech)
+    methods = [cls(model, mech) for cls in _methods()]
+    answers: dict[str, dict[str, sympy.Expr]] = {q.name: {} for q in model.quantities}
+    reports: list[MethodReport] = []
+    for method in methods:
+        method.derive()
+        results: dict[str, sympy.Expr] = {}
+        notes: list[str] = []
+        for quantity in model.quantities:
+            try:
+                value = method.answer(quantity)
+            except NotApplicable as reason:
+                notes.append(f"{quantity.name}: {reason}")
+                continue
+            _check_free_symbols(model, quantity, method, value)
+            results[quantity.name] = value
+            answers[quantity.name][method.name] = value
+        reports.append(method.report(results, notes))
+    quantities: dict[str, sympy.Expr] = {}
+    agreement: dict[str, tuple[str, ...]] = {}
+    proofs: dict[str, str] = {}
+    for quantity in model.quantities:
+        derived = answers[quantity.name]
+        if len(derived) < MIN_METHODS:
+            raise DerivationError(
+                f"{quantity.name}: only {len(derived)} method(s) could derive it ({', '.join(derived) or 'none'}); "
+                f"at least {MIN_METHODS} are required", quantity=quantity.name)
+        names = list(derived)
+        first = derived[names[0]]
+        how = []
+        for other in names[1:]:
+            how.append(f"{names[0]} = {other}: " + prove_equal(
+                first, derived[other], model, quantity.name, (names[0], other)))
+        quantities[quantity.name] = _simplest(list(derived.values()))
+        agreement[quantity.name] = tuple(names)
+        proofs[quantity.name] = "; ".join(how)
+    simulation = _simulate(model, quantities, methods[0])
+    lagrange = methods[0]
+    variants: dict[Model, Method] = {model: lagrange}
+
+    def rederive(changed: Model, quantity: Quantity) -> sympy.Expr | None:
+        method = variants.setdefault(changed, LagrangeMethod(changed, Mechanics(changed)))
+        try:
+            return method.answer(quantity)
+        except (NotApplicable, DerivationError):
+            return None
+
+    mistakes: dict[str, tuple[KnownMistake, ...]] = {}
+    limits: dict[str, tuple[LimitCase, ...]] = {}
+    for quantity in model.quantities:
+        reference = quantities[quantity.name]
+        mistakes[quantity.name] = generate_mistakes(model, quantity, reference, rederive)
+        limits[quantity.name] = generate_limits(model, reference)
+    return Derivation(quantities, tuple(reports), agreement, simulation, mistakes, limits, proofs)
+
+
+def check_consistency(model: Model, mech: Mechanics) -> None:
+    """The two descriptions must describe one system: the positions satisfy every constraint, and the
+    constraints leave exactly as many degrees of freedom as there are coordinates."""
+    place = {d.symbol: d.mapping for d in mech.dofs}
+    for constraint in model.constraints:
+        residue = sympy.simplify(constraint.gap.subs(place))
+        if residue != 0:
+            raise DerivationError(
+                f"constraint {constraint.name!r}: the positions in terms of the coordinates violate it "
+                f"(gap = {residue} instead of 0)", quantity=constraint.name)
+    if not model.constraints:
+        free = len(mech.dofs)
+    else:
+        point = domain_points(model, 1)[0]
+        at = {**point, **{q: sympy.Rational(3, 10) + sympy.Rational(i, 7) for i, q in enumerate(mech.q)
+                          if q not in point}}
+        jacobian = sympy.Matrix([[sympy.diff(c.gap, d.symbol) for d in mech.dofs] for c in model.constraints])
+        numeric = jacobian.subs(place).subs(at).evalf(20)
+        free = len(mech.dofs) - numeric.rank(iszerofunc=lambda x: abs(x) < 1e-12)
+    if free != len(mech.q):
+        raise DerivationError(f"the constraints leave {free} degrees of freedom but the model has "
+                              f"{len(mech.q)} coordinates")
+
+
+def _check_free_symbols(model: Model, quantity: Quantity, method: Method, value: sympy.Expr) -> None:
+    extra = value.free_symbols - set(model.parameters)
+    if extra:
+        raise DerivationError(
+            f"{quantity.name}: {method.title} leaves {sorted(map(str, extra))} in the answer {value}; give their "
+            "values in the model's state", quantity=quantity.name)
+
+
+def _simplest(candidates: list[sympy.Expr]) -> sympy.Expr:
+    forms: list[sympy.Expr] = []
+    for expr in candidates:
+        forms += [sympy.simplify(expr), sympy.factor(sympy.expand_trig(expr))]
+    return min(forms, key=lambda e: (sympy.count_ops(e), len(str(e))))
+
+
+def _simulate(model: Model, quantities: dict[str, sympy.Expr], lagrange: Method) -> dict[str, SimulationCheck]:
+    simulator = Simulator(model, lagrange.equilibrium)
+    points = domain_points(model, SIMULATION_POINTS, seed=7)
+    result: dict[str, SimulationCheck] = {}
+    for quantity in model.quantities:
+        check = simulator.check(quantity, quantities[quantity.name], points)
+        if check is not None:
+            result[quantity.name] = check
+    return result

@@ -1,0 +1,185 @@
+"""Known mistakes and physical limits, generated from the model (never typed in by hand).
+
+Each mistake is the answer a specific slip produces, re-derived where the slip changes the physics
+(a moment of inertia forgotten, a support treated as fixed, energy conserved through an inelastic
+collision), with feedback that names the slip, not the answer.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from collections.abc import Callable
+
+import sympy
+
+from physics.engine import collision
+from physics.engine.mechanics import Mechanics
+from physics.engine.model import ConstraintKind, Model, Quantity, QuantityKind
+from physics.engine.proof import domain_points
+from physics.engine.results import KnownMistake, LimitCase
+
+Rederive = Callable[[Model, Quantity], sympy.Expr | None]
+
+SWAPPED_TRIG = ("Check which component of each force lies along the surface and which is perpendicular to "
+                "it: a sine and a cosine are swapped.")
+DROPPED_PROJECTION = ("A projection factor is missing: check each place where a force or an acceleration is "
+                      "resolved into components.")
+FRICTION_SIGN = "Kinetic friction opposes the sliding: check the direction of the friction force."
+FIXED_SUPPORT = ("This treats the {body} as fixed. It moves too, which changes the accelerations and the "
+                 "contact force.")
+NO_INERTIA = ("A rolling or spinning body also has rotational kinetic energy, (1/2) I omega^2, and needs a "
+              "torque to spin up: include its moment of inertia.")
+INELASTIC_ENERGY = ("Kinetic energy is not conserved in a perfectly inelastic collision. Use the quantity that "
+                    "is conserved during the impact, then energy conservation afterwards.")
+FRACTION_KEPT = "That is the fraction of the kinetic energy that remains after the collision, not the fraction lost."
+ONE_MASS = ("Both {bodies} move: the relative motion is governed by the reduced mass of the pair, not by the "
+            "mass of one of them.")
+TOTAL_MASS = "The relative motion is governed by the reduced mass of the pair, not by the total mass."
+
+
+def supports(model: Model) -> list[str]:
+    """Bodies another body rests on: in a two-body surface contact, the one placed by fewer coordinates."""
+    mech = Mechanics(model)
+    found: list[str] = []
+    coords = {b.name: set().union(*(e.free_symbols for _, e in b.position)) & set(mech.q) for b in model.bodies}
+    for constraint in model.constraints:
+        if constraint.kind is not ConstraintKind.SURFACE:
+            continue
+        names = sorted({d.body for d in mech.dofs if constraint.gap.has(d.symbol)})
+        if len(names) == 2:
+            a, b = names
+            if coords[a] < coords[b]:
+                found.append(a)
+            elif coords[b] < coords[a]:
+                found.append(b)
+    return found
+
+
+def generate_mistakes(model: Model, quantity: Quantity, reference: sympy.Expr,
+                      rederive: Rederive) -> tuple[KnownMistake, ...]:
+    candidates: list[tuple[sympy.Expr | None, str]] = []
+    trig = reference.atoms(sympy.sin, sympy.cos)
+    if trig:
+        swap = {t: (sympy.cos if isinstance(t, sympy.sin) else sympy.sin)(t.args[0]) for t in trig}
+        candidates.append((reference.subs(swap, simultaneous=True), SWAPPED_TRIG))
+        numerator, _ = sympy.fraction(sympy.factor(reference))
+        for factor in sympy.Mul.make_args(numerator):
+            if isinstance(factor, sympy.sin | sympy.cos | sympy.tan):
+                candidates.append((reference / factor, DROPPED_PROJECTION))
+    for friction in model.frictions:
+        if reference.has(*friction.coefficient.free_symbols):
+            candidates.append((reference.subs(friction.coefficient, -friction.coefficient), FRICTION_SIGN))
+    for body in supports(model):
+        mass = model.body(body).mass
+        if isinstance(mass, sympy.Symbol):
+            candidates.append((_limit(reference, mass, sympy.oo), FIXED_SUPPORT.format(body=body)))
+    if any(b.inertia != 0 for b in model.bodies):
+        flat = dataclasses.replace(model, bodies=tuple(dataclasses.replace(b, inertia=sympy.Integer(0))
+                                                       for b in model.bodies))
+        candidates.append((rederive(flat, quantity), NO_INERTIA))
+    if model.collision is not None and quantity.kind is QuantityKind.PROJECTILE_SPEED:
+        candidates.append((_energy_conserved_speed(model), INELASTIC_ENERGY))
+    if quantity.kind is QuantityKind.ENERGY_FRACTION_LOST:
+        candidates.append((1 - reference, FRACTION_KEPT))
+    if quantity.kind in (QuantityKind.ANGULAR_FREQUENCY, QuantityKind.PERIOD):
+        candidates += _mass_mistakes(model, quantity, reference, rederive)
+    return _distinct(model, reference, candidates)
+
+
+def _mass_mistakes(model: Model, quantity: Quantity, reference: sympy.Expr,
+                   rederive: Rederive) -> list[tuple[sympy.Expr | None, str]]:
+    stiffness = rederive(model, Quantity(quantity.name, QuantityKind.STIFFNESS, quantity.target))
+    if stiffness is None:
+        return []
+    result: list[tuple[sympy.Expr | None, str]] = []
+    for pair in model.potentials:
+        if len(pair.bodies) != 2:
+            continue
+        masses = [model.body(b).mass for b in pair.bodies]
+        options = [(masses[0], ONE_MASS.format(bodies=" and ".join(pair.bodies))), (masses[0] + masses[1],
+                                                                                       TOTAL_MASS)]
+        for mass, feedback in options:
+            omega = sympy.sqrt(stiffness / mass)
+            result.append((omega if quantity.kind is QuantityKind.ANGULAR_FREQUENCY else 2 * sympy.pi / omega,
+                           feedback))
+    return result
+
+
+def _energy_conserved_speed(model: Model) -> sympy.Expr | None:
+    hit = model.collision
+    assert hit is not None
+    after = collision.merged(model)
+    mech = Mechanics(after)
+    at, reaches = collision._points(model)
+    rise = mech.potential.subs(reaches) - mech.potential.subs(at)
+    return sympy.simplify(sympy.sqrt(2 * rise / hit.projectile_mass))
+
+
+def _limit(expr: sympy.Expr, symbol: sympy.Symbol, value: sympy.Expr) -> sympy.Expr | None:
+    try:
+        result = sympy.limit(expr, symbol, value)
+    except (NotImplementedError, ValueError):
+        return None
+    if result.has(sympy.oo, -sympy.oo, sympy.zoo, sympy.nan, sympy.AccumBounds):
+        return None
+    return sympy.simplify(result)
+
+
+def _distinct(model: Model, reference: sympy.Expr,
+              candidates: list[tuple[sympy.Expr | None, str]]) -> tuple[KnownMistake, ...]:
+    """Drop candidates that vanish, equal the answer or repeat another, compared at a few domain points."""
+    points = domain_points(model, 4, seed=11)
+
+    def values(expr: sympy.Expr) -> list[complex] | None:
+        try:
+            return [complex(sympy.N(expr.subs(p), 15)) for p in points]
+        except (TypeError, ValueError):
+            return None
+
+    def same(a: list[complex], b: list[complex]) -> bool:
+        return all(abs(x - y) <= 1e-9 * max(1.0, abs(x), abs(y)) for x, y in zip(a, b, strict=True))
+
+    answer = values(reference)
+    kept: list[tuple[KnownMistake, list[complex]]] = []
+    for expr, feedback in candidates:
+        if expr is None:
+            continue
+        seen = values(expr)
+        if seen is None or answer is None or all(abs(v) < 1e-12 for v in seen) or same(seen, answer):
+            continue
+        if any(same(seen, other) for _, other in kept):
+            continue
+        kept.append((KnownMistake(expr, feedback), seen))
+    return tuple(k for k, _ in kept)
+
+
+def generate_limits(model: Model, reference: sympy.Expr) -> tuple[LimitCase, ...]:
+    """Physical limits in which the answer stays finite: supports held fixed, angles and friction to zero,
+    a light body, an inertia parameter to zero."""
+    cases: list[tuple[sympy.Symbol, sympy.Expr, str]] = []
+    for body in supports(model):
+        mass = model.body(body).mass
+        if isinstance(mass, sympy.Symbol):
+            cases.append((mass, sympy.oo, f"the {body} held fixed ({mass} → ∞)"))
+    for symbol, low, _ in model.ranges:
+        if low == 0:
+            cases.append((symbol, sympy.Integer(0), f"{symbol} → 0"))
+    for friction in model.frictions:
+        if isinstance(friction.coefficient, sympy.Symbol):
+            cases.append((friction.coefficient, sympy.Integer(0), "no friction"))
+    masses = [b.mass for b in model.bodies if isinstance(b.mass, sympy.Symbol)]
+    if len(set(masses)) >= 2:
+        for mass in dict.fromkeys(masses):
+            cases.append((mass, sympy.Integer(0), f"{mass} much lighter than the other masses"))
+    placed = set().union(*(e.free_symbols for b in model.bodies for _, e in b.position),
+                         *(b.mass.free_symbols for b in model.bodies))
+    for rigid in model.bodies:
+        for symbol in rigid.inertia.free_symbols - placed:
+            cases.append((symbol, sympy.Integer(0), f"{symbol} → 0: no rotational inertia"))
+    result: list[LimitCase] = []
+    for symbol, value, description in cases:
+        if not reference.has(symbol):
+            continue
+        if _limit(reference, symbol, value) is not None:
+            result.append(LimitCase({symbol: value}, description))
+    return tuple(result)

@@ -1,0 +1,372 @@
+"""Numerical checks: integrate the unsolved equations of motion with RK4 and measure each quantity.
+
+The integrator only sees Lagrange's equations as a linear system A(q, q') [q'', lambda] = b(q, q'),
+compiled with `lambdify(..., "math")` and solved numerically at every instant; it never sees the
+closed-form answer, which is only evaluated at the end to be compared with what was measured.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from functools import cached_property
+from typing import Any
+
+import sympy
+
+from physics.engine.collision import SPEED, merged
+from physics.engine.lagrange import LagrangeMethod
+from physics.engine.mechanics import Mechanics
+from physics.engine.model import Model, Quantity, QuantityKind
+from physics.engine.results import SimulationCheck
+from physics.errors import DerivationError
+
+TOLERANCE = 1e-3
+Point = dict[sympy.Symbol, float]
+Vector = list[float]
+Measured = tuple[str, float, float | None]  # (what was compared, measured value, own error or None)
+
+
+def _compile(args: Sequence[sympy.Symbol], exprs: Sequence[sympy.Expr]) -> Callable[..., list[float]]:
+    function: Callable[..., Any] = sympy.lambdify(list(args), list(exprs), "math", dummify=True)
+    return lambda *values: [float(v) for v in function(*values)]
+
+
+def solve_numeric(matrix: list[list[float]], rhs: Vector) -> Vector:
+    """Gaussian elimination with partial pivoting (the systems here are a handful of unknowns)."""
+    n = len(rhs)
+    a = [[*row, rhs[i]] for i, row in enumerate(matrix)]
+    for col in range(n):
+        pivot = max(range(col, n), key=lambda r: abs(a[r][col]))
+        if abs(a[pivot][col]) < 1e-300:
+            raise DerivationError("the equations of motion are singular in the simulation")
+        a[col], a[pivot] = a[pivot], a[col]
+        for r in range(col + 1, n):
+            factor = a[r][col] / a[col][col]
+            for c in range(col, n + 1):
+                a[r][c] -= factor * a[col][c]
+    x = [0.0] * n
+    for r in range(n - 1, -1, -1):
+        x[r] = (a[r][n] - sum(a[r][c] * x[c] for c in range(r + 1, n))) / a[r][r]
+    return x
+
+
+class Dynamics:
+    """The model's equations of motion, compiled for numerical integration."""
+
+    def __init__(self, model: Model) -> None:
+        self.model = model
+        self.mech = Mechanics(model)
+        equations, unknowns = LagrangeMethod(model, self.mech).system
+        matrix, rhs = sympy.linear_eq_to_matrix(equations, unknowns)
+        self.n = len(self.mech.q)
+        self.size = len(unknowns)
+        self.params = [p for p in model.parameters if p not in self.mech.q]
+        args = [*self.mech.q, *self.mech.qd, *self.params]
+        self._matrix = _compile(args, list(matrix))
+        self._rhs = _compile(args, list(rhs))
+        position = [*self.mech.q, *self.params]
+        self._potential = _compile(position, [self.mech.potential])
+        self._mapping = _compile(position, [d.mapping for d in self.mech.dofs])
+        self._mass = _compile(position, list(self.mech.mass_matrix))
+
+    def values(self, point: Point) -> Vector:
+        return [point[p] for p in self.params]
+
+    def unknowns(self, q: Vector, qd: Vector, params: Vector, extra: Vector | None = None) -> Vector:
+        flat = self._matrix(*q, *qd, *params)
+        matrix = [flat[i * self.size:(i + 1) * self.size] for i in range(self.size)]
+        rhs = self._rhs(*q, *qd, *params)
+        if extra is not None:
+            rhs = [r + (extra[i] if i < self.n else 0.0) for i, r in enumerate(rhs)]
+        return solve_numeric(matrix, rhs)
+
+    def derivative(self, params: Vector) -> Callable[[Vector], Vector]:
+        n = self.n
+        return lambda y: y[n:] + self.unknowns(y[:n], y[n:], params)[:n]
+
+    def potential(self, q: Vector, params: Vector) -> float:
+        return self._potential(*q, *params)[0]
+
+    def positions(self, q: Vector, params: Vector) -> Vector:
+        return self._mapping(*q, *params)
+
+    def mass(self, q: Vector, params: Vector) -> list[list[float]]:
+        flat = self._mass(*q, *params)
+        return [flat[i * self.n:(i + 1) * self.n] for i in range(self.n)]
+
+
+def rk4(f: Callable[[Vector], Vector], y: Vector, dt: float, steps: int) -> list[Vector]:
+    """Classical fourth-order Runge-Kutta; returns every state including the first."""
+    states = [y]
+    for _ in range(steps):
+        k1 = f(y)
+        k2 = f([a + dt / 2 * b for a, b in zip(y, k1, strict=True)])
+        k3 = f([a + dt / 2 * b for a, b in zip(y, k2, strict=True)])
+        k4 = f([a + dt * b for a, b in zip(y, k3, strict=True)])
+        y = [a + dt / 6 * (b + 2 * c + 2 * d + e) for a, b, c, d, e in zip(y, k1, k2, k3, k4, strict=True)]
+        states.append(y)
+    return states
+
+
+Measure = Callable[[Quantity, Point, float], Measured]
+
+
+@dataclass
+class Simulator:
+    """Measures the model's quantities numerically at given parameter points."""
+
+    model: Model
+    equilibrium_of: Callable[[str], sympy.Expr]
+
+    @cached_property
+    def dynamics(self) -> Dynamics:
+        return Dynamics(self.model)
+
+    def check(self, quantity: Quantity, reference: sympy.Expr, points: Sequence[Point]) -> SimulationCheck | None:
+        measure = self._measures().get(quantity.kind)
+        if measure is None:
+            return None
+        worst = 0.0
+        compared = ""
+        for point in points:
+            expected = _evaluate(reference, point)
+            compared, measured, error = measure(quantity, point, expected)
+            if error is None:
+                error = abs(measured - expected) / max(abs(expected), 1e-12)
+            worst = max(worst, error)
+            if not error <= TOLERANCE:
+                raise DerivationError(
+                    f"{quantity.name}: the simulation disagrees with the derivation ({compared}): measured "
+                    f"{measured:.8g}, derived {reference} = {expected:.8g} (relative error {error:.2g}) at "
+                    + ", ".join(f"{s}={v:.4g}" for s, v in point.items()), quantity=quantity.name)
+        return SimulationCheck(compared, worst, len(points))
+
+    def _measures(self) -> dict[QuantityKind, Measure]:
+        return {
+            QuantityKind.ACCELERATION: self._acceleration,
+            QuantityKind.FORCE: self._force,
+            QuantityKind.EQUILIBRIUM: self._equilibrium,
+            QuantityKind.ANGULAR_FREQUENCY: self._frequency,
+            QuantityKind.PERIOD: self._period,
+            QuantityKind.STIFFNESS: self._stiffness,
+            QuantityKind.POTENTIAL_FORCE: self._potential_force,
+            QuantityKind.SOLVE: self._solve,
+            QuantityKind.PROJECTILE_SPEED: self._collision,
+            QuantityKind.ENERGY_FRACTION_LOST: self._collision,
+        }
+
+    # --- dynamics from the model's state -----------------------------------------------------
+
+    def _start(self, point: Point) -> tuple[Vector, Vector]:
+        state = dict(self.model.state)
+        q = [_evaluate(state.get(c.symbol, c.symbol if c.symbol in point else sympy.Integer(0)), point)
+             for c in self.model.coordinates]
+        qd = [_evaluate(state.get(c.velocity, sympy.Integer(0)), point) for c in self.model.coordinates]
+        return q, qd
+
+    def _trajectory_around(self, point: Point, h: float = 1e-2, steps: int = 10) -> tuple[Vector, ...]:
+        dyn = self.dynamics
+        q, qd = self._start(point)
+        f = dyn.derivative(dyn.values(point))
+        forward = rk4(f, q + qd, h / steps, steps)[-1]
+        backward = rk4(f, q + qd, -h / steps, steps)[-1]
+        return backward[:dyn.n], q, forward[:dyn.n]
+
+    def _acceleration(self, quantity: Quantity, point: Point, expected: float) -> Measured:
+        h = 1e-2
+        before, now, after = self._trajectory_around(point, h)
+        i = [c.name for c in self.model.coordinates].index(quantity.target)
+        return ("second difference of the integrated trajectory",
+                (after[i] - 2 * now[i] + before[i]) / h**2, None)
+
+    def _force(self, quantity: Quantity, point: Point, expected: float) -> Measured:
+        """Cartesian accelerations measured on the trajectory, then Newton's law along each normal."""
+        h = 1e-2
+        dyn, mech = self.dynamics, self.dynamics.mech
+        params = dyn.values(point)
+        before, now, after = (dyn.positions(q, params) for q in self._trajectory_around(point, h))
+        accel = [(a - 2 * b + c) / h**2 for a, b, c in zip(before, now, after, strict=True)]
+        q_now = self._trajectory_around(point, h)[1]
+        grads, base, per_lambda, masses = self._force_parts(q_now, point)
+        k = len(grads)
+        matrix = [[sum(g * (x + y) for g, x, y in zip(grads[r], grads[c], per_lambda[c], strict=True))
+                   for c in range(k)] for r in range(k)]
+        rhs = [sum(g * (m * a - f) for g, m, a, f in zip(grads[r], masses, accel, base, strict=True))
+               for r in range(k)]
+        lam = solve_numeric(matrix, rhs)
+        index = [c.name for c in self.model.constraints].index(quantity.target)
+        del mech
+        return "Newton's law applied to the accelerations measured on the integrated trajectory", lam[index], None
+
+    @cached_property
+    def _force_functions(self) -> tuple[Callable[..., list[float]], ...]:
+        dyn, mech = self.dynamics, self.dynamics.mech
+        position = [*mech.q, *dyn.params]
+        place = {d.symbol: d.mapping for d in mech.dofs}
+        grads = [g.subs(place) for k in range(len(self.model.constraints)) for g in mech.gap_gradient(k)]
+        base = [(-sympy.diff(mech.cartesian_potential, d.symbol)).subs(place) for d in mech.dofs]
+        units = []
+        for k in range(len(self.model.constraints)):
+            unit = [sympy.Integer(1 if j == k else 0) for j in range(len(self.model.constraints))]
+            units += mech.friction_forces(unit)
+        masses = [d.inertia for d in mech.dofs]
+        return tuple(_compile(position, exprs) for exprs in (grads, base, units, masses))
+
+    def _force_parts(self, q: Vector, point: Point) -> tuple[list[Vector], Vector, list[Vector], Vector]:
+        values = [*q, *self.dynamics.values(point)]
+        grads_f, base_f, units_f, masses_f = self._force_functions
+        n = len(self.dynamics.mech.dofs)
+        flat_g, flat_u = grads_f(*values), units_f(*values)
+        grads = [flat_g[i * n:(i + 1) * n] for i in range(len(flat_g) // n)]
+        units = [flat_u[i * n:(i + 1) * n] for i in range(len(flat_u) // n)]
+        return grads, base_f(*values), units, masses_f(*values)
+
+    def _solve(self, quantity: Quantity, point: Point, expected: float) -> Measured:
+        """Integrate with the derived parameter value: the inner acceleration must vanish, measured against
+        the acceleration with half that value."""
+        inner, parameter = quantity.inner, quantity.parameter
+        if inner is None or parameter is None or inner.kind is not QuantityKind.ACCELERATION:
+            raise DerivationError(f"{quantity.name}: no simulation for this kind of condition")
+        at_value = self._acceleration(inner, {**point, parameter: expected}, 0.0)[1]
+        at_half = self._acceleration(inner, {**point, parameter: expected / 2}, 0.0)[1]
+        return ("acceleration of the integrated motion with the derived value (relative to half the value)",
+                at_value, abs(at_value) / max(abs(at_half), 1e-300))
+
+    # --- potentials and oscillations ---------------------------------------------------------
+
+    def _oscillate(self, coordinate: str, point: Point) -> tuple[float, list[float], float]:
+        """(equilibrium, turning-point values, measured period) of a small oscillation."""
+        dyn = self.dynamics
+        params = dyn.values(point)
+        i = [c.name for c in self.model.coordinates].index(coordinate)
+        q0 = _evaluate(self.equilibrium_of(coordinate), point)
+        scale = max(abs(q0), 1.0)
+        base = [q0 if j == i else 0.0 for j in range(dyn.n)]
+        h = 1e-3 * scale
+
+        def shifted(delta: float) -> Vector:
+            return [b + (delta if k == i else 0.0) for k, b in enumerate(base)]
+
+        stiffness = (dyn.potential(shifted(h), params) - 2 * dyn.potential(base, params)
+                     + dyn.potential(shifted(-h), params)) / h**2
+        inertia = dyn.mass(base, params)[i][i]
+        if stiffness <= 0:
+            raise DerivationError(f"{coordinate}: the potential is not a minimum at the equilibrium {q0}")
+        estimate = 2 * math.pi * math.sqrt(inertia / stiffness)
+        per_period = 400
+        start = shifted(1e-3 * scale)
+        states = rk4(dyn.derivative(params), start + [0.0] * dyn.n, estimate / per_period, int(3.3 * per_period))
+        values = [s[i] - q0 for s in states]
+        crossings = [k + values[k] / (values[k] - values[k + 1]) for k in range(len(values) - 1)
+                     if values[k] < 0 <= values[k + 1]]
+        if len(crossings) < 2:
+            raise DerivationError(f"{coordinate}: no oscillation seen in the simulation")
+        period = (crossings[-1] - crossings[0]) / (len(crossings) - 1) * estimate / per_period
+        return q0, [max(values) + q0, min(values) + q0], period
+
+    def _equilibrium(self, quantity: Quantity, point: Point, expected: float) -> Measured:
+        _, (high, low), _ = self._oscillate(quantity.target, point)
+        return "centre of a small integrated oscillation", (high + low) / 2, None
+
+    def _frequency(self, quantity: Quantity, point: Point, expected: float) -> Measured:
+        omega = 2 * math.pi / self._oscillate(quantity.target, point)[2]
+        return "2 pi / period of the integrated motion", omega, None
+
+    def _period(self, quantity: Quantity, point: Point, expected: float) -> Measured:
+        return "period of the integrated motion", self._oscillate(quantity.target, point)[2], None
+
+    def _coordinate_point(self, coordinate: str, point: Point) -> tuple[int, Vector, Vector]:
+        dyn = self.dynamics
+        i = [c.name for c in self.model.coordinates].index(coordinate)
+        q = [point.get(c.symbol, 0.0) for c in self.model.coordinates]
+        return i, q, dyn.values(point)
+
+    def _stiffness(self, quantity: Quantity, point: Point, expected: float) -> Measured:
+        dyn = self.dynamics
+        i, _, params = self._coordinate_point(quantity.target, point)
+        q0 = _evaluate(self.equilibrium_of(quantity.target), point)
+        h = 1e-4 * max(abs(q0), 1.0)
+        values = [dyn.potential([q0 + d if j == i else 0.0 for j in range(dyn.n)], params) for d in (-h, 0, h)]
+        return "second difference of the potential energy", (values[0] - 2 * values[1] + values[2]) / h**2, None
+
+    def _potential_force(self, quantity: Quantity, point: Point, expected: float) -> Measured:
+        dyn = self.dynamics
+        i, q, params = self._coordinate_point(quantity.target, point)
+        h = 1e-5 * max(abs(q[i]), 1.0)
+        up = dyn.potential([v + (h if j == i else 0.0) for j, v in enumerate(q)], params)
+        down = dyn.potential([v - (h if j == i else 0.0) for j, v in enumerate(q)], params)
+        return "central difference of the potential energy", -(up - down) / (2 * h), None
+
+    @cached_property
+    def _after(self) -> Dynamics:
+        return Dynamics(merged(self.model))
+
+    @cached_property
+    def _along(self) -> Callable[..., list[float]]:
+        """d(target position . direction)/dq, compiled: how the target moves along the projectile's path."""
+        hit = self.model.collision
+        assert hit is not None
+        mech = self.dynamics.mech
+        direction = dict(hit.direction)
+        norm = sympy.sqrt(sympy.Add(*(v**2 for v in direction.values())))
+        along = sympy.Add(*(direction.get(axis, 0) / norm * expr for axis, expr in self.model.body(hit.target).position))
+        return _compile([*mech.q, *self.dynamics.params], [sympy.diff(along, q) for q in mech.q])
+
+    def _collision(self, quantity: Quantity, point: Point, expected: float) -> Measured:
+        """The projectile couples to the target by a stiff drag until they move together (a perfectly
+        inelastic collision); then the merged body moves until it turns back."""
+        hit = self.model.collision
+        assert hit is not None
+        before, after = self.dynamics, self._after
+        params = before.values(point)
+        n = before.n
+        names = [c.name for c in self.model.coordinates]
+        at = dict(hit.at)
+        q0 = [_evaluate(at.get(name, sympy.Integer(0)), point) for name in names]
+        mass = _evaluate(hit.projectile_mass, point)
+        speed = expected if quantity.kind is QuantityKind.PROJECTILE_SPEED else 1.0
+        tau = 1e-4
+        drag = mass / tau
+
+        def f(y: Vector) -> Vector:
+            q, qd, u = y[:n], y[n:2 * n], y[2 * n]
+            along = self._along(*q, *params)
+            force = drag * (u - sum(a * b for a, b in zip(along, qd, strict=True)))
+            qdd = before.unknowns(q, qd, params, extra=[force * a for a in along])[:n]
+            return [*qd, *qdd, -force / mass]
+
+        end = rk4(f, [*q0, *[0.0] * n, speed], tau / 10, 300)[-1]
+        q1, qd1, u1 = end[:n], end[n:2 * n], end[2 * n]
+        matrix = before.mass(q1, params)
+        kinetic = 0.5 * mass * u1**2 + 0.5 * sum(qd1[i] * matrix[i][j] * qd1[j] for i in range(n) for j in range(n))
+        initial = 0.5 * mass * speed**2
+        lost = (initial - kinetic - (before.potential(q1, params) - before.potential(q0, params))) / initial
+        if quantity.kind is QuantityKind.ENERGY_FRACTION_LOST:
+            return "kinetic energy lost in an integrated stiff inelastic coupling", lost, None
+        (name, target_text), = hit.reaches
+        i = names.index(name)
+        target = _evaluate(target_text, point)
+        step = after.derivative(after.values(point))
+        y, reached = [*q1, *qd1], q1[i]
+        sign = math.copysign(1.0, qd1[i])
+        for _ in range(200_000):
+            y = rk4(step, y, 2e-3, 1)[-1]
+            reached = max(reached * sign, y[i] * sign) * sign
+            if y[n + i] * sign <= 0:
+                break
+        else:
+            raise DerivationError(f"{quantity.name}: the simulated motion never turned back")
+        return ("turning point reached after an integrated inelastic collision at the derived speed", reached,
+                abs(reached - target) / max(abs(target), 1e-12))
+
+
+def _evaluate(expr: sympy.Expr, point: Point) -> float:
+    value = sympy.N(expr.subs(point), 20)
+    if not value.is_real:
+        raise DerivationError(f"{expr} is not real at {point}")
+    return float(value)
+
+
+__all__ = ["SPEED", "Dynamics", "Simulator", "merged", "rk4"]

@@ -1,0 +1,139 @@
+"""Hostile answers get a quick `invalid` and never hold up honest checks; overrunning workers are killed."""
+
+from __future__ import annotations
+
+import asyncio
+import time
+from pathlib import Path
+
+import pytest
+
+from app.grading.pool import GradingPool
+from physics.checking import SymbolDecl, SymbolicJob
+from tests.api.slow_task import hanging_grade
+
+SYMBOLS = {
+    "x": {"real": True},
+    "m": {"dimension": "kg"},
+    "g": {"dimension": "m/s^2"},
+    "h": {"dimension": "m"},
+}
+
+
+def symbolic(answer: str, expected: str = "m*g*h") -> dict:
+    return {"kind": "symbolic", "answer": answer, "expected": expected, "symbols": SYMBOLS}
+
+
+HOSTILE = [
+    pytest.param("9^9^9", id="power-tower"),
+    pytest.param("2^2^2^2^2^2", id="tall-tower"),
+    pytest.param("factorial(10^9)", id="factorial"),
+    pytest.param("10^9!", id="postfix-factorial"),
+    pytest.param("1e999999", id="huge-exponent-literal"),
+    pytest.param("(x+2)^10000", id="huge-polynomial"),
+    pytest.param("(" * 100_000 + "x" + ")" * 100_000, id="deep-nesting"),
+    pytest.param("m" * 1_000_000, id="one-megabyte"),
+]
+
+
+@pytest.mark.parametrize("answer", HOSTILE)
+def test_hostile_answer_is_invalid_too_large(client, student_headers, answer):
+    response = client.post("/v1/check", json=symbolic(answer), headers=student_headers)
+    assert response.status_code == 200
+    result = response.json()
+    assert (result["verdict"], result["reason"]) == ("invalid", "too_large"), result
+
+
+INJECTIONS = [
+    "__import__('os').system('touch {marker}')",
+    "().__class__.__base__.__subclasses__()",
+    "exec(\"open('{marker}', 'w')\")",
+    "eval('1')",
+    "lambda: open('{marker}', 'w')",
+    "`touch {marker}`",
+    'f\'{{open("{marker}", "w")}}\'',
+    "m; import os; os.system('touch {marker}')",
+    "getattr(m, '__class__')",
+]
+
+
+@pytest.mark.parametrize("template", INJECTIONS)
+def test_injection_payload_is_rejected_and_runs_nothing(client, student_headers, tmp_path: Path, template):
+    marker = tmp_path / "pwned"
+    answer = template.format(marker=marker)
+    for body in (symbolic(answer), symbolic("m g h", expected=answer)):
+        response = client.post("/v1/check", json=body, headers=student_headers)
+        if response.status_code == 200:
+            assert response.json()["verdict"] == "invalid", response.json()
+        else:
+            assert response.status_code == 422  # an injected reference is the author's error
+    assert not marker.exists()
+
+
+async def _check_all(pool: GradingPool, answers: list[str]) -> list[tuple[str, float]]:
+    symbols = (
+        SymbolDecl("x", real=True),
+        SymbolDecl("m", "kg"),
+        SymbolDecl("g", "m/s^2"),
+        SymbolDecl("h", "m"),
+    )
+
+    async def one(answer: str) -> tuple[str, float]:
+        started = time.perf_counter()
+        verdict = await pool.check(SymbolicJob(answer=answer, expected="m*g*h", symbols=symbols))
+        return verdict.outcome.value + "/" + verdict.reason.value, time.perf_counter() - started
+
+    return await asyncio.gather(*(one(a) for a in answers))
+
+
+def test_honest_check_completes_while_hostile_ones_are_refused(grading_pool):
+    hostile = [p.values[0] for p in HOSTILE if p.id != "one-megabyte"]
+    results = asyncio.run(_check_all(grading_pool, [*hostile, "m g h", "mgh", "m h g"]))
+    outcomes = [outcome for outcome, _ in results]
+    assert outcomes[-3:] == ["correct/equivalent"] * 3
+    assert all(outcome == "invalid/too_large" for outcome in outcomes[:-3]), outcomes
+
+
+@pytest.fixture(scope="module")
+def hanging_pool():
+    pool = GradingPool(
+        workers=1, timeout=0.5, memory_mb=1024, max_tasks=100, queue_size=4, task=hanging_grade
+    )
+    pool.start()
+    yield pool
+    pool.close()
+
+
+def test_overrunning_check_is_killed_and_answered_timeout(hanging_pool):
+    symbols = (SymbolDecl("m", "kg"),)
+
+    async def scenario():
+        hung = await hanging_pool.check(SymbolicJob(answer="hang", expected="m", symbols=symbols))
+        after = await hanging_pool.check(SymbolicJob(answer="m", expected="m", symbols=symbols))
+        return hung, after
+
+    hung, after = asyncio.run(scenario())
+    assert (hung.outcome.value, hung.reason.value) == ("invalid", "timeout")
+    assert "simplify" in hung.feedback
+    # The killed worker was replaced: the next check is graded normally.
+    assert after.outcome.value == "correct"
+
+
+def test_full_queue_answers_busy_with_retry_after(hanging_pool):
+    from app.errors import Busy
+
+    symbols = (SymbolDecl("m", "kg"),)
+
+    async def scenario():
+        jobs = [
+            hanging_pool.check(SymbolicJob(answer="hang", expected="m", symbols=symbols)) for _ in range(5)
+        ]
+        tasks = [asyncio.ensure_future(job) for job in jobs]
+        await asyncio.sleep(0.05)
+        with pytest.raises(Busy) as refused:
+            await hanging_pool.check(SymbolicJob(answer="m", expected="m", symbols=symbols))
+        await asyncio.gather(*tasks)
+        return refused.value
+
+    refused = asyncio.run(scenario())
+    assert refused.headers["Retry-After"] == "1"

@@ -1,0 +1,234 @@
+"""check_numeric: verdict, reason and feedback for answers against specs, as a table."""
+
+from __future__ import annotations
+
+from decimal import Decimal
+
+import pytest
+
+from physics.numeric import NumericSpec, Tolerance, check_numeric
+from physics.verdict import Outcome, Reason
+
+D = Decimal
+ACCEL = NumericSpec(D("4.5807"), "m/s^2")
+SPEED = NumericSpec(D("4.58"), "m/s")
+PURE = NumericSpec(D("0.45"))
+OMEGA = NumericSpec(D("4.5807"), "rad/s")
+ANGLE = NumericSpec(D("0.5"), "rad")
+KELVIN = NumericSpec(D("298.15"), "K", tolerance=Tolerance(abs=D("0.01")))
+SIGFIGS3 = NumericSpec(D("1498"), "N", tolerance=Tolerance(sigfigs=3))
+BARE_OK = NumericSpec(D("4.5807"), "m/s^2", units_required=False)
+NEGATIVE = NumericSpec(D("-2.45"), "m/s^2")
+
+OK, NO, BAD = Outcome.CORRECT, Outcome.INCORRECT, Outcome.INVALID
+
+VERDICTS = [
+    # (id, answer, spec, outcome, reason)
+    ("plain", "4.58 m/s^2", ACCEL, OK, Reason.EQUIVALENT),
+    ("negative-expected", "-2.45 m/s^2", NEGATIVE, OK, Reason.EQUIVALENT),
+    ("superscript-units", "4.58 m·s⁻²", ACCEL, OK, Reason.EQUIVALENT),
+    ("slash-slash-units", "4.58 m/s/s", ACCEL, OK, Reason.EQUIVALENT),
+    ("glued-units", "4.58m/s^2", ACCEL, OK, Reason.EQUIVALENT),
+    ("prefixed-units", "4580 mm/s^2", ACCEL, OK, Reason.EQUIVALENT),
+    ("scientific", "4.58e0 m/s^2", ACCEL, OK, Reason.EQUIVALENT),
+    ("times-ten", "458×10^-2 m/s^2", ACCEL, OK, Reason.EQUIVALENT),
+    ("km/h-vs-m/s", "16.49 km/h", SPEED, OK, Reason.EQUIVALENT),
+    ("km/h-too-far", "16.7 km/h", SPEED, NO, Reason.WRONG_VALUE),
+    ("percent", "45%", PURE, OK, Reason.EQUIVALENT),
+    ("percent-spaced", "45 %", PURE, OK, Reason.EQUIVALENT),
+    ("pure", "0.45", PURE, OK, Reason.EQUIVALENT),
+    ("degrees-for-radians", "28.65°", ANGLE, OK, Reason.EQUIVALENT),
+    ("deg-for-radians", "28.65 deg", ANGLE, OK, Reason.EQUIVALENT),
+    ("rev-for-radians", "0.0796 rev", ANGLE, OK, Reason.EQUIVALENT),
+    ("celsius-for-kelvin", "25 °C", KELVIN, OK, Reason.EQUIVALENT),
+    ("kelvin", "298.15 K", KELVIN, OK, Reason.EQUIVALENT),
+    ("bare-number-read-in-units", "4.58", BARE_OK, OK, Reason.EQUIVALENT),
+    ("bare-number-units-still-checked", "4.58 m/s", BARE_OK, NO, Reason.WRONG_DIMENSION),
+    ("sigfigs-right", "1.50e3 N", SIGFIGS3, OK, Reason.EQUIVALENT),
+    ("sigfigs-ambiguous-zeros", "1500 N", SIGFIGS3, OK, Reason.EQUIVALENT),
+    ("sigfigs-in-other-units", "1.50 kN", SIGFIGS3, OK, Reason.EQUIVALENT),
+    ("sigfigs-too-few", "1.5e3 N", SIGFIGS3, BAD, Reason.SIGFIGS),
+    ("sigfigs-too-many", "1498 N", SIGFIGS3, BAD, Reason.SIGFIGS),
+    ("sigfigs-wrong-value", "1.49e3 N", SIGFIGS3, NO, Reason.WRONG_VALUE),
+    ("sigfigs-sign", "-1.50e3 N", SIGFIGS3, NO, Reason.SIGN_ERROR),
+    ("sigfigs-power-of-ten", "1.50 N", SIGFIGS3, NO, Reason.CONSTANT_FACTOR),
+    ("wrong-dimension", "4.58 m/s", ACCEL, NO, Reason.WRONG_DIMENSION),
+    ("wrong-dimension-pure-unit", "4.58 rad", ACCEL, NO, Reason.WRONG_DIMENSION),
+    ("sign-error", "-4.58 m/s^2", ACCEL, NO, Reason.SIGN_ERROR),
+    ("sign-error-unicode-minus", "−4.58 m/s^2", ACCEL, NO, Reason.SIGN_ERROR),
+    ("sign-error-of-negative", "2.45 m/s^2", NEGATIVE, NO, Reason.SIGN_ERROR),
+    ("power-of-ten-up", "45.8 m/s^2", ACCEL, NO, Reason.CONSTANT_FACTOR),
+    ("power-of-ten-down", "0.458 m/s^2", ACCEL, NO, Reason.CONSTANT_FACTOR),
+    ("prefix-slip", "4.58 mm/s^2", ACCEL, NO, Reason.CONSTANT_FACTOR),
+    ("power-of-ten-far", "4.58e9 m/s^2", ACCEL, NO, Reason.CONSTANT_FACTOR),
+    ("factor-two", "9.16 m/s^2", ACCEL, NO, Reason.CONSTANT_FACTOR),
+    ("factor-half", "2.29 m/s^2", ACCEL, NO, Reason.CONSTANT_FACTOR),
+    ("factor-two-pi", "28.78 rad/s", OMEGA, NO, Reason.CONSTANT_FACTOR),
+    ("factor-one-over-two-pi", "0.729 rad/s", OMEGA, NO, Reason.CONSTANT_FACTOR),
+    ("speed-in-km/h-labelled-m/s", "16.49 m/s", SPEED, NO, Reason.CONSTANT_FACTOR),
+    ("degrees-labelled-radians", "28.65 rad", ANGLE, NO, Reason.CONSTANT_FACTOR),
+    ("wrong-value", "3.3 m/s^2", ACCEL, NO, Reason.WRONG_VALUE),
+    ("zero", "0 m/s^2", ACCEL, NO, Reason.WRONG_VALUE),
+    ("missing-units", "4.58", ACCEL, BAD, Reason.MISSING_UNITS),
+    ("missing-units-percent", "45%", SPEED, BAD, Reason.MISSING_UNITS),
+    ("unexpected-units", "0.45 m", PURE, BAD, Reason.UNEXPECTED_UNITS),
+    ("unexpected-angle-units", "0.45 rad", PURE, BAD, Reason.UNEXPECTED_UNITS),
+    ("unknown-unit", "4.58 furlongs", ACCEL, BAD, Reason.UNKNOWN_UNIT),
+    ("unknown-unit-case", "4.58 M/S^2", ACCEL, BAD, Reason.UNKNOWN_UNIT),
+    ("comma", "4,58 m/s^2", ACCEL, BAD, Reason.PARSE_ERROR),
+    ("two-numbers", "12 500 m/s^2", ACCEL, BAD, Reason.PARSE_ERROR),
+    ("empty", "", ACCEL, BAD, Reason.PARSE_ERROR),
+    ("words", "about four", ACCEL, BAD, Reason.PARSE_ERROR),
+    ("ambiguous-units", "4.58 J/kg K/s", ACCEL, BAD, Reason.AMBIGUOUS),
+    ("ambiguous-glued-units", "4.58 Nms", ACCEL, BAD, Reason.AMBIGUOUS),
+    ("huge-exponent", "1e999999 m/s^2", ACCEL, BAD, Reason.TOO_LARGE),
+    ("too-long", "4" * 201, ACCEL, BAD, Reason.TOO_LARGE),
+    ("too-many-digits", "4." + "5" * 40 + " m/s^2", ACCEL, BAD, Reason.TOO_LARGE),
+]
+
+
+@pytest.mark.parametrize(
+    ("answer", "spec", "outcome", "reason"), [c[1:] for c in VERDICTS], ids=[c[0] for c in VERDICTS]
+)
+def test_verdict(answer: str, spec: NumericSpec, outcome: Outcome, reason: Reason) -> None:
+    verdict = check_numeric(answer, spec)
+    assert (verdict.outcome, verdict.reason) == (outcome, reason)
+
+
+@pytest.mark.parametrize(
+    ("answer", "spec", "outcome", "reason"), [c[1:] for c in VERDICTS], ids=[c[0] for c in VERDICTS]
+)
+def test_feedback_never_reveals_the_expected_value(
+    answer: str, spec: NumericSpec, outcome: Outcome, reason: Reason
+) -> None:
+    feedback = check_numeric(answer, spec).feedback
+    assert feedback
+    for shown in {str(spec.expected), str(spec.expected.normalize()), "4.58", "298", "1498", "1.50"}:
+        if shown not in answer:
+            assert shown not in feedback
+
+
+@pytest.mark.parametrize(
+    ("answer", "spec", "outcome", "reason"),
+    [c[1:] for c in VERDICTS if c[3] is BAD],
+    ids=[c[0] for c in VERDICTS if c[3] is BAD],
+)
+def test_invalid_verdict_uses_no_attempt_and_says_where(
+    answer: str, spec: NumericSpec, outcome: Outcome, reason: Reason
+) -> None:
+    verdict = check_numeric(answer, spec)
+    assert verdict.score == 0.0
+    assert verdict.error is not None
+    assert verdict.error.message == verdict.feedback
+    assert verdict.error.position is not None
+    assert 0 <= verdict.error.position <= len(answer)
+
+
+def test_scores_of_graded_verdicts() -> None:
+    assert check_numeric("4.58 m/s^2", ACCEL).score == 1.0
+    assert check_numeric("3.3 m/s^2", ACCEL).score == 0.0
+
+
+WORDING = [
+    # (answer, spec, words the feedback must contain)
+    ("4.58 m/s", ACCEL, "Your answer has the units of a speed; an acceleration is expected."),
+    ("4.58 N", ACCEL, "Your answer has the units of a force; an acceleration is expected."),
+    ("4.58 J", NumericSpec(D(1), "N·m/s"), "an energy; a power is expected"),
+    ("4.58 kg m^2/s^4", ACCEL, "a quantity in kg·m²/s⁴; an acceleration is expected"),
+    ("45.8 m/s^2", ACCEL, "unit prefixes / powers of ten"),
+    ("2.5 Kg", NumericSpec(D("2.5"), "kg"), "a mass is expected. Units are case-sensitive: did you mean kg?"),
+    ("-4.58 m/s^2", ACCEL, "sign"),
+    ("9.16 m/s^2", ACCEL, "factor"),
+    ("28.78 rad/s", OMEGA, "angular frequency"),
+    ("4.58", ACCEL, "needs units"),
+    ("0.45 m", PURE, "remove the units"),
+    ("4.58 KM/s^2", ACCEL, "did you mean 'km'?"),
+    ("1.5e3 N", SIGFIGS3, "3 significant figures (yours shows 2)"),
+    ("1234000 N", SIGFIGS3, "3 significant figures (yours shows 4 to 7)"),
+    ("12 500 m/s^2", ACCEL, "12500"),
+    ("4,58 m/s^2", ACCEL, "decimal point"),
+]
+
+
+@pytest.mark.parametrize(("answer", "spec", "words"), WORDING, ids=[c[0] for c in WORDING])
+def test_feedback_wording(answer: str, spec: NumericSpec, words: str) -> None:
+    assert words in check_numeric(answer, spec).feedback
+
+
+POSITIONS = [
+    # (answer, position of the error)
+    ("4.58", 4),  # missing units: just after the number
+    ("  4.58  ", 6),
+    ("0.45 m", 5),  # unexpected units: where they start
+    ("4.58 m/furlong", 7),
+    ("4.58 KM/s^2", 5),
+    ("4,58 m/s^2", 1),
+    ("12 500 m/s^2", 3),
+]
+
+
+@pytest.mark.parametrize(("answer", "position"), POSITIONS, ids=[c[0] for c in POSITIONS])
+def test_error_position_points_into_the_answer(answer: str, position: int) -> None:
+    spec = PURE if answer.startswith("0.45") else ACCEL
+    verdict = check_numeric(answer, spec)
+    assert verdict.error is not None
+    assert verdict.error.position == position
+
+
+READ_AS = [
+    ("4.58 m/s^2", ACCEL, "4.58 m/s^2", r"4.58\,\mathrm{m}/\mathrm{s}^{2}"),
+    ("4.58 m s^-2", ACCEL, "4.58 m/s^2", r"4.58\,\mathrm{m}/\mathrm{s}^{2}"),
+    ("4.58", BARE_OK, "4.58 m/s^2", r"4.58\,\mathrm{m}/\mathrm{s}^{2}"),
+    ("16.49 km/h", SPEED, "16.49 km/h", r"16.49\,\mathrm{km}/\mathrm{h}"),
+    ("45%", PURE, "45%", r"45\,\%"),
+    ("4.58 m/s", ACCEL, "4.58 m/s", r"4.58\,\mathrm{m}/\mathrm{s}"),
+    ("1.5e3 N", SIGFIGS3, "1.5e3 N", r"1.5 \times 10^{3}\,\mathrm{N}"),
+]
+
+
+@pytest.mark.parametrize(("answer", "spec", "text", "latex"), READ_AS, ids=[c[0] for c in READ_AS])
+def test_read_as_shows_number_and_units_as_understood(
+    answer: str, spec: NumericSpec, text: str, latex: str
+) -> None:
+    read_as = check_numeric(answer, spec).read_as
+    assert read_as is not None
+    assert (read_as.text, read_as.latex) == (text, latex)
+
+
+def test_unparseable_answer_has_no_read_as() -> None:
+    assert check_numeric("4,58", ACCEL).read_as is None
+
+
+def test_spec_units_of_one_mean_a_pure_number() -> None:
+    spec = NumericSpec(D("0.45"), "1")
+    assert check_numeric("0.45", spec).outcome is OK
+    assert check_numeric("0.45 m", spec).reason is Reason.UNEXPECTED_UNITS
+
+
+def test_answer_exactly_at_one_percent_of_a_converted_expected_value() -> None:
+    # 4.58 m/s is 16.488 km/h; 1 % below is 16.32312 km/h, accepted; a hair lower is not.
+    spec = NumericSpec(D("16.488"), "km/h")
+    assert check_numeric("4.5342 m/s", spec).outcome is OK  # 16.32312 km/h: on the bound
+    assert check_numeric("4.53419 m/s", spec).outcome is NO
+
+
+HOSTILE = [
+    "1e999999",
+    "1" * 10_000,
+    "9" * 199,
+    "1e-400 m/s^2",
+    "1e400 m/s^2",
+    "1e400 Gm/ys^2",
+    "4.58 " + "m/" * 97,
+    "4.58 " + "(" * 195,
+    "4.58 " + "kgm" * 65,
+    "−" * 200,
+    "4.58 m/s^2" + "\u202e" * 100,
+]
+
+
+@pytest.mark.timeout(10)  # hostile input must fail fast; a hang fails here
+@pytest.mark.parametrize("answer", HOSTILE, ids=[f"hostile-{i}" for i in range(len(HOSTILE))])
+def test_hostile_answer_gets_a_verdict_quickly(answer: str) -> None:
+    verdict = check_numeric(answer, ACCEL)
+    assert verdict.outcome in (OK, NO, BAD)
