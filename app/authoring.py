@@ -15,6 +15,8 @@ from typing import Any, Literal
 from pebble import ProcessExpired, ProcessPool
 
 from app.grading.worker import limit_memory
+from physics.errors import DerivationError
+from problems.compiled import compile_problem
 from problems.errors import ProblemInvalid
 from problems.loader import parse_problem
 from problems.selftest import verify_problem
@@ -31,16 +33,21 @@ class Vetted:
 
 
 def vet(source: bytes, fmt: Literal["json", "yaml"]) -> Vetted:
+    """Every fault of an upload with its path: shape and meaning, then the derivation, then the self-test."""
     try:
         doc = parse_problem(source, fmt)
+        compile_problem(doc)
     except ProblemInvalid as error:
         return Vetted(None, error.errors)
+    except DerivationError as error:
+        return Vetted(None, [(f"model.quantities.{error.quantity}" if error.quantity else "model", error.message)])
     report = verify_problem(doc, variants=UPLOAD_SELFTEST_VARIANTS)
     if not report.ok:
-        errors = []
-        for failure in report.failures:
-            path = f"parts.{failure.part}" if failure.part else "model"
-            errors.append((path, f"self-test {failure.check}: {failure.detail}"))
+        index = {part.id: i for i, part in enumerate(doc.parts)}
+        errors = [
+            (f"parts[{index[f.part]}]" if f.part in index else "model", f"self-test, {f.check}: {f.detail}")
+            for f in report.failures
+        ]
         return Vetted(None, errors)
     return Vetted(doc.model_dump(mode="json"))
 

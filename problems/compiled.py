@@ -21,9 +21,22 @@ import sympy
 from physics.checking import LimitDecl as CheckLimitDecl
 from physics.checking import NumericJob, SymbolicJob, SymbolicQuestion
 from physics.checking import SymbolDecl as CheckSymbolDecl
+from physics.dimensions import DIMENSIONLESS
 from physics.errors import SpecError
 from physics.numeric import NumericSpec, Tolerance
-from physics.symbolic import KnownMistake, LimitCase, SymbolicContext, SymbolSpec
+from physics.symbolic import (
+    DimensionMismatch,
+    KnownMistake,
+    LimitCase,
+    SymbolicContext,
+    SymbolSpec,
+    UnknownDimension,
+    expression_dimension,
+    judge_symbolic,
+    make_symbol,
+    prepare_reference,
+)
+from physics.units import unit_dimension
 from problems.errors import ErrorItem, ProblemInvalid
 from problems.modelinfo import Derived, derive_doc, spec_error_items
 from problems.schema import NumericPart, ProblemDocument, SymbolicPart, format_path
@@ -48,8 +61,6 @@ class CompiledSymbolicPart:
     @cached_property
     def question(self) -> SymbolicQuestion:
         """The prepared reference (sampling the domain once; sympy-heavy, hence lazy and cached)."""
-        from physics.symbolic import prepare_reference
-
         return SymbolicQuestion(names=self.names, reference=prepare_reference(self.expected, self.context))
 
     def job(self, answer: str) -> SymbolicJob:
@@ -166,8 +177,6 @@ def _compile(doc: ProblemDocument, version: int, digest: str, use_model: bool) -
         specs = symbol_specs(doc)
     except SpecError as error:
         raise ProblemInvalid([(format_path(error.path), error.message)], doc.id) from None
-    from physics.symbolic import make_symbol
-
     table = {name: make_symbol(spec) for name, spec in specs.items()}
     derived: Derived | None = None
     if use_model and doc.model is not None:
@@ -305,8 +314,6 @@ def _require_agreement(
     path: tuple[str | int, ...],
 ) -> None:
     """A hand-typed answer must be equivalent to the engine's derivation, on the problem's domain."""
-    from physics.symbolic import judge_symbolic, prepare_reference
-
     if sympy.simplify(hand - derived) == 0:
         return
     bare = SymbolicContext(symbols=context.symbols, constraints=context.constraints)
@@ -346,10 +353,6 @@ def _require_dimension(
     table: Mapping[str, sympy.Symbol],
     path: tuple[str | int, ...],
 ) -> None:
-    from physics.dimensions import DIMENSIONLESS
-    from physics.symbolic.dimensional import DimensionMismatch, UnknownDimension, expression_dimension
-    from physics.units import unit_dimension
-
     dims = {table[n]: s.dimension for n, s in specs.items() if s.dimension is not None}
     try:
         have = expression_dimension(expr, dims)

@@ -13,8 +13,12 @@ from typing import Any
 
 import sympy
 
+from physics.engine import derive, load_model
 from physics.errors import SpecError, SpecErrors
 from problems.schema import ProblemDocument
+from problems.symbols import symbol_table
+
+MIN_AGREEING_METHODS = 2  # a derived quantity counts as checked when two methods give it
 
 
 @dataclass(frozen=True)
@@ -29,6 +33,15 @@ class Derived:
     proofs: Mapping[str, str] = field(default_factory=dict)  # quantity -> how agreement was shown
     raw: Any = None
 
+    @property
+    def disagreements(self) -> tuple[str, ...]:
+        """Quantities not confirmed by two methods (methods that disagree make the engine raise)."""
+        return tuple(
+            f"{name}: derived by {', '.join(methods) or 'no method'} only"
+            for name, methods in self.agreement.items()
+            if len(methods) < MIN_AGREEING_METHODS
+        )
+
 
 def spec_error_items(error: SpecError) -> list[tuple[tuple[str | int, ...], str]]:
     """(path, message) for a SpecError or each member of a SpecErrors."""
@@ -39,8 +52,6 @@ def spec_error_items(error: SpecError) -> list[tuple[tuple[str | int, ...], str]
 
 def load_doc_model(doc: ProblemDocument, table: Mapping[str, sympy.Symbol]) -> Any:
     """The engine's Model for `doc.model`; raises SpecError/SpecErrors with paths inside the model."""
-    from physics.engine import load_model
-
     if doc.model is None:
         raise SpecError("the problem has no model", ("model",))
     return load_model(doc.model, table)
@@ -48,16 +59,12 @@ def load_doc_model(doc: ProblemDocument, table: Mapping[str, sympy.Symbol]) -> A
 
 def model_quantity_names(doc: ProblemDocument) -> frozenset[str]:
     """Names of the quantities the model defines (cheap: loads, does not derive)."""
-    from problems.symbols import symbol_table
-
     model = load_doc_model(doc, symbol_table(doc))
     return frozenset(q.name for q in model.quantities)
 
 
 def derive_doc(doc: ProblemDocument, table: Mapping[str, sympy.Symbol]) -> Derived:
     """Run the engine on the document's model (sympy-heavy; callers cache)."""
-    from physics.engine import derive
-
     derivation = derive(load_doc_model(doc, table))
     return Derived(
         quantities=dict(derivation.quantities),

@@ -131,6 +131,7 @@ class SymbolicPart(_Strict):
     symbols: Annotated[list[Name], Field(max_length=MAX_ITEMS)] | None = None
     mistakes: Annotated[list[MistakeDecl], Field(max_length=MAX_ITEMS)] = []
     limits: Annotated[list[LimitDecl], Field(max_length=MAX_ITEMS)] = []
+    max_attempts: Annotated[int, Field(ge=1)] | None = None  # graded attempts; None: the problem's
 
     @property
     def quantity_name(self) -> str:
@@ -146,6 +147,7 @@ class NumericPart(_Strict):
     units: Annotated[str, Field(min_length=1, max_length=100)]
     tolerance: ToleranceDecl = ToleranceDecl(rel=DEFAULT_REL_TOLERANCE)
     units_required: bool = True
+    max_attempts: Annotated[int, Field(ge=1)] | None = None
 
     @property
     def dimensionless(self) -> bool:
@@ -167,6 +169,7 @@ class ProblemDocument(_Strict):
     constraints: Annotated[list[Expression], Field(max_length=MAX_ITEMS)] = []
     given: Annotated[dict[Name, GivenDecl], Field(max_length=MAX_ITEMS)] = {}
     parts: Annotated[list[Part], Field(min_length=1, max_length=MAX_ITEMS)]
+    max_attempts: Annotated[int, Field(ge=1)] | None = None  # per part, unless a part sets its own
     # Validated by the engine (`physics.engine.load_model`), not here.
     model: dict[str, Any] | None = None
 

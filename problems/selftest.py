@@ -17,18 +17,20 @@ from pathlib import Path
 
 import sympy
 
+from physics.checking import check_answer
 from physics.errors import PhyscheckError
 from physics.verdict import Outcome, Reason, Verdict
 from problems.compiled import CompiledNumericPart, CompiledProblem, CompiledSymbolicPart, compile_problem
 from problems.errors import ProblemInvalid
+from problems.loader import load_bank
+from problems.modelinfo import MIN_AGREEING_METHODS
 from problems.schema import ProblemDocument
 from problems.variants import Variant, draw_variant, format_number, round_sigfigs, unit_scale
 
 # Not a credential: self-test variants only need to be reproducible.
 SELFTEST_SECRET = "physcheck-bank-selftest"  # noqa: S105
 DEFAULT_VARIANTS = 20
-OFF_BY = Decimal("1.10")
-MIN_AGREEING_METHODS = 2  # a value this far off must be rejected
+OFF_BY = Decimal("1.10")  # a value this far off must be rejected
 
 # (label, done, total): one call per finished part within a problem, or per problem within the bank.
 Progress = Callable[[str, int, int], None]
@@ -152,8 +154,6 @@ def verify_bank(
 ) -> Report:
     """Self-test every problem (default: the built-in bank); a bank that does not load is one failure."""
     if documents is None:
-        from problems.loader import load_bank
-
         try:
             documents = load_bank(bank_dir)
         except ProblemInvalid as error:
@@ -211,8 +211,6 @@ def rewritings(expr: sympy.Expr) -> dict[str, str]:
 
 
 def _symbolic_checks(problem: str, part: CompiledSymbolicPart) -> list[CheckResult]:
-    from physics.checking import check_answer
-
     results: list[CheckResult] = []
     question = part.question
     for label, text in rewritings(part.expected).items():
@@ -253,8 +251,6 @@ def unit_alternatives(units: str) -> list[str]:
 def _numeric_checks(
     problem: str, compiled: CompiledProblem, part: CompiledNumericPart, students: list[Variant]
 ) -> list[CheckResult]:
-    from physics.checking import check_answer
-
     results: list[CheckResult] = []
     sigfigs = part.tolerance.sigfigs
     dimensionless = part.units.strip() == "1"

@@ -13,15 +13,16 @@ from typing import TypeVar
 
 import sympy
 
-from physics.dimensions import DIMENSIONLESS, Dimension
 from physics.errors import AnswerError, SpecError
-from physics.symbolic import SymbolSpec
+from physics.symbolic import SymbolSpec, make_symbol
 from problems.errors import ErrorItem
+from problems.modelinfo import model_quantity_names, spec_error_items
 from problems.schema import GivenDecl, NumericPart, ProblemDocument, SymbolDecl, SymbolicPart, format_path
-from problems.symbols import read_relation
+from problems.symbols import read_bound, read_expression, read_relation, symbol_spec, unit_dimension_at
 from problems.variants import placeholders, unit_scale, valid_range_errors
 
 T = TypeVar("T")
+
 
 class _Collector:
     """Runs checks, turning each SpecError into one (path, message) and carrying on."""
@@ -46,8 +47,6 @@ class _Collector:
 
 def semantic_errors(doc: ProblemDocument, model_quantities: frozenset[str] | None = None) -> list[ErrorItem]:
     """Every meaning fault of `doc`, in document order. `model_quantities` defaults to the engine's view."""
-    from problems.symbols import symbol_spec
-
     out = _Collector()
     table: dict[str, sympy.Symbol] = {}
     symbols_ok = True
@@ -66,7 +65,7 @@ def semantic_errors(doc: ProblemDocument, model_quantities: frozenset[str] | Non
             symbols_ok = False
             bad_ranges.add(name)
             spec = SymbolSpec(name, real=decl.real, nonzero=decl.nonzero, negative=decl.negative)
-        symbol = out.attempt(partial(_make_symbol, spec), ("symbols", name))
+        symbol = out.attempt(partial(make_symbol, spec), ("symbols", name))
         if symbol is not None:
             table[name] = symbol
 
@@ -85,26 +84,9 @@ def semantic_errors(doc: ProblemDocument, model_quantities: frozenset[str] | Non
     return out.errors
 
 
-def _make_symbol(spec: SymbolSpec) -> sympy.Symbol:
-    from physics.symbolic import make_symbol
-
-    return make_symbol(spec)
-
-
 def _not_below(low: sympy.Expr, high: sympy.Expr) -> bool:
     difference = (high - low).evalf(30)
     return bool(difference.is_number and difference <= 0)
-
-
-def _unit_dimension(text: str, path: tuple[str | int, ...]) -> Dimension:
-    from physics.units import unit_dimension
-
-    if text.strip() == "1":
-        return DIMENSIONLESS
-    try:
-        return unit_dimension(text)
-    except (AnswerError, SpecError) as error:
-        raise SpecError(error.message, path) from None
 
 
 def _check_given(
@@ -116,8 +98,8 @@ def _check_given(
         return
     for message in valid_range_errors(given):
         out.add(path, message)
-    unit_dim = out.attempt(lambda: _unit_dimension(given.unit, (*path, "unit")))
-    symbol_dim = out.attempt(lambda: _unit_dimension(decl.dimension, ("symbols", name, "dimension")))
+    unit_dim = out.attempt(lambda: unit_dimension_at(given.unit, (*path, "unit")))
+    symbol_dim = out.attempt(lambda: unit_dimension_at(decl.dimension, ("symbols", name, "dimension")))
     if unit_dim is not None and symbol_dim is not None and unit_dim != symbol_dim:
         out.add((*path, "unit"), f"{given.unit} does not have the dimension of {name} ({decl.dimension})")
         return
@@ -132,8 +114,6 @@ def _check_given(
     if decl.negative and high_si >= 0:
         out.add((*path, "max"), f"must be < 0 ({name} is declared negative)")
     if decl.range is not None and check_range:
-        from problems.symbols import read_bound
-
         try:
             low = read_bound(decl.range[0], ("symbols", name, "range", 0))
             high = read_bound(decl.range[1], ("symbols", name, "range", 1))
@@ -156,8 +136,6 @@ def _model_quantities(doc: ProblemDocument, out: _Collector, symbols_ok: bool) -
         return None
     if not symbols_ok:
         return _AnyName()
-    from problems.modelinfo import model_quantity_names, spec_error_items
-
     try:
         return model_quantity_names(doc)
     except SpecError as error:
@@ -169,8 +147,6 @@ def _model_quantities(doc: ProblemDocument, out: _Collector, symbols_ok: bool) -
 def _check_parts(
     out: _Collector, doc: ProblemDocument, table: Mapping[str, sympy.Symbol], quantities: frozenset[str] | None
 ) -> None:
-    from problems.symbols import read_bound, read_expression
-
     seen: dict[str, int] = {}
     symbolic_ids = {p.id for p in doc.parts if isinstance(p, SymbolicPart)}
     for index, part in enumerate(doc.parts):
@@ -208,4 +184,4 @@ def _check_parts(
             if part.of not in symbolic_ids and (quantities is None or part.of not in quantities):
                 out.add((*path, "of"), f"{part.of!r} is neither a symbolic part nor a model quantity")
             if not part.dimensionless:
-                out.attempt(partial(_unit_dimension, part.units, (*path, "units")))
+                out.attempt(partial(unit_dimension_at, part.units, (*path, "units")))

@@ -49,7 +49,7 @@ def bound_text(value: Decimal | str) -> str:
 
 def symbol_spec(name: str, decl: SymbolDecl) -> SymbolSpec:
     """The core's spec for one declared symbol; raises SpecError (with path) on a bad dimension or range."""
-    dimension = DIMENSIONLESS if decl.dimension.strip() == "1" else _dimension(name, decl.dimension)
+    dimension = unit_dimension_at(decl.dimension, ("symbols", name, "dimension"))
     low = high = None
     if decl.range is not None:
         low = read_bound(decl.range[0], ("symbols", name, "range", 0))
@@ -66,11 +66,14 @@ def symbol_spec(name: str, decl: SymbolDecl) -> SymbolSpec:
     )
 
 
-def _dimension(name: str, text: str) -> Dimension:
+def unit_dimension_at(text: str, path: tuple[str | int, ...]) -> Dimension:
+    """The dimension of an author's unit text (`1` is dimensionless); a fault is a SpecError at `path`."""
+    if text.strip() == "1":
+        return DIMENSIONLESS
     try:
         return unit_dimension(text)
     except (AnswerError, SpecError) as error:
-        raise SpecError(error.message, ("symbols", name, "dimension")) from None
+        raise SpecError(error.message, path) from None
 
 
 def symbol_specs(doc: ProblemDocument) -> dict[str, SymbolSpec]:

@@ -19,6 +19,7 @@ from typing import Any
 import sympy
 
 from physics.errors import SpecError
+from physics.units import parse_units
 from problems.schema import DEFAULT_SIGFIGS, GivenDecl, NumericPart, ProblemDocument, SymbolicPart
 
 REFERENCE_DIGITS = 30  # working precision of the numeric reference
@@ -123,8 +124,6 @@ def unit_scale(unit: str) -> sympy.Expr:
         return sympy.Integer(1)
     if text in _DEGREE_SPELLINGS:
         return sympy.pi / 180
-    from physics.units import parse_units
-
     parsed = parse_units(text)
     if parsed.offset:
         raise SpecError(f"{text} has an offset zero; give temperatures in K", ("unit",))
@@ -219,6 +218,16 @@ def fill_statement(statement: str, doc: ProblemDocument, variant: Variant) -> st
 
 def _json_number(value: Decimal) -> int | float:
     return int(value) if value == value.to_integral_value() and value.as_tuple().exponent == 0 else float(value)
+
+
+def listing_view(problem: ProblemDocument) -> dict[str, Any]:
+    """One entry of `GET /v1/problems`: no statement values, no references."""
+    return {
+        "id": problem.id,
+        "title": problem.title,
+        "topics": list(problem.topics),
+        "parts": [{"id": p.id, "kind": p.kind, "prompt": p.prompt} for p in problem.parts],
+    }
 
 
 def student_view(problem: ProblemDocument, variant: Variant) -> dict[str, Any]:

@@ -3,14 +3,16 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from datetime import datetime
+from typing import Annotated, Any
 from urllib.parse import urlsplit
 
 import httpx
-from fastapi import Request
+from fastapi import Depends, Request
 
+from app.auth import Principal
 from app.db.database import Database
 from app.db.types import utc_now
 from app.lti.platform_keys import PlatformKeyCache
@@ -26,6 +28,10 @@ class LtiContext:
     # Outgoing HTTP (platform JWKS); tests pass a loopback transport to a fake LMS.
     transport: httpx.AsyncBaseTransport | None = None
     clock: Callable[[], datetime] = utc_now
+    # For the student page: (problem_id, student) -> the API's student view (raise LookupError if
+    # unknown), and a student key -> Principal (None if unknown or revoked).
+    student_view: Callable[[str, str], Mapping[str, Any]] | None = None
+    authenticate_key: Callable[[str], Principal | None] | None = None
     platform_keys: PlatformKeyCache = field(init=False)
 
     def __post_init__(self) -> None:
@@ -47,3 +53,6 @@ class LtiContext:
 def get_lti_context(request: Request) -> LtiContext:
     context: LtiContext = request.app.state.lti
     return context
+
+
+LtiContextDep = Annotated[LtiContext, Depends(get_lti_context)]

@@ -18,6 +18,11 @@ _STYLE = (
     "code{background:#f3f3f3;padding:0 .25rem}"
     "button{font-size:1rem;padding:.4rem 1rem}"
     "fieldset{border:1px solid #ccc}"
+    "input[type=text],input[type=password]{font-size:1.1rem;padding:.3rem;width:100%;box-sizing:border-box}"
+    ".preview{color:#333;min-height:1.5em;font-family:ui-monospace,monospace}"
+    ".verdict[data-verdict=correct]{color:#0a6b2d}.verdict[data-verdict=incorrect]{color:#a11}"
+    ".part{border-top:1px solid #ddd;margin-top:1.5rem}"
+    ":focus-visible{outline:3px solid #1a5fb4;outline-offset:2px}"
 )
 
 
@@ -36,20 +41,28 @@ def html_page(
     frame_ancestors: Sequence[str] = (),
     form_targets: Sequence[str] = (),
     script: str | None = None,
+    script_src: str | None = None,
+    meta: dict[str, str] | None = None,
 ) -> HTMLResponse:
-    """`body` is HTML the caller built with escaped values; `script` (ours, constant) runs by nonce."""
+    """`body` is HTML the caller built with escaped values; `script` (ours, constant) and the script
+    file at `script_src` (ours) run by nonce; `meta` adds `<meta name content>` tags."""
     nonce = secrets.token_urlsafe(16)
     ancestors = " ".join(["'self'", *frame_ancestors])
     form_action = " ".join(["'self'", *form_targets])
     csp = (
-        f"default-src 'none'; style-src 'nonce-{nonce}'; script-src 'nonce-{nonce}'; "
+        f"default-src 'none'; style-src 'nonce-{nonce}'; script-src 'nonce-{nonce}'; connect-src 'self'; "
         f"form-action {form_action}; frame-ancestors {ancestors}; base-uri 'none'"
     )
     script_tag = f'<script nonce="{nonce}">{script}</script>' if script else ""
+    if script_src:
+        script_tag += f'<script nonce="{nonce}" src="{escape(script_src)}"></script>'
+    meta_tags = "".join(
+        f'<meta name="{escape(name)}" content="{escape(value)}">' for name, value in (meta or {}).items()
+    )
     document = (
         '<!doctype html><html lang="en"><head><meta charset="utf-8">'
         '<meta name="viewport" content="width=device-width, initial-scale=1">'
-        f'<title>{escape(title)}</title><style nonce="{nonce}">{_STYLE}</style></head>'
+        f'{meta_tags}<title>{escape(title)}</title><style nonce="{nonce}">{_STYLE}</style></head>'
         f"<body><main>{body}</main>{script_tag}</body></html>"
     )
     headers = {

@@ -5,20 +5,21 @@
     POST     /lti/launch           the platform's form post with id_token and state
     POST     /lti/deep-link/{id}   the instructor's choice -> signed response, auto-posted back
     GET      /lti/jwks             our public keys (also /.well-known/jwks.json)
+    GET      /p/{problem_id}       the student page (see `student_page`), and its script and fragment
 """
 
 from __future__ import annotations
 
 from collections.abc import Awaitable, Callable
-from typing import Annotated, Any
+from typing import Any
 from urllib.parse import quote
 
-from fastapi import APIRouter, Depends, Request
+from fastapi import APIRouter, Request
 from fastapi.responses import JSONResponse, RedirectResponse, Response
 from starlette.concurrency import run_in_threadpool
 
-from app.lti import keys
-from app.lti.context import LtiContext, get_lti_context
+from app.lti import keys, student_page
+from app.lti.context import LtiContext, LtiContextDep
 from app.lti.errors import LaunchRefused, MalformedRequest, PlatformKeysUnavailable
 from app.lti.flow import (
     BROWSER_COOKIE,
@@ -33,7 +34,8 @@ from app.lti.platforms import platform_origins
 from app.lti.sessions import SESSION_COOKIE, SESSION_LIFETIME
 
 router = APIRouter(tags=["lti"])
-Context = Annotated[LtiContext, Depends(get_lti_context)]
+router.include_router(student_page.router)
+Context = LtiContextDep
 _MAX_FORM_FIELDS = 50
 
 

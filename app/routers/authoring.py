@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from typing import Any, Literal
 
+import sympy
 from fastapi import APIRouter, Request, Response
 from starlette.concurrency import run_in_threadpool
 
@@ -12,8 +13,16 @@ from app.db import problems as problem_repository
 from app.db.records import ProblemRecord
 from app.deps import Instructor, ServicesDep
 from app.errors import AppError, Forbidden
-from app.schemas.problems import ProblemCreated
+from app.schemas.problems import (
+    MethodPublic,
+    ProblemCreated,
+    ReferencePublic,
+    SimulationPublic,
+    SolutionPublic,
+    StepPublic,
+)
 from app.services import Services
+from problems.compiled import CompiledProblem, CompiledSymbolicPart
 from problems.errors import ProblemInvalid
 
 router = APIRouter(tags=["authoring"])
@@ -108,3 +117,64 @@ async def retire(problem_id: str, services: ServicesDep, principal: Instructor) 
 
     await run_in_threadpool(store)
     return Response(status_code=204)
+
+
+@router.get("/v1/problems/{problem_id}/solution", response_model=SolutionPublic)
+async def solution(problem_id: str, services: ServicesDep, _: Instructor) -> SolutionPublic:
+    record = await run_in_threadpool(services.catalog.get, problem_id)
+    compiled = await run_in_threadpool(services.catalog.compiled, record)
+    return solution_of(compiled)
+
+
+def solution_of(compiled: CompiledProblem) -> SolutionPublic:
+    references = []
+    for part_id, part in compiled.parts.items():
+        expr = part.expected if isinstance(part, CompiledSymbolicPart) else part.expr
+        units = None if isinstance(part, CompiledSymbolicPart) else part.units
+        references.append(
+            ReferencePublic(
+                part=part_id,
+                kind=compiled.document.part(part_id).kind,
+                text=sympy.sstr(expr),
+                latex=sympy.latex(expr),
+                units=units,
+            )
+        )
+    derived = compiled.derived
+    derivation = derived.raw if derived is not None else None
+    methods = (
+        []
+        if derivation is None
+        else [
+            MethodPublic(
+                name=method.name,
+                title=method.title,
+                steps=[StepPublic(title=step.title, latex=step.latex) for step in method.steps],
+                notes=list(method.notes),
+            )
+            for method in derivation.methods
+        ]
+    )
+    simulation = (
+        {}
+        if derivation is None
+        else {
+            name: SimulationPublic(
+                compared=check.compared, max_relative_error=check.max_relative_error, points=check.points
+            )
+            for name, check in derivation.simulation.items()
+        }
+    )
+    agreement = {} if derived is None else {name: list(found) for name, found in derived.agreement.items()}
+    return SolutionPublic(
+        id=compiled.document.id,
+        version=compiled.version,
+        references=references,
+        methods=methods,
+        agreement=agreement,
+        proofs={} if derived is None else dict(derived.proofs),
+        simulation=simulation,
+        methods_agree=derived is not None
+        and not derived.disagreements
+        and all(len(m) >= 2 for m in agreement.values()),
+    )

@@ -101,16 +101,32 @@ class ReferencePublic(BaseModel):
     units: str | None = None
 
 
+class StepPublic(BaseModel):
+    title: str
+    latex: str
+
+
 class MethodPublic(BaseModel):
     name: str
     title: str
-    steps: list[dict[str, str]]
+    steps: list[StepPublic]
+    notes: list[str]
+
+
+class SimulationPublic(BaseModel):
+    compared: str
+    max_relative_error: float
+    points: int
 
 
 class SolutionPublic(BaseModel):
+    """Instructor-only: every part's reference and how the engine derived and verified it."""
+
     id: str
     version: int
     references: list[ReferencePublic]
     methods: list[MethodPublic]
     agreement: dict[str, list[str]]
+    proofs: dict[str, str]
+    simulation: dict[str, SimulationPublic]
     methods_agree: bool

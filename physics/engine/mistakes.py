@@ -27,6 +27,8 @@ DROPPED_PROJECTION = ("A projection factor is missing: check each place where a 
 FRICTION_SIGN = "Kinetic friction opposes the sliding: check the direction of the friction force."
 FIXED_SUPPORT = ("This treats the {body} as fixed. It moves too, which changes the accelerations and the "
                  "contact force.")
+FIXED_CONTACT = ("This uses the contact force that would act if the {body} were held fixed. The {body} "
+                 "recoils, which changes that force.")
 NO_INERTIA = ("A rolling or spinning body also has rotational kinetic energy, (1/2) I omega^2, and needs a "
               "torque to spin up: include its moment of inertia.")
 INELASTIC_ENERGY = ("Kinetic energy is not conserved in a perfectly inelastic collision. Use the quantity that "
@@ -73,6 +75,9 @@ def generate_mistakes(model: Model, quantity: Quantity, reference: sympy.Expr,
         mass = model.body(body).mass
         if isinstance(mass, sympy.Symbol):
             candidates.append((_limit(reference, mass, sympy.oo), FIXED_SUPPORT.format(body=body)))
+            if quantity.kind is QuantityKind.ACCELERATION:
+                candidates.append((_support_with_fixed_contact(model, quantity, body, rederive),
+                                   FIXED_CONTACT.format(body=body)))
     if any(b.inertia != 0 for b in model.bodies):
         flat = dataclasses.replace(model, bodies=tuple(dataclasses.replace(b, inertia=sympy.Integer(0))
                                                        for b in model.bodies))
@@ -84,6 +89,32 @@ def generate_mistakes(model: Model, quantity: Quantity, reference: sympy.Expr,
     if quantity.kind in (QuantityKind.ANGULAR_FREQUENCY, QuantityKind.PERIOD):
         candidates += _mass_mistakes(model, quantity, reference, rederive)
     return _distinct(model, reference, candidates)
+
+
+def _support_with_fixed_contact(model: Model, quantity: Quantity, body: str,
+                                rederive: Rederive) -> sympy.Expr | None:
+    """The support's acceleration from its own equation, with the contact force it would feel if it
+    were held fixed (e.g. N = m g cos(theta) pushing a free wedge)."""
+    mech = Mechanics(model)
+    q = model.coordinate(quantity.target).symbol
+    mass = model.body(body).mass
+    own = [d for d in mech.dofs if d.body == body and d.mapping == q]
+    if len(own) != 1:
+        return None
+    dof = own[0]
+    total = (-sympy.diff(mech.cartesian_potential, dof.symbol)).subs(mech.cartesian_state())
+    for constraint in model.constraints:
+        slope = sympy.diff(constraint.gap, dof.symbol)
+        if slope == 0:
+            continue
+        contact = rederive(model, Quantity(quantity.name, QuantityKind.FORCE, constraint.name))
+        if contact is None:
+            return None
+        fixed = _limit(contact, mass, sympy.oo) if contact.has(mass) else contact
+        if fixed is None:
+            return None
+        total += fixed * slope.subs(mech.cartesian_state())
+    return total / dof.inertia
 
 
 def _mass_mistakes(model: Model, quantity: Quantity, reference: sympy.Expr,

@@ -18,10 +18,6 @@ def reading_text(reading: tuple[Part, ...]) -> str:
     return "*".join(part.canonical for part in reading)
 
 
-def allowed_names(table: NameTable) -> tuple[str, ...]:
-    return table.declared
-
-
 def resolve_words(tokens: list[Token], table: NameTable) -> list[Token]:
     """Replace every WORD token; raise on the first word that is unknown or reads two ways."""
     out: list[Token] = []
@@ -79,7 +75,7 @@ def resolve_words(tokens: list[Token], table: NameTable) -> list[Token]:
                 word,
                 LISTED_FUNCTIONS,
             )
-        allowed = allowed_names(table)
+        allowed = table.declared
         listed = ", ".join(allowed) if allowed else "none"
         raise UnknownSymbol(
             f'Unknown symbol "{word}". Symbols you can use: {listed} (and the constants pi and e).'

@@ -15,6 +15,7 @@ import httpx
 import pytest
 from fastapi import FastAPI
 
+from app.auth import Principal, Role
 from app.db.database import Database
 from app.db.migrate import migrate
 from app.db.problems import save_builtin
@@ -74,9 +75,39 @@ def settings(database: Database) -> Settings:
     return Settings(database_url=database.url, base_url=TOOL, secret="test-secret-123")
 
 
+STUDENT_KEY = "student-key-for-tests"
+
+
+def fake_student_view(problem_id: str, student: str) -> dict[str, Any]:
+    """Shaped like the API's student view; the statement carries math and markup to escape."""
+    if problem_id not in PROBLEMS:
+        raise LookupError(problem_id)
+    document = PROBLEMS[problem_id]
+    return {
+        "id": problem_id,
+        "title": f"{document['title']} <i>for</i> {student}",
+        "statement": "A block of mass $m$ on a wedge of angle $\\theta$ <script>alert(1)</script>.\n\nUse $g$.",
+        "parts": [
+            {"id": part["id"], "kind": "symbolic", "prompt": f"Find ${part['id']}$.", "units": None,
+             "symbols": ["m", "M", "theta", "g"]}
+            for part in document["parts"]
+        ],
+    }  # fmt: skip
+
+
+def fake_authenticate_key(key: str) -> Principal | None:
+    return Principal("7", Role.STUDENT, "Student", "key-student") if key == STUDENT_KEY else None
+
+
 @pytest.fixture
 def context(database: Database, settings: Settings, lms: FakeLms) -> LtiContext:
-    return LtiContext(database=database, settings=settings, transport=httpx.ASGITransport(app=lms.app))
+    return LtiContext(
+        database=database,
+        settings=settings,
+        transport=httpx.ASGITransport(app=lms.app),
+        student_view=fake_student_view,
+        authenticate_key=fake_authenticate_key,
+    )
 
 
 @pytest.fixture

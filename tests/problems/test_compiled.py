@@ -188,3 +188,4 @@ def test_model_faults_are_reported_under_model() -> None:
     with pytest.raises(ProblemInvalid) as caught:
         parse_problem(data)
     assert caught.value.errors and all(p.startswith("model.") for p, _ in caught.value.errors), caught.value.errors
+

@@ -23,6 +23,14 @@ def test_valid_document_round_trips_through_its_dump() -> None:
     assert isinstance(doc.parts[0], SymbolicPart) and isinstance(doc.parts[1], NumericPart)
 
 
+def test_attempt_limits_are_optional_per_problem_and_per_part() -> None:
+    data = spring()
+    data["max_attempts"] = 5
+    data["parts"][1]["max_attempts"] = 2
+    doc = parse_problem(data, check_meaning=False)
+    assert (doc.max_attempts, doc.parts[0].max_attempts, doc.parts[1].max_attempts) == (5, None, 2)
+
+
 def test_numbers_are_kept_exactly_as_written() -> None:
     data = spring()
     data["given"]["m"]["min"] = 0.1
@@ -92,6 +100,7 @@ SHAPE_CASES = [
     pytest.param(_set("symbols.theta.range", [0, {}]), {"symbols.theta.range[1]": "must be a number or expression text"}, id="range-bound-mapping"),
     pytest.param(_set("parts.0.typo", 1), {"parts[0].typo": "unknown field"}, id="unknown-part-field"),
     pytest.param(_set("parts", []), {"parts": "must have at least 1 item(s)"}, id="no-parts"),
+    pytest.param(_set("parts.0.max_attempts", 0), {"parts[0].max_attempts": "must be >= 1"}, id="zero-attempts"),
     pytest.param(
         _all(_set("parts.1.tolerance", {"rel": 0}), _delete("statement"), _set("given.k.unit", 5)),
         {"parts[1].tolerance.rel": "must be > 0", "statement": "required", "given.k.unit": "must be text"},

@@ -1,0 +1,27 @@
+"""`physcheck bank verify`: re-derive and self-test the bank with a progress bar; non-zero on failure."""
+
+from __future__ import annotations
+
+import sys
+
+from tqdm import tqdm
+
+from problems.loader import load_bank
+from problems.selftest import verify_bank
+
+
+def verify_command(variants: int, only: list[str] | None = None) -> int:
+    documents = [doc for doc in load_bank() if not only or doc.id in only]
+    missing = sorted(set(only or ()) - {doc.id for doc in documents})
+    if missing:
+        print(f"not in the bank: {', '.join(missing)}", file=sys.stderr)
+        return 2
+    with tqdm(total=len(documents), unit="problem", file=sys.stderr, disable=None) as bar:
+
+        def progress(label: str, done: int, total: int) -> None:
+            bar.set_postfix_str(label)
+            bar.update(1)
+
+        report = verify_bank(documents, variants, progress)
+    print(report.summary())
+    return 0 if report.ok else 1
