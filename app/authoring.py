@@ -40,7 +40,9 @@ def vet(source: bytes, fmt: Literal["json", "yaml"]) -> Vetted:
     except ProblemInvalid as error:
         return Vetted(None, error.errors)
     except DerivationError as error:
-        return Vetted(None, [(f"model.quantities.{error.quantity}" if error.quantity else "model", error.message)])
+        return Vetted(
+            None, [(f"model.quantities.{error.quantity}" if error.quantity else "model", error.message)]
+        )
     report = verify_problem(doc, variants=UPLOAD_SELFTEST_VARIANTS)
     if not report.ok:
         index = {part.id: i for i, part in enumerate(doc.parts)}
@@ -66,7 +68,7 @@ class AuthoringPool:
 
     def close(self) -> None:
         if self._pool is not None:
-            self._pool.stop()
+            self._pool.stop()  # type: ignore[no-untyped-call]
             self._pool.join(timeout=5)
             self._pool = None
 

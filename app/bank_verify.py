@@ -3,15 +3,22 @@
 from __future__ import annotations
 
 import sys
+from pathlib import Path
 
 from tqdm import tqdm
 
+from problems.errors import ProblemInvalid
 from problems.loader import load_bank
 from problems.selftest import verify_bank
 
 
-def verify_command(variants: int, only: list[str] | None = None) -> int:
-    documents = [doc for doc in load_bank() if not only or doc.id in only]
+def verify_command(variants: int, only: list[str] | None = None, bank_dir: Path | None = None) -> int:
+    try:
+        bank = load_bank(bank_dir)
+    except ProblemInvalid as error:
+        print(error.message, file=sys.stderr)
+        return 1
+    documents = [doc for doc in bank if not only or doc.id in only]
     missing = sorted(set(only or ()) - {doc.id for doc in documents})
     if missing:
         print(f"not in the bank: {', '.join(missing)}", file=sys.stderr)

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import logging
 import threading
+from pathlib import Path
 from collections import OrderedDict
 
 from app.db import problems as problem_repository
@@ -19,8 +20,11 @@ log = logging.getLogger("physcheck.catalog")
 
 
 class Catalog:
-    def __init__(self, database: Database, secret: str, documents_cached: int = 256):
+    def __init__(
+        self, database: Database, secret: str, bank_dir: Path | None = None, documents_cached: int = 256
+    ):
         self._database = database
+        self._bank_dir = bank_dir
         self._secret = secret
         self._documents: OrderedDict[str, ProblemDocument] = OrderedDict()
         self._limit = documents_cached
@@ -29,7 +33,7 @@ class Catalog:
     def sync_builtin(self) -> list[ProblemRecord]:
         """Store the built-in bank: unchanged files keep their version, edited ones get a new one."""
         saved = []
-        for doc in load_bank():
+        for doc in load_bank(self._bank_dir):
             try:
                 with self._database.session() as session:
                     saved.append(

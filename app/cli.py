@@ -5,6 +5,8 @@ from __future__ import annotations
 import argparse
 import sys
 from collections.abc import Callable, Sequence
+from contextlib import nullcontext
+from pathlib import Path
 
 from app.settings import Settings, get_settings
 
@@ -53,7 +55,58 @@ def _keys_revoke(args: argparse.Namespace, settings: Settings) -> int:
 def _bank_verify(args: argparse.Namespace, settings: Settings) -> int:
     from app.bank_verify import verify_command
 
-    return verify_command(variants=args.variants, only=args.problem)
+    return verify_command(variants=args.variants, only=args.problem, bank_dir=settings.bank_dir)
+
+
+def _problems_import(args: argparse.Namespace, settings: Settings) -> int:
+    from app.startup import open_database
+    from app.transfer import import_problem
+    from problems.errors import ProblemInvalid
+
+    database = open_database(settings)
+    try:
+        for path in args.files:
+            try:
+                record = import_problem(database, Path(path))
+            except ProblemInvalid as error:
+                print(f"{path}: {len(error.errors)} error(s)", file=sys.stderr)
+                for where, message in error.errors:
+                    print(f"  {where}: {message}", file=sys.stderr)
+                return 1
+            print(f"{path}: imported {record.id} version {record.version}")
+    finally:
+        database.dispose()
+    return 0
+
+
+def _problems_export(args: argparse.Namespace, settings: Settings) -> int:
+    from app.startup import open_database
+    from app.transfer import export_problem
+
+    database = open_database(settings)
+    try:
+        export_problem(database, args.problem_id, args.format, sys.stdout)
+    finally:
+        database.dispose()
+    return 0
+
+
+def _submissions_export(args: argparse.Namespace, settings: Settings) -> int:
+    from app.startup import open_database
+    from app.transfer import export_submissions
+
+    database = open_database(settings)
+    try:
+        with (
+            open(args.output, "w", newline="", encoding="utf-8")
+            if args.output
+            else nullcontext(sys.stdout) as out
+        ):
+            rows = export_submissions(database, args.problem, out)
+    finally:
+        database.dispose()
+    print(f"{rows} submission(s) exported", file=sys.stderr)
+    return 0
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -84,6 +137,27 @@ def build_parser() -> argparse.ArgumentParser:
     verify.add_argument("--variants", type=int, default=20, help="random student variants per problem")
     verify.add_argument("--problem", action="append", default=None, help="only this problem (repeatable)")
     verify.set_defaults(handler=_bank_verify)
+
+    problems = commands.add_parser("problems", help="problem files").add_subparsers(
+        dest="problems_command", required=True
+    )
+    imports = problems.add_parser(
+        "import", help="vet and store problem files (YAML or JSON); a known id gets a new version"
+    )
+    imports.add_argument("files", nargs="+")
+    imports.set_defaults(handler=_problems_import)
+    exports = problems.add_parser("export", help="print a problem's latest version")
+    exports.add_argument("problem_id")
+    exports.add_argument("--format", choices=["yaml", "json"], default="yaml")
+    exports.set_defaults(handler=_problems_export)
+
+    submissions = commands.add_parser("submissions", help="submissions").add_subparsers(
+        dest="submissions_command", required=True
+    )
+    csv_export = submissions.add_parser("export", help="submissions as CSV, oldest first")
+    csv_export.add_argument("--problem", default=None)
+    csv_export.add_argument("--output", "-o", default=None, help="file to write (default: standard output)")
+    csv_export.set_defaults(handler=_submissions_export)
 
     return parser
 

@@ -44,6 +44,6 @@ class Storage:
 
 def open_storage(settings: Settings) -> Storage:
     database = open_database(settings)
-    catalog = Catalog(database, settings.secret)
+    catalog = Catalog(database, settings.secret, settings.bank_dir)
     catalog.sync_builtin()
     return Storage(database=database, keys=DatabaseKeyStore(database), catalog=catalog)

@@ -110,6 +110,7 @@ class CompiledProblem:
     table: Mapping[str, sympy.Symbol]
     parts: Mapping[str, CompiledPart]
     derived: Derived | None = None
+    constraints: tuple[sympy.Basic, ...] = ()  # relations the symbols satisfy (the problem's domain)
 
     def part(self, part_id: str) -> CompiledPart:
         return self.parts[part_id]
@@ -175,9 +176,10 @@ def _compile(doc: ProblemDocument, version: int, digest: str, use_model: bool) -
     errors: list[ErrorItem] = []
     try:
         specs = symbol_specs(doc)
+        table = {name: make_symbol(spec) for name, spec in specs.items()}
+        constraints = _constraints(doc, table)
     except SpecError as error:
         raise ProblemInvalid([(format_path(error.path), error.message)], doc.id) from None
-    table = {name: make_symbol(spec) for name, spec in specs.items()}
     derived: Derived | None = None
     if use_model and doc.model is not None:
         try:
@@ -186,7 +188,6 @@ def _compile(doc: ProblemDocument, version: int, digest: str, use_model: bool) -
             raise ProblemInvalid(
                 [(format_path(("model", *path)), message) for path, message in spec_error_items(error)], doc.id
             ) from None
-    constraints = _constraints(doc, table)
     decls = check_decls(doc)
 
     symbolic: dict[str, CompiledSymbolicPart] = {}
@@ -207,7 +208,7 @@ def _compile(doc: ProblemDocument, version: int, digest: str, use_model: bool) -
                 errors.append((format_path(error.path or ("parts", index)), error.message))
     if errors:
         raise ProblemInvalid(errors, doc.id)
-    return CompiledProblem(doc, version, digest, table, parts, derived)
+    return CompiledProblem(doc, version, digest, table, parts, derived, constraints)
 
 
 def _constraints(doc: ProblemDocument, table: Mapping[str, sympy.Symbol]) -> tuple[sympy.Basic, ...]:

@@ -81,7 +81,8 @@ class SymbolDecl(_Strict):
 
 
 class GivenDecl(_Strict):
-    """A per-student value: drawn in [min, max] (min = max fixes it), in `unit`, rounded to sigfigs or step."""
+    """A per-student value: drawn in [min, max] (min = max fixes it), in `unit`, rounded to sigfigs or step
+    (neither: DEFAULT_SIGFIGS significant figures)."""
 
     min: ExactNumber
     max: ExactNumber
@@ -94,10 +95,6 @@ class GivenDecl(_Strict):
         if self.sigfigs is not None and self.step is not None:
             raise ValueError("give sigfigs or step, not both")
         return self
-
-    @property
-    def effective_sigfigs(self) -> int | None:
-        return self.sigfigs if self.sigfigs is not None or self.step is not None else DEFAULT_SIGFIGS
 
 
 class MistakeDecl(_Strict):

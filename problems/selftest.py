@@ -25,7 +25,7 @@ from problems.errors import ProblemInvalid
 from problems.loader import load_bank
 from problems.modelinfo import MIN_AGREEING_METHODS
 from problems.schema import ProblemDocument
-from problems.variants import Variant, draw_variant, format_number, round_sigfigs, unit_scale
+from problems.variants import Variant, draw_variant, format_number, round_sigfigs, si_values, unit_scale
 
 # Not a credential: self-test variants only need to be reproducible.
 SELFTEST_SECRET = "physcheck-bank-selftest"  # noqa: S105
@@ -128,6 +128,7 @@ def verify_problem(
         report.results.extend(_agreement_checks(doc.id, compiled))
     total = len(compiled.parts)
     students = [draw_variant(doc, version, f"selftest-{i}", secret) for i in range(variants)]
+    report.results.extend(_domain_checks(doc.id, compiled, students))
     for done, (part_id, part) in enumerate(compiled.parts.items(), start=1):
         try:
             if isinstance(part, CompiledSymbolicPart):
@@ -180,6 +181,25 @@ def _agreement_checks(problem: str, compiled: CompiledProblem) -> list[CheckResu
         detail = proof if ok else f"derived by {', '.join(methods) or 'no method'} only"
         results.append(CheckResult(problem, part.id, "methods agree", ok, detail))
     return results
+
+
+def _domain_checks(problem: str, compiled: CompiledProblem, students: list[Variant]) -> list[CheckResult]:
+    """Every student's given values satisfy the problem's constraints (the skier does slide)."""
+    results = []
+    for index, variant in enumerate(students):
+        values = si_values(compiled.document, variant, compiled.table)
+        broken = []
+        for relation in compiled.constraints:
+            at = relation.xreplace(values)
+            if not at.free_symbols and at is not sympy.true:
+                broken.append(f"{sympy.sstr(relation)} fails at {_shown(variant)}")
+        if compiled.constraints:
+            results.append(CheckResult(problem, None, f"variant {index} in domain", not broken, "; ".join(broken)))
+    return results
+
+
+def _shown(variant: Variant) -> str:
+    return ", ".join(f"{name} = {value}" for name, value in variant.values.items())
 
 
 # ---- symbolic parts ---------------------------------------------------------------------------

@@ -60,7 +60,7 @@ class GradingPool:
 
     def close(self) -> None:
         if self._pool is not None:
-            self._pool.stop()
+            self._pool.stop()  # type: ignore[no-untyped-call]
             self._pool.join(timeout=5)
             self._pool = None
 
@@ -84,7 +84,7 @@ class GradingPool:
             raise Busy("The grading queue is full; try again shortly.", retry_after=1)
         self._in_flight += 1
         try:
-            outcome = await asyncio.wrap_future(self._submit(job))
+            outcome: Verdict | SpecProblem = await asyncio.wrap_future(self._submit(job))
         except FutureTimeout:
             return Verdict.invalid(CheckTimeout(TIMEOUT_MESSAGE))
         except ProcessExpired as error:

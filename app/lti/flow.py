@@ -33,6 +33,7 @@ from app.lti.id_token import (
     CLAIM_VERSION,
     DEEP_LINKING_REQUEST,
     LTI_VERSION,
+    MAX_TOKEN_CHARS,
     LaunchClaims,
     verify_id_token,
 )
@@ -47,19 +48,22 @@ DEEP_LINK_LIFETIME = timedelta(hours=1)
 NONCE_RETENTION = timedelta(hours=2)
 BROWSER_COOKIE = "physcheck_lti_browser"
 PROBLEM_ID = re.compile(r"^[A-Za-z0-9][A-Za-z0-9._-]{0,99}$")
-_MAX_PARAM_CHARS = 2048
+# Platforms' hints are opaque and may themselves be JWTs (Canvas's lti_message_hint is).
+_MAX_PARAM_CHARS = 8192
 
 CLAIM_CONTENT_ITEMS = "https://purl.imsglobal.org/spec/lti-dl/claim/content_items"
 CLAIM_DL_DATA = "https://purl.imsglobal.org/spec/lti-dl/claim/data"
 
 
-def _param(params: Mapping[str, str], name: str, *, required: bool = True) -> str | None:
+def _param(
+    params: Mapping[str, str], name: str, *, required: bool = True, limit: int = _MAX_PARAM_CHARS
+) -> str | None:
     value = params.get(name)
     if value is None or value == "":
         if required:
             raise MalformedRequest(f"missing_{name}", f"The request lacks the '{name}' parameter.")
         return None
-    if len(value) > _MAX_PARAM_CHARS:
+    if len(value) > limit:
         raise MalformedRequest(f"bad_{name}", f"The '{name}' parameter is too long.")
     return value
 
@@ -148,7 +152,7 @@ class LaunchOutcome:
 async def complete_launch(
     context: LtiContext, form: Mapping[str, str], browser_token: str | None
 ) -> LaunchOutcome:
-    id_token = _param(form, "id_token")
+    id_token = _param(form, "id_token", limit=MAX_TOKEN_CHARS)
     state = _param(form, "state")
     assert id_token is not None and state is not None
 
@@ -194,6 +198,7 @@ async def complete_launch(
                 session, platform_id=platform.id, sub=claims.sub, role=role, name=claims.name, now=now
             )
             deep_link_id: str | None = None
+            session.execute(delete(LtiDeepLinkRequest).where(LtiDeepLinkRequest.expires_at < now))
             if claims.deep_link_return_url is not None:
                 deep_link_id = secrets.token_urlsafe(32)
                 session.add(

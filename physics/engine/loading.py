@@ -388,4 +388,7 @@ def _quantity(name: str, entry: Any, path: Path, symbols: Mapping[str, sympy.Sym
     if collision is None:
         errors.add("this quantity needs a collision section", where)
         return None
-    return Quantity(name, kind)
+    if target != collision.projectile:
+        errors.add(f"the collision's projectile is {collision.projectile!r}, not {target!r}", where)
+        return None
+    return Quantity(name, kind, str(target))

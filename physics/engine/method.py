@@ -8,6 +8,7 @@ import sympy
 
 from physics.engine.mechanics import Mechanics
 from physics.engine.model import Model, Quantity, QuantityKind
+from physics.engine.proof import domain_points
 from physics.engine.results import MethodReport, Step
 from physics.errors import DerivationError
 
@@ -79,20 +80,15 @@ class Method(ABC):
         return self.collision(kind)
 
     def equilibrium(self, coordinate: str) -> sympy.Expr:
-        """The stable root of the generalized force Q(q) = 0: Q'(q0) < 0 on the domain."""
+        """The stable root of the generalized force Q(q) = 0: Q'(q0) < 0 on the whole domain."""
         q = self.model.coordinate(coordinate).symbol
         force = self.potential_force(coordinate)
         others = (force.free_symbols & set(self.mech.q)) - {q}
         if others:
             raise NotApplicable(f"the force on {coordinate} depends on other coordinates {sorted(map(str, others))}")
-        roots = [r for r in sympy.solve(force, q) if r.is_real is not False and not
-                 (q.is_positive and r.is_positive is False)]
+        roots = _real_roots(force, q)
         slope = sympy.diff(force, q)
-        stable = []
-        for root in roots:
-            curvature = sympy.simplify(slope.subs(q, root))
-            if curvature.is_negative or (curvature.is_negative is None and _negative_somewhere(curvature)):
-                stable.append(root)
+        stable = [root for root in roots if _negative_on_domain(sympy.simplify(slope.subs(q, root)), self.model)]
         if len(stable) != 1:
             raise DerivationError(
                 f"{self.title}: expected one stable equilibrium of {coordinate}, found {len(stable)} among "
@@ -123,7 +119,22 @@ class Method(ABC):
         return sympy.simplify(expr.subs(dict(self.model.state)))
 
 
-def _negative_somewhere(expr: sympy.Expr) -> bool:
-    """A cheap sign test at a point where every positive symbol is 1 (used only when sympy is unsure)."""
-    value = expr.subs({s: 1 for s in expr.free_symbols})
-    return bool(value.is_negative)
+def _real_roots(expr: sympy.Expr, q: sympy.Symbol) -> list[sympy.Expr]:
+    """Real roots of expr = 0 in q that respect q's sign. `solve` under q's assumptions can return
+    fewer roots than exist, so an unrestricted real stand-in is tried when it finds none."""
+    roots = sympy.solve(expr, q)
+    if not roots:
+        free = sympy.Dummy("q", real=True)
+        roots = sympy.solve(expr.subs(q, free), free)
+    return [r for r in roots if r.is_real is not False and not (q.is_positive and r.is_positive is False)
+            and not (q.is_negative and r.is_negative is False)]
+
+
+def _negative_on_domain(expr: sympy.Expr, model: Model) -> bool:
+    """expr < 0 under the symbols' assumptions, or else at every one of a set of domain points."""
+    if expr.is_negative is not None:
+        return bool(expr.is_negative)
+    try:
+        return all(float(expr.subs(point)) < 0 for point in domain_points(model, 12, seed=3))
+    except (TypeError, ValueError):
+        return False

@@ -52,6 +52,9 @@ def prove_equal(first: sympy.Expr, second: sympy.Expr, model: Model, what: str,
         for attempt in (sympy.cancel, sympy.simplify, lambda e: sympy.simplify(e.rewrite(sympy.sin))):
             if attempt(difference) == 0:
                 return "symbolic"
+        angles = _angle_substitution(model)
+        if angles and sympy.simplify(difference.subs(angles)) == 0:
+            return "symbolic (angles in range as atan of a positive parameter)"
     worst = 0.0
     for point in domain_points(model, SAMPLES, seed=zlib.crc32(what.encode())):
         exact = {s: sympy.Float(v, DIGITS) for s, v in point.items()}
@@ -67,6 +70,22 @@ def prove_equal(first: sympy.Expr, second: sympy.Expr, model: Model, what: str,
                 f"at {_show(point)} they are {float(a):.10g} and {float(b):.10g}", quantity=what)
         worst = max(worst, float(gap / max(1, abs(a))))
     return f"sampled ({SAMPLES} points of the domain, {DIGITS} digits, worst relative gap {worst:.1e})"
+
+
+def _angle_substitution(model: Model) -> dict[sympy.Symbol, sympy.Expr]:
+    """theta = atan(t) (or 2 atan(t)) with t > 0 for an angle ranging over (0, pi/2) (or (0, pi)): the
+    trigonometric functions become algebraic in t with known signs, which lets simplify close sqrt forms
+    that need the range (sqrt(1 - cos^2) = sin only when sin > 0)."""
+    result: dict[sympy.Symbol, sympy.Expr] = {}
+    for symbol, low, high in model.ranges:
+        if low != 0:
+            continue
+        t = sympy.Dummy(f"t_{symbol}", positive=True)
+        if high == sympy.pi / 2:
+            result[symbol] = sympy.atan(t)
+        elif high == sympy.pi:
+            result[symbol] = 2 * sympy.atan(t)
+    return result
 
 
 def _show(point: dict[sympy.Symbol, float]) -> str:

@@ -184,12 +184,12 @@ class Simulator:
     def _force(self, quantity: Quantity, point: Point, expected: float) -> Measured:
         """Cartesian accelerations measured on the trajectory, then Newton's law along each normal."""
         h = 1e-2
-        dyn, mech = self.dynamics, self.dynamics.mech
+        dyn = self.dynamics
         params = dyn.values(point)
-        before, now, after = (dyn.positions(q, params) for q in self._trajectory_around(point, h))
+        trajectory = self._trajectory_around(point, h)
+        before, now, after = (dyn.positions(q, params) for q in trajectory)
         accel = [(a - 2 * b + c) / h**2 for a, b, c in zip(before, now, after, strict=True)]
-        q_now = self._trajectory_around(point, h)[1]
-        grads, base, per_lambda, masses = self._force_parts(q_now, point)
+        grads, base, per_lambda, masses = self._force_parts(trajectory[1], point)
         k = len(grads)
         matrix = [[sum(g * (x + y) for g, x, y in zip(grads[r], grads[c], per_lambda[c], strict=True))
                    for c in range(k)] for r in range(k)]
@@ -197,7 +197,6 @@ class Simulator:
                for r in range(k)]
         lam = solve_numeric(matrix, rhs)
         index = [c.name for c in self.model.constraints].index(quantity.target)
-        del mech
         return "Newton's law applied to the accelerations measured on the integrated trajectory", lam[index], None
 
     @cached_property

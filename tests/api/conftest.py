@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 from collections.abc import Iterator
-from pathlib import Path
 
 import pytest
 from fastapi.testclient import TestClient
@@ -24,8 +23,9 @@ def grading_pool() -> Iterator[GradingPool]:
 
 
 @pytest.fixture
-def settings(tmp_path: Path) -> Settings:
-    return Settings(database_url=f"sqlite:///{tmp_path / 'physcheck.db'}", secret="test-secret-0123456789")
+def settings(db: Database) -> Settings:
+    """Settings on a fresh database; `db` runs every API test on SQLite and on PostgreSQL."""
+    return Settings(database_url=db.url, secret="test-secret-0123456789")
 
 
 @pytest.fixture

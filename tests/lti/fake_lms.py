@@ -119,6 +119,7 @@ class FakeLms:
         self.fail_scores = 0  # answer this many score posts with 503 first
         self.score_status: int | None = None  # force a status (e.g. 422) for every score post
         self.token_requests = 0
+        self.jwks_down = False
         self.assertions: list[str] = []  # client assertions received at the token endpoint
         self.token_lifetime: int | None = None  # override the platform's expires_in
         self.retry_after: str | None = None  # sent with the 503s
@@ -154,7 +155,9 @@ class FakeLms:
             return t.cast(dict[str, t.Any], launch.lti_launch())
 
         @app.get("/jwks")
-        def jwks() -> dict[str, t.Any]:
+        def jwks() -> t.Any:
+            if self.jwks_down:
+                return JSONResponse({"error": "down"}, status_code=500)
             return {"keys": self.registration.get_jwks()}
 
         @app.post("/token")

@@ -108,6 +108,8 @@ ACCEPTED: list[Any] = [
     pytest.param(signed(iat=FromNow(30)), id="future-iat-within-leeway"),
     pytest.param(signed(aud=[CLIENT_ID, "other"], azp=CLIENT_ID), id="several-audiences-with-our-azp"),
     pytest.param(signed(aud=[CLIENT_ID]), id="audience-as-list"),
+    # Real platforms send large tokens (Canvas: many claims, several KB).
+    pytest.param(signed(**{"https://example.test/ext": "x" * 12_000}), id="large-token"),
 ]
 
 
@@ -200,3 +202,16 @@ async def test_platform_key_rotation_is_picked_up_by_one_refetch(browser: httpx.
     assert (
         await browser.post(f"{TOOL}/lti/launch", data={"id_token": token, "state": second.state})
     ).status_code == 303
+
+
+async def test_unreachable_platform_keys_give_a_clear_page_not_a_stack_trace(
+    browser: httpx.AsyncClient, lms: FakeLms, context: LtiContext
+):
+    lms.jwks_down = True
+    login = await start_login(browser)
+    response = await browser.post(
+        f"{TOOL}/lti/launch", data={"id_token": signed()(lms, login.nonce), "state": login.state}
+    )
+    assert response.status_code == 502
+    assert "could not be reached" in response.text and "Traceback" not in response.text
+    assert session_count(context) == 0

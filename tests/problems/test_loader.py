@@ -83,3 +83,12 @@ def test_bank_reports_the_faults_of_every_broken_problem(tmp_path: Path) -> None
     with pytest.raises(ProblemInvalid) as caught:
         load_bank(tmp_path, check_meaning=False)
     assert [path for path, _ in caught.value.errors] == ["first:title", "second:title"]
+
+
+def test_format_guide_example_is_a_valid_problem() -> None:
+    from problems.loader import BANK_DIR
+
+    guide = (BANK_DIR.parent / "FORMAT.md").read_text()
+    example = guide.split("```yaml\n", 1)[1].split("```", 1)[0]
+    doc = parse_problem(example)
+    assert doc.id == "incline-pulley-demo" and doc.max_attempts == 5

@@ -37,6 +37,14 @@ def test_a_mistake_equal_to_the_answer_fails_the_self_test() -> None:
     assert "FAIL tiny-spring" in report.summary()
 
 
+def test_given_values_outside_the_constraints_fail_the_self_test() -> None:
+    data = spring()
+    data["constraints"] = ["k < 50*m"]  # k is drawn up to 100 N/m with m down to 0.5 kg
+    report = verify_problem(parse_problem(data), variants=10, use_model=False)
+    failures = [r for r in report.failures if r.check.endswith("in domain")]
+    assert failures and "k < 50*m fails at" in failures[0].detail
+
+
 def test_compile_failure_is_a_failed_check_not_an_exception() -> None:
     data = spring()
     del data["given"]["k"]

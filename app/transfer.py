@@ -1,0 +1,94 @@
+"""Command-line import and export: problems as YAML/JSON files, submissions as CSV."""
+
+from __future__ import annotations
+
+import csv
+import json
+import sys
+from pathlib import Path
+from typing import TextIO
+
+import yaml
+from tqdm import tqdm
+
+from app.authoring import vet
+from app.db import problems as problem_repository
+from app.db import submissions as submission_repository
+from app.db.database import Database
+from app.db.records import ProblemRecord
+from problems.errors import ProblemInvalid
+
+SUBMISSION_COLUMNS = (
+    "submission_id",
+    "created_at",
+    "problem",
+    "problem_version",
+    "part",
+    "student",
+    "answer",
+    "verdict",
+    "score",
+    "reason",
+    "attempt",
+    "feedback",
+)
+EXPORT_PAGE = 1000
+
+
+def import_problem(database: Database, path: Path) -> ProblemRecord:
+    """Vet and store a problem file: a new problem, or a new version of one the CLI or bank owns.
+
+    Raises ProblemInvalid with every fault found.
+    """
+    vetted = vet(path.read_bytes(), "json" if path.suffix.lower() == ".json" else "yaml")
+    if vetted.document is None:
+        raise ProblemInvalid(vetted.errors)
+    with database.session() as session:
+        # Stored like the built-in bank (no owner key): unchanged files keep their version.
+        return problem_repository.save_builtin(session, vetted.document["id"], vetted.document)
+
+
+def export_problem(database: Database, problem_id: str, fmt: str, out: TextIO) -> None:
+    with database.session(read_only=True) as session:
+        record = problem_repository.get_problem(session, problem_id, include_retired=True)
+    document = dict(record.document)
+    if fmt == "json":
+        json.dump(document, out, indent=2, ensure_ascii=False)
+        out.write("\n")
+    else:
+        yaml.safe_dump(document, out, sort_keys=False, allow_unicode=True)
+
+
+def export_submissions(database: Database, problem_id: str | None, out: TextIO) -> int:
+    """Every submission (of one problem) as CSV, oldest first; returns how many rows were written."""
+    writer = csv.writer(out)
+    writer.writerow(SUBMISSION_COLUMNS)
+    rows, cursor = 0, None
+    with tqdm(unit=" submissions", file=sys.stderr, disable=None) as bar:
+        while True:
+            with database.session(read_only=True) as session:
+                page = submission_repository.list_submissions(
+                    session, problem_id=problem_id, limit=EXPORT_PAGE, cursor=cursor
+                )
+            for item in page.items:
+                writer.writerow(
+                    (
+                        item.id,
+                        item.created_at.isoformat(),
+                        item.problem_id,
+                        item.problem_version,
+                        item.part_id,
+                        item.student,
+                        item.answer,
+                        item.verdict.value,
+                        item.score,
+                        item.reason.value,
+                        "" if item.attempt is None else item.attempt,
+                        item.feedback,
+                    )
+                )
+            rows += len(page.items)
+            bar.update(len(page.items))
+            if page.next is None:
+                return rows
+            cursor = page.next

@@ -1,0 +1,89 @@
+"""Deliberately wrong models and methods: each ends in a DerivationError that says what went wrong."""
+
+from __future__ import annotations
+
+import copy
+from functools import cached_property
+from typing import Any
+
+import pytest
+import sympy
+
+from physics.engine import derivation, load_model
+from physics.engine.lagrange import LagrangeMethod
+from physics.engine.newton import NewtonMethod
+from physics.errors import DerivationError
+from tests.engine.conftest import model_data, symbols
+
+uncached = derivation._derive.__wrapped__  # these tests must not reuse (or pollute) the cache
+
+
+def _load(problem: str, change: Any) -> Any:
+    data = copy.deepcopy(model_data(problem))
+    change(data)
+    return load_model(data, symbols(problem))
+
+
+def test_positions_that_violate_a_constraint_are_caught() -> None:
+    model = _load("moving-wedge", lambda d: d["bodies"]["block"]["position"].update(y="s*sin(theta)"))
+    with pytest.raises(DerivationError, match=r"incline.*violate"):
+        uncached(model)
+
+
+def test_missing_constraint_leaves_too_many_degrees_of_freedom() -> None:
+    model = _load("atwood", lambda d: d.update(constraints={}, quantities={"acceleration": {"acceleration": "s"}}))
+    with pytest.raises(DerivationError, match="2 degrees of freedom but the model has 1"):
+        uncached(model)
+
+
+class GravityFlippedNewton(NewtonMethod):
+    """Newton's method fed gravity with the wrong sign: one method's input is wrong."""
+
+    @cached_property
+    def applied_forces(self) -> list[sympy.Expr]:
+        return [-f for f in super().applied_forces]
+
+
+def test_a_sign_flipped_in_one_method_makes_the_methods_disagree(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(derivation, "_methods", lambda: (LagrangeMethod, GravityFlippedNewton))
+    model = _load("atwood", lambda d: None)
+    with pytest.raises(DerivationError) as caught:
+        uncached(model)
+    message = caught.value.message
+    assert caught.value.quantity == "acceleration"
+    assert "disagree" in message and "lagrange" in message and "newton" in message
+    assert "m1" in message and "m2" in message  # the two formulas and the point are shown
+
+
+def test_a_quantity_only_one_method_reaches_is_refused(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(derivation, "_methods", lambda: (LagrangeMethod,))
+    with pytest.raises(DerivationError, match="only 1 method"):
+        uncached(_load("atwood", lambda d: None))
+
+
+def test_a_wrong_closed_form_is_caught_by_the_simulation(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(derivation, "_simplest", lambda forms: 2 * forms[0])
+    with pytest.raises(DerivationError, match="simulation disagrees"):
+        uncached(_load("atwood", lambda d: None))
+
+
+def test_a_potential_without_a_minimum_has_no_stable_equilibrium() -> None:
+    model = _load("mass-spring", lambda d: d["potentials"][0].update(energy="-k*e^2/2"))
+    with pytest.raises(DerivationError, match="stable equilibrium"):
+        uncached(model)
+
+
+def test_an_answer_that_depends_on_the_configuration_needs_a_state() -> None:
+    model = _load("ballistic-pendulum", lambda d: d.update(quantities={"swing": {"acceleration": "phi"}}))
+    with pytest.raises(DerivationError, match="phi"):
+        uncached(model)
+
+
+def test_giving_the_state_resolves_the_configuration() -> None:
+    def change(d: dict[str, Any]) -> None:
+        d.update(quantities={"swing": {"acceleration": "phi"}}, state={"phi": "theta"})
+        d.pop("collision")
+
+    result = uncached(_load("ballistic-pendulum", change))
+    length, th, g = (symbols("ballistic-pendulum")[n] for n in ("L", "theta", "g"))
+    assert sympy.simplify(result.quantities["swing"] + g * sympy.sin(th) / length) == 0
