@@ -29,6 +29,7 @@ class Catalog:
         self._documents: OrderedDict[str, ProblemDocument] = OrderedDict()
         self._limit = documents_cached
         self._lock = threading.Lock()
+        self.warm = threading.Event()
 
     def sync_builtin(self) -> list[ProblemRecord]:
         """Store the built-in bank: unchanged files keep their version, edited ones get a new one."""
@@ -44,6 +45,17 @@ class Catalog:
                     "an uploaded problem already uses the bank id %r; the bank's is not served", doc.id
                 )
         return saved
+
+    def warm_up(self) -> None:
+        """Compile every live problem once (derivations take seconds); then the instance is ready."""
+        try:
+            for record in self.list():
+                try:
+                    self.compiled(record)
+                except Exception:  # one broken problem must not keep the others cold
+                    log.exception("could not compile problem %r version %d", record.id, record.version)
+        finally:
+            self.warm.set()
 
     def get(self, problem_id: str, version: int | None = None) -> ProblemRecord:
         with self._database.session(read_only=True) as session:

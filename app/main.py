@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import threading
 from collections.abc import AsyncIterator
 from contextlib import asynccontextmanager
 
@@ -50,6 +51,8 @@ def create_app(settings: Settings | None = None, *, pool: GradingPool | None = N
             catalog=storage.catalog,
             authoring=authoring,
         )
+        warming = threading.Thread(target=storage.catalog.warm_up, name="catalog-warm-up", daemon=True)
+        warming.start()
         try:
             yield
         finally:

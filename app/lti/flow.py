@@ -80,6 +80,8 @@ class LoginRedirect:
 async def begin_login(
     context: LtiContext, params: Mapping[str, str], browser_token: str | None
 ) -> LoginRedirect:
+    """Third-party initiated login: check who is asking, remember (state, nonce) for this browser,
+    and send it to the platform's authorization endpoint."""
     issuer = _param(params, "iss")
     login_hint = _param(params, "login_hint")
     target = _param(params, "target_link_uri")
@@ -152,6 +154,8 @@ class LaunchOutcome:
 async def complete_launch(
     context: LtiContext, form: Mapping[str, str], browser_token: str | None
 ) -> LaunchOutcome:
+    """The platform's form post: the login it answers (taken once), the id_token's signature and
+    claims, the deployment, the nonce (spent); then a session, and the grade target if any."""
     id_token = _param(form, "id_token", limit=MAX_TOKEN_CHARS)
     state = _param(form, "state")
     assert id_token is not None and state is not None

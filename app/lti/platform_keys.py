@@ -77,7 +77,9 @@ class PlatformKeyCache:
     async def _fetch(self, url: str) -> dict[str, RSAKey]:
         try:
             async with self._client() as client:
-                response = await client.get(url, headers={"Accept": "application/json"})
+                response = await client.get(
+                    url, headers={"Accept": "application/json"}, follow_redirects=True
+                )
         except httpx.HTTPError as error:
             raise PlatformKeysUnavailable(url, type(error).__name__) from error
         if response.status_code != 200:

@@ -40,7 +40,7 @@ class ConservationMethod(Method):
             initial = [p.subs(state) for p in momenta]
             for i, p, p0 in zip(cyclic, momenta, initial, strict=True):
                 self.step(f"Momentum conjugate to {mech.q[i]} is conserved",
-                          sympy.latex(sympy.Eq(p, p0)))
+                          self.tex(sympy.Eq(p, p0)))
             velocities = solve_linear([p - p0 for p, p0 in zip(momenta, initial, strict=True)],
                                       [mech.qd[i] for i in cyclic], self.title)
         kinetic = sympy.simplify(mech.kinetic.subs(velocities))
@@ -65,14 +65,14 @@ class ConservationMethod(Method):
             energy = part_t + part_v
             rate = sympy.expand(time_derivative(energy, model) / c.velocity)
             self.step(f"Energy of {c.name} is conserved",
-                      rf"E = {sympy.latex(energy)},\ \frac{{dE}}{{dt}} = 0 \Rightarrow "
-                      + sympy.latex(sympy.Eq(sympy.simplify(rate), 0)))
+                      rf"E = {self.tex(energy)},\ \frac{{dE}}{{dt}} = 0 \Rightarrow "
+                      + self.tex(sympy.Eq(sympy.simplify(rate), 0)))
             result[c.acceleration] = sympy.solve(rate, c.acceleration)[0]
         for velocity, expr in velocities.items():
             c = next(c for c in model.coordinates if c.velocity == velocity)
             result[c.acceleration] = sympy.simplify(time_derivative(expr, model).subs(result))
             self.step(f"Acceleration of {c.name} from its momentum",
-                      sympy.latex(sympy.Eq(c.acceleration, result[c.acceleration])))
+                      self.tex(sympy.Eq(c.acceleration, result[c.acceleration])))
         return result
 
     def acceleration(self, coordinate: str) -> sympy.Expr:
@@ -99,7 +99,7 @@ class ConservationMethod(Method):
         omega2 = sympy.simplify(curvature / inertia.subs(c.symbol, equilibrium))
         self.step("Small oscillations from the energy",
                   r"E \approx \tfrac12 M_0 \dot q^2 + \tfrac12 V''(q_0)\,\delta q^2,\ \omega^2 = "
-                  + sympy.latex(omega2))
+                  + self.tex(omega2))
         return sympy.simplify(sympy.sqrt(omega2))
 
     def collision(self, item: QuantityKind) -> sympy.Expr:

@@ -21,8 +21,8 @@ class LagrangeMethod(Method):
 
     def derive(self) -> None:
         mech = self.mech
-        self.step("Kinetic energy", "T = " + sympy.latex(sympy.simplify(mech.kinetic)))
-        self.step("Potential energy", "V = " + sympy.latex(sympy.simplify(mech.potential)))
+        self.step("Kinetic energy", "T = " + self.tex(sympy.simplify(mech.kinetic)))
+        self.step("Potential energy", "V = " + self.tex(sympy.simplify(mech.potential)))
 
     @cached_property
     def system(self) -> tuple[list[sympy.Expr], list[sympy.Symbol]]:
@@ -37,11 +37,11 @@ class LagrangeMethod(Method):
             generalized = sympy.Add(*(f * sympy.diff(d.mapping, c.symbol) for f, d in zip(friction, mech.dofs,
                                                                                            strict=True)))
             el = time_derivative(sympy.diff(lagrangian, c.velocity), model) - sympy.diff(lagrangian, c.symbol)
-            equation = sympy.collect(sympy.expand(el - generalized), list(mech.qdd))
+            equation = sympy.collect(sympy.trigsimp(sympy.expand(el - generalized)), list(mech.qdd))
             self.step(f"Lagrange's equation for {c.name}",
-                      rf"\frac{{d}}{{dt}}\frac{{\partial L}}{{\partial \dot{{{sympy.latex(c.symbol)}}}}} - "
-                      rf"\frac{{\partial L}}{{\partial {sympy.latex(c.symbol)}}} = Q_{{{sympy.latex(c.symbol)}}}"
-                      r":\quad " + sympy.latex(sympy.Eq(equation, 0)))
+                      rf"\frac{{d}}{{dt}}\frac{{\partial L}}{{\partial \dot{{{self.tex(c.symbol)}}}}} - "
+                      rf"\frac{{\partial L}}{{\partial {self.tex(c.symbol)}}} = Q_{{{self.tex(c.symbol)}}}"
+                      r":\quad " + self.tex(sympy.Eq(equation, 0)))
             equations.append(equation)
         if lam:
             place = mech.cartesian_state()
@@ -66,7 +66,7 @@ class LagrangeMethod(Method):
         equations, unknowns = self.system
         state = dict(self.model.state)
         solution = solve_linear([e.subs(state) for e in equations], unknowns, self.title)
-        self.step("Solved", r",\quad ".join(sympy.latex(sympy.Eq(k, v)) for k, v in solution.items()))
+        self.step("Solved", r",\quad ".join(self.tex(sympy.Eq(k, v)) for k, v in solution.items()))
         return solution
 
     def acceleration(self, coordinate: str) -> sympy.Expr:
@@ -80,8 +80,8 @@ class LagrangeMethod(Method):
         q = self.model.coordinate(coordinate).symbol
         force = sympy.simplify(-sympy.diff(self.mech.potential, q))
         self.step(f"Generalized force on {coordinate}",
-                  rf"Q_{{{sympy.latex(q)}}} = -\frac{{\partial V}}{{\partial {sympy.latex(q)}}} = "
-                  + sympy.latex(force))
+                  rf"Q_{{{self.tex(q)}}} = -\frac{{\partial V}}{{\partial {self.tex(q)}}} = "
+                  + self.tex(force))
         return force
 
     def frequency(self, coordinate: str, equilibrium: sympy.Expr) -> sympy.Expr:
@@ -92,8 +92,8 @@ class LagrangeMethod(Method):
         stiffness = sympy.hessian(mech.potential, mech.q).subs(at)
         mass = mech.mass_matrix.subs(at)
         omega2 = _single_nonzero_eigenvalue(mass.inv() * stiffness)
-        self.step("Small oscillations", r"M\ddot{q} + Kq = 0,\ M = " + sympy.latex(mass) + r",\ K = "
-                  + sympy.latex(sympy.simplify(stiffness)) + r",\ \omega^2 = " + sympy.latex(omega2))
+        self.step("Small oscillations", r"M\ddot{q} + Kq = 0,\ M = " + self.tex(mass) + r",\ K = "
+                  + self.tex(sympy.simplify(stiffness)) + r",\ \omega^2 = " + self.tex(omega2))
         return sympy.simplify(sympy.sqrt(omega2))
 
 

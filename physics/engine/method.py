@@ -27,6 +27,9 @@ class Method(ABC):
         self.steps: list[Step] = []
         self._logged: set[str] = set()
 
+    def tex(self, expr: sympy.Basic) -> str:
+        return str(sympy.latex(expr, symbol_names=self.mech.latex_names))
+
     def step(self, title: str, latex: str) -> None:
         if title not in self._logged:
             self._logged.add(title)
@@ -66,8 +69,8 @@ class Method(ABC):
             q0 = self.equilibrium(quantity.target)
             stiffness = sympy.simplify(-sympy.diff(self.potential_force(quantity.target), q).subs(q, q0))
             self.step(f"Stiffness at the equilibrium ({quantity.target})",
-                      rf"k = -\left.\frac{{\partial Q}}{{\partial {sympy.latex(q)}}}\right|_0 = "
-                      + sympy.latex(stiffness))
+                      rf"k = -\left.\frac{{\partial Q}}{{\partial {self.tex(q)}}}\right|_0 = "
+                      + self.tex(stiffness))
             return stiffness
         if kind is QuantityKind.ANGULAR_FREQUENCY:
             return self.frequency(quantity.target, self.equilibrium(quantity.target))
@@ -94,8 +97,8 @@ class Method(ABC):
                 f"{self.title}: expected one stable equilibrium of {coordinate}, found {len(stable)} among "
                 f"the roots {roots} of Q = {force}", quantity=coordinate)
         self.step(f"Equilibrium of {coordinate}",
-                  rf"Q({sympy.latex(q)}) = {sympy.latex(force)} = 0 \Rightarrow {sympy.latex(q)}_0 = "
-                  + sympy.latex(stable[0]) + r",\quad Q'(" + sympy.latex(q) + "_0) < 0")
+                  rf"Q({self.tex(q)}) = {self.tex(force)} = 0 \Rightarrow {self.tex(q)}_0 = "
+                  + self.tex(stable[0]) + r",\quad Q'(" + self.tex(q) + "_0) < 0")
         return sympy.simplify(stable[0])
 
     def solve_for(self, parameter: sympy.Symbol, expr: sympy.Expr, name: str) -> sympy.Expr:
@@ -104,8 +107,8 @@ class Method(ABC):
         if len(roots) != 1:
             raise DerivationError(f"{self.title}: {name}: expected one value of {parameter}, found {roots}",
                                   quantity=name)
-        self.step(f"Solve for {parameter}", sympy.latex(sympy.Eq(expr, 0)) + r"\Rightarrow "
-                  + sympy.latex(sympy.Eq(parameter, roots[0])))
+        self.step(f"Solve for {parameter}", self.tex(sympy.Eq(expr, 0)) + r"\Rightarrow "
+                  + self.tex(sympy.Eq(parameter, roots[0])))
         return sympy.simplify(roots[0])
 
     @abstractmethod

@@ -29,9 +29,9 @@ class NewtonMethod(Method):
             constraint_terms = sympy.Add(*(lam * g for lam, g in zip(
                 mech.multipliers, (sympy.diff(c.gap, d.symbol) for c in self.model.constraints), strict=True)))
             self.step(f"Newton's second law, {d.name}",
-                      sympy.latex(sympy.Eq(d.inertia * d.acceleration, force + constraint_terms)))
+                      self.tex(sympy.Eq(d.inertia * d.acceleration, force + constraint_terms)))
         for constraint in self.model.constraints:
-            self.step(f"Constraint {constraint.name}", sympy.latex(sympy.Eq(constraint.gap, 0)))
+            self.step(f"Constraint {constraint.name}", self.tex(sympy.Eq(constraint.gap, 0)))
 
     @cached_property
     def applied_forces(self) -> list[sympy.Expr]:
@@ -55,7 +55,7 @@ class NewtonMethod(Method):
             second = sympy.Add(*(g * d.acceleration for g, d in zip(gradient, mech.dofs, strict=True)))
             second += sympy.Add(*(sympy.diff(c.gap, a.symbol, b.symbol) * a.velocity * b.velocity
                                   for a in mech.dofs for b in mech.dofs))
-            self.step(f"Constraint {c.name} differentiated twice", sympy.latex(sympy.Eq(second, 0)))
+            self.step(f"Constraint {c.name} differentiated twice", self.tex(sympy.Eq(second, 0)))
             equations.append(second)
         place = mech.cartesian_state()
         state = dict(model.state)
@@ -63,7 +63,7 @@ class NewtonMethod(Method):
         unknowns = [d.acceleration for d in mech.dofs] + list(mech.multipliers)
         solution = solve_linear(equations, unknowns, self.title)
         self.step("Solved for the accelerations and constraint forces",
-                  r",\quad ".join(sympy.latex(sympy.Eq(k, v)) for k, v in solution.items()))
+                  r",\quad ".join(self.tex(sympy.Eq(k, v)) for k, v in solution.items()))
         return solution
 
     @cached_property
@@ -98,8 +98,8 @@ class NewtonMethod(Method):
                             * sympy.diff(d.mapping, q) for d in mech.dofs))
         force = sympy.simplify(force)
         self.step(f"Virtual work of the forces along {coordinate}",
-                  rf"Q_{{{sympy.latex(q)}}} = \sum_i F_i \frac{{\partial x_i}}{{\partial {sympy.latex(q)}}} = "
-                  + sympy.latex(force))
+                  rf"Q_{{{self.tex(q)}}} = \sum_i F_i \frac{{\partial x_i}}{{\partial {self.tex(q)}}} = "
+                  + self.tex(force))
         return force
 
     def frequency(self, coordinate: str, equilibrium: sympy.Expr) -> sympy.Expr:
@@ -118,8 +118,8 @@ class NewtonMethod(Method):
         if len(nonzero) != 1:
             raise NotApplicable(f"expected one oscillating mode, found eigenvalues {values}")
         self.step("Small oscillations of the Cartesian equations",
-                  r"M\ddot{x} = -Kx,\ K = " + sympy.latex(sympy.simplify(stiffness))
-                  + r",\ \omega^2 = " + sympy.latex(nonzero[0]))
+                  r"M\ddot{x} = -Kx,\ K = " + self.tex(sympy.simplify(stiffness))
+                  + r",\ \omega^2 = " + self.tex(nonzero[0]))
         return sympy.simplify(sympy.sqrt(nonzero[0]))
 
     def collision(self, item: QuantityKind) -> sympy.Expr:

@@ -166,16 +166,34 @@ class Simulator:
         qd = [_evaluate(state.get(c.velocity, sympy.Integer(0)), point) for c in self.model.coordinates]
         return q, qd
 
-    def _trajectory_around(self, point: Point, h: float = 1e-2, steps: int = 10) -> tuple[Vector, ...]:
+    def _step_for(self, point: Point, start: tuple[Vector, Vector] | None = None) -> float:
+        """A finite-difference step short enough that the system moves little (1e-4 of its scale)."""
         dyn = self.dynamics
-        q, qd = self._start(point)
+        q, qd = start if start is not None else self._start(point)
+        qdd = dyn.unknowns(q, qd, dyn.values(point))[:dyn.n]
+        scale = max([abs(v) for v in q] + [1.0])
+        fastest = max([abs(v) for v in qdd] + [1e-300])
+        speed = max([abs(v) for v in qd] + [1e-300])
+        # how fast the acceleration changes with position (omega^2 of the local motion)
+        rate = 1e-300
+        for i in range(dyn.n):
+            delta = 1e-6 * max(abs(q[i]), 1.0)
+            moved = dyn.unknowns([v + (delta if j == i else 0.0) for j, v in enumerate(q)], qd,
+                                 dyn.values(point))[:dyn.n]
+            rate = max(rate, *(abs(a - b) / delta for a, b in zip(moved, qdd, strict=True)))
+        return min(1e-2, math.sqrt(1e-4 * scale / fastest), 1e-3 * scale / speed, 1e-2 / math.sqrt(rate))
+
+    def _trajectory_around(self, point: Point, h: float, steps: int = 10,
+                           start: tuple[Vector, Vector] | None = None) -> tuple[Vector, ...]:
+        dyn = self.dynamics
+        q, qd = start if start is not None else self._start(point)
         f = dyn.derivative(dyn.values(point))
         forward = rk4(f, q + qd, h / steps, steps)[-1]
         backward = rk4(f, q + qd, -h / steps, steps)[-1]
         return backward[:dyn.n], q, forward[:dyn.n]
 
     def _acceleration(self, quantity: Quantity, point: Point, expected: float) -> Measured:
-        h = 1e-2
+        h = self._step_for(point)
         before, now, after = self._trajectory_around(point, h)
         i = [c.name for c in self.model.coordinates].index(quantity.target)
         return ("second difference of the integrated trajectory",
@@ -183,7 +201,7 @@ class Simulator:
 
     def _force(self, quantity: Quantity, point: Point, expected: float) -> Measured:
         """Cartesian accelerations measured on the trajectory, then Newton's law along each normal."""
-        h = 1e-2
+        h = self._step_for(point)
         dyn = self.dynamics
         params = dyn.values(point)
         trajectory = self._trajectory_around(point, h)
@@ -255,7 +273,7 @@ class Simulator:
             raise DerivationError(f"{coordinate}: the potential is not a minimum at the equilibrium {q0}")
         estimate = 2 * math.pi * math.sqrt(inertia / stiffness)
         per_period = 400
-        start = shifted(1e-3 * scale)
+        start = shifted(1e-4 * (abs(q0) or 1.0))
         states = rk4(dyn.derivative(params), start + [0.0] * dyn.n, estimate / per_period, int(3.3 * per_period))
         values = [s[i] - q0 for s in states]
         crossings = [k + values[k] / (values[k] - values[k + 1]) for k in range(len(values) - 1)
@@ -266,8 +284,10 @@ class Simulator:
         return q0, [max(values) + q0, min(values) + q0], period
 
     def _equilibrium(self, quantity: Quantity, point: Point, expected: float) -> Measured:
-        _, (high, low), _ = self._oscillate(quantity.target, point)
-        return "centre of a small integrated oscillation", (high + low) / 2, None
+        q0, (high, low), _ = self._oscillate(quantity.target, point)
+        centre = (high + low) / 2
+        # an equilibrium at 0 has no scale of its own: measure against the unit the oscillation used
+        return "centre of a small integrated oscillation", centre, abs(centre - q0) / max(abs(q0), 1.0)
 
     def _frequency(self, quantity: Quantity, point: Point, expected: float) -> Measured:
         omega = 2 * math.pi / self._oscillate(quantity.target, point)[2]
@@ -282,21 +302,36 @@ class Simulator:
         q = [point.get(c.symbol, 0.0) for c in self.model.coordinates]
         return i, q, dyn.values(point)
 
+    def _measured_generalized_force(self, i: int, q: Vector, point: Point) -> float:
+        """Release the system at rest at q, measure the Cartesian accelerations on the integrated
+        trajectory, and return their virtual work along coordinate i: sum m_k a_k dx_k/dq_i (the
+        constraint forces do no virtual work, so this is the generalized force of the applied forces)."""
+        dyn = self.dynamics
+        params = dyn.values(point)
+        start = (q, [0.0] * dyn.n)
+        h = self._step_for(point, start)
+        before, now, after = (dyn.positions(x, params) for x in self._trajectory_around(point, h, start=start))
+        accel = [(a - 2 * b + c) / h**2 for a, b, c in zip(before, now, after, strict=True)]
+        masses = self._force_parts(q, point)[3]
+        step = 1e-6 * max(abs(q[i]), 1.0)
+        up = dyn.positions([v + (step if j == i else 0.0) for j, v in enumerate(q)], params)
+        down = dyn.positions([v - (step if j == i else 0.0) for j, v in enumerate(q)], params)
+        return sum(m * a * (u - d) / (2 * step) for m, a, u, d in zip(masses, accel, up, down, strict=True))
+
     def _stiffness(self, quantity: Quantity, point: Point, expected: float) -> Measured:
         dyn = self.dynamics
-        i, _, params = self._coordinate_point(quantity.target, point)
+        i = [c.name for c in self.model.coordinates].index(quantity.target)
         q0 = _evaluate(self.equilibrium_of(quantity.target), point)
-        h = 1e-4 * max(abs(q0), 1.0)
-        values = [dyn.potential([q0 + d if j == i else 0.0 for j in range(dyn.n)], params) for d in (-h, 0, h)]
-        return "second difference of the potential energy", (values[0] - 2 * values[1] + values[2]) / h**2, None
+        h = 1e-4 * (abs(q0) or 1.0)
+        forces = [self._measured_generalized_force(i, [q0 + d if j == i else 0.0 for j in range(dyn.n)], point)
+                  for d in (-h, h)]
+        return ("slope of the generalized force measured on trajectories released at rest beside the "
+                "equilibrium", -(forces[1] - forces[0]) / (2 * h), None)
 
     def _potential_force(self, quantity: Quantity, point: Point, expected: float) -> Measured:
-        dyn = self.dynamics
-        i, q, params = self._coordinate_point(quantity.target, point)
-        h = 1e-5 * max(abs(q[i]), 1.0)
-        up = dyn.potential([v + (h if j == i else 0.0) for j, v in enumerate(q)], params)
-        down = dyn.potential([v - (h if j == i else 0.0) for j, v in enumerate(q)], params)
-        return "central difference of the potential energy", -(up - down) / (2 * h), None
+        i, q, _ = self._coordinate_point(quantity.target, point)
+        return ("virtual work of the accelerations measured on a trajectory released at rest",
+                self._measured_generalized_force(i, q, point), None)
 
     @cached_property
     def _after(self) -> Dynamics:
