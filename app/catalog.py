@@ -4,17 +4,18 @@ from __future__ import annotations
 
 import logging
 import threading
-from pathlib import Path
 from collections import OrderedDict
+from pathlib import Path
+from typing import Any
 
 from app.db import problems as problem_repository
 from app.db.database import Database
-from app.db.errors import ProblemExists
+from app.db.errors import ProblemExists, ProblemNotFound
 from app.db.records import ProblemRecord
 from problems.compiled import CompiledProblem, compile_problem
 from problems.loader import load_bank, parse_problem
 from problems.schema import ProblemDocument
-from problems.variants import Variant, draw_variant
+from problems.variants import Variant, draw_variant, student_view
 
 log = logging.getLogger("physcheck.catalog")
 
@@ -88,6 +89,15 @@ class Catalog:
         doc = self.document(record)
         limit: int | None = getattr(doc.part(part_id), "max_attempts", None)
         return limit if limit is not None else getattr(doc, "max_attempts", None)
+
+    def student_view(self, problem_id: str, student: str) -> dict[str, Any]:
+        """One student's variant of the latest version, as the API and the student page show it."""
+        try:
+            record = self.get(problem_id)
+        except ProblemNotFound:
+            raise LookupError(problem_id) from None
+        view = student_view(self.document(record), self.variant(record, student))
+        return {**view, "version": record.version, "student": student}
 
     def variant(self, record: ProblemRecord, student: str) -> Variant:
         return draw_variant(self.document(record), record.version, student, self._secret)

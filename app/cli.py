@@ -159,6 +159,9 @@ def build_parser() -> argparse.ArgumentParser:
     csv_export.add_argument("--output", "-o", default=None, help="file to write (default: standard output)")
     csv_export.set_defaults(handler=_submissions_export)
 
+    from app.lti.cli import register_cli
+
+    register_cli(commands)
     return parser
 
 

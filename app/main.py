@@ -6,12 +6,17 @@ import threading
 from collections.abc import AsyncIterator
 from contextlib import asynccontextmanager
 
+import httpx
 from fastapi import FastAPI
 from starlette.concurrency import run_in_threadpool
 
 from app.authoring import AuthoringPool
 from app.errors import install_error_handlers
 from app.grading.pool import GradingPool
+from app.lti import router as lti_routes
+from app.lti.context import LtiContext
+from app.lti.grades import queue_grade
+from app.lti.outbox import OutboxWorker
 from app.middleware import BodyLimit, RequestContext, configure_logging
 from app.ratelimit import RateLimiter
 from app.routers import authoring as authoring_routes
@@ -21,8 +26,14 @@ from app.settings import Settings, get_settings
 from app.startup import open_storage
 
 
-def create_app(settings: Settings | None = None, *, pool: GradingPool | None = None) -> FastAPI:
-    """Build the app; a `pool` passed in is shared (tests) and not closed by the app."""
+def create_app(
+    settings: Settings | None = None,
+    *,
+    pool: GradingPool | None = None,
+    lms_transport: httpx.AsyncBaseTransport | None = None,
+) -> FastAPI:
+    """Build the app; a `pool` passed in is shared (tests) and not closed by the app; `lms_transport`
+    carries requests to LMSs (tests pass a loopback one to a fake platform)."""
     settings = settings or get_settings()
     configure_logging(settings.log_level)
 
@@ -50,12 +61,23 @@ def create_app(settings: Settings | None = None, *, pool: GradingPool | None = N
             student_limiter=RateLimiter(settings.student_rate_limit_per_minute),
             catalog=storage.catalog,
             authoring=authoring,
+            on_graded=[queue_grade],
         )
+        app.state.lti = LtiContext(
+            storage.database,
+            settings,
+            transport=lms_transport,
+            student_view=storage.catalog.student_view,
+            authenticate_key=storage.keys.authenticate,
+        )
+        outbox = OutboxWorker(storage.database, settings, lms_transport)
+        await outbox.start()
         warming = threading.Thread(target=storage.catalog.warm_up, name="catalog-warm-up", daemon=True)
         warming.start()
         try:
             yield
         finally:
+            await outbox.stop()
             if pool is None:
                 grading.close()
             authoring.close()
@@ -75,4 +97,5 @@ def create_app(settings: Settings | None = None, *, pool: GradingPool | None = N
     app.include_router(problems.router)
     app.include_router(submissions.router)
     app.include_router(authoring_routes.router)
+    app.include_router(lti_routes.router)
     return app

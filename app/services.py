@@ -28,4 +28,4 @@ class Services:
     catalog: Catalog
     authoring: AuthoringPool
     # Called inside the transaction that files each submission (LTI grade passback queues there).
-    on_graded: list[Callable[[Session, SubmissionRecord], None]] = field(default_factory=list)
+    on_graded: list[Callable[[Session, SubmissionRecord], object]] = field(default_factory=list)

@@ -103,12 +103,16 @@ def summary(name: str, timings: list[float]) -> tuple[float, float]:
     ordered = sorted(timings)
     p50 = statistics.median(ordered)
     p99 = ordered[min(len(ordered) - 1, int(0.99 * len(ordered)))]
-    print(f"{name:<24} {len(timings) / sum(timings):>10.0f} checks/s   p50 {p50 * 1e3:8.2f} ms   p99 {p99 * 1e3:8.2f} ms")
+    print(
+        f"{name:<24} {len(timings) / sum(timings):>10.0f} checks/s   p50 {p50 * 1e3:8.2f} ms   p99 {p99 * 1e3:8.2f} ms"
+    )
     return p50, p99
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser = argparse.ArgumentParser(
+        description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter
+    )
     parser.add_argument("--rounds", type=int, default=30)
     parser.add_argument("--naive-rounds", type=int, default=3, help="the naive way is slow; fewer rounds")
     args = parser.parse_args()

@@ -27,7 +27,7 @@ from physics.symbolic import (
     prepare_reference,
 )
 from physics.units import unit_dimension
-from physics.verdict import Verdict
+from physics.verdict import InputProblem, ReadAs, Verdict
 
 
 @dataclass(frozen=True)
@@ -92,6 +92,27 @@ def check_answer(
     return Verdict.graded(judgement, parsed.read_as)
 
 
+@dataclass(frozen=True)
+class Preview:
+    """How an answer reads, before it is submitted: never a verdict, never a hint of correctness."""
+
+    read_as: ReadAs | None
+    error: InputProblem | None
+
+
+def preview(job: CheckJob) -> Preview:
+    """Read the answer as its check would, without grading it."""
+    if isinstance(job, NumericJob):
+        verdict = check_numeric(job.answer, job.spec)
+        return Preview(verdict.read_as, verdict.error)
+    table = {decl.name: make_symbol(_symbol_spec(decl)) for decl in job.symbols}
+    names = table if job.allowed is None else {name: table[name] for name in job.allowed if name in table}
+    try:
+        return Preview(parse_math(job.answer, names, limits=job.limits_config).read_as, None)
+    except AnswerError as error:
+        return Preview(None, InputProblem(error.message, error.position))
+
+
 def run_job(job: CheckJob) -> Verdict:
     """Grade a job of plain texts; raises SpecError when the reference side is unusable."""
     if isinstance(job, NumericJob):
@@ -117,15 +138,15 @@ def symbolic_question(
     context = SymbolicContext(
         symbols={table[name]: spec for name, spec in specs.items()},
         constraints=tuple(
-            _read_relation(text, table, ("constraints", i)) for i, text in enumerate(constraints)
+            read_relation(text, table, ("constraints", i)) for i, text in enumerate(constraints)
         ),
         mistakes=tuple(
-            KnownMistake(_read(text, table, ("mistakes", i)), feedback)
+            KnownMistake(read_expression(text, table, ("mistakes", i)), feedback)
             for i, (text, feedback) in enumerate(mistakes)
         ),
         limits=tuple(_limit_case(decl, table, i) for i, decl in enumerate(limits)),
     )
-    reference = prepare_reference(_read(expected, table, ("expected",)), context)
+    reference = prepare_reference(read_expression(expected, table, ("expected",)), context)
     names = table if allowed is None else {name: table[name] for name in allowed if name in table}
     return SymbolicQuestion(names=names, reference=reference)
 
@@ -141,7 +162,9 @@ def _symbol_spec(decl: SymbolDecl) -> SymbolSpec:
             ) from None
     low = high = None
     if decl.range is not None:
-        low, high = (_read(text, {}, ("symbols", decl.name, "range", i)) for i, text in enumerate(decl.range))
+        low, high = (
+            read_expression(text, {}, ("symbols", decl.name, "range", i)) for i, text in enumerate(decl.range)
+        )
     return SymbolSpec(
         name=decl.name,
         dimension=dimension,
@@ -159,14 +182,14 @@ def _limit_case(decl: LimitDecl, table: Mapping[str, sympy.Symbol], index: int) 
     for name, value in decl.substitutions:
         if name not in table:
             raise SpecError(f"limit names an undeclared symbol {name!r}", ("limits", index, name))
-        substitutions[table[name]] = _read(value, {}, ("limits", index, name))
+        substitutions[table[name]] = read_expression(value, {}, ("limits", index, name))
     return LimitCase(substitutions=substitutions, description=decl.description)
 
 
 _INFINITY_WORDS = {"oo": sympy.oo, "inf": sympy.oo, "infinity": sympy.oo, "∞": sympy.oo, "-oo": -sympy.oo}
 
 
-def _read(text: str, table: Mapping[str, sympy.Symbol], path: tuple[str | int, ...]) -> sympy.Expr:
+def read_expression(text: str, table: Mapping[str, sympy.Symbol], path: tuple[str | int, ...]) -> sympy.Expr:
     if text.strip() in _INFINITY_WORDS:
         return _INFINITY_WORDS[text.strip()]
     try:
@@ -179,7 +202,7 @@ def _read(text: str, table: Mapping[str, sympy.Symbol], path: tuple[str | int, .
 _RELATIONS = {"<=": sympy.Le, ">=": sympy.Ge, "≤": sympy.Le, "≥": sympy.Ge, "<": sympy.Lt, ">": sympy.Gt}
 
 
-def _read_relation(text: str, table: Mapping[str, sympy.Symbol], path: tuple[str | int, ...]) -> sympy.Basic:
+def read_relation(text: str, table: Mapping[str, sympy.Symbol], path: tuple[str | int, ...]) -> sympy.Basic:
     """Read `lhs < rhs` (one of < > <= >= ≤ ≥, exactly once); each side with the whitelist parser."""
     found = [(text.find(op), op) for op in _RELATIONS if op in text]
     # "<=" also contains "<": keep the longest operator at the first position.
@@ -190,4 +213,4 @@ def _read_relation(text: str, table: Mapping[str, sympy.Symbol], path: tuple[str
     lhs, rhs = text[:position], text[position + len(op) :]
     if any(other in rhs for other in _RELATIONS):
         raise SpecError("a constraint may compare only two sides", path)
-    return _RELATIONS[op](_read(lhs, table, path), _read(rhs, table, path))
+    return _RELATIONS[op](read_expression(lhs, table, path), read_expression(rhs, table, path))

@@ -19,7 +19,7 @@ from functools import cached_property
 import sympy
 
 from physics.checking import LimitDecl as CheckLimitDecl
-from physics.checking import NumericJob, SymbolicJob, SymbolicQuestion
+from physics.checking import NumericJob, SymbolicJob, SymbolicQuestion, read_expression, read_relation
 from physics.checking import SymbolDecl as CheckSymbolDecl
 from physics.dimensions import DIMENSIONLESS
 from physics.errors import SpecError
@@ -40,7 +40,7 @@ from physics.units import unit_dimension
 from problems.errors import ErrorItem, ProblemInvalid
 from problems.modelinfo import Derived, derive_doc, spec_error_items
 from problems.schema import NumericPart, ProblemDocument, SymbolicPart, format_path
-from problems.symbols import bound_text, check_decls, read_bound, read_expression, read_relation, symbol_specs
+from problems.symbols import bound_text, check_decls, read_bound, symbol_specs
 from problems.variants import Variant, evaluate_reference, si_values
 
 CACHE_SIZE = 64
@@ -136,12 +136,15 @@ class CompiledProblem:
     def reference_expressions(self) -> dict[str, sympy.Expr]:
         """Every part's reference expression (instructor-only: the solutions page)."""
         return {
-            pid: p.expected if isinstance(p, CompiledSymbolicPart) else p.expr for pid, p in self.parts.items()
+            pid: p.expected if isinstance(p, CompiledSymbolicPart) else p.expr
+            for pid, p in self.parts.items()
         }
 
 
 def document_digest(doc: ProblemDocument) -> str:
-    canonical = json.dumps(doc.model_dump(mode="json"), sort_keys=True, separators=(",", ":"), ensure_ascii=False)
+    canonical = json.dumps(
+        doc.model_dump(mode="json"), sort_keys=True, separators=(",", ":"), ensure_ascii=False
+    )
     return hashlib.sha256(canonical.encode("utf-8")).hexdigest()
 
 
@@ -186,7 +189,8 @@ def _compile(doc: ProblemDocument, version: int, digest: str, use_model: bool) -
             derived = derive_doc(doc, table)
         except SpecError as error:
             raise ProblemInvalid(
-                [(format_path(("model", *path)), message) for path, message in spec_error_items(error)], doc.id
+                [(format_path(("model", *path)), message) for path, message in spec_error_items(error)],
+                doc.id,
             ) from None
     decls = check_decls(doc)
 
@@ -194,7 +198,9 @@ def _compile(doc: ProblemDocument, version: int, digest: str, use_model: bool) -
     for index, part in enumerate(doc.parts):
         if isinstance(part, SymbolicPart):
             try:
-                symbolic[part.id] = _symbolic_part(doc, part, index, table, specs, constraints, decls, derived)
+                symbolic[part.id] = _symbolic_part(
+                    doc, part, index, table, specs, constraints, decls, derived
+                )
             except SpecError as error:
                 errors.append((format_path(error.path or ("parts", index)), error.message))
     parts: dict[str, CompiledPart] = {}
@@ -242,7 +248,10 @@ def _symbolic_part(
     ]
     limits = [
         (
-            {table[name]: read_bound(value, (*path, "limits", j, "where", name)) for name, value in lim.where.items()},
+            {
+                table[name]: read_bound(value, (*path, "limits", j, "where", name))
+                for name, value in lim.where.items()
+            },
             lim.description,
             tuple((name, bound_text(value)) for name, value in lim.where.items()),
         )
@@ -267,7 +276,8 @@ def _symbolic_part(
         mistakes=tuple((sympy.sstr(e), f) for e, f in [*mistakes, *engine_mistakes]),
         limits=tuple(CheckLimitDecl(texts, d) for _, d, texts in limits)
         + tuple(
-            CheckLimitDecl(tuple((str(s), sympy.sstr(v)) for s, v in subs.items()), d) for subs, d in engine_limits
+            CheckLimitDecl(tuple((str(s), sympy.sstr(v)) for s, v in subs.items()), d)
+            for subs, d in engine_limits
         ),
         allowed=allowed_names,
     )
@@ -360,8 +370,9 @@ def _require_dimension(
     except UnknownDimension:
         return  # a symbol without a declared dimension: nothing to compare against
     except DimensionMismatch as error:
-        raise SpecError(f"the expression for {part.of} is dimensionally inconsistent: {error}", (*path, "of")) from None
+        raise SpecError(
+            f"the expression for {part.of} is dimensionally inconsistent: {error}", (*path, "of")
+        ) from None
     want = DIMENSIONLESS if part.dimensionless else unit_dimension(part.units)
     if have != want:
         raise SpecError(f"{part.units} does not match the dimension of {part.of}", (*path, "units"))
-

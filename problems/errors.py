@@ -1,8 +1,8 @@
 """Errors of the problem bank.
 
-    physics.errors.SpecError
-     └── ProblemInvalid    a problem document that cannot be used; carries EVERY fault found,
-                           each as (path, message), e.g. ("parts[2].tolerance.rel", "must be > 0")
+physics.errors.SpecError
+ └── ProblemInvalid    a problem document that cannot be used; carries EVERY fault found,
+                       each as (path, message), e.g. ("parts[2].tolerance.rel", "must be > 0")
 """
 
 from __future__ import annotations

@@ -73,7 +73,9 @@ def read_text(text: str | bytes, fmt: Format = "yaml") -> Any:
     except yaml.YAMLError as error:
         raise ProblemInvalid([("", f"YAML: {_yaml_message(error)}")]) from None
     except json.JSONDecodeError as error:
-        raise ProblemInvalid([("", f"JSON: {error.msg} at line {error.lineno} column {error.colno}")]) from None
+        raise ProblemInvalid(
+            [("", f"JSON: {error.msg} at line {error.lineno} column {error.colno}")]
+        ) from None
     except ValueError as error:
         raise ProblemInvalid([("", f"JSON: {error}")]) from None
     except RecursionError:
@@ -164,7 +166,9 @@ def load_bank(dir: Path | str | None = None, *, check_meaning: bool = True) -> l
         try:
             documents.append(load_problem_dir(directory, check_meaning=check_meaning))
         except ProblemInvalid as error:
-            errors.extend((f"{directory.name}:{path}" if path else directory.name, msg) for path, msg in error.errors)
+            errors.extend(
+                (f"{directory.name}:{path}" if path else directory.name, msg) for path, msg in error.errors
+            )
     if errors:
         raise ProblemInvalid(errors, f"bank {root}")
     return documents

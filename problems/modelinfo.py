@@ -27,7 +27,9 @@ class Derived:
 
     quantities: Mapping[str, sympy.Expr]
     mistakes: Mapping[str, tuple[tuple[sympy.Expr, str], ...]] = field(default_factory=dict)
-    limits: Mapping[str, tuple[tuple[Mapping[sympy.Symbol, sympy.Expr], str], ...]] = field(default_factory=dict)
+    limits: Mapping[str, tuple[tuple[Mapping[sympy.Symbol, sympy.Expr], str], ...]] = field(
+        default_factory=dict
+    )
     # quantity -> the methods that derived it and agree (the engine raises when methods disagree)
     agreement: Mapping[str, tuple[str, ...]] = field(default_factory=dict)
     proofs: Mapping[str, str] = field(default_factory=dict)  # quantity -> how agreement was shown
@@ -68,7 +70,9 @@ def derive_doc(doc: ProblemDocument, table: Mapping[str, sympy.Symbol]) -> Deriv
     derivation = derive(load_doc_model(doc, table))
     return Derived(
         quantities=dict(derivation.quantities),
-        mistakes={name: tuple(_mistake(m) for m in items) for name, items in _per_quantity(derivation, "mistakes")},
+        mistakes={
+            name: tuple(_mistake(m) for m in items) for name, items in _per_quantity(derivation, "mistakes")
+        },
         limits={name: tuple(_limit(c) for c in items) for name, items in _per_quantity(derivation, "limits")},
         agreement={name: tuple(methods) for name, methods in derivation.agreement.items()},
         proofs=dict(derivation.proofs),

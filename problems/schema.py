@@ -160,7 +160,9 @@ class ProblemDocument(_Strict):
 
     id: Annotated[str, Field(pattern=_SLUG, max_length=64)]
     title: Annotated[str, Field(min_length=1, max_length=200)]
-    topics: Annotated[list[Annotated[str, Field(min_length=1, max_length=64)]], Field(max_length=MAX_ITEMS)] = []
+    topics: Annotated[
+        list[Annotated[str, Field(min_length=1, max_length=64)]], Field(max_length=MAX_ITEMS)
+    ] = []
     statement: Text
     symbols: Annotated[dict[Name, SymbolDecl], Field(min_length=1, max_length=MAX_ITEMS)]
     constraints: Annotated[list[Expression], Field(max_length=MAX_ITEMS)] = []
@@ -233,12 +235,7 @@ def _clean_loc(loc: tuple[str | int, ...], error_type: str) -> tuple[str | int, 
     # The discriminated union inserts the tag (parts[2].numeric.units); authors never wrote it.
     cleaned: list[str | int] = []
     for i, item in enumerate(parts):
-        if (
-            item in _PART_TAGS
-            and i >= 2
-            and parts[i - 2] == "parts"
-            and isinstance(parts[i - 1], int)
-        ):
+        if item in _PART_TAGS and i >= 2 and parts[i - 2] == "parts" and isinstance(parts[i - 1], int):
             continue
         # Bound = Decimal | str reports per-member locations; the author wrote one value.
         if isinstance(item, str) and (item.startswith("function-before[") or item in {"decimal", "str"}):
@@ -255,7 +252,9 @@ def shape_errors(exc: ValidationError) -> list[ErrorItem]:
     for err in exc.errors(include_url=False):
         loc = _clean_loc(tuple(err["loc"]), err["type"])
         path = format_path(loc)
-        template = _FIELD_MESSAGES.get((str(loc[-1]) if loc else "", err["type"])) or _MESSAGES.get(err["type"])
+        template = _FIELD_MESSAGES.get((str(loc[-1]) if loc else "", err["type"])) or _MESSAGES.get(
+            err["type"]
+        )
         if template is not None:
             try:
                 message = template.format(**err.get("ctx", {}))

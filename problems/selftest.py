@@ -95,9 +95,7 @@ class Report:
             where = f"{r.problem}/{r.part}" if r.part else r.problem
             lines.append(f"  {where}: {r.check}: {r.detail}")
         total = sum(len(p.results) for p in self.problems)
-        lines.append(
-            f"{len(self.problems)} problem(s), {total} checks, {len(self.failures)} failure(s)"
-        )
+        lines.append(f"{len(self.problems)} problem(s), {total} checks, {len(self.failures)} failure(s)")
         return "\n".join(lines)
 
 
@@ -115,7 +113,9 @@ def verify_problem(
     try:
         compiled = compile_problem(doc, version, use_model=use_model)
     except ProblemInvalid as error:
-        report.results.extend(CheckResult(doc.id, None, f"compile {path}", False, msg) for path, msg in error.errors)
+        report.results.extend(
+            CheckResult(doc.id, None, f"compile {path}", False, msg) for path, msg in error.errors
+        )
         return Report([report])
     except PhyscheckError as error:
         report.results.append(CheckResult(doc.id, None, "derive", False, str(error)))
@@ -138,7 +138,9 @@ def verify_problem(
         except PhyscheckError as error:
             report.results.append(CheckResult(doc.id, part_id, "prepare", False, str(error)))
         except Exception as error:  # a grader fault on one part must not stop the rest
-            report.results.append(CheckResult(doc.id, part_id, "grader fault", False, f"{type(error).__name__}: {error}"))
+            report.results.append(
+                CheckResult(doc.id, part_id, "grader fault", False, f"{type(error).__name__}: {error}")
+            )
         if progress is not None:
             progress(f"{doc.id}:{part_id}", done, total)
     return Report([report])
@@ -158,7 +160,13 @@ def verify_bank(
         try:
             documents = load_bank(bank_dir)
         except ProblemInvalid as error:
-            return Report([ProblemReport("bank", [CheckResult("bank", None, f"load {p}", False, m) for p, m in error.errors])])
+            return Report(
+                [
+                    ProblemReport(
+                        "bank", [CheckResult("bank", None, f"load {p}", False, m) for p, m in error.errors]
+                    )
+                ]
+            )
     docs = list(documents)
     report = Report()
     for done, doc in enumerate(docs, start=1):
@@ -194,7 +202,9 @@ def _domain_checks(problem: str, compiled: CompiledProblem, students: list[Varia
             if not at.free_symbols and at is not sympy.true:
                 broken.append(f"{sympy.sstr(relation)} fails at {_shown(variant)}")
         if compiled.constraints:
-            results.append(CheckResult(problem, None, f"variant {index} in domain", not broken, "; ".join(broken)))
+            results.append(
+                CheckResult(problem, None, f"variant {index} in domain", not broken, "; ".join(broken))
+            )
     return results
 
 
@@ -236,7 +246,9 @@ def _symbolic_checks(problem: str, part: CompiledSymbolicPart) -> list[CheckResu
     for label, text in rewritings(part.expected).items():
         verdict = check_answer(text, question)
         ok = verdict.outcome is Outcome.CORRECT
-        results.append(CheckResult(problem, part.id, f"rewrite {label}", ok, "" if ok else _explain(text, verdict)))
+        results.append(
+            CheckResult(problem, part.id, f"rewrite {label}", ok, "" if ok else _explain(text, verdict))
+        )
     for index, mistake in enumerate(part.context.mistakes, start=1):
         text = sympy.sstr(mistake.expr)
         verdict = check_answer(text, question)
@@ -245,7 +257,9 @@ def _symbolic_checks(problem: str, part: CompiledSymbolicPart) -> list[CheckResu
             and verdict.reason is Reason.KNOWN_MISTAKE
             and mistake.feedback in verdict.feedback
         )
-        results.append(CheckResult(problem, part.id, f"mistake {index}", ok, "" if ok else _explain(text, verdict)))
+        results.append(
+            CheckResult(problem, part.id, f"mistake {index}", ok, "" if ok else _explain(text, verdict))
+        )
     return results
 
 
@@ -281,16 +295,26 @@ def _numeric_checks(
         suffix = "" if dimensionless else f" {part.units}"
         attempts.append((f"variant {index}", answer_text(reference, sigfigs) + suffix, True))
         if reference != 0:
-            attempts.append((f"variant {index} 10% off", answer_text(reference * OFF_BY, sigfigs) + suffix, False))
+            attempts.append(
+                (f"variant {index} 10% off", answer_text(reference * OFF_BY, sigfigs) + suffix, False)
+            )
         for alternative in unit_alternatives(part.units):
             factor = unit_scale(part.units) / unit_scale(alternative)
             if sigfigs is not None and not _power_of_ten(factor):
                 continue  # rounding to n figures in another unit is a different number
             converted = Decimal(str(sympy.Float(sympy.Rational(*reference.as_integer_ratio()) * factor, 30)))
-            attempts.append((f"variant {index} in {alternative}", f"{answer_text(converted, sigfigs)} {alternative}", True))
+            attempts.append(
+                (
+                    f"variant {index} in {alternative}",
+                    f"{answer_text(converted, sigfigs)} {alternative}",
+                    True,
+                )
+            )
         for label, text, should_pass in attempts:
             verdict = check_answer(text, spec)
-            ok = (verdict.outcome is Outcome.CORRECT) == should_pass and verdict.outcome is not Outcome.INVALID
+            ok = (
+                verdict.outcome is Outcome.CORRECT
+            ) == should_pass and verdict.outcome is not Outcome.INVALID
             detail = "" if ok else f"expected {reference}: " + _explain(text, verdict)
             results.append(CheckResult(problem, part.id, label, ok, detail))
     return results

@@ -1,6 +1,6 @@
 """Meaning checks on a well-shaped problem document; every fault is collected, none stops the rest.
 
-Each expression is read with the whitelist parser (`problems.symbols.read_expression`); unknown
+Each expression is read with the whitelist parser (`physics.checking.read_expression`, as the grading workers read it); unknown
 symbols, unknown units, empty ranges, givens for undeclared symbols, duplicate part ids, parts that
 name no quantity, and placeholders with no given value are reported with their paths.
 """
@@ -13,12 +13,13 @@ from typing import TypeVar
 
 import sympy
 
+from physics.checking import read_expression, read_relation
 from physics.errors import AnswerError, SpecError
 from physics.symbolic import SymbolSpec, make_symbol
 from problems.errors import ErrorItem
 from problems.modelinfo import model_quantity_names, spec_error_items
 from problems.schema import GivenDecl, NumericPart, ProblemDocument, SymbolDecl, SymbolicPart, format_path
-from problems.symbols import read_bound, read_expression, read_relation, symbol_spec, unit_dimension_at
+from problems.symbols import read_bound, symbol_spec, unit_dimension_at
 from problems.variants import placeholders, unit_scale, valid_range_errors
 
 T = TypeVar("T")
@@ -57,7 +58,12 @@ def semantic_errors(doc: ProblemDocument, model_quantities: frozenset[str] | Non
             symbols_ok = False
             continue
         spec = out.attempt(partial(symbol_spec, name, decl), ("symbols", name))
-        if spec is not None and spec.low is not None and spec.high is not None and _not_below(spec.low, spec.high):
+        if (
+            spec is not None
+            and spec.low is not None
+            and spec.high is not None
+            and _not_below(spec.low, spec.high)
+        ):
             out.add(("symbols", name, "range"), "low must be < high")
             spec = None
         if spec is None:
@@ -90,7 +96,12 @@ def _not_below(low: sympy.Expr, high: sympy.Expr) -> bool:
 
 
 def _check_given(
-    out: _Collector, doc: ProblemDocument, name: str, given: GivenDecl, decl: SymbolDecl | None, check_range: bool
+    out: _Collector,
+    doc: ProblemDocument,
+    name: str,
+    given: GivenDecl,
+    decl: SymbolDecl | None,
+    check_range: bool,
 ) -> None:
     path: tuple[str | int, ...] = ("given", name)
     if decl is None:
@@ -145,7 +156,10 @@ def _model_quantities(doc: ProblemDocument, out: _Collector, symbols_ok: bool) -
 
 
 def _check_parts(
-    out: _Collector, doc: ProblemDocument, table: Mapping[str, sympy.Symbol], quantities: frozenset[str] | None
+    out: _Collector,
+    doc: ProblemDocument,
+    table: Mapping[str, sympy.Symbol],
+    quantities: frozenset[str] | None,
 ) -> None:
     seen: dict[str, int] = {}
     symbolic_ids = {p.id for p in doc.parts if isinstance(p, SymbolicPart)}

@@ -6,33 +6,17 @@ the same sympy Symbols here, in the engine and in the checker (assumptions come 
 
 from __future__ import annotations
 
-from collections.abc import Mapping
 from decimal import Decimal
 
 import sympy
 
 from physics.checking import SymbolDecl as CheckSymbolDecl
-from physics.checking import _read as _checker_read
-from physics.checking import _read_relation as _checker_read_relation
+from physics.checking import read_expression
 from physics.dimensions import DIMENSIONLESS, Dimension
 from physics.errors import AnswerError, SpecError
 from physics.symbolic import SymbolSpec, make_symbol
 from physics.units import unit_dimension
 from problems.schema import ProblemDocument, SymbolDecl
-
-
-def read_expression(text: str, names: Mapping[str, sympy.Symbol], path: tuple[str | int, ...]) -> sympy.Expr:
-    """Author text -> sympy through the whitelist parser (and `oo` for infinity); faults are SpecErrors.
-
-    The checker reads the same texts again inside its workers, so the bank uses the checker's own
-    reader rather than a copy that could drift from it.
-    """
-    return _checker_read(text, names, path)
-
-
-def read_relation(text: str, names: Mapping[str, sympy.Symbol], path: tuple[str | int, ...]) -> sympy.Basic:
-    """A constraint such as `mu < tan(alpha)`, read exactly as the checker reads it."""
-    return _checker_read_relation(text, names, path)
 
 
 def read_bound(value: Decimal | str, path: tuple[str | int, ...]) -> sympy.Expr:

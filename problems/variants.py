@@ -48,7 +48,9 @@ def draw_variant(doc: ProblemDocument, version: int, student: str, secret: str |
     return Variant(doc.id, version, student, values)
 
 
-def fixed_variant(doc: ProblemDocument, values: Mapping[str, Decimal | int | str], version: int = 0) -> Variant:
+def fixed_variant(
+    doc: ProblemDocument, values: Mapping[str, Decimal | int | str], version: int = 0
+) -> Variant:
     """A variant with chosen values (tests, worked examples); unlisted givens take their midpoint."""
     chosen = {name: draw_value(given, Decimal("0.5")) for name, given in doc.given.items()}
     chosen.update({name: Decimal(str(value)) for name, value in values.items()})
@@ -136,7 +138,9 @@ def _decimal_to_rational(value: Decimal) -> sympy.Rational:
     return sympy.Rational(numerator, denominator)
 
 
-def si_values(doc: ProblemDocument, variant: Variant, table: Mapping[str, sympy.Symbol]) -> dict[sympy.Symbol, sympy.Expr]:
+def si_values(
+    doc: ProblemDocument, variant: Variant, table: Mapping[str, sympy.Symbol]
+) -> dict[sympy.Symbol, sympy.Expr]:
     """The variant's values in SI (radians for angles), exact, keyed by the problem's symbols."""
     values: dict[sympy.Symbol, sympy.Expr] = {}
     for name, value in variant.values.items():
@@ -160,7 +164,9 @@ def evaluate_reference(
     if missing:
         raise SpecError(f"no given value for {', '.join(missing)}", (where, "of") if where else ())
     if not value.is_number or value.has(sympy.zoo, sympy.oo, -sympy.oo, sympy.nan) or not value.is_real:
-        raise SpecError(f"the reference value is not a finite real number ({value})", (where,) if where else ())
+        raise SpecError(
+            f"the reference value is not a finite real number ({value})", (where,) if where else ()
+        )
     with localcontext() as ctx:
         ctx.prec = REFERENCE_SIGNIFICANT
         return +Decimal(str(sympy.Float(value, REFERENCE_DIGITS)))
@@ -217,7 +223,9 @@ def fill_statement(statement: str, doc: ProblemDocument, variant: Variant) -> st
 
 
 def _json_number(value: Decimal) -> int | float:
-    return int(value) if value == value.to_integral_value() and value.as_tuple().exponent == 0 else float(value)
+    return (
+        int(value) if value == value.to_integral_value() and value.as_tuple().exponent == 0 else float(value)
+    )
 
 
 def listing_view(problem: ProblemDocument) -> dict[str, Any]:
@@ -236,9 +244,13 @@ def student_view(problem: ProblemDocument, variant: Variant) -> dict[str, Any]:
     for part in problem.parts:
         if isinstance(part, SymbolicPart):
             names = part.symbols if part.symbols is not None else list(problem.symbols)
-            parts.append({"id": part.id, "kind": part.kind, "prompt": part.prompt, "units": None, "symbols": names})
+            parts.append(
+                {"id": part.id, "kind": part.kind, "prompt": part.prompt, "units": None, "symbols": names}
+            )
         elif isinstance(part, NumericPart):
-            parts.append({"id": part.id, "kind": part.kind, "prompt": part.prompt, "units": part.units, "symbols": []})
+            parts.append(
+                {"id": part.id, "kind": part.kind, "prompt": part.prompt, "units": part.units, "symbols": []}
+            )
     return {
         "id": problem.id,
         "title": problem.title,
@@ -253,7 +265,8 @@ def student_view(problem: ProblemDocument, variant: Variant) -> dict[str, Any]:
             if name in problem.given
         },
         "symbols": {
-            name: {"meaning": decl.meaning, "dimension": decl.dimension} for name, decl in problem.symbols.items()
+            name: {"meaning": decl.meaning, "dimension": decl.dimension}
+            for name, decl in problem.symbols.items()
         },
         "parts": parts,
     }

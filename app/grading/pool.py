@@ -11,10 +11,10 @@ from concurrent.futures import TimeoutError as FutureTimeout
 from pebble import ProcessExpired, ProcessPool
 
 from app.errors import Busy
-from app.grading.worker import WARM_UP_JOBS, SpecProblem, grade, limit_memory
-from physics.checking import CheckJob
+from app.grading.worker import WARM_UP_JOBS, SpecProblem, grade, limit_memory, read_only
+from physics.checking import CheckJob, Preview
 from physics.errors import CheckTimeout, SpecError, TooLarge
-from physics.verdict import Verdict
+from physics.verdict import InputProblem, Verdict
 
 log = logging.getLogger("physcheck.grading")
 
@@ -71,6 +71,23 @@ class GradingPool:
     def _submit(self, job: CheckJob):  # type: ignore[no-untyped-def]
         assert self._pool is not None, "GradingPool.start() was not called"
         return self._pool.schedule(self._task, args=(job,), timeout=self._timeout)
+
+    async def preview(self, job: CheckJob) -> Preview:
+        """How the answer reads, also in a worker (the parser is bounded, but not trusted to be)."""
+        if len(job.answer) > self._max_answer_chars:
+            return Preview(
+                None, InputProblem(f"The answer is longer than {self._max_answer_chars} characters.")
+            )
+        assert self._pool is not None, "GradingPool.start() was not called"
+        try:
+            outcome: Preview | SpecProblem = await asyncio.wrap_future(
+                self._pool.schedule(read_only, args=(job,), timeout=self._timeout)
+            )
+        except (FutureTimeout, ProcessExpired):
+            return Preview(None, InputProblem(TIMEOUT_MESSAGE))
+        if isinstance(outcome, SpecProblem):
+            raise SpecError(outcome.message, outcome.path)
+        return outcome
 
     async def check(self, job: CheckJob) -> Verdict:
         """Grade in a worker; a timeout or a killed worker is an `invalid` verdict, never a hang."""

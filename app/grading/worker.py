@@ -10,10 +10,10 @@ import resource
 from dataclasses import dataclass
 from decimal import Decimal
 
-from physics.checking import CheckJob, NumericJob, SymbolDecl, SymbolicJob, run_job
+from physics.checking import CheckJob, NumericJob, Preview, SymbolDecl, SymbolicJob, preview, run_job
 from physics.errors import SpecError, TooLarge
 from physics.numeric import NumericSpec
-from physics.verdict import Verdict
+from physics.verdict import InputProblem, Verdict
 
 # Touch every lazily built table (parser, unit registry, sampler) before real requests arrive.
 WARM_UP_JOBS: tuple[CheckJob, ...] = (
@@ -47,3 +47,12 @@ def grade(job: CheckJob) -> Verdict | SpecProblem:
         return SpecProblem(error.message, error.path)
     except (MemoryError, RecursionError, OverflowError):
         return Verdict.invalid(TooLarge("This answer is too large to check; simplify it."))
+
+
+def read_only(job: CheckJob) -> Preview | SpecProblem:
+    try:
+        return preview(job)
+    except SpecError as error:
+        return SpecProblem(error.message, error.path)
+    except (MemoryError, RecursionError, OverflowError):
+        return Preview(None, InputProblem("This answer is too large to read; simplify it."))

@@ -13,7 +13,9 @@ from app.db import problems as problem_repository
 from app.db.records import ProblemRecord
 from app.deps import Instructor, ServicesDep
 from app.errors import AppError, Forbidden
+from app.lti.outbox import DeliveryProblem, list_delivery_problems
 from app.schemas.problems import (
+    DeliveryProblemPublic,
     MethodPublic,
     ProblemCreated,
     ReferencePublic,
@@ -64,6 +66,13 @@ async def _vetted_document(request: Request, services: Services) -> dict[str, An
     return vetted.document
 
 
+def _key_id(principal: Principal) -> int:
+    """Problems belong to an API key; an LMS session (no key) cannot own one."""
+    if not principal.key_id.isdigit():
+        raise Forbidden("Upload problems with an instructor API key.")
+    return int(principal.key_id)
+
+
 def _owned(services: Services, problem_id: str, principal: Principal) -> ProblemRecord:
     record = services.catalog.get(problem_id)
     if record.builtin or str(record.owner_key_id) != principal.key_id:
@@ -80,7 +89,7 @@ async def upload(request: Request, services: ServicesDep, principal: Instructor)
     def store() -> ProblemRecord:
         with services.database.session() as session:
             return problem_repository.create_problem(
-                session, document["id"], document, owner_key_id=int(principal.key_id)
+                session, document["id"], document, owner_key_id=_key_id(principal)
             )
 
     record = await run_in_threadpool(store)
@@ -178,3 +187,17 @@ def solution_of(compiled: CompiledProblem) -> SolutionPublic:
         and not derived.disagreements
         and all(len(m) >= 2 for m in agreement.values()),
     )
+
+
+@router.get("/v1/lti/delivery-problems", response_model=list[DeliveryProblemPublic])
+async def delivery_problems(services: ServicesDep, _: Instructor) -> list[DeliveryProblemPublic]:
+    """Scores an LMS refused (422, 403…) or has not accepted yet, newest first."""
+
+    def read() -> list[DeliveryProblem]:
+        with services.database.session(read_only=True) as session:
+            return list_delivery_problems(session)
+
+    return [
+        DeliveryProblemPublic.model_validate(item, from_attributes=True)
+        for item in await run_in_threadpool(read)
+    ]

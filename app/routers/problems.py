@@ -1,4 +1,4 @@
-"""Problems: the list, one student's variant, and submissions of answers to a part."""
+"""Problems: the list, one student's variant, previews and submissions of answers to a part."""
 
 from __future__ import annotations
 
@@ -8,18 +8,22 @@ from fastapi import APIRouter, Query
 from starlette.concurrency import run_in_threadpool
 
 from app.auth import Principal
+from app.db.records import ProblemRecord
 from app.deps import CurrentPrincipal, ServicesDep
 from app.errors import AppError, NotFound
 from app.grading.submit import submit_answer
+from app.schemas.check import InputErrorPublic, ReadAsPublic
 from app.schemas.problems import (
     PartSummary,
+    PreviewIn,
+    PreviewPublic,
     ProblemPublic,
     ProblemSummary,
     StudentId,
     SubmissionIn,
     SubmissionResult,
 )
-from problems.variants import student_view
+from app.services import Services
 
 router = APIRouter(tags=["problems"])
 
@@ -66,9 +70,11 @@ async def get_problem(
     student: Annotated[StudentId | None, Query()] = None,
 ) -> ProblemPublic:
     who = student_of(principal, student)
-    record = await run_in_threadpool(services.catalog.get, problem_id)
-    view = student_view(services.catalog.document(record), services.catalog.variant(record, who))
-    return ProblemPublic.model_validate({**view, "version": record.version, "student": who})
+    try:
+        view = await run_in_threadpool(services.catalog.student_view, problem_id, who)
+    except LookupError:
+        raise NotFound(f"There is no problem {problem_id!r}.") from None
+    return ProblemPublic.model_validate(view)
 
 
 @router.post(
@@ -79,6 +85,32 @@ async def submit(
 ) -> SubmissionResult:
     who = student_of(principal, body.student)
     record = await run_in_threadpool(services.catalog.get, problem_id)
-    if part_id not in {p.id for p in services.catalog.document(record).parts}:
-        raise NotFound(f"Problem {problem_id!r} has no part {part_id!r}.")
+    _require_part(services, record, part_id)
     return await submit_answer(services, record, part_id, who, body.answer)
+
+
+@router.post("/v1/problems/{problem_id}/parts/{part_id}/preview", response_model=PreviewPublic)
+async def preview(
+    problem_id: str, part_id: str, body: PreviewIn, services: ServicesDep, principal: CurrentPrincipal
+) -> PreviewPublic:
+    """How the answer would be read (for a live preview while typing); nothing is graded or stored."""
+    who = student_of(principal, None)
+    record = await run_in_threadpool(services.catalog.get, problem_id)
+    _require_part(services, record, part_id)
+    compiled = await run_in_threadpool(services.catalog.compiled, record)
+    result = await services.pool.preview(
+        compiled.job(part_id, body.answer, services.catalog.variant(record, who))
+    )
+    return PreviewPublic(
+        read_as=None
+        if result.read_as is None
+        else ReadAsPublic(text=result.read_as.text, latex=result.read_as.latex),
+        error=None
+        if result.error is None
+        else InputErrorPublic(message=result.error.message, position=result.error.position),
+    )
+
+
+def _require_part(services: Services, record: ProblemRecord, part_id: str) -> None:
+    if part_id not in {p.id for p in services.catalog.document(record).parts}:
+        raise NotFound(f"Problem {record.id!r} has no part {part_id!r}.")

@@ -8,7 +8,7 @@ from typing import Annotated, Any
 
 from pydantic import BaseModel, ConfigDict, Field, StrictStr
 
-from app.schemas.check import VerdictPublic
+from app.schemas.check import InputErrorPublic, ReadAsPublic, VerdictPublic
 
 StudentId = Annotated[StrictStr, Field(min_length=1, max_length=200)]
 
@@ -61,6 +61,17 @@ class SubmissionIn(BaseModel):
 
     answer: StrictStr
     student: StudentId | None = None
+
+
+class PreviewIn(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+
+    answer: StrictStr
+
+
+class PreviewPublic(BaseModel):
+    read_as: ReadAsPublic | None
+    error: InputErrorPublic | None
 
 
 class SubmissionResult(VerdictPublic):
@@ -130,3 +141,20 @@ class SolutionPublic(BaseModel):
     proofs: dict[str, str]
     simulation: dict[str, SimulationPublic]
     methods_agree: bool
+
+
+class DeliveryProblemPublic(BaseModel):
+    """A grade passback that failed or is still being retried."""
+
+    outbox_id: int
+    student: str
+    problem_id: str
+    issuer: str
+    lineitem_url: str
+    score_given: float
+    score_maximum: float
+    timestamp: datetime
+    status: str
+    attempts: int
+    last_status: int | None
+    last_error: str | None

@@ -24,12 +24,14 @@ def merged(model: Model) -> Model:
     """The model after the projectile has embedded itself in the target."""
     hit = model.collision
     assert hit is not None
-    bodies = tuple(dataclasses.replace(b, mass=b.mass + hit.projectile_mass) if b.name == hit.target else b
-                   for b in model.bodies)
+    bodies = tuple(
+        dataclasses.replace(b, mass=b.mass + hit.projectile_mass) if b.name == hit.target else b
+        for b in model.bodies
+    )
     return dataclasses.replace(model, bodies=bodies)
 
 
-def _points(model: Model) -> tuple[dict[sympy.Symbol, sympy.Expr], dict[sympy.Symbol, sympy.Expr]]:
+def event_points(model: Model) -> tuple[dict[sympy.Symbol, sympy.Expr], dict[sympy.Symbol, sympy.Expr]]:
     hit = model.collision
     assert hit is not None
     at = {model.coordinate(n).symbol: v for n, v in hit.at}
@@ -46,18 +48,29 @@ def _projectile_momentum(model: Model, mech: Mechanics) -> list[sympy.Expr]:
     assert hit is not None
     direction = dict(hit.direction)
     norm = sympy.sqrt(sympy.Add(*(v**2 for v in direction.values())))
-    return [hit.projectile_mass * SPEED * direction.get(d.name.split("_", 1)[0], 0) / norm
-            if d.body == hit.target and not d.name.startswith("phi_") else sympy.Integer(0) for d in mech.dofs]
+    return [
+        hit.projectile_mass * SPEED * direction.get(d.name.split("_", 1)[0], 0) / norm
+        if d.body == hit.target and not d.name.startswith("phi_")
+        else sympy.Integer(0)
+        for d in mech.dofs
+    ]
 
 
-def _finish(kinetic_after: sympy.Expr, rise: sympy.Expr, model: Model, kind: QuantityKind,
-            steps: list[tuple[str, str]]) -> sympy.Expr:
+def _finish(
+    kinetic_after: sympy.Expr,
+    rise: sympy.Expr,
+    model: Model,
+    kind: QuantityKind,
+    steps: list[tuple[str, str]],
+) -> sympy.Expr:
     hit = model.collision
     assert hit is not None
     before = hit.projectile_mass * SPEED**2 / 2
     if kind is QuantityKind.ENERGY_FRACTION_LOST:
         fraction = sympy.simplify((before - kinetic_after) / before)
-        steps.append(("Fraction of the kinetic energy lost", r"\frac{K_0 - K_1}{K_0} = " + sympy.latex(fraction)))
+        steps.append(
+            ("Fraction of the kinetic energy lost", r"\frac{K_0 - K_1}{K_0} = " + sympy.latex(fraction))
+        )
         return fraction
     roots = [r for r in sympy.solve(kinetic_after - rise, SPEED) if r.is_positive is not False]
     if len(roots) != 1:
@@ -69,15 +82,25 @@ def _finish(kinetic_after: sympy.Expr, rise: sympy.Expr, model: Model, kind: Qua
 def by_conservation(model: Model, kind: QuantityKind, steps: list[tuple[str, str]]) -> sympy.Expr:
     after = merged(model)
     mech, before_mech = Mechanics(after), Mechanics(model)
-    at, reaches = _points(model)
+    at, reaches = event_points(model)
     momentum = _projectile_momentum(model, before_mech)
-    brought = [sympy.Add(*(p * sympy.diff(d.mapping, q) for p, d in zip(momentum, before_mech.dofs, strict=True)))
-               .subs(at) for q in mech.q]
+    brought = [
+        sympy.Add(
+            *(p * sympy.diff(d.mapping, q) for p, d in zip(momentum, before_mech.dofs, strict=True))
+        ).subs(at)
+        for q in mech.q
+    ]
     mass = mech.mass_matrix.subs(at)
-    equations = [sympy.Add(*(mass[i, j] * mech.qd[j] for j in range(len(mech.q)))) - brought[i]
-                 for i in range(len(mech.q))]
-    steps.append(("Generalized momentum across the impulse",
-                  r",\ ".join(sympy.latex(sympy.Eq(e + b, b)) for e, b in zip(equations, brought, strict=True))))
+    equations = [
+        sympy.Add(*(mass[i, j] * mech.qd[j] for j in range(len(mech.q)))) - brought[i]
+        for i in range(len(mech.q))
+    ]
+    steps.append(
+        (
+            "Generalized momentum across the impulse",
+            r",\ ".join(sympy.latex(sympy.Eq(e + b, b)) for e, b in zip(equations, brought, strict=True)),
+        )
+    )
     velocities = solve_linear(equations, list(mech.qd), "momentum across the collision")
     kinetic = sympy.simplify(mech.kinetic.subs(at).subs(velocities))
     rise = sympy.simplify(mech.potential.subs(reaches) - mech.potential.subs(at))
@@ -88,27 +111,42 @@ def by_conservation(model: Model, kind: QuantityKind, steps: list[tuple[str, str
 def by_newton(model: Model, kind: QuantityKind, steps: list[tuple[str, str]]) -> sympy.Expr:
     after = merged(model)
     mech = Mechanics(after)
-    at, reaches = _points(model)
+    at, reaches = event_points(model)
     place = {d.symbol: d.mapping.subs(at) for d in mech.dofs}
     momentum = _projectile_momentum(model, mech)
     impulses = [sympy.Symbol(f"J_{c.name}", real=True) for c in after.constraints]
     velocity = [sympy.Symbol(f"u_{d.name}", real=True) for d in mech.dofs]
     gradients = [[sympy.diff(c.gap, d.symbol).subs(place) for d in mech.dofs] for c in after.constraints]
-    equations = [d.inertia * u - p - sympy.Add(*(j * g[i] for j, g in zip(impulses, gradients, strict=True)))
-                 for i, (d, u, p) in enumerate(zip(mech.dofs, velocity, momentum, strict=True))]
+    equations = [
+        d.inertia * u - p - sympy.Add(*(j * g[i] for j, g in zip(impulses, gradients, strict=True)))
+        for i, (d, u, p) in enumerate(zip(mech.dofs, velocity, momentum, strict=True))
+    ]
     equations += [sympy.Add(*(g_i * u for g_i, u in zip(g, velocity, strict=True))) for g in gradients]
-    steps.append(("Impulse balance, constraint impulses unknown",
-                  r",\ ".join(sympy.latex(sympy.Eq(e, 0)) for e in equations)))
+    steps.append(
+        (
+            "Impulse balance, constraint impulses unknown",
+            r",\ ".join(sympy.latex(sympy.Eq(e, 0)) for e in equations),
+        )
+    )
     solution = solve_linear(equations, velocity + impulses, "impulse balance")
-    kinetic = sympy.simplify(sympy.Add(*(d.inertia * solution[u] ** 2 / 2
-                                         for d, u in zip(mech.dofs, velocity, strict=True))))
+    kinetic = sympy.simplify(
+        sympy.Add(*(d.inertia * solution[u] ** 2 / 2 for d, u in zip(mech.dofs, velocity, strict=True)))
+    )
     if len(mech.q) != 1:
         raise DerivationError("the work integral is done for one coordinate only")
     q = mech.q[0]
     cart_state = mech.cartesian_state()
-    force = sympy.Add(*((-sympy.diff(mech.cartesian_potential, d.symbol)).subs(cart_state)
-                        * sympy.diff(d.mapping, q) for d in mech.dofs))
+    force = sympy.Add(
+        *(
+            (-sympy.diff(mech.cartesian_potential, d.symbol)).subs(cart_state) * sympy.diff(d.mapping, q)
+            for d in mech.dofs
+        )
+    )
     work = sympy.simplify(sympy.integrate(force, (q, at[q], reaches[q])))
-    steps.append(("Work-energy theorem up to the turning point",
-                  rf"0 - K_1 = \int Q\,d{sympy.latex(q)} = " + sympy.latex(work)))
+    steps.append(
+        (
+            "Work-energy theorem up to the turning point",
+            rf"0 - K_1 = \int Q\,d{sympy.latex(q)} = " + sympy.latex(work),
+        )
+    )
     return _finish(kinetic, -work, model, kind, steps)

@@ -31,18 +31,19 @@ class ConservationMethod(Method):
             raise NotApplicable("energy is not conserved with kinetic friction")
         mech = self.mech
         mass, potential = mech.mass_matrix, mech.potential
-        cyclic = [i for i, q in enumerate(mech.q)
-                  if not potential.has(q) and not mass.has(q)]
+        cyclic = [i for i, q in enumerate(mech.q) if not potential.has(q) and not mass.has(q)]
         state = dict(self.model.state)
         velocities: dict[sympy.Symbol, sympy.Expr] = {}
         if cyclic:
             momenta = [sympy.Add(*(mass[i, j] * mech.qd[j] for j in range(len(mech.q)))) for i in cyclic]
             initial = [p.subs(state) for p in momenta]
             for i, p, p0 in zip(cyclic, momenta, initial, strict=True):
-                self.step(f"Momentum conjugate to {mech.q[i]} is conserved",
-                          self.tex(sympy.Eq(p, p0)))
-            velocities = solve_linear([p - p0 for p, p0 in zip(momenta, initial, strict=True)],
-                                      [mech.qd[i] for i in cyclic], self.title)
+                self.step(f"Momentum conjugate to {mech.q[i]} is conserved", self.tex(sympy.Eq(p, p0)))
+            velocities = solve_linear(
+                [p - p0 for p, p0 in zip(momenta, initial, strict=True)],
+                [mech.qd[i] for i in cyclic],
+                self.title,
+            )
         kinetic = sympy.simplify(mech.kinetic.subs(velocities))
         remaining = [q for i, q in enumerate(mech.q) if i not in cyclic]
         return velocities, kinetic, remaining
@@ -59,20 +60,29 @@ class ConservationMethod(Method):
             others_dot = [next(x.velocity for x in model.coordinates if x.symbol == o) for o in others]
             part_t = sympy.expand(kinetic).coeff(c.velocity, 2) * c.velocity**2
             part_v = sympy.Add(*(t for t in sympy.Add.make_args(sympy.expand(potential)) if t.has(q)))
-            if part_t.has(*others, *others_dot) or part_v.has(*others) or sympy.expand(
-                    kinetic - part_t).has(c.velocity):
-                raise NotApplicable(f"{c.name} is coupled to other coordinates: more than one degree of freedom")
+            if (
+                part_t.has(*others, *others_dot)
+                or part_v.has(*others)
+                or sympy.expand(kinetic - part_t).has(c.velocity)
+            ):
+                raise NotApplicable(
+                    f"{c.name} is coupled to other coordinates: more than one degree of freedom"
+                )
             energy = part_t + part_v
             rate = sympy.expand(time_derivative(energy, model) / c.velocity)
-            self.step(f"Energy of {c.name} is conserved",
-                      rf"E = {self.tex(energy)},\ \frac{{dE}}{{dt}} = 0 \Rightarrow "
-                      + self.tex(sympy.Eq(sympy.simplify(rate), 0)))
+            self.step(
+                f"Energy of {c.name} is conserved",
+                rf"E = {self.tex(energy)},\ \frac{{dE}}{{dt}} = 0 \Rightarrow "
+                + self.tex(sympy.Eq(sympy.simplify(rate), 0)),
+            )
             result[c.acceleration] = sympy.solve(rate, c.acceleration)[0]
         for velocity, expr in velocities.items():
             c = next(c for c in model.coordinates if c.velocity == velocity)
             result[c.acceleration] = sympy.simplify(time_derivative(expr, model).subs(result))
-            self.step(f"Acceleration of {c.name} from its momentum",
-                      self.tex(sympy.Eq(c.acceleration, result[c.acceleration])))
+            self.step(
+                f"Acceleration of {c.name} from its momentum",
+                self.tex(sympy.Eq(c.acceleration, result[c.acceleration])),
+            )
         return result
 
     def acceleration(self, coordinate: str) -> sympy.Expr:
@@ -97,9 +107,11 @@ class ConservationMethod(Method):
             raise NotApplicable(f"{coordinate} is coupled to other coordinates")
         curvature = sympy.diff(self.mech.potential, c.symbol, 2).subs(c.symbol, equilibrium)
         omega2 = sympy.simplify(curvature / inertia.subs(c.symbol, equilibrium))
-        self.step("Small oscillations from the energy",
-                  r"E \approx \tfrac12 M_0 \dot q^2 + \tfrac12 V''(q_0)\,\delta q^2,\ \omega^2 = "
-                  + self.tex(omega2))
+        self.step(
+            "Small oscillations from the energy",
+            r"E \approx \tfrac12 M_0 \dot q^2 + \tfrac12 V''(q_0)\,\delta q^2,\ \omega^2 = "
+            + self.tex(omega2),
+        )
         return sympy.simplify(sympy.sqrt(omega2))
 
     def collision(self, item: QuantityKind) -> sympy.Expr:

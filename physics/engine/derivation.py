@@ -16,7 +16,7 @@ from physics.engine.newton import NewtonMethod
 from physics.engine.proof import domain_points, prove_equal
 from physics.engine.results import Derivation, KnownMistake, LimitCase, MethodReport, SimulationCheck
 from physics.engine.simulation import Simulator
-from physics.errors import DerivationError
+from physics.errors import DerivationError, PhyscheckError
 
 SIMULATION_POINTS = 3
 MIN_METHODS = 2
@@ -29,7 +29,12 @@ def _methods() -> tuple[type[Method], ...]:
 def derive(model: Model) -> Derivation:
     """Derive every quantity of the model; DerivationError if fewer than two methods reach one, if they
     disagree, or if the simulation disagrees. Cached per model (models are immutable and hashable)."""
-    return _derive(model)
+    try:
+        return _derive(model)
+    except PhyscheckError:
+        raise
+    except Exception as error:  # whatever sympy raises on an uploaded model is the model's failure to derive
+        raise DerivationError(f"the derivation failed: {type(error).__name__}: {error}") from error
 
 
 @lru_cache(maxsize=64)
@@ -49,6 +54,13 @@ def _derive(model: Model) -> Derivation:
             except NotApplicable as reason:
                 notes.append(f"{quantity.name}: {reason}")
                 continue
+            except PhyscheckError:
+                raise
+            except Exception as error:  # sympy and arithmetic failures on an uploaded model
+                raise DerivationError(
+                    f"{quantity.name}: {method.title} failed: {type(error).__name__}: {error}",
+                    quantity=quantity.name,
+                ) from error
             _check_free_symbols(model, quantity, method, value)
             results[quantity.name] = value
             answers[quantity.name][method.name] = value
@@ -61,13 +73,17 @@ def _derive(model: Model) -> Derivation:
         if len(derived) < MIN_METHODS:
             raise DerivationError(
                 f"{quantity.name}: only {len(derived)} method(s) could derive it ({', '.join(derived) or 'none'}); "
-                f"at least {MIN_METHODS} are required", quantity=quantity.name)
+                f"at least {MIN_METHODS} are required",
+                quantity=quantity.name,
+            )
         names = list(derived)
         first = derived[names[0]]
         how = []
         for other in names[1:]:
-            how.append(f"{names[0]} = {other}: " + prove_equal(
-                first, derived[other], model, quantity.name, (names[0], other)))
+            how.append(
+                f"{names[0]} = {other}: "
+                + prove_equal(first, derived[other], model, quantity.name, (names[0], other))
+            )
         quantities[quantity.name] = _simplest(list(derived.values()))
         agreement[quantity.name] = tuple(names)
         proofs[quantity.name] = "; ".join(how)
@@ -86,8 +102,15 @@ def _derive(model: Model) -> Derivation:
     limits: dict[str, tuple[LimitCase, ...]] = {}
     for quantity in model.quantities:
         reference = quantities[quantity.name]
-        mistakes[quantity.name] = generate_mistakes(model, quantity, reference, rederive)
-        limits[quantity.name] = generate_limits(model, reference)
+        # mistakes and limits are extras: a model whose slips cannot be derived still has its answers
+        try:
+            mistakes[quantity.name] = generate_mistakes(model, quantity, reference, rederive)
+        except Exception:
+            mistakes[quantity.name] = ()
+        try:
+            limits[quantity.name] = generate_limits(model, reference)
+        except Exception:
+            limits[quantity.name] = ()
     return Derivation(quantities, tuple(reports), agreement, simulation, mistakes, limits, proofs)
 
 
@@ -100,19 +123,28 @@ def check_consistency(model: Model, mech: Mechanics) -> None:
         if residue != 0:
             raise DerivationError(
                 f"constraint {constraint.name!r}: the positions in terms of the coordinates violate it "
-                f"(gap = {residue} instead of 0)", quantity=constraint.name)
+                f"(gap = {residue} instead of 0)",
+                quantity=constraint.name,
+            )
     if not model.constraints:
         free = len(mech.dofs)
     else:
         point = domain_points(model, 1)[0]
-        at = {**point, **{q: sympy.Rational(3, 10) + sympy.Rational(i, 7) for i, q in enumerate(mech.q)
-                          if q not in point}}
+        at = {
+            **point,
+            **{
+                q: sympy.Rational(3, 10) + sympy.Rational(i, 7)
+                for i, q in enumerate(mech.q)
+                if q not in point
+            },
+        }
         jacobian = sympy.Matrix([[sympy.diff(c.gap, d.symbol) for d in mech.dofs] for c in model.constraints])
         numeric = jacobian.subs(place).subs(at).evalf(20)
         free = len(mech.dofs) - numeric.rank(iszerofunc=lambda x: abs(x) < 1e-12)
     if free != len(mech.q):
-        raise DerivationError(f"the constraints leave {free} degrees of freedom but the model has "
-                              f"{len(mech.q)} coordinates")
+        raise DerivationError(
+            f"the constraints leave {free} degrees of freedom but the model has {len(mech.q)} coordinates"
+        )
 
 
 def _check_free_symbols(model: Model, quantity: Quantity, method: Method, value: sympy.Expr) -> None:
@@ -120,7 +152,9 @@ def _check_free_symbols(model: Model, quantity: Quantity, method: Method, value:
     if extra:
         raise DerivationError(
             f"{quantity.name}: {method.title} leaves {sorted(map(str, extra))} in the answer {value}; give their "
-            "values in the model's state", quantity=quantity.name)
+            "values in the model's state",
+            quantity=quantity.name,
+        )
 
 
 def _simplest(candidates: list[sympy.Expr]) -> sympy.Expr:
@@ -130,12 +164,22 @@ def _simplest(candidates: list[sympy.Expr]) -> sympy.Expr:
     return min(forms, key=lambda e: (sympy.count_ops(e), len(str(e))))
 
 
-def _simulate(model: Model, quantities: dict[str, sympy.Expr], lagrange: Method) -> dict[str, SimulationCheck]:
+def _simulate(
+    model: Model, quantities: dict[str, sympy.Expr], lagrange: Method
+) -> dict[str, SimulationCheck]:
     simulator = Simulator(model, lagrange.equilibrium)
     points = domain_points(model, SIMULATION_POINTS, seed=7)
     result: dict[str, SimulationCheck] = {}
     for quantity in model.quantities:
-        check = simulator.check(quantity, quantities[quantity.name], points)
+        try:
+            check = simulator.check(quantity, quantities[quantity.name], points)
+        except PhyscheckError:
+            raise
+        except Exception as error:  # a singular or overflowing integration
+            raise DerivationError(
+                f"{quantity.name}: the simulation failed: {type(error).__name__}: {error}",
+                quantity=quantity.name,
+            ) from error
         if check is not None:
             result[quantity.name] = check
     return result

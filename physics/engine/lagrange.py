@@ -34,30 +34,43 @@ class LagrangeMethod(Method):
         friction = mech.friction_forces(lam)
         equations = []
         for c in model.coordinates:
-            generalized = sympy.Add(*(f * sympy.diff(d.mapping, c.symbol) for f, d in zip(friction, mech.dofs,
-                                                                                           strict=True)))
+            generalized = sympy.Add(
+                *(f * sympy.diff(d.mapping, c.symbol) for f, d in zip(friction, mech.dofs, strict=True))
+            )
             el = time_derivative(sympy.diff(lagrangian, c.velocity), model) - sympy.diff(lagrangian, c.symbol)
             equation = sympy.collect(sympy.trigsimp(sympy.expand(el - generalized)), list(mech.qdd))
-            self.step(f"Lagrange's equation for {c.name}",
-                      rf"\frac{{d}}{{dt}}\frac{{\partial L}}{{\partial \dot{{{self.tex(c.symbol)}}}}} - "
-                      rf"\frac{{\partial L}}{{\partial {self.tex(c.symbol)}}} = Q_{{{self.tex(c.symbol)}}}"
-                      r":\quad " + self.tex(sympy.Eq(equation, 0)))
+            self.step(
+                f"Lagrange's equation for {c.name}",
+                rf"\frac{{d}}{{dt}}\frac{{\partial L}}{{\partial \dot{{{self.tex(c.symbol)}}}}} - "
+                rf"\frac{{\partial L}}{{\partial {self.tex(c.symbol)}}} = Q_{{{self.tex(c.symbol)}}}"
+                r":\quad " + self.tex(sympy.Eq(equation, 0)),
+            )
             equations.append(equation)
         if lam:
             place = mech.cartesian_state()
-            applied = [-sympy.diff(mech.cartesian_potential, d.symbol) + f
-                       for d, f in zip(mech.dofs, friction, strict=True)]
+            applied = [
+                -sympy.diff(mech.cartesian_potential, d.symbol) + f
+                for d, f in zip(mech.dofs, friction, strict=True)
+            ]
             gradients = [[g.subs(place) for g in mech.gap_gradient(k)] for k in range(len(lam))]
-            residual = [d.inertia * time_derivative(time_derivative(d.mapping, model), model)
-                        - a.subs(place) for d, a in zip(mech.dofs, applied, strict=True)]
+            residual = [
+                d.inertia * time_derivative(time_derivative(d.mapping, model), model) - a.subs(place)
+                for d, a in zip(mech.dofs, applied, strict=True)
+            ]
             for grad in gradients:
                 lhs = sympy.Add(*(g * r for g, r in zip(grad, residual, strict=True)))
-                rhs = sympy.Add(*(lam[j] * sympy.Add(*(a * b for a, b in zip(grad, other, strict=True)))
-                                  for j, other in enumerate(gradients)))
+                rhs = sympy.Add(
+                    *(
+                        lam[j] * sympy.Add(*(a * b for a, b in zip(grad, other, strict=True)))
+                        for j, other in enumerate(gradients)
+                    )
+                )
                 equations.append(lhs - rhs)
-            self.step("Constraint forces from Newton's law along each constraint normal",
-                      r"\nabla g_k \cdot (M\ddot{\mathbf{x}} - \mathbf{F}) = \sum_l (\nabla g_k\cdot\nabla g_l)"
-                      r"\,\lambda_l")
+            self.step(
+                "Constraint forces from Newton's law along each constraint normal",
+                r"\nabla g_k \cdot (M\ddot{\mathbf{x}} - \mathbf{F}) = \sum_l (\nabla g_k\cdot\nabla g_l)"
+                r"\,\lambda_l",
+            )
         return equations, [*mech.qdd, *lam]
 
     @cached_property
@@ -79,9 +92,10 @@ class LagrangeMethod(Method):
     def potential_force(self, coordinate: str) -> sympy.Expr:
         q = self.model.coordinate(coordinate).symbol
         force = sympy.simplify(-sympy.diff(self.mech.potential, q))
-        self.step(f"Generalized force on {coordinate}",
-                  rf"Q_{{{self.tex(q)}}} = -\frac{{\partial V}}{{\partial {self.tex(q)}}} = "
-                  + self.tex(force))
+        self.step(
+            f"Generalized force on {coordinate}",
+            rf"Q_{{{self.tex(q)}}} = -\frac{{\partial V}}{{\partial {self.tex(q)}}} = " + self.tex(force),
+        )
         return force
 
     def frequency(self, coordinate: str, equilibrium: sympy.Expr) -> sympy.Expr:
@@ -92,8 +106,15 @@ class LagrangeMethod(Method):
         stiffness = sympy.hessian(mech.potential, mech.q).subs(at)
         mass = mech.mass_matrix.subs(at)
         omega2 = _single_nonzero_eigenvalue(mass.inv() * stiffness)
-        self.step("Small oscillations", r"M\ddot{q} + Kq = 0,\ M = " + self.tex(mass) + r",\ K = "
-                  + self.tex(sympy.simplify(stiffness)) + r",\ \omega^2 = " + self.tex(omega2))
+        self.step(
+            "Small oscillations",
+            r"M\ddot{q} + Kq = 0,\ M = "
+            + self.tex(mass)
+            + r",\ K = "
+            + self.tex(sympy.simplify(stiffness))
+            + r",\ \omega^2 = "
+            + self.tex(omega2),
+        )
         return sympy.simplify(sympy.sqrt(omega2))
 
 

@@ -26,8 +26,18 @@ from physics.errors import SpecError, SpecErrors
 
 _NAME = re.compile(r"^[A-Za-z][A-Za-z0-9]*$")
 _SECTIONS = frozenset(
-    {"coordinates", "bodies", "gravity", "constraints", "friction", "potentials", "collision", "state",
-     "domain", "quantities"}
+    {
+        "coordinates",
+        "bodies",
+        "gravity",
+        "constraints",
+        "friction",
+        "potentials",
+        "collision",
+        "state",
+        "domain",
+        "quantities",
+    }
 )
 _QUANTITY_TARGET = {
     QuantityKind.ACCELERATION: "coordinate",
@@ -38,6 +48,8 @@ _QUANTITY_TARGET = {
     QuantityKind.ANGULAR_FREQUENCY: "coordinate",
     QuantityKind.PERIOD: "coordinate",
 }
+# Sizes beyond any textbook model: the derivation's cost grows fast with them, and models are uploaded.
+LIMITS = {"coordinates": 8, "bodies": 12, "constraints": 16, "friction": 8, "potentials": 8, "quantities": 30}
 T = TypeVar("T")
 
 
@@ -71,6 +83,9 @@ def load_model(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]) -> 
     for key in data:
         if key not in _SECTIONS:
             errors.add(f"unknown section {key!r}; expected one of {sorted(_SECTIONS)}", (str(key),))
+    for key, most in LIMITS.items():
+        if isinstance(data.get(key), Mapping | list) and len(data[key]) > most:
+            raise SpecErrors([SpecError(f"at most {most} entries", (key,))])
     coordinates = _coordinates(data.get("coordinates"), symbols, errors)
     coord_names = {c.name: c.symbol for c in coordinates}
     coord_scope = {**symbols, **coord_names}
@@ -128,8 +143,9 @@ def _sequence(value: Any, path: Path, errors: _Collector, required: bool = False
     return value
 
 
-def _check_keys(entry: Mapping[str, Any], allowed: set[str], required: set[str], path: Path,
-                errors: _Collector) -> None:
+def _check_keys(
+    entry: Mapping[str, Any], allowed: set[str], required: set[str], path: Path, errors: _Collector
+) -> None:
     for key in entry:
         if key not in allowed:
             errors.add(f"unknown key {key!r}; expected one of {sorted(allowed)}", (*path, str(key)))
@@ -137,8 +153,9 @@ def _check_keys(entry: Mapping[str, Any], allowed: set[str], required: set[str],
         errors.add("required", (*path, key))
 
 
-def _coordinates(value: Any, symbols: Mapping[str, sympy.Symbol],
-                 errors: _Collector) -> tuple[Coordinate, ...]:
+def _coordinates(
+    value: Any, symbols: Mapping[str, sympy.Symbol], errors: _Collector
+) -> tuple[Coordinate, ...]:
     result: list[Coordinate] = []
     for index, name in enumerate(_sequence(value, ("coordinates",), errors, required=True)):
         if not isinstance(name, str) or not _NAME.match(name):
@@ -148,13 +165,17 @@ def _coordinates(value: Any, symbols: Mapping[str, sympy.Symbol],
             errors.add(f"coordinate {name!r} declared twice", ("coordinates", index))
             continue
         symbol = symbols.get(name, sympy.Symbol(name, real=True))
-        result.append(Coordinate(name, symbol, sympy.Symbol(f"{name}_dot", real=True),
-                                 sympy.Symbol(f"{name}_ddot", real=True)))
+        result.append(
+            Coordinate(
+                name, symbol, sympy.Symbol(f"{name}_dot", real=True), sympy.Symbol(f"{name}_ddot", real=True)
+            )
+        )
     return tuple(result)
 
 
-def _bodies(value: Any, symbols: Mapping[str, sympy.Symbol], scope: Mapping[str, sympy.Symbol],
-            errors: _Collector) -> tuple[Body, ...]:
+def _bodies(
+    value: Any, symbols: Mapping[str, sympy.Symbol], scope: Mapping[str, sympy.Symbol], errors: _Collector
+) -> tuple[Body, ...]:
     result: list[Body] = []
     for name, entry in _mapping(value, ("bodies",), errors).items():
         path: Path = ("bodies", str(name))
@@ -178,8 +199,9 @@ def _bodies(value: Any, symbols: Mapping[str, sympy.Symbol], scope: Mapping[str,
     return tuple(result)
 
 
-def _axes(value: Any, scope: Mapping[str, sympy.Symbol], path: Path,
-          errors: _Collector) -> tuple[tuple[str, sympy.Expr], ...]:
+def _axes(
+    value: Any, scope: Mapping[str, sympy.Symbol], path: Path, errors: _Collector
+) -> tuple[tuple[str, sympy.Expr], ...]:
     spec = _mapping(value, path, errors)
     result: list[tuple[str, sympy.Expr]] = []
     for axis in spec:
@@ -203,8 +225,10 @@ def _constraints(value: Any, scope: Mapping[str, sympy.Symbol], errors: _Collect
         _check_keys(spec, {"gap", "kind"}, {"gap"}, path, errors)
         kind_text = spec.get("kind", "other")
         if kind_text not in set(ConstraintKind):
-            errors.add(f"unknown kind {kind_text!r}; expected one of {[k.value for k in ConstraintKind]}",
-                       (*path, "kind"))
+            errors.add(
+                f"unknown kind {kind_text!r}; expected one of {[k.value for k in ConstraintKind]}",
+                (*path, "kind"),
+            )
             continue
         gap = errors.read(spec.get("gap"), scope, (*path, "gap"))
         if gap is not None:
@@ -212,9 +236,14 @@ def _constraints(value: Any, scope: Mapping[str, sympy.Symbol], errors: _Collect
     return tuple(result)
 
 
-def _frictions(value: Any, symbols: Mapping[str, sympy.Symbol], bodies: tuple[Body, ...],
-               constraints: tuple[Constraint, ...], coordinates: tuple[Coordinate, ...],
-               errors: _Collector) -> tuple[Friction, ...]:
+def _frictions(
+    value: Any,
+    symbols: Mapping[str, sympy.Symbol],
+    bodies: tuple[Body, ...],
+    constraints: tuple[Constraint, ...],
+    coordinates: tuple[Coordinate, ...],
+    errors: _Collector,
+) -> tuple[Friction, ...]:
     result: list[Friction] = []
     for index, entry in enumerate(_sequence(value, ("friction",), errors)):
         path: Path = ("friction", index)
@@ -230,22 +259,23 @@ def _frictions(value: Any, symbols: Mapping[str, sympy.Symbol], bodies: tuple[Bo
             errors.add(f"unknown constraint {spec.get('constraint')!r}", (*path, "constraint"))
         if not any(c.name == spec.get("sliding") for c in coordinates):
             errors.add(f"unknown coordinate {spec.get('sliding')!r}", (*path, "sliding"))
-        mu = errors.read(spec.get("coefficient"), symbols,
-                                                                    (*path, "coefficient"))
+        mu = errors.read(spec.get("coefficient"), symbols, (*path, "coefficient"))
         if mu is not None and body is not None:
             result.append(Friction(str(spec["constraint"]), body.name, mu, str(spec["sliding"])))
     return tuple(result)
 
 
-def _potentials(value: Any, symbols: Mapping[str, sympy.Symbol], bodies: tuple[Body, ...],
-                errors: _Collector) -> tuple[PairPotential, ...]:
+def _potentials(
+    value: Any, symbols: Mapping[str, sympy.Symbol], bodies: tuple[Body, ...], errors: _Collector
+) -> tuple[PairPotential, ...]:
     result: list[PairPotential] = []
     names = {b.name for b in bodies}
     for index, entry in enumerate(_sequence(value, ("potentials",), errors)):
         path: Path = ("potentials", index)
         spec = _mapping(entry, path, errors)
-        _check_keys(spec, {"bodies", "anchor", "energy", "distance"}, {"bodies", "energy", "distance"}, path,
-                    errors)
+        _check_keys(
+            spec, {"bodies", "anchor", "energy", "distance"}, {"bodies", "energy", "distance"}, path, errors
+        )
         members = spec.get("bodies")
         if not isinstance(members, list) or not 1 <= len(members) <= 2:
             errors.add("one or two body names", (*path, "bodies"))
@@ -263,15 +293,19 @@ def _potentials(value: Any, symbols: Mapping[str, sympy.Symbol], bodies: tuple[B
             errors.add("the name of the distance variable", (*path, "distance"))
             continue
         distance = symbols.get(distance_name, sympy.Symbol(distance_name, positive=True))
-        energy = errors.read(
-            spec.get("energy"), {**symbols, distance_name: distance}, (*path, "energy"))
+        energy = errors.read(spec.get("energy"), {**symbols, distance_name: distance}, (*path, "energy"))
         if energy is not None and all(m in names for m in members):
             result.append(PairPotential(f"potential{index}", tuple(members), anchor, energy, distance))
     return tuple(result)
 
 
-def _collision(value: Any, symbols: Mapping[str, sympy.Symbol], bodies: tuple[Body, ...],
-               coordinates: tuple[Coordinate, ...], errors: _Collector) -> Collision | None:
+def _collision(
+    value: Any,
+    symbols: Mapping[str, sympy.Symbol],
+    bodies: tuple[Body, ...],
+    coordinates: tuple[Coordinate, ...],
+    errors: _Collector,
+) -> Collision | None:
     if value is None:
         return None
     path: Path = ("collision",)
@@ -293,8 +327,13 @@ def _collision(value: Any, symbols: Mapping[str, sympy.Symbol], bodies: tuple[Bo
     return Collision(projectile, mass, direction, target, at, reaches)
 
 
-def _coordinate_values(value: Any, symbols: Mapping[str, sympy.Symbol], coordinates: tuple[Coordinate, ...],
-                       path: Path, errors: _Collector) -> tuple[tuple[str, sympy.Expr], ...]:
+def _coordinate_values(
+    value: Any,
+    symbols: Mapping[str, sympy.Symbol],
+    coordinates: tuple[Coordinate, ...],
+    path: Path,
+    errors: _Collector,
+) -> tuple[tuple[str, sympy.Expr], ...]:
     result: list[tuple[str, sympy.Expr]] = []
     names = {c.name for c in coordinates}
     for name, text in _mapping(value, path, errors).items():
@@ -307,8 +346,9 @@ def _coordinate_values(value: Any, symbols: Mapping[str, sympy.Symbol], coordina
     return tuple(result)
 
 
-def _state(value: Any, symbols: Mapping[str, sympy.Symbol], coordinates: tuple[Coordinate, ...],
-           errors: _Collector) -> tuple[tuple[sympy.Symbol, sympy.Expr], ...]:
+def _state(
+    value: Any, symbols: Mapping[str, sympy.Symbol], coordinates: tuple[Coordinate, ...], errors: _Collector
+) -> tuple[tuple[sympy.Symbol, sympy.Expr], ...]:
     known = {c.name: c.symbol for c in coordinates} | {f"{c.name}_dot": c.velocity for c in coordinates}
     given: dict[sympy.Symbol, sympy.Expr] = {c.velocity: sympy.Integer(0) for c in coordinates}
     for name, text in _mapping(value, ("state",), errors, required=False).items():
@@ -321,8 +361,9 @@ def _state(value: Any, symbols: Mapping[str, sympy.Symbol], coordinates: tuple[C
     return tuple(given.items())
 
 
-def _domain(value: Any, symbols: Mapping[str, sympy.Symbol], errors: _Collector) -> tuple[
-        tuple[tuple[sympy.Symbol, sympy.Expr, sympy.Expr], ...], tuple[sympy.Expr, ...]]:
+def _domain(
+    value: Any, symbols: Mapping[str, sympy.Symbol], errors: _Collector
+) -> tuple[tuple[tuple[sympy.Symbol, sympy.Expr, sympy.Expr], ...], tuple[sympy.Expr, ...]]:
     spec = _mapping(value, ("domain",), errors, required=False)
     _check_keys(spec, {"ranges", "positive"}, set(), ("domain",), errors)
     ranges: list[tuple[sympy.Symbol, sympy.Expr, sympy.Expr]] = []
@@ -346,21 +387,34 @@ def _domain(value: Any, symbols: Mapping[str, sympy.Symbol], errors: _Collector)
     return tuple(ranges), tuple(positive)
 
 
-def _quantities(value: Any, symbols: Mapping[str, sympy.Symbol], coordinates: tuple[Coordinate, ...],
-                constraints: tuple[Constraint, ...], collision: Collision | None,
-                errors: _Collector) -> tuple[Quantity, ...]:
+def _quantities(
+    value: Any,
+    symbols: Mapping[str, sympy.Symbol],
+    coordinates: tuple[Coordinate, ...],
+    constraints: tuple[Constraint, ...],
+    collision: Collision | None,
+    errors: _Collector,
+) -> tuple[Quantity, ...]:
     result: list[Quantity] = []
     for name, entry in _mapping(value, ("quantities",), errors).items():
-        quantity = _quantity(str(name), entry, ("quantities", str(name)), symbols, coordinates, constraints,
-                             collision, errors)
+        quantity = _quantity(
+            str(name), entry, ("quantities", str(name)), symbols, coordinates, constraints, collision, errors
+        )
         if quantity is not None:
             result.append(quantity)
     return tuple(result)
 
 
-def _quantity(name: str, entry: Any, path: Path, symbols: Mapping[str, sympy.Symbol],
-              coordinates: tuple[Coordinate, ...], constraints: tuple[Constraint, ...],
-              collision: Collision | None, errors: _Collector) -> Quantity | None:
+def _quantity(
+    name: str,
+    entry: Any,
+    path: Path,
+    symbols: Mapping[str, sympy.Symbol],
+    coordinates: tuple[Coordinate, ...],
+    constraints: tuple[Constraint, ...],
+    collision: Collision | None,
+    errors: _Collector,
+) -> Quantity | None:
     spec = _mapping(entry, path, errors)
     kinds = [k for k in spec if k in set(QuantityKind)]
     if len(kinds) != 1:
@@ -372,8 +426,11 @@ def _quantity(name: str, entry: Any, path: Path, symbols: Mapping[str, sympy.Sym
     target = spec[kind.value]
     where: Path = (*path, kind.value)
     if kind in _QUANTITY_TARGET:
-        pool = {c.name for c in coordinates} if _QUANTITY_TARGET[kind] == "coordinate" else {
-            c.name for c in constraints}
+        pool = (
+            {c.name for c in coordinates}
+            if _QUANTITY_TARGET[kind] == "coordinate"
+            else {c.name for c in constraints}
+        )
         if target not in pool:
             errors.add(f"unknown {_QUANTITY_TARGET[kind]} {target!r}", where)
             return None
@@ -382,8 +439,16 @@ def _quantity(name: str, entry: Any, path: Path, symbols: Mapping[str, sympy.Sym
         if target not in symbols:
             errors.add(f"unknown symbol {target!r}", where)
             return None
-        inner = _quantity(f"{name}.zero", spec.get("zero"), (*path, "zero"), symbols, coordinates,
-                          constraints, collision, errors)
+        inner = _quantity(
+            f"{name}.zero",
+            spec.get("zero"),
+            (*path, "zero"),
+            symbols,
+            coordinates,
+            constraints,
+            collision,
+            errors,
+        )
         return Quantity(name, kind, parameter=symbols[target], inner=inner) if inner is not None else None
     if collision is None:
         errors.add("this quantity needs a collision section", where)

@@ -48,13 +48,22 @@ class Mechanics:
         result: list[CartesianDof] = []
         for body in self.model.bodies:
             entries: list[tuple[str, sympy.Expr, sympy.Expr]] = [
-                (f"{axis}_{body.name}", body.mass, expr) for axis, expr in body.position]
+                (f"{axis}_{body.name}", body.mass, expr) for axis, expr in body.position
+            ]
             if body.angle is not None:
                 entries.append((f"phi_{body.name}", body.inertia, body.angle))
             for name, inertia, mapping in entries:
-                result.append(CartesianDof(
-                    body.name, name, self.model.cartesian_symbol(name), sympy.Symbol(f"v_{name}", real=True),
-                    sympy.Symbol(f"a_{name}", real=True), inertia, mapping))
+                result.append(
+                    CartesianDof(
+                        body.name,
+                        name,
+                        self.model.cartesian_symbol(name),
+                        sympy.Symbol(f"v_{name}", real=True),
+                        sympy.Symbol(f"a_{name}", real=True),
+                        inertia,
+                        mapping,
+                    )
+                )
         return tuple(result)
 
     @cached_property
@@ -96,8 +105,12 @@ class Mechanics:
     @cached_property
     def kinetic(self) -> sympy.Expr:
         """T = sum of 1/2 m v^2 and 1/2 I omega^2, velocities from the positions in the coordinates."""
-        return sympy.Add(*(sympy.Rational(1, 2) * d.inertia * time_derivative(d.mapping, self.model) ** 2
-                           for d in self.dofs))
+        return sympy.Add(
+            *(
+                sympy.Rational(1, 2) * d.inertia * time_derivative(d.mapping, self.model) ** 2
+                for d in self.dofs
+            )
+        )
 
     @cached_property
     def potential(self) -> sympy.Expr:
@@ -107,7 +120,9 @@ class Mechanics:
 
     @cached_property
     def mass_matrix(self) -> sympy.Matrix:
-        return sympy.Matrix([[sympy.expand(sympy.diff(self.kinetic, a, b)) for b in self.qd] for a in self.qd])
+        return sympy.Matrix(
+            [[sympy.expand(sympy.diff(self.kinetic, a, b)) for b in self.qd] for a in self.qd]
+        )
 
     # --- Cartesian description ---------------------------------------------------------------
 
@@ -130,8 +145,10 @@ class Mechanics:
     def sliding_direction(self, body: str, coordinate: str) -> list[sympy.Expr]:
         """Unit vector (over the Cartesian dofs) along which `body` slides as `coordinate` increases."""
         q = self.model.coordinate(coordinate).symbol
-        tangent = [sympy.diff(d.mapping, q) if d.body == body and not d.name.startswith("phi_") else
-                   sympy.Integer(0) for d in self.dofs]
+        tangent = [
+            sympy.diff(d.mapping, q) if d.body == body and not d.name.startswith("phi_") else sympy.Integer(0)
+            for d in self.dofs
+        ]
         norm = sympy.sqrt(sympy.Add(*(t**2 for t in tangent)))
         norm = sympy.simplify(norm)
         if norm == 0:
@@ -178,8 +195,9 @@ class Mechanics:
         return sympy.sqrt(sympy.Add(*((b - a) ** 2 for a, b in ends)))
 
 
-def solve_linear(equations: Sequence[sympy.Expr], unknowns: Sequence[sympy.Symbol],
-                 what: str) -> dict[sympy.Symbol, sympy.Expr]:
+def solve_linear(
+    equations: Sequence[sympy.Expr], unknowns: Sequence[sympy.Symbol], what: str
+) -> dict[sympy.Symbol, sympy.Expr]:
     """The unique solution of linear equations (each `= 0`); DerivationError if there is none."""
     matrix, rhs = sympy.linear_eq_to_matrix(list(equations), list(unknowns))
     if matrix.shape[0] > matrix.shape[1]:
@@ -190,8 +208,9 @@ def solve_linear(equations: Sequence[sympy.Expr], unknowns: Sequence[sympy.Symbo
     try:
         solution = matrix.LUsolve(rhs)
     except (ValueError, ZeroDivisionError) as error:
-        raise DerivationError(f"{what}: the equations do not determine "
-                              f"{', '.join(map(str, unknowns))} ({error})") from error
+        raise DerivationError(
+            f"{what}: the equations do not determine {', '.join(map(str, unknowns))} ({error})"
+        ) from error
     result = {u: sympy.simplify(v) for u, v in zip(unknowns, solution, strict=True)}
     if any(v.has(sympy.zoo, sympy.nan, sympy.oo) for v in result.values()):
         raise DerivationError(f"{what}: the equations are singular for {', '.join(map(str, unknowns))}")

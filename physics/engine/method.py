@@ -68,9 +68,11 @@ class Method(ABC):
             q = self.model.coordinate(quantity.target).symbol
             q0 = self.equilibrium(quantity.target)
             stiffness = sympy.simplify(-sympy.diff(self.potential_force(quantity.target), q).subs(q, q0))
-            self.step(f"Stiffness at the equilibrium ({quantity.target})",
-                      rf"k = -\left.\frac{{\partial Q}}{{\partial {self.tex(q)}}}\right|_0 = "
-                      + self.tex(stiffness))
+            self.step(
+                f"Stiffness at the equilibrium ({quantity.target})",
+                rf"k = -\left.\frac{{\partial Q}}{{\partial {self.tex(q)}}}\right|_0 = "
+                + self.tex(stiffness),
+            )
             return stiffness
         if kind is QuantityKind.ANGULAR_FREQUENCY:
             return self.frequency(quantity.target, self.equilibrium(quantity.target))
@@ -88,27 +90,44 @@ class Method(ABC):
         force = self.potential_force(coordinate)
         others = (force.free_symbols & set(self.mech.q)) - {q}
         if others:
-            raise NotApplicable(f"the force on {coordinate} depends on other coordinates {sorted(map(str, others))}")
+            raise NotApplicable(
+                f"the force on {coordinate} depends on other coordinates {sorted(map(str, others))}"
+            )
         roots = _real_roots(force, q)
         slope = sympy.diff(force, q)
-        stable = [root for root in roots if _negative_on_domain(sympy.simplify(slope.subs(q, root)), self.model)]
+        stable = [
+            root for root in roots if _negative_on_domain(sympy.simplify(slope.subs(q, root)), self.model)
+        ]
         if len(stable) != 1:
             raise DerivationError(
                 f"{self.title}: expected one stable equilibrium of {coordinate}, found {len(stable)} among "
-                f"the roots {roots} of Q = {force}", quantity=coordinate)
-        self.step(f"Equilibrium of {coordinate}",
-                  rf"Q({self.tex(q)}) = {self.tex(force)} = 0 \Rightarrow {self.tex(q)}_0 = "
-                  + self.tex(stable[0]) + r",\quad Q'(" + self.tex(q) + "_0) < 0")
+                f"the roots {roots} of Q = {force}",
+                quantity=coordinate,
+            )
+        self.step(
+            f"Equilibrium of {coordinate}",
+            rf"Q({self.tex(q)}) = {self.tex(force)} = 0 \Rightarrow {self.tex(q)}_0 = "
+            + self.tex(stable[0])
+            + r",\quad Q'("
+            + self.tex(q)
+            + "_0) < 0",
+        )
         return sympy.simplify(stable[0])
 
     def solve_for(self, parameter: sympy.Symbol, expr: sympy.Expr, name: str) -> sympy.Expr:
-        roots = [r for r in sympy.solve(expr, parameter)
-                 if not (parameter.is_positive and r.is_positive is False) and r.is_real is not False]
+        roots = [
+            r
+            for r in sympy.solve(expr, parameter)
+            if not (parameter.is_positive and r.is_positive is False) and r.is_real is not False
+        ]
         if len(roots) != 1:
-            raise DerivationError(f"{self.title}: {name}: expected one value of {parameter}, found {roots}",
-                                  quantity=name)
-        self.step(f"Solve for {parameter}", self.tex(sympy.Eq(expr, 0)) + r"\Rightarrow "
-                  + self.tex(sympy.Eq(parameter, roots[0])))
+            raise DerivationError(
+                f"{self.title}: {name}: expected one value of {parameter}, found {roots}", quantity=name
+            )
+        self.step(
+            f"Solve for {parameter}",
+            self.tex(sympy.Eq(expr, 0)) + r"\Rightarrow " + self.tex(sympy.Eq(parameter, roots[0])),
+        )
         return sympy.simplify(roots[0])
 
     @abstractmethod
@@ -129,8 +148,13 @@ def _real_roots(expr: sympy.Expr, q: sympy.Symbol) -> list[sympy.Expr]:
     if not roots:
         free = sympy.Dummy("q", real=True)
         roots = sympy.solve(expr.subs(q, free), free)
-    return [r for r in roots if r.is_real is not False and not (q.is_positive and r.is_positive is False)
-            and not (q.is_negative and r.is_negative is False)]
+    return [
+        r
+        for r in roots
+        if r.is_real is not False
+        and not (q.is_positive and r.is_positive is False)
+        and not (q.is_negative and r.is_negative is False)
+    ]
 
 
 def _negative_on_domain(expr: sympy.Expr, model: Model) -> bool:

@@ -20,22 +20,37 @@ from physics.engine.results import KnownMistake, LimitCase
 
 Rederive = Callable[[Model, Quantity], sympy.Expr | None]
 
-SWAPPED_TRIG = ("Check which component of each force lies along the surface and which is perpendicular to "
-                "it: a sine and a cosine are swapped.")
-DROPPED_PROJECTION = ("A projection factor is missing: check each place where a force or an acceleration is "
-                      "resolved into components.")
+SWAPPED_TRIG = (
+    "Check which component of each force lies along the surface and which is perpendicular to "
+    "it: a sine and a cosine are swapped."
+)
+DROPPED_PROJECTION = (
+    "A projection factor is missing: check each place where a force or an acceleration is "
+    "resolved into components."
+)
 FRICTION_SIGN = "Kinetic friction opposes the sliding: check the direction of the friction force."
-FIXED_SUPPORT = ("This treats the {body} as fixed. It moves too, which changes the accelerations and the "
-                 "contact force.")
-FIXED_CONTACT = ("This uses the contact force that would act if the {body} were held fixed. The {body} "
-                 "recoils, which changes that force.")
-NO_INERTIA = ("A rolling or spinning body also has rotational kinetic energy, (1/2) I omega^2, and needs a "
-              "torque to spin up: include its moment of inertia.")
-INELASTIC_ENERGY = ("Kinetic energy is not conserved in a perfectly inelastic collision. Use the quantity that "
-                    "is conserved during the impact, then energy conservation afterwards.")
-FRACTION_KEPT = "That is the fraction of the kinetic energy that remains after the collision, not the fraction lost."
-ONE_MASS = ("Both {bodies} move: the relative motion is governed by the reduced mass of the pair, not by the "
-            "mass of one of them.")
+FIXED_SUPPORT = (
+    "This treats the {body} as fixed. It moves too, which changes the accelerations and the contact force."
+)
+FIXED_CONTACT = (
+    "This uses the contact force that would act if the {body} were held fixed. The {body} "
+    "recoils, which changes that force."
+)
+NO_INERTIA = (
+    "A rolling or spinning body also has rotational kinetic energy, (1/2) I omega^2, and needs a "
+    "torque to spin up: include its moment of inertia."
+)
+INELASTIC_ENERGY = (
+    "Kinetic energy is not conserved in a perfectly inelastic collision. Use the quantity that "
+    "is conserved during the impact, then energy conservation afterwards."
+)
+FRACTION_KEPT = (
+    "That is the fraction of the kinetic energy that remains after the collision, not the fraction lost."
+)
+ONE_MASS = (
+    "Both {bodies} move: the relative motion is governed by the reduced mass of the pair, not by the "
+    "mass of one of them."
+)
 TOTAL_MASS = "The relative motion is governed by the reduced mass of the pair, not by the total mass."
 
 
@@ -43,7 +58,9 @@ def supports(model: Model) -> list[str]:
     """Bodies another body rests on: in a two-body surface contact, the one placed by fewer coordinates."""
     mech = Mechanics(model)
     found: list[str] = []
-    coords = {b.name: set().union(*(e.free_symbols for _, e in b.position)) & set(mech.q) for b in model.bodies}
+    coords = {
+        b.name: set().union(*(e.free_symbols for _, e in b.position)) & set(mech.q) for b in model.bodies
+    }
     for constraint in model.constraints:
         if constraint.kind is not ConstraintKind.SURFACE:
             continue
@@ -57,8 +74,9 @@ def supports(model: Model) -> list[str]:
     return found
 
 
-def generate_mistakes(model: Model, quantity: Quantity, reference: sympy.Expr,
-                      rederive: Rederive) -> tuple[KnownMistake, ...]:
+def generate_mistakes(
+    model: Model, quantity: Quantity, reference: sympy.Expr, rederive: Rederive
+) -> tuple[KnownMistake, ...]:
     candidates: list[tuple[sympy.Expr | None, str]] = []
     trig = reference.atoms(sympy.sin, sympy.cos)
     if trig:
@@ -76,11 +94,16 @@ def generate_mistakes(model: Model, quantity: Quantity, reference: sympy.Expr,
         if isinstance(mass, sympy.Symbol):
             candidates.append((_limit(reference, mass, sympy.oo), FIXED_SUPPORT.format(body=body)))
             if quantity.kind is QuantityKind.ACCELERATION:
-                candidates.append((_support_with_fixed_contact(model, quantity, body, rederive),
-                                   FIXED_CONTACT.format(body=body)))
+                candidates.append(
+                    (
+                        _support_with_fixed_contact(model, quantity, body, rederive),
+                        FIXED_CONTACT.format(body=body),
+                    )
+                )
     if any(b.inertia != 0 for b in model.bodies):
-        flat = dataclasses.replace(model, bodies=tuple(dataclasses.replace(b, inertia=sympy.Integer(0))
-                                                       for b in model.bodies))
+        flat = dataclasses.replace(
+            model, bodies=tuple(dataclasses.replace(b, inertia=sympy.Integer(0)) for b in model.bodies)
+        )
         candidates.append((rederive(flat, quantity), NO_INERTIA))
     if model.collision is not None and quantity.kind is QuantityKind.PROJECTILE_SPEED:
         candidates.append((_energy_conserved_speed(model), INELASTIC_ENERGY))
@@ -91,8 +114,9 @@ def generate_mistakes(model: Model, quantity: Quantity, reference: sympy.Expr,
     return _distinct(model, reference, candidates)
 
 
-def _support_with_fixed_contact(model: Model, quantity: Quantity, body: str,
-                                rederive: Rederive) -> sympy.Expr | None:
+def _support_with_fixed_contact(
+    model: Model, quantity: Quantity, body: str, rederive: Rederive
+) -> sympy.Expr | None:
     """The support's acceleration from its own equation, with the contact force it would feel if it
     were held fixed (e.g. N = m g cos(theta) pushing a free wedge)."""
     mech = Mechanics(model)
@@ -117,8 +141,9 @@ def _support_with_fixed_contact(model: Model, quantity: Quantity, body: str,
     return total / dof.inertia
 
 
-def _mass_mistakes(model: Model, quantity: Quantity, reference: sympy.Expr,
-                   rederive: Rederive) -> list[tuple[sympy.Expr | None, str]]:
+def _mass_mistakes(
+    model: Model, quantity: Quantity, reference: sympy.Expr, rederive: Rederive
+) -> list[tuple[sympy.Expr | None, str]]:
     stiffness = rederive(model, Quantity(quantity.name, QuantityKind.STIFFNESS, quantity.target))
     if stiffness is None:
         return []
@@ -127,12 +152,15 @@ def _mass_mistakes(model: Model, quantity: Quantity, reference: sympy.Expr,
         if len(pair.bodies) != 2:
             continue
         masses = [model.body(b).mass for b in pair.bodies]
-        options = [(masses[0], ONE_MASS.format(bodies=" and ".join(pair.bodies))), (masses[0] + masses[1],
-                                                                                       TOTAL_MASS)]
+        options = [
+            (masses[0], ONE_MASS.format(bodies=" and ".join(pair.bodies))),
+            (masses[0] + masses[1], TOTAL_MASS),
+        ]
         for mass, feedback in options:
             omega = sympy.sqrt(stiffness / mass)
-            result.append((omega if quantity.kind is QuantityKind.ANGULAR_FREQUENCY else 2 * sympy.pi / omega,
-                           feedback))
+            result.append(
+                (omega if quantity.kind is QuantityKind.ANGULAR_FREQUENCY else 2 * sympy.pi / omega, feedback)
+            )
     return result
 
 
@@ -141,7 +169,7 @@ def _energy_conserved_speed(model: Model) -> sympy.Expr | None:
     assert hit is not None
     after = collision.merged(model)
     mech = Mechanics(after)
-    at, reaches = collision._points(model)
+    at, reaches = collision.event_points(model)
     rise = mech.potential.subs(reaches) - mech.potential.subs(at)
     return sympy.simplify(sympy.sqrt(2 * rise / hit.projectile_mass))
 
@@ -156,8 +184,9 @@ def _limit(expr: sympy.Expr, symbol: sympy.Symbol, value: sympy.Expr) -> sympy.E
     return sympy.simplify(result)
 
 
-def _distinct(model: Model, reference: sympy.Expr,
-              candidates: list[tuple[sympy.Expr | None, str]]) -> tuple[KnownMistake, ...]:
+def _distinct(
+    model: Model, reference: sympy.Expr, candidates: list[tuple[sympy.Expr | None, str]]
+) -> tuple[KnownMistake, ...]:
     """Drop candidates that vanish, equal the answer or repeat another, compared at a few domain points."""
     points = domain_points(model, 4, seed=11)
 
@@ -202,8 +231,10 @@ def generate_limits(model: Model, reference: sympy.Expr) -> tuple[LimitCase, ...
     if len(set(masses)) >= 2:
         for mass in dict.fromkeys(masses):
             cases.append((mass, sympy.Integer(0), f"{mass} much lighter than the other masses"))
-    placed = set().union(*(e.free_symbols for b in model.bodies for _, e in b.position),
-                         *(b.mass.free_symbols for b in model.bodies))
+    placed = set().union(
+        *(e.free_symbols for b in model.bodies for _, e in b.position),
+        *(b.mass.free_symbols for b in model.bodies),
+    )
     for rigid in model.bodies:
         for symbol in rigid.inertia.free_symbols - placed:
             cases.append((symbol, sympy.Integer(0), f"{symbol} → 0: no rotational inertia"))

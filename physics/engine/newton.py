@@ -26,10 +26,20 @@ class NewtonMethod(Method):
         mech = self.mech
         applied = self.applied_forces
         for d, force in zip(mech.dofs, applied, strict=True):
-            constraint_terms = sympy.Add(*(lam * g for lam, g in zip(
-                mech.multipliers, (sympy.diff(c.gap, d.symbol) for c in self.model.constraints), strict=True)))
-            self.step(f"Newton's second law, {d.name}",
-                      self.tex(sympy.Eq(d.inertia * d.acceleration, force + constraint_terms)))
+            constraint_terms = sympy.Add(
+                *(
+                    lam * g
+                    for lam, g in zip(
+                        mech.multipliers,
+                        (sympy.diff(c.gap, d.symbol) for c in self.model.constraints),
+                        strict=True,
+                    )
+                )
+            )
+            self.step(
+                f"Newton's second law, {d.name}",
+                self.tex(sympy.Eq(d.inertia * d.acceleration, force + constraint_terms)),
+            )
         for constraint in self.model.constraints:
             self.step(f"Constraint {constraint.name}", self.tex(sympy.Eq(constraint.gap, 0)))
 
@@ -38,8 +48,10 @@ class NewtonMethod(Method):
         """Gravity and potentials as -grad V in Cartesian coordinates, plus kinetic friction."""
         mech = self.mech
         friction = mech.friction_forces(mech.multipliers)
-        return [-sympy.diff(mech.cartesian_potential, d.symbol) + f for d, f in zip(mech.dofs, friction,
-                                                                                     strict=True)]
+        return [
+            -sympy.diff(mech.cartesian_potential, d.symbol) + f
+            for d, f in zip(mech.dofs, friction, strict=True)
+        ]
 
     @cached_property
     def solution(self) -> dict[sympy.Symbol, sympy.Expr]:
@@ -47,14 +59,23 @@ class NewtonMethod(Method):
         mech, model = self.mech, self.model
         equations: list[sympy.Expr] = []
         for d, force in zip(mech.dofs, self.applied_forces, strict=True):
-            constraint_terms = sympy.Add(*(lam * sympy.diff(c.gap, d.symbol)
-                                           for lam, c in zip(mech.multipliers, model.constraints, strict=True)))
+            constraint_terms = sympy.Add(
+                *(
+                    lam * sympy.diff(c.gap, d.symbol)
+                    for lam, c in zip(mech.multipliers, model.constraints, strict=True)
+                )
+            )
             equations.append(d.inertia * d.acceleration - force - constraint_terms)
         for c in model.constraints:
             gradient = [sympy.diff(c.gap, d.symbol) for d in mech.dofs]
             second = sympy.Add(*(g * d.acceleration for g, d in zip(gradient, mech.dofs, strict=True)))
-            second += sympy.Add(*(sympy.diff(c.gap, a.symbol, b.symbol) * a.velocity * b.velocity
-                                  for a in mech.dofs for b in mech.dofs))
+            second += sympy.Add(
+                *(
+                    sympy.diff(c.gap, a.symbol, b.symbol) * a.velocity * b.velocity
+                    for a in mech.dofs
+                    for b in mech.dofs
+                )
+            )
             self.step(f"Constraint {c.name} differentiated twice", self.tex(sympy.Eq(second, 0)))
             equations.append(second)
         place = mech.cartesian_state()
@@ -62,8 +83,10 @@ class NewtonMethod(Method):
         equations = [e.subs(place).subs(state) for e in equations]
         unknowns = [d.acceleration for d in mech.dofs] + list(mech.multipliers)
         solution = solve_linear(equations, unknowns, self.title)
-        self.step("Solved for the accelerations and constraint forces",
-                  r",\quad ".join(self.tex(sympy.Eq(k, v)) for k, v in solution.items()))
+        self.step(
+            "Solved for the accelerations and constraint forces",
+            r",\quad ".join(self.tex(sympy.Eq(k, v)) for k, v in solution.items()),
+        )
         return solution
 
     @cached_property
@@ -72,9 +95,14 @@ class NewtonMethod(Method):
         mech, model = self.mech, self.model
         state = dict(model.state)
         jac = sympy.Matrix([[sympy.diff(d.mapping, q) for q in mech.q] for d in mech.dofs]).subs(state)
-        rest = sympy.Matrix([
-            (time_derivative(time_derivative(d.mapping, model), model).subs(dict.fromkeys(mech.qdd, 0))
-             ).subs(state) for d in mech.dofs])
+        rest = sympy.Matrix(
+            [
+                (
+                    time_derivative(time_derivative(d.mapping, model), model).subs(dict.fromkeys(mech.qdd, 0))
+                ).subs(state)
+                for d in mech.dofs
+            ]
+        )
         measured = sympy.Matrix([self.solution[d.acceleration] for d in mech.dofs])
         normal = jac.T * jac
         if normal.det() == 0:
@@ -94,12 +122,18 @@ class NewtonMethod(Method):
         mech = self.mech
         q = self.model.coordinate(coordinate).symbol
         place = mech.cartesian_state()
-        force = sympy.Add(*((-sympy.diff(mech.cartesian_potential, d.symbol)).subs(place)
-                            * sympy.diff(d.mapping, q) for d in mech.dofs))
+        force = sympy.Add(
+            *(
+                (-sympy.diff(mech.cartesian_potential, d.symbol)).subs(place) * sympy.diff(d.mapping, q)
+                for d in mech.dofs
+            )
+        )
         force = sympy.simplify(force)
-        self.step(f"Virtual work of the forces along {coordinate}",
-                  rf"Q_{{{self.tex(q)}}} = \sum_i F_i \frac{{\partial x_i}}{{\partial {self.tex(q)}}} = "
-                  + self.tex(force))
+        self.step(
+            f"Virtual work of the forces along {coordinate}",
+            rf"Q_{{{self.tex(q)}}} = \sum_i F_i \frac{{\partial x_i}}{{\partial {self.tex(q)}}} = "
+            + self.tex(force),
+        )
         return force
 
     def frequency(self, coordinate: str, equilibrium: sympy.Expr) -> sympy.Expr:
@@ -117,9 +151,13 @@ class NewtonMethod(Method):
         nonzero = [v for v in values if v != 0]
         if len(nonzero) != 1:
             raise NotApplicable(f"expected one oscillating mode, found eigenvalues {values}")
-        self.step("Small oscillations of the Cartesian equations",
-                  r"M\ddot{x} = -Kx,\ K = " + self.tex(sympy.simplify(stiffness))
-                  + r",\ \omega^2 = " + self.tex(nonzero[0]))
+        self.step(
+            "Small oscillations of the Cartesian equations",
+            r"M\ddot{x} = -Kx,\ K = "
+            + self.tex(sympy.simplify(stiffness))
+            + r",\ \omega^2 = "
+            + self.tex(nonzero[0]),
+        )
         return sympy.simplify(sympy.sqrt(nonzero[0]))
 
     def collision(self, item: QuantityKind) -> sympy.Expr:

@@ -44,8 +44,7 @@ def domain_points(model: Model, count: int, seed: int = 20260101) -> list[dict[s
     raise DerivationError(f"could not find {count} points in the domain (conditions {model.positive})")
 
 
-def prove_equal(first: sympy.Expr, second: sympy.Expr, model: Model, what: str,
-                names: Sequence[str]) -> str:
+def prove_equal(first: sympy.Expr, second: sympy.Expr, model: Model, what: str, names: Sequence[str]) -> str:
     """How `first` == `second` was shown ("symbolic" or "sampled ..."); DerivationError if they differ."""
     difference = first - second
     if sympy.count_ops(difference) <= MAX_OPS_SYMBOLIC:
@@ -61,13 +60,16 @@ def prove_equal(first: sympy.Expr, second: sympy.Expr, model: Model, what: str,
         a = sympy.N(first, DIGITS, subs=exact)
         b = sympy.N(second, DIGITS, subs=exact)
         if not (a.is_real and b.is_real):
-            raise DerivationError(f"{what}: not real at {point}: {names[0]} gives {a}, {names[1]} gives {b}",
-                                  quantity=what)
+            raise DerivationError(
+                f"{what}: not real at {point}: {names[0]} gives {a}, {names[1]} gives {b}", quantity=what
+            )
         gap = abs(a - b)
         if gap > TOLERANCE * max(1, abs(a), abs(b)):
             raise DerivationError(
                 f"{what}: the methods disagree. {names[0]} gives {first}, {names[1]} gives {second}; "
-                f"at {_show(point)} they are {float(a):.10g} and {float(b):.10g}", quantity=what)
+                f"at {_show(point)} they are {float(a):.10g} and {float(b):.10g}",
+                quantity=what,
+            )
         worst = max(worst, float(gap / max(1, abs(a))))
     return f"sampled ({SAMPLES} points of the domain, {DIGITS} digits, worst relative gap {worst:.1e})"
 

@@ -15,7 +15,7 @@ from typing import Any
 
 import sympy
 
-from physics.engine.collision import SPEED, merged
+from physics.engine.collision import merged
 from physics.engine.lagrange import LagrangeMethod
 from physics.engine.mechanics import Mechanics
 from physics.engine.model import Model, Quantity, QuantityKind
@@ -76,7 +76,7 @@ class Dynamics:
 
     def unknowns(self, q: Vector, qd: Vector, params: Vector, extra: Vector | None = None) -> Vector:
         flat = self._matrix(*q, *qd, *params)
-        matrix = [flat[i * self.size:(i + 1) * self.size] for i in range(self.size)]
+        matrix = [flat[i * self.size : (i + 1) * self.size] for i in range(self.size)]
         rhs = self._rhs(*q, *qd, *params)
         if extra is not None:
             rhs = [r + (extra[i] if i < self.n else 0.0) for i, r in enumerate(rhs)]
@@ -94,7 +94,7 @@ class Dynamics:
 
     def mass(self, q: Vector, params: Vector) -> list[list[float]]:
         flat = self._mass(*q, *params)
-        return [flat[i * self.n:(i + 1) * self.n] for i in range(self.n)]
+        return [flat[i * self.n : (i + 1) * self.n] for i in range(self.n)]
 
 
 def rk4(f: Callable[[Vector], Vector], y: Vector, dt: float, steps: int) -> list[Vector]:
@@ -124,7 +124,9 @@ class Simulator:
     def dynamics(self) -> Dynamics:
         return Dynamics(self.model)
 
-    def check(self, quantity: Quantity, reference: sympy.Expr, points: Sequence[Point]) -> SimulationCheck | None:
+    def check(
+        self, quantity: Quantity, reference: sympy.Expr, points: Sequence[Point]
+    ) -> SimulationCheck | None:
         measure = self._measures().get(quantity.kind)
         if measure is None:
             return None
@@ -140,7 +142,9 @@ class Simulator:
                 raise DerivationError(
                     f"{quantity.name}: the simulation disagrees with the derivation ({compared}): measured "
                     f"{measured:.8g}, derived {reference} = {expected:.8g} (relative error {error:.2g}) at "
-                    + ", ".join(f"{s}={v:.4g}" for s, v in point.items()), quantity=quantity.name)
+                    + ", ".join(f"{s}={v:.4g}" for s, v in point.items()),
+                    quantity=quantity.name,
+                )
         return SimulationCheck(compared, worst, len(points))
 
     def _measures(self) -> dict[QuantityKind, Measure]:
@@ -161,8 +165,10 @@ class Simulator:
 
     def _start(self, point: Point) -> tuple[Vector, Vector]:
         state = dict(self.model.state)
-        q = [_evaluate(state.get(c.symbol, c.symbol if c.symbol in point else sympy.Integer(0)), point)
-             for c in self.model.coordinates]
+        q = [
+            _evaluate(state.get(c.symbol, c.symbol if c.symbol in point else sympy.Integer(0)), point)
+            for c in self.model.coordinates
+        ]
         qd = [_evaluate(state.get(c.velocity, sympy.Integer(0)), point) for c in self.model.coordinates]
         return q, qd
 
@@ -170,7 +176,7 @@ class Simulator:
         """A finite-difference step short enough that the system moves little (1e-4 of its scale)."""
         dyn = self.dynamics
         q, qd = start if start is not None else self._start(point)
-        qdd = dyn.unknowns(q, qd, dyn.values(point))[:dyn.n]
+        qdd = dyn.unknowns(q, qd, dyn.values(point))[: dyn.n]
         scale = max([abs(v) for v in q] + [1.0])
         fastest = max([abs(v) for v in qdd] + [1e-300])
         speed = max([abs(v) for v in qd] + [1e-300])
@@ -178,26 +184,31 @@ class Simulator:
         rate = 1e-300
         for i in range(dyn.n):
             delta = 1e-6 * max(abs(q[i]), 1.0)
-            moved = dyn.unknowns([v + (delta if j == i else 0.0) for j, v in enumerate(q)], qd,
-                                 dyn.values(point))[:dyn.n]
+            moved = dyn.unknowns(
+                [v + (delta if j == i else 0.0) for j, v in enumerate(q)], qd, dyn.values(point)
+            )[: dyn.n]
             rate = max(rate, *(abs(a - b) / delta for a, b in zip(moved, qdd, strict=True)))
         return min(1e-2, math.sqrt(1e-4 * scale / fastest), 1e-3 * scale / speed, 1e-2 / math.sqrt(rate))
 
-    def _trajectory_around(self, point: Point, h: float, steps: int = 10,
-                           start: tuple[Vector, Vector] | None = None) -> tuple[Vector, ...]:
+    def _trajectory_around(
+        self, point: Point, h: float, steps: int = 10, start: tuple[Vector, Vector] | None = None
+    ) -> tuple[Vector, ...]:
         dyn = self.dynamics
         q, qd = start if start is not None else self._start(point)
         f = dyn.derivative(dyn.values(point))
         forward = rk4(f, q + qd, h / steps, steps)[-1]
         backward = rk4(f, q + qd, -h / steps, steps)[-1]
-        return backward[:dyn.n], q, forward[:dyn.n]
+        return backward[: dyn.n], q, forward[: dyn.n]
 
     def _acceleration(self, quantity: Quantity, point: Point, expected: float) -> Measured:
         h = self._step_for(point)
         before, now, after = self._trajectory_around(point, h)
         i = [c.name for c in self.model.coordinates].index(quantity.target)
-        return ("second difference of the integrated trajectory",
-                (after[i] - 2 * now[i] + before[i]) / h**2, None)
+        return (
+            "second difference of the integrated trajectory",
+            (after[i] - 2 * now[i] + before[i]) / h**2,
+            None,
+        )
 
     def _force(self, quantity: Quantity, point: Point, expected: float) -> Measured:
         """Cartesian accelerations measured on the trajectory, then Newton's law along each normal."""
@@ -209,13 +220,24 @@ class Simulator:
         accel = [(a - 2 * b + c) / h**2 for a, b, c in zip(before, now, after, strict=True)]
         grads, base, per_lambda, masses = self._force_parts(trajectory[1], point)
         k = len(grads)
-        matrix = [[sum(g * (x + y) for g, x, y in zip(grads[r], grads[c], per_lambda[c], strict=True))
-                   for c in range(k)] for r in range(k)]
-        rhs = [sum(g * (m * a - f) for g, m, a, f in zip(grads[r], masses, accel, base, strict=True))
-               for r in range(k)]
+        matrix = [
+            [
+                sum(g * (x + y) for g, x, y in zip(grads[r], grads[c], per_lambda[c], strict=True))
+                for c in range(k)
+            ]
+            for r in range(k)
+        ]
+        rhs = [
+            sum(g * (m * a - f) for g, m, a, f in zip(grads[r], masses, accel, base, strict=True))
+            for r in range(k)
+        ]
         lam = solve_numeric(matrix, rhs)
         index = [c.name for c in self.model.constraints].index(quantity.target)
-        return "Newton's law applied to the accelerations measured on the integrated trajectory", lam[index], None
+        return (
+            "Newton's law applied to the accelerations measured on the integrated trajectory",
+            lam[index],
+            None,
+        )
 
     @cached_property
     def _force_functions(self) -> tuple[Callable[..., list[float]], ...]:
@@ -236,8 +258,8 @@ class Simulator:
         grads_f, base_f, units_f, masses_f = self._force_functions
         n = len(self.dynamics.mech.dofs)
         flat_g, flat_u = grads_f(*values), units_f(*values)
-        grads = [flat_g[i * n:(i + 1) * n] for i in range(len(flat_g) // n)]
-        units = [flat_u[i * n:(i + 1) * n] for i in range(len(flat_u) // n)]
+        grads = [flat_g[i * n : (i + 1) * n] for i in range(len(flat_g) // n)]
+        units = [flat_u[i * n : (i + 1) * n] for i in range(len(flat_u) // n)]
         return grads, base_f(*values), units, masses_f(*values)
 
     def _solve(self, quantity: Quantity, point: Point, expected: float) -> Measured:
@@ -248,8 +270,11 @@ class Simulator:
             raise DerivationError(f"{quantity.name}: no simulation for this kind of condition")
         at_value = self._acceleration(inner, {**point, parameter: expected}, 0.0)[1]
         at_half = self._acceleration(inner, {**point, parameter: expected / 2}, 0.0)[1]
-        return ("acceleration of the integrated motion with the derived value (relative to half the value)",
-                at_value, abs(at_value) / max(abs(at_half), 1e-300))
+        return (
+            "acceleration of the integrated motion with the derived value (relative to half the value)",
+            at_value,
+            abs(at_value) / max(abs(at_half), 1e-300),
+        )
 
     # --- potentials and oscillations ---------------------------------------------------------
 
@@ -266,18 +291,26 @@ class Simulator:
         def shifted(delta: float) -> Vector:
             return [b + (delta if k == i else 0.0) for k, b in enumerate(base)]
 
-        stiffness = (dyn.potential(shifted(h), params) - 2 * dyn.potential(base, params)
-                     + dyn.potential(shifted(-h), params)) / h**2
+        stiffness = (
+            dyn.potential(shifted(h), params)
+            - 2 * dyn.potential(base, params)
+            + dyn.potential(shifted(-h), params)
+        ) / h**2
         inertia = dyn.mass(base, params)[i][i]
         if stiffness <= 0:
             raise DerivationError(f"{coordinate}: the potential is not a minimum at the equilibrium {q0}")
         estimate = 2 * math.pi * math.sqrt(inertia / stiffness)
         per_period = 400
         start = shifted(1e-4 * (abs(q0) or 1.0))
-        states = rk4(dyn.derivative(params), start + [0.0] * dyn.n, estimate / per_period, int(3.3 * per_period))
+        states = rk4(
+            dyn.derivative(params), start + [0.0] * dyn.n, estimate / per_period, int(3.3 * per_period)
+        )
         values = [s[i] - q0 for s in states]
-        crossings = [k + values[k] / (values[k] - values[k + 1]) for k in range(len(values) - 1)
-                     if values[k] < 0 <= values[k + 1]]
+        crossings = [
+            k + values[k] / (values[k] - values[k + 1])
+            for k in range(len(values) - 1)
+            if values[k] < 0 <= values[k + 1]
+        ]
         if len(crossings) < 2:
             raise DerivationError(f"{coordinate}: no oscillation seen in the simulation")
         period = (crossings[-1] - crossings[0]) / (len(crossings) - 1) * estimate / per_period
@@ -310,7 +343,9 @@ class Simulator:
         params = dyn.values(point)
         start = (q, [0.0] * dyn.n)
         h = self._step_for(point, start)
-        before, now, after = (dyn.positions(x, params) for x in self._trajectory_around(point, h, start=start))
+        before, now, after = (
+            dyn.positions(x, params) for x in self._trajectory_around(point, h, start=start)
+        )
         accel = [(a - 2 * b + c) / h**2 for a, b, c in zip(before, now, after, strict=True)]
         masses = self._force_parts(q, point)[3]
         step = 1e-6 * max(abs(q[i]), 1.0)
@@ -323,15 +358,23 @@ class Simulator:
         i = [c.name for c in self.model.coordinates].index(quantity.target)
         q0 = _evaluate(self.equilibrium_of(quantity.target), point)
         h = 1e-4 * (abs(q0) or 1.0)
-        forces = [self._measured_generalized_force(i, [q0 + d if j == i else 0.0 for j in range(dyn.n)], point)
-                  for d in (-h, h)]
-        return ("slope of the generalized force measured on trajectories released at rest beside the "
-                "equilibrium", -(forces[1] - forces[0]) / (2 * h), None)
+        forces = [
+            self._measured_generalized_force(i, [q0 + d if j == i else 0.0 for j in range(dyn.n)], point)
+            for d in (-h, h)
+        ]
+        return (
+            "slope of the generalized force measured on trajectories released at rest beside the equilibrium",
+            -(forces[1] - forces[0]) / (2 * h),
+            None,
+        )
 
     def _potential_force(self, quantity: Quantity, point: Point, expected: float) -> Measured:
         i, q, _ = self._coordinate_point(quantity.target, point)
-        return ("virtual work of the accelerations measured on a trajectory released at rest",
-                self._measured_generalized_force(i, q, point), None)
+        return (
+            "virtual work of the accelerations measured on a trajectory released at rest",
+            self._measured_generalized_force(i, q, point),
+            None,
+        )
 
     @cached_property
     def _after(self) -> Dynamics:
@@ -345,7 +388,9 @@ class Simulator:
         mech = self.dynamics.mech
         direction = dict(hit.direction)
         norm = sympy.sqrt(sympy.Add(*(v**2 for v in direction.values())))
-        along = sympy.Add(*(direction.get(axis, 0) / norm * expr for axis, expr in self.model.body(hit.target).position))
+        along = sympy.Add(
+            *(direction.get(axis, 0) / norm * expr for axis, expr in self.model.body(hit.target).position)
+        )
         return _compile([*mech.q, *self.dynamics.params], [sympy.diff(along, q) for q in mech.q])
 
     def _collision(self, quantity: Quantity, point: Point, expected: float) -> Measured:
@@ -365,21 +410,23 @@ class Simulator:
         drag = mass / tau
 
         def f(y: Vector) -> Vector:
-            q, qd, u = y[:n], y[n:2 * n], y[2 * n]
+            q, qd, u = y[:n], y[n : 2 * n], y[2 * n]
             along = self._along(*q, *params)
             force = drag * (u - sum(a * b for a, b in zip(along, qd, strict=True)))
             qdd = before.unknowns(q, qd, params, extra=[force * a for a in along])[:n]
             return [*qd, *qdd, -force / mass]
 
         end = rk4(f, [*q0, *[0.0] * n, speed], tau / 10, 300)[-1]
-        q1, qd1, u1 = end[:n], end[n:2 * n], end[2 * n]
+        q1, qd1, u1 = end[:n], end[n : 2 * n], end[2 * n]
         matrix = before.mass(q1, params)
-        kinetic = 0.5 * mass * u1**2 + 0.5 * sum(qd1[i] * matrix[i][j] * qd1[j] for i in range(n) for j in range(n))
+        kinetic = 0.5 * mass * u1**2 + 0.5 * sum(
+            qd1[i] * matrix[i][j] * qd1[j] for i in range(n) for j in range(n)
+        )
         initial = 0.5 * mass * speed**2
         lost = (initial - kinetic - (before.potential(q1, params) - before.potential(q0, params))) / initial
         if quantity.kind is QuantityKind.ENERGY_FRACTION_LOST:
             return "kinetic energy lost in an integrated stiff inelastic coupling", lost, None
-        (name, target_text), = hit.reaches
+        ((name, target_text),) = hit.reaches
         i = names.index(name)
         target = _evaluate(target_text, point)
         step = after.derivative(after.values(point))
@@ -392,8 +439,11 @@ class Simulator:
                 break
         else:
             raise DerivationError(f"{quantity.name}: the simulated motion never turned back")
-        return ("turning point reached after an integrated inelastic collision at the derived speed", reached,
-                abs(reached - target) / max(abs(target), 1e-12))
+        return (
+            "turning point reached after an integrated inelastic collision at the derived speed",
+            reached,
+            abs(reached - target) / max(abs(target), 1e-12),
+        )
 
 
 def _evaluate(expr: sympy.Expr, point: Point) -> float:
@@ -401,6 +451,3 @@ def _evaluate(expr: sympy.Expr, point: Point) -> float:
     if not value.is_real:
         raise DerivationError(f"{expr} is not real at {point}")
     return float(value)
-
-
-__all__ = ["SPEED", "Dynamics", "Simulator", "merged", "rk4"]

@@ -117,7 +117,9 @@ class Builder:
             p, q = int(exponent.p), int(exponent.q)
             if base.is_Rational:
                 if base == 10 and q == 1 and abs(p) > limits.max_sci_exponent:
-                    raise self._too_large(f"A power of ten is too large (at most 10^{limits.max_sci_exponent}).")
+                    raise self._too_large(
+                        f"A power of ten is too large (at most 10^{limits.max_sci_exponent})."
+                    )
                 size = max(abs(int(base.p)), int(base.q))
                 if base != 0 and size > 1:
                     if q > limits.max_exponent:

@@ -181,9 +181,7 @@ class Parser:
             run = [i.node for i in items[k + 1 : run_end]]
             left = render_text(Product(numerator, (("/", item.node),)), STUDENT_STYLE)
             after = render_text(Product(run[0], tuple(("*", n) for n in run[1:])), STUDENT_STYLE)
-            denominator = render_text(
-                Product(item.node, tuple(("*", n) for n in run)), STUDENT_STYLE
-            )
+            denominator = render_text(Product(item.node, tuple(("*", n) for n in run)), STUDENT_STYLE)
             readings = (f"({left})·{after}", f"{render_text(numerator, STUDENT_STYLE)}/({denominator})")
             raise AmbiguousInput(
                 f"Did you mean {readings[0]} or {readings[1]}? Add parentheses.", item.token.pos, readings
@@ -344,9 +342,7 @@ class Parser:
             raise ParseError("The answer ends too early.", tok.pos)
         if tok.kind is Kind.OP:
             if prev is not None and prev.kind is Kind.OP:
-                raise ParseError(
-                    f"Nothing between '{self._typed(prev)}' and '{self._typed(tok)}'.", tok.pos
-                )
+                raise ParseError(f"Nothing between '{self._typed(prev)}' and '{self._typed(tok)}'.", tok.pos)
             raise ParseError(f"Nothing before '{self._typed(tok)}'.", tok.pos)
         if tok.kind is Kind.RPAREN:
             if prev is not None and prev.kind is Kind.OP:

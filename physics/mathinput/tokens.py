@@ -154,9 +154,7 @@ def _read_number(chars: list[str], i: int, space: bool, limits: InputLimits) -> 
         if j > exp_start:  # otherwise the e is a name (2e is 2 times e)
             exp_digits = "".join(chars[exp_start:j])
             if len(exp_digits) > _MAX_SCI_EXPONENT_DIGITS or int(exp_digits) > limits.max_sci_exponent:
-                raise TooLarge(
-                    f"A power of ten is too large (at most 10^{limits.max_sci_exponent}).", start
-                )
+                raise TooLarge(f"A power of ten is too large (at most 10^{limits.max_sci_exponent}).", start)
             shift = int(exp_digits) * (-1 if sign == "-" else 1)
             literal += "e" + ("-" if sign == "-" else "") + exp_digits.lstrip("0").rjust(1, "0")
             i = j

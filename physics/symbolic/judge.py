@@ -12,7 +12,7 @@ Deciding equivalence (the rule):
    and equal (complex intermediates, e.g. (e^{iθ} + e^{-iθ})) counts as agreement. Only where even that
    gives no number does a bounded symbolic proof (physics.symbolic.proof) decide: proved or wrong.
 
-Why a wrong answer is wrong, first match wins: wrong_dimension, known_mistake, sign_error,
+Why a wrong answer is wrong, first match wins: known_mistake, wrong_dimension, sign_error,
 constant_factor, wrong_value (with hints on limiting cases). Feedback never shows the reference, and
 a constant factor is not named: with it the answer would give the reference away.
 """
@@ -54,7 +54,11 @@ _NUDGE_TOLERANCE_BITS = 40
 
 def _normalize_answer(answer: sympy.Basic, reference: PreparedReference) -> sympy.Expr:
     # Not `Boolean`: sympy's Symbol is a Boolean too, and a bare `m` is a fine answer.
-    relation = (sympy.core.relational.Relational, sympy.logic.boolalg.BooleanFunction, sympy.logic.boolalg.BooleanAtom)
+    relation = (
+        sympy.core.relational.Relational,
+        sympy.logic.boolalg.BooleanFunction,
+        sympy.logic.boolalg.BooleanAtom,
+    )
     if not isinstance(answer, sympy.Expr) or isinstance(answer, relation):
         raise ParseError("the answer must be an expression, not an equation or a relation")
     try:
@@ -154,12 +158,14 @@ def _limit_hints(answer: sympy.Expr, reference: PreparedReference) -> list[str]:
 
 def diagnose(answer: sympy.Expr, values: Column, reference: PreparedReference, undefined: bool) -> Judgement:
     """Why an answer that is not equivalent is wrong (order in the module docstring)."""
-    dimension = _dimension_problem(answer, reference)
-    if dimension is not None:
-        return Judgement(False, Reason.WRONG_DIMENSION, dimension)
+    # A known mistake first: its author's feedback is more specific than any general reason, even
+    # when the mistake has another dimension (a frequency given for a period).
     for mistake in reference.mistakes:
         if agreement(values, mistake.values, reference.scale).agrees:
             return Judgement(False, Reason.KNOWN_MISTAKE, mistake.feedback)
+    dimension = _dimension_problem(answer, reference)
+    if dimension is not None:
+        return Judgement(False, Reason.WRONG_DIMENSION, dimension)
     if agreement(values, negated(reference.values), reference.scale).agrees:
         return Judgement(False, Reason.SIGN_ERROR, SIGN_FEEDBACK)
     # Between two plain numbers every ratio is constant: the reason would say nothing.

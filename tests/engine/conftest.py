@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from functools import cache
 from pathlib import Path
+from typing import Any
 
 import sympy
 import yaml
@@ -23,8 +24,9 @@ SYMBOLS: dict[str, tuple[str, ...]] = {
     "mass-spring": ("m", "k"),
     "atwood": ("m1", "m2", "g"),
 }
-SLOW_PROBLEMS = frozenset({"moving-wedge", "lennard-jones", "ballistic-pendulum", "skier-friction",
-                           "rolling-incline"})
+SLOW_PROBLEMS = frozenset(
+    {"moving-wedge", "lennard-jones", "ballistic-pendulum", "skier-friction", "rolling-incline"}
+)
 
 
 @cache
@@ -32,7 +34,7 @@ def symbols(problem: str) -> dict[str, sympy.Symbol]:
     return {name: sympy.Symbol(name, positive=True) for name in SYMBOLS[problem]}
 
 
-def model_data(problem: str) -> dict[str, object]:
+def model_data(problem: str) -> dict[str, Any]:
     data = yaml.safe_load((BANK / problem / "model.yaml").read_text())
     assert isinstance(data, dict)
     return data

@@ -7,7 +7,7 @@ import pytest
 import sympy
 from sympy import cos, pi, sin, sqrt, tan
 
-from tests.engine.conftest import SLOW_PROBLEMS, SYMBOLS, bank_derivation, s
+from tests.engine.conftest import SLOW_PROBLEMS, SYMBOLS, bank_derivation, s, symbols
 
 
 def _known() -> list[tuple[str, str, sympy.Expr, frozenset[str]]]:
@@ -17,58 +17,90 @@ def _known() -> list[tuple[str, str, sympy.Expr, frozenset[str]]]:
     two = frozenset({"lagrange", "newton"})
     rows = [
         ("moving-wedge", "wedge_acceleration", -m * g * sin(th) * cos(th) / (M + m * sin(th) ** 2), three),
-        ("moving-wedge", "block_relative_acceleration", (M + m) * g * sin(th) / (M + m * sin(th) ** 2), three),
+        (
+            "moving-wedge",
+            "block_relative_acceleration",
+            (M + m) * g * sin(th) / (M + m * sin(th) ** 2),
+            three,
+        ),
         ("moving-wedge", "normal_force", M * m * g * cos(th) / (M + m * sin(th) ** 2), two),
     ]
     m, r, k, g = (s("yo-yo", n) for n in ("m", "r", "k", "g"))
-    rows += [("yo-yo", "acceleration", g * r**2 / (r**2 + k**2), three),
-             ("yo-yo", "tension", m * g * k**2 / (r**2 + k**2), two)]
+    rows += [
+        ("yo-yo", "acceleration", g * r**2 / (r**2 + k**2), three),
+        ("yo-yo", "tension", m * g * k**2 / (r**2 + k**2), two),
+    ]
     u0, r0, r, m = (s("lennard-jones", n) for n in ("U0", "r0", "r", "m"))
     u = u0 * ((r0 / r) ** 12 - 2 * (r0 / r) ** 6)
-    rows += [("lennard-jones", "equilibrium_separation", r0, three),
-             ("lennard-jones", "force", -sympy.diff(u, r), three),
-             ("lennard-jones", "spring_constant", 72 * u0 / r0**2, three),
-             ("lennard-jones", "oscillation_frequency", 12 * sqrt(u0 / m) / r0, three)]
+    rows += [
+        ("lennard-jones", "equilibrium_separation", r0, three),
+        ("lennard-jones", "force", -sympy.diff(u, r), three),
+        ("lennard-jones", "spring_constant", 72 * u0 / r0**2, three),
+        ("lennard-jones", "oscillation_frequency", 12 * sqrt(u0 / m) / r0, three),
+    ]
     m, big, length, th, g = (s("ballistic-pendulum", n) for n in ("m", "M", "L", "theta", "g"))
     collision = frozenset({"newton", "conservation"})
-    rows += [("ballistic-pendulum", "bullet_speed", (m + big) / m * sqrt(2 * g * length * (1 - cos(th))), collision),
-             ("ballistic-pendulum", "energy_fraction_lost", big / (m + big), collision)]
+    rows += [
+        (
+            "ballistic-pendulum",
+            "bullet_speed",
+            (m + big) / m * sqrt(2 * g * length * (1 - cos(th))),
+            collision,
+        ),
+        ("ballistic-pendulum", "energy_fraction_lost", big / (m + big), collision),
+    ]
     al, mu, g = (s("skier-friction", n) for n in ("alpha", "mu", "g"))
-    rows += [("skier-friction", "friction_coefficient", tan(al), two),
-             ("skier-friction", "acceleration", g * (sin(al) - mu * cos(al)), two)]
+    rows += [
+        ("skier-friction", "friction_coefficient", tan(al), two),
+        ("skier-friction", "acceleration", g * (sin(al) - mu * cos(al)), two),
+    ]
     m1, m2, th, g = (s("incline-pulley", n) for n in ("m1", "m2", "theta", "g"))
-    rows += [("incline-pulley", "acceleration", (m2 - m1 * sin(th)) * g / (m1 + m2), three),
-             ("incline-pulley", "tension", m1 * m2 * g * (1 + sin(th)) / (m1 + m2), two)]
+    rows += [
+        ("incline-pulley", "acceleration", (m2 - m1 * sin(th)) * g / (m1 + m2), three),
+        ("incline-pulley", "tension", m1 * m2 * g * (1 + sin(th)) / (m1 + m2), two),
+    ]
     m, _, th, g = (s("rolling-incline", n) for n in ("m", "R", "theta", "g"))
-    rows += [("rolling-incline", "acceleration_cylinder", sympy.Rational(2, 3) * g * sin(th), three),
-             ("rolling-incline", "acceleration_hoop", g * sin(th) / 2, three),
-             ("rolling-incline", "acceleration_sphere", sympy.Rational(5, 7) * g * sin(th), three),
-             ("rolling-incline", "acceleration_sliding", g * sin(th), three),
-             ("rolling-incline", "friction_cylinder", m * g * sin(th) / 3, two)]
+    rows += [
+        ("rolling-incline", "acceleration_cylinder", sympy.Rational(2, 3) * g * sin(th), three),
+        ("rolling-incline", "acceleration_hoop", g * sin(th) / 2, three),
+        ("rolling-incline", "acceleration_sphere", sympy.Rational(5, 7) * g * sin(th), three),
+        ("rolling-incline", "acceleration_sliding", g * sin(th), three),
+        ("rolling-incline", "friction_cylinder", m * g * sin(th) / 3, two),
+    ]
     m, k = (s("mass-spring", n) for n in ("m", "k"))
-    rows += [("mass-spring", "angular_frequency", sqrt(k / m), three),
-             ("mass-spring", "period", 2 * pi * sqrt(m / k), three)]
+    rows += [
+        ("mass-spring", "angular_frequency", sqrt(k / m), three),
+        ("mass-spring", "period", 2 * pi * sqrt(m / k), three),
+    ]
     m1, m2, g = (s("atwood", n) for n in ("m1", "m2", "g"))
-    rows += [("atwood", "acceleration", (m2 - m1) * g / (m1 + m2), three),
-             ("atwood", "tension", 2 * m1 * m2 * g / (m1 + m2), two)]
+    rows += [
+        ("atwood", "acceleration", (m2 - m1) * g / (m1 + m2), three),
+        ("atwood", "tension", 2 * m1 * m2 * g / (m1 + m2), two),
+    ]
     return rows
 
 
 KNOWN = _known()
-CASES = [pytest.param(p, q, e, methods, id=f"{p}:{q}",
-                      marks=[pytest.mark.slow] if p in SLOW_PROBLEMS else []) for p, q, e, methods in KNOWN]
+CASES = [
+    pytest.param(p, q, e, methods, id=f"{p}:{q}", marks=[pytest.mark.slow] if p in SLOW_PROBLEMS else [])
+    for p, q, e, methods in KNOWN
+]
 
 
 @pytest.mark.parametrize(("problem", "quantity", "expected", "methods"), CASES)
-def test_derived_quantity_equals_the_known_result(problem: str, quantity: str, expected: sympy.Expr,
-                                                  methods: frozenset[str]) -> None:
+def test_derived_quantity_equals_the_known_result(
+    problem: str, quantity: str, expected: sympy.Expr, methods: frozenset[str]
+) -> None:
     derivation = bank_derivation(problem)
     assert sympy.simplify(derivation.quantities[quantity] - expected) == 0
+    table = set(symbols(problem).values())
+    assert derivation.quantities[quantity].free_symbols <= table  # the table's own Symbol objects
 
 
 @pytest.mark.parametrize(("problem", "quantity", "expected", "methods"), CASES)
-def test_each_quantity_is_agreed_by_the_expected_methods(problem: str, quantity: str, expected: sympy.Expr,
-                                                         methods: frozenset[str]) -> None:
+def test_each_quantity_is_agreed_by_the_expected_methods(
+    problem: str, quantity: str, expected: sympy.Expr, methods: frozenset[str]
+) -> None:
     derivation = bank_derivation(problem)
     assert set(derivation.agreement[quantity]) == methods
     assert len(derivation.agreement[quantity]) >= 2
@@ -78,8 +110,9 @@ def test_each_quantity_is_agreed_by_the_expected_methods(problem: str, quantity:
 
 
 @pytest.mark.parametrize(("problem", "quantity", "expected", "methods"), CASES)
-def test_simulation_agrees_with_each_quantity(problem: str, quantity: str, expected: sympy.Expr,
-                                              methods: frozenset[str]) -> None:
+def test_simulation_agrees_with_each_quantity(
+    problem: str, quantity: str, expected: sympy.Expr, methods: frozenset[str]
+) -> None:
     check = bank_derivation(problem).simulation[quantity]
     assert check.points >= 3
     assert 0 <= check.max_relative_error < 1e-3

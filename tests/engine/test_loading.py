@@ -31,26 +31,50 @@ def _with(change: Any) -> dict[str, Any]:
 BROKEN = [
     pytest.param(lambda d: d.update(bogus=1), ("bogus",), id="unknown-section"),
     pytest.param(lambda d: d["bodies"]["block"].pop("mass"), ("bodies", "block", "mass"), id="missing-mass"),
-    pytest.param(lambda d: d["bodies"]["block"]["position"].update(x="X + s*cos(theta"),
-                 ("bodies", "block", "position", "x"), id="unbalanced-parenthesis"),
-    pytest.param(lambda d: d["bodies"]["block"]["position"].update(z="0"),
-                 ("bodies", "block", "position", "z"), id="unknown-axis"),
-    pytest.param(lambda d: d["constraints"]["incline"].update(gap="x_crate - x_wedge"),
-                 ("constraints", "incline", "gap"), id="gap-names-unknown-body"),
-    pytest.param(lambda d: d["constraints"]["floor"].update(kind="glue"), ("constraints", "floor", "kind"),
-                 id="unknown-constraint-kind"),
-    pytest.param(lambda d: d["quantities"].update(extra={"acceleration": "Y"}), ("quantities", "extra",
-                                                                                  "acceleration"),
-                 id="quantity-of-unknown-coordinate"),
-    pytest.param(lambda d: d["quantities"].update(extra={"force": "incline", "acceleration": "X"}),
-                 ("quantities", "extra"), id="quantity-of-two-kinds"),
+    pytest.param(
+        lambda d: d["bodies"]["block"]["position"].update(x="X + s*cos(theta"),
+        ("bodies", "block", "position", "x"),
+        id="unbalanced-parenthesis",
+    ),
+    pytest.param(
+        lambda d: d["bodies"]["block"]["position"].update(z="0"),
+        ("bodies", "block", "position", "z"),
+        id="unknown-axis",
+    ),
+    pytest.param(
+        lambda d: d["constraints"]["incline"].update(gap="x_crate - x_wedge"),
+        ("constraints", "incline", "gap"),
+        id="gap-names-unknown-body",
+    ),
+    pytest.param(
+        lambda d: d["constraints"]["floor"].update(kind="glue"),
+        ("constraints", "floor", "kind"),
+        id="unknown-constraint-kind",
+    ),
+    pytest.param(
+        lambda d: d["quantities"].update(extra={"acceleration": "Y"}),
+        ("quantities", "extra", "acceleration"),
+        id="quantity-of-unknown-coordinate",
+    ),
+    pytest.param(
+        lambda d: d["quantities"].update(extra={"force": "incline", "acceleration": "X"}),
+        ("quantities", "extra"),
+        id="quantity-of-two-kinds",
+    ),
     pytest.param(lambda d: d.update(gravity="__import__('os')"), ("gravity",), id="code-in-an-expression"),
     pytest.param(lambda d: d.update(coordinates=["X", "X"]), ("coordinates", 1), id="duplicate-coordinate"),
-    pytest.param(lambda d: d["domain"]["ranges"].update(beta=["0", "1"]), ("domain", "ranges", "beta"),
-                 id="range-of-unknown-symbol"),
-    pytest.param(lambda d: d.update(friction=[{"constraint": "incline", "body": "block", "coefficient": "nu",
-                                                "sliding": "s"}]),
-                 ("friction", 0, "coefficient"), id="friction-with-unknown-symbol"),
+    pytest.param(
+        lambda d: d["domain"]["ranges"].update(beta=["0", "1"]),
+        ("domain", "ranges", "beta"),
+        id="range-of-unknown-symbol",
+    ),
+    pytest.param(
+        lambda d: d.update(
+            friction=[{"constraint": "incline", "body": "block", "coefficient": "nu", "sliding": "s"}]
+        ),
+        ("friction", 0, "coefficient"),
+        id="friction-with-unknown-symbol",
+    ),
 ]
 
 
@@ -102,4 +126,18 @@ def test_loaded_models_are_hashable_and_equal_when_loaded_twice() -> None:
 
 
 def test_attribute_access_in_an_expression_is_refused() -> None:
-    assert ("bodies", "block", "mass") in _errors(_with(lambda d: d["bodies"]["block"].update(mass="m.__class__")))
+    assert ("bodies", "block", "mass") in _errors(
+        _with(lambda d: d["bodies"]["block"].update(mass="m.__class__"))
+    )
+
+
+def test_an_oversized_model_is_refused_before_anything_is_read() -> None:
+    data = _with(lambda d: d.update(coordinates=[f"q{i}" for i in range(40)]))
+    assert ("coordinates",) in _errors(data)
+
+
+def test_a_collision_quantity_names_the_projectile() -> None:
+    data = copy.deepcopy(model_data("ballistic-pendulum"))
+    data["quantities"]["bullet_speed"] = {"projectile_speed": "arrow"}
+    found = _errors(data, "ballistic-pendulum")
+    assert ("quantities", "bullet_speed", "projectile_speed") in found

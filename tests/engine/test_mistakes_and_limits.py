@@ -21,10 +21,19 @@ def _mistakes() -> list[tuple[str, str, sympy.Expr, str]]:
         ("moving-wedge", "block_relative_acceleration", g * sin(th), "fixed"),
         ("moving-wedge", "normal_force", m * g * cos(th), "fixed"),
         ("moving-wedge", "wedge_acceleration", -m * g * sin(th) * cos(th) / big, "fixed"),
-        ("moving-wedge", "normal_force", big * m * g * sin(th) / (big + m * cos(th) ** 2), "sine and a cosine"),
+        (
+            "moving-wedge",
+            "normal_force",
+            big * m * g * sin(th) / (big + m * cos(th) ** 2),
+            "sine and a cosine",
+        ),
         ("lennard-jones", "oscillation_frequency", sqrt(72 * u0 / r0**2 / mass), "reduced mass"),
-        ("ballistic-pendulum", "bullet_speed", sqrt(2 * bg * length * (1 - cos(bth)) * (bm + bbig) / bm),
-         "not conserved"),
+        (
+            "ballistic-pendulum",
+            "bullet_speed",
+            sqrt(2 * bg * length * (1 - cos(bth)) * (bm + bbig) / bm),
+            "not conserved",
+        ),
         ("ballistic-pendulum", "energy_fraction_lost", bm / (bm + bbig), "remains"),
         ("skier-friction", "acceleration", sg * (sin(al) + mu * cos(al)), "opposes"),
         ("rolling-incline", "acceleration_cylinder", rg * sin(rth), "moment of inertia"),
@@ -32,11 +41,20 @@ def _mistakes() -> list[tuple[str, str, sympy.Expr, str]]:
     ]
 
 
-@pytest.mark.parametrize(("problem", "quantity", "expr", "hint"), [
-    pytest.param(*row, id=f"{row[0]}:{row[1]}:{row[3]}", marks=[pytest.mark.slow] if row[0] in SLOW_PROBLEMS else [])
-    for row in _mistakes()])
-def test_the_slip_is_generated_with_targeted_feedback(problem: str, quantity: str, expr: sympy.Expr,
-                                                      hint: str) -> None:
+@pytest.mark.parametrize(
+    ("problem", "quantity", "expr", "hint"),
+    [
+        pytest.param(
+            *row,
+            id=f"{row[0]}:{row[1]}:{row[3]}",
+            marks=[pytest.mark.slow] if row[0] in SLOW_PROBLEMS else [],
+        )
+        for row in _mistakes()
+    ],
+)
+def test_the_slip_is_generated_with_targeted_feedback(
+    problem: str, quantity: str, expr: sympy.Expr, hint: str
+) -> None:
     derivation = bank_derivation(problem)
     matches = [k for k in derivation.mistakes[quantity] if sympy.simplify(k.expr - expr) == 0]
     assert matches, [k.expr for k in derivation.mistakes[quantity]]
@@ -53,20 +71,40 @@ def test_no_mistake_equals_the_answer() -> None:
                 assert sympy.simplify(mistake.expr - derivation.quantities[name]) != 0, (problem, name)
 
 
-@pytest.mark.parametrize(("problem", "quantity", "symbol", "value", "word"), [
-    pytest.param("moving-wedge", "block_relative_acceleration", "M", sympy.oo, "fixed", marks=pytest.mark.slow,
-                 id="heavy-wedge"),
-    pytest.param("moving-wedge", "wedge_acceleration", "theta", 0, "theta", marks=pytest.mark.slow,
-                 id="flat-wedge"),
-    pytest.param("moving-wedge", "wedge_acceleration", "m", 0, "lighter", marks=pytest.mark.slow,
-                 id="light-block"),
-    pytest.param("yo-yo", "acceleration", "k", 0, "rotational inertia", id="yo-yo-without-inertia"),
-    pytest.param("skier-friction", "acceleration", "mu", 0, "friction", marks=pytest.mark.slow,
-                 id="frictionless-slope"),
-    pytest.param("atwood", "acceleration", "m1", 0, "lighter", id="light-counterweight"),
-])
-def test_physical_limit_is_listed(problem: str, quantity: str, symbol: str, value: sympy.Expr,
-                                  word: str) -> None:
+@pytest.mark.parametrize(
+    ("problem", "quantity", "symbol", "value", "word"),
+    [
+        pytest.param(
+            "moving-wedge",
+            "block_relative_acceleration",
+            "M",
+            sympy.oo,
+            "fixed",
+            marks=pytest.mark.slow,
+            id="heavy-wedge",
+        ),
+        pytest.param(
+            "moving-wedge", "wedge_acceleration", "theta", 0, "theta", marks=pytest.mark.slow, id="flat-wedge"
+        ),
+        pytest.param(
+            "moving-wedge", "wedge_acceleration", "m", 0, "lighter", marks=pytest.mark.slow, id="light-block"
+        ),
+        pytest.param("yo-yo", "acceleration", "k", 0, "rotational inertia", id="yo-yo-without-inertia"),
+        pytest.param(
+            "skier-friction",
+            "acceleration",
+            "mu",
+            0,
+            "friction",
+            marks=pytest.mark.slow,
+            id="frictionless-slope",
+        ),
+        pytest.param("atwood", "acceleration", "m1", 0, "lighter", id="light-counterweight"),
+    ],
+)
+def test_physical_limit_is_listed(
+    problem: str, quantity: str, symbol: str, value: sympy.Expr, word: str
+) -> None:
     limits = bank_derivation(problem).limits[quantity]
     target = s(problem, symbol)
     found = [c for c in limits if c.substitutions.get(target) == value]

@@ -17,8 +17,9 @@ uncached = derivation._derive.__wrapped__
 
 def test_a_form_that_needs_the_angle_range_is_proved_symbolically() -> None:
     th = s("moving-wedge", "theta")
-    how = prove_equal(sympy.sin(th), sympy.sqrt(1 - sympy.cos(th) ** 2), bank_model("moving-wedge"), "q",
-                      ("a", "b"))
+    how = prove_equal(
+        sympy.sin(th), sympy.sqrt(1 - sympy.cos(th) ** 2), bank_model("moving-wedge"), "q", ("a", "b")
+    )
     assert how.startswith("symbolic")
 
 

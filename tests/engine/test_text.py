@@ -1,40 +1,37 @@
-"""The fallback whitelist reader of model expressions (used when physics.mathinput is unavailable)."""
+"""Model expressions are read by the whitelist parser: instructor text is never evaluated."""
 
 from __future__ import annotations
+
+from pathlib import Path
 
 import pytest
 import sympy
 
-from physics.engine.text import _Parser
-from physics.errors import AnswerError, UnknownFunction, UnknownSymbol
+from physics.engine.text import read_expr
+from physics.errors import SpecError
 
-M = sympy.Symbol("m", positive=True)
-TH = sympy.Symbol("theta", positive=True)
-X = sympy.Symbol("x_block", real=True)
-NAMES = {"m": M, "theta": TH, "x_block": X}
+m, g, theta = sympy.symbols("m g theta", positive=True)
+NAMES = {"m": m, "g": g, "theta": theta}
 
 
-@pytest.mark.parametrize(("text", "expected"), [
-    pytest.param("m*sin(theta)^2", M * sympy.sin(TH) ** 2, id="caret-power"),
-    pytest.param("m*sin(theta)**2", M * sympy.sin(TH) ** 2, id="double-star-power"),
-    pytest.param("-x_block/2 + 0.5", -X / 2 + sympy.Rational(1, 2), id="exact-decimal"),
-    pytest.param("pi/2", sympy.pi / 2, id="pi"),
-    pytest.param("2^-1", sympy.Rational(1, 2), id="negative-exponent"),
-    pytest.param("4.58e3", sympy.Integer(4580), id="exponent-notation"),
-    pytest.param("sqrt(m)", sympy.sqrt(M), id="function"),
-])
-def test_fallback_reader_builds_the_expression(text: str, expected: sympy.Expr) -> None:
-    assert sympy.simplify(_Parser(text, NAMES).parse() - expected) == 0
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("m*g*sin(theta)", m * g * sympy.sin(theta)),
+        ("-m g cos(θ)", -m * g * sympy.cos(theta)),
+        (2, sympy.Integer(2)),
+        (0.5, sympy.Rational(1, 2)),
+    ],
+)
+def test_model_text_reads_as_the_expression(text, expected):
+    assert read_expr(text, NAMES, ("model",)) == expected
 
 
-@pytest.mark.parametrize(("text", "error"), [
-    pytest.param("m*q", UnknownSymbol, id="undeclared-name"),
-    pytest.param("eval(m)", UnknownFunction, id="unlisted-function"),
-    pytest.param("m.__class__", AnswerError, id="attribute-access"),
-    pytest.param("(m", AnswerError, id="unbalanced"),
-    pytest.param("", AnswerError, id="empty"),
-    pytest.param("m m", AnswerError, id="juxtaposition"),
-])
-def test_fallback_reader_refuses_anything_else(text: str, error: type[Exception]) -> None:
-    with pytest.raises(error):
-        _Parser(text, NAMES).parse()
+@pytest.mark.parametrize("text", ["__import__('os').system('touch {marker}')", "m +", "h", True, None, [1]])
+def test_model_text_that_is_not_an_expression_is_a_spec_error_with_its_path(text, tmp_path: Path):
+    marker = tmp_path / "ran"
+    source = text.format(marker=marker) if isinstance(text, str) else text
+    with pytest.raises(SpecError) as raised:
+        read_expr(source, NAMES, ("bodies", "m", "mass"))
+    assert raised.value.path == ("bodies", "m", "mass")
+    assert not marker.exists()

@@ -37,11 +37,19 @@ def test_wedge_acceleration_equals_the_seeds_tan_form_on_the_angle_range() -> No
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize(("quantity", "values", "expected", "places"), [
-    pytest.param("friction_coefficient", {"alpha": math.radians(3.5)}, 0.061, 3, id="coasting-skier-mu"),
-    pytest.param("acceleration", {"alpha": math.radians(35), "mu": 0.13, "g": 9.81, "m": 2300}, 4.58, 2,
-                 id="block-on-35-degree-hill"),
-])
+@pytest.mark.parametrize(
+    ("quantity", "values", "expected", "places"),
+    [
+        pytest.param("friction_coefficient", {"alpha": math.radians(3.5)}, 0.061, 3, id="coasting-skier-mu"),
+        pytest.param(
+            "acceleration",
+            {"alpha": math.radians(35), "mu": 0.13, "g": 9.81, "m": 2300},
+            4.58,
+            2,
+            id="block-on-35-degree-hill",
+        ),
+    ],
+)
 def test_seed_numbers(quantity: str, values: dict[str, float], expected: float, places: int) -> None:
     expr = bank_derivation("skier-friction").quantities[quantity]
     value = float(expr.subs({s("skier-friction", k): v for k, v in values.items()}))

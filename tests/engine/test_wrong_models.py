@@ -31,7 +31,9 @@ def test_positions_that_violate_a_constraint_are_caught() -> None:
 
 
 def test_missing_constraint_leaves_too_many_degrees_of_freedom() -> None:
-    model = _load("atwood", lambda d: d.update(constraints={}, quantities={"acceleration": {"acceleration": "s"}}))
+    model = _load(
+        "atwood", lambda d: d.update(constraints={}, quantities={"acceleration": {"acceleration": "s"}})
+    )
     with pytest.raises(DerivationError, match="2 degrees of freedom but the model has 1"):
         uncached(model)
 
@@ -87,3 +89,12 @@ def test_giving_the_state_resolves_the_configuration() -> None:
     result = uncached(_load("ballistic-pendulum", change))
     length, th, g = (symbols("ballistic-pendulum")[n] for n in ("L", "theta", "g"))
     assert sympy.simplify(result.quantities["swing"] + g * sympy.sin(th) / length) == 0
+
+
+def test_a_crash_inside_a_method_becomes_a_derivation_error(monkeypatch: pytest.MonkeyPatch) -> None:
+    def crash(self: LagrangeMethod, coordinate: str) -> sympy.Expr:
+        raise ZeroDivisionError("division by zero")
+
+    monkeypatch.setattr(LagrangeMethod, "acceleration", crash)
+    with pytest.raises(DerivationError, match="Lagrange's equations failed: ZeroDivisionError"):
+        uncached(_load("atwood", lambda d: None))

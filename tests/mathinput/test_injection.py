@@ -18,7 +18,7 @@ def payloads(marker: str) -> list[str]:
         f"lambda: __import__('os').system('touch {marker}')",
         "lambda x: x",
         f"`touch {marker}`",
-        f"f'{{__import__(\"os\").system(\"touch {marker}\")}}'",
+        f'f\'{{__import__("os").system("touch {marker}")}}\'',
         f"exec('import os; os.system(\"touch {marker}\")')",
         "eval('1')",
         "exec(x)",

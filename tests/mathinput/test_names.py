@@ -42,7 +42,9 @@ SPELLINGS = [
 ]
 
 
-@pytest.mark.parametrize(("typed", "declared", "meant"), SPELLINGS, ids=[f"{s[0]}-as-{s[2]}" for s in SPELLINGS])
+@pytest.mark.parametrize(
+    ("typed", "declared", "meant"), SPELLINGS, ids=[f"{s[0]}-as-{s[2]}" for s in SPELLINGS]
+)
 def test_each_spelling_reads_as_its_declared_name(typed, declared, meant):
     parsed = read(typed, *declared)
     assert parsed.expr == sym(meant)
@@ -80,7 +82,9 @@ AMBIGUOUS_NAMES = [
 ]
 
 
-@pytest.mark.parametrize(("typed", "declared", "readings"), AMBIGUOUS_NAMES, ids=[a[0] for a in AMBIGUOUS_NAMES])
+@pytest.mark.parametrize(
+    ("typed", "declared", "readings"), AMBIGUOUS_NAMES, ids=[a[0] for a in AMBIGUOUS_NAMES]
+)
 def test_glued_run_that_splits_two_ways_is_refused_listing_both(typed, declared, readings):
     with pytest.raises(AmbiguousInput) as caught:
         read(typed, *declared)
@@ -125,7 +129,9 @@ UNKNOWN_FUNCTIONS = [
 ]
 
 
-@pytest.mark.parametrize(("typed", "function", "position"), UNKNOWN_FUNCTIONS, ids=[u[0] for u in UNKNOWN_FUNCTIONS])
+@pytest.mark.parametrize(
+    ("typed", "function", "position"), UNKNOWN_FUNCTIONS, ids=[u[0] for u in UNKNOWN_FUNCTIONS]
+)
 def test_undeclared_name_before_a_bracket_is_an_unknown_function(typed, function, position):
     with pytest.raises(UnknownFunction) as caught:
         read(typed, "x")

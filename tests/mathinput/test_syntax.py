@@ -82,7 +82,11 @@ CASES = [
     ("sqrt x", XY, sqrt(x)),
     ("cos sin x", XY, cos(sin(x))),
     ("sin|x|", XY, sin(Abs(x))),
-    ("-m g sin(θ)cos(θ)/(M + m sin^2 θ)", WEDGE, -m * g * sin(theta) * cos(theta) / (M + m * sin(theta) ** 2)),
+    (
+        "-m g sin(θ)cos(θ)/(M + m sin^2 θ)",
+        WEDGE,
+        -m * g * sin(theta) * cos(theta) / (M + m * sin(theta) ** 2),
+    ),
     # constants
     ("pi", XY, pi),
     ("π", XY, pi),

@@ -19,7 +19,13 @@ CONTRACT: dict[str, tuple[set[str], list[str]]] = {
     "yo-yo": ({"m", "r", "k", "g"}, ["acceleration", "tension", "acceleration_numeric"]),
     "lennard-jones": (
         {"U0", "r0", "r", "m"},
-        ["equilibrium_separation", "force", "spring_constant", "oscillation_frequency", "oscillation_frequency_numeric"],
+        [
+            "equilibrium_separation",
+            "force",
+            "spring_constant",
+            "oscillation_frequency",
+            "oscillation_frequency_numeric",
+        ],
     ),
     "ballistic-pendulum": (
         {"m", "M", "L", "theta", "g"},
@@ -32,8 +38,13 @@ CONTRACT: dict[str, tuple[set[str], list[str]]] = {
     "incline-pulley": ({"m1", "m2", "theta", "g"}, ["acceleration", "tension", "acceleration_numeric"]),
     "rolling-incline": (
         {"m", "R", "theta", "g"},
-        ["acceleration_cylinder", "acceleration_hoop", "acceleration_sphere", "acceleration_sliding",
-         "acceleration_cylinder_numeric"],
+        [
+            "acceleration_cylinder",
+            "acceleration_hoop",
+            "acceleration_sphere",
+            "acceleration_sliding",
+            "acceleration_cylinder_numeric",
+        ],
     ),
     "mass-spring": ({"m", "k"}, ["angular_frequency", "period", "period_numeric"]),
     "atwood": ({"m1", "m2", "g"}, ["acceleration", "tension", "acceleration_numeric"]),
@@ -86,4 +97,8 @@ def test_listing_view_has_the_contract_fields_only() -> None:
 
     entry = listing_view(bank()["atwood"])
     assert set(entry) == {"id", "title", "topics", "parts"}
-    assert entry["parts"][0] == {"id": "acceleration", "kind": "symbolic", "prompt": entry["parts"][0]["prompt"]}
+    assert entry["parts"][0] == {
+        "id": "acceleration",
+        "kind": "symbolic",
+        "prompt": entry["parts"][0]["prompt"],
+    }

@@ -32,18 +32,32 @@ def hand(problem_id: str) -> CompiledProblem:
 
 # The seed document's numbers (skier) and textbook values for the others.
 REFERENCES = [
-    pytest.param("skier-friction", "acceleration_numeric", {"alpha": 35, "mu": "0.13"}, "4.58", id="skier-seed-a"),
-    pytest.param("skier-friction", "friction_coefficient_numeric", {"alpha": "3.5"}, "0.0612", id="skier-seed-mu"),
+    pytest.param(
+        "skier-friction", "acceleration_numeric", {"alpha": 35, "mu": "0.13"}, "4.58", id="skier-seed-a"
+    ),
+    pytest.param(
+        "skier-friction", "friction_coefficient_numeric", {"alpha": "3.5"}, "0.0612", id="skier-seed-mu"
+    ),
     pytest.param("mass-spring", "period_numeric", {"m": 1, "k": "39.4784176"}, "1.00", id="spring-1s"),
     pytest.param("atwood", "acceleration_numeric", {"m1": 1, "m2": 3}, "4.905", id="atwood-half-g"),
-    pytest.param("moving-wedge", "wedge_acceleration_numeric", {"m": 1, "M": 1, "theta": 45}, "-3.27", id="wedge-sign"),
-    pytest.param("ballistic-pendulum", "bullet_speed_numeric", {"m": 10, "M": "0.99", "L": 1, "theta": 60}, "313.2", id="pendulum-grams"),
+    pytest.param(
+        "moving-wedge", "wedge_acceleration_numeric", {"m": 1, "M": 1, "theta": 45}, "-3.27", id="wedge-sign"
+    ),
+    pytest.param(
+        "ballistic-pendulum",
+        "bullet_speed_numeric",
+        {"m": 10, "M": "0.99", "L": 1, "theta": 60},
+        "313.2",
+        id="pendulum-grams",
+    ),
     pytest.param("yo-yo", "acceleration_numeric", {"r": 1, "k": 1}, "4.905", id="yoyo-cm"),
 ]
 
 
 @pytest.mark.parametrize(("problem_id", "part_id", "values", "expected"), REFERENCES)
-def test_numeric_reference_at_chosen_values(problem_id: str, part_id: str, values: dict[str, object], expected: str) -> None:
+def test_numeric_reference_at_chosen_values(
+    problem_id: str, part_id: str, values: dict[str, object], expected: str
+) -> None:
     part = hand(problem_id).part(part_id)
     assert isinstance(part, CompiledNumericPart)
     value = part.reference(fixed_variant(bank()[problem_id], values))  # type: ignore[arg-type]
@@ -187,5 +201,6 @@ def test_model_faults_are_reported_under_model() -> None:
     data["model"]["quantities"]["acceleration"] = {"acceleration": "nowhere"}  # type: ignore[index]
     with pytest.raises(ProblemInvalid) as caught:
         parse_problem(data)
-    assert caught.value.errors and all(p.startswith("model.") for p, _ in caught.value.errors), caught.value.errors
-
+    assert caught.value.errors and all(p.startswith("model.") for p, _ in caught.value.errors), (
+        caught.value.errors
+    )

@@ -84,23 +84,49 @@ def _all(*changes: Callable[[Doc], None]) -> Callable[[Doc], None]:
 
 
 SHAPE_CASES = [
-    pytest.param(_set("parts.1.tolerance", {"rel": -1}), {"parts[1].tolerance.rel": "must be > 0"}, id="negative-rel"),
-    pytest.param(_set("parts.1.tolerance", {}), {"parts[1].tolerance": "give at least one of rel, abs, sigfigs"}, id="empty-tolerance"),
+    pytest.param(
+        _set("parts.1.tolerance", {"rel": -1}), {"parts[1].tolerance.rel": "must be > 0"}, id="negative-rel"
+    ),
+    pytest.param(
+        _set("parts.1.tolerance", {}),
+        {"parts[1].tolerance": "give at least one of rel, abs, sigfigs"},
+        id="empty-tolerance",
+    ),
     pytest.param(_delete("title"), {"title": "required"}, id="missing-title"),
-    pytest.param(_set("version", 3), {"version": "assigned by storage; remove it from the document"}, id="version-in-file"),
+    pytest.param(
+        _set("version", 3),
+        {"version": "assigned by storage; remove it from the document"},
+        id="version-in-file",
+    ),
     pytest.param(_set("id", "Not A Slug"), {"id": None}, id="bad-slug"),
-    pytest.param(_set("parts.0.kind", "essay"), {"parts[0].kind": "kind must be 'symbolic' or 'numeric'"}, id="bad-kind"),
+    pytest.param(
+        _set("parts.0.kind", "essay"),
+        {"parts[0].kind": "kind must be 'symbolic' or 'numeric'"},
+        id="bad-kind",
+    ),
     pytest.param(_delete("parts.1.units"), {"parts[1].units": "required"}, id="numeric-without-units"),
     pytest.param(_delete("parts.1.of"), {"parts[1].of": "required"}, id="numeric-without-quantity"),
     pytest.param(_set("given.m.sigfigs", 0), {"given.m.sigfigs": "must be >= 1"}, id="zero-sigfigs"),
-    pytest.param(_set("given.m.step", 0.1), {"given.m": "give sigfigs or step, not both"}, id="sigfigs-and-step"),
-    pytest.param(_set("given.m.min", True), {"given.m.min": "must be a number, not true/false"}, id="bool-as-number"),
+    pytest.param(
+        _set("given.m.step", 0.1), {"given.m": "give sigfigs or step, not both"}, id="sigfigs-and-step"
+    ),
+    pytest.param(
+        _set("given.m.min", True), {"given.m.min": "must be a number, not true/false"}, id="bool-as-number"
+    ),
     pytest.param(_set("given.m.max", float("nan")), {"given.m.max": "must be a finite number"}, id="nan"),
-    pytest.param(_set("symbols.theta.range", [0]), {"symbols.theta.range[1]": "required"}, id="one-sided-range"),
-    pytest.param(_set("symbols.theta.range", [0, {}]), {"symbols.theta.range[1]": "must be a number or expression text"}, id="range-bound-mapping"),
+    pytest.param(
+        _set("symbols.theta.range", [0]), {"symbols.theta.range[1]": "required"}, id="one-sided-range"
+    ),
+    pytest.param(
+        _set("symbols.theta.range", [0, {}]),
+        {"symbols.theta.range[1]": "must be a number or expression text"},
+        id="range-bound-mapping",
+    ),
     pytest.param(_set("parts.0.typo", 1), {"parts[0].typo": "unknown field"}, id="unknown-part-field"),
     pytest.param(_set("parts", []), {"parts": "must have at least 1 item(s)"}, id="no-parts"),
-    pytest.param(_set("parts.0.max_attempts", 0), {"parts[0].max_attempts": "must be >= 1"}, id="zero-attempts"),
+    pytest.param(
+        _set("parts.0.max_attempts", 0), {"parts[0].max_attempts": "must be >= 1"}, id="zero-attempts"
+    ),
     pytest.param(
         _all(_set("parts.1.tolerance", {"rel": 0}), _delete("statement"), _set("given.k.unit", 5)),
         {"parts[1].tolerance.rel": "must be > 0", "statement": "required", "given.k.unit": "must be text"},
@@ -110,7 +136,9 @@ SHAPE_CASES = [
 
 
 @pytest.mark.parametrize(("change", "expected"), SHAPE_CASES)
-def test_broken_document_lists_every_error_with_its_path(change: Callable[[Doc], None], expected: dict[str, str | None]) -> None:
+def test_broken_document_lists_every_error_with_its_path(
+    change: Callable[[Doc], None], expected: dict[str, str | None]
+) -> None:
     data = spring()
     change(data)
     with pytest.raises(ProblemInvalid) as caught:

@@ -11,10 +11,18 @@ from tests.problems.documents import spring
 
 def test_small_problem_passes_its_self_test() -> None:
     calls: list[tuple[str, int, int]] = []
-    report = verify_problem(parse_problem(spring()), variants=3, progress=lambda *a: calls.append(a), use_model=False)
+    report = verify_problem(
+        parse_problem(spring()), variants=3, progress=lambda *a: calls.append(a), use_model=False
+    )
     assert report.ok, report.summary()
     checks = {r.check for r in report.failures} | {r.check for r in report.problems[0].results}
-    assert {"rewrite as derived", "mistake 1", "variant 0", "variant 0 10% off", "variant 2 in rad/ms"} <= checks
+    assert {
+        "rewrite as derived",
+        "mistake 1",
+        "variant 0",
+        "variant 0 10% off",
+        "variant 2 in rad/ms",
+    } <= checks
     assert calls[-1] == ("tiny-spring:angular_frequency_numeric", 2, 2)
 
 
@@ -56,7 +64,11 @@ def test_compile_failure_is_a_failed_check_not_an_exception() -> None:
 @pytest.mark.parametrize(
     ("expression_text", "form"),
     [
-        pytest.param("(m + M)*g/(M + m*sin(theta)**2)", "M*g/(M + m*sin(theta)**2) + g*m/(M + m*sin(theta)**2)", id="expanded"),
+        pytest.param(
+            "(m + M)*g/(M + m*sin(theta)**2)",
+            "M*g/(M + m*sin(theta)**2) + g*m/(M + m*sin(theta)**2)",
+            id="expanded",
+        ),
         pytest.param("2*sin(theta)*cos(theta)", "sin(2*theta)", id="double-angle"),
     ],
 )

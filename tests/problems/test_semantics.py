@@ -114,7 +114,9 @@ CASES = [
     pytest.param(_unknown_dimension, ["symbols.k.dimension"], id="unknown-dimension"),
     pytest.param(_placeholder_without_given, ["statement"], id="placeholder-without-given"),
     pytest.param(_given_outside_symbol_range, ["given.theta"], id="given-outside-symbol-range"),
-    pytest.param(_negative_given_for_positive_symbol, ["given.m.min"], id="negative-given-for-positive-symbol"),
+    pytest.param(
+        _negative_given_for_positive_symbol, ["given.m.min"], id="negative-given-for-positive-symbol"
+    ),
     pytest.param(_limit_on_unknown_symbol, ["parts[0].limits[0].where.z"], id="limit-on-unknown-symbol"),
     pytest.param(_bad_constraint, ["constraints[0]"], id="constraint-without-relation"),
     pytest.param(_no_answer_and_no_model, ["parts[0]"], id="no-answer-and-no-model"),
@@ -137,7 +139,12 @@ def test_every_meaning_fault_is_reported_at_once() -> None:
         change(data)
     with pytest.raises(ProblemInvalid) as caught:
         parse_problem(data)
-    assert [path for path, _ in caught.value.errors] == ["given.v", "parts[0].answer", "parts[1].id", "parts[1].units"]
+    assert [path for path, _ in caught.value.errors] == [
+        "given.v",
+        "parts[0].answer",
+        "parts[1].id",
+        "parts[1].units",
+    ]
 
 
 def test_valid_document_has_no_meaning_faults() -> None:

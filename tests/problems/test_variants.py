@@ -41,7 +41,9 @@ def test_same_student_same_problem_gets_the_same_values() -> None:
         pytest.param("alice", 1, "another-secret", id="another-secret"),
     ],
 )
-def test_values_change_with_student_version_and_secret(other_student: str, other_version: int, other_secret: str) -> None:
+def test_values_change_with_student_version_and_secret(
+    other_student: str, other_version: int, other_secret: str
+) -> None:
     mine = draw_variant(doc(), 1, "alice", SECRET)
     theirs = draw_variant(doc(), other_version, other_student, other_secret)
     assert mine.values != theirs.values

@@ -35,8 +35,13 @@ def test_a_known_mistake_comes_before_the_sign_error_it_also_is():
     assert judgement.reason is Reason.KNOWN_MISTAKE
 
 
-def test_the_wrong_dimension_comes_before_a_known_mistake():
+def test_a_known_mistake_of_another_dimension_keeps_its_targeted_feedback():
     judgement = judge_symbolic(RELATIVE * m, wedge_reference(mistakes=(WRONG_DIMENSION_MISTAKE,)))
+    assert (judgement.reason, judgement.feedback) == (Reason.KNOWN_MISTAKE, WRONG_DIMENSION_MISTAKE.feedback)
+
+
+def test_a_wrong_dimension_that_is_no_known_mistake_says_so():
+    judgement = judge_symbolic(RELATIVE * m * m, wedge_reference(mistakes=(WRONG_DIMENSION_MISTAKE,)))
     assert judgement.reason is Reason.WRONG_DIMENSION
 
 
