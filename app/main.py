@@ -72,8 +72,10 @@ def create_app(
         )
         outbox = OutboxWorker(storage.database, settings, lms_transport)
         await outbox.start()
-        warming = threading.Thread(target=storage.catalog.warm_up, name="catalog-warm-up", daemon=True)
-        warming.start()
+        if settings.warm_up:
+            threading.Thread(target=storage.catalog.warm_up, name="catalog-warm-up", daemon=True).start()
+        else:
+            storage.catalog.warm.set()
         try:
             yield
         finally:

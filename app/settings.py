@@ -35,6 +35,8 @@ class Settings(BaseSettings):
     student_rate_limit_per_minute: int = Field(default=60, ge=1)
 
     bank_dir: Path | None = None
+    # Compile every problem at start-up (seconds of sympy) before /ready says yes; off for quick dev runs.
+    warm_up: bool = True
     log_level: str = "INFO"
 
 

@@ -5,7 +5,6 @@ from __future__ import annotations
 from starlette.concurrency import run_in_threadpool
 
 from app.db import submissions as submission_repository
-from app.db.errors import AttemptsExhausted
 from app.db.records import ProblemRecord, SubmissionRecord
 from app.schemas.check import VerdictPublic
 from app.schemas.problems import SubmissionResult
@@ -17,11 +16,9 @@ async def submit_answer(
     services: Services, record: ProblemRecord, part_id: str, student: str, answer: str
 ) -> SubmissionResult:
     catalog = services.catalog
+    # No early refusal when attempts are used up: an unreadable answer uses none and is still filed,
+    # and only grading tells which it is. The insert refuses a graded one over the limit.
     max_attempts = catalog.max_attempts(record, part_id)
-    if max_attempts is not None:
-        used = await run_in_threadpool(_attempts_used, services, record, part_id, student)
-        if used >= max_attempts:  # spare the grading work; the insert below re-checks under lock
-            raise AttemptsExhausted(record.id, part_id, student, max_attempts)
     compiled = await run_in_threadpool(catalog.compiled, record)
     job = compiled.job(part_id, answer, catalog.variant(record, student))
     verdict = await services.pool.check(job)
@@ -34,11 +31,6 @@ async def submit_answer(
         attempts_used=used,
         max_attempts=max_attempts,
     )
-
-
-def _attempts_used(services: Services, record: ProblemRecord, part_id: str, student: str) -> int:
-    with services.database.session(read_only=True) as session:
-        return submission_repository.attempts_used(session, record.id, part_id, student)
 
 
 def _file(

@@ -116,3 +116,30 @@ def test_solution_shows_each_method_and_their_agreement(client, instructor_heade
     assert "sin" in references["wedge_acceleration"]["text"]
     assert all(step["latex"] for method in solution["methods"] for step in method["steps"])
     assert client.get("/v1/problems/moving-wedge/solution", headers=student_headers).status_code == 403
+
+
+def test_attempt_limit_refuses_graded_answers_but_files_unreadable_ones(
+    client, instructor_headers, student_headers
+):
+    doc = atwood_upload()
+    doc["max_attempts"] = 2
+    assert upload(client, instructor_headers, doc).status_code == 201
+    url = "/v1/problems/my-atwood/parts/acceleration/submissions"
+    statuses = [
+        client.post(url, json={"answer": f"{i + 1} g"}, headers=student_headers).status_code for i in range(3)
+    ]
+    assert statuses == [201, 201, 409]
+    refused = client.post(url, json={"answer": "5 g"}, headers=student_headers).json()
+    assert refused["error"]["code"] == "attempts_exhausted"
+    unreadable = client.post(url, json={"answer": "g +"}, headers=student_headers)
+    assert (unreadable.status_code, unreadable.json()["verdict"], unreadable.json()["attempts_used"]) == (
+        201,
+        "invalid",
+        2,
+    )
+    assert (
+        client.post(
+            url.replace("acceleration", "tension"), json={"answer": "g"}, headers=student_headers
+        ).status_code
+        == 201
+    )

@@ -19,6 +19,7 @@ from app.auth import Principal, Role
 from app.db.database import Database
 from app.db.migrate import migrate
 from app.db.problems import save_builtin
+from app.grading.pool import GradingPool
 from app.lti import keys
 from app.lti.context import LtiContext
 from app.lti.platforms import add_platform
@@ -35,6 +36,16 @@ PROBLEMS = {
 @pytest.fixture
 def anyio_backend() -> str:
     return "asyncio"
+
+
+@pytest.fixture(scope="session")
+def lti_grading_pool() -> Iterator[GradingPool]:
+    """One grading worker for the whole run, for the tests that run the real app (starting one per
+    test would dominate their time)."""
+    pool = GradingPool(workers=1, timeout=5.0, memory_mb=1024, max_tasks=1000, queue_size=16)
+    pool.start()
+    yield pool
+    pool.close()
 
 
 @pytest.fixture(scope="session")

@@ -1,49 +1,57 @@
-"""Headless Chromium drives the student page in key mode: type an answer, see the preview and the
-verdict; a screenshot is saved to `artifacts/` (or PHYSCHECK_ARTIFACTS_DIR). Skipped without Chromium."""
+"""Headless Chromium drives the student page of the REAL app (`create_app`: bank, grading worker, API)
+served by uvicorn on a loopback port: type an answer, see the live preview, submit, see the verdict.
+Key mode with a student key from `app.keys.create_key`; session mode after an LTI launch from the fake
+LMS. Screenshots go to `artifacts/` (or PHYSCHECK_ARTIFACTS_DIR). Skipped without Debian's chromium.
+"""
 
 from __future__ import annotations
 
 import os
+import re
 import shutil
 import socket
 import threading
 import time
 from collections.abc import Iterator
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+import anyio
+import httpx
 import pytest
-from fastapi import FastAPI, Request
-from fastapi.responses import JSONResponse
+import uvicorn
+from fastapi import FastAPI
 
-from app.lti.context import LtiContext
-from app.lti.router import router
-from tests.lti.conftest import STUDENT_KEY
+from app.db.database import Database
+from app.grading.pool import GradingPool
+from app.keys import create_key
+from app.lti.platforms import add_platform
+from app.lti.sessions import SESSION_COOKIE
+from app.main import create_app
+from app.settings import Settings
+from tests.lti.conftest import platform_launch
+from tests.lti.fake_lms import CLIENT_ID, DEPLOYMENT_ID, ISSUER, LEARNER, TOOL, FakeLms, NextLaunch
 
-pytestmark = [pytest.mark.browser, pytest.mark.slow]
 CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
-
-
-def fake_api(app: FastAPI) -> None:
-    """Stand-ins for the lead's /v1 routes the page calls, with the student key as bearer token."""
-
-    def authorized(request: Request) -> bool:
-        return request.headers.get("authorization") == f"Bearer {STUDENT_KEY}"
-
-    @app.post("/v1/problems/{problem_id}/parts/{part_id}/preview")
-    async def preview(problem_id: str, part_id: str, request: Request) -> Any:
-        if not authorized(request):
-            return JSONResponse({"error": {"code": "unauthenticated", "message": "no key"}}, status_code=401)
-        answer = (await request.json())["answer"]
-        return {"read_as": {"text": "*".join(answer.split()), "latex": ""}, "error": None}
-
-    @app.post("/v1/problems/{problem_id}/parts/{part_id}/submissions", status_code=201)
-    async def submit(problem_id: str, part_id: str, request: Request) -> Any:
-        if not authorized(request):
-            return JSONResponse({"error": {"code": "unauthenticated", "message": "no key"}}, status_code=401)
-        answer = (await request.json())["answer"]
-        correct = "*".join(answer.split()) == "m*g"
-        return {"verdict": "correct" if correct else "incorrect", "feedback": "", "attempts_used": 1}
+pytestmark = [
+    pytest.mark.browser,
+    pytest.mark.slow,
+    pytest.mark.skipif(CHROMIUM is None, reason="Debian's chromium package is not installed"),
+]
+CHROMIUM_ARGS = [
+    "--headless",
+    "--no-sandbox",
+    "--disable-gpu",
+    "--disable-background-networking",
+    "--disable-component-update",
+    "--disable-sync",
+    "--no-first-run",
+]
+PROBLEM = "yo-yo"
+RIGHT = "g r^2/(r^2 + k^2)"
+# What the preview shows for RIGHT: the parser's reading, with explicit products.
+READ_AS = re.compile(r"Read as: .*g.*r.*k")
 
 
 def free_port() -> int:
@@ -52,44 +60,152 @@ def free_port() -> int:
         return int(probe.getsockname()[1])
 
 
-@pytest.fixture
-def served(context: LtiContext) -> Iterator[str]:
-    import uvicorn
+@dataclass
+class Served:
+    url: str
+    app: FastAPI
+    lms: FakeLms
 
-    app = FastAPI()
-    app.include_router(router)
-    fake_api(app)
-    app.state.lti = context
+    @property
+    def database(self) -> Database:
+        database: Database = self.app.state.services.database
+        return database
+
+
+@pytest.fixture
+def served(tmp_path: Path, lti_grading_pool: GradingPool) -> Iterator[Served]:
+    """The real app in a uvicorn thread (its lifespan migrates, loads the bank, starts the outbox)."""
+    lms = FakeLms()
+    settings = Settings(
+        database_url=f"sqlite:///{tmp_path / 'physcheck.db'}",
+        base_url=TOOL,  # the LTI launch below reaches the same app in-process under this name
+        secret="browser-test-secret-0123",
+        check_workers=1,
+    )
+    app = create_app(settings, pool=lti_grading_pool, lms_transport=httpx.ASGITransport(app=lms.app))
     port = free_port()
     server = uvicorn.Server(uvicorn.Config(app, host="127.0.0.1", port=port, log_level="warning"))
-    thread = threading.Thread(target=server.run, daemon=True)
+    thread = threading.Thread(target=server.run, name="uvicorn", daemon=True)
     thread.start()
-    deadline = time.monotonic() + 20
-    while not server.started and time.monotonic() < deadline:
+    deadline = time.monotonic() + 60
+    while not server.started:
+        assert thread.is_alive(), "uvicorn exited during startup"
+        assert time.monotonic() < deadline, "uvicorn did not start"
         time.sleep(0.05)
-    yield f"http://127.0.0.1:{port}"
-    server.should_exit = True
-    thread.join(timeout=10)
+    try:
+        yield Served(f"http://127.0.0.1:{port}", app, lms)
+    finally:
+        server.should_exit = True
+        thread.join(timeout=30)
 
 
-@pytest.mark.skipif(CHROMIUM is None, reason="Debian's chromium package is not installed")
-def test_student_types_answer_sees_preview_and_verdict(served: str):
-    from playwright.sync_api import expect, sync_playwright
+def artifacts_dir() -> Path:
+    path = Path(os.environ.get("PHYSCHECK_ARTIFACTS_DIR", "artifacts"))
+    path.mkdir(parents=True, exist_ok=True)
+    return path
 
-    artifacts = Path(os.environ.get("PHYSCHECK_ARTIFACTS_DIR", "artifacts"))
-    artifacts.mkdir(parents=True, exist_ok=True)
+
+def answer_first_part(page: Any, answer: str, screenshot: str) -> None:
+    """Type an answer to the first part, see it read back, check it, see the verdict; screenshot."""
+    from playwright.sync_api import expect
+
+    box = page.get_by_label("Your answer").first
+    box.click()
+    box.press_sequentially(answer)
+    expect(page.locator("#preview-0")).to_have_text(READ_AS)
+    page.get_by_role("button", name="Check answer").first.click()
+    verdict = page.locator(".verdict").first
+    expect(verdict).to_contain_text("Correct.")
+    expect(verdict).to_contain_text("Attempts used: 1.")
+    page.screenshot(path=str(artifacts_dir() / screenshot), full_page=True)
+
+
+def with_browser(action: Any) -> None:
+    from playwright.sync_api import sync_playwright
+
     with sync_playwright() as playwright:
-        browser = playwright.chromium.launch(executable_path=CHROMIUM, headless=True)
+        browser = playwright.chromium.launch(executable_path=CHROMIUM, headless=True, args=CHROMIUM_ARGS)
         try:
-            page = browser.new_page()
-            page.goto(f"{served}/p/moving-wedge")
-            page.get_by_label("Your student key").fill(STUDENT_KEY)
-            page.get_by_role("button", name="Open").click()
-            answer = page.get_by_label("Your answer").first
-            answer.fill("m g")
-            expect(page.locator("#preview-0")).to_contain_text("Read as: m*g")
-            page.get_by_role("button", name="Check answer").first.click()
-            expect(page.locator(".verdict").first).to_contain_text("Correct.")
-            page.screenshot(path=str(artifacts / "student-page.png"), full_page=True)
+            context = browser.new_context(viewport={"width": 900, "height": 900})
+            action(context)
         finally:
             browser.close()
+
+
+def test_student_with_key_sees_preview_then_verdict(served: Served):
+    plaintext, _ = create_key(served.database, "student", "Ada", student="ada")
+
+    def run(context: Any) -> None:
+        page = context.new_page()
+        page.goto(f"{served.url}/p/{PROBLEM}")
+        key = page.get_by_label("Your student key")
+        key.fill(plaintext)
+        key.press("Enter")
+        # Focus moves to the problem's heading once it is loaded, for keyboard and screen reader users.
+        from playwright.sync_api import expect
+
+        expect(page.get_by_role("heading", level=1)).to_be_focused()
+        expect(page.locator("#key-form")).to_be_hidden()
+        answer_first_part(page, RIGHT, "student-page-key.png")
+
+    with_browser(run)
+
+
+def test_wrong_key_is_refused_on_the_page(served: Served):
+    def run(context: Any) -> None:
+        from playwright.sync_api import expect
+
+        page = context.new_page()
+        page.goto(f"{served.url}/p/{PROBLEM}")
+        page.get_by_label("Your student key").fill("not-a-key")
+        page.get_by_role("button", name="Open").click()
+        expect(page.get_by_role("alert")).to_have_text("This key was not accepted.")
+
+    with_browser(run)
+
+
+async def _launch(served: Served) -> str:
+    """An LTI launch from the fake LMS into the served app (in-process, under its configured name);
+    returns the session cookie the browser would now hold."""
+    await anyio.to_thread.run_sync(
+        add_platform,
+        served.database,
+        ISSUER,
+        CLIENT_ID,
+        [DEPLOYMENT_ID],
+        f"{ISSUER}/auth",
+        f"{ISSUER}/token",
+        f"{ISSUER}/jwks",
+    )
+    mounts = {
+        "all://tool.test": httpx.ASGITransport(app=served.app),
+        "all://lms.test": httpx.ASGITransport(app=served.lms.app),
+    }
+    async with httpx.AsyncClient(mounts=mounts, timeout=30) as client:
+        served.lms.trust_tool_keys((await client.get(f"{TOOL}/lti/jwks")).json())
+        served.lms.next_launch = NextLaunch(
+            user="student-1", roles=[LEARNER], problem=PROBLEM, lineitem=f"{ISSUER}/lineitems/7"
+        )
+        launched = await platform_launch(client)
+        assert launched.status_code == 303, launched.text
+        cookie = client.cookies.get(SESSION_COOKIE)
+        assert cookie
+        return cookie
+
+
+# app/deps.py:current_principal never calls `principal_from_session`, so the page's preview and
+# submission get 401 with the session cookie. Strict: remove the marker once that is wired.
+@pytest.mark.xfail(strict=True, reason="app/deps.py:current_principal ignores the LTI session cookie")
+def test_launched_student_sees_preview_then_verdict(served: Served):
+    session_id = anyio.run(_launch, served)
+
+    def run(context: Any) -> None:
+        context.add_cookies([{"name": SESSION_COOKIE, "value": session_id, "url": served.url}])
+        page = context.new_page()
+        page.goto(f"{served.url}/p/{PROBLEM}")
+        try:
+            answer_first_part(page, RIGHT, "student-page-session.png")
+        finally:
+            page.screenshot(path=str(artifacts_dir() / "student-page-session-last.png"), full_page=True)
+
+    with_browser(run)

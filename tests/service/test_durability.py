@@ -47,7 +47,7 @@ def _all_submission_ids(server: LiveServer, key: str) -> set[str]:
 
 def test_acknowledged_submissions_survive_sigkill(database_url: str, tmp_path: Path):
     instructor, student = _keys(database_url)
-    server = LiveServer(database_url, tmp_path / "server.log").start()
+    server = LiveServer(database_url, tmp_path / "server.log", warm_up="false").start()
     acknowledged: list[str] = []
     lock, stop = threading.Lock(), threading.Event()
 
@@ -82,7 +82,7 @@ def test_acknowledged_submissions_survive_sigkill(database_url: str, tmp_path: P
             thread.join(timeout=20)
         server.kill()
     assert len(acknowledged) >= 40
-    restarted = LiveServer(database_url, tmp_path / "server.log", port=server.port).start()
+    restarted = LiveServer(database_url, tmp_path / "server.log", port=server.port, warm_up="false").start()
     try:
         stored = _all_submission_ids(restarted, instructor)
     finally:

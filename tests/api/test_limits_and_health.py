@@ -1,0 +1,67 @@
+"""Rate limits per key and per student (429 with Retry-After), readiness, and the error shape."""
+
+from __future__ import annotations
+
+import time
+
+import pytest
+from fastapi.testclient import TestClient
+
+from app.main import create_app
+from app.settings import Settings
+from tests.api.conftest import _headers
+
+BODY = {"kind": "numeric", "answer": "4.58 m/s^2", "expected": 4.58, "units": "m/s^2"}
+
+
+@pytest.fixture
+def limited(settings: Settings, grading_pool) -> tuple[TestClient, Settings]:
+    tight = settings.model_copy(update={"rate_limit_per_minute": 3, "student_rate_limit_per_minute": 2})
+    with TestClient(create_app(tight, pool=grading_pool)) as client:
+        yield client, tight
+
+
+def test_a_key_over_its_budget_gets_429_with_retry_after(limited):
+    client, settings = limited
+    headers = _headers(settings, "instructor", "busy")
+    statuses = [client.post("/v1/check", json=BODY, headers=headers).status_code for _ in range(4)]
+    assert statuses == [200, 200, 200, 429]
+    response = client.post("/v1/check", json=BODY, headers=headers)
+    assert response.json()["error"]["code"] == "rate_limited"
+    assert 1 <= int(response.headers["Retry-After"]) <= 60
+
+
+def test_a_students_budget_is_shared_by_all_its_keys(limited):
+    from app.db.database import Database
+    from app.keys import create_key
+
+    client, settings = limited
+    database = Database(settings.database_url)
+    try:
+        keys = [create_key(database, "student", "ada", student="ada")[0] for _ in range(2)]
+    finally:
+        database.dispose()
+    statuses = [
+        client.post("/v1/check", json=BODY, headers={"Authorization": f"Bearer {keys[i % 2]}"}).status_code
+        for i in range(3)
+    ]
+    assert statuses == [200, 200, 429]
+
+
+def test_ready_turns_200_once_the_problems_are_compiled(client):
+    deadline = time.monotonic() + 60
+    while (response := client.get("/ready")).status_code != 200 and time.monotonic() < deadline:
+        assert response.json()["error"]["code"] == "not_ready"
+        time.sleep(0.2)
+    assert response.json() == {"status": "ready"}
+
+
+def test_unknown_route_answers_in_the_error_shape(client):
+    response = client.get("/v1/nothing-here")
+    assert response.status_code == 404
+    assert set(response.json()["error"]) == {"code", "message", "details"}
+
+
+def test_every_response_carries_a_request_id(client):
+    assert client.get("/health").headers["x-request-id"]
+    assert client.get("/health", headers={"X-Request-ID": "trace-42"}).headers["x-request-id"] == "trace-42"

@@ -1,0 +1,251 @@
+"""LTI end to end through the real service: the app from `create_app` (bank, grading workers, outbox,
+API) and the fake LMS (the real `lti1p3platform` platform), both on loopback ASGI, on SQLite and on
+PostgreSQL. An instructor deep links a bank problem, a student launches it, answers on the student page
+through the API with the session cookie and CSRF token, and the score reaches the LMS once.
+"""
+
+from __future__ import annotations
+
+import re
+import time
+from collections.abc import AsyncIterator
+from dataclasses import dataclass
+from html import unescape
+from typing import Any
+
+import anyio
+import httpx
+import pytest
+from fastapi import FastAPI
+from sqlalchemy import func, select
+from starlette.concurrency import run_in_threadpool
+
+from app.db.database import Database
+from app.grading.pool import GradingPool
+from app.keys import create_key
+from app.lti.models import LtiScoreOutbox
+from app.lti.outbox import DELIVERED, PENDING, SENDING, OutboxWorker
+from app.lti.platforms import add_platform
+from app.main import create_app
+from app.settings import Settings
+from tests.lti.conftest import platform_launch
+from tests.lti.fake_lms import (
+    CLIENT_ID,
+    DEPLOYMENT_ID,
+    INSTRUCTOR,
+    ISSUER,
+    LEARNER,
+    TOOL,
+    FakeLms,
+    NextLaunch,
+    ReceivedScore,
+)
+
+pytestmark = [pytest.mark.anyio, pytest.mark.slow]
+
+PROBLEM = "yo-yo"  # three parts, so the line item is out of 3
+LINEITEM = f"{ISSUER}/lineitems/7"
+RIGHT = "g r^2/(r^2 + k^2)"
+WRONG = "g"  # a known mistake: graded incorrect, still a score (0) for the LMS
+UNREADABLE = "g r^2 /"
+DELIVERY_TIMEOUT = 20.0
+
+# app/deps.py:current_principal reads only `Authorization: Bearer` and never calls
+# `app.lti.sessions.principal_from_session`, so the page's API calls after a launch get 401. Strict:
+# once it does, these pass and the marker must go.
+NEEDS_SESSION_AUTH = pytest.mark.xfail(
+    strict=True, reason="app/deps.py:current_principal ignores the LTI session cookie"
+)
+
+
+@dataclass
+class Sites:
+    """The student's browser (cookies for both sites), the LMS, and the tool's app and database."""
+
+    browser: httpx.AsyncClient
+    lms: FakeLms
+    app: FastAPI
+    database: Database
+    settings: Settings
+
+
+@pytest.fixture
+def e2e_settings(db: Database) -> Settings:
+    return Settings(database_url=db.url, base_url=TOOL, secret="end-to-end-secret-0123", check_workers=1)
+
+
+@pytest.fixture
+async def sites(e2e_settings: Settings, lti_grading_pool: GradingPool) -> AsyncIterator[Sites]:
+    lms = FakeLms()
+    app = create_app(e2e_settings, pool=lti_grading_pool, lms_transport=httpx.ASGITransport(app=lms.app))
+    async with app.router.lifespan_context(app):
+        database: Database = app.state.services.database
+        await run_in_threadpool(
+            add_platform,
+            database,
+            ISSUER,
+            CLIENT_ID,
+            [DEPLOYMENT_ID],
+            f"{ISSUER}/auth",
+            f"{ISSUER}/token",
+            f"{ISSUER}/jwks",
+        )
+        mounts = {
+            "all://tool.test": httpx.ASGITransport(app=app),
+            "all://lms.test": httpx.ASGITransport(app=lms.app),
+        }
+        async with httpx.AsyncClient(mounts=mounts, timeout=30) as browser:
+            # What an LMS administrator does: paste the tool's JWKS URL (here: its keys).
+            lms.trust_tool_keys((await browser.get(f"{TOOL}/.well-known/jwks.json")).json())
+            yield Sites(browser, lms, app, database, e2e_settings)
+
+
+def field(html: str, name: str) -> str:
+    match = re.search(rf'name="{name}" value="([^"]*)"', html)
+    assert match, f"no field {name} in {html[:500]}"
+    return unescape(match.group(1))
+
+
+def meta(html: str, name: str) -> str:
+    match = re.search(rf'<meta name="{name}" content="([^"]*)"', html)
+    assert match, f"no meta {name}"
+    return unescape(match.group(1))
+
+
+async def deep_link(sites: Sites, problem: str) -> dict[str, Any]:
+    """The instructor adds `problem` to the course; returns the content item as the platform read it."""
+    sites.lms.next_launch = NextLaunch(
+        user="teacher-1", roles=[INSTRUCTOR], problem=None, lineitem=None, deep_linking=True
+    )
+    picker = await platform_launch(sites.browser)
+    assert picker.status_code == 200, picker.text
+    action = re.search(r'<form method="post" action="([^"]+)"', picker.text)
+    assert action is not None
+    answer = await sites.browser.post(
+        TOOL + unescape(action.group(1)),
+        data={"csrf_token": field(picker.text, "csrf_token"), "problem": problem},
+    )
+    assert answer.status_code == 200, answer.text
+    config = sites.lms.config()
+    config.get_registration()
+    [item] = config.validate_deeplinking_resp({"JWT": field(answer.text, "JWT")})
+    return dict(item)
+
+
+async def launch_student(sites: Sites, item: dict[str, Any]) -> str:
+    """The student opens the resource link the instructor made; returns the page's CSRF token."""
+    sites.lms.next_launch = NextLaunch(
+        user="student-1", roles=[LEARNER], problem=item["custom"]["problem"], lineitem=LINEITEM
+    )
+    launched = await platform_launch(sites.browser)
+    assert launched.status_code == 303, launched.text
+    page = await sites.browser.get(TOOL + launched.headers["location"])
+    assert page.status_code == 200, page.text
+    assert 'data-mode="session"' in page.text
+    return meta(page.text, "csrf-token")
+
+
+async def submit(sites: Sites, csrf: str, part: str, answer: str) -> httpx.Response:
+    return await sites.browser.post(
+        f"{TOOL}/v1/problems/{PROBLEM}/parts/{part}/submissions",
+        json={"answer": answer},
+        headers={"X-CSRF-Token": csrf},
+    )
+
+
+def _undelivered(database: Database) -> int:
+    with database.session(read_only=True) as session:
+        query = select(func.count()).select_from(LtiScoreOutbox)
+        return int(session.scalar(query.where(LtiScoreOutbox.status.in_((PENDING, SENDING)))) or 0)
+
+
+async def deliver(sites: Sites) -> list[ReceivedScore]:
+    """Drive delivery until nothing is queued (the app's own background worker may deliver some of
+    them: claims keep every row to one sender); returns what the LMS has received so far."""
+    worker = OutboxWorker(sites.database, sites.settings, httpx.ASGITransport(app=sites.lms.app))
+    deadline = time.monotonic() + DELIVERY_TIMEOUT
+    while await run_in_threadpool(_undelivered, sites.database):
+        assert time.monotonic() < deadline, "scores still queued"
+        if await worker.run_once() == 0:
+            await _pause()
+    return list(sites.lms.scores)
+
+
+async def _pause() -> None:
+    await anyio.sleep(0.05)
+
+
+def statuses(database: Database) -> list[str]:
+    with database.session(read_only=True) as session:
+        return list(session.scalars(select(LtiScoreOutbox.status).order_by(LtiScoreOutbox.id)))
+
+
+@NEEDS_SESSION_AUTH
+async def test_deep_linked_problem_is_launched_answered_and_graded_in_the_lms(sites: Sites):
+    item = await deep_link(sites, PROBLEM)
+    assert item["type"] == "ltiResourceLink"
+    assert item["custom"] == {"problem": PROBLEM}
+    assert item["url"] == f"{TOOL}/lti/launch"
+    assert item["lineItem"]["scoreMaximum"] == 3.0
+
+    csrf = await launch_student(sites, item)
+    problem = await sites.browser.get(f"{TOOL}/v1/problems/{PROBLEM}")
+    assert problem.status_code == 200, problem.text
+    assert problem.json()["student"].startswith("lti:")
+
+    preview = await sites.browser.post(
+        f"{TOOL}/v1/problems/{PROBLEM}/parts/acceleration/preview",
+        json={"answer": RIGHT},
+        headers={"X-CSRF-Token": csrf},
+    )
+    assert preview.status_code == 200, preview.text
+    assert preview.json()["error"] is None
+    assert preview.json()["read_as"]["text"]
+    assert await deliver(sites) == [], "a preview is not graded"
+
+    wrong = await submit(sites, csrf, "acceleration", WRONG)
+    assert wrong.status_code == 201, wrong.text
+    assert (wrong.json()["verdict"], wrong.json()["attempts_used"]) == ("incorrect", 1)
+    [first] = await deliver(sites)
+    assert first.line_item_id == "7"
+    assert first.score["userId"] == "student-1"
+    assert (first.score["scoreGiven"], first.score["scoreMaximum"]) == (0.0, 3.0)
+
+    right = await submit(sites, csrf, "acceleration", RIGHT)
+    assert right.status_code == 201, right.text
+    assert (right.json()["verdict"], right.json()["score"]) == ("correct", 1.0)
+    [_, better] = await deliver(sites)
+    assert (better.score["scoreGiven"], better.score["scoreMaximum"]) == (1.0, 3.0)
+    assert better.score["timestamp"] > first.score["timestamp"]
+
+    unreadable = await submit(sites, csrf, "tension", UNREADABLE)
+    assert unreadable.status_code == 201, unreadable.text
+    assert unreadable.json()["verdict"] == "invalid"
+    assert len(await deliver(sites)) == 2, "an invalid answer sends nothing"
+    assert statuses(sites.database) == [DELIVERED, DELIVERED]
+
+
+async def test_api_refuses_a_session_post_without_its_csrf_token(sites: Sites):
+    item = await deep_link(sites, PROBLEM)
+    await launch_student(sites, item)
+    forged = await sites.browser.post(
+        f"{TOOL}/v1/problems/{PROBLEM}/parts/acceleration/submissions", json={"answer": RIGHT}
+    )
+    assert forged.status_code == 401
+    assert await deliver(sites) == []
+
+
+@NEEDS_SESSION_AUTH
+async def test_instructor_sees_a_refused_score_among_delivery_problems(sites: Sites):
+    item = await deep_link(sites, PROBLEM)
+    csrf = await launch_student(sites, item)
+    sites.lms.score_status = 422
+    assert (await submit(sites, csrf, "acceleration", RIGHT)).status_code == 201
+    assert await deliver(sites) == []
+    plaintext, _ = await run_in_threadpool(create_key, sites.database, "instructor", "prof")
+    listed = await sites.browser.get(
+        f"{TOOL}/v1/lti/delivery-problems", headers={"Authorization": f"Bearer {plaintext}"}
+    )
+    assert listed.status_code == 200, listed.text
+    [problem] = listed.json()
+    assert (problem["problem_id"], problem["status"], problem["last_status"]) == (PROBLEM, "failed", 422)
