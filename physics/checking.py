@@ -105,7 +105,7 @@ def preview(job: CheckJob) -> Preview:
     if isinstance(job, NumericJob):
         verdict = check_numeric(job.answer, job.spec)
         return Preview(verdict.read_as, verdict.error)
-    table = {decl.name: make_symbol(_symbol_spec(decl)) for decl in job.symbols}
+    table = {decl.name: make_symbol(symbol_spec(decl)) for decl in job.symbols}
     names = table if job.allowed is None else {name: table[name] for name in job.allowed if name in table}
     try:
         return Preview(parse_math(job.answer, names, limits=job.limits_config).read_as, None)
@@ -133,7 +133,7 @@ def symbolic_question(
     allowed: tuple[str, ...] | None = None,
 ) -> SymbolicQuestion:
     """Read and prepare the reference side of a symbolic job (cached: a course re-uses its references)."""
-    specs = {decl.name: _symbol_spec(decl) for decl in symbols}
+    specs = {decl.name: symbol_spec(decl) for decl in symbols}
     table = {name: make_symbol(spec) for name, spec in specs.items()}
     context = SymbolicContext(
         symbols={table[name]: spec for name, spec in specs.items()},
@@ -151,15 +151,14 @@ def symbolic_question(
     return SymbolicQuestion(names=names, reference=reference)
 
 
-def _symbol_spec(decl: SymbolDecl) -> SymbolSpec:
+def symbol_spec(decl: SymbolDecl) -> SymbolSpec:
+    """The core's spec for a declared symbol, its texts read; SpecError (with path) on a bad one."""
     dimension = None
     if decl.dimension is not None:
         try:
             dimension = unit_dimension(decl.dimension)
-        except AnswerError as error:
-            raise SpecError(
-                f"dimension of {decl.name}: {error.message}", ("symbols", decl.name, "dimension")
-            ) from None
+        except (AnswerError, SpecError) as error:
+            raise SpecError(error.message, ("symbols", decl.name, "dimension")) from None
     low = high = None
     if decl.range is not None:
         low, high = (

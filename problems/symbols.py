@@ -12,6 +12,7 @@ import sympy
 
 from physics.checking import SymbolDecl as CheckSymbolDecl
 from physics.checking import read_expression
+from physics.checking import symbol_spec as checker_symbol_spec
 from physics.dimensions import DIMENSIONLESS, Dimension
 from physics.errors import AnswerError, SpecError
 from physics.symbolic import SymbolSpec, make_symbol
@@ -32,22 +33,8 @@ def bound_text(value: Decimal | str) -> str:
 
 
 def symbol_spec(name: str, decl: SymbolDecl) -> SymbolSpec:
-    """The core's spec for one declared symbol; raises SpecError (with path) on a bad dimension or range."""
-    dimension = unit_dimension_at(decl.dimension, ("symbols", name, "dimension"))
-    low = high = None
-    if decl.range is not None:
-        low = read_bound(decl.range[0], ("symbols", name, "range", 0))
-        high = read_bound(decl.range[1], ("symbols", name, "range", 1))
-    return SymbolSpec(
-        name=name,
-        dimension=dimension,
-        real=decl.real,
-        nonzero=decl.nonzero,
-        negative=decl.negative,
-        integer=decl.integer,
-        low=low,
-        high=high,
-    )
+    """The core's spec for one declared symbol, read exactly as the grading workers read it."""
+    return checker_symbol_spec(check_decl(name, decl))
 
 
 def unit_dimension_at(text: str, path: tuple[str | int, ...]) -> Dimension:
@@ -69,17 +56,18 @@ def symbol_table(doc: ProblemDocument) -> dict[str, sympy.Symbol]:
     return {name: make_symbol(spec) for name, spec in symbol_specs(doc).items()}
 
 
-def check_decls(doc: ProblemDocument) -> tuple[CheckSymbolDecl, ...]:
-    """The symbols as plain text declarations, for check jobs that cross into worker processes."""
-    return tuple(
-        CheckSymbolDecl(
-            name=name,
-            dimension=decl.dimension,
-            real=decl.real,
-            nonzero=decl.nonzero,
-            negative=decl.negative,
-            integer=decl.integer,
-            range=(bound_text(decl.range[0]), bound_text(decl.range[1])) if decl.range is not None else None,
-        )
-        for name, decl in doc.symbols.items()
+def check_decl(name: str, decl: SymbolDecl) -> CheckSymbolDecl:
+    """A symbol as a plain text declaration, for check jobs that cross into worker processes."""
+    return CheckSymbolDecl(
+        name=name,
+        dimension=decl.dimension,
+        real=decl.real,
+        nonzero=decl.nonzero,
+        negative=decl.negative,
+        integer=decl.integer,
+        range=(bound_text(decl.range[0]), bound_text(decl.range[1])) if decl.range is not None else None,
     )
+
+
+def check_decls(doc: ProblemDocument) -> tuple[CheckSymbolDecl, ...]:
+    return tuple(check_decl(name, decl) for name, decl in doc.symbols.items())

@@ -19,10 +19,14 @@ _STYLE = (
     "button{font-size:1rem;padding:.4rem 1rem}"
     "fieldset{border:1px solid #ccc}"
     "input[type=text],input[type=password]{font-size:1.1rem;padding:.3rem;width:100%;box-sizing:border-box}"
-    ".preview{color:#333;min-height:1.5em;font-family:ui-monospace,monospace}"
+    ".preview{color:#333;min-height:1.5em;margin:.25rem 0 .75rem;font-family:ui-monospace,monospace}"
+    ".hint{color:#4d4d4d;margin:.25rem 0}"
     ".verdict[data-verdict=correct]{color:#0a6b2d}.verdict[data-verdict=incorrect]{color:#a11}"
+    ".verdict[data-verdict=invalid]{color:#7a4100}"
     ".part{border-top:1px solid #ddd;margin-top:1.5rem}"
     ":focus-visible{outline:3px solid #1a5fb4;outline-offset:2px}"
+    ".visually-hidden{position:absolute;width:1px;height:1px;overflow:hidden;clip:rect(0 0 0 0);"
+    "white-space:nowrap}"
 )
 
 

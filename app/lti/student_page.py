@@ -36,6 +36,11 @@ class ProblemUnavailable(LookupError):
     """Raised by `student_view` for an unknown or retired problem."""
 
 
+def _hidden(text: str) -> str:
+    """Words for screen readers only: three parts' boxes and buttons must not all sound alike."""
+    return f'<span class="visually-hidden">{escape(text)}</span>'
+
+
 def render_content(view: Mapping[str, Any]) -> str:
     """The problem as HTML: every value from the view is escaped, math becomes MathML."""
     parts_html = []
@@ -54,12 +59,12 @@ def render_content(view: Mapping[str, Any]) -> str:
             f'<h2 id="part-{index}-heading">Part {index + 1}</h2>'
             f"<p>{inline_html(str(part.get('prompt', '')))}</p>"
             f'<form class="answer" data-part="{escape(part_id)}" novalidate>'
-            f'<label for="answer-{index}">Your answer</label>'
+            f'<label for="answer-{index}">Your answer{_hidden(f" to part {index + 1}")}</label>'
             f'<input id="answer-{index}" name="answer" type="text" autocomplete="off" autocapitalize="off" '
             f'spellcheck="false" maxlength="2000" aria-describedby="hint-{index} preview-{index}">'
             f'<p id="hint-{index}" class="hint">{escape(hint)}</p>'
             f'<p id="preview-{index}" class="preview" aria-live="polite"></p>'
-            '<button type="submit">Check answer</button>'
+            f'<button type="submit">Check answer{_hidden(f" to part {index + 1}")}</button>'
             '<p class="verdict" role="status" aria-live="polite"></p>'
             "</form></section>"
         )
@@ -76,7 +81,8 @@ def _shell(problem_id: str, mode: str, content: str) -> str:
         key_form = (
             '<form id="key-form"><h1>Open this problem</h1>'
             '<label for="key">Your student key</label>'
-            '<input id="key" type="password" autocomplete="off" required>'
+            '<input id="key" type="password" autocomplete="off" required autofocus aria-describedby="key-hint">'
+            '<p id="key-hint" class="hint">The key your instructor gave you; it is kept in this tab only.</p>'
             '<p><button type="submit">Open</button></p><p id="key-error" role="alert"></p></form>'
         )
     return (

@@ -150,12 +150,29 @@ def test_malformed_json_is_422_in_the_error_shape(client, student_headers):
     assert response.json()["error"]["code"] == "malformed_request"
 
 
-def test_unreadable_reference_is_422_naming_the_field(client, student_headers):
-    response = client.post("/v1/check", json=symbolic("m", expected="m g +"), headers=student_headers)
+@pytest.mark.parametrize(
+    ("body", "path"),
+    [
+        pytest.param(symbolic("m", expected="m g +"), "expected", id="expected"),
+        pytest.param(
+            symbolic("m", symbols={**WEDGE_SYMBOLS, "m": {"dimension": "blorps"}}),
+            "symbols.m.dimension",
+            id="dimension",
+        ),
+        pytest.param(
+            symbolic("m", symbols={**WEDGE_SYMBOLS, "theta": {"range": [0, "pi/"]}}),
+            "symbols.theta.range.1",
+            id="range",
+        ),
+        pytest.param(symbolic("m", constraints=["M <"]), "constraints.0", id="constraint"),
+    ],
+)
+def test_unreadable_reference_is_422_naming_the_field(client, student_headers, body, path):
+    response = client.post("/v1/check", json=body, headers=student_headers)
     assert response.status_code == 422
     error = response.json()["error"]
     assert error["code"] == "invalid_reference"
-    assert error["details"][0]["path"] == "expected"
+    assert error["details"][0]["path"] == path
 
 
 @pytest.mark.parametrize(

@@ -25,6 +25,7 @@ from app.lti.context import LtiContext
 from app.lti.platforms import add_platform
 from app.lti.router import router
 from app.settings import Settings
+from problems.loader import BANK_DIR
 from tests.lti.fake_lms import CLIENT_ID, DEPLOYMENT_ID, ISSUER, TOOL, FakeLms
 
 PROBLEMS = {
@@ -46,6 +47,15 @@ def lti_grading_pool() -> Iterator[GradingPool]:
     pool.start()
     yield pool
     pool.close()
+
+
+@pytest.fixture(scope="session")
+def yo_yo_bank(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """A bank of the built-in yo-yo alone, for the tests that run the real app: its lifespan compiles
+    every bank problem in a thread that outlives the app, and one problem is all these tests need."""
+    bank = tmp_path_factory.mktemp("bank")
+    shutil.copytree(BANK_DIR / "yo-yo", bank / "yo-yo")
+    return bank
 
 
 @pytest.fixture(scope="session")

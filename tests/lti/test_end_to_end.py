@@ -11,6 +11,7 @@ import time
 from collections.abc import AsyncIterator
 from dataclasses import dataclass
 from html import unescape
+from pathlib import Path
 from typing import Any
 
 import anyio
@@ -70,8 +71,14 @@ class Sites:
 
 
 @pytest.fixture
-def e2e_settings(db: Database) -> Settings:
-    return Settings(database_url=db.url, base_url=TOOL, secret="end-to-end-secret-0123", check_workers=1)
+def e2e_settings(db: Database, yo_yo_bank: Path) -> Settings:
+    return Settings(
+        database_url=db.url,
+        base_url=TOOL,
+        secret="end-to-end-secret-0123",
+        check_workers=1,
+        bank_dir=yo_yo_bank,
+    )
 
 
 @pytest.fixture
@@ -181,7 +188,7 @@ def statuses(database: Database) -> list[str]:
 
 
 @NEEDS_SESSION_AUTH
-async def test_deep_linked_problem_is_launched_answered_and_graded_in_the_lms(sites: Sites):
+async def test_deep_linked_problem_is_launched_answered_and_graded_in_the_lms(sites: Sites) -> None:
     item = await deep_link(sites, PROBLEM)
     assert item["type"] == "ltiResourceLink"
     assert item["custom"] == {"problem": PROBLEM}
@@ -225,7 +232,7 @@ async def test_deep_linked_problem_is_launched_answered_and_graded_in_the_lms(si
     assert statuses(sites.database) == [DELIVERED, DELIVERED]
 
 
-async def test_api_refuses_a_session_post_without_its_csrf_token(sites: Sites):
+async def test_api_refuses_a_session_post_without_its_csrf_token(sites: Sites) -> None:
     item = await deep_link(sites, PROBLEM)
     await launch_student(sites, item)
     forged = await sites.browser.post(
@@ -236,7 +243,7 @@ async def test_api_refuses_a_session_post_without_its_csrf_token(sites: Sites):
 
 
 @NEEDS_SESSION_AUTH
-async def test_instructor_sees_a_refused_score_among_delivery_problems(sites: Sites):
+async def test_instructor_sees_a_refused_score_among_delivery_problems(sites: Sites) -> None:
     item = await deep_link(sites, PROBLEM)
     csrf = await launch_student(sites, item)
     sites.lms.score_status = 422

@@ -6,11 +6,12 @@
   if (!root) { return; }
   var problemId = root.getAttribute("data-problem");
   var KEY_STORE = "physcheck-student-key";
+  var keyMode = root.getAttribute("data-mode") === "key";
   var base = "/v1/problems/" + encodeURIComponent(problemId) + "/parts/";
 
   function headers() {
     var h = { "Content-Type": "application/json", "Accept": "application/json" };
-    var key = root.getAttribute("data-mode") === "key" ? window.sessionStorage.getItem(KEY_STORE) : null;
+    var key = keyMode ? window.sessionStorage.getItem(KEY_STORE) : null;
     if (key) {
       h["Authorization"] = "Bearer " + key;
     } else {
@@ -29,8 +30,30 @@
       });
   }
 
-  function errorText(data) {
-    return (data && data.error && data.error.message) || "Something went wrong; try again.";
+  function errorText(r) {
+    if (r.status === 401) {
+      // The API's own message names bearer headers: not something a student can act on.
+      return keyMode
+        ? "Your key is no longer accepted; reload the page and enter it again."
+        : "Your session has ended; open this activity again from your course.";
+    }
+    return (r.data && r.data.error && r.data.error.message) || "Something went wrong; try again.";
+  }
+
+  // The server's reading is in its own syntax (`*`, `**`): show it the way students write maths.
+  function readable(text) {
+    return text.replace(/\*\*/g, "^").replace(/\*/g, "\u00b7");
+  }
+
+  // Feedback is written like problem statements, with `$...$` around maths; the page shows text
+  // only (never HTML), so drop the delimiters rather than show them.
+  function plainMaths(text) {
+    return String(text).replace(/\\\$|\$/g, function (m) { return m === "$" ? "" : "$"; });
+  }
+
+  function sameWords(a, b) {
+    function norm(s) { return String(s || "").trim().replace(/[.!\s]+$/, "").toLowerCase(); }
+    return norm(a) === norm(b);
   }
 
   function wire(form) {
@@ -49,11 +72,11 @@
         var mine = ++asked;
         post(base + encodeURIComponent(part) + "/preview", { answer: text }).then(function (r) {
           if (mine !== asked) { return; }  // a newer keystroke already asked again
-          if (r.status !== 200) { preview.textContent = errorText(r.data); return; }
+          if (r.status !== 200) { preview.textContent = errorText(r); return; }
           if (r.data.error) {
             preview.textContent = "Cannot read this yet: " + r.data.error.message;
           } else if (r.data.read_as) {
-            preview.textContent = "Read as: " + r.data.read_as.text;
+            preview.textContent = "Read as: " + readable(r.data.read_as.text);
           }
         }).catch(function () { preview.textContent = ""; });
       }, 300);
@@ -65,13 +88,22 @@
       button.disabled = true;
       verdict.textContent = "Checking…";
       post(base + encodeURIComponent(part) + "/submissions", { answer: input.value }).then(function (r) {
-        if (r.status !== 201) { verdict.textContent = errorText(r.data); return; }
+        verdict.removeAttribute("data-verdict");
+        if (r.status !== 201) { verdict.textContent = errorText(r); return; }
         var d = r.data;
         var words = { correct: "Correct.", incorrect: "Not correct.", invalid: "Could not read this answer." };
-        var lines = [words[d.verdict] || d.verdict];
-        if (d.feedback) { lines.push(d.feedback); }
-        if (d.error && d.error.message) { lines.push(d.error.message); }
-        if (typeof d.attempts_used === "number") { lines.push("Attempts used: " + d.attempts_used + "."); }
+        var word = words[d.verdict] || d.verdict;
+        var lines = [word];
+        // The judge's feedback for a right answer is often just "Correct.": say it once.
+        if (d.feedback && !sameWords(d.feedback, word)) { lines.push(plainMaths(d.feedback)); }
+        if (d.error && d.error.message && d.error.message !== d.feedback) { lines.push(d.error.message); }
+        if (d.verdict === "incorrect" && d.score > 0 && d.score < 1) {
+          lines.push("Partial credit: " + Math.round(d.score * 100) + "%.");
+        }
+        if (typeof d.attempts_used === "number") {
+          lines.push("Attempts used: " + d.attempts_used +
+            (typeof d.max_attempts === "number" ? " of " + d.max_attempts : "") + ".");
+        }
         verdict.textContent = lines.join(" ");
         verdict.setAttribute("data-verdict", d.verdict);
       }).catch(function () {
