@@ -42,7 +42,8 @@ from tests.lti.fake_lms import (
     ReceivedScore,
 )
 
-pytestmark = [pytest.mark.anyio, pytest.mark.slow]
+# About a second or two each (one bank problem, one shared grading worker): not marked slow.
+pytestmark = pytest.mark.anyio
 
 PROBLEM = "yo-yo"  # three parts, so the line item is out of 3
 LINEITEM = f"{ISSUER}/lineitems/7"
