@@ -21,7 +21,7 @@ lint: $(BIN)/physcheck
 	$(BIN)/mypy
 
 test: lint
-	$(BIN)/physcheck bank verify --variants 5
+	$(BIN)/physcheck bank verify
 	$(BIN)/pytest -q
 
 # Re-pin both locks from pyproject.toml (needs the network to PyPI).

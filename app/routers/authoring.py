@@ -15,7 +15,6 @@ from app.deps import Instructor, ServicesDep
 from app.errors import AppError, Forbidden
 from app.lti.outbox import DeliveryProblem, list_delivery_problems
 from app.schemas.problems import (
-    DeliveryProblemPublic,
     MethodPublic,
     ProblemCreated,
     ReferencePublic,
@@ -189,15 +188,12 @@ def solution_of(compiled: CompiledProblem) -> SolutionPublic:
     )
 
 
-@router.get("/v1/lti/delivery-problems", response_model=list[DeliveryProblemPublic])
-async def delivery_problems(services: ServicesDep, _: Instructor) -> list[DeliveryProblemPublic]:
+@router.get("/v1/lti/delivery-problems", response_model=list[DeliveryProblem])
+async def delivery_problems(services: ServicesDep, _: Instructor) -> list[DeliveryProblem]:
     """Scores an LMS refused (422, 403…) or has not accepted yet, newest first."""
 
     def read() -> list[DeliveryProblem]:
         with services.database.session(read_only=True) as session:
             return list_delivery_problems(session)
 
-    return [
-        DeliveryProblemPublic.model_validate(item, from_attributes=True)
-        for item in await run_in_threadpool(read)
-    ]
+    return await run_in_threadpool(read)

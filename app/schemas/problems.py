@@ -141,20 +141,3 @@ class SolutionPublic(BaseModel):
     proofs: dict[str, str]
     simulation: dict[str, SimulationPublic]
     methods_agree: bool
-
-
-class DeliveryProblemPublic(BaseModel):
-    """A grade passback that failed or is still being retried."""
-
-    outbox_id: int
-    student: str
-    problem_id: str
-    issuer: str
-    lineitem_url: str
-    score_given: float
-    score_maximum: float
-    timestamp: datetime
-    status: str
-    attempts: int
-    last_status: int | None
-    last_error: str | None

@@ -143,3 +143,8 @@ def test_attempt_limit_refuses_graded_answers_but_files_unreadable_ones(
         ).status_code
         == 201
     )
+
+
+def test_grade_passback_problems_are_for_instructors(client, instructor_headers, student_headers):
+    assert client.get("/v1/lti/delivery-problems", headers=instructor_headers).json() == []
+    assert client.get("/v1/lti/delivery-problems", headers=student_headers).status_code == 403

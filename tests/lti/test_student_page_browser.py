@@ -83,6 +83,7 @@ def served(tmp_path: Path, lti_grading_pool: GradingPool, yo_yo_bank: Path) -> I
         secret="browser-test-secret-0123",
         check_workers=1,
         bank_dir=yo_yo_bank,
+        warm_up=False,  # the one problem compiles on first use
     )
     app = create_app(settings, pool=lti_grading_pool, lms_transport=httpx.ASGITransport(app=lms.app))
     port = free_port()
