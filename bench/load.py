@@ -35,6 +35,7 @@ import json
 import math
 import os
 import random
+import shutil
 import signal
 import socket
 import subprocess
@@ -424,7 +425,8 @@ async def bench(url: str, key: str, args: argparse.Namespace) -> None:
     ratios = [f"{p.name.split()[0]} {percentile(p.honest.latencies, 50) / floor:.1f}x" for p in phases[1:-1]]
     last = phases[-1]
     ratios.append(f"check+hostile, honest {percentile(last.honest.latencies, 50) / floor:.1f}x")
-    ratios.append(f"hostile {percentile(last.hostile.latencies, 50) / floor:.1f}x")
+    if last.hostile.latencies:
+        ratios.append(f"hostile {percentile(last.hostile.latencies, 50) / floor:.1f}x")
     print(f"p50 / floor p50 ({floor:.1f} ms): " + "; ".join(ratios))
 
 
@@ -570,6 +572,9 @@ def parse_args(argv: Sequence[str] | None) -> argparse.Namespace:
         "--url", default=None, help=f"drive this running server instead (http://{LOOPBACK}:PORT)"
     )
     parser.add_argument("--key", default=None, help="an instructor key of the server given by --url")
+    parser.add_argument(
+        "--server-log", type=Path, default=None, help="keep its own server's log in this file"
+    )
     args = parser.parse_args(argv)
     if args.duration <= 0 or args.concurrency < 1 or args.warmup < 0 or not 0 <= args.hostile_percent <= 100:
         parser.error("need --duration > 0, --concurrency >= 1, --warmup >= 0, 0 <= --hostile-percent <= 100")
@@ -599,6 +604,8 @@ def run_own_server(args: argparse.Namespace) -> None:
             raise
         finally:
             server.stop()
+            if args.server_log is not None:
+                shutil.copyfile(server.log_path, args.server_log)
 
 
 def main(argv: Sequence[str] | None = None) -> int:

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import logging
+
 from starlette.concurrency import run_in_threadpool
 
 from app.db import submissions as submission_repository
@@ -10,6 +12,9 @@ from app.schemas.check import VerdictPublic
 from app.schemas.problems import SubmissionResult
 from app.services import Services
 from physics.verdict import Verdict
+
+log = logging.getLogger("physcheck.submissions")
+LOGGED_ANSWER_CHARS = 120
 
 
 async def submit_answer(
@@ -22,6 +27,18 @@ async def submit_answer(
     compiled = await run_in_threadpool(catalog.compiled, record)
     job = compiled.job(part_id, answer, catalog.variant(record, student))
     verdict = await services.pool.check(job)
+    log.info(
+        "graded",
+        extra={
+            "problem": record.id,
+            "part": part_id,
+            "student": student,
+            "verdict": verdict.outcome.value,
+            "reason": verdict.reason.value,
+            # Bounded and escaped by the JSON formatter: an answer cannot forge or flood log lines.
+            "answer": answer if len(answer) <= LOGGED_ANSWER_CHARS else answer[:LOGGED_ANSWER_CHARS] + "…",
+        },
+    )
     stored, used = await run_in_threadpool(
         _file, services, record, part_id, student, answer, verdict, max_attempts
     )
