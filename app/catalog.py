@@ -31,6 +31,7 @@ class Catalog:
         self._limit = documents_cached
         self._lock = threading.Lock()
         self.warm = threading.Event()
+        self._closing = threading.Event()
 
     def sync_builtin(self) -> list[ProblemRecord]:
         """Store the built-in bank: unchanged files keep their version, edited ones get a new one."""
@@ -51,12 +52,18 @@ class Catalog:
         """Compile every live problem once (derivations take seconds); then the instance is ready."""
         try:
             for record in self.list():
+                if self._closing.is_set():
+                    return
                 try:
                     self.compiled(record)
                 except Exception:  # one broken problem must not keep the others cold
                     log.exception("could not compile problem %r version %d", record.id, record.version)
         finally:
             self.warm.set()
+
+    def close(self) -> None:
+        """Stop a warm-up still running (it would otherwise compile on after the app has shut down)."""
+        self._closing.set()
 
     def get(self, problem_id: str, version: int | None = None) -> ProblemRecord:
         with self._database.session(read_only=True) as session:

@@ -8,6 +8,7 @@ from fastapi import Depends, Header, Request
 
 from app.auth import Principal, bearer_token
 from app.errors import Forbidden, RateLimited, Unauthenticated
+from app.lti.sessions import principal_from_session
 from app.services import Services
 
 
@@ -20,14 +21,23 @@ ServicesDep = Annotated[Services, Depends(get_services)]
 
 
 def current_principal(
-    services: ServicesDep, authorization: Annotated[str | None, Header()] = None
+    request: Request, services: ServicesDep, authorization: Annotated[str | None, Header()] = None
 ) -> Principal:
-    token = bearer_token(authorization)
-    if token is None:
-        raise Unauthenticated("Send an API key as 'Authorization: Bearer <key>'.")
-    principal = services.keys.authenticate(token)
-    if principal is None:
-        raise Unauthenticated("This API key is unknown or revoked.")
+    """The caller: a bearer API key, or else the session an LTI launch opened (POSTs need its CSRF token)."""
+    if authorization is None:
+        principal = principal_from_session(request)
+        if principal is None:
+            raise Unauthenticated(
+                "Send an API key as 'Authorization: Bearer <key>', or open this from your course."
+            )
+    else:
+        token = bearer_token(authorization)
+        found = None if token is None else services.keys.authenticate(token)
+        if found is None:
+            raise Unauthenticated(
+                "This API key is unknown or revoked; send it as 'Authorization: Bearer <key>'."
+            )
+        principal = found
     wait = services.key_limiter.retry_after(principal.key_id)
     if wait is None and principal.student is not None:
         wait = services.student_limiter.retry_after(principal.student)

@@ -39,6 +39,7 @@ class Storage:
     catalog: Catalog
 
     def close(self) -> None:
+        self.catalog.close()
         self.database.dispose()
 
 

@@ -55,9 +55,6 @@ DELIVERY_TIMEOUT = 20.0
 # app/deps.py:current_principal reads only `Authorization: Bearer` and never calls
 # `app.lti.sessions.principal_from_session`, so the page's API calls after a launch get 401. Strict:
 # once it does, these pass and the marker must go.
-NEEDS_SESSION_AUTH = pytest.mark.xfail(
-    strict=True, reason="app/deps.py:current_principal ignores the LTI session cookie"
-)
 
 
 @dataclass
@@ -189,7 +186,6 @@ def statuses(database: Database) -> list[str]:
         return list(session.scalars(select(LtiScoreOutbox.status).order_by(LtiScoreOutbox.id)))
 
 
-@NEEDS_SESSION_AUTH
 async def test_deep_linked_problem_is_launched_answered_and_graded_in_the_lms(sites: Sites) -> None:
     item = await deep_link(sites, PROBLEM)
     assert item["type"] == "ltiResourceLink"
@@ -244,7 +240,6 @@ async def test_api_refuses_a_session_post_without_its_csrf_token(sites: Sites) -
     assert await deliver(sites) == []
 
 
-@NEEDS_SESSION_AUTH
 async def test_instructor_sees_a_refused_score_among_delivery_problems(sites: Sites) -> None:
     item = await deep_link(sites, PROBLEM)
     csrf = await launch_student(sites, item)

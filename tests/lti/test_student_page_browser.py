@@ -215,7 +215,6 @@ async def _launch(served: Served) -> str:
 
 # app/deps.py:current_principal never calls `principal_from_session`, so the page's preview and
 # submission get 401 with the session cookie. Strict: remove the marker once that is wired.
-@pytest.mark.xfail(strict=True, reason="app/deps.py:current_principal ignores the LTI session cookie")
 def test_launched_student_sees_preview_then_verdict(served: Served) -> None:
     session_id = anyio.run(_launch, served)
 
