@@ -304,10 +304,6 @@ class Phase:
     honest: Tally = field(default_factory=Tally)
     hostile: Tally = field(default_factory=Tally)
 
-    @property
-    def count(self) -> int:
-        return len(self.honest.latencies) + len(self.hostile.latencies)
-
 
 def record(tally: Tally, call: Call, status: str, payload: bytes, seconds: float) -> None:
     tally.latencies.append(seconds)

@@ -74,6 +74,17 @@ def _safe(fn: Callable[..., Any], *args: Any) -> Mpf | None:
     return _finite(value)
 
 
+# No function is evaluated at |x| beyond 2^64: exp(x) has no value worth comparing there, and mpmath
+# would first compute ln 2 or pi to as many bits as x has (m^(m^(m^m)) made that run for minutes).
+_MAX_EXP_ARGUMENT_BITS = 64
+
+
+def _exp(x: Mpf, prec: int) -> Mpf | None:
+    if magnitude_bits(x) > _MAX_EXP_ARGUMENT_BITS:
+        return None
+    return as_mpf(libmp.mpf_exp(x, prec, RND))
+
+
 def as_mpf(value: Any) -> Mpf:
     """Types a libmp result (mpmath is untyped)."""
     result: Mpf = value
@@ -144,7 +155,7 @@ _UNARY: dict[type, Unary] = {
     sympy.asinh: _plain(libmp.mpf_asinh),
     sympy.acosh: _plain(libmp.mpf_acosh),
     sympy.atanh: _plain(libmp.mpf_atanh),
-    sympy.exp: _plain(libmp.mpf_exp),
+    sympy.exp: _exp,
     sympy.log: _log,
     sympy.Abs: lambda x, prec: libmp.mpf_abs(x),
     sympy.sign: _sign,
@@ -162,7 +173,7 @@ def _pow_point(base: Mpf, exponent: Mpf, prec: int) -> Mpf | None:
             return None
         return as_mpf(libmp.mpf_pow_int(base, int(libmp.to_int(exponent)), prec, RND))
     logarithm = libmp.mpf_log(base, prec + 20, RND)
-    return as_mpf(libmp.mpf_exp(libmp.mpf_mul(exponent, logarithm, prec + 20, RND), prec, RND))
+    return _exp(libmp.mpf_mul(exponent, logarithm, prec + 20, RND), prec)
 
 
 class Evaluator:
@@ -206,7 +217,10 @@ class Evaluator:
             return self._pow(expr)
         unary = _UNARY.get(type(expr))
         if unary is not None and len(expr.args) == 1:
-            return [None if x is None else _safe(unary, x, prec) for x in self(expr.args[0])]
+            return [
+                None if x is None or magnitude_bits(x) > _MAX_EXP_ARGUMENT_BITS else _safe(unary, x, prec)
+                for x in self(expr.args[0])
+            ]
         if isinstance(expr, sympy.atan2):
             ys, xs = self(expr.args[0]), self(expr.args[1])
             return [
@@ -255,7 +269,7 @@ class Evaluator:
         prec = self.prec
         if base is sympy.E:
             exponents = self(exponent)
-            return [None if x is None else _safe(libmp.mpf_exp, x, prec, RND) for x in exponents]
+            return [None if x is None else _safe(_exp, x, prec) for x in exponents]
         bases = self(base)
         if exponent.is_Integer:
             n = int(exponent)

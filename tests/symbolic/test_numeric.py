@@ -62,3 +62,24 @@ def test_a_genuine_small_difference_survives():
 
 def test_only_the_undefined_points_are_none():
     assert at(sympy.sqrt(x), (-1, 1), (4, 1)) == [None, 2.0]
+
+
+TOWERS = [
+    "x^(x^(x^x))",
+    "exp(exp(exp(exp(x))))",
+    "2^(2^(2^(2^x)))",
+    "sinh(sinh(sinh(sinh(x))))",
+    "tan(exp(exp(exp(x))))",
+    "sin(10^300 x)",
+    "log(exp(exp(exp(x))))",
+]
+
+
+@pytest.mark.timeout(20)
+@pytest.mark.parametrize("answer", TOWERS)
+def test_towers_of_functions_are_judged_without_computing_astronomical_numbers(answer):
+    # mpmath would compute ln 2 or pi to as many bits as the argument has: minutes for these.
+    from physics.checking import SymbolDecl, SymbolicJob, run_job
+
+    verdict = run_job(SymbolicJob(answer, "x", (SymbolDecl("x", "1"),)))
+    assert (verdict.outcome.value, verdict.reason.value) == ("incorrect", "wrong_value")
