@@ -32,6 +32,7 @@ class Catalog:
         self._lock = threading.Lock()
         self.warm = threading.Event()
         self._closing = threading.Event()
+        self._compiling: dict[tuple[str, int, str], threading.Lock] = {}
 
     def sync_builtin(self) -> list[ProblemRecord]:
         """Store the built-in bank: unchanged files keep their version, edited ones get a new one."""
@@ -88,8 +89,16 @@ class Catalog:
         return doc
 
     def compiled(self, record: ProblemRecord) -> CompiledProblem:
-        """Derivations and prepared references, cached by the bank's compiler per (id, version, hash)."""
-        return compile_problem(self.document(record), record.version)
+        """Derivations and prepared references, cached by the bank's compiler per (id, version, hash).
+
+        One compilation per problem version at a time: a burst of first requests waits for it rather
+        than deriving the same model once per thread.
+        """
+        key = (record.id, record.version, record.document_hash)
+        with self._lock:
+            lock = self._compiling.setdefault(key, threading.Lock())
+        with lock:
+            return compile_problem(self.document(record), record.version)
 
     def max_attempts(self, record: ProblemRecord, part_id: str) -> int | None:
         """The part's own limit, else the problem's; None: unlimited."""
