@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import threading
 import time
 
 import pytest
@@ -65,3 +66,47 @@ def test_unknown_route_answers_in_the_error_shape(client):
 def test_every_response_carries_a_request_id(client):
     assert client.get("/health").headers["x-request-id"]
     assert client.get("/health", headers={"X-Request-ID": "trace-42"}).headers["x-request-id"] == "trace-42"
+
+
+CONTRACT_PATHS = {
+    ("post", "/v1/check"),
+    ("get", "/v1/problems"),
+    ("post", "/v1/problems"),
+    ("get", "/v1/problems/{problem_id}"),
+    ("put", "/v1/problems/{problem_id}"),
+    ("delete", "/v1/problems/{problem_id}"),
+    ("get", "/v1/problems/{problem_id}/solution"),
+    ("post", "/v1/problems/{problem_id}/parts/{part_id}/submissions"),
+    ("get", "/v1/submissions"),
+}
+
+
+def test_openapi_documents_every_contract_endpoint(client):
+    spec = client.get("/openapi.json").json()
+    documented = {(method, path) for path, item in spec["paths"].items() for method in item}
+    assert documented >= CONTRACT_PATHS
+    assert client.get("/docs").status_code == 200
+
+
+def test_a_full_grading_queue_is_503_with_retry_after(settings):
+    from app.grading.pool import GradingPool
+    from tests.api.slow_task import hanging_grade
+
+    pool = GradingPool(workers=1, timeout=3.0, memory_mb=1024, max_tasks=10, queue_size=0, task=hanging_grade)
+    pool.start()
+    try:
+        with TestClient(create_app(settings, pool=pool)) as client:
+            headers = _headers(settings, "student", "ada")
+            hang = {"kind": "symbolic", "answer": "hang", "expected": "m", "symbols": {"m": {}}}
+            first = threading.Thread(target=lambda: client.post("/v1/check", json=hang, headers=headers))
+            first.start()
+            deadline = time.monotonic() + 10
+            while pool.in_flight == 0 and time.monotonic() < deadline:
+                time.sleep(0.02)
+            response = client.post("/v1/check", json=BODY, headers=headers)
+            first.join()
+    finally:
+        pool.close()
+    assert response.status_code == 503
+    assert response.json()["error"]["code"] == "busy"
+    assert response.headers["Retry-After"] == "1"
