@@ -12,6 +12,7 @@ from app.db import problems as problem_repository
 from app.db.database import Database
 from app.db.errors import ProblemExists, ProblemNotFound
 from app.db.records import ProblemRecord
+from physics.checking import CheckJob
 from problems.compiled import CompiledProblem, compile_problem
 from problems.loader import load_bank, parse_problem
 from problems.schema import ProblemDocument
@@ -99,6 +100,13 @@ class Catalog:
             lock = self._compiling.setdefault(key, threading.Lock())
         with lock:
             return compile_problem(self.document(record), record.version)
+
+    def job(self, record: ProblemRecord, part_id: str, student: str, answer: str) -> CheckJob:
+        """The check job for one student's answer: the student's own numbers for a numeric part.
+
+        Sympy work (compiling, evaluating the numeric reference): call it off the event loop.
+        """
+        return self.compiled(record).job(part_id, answer, self.variant(record, student))
 
     def max_attempts(self, record: ProblemRecord, part_id: str) -> int | None:
         """The part's own limit, else the problem's; None: unlimited."""

@@ -24,8 +24,7 @@ async def submit_answer(
     # No early refusal when attempts are used up: an unreadable answer uses none and is still filed,
     # and only grading tells which it is. The insert refuses a graded one over the limit.
     max_attempts = catalog.max_attempts(record, part_id)
-    compiled = await run_in_threadpool(catalog.compiled, record)
-    job = compiled.job(part_id, answer, catalog.variant(record, student))
+    job = await run_in_threadpool(catalog.job, record, part_id, student, answer)
     verdict = await services.pool.check(job)
     log.info(
         "graded",

@@ -12,7 +12,6 @@ from app.db.records import ProblemRecord
 from app.deps import CurrentPrincipal, ServicesDep
 from app.errors import AppError, NotFound
 from app.grading.submit import submit_answer
-from app.schemas.check import InputErrorPublic, ReadAsPublic
 from app.schemas.problems import (
     PartSummary,
     PreviewIn,
@@ -97,18 +96,9 @@ async def preview(
     who = student_of(principal, None)
     record = await run_in_threadpool(services.catalog.get, problem_id)
     _require_part(services, record, part_id)
-    compiled = await run_in_threadpool(services.catalog.compiled, record)
-    result = await services.pool.preview(
-        compiled.job(part_id, body.answer, services.catalog.variant(record, who))
-    )
-    return PreviewPublic(
-        read_as=None
-        if result.read_as is None
-        else ReadAsPublic(text=result.read_as.text, latex=result.read_as.latex),
-        error=None
-        if result.error is None
-        else InputErrorPublic(message=result.error.message, position=result.error.position),
-    )
+    job = await run_in_threadpool(services.catalog.job, record, part_id, who, body.answer)
+    result = await services.pool.preview(job)
+    return PreviewPublic(read_as=result.read_as, error=result.error)
 
 
 def _require_part(services: Services, record: ProblemRecord, part_id: str) -> None:

@@ -59,7 +59,7 @@ class SymbolIn(Strict):
             nonzero=self.nonzero,
             negative=self.negative,
             integer=self.integer,
-            range=bounds,  # type: ignore[arg-type]
+            range=bounds,
         )
 
 
@@ -134,11 +134,15 @@ CheckIn = Annotated[SymbolicCheckIn | NumericCheckIn, Field(discriminator="kind"
 
 
 class ReadAsPublic(BaseModel):
+    model_config = ConfigDict(from_attributes=True)  # built straight from physics.verdict.ReadAs
+
     text: str
     latex: str
 
 
 class InputErrorPublic(BaseModel):
+    model_config = ConfigDict(from_attributes=True)  # built straight from physics.verdict.InputProblem
+
     message: str
     position: int | None
 
@@ -158,10 +162,6 @@ class VerdictPublic(BaseModel):
             score=verdict.score,
             reason=verdict.reason.value,
             feedback=verdict.feedback,
-            read_as=None
-            if verdict.read_as is None
-            else ReadAsPublic(text=verdict.read_as.text, latex=verdict.read_as.latex),
-            error=None
-            if verdict.error is None
-            else InputErrorPublic(message=verdict.error.message, position=verdict.error.position),
+            read_as=verdict.read_as,
+            error=verdict.error,
         )
