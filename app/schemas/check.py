@@ -35,6 +35,10 @@ def exact_decimal(value: Number | str) -> Decimal:
     return result
 
 
+def _bound_text(bound: Number | str) -> str:
+    return bound if isinstance(bound, str) else repr(bound)
+
+
 class Strict(BaseModel):
     model_config = ConfigDict(extra="forbid")
 
@@ -49,9 +53,7 @@ class SymbolIn(Strict):
     meaning: ShortText | None = None
 
     def decl(self, name: str) -> SymbolDecl:
-        bounds = (
-            None if self.range is None else tuple(b if isinstance(b, str) else repr(b) for b in self.range)
-        )
+        bounds = None if self.range is None else (_bound_text(self.range[0]), _bound_text(self.range[1]))
         return SymbolDecl(
             name=name,
             dimension=self.dimension,
