@@ -19,7 +19,9 @@ def _serve(args: argparse.Namespace, settings: Settings) -> int:
     from app.main import create_app
 
     backend = settings.database_url.split(":", 1)[0]
-    print(f"physcheck: serving http://{args.host}:{args.port} ({backend}; API docs at /docs)", file=sys.stderr)
+    print(
+        f"physcheck: serving http://{args.host}:{args.port} ({backend}; API docs at /docs)", file=sys.stderr
+    )
     uvicorn.run(create_app(settings), host=args.host, port=args.port, log_config=None, proxy_headers=True)
     return 0
 

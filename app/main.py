@@ -18,7 +18,7 @@ from app.lti.context import LtiContext
 from app.lti.grades import queue_grade
 from app.lti.outbox import OutboxWorker
 from app.middleware import BodyLimit, RequestContext, configure_logging
-from app.ratelimit import RateLimiter
+from app.ratelimit import rate_limiters
 from app.routers import authoring as authoring_routes
 from app.routers import check, health, problems, submissions
 from app.services import Services
@@ -52,13 +52,16 @@ def create_app(
             await run_in_threadpool(grading.start)
         # Started on the first upload: most instances never vet one.
         authoring = AuthoringPool(settings.upload_timeout_seconds, settings.check_memory_mb)
+        key_limiter, student_limiter = rate_limiters(
+            settings.redis_url, settings.rate_limit_per_minute, settings.student_rate_limit_per_minute
+        )
         app.state.services = Services(
             settings=settings,
             database=storage.database,
             pool=grading,
             keys=storage.keys,
-            key_limiter=RateLimiter(settings.rate_limit_per_minute),
-            student_limiter=RateLimiter(settings.student_rate_limit_per_minute),
+            key_limiter=key_limiter,
+            student_limiter=student_limiter,
             catalog=storage.catalog,
             authoring=authoring,
             on_graded=[queue_grade],

@@ -31,6 +31,8 @@ class Settings(BaseSettings):
     max_body_bytes: int = Field(default=2 * 1024 * 1024, ge=1024)
     max_answer_chars: int = Field(default=2000, ge=10)
 
+    # Shared rate-limit counts for several instances (redis://host:6379/0); unset: per instance.
+    redis_url: str | None = None
     rate_limit_per_minute: int = Field(default=600, ge=1)
     student_rate_limit_per_minute: int = Field(default=60, ge=1)
 
