@@ -111,8 +111,8 @@ class Catalog:
     def max_attempts(self, record: ProblemRecord, part_id: str) -> int | None:
         """The part's own limit, else the problem's; None: unlimited."""
         doc = self.document(record)
-        limit: int | None = getattr(doc.part(part_id), "max_attempts", None)
-        return limit if limit is not None else getattr(doc, "max_attempts", None)
+        limit = doc.part(part_id).max_attempts
+        return limit if limit is not None else doc.max_attempts
 
     def student_view(self, problem_id: str, student: str) -> dict[str, Any]:
         """One student's variant of the latest version, as the API and the student page show it."""

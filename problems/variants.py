@@ -20,7 +20,7 @@ import sympy
 
 from physics.errors import SpecError
 from physics.units import parse_units
-from problems.schema import DEFAULT_SIGFIGS, GivenDecl, NumericPart, ProblemDocument, SymbolicPart
+from problems.schema import DEFAULT_SIGFIGS, GivenDecl, ProblemDocument, SymbolicPart
 
 REFERENCE_DIGITS = 30  # working precision of the numeric reference
 REFERENCE_SIGNIFICANT = 12  # digits kept in the reference value
@@ -243,14 +243,20 @@ def student_view(problem: ProblemDocument, variant: Variant) -> dict[str, Any]:
     parts: list[dict[str, Any]] = []
     for part in problem.parts:
         if isinstance(part, SymbolicPart):
-            names = part.symbols if part.symbols is not None else list(problem.symbols)
-            parts.append(
-                {"id": part.id, "kind": part.kind, "prompt": part.prompt, "units": None, "symbols": names}
-            )
-        elif isinstance(part, NumericPart):
-            parts.append(
-                {"id": part.id, "kind": part.kind, "prompt": part.prompt, "units": part.units, "symbols": []}
-            )
+            units, names = None, part.symbols if part.symbols is not None else list(problem.symbols)
+        else:
+            units, names = part.units, []
+        limit = part.max_attempts if part.max_attempts is not None else problem.max_attempts
+        parts.append(
+            {
+                "id": part.id,
+                "kind": part.kind,
+                "prompt": part.prompt,
+                "units": units,
+                "symbols": names,
+                "max_attempts": limit,
+            }
+        )
     return {
         "id": problem.id,
         "title": problem.title,

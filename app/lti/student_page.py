@@ -1,6 +1,8 @@
 """The student page `/p/{problem_id}`: statement (MathML made here), one answer box per part with a
 live preview, verdicts and attempts. After a launch the session cookie identifies the student; outside
 an LMS the page asks for a student key, kept in the tab's sessionStorage and sent as a bearer token.
+On load the script restores each part's last answer, its verdict and the attempts used, from
+`GET /v1/submissions` (the student view has no attempt limits, so "N of M" only once a submission says M).
 
 What it needs from the app, through `LtiContext`: `student_view(problem_id, student)` (the API's
 student view: title, statement, parts) and, for the key mode, `authenticate_key(key)`.
@@ -41,8 +43,20 @@ def _hidden(text: str) -> str:
     return f'<span class="visually-hidden">{escape(text)}</span>'
 
 
-def render_content(view: Mapping[str, Any]) -> str:
-    """The problem as HTML: every value from the view is escaped, math becomes MathML."""
+def _limit_attribute(part: Mapping[str, Any]) -> str:
+    """`data-max-attempts` when the view states the part's limit (today's student view does not)."""
+    limit = part.get("max_attempts")
+    if isinstance(limit, int) and not isinstance(limit, bool) and limit > 0:
+        return f' data-max-attempts="{limit}"'
+    return ""
+
+
+def render_content(view: Mapping[str, Any], *, student: str | None = None) -> str:
+    """The problem as HTML: every value from the view is escaped, math becomes MathML.
+
+    `student` (whose work the page submits) goes on each answer form so that the script asks the API
+    for that student's earlier submissions only: an instructor's key sees everyone's otherwise."""
+    owner = f' data-student="{escape(student)}"' if student else ""
     parts_html = []
     for index, part in enumerate(view.get("parts", [])):
         part_id = str(part.get("id", ""))
@@ -58,7 +72,7 @@ def render_content(view: Mapping[str, Any]) -> str:
             f'<section class="part" aria-labelledby="part-{index}-heading">'
             f'<h2 id="part-{index}-heading">Part {index + 1}</h2>'
             f"<p>{inline_html(str(part.get('prompt', '')))}</p>"
-            f'<form class="answer" data-part="{escape(part_id)}" novalidate>'
+            f'<form class="answer" data-part="{escape(part_id)}"{owner}{_limit_attribute(part)} novalidate>'
             f'<label for="answer-{index}">Your answer{_hidden(f" to part {index + 1}")}</label>'
             f'<input id="answer-{index}" name="answer" type="text" autocomplete="off" autocapitalize="off" '
             f'spellcheck="false" maxlength="2000" aria-describedby="hint-{index} preview-{index}">'
@@ -66,6 +80,9 @@ def render_content(view: Mapping[str, Any]) -> str:
             f'<p id="preview-{index}" class="preview" aria-live="polite"></p>'
             f'<button type="submit">Check answer{_hidden(f" to part {index + 1}")}</button>'
             '<p class="verdict" role="status" aria-live="polite"></p>'
+            # Not a live region: the earlier work the script restores on load is there to be read, not
+            # announced; the live verdict above speaks only for submissions made on this page.
+            '<p class="earlier" hidden></p>'
             "</form></section>"
         )
     return (
@@ -131,7 +148,7 @@ async def student_page(problem_id: str, request: Request, context: LtiContextDep
         return _not_found(ancestors)
     return html_page(
         str(view.get("title", "physcheck")),
-        _shell(problem_id, "session", render_content(view)),
+        _shell(problem_id, "session", render_content(view, student=who)),
         frame_ancestors=ancestors,
         script_src=SCRIPT_PATH,
         meta={"csrf-token": record.csrf_token},
@@ -154,7 +171,7 @@ async def student_content(problem_id: str, request: Request, context: LtiContext
         view = await run_in_threadpool(_view, context, problem_id, who)
     if view is None:
         return Response("not found", status_code=404, media_type="text/plain", headers=headers)
-    return HTMLResponse(render_content(view), headers=headers)
+    return HTMLResponse(render_content(view, student=who), headers=headers)
 
 
 @functools.cache

@@ -40,6 +40,7 @@ class PartPublic(BaseModel):
     prompt: str
     units: str | None
     symbols: list[str]
+    max_attempts: int | None = None  # graded attempts allowed; None: unlimited
 
 
 class ProblemPublic(BaseModel):

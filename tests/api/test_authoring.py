@@ -124,6 +124,8 @@ def test_attempt_limit_refuses_graded_answers_but_files_unreadable_ones(
     doc = atwood_upload()
     doc["max_attempts"] = 2
     assert upload(client, instructor_headers, doc).status_code == 201
+    view = client.get("/v1/problems/my-atwood", headers=student_headers).json()
+    assert {part["max_attempts"] for part in view["parts"]} == {2}
     url = "/v1/problems/my-atwood/parts/acceleration/submissions"
     statuses = [
         client.post(url, json={"answer": f"{i + 1} g"}, headers=student_headers).status_code for i in range(3)

@@ -3,11 +3,13 @@
 from __future__ import annotations
 
 import re
+from typing import Any
 
 import httpx
 import pytest
 
 from app.lti.mathml import tex_to_mathml, text_to_html
+from app.lti.student_page import render_content
 from tests.lti.conftest import STUDENT_KEY, platform_launch
 from tests.lti.fake_lms import ISSUER, TOOL
 
@@ -110,3 +112,73 @@ def test_tex_becomes_mathml(tex: str, expected: str):
 def test_no_markup_survives_rendering(text: str):
     html = text_to_html(text)
     assert "<script" not in html and "<img" not in html and '"onmouseover' not in html
+
+
+YO_YO_VIEW: dict[str, Any] = {
+    "title": "Yo-yo",
+    "statement": "A yo-yo.",
+    "parts": [
+        {"id": "acceleration", "kind": "symbolic", "prompt": "a", "units": None, "symbols": ["g"]},
+        {
+            "id": "tension",
+            "kind": "symbolic",
+            "prompt": "T",
+            "units": None,
+            "symbols": ["g"],
+            "max_attempts": 3,
+        },
+    ],
+}
+
+
+@pytest.mark.parametrize(
+    ("student", "expected", "absent"),
+    [
+        ("ada", 'data-part="acceleration" data-student="ada" novalidate', "data-max-attempts"),
+        ('x"><script>', 'data-student="x&quot;&gt;&lt;script&gt;"', "<script>"),
+        (None, '<form class="answer" data-part="acceleration" novalidate>', "data-student"),
+    ],
+    ids=["names-the-student", "student-is-escaped", "no-student-no-attribute"],
+)
+def test_answer_forms_name_whose_earlier_work_the_script_restores(
+    student: str | None, expected: str, absent: str
+) -> None:
+    html = render_content({**YO_YO_VIEW, "parts": YO_YO_VIEW["parts"][:1]}, student=student)
+    assert expected in html
+    assert absent not in html
+
+
+@pytest.mark.parametrize(
+    ("limit", "expected"),
+    [(3, ' data-max-attempts="3"'), (None, ""), (0, ""), (True, ""), ("3", "")],
+    ids=["limit", "none", "zero", "bool", "text"],
+)
+def test_a_part_limit_in_the_view_becomes_the_forms_max_attempts(limit: object, expected: str) -> None:
+    part = {**YO_YO_VIEW["parts"][0], "max_attempts": limit}
+    html = render_content({**YO_YO_VIEW, "parts": [part]}, student="ada")
+    assert f'data-student="ada"{expected} novalidate' in html
+
+
+def test_restored_work_goes_outside_the_live_region_so_it_is_not_announced() -> None:
+    html = render_content(YO_YO_VIEW, student="ada")
+    assert html.count('<p class="earlier" hidden></p>') == 2
+    assert html.count('<p class="verdict" role="status" aria-live="polite"></p>') == 2
+
+
+async def test_content_for_a_student_key_names_that_student(browser: httpx.AsyncClient) -> None:
+    response = await browser.get(
+        f"{TOOL}/p/moving-wedge/content", headers={"Authorization": f"Bearer {STUDENT_KEY}"}
+    )
+    assert response.status_code == 200
+    assert 'data-student="key-student"' in response.text
+
+
+async def test_page_after_launch_names_the_launched_student(browser: httpx.AsyncClient) -> None:
+    page = await launched_page(browser)
+    assert re.search(r'<form class="answer" data-part="[^"]+" data-student="[^"]+"', page.text)
+
+
+async def test_page_script_restores_earlier_work_from_the_submissions_api(browser: httpx.AsyncClient) -> None:
+    script = await browser.get(f"{TOOL}/lti/static/student.js")
+    assert "/v1/submissions?problem=" in script.text
+    assert "earlier.textContent" in script.text and "earlier.innerHTML" not in script.text

@@ -1,5 +1,6 @@
 """Headless Chromium drives the student page of the REAL app (`create_app`: bank, grading worker, API)
-served by uvicorn on a loopback port: type an answer, see the live preview, submit, see the verdict.
+served by uvicorn on a loopback port: type an answer, see the live preview, submit, see the verdict;
+reload and see each part's last answer, verdict and attempts restored.
 Key mode with a student key from `app.keys.create_key`; session mode after an LTI launch from the fake
 LMS. Screenshots go to `artifacts/` (or PHYSCHECK_ARTIFACTS_DIR). Skipped without Debian's chromium.
 """
@@ -53,6 +54,7 @@ RIGHT = "g r^2/(r^2 + k^2)"
 # The server's reading of RIGHT, shown with `^` and `·` rather than its `**` and `*`.
 READ_AS = re.compile(r"^Read as: g[^*]*r\^2[^*]*k\^2[^*]*$")
 WRONG_TENSION = "m g"  # a known mistake, whose feedback has `$...$` maths in it
+UNREADABLE = "m g +"
 
 
 def free_port() -> int:
@@ -127,14 +129,41 @@ def answer_second_part_wrongly(page: Any) -> None:
     from playwright.sync_api import expect
 
     box = page.get_by_label("Your answer").nth(1)
-    box.fill("m g +")
+    box.fill(UNREADABLE)
     expect(page.locator("#preview-1")).to_contain_text("Cannot read this yet")
+    box.press("Enter")  # checked anyway: unreadable, so no attempt is used
+    expect(page.locator(".verdict").nth(1)).to_contain_text("Could not read this answer.")
     box.fill(WRONG_TENSION)
     expect(page.locator("#preview-1")).to_have_text("Read as: m·g")
     box.press("Enter")
     verdict = page.locator(".verdict").nth(1)
     expect(verdict).to_contain_text("Not correct. The tension would be mg only")
     expect(verdict).not_to_contain_text("$")
+
+
+def see_earlier_work_restored(page: Any) -> None:
+    """After a reload: each part's last answer is back in its box with its verdict and the attempts
+    used (the unreadable answer used none), shown outside the live regions so nothing is announced."""
+    from playwright.sync_api import expect
+
+    boxes = page.get_by_label("Your answer")
+    earlier = page.locator(".earlier")
+    expect(boxes.nth(0)).to_have_value(RIGHT)
+    expect(earlier.nth(0)).to_have_text("Your last answer: Correct. Attempts used: 1.")
+    expect(earlier.nth(0)).to_have_attribute("data-verdict", "correct")
+    expect(boxes.nth(1)).to_have_value(WRONG_TENSION)
+    expect(earlier.nth(1)).to_have_text(
+        re.compile(r"^Your last answer: Not correct\. The tension would be mg only[^$]*Attempts used: 1\.$")
+    )
+    for index in range(2):
+        assert earlier.nth(index).get_attribute("aria-live") is None
+        assert earlier.nth(index).get_attribute("role") is None
+        expect(page.locator(".verdict").nth(index)).to_have_text("")
+    page.screenshot(path=str(artifacts_dir() / "student-page-key-restored.png"), full_page=True)
+    # A new submission speaks in the live region and replaces the restored line.
+    boxes.nth(0).press("Enter")
+    expect(page.locator(".verdict").first).to_have_text("Correct. Attempts used: 2.")
+    expect(earlier.nth(0)).to_be_hidden()
 
 
 def with_browser(action: Any) -> None:
@@ -149,7 +178,7 @@ def with_browser(action: Any) -> None:
             browser.close()
 
 
-def test_student_with_key_sees_preview_then_verdict(served: Served) -> None:
+def test_student_with_key_sees_preview_then_verdict_then_earlier_work_after_reload(served: Served) -> None:
     plaintext, _ = create_key(served.database, "student", "Ada", student="ada")
 
     def run(context: Any) -> None:
@@ -167,6 +196,10 @@ def test_student_with_key_sees_preview_then_verdict(served: Served) -> None:
         expect(page.locator("#key-form")).to_be_hidden()
         answer_second_part_wrongly(page)
         answer_first_part(page, RIGHT, "student-page-key.png")
+        # Coming back (the key is kept in the tab): the earlier work is on the page again.
+        page.reload()
+        expect(page.get_by_role("heading", level=1)).to_be_focused()
+        see_earlier_work_restored(page)
 
     with_browser(run)
 
@@ -213,17 +246,24 @@ async def _launch(served: Served) -> str:
         return cookie
 
 
-# app/deps.py:current_principal never calls `principal_from_session`, so the page's preview and
-# submission get 401 with the session cookie. Strict: remove the marker once that is wired.
-def test_launched_student_sees_preview_then_verdict(served: Served) -> None:
+def test_launched_student_sees_preview_then_verdict_then_earlier_work_after_reload(served: Served) -> None:
     session_id = anyio.run(_launch, served)
 
     def run(context: Any) -> None:
+        from playwright.sync_api import expect
+
         context.add_cookies([{"name": SESSION_COOKIE, "value": session_id, "url": served.url}])
         page = context.new_page()
         page.goto(f"{served.url}/p/{PROBLEM}")
         try:
             answer_first_part(page, RIGHT, "student-page-session.png")
+            # The session cookie alone (no key) reads the student's earlier work back on a reload.
+            page.reload()
+            expect(page.get_by_label("Your answer").first).to_have_value(RIGHT)
+            expect(page.locator(".earlier").first).to_have_text(
+                "Your last answer: Correct. Attempts used: 1."
+            )
+            expect(page.locator(".earlier").nth(1)).to_be_hidden()  # nothing submitted there yet
         finally:
             page.screenshot(path=str(artifacts_dir() / "student-page-session-last.png"), full_page=True)
 

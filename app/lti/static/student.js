@@ -1,4 +1,5 @@
-// The student page: live preview of how an answer was read, and submission with its verdict.
+// The student page: live preview of how an answer was read, submission with its verdict, and on
+// load each part's earlier work (last answer, its verdict, attempts used) from the submissions list.
 // Talks only to the JSON API; everything it shows goes through textContent (never HTML).
 (function () {
   "use strict";
@@ -56,15 +57,43 @@
     return norm(a) === norm(b);
   }
 
+  var WORDS = { correct: "Correct.", incorrect: "Not correct.", invalid: "Could not read this answer." };
+
+  // A verdict in words: from a submission's response, or an earlier one from the submissions list.
+  function describe(d) {
+    var word = WORDS[d.verdict] || String(d.verdict);
+    var lines = [word];
+    // The judge's feedback for a right answer is often just "Correct.": say it once.
+    if (d.feedback && !sameWords(d.feedback, word)) { lines.push(plainMaths(d.feedback)); }
+    if (d.error && d.error.message && d.error.message !== d.feedback) { lines.push(d.error.message); }
+    if (d.verdict === "incorrect" && d.score > 0 && d.score < 1) {
+      lines.push("Partial credit: " + Math.round(d.score * 100) + "%.");
+    }
+    return lines;
+  }
+
+  function attemptsText(used, limit) {
+    return "Attempts used: " + used + (limit ? " of " + limit : "") + ".";
+  }
+
   function wire(form) {
     var part = form.getAttribute("data-part");
     var input = form.querySelector("input[name=answer]");
     var preview = form.querySelector(".preview");
     var verdict = form.querySelector(".verdict");
+    var earlier = form.querySelector(".earlier");
     var timer = null;
     var asked = 0;
+    // Once the student types or submits, the earlier work must not overwrite what they are doing.
+    var touched = false;
+
+    function limit() {
+      var value = parseInt(form.getAttribute("data-max-attempts") || "", 10);
+      return value > 0 ? value : null;
+    }
 
     input.addEventListener("input", function () {
+      touched = true;
       window.clearTimeout(timer);
       var text = input.value;
       if (!text.trim()) { preview.textContent = ""; return; }
@@ -84,6 +113,8 @@
 
     form.addEventListener("submit", function (event) {
       event.preventDefault();
+      touched = true;
+      if (earlier) { earlier.hidden = true; }
       var button = form.querySelector("button[type=submit]");
       button.disabled = true;
       verdict.textContent = "Checking…";
@@ -91,30 +122,76 @@
         verdict.removeAttribute("data-verdict");
         if (r.status !== 201) { verdict.textContent = errorText(r); return; }
         var d = r.data;
-        var words = { correct: "Correct.", incorrect: "Not correct.", invalid: "Could not read this answer." };
-        var word = words[d.verdict] || d.verdict;
-        var lines = [word];
-        // The judge's feedback for a right answer is often just "Correct.": say it once.
-        if (d.feedback && !sameWords(d.feedback, word)) { lines.push(plainMaths(d.feedback)); }
-        if (d.error && d.error.message && d.error.message !== d.feedback) { lines.push(d.error.message); }
-        if (d.verdict === "incorrect" && d.score > 0 && d.score < 1) {
-          lines.push("Partial credit: " + Math.round(d.score * 100) + "%.");
+        if (typeof d.max_attempts === "number" && d.max_attempts > 0) {
+          form.setAttribute("data-max-attempts", String(d.max_attempts));
         }
-        if (typeof d.attempts_used === "number") {
-          lines.push("Attempts used: " + d.attempts_used +
-            (typeof d.max_attempts === "number" ? " of " + d.max_attempts : "") + ".");
-        }
+        var lines = describe(d);
+        if (typeof d.attempts_used === "number") { lines.push(attemptsText(d.attempts_used, limit())); }
         verdict.textContent = lines.join(" ");
         verdict.setAttribute("data-verdict", d.verdict);
       }).catch(function () {
         verdict.textContent = "The server could not be reached; your answer was not checked.";
       }).then(function () { button.disabled = false; });
     });
+
+    // The part's last submission (any verdict) and its count of graded ones (invalid uses none).
+    function restore(last, used) {
+      if (touched || !earlier) { return; }
+      input.value = last.answer;
+      earlier.textContent = "Your last answer: " + describe(last).concat([attemptsText(used, limit())]).join(" ");
+      earlier.setAttribute("data-verdict", last.verdict);
+      earlier.hidden = false;
+    }
+
+    return { part: part, student: form.getAttribute("data-student"), restore: restore };
+  }
+
+  var MAX_PAGES = 20;  // 20 000 submissions to one problem by one student: enough, and bounded
+
+  function getJson(url) {
+    return fetch(url, { headers: headers(), credentials: "same-origin" }).then(function (response) {
+      if (response.status !== 200) { throw new Error("HTTP " + response.status); }
+      return response.json();
+    });
+  }
+
+  // Every submission of this student to this problem, oldest first, following the API's cursor.
+  function submissions(student) {
+    var url = "/v1/submissions?problem=" + encodeURIComponent(problemId) + "&limit=1000&student=" +
+      encodeURIComponent(student);
+    var items = [];
+    function page(cursor, left) {
+      return getJson(url + (cursor ? "&cursor=" + encodeURIComponent(cursor) : "")).then(function (data) {
+        items = items.concat(data.items || []);
+        return data.next && left > 1 ? page(data.next, left - 1) : items;
+      });
+    }
+    return page(null, MAX_PAGES);
+  }
+
+  function restoreEarlierWork(parts) {
+    // Without the page's student named, an instructor's list would be everyone's work: show none.
+    var student = parts.length ? parts[0].student : null;
+    if (!student) { return; }
+    submissions(student).then(function (items) {
+      var last = Object.create(null);  // keyed by part ids, which are not ours to trust as plain keys
+      var used = Object.create(null);
+      items.forEach(function (item) {
+        if (item.student !== student) { return; }  // the API filtered already; this page trusts no list
+        last[item.part] = item;
+        if (item.verdict !== "invalid") { used[item.part] = (used[item.part] || 0) + 1; }
+      });
+      parts.forEach(function (p) {
+        if (last[p.part]) { p.restore(last[p.part], used[p.part] || 0); }
+      });
+    }).catch(function () { /* Earlier work is a convenience: the page works without it. */ });
   }
 
   function wireAll() {
     var forms = document.querySelectorAll("form.answer");
-    for (var i = 0; i < forms.length; i++) { wire(forms[i]); }
+    var parts = [];
+    for (var i = 0; i < forms.length; i++) { parts.push(wire(forms[i])); }
+    restoreEarlierWork(parts);
   }
 
   function loadWithKey(key) {
