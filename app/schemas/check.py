@@ -6,6 +6,7 @@ from decimal import Decimal, InvalidOperation
 from typing import Annotated, Literal
 
 from pydantic import (
+    AfterValidator,
     BaseModel,
     ConfigDict,
     Field,
@@ -21,7 +22,21 @@ from physics.numeric import DEFAULT_TOLERANCE, NumericSpec, Tolerance
 from physics.verdict import Verdict
 
 Number = StrictInt | StrictFloat
-ShortText = Annotated[StrictStr, Field(max_length=2000)]
+
+
+def storable(text: str) -> str:
+    """Refuse what no database stores (NUL, lone surrogates) here, as a 422, not later as a 500."""
+    if "\x00" in text:
+        raise ValueError("must not contain a NUL character")
+    try:
+        text.encode("utf-8")
+    except UnicodeEncodeError:
+        raise ValueError("must be valid Unicode text (a lone surrogate was sent)") from None
+    return text
+
+
+Text = Annotated[StrictStr, AfterValidator(storable)]
+ShortText = Annotated[Text, Field(max_length=2000)]
 
 
 def exact_decimal(value: Number | str) -> Decimal:
@@ -92,7 +107,7 @@ class ToleranceIn(Strict):
 
 class SymbolicCheckIn(Strict):
     kind: Literal["symbolic"]
-    answer: StrictStr
+    answer: Text
     expected: ShortText
     symbols: dict[Annotated[str, Field(max_length=40)], SymbolIn] = Field(default_factory=dict, max_length=50)
     constraints: list[ShortText] = Field(default_factory=list, max_length=20)
@@ -110,7 +125,7 @@ class SymbolicCheckIn(Strict):
 
 class NumericCheckIn(Strict):
     kind: Literal["numeric"]
-    answer: StrictStr
+    answer: Text
     expected: Number | ShortText
     units: ShortText | None = None
     units_required: StrictBool = True

@@ -6,11 +6,11 @@ import uuid
 from datetime import datetime
 from typing import Annotated, Any
 
-from pydantic import BaseModel, ConfigDict, Field, StrictStr
+from pydantic import BaseModel, ConfigDict, Field
 
-from app.schemas.check import InputErrorPublic, ReadAsPublic, VerdictPublic
+from app.schemas.check import InputErrorPublic, ReadAsPublic, Text, VerdictPublic
 
-StudentId = Annotated[StrictStr, Field(min_length=1, max_length=200)]
+StudentId = Annotated[Text, Field(min_length=1, max_length=200)]
 
 
 class PartSummary(BaseModel):
@@ -60,14 +60,14 @@ class SubmissionIn(BaseModel):
     # extra="forbid": a client may not send `score`, `correct`, `verdict` or anything else of ours.
     model_config = ConfigDict(extra="forbid")
 
-    answer: StrictStr
+    answer: Text
     student: StudentId | None = None
 
 
 class PreviewIn(BaseModel):
     model_config = ConfigDict(extra="forbid")
 
-    answer: StrictStr
+    answer: Text
 
 
 class PreviewPublic(BaseModel):

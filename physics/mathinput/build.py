@@ -13,7 +13,7 @@ from typing import cast
 
 import sympy
 
-from physics.errors import TooLarge
+from physics.errors import ParseError, TooLarge
 from physics.mathinput.limits import InputLimits
 from physics.mathinput.tree import Call, Const, Group, Name, Neg, Node, Num, Power, Product, Sum
 
@@ -102,7 +102,7 @@ class Builder:
                 return self._factorial(arg)
             if node.func == "sqrt":
                 return self._power(arg, sympy.Rational(1, 2))
-            return self._checked(_FUNCTIONS[node.func](arg))
+            return self._real(self._checked(_FUNCTIONS[node.func](arg)), node.func)
         operand = self._build(node.operand)
         self._position = node.pos
         if node.kind == "factorial":
@@ -133,7 +133,20 @@ class Builder:
                         raise self._too_large("A power of numbers in the answer is too large to compute.")
             elif base is not sympy.E and (abs(p) > limits.max_exponent * q or q > limits.max_exponent):
                 raise self._too_large(f"An exponent is too large (at most {limits.max_exponent}).")
-        return self._checked(sympy.Pow(base, exponent))
+        return self._real(self._checked(sympy.Pow(base, exponent)), "power")
+
+    def _real(self, expr: sympy.Expr, what: str) -> sympy.Expr:
+        """Refuse a constant with no real value (acos(2), sqrt(-1)): nothing physical is imaginary, and
+        sympy's automatic simplification of powers of such constants can run for minutes."""
+        # zoo and nan (1/0, log(0)) are refused elsewhere, as having no value at all.
+        if expr.is_number and expr.is_finite is not False and expr.is_extended_real is False:
+            message = (
+                "This power has no real value; check its base and exponent."
+                if what == "power"
+                else f"{what}(…) has no real value here; check its argument."
+            )
+            raise ParseError(message, self._position)
+        return expr
 
     def _factorial(self, arg: sympy.Expr) -> sympy.Expr:
         if arg.is_Rational and abs(arg) > self._limits.max_factorial:

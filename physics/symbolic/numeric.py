@@ -340,7 +340,7 @@ def complex_value(expr: sympy.Basic, point: Mapping[sympy.Symbol, Mpf], prec: in
     out = []
     for part in parts:
         part = part.evalf(dps)
-        if not part.is_Number:
+        if not part.is_Number or not part.is_finite:  # nan and zoo are Numbers without an _mpf_
             return None
         value = from_rational(int(part.p), int(part.q), prec) if part.is_Rational else _finite(part._mpf_)
         if value is None:

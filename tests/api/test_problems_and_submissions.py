@@ -206,3 +206,35 @@ def test_logged_answers_are_truncated_and_escaped(client, student_headers):
     assert graded[0]["answer"].startswith('x\n{"level"') and len(graded[0]["answer"]) <= 121
     assert not any("forged" in line and '"level": "CRITICAL"' in line.split('"answer"')[0] for line in lines)
     assert student_headers["Authorization"].split()[1] not in stream.getvalue()
+
+
+@pytest.mark.parametrize(
+    ("method", "path", "body"),
+    [
+        pytest.param(
+            "post",
+            "/v1/problems/atwood/parts/acceleration/submissions",
+            b'{"answer": "m\\u0000"}',
+            id="nul-answer",
+        ),
+        pytest.param(
+            "post",
+            "/v1/problems/atwood/parts/acceleration/submissions",
+            b'{"answer": "\\ud800x"}',
+            id="surrogate-answer",
+        ),
+        pytest.param(
+            "post",
+            "/v1/problems/atwood/parts/acceleration/preview",
+            b'{"answer": "g\\u0000"}',
+            id="nul-preview",
+        ),
+        pytest.param("get", "/v1/submissions?problem=%00", None, id="nul-query"),
+        pytest.param("get", "/v1/problems/%00", None, id="nul-path"),
+    ],
+)
+def test_text_no_database_can_store_is_refused_with_422(client, student_headers, method, path, body):
+    headers = {**student_headers, "content-type": "application/json"}
+    response = client.request(method, path, content=body, headers=headers)
+    assert response.status_code == 422, response.text
+    assert response.json()["error"]["code"] == "malformed_request"

@@ -5,6 +5,7 @@ from __future__ import annotations
 import pytest
 
 from physics.errors import AmbiguousInput, ParseError
+from physics.mathinput import parse_math
 from tests.mathinput.support import read
 
 PARSE_ERRORS = [
@@ -86,3 +87,15 @@ NOT_AMBIGUOUS = ["a/b*c", "a/(b c)", "a b/c", "(a/b) c", "a/b + c", "a/b/c", "1/
 @pytest.mark.parametrize("text", NOT_AMBIGUOUS)
 def test_division_without_a_juxtaposed_product_after_it_is_read(text):
     read(text, "a", "b", "c")
+
+
+@pytest.mark.timeout(10)
+@pytest.mark.parametrize(
+    "text",
+    ["sqrt(-1)", "log(-1)", "acos(2)", "sqrtacos(2)²", "√acos(2)²pi", "acos(2)²^(1/2)πtan(pi/2)", "0^(sqrt(-1)!)"],
+)
+def test_a_constant_with_no_real_value_is_refused_at_once(text):
+    # sympy simplifying powers of such constants ran for minutes; nothing physical is imaginary anyway.
+    with pytest.raises(ParseError) as raised:
+        parse_math(text, {})
+    assert "no real value" in raised.value.message
