@@ -7,7 +7,7 @@ import binascii
 import json
 import uuid
 from dataclasses import dataclass
-from datetime import datetime
+from datetime import UTC, datetime
 
 from app.db.errors import InvalidCursor
 
@@ -33,9 +33,13 @@ def decode_cursor(cursor: str) -> Position:
         payload = json.loads(raw)
         if not isinstance(payload, dict) or payload.get("v") != _VERSION:
             raise InvalidCursor(cursor)
-        created_at = datetime.fromisoformat(payload["t"])
+        stamp, row_id = payload["t"], payload["i"]
+        if not isinstance(stamp, str) or not isinstance(row_id, str):
+            raise InvalidCursor(cursor)
+        created_at = datetime.fromisoformat(stamp)
         if created_at.tzinfo is None:
             raise InvalidCursor(cursor)
-        return Position(created_at=created_at, id=uuid.UUID(hex=payload["i"]))
-    except (binascii.Error, UnicodeDecodeError, ValueError, KeyError, TypeError) as error:
+        # In UTC here: an offset at the ends of the calendar would overflow later, in the database.
+        return Position(created_at=created_at.astimezone(UTC), id=uuid.UUID(hex=row_id))
+    except (binascii.Error, UnicodeDecodeError, ValueError, KeyError, TypeError, OverflowError) as error:
         raise InvalidCursor(cursor) from error

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import base64
+import json
 import threading
 import uuid
 from datetime import UTC, datetime
@@ -243,6 +245,10 @@ def test_a_limit_out_of_range_is_refused(db: Database, limit: int) -> None:
         list_submissions(session, limit=limit)
 
 
+def _forged(payload: dict) -> str:
+    return base64.urlsafe_b64encode(json.dumps(payload).encode()).decode().rstrip("=")
+
+
 @pytest.mark.parametrize(
     "cursor",
     [
@@ -251,8 +257,20 @@ def test_a_limit_out_of_range_is_refused(db: Database, limit: int) -> None:
         "bm90IGpzb24",  # "not json"
         "eyJ2IjoyfQ",  # {"v":2}
         encode_cursor(Position(datetime(2026, 1, 1, tzinfo=UTC), uuid.UUID(int=7)))[:-6],
+        _forged({"v": 1, "t": "2026-01-01T00:00:00+00:00", "i": 123}),
+        _forged({"v": 1, "t": "0001-01-01T00:00:00+14:00", "i": uuid.UUID(int=7).hex}),
+        _forged({"v": 1, "t": ["2026"], "i": uuid.UUID(int=7).hex}),
     ],
-    ids=["not-base64", "empty", "not-json", "unknown-version", "truncated"],
+    ids=[
+        "not-base64",
+        "empty",
+        "not-json",
+        "unknown-version",
+        "truncated",
+        "id-not-text",
+        "time-overflows",
+        "time-not-text",
+    ],
 )
 def test_a_cursor_we_did_not_issue_is_refused(db: Database, cursor: str) -> None:
     with pytest.raises(InvalidCursor), db.session(read_only=True) as session:
