@@ -7,6 +7,7 @@ import logging
 import multiprocessing
 from collections.abc import Callable
 from concurrent.futures import TimeoutError as FutureTimeout
+from typing import TypeVar
 
 from pebble import ProcessExpired, ProcessPool
 
@@ -17,6 +18,7 @@ from physics.errors import CheckTimeout, SpecError, TooLarge
 from physics.verdict import InputProblem, Verdict
 
 log = logging.getLogger("physcheck.grading")
+T = TypeVar("T")
 
 TIMEOUT_MESSAGE = "Could not check this in time; simplify your answer."
 
@@ -54,7 +56,7 @@ class GradingPool:
             context=context,
         )
         # One small job per worker so the first real request does not pay for lazy imports.
-        warm = [self._submit(job) for _ in range(self._workers) for job in WARM_UP_JOBS]
+        warm = [self._submit(self._task, job) for _ in range(self._workers) for job in WARM_UP_JOBS]
         for future in warm:
             future.result(timeout=60)
 
@@ -68,9 +70,22 @@ class GradingPool:
     def in_flight(self) -> int:
         return self._in_flight
 
-    def _submit(self, job: CheckJob):  # type: ignore[no-untyped-def]
+    def _submit(self, task: Callable[[CheckJob], object], job: CheckJob):  # type: ignore[no-untyped-def]
         assert self._pool is not None, "GradingPool.start() was not called"
-        return self._pool.schedule(self._task, args=(job,), timeout=self._timeout)
+        return self._pool.schedule(task, args=(job,), timeout=self._timeout)
+
+    async def _run(self, task: Callable[[CheckJob], T | SpecProblem], job: CheckJob) -> T:
+        """Run in a worker within the queue's capacity; raises FutureTimeout or ProcessExpired."""
+        if self._in_flight >= self._capacity:
+            raise Busy("The grading queue is full; try again shortly.", retry_after=1)
+        self._in_flight += 1
+        try:
+            outcome: T | SpecProblem = await asyncio.wrap_future(self._submit(task, job))
+        finally:
+            self._in_flight -= 1
+        if isinstance(outcome, SpecProblem):
+            raise SpecError(outcome.message, outcome.path)
+        return outcome
 
     async def preview(self, job: CheckJob) -> Preview:
         """How the answer reads, also in a worker (the parser is bounded, but not trusted to be)."""
@@ -78,16 +93,10 @@ class GradingPool:
             return Preview(
                 None, InputProblem(f"The answer is longer than {self._max_answer_chars} characters.")
             )
-        assert self._pool is not None, "GradingPool.start() was not called"
         try:
-            outcome: Preview | SpecProblem = await asyncio.wrap_future(
-                self._pool.schedule(read_only, args=(job,), timeout=self._timeout)
-            )
+            return await self._run(read_only, job)
         except (FutureTimeout, ProcessExpired):
             return Preview(None, InputProblem(TIMEOUT_MESSAGE))
-        if isinstance(outcome, SpecProblem):
-            raise SpecError(outcome.message, outcome.path)
-        return outcome
 
     async def check(self, job: CheckJob) -> Verdict:
         """Grade in a worker; a timeout or a killed worker is an `invalid` verdict, never a hang."""
@@ -97,18 +106,10 @@ class GradingPool:
             return Verdict.invalid(
                 TooLarge(f"The answer is longer than {limit} characters; shorten it.", limit)
             )
-        if self._in_flight >= self._capacity:
-            raise Busy("The grading queue is full; try again shortly.", retry_after=1)
-        self._in_flight += 1
         try:
-            outcome: Verdict | SpecProblem = await asyncio.wrap_future(self._submit(job))
+            return await self._run(self._task, job)
         except FutureTimeout:
             return Verdict.invalid(CheckTimeout(TIMEOUT_MESSAGE))
         except ProcessExpired as error:
             log.error("grading worker died (exit code %s)", error.exitcode)
             return Verdict.invalid(TooLarge("This answer is too large to check; simplify it."))
-        finally:
-            self._in_flight -= 1
-        if isinstance(outcome, SpecProblem):
-            raise SpecError(outcome.message, outcome.path)
-        return outcome

@@ -137,3 +137,21 @@ def test_full_queue_answers_busy_with_retry_after(hanging_pool):
 
     refused = asyncio.run(scenario())
     assert refused.headers["Retry-After"] == "1"
+
+
+def test_previews_count_against_the_queue_too(hanging_pool):
+    from app.errors import Busy
+
+    symbols = (SymbolDecl("m", "kg"),)
+
+    async def scenario():
+        tasks = [
+            asyncio.ensure_future(hanging_pool.check(SymbolicJob(answer="hang", expected="m", symbols=symbols)))
+            for _ in range(5)
+        ]
+        await asyncio.sleep(0.05)
+        with pytest.raises(Busy):
+            await hanging_pool.preview(SymbolicJob(answer="m", expected="m", symbols=symbols))
+        await asyncio.gather(*tasks)
+
+    asyncio.run(scenario())
