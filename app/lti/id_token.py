@@ -60,6 +60,9 @@ class LaunchClaims:
     deep_link_data: Any = None  # opaque, echoed back in the response
 
 
+MAX_HEADER_CHARS = 2048
+
+
 def read_header(token: str) -> dict[str, Any]:
     """The JOSE header, unverified, to learn `alg` and `kid` before choosing a key."""
     if len(token) > MAX_TOKEN_CHARS:
@@ -69,9 +72,11 @@ def read_header(token: str) -> dict[str, Any]:
         raise UntrustedToken(
             "malformed_token", "The id_token is not a signed JWT (three dot-separated parts)."
         )
+    if len(parts[0]) > MAX_HEADER_CHARS:  # a real header is a few dozen characters
+        raise UntrustedToken("malformed_token", "The id_token header is too large.")
     try:
         header = json.loads(base64.urlsafe_b64decode(parts[0] + "=" * (-len(parts[0]) % 4)))
-    except (ValueError, UnicodeDecodeError) as error:
+    except (ValueError, UnicodeDecodeError, RecursionError) as error:
         raise UntrustedToken("malformed_token", "The id_token header cannot be read.") from error
     if not isinstance(header, dict):
         raise UntrustedToken("malformed_token", "The id_token header is not a JSON object.")

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import base64
 from collections.abc import Callable
 from typing import Any
 
@@ -215,3 +216,17 @@ async def test_unreachable_platform_keys_give_a_clear_page_not_a_stack_trace(
     assert response.status_code == 502
     assert "could not be reached" in response.text and "Traceback" not in response.text
     assert session_count(context) == 0
+
+
+@pytest.mark.parametrize(
+    "header",
+    [b"[" * 40000, b'{"alg": "RS256", "kid": "' + b"k" * 3000 + b'"}'],
+    ids=["deeply-nested", "oversized"],
+)
+def test_a_monstrous_token_header_is_refused_not_a_crash(header: bytes):
+    from app.lti.errors import UntrustedToken
+    from app.lti.id_token import read_header
+
+    encoded = base64.urlsafe_b64encode(header).decode().rstrip("=")
+    with pytest.raises(UntrustedToken):
+        read_header(f"{encoded}.e30.sig")
