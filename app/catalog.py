@@ -98,8 +98,12 @@ class Catalog:
         key = (record.id, record.version, record.document_hash)
         with self._lock:
             lock = self._compiling.setdefault(key, threading.Lock())
-        with lock:
-            return compile_problem(self.document(record), record.version)
+        try:
+            with lock:
+                return compile_problem(self.document(record), record.version)
+        finally:
+            with self._lock:  # later callers find the compiler's cache warm; no lock kept per version
+                self._compiling.pop(key, None)
 
     def job(self, record: ProblemRecord, part_id: str, student: str, answer: str) -> CheckJob:
         """The check job for one student's answer: the student's own numbers for a numeric part.

@@ -5,8 +5,10 @@ from __future__ import annotations
 from functools import lru_cache
 from pathlib import Path
 
-from pydantic import Field
+from pydantic import Field, model_validator
 from pydantic_settings import BaseSettings, SettingsConfigDict
+
+DEVELOPMENT_SECRET = "dev-secret-change-me"  # noqa: S105 - refused wherever it would matter
 
 
 class Settings(BaseSettings):
@@ -15,7 +17,7 @@ class Settings(BaseSettings):
     database_url: str = "sqlite:///./physcheck.db"
     # Server secret for per-student variants and session cookies; a fresh one per start is safe
     # for development only, since variants would change between restarts.
-    secret: str = Field(default="dev-secret-change-me", min_length=8)
+    secret: str = Field(default=DEVELOPMENT_SECRET, min_length=8)
     base_url: str = "http://127.0.0.1:8000"
 
     # Bounded work: every check runs in a killable worker process.
@@ -40,6 +42,15 @@ class Settings(BaseSettings):
     # Compile every problem at start-up (seconds of sympy) before /ready says yes; off for quick dev runs.
     warm_up: bool = True
     log_level: str = "INFO"
+
+    @model_validator(mode="after")
+    def no_public_secret_in_production(self) -> Settings:
+        # With the published default anyone could compute every student's numbers.
+        if self.secret == DEVELOPMENT_SECRET and self.base_url.startswith("https://"):
+            raise ValueError(
+                "set PHYSCHECK_SECRET: the default secret is public and only fit for development"
+            )
+        return self
 
 
 @lru_cache

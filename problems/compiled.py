@@ -43,7 +43,7 @@ from problems.schema import NumericPart, ProblemDocument, SymbolicPart, format_p
 from problems.symbols import bound_text, check_decls, read_bound, symbol_specs
 from problems.variants import Variant, evaluate_reference, si_values
 
-CACHE_SIZE = 64
+CACHE_SIZE = 256  # live problem versions kept compiled; beyond it they are derived again
 
 
 @dataclass(frozen=True)

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 from decimal import Decimal, InvalidOperation
 from typing import Annotated, Literal
 
@@ -39,8 +40,14 @@ Text = Annotated[StrictStr, AfterValidator(storable)]
 ShortText = Annotated[Text, Field(max_length=2000)]
 
 
+_DECIMAL = re.compile(r"[+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?")
+
+
 def exact_decimal(value: Number | str) -> Decimal:
     """JSON numbers arrive as floats; their shortest repr is the decimal the client wrote."""
+    if isinstance(value, str) and not _DECIMAL.fullmatch(value.strip()):
+        # Decimal() alone would also take "4_58" (as 458), "NaN" and "Infinity".
+        raise ValueError(f"not a decimal number: {value!r}")
     try:
         result = Decimal(value if isinstance(value, str) else repr(value))
     except InvalidOperation:

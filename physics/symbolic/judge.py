@@ -150,7 +150,7 @@ def _dimension_problem(answer: sympy.Expr, reference: PreparedReference) -> str 
 
 def _limit_hints(answer: sympy.Expr, reference: PreparedReference) -> list[str]:
     return [
-        f"Check the limit of {limit.description}: your answer does not give the right behaviour there."
+        f"Your answer fails a limiting case ({limit.description.rstrip('.')}); check it there."
         for limit in reference.limits
         if breaks_limit(answer, limit, reference.scale)
     ]

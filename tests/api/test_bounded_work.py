@@ -146,7 +146,9 @@ def test_previews_count_against_the_queue_too(hanging_pool):
 
     async def scenario():
         tasks = [
-            asyncio.ensure_future(hanging_pool.check(SymbolicJob(answer="hang", expected="m", symbols=symbols)))
+            asyncio.ensure_future(
+                hanging_pool.check(SymbolicJob(answer="hang", expected="m", symbols=symbols))
+            )
             for _ in range(5)
         ]
         await asyncio.sleep(0.05)

@@ -110,3 +110,18 @@ def test_a_full_grading_queue_is_503_with_retry_after(settings):
     assert response.status_code == 503
     assert response.json()["error"]["code"] == "busy"
     assert response.headers["Retry-After"] == "1"
+
+
+def test_the_public_default_secret_is_refused_for_an_https_deployment():
+    from pydantic import ValidationError
+
+    with pytest.raises(ValidationError, match="PHYSCHECK_SECRET"):
+        Settings(base_url="https://physcheck.example.edu")
+    assert Settings(base_url="https://physcheck.example.edu", secret="a-real-secret-value").secret
+
+
+@pytest.mark.parametrize("expected", ["4_58", "NaN", "Infinity", "0x10", "4.5.8"])
+def test_a_reference_that_is_not_a_plain_decimal_is_422(client, expected):
+    headers = _headers(client.app.state.services.settings, "student", "ada")
+    response = client.post("/v1/check", json={**BODY, "expected": expected}, headers=headers)
+    assert response.status_code == 422

@@ -92,7 +92,15 @@ def test_division_without_a_juxtaposed_product_after_it_is_read(text):
 @pytest.mark.timeout(10)
 @pytest.mark.parametrize(
     "text",
-    ["sqrt(-1)", "log(-1)", "acos(2)", "sqrtacos(2)²", "√acos(2)²pi", "acos(2)²^(1/2)πtan(pi/2)", "0^(sqrt(-1)!)"],
+    [
+        "sqrt(-1)",
+        "log(-1)",
+        "acos(2)",
+        "sqrtacos(2)²",
+        "√acos(2)²pi",
+        "acos(2)²^(1/2)πtan(pi/2)",
+        "0^(sqrt(-1)!)",
+    ],
 )
 def test_a_constant_with_no_real_value_is_refused_at_once(text):
     # sympy simplifying powers of such constants ran for minutes; nothing physical is imaginary anyway.
