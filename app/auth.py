@@ -16,10 +16,23 @@ class Principal:
     role: Role
     name: str
     student: str | None  # the identity a student's submissions are filed under
+    # False for a session opened by an LMS launch: it acts only for itself, whatever its role, since an
+    # instructor of one course must not reach the students (or gradebooks) of another.
+    api_key: bool = True
 
     @property
     def is_instructor(self) -> bool:
         return self.role is Role.INSTRUCTOR
+
+    @property
+    def own_identity(self) -> str:
+        """Whose work this caller's own answers are: the student, or an instructor's preview identity."""
+        return self.student if self.student is not None else f"preview:{self.key_id}"
+
+    @property
+    def acts_for_students(self) -> bool:
+        """May name other students (their variants, submissions): instructor API keys only."""
+        return self.is_instructor and self.api_key
 
 
 class KeyStore(Protocol):

@@ -70,6 +70,7 @@ class SessionRecord:
             role=self.role,
             name=self.name or self.student,
             student=self.student if self.role is Role.STUDENT else None,
+            api_key=False,
         )
 
 

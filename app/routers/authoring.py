@@ -189,8 +189,10 @@ def solution_of(compiled: CompiledProblem) -> SolutionPublic:
 
 
 @router.get("/v1/lti/delivery-problems", response_model=list[DeliveryProblem])
-async def delivery_problems(services: ServicesDep, _: Instructor) -> list[DeliveryProblem]:
-    """Scores an LMS refused (422, 403…) or has not accepted yet, newest first."""
+async def delivery_problems(services: ServicesDep, principal: Instructor) -> list[DeliveryProblem]:
+    """Scores an LMS refused (422, 403…) or has not accepted yet, newest first (all courses: API keys only)."""
+    if not principal.acts_for_students:
+        raise Forbidden("Grade passback across courses is for instructor API keys.")
 
     def read() -> list[DeliveryProblem]:
         with services.database.session(read_only=True) as session:

@@ -10,7 +10,7 @@ from starlette.concurrency import run_in_threadpool
 from app.auth import Principal
 from app.db.records import ProblemRecord
 from app.deps import CurrentPrincipal, ServicesDep
-from app.errors import AppError, NotFound
+from app.errors import AppError, Forbidden, NotFound
 from app.grading.submit import submit_answer
 from app.schemas.problems import (
     PartSummary,
@@ -32,14 +32,16 @@ class StudentNotAllowed(AppError):
 
 
 def student_of(principal: Principal, named: str | None) -> str:
-    """Whose work this is: a student key's own identity, or the student an instructor names."""
+    """Whose work this is: the caller's own, or the student an instructor's API key names."""
+    if named is None or named == principal.own_identity:
+        return principal.own_identity
     if principal.student is not None:
-        if named is not None and named != principal.student:
-            raise StudentNotAllowed(
-                "A student key cannot name a student.", [{"path": "student", "message": "not allowed"}]
-            )
-        return principal.student
-    return named if named is not None else f"preview:{principal.key_id}"
+        raise StudentNotAllowed(
+            "A student key cannot name a student.", [{"path": "student", "message": "not allowed"}]
+        )
+    if not principal.acts_for_students:
+        raise Forbidden("A session opened from an LMS acts only for itself; use an instructor API key.")
+    return named
 
 
 @router.get("/v1/problems", response_model=list[ProblemSummary])

@@ -27,10 +27,10 @@ async def list_submissions(
     limit: Annotated[int, Query(ge=1, le=MAX_PAGE)] = 100,
     cursor: Annotated[str | None, Query(max_length=200)] = None,
 ) -> SubmissionPage:
-    if principal.student is not None:
-        if student is not None and student != principal.student:
-            raise Forbidden("A student key sees only its own submissions.")
-        student = principal.student
+    if not principal.acts_for_students:
+        if student is not None and student != principal.own_identity:
+            raise Forbidden("This key or session sees only its own submissions.")
+        student = principal.own_identity
 
     def read() -> Page[SubmissionRecord]:
         with services.database.session(read_only=True) as session:

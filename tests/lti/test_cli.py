@@ -30,7 +30,11 @@ def run(argv: list[str], settings: Settings) -> int:
 
 @pytest.fixture
 def cli_settings(tmp_path: Path) -> Settings:
-    return Settings(database_url=f"sqlite:///{tmp_path / 'cli.db'}", base_url="https://tool.test")
+    return Settings(
+        database_url=f"sqlite:///{tmp_path / 'cli.db'}",
+        base_url="https://tool.test",
+        secret="lti-cli-test-secret",
+    )
 
 
 def test_add_platform_registers_issuer_client_and_every_deployment(cli_settings: Settings):

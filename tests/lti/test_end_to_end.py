@@ -253,3 +253,42 @@ async def test_instructor_sees_a_refused_score_among_delivery_problems(sites: Si
     assert listed.status_code == 200, listed.text
     [problem] = listed.json()
     assert (problem["problem_id"], problem["status"], problem["last_status"]) == (PROBLEM, "failed", 422)
+
+
+async def launch_instructor(sites: Sites, item: dict[str, Any]) -> str:
+    """An instructor of some course opens the resource link; returns the page's CSRF token."""
+    sites.lms.next_launch = NextLaunch(
+        user="teacher-2", roles=[INSTRUCTOR], problem=item["custom"]["problem"], lineitem=LINEITEM
+    )
+    launched = await platform_launch(sites.browser)
+    assert launched.status_code == 303, launched.text
+    page = await sites.browser.get(TOOL + launched.headers["location"])
+    return meta(page.text, "csrf-token")
+
+
+async def test_an_lms_instructor_session_cannot_reach_other_students_or_their_gradebooks(
+    sites: Sites,
+) -> None:
+    item = await deep_link(sites, PROBLEM)
+    await launch_student(sites, item)  # records a grade target for the student
+    csrf = await launch_instructor(sites, item)
+    victim = next(iter(_students(sites.database)))
+    headers = {"X-CSRF-Token": csrf}
+    as_victim = await sites.browser.post(
+        f"{TOOL}/v1/problems/{PROBLEM}/parts/acceleration/submissions",
+        json={"answer": RIGHT, "student": victim},
+        headers=headers,
+    )
+    assert as_victim.status_code == 403
+    assert (await sites.browser.get(f"{TOOL}/v1/submissions", params={"student": victim})).status_code == 403
+    assert (await sites.browser.get(f"{TOOL}/v1/lti/delivery-problems")).status_code == 403
+    own = await sites.browser.get(f"{TOOL}/v1/submissions")
+    assert own.status_code == 200 and own.json()["items"] == []
+    assert await deliver(sites) == []
+
+
+def _students(database: Database) -> set[str]:
+    from app.lti.models import LtiGradeTarget
+
+    with database.session(read_only=True) as session:
+        return set(session.scalars(select(LtiGradeTarget.student)))
