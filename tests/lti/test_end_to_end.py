@@ -140,8 +140,13 @@ async def deep_link(sites: Sites, problem: str) -> dict[str, Any]:
 
 async def launch_student(sites: Sites, item: dict[str, Any]) -> str:
     """The student opens the resource link the instructor made; returns the page's CSRF token."""
+    return await open_link(sites, item, "student-1", LEARNER)
+
+
+async def open_link(sites: Sites, item: dict[str, Any], user: str, role: str) -> str:
+    """`user` opens the resource link with `role`; returns the page's CSRF token."""
     sites.lms.next_launch = NextLaunch(
-        user="student-1", roles=[LEARNER], problem=item["custom"]["problem"], lineitem=LINEITEM
+        user=user, roles=[role], problem=item["custom"]["problem"], lineitem=LINEITEM
     )
     launched = await platform_launch(sites.browser)
     assert launched.status_code == 303, launched.text
@@ -255,23 +260,12 @@ async def test_instructor_sees_a_refused_score_among_delivery_problems(sites: Si
     assert (problem["problem_id"], problem["status"], problem["last_status"]) == (PROBLEM, "failed", 422)
 
 
-async def launch_instructor(sites: Sites, item: dict[str, Any]) -> str:
-    """An instructor of some course opens the resource link; returns the page's CSRF token."""
-    sites.lms.next_launch = NextLaunch(
-        user="teacher-2", roles=[INSTRUCTOR], problem=item["custom"]["problem"], lineitem=LINEITEM
-    )
-    launched = await platform_launch(sites.browser)
-    assert launched.status_code == 303, launched.text
-    page = await sites.browser.get(TOOL + launched.headers["location"])
-    return meta(page.text, "csrf-token")
-
-
 async def test_an_lms_instructor_session_cannot_reach_other_students_or_their_gradebooks(
     sites: Sites,
 ) -> None:
     item = await deep_link(sites, PROBLEM)
     await launch_student(sites, item)  # records a grade target for the student
-    csrf = await launch_instructor(sites, item)
+    csrf = await open_link(sites, item, "teacher-2", INSTRUCTOR)
     victim = next(iter(_students(sites.database)))
     headers = {"X-CSRF-Token": csrf}
     as_victim = await sites.browser.post(
