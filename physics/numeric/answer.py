@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 from fractions import Fraction
 
@@ -35,6 +36,9 @@ class NumericAnswer:
         return ReadAs(f"{self.number.text} {shown.text}", rf"{self.number.latex}\,{shown.latex}")
 
 
+_RECIPROCAL = re.compile(r"1\s*/")  # `4.9e12 1/s` is a number and a unit, not two numbers
+
+
 def read_numeric_answer(text: str) -> NumericAnswer:
     """Read `4.58 m/s^2`, `-1.2e3 N`, `45%`, `16.49 km/h`; AnswerError with a position if it cannot be."""
     if len(text) > MAX_ANSWER_LENGTH:
@@ -46,7 +50,12 @@ def read_numeric_answer(text: str) -> NumericAnswer:
     unit_text = text[rest_start:].rstrip()
     if not unit_text:
         return NumericAnswer(number, None, None)
-    if unit_text[0] in "0123456789" or (unit_text[0] in ",." and unit_text[1:2].isdigit()):
+    reciprocal = _RECIPROCAL.match(unit_text)
+    if unit_text.startswith("/"):  # `4.9e12 /s`: a unit of the form 1/…
+        unit_text, rest_start = "1" + unit_text, rest_start - 1
+    elif reciprocal is None and (
+        unit_text[0] in "0123456789" or (unit_text[0] in ",." and unit_text[1:2].isdigit())
+    ):
         raise ParseError(
             "Two numbers side by side: write one number without spaces or separators (12500, not 12 500)",
             rest_start,
