@@ -65,6 +65,8 @@ CATALOGUE: tuple[CatalogueEntry, ...] = (
     CatalogueEntry("turn", False, symbol="rev", extra_spellings=("rev",)),
     CatalogueEntry("revolutions_per_minute", False),
     CatalogueEntry("degree_Celsius", False, latex="{}^{\\circ}\\mathrm{C}"),
+    # Without it `°F` would be read as degree·farad, a capacitance.
+    CatalogueEntry("degree_Fahrenheit", False, latex="{}^{\\circ}\\mathrm{F}"),
     CatalogueEntry("angstrom", False, latex=r"\text{Å}"),
     CatalogueEntry("unified_atomic_mass_unit", False),
     CatalogueEntry("dalton", False),

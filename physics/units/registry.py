@@ -154,7 +154,8 @@ def _atom(prefix: str, entry: CatalogueEntry) -> UnitAtom:
     offset: Fraction | None = None
     converter_offset = getattr(definition.converter, "offset", 0)
     if converter_offset:
-        offset = Fraction(converter_offset) * scale
+        # pint's converter: root value = value * scale + offset, so the offset is already in kelvin.
+        offset = Fraction(converter_offset)
     unit_symbol = entry.symbol or definition.symbol or entry.name
     prefix_symbol = ureg._prefixes[prefix].symbol if prefix else ""
     prefix_latex = PREFIX_LATEX.get(prefix_symbol, prefix_symbol)
