@@ -30,6 +30,12 @@ class Principal:
         return self.student if self.student is not None else f"preview:{self.key_id}"
 
     @property
+    def grading_share(self) -> str | None:
+        """Whose share of the grading workers a check counts against: students and LMS sessions each
+        have a small one; instructor API keys (course scripts, LMS plug-ins) are limited by rate only."""
+        return None if self.acts_for_students else self.own_identity
+
+    @property
     def acts_for_students(self) -> bool:
         """May name other students (their variants, submissions): instructor API keys only."""
         return self.is_instructor and self.api_key

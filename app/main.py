@@ -47,6 +47,7 @@ def create_app(
             max_tasks=settings.worker_max_tasks,
             queue_size=settings.check_queue_size,
             max_answer_chars=settings.max_answer_chars,
+            per_owner=settings.student_checks_in_flight,
         )
         if pool is None:
             await run_in_threadpool(grading.start)

@@ -25,6 +25,8 @@ class Settings(BaseSettings):
     check_memory_mb: int = Field(default=1024, ge=128)
     check_workers: int = Field(default=2, ge=1)
     check_queue_size: int = Field(default=64, ge=1)
+    # Checks one student (or LMS session) may have running at once; instructor API keys are not limited.
+    student_checks_in_flight: int = Field(default=2, ge=1)
     worker_max_tasks: int = Field(default=500, ge=1)
 
     # Above the answer limit on purpose: an over-long answer gets an `invalid` verdict, not a 413.

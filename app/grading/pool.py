@@ -32,10 +32,13 @@ class GradingPool:
         max_tasks: int,
         queue_size: int,
         max_answer_chars: int = 2000,
+        per_owner: int = 2,
         task: Callable[[CheckJob], Verdict | SpecProblem] = grade,
     ):
         self._task = task
         self._max_answer_chars = max_answer_chars
+        self._per_owner = per_owner
+        self._owners: dict[str, int] = {}
         self._workers = workers
         self._timeout = timeout
         self._memory_mb = memory_mb
@@ -74,31 +77,40 @@ class GradingPool:
         assert self._pool is not None, "GradingPool.start() was not called"
         return self._pool.schedule(task, args=(job,), timeout=self._timeout)
 
-    async def _run(self, task: Callable[[CheckJob], T | SpecProblem], job: CheckJob) -> T:
-        """Run in a worker within the queue's capacity; raises FutureTimeout or ProcessExpired."""
+    async def _run(self, task: Callable[[CheckJob], T | SpecProblem], job: CheckJob, owner: str | None) -> T:
+        """Run in a worker within the queue's capacity, and within `owner`'s share of the workers (so
+        one student's slow answers cannot hold them all); raises FutureTimeout or ProcessExpired."""
         if self._in_flight >= self._capacity:
             raise Busy("The grading queue is full; try again shortly.", retry_after=1)
+        if owner is not None and self._owners.get(owner, 0) >= self._per_owner:
+            raise Busy("Your previous answers are still being checked; try again in a moment.", retry_after=1)
         self._in_flight += 1
+        if owner is not None:
+            self._owners[owner] = self._owners.get(owner, 0) + 1
         try:
             outcome: T | SpecProblem = await asyncio.wrap_future(self._submit(task, job))
         finally:
             self._in_flight -= 1
+            if owner is not None:
+                self._owners[owner] -= 1
+                if not self._owners[owner]:
+                    del self._owners[owner]
         if isinstance(outcome, SpecProblem):
             raise SpecError(outcome.message, outcome.path)
         return outcome
 
-    async def preview(self, job: CheckJob) -> Preview:
+    async def preview(self, job: CheckJob, owner: str | None = None) -> Preview:
         """How the answer reads, also in a worker (the parser is bounded, but not trusted to be)."""
         if len(job.answer) > self._max_answer_chars:
             return Preview(
                 None, InputProblem(f"The answer is longer than {self._max_answer_chars} characters.")
             )
         try:
-            return await self._run(read_only, job)
+            return await self._run(read_only, job, owner)
         except (FutureTimeout, ProcessExpired):
             return Preview(None, InputProblem(TIMEOUT_MESSAGE))
 
-    async def check(self, job: CheckJob) -> Verdict:
+    async def check(self, job: CheckJob, owner: str | None = None) -> Verdict:
         """Grade in a worker; a timeout or a killed worker is an `invalid` verdict, never a hang."""
         if len(job.answer) > self._max_answer_chars:
             # Refused before any worker sees it: the cheapest hostile answer is the longest.
@@ -107,7 +119,7 @@ class GradingPool:
                 TooLarge(f"The answer is longer than {limit} characters; shorten it.", limit)
             )
         try:
-            return await self._run(self._task, job)
+            return await self._run(self._task, job, owner)
         except FutureTimeout:
             return Verdict.invalid(CheckTimeout(TIMEOUT_MESSAGE))
         except ProcessExpired as error:

@@ -18,14 +18,19 @@ LOGGED_ANSWER_CHARS = 120
 
 
 async def submit_answer(
-    services: Services, record: ProblemRecord, part_id: str, student: str, answer: str
+    services: Services,
+    record: ProblemRecord,
+    part_id: str,
+    student: str,
+    answer: str,
+    share: str | None = None,
 ) -> SubmissionResult:
     catalog = services.catalog
     # No early refusal when attempts are used up: an unreadable answer uses none and is still filed,
     # and only grading tells which it is. The insert refuses a graded one over the limit.
     max_attempts = catalog.max_attempts(record, part_id)
     job = await run_in_threadpool(catalog.job, record, part_id, student, answer)
-    verdict = await services.pool.check(job)
+    verdict = await services.pool.check(job, share)
     log.info(
         "graded",
         extra={

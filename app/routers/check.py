@@ -14,6 +14,6 @@ router = APIRouter(tags=["check"])
 
 @router.post("/v1/check", response_model=VerdictPublic)
 async def check(
-    body: Annotated[CheckIn, Body()], services: ServicesDep, _: CurrentPrincipal
+    body: Annotated[CheckIn, Body()], services: ServicesDep, principal: CurrentPrincipal
 ) -> VerdictPublic:
-    return VerdictPublic.of(await services.pool.check(body.job()))
+    return VerdictPublic.of(await services.pool.check(body.job(), principal.grading_share))

@@ -87,7 +87,7 @@ async def submit(
     who = student_of(principal, body.student)
     record = await run_in_threadpool(services.catalog.get, problem_id)
     _require_part(services, record, part_id)
-    return await submit_answer(services, record, part_id, who, body.answer)
+    return await submit_answer(services, record, part_id, who, body.answer, principal.grading_share)
 
 
 @router.post("/v1/problems/{problem_id}/parts/{part_id}/preview", response_model=PreviewPublic)
@@ -99,7 +99,7 @@ async def preview(
     record = await run_in_threadpool(services.catalog.get, problem_id)
     _require_part(services, record, part_id)
     job = await run_in_threadpool(services.catalog.job, record, part_id, who, body.answer)
-    result = await services.pool.preview(job)
+    result = await services.pool.preview(job, principal.grading_share)
     return PreviewPublic(read_as=result.read_as, error=result.error)
 
 

@@ -157,3 +157,27 @@ def test_previews_count_against_the_queue_too(hanging_pool):
         await asyncio.gather(*tasks)
 
     asyncio.run(scenario())
+
+
+def test_one_student_cannot_hold_more_than_its_share_of_the_workers(hanging_pool):
+    from app.errors import Busy
+
+    symbols = (SymbolDecl("m", "kg"),)
+
+    def job(answer: str) -> SymbolicJob:
+        return SymbolicJob(answer=answer, expected="m", symbols=symbols)
+
+    async def scenario():
+        held = [asyncio.ensure_future(hanging_pool.check(job("hang"), "ada")) for _ in range(2)]
+        await asyncio.sleep(0.05)
+        with pytest.raises(Busy, match="still being checked"):
+            await hanging_pool.check(job("m"), "ada")
+        queued = asyncio.ensure_future(hanging_pool.check(job("m"), "bob"))  # another student still gets in
+        unlimited = asyncio.ensure_future(hanging_pool.check(job("m"), None))  # an instructor key too
+        results = await asyncio.gather(*held, queued, unlimited)
+        after = await hanging_pool.check(job("m"), "ada")  # the share is given back
+        return results, after
+
+    results, after = asyncio.run(scenario())
+    assert [r.reason.value for r in results] == ["timeout", "timeout", "equivalent", "equivalent"]
+    assert after.outcome.value == "correct"
