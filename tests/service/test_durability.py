@@ -47,7 +47,14 @@ def _all_submission_ids(server: LiveServer, key: str) -> set[str]:
 
 def test_acknowledged_submissions_survive_sigkill(database_url: str, tmp_path: Path):
     instructor, student = _keys(database_url)
-    server = LiveServer(database_url, tmp_path / "server.log", warm_up="false").start()
+    # Load from four clients: the student's own per-minute budget and two-check share would only slow it.
+    server = LiveServer(
+        database_url,
+        tmp_path / "server.log",
+        warm_up="false",
+        student_rate_limit_per_minute="100000",
+        student_checks_in_flight="8",
+    ).start()
     acknowledged: list[str] = []
     lock, stop = threading.Lock(), threading.Event()
 
