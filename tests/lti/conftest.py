@@ -22,11 +22,10 @@ from app.db.problems import save_builtin
 from app.grading.pool import GradingPool
 from app.lti import keys
 from app.lti.context import LtiContext
-from app.lti.platforms import add_platform
 from app.lti.router import router
 from app.settings import Settings
 from problems.loader import BANK_DIR
-from tests.lti.fake_lms import CLIENT_ID, DEPLOYMENT_ID, ISSUER, TOOL, FakeLms
+from tests.lti.fake_lms import CLIENT_ID, DEPLOYMENT_ID, ISSUER, TOOL, FakeLms, register_fake_lms
 
 PROBLEMS = {
     "moving-wedge": {"title": "Block on a moving wedge", "parts": [{"id": "a"}, {"id": "b"}]},
@@ -70,9 +69,7 @@ def template_database(tmp_path_factory: pytest.TempPathFactory) -> Path:
         for problem_id, document in PROBLEMS.items():
             save_builtin(session, problem_id, document)
         keys.create_key(session)
-    add_platform(
-        database, ISSUER, CLIENT_ID, [DEPLOYMENT_ID], f"{ISSUER}/auth", f"{ISSUER}/token", f"{ISSUER}/jwks"
-    )
+    register_fake_lms(database)
     database.dispose()
     return path
 

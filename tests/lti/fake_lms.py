@@ -223,3 +223,12 @@ class FakeLms:
             return JSONResponse({"message": result.message}, status_code=result.code)
 
         return app
+
+
+def register_fake_lms(database: t.Any) -> None:
+    """What an administrator does with `physcheck lti add-platform` for this LMS."""
+    from app.lti.platforms import add_platform
+
+    add_platform(
+        database, ISSUER, CLIENT_ID, [DEPLOYMENT_ID], f"{ISSUER}/auth", f"{ISSUER}/token", f"{ISSUER}/jwks"
+    )

@@ -26,13 +26,10 @@ from app.grading.pool import GradingPool
 from app.keys import create_key
 from app.lti.models import LtiScoreOutbox
 from app.lti.outbox import DELIVERED, PENDING, SENDING, OutboxWorker
-from app.lti.platforms import add_platform
 from app.main import create_app
 from app.settings import Settings
 from tests.lti.conftest import platform_launch
 from tests.lti.fake_lms import (
-    CLIENT_ID,
-    DEPLOYMENT_ID,
     INSTRUCTOR,
     ISSUER,
     LEARNER,
@@ -40,6 +37,7 @@ from tests.lti.fake_lms import (
     FakeLms,
     NextLaunch,
     ReceivedScore,
+    register_fake_lms,
 )
 
 # About a second or two each (one bank problem, one shared grading worker): not marked slow.
@@ -86,16 +84,7 @@ async def sites(e2e_settings: Settings, lti_grading_pool: GradingPool) -> AsyncI
     app = create_app(e2e_settings, pool=lti_grading_pool, lms_transport=httpx.ASGITransport(app=lms.app))
     async with app.router.lifespan_context(app):
         database: Database = app.state.services.database
-        await run_in_threadpool(
-            add_platform,
-            database,
-            ISSUER,
-            CLIENT_ID,
-            [DEPLOYMENT_ID],
-            f"{ISSUER}/auth",
-            f"{ISSUER}/token",
-            f"{ISSUER}/jwks",
-        )
+        await run_in_threadpool(register_fake_lms, database)
         mounts = {
             "all://tool.test": httpx.ASGITransport(app=app),
             "all://lms.test": httpx.ASGITransport(app=lms.app),

@@ -27,12 +27,18 @@ from fastapi import FastAPI
 from app.db.database import Database
 from app.grading.pool import GradingPool
 from app.keys import create_key
-from app.lti.platforms import add_platform
 from app.lti.sessions import SESSION_COOKIE
 from app.main import create_app
 from app.settings import Settings
 from tests.lti.conftest import platform_launch
-from tests.lti.fake_lms import CLIENT_ID, DEPLOYMENT_ID, ISSUER, LEARNER, TOOL, FakeLms, NextLaunch
+from tests.lti.fake_lms import (
+    ISSUER,
+    LEARNER,
+    TOOL,
+    FakeLms,
+    NextLaunch,
+    register_fake_lms,
+)
 
 CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
 pytestmark = [
@@ -220,16 +226,7 @@ def test_wrong_key_is_refused_on_the_page(served: Served) -> None:
 async def _launch(served: Served) -> str:
     """An LTI launch from the fake LMS into the served app (in-process, under its configured name);
     returns the session cookie the browser would now hold."""
-    await anyio.to_thread.run_sync(
-        add_platform,
-        served.database,
-        ISSUER,
-        CLIENT_ID,
-        [DEPLOYMENT_ID],
-        f"{ISSUER}/auth",
-        f"{ISSUER}/token",
-        f"{ISSUER}/jwks",
-    )
+    await anyio.to_thread.run_sync(register_fake_lms, served.database)
     mounts = {
         "all://tool.test": httpx.ASGITransport(app=served.app),
         "all://lms.test": httpx.ASGITransport(app=served.lms.app),
