@@ -75,6 +75,7 @@ def create_app(
             transport=lms_transport,
             student_view=storage.catalog.student_view,
             authenticate_key=storage.keys.authenticate,
+            figure=storage.catalog.figure,
         )
         outbox = OutboxWorker(storage.database, settings, lms_transport)
         await outbox.start()
