@@ -13,6 +13,7 @@ from starlette.concurrency import run_in_threadpool
 from app.authoring import AuthoringPool
 from app.errors import install_error_handlers
 from app.grading.pool import GradingPool
+from app.instructor import router as instructor_routes
 from app.lti import router as lti_routes
 from app.lti.context import LtiContext
 from app.lti.grades import queue_grade
@@ -104,4 +105,6 @@ def create_app(
     app.include_router(submissions.router)
     app.include_router(authoring_routes.router)
     app.include_router(lti_routes.router)
+    app.include_router(instructor_routes.router)
+    instructor_routes.install_page_handlers(app)
     return app
