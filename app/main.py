@@ -25,6 +25,8 @@ from app.routers import check, health, problems, submissions
 from app.services import Services
 from app.settings import Settings, get_settings
 from app.startup import open_storage
+from app.web import router as web_routes
+from app.web.layout import STATIC_PATH, static_files
 
 
 def create_app(
@@ -105,6 +107,8 @@ def create_app(
     app.include_router(submissions.router)
     app.include_router(authoring_routes.router)
     app.include_router(lti_routes.router)
+    app.include_router(web_routes.router)
+    app.mount(STATIC_PATH, static_files(), name="static")
     app.include_router(instructor_routes.router)
     instructor_routes.install_page_handlers(app)
     return app

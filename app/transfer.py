@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import csv
 import json
 import sys
 from pathlib import Path
@@ -16,6 +15,7 @@ from app.db import problems as problem_repository
 from app.db import submissions as submission_repository
 from app.db.database import Database
 from app.db.records import ProblemRecord
+from app.spreadsheet import SafeWriter
 from problems.errors import ProblemInvalid
 
 SUBMISSION_COLUMNS = (
@@ -68,8 +68,9 @@ def export_submissions(
     progress: bool = True,
 ) -> int:
     """Every submission (of one problem, of one student) as CSV, oldest first; returns how many rows
-    were written. `progress=False` (the web pages) draws no progress bar on stderr."""
-    writer = csv.writer(out)
+    were written. Text cells are neutralised for spreadsheets (`app.spreadsheet`). `progress=False`
+    (the web pages) draws no progress bar on stderr."""
+    writer = SafeWriter(out)
     writer.writerow(SUBMISSION_COLUMNS)
     rows, cursor = 0, None
     with tqdm(unit=" submissions", file=sys.stderr, disable=None if progress else True) as bar:

@@ -311,6 +311,7 @@ async def _edit_page(
     errors: list[dict[str, Any]] | None = None,
     described: Described | None = None,
     document: dict[str, Any] | None = None,
+    warnings: list[dict[str, Any]] | None = None,
     status: int = 200,
 ) -> Response:
     action = "/instructor/problems/new" if problem_id is None else f"/instructor/problems/{problem_id}/edit"
@@ -333,6 +334,7 @@ async def _edit_page(
             "described": described,
             "preview_doc": preview_doc,
             "preview_statement": preview_statement,
+            "warnings": warnings,
         },
         status=status,
     )
@@ -392,6 +394,10 @@ async def _vet_and_maybe_save_form(
             source=source,
             described=vetted.described,
             document=vetted.document,
+            warnings=[
+                {"path": path, "message": message, "line": vetted.lines.get(path)}
+                for path, message in vetted.warnings
+            ],
         )
     try:
         if problem_id is None:

@@ -377,3 +377,15 @@ def test_pages_are_served_with_a_strict_content_security_policy(signed_in: TestC
     response = signed_in.get("/instructor/problems")
     assert "script-src 'self'" in response.headers["content-security-policy"]
     assert "frame-ancestors 'self'" in response.headers["content-security-policy"]
+
+
+def test_preview_lists_texts_that_will_not_render_cleanly_with_their_lines(signed_in: TestClient):
+    token = csrf_of(signed_in.get("/instructor/problems/new").text)
+    source = upload_text().replace("Use $g$ for", r"Use $\gravity$ for")
+    line = next(i for i, text in enumerate(source.splitlines(), 1) if text.startswith("statement:"))
+    preview = signed_in.post(
+        "/instructor/problems/new", data={"csrf": token, "source": source, "action": "preview"}
+    )
+    assert preview.status_code == 200
+    assert "1 text will not render cleanly" in preview.text
+    assert f'<code class="path">statement</code> <span class="line">line {line}</span>' in preview.text
