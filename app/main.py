@@ -24,6 +24,8 @@ from app.routers import check, health, problems, submissions
 from app.services import Services
 from app.settings import Settings, get_settings
 from app.startup import open_storage
+from app.web import router as web_routes
+from app.web.layout import STATIC_PATH, static_files
 
 
 def create_app(
@@ -104,4 +106,6 @@ def create_app(
     app.include_router(submissions.router)
     app.include_router(authoring_routes.router)
     app.include_router(lti_routes.router)
+    app.include_router(web_routes.router)
+    app.mount(STATIC_PATH, static_files(), name="static")
     return app
