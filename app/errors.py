@@ -148,7 +148,9 @@ def install_error_handlers(app: FastAPI) -> None:
 
     @app.exception_handler(DerivationError)
     async def derivation_error(request: Request, error: DerivationError) -> JSONResponse:
-        details = [{"path": format_path(("model", *path)), "message": message} for path, message in error.items()]
+        details = [
+            {"path": format_path(("model", *path)), "message": message} for path, message in error.items()
+        ]
         return _json(422, "derivation_failed", error.message, details)
 
     @app.exception_handler(storage.StorageError)

@@ -53,9 +53,9 @@ def _derive(model: Model) -> Derivation:
             try:
                 value = method.answer(quantity)
                 _check_free_symbols(model, quantity, method, value)
-            except NotApplicable as reason:
-                notes.append(f"{quantity.name}: {reason}")
-                stopped[quantity.name][method.name] = f"does not apply ({reason})"
+            except NotApplicable as why:
+                notes.append(f"{quantity.name}: {why}")
+                stopped[quantity.name][method.name] = f"does not apply ({why})"
                 continue
             except DerivationError as error:
                 notes.append(f"{quantity.name}: stopped: {error.message}")
