@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import functools
 import threading
 from collections.abc import AsyncIterator
 from contextlib import asynccontextmanager
@@ -11,6 +12,7 @@ from fastapi import FastAPI
 from starlette.concurrency import run_in_threadpool
 
 from app.authoring import AuthoringPool
+from app.deps import budget_wait
 from app.errors import install_error_handlers
 from app.grading.pool import GradingPool
 from app.lti import router as lti_routes
@@ -75,6 +77,7 @@ def create_app(
             transport=lms_transport,
             student_view=storage.catalog.student_view,
             authenticate_key=storage.keys.authenticate,
+            rate_limit=functools.partial(budget_wait, app.state.services),
         )
         outbox = OutboxWorker(storage.database, settings, lms_transport)
         await outbox.start()
