@@ -15,6 +15,7 @@ from app.authoring import AuthoringPool
 from app.deps import budget_wait
 from app.errors import install_error_handlers
 from app.grading.pool import GradingPool
+from app.instructor import router as instructor_routes
 from app.lti import router as lti_routes
 from app.lti.context import LtiContext
 from app.lti.grades import queue_grade
@@ -111,4 +112,6 @@ def create_app(
     app.include_router(lti_routes.router)
     app.include_router(web_routes.router)
     app.mount(STATIC_PATH, static_files(), name="static")
+    app.include_router(instructor_routes.router)
+    instructor_routes.install_page_handlers(app)
     return app

@@ -109,6 +109,7 @@ def test_bank_verify_names_the_parts_that_are_not_derived(problem: str) -> None:
 
 def test_a_derivation_fault_is_reported_at_its_place_in_the_model(client, instructor_headers):
     doc = atwood_upload()
-    doc["model"]["constraints"]["string"]["gap"] = "y_m1 - y_m2"  # the positions break this string
+    doc["model"].pop("elements")
+    doc["model"]["constraints"] = {"string": {"kind": "string", "gap": "y_m1 - y_m2"}}  # the positions break it
     details = _details(upload(client, instructor_headers, doc))
     assert "violate" in details["model.constraints.string"]
