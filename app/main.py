@@ -23,7 +23,7 @@ from app.routers import authoring as authoring_routes
 from app.routers import check, health, problems, submissions
 from app.services import Services
 from app.settings import Settings, get_settings
-from app.startup import open_storage
+from app.startup import open_storage_when_reachable
 
 
 def create_app(
@@ -39,7 +39,7 @@ def create_app(
 
     @asynccontextmanager
     async def lifespan(app: FastAPI) -> AsyncIterator[None]:
-        storage = await run_in_threadpool(open_storage, settings)
+        storage = await run_in_threadpool(open_storage_when_reachable, settings)
         grading = pool or GradingPool(
             workers=settings.check_workers,
             timeout=settings.check_timeout_seconds,
