@@ -36,6 +36,12 @@ _PROBLEM_ID = re.compile(r"^[A-Za-z0-9][A-Za-z0-9._-]{0,99}$")
 _FRAGMENT_HEADERS = {"Cache-Control": "no-store", "X-Content-Type-Options": "nosniff"}
 
 
+class Throttled(Exception):
+    def __init__(self, wait: int) -> None:
+        super().__init__(wait)
+        self.wait = wait
+
+
 @dataclass(frozen=True)
 class Caller:
     student: str  # whose work the page shows and submits (an instructor key previews as "preview:…")
@@ -51,7 +57,13 @@ async def _caller(request: Request, context: LtiContext, *, allow_key: bool) -> 
     token = bearer_token(request.headers.get("authorization"))
     if allow_key and token is not None and context.authenticate_key is not None:
         principal = await run_in_threadpool(context.authenticate_key, token)
-        return None if principal is None else Caller(_who(principal.student, principal.key_id), None)
+        if principal is None:
+            return None
+        # A key's page requests spend the API's budgets (per key and per student), as its API calls do.
+        wait = None if context.rate_limit is None else await run_in_threadpool(context.rate_limit, principal)
+        if wait is not None:
+            raise Throttled(wait)
+        return Caller(_who(principal.student, principal.key_id), None)
     found = await run_in_threadpool(current_session, request)
     if found is None:
         return None
@@ -197,16 +209,29 @@ def _fragment(request: Request, template: str, values: Mapping[str, Any]) -> HTM
     return templates.TemplateResponse(request, template, dict(values), headers=_FRAGMENT_HEADERS)
 
 
-def _refused(status: int, text: str) -> Response:
-    return Response(text, status_code=status, media_type="text/plain", headers=_FRAGMENT_HEADERS)
+def _refused(status: int, text: str, headers: Mapping[str, str] | None = None) -> Response:
+    return Response(
+        text, status_code=status, media_type="text/plain", headers={**_FRAGMENT_HEADERS, **(headers or {})}
+    )
+
+
+async def _fragment_caller(request: Request, context: LtiContext) -> Caller | Response:
+    """The caller of a fragment, or the response refusing it (401, or 429 with Retry-After)."""
+    try:
+        caller = await _caller(request, context, allow_key=True)
+    except Throttled as throttled:
+        return _refused(
+            429, f"Too many requests; try again in {throttled.wait} s.", {"Retry-After": str(throttled.wait)}
+        )
+    return caller if caller is not None else _refused(401, "unauthenticated")
 
 
 @router.get("/p/{problem_id}/content", include_in_schema=False)
 async def student_content(problem_id: str, request: Request, context: LtiContextDep) -> Response:
     """The problem's HTML for the page's key mode (bearer key) or a session."""
-    caller = await _caller(request, context, allow_key=True)
-    if caller is None:
-        return _refused(401, "unauthenticated")
+    caller = await _fragment_caller(request, context)
+    if isinstance(caller, Response):
+        return caller
     loaded = await run_in_threadpool(_load, context, problem_id, caller.student)
     if loaded is None:
         return _refused(404, "not found")
@@ -216,9 +241,9 @@ async def student_content(problem_id: str, request: Request, context: LtiContext
 @router.get("/p/{problem_id}/parts/{part_id}/work", include_in_schema=False)
 async def part_work(problem_id: str, part_id: str, request: Request, context: LtiContextDep) -> Response:
     """One part's standing and history, and the problem's score, fresh after a submission."""
-    caller = await _caller(request, context, allow_key=True)
-    if caller is None:
-        return _refused(401, "unauthenticated")
+    caller = await _fragment_caller(request, context)
+    if isinstance(caller, Response):
+        return caller
     loaded = await run_in_threadpool(_load, context, problem_id, caller.student)
     parts = {part["id"]: part for part in _parts(loaded.view)} if loaded else {}
     if loaded is None or part_id not in parts:
@@ -258,8 +283,8 @@ async def problems_page(request: Request, context: LtiContextDep) -> Response:
 
 @router.get("/problems/content", include_in_schema=False)
 async def problems_content(request: Request, context: LtiContextDep) -> Response:
-    caller = await _caller(request, context, allow_key=True)
-    if caller is None:
-        return _refused(401, "unauthenticated")
+    caller = await _fragment_caller(request, context)
+    if isinstance(caller, Response):
+        return caller
     rows = await run_in_threadpool(_problem_list, request, caller.student)
     return _fragment(request, "student/problem_list.html", {"problems": rows, "student": caller.student})

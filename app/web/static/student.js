@@ -107,6 +107,8 @@
     }
   }
 
+  var WORDS = { correct: "Correct.", incorrect: "Not correct.", invalid: "Could not read this answer." };
+
   function wire(form) {
     var part = form.getAttribute("data-part");
     var base = "/v1/problems/" + encodeURIComponent(problemId) + "/parts/" + encodeURIComponent(part);
@@ -161,7 +163,12 @@
       verdict.removeAttribute("data-verdict");
       verdict.textContent = "Checking…";
       post(base + "/submissions", { answer: input.value }).then(function (r) {
-        if (r.status === 201) { return refresh(null); }
+        if (r.status === 201) {
+          return refresh(null).catch(function () {
+            // Graded and stored, but the fresh standing could not be fetched: say the verdict at least.
+            verdict.textContent = (WORDS[r.data.verdict] || "Checked.") + " Reload the page to see the feedback.";
+          });
+        }
         if (r.status === 409 && r.data.error && r.data.error.code === "attempts_exhausted") {
           return refresh("You have used all your attempts on this part.");
         }
