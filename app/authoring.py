@@ -26,6 +26,7 @@ from problems.compiled import compile_problem
 from problems.errors import ProblemInvalid
 from problems.loader import parse_problem
 from problems.locate import locate
+from problems.schema import format_path
 from problems.selftest import verify_problem
 from problems.variants import fixed_variant
 
@@ -71,9 +72,7 @@ def _vet(source: bytes, fmt: Literal["json", "yaml"]) -> Vetted:
     except ProblemInvalid as error:
         return Vetted(None, error.errors)
     except DerivationError as error:
-        return Vetted(
-            None, [(f"model.quantities.{error.quantity}" if error.quantity else "model", error.message)]
-        )
+        return Vetted(None, [(format_path(("model", *path)), message) for path, message in error.items()])
     report = verify_problem(doc, variants=UPLOAD_SELFTEST_VARIANTS)
     if not report.ok:
         index = {part.id: i for i, part in enumerate(doc.parts)}

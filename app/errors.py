@@ -31,6 +31,7 @@ from starlette.exceptions import HTTPException as StarletteHTTPException
 from app.db import errors as storage
 from physics.errors import DerivationError, SpecError
 from problems.errors import ProblemInvalid
+from problems.schema import format_path
 
 log = logging.getLogger("physcheck.errors")
 DATABASE_RETRY_AFTER = 5
@@ -162,7 +163,7 @@ def install_error_handlers(app: FastAPI) -> None:
     @app.exception_handler(DerivationError)
     async def derivation_error(request: Request, error: DerivationError) -> JSONResponse:
         details = [
-            {"path": f"model.{error.quantity}" if error.quantity else "model", "message": error.message}
+            {"path": format_path(("model", *path)), "message": message} for path, message in error.items()
         ]
         return _json(422, "derivation_failed", error.message, details)
 
