@@ -80,6 +80,8 @@ class CompiledNumericPart:
     tolerance: Tolerance
     document: ProblemDocument = field(repr=False)
     table: Mapping[str, sympy.Symbol] = field(repr=False)
+    arithmetic: bool = True
+    units_system: str | None = None
 
     def reference(self, variant: Variant) -> Decimal:
         """The expected value for this student, in `units`, to 12 significant figures."""
@@ -93,6 +95,8 @@ class CompiledNumericPart:
             units=None if dimensionless else self.units,
             units_required=self.units_required and not dimensionless,
             tolerance=self.tolerance,
+            arithmetic=self.arithmetic,
+            units_system=self.units_system,
         )
 
     def job(self, answer: str, variant: Variant) -> NumericJob:
@@ -354,7 +358,18 @@ def _numeric_part(
         raise SpecError(f"needs given values for {', '.join(missing)}", (*path, "of"))
     _require_dimension(expr, part, specs, table, path)
     tolerance = Tolerance(rel=part.tolerance.rel, abs=part.tolerance.abs, sigfigs=part.tolerance.sigfigs)
-    return CompiledNumericPart(part.id, part.of, expr, part.units, part.units_required, tolerance, doc, table)
+    return CompiledNumericPart(
+        part.id,
+        part.of,
+        expr,
+        part.units,
+        part.units_required,
+        tolerance,
+        doc,
+        table,
+        arithmetic=part.arithmetic,
+        units_system=part.units_system,
+    )
 
 
 def _require_dimension(

@@ -105,7 +105,8 @@
           if (r.data.error) {
             preview.textContent = "Cannot read this yet: " + r.data.error.message;
           } else if (r.data.read_as) {
-            preview.textContent = "Read as: " + readable(r.data.read_as.text);
+            preview.textContent = "Read as: " + readable(r.data.read_as.text) +
+              (r.data.read_as.note ? " (" + r.data.read_as.note + ")" : "");
           }
         }).catch(function () { preview.textContent = ""; });
       }, 300);
