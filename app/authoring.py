@@ -9,31 +9,53 @@ from __future__ import annotations
 import asyncio
 import multiprocessing
 from concurrent.futures import TimeoutError as FutureTimeout
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any, Literal
 
 from pebble import ProcessExpired, ProcessPool
 
 from app.grading.worker import limit_memory
+from app.instructor.described import Described, describe
+from app.web.document_text import render_problems
 from physics.errors import DerivationError
 from problems.compiled import compile_problem
 from problems.errors import ProblemInvalid
 from problems.loader import parse_problem
+from problems.locate import locate
 from problems.selftest import verify_problem
+from problems.variants import fixed_variant
 
 UPLOAD_SELFTEST_VARIANTS = 5
 
 
 @dataclass(frozen=True)
 class Vetted:
-    """The outcome of vetting: a clean document (JSON-ready) or every error found, with paths."""
+    """The outcome of vetting: a clean document (JSON-ready) or every error found, with paths; for the
+    instructor pages, what the engine derived (a preview), texts that will not render cleanly (saved
+    all the same), and the line each path is on."""
 
     document: dict[str, Any] | None
     errors: list[tuple[str, str]] = field(default_factory=list)
+    described: Described | None = None
+    warnings: list[tuple[str, str]] = field(default_factory=list)
+    lines: dict[str, int] = field(default_factory=dict)
 
 
 def vet(source: bytes, fmt: Literal["json", "yaml"]) -> Vetted:
-    """Every fault of an upload with its path: shape and meaning, then the derivation, then the self-test."""
+    """Every fault of an upload with its path, and the line each is on."""
+    vetted = _vet(source, fmt)
+    paths = [path for path, _ in (*vetted.errors, *vetted.warnings)]
+    if not paths:
+        return vetted
+    try:
+        text = source.decode("utf-8")
+    except UnicodeDecodeError:
+        return vetted
+    return replace(vetted, lines=locate(text, paths))
+
+
+def _vet(source: bytes, fmt: Literal["json", "yaml"]) -> Vetted:
+    """Shape and meaning, then the derivation, then the self-test."""
     try:
         doc = parse_problem(source, fmt)
         compile_problem(doc)
@@ -51,7 +73,9 @@ def vet(source: bytes, fmt: Literal["json", "yaml"]) -> Vetted:
             for f in report.failures
         ]
         return Vetted(None, errors)
-    return Vetted(doc.model_dump(mode="json"))
+    # Midpoint values of every given: the numbers a preview shows before any student has a variant.
+    described = describe(compile_problem(doc), fixed_variant(doc, {}))
+    return Vetted(doc.model_dump(mode="json"), described=described, warnings=render_problems(doc))
 
 
 class AuthoringPool:

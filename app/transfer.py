@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import csv
 import json
 import sys
 from pathlib import Path
@@ -16,6 +15,7 @@ from app.db import problems as problem_repository
 from app.db import submissions as submission_repository
 from app.db.database import Database
 from app.db.records import ProblemRecord
+from app.spreadsheet import SafeWriter
 from problems.errors import ProblemInvalid
 
 SUBMISSION_COLUMNS = (
@@ -59,16 +59,25 @@ def export_problem(database: Database, problem_id: str, fmt: str, out: TextIO) -
         yaml.safe_dump(document, out, sort_keys=False, allow_unicode=True)
 
 
-def export_submissions(database: Database, problem_id: str | None, out: TextIO) -> int:
-    """Every submission (of one problem) as CSV, oldest first; returns how many rows were written."""
-    writer = csv.writer(out)
+def export_submissions(
+    database: Database,
+    problem_id: str | None,
+    out: TextIO,
+    *,
+    student: str | None = None,
+    progress: bool = True,
+) -> int:
+    """Every submission (of one problem, of one student) as CSV, oldest first; returns how many rows
+    were written. Text cells are neutralised for spreadsheets (`app.spreadsheet`). `progress=False`
+    (the web pages) draws no progress bar on stderr."""
+    writer = SafeWriter(out)
     writer.writerow(SUBMISSION_COLUMNS)
     rows, cursor = 0, None
-    with tqdm(unit=" submissions", file=sys.stderr, disable=None) as bar:
+    with tqdm(unit=" submissions", file=sys.stderr, disable=None if progress else True) as bar:
         while True:
             with database.session(read_only=True) as session:
                 page = submission_repository.list_submissions(
-                    session, problem_id=problem_id, limit=EXPORT_PAGE, cursor=cursor
+                    session, problem_id=problem_id, student=student, limit=EXPORT_PAGE, cursor=cursor
                 )
             for item in page.items:
                 writer.writerow(
