@@ -23,6 +23,7 @@ from app.schemas.problems import (
     SubmissionResult,
 )
 from app.services import Services
+from app.web.rendering import tex_to_mathml
 
 router = APIRouter(tags=["problems"])
 
@@ -100,7 +101,8 @@ async def preview(
     _require_part(services, record, part_id)
     job = await run_in_threadpool(services.catalog.job, record, part_id, who, body.answer)
     result = await services.pool.preview(job, principal.grading_share)
-    return PreviewPublic(read_as=result.read_as, error=result.error)
+    mathml = str(tex_to_mathml(result.read_as.latex, display=True)) if result.read_as else None
+    return PreviewPublic(read_as=result.read_as, error=result.error, mathml=mathml)
 
 
 def _require_part(services: Services, record: ProblemRecord, part_id: str) -> None:
