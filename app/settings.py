@@ -31,6 +31,8 @@ class Settings(BaseSettings):
 
     # Above the answer limit on purpose: an over-long answer gets an `invalid` verdict, not a 413.
     upload_timeout_seconds: float = Field(default=120.0, gt=0)
+    # Uploads waiting for the one vetting worker before 503 + Retry-After (one per instructor key at most).
+    upload_queue_size: int = Field(default=4, ge=0)
 
     max_body_bytes: int = Field(default=2 * 1024 * 1024, ge=1024)
     max_answer_chars: int = Field(default=2000, ge=10)
