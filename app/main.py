@@ -61,7 +61,10 @@ def create_app(
             settings.upload_timeout_seconds, settings.check_memory_mb, settings.upload_queue_size
         )
         key_limiter, student_limiter = rate_limiters(
-            settings.redis_url, settings.rate_limit_per_minute, settings.student_rate_limit_per_minute
+            settings.redis_url,
+            settings.rate_limit_per_minute,
+            settings.student_rate_limit_per_minute,
+            settings.redis_prefix,
         )
         app.state.services = Services(
             settings=settings,

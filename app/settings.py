@@ -39,6 +39,8 @@ class Settings(BaseSettings):
 
     # Shared rate-limit counts for several instances (redis://host:6379/0); unset: per instance.
     redis_url: str | None = None
+    # Start of every Redis key, so that several deployments can share one Redis.
+    redis_prefix: str = Field(default="physcheck", min_length=1, max_length=64, pattern=r"^[A-Za-z0-9_.-]+$")
     rate_limit_per_minute: int = Field(default=600, ge=1)
     student_rate_limit_per_minute: int = Field(default=60, ge=1)
 
