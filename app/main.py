@@ -83,6 +83,7 @@ def create_app(
             transport=lms_transport,
             student_view=storage.catalog.student_view,
             authenticate_key=storage.keys.authenticate,
+            figure=storage.catalog.figure,
             rate_limit=functools.partial(budget_wait, app.state.services),
         )
         outbox = OutboxWorker(storage.database, settings, lms_transport)

@@ -34,7 +34,7 @@ from app.db import submissions as submission_repository
 from app.db.errors import ProblemExists
 from app.db.errors import ProblemNotFound as StoredProblemNotFound
 from app.db.records import ProblemRecord, Role
-from app.deps import ServicesDep
+from app.deps import ServicesDep, budget_wait
 from app.errors import AppError
 from app.instructor import session as auth
 from app.instructor.described import Described, MistakeInfo, describe
@@ -67,7 +67,7 @@ class PageError(Exception):
 
 async def signed_in(request: Request, services: ServicesDep) -> auth.Visitor:
     who = await auth.visitor(request, services)
-    wait = services.key_limiter.retry_after(who.principal.key_id)
+    wait = budget_wait(services, who.principal)
     if wait is not None:
         raise PageError(429, "Too many requests", f"Too many requests; try again in {wait} s.")
     return who

@@ -23,6 +23,7 @@ from app.schemas.problems import (
     SubmissionResult,
 )
 from app.services import Services
+from app.web.rendering import tex_to_mathml
 from physics.errors import SpecError
 
 router = APIRouter(tags=["problems"])
@@ -104,7 +105,8 @@ async def preview(
         result = await services.pool.preview(job, principal.grading_share)
     except SpecError as error:
         raise stored_problem_fault(error, {"problem": record.id, "part": part_id, "student": who}) from error
-    return PreviewPublic(read_as=result.read_as, error=result.error)
+    mathml = str(tex_to_mathml(result.read_as.latex, display=True)) if result.read_as else None
+    return PreviewPublic(read_as=result.read_as, error=result.error, mathml=mathml)
 
 
 def _require_part(services: Services, record: ProblemRecord, part_id: str) -> None:

@@ -154,7 +154,10 @@ def test_every_post_needs_the_sessions_csrf_token(signed_in: TestClient):
 
 def test_lms_instructor_session_sees_problems_but_no_students_work(client: TestClient, database: Database):
     client.cookies.set(SESSION_COOKIE, lms_session(database, Role.INSTRUCTOR))
-    assert client.get("/instructor/problems").status_code == 200
+    listing = client.get("/instructor/problems")
+    assert listing.status_code == 200
+    assert "Lee (from your LMS)" in listing.text and "Sign out" not in listing.text
+    assert "/instructor/problems/new" not in listing.text  # no upload link
     own = client.get("/instructor/problems/yo-yo")
     assert own.status_code == 200 and "Worked solutions" in own.text
     for path in (
