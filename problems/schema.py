@@ -186,6 +186,8 @@ class NumericPart(_Strict):
     units: Annotated[str, Field(min_length=1, max_length=100)]
     tolerance: ToleranceDecl = ToleranceDecl(rel=DEFAULT_REL_TOLERANCE)
     units_required: bool = True
+    arithmetic: bool = True  # the number may be arithmetic (`229/50 m/s^2`); False: a plain decimal
+    units_system: Literal["SI"] | None = None  # "SI": refuse answers in ft, lb, atm, …
     max_attempts: Attempts | None = None
 
     @property
