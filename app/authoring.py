@@ -23,13 +23,16 @@ from app.grading.worker import limit_memory
 from app.instructor.described import Described, describe
 from app.web.document_text import render_problems
 from physics.errors import DerivationError
+from physics.figures import model_figure
 from problems.compiled import compile_problem
 from problems.errors import ProblemInvalid
 from problems.loader import parse_problem
 from problems.locate import locate
-from problems.schema import format_path
+from problems.modelinfo import load_doc_model
+from problems.schema import ProblemDocument, format_path
 from problems.selftest import verify_problem
-from problems.variants import fixed_variant
+from problems.symbols import symbol_table
+from problems.variants import fixed_variant, si_values
 
 log = logging.getLogger("physcheck.authoring")
 UPLOAD_SELFTEST_VARIANTS = 5
@@ -47,6 +50,7 @@ class Vetted:
     described: Described | None = None
     warnings: list[tuple[str, str]] = field(default_factory=list)
     lines: dict[str, int] = field(default_factory=dict)
+    figure: str | None = None  # SVG drawn from the model at the givens' midpoints
 
 
 def vet(source: bytes, fmt: Literal["json", "yaml"]) -> Vetted:
@@ -85,7 +89,22 @@ def _vet(source: bytes, fmt: Literal["json", "yaml"]) -> Vetted:
         return Vetted(None, errors)
     # Midpoint values of every given: the numbers a preview shows before any student has a variant.
     described = describe(compile_problem(doc), fixed_variant(doc, {}))
-    return Vetted(doc.model_dump(mode="json"), described=described, warnings=render_problems(doc))
+    return Vetted(
+        doc.model_dump(mode="json"), described=described, warnings=render_problems(doc), figure=_figure(doc)
+    )
+
+
+def _figure(doc: ProblemDocument) -> str | None:
+    """The figure a student would see (at the midpoint values), or None: it only illustrates."""
+    if doc.model is None:
+        return None
+    try:
+        table = symbol_table(doc)
+        values = si_values(doc, fixed_variant(doc, {}), table)
+        model = load_doc_model(doc, table)
+        return model_figure(model, {s.name: float(v) for s, v in values.items()}, title=doc.title)
+    except Exception:  # a model the figures cannot draw yet still makes a good problem
+        return None
 
 
 class AuthoringPool:
