@@ -16,7 +16,7 @@ from dataclasses import dataclass, field
 
 import sympy
 
-from physics.engine.model import Body, Constraint, ConstraintKind, Model
+from physics.engine.model import Body, Constraint, ConstraintKind, Model, PairPotential
 from physics.figures.svg import FILLS, Canvas, Point
 
 GREEK = [
@@ -254,6 +254,38 @@ def draw_incline(figure: Figure, model: Model, values: Values, surfaces: list[Su
     return Slope(None if flat else upper, tangent, normal, bases)
 
 
+def _stiffness(potential: PairPotential, model: Model) -> list[sympy.Symbol]:
+    """The symbols of the factor in front of the energy's distance term: k in k (d - L0)^2 / 2."""
+    factor, _ = potential.energy.as_independent(potential.distance, as_Add=False)
+    return sorted((s for s in factor.free_symbols if s in set(model.parameters)), key=lambda s: s.name)
+
+
+def draw_slope_spring(
+    figure: Figure, model: Model, slope: Slope, body: Body, potential: PairPotential
+) -> None:
+    """A spring along the slope from a plate fixed at its upper end to the body's uphill face."""
+    if slope.upper is None:
+        return
+    tx, ty = slope.tangent
+    up = (tx, ty) if ty > 0 else (-tx, -ty)
+    nx, ny = slope.normal
+    base = slope.bases[body.name]
+    face = (base[0] + up[0] * BLOCK / 2 + nx * BLOCK / 2, base[1] + up[1] * BLOCK / 2 + ny * BLOCK / 2)
+    anchor = (slope.upper[0] + nx * BLOCK / 2 - up[0] * 0.1, slope.upper[1] + ny * BLOCK / 2 - up[1] * 0.1)
+    figure.canvas.line(
+        (anchor[0] - nx * 0.6, anchor[1] - ny * 0.6), (anchor[0] + nx * 0.6, anchor[1] + ny * 0.6), width=0.1
+    )
+    figure.canvas.spring(anchor, face, amplitude=0.18)
+    stiffness = _stiffness(potential, model)
+    middle = ((anchor[0] + face[0]) / 2 + nx * 0.55, (anchor[1] + face[1]) / 2 + ny * 0.55)
+    name = symbol_label(stiffness[0].name) if stiffness else ""
+    if name:
+        figure.canvas.text(middle, name)
+    figure.say(
+        f"A spring {name} along the incline holds {body_label(body, model)} from a point fixed up the slope."
+    )
+
+
 def draw_pulley_to_hanging(figure: Figure, model: Model, slope: Slope, on_slope: Body, hanging: Body) -> None:
     """A pulley at the slope's upper end; the string runs parallel to the slope, then down."""
     assert slope.upper is not None
@@ -468,7 +500,17 @@ def draw_row(figure: Figure, model: Model) -> None:
 
 
 def compose(model: Model, given: Mapping[str, float]) -> Figure:
-    """The figure for `model` with the parameters in `given` (SI, radians) or typical values."""
+    """The figure for `model` with the parameters in `given` (SI, radians) or typical values; a model
+    no element recognises (or whose numbers do not evaluate) gets its bodies side by side."""
+    try:
+        return _compose(model, given)
+    except (TypeError, ValueError, ZeroDivisionError, StopIteration, KeyError, IndexError):
+        figure = Figure()
+        draw_row(figure, model)
+        return figure
+
+
+def _compose(model: Model, given: Mapping[str, float]) -> Figure:
     figure = Figure()
     values = Values(model, given)
     strings = [c for c in model.constraints if c.kind is ConstraintKind.STRING]
@@ -490,6 +532,9 @@ def compose(model: Model, given: Mapping[str, float]) -> Figure:
     ]
     if fixed:
         slope = draw_incline(figure, model, values, fixed)
+        for potential in model.potentials:
+            if potential.anchor and len(potential.bodies) == 1 and potential.bodies[0] in slope.bases:
+                draw_slope_spring(figure, model, slope, model.body(potential.bodies[0]), potential)
         for string in strings:
             joined = _bodies_in(string.gap, model)
             hanging = [b for b in joined if b.name not in slope.bases]
@@ -509,9 +554,7 @@ def compose(model: Model, given: Mapping[str, float]) -> Figure:
         potential = model.potentials[0]
         bodies = [model.body(name) for name in potential.bodies]
         if potential.anchor and len(bodies) == 1:
-            spring = sorted(
-                (s for s in potential.energy.free_symbols if s in set(model.parameters)), key=lambda s: s.name
-            )
+            spring = _stiffness(potential, model)
             draw_spring(figure, model, bodies[0], spring[0] if spring else None)
             return figure
         if len(bodies) == 2:
