@@ -18,6 +18,7 @@ and sees grade passback; an LMS instructor session acts only for itself.
 from __future__ import annotations
 
 import io
+import logging
 import re
 from collections.abc import Mapping
 from typing import Annotated, Any, Literal
@@ -49,6 +50,7 @@ from problems.loader import MAX_DOCUMENT_BYTES, parse_problem
 from problems.variants import fill_statement, fixed_variant
 
 router = APIRouter(prefix="/instructor", include_in_schema=False)
+log = logging.getLogger("physcheck.instructor")
 
 PAGE_SIZE = 50
 SCRIPT = "/static/instructor.js"
@@ -314,6 +316,7 @@ async def _edit_page(
     described: Described | None = None,
     document: dict[str, Any] | None = None,
     warnings: list[dict[str, Any]] | None = None,
+    figure: str | None = None,
     status: int = 200,
 ) -> Response:
     action = "/instructor/problems/new" if problem_id is None else f"/instructor/problems/{problem_id}/edit"
@@ -337,6 +340,7 @@ async def _edit_page(
             "preview_doc": preview_doc,
             "preview_statement": preview_statement,
             "warnings": warnings,
+            "figure": figure,
         },
         status=status,
     )
@@ -394,7 +398,7 @@ async def _vet_and_maybe_save_form(
         return await _edit_page(
             request, services, who, problem_id=problem_id, source=source, errors=errors, status=422
         )
-    vetted = await services.authoring.vet(source.encode("utf-8"), fmt)
+    vetted = await services.authoring.vet(source.encode("utf-8"), fmt, who.principal.key_id)
     if vetted.document is None:
         errors = [
             {"path": path, "message": message, "line": vetted.lines.get(path)}
@@ -412,6 +416,7 @@ async def _vet_and_maybe_save_form(
             source=source,
             described=vetted.described,
             document=vetted.document,
+            figure=vetted.figure,
             warnings=[
                 {"path": path, "message": message, "line": vetted.lines.get(path)}
                 for path, message in vetted.warnings
@@ -485,11 +490,17 @@ async def problem(
         doc = catalog.document(record)
         variant = catalog.variant(record, whose)
         compiled = catalog.compiled(record)
+        try:
+            figure = catalog.figure(problem_id, whose)
+        except Exception:  # an illustration: the page is complete without it
+            log.exception("no figure for problem %r", problem_id)
+            figure = None
         return {
             "doc": doc,
             "record": record,
             "statement": fill_statement(doc.statement, doc, variant),
             "described": describe(compiled, variant),
+            "figure": figure,
         }
 
     context = await run_in_threadpool(load)

@@ -192,6 +192,8 @@ def test_problem_page_renders_references_mistakes_limits_and_every_method_as_mat
     assert "The string pulls up on the yo-yo" in html  # a known mistake's feedback
     assert "with no moment of inertia the yo-yo falls freely" in html  # a limiting case
     assert "$" not in re.sub(r'alttext="[^"]*"', "", html)  # no TeX left as text
+    figure = re.search(r'<figure class="problem-figure">\s*<svg[^>]*role="img"', html)
+    assert figure, "the figure drawn from the model"
 
 
 def test_a_students_variant_shows_their_values_and_expected_numbers(signed_in: TestClient):
@@ -248,6 +250,7 @@ def test_upload_shows_every_error_with_its_path_and_line_then_previews_then_save
     assert "Preview: no errors" in preview.text
     assert 'alttext="\\frac{g r^{2}}{k^{2} + r^{2}}"' in preview.text  # the derived answer
     assert "Lagrange" in preview.text
+    assert re.search(r'<figure class="problem-figure">\s*<svg', preview.text)
     assert signed_in.get("/instructor/problems/my-yoyo").status_code == 404  # nothing stored yet
 
     saved = signed_in.post(
