@@ -398,7 +398,7 @@ async def _vet_and_maybe_save_form(
         return await _edit_page(
             request, services, who, problem_id=problem_id, source=source, errors=errors, status=422
         )
-    vetted = await services.authoring.vet(source.encode("utf-8"), fmt)
+    vetted = await services.authoring.vet(source.encode("utf-8"), fmt, who.principal.key_id)
     if vetted.document is None:
         errors = [
             {"path": path, "message": message, "line": vetted.lines.get(path)}
