@@ -12,6 +12,7 @@ from app.db.records import ProblemRecord
 from app.deps import CurrentPrincipal, ServicesDep
 from app.errors import AppError, Forbidden, NotFound
 from app.grading.submit import submit_answer
+from app.openapi import AUTHENTICATED, errors
 from app.schemas.problems import (
     PartSummary,
     PreviewIn,
@@ -24,7 +25,7 @@ from app.schemas.problems import (
 )
 from app.services import Services
 
-router = APIRouter(tags=["problems"])
+router = APIRouter(tags=["problems"], responses=AUTHENTICATED)
 
 
 class StudentNotAllowed(AppError):
@@ -63,7 +64,7 @@ async def list_problems(services: ServicesDep, _: CurrentPrincipal) -> list[Prob
     return summaries
 
 
-@router.get("/v1/problems/{problem_id}", response_model=ProblemPublic)
+@router.get("/v1/problems/{problem_id}", response_model=ProblemPublic, responses=errors(403, 404, 422))
 async def get_problem(
     problem_id: str,
     services: ServicesDep,
@@ -79,7 +80,10 @@ async def get_problem(
 
 
 @router.post(
-    "/v1/problems/{problem_id}/parts/{part_id}/submissions", status_code=201, response_model=SubmissionResult
+    "/v1/problems/{problem_id}/parts/{part_id}/submissions",
+    status_code=201,
+    response_model=SubmissionResult,
+    responses=errors(403, 404, 409, 413, 422),
 )
 async def submit(
     problem_id: str, part_id: str, body: SubmissionIn, services: ServicesDep, principal: CurrentPrincipal
@@ -90,7 +94,11 @@ async def submit(
     return await submit_answer(services, record, part_id, who, body.answer, principal.grading_share)
 
 
-@router.post("/v1/problems/{problem_id}/parts/{part_id}/preview", response_model=PreviewPublic)
+@router.post(
+    "/v1/problems/{problem_id}/parts/{part_id}/preview",
+    response_model=PreviewPublic,
+    responses=errors(404, 413, 422),
+)
 async def preview(
     problem_id: str, part_id: str, body: PreviewIn, services: ServicesDep, principal: CurrentPrincipal
 ) -> PreviewPublic:
