@@ -27,7 +27,7 @@ from app.routers import authoring as authoring_routes
 from app.routers import check, health, problems, submissions
 from app.services import Services
 from app.settings import Settings, get_settings
-from app.startup import open_storage
+from app.startup import open_storage_when_reachable
 from app.web import router as web_routes
 from app.web.layout import STATIC_PATH, static_files
 
@@ -45,7 +45,7 @@ def create_app(
 
     @asynccontextmanager
     async def lifespan(app: FastAPI) -> AsyncIterator[None]:
-        storage = await run_in_threadpool(open_storage, settings)
+        storage = await run_in_threadpool(open_storage_when_reachable, settings)
         grading = pool or GradingPool(
             workers=settings.check_workers,
             timeout=settings.check_timeout_seconds,

@@ -38,7 +38,7 @@ from physics.symbolic import (
 )
 from physics.units import unit_dimension
 from problems.errors import ErrorItem, ProblemInvalid
-from problems.modelinfo import Derived, derive_doc, spec_error_items
+from problems.modelinfo import Derived, derive_doc, missing_quantity, spec_error_items
 from problems.schema import NumericPart, ProblemDocument, SymbolicPart, format_path
 from problems.symbols import bound_text, check_decls, read_bound, symbol_specs
 from problems.variants import Variant, evaluate_reference, si_values
@@ -57,6 +57,7 @@ class CompiledSymbolicPart:
     context: SymbolicContext
     # The same, as text, for check jobs that cross into worker processes (read back by the parser).
     job_template: SymbolicJob
+    derived: bool = False  # False: the reference is the author's typed answer, which no method checked
 
     @cached_property
     def question(self) -> SymbolicQuestion:
@@ -80,6 +81,7 @@ class CompiledNumericPart:
     tolerance: Tolerance
     document: ProblemDocument = field(repr=False)
     table: Mapping[str, sympy.Symbol] = field(repr=False)
+    derived: bool = False  # its expression is a model quantity derived by the engine
 
     def reference(self, variant: Variant) -> Decimal:
         """The expected value for this student, in `units`, to 12 significant figures."""
@@ -114,6 +116,11 @@ class CompiledProblem:
 
     def part(self, part_id: str) -> CompiledPart:
         return self.parts[part_id]
+
+    @property
+    def not_derived(self) -> tuple[str, ...]:
+        """Parts whose reference is only the author's typed answer: no method derived or checked it."""
+        return tuple(part_id for part_id, part in self.parts.items() if not part.derived)
 
     def question(self, part_id: str, variant: Variant | None = None) -> SymbolicQuestion | NumericSpec:
         """What `physics.checking.check_answer` needs; numeric parts need the student's variant."""
@@ -236,8 +243,9 @@ def _symbolic_part(
     names = dict(table) if allowed_names is None else {n: table[n] for n in allowed_names if n in table}
     hand = read_expression(part.answer, names, (*path, "answer")) if part.answer is not None else None
     derived_expr = derived.quantities.get(part.quantity_name) if derived is not None else None
-    if derived is not None and derived_expr is None and hand is None:
-        raise SpecError(f"the model has no quantity {part.quantity_name!r}", (*path, "quantity"))
+    if derived is not None and derived_expr is None and (hand is None or part.quantity is not None):
+        # a named quantity the model lacks is a fault even beside a typed answer: never a silent fall-back
+        raise SpecError(missing_quantity(part.quantity_name, derived.quantities), (*path, "quantity"))
     expected = derived_expr if derived_expr is not None else hand
     if expected is None:
         raise SpecError("needs an answer (there is no model to derive it from)", path)
@@ -281,7 +289,9 @@ def _symbolic_part(
         ),
         allowed=allowed_names,
     )
-    return CompiledSymbolicPart(part.id, part.quantity_name, expected, names, context, template)
+    return CompiledSymbolicPart(
+        part.id, part.quantity_name, expected, names, context, template, derived=derived_expr is not None
+    )
 
 
 def _new_mistakes(
@@ -344,9 +354,9 @@ def _numeric_part(
 ) -> CompiledNumericPart:
     path: tuple[str | int, ...] = ("parts", index)
     if part.of in symbolic:
-        expr = symbolic[part.of].expected
+        expr, from_model = symbolic[part.of].expected, symbolic[part.of].derived
     elif derived is not None and part.of in derived.quantities:
-        expr = derived.quantities[part.of]
+        expr, from_model = derived.quantities[part.of], True
     else:
         raise SpecError(f"{part.of!r} is neither a symbolic part nor a model quantity", (*path, "of"))
     missing = sorted(s.name for s in expr.free_symbols if s.name not in doc.given)
@@ -354,7 +364,9 @@ def _numeric_part(
         raise SpecError(f"needs given values for {', '.join(missing)}", (*path, "of"))
     _require_dimension(expr, part, specs, table, path)
     tolerance = Tolerance(rel=part.tolerance.rel, abs=part.tolerance.abs, sigfigs=part.tolerance.sigfigs)
-    return CompiledNumericPart(part.id, part.of, expr, part.units, part.units_required, tolerance, doc, table)
+    return CompiledNumericPart(
+        part.id, part.of, expr, part.units, part.units_required, tolerance, doc, table, from_model
+    )
 
 
 def _require_dimension(

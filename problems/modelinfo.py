@@ -45,6 +45,11 @@ class Derived:
         )
 
 
+def missing_quantity(name: str, quantities: Iterable[str]) -> str:
+    known = sorted(quantities)
+    return f"the model has no quantity {name!r}; its quantities are {', '.join(known) or 'none'}"
+
+
 def spec_error_items(error: SpecError) -> list[tuple[tuple[str | int, ...], str]]:
     """(path, message) for a SpecError or each member of a SpecErrors."""
     if isinstance(error, SpecErrors):

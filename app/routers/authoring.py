@@ -173,6 +173,7 @@ def solution_of(compiled: CompiledProblem) -> SolutionPublic:
                 text=sympy.sstr(expr),
                 latex=sympy.latex(expr),
                 units=units,
+                source="derived" if part.derived else "not derived",
             )
         )
     derived = compiled.derived
