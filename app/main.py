@@ -57,9 +57,14 @@ def create_app(
         if pool is None:
             await run_in_threadpool(grading.start)
         # Started on the first upload: most instances never vet one.
-        authoring = AuthoringPool(settings.upload_timeout_seconds, settings.check_memory_mb)
+        authoring = AuthoringPool(
+            settings.upload_timeout_seconds, settings.check_memory_mb, settings.upload_queue_size
+        )
         key_limiter, student_limiter = rate_limiters(
-            settings.redis_url, settings.rate_limit_per_minute, settings.student_rate_limit_per_minute
+            settings.redis_url,
+            settings.rate_limit_per_minute,
+            settings.student_rate_limit_per_minute,
+            settings.redis_prefix,
         )
         app.state.services = Services(
             settings=settings,
@@ -78,6 +83,7 @@ def create_app(
             transport=lms_transport,
             student_view=storage.catalog.student_view,
             authenticate_key=storage.keys.authenticate,
+            figure=storage.catalog.figure,
             rate_limit=functools.partial(budget_wait, app.state.services),
         )
         outbox = OutboxWorker(storage.database, settings, lms_transport)

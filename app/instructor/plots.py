@@ -11,10 +11,10 @@ from dataclasses import dataclass
 
 from markupsafe import Markup, escape
 
-WIDTH = 400  # user units; the CSS scales the chart to the column's width
+WIDTH = 320  # user units; the CSS scales the chart to the column's width (text ~15 px on a phone)
 ROW = 40  # label line above, bar below
 TOP = 8
-LABEL_CHARS = 52
+LABEL_CHARS = 42
 BAR_COLOUR = "#1a5fb4"
 TEXT_COLOUR = "#1a1a1a"
 
@@ -36,7 +36,7 @@ def bar_chart(chart_id: str, title: str, bars: Sequence[Bar], *, maximum: float 
     scale (100 for percentages), else the largest value fills the width."""
     top = maximum if maximum is not None else max((bar.value for bar in bars), default=0.0)
     scale = 0.0 if top <= 0 else 1.0 / top
-    room = WIDTH - 110  # space kept for the number after the longest bar
+    room = WIDTH - 100  # space kept for the number after the longest bar
     height = TOP + ROW * max(len(bars), 1) + 4
     summary = "; ".join(f"{bar.label}: {bar.text}" for bar in bars) or "nothing to show yet"
     rows = []

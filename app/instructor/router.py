@@ -18,11 +18,13 @@ and sees grade passback; an LMS instructor session acts only for itself.
 from __future__ import annotations
 
 import io
+import logging
 import re
 from collections.abc import Mapping
 from typing import Annotated, Any, Literal
 from urllib.parse import urlencode
 
+import yaml
 from fastapi import APIRouter, Depends, FastAPI, Query, Request
 from fastapi.responses import RedirectResponse, Response
 from starlette.concurrency import run_in_threadpool
@@ -33,7 +35,7 @@ from app.db import submissions as submission_repository
 from app.db.errors import ProblemExists
 from app.db.errors import ProblemNotFound as StoredProblemNotFound
 from app.db.records import ProblemRecord, Role
-from app.deps import ServicesDep
+from app.deps import ServicesDep, budget_wait
 from app.errors import AppError
 from app.instructor import session as auth
 from app.instructor.described import Described, MistakeInfo, describe
@@ -42,14 +44,16 @@ from app.lti.outbox import list_delivery_problems
 from app.lti.platforms import platform_origins
 from app.routers.authoring import store_new_problem, store_new_version
 from app.services import Services
-from app.transfer import export_problem, export_submissions
+from app.transfer import export_submissions
 from app.web.layout import page
 from problems.loader import MAX_DOCUMENT_BYTES, parse_problem
 from problems.variants import fill_statement, fixed_variant
 
 router = APIRouter(prefix="/instructor", include_in_schema=False)
+log = logging.getLogger("physcheck.instructor")
 
 PAGE_SIZE = 50
+SCRIPT = "/static/instructor.js"
 _ID = re.compile(r"^[A-Za-z0-9][A-Za-z0-9._-]{0,99}$")
 _KEY_ONLY = (
     "A session opened from an LMS acts only for itself: sign in with an instructor API key to see "
@@ -65,7 +69,7 @@ class PageError(Exception):
 
 async def signed_in(request: Request, services: ServicesDep) -> auth.Visitor:
     who = await auth.visitor(request, services)
-    wait = services.key_limiter.retry_after(who.principal.key_id)
+    wait = budget_wait(services, who.principal)
     if wait is not None:
         raise PageError(429, "Too many requests", f"Too many requests; try again in {wait} s.")
     return who
@@ -139,7 +143,7 @@ async def _page(
     return page(
         request,
         template,
-        {"who": who, **context},
+        {"who": who, "scripts": [SCRIPT], **context},
         status=status,
         frame_ancestors=await _frames(services, who),
     )
@@ -312,6 +316,7 @@ async def _edit_page(
     described: Described | None = None,
     document: dict[str, Any] | None = None,
     warnings: list[dict[str, Any]] | None = None,
+    figure: str | None = None,
     status: int = 200,
 ) -> Response:
     action = "/instructor/problems/new" if problem_id is None else f"/instructor/problems/{problem_id}/edit"
@@ -335,9 +340,26 @@ async def _edit_page(
             "preview_doc": preview_doc,
             "preview_statement": preview_statement,
             "warnings": warnings,
+            "figure": figure,
         },
         status=status,
     )
+
+
+class _BlockDumper(yaml.SafeDumper):
+    """Multi-line text (statements, feedback) as `|` blocks, as authors write it."""
+
+
+def _text(dumper: yaml.SafeDumper, data: str) -> yaml.ScalarNode:
+    return dumper.represent_scalar("tag:yaml.org,2002:str", data, style="|" if "\n" in data else None)
+
+
+_BlockDumper.add_representer(str, _text)
+
+
+def yaml_text(document: Mapping[str, Any]) -> str:
+    """A stored document as YAML to edit, keys in the author's order."""
+    return yaml.dump(dict(document), Dumper=_BlockDumper, sort_keys=False, allow_unicode=True, width=100)
 
 
 def _can_upload(who: auth.Visitor) -> None:
@@ -376,7 +398,7 @@ async def _vet_and_maybe_save_form(
         return await _edit_page(
             request, services, who, problem_id=problem_id, source=source, errors=errors, status=422
         )
-    vetted = await services.authoring.vet(source.encode("utf-8"), fmt)
+    vetted = await services.authoring.vet(source.encode("utf-8"), fmt, who.principal.key_id)
     if vetted.document is None:
         errors = [
             {"path": path, "message": message, "line": vetted.lines.get(path)}
@@ -394,6 +416,7 @@ async def _vet_and_maybe_save_form(
             source=source,
             described=vetted.described,
             document=vetted.document,
+            figure=vetted.figure,
             warnings=[
                 {"path": path, "message": message, "line": vetted.lines.get(path)}
                 for path, message in vetted.warnings
@@ -434,10 +457,8 @@ async def new_problem_post(request: Request, services: ServicesDep, who: Visitor
 @router.get("/problems/{problem_id}/edit")
 async def edit_problem(problem_id: str, request: Request, services: ServicesDep, who: Visitor) -> Response:
     _can_upload(who)
-    await _owned_record(services, who, problem_id)
-    out = io.StringIO()
-    await run_in_threadpool(export_problem, services.database, problem_id, "yaml", out)
-    return await _edit_page(request, services, who, problem_id=problem_id, source=out.getvalue())
+    record = await _owned_record(services, who, problem_id)
+    return await _edit_page(request, services, who, problem_id=problem_id, source=yaml_text(record.document))
 
 
 @router.post("/problems/{problem_id}/edit")
@@ -469,11 +490,17 @@ async def problem(
         doc = catalog.document(record)
         variant = catalog.variant(record, whose)
         compiled = catalog.compiled(record)
+        try:
+            figure = catalog.figure(problem_id, whose)
+        except Exception:  # an illustration: the page is complete without it
+            log.exception("no figure for problem %r", problem_id)
+            figure = None
         return {
             "doc": doc,
             "record": record,
             "statement": fill_statement(doc.statement, doc, variant),
             "described": describe(compiled, variant),
+            "figure": figure,
         }
 
     context = await run_in_threadpool(load)

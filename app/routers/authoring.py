@@ -58,8 +58,8 @@ def _format(request: Request) -> Literal["json", "yaml"]:
     raise UnsupportedMediaType(f"Send the problem as application/json or application/yaml, not {media}.")
 
 
-async def _vetted_document(request: Request, services: Services) -> dict[str, Any]:
-    vetted = await services.authoring.vet(await request.body(), _format(request))
+async def _vetted_document(request: Request, services: Services, principal: Principal) -> dict[str, Any]:
+    vetted = await services.authoring.vet(await request.body(), _format(request), principal.key_id)
     if vetted.document is None:
         raise ProblemInvalid(vetted.errors)
     return vetted.document
@@ -83,7 +83,7 @@ def _owned(services: Services, problem_id: str, principal: Principal) -> Problem
 
 @router.post("/v1/problems", status_code=201, response_model=ProblemCreated, openapi_extra=_BODY_DOC)
 async def upload(request: Request, services: ServicesDep, principal: Instructor) -> ProblemCreated:
-    document = await _vetted_document(request, services)
+    document = await _vetted_document(request, services, principal)
     record = await store_new_problem(services, principal, document)
     return ProblemCreated(id=record.id, version=record.version)
 
@@ -106,7 +106,7 @@ async def new_version(
     problem_id: str, request: Request, services: ServicesDep, principal: Instructor
 ) -> ProblemCreated:
     await run_in_threadpool(_owned, services, problem_id, principal)
-    document = await _vetted_document(request, services)
+    document = await _vetted_document(request, services, principal)
     record = await store_new_version(services, principal, problem_id, document)
     return ProblemCreated(id=record.id, version=record.version)
 

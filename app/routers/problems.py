@@ -11,7 +11,7 @@ from app.auth import Principal
 from app.db.records import ProblemRecord
 from app.deps import CurrentPrincipal, ServicesDep
 from app.errors import AppError, Forbidden, NotFound
-from app.grading.submit import submit_answer
+from app.grading.submit import stored_problem_fault, submit_answer
 from app.schemas.problems import (
     PartSummary,
     PreviewIn,
@@ -23,6 +23,8 @@ from app.schemas.problems import (
     SubmissionResult,
 )
 from app.services import Services
+from app.web.rendering import tex_to_mathml
+from physics.errors import SpecError
 
 router = APIRouter(tags=["problems"])
 
@@ -99,8 +101,12 @@ async def preview(
     record = await run_in_threadpool(services.catalog.get, problem_id)
     _require_part(services, record, part_id)
     job = await run_in_threadpool(services.catalog.job, record, part_id, who, body.answer)
-    result = await services.pool.preview(job, principal.grading_share)
-    return PreviewPublic(read_as=result.read_as, error=result.error)
+    try:
+        result = await services.pool.preview(job, principal.grading_share)
+    except SpecError as error:
+        raise stored_problem_fault(error, {"problem": record.id, "part": part_id, "student": who}) from error
+    mathml = str(tex_to_mathml(result.read_as.latex, display=True)) if result.read_as else None
+    return PreviewPublic(read_as=result.read_as, error=result.error, mathml=mathml)
 
 
 def _require_part(services: Services, record: ProblemRecord, part_id: str) -> None:

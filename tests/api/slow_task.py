@@ -6,6 +6,7 @@ import os
 import signal
 import time
 
+from app.authoring import Vetted
 from app.grading.worker import GraderCrash, SpecProblem, grade, guarded
 from physics.checking import CheckJob, run_job
 from physics.errors import SpecError
@@ -39,3 +40,11 @@ def pid_or_grade(job: CheckJob) -> Verdict | SpecProblem | GraderCrash | int:
     if job.answer == "die":
         os.kill(os.getpid(), signal.SIGKILL)
     return guarded(_faulty_run, job)
+
+
+def slow_vet(source: bytes, fmt: str) -> Vetted:
+    """Vetting that takes `sleep` forever (until the pool's time limit kills it)."""
+    if source == b"sleep":
+        while True:
+            time.sleep(1)
+    return Vetted(None, [("", "vetted")])

@@ -16,6 +16,7 @@ from app.db.database import Database
 from app.db.records import Role
 from app.db.submissions import record_submission
 from app.db.types import utc_now
+from app.instructor.router import yaml_text
 from app.instructor.session import COOKIE
 from app.keys import revoke_key
 from app.lti.models import LtiGradeTarget, LtiPlatform, LtiScoreOutbox
@@ -33,7 +34,7 @@ def upload_text(problem_id: str = "my-yoyo", title: str = "My yo-yo") -> str:
     doc = yaml.safe_load((BANK_DIR / "yo-yo" / "problem.yaml").read_text())
     doc["model"] = yaml.safe_load((BANK_DIR / "yo-yo" / "model.yaml").read_text())
     doc["id"], doc["title"] = problem_id, title
-    return yaml.safe_dump(doc, sort_keys=False, allow_unicode=True)
+    return yaml_text(doc)
 
 
 def lms_session(database: Database, role: Role, sub: str = "lee") -> str:
@@ -153,7 +154,10 @@ def test_every_post_needs_the_sessions_csrf_token(signed_in: TestClient):
 
 def test_lms_instructor_session_sees_problems_but_no_students_work(client: TestClient, database: Database):
     client.cookies.set(SESSION_COOKIE, lms_session(database, Role.INSTRUCTOR))
-    assert client.get("/instructor/problems").status_code == 200
+    listing = client.get("/instructor/problems")
+    assert listing.status_code == 200
+    assert "Lee (from your LMS)" in listing.text and "Sign out" not in listing.text
+    assert "/instructor/problems/new" not in listing.text  # no upload link
     own = client.get("/instructor/problems/yo-yo")
     assert own.status_code == 200 and "Worked solutions" in own.text
     for path in (
@@ -188,6 +192,8 @@ def test_problem_page_renders_references_mistakes_limits_and_every_method_as_mat
     assert "The string pulls up on the yo-yo" in html  # a known mistake's feedback
     assert "with no moment of inertia the yo-yo falls freely" in html  # a limiting case
     assert "$" not in re.sub(r'alttext="[^"]*"', "", html)  # no TeX left as text
+    figure = re.search(r'<figure class="problem-figure">\s*<svg[^>]*role="img"', html)
+    assert figure, "the figure drawn from the model"
 
 
 def test_a_students_variant_shows_their_values_and_expected_numbers(signed_in: TestClient):
@@ -230,8 +236,9 @@ def test_upload_shows_every_error_with_its_path_and_line_then_previews_then_save
     lines = broken.splitlines()
     rel_line = next(i for i, line in enumerate(lines, 1) if "tolerance: {rel: -1}" in line)
     assert '<code class="path">title</code>' in response.text
-    assert f'<code class="path">parts[2].tolerance.rel</code> <span class="line">line {rel_line}</span>' in (
-        response.text
+    assert (
+        f'<code class="path">parts[2].tolerance.rel</code> <a class="line" href="#source" data-line="{rel_line}">'
+        in (response.text)
     )
     assert "nothing was saved" in response.text
     assert "tolerance: {rel: -1}" in response.text  # the text is kept beside its errors
@@ -243,6 +250,7 @@ def test_upload_shows_every_error_with_its_path_and_line_then_previews_then_save
     assert "Preview: no errors" in preview.text
     assert 'alttext="\\frac{g r^{2}}{k^{2} + r^{2}}"' in preview.text  # the derived answer
     assert "Lagrange" in preview.text
+    assert re.search(r'<figure class="problem-figure">\s*<svg', preview.text)
     assert signed_in.get("/instructor/problems/my-yoyo").status_code == 404  # nothing stored yet
 
     saved = signed_in.post(
@@ -388,4 +396,7 @@ def test_preview_lists_texts_that_will_not_render_cleanly_with_their_lines(signe
     )
     assert preview.status_code == 200
     assert "1 text will not render cleanly" in preview.text
-    assert f'<code class="path">statement</code> <span class="line">line {line}</span>' in preview.text
+    assert (
+        f'<code class="path">statement</code> <a class="line" href="#source" data-line="{line}">line {line}</a>'
+        in preview.text
+    )
