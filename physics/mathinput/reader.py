@@ -28,9 +28,16 @@ class ParsedMath:
 
 
 def parse_math(
-    text: str, names: Mapping[str, sympy.Symbol], *, limits: InputLimits = DEFAULT_LIMITS
+    text: str,
+    names: Mapping[str, sympy.Symbol],
+    *,
+    limits: InputLimits = DEFAULT_LIMITS,
+    choices: Mapping[int, int] | None = None,
 ) -> ParsedMath:
     """Read `text` using only the declared `names` (spelling -> Symbol to use).
+
+    `choices` reads each ambiguous division (by the position of its `/`) one way: 0 as (a/b)·c,
+    1 as a/(b·c); without a choice it is refused (AmbiguousDivision).
 
     Raises ParseError, AmbiguousInput, UnknownSymbol, UnknownFunction or TooLarge, each with a 0-based
     `position` into `text`; sizes are checked before any value is computed.
@@ -38,7 +45,7 @@ def parse_math(
     table = NameTable(names)
     tokens = resolve_words(tokenize(text, limits), table)
     try:
-        tree = Parser(text, tokens, limits).parse()
+        tree = Parser(text, tokens, limits, choices).parse()
         expr = Builder(table.symbols, limits).build(tree)
         read_as = ReadAs(render_text(tree), render_latex(tree))
     except RecursionError:
