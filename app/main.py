@@ -21,6 +21,7 @@ from app.lti.context import LtiContext
 from app.lti.grades import queue_grade
 from app.lti.outbox import OutboxWorker
 from app.middleware import BodyLimit, RequestContext, configure_logging
+from app.openapi import install_docs
 from app.ratelimit import rate_limiters
 from app.routers import authoring as authoring_routes
 from app.routers import check, health, problems, submissions
@@ -106,7 +107,10 @@ def create_app(
         version="1",
         summary="Checks physics answers: symbolic, numeric with units, against engine-derived references.",
         lifespan=lifespan,
+        docs_url=None,
+        redoc_url=None,
     )
+    install_docs(app)
     install_error_handlers(app)
     app.add_middleware(BodyLimit, max_bytes=settings.max_body_bytes)
     app.add_middleware(RequestContext)

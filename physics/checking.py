@@ -7,12 +7,14 @@ student's. Prepared references are cached per worker, keyed on the job's referen
 
 from __future__ import annotations
 
+import dataclasses
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from functools import lru_cache
 
 import sympy
 
+from physics.dimensions import Dimension
 from physics.errors import AnswerError, SpecError
 from physics.mathinput import InputLimits, parse_math
 from physics.numeric import NumericSpec, check_numeric
@@ -26,6 +28,8 @@ from physics.symbolic import (
     make_symbol,
     prepare_reference,
 )
+from physics.symbolic.dimensional import DimensionMismatch, UnknownDimension, expression_dimension
+from physics.symbolic.reading import read_symbolic_answer
 from physics.units import unit_dimension
 from physics.verdict import InputProblem, ReadAs, Verdict
 
@@ -84,12 +88,19 @@ def check_answer(
     """Grade one answer; an unreadable answer is an `invalid` verdict, never an exception."""
     if isinstance(question, NumericSpec):
         return check_numeric(answer, question)
+    reference = question.reference
+    dimensions = {symbol.name: dim for symbol, dim in reference.dims.items()}
     try:
-        parsed = parse_math(answer, question.names, limits=limits or InputLimits())
-        judgement = judge_symbolic(parsed.expr, question.reference)
+        parsed = read_symbolic_answer(
+            answer, question.names, limits or InputLimits(), dimensions, reference.dimension
+        )
+        judgement = judge_symbolic(parsed.expr, reference)
     except AnswerError as error:
         return Verdict.invalid(error)
-    return Verdict.graded(judgement, parsed.read_as)
+    verdict = Verdict.graded(judgement, parsed.read_as)
+    if parsed.read_as.note is not None:  # the reading was chosen by dimension: say so first
+        return dataclasses.replace(verdict, feedback=f"{parsed.read_as.note}. {verdict.feedback}")
+    return verdict
 
 
 @dataclass(frozen=True)
@@ -105,12 +116,32 @@ def preview(job: CheckJob) -> Preview:
     if isinstance(job, NumericJob):
         verdict = check_numeric(job.answer, job.spec)
         return Preview(verdict.read_as, verdict.error)
-    table = {decl.name: make_symbol(symbol_spec(decl)) for decl in job.symbols}
+    specs = {decl.name: symbol_spec(decl) for decl in job.symbols}
+    table = {name: make_symbol(spec) for name, spec in specs.items()}
     names = table if job.allowed is None else {name: table[name] for name in job.allowed if name in table}
+    dimensions = {name: spec.dimension for name, spec in specs.items() if spec.dimension is not None}
     try:
-        return Preview(parse_math(job.answer, names, limits=job.limits_config).read_as, None)
+        read = read_symbolic_answer(
+            job.answer,
+            names,
+            job.limits_config,
+            dimensions,
+            _expected_dimension(job.expected, table, dimensions),
+        )
+        return Preview(read.read_as, None)
     except AnswerError as error:
         return Preview(None, InputProblem(error.message, error.position))
+
+
+def _expected_dimension(
+    expected: str, table: Mapping[str, sympy.Symbol], dimensions: Mapping[str, Dimension]
+) -> Dimension | None:
+    """The dimension a symbolic answer must have, for settling its ambiguous divisions (None: unknown)."""
+    try:
+        reference = read_expression(expected, table, ("expected",))
+        return expression_dimension(reference, {table[name]: dim for name, dim in dimensions.items()})
+    except (SpecError, DimensionMismatch, UnknownDimension):
+        return None
 
 
 def run_job(job: CheckJob) -> Verdict:

@@ -122,12 +122,22 @@ def test_invalid_verdict_points_at_the_problem(client, student_headers):
 
 
 def test_ambiguous_division_is_refused_with_both_readings(client, student_headers):
-    symbols = {"p": {"dimension": "kg*m/s"}, "m": {"dimension": "kg"}}
+    symbols = {"p": {}, "m": {"dimension": "kg"}}  # p has no dimension: nothing can settle it
     result = client.post(
         "/v1/check", json=symbolic("p^2/2m", "p^2/(2*m)", symbols), headers=student_headers
     ).json()
     assert (result["verdict"], result["reason"]) == ("invalid", "ambiguous")
     assert "(" in result["error"]["message"]
+
+
+def test_ambiguous_division_is_settled_where_one_reading_has_the_expected_dimension(client, student_headers):
+    symbols = {"p": {"dimension": "kg*m/s"}, "m": {"dimension": "kg"}}
+    result = client.post(
+        "/v1/check", json=symbolic("p^2/2m", "p^2/(2*m)", symbols), headers=student_headers
+    ).json()
+    assert (result["verdict"], result["reason"]) == ("correct", "equivalent")
+    assert result["read_as"]["text"] == "p**2/(2*m)"
+    assert result["read_as"]["note"] == "Read as p**2/(2*m): the only reading that is an energy"
 
 
 @pytest.mark.parametrize(

@@ -400,3 +400,14 @@ def test_preview_lists_texts_that_will_not_render_cleanly_with_their_lines(signe
         f'<code class="path">statement</code> <a class="line" href="#source" data-line="{line}">line {line}</a>'
         in preview.text
     )
+
+
+def test_behind_https_the_session_cookie_is_secure(settings, pages_pool, database: Database):
+    from app.main import create_app
+
+    secure = settings.model_copy(update={"base_url": "https://physcheck.example"})
+    app = create_app(secure, pool=pages_pool)
+    with TestClient(app, base_url="https://testserver", follow_redirects=False) as client:
+        response = sign_in(client, new_key(database, "instructor", "Prof"))
+    cookie = next(c for c in response.headers.get_list("set-cookie") if c.startswith(COOKIE + "="))
+    assert "Secure" in cookie
