@@ -290,6 +290,45 @@ def draw_incline(
     return Slope(None if flat else upper, tangent, normal, bases)
 
 
+def _spring_sign(potential: PairPotential, values: Values) -> int:
+    """+1 for a spring (energy quadratic in the distance, growing), -1 for a quadratic that falls (the
+    centrifugal potential of a rotating frame), 0 for anything else (gravitation, Lennard-Jones...)."""
+    energy = sympy.expand(potential.energy)
+    if not energy.is_polynomial(potential.distance) or sympy.degree(energy, potential.distance) != 2:
+        return 0
+    leading = values.number(energy.coeff(potential.distance, 2))
+    return 1 if leading > 0 else -1
+
+
+def _other_symbols(potential: PairPotential, body: Body, model: Model) -> list[sympy.Symbol]:
+    """The potential's parameters other than the body's own mass (ω, v and R, G and M...)."""
+    own = body.mass.free_symbols
+    return sorted(
+        (s for s in potential.energy.free_symbols if s in set(model.parameters) and s not in own),
+        key=lambda s: s.name,
+    )
+
+
+def draw_central(figure: Figure, model: Model, body: Body, potential: PairPotential) -> None:
+    """A body at a distance from a fixed centre that attracts it (a planet and a satellite)."""
+    canvas = figure.canvas
+    canvas.circle((0.0, 0.0), 1.0, fill=FILLS[2])
+    masses = [s for s in _other_symbols(potential, body, model) if s.name[:1].isupper() and s.name != "G"]
+    if masses:
+        canvas.text((0.0, 0.0), symbol_label(masses[0].name))
+    canvas.circle((5.5, 0.0), 0.35, fill=FILLS[0])
+    canvas.text((5.5, -0.75), body_label(body, model))
+    canvas.line((0.0, 0.0), (5.15, 0.0), dashed=True, width=0.03)
+    coordinate = model.coordinates[0].name if model.coordinates else ""
+    canvas.text((3.0, 0.35), coordinate)
+    canvas.arc((0.0, 0.0), 5.5, -0.5, 0.5, width=0.03)
+    figure.say(
+        f"{body_label(body, model)} at a distance {coordinate} from a fixed centre"
+        + (f" of mass {symbol_label(masses[0].name)}" if masses else "")
+        + " that attracts it; it moves on an orbit about it."
+    )
+
+
 def _stiffness(potential: PairPotential, model: Model) -> list[sympy.Symbol]:
     """The symbols of the factor in front of the energy's distance term: k in k (d - L0)^2 / 2."""
     factor, _ = potential.energy.as_independent(potential.distance, as_Add=False)
@@ -716,7 +755,12 @@ def _compose(model: Model, given: Mapping[str, float]) -> Figure:
         )
         slope = draw_incline(figure, model, values, fixed, touching=touching)
         for potential in model.potentials:
-            if potential.anchor and len(potential.bodies) == 1 and potential.bodies[0] in slope.bases:
+            if (
+                potential.anchor
+                and len(potential.bodies) == 1
+                and potential.bodies[0] in slope.bases
+                and _spring_sign(potential, values) > 0
+            ):
                 draw_slope_spring(figure, model, slope, model.body(potential.bodies[0]), potential)
         over_edge = [
             (joined, hanging)
@@ -749,8 +793,14 @@ def _compose(model: Model, given: Mapping[str, float]) -> Figure:
     if model.potentials:
         potential = model.potentials[0]
         bodies = [model.body(name) for name in potential.bodies]
-        energy = sympy.expand(potential.energy)
-        quadratic = energy.is_polynomial(potential.distance) and sympy.degree(energy, potential.distance) == 2
+        sign = _spring_sign(potential, values)
+        quadratic = sign > 0
+        if potential.anchor and len(bodies) == 1 and sign < 0 and len(model.coordinates) == 1:
+            draw_path(figure, model, bodies[0], values, spin=potential)
+            return figure
+        if potential.anchor and len(bodies) == 1 and sign == 0:
+            draw_central(figure, model, bodies[0], potential)
+            return figure
         if potential.anchor and len(bodies) == 1:
             spring = _stiffness(potential, model)
             vertical = [axis for axis, _ in bodies[0].position] == ["y"]
@@ -771,7 +821,9 @@ def _compose(model: Model, given: Mapping[str, float]) -> Figure:
     return figure
 
 
-def draw_path(figure: Figure, model: Model, body: Body, values: Values) -> None:
+def draw_path(
+    figure: Figure, model: Model, body: Body, values: Values, spin: PairPotential | None = None
+) -> None:
     """One body on one coordinate: the curve its centre follows (a wire, a bowl, a circle about a
     pivot), drawn to scale, with the body on it; a turning body on a pivot is a rod from the pivot."""
     coordinate = model.coordinates[0].symbol
@@ -807,6 +859,18 @@ def draw_path(figure: Figure, model: Model, body: Body, values: Values) -> None:
         figure.say(f"A rigid body {body_label(body, model)} swings about a fixed pivot at its end.")
         return
     figure.canvas.polyline(points, width=0.07)
+    if spin is not None:  # a rotating frame: the axis of rotation, with its rate
+        top = max(p[1] for p in points) + 1.0
+        bottom = min(p[1] for p in points) - 0.5
+        figure.canvas.line((0.0, bottom), (0.0, top), dashed=True, width=0.04)
+        figure.canvas.arc((0.0, top - 0.3), 0.5, math.radians(200), math.radians(340))
+        rates = _other_symbols(spin, body, model)
+        if rates:
+            figure.canvas.text((0.9, top - 0.2), symbol_label(rates[0].name), anchor="start")
+        figure.say(
+            "It turns about the vertical axis drawn dashed"
+            + (f" at the rate {symbol_label(rates[0].name)}." if rates else ".")
+        )
     here = points[len(points) * 2 // 3]
     radius = 0.45
     figure.canvas.circle((here[0], here[1] + radius), radius, fill=FILLS[0])
