@@ -7,8 +7,9 @@ from abc import ABC, abstractmethod
 
 import sympy
 
+from physics.engine import impact
 from physics.engine.mechanics import Mechanics
-from physics.engine.model import Model, Quantity, QuantityKind
+from physics.engine.model import IMPACT_KINDS, Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
 from physics.engine.results import MethodReport, Step
 from physics.errors import DerivationError
@@ -53,6 +54,12 @@ class Method(ABC):
     def collision(self, item: QuantityKind) -> sympy.Expr:
         raise NotApplicable(f"{self.title} does not treat collisions")
 
+    def impact(self, quantity: Quantity) -> sympy.Expr:
+        work = impact.METHODS.get(self.name)
+        if work is None or self.model.impact is None:
+            raise NotApplicable(f"{self.title} does not treat impacts")
+        return work(self.model, quantity, self.step)
+
     # --- quantities -------------------------------------------------------------------------------
 
     def answer(self, quantity: Quantity) -> sympy.Expr:
@@ -82,6 +89,8 @@ class Method(ABC):
             return sympy.simplify(2 * sympy.pi / omega)
         if kind is QuantityKind.TERMINAL_VELOCITY:
             return self.terminal_velocity(quantity.target)
+        if kind in IMPACT_KINDS:
+            return self.impact(quantity)
         if kind is QuantityKind.SOLVE:
             assert quantity.inner is not None and quantity.parameter is not None
             return self.solve_for(quantity.parameter, self.answer(quantity.inner), quantity.name)
