@@ -106,3 +106,18 @@ def test_listing_view_has_the_contract_fields_only() -> None:
         "kind": "symbolic",
         "prompt": entry["parts"][0]["prompt"],
     }
+
+
+def test_bank_has_thirty_problems_and_every_symbolic_part_comes_from_its_model() -> None:
+    from problems.modelinfo import model_quantity_names
+    from problems.schema import SymbolicPart
+
+    docs = load_bank(check_meaning=False)
+    assert len(docs) >= 30
+    typed_only = [
+        f"{doc.id}/{part.id}"
+        for doc in docs
+        for part in doc.parts
+        if isinstance(part, SymbolicPart) and part.quantity_name not in model_quantity_names(doc)
+    ]
+    assert typed_only == []
