@@ -43,8 +43,10 @@ class GradingPool:
         max_answer_chars: int = 2000,
         per_owner: int = 2,
         task: Callable[[CheckJob], Verdict | SpecProblem | GraderCrash] = grade,
+        preview_task: Callable[[CheckJob], Preview | SpecProblem | GraderCrash] = read_only,
     ):
         self._task = task
+        self._preview_task = preview_task
         self._max_answer_chars = max_answer_chars
         self._per_owner = per_owner
         self._owners: dict[str, int] = {}
@@ -149,7 +151,7 @@ class GradingPool:
                 None, InputProblem(f"The answer is longer than {self._max_answer_chars} characters.")
             )
         try:
-            return await self._run(read_only, job, owner)
+            return await self._run(self._preview_task, job, owner)
         except FutureTimeout:
             return Preview(None, InputProblem(TIMEOUT_MESSAGE))
 

@@ -36,7 +36,7 @@ from app.db.errors import ProblemExists
 from app.db.errors import ProblemNotFound as StoredProblemNotFound
 from app.db.records import ProblemRecord, Role
 from app.deps import ServicesDep, budget_wait
-from app.errors import AppError
+from app.errors import AppError, Busy
 from app.instructor import session as auth
 from app.instructor.described import Described, MistakeInfo, describe
 from app.instructor.plots import Bar, bar_chart
@@ -398,7 +398,10 @@ async def _vet_and_maybe_save_form(
         return await _edit_page(
             request, services, who, problem_id=problem_id, source=source, errors=errors, status=422
         )
-    vetted = await services.authoring.vet(source.encode("utf-8"), fmt, who.principal.key_id)
+    try:
+        vetted = await services.authoring.vet(source.encode("utf-8"), fmt, who.principal.key_id)
+    except Busy as error:  # the vetting queue is full, this key has one in flight, or it is restarting
+        raise PageError(503, "Try again shortly", error.message) from error
     if vetted.document is None:
         errors = [
             {"path": path, "message": message, "line": vetted.lines.get(path)}

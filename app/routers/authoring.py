@@ -210,6 +210,7 @@ def solution_of(compiled: CompiledProblem) -> SolutionPublic:
         agreement=agreement,
         proofs={} if derived is None else dict(derived.proofs),
         simulation=simulation,
+        checks={} if derivation is None else dict(getattr(derivation, "checks", {})),
         methods_agree=derived is not None
         and not derived.disagreements
         and all(len(m) >= 2 for m in agreement.values()),

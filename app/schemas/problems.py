@@ -148,3 +148,5 @@ class SolutionPublic(BaseModel):
     proofs: dict[str, str]
     simulation: dict[str, SimulationPublic]
     methods_agree: bool
+    # checks of the model itself beside method agreement (energy bookkeeping, limiting cases, dimensions)
+    checks: dict[str, str] = {}

@@ -207,7 +207,41 @@ def _drawn_slope(surface: Surface) -> float:
     return math.copysign(min(max(abs(slope), math.radians(20)), math.radians(50)), slope)
 
 
-def draw_incline(figure: Figure, model: Model, values: Values, surfaces: list[Surface]) -> Slope:
+def draw_double_incline(figure: Figure, model: Model, surfaces: list[Surface], string: bool) -> None:
+    """Two faces of one block meeting at the top, a body on each, a pulley at the apex."""
+    canvas = figure.canvas
+    left_angle, right_angle = math.radians(35), math.radians(50)
+    height = 3.5
+    apex = (height / math.tan(left_angle), height)
+    left_foot, right_foot = (0.0, 0.0), (apex[0] + height / math.tan(right_angle), 0.0)
+    canvas.polygon([left_foot, apex, right_foot], fill="#eeeeee")
+    canvas.ground((-0.5, 0.0), (right_foot[0] + 0.5, 0.0))
+    first, second = surfaces
+    _angle_mark(figure, left_foot, 0.0, left_angle, first.angle_symbol)
+    _angle_mark(figure, right_foot, math.pi - right_angle, math.pi, second.angle_symbol)
+    spots = []
+    for surface, foot, fill in ((first, left_foot, FILLS[0]), (second, right_foot, FILLS[1])):
+        base = (foot[0] + (apex[0] - foot[0]) * 0.5, foot[1] + (apex[1] - foot[1]) * 0.5)
+        length = math.hypot(apex[0] - foot[0], apex[1] - foot[1])
+        tangent = ((apex[0] - foot[0]) / length, (apex[1] - foot[1]) / length)
+        centre = _block(figure, base, tangent, body_label(surface.body, model), fill)
+        spots.append((centre, tangent))
+    if string:
+        top = (apex[0], apex[1] + 0.45)
+        canvas.circle(top, 0.3, fill="#ffffff")
+        for centre, tangent in spots:
+            canvas.line(centre, (top[0] - 0.3 * tangent[1] * 0, top[1] + 0.3), width=0.04)
+    names = [body_label(s.body, model) for s in surfaces]
+    angles = [symbol_label(s.angle_symbol.name) for s in surfaces if s.angle_symbol is not None]
+    figure.say(
+        f"{names[0]} and {names[1]} on two inclines at angles {' and '.join(angles)} meeting at the top"
+        + (", joined by a string over a pulley there." if string else ".")
+    )
+
+
+def draw_incline(
+    figure: Figure, model: Model, values: Values, surfaces: list[Surface], *, touching: bool = False
+) -> Slope:
     """Bodies on one fixed slope (or floor), spaced along it."""
     first = surfaces[0]
     slope = _drawn_slope(first)
@@ -232,6 +266,8 @@ def draw_incline(figure: Figure, model: Model, values: Values, surfaces: list[Su
     count = len(bodies)
     for index, body in enumerate(bodies):
         fraction = 0.2 + 0.6 * index / (count - 1) if count > 1 else 0.45
+        if touching:  # bodies pushing on each other sit side by side
+            fraction = 0.35 + index * 1.15 * BLOCK / SLOPE
         base = (start[0] + (end[0] - start[0]) * fraction, start[1] + (end[1] - start[1]) * fraction)
         bases[body.name] = base
         label = body_label(body, model)
@@ -252,6 +288,45 @@ def draw_incline(figure: Figure, model: Model, values: Values, surfaces: list[Su
     rough = " (with friction)" if model.frictions else ""
     figure.say(f"{'A floor' if flat else 'An incline' + angle}{rough} with {names} on it.")
     return Slope(None if flat else upper, tangent, normal, bases)
+
+
+def _spring_sign(potential: PairPotential, values: Values) -> int:
+    """+1 for a spring (energy quadratic in the distance, growing), -1 for a quadratic that falls (the
+    centrifugal potential of a rotating frame), 0 for anything else (gravitation, Lennard-Jones...)."""
+    energy = sympy.expand(potential.energy)
+    if not energy.is_polynomial(potential.distance) or sympy.degree(energy, potential.distance) != 2:
+        return 0
+    leading = values.number(energy.coeff(potential.distance, 2))
+    return 1 if leading > 0 else -1
+
+
+def _other_symbols(potential: PairPotential, body: Body, model: Model) -> list[sympy.Symbol]:
+    """The potential's parameters other than the body's own mass (ω, v and R, G and M...)."""
+    own = body.mass.free_symbols
+    return sorted(
+        (s for s in potential.energy.free_symbols if s in set(model.parameters) and s not in own),
+        key=lambda s: s.name,
+    )
+
+
+def draw_central(figure: Figure, model: Model, body: Body, potential: PairPotential) -> None:
+    """A body at a distance from a fixed centre that attracts it (a planet and a satellite)."""
+    canvas = figure.canvas
+    canvas.circle((0.0, 0.0), 1.0, fill=FILLS[2])
+    masses = [s for s in _other_symbols(potential, body, model) if s.name[:1].isupper() and s.name != "G"]
+    if masses:
+        canvas.text((0.0, 0.0), symbol_label(masses[0].name))
+    canvas.circle((5.5, 0.0), 0.35, fill=FILLS[0])
+    canvas.text((5.5, -0.75), body_label(body, model))
+    canvas.line((0.0, 0.0), (5.15, 0.0), dashed=True, width=0.03)
+    coordinate = model.coordinates[0].name if model.coordinates else ""
+    canvas.text((3.0, 0.35), coordinate)
+    canvas.arc((0.0, 0.0), 5.5, -0.5, 0.5, width=0.03)
+    figure.say(
+        f"{body_label(body, model)} at a distance {coordinate} from a fixed centre"
+        + (f" of mass {symbol_label(masses[0].name)}" if masses else "")
+        + " that attracts it; it moves on an orbit about it."
+    )
 
 
 def _stiffness(potential: PairPotential, model: Model) -> list[sympy.Symbol]:
@@ -286,13 +361,17 @@ def draw_slope_spring(
     )
 
 
-def draw_pulley_to_hanging(figure: Figure, model: Model, slope: Slope, on_slope: Body, hanging: Body) -> None:
-    """A pulley at the slope's upper end; the string runs parallel to the slope, then down."""
-    assert slope.upper is not None
+def draw_pulley_to_hanging(
+    figure: Figure, model: Model, slope: Slope, on_slope: Body, hanging: Body, *, left: bool = False
+) -> None:
+    """A pulley at the slope's upper end (or a table's edge); the string runs along it, then down."""
     radius = 0.4
     canvas = figure.canvas
-    top = slope.upper
     tx, ty = slope.tangent
+    table_edge = (0.0, 0.0) if left else (SLOPE * tx, SLOPE * ty)
+    top = slope.upper if slope.upper is not None else table_edge
+    if left:
+        tx, ty = -tx, -ty
     nx, ny = slope.normal
     # The string runs BLOCK/2 above the surface, so it meets the pulley's rim there.
     centre = (top[0] + tx * 0.3 + nx * (BLOCK / 2 - radius), top[1] + ty * 0.3 + ny * (BLOCK / 2 - radius))
@@ -303,8 +382,9 @@ def draw_pulley_to_hanging(figure: Figure, model: Model, slope: Slope, on_slope:
     canvas.line(attach, touch, width=0.04)
     canvas.circle(centre, radius, fill="#ffffff")
     canvas.circle(centre, 0.06, fill="#1b1b1b")
-    drop = (centre[0] + radius, centre[1] - 3.0)
-    canvas.line((centre[0] + radius, centre[1]), (drop[0], drop[1] + BLOCK / 2), width=0.04)
+    side = radius if tx >= 0 else -radius
+    drop = (centre[0] + side, centre[1] - 3.0)
+    canvas.line((centre[0] + side, centre[1]), (drop[0], drop[1] + BLOCK / 2), width=0.04)
     canvas.polygon(
         [
             (drop[0] - BLOCK / 2, drop[1] - BLOCK / 2),
@@ -316,19 +396,64 @@ def draw_pulley_to_hanging(figure: Figure, model: Model, slope: Slope, on_slope:
     )
     canvas.text(drop, body_label(hanging, model))
     figure.say(
-        f"A string from {body_label(on_slope, model)} runs over a pulley at the top to {body_label(hanging, model)}, "
-        "which hangs."
+        f"A string from {body_label(on_slope, model)} runs over a pulley at the "
+        f"{'top' if slope.upper is not None else 'edge'} to {body_label(hanging, model)}, which hangs."
     )
 
 
-def draw_atwood(figure: Figure, model: Model, left: Body, right: Body) -> None:
+def _hanging_block(figure: Figure, top: Point, body: Body, model: Model, fill: str) -> None:
+    """A string from `top` down to a block hanging 2.5 below it."""
+    x, y = top
+    depth = 2.5
+    figure.canvas.line(top, (x, y - depth + BLOCK / 2), width=0.04)
+    figure.canvas.polygon(_square((x, y - depth), BLOCK), fill=fill)
+    figure.canvas.text((x, y - depth), body_label(body, model))
+
+
+def draw_double_atwood(figure: Figure, model: Model, hanging: list[Body]) -> None:
+    """One body on one side of a fixed pulley; on the other, a pulley carrying the other two."""
+    canvas = figure.canvas
+    canvas.ground((-1.5, 1.6), (1.5, 1.6), below=False)
+    canvas.line((0.0, 1.6), (0.0, 0.0), width=0.08)
+    canvas.circle((0.0, 0.0), 1.0, fill="#ffffff")
+    single, *pair = sorted(hanging, key=lambda b: b.name)
+    _hanging_block(figure, (-1.0, 0.0), single, model, FILLS[0])
+    lower = (1.0, -2.5)
+    canvas.line((1.0, 0.0), (1.0, lower[1] + 0.6), width=0.04)
+    canvas.circle(lower, 0.6, fill="#ffffff")
+    for side, body, fill in ((-0.6, pair[0], FILLS[1]), (0.6, pair[1], FILLS[2])):
+        _hanging_block(figure, (lower[0] + side, lower[1]), body, model, fill)
+    figure.say(
+        f"{body_label(single, model)} hangs on one side of a fixed pulley; on the other hangs a light pulley "
+        f"carrying {body_label(pair[0], model)} and {body_label(pair[1], model)}."
+    )
+
+
+def draw_wheel_and_weight(figure: Figure, model: Model, wheel: Body, weight: Body) -> None:
+    canvas = figure.canvas
+    radius = 1.4
+    canvas.ground((-2.0, 2.2), (1.0, 2.2), below=False)
+    canvas.line((-0.5, 2.2), (0.0, 0.0), width=0.1)
+    canvas.circle((0.0, 0.0), radius, fill=FILLS[0])
+    canvas.circle((0.0, 0.0), 0.1, fill="#1b1b1b")
+    canvas.text((-0.4, -0.5), body_label(wheel, model))
+    _hanging_block(figure, (radius, 0.0), weight, model, FILLS[1])
+    figure.say(
+        f"A string wound on a wheel {body_label(wheel, model)} turning on a fixed axle holds "
+        f"{body_label(weight, model)}, which hangs."
+    )
+
+
+def draw_atwood(figure: Figure, model: Model, left: Body, right: Body, wheel: Body | None = None) -> None:
     canvas = figure.canvas
     radius = 1.0
     centre = (0.0, 0.0)
     canvas.ground((-1.5, 1.6), (1.5, 1.6), below=False)
     canvas.line((0.0, 1.6), centre, width=0.08)
-    canvas.circle(centre, radius, fill="#ffffff")
+    canvas.circle(centre, radius, fill="#ffffff" if wheel is None else FILLS[2])
     canvas.circle(centre, 0.08, fill="#1b1b1b")
+    if wheel is not None:
+        canvas.text((0.0, -0.45), body_label(wheel, model), size=0.36)
     for side, body, depth, fill in ((-1, left, 3.0, FILLS[0]), (1, right, 4.2, FILLS[1])):
         x = side * radius
         canvas.line((x, 0.0), (x, -depth + BLOCK / 2), width=0.04)
@@ -371,7 +496,41 @@ def draw_yoyo(figure: Figure, model: Model, body: Body, values: Values) -> None:
     )
 
 
-def draw_pendulum(figure: Figure, model: Model, body: Body, string: Constraint, values: Values) -> None:
+def _moves_linearly(body: Body, model: Model) -> bool:
+    coordinates = [c.symbol for c in model.coordinates]
+    return all(
+        sympy.diff(expr, a, b) == 0 for _, expr in body.position for a in coordinates for b in coordinates
+    )
+
+
+def _cart(figure: Figure, pivot: Point, label: str) -> None:
+    """A cart on wheels below `pivot`, carrying a gallows whose beam holds the pendulum at `pivot`."""
+    canvas = figure.canvas
+    width, height = 3.6, 0.9
+    centre = (pivot[0], pivot[1] - 5.0)
+    top = centre[1]
+    mast = centre[0] - width / 2 + 0.2
+    canvas.line((mast, top), (mast, pivot[1]), width=0.12)
+    canvas.line((mast, pivot[1]), pivot, width=0.12)
+    canvas.polygon(
+        [(centre[0] - width / 2, top - height), (centre[0] + width / 2, top - height),
+         (centre[0] + width / 2, top), (centre[0] - width / 2, top)],
+        fill=FILLS[1],
+    )  # fmt: skip
+    for dx in (-0.7, 0.7):
+        canvas.circle((centre[0] + dx, top - height - 0.25), 0.25, fill="#ffffff")
+    canvas.ground((centre[0] - 3.0, top - height - 0.5), (centre[0] + 3.0, top - height - 0.5))
+    canvas.text((centre[0], top - height / 2), label)
+
+
+def draw_pendulum(
+    figure: Figure,
+    model: Model,
+    body: Body,
+    string: Constraint,
+    values: Values,
+    pivot_body: Body | None = None,
+) -> None:
     canvas = figure.canvas
     length = 4.0
     collision = model.collision
@@ -380,7 +539,13 @@ def draw_pendulum(figure: Figure, model: Model, body: Body, string: Constraint, 
     angle = values.number(angle_symbol) if angle_symbol is not None else math.radians(30)
     angle = min(max(angle, math.radians(20)), math.radians(60))
     pivot = (0.0, 0.0)
-    canvas.ground((-1.5, 0.0), (1.5, 0.0), below=False)
+    if pivot_body is None:
+        canvas.ground((-1.5, 0.0), (1.5, 0.0), below=False)
+    else:
+        _cart(figure, pivot, body_label(pivot_body, model))
+        figure.say(
+            f"A cart {body_label(pivot_body, model)} rolls on a horizontal floor; a pendulum hangs from it."
+        )
     canvas.line(pivot, (0.0, -length - 0.3), dashed=True, width=0.03)
     raised = (length * math.sin(angle), -length * math.cos(angle))
     lowest = (0.0, -length)
@@ -454,8 +619,38 @@ def draw_wedge(
     )
 
 
-def draw_spring(figure: Figure, model: Model, body: Body, spring_symbol: sympy.Symbol | None) -> None:
+def draw_two_blocks_spring(
+    figure: Figure, model: Model, first: Body, second: Body, spring_symbol: sympy.Symbol | None
+) -> None:
     canvas = figure.canvas
+    canvas.ground((-1.0, 0.0), (7.0, 0.0))
+    _block(figure, (0.5, 0.0), (1.0, 0.0), body_label(first, model), FILLS[0])
+    _block(figure, (5.5, 0.0), (1.0, 0.0), body_label(second, model), FILLS[1])
+    canvas.spring((1.0, BLOCK / 2), (5.0, BLOCK / 2))
+    name = symbol_label(spring_symbol.name) if spring_symbol is not None else ""
+    if name:
+        canvas.text((3.0, BLOCK / 2 + 0.55), name)
+    figure.say(
+        f"{body_label(first, model)} and {body_label(second, model)} on a frictionless floor, joined by a spring {name}."
+    )
+
+
+def draw_spring(
+    figure: Figure, model: Model, body: Body, spring_symbol: sympy.Symbol | None, *, vertical: bool = False
+) -> None:
+    canvas = figure.canvas
+    if vertical:
+        canvas.ground((-1.5, 0.0), (1.5, 0.0))
+        canvas.spring((0.0, 0.0), (0.0, 3.5))
+        centre = _block(figure, (0.0, 3.5), (1.0, 0.0), body_label(body, model), FILLS[0])
+        if spring_symbol is not None:
+            canvas.text((0.65, 1.75), symbol_label(spring_symbol.name), anchor="start")
+        figure.say(
+            f"A block {body_label(body, model)} rests on a vertical spring"
+            + (f" {symbol_label(spring_symbol.name)}" if spring_symbol is not None else "")
+            + " standing on the floor."
+        )
+        return
     canvas.ground((0.0, 0.0), (0.0, 2.0), below=False)
     canvas.ground((0.0, 0.0), (7.0, 0.0))
     canvas.spring((0.0, BLOCK / 2), (4.0, BLOCK / 2))
@@ -466,6 +661,18 @@ def draw_spring(figure: Figure, model: Model, body: Body, spring_symbol: sympy.S
     coordinates = [c.name for c in model.coordinates]
     if coordinates:
         canvas.text((centre[0] + 2.0, -0.6), coordinates[0], anchor="start")
+    collision = model.collision
+    if collision is not None:
+        bullet = (centre[0] + 4.2, centre[1])
+        canvas.polygon(
+            [(bullet[0] + 0.3, bullet[1] - 0.1), (bullet[0] - 0.2, bullet[1] - 0.1), (bullet[0] - 0.35, bullet[1]),
+             (bullet[0] - 0.2, bullet[1] + 0.1), (bullet[0] + 0.3, bullet[1] + 0.1)],
+            fill="#888888",
+        )  # fmt: skip
+        canvas.arrow((bullet[0] - 0.5, bullet[1]), (bullet[0] - 1.6, bullet[1]))
+        if isinstance(collision.projectile_mass, sympy.Symbol):
+            canvas.text((bullet[0], bullet[1] + 0.45), symbol_label(collision.projectile_mass.name))
+        figure.say("A bullet flies into the block along the spring's line and sticks.")
     figure.say(
         f"A block {body_label(body, model)} on a horizontal frictionless floor, tied to a wall by a spring"
         + (f" {symbol_label(spring_symbol.name)}" if spring_symbol is not None else "")
@@ -516,53 +723,161 @@ def _compose(model: Model, given: Mapping[str, float]) -> Figure:
     strings = [c for c in model.constraints if c.kind is ConstraintKind.STRING]
     pendulum = [c for c in strings if not _is_linear(c.gap, model)]
     if pendulum:
-        draw_pendulum(figure, model, _bodies_in(pendulum[0].gap, model)[0], pendulum[0], values)
+        joined = _bodies_in(pendulum[0].gap, model)
+        bobs = [b for b in joined if not _moves_linearly(b, model)] or joined
+        pivots = [b for b in joined if b not in bobs]
+        draw_pendulum(figure, model, bobs[0], pendulum[0], values, pivots[0] if pivots else None)
         return figure
     surfaces = [c for c in model.constraints if c.kind is ConstraintKind.SURFACE]
     two_body = [c for c in surfaces if len(_bodies_in(c.gap, model)) == 2]
-    if two_body:
-        block, wedge = _wedge_roles(two_body[0], model)
-        draw_wedge(figure, model, wedge, block, two_body[0], values)
+    on_own_surface = {
+        b.name for c in surfaces if len(_bodies_in(c.gap, model)) == 1 for b in _bodies_in(c.gap, model)
+    }
+    wedges = [c for c in two_body if not {b.name for b in _bodies_in(c.gap, model)} <= on_own_surface]
+    if wedges:
+        block, wedge = _wedge_roles(wedges[0], model)
+        draw_wedge(figure, model, wedge, block, wedges[0], values)
         return figure
     fixed = [
         surface
         for c in surfaces
         if len(bodies := _bodies_in(c.gap, model)) == 1
+        and _is_linear(c.gap, model)
         and (surface := _linear_surface(c, bodies[0], model, values)) is not None
     ]
+    angles = {surface.angle_symbol for surface in fixed}
+    if len(fixed) == 2 and len(angles) == 2 and None not in angles:
+        draw_double_incline(figure, model, fixed, bool(strings))
+        return figure
     if fixed:
-        slope = draw_incline(figure, model, values, fixed)
+        touching = any(
+            {b.name for b in _bodies_in(c.gap, model)} <= {f.body.name for f in fixed} for c in two_body
+        )
+        slope = draw_incline(figure, model, values, fixed, touching=touching)
         for potential in model.potentials:
-            if potential.anchor and len(potential.bodies) == 1 and potential.bodies[0] in slope.bases:
+            if (
+                potential.anchor
+                and len(potential.bodies) == 1
+                and potential.bodies[0] in slope.bases
+                and _spring_sign(potential, values) > 0
+            ):
                 draw_slope_spring(figure, model, slope, model.body(potential.bodies[0]), potential)
-        for string in strings:
-            joined = _bodies_in(string.gap, model)
-            hanging = [b for b in joined if b.name not in slope.bases]
-            if slope.upper is not None and len(joined) == 2 and hanging:
-                slope_body = next(b for b in joined if b.name in slope.bases)
-                draw_pulley_to_hanging(figure, model, slope, slope_body, hanging[0])
+        over_edge = [
+            (joined, hanging)
+            for string in strings
+            if len(joined := _bodies_in(string.gap, model)) == 2
+            and len(hanging := [b for b in joined if b.name not in slope.bases]) == 1
+        ]
+        for index, (joined, hanging) in enumerate(over_edge):
+            slope_body = next(b for b in joined if b.name in slope.bases)
+            left = slope.upper is None and len(over_edge) == 2 and index == 0
+            draw_pulley_to_hanging(figure, model, slope, slope_body, hanging[0], left=left)
         return figure
     if strings:
         joined = _bodies_in(strings[0].gap, model)
-        if len(joined) == 2:
-            draw_atwood(figure, model, joined[0], joined[1])
+        every = list({b.name: b for c in strings for b in _bodies_in(c.gap, model)}.values())
+        hanging = [b for b in every if b.angle is None]
+        wheels = [b for b in every if b.angle is not None]
+        if len(hanging) == 2:
+            draw_atwood(figure, model, hanging[0], hanging[1], wheels[0] if wheels else None)
             return figure
-        if len(joined) == 1 and joined[0].angle is not None:
+        if len(hanging) == 3:
+            draw_double_atwood(figure, model, hanging)
+            return figure
+        if len(hanging) == 1 and wheels:
+            draw_wheel_and_weight(figure, model, wheels[0], hanging[0])
+            return figure
+        if len(joined) == 1 and wheels:
             draw_yoyo(figure, model, joined[0], values)
             return figure
     if model.potentials:
         potential = model.potentials[0]
         bodies = [model.body(name) for name in potential.bodies]
+        sign = _spring_sign(potential, values)
+        quadratic = sign > 0
+        if potential.anchor and len(bodies) == 1 and sign < 0 and len(model.coordinates) == 1:
+            draw_path(figure, model, bodies[0], values, spin=potential)
+            return figure
+        if potential.anchor and len(bodies) == 1 and sign == 0:
+            draw_central(figure, model, bodies[0], potential)
+            return figure
         if potential.anchor and len(bodies) == 1:
             spring = _stiffness(potential, model)
-            draw_spring(figure, model, bodies[0], spring[0] if spring else None)
+            vertical = [axis for axis, _ in bodies[0].position] == ["y"]
+            draw_spring(figure, model, bodies[0], spring[0] if spring else None, vertical=vertical)
+            return figure
+        if len(bodies) == 2 and quadratic:
+            spring = _stiffness(potential, model)
+            draw_two_blocks_spring(figure, model, bodies[0], bodies[1], spring[0] if spring else None)
             return figure
         if len(bodies) == 2:
             label = next((c.name for c in model.coordinates if c.name not in ("X",)), "d")
             draw_pair(figure, model, bodies[0], bodies[1], label)
             return figure
+    if len(model.bodies) == 1 and len(model.coordinates) == 1:
+        draw_path(figure, model, model.bodies[0], values)
+        return figure
     draw_row(figure, model)
     return figure
+
+
+def draw_path(
+    figure: Figure, model: Model, body: Body, values: Values, spin: PairPotential | None = None
+) -> None:
+    """One body on one coordinate: the curve its centre follows (a wire, a bowl, a circle about a
+    pivot), drawn to scale, with the body on it; a turning body on a pivot is a rod from the pivot."""
+    coordinate = model.coordinates[0].symbol
+    position = dict(body.position)
+    x_expr, y_expr = position.get("x", sympy.Integer(0)), position.get("y", sympy.Integer(0))
+    ranges = dict((name, (low, high)) for name, low, high in model.coordinate_ranges)
+    samples = [i / 20 for i in range(-20, 21)]
+    if model.coordinates[0].name in ranges or body.angle is not None:
+        samples = [i / 20 for i in range(-16, 17)]
+    points = []
+    for t in samples:
+        try:
+            points.append((values.number(x_expr, {coordinate: t}), values.number(y_expr, {coordinate: t})))
+        except (TypeError, ValueError):
+            continue
+    if len(points) < 2:
+        raise ValueError("no path")
+    span = max(
+        max(p[0] for p in points) - min(p[0] for p in points),
+        max(p[1] for p in points) - min(p[1] for p in points),
+    )
+    scale = 5.0 / span if span > 0 else 1.0
+    points = [(x * scale, y * scale) for x, y in points]
+    pivot = body.angle is not None and not [c for c in model.constraints if c.kind is ConstraintKind.SURFACE]
+    if pivot:
+        figure.canvas.polyline(points, width=0.03)
+        figure.canvas.ground((-1.0, 0.0), (1.0, 0.0), below=False)
+        here = points[len(points) * 2 // 3]
+        far = (here[0] * 2, here[1] * 2)
+        figure.canvas.line((0.0, 0.0), far, width=0.35, color="#8aa9cf")
+        figure.canvas.circle((0.0, 0.0), 0.1, fill="#1b1b1b")
+        figure.canvas.text((far[0] + 0.5, far[1]), body_label(body, model), anchor="start")
+        figure.say(f"A rigid body {body_label(body, model)} swings about a fixed pivot at its end.")
+        return
+    figure.canvas.polyline(points, width=0.07)
+    if spin is not None:  # a rotating frame: the axis of rotation, with its rate
+        top = max(p[1] for p in points) + 1.0
+        bottom = min(p[1] for p in points) - 0.5
+        figure.canvas.line((0.0, bottom), (0.0, top), dashed=True, width=0.04)
+        figure.canvas.arc((0.0, top - 0.3), 0.5, math.radians(200), math.radians(340))
+        rates = _other_symbols(spin, body, model)
+        if rates:
+            figure.canvas.text((0.9, top - 0.2), symbol_label(rates[0].name), anchor="start")
+        figure.say(
+            "It turns about the vertical axis drawn dashed"
+            + (f" at the rate {symbol_label(rates[0].name)}." if rates else ".")
+        )
+    here = points[len(points) * 2 // 3]
+    radius = 0.45
+    figure.canvas.circle((here[0], here[1] + radius), radius, fill=FILLS[0])
+    figure.canvas.text(
+        (here[0] + radius + 0.2, here[1] + radius * 2 + 0.2), body_label(body, model), anchor="start"
+    )
+    figure.say(f"{body_label(body, model)} moves along the curve drawn (a wire or a surface).")
 
 
 def _wedge_roles(surface: Constraint, model: Model) -> tuple[Body, Body]:

@@ -7,8 +7,8 @@ import signal
 import time
 
 from app.authoring import Vetted
-from app.grading.worker import GraderCrash, SpecProblem, grade, guarded
-from physics.checking import CheckJob, run_job
+from app.grading.worker import GraderCrash, SpecProblem, grade, guarded, read_only
+from physics.checking import CheckJob, Preview, run_job
 from physics.errors import SpecError
 from physics.verdict import Verdict
 
@@ -48,3 +48,10 @@ def slow_vet(source: bytes, fmt: str) -> Vetted:
         while True:
             time.sleep(1)
     return Vetted(None, [("", "vetted")])
+
+
+def spec_failing_preview(job: CheckJob) -> Preview | SpecProblem | GraderCrash:
+    """A preview whose reference cannot be read, for `spec`; the worker's own preview otherwise."""
+    if job.answer == "spec":
+        return SpecProblem("the reference does not parse", ("parts", 0, "answer"))
+    return read_only(job)

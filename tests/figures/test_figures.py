@@ -26,6 +26,12 @@ EXPECTED = {
     "rolling-incline": ({"cylinder", "hoop", "sphere", "θ"}, "incline"),
     "skier-friction": ({"m", "α", "μ"}, "friction"),
     "spring-incline": ({"m", "k", "θ"}, "spring"),
+    "table-two-pulleys": ({"M", "m₁", "m₂", "μ"}, "edge"),
+    "double-atwood": ({"m₁", "m₂", "m₃"}, "light pulley"),
+    "pendulum-on-cart": ({"M", "m", "L"}, "cart"),
+    "bead-rotating-hoop": ({"m", "ω"}, "axis"),
+    "orbit-effective-potential": ({"m", "M", "r"}, "centre"),
+    "double-incline": ({"m₁", "m₂", "α", "β"}, "pulley"),
     "yo-yo": ({"m", "r"}, "axle"),
 }
 
