@@ -34,10 +34,6 @@ SCRIPT_PATH = "/lti/static/student.js"
 _PROBLEM_ID = re.compile(r"^[A-Za-z0-9][A-Za-z0-9._-]{0,99}$")
 
 
-class ProblemUnavailable(LookupError):
-    """Raised by `student_view` for an unknown or retired problem."""
-
-
 def _hidden(text: str) -> str:
     """Words for screen readers only: three parts' boxes and buttons must not all sound alike."""
     return f'<span class="visually-hidden">{escape(text)}</span>'

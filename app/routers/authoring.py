@@ -25,6 +25,7 @@ from app.schemas.problems import (
 from app.services import Services
 from problems.compiled import CompiledProblem, CompiledSymbolicPart
 from problems.errors import ProblemInvalid
+from problems.modelinfo import MIN_AGREEING_METHODS
 
 router = APIRouter(tags=["authoring"])
 
@@ -182,9 +183,7 @@ def solution_of(compiled: CompiledProblem) -> SolutionPublic:
         agreement=agreement,
         proofs={} if derived is None else dict(derived.proofs),
         simulation=simulation,
-        methods_agree=derived is not None
-        and not derived.disagreements
-        and all(len(m) >= 2 for m in agreement.values()),
+        methods_agree=derived is not None and all(len(m) >= MIN_AGREEING_METHODS for m in agreement.values()),
     )
 
 
