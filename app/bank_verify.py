@@ -7,6 +7,7 @@ from pathlib import Path
 
 from tqdm import tqdm
 
+from app.web.document_text import render_problems
 from problems.errors import ProblemInvalid
 from problems.loader import load_bank
 from problems.selftest import verify_bank
@@ -31,4 +32,9 @@ def verify_command(variants: int, only: list[str] | None = None, bank_dir: Path 
 
         report = verify_bank(documents, variants, progress)
     print(report.summary())
-    return 0 if report.ok else 1
+    unrendered = [(doc.id, path, why) for doc in documents for path, why in render_problems(doc)]
+    for problem, path, why in unrendered:
+        print(f"  {problem}: {path} does not render cleanly: {why}")
+    if unrendered:
+        print(f"{len(unrendered)} text(s) do not render cleanly")
+    return 0 if report.ok and not unrendered else 1

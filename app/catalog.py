@@ -15,8 +15,9 @@ import logging
 import pickle
 import threading
 from collections import OrderedDict
+from collections.abc import Callable
 from pathlib import Path
-from typing import Any
+from typing import Any, TypeVar
 
 from app.db import compiled as compiled_repository
 from app.db import problems as problem_repository
@@ -30,6 +31,7 @@ from problems.schema import ProblemDocument
 from problems.variants import Variant, draw_variant, student_view
 
 log = logging.getLogger("physcheck.catalog")
+T = TypeVar("T")
 
 
 class CompiledStore:
@@ -73,8 +75,8 @@ class CompiledStore:
         try:
             with self._database.session() as session:
                 compiled_repository.put_compiled(session, key, payload, self._mac(key, payload))
-        except Exception:  # a cache: another instance may have written it meanwhile; serve anyway
-            log.warning("could not store the compilation of %r", record.id, exc_info=True)
+        except Exception as error:  # a cache: another instance may have written it meanwhile
+            log.warning("could not store the compilation of %r: %s", record.id, error)
 
 
 class Catalog:
@@ -95,6 +97,7 @@ class Catalog:
         self._compiled_limit = compiled_cached
         self._store = CompiledStore(database, secret)
         self._lock = threading.Lock()
+        self._store_lock = threading.Lock()
         self.warm = threading.Event()
         self._closing = threading.Event()
         self._compiling: dict[tuple[str, int, str], threading.Lock] = {}
@@ -128,8 +131,11 @@ class Catalog:
             self.warm.set()
 
     def close(self) -> None:
-        """Stop a warm-up still running (it would otherwise compile on after the app has shut down)."""
+        """Stop a warm-up still running (it would otherwise compile on after the app has shut down);
+        returns once no thread uses the database any more."""
         self._closing.set()
+        with self._store_lock:
+            pass
 
     def get(self, problem_id: str, version: int | None = None) -> ProblemRecord:
         with self._database.session(read_only=True) as session:
@@ -170,10 +176,10 @@ class Catalog:
             with lock:
                 found = self._remembered(key)
                 if found is None:
-                    found = self._store.load(record)
+                    found = self._stored(lambda: self._store.load(record))
                 if found is None:
                     found = build_problem(self.document(record), record.version).prepare()
-                    self._store.save(record, found)
+                    self._stored(lambda: self._store.save(record, found))
                 with self._lock:
                     self._compiled[key] = found
                     while len(self._compiled) > self._compiled_limit:
@@ -182,6 +188,11 @@ class Catalog:
         finally:
             with self._lock:  # later callers find the cache warm; no lock kept per version
                 self._compiling.pop(key, None)
+
+    def _stored(self, use: Callable[[], T]) -> T | None:
+        """Use the store unless closing: a warm-up still compiling must not reach a disposed database."""
+        with self._store_lock:
+            return None if self._closing.is_set() else use()
 
     def _remembered(self, key: tuple[str, int, str]) -> CompiledProblem | None:
         with self._lock:

@@ -38,12 +38,19 @@ def current_principal(
                 "This API key is unknown or revoked; send it as 'Authorization: Bearer <key>'."
             )
         principal = found
-    wait = services.key_limiter.retry_after(principal.key_id)
-    if wait is None and principal.student is not None:
-        wait = services.student_limiter.retry_after(principal.student)
+    wait = budget_wait(services, principal)
     if wait is not None:
         raise RateLimited(f"Too many requests; try again in {wait} s.", retry_after=wait)
     return principal
+
+
+def budget_wait(services: Services, principal: Principal) -> int | None:
+    """Spend one request of the key's budget and of its student's; None if allowed, else the seconds
+    to wait. Every route a key reaches calls this once per request (the student page's too)."""
+    wait = services.key_limiter.retry_after(principal.key_id)
+    if wait is None and principal.student is not None:
+        wait = services.student_limiter.retry_after(principal.student)
+    return wait
 
 
 CurrentPrincipal = Annotated[Principal, Depends(current_principal)]

@@ -114,6 +114,16 @@ _STORAGE_ERRORS: dict[type[storage.StorageError], tuple[int, str]] = {
 }
 
 
+def unreadable_body_message(cause: BaseException) -> str:
+    if isinstance(cause, UnicodeDecodeError):
+        return f"The body is not UTF-8 text (byte {cause.start})."
+    if isinstance(cause, RecursionError):
+        return "The JSON body is nested too deeply."
+    if isinstance(cause, ValueError) and "digits" in str(cause):
+        return "A number in the JSON body has too many digits."
+    return "The body is not readable JSON."
+
+
 def _path(loc: Sequence[Any]) -> str:
     parts = [str(p) for p in loc if p not in ("body",)]
     return ".".join(parts)
@@ -160,6 +170,10 @@ def install_error_handlers(app: FastAPI) -> None:
 
     @app.exception_handler(StarletteHTTPException)
     async def http_error(request: Request, error: StarletteHTTPException) -> JSONResponse:
+        if error.status_code == 400 and error.__cause__ is not None:
+            # FastAPI answers 400 when decoding the JSON body raised anything but JSONDecodeError;
+            # the contract calls every unreadable body a malformed request.
+            return _json(422, "malformed_request", unreadable_body_message(error.__cause__))
         code = _HTTP_CODES.get(error.status_code, "error")
         return _json(error.status_code, code, str(error.detail), headers=getattr(error, "headers", None))
 

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import asyncio
+import functools
 import threading
 from collections.abc import AsyncIterator
 from contextlib import asynccontextmanager
@@ -12,6 +13,7 @@ from fastapi import FastAPI
 from starlette.concurrency import run_in_threadpool
 
 from app.authoring import AuthoringPool
+from app.deps import budget_wait
 from app.errors import install_error_handlers
 from app.grading.pool import GradingPool
 from app.lti import router as lti_routes
@@ -25,6 +27,8 @@ from app.routers import check, health, problems, submissions
 from app.services import Services
 from app.settings import Settings, get_settings
 from app.startup import open_storage
+from app.web import router as web_routes
+from app.web.layout import STATIC_PATH, static_files
 
 
 def create_app(
@@ -81,6 +85,7 @@ def create_app(
             transport=lms_transport,
             student_view=storage.catalog.student_view,
             authenticate_key=storage.keys.authenticate,
+            rate_limit=functools.partial(budget_wait, app.state.services),
         )
         outbox = OutboxWorker(storage.database, lms_transport)
         await outbox.start()
@@ -112,4 +117,6 @@ def create_app(
     app.include_router(submissions.router)
     app.include_router(authoring_routes.router)
     app.include_router(lti_routes.router)
+    app.include_router(web_routes.router)
+    app.mount(STATIC_PATH, static_files(), name="static")
     return app

@@ -64,7 +64,10 @@ class BodyTooLarge(Exception):
 
 
 class BodyLimit:
-    """Refuses bodies over `max_bytes` with 413, by declared length or by counting a streamed body."""
+    """Refuses bodies over `max_bytes` with 413, by declared length or by counting a streamed body.
+
+    A chunked body (no Content-Length) is read whole here before the app sees it: FastAPI turns any
+    error raised while it reads the body into 400, so the cap must be enforced before that."""
 
     def __init__(self, app: ASGIApp, max_bytes: int):
         self.app = app
@@ -74,9 +77,17 @@ class BodyLimit:
         if scope["type"] != "http":
             await self.app(scope, receive, send)
             return
-        declared = dict(scope["headers"]).get(b"content-length")
+        headers = dict(scope["headers"])
+        declared = headers.get(b"content-length")
         if declared is not None and (not declared.isdigit() or int(declared) > self.max_bytes):
             await self._refuse(send)
+            return
+        if declared is None and b"transfer-encoding" in headers:
+            buffered = await self._read_whole(receive)
+            if buffered is None:
+                await self._refuse(send)
+                return
+            await self.app(scope, _replay(buffered, receive), send)
             return
         seen = 0
         started = False
@@ -101,8 +112,33 @@ class BodyLimit:
             if not started:
                 await self._refuse(send)
 
+    async def _read_whole(self, receive: Receive) -> Message | None:
+        """The body as one message, or None once it passes the cap (the rest is never read)."""
+        parts: list[bytes] = []
+        seen = 0
+        while True:
+            message = await receive()
+            if message["type"] != "http.request":
+                return message  # the client went away: the app sees the disconnect
+            body = message.get("body", b"")
+            seen += len(body)
+            if seen > self.max_bytes:
+                return None
+            parts.append(body)
+            if not message.get("more_body", False):
+                return {"type": "http.request", "body": b"".join(parts), "more_body": False}
+
     async def _refuse(self, send: Send) -> None:
         await _send_error(send, 413, "payload_too_large", f"The request body is over {self.max_bytes} bytes.")
+
+
+def _replay(first: Message, receive: Receive) -> Receive:
+    pending = [first]
+
+    async def replaying_receive() -> Message:
+        return pending.pop() if pending else await receive()
+
+    return replaying_receive
 
 
 async def _send_error(send: Send, status: int, code: str, message: str) -> None:

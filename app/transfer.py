@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import csv
 import json
 import sys
 from pathlib import Path
@@ -16,6 +15,7 @@ from app.db import problems as problem_repository
 from app.db import submissions as submission_repository
 from app.db.database import Database
 from app.db.records import ProblemRecord
+from app.spreadsheet import SafeWriter
 from problems.errors import ProblemInvalid
 
 SUBMISSION_COLUMNS = (
@@ -60,8 +60,9 @@ def export_problem(database: Database, problem_id: str, fmt: str, out: TextIO) -
 
 
 def export_submissions(database: Database, problem_id: str | None, out: TextIO) -> int:
-    """Every submission (of one problem) as CSV, oldest first; returns how many rows were written."""
-    writer = csv.writer(out)
+    """Every submission (of one problem) as CSV, oldest first; returns how many rows were written.
+    Text cells are neutralised for spreadsheets (`app.spreadsheet`)."""
+    writer = SafeWriter(out)
     writer.writerow(SUBMISSION_COLUMNS)
     rows, cursor = 0, None
     with tqdm(unit=" submissions", file=sys.stderr, disable=None) as bar:

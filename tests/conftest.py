@@ -21,6 +21,9 @@ from sqlalchemy.pool import NullPool
 from app.db.database import Database
 from app.db.migrate import migrate
 
+# Browser fixtures (live_server, browse, check_page...) shared by every page test.
+pytest_plugins = ["tests.browser"]
+
 POSTGRES_URL_ENV = "PHYSCHECK_TEST_POSTGRES_URL"
 DEFAULT_POSTGRES_URL = "postgresql+psycopg://postgres@127.0.0.1:5432/test"
 

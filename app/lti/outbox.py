@@ -7,6 +7,11 @@ the row's status everywhere), posts each score with an OAuth2 token got by clien
 files the outcome: delivered, retried later (network errors, 408, 429, 5xx; Retry-After respected), or
 failed (what the LMS said, kept for instructors). Each target's timestamps only grow, so a resend after
 a crash is idempotent on the LMS side.
+
+Per target (a student's line item) only the newest score matters: a newer score supersedes any older
+one not yet sent, and a score waits while an older one for the same target is in flight, so the LMS
+sees timestamps in order (Canvas refuses an older one with 400; an LMS that does not check would drop
+the grade back). When a platform answers again after an outage, every score waiting for it is due at once.
 """
 
 from __future__ import annotations
@@ -24,8 +29,8 @@ from typing import Any
 from urllib.parse import urlsplit, urlunsplit
 
 import httpx
-from sqlalchemy import or_, select, update
-from sqlalchemy.orm import Session
+from sqlalchemy import exists, or_, select, update
+from sqlalchemy.orm import Session, aliased
 
 from app.db.database import Database
 from app.db.types import utc_now
@@ -69,6 +74,13 @@ def enqueue_scores(
     targets = list(session.scalars(query.order_by(LtiGradeTarget.id).with_for_update()))
     stamp = _to_millisecond(timestamp)
     for target in targets:
+        # A row being sent (status `sending`) is left alone: it goes first, this one after it.
+        session.execute(
+            update(LtiScoreOutbox)
+            .where(LtiScoreOutbox.target_id == target.id, LtiScoreOutbox.status == PENDING)
+            .values(status=SUPERSEDED, claimed_by=None, claimed_until=None)
+            .execution_options(synchronize_session=False)
+        )
         sent = stamp
         if target.last_timestamp is not None and sent <= target.last_timestamp:
             sent = target.last_timestamp + _TIMESTAMP_STEP
@@ -91,7 +103,8 @@ def enqueue_scores(
 
 @dataclass(frozen=True)
 class DeliveryProblem:
-    """A score the LMS refused (status `failed`) or has not yet accepted after some tries (`pending`)."""
+    """A score the LMS refused (status `failed`), has not yet accepted after some tries (`pending`), or
+    that a newer score replaced after failed tries (`superseded`: not a failure, nothing left to do)."""
 
     outbox_id: int
     student: str
@@ -108,13 +121,14 @@ class DeliveryProblem:
 
 
 def list_delivery_problems(session: Session, *, limit: int = 200) -> list[DeliveryProblem]:
-    """Scores that failed, or are still being retried, newest first: for instructors."""
+    """Scores that failed, are still being retried, or were superseded after failed tries, newest
+    first: for instructors."""
     query = (
         select(LtiScoreOutbox, LtiGradeTarget, LtiPlatform)
         .join(LtiGradeTarget, LtiGradeTarget.id == LtiScoreOutbox.target_id)
         .join(LtiPlatform, LtiPlatform.id == LtiGradeTarget.platform_id)
         .where(or_(LtiScoreOutbox.status == FAILED, LtiScoreOutbox.attempts > 0))
-        .where(LtiScoreOutbox.status.in_((FAILED, PENDING, SENDING)))
+        .where(LtiScoreOutbox.status.in_((FAILED, PENDING, SENDING, SUPERSEDED)))
         .order_by(LtiScoreOutbox.id.desc())
         .limit(limit)
     )
@@ -156,29 +170,50 @@ class ClaimedScore:
 
 
 def claim_batch(database: Database, claim: str, now: datetime, limit: int) -> list[ClaimedScore]:
-    """Take up to `limit` due rows for this worker. On PostgreSQL rows another transaction holds are
-    skipped; the conditional UPDATE (status and lease unchanged since we read them) makes the claim
-    exclusive on every backend."""
+    """Take up to `limit` due rows for this worker, oldest timestamp first. On PostgreSQL rows another
+    transaction holds are skipped; the conditional UPDATE (status and lease unchanged since we read
+    them) makes the claim exclusive on every backend. A due row with a newer score for its target is
+    superseded instead (e.g. one whose sender crashed); one whose target has an older score in flight
+    waits for it."""
     due = or_(
         (LtiScoreOutbox.status == PENDING) & (LtiScoreOutbox.next_attempt_at <= now),
         (LtiScoreOutbox.status == SENDING) & (LtiScoreOutbox.claimed_until < now),
     )
+    other = aliased(LtiScoreOutbox)
+    same_target = (other.target_id == LtiScoreOutbox.target_id) & (other.id != LtiScoreOutbox.id)
+    newer_exists = exists().where(
+        same_target, other.timestamp > LtiScoreOutbox.timestamp, other.status != SUPERSEDED
+    )
+    in_flight = exists().where(same_target, other.status == SENDING, other.claimed_until >= now)
     claimed: list[ClaimedScore] = []
     with database.session() as session:
-        query = select(LtiScoreOutbox).where(due).order_by(LtiScoreOutbox.id).limit(limit)
-        rows = list(session.scalars(query.with_for_update(skip_locked=True, of=LtiScoreOutbox)))
-        for row in rows:
+        query = (
+            select(LtiScoreOutbox, newer_exists, in_flight)
+            .where(due)
+            .order_by(LtiScoreOutbox.timestamp, LtiScoreOutbox.id)
+            .limit(limit)
+        )
+        rows = list(session.execute(query.with_for_update(skip_locked=True, of=LtiScoreOutbox)))
+        for row, newer, busy in rows:
+            if busy and not newer:
+                continue
+            unchanged = (
+                (LtiScoreOutbox.id == row.id)
+                & (LtiScoreOutbox.status == row.status)
+                & or_(LtiScoreOutbox.claimed_by.is_(None), LtiScoreOutbox.claimed_by == row.claimed_by)
+            )
+            values: dict[str, Any] = (
+                {"status": SUPERSEDED, "claimed_by": None, "claimed_until": None}
+                if newer
+                else {"status": SENDING, "claimed_by": claim, "claimed_until": now + LEASE}
+            )
             result = session.execute(
                 update(LtiScoreOutbox)
-                .where(
-                    LtiScoreOutbox.id == row.id,
-                    LtiScoreOutbox.status == row.status,
-                    or_(LtiScoreOutbox.claimed_by.is_(None), LtiScoreOutbox.claimed_by == row.claimed_by),
-                )
-                .values(status=SENDING, claimed_by=claim, claimed_until=now + LEASE)
+                .where(unchanged)
+                .values(**values)
                 .execution_options(synchronize_session=False)
             )
-            if result.rowcount != 1:  # type: ignore[attr-defined]
+            if result.rowcount != 1 or newer:  # type: ignore[attr-defined]
                 continue
             target = session.get(LtiGradeTarget, row.target_id)
             assert target is not None
@@ -235,6 +270,20 @@ def finish(database: Database, score: ClaimedScore, outcome: Outcome, now: datet
             .values(**values)
             .execution_options(synchronize_session=False)
         )
+        if outcome.http_status is not None and status != PENDING:
+            # The platform answers again: whatever waits for it goes now, not at the end of a backoff
+            # that grew during the outage.
+            on_platform = select(LtiGradeTarget.id).where(LtiGradeTarget.platform_id == score.platform_id)
+            session.execute(
+                update(LtiScoreOutbox)
+                .where(
+                    LtiScoreOutbox.status == PENDING,
+                    LtiScoreOutbox.next_attempt_at > now,
+                    LtiScoreOutbox.target_id.in_(on_platform),
+                )
+                .values(next_attempt_at=now)
+                .execution_options(synchronize_session=False)
+            )
 
 
 def backoff(attempts: int, retry_after: timedelta | None) -> timedelta:

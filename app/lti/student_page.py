@@ -161,6 +161,15 @@ async def student_content(problem_id: str, request: Request, context: LtiContext
     headers = {"Cache-Control": "no-store", "X-Content-Type-Options": "nosniff"}
     if principal is None:
         return Response("unauthenticated", status_code=401, media_type="text/plain", headers=headers)
+    wait = None if context.rate_limit is None else await run_in_threadpool(context.rate_limit, principal)
+    if wait is not None:
+        headers["Retry-After"] = str(wait)
+        return Response(
+            f"Too many requests; try again in {wait} s.",
+            status_code=429,
+            media_type="text/plain",
+            headers=headers,
+        )
     view = None
     if _PROBLEM_ID.match(problem_id):
         who = principal.student or f"preview:{principal.key_id}"

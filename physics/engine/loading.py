@@ -8,6 +8,7 @@ from typing import Any, TypeVar
 
 import sympy
 
+from physics.engine.elements import expand_elements
 from physics.engine.model import (
     AXES,
     Body,
@@ -77,6 +78,14 @@ class _Collector:
 
 def load_model(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]) -> Model:
     """Validate a model section into a Model; raises SpecErrors listing every fault with its path."""
+    expanded = expand_elements(data, symbols)  # composable elements -> the low-level sections
+    try:
+        return _load_low_level(expanded.data, symbols)
+    except SpecErrors as group:
+        raise expanded.relocate(group) from None
+
+
+def _load_low_level(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]) -> Model:
     errors = _Collector()
     if not isinstance(data, Mapping):
         raise SpecErrors([SpecError("the model must be a mapping", ())])

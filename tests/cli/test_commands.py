@@ -135,3 +135,21 @@ def test_bank_verify_fails_on_a_broken_bank(tmp_path, monkeypatch, capsys):
         assert main(["bank", "verify", "--variants", "2"]) != 0
     finally:
         get_settings.cache_clear()
+
+
+def test_bank_verify_fails_on_a_statement_that_does_not_render_cleanly(tmp_path, monkeypatch, capsys):
+    broken = tmp_path / "bank"
+    shutil.copytree(BANK / "atwood", broken / "atwood")
+    problem = (broken / "atwood" / "problem.yaml").read_text()
+    (broken / "atwood" / "problem.yaml").write_text(
+        problem.replace("statement: |\n", "statement: |\n  $\\frac{a}$ `m1\n", 1)
+    )
+    monkeypatch.setenv("PHYSCHECK_BANK_DIR", str(broken))
+    get_settings.cache_clear()
+    try:
+        assert main(["bank", "verify", "--variants", "1"]) != 0
+    finally:
+        get_settings.cache_clear()
+    out = capsys.readouterr().out
+    assert "atwood: statement does not render cleanly" in out
+    assert "mfrac needs 2 arguments" in out and "stray $ or `" in out

@@ -47,8 +47,8 @@ BROKEN = [
         id="gap-names-unknown-body",
     ),
     pytest.param(
-        lambda d: d["constraints"]["floor"].update(kind="glue"),
-        ("constraints", "floor", "kind"),
+        lambda d: d["constraints"]["inclineFloor"].update(kind="glue"),
+        ("constraints", "inclineFloor", "kind"),
         id="unknown-constraint-kind",
     ),
     pytest.param(

@@ -4,7 +4,8 @@ GET  /auth                    OIDC authorization endpoint: answers the tool's lo
                               the launch it was told to make next, as JSON {id_token, state, launch_url}
 GET  /jwks                    the platform's public key
 POST /token                   client-credentials grant with a client assertion
-POST /lineitems/{id}/scores   the AGS score service; `fail_scores` makes it answer 503 for a while
+POST /lineitems/{id}/scores   the AGS score service; `fail_scores` makes it answer 503 for a while,
+                              `refusals` scripts an outage
 """
 
 from __future__ import annotations
@@ -123,6 +124,8 @@ class FakeLms:
         self.assertions: list[str] = []  # client assertions received at the token endpoint
         self.token_lifetime: int | None = None  # override the platform's expires_in
         self.retry_after: str | None = None  # sent with the 503s
+        # An outage script: score posts are answered with these (status, Retry-After) first, in turn.
+        self.refusals: list[tuple[int, str | None]] = []
         self.app = self._build_app()
 
     @property
@@ -177,6 +180,10 @@ class FakeLms:
 
         @app.post("/lineitems/{line_item_id}/scores")
         async def scores(line_item_id: str, request: Request) -> Response:
+            if self.refusals:
+                status, retry_after = self.refusals.pop(0)
+                headers = {"Retry-After": retry_after} if retry_after else None
+                return JSONResponse({"error": "unavailable"}, status_code=status, headers=headers)
             if self.fail_scores > 0:
                 self.fail_scores -= 1
                 headers = {"Retry-After": self.retry_after} if self.retry_after else None

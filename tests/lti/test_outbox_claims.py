@@ -25,19 +25,21 @@ def seed(db: Database) -> None:
         "https://lms.test/t",
         "https://lms.test/j",
     )
+    # One score for each of ROWS students: a student's newer score would supersede an older one.
     with db.session() as session:
-        session.add(
-            LtiGradeTarget(
-                platform_id=platform.id,
-                student="s",
-                problem_id="p",
-                lineitem_url="https://lms.test/li",
-                sub="u",
+        for student in range(ROWS):
+            session.add(
+                LtiGradeTarget(
+                    platform_id=platform.id,
+                    student=f"s{student}",
+                    problem_id="p",
+                    lineitem_url="https://lms.test/li",
+                    sub=f"u{student}",
+                )
             )
-        )
-    for given in range(ROWS):
+    for student in range(ROWS):
         with db.session() as session:
-            enqueue_scores(session, "p", "s", float(given), 100.0, utc_now() - timedelta(seconds=1))
+            enqueue_scores(session, "p", f"s{student}", 1.0, 100.0, utc_now() - timedelta(seconds=1))
 
 
 def test_concurrent_workers_never_claim_the_same_row(db: Database):

@@ -1,0 +1,74 @@
+"""Server-rendered pages: one Jinja2 environment (FastAPI's `Jinja2Templates`, autoescaped), one base
+layout (`base.html`), one stylesheet and our scripts under `/static`, and `page()` to answer with a
+template under a strict Content-Security-Policy (no inline scripts or styles; nothing from elsewhere).
+
+Templates get the renderer as filters: `{{ text | markdown }}` (paragraphs), `{{ text | inline }}`
+(one line: prompts, feedback), `{{ tex | tex }}` (one formula), `{{ tex | tex_block }}`.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from pathlib import Path
+from typing import Any
+
+from fastapi import Request
+from fastapi.responses import HTMLResponse
+from fastapi.staticfiles import StaticFiles
+from fastapi.templating import Jinja2Templates
+from markupsafe import Markup
+
+from app.web.rendering import render_inline, render_markdown, tex_to_mathml
+
+HERE = Path(__file__).resolve().parent
+STATIC_PATH = "/static"
+
+templates = Jinja2Templates(directory=HERE / "templates")
+templates.env.filters["markdown"] = render_markdown
+templates.env.filters["inline"] = render_inline
+templates.env.filters["tex"] = tex_to_mathml
+
+
+def _tex_block(tex: str) -> Markup:
+    return tex_to_mathml(tex, display=True)
+
+
+templates.env.filters["tex_block"] = _tex_block
+
+
+def static_files() -> StaticFiles:
+    """Mounted at STATIC_PATH by the app: physcheck.css and the pages' scripts."""
+    return StaticFiles(directory=HERE / "static")
+
+
+def security_headers(frame_ancestors: Sequence[str] = ()) -> dict[str, str]:
+    ancestors = " ".join(["'self'", *frame_ancestors])
+    csp = (
+        "default-src 'none'; style-src 'self'; script-src 'self'; img-src 'self' data:; "
+        f"connect-src 'self'; form-action 'self'; frame-ancestors {ancestors}; base-uri 'none'"
+    )
+    return {
+        "Content-Security-Policy": csp,
+        "X-Content-Type-Options": "nosniff",
+        "Referrer-Policy": "no-referrer",
+        "Cache-Control": "no-store",
+    }
+
+
+def page(
+    request: Request,
+    template: str,
+    context: Mapping[str, Any] | None = None,
+    *,
+    status: int = 200,
+    frame_ancestors: Sequence[str] = (),
+) -> HTMLResponse:
+    """`template` (which extends base.html) rendered with `context`; framable only by
+    `frame_ancestors` (an LMS's origins) besides ourselves."""
+    return templates.TemplateResponse(
+        request,
+        template,
+        dict(context or {}),
+        status_code=status,
+        headers=security_headers(frame_ancestors),
+    )
