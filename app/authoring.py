@@ -7,42 +7,72 @@ server process: one worker, a generous but hard time limit, the same memory limi
 from __future__ import annotations
 
 import asyncio
+import logging
 import multiprocessing
 from concurrent.futures import TimeoutError as FutureTimeout
-from dataclasses import dataclass, field
+from concurrent.futures.process import BrokenProcessPool
+from dataclasses import dataclass, field, replace
 from typing import Any, Literal
 
 from pebble import ProcessExpired, ProcessPool
 
+from app.errors import Unavailable
+from app.grading.supervised import PoolUnavailable, SupervisedPool
 from app.grading.worker import limit_memory
+from app.instructor.described import Described, describe
+from app.web.document_text import render_problems
 from physics.errors import DerivationError
 from problems.compiled import compile_problem
 from problems.errors import ProblemInvalid
 from problems.loader import parse_problem
+from problems.locate import locate
+from problems.schema import format_path
 from problems.selftest import verify_problem
+from problems.variants import fixed_variant
 
+log = logging.getLogger("physcheck.authoring")
 UPLOAD_SELFTEST_VARIANTS = 5
 
 
 @dataclass(frozen=True)
 class Vetted:
-    """The outcome of vetting: a clean document (JSON-ready) or every error found, with paths."""
+    """The outcome of vetting: a clean document (JSON-ready) or every error found, with paths; for the
+    instructor pages, what the engine derived (a preview), texts that will not render cleanly (saved
+    all the same), and the line each path is on."""
 
     document: dict[str, Any] | None
     errors: list[tuple[str, str]] = field(default_factory=list)
+    described: Described | None = None
+    warnings: list[tuple[str, str]] = field(default_factory=list)
+    lines: dict[str, int] = field(default_factory=dict)
 
 
 def vet(source: bytes, fmt: Literal["json", "yaml"]) -> Vetted:
-    """Every fault of an upload with its path: shape and meaning, then the derivation, then the self-test."""
+    """Every fault of an upload with its path, and the line each is on."""
+    try:
+        vetted = _vet(source, fmt)
+    except MemoryError:
+        # The worker's RLIMIT_AS is the size limit of one upload's derivation, as for answers.
+        return Vetted(None, [("model", "deriving and self-testing ran out of memory")])
+    paths = [path for path, _ in (*vetted.errors, *vetted.warnings)]
+    if not paths:
+        return vetted
+    try:
+        text = source.decode("utf-8")
+    except UnicodeDecodeError:
+        return vetted
+    return replace(vetted, lines=locate(text, paths))
+
+
+def _vet(source: bytes, fmt: Literal["json", "yaml"]) -> Vetted:
+    """Shape and meaning, then the derivation, then the self-test."""
     try:
         doc = parse_problem(source, fmt)
         compile_problem(doc)
     except ProblemInvalid as error:
         return Vetted(None, error.errors)
     except DerivationError as error:
-        return Vetted(
-            None, [(f"model.quantities.{error.quantity}" if error.quantity else "model", error.message)]
-        )
+        return Vetted(None, [(format_path(("model", *path)), message) for path, message in error.items()])
     report = verify_problem(doc, variants=UPLOAD_SELFTEST_VARIANTS)
     if not report.ok:
         index = {part.id: i for i, part in enumerate(doc.parts)}
@@ -51,25 +81,30 @@ def vet(source: bytes, fmt: Literal["json", "yaml"]) -> Vetted:
             for f in report.failures
         ]
         return Vetted(None, errors)
-    return Vetted(doc.model_dump(mode="json"))
+    # Midpoint values of every given: the numbers a preview shows before any student has a variant.
+    described = describe(compile_problem(doc), fixed_variant(doc, {}))
+    return Vetted(doc.model_dump(mode="json"), described=described, warnings=render_problems(doc))
 
 
 class AuthoringPool:
     def __init__(self, timeout: float, memory_mb: int):
         self._timeout = timeout
         self._memory_mb = memory_mb
-        self._pool: ProcessPool | None = None
+        self._pool: SupervisedPool | None = None
 
-    def start(self) -> None:
+    def _new_pool(self) -> ProcessPool:
         context = multiprocessing.get_context("forkserver")
-        self._pool = ProcessPool(
+        return ProcessPool(
             max_workers=1, initializer=limit_memory, initargs=(self._memory_mb,), context=context
         )
 
+    def start(self) -> None:
+        self._pool = SupervisedPool("upload-vetting", self._new_pool)
+        self._pool.start()
+
     def close(self) -> None:
         if self._pool is not None:
-            self._pool.stop()  # type: ignore[no-untyped-call]
-            self._pool.join(timeout=5)
+            self._pool.close()
             self._pool = None
 
     async def vet(self, source: bytes, fmt: Literal["json", "yaml"]) -> Vetted:
@@ -77,12 +112,14 @@ class AuthoringPool:
             self.start()
         assert self._pool is not None
         try:
-            return await asyncio.wrap_future(
-                self._pool.schedule(vet, args=(source, fmt), timeout=self._timeout)
-            )
+            return await asyncio.wrap_future(self._pool.schedule(vet, (source, fmt), self._timeout))
         except FutureTimeout:
             return Vetted(
                 None, [("model", f"deriving and self-testing took longer than {self._timeout:.0f} s")]
             )
-        except ProcessExpired:
-            return Vetted(None, [("model", "deriving and self-testing ran out of memory")])
+        except (PoolUnavailable, ProcessExpired, BrokenProcessPool) as error:
+            # A worker killed from outside, or a pool being replaced: not the upload's fault.
+            log.error("upload vetting failed on our side: %r", error)
+            raise Unavailable(
+                "Checking uploads is restarting after a fault; try again in a moment.", retry_after=2
+            ) from error

@@ -7,7 +7,9 @@
      ├── Conflict          409    e.g. no attempts left
      ├── PayloadTooLarge   413
      ├── RateLimited       429    with Retry-After
+     ├── GraderFault       500    grading itself failed (a crash, a stored problem that will not grade)
      └── Busy              503    the grading queue is full, with Retry-After
+          └── Unavailable  503    grading or the database is down for now; retry after Retry-After
 
 Domain errors from the core (`physics.errors.SpecError`) and from storage are mapped here too; an
 answer that cannot be read is never an error: it is an `invalid` verdict with status 200.
@@ -22,14 +24,17 @@ from typing import Any
 from fastapi import FastAPI, Request
 from fastapi.exceptions import RequestValidationError
 from fastapi.responses import JSONResponse
-from sqlalchemy.exc import DataError
+from sqlalchemy.exc import DataError, InterfaceError, OperationalError
+from sqlalchemy.exc import TimeoutError as PoolTimeout
 from starlette.exceptions import HTTPException as StarletteHTTPException
 
 from app.db import errors as storage
 from physics.errors import DerivationError, SpecError
 from problems.errors import ProblemInvalid
+from problems.schema import format_path
 
 log = logging.getLogger("physcheck.errors")
+DATABASE_RETRY_AFTER = 5
 
 
 class AppError(Exception):
@@ -77,6 +82,16 @@ class Busy(AppError):
 
     def __init__(self, message: str, retry_after: int = 1):
         super().__init__(message, headers={"Retry-After": str(retry_after)})
+
+
+class Unavailable(Busy):
+    code = "unavailable"
+
+
+class GraderFault(AppError):
+    """Grading failed for a reason that is not the answer's: logged where it happened; nothing stored."""
+
+    code = "grader_fault"
 
 
 def error_body(code: str, message: str, details: Sequence[dict[str, Any]] = ()) -> dict[str, Any]:
@@ -148,7 +163,7 @@ def install_error_handlers(app: FastAPI) -> None:
     @app.exception_handler(DerivationError)
     async def derivation_error(request: Request, error: DerivationError) -> JSONResponse:
         details = [
-            {"path": f"model.{error.quantity}" if error.quantity else "model", "message": error.message}
+            {"path": format_path(("model", *path)), "message": message} for path, message in error.items()
         ]
         return _json(422, "derivation_failed", error.message, details)
 
@@ -182,6 +197,21 @@ def install_error_handlers(app: FastAPI) -> None:
         # The last line of defence; the schemas refuse NUL and lone surrogates before this.
         log.warning("database refused a value: %s", type(error.orig).__name__)
         return _json(422, "malformed_request", "A value in the request cannot be stored.")
+
+    async def database_unavailable(request: Request, error: Exception) -> JSONResponse:
+        # Unreachable, restarting, or (SQLite) locked past the busy timeout: a retry will do, so this is
+        # a 503 with Retry-After, answered on the same keep-alive connection; the pool reconnects by itself.
+        first_line = str(getattr(error, "orig", None) or error).splitlines()[0] if str(error) else ""
+        log.warning("database unavailable: %s: %s", type(error).__name__, first_line)
+        return _json(
+            503,
+            "unavailable",
+            "The database is not reachable just now; try again shortly.",
+            headers={"Retry-After": str(DATABASE_RETRY_AFTER)},
+        )
+
+    for unavailable in (OperationalError, InterfaceError, PoolTimeout):
+        app.add_exception_handler(unavailable, database_unavailable)
 
     @app.exception_handler(Exception)
     async def fault(request: Request, error: Exception) -> JSONResponse:

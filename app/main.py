@@ -16,6 +16,7 @@ from app.authoring import AuthoringPool
 from app.deps import budget_wait
 from app.errors import install_error_handlers
 from app.grading.pool import GradingPool
+from app.instructor import router as instructor_routes
 from app.lti import router as lti_routes
 from app.lti.context import LtiContext
 from app.lti.grades import queue_grade
@@ -26,7 +27,7 @@ from app.routers import authoring as authoring_routes
 from app.routers import check, health, problems, submissions
 from app.services import Services
 from app.settings import Settings, get_settings
-from app.startup import open_storage
+from app.startup import open_storage_when_reachable
 from app.web import router as web_routes
 from app.web.layout import STATIC_PATH, static_files
 
@@ -56,7 +57,7 @@ def create_app(
         # The workers' fork server imports the checker while this process opens storage: side by side.
         try:
             storage, _ = await asyncio.gather(
-                run_in_threadpool(open_storage, settings),
+                run_in_threadpool(open_storage_when_reachable, settings),
                 run_in_threadpool(grading.start if pool is None else lambda: None),
             )
         except BaseException:
@@ -119,4 +120,6 @@ def create_app(
     app.include_router(lti_routes.router)
     app.include_router(web_routes.router)
     app.mount(STATIC_PATH, static_files(), name="static")
+    app.include_router(instructor_routes.router)
+    instructor_routes.install_page_handlers(app)
     return app

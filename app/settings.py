@@ -40,6 +40,9 @@ class Settings(BaseSettings):
     rate_limit_per_minute: int = Field(default=600, ge=1)
     student_rate_limit_per_minute: int = Field(default=60, ge=1)
 
+    # An LTI launch whose id_token was issued longer ago than this is refused (a replayed old token).
+    lti_max_token_age_seconds: int = Field(default=3600, ge=60)
+
     bank_dir: Path | None = None
     # Compile every problem at start-up (seconds of sympy) before /ready says yes; off for quick dev runs.
     warm_up: bool = True

@@ -2,7 +2,13 @@
 
 from __future__ import annotations
 
+import logging
+import time
+from collections.abc import Callable
 from dataclasses import dataclass
+
+from sqlalchemy.engine import make_url
+from sqlalchemy.exc import InterfaceError, OperationalError
 
 from app.auth import Principal
 from app.catalog import Catalog
@@ -10,6 +16,9 @@ from app.db import keys as key_repository
 from app.db.database import Database
 from app.db.migrate import migrate
 from app.settings import Settings
+
+log = logging.getLogger("physcheck.startup")
+STARTUP_RETRY_MAX_SECONDS = 10.0
 
 
 def open_database(settings: Settings) -> Database:
@@ -48,3 +57,23 @@ def open_storage(settings: Settings) -> Storage:
     catalog = Catalog(database, settings.secret, settings.bank_dir)
     catalog.sync_builtin()
     return Storage(database=database, keys=DatabaseKeyStore(database), catalog=catalog)
+
+
+def open_storage_when_reachable(settings: Settings, sleep: Callable[[float], None] = time.sleep) -> Storage:
+    """`open_storage`, waiting for a database that is down (a server started during an outage, or
+    before its database) instead of exiting: one log line per try, retrying at growing intervals."""
+    where = make_url(settings.database_url).render_as_string(hide_password=True)
+    delay = 1.0
+    while True:
+        try:
+            return open_storage(settings)
+        except (OperationalError, InterfaceError) as error:
+            reason = str(getattr(error, "orig", None) or error).strip().splitlines() or [type(error).__name__]
+            log.warning(
+                "waiting for the database: %s is not reachable (%s); retrying in %.0f s",
+                where,
+                reason[0],
+                delay,
+            )
+            sleep(delay)
+            delay = min(delay * 2, STARTUP_RETRY_MAX_SECONDS)

@@ -59,17 +59,25 @@ def export_problem(database: Database, problem_id: str, fmt: str, out: TextIO) -
         yaml.safe_dump(document, out, sort_keys=False, allow_unicode=True)
 
 
-def export_submissions(database: Database, problem_id: str | None, out: TextIO) -> int:
-    """Every submission (of one problem) as CSV, oldest first; returns how many rows were written.
-    Text cells are neutralised for spreadsheets (`app.spreadsheet`)."""
+def export_submissions(
+    database: Database,
+    problem_id: str | None,
+    out: TextIO,
+    *,
+    student: str | None = None,
+    progress: bool = True,
+) -> int:
+    """Every submission (of one problem, of one student) as CSV, oldest first; returns how many rows
+    were written. Text cells are neutralised for spreadsheets (`app.spreadsheet`). `progress=False`
+    (the web pages) draws no progress bar on stderr."""
     writer = SafeWriter(out)
     writer.writerow(SUBMISSION_COLUMNS)
     rows, cursor = 0, None
-    with tqdm(unit=" submissions", file=sys.stderr, disable=None) as bar:
+    with tqdm(unit=" submissions", file=sys.stderr, disable=None if progress else True) as bar:
         while True:
             with database.session(read_only=True) as session:
                 page = submission_repository.list_submissions(
-                    session, problem_id=problem_id, limit=EXPORT_PAGE, cursor=cursor
+                    session, problem_id=problem_id, student=student, limit=EXPORT_PAGE, cursor=cursor
                 )
             for item in page.items:
                 writer.writerow(

@@ -112,13 +112,30 @@ class SpecError(PhyscheckError):
 
 
 class DerivationError(PhyscheckError):
-    """The engine failed to derive a quantity, or two methods gave different answers."""
+    """The engine failed to derive a quantity, or two methods gave different answers.
 
-    def __init__(self, message: str, problem: str | None = None, quantity: str | None = None) -> None:
+    `path` locates the fault inside the model section (("constraints", "contact"), ("quantities",
+    "tension")); `findings` lists several faults found at once, each (path, message).
+    """
+
+    def __init__(
+        self,
+        message: str,
+        problem: str | None = None,
+        quantity: str | None = None,
+        path: Sequence[str | int] | None = None,
+        findings: Sequence[tuple[tuple[str | int, ...], str]] = (),
+    ) -> None:
         super().__init__(message)
         self.message = message
         self.problem = problem
         self.quantity = quantity
+        self.path = tuple(path) if path is not None else (("quantities", quantity) if quantity else ())
+        self.findings = tuple(findings)
+
+    def items(self) -> list[tuple[tuple[str | int, ...], str]]:
+        """(path inside the model, message) for every fault found."""
+        return list(self.findings) or [(self.path, self.message)]
 
 
 class SpecErrors(SpecError):

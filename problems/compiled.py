@@ -47,7 +47,7 @@ from physics.symbolic import (
 )
 from physics.units import unit_dimension
 from problems.errors import ErrorItem, ProblemInvalid
-from problems.modelinfo import Derived, derive_doc, spec_error_items
+from problems.modelinfo import Derived, derive_doc, missing_quantity, spec_error_items
 from problems.schema import NumericPart, ProblemDocument, SymbolicPart, format_path
 from problems.symbols import read_bound, symbol_specs
 from problems.variants import Variant, evaluate_reference, si_values
@@ -62,6 +62,7 @@ class CompiledSymbolicPart:
     id: str
     quantity: str
     compiled: CompiledQuestion
+    derived: bool = False  # False: the reference is the author's typed answer, which no method checked
 
     @property
     def expected(self) -> sympy.Expr:
@@ -109,6 +110,7 @@ class CompiledNumericPart:
     tolerance: Tolerance
     document: ProblemDocument = field(repr=False)
     table: Mapping[str, sympy.Symbol] = field(repr=False)
+    derived: bool = False  # its expression is a model quantity derived by the engine
 
     def reference(self, variant: Variant) -> Decimal:
         """The expected value for this student, in `units`, to 12 significant figures."""
@@ -143,6 +145,11 @@ class CompiledProblem:
 
     def part(self, part_id: str) -> CompiledPart:
         return self.parts[part_id]
+
+    @property
+    def not_derived(self) -> tuple[str, ...]:
+        """Parts whose reference is only the author's typed answer: no method derived or checked it."""
+        return tuple(part_id for part_id, part in self.parts.items() if not part.derived)
 
     def question(self, part_id: str, variant: Variant | None = None) -> SymbolicQuestion | NumericSpec:
         """What `physics.checking.check_answer` needs; numeric parts need the student's variant."""
@@ -278,8 +285,9 @@ def _symbolic_part(
     names = dict(table) if allowed_names is None else {n: table[n] for n in allowed_names if n in table}
     hand = read_expression(part.answer, names, (*path, "answer")) if part.answer is not None else None
     derived_expr = derived.quantities.get(part.quantity_name) if derived is not None else None
-    if derived is not None and derived_expr is None and hand is None:
-        raise SpecError(f"the model has no quantity {part.quantity_name!r}", (*path, "quantity"))
+    if derived is not None and derived_expr is None and (hand is None or part.quantity is not None):
+        # a named quantity the model lacks is a fault even beside a typed answer: never a silent fall-back
+        raise SpecError(missing_quantity(part.quantity_name, derived.quantities), (*path, "quantity"))
     expected = derived_expr if derived_expr is not None else hand
     if expected is None:
         raise SpecError("needs an answer (there is no model to derive it from)", path)
@@ -309,7 +317,12 @@ def _symbolic_part(
     )
     if hand is not None and derived_expr is not None:
         _require_agreement(hand, derived_expr, names, context, (*path, "answer"))
-    return CompiledSymbolicPart(part.id, part.quantity_name, CompiledQuestion(names, expected, context))
+    return CompiledSymbolicPart(
+        part.id,
+        part.quantity_name,
+        CompiledQuestion(names, expected, context),
+        derived=derived_expr is not None,
+    )
 
 
 def _new_mistakes(
@@ -372,9 +385,9 @@ def _numeric_part(
 ) -> CompiledNumericPart:
     path: tuple[str | int, ...] = ("parts", index)
     if part.of in symbolic:
-        expr = symbolic[part.of].expected
+        expr, from_model = symbolic[part.of].expected, symbolic[part.of].derived
     elif derived is not None and part.of in derived.quantities:
-        expr = derived.quantities[part.of]
+        expr, from_model = derived.quantities[part.of], True
     else:
         raise SpecError(f"{part.of!r} is neither a symbolic part nor a model quantity", (*path, "of"))
     missing = sorted(s.name for s in expr.free_symbols if s.name not in doc.given)
@@ -382,7 +395,9 @@ def _numeric_part(
         raise SpecError(f"needs given values for {', '.join(missing)}", (*path, "of"))
     _require_dimension(expr, part, specs, table, path)
     tolerance = Tolerance(rel=part.tolerance.rel, abs=part.tolerance.abs, sigfigs=part.tolerance.sigfigs)
-    return CompiledNumericPart(part.id, part.of, expr, part.units, part.units_required, tolerance, doc, table)
+    return CompiledNumericPart(
+        part.id, part.of, expr, part.units, part.units_required, tolerance, doc, table, from_model
+    )
 
 
 def _require_dimension(

@@ -35,6 +35,20 @@ class Derived:
     proofs: Mapping[str, str] = field(default_factory=dict)  # quantity -> how agreement was shown
     raw: Any = None
 
+    @property
+    def disagreements(self) -> tuple[str, ...]:
+        """Quantities not confirmed by two methods (methods that disagree make the engine raise)."""
+        return tuple(
+            f"{name}: derived by {', '.join(methods) or 'no method'} only"
+            for name, methods in self.agreement.items()
+            if len(methods) < MIN_AGREEING_METHODS
+        )
+
+
+def missing_quantity(name: str, quantities: Iterable[str]) -> str:
+    known = sorted(quantities)
+    return f"the model has no quantity {name!r}; its quantities are {', '.join(known) or 'none'}"
+
 
 def spec_error_items(error: SpecError) -> list[tuple[tuple[str | int, ...], str]]:
     """(path, message) for a SpecError or each member of a SpecErrors."""

@@ -65,6 +65,7 @@ class CheckResult:
 class ProblemReport:
     problem: str
     results: list[CheckResult] = field(default_factory=list)
+    not_derived: tuple[str, ...] = ()  # parts graded against a typed answer only
 
     @property
     def ok(self) -> bool:
@@ -93,7 +94,8 @@ class Report:
         for p in self.problems:
             passed = sum(r.ok for r in p.results)
             mark = "ok  " if p.ok else "FAIL"
-            lines.append(f"{mark} {p.problem}: {passed}/{len(p.results)} checks passed")
+            typed = f"; not derived (typed answer only): {', '.join(p.not_derived)}" if p.not_derived else ""
+            lines.append(f"{mark} {p.problem}: {passed}/{len(p.results)} checks passed{typed}")
         for r in self.failures:
             where = f"{r.problem}/{r.part}" if r.part else r.problem
             lines.append(f"  {where}: {r.check}: {r.detail}")
@@ -127,6 +129,7 @@ def verify_problem(
         report.results.append(CheckResult(doc.id, None, "derive", False, f"{type(error).__name__}: {error}"))
         return Report([report])
 
+    report.not_derived = compiled.not_derived
     if compiled.derived is not None:
         report.results.extend(_agreement_checks(doc.id, compiled))
     total = len(compiled.parts)

@@ -17,7 +17,7 @@ from physics.checking import read_expression, read_relation
 from physics.errors import AnswerError, SpecError
 from physics.symbolic import SymbolSpec, make_symbol
 from problems.errors import ErrorItem
-from problems.modelinfo import model_quantity_names, spec_error_items
+from problems.modelinfo import missing_quantity, model_quantity_names, spec_error_items
 from problems.schema import GivenDecl, NumericPart, ProblemDocument, SymbolDecl, SymbolicPart, format_path
 from problems.symbols import read_bound, symbol_spec, unit_dimension_at
 from problems.variants import placeholders, unit_scale, valid_range_errors
@@ -182,8 +182,12 @@ def _check_parts(
                 out.attempt(partial(read_expression, part.answer, allowed, (*path, "answer")))
             if quantities is None and part.answer is None:
                 out.add(path, "needs an answer (there is no model to derive it from)")
-            elif quantities is not None and part.quantity_name not in quantities and part.answer is None:
-                out.add((*path, "quantity"), f"the model has no quantity {part.quantity_name!r}")
+            elif (
+                quantities is not None
+                and part.quantity_name not in quantities
+                and (part.quantity is not None or part.answer is None)  # a named quantity never falls back
+            ):
+                out.add((*path, "quantity"), missing_quantity(part.quantity_name, quantities))
             for j, mistake in enumerate(part.mistakes):
                 mpath = (*path, "mistakes", j, "answer")
                 out.attempt(partial(read_expression, mistake.answer, table, mpath))

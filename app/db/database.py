@@ -14,6 +14,8 @@ from sqlalchemy.orm import Session, sessionmaker
 
 # How long a SQLite connection waits for another writer before failing with "database is locked".
 DEFAULT_SQLITE_BUSY_TIMEOUT_MS = 10_000
+# Seconds to wait for a PostgreSQL connection (libpq's connect_timeout; a URL may set its own).
+POSTGRES_CONNECT_TIMEOUT = 5
 # The execution option that tells the SQLite `begin` hook which BEGIN to emit.
 _SQLITE_BEGIN_OPTION = "physcheck_sqlite_begin"
 
@@ -31,7 +33,9 @@ def create_database_engine(
         _configure_sqlite(engine, sqlite_busy_timeout_ms)
         return engine
     if parsed.get_backend_name() == "postgresql":
-        return create_engine(url, pool_pre_ping=True)
+        # A database host that does not answer fails a connection in seconds (then 503), not minutes.
+        timeout = {} if "connect_timeout" in parsed.query else {"connect_timeout": POSTGRES_CONNECT_TIMEOUT}
+        return create_engine(url, pool_pre_ping=True, connect_args=timeout)
     raise ValueError(f"unsupported database backend {parsed.get_backend_name()!r}; use sqlite or postgresql")
 
 

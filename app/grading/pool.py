@@ -7,12 +7,14 @@ import logging
 import multiprocessing
 from collections.abc import Callable
 from concurrent.futures import TimeoutError as FutureTimeout
+from concurrent.futures.process import BrokenProcessPool
 from typing import TypeVar
 
 from pebble import ProcessExpired, ProcessPool
 
-from app.errors import Busy
-from app.grading.worker import WARM_UP_JOBS, SpecProblem, grade, limit_memory, read_only
+from app.errors import Busy, GraderFault, Unavailable
+from app.grading.supervised import PoolUnavailable, SupervisedPool
+from app.grading.worker import WARM_UP_JOBS, GraderCrash, SpecProblem, grade, limit_memory, read_only
 from physics.checking import CheckJob, Preview
 from physics.errors import CheckTimeout, SpecError, TooLarge
 from physics.verdict import InputProblem, Verdict
@@ -21,6 +23,13 @@ log = logging.getLogger("physcheck.grading")
 T = TypeVar("T")
 
 TIMEOUT_MESSAGE = "Could not check this in time; simplify your answer."
+RESTARTING_MESSAGE = "Grading is restarting after a fault; try again in a moment."
+LOGGED_ANSWER_CHARS = 120
+WARM_UP_SECONDS = 60
+
+
+def _excerpt(answer: str) -> str:
+    return answer if len(answer) <= LOGGED_ANSWER_CHARS else answer[:LOGGED_ANSWER_CHARS] + "…"
 
 
 class GradingPool:
@@ -33,7 +42,7 @@ class GradingPool:
         queue_size: int,
         max_answer_chars: int = 2000,
         per_owner: int = 2,
-        task: Callable[[CheckJob], Verdict | SpecProblem] = grade,
+        task: Callable[[CheckJob], Verdict | SpecProblem | GraderCrash] = grade,
     ):
         self._task = task
         self._max_answer_chars = max_answer_chars
@@ -45,41 +54,52 @@ class GradingPool:
         self._max_tasks = max_tasks
         self._capacity = workers + queue_size
         self._in_flight = 0
-        self._pool: ProcessPool | None = None
+        self._pool: SupervisedPool | None = None
 
     def start(self) -> None:
+        self._pool = SupervisedPool("grading", self._new_pool, self._warm)
+        self._pool.start()
+
+    def _new_pool(self) -> ProcessPool:
         # forkserver: workers fork from a clean, pre-warmed process, not from the threaded server.
+        # A fork server that died is started again by multiprocessing on the next worker it must fork.
         context = multiprocessing.get_context("forkserver")
         context.set_forkserver_preload(["app.grading.worker"])
-        self._pool = ProcessPool(
+        return ProcessPool(
             max_workers=self._workers,
             max_tasks=self._max_tasks,
             initializer=limit_memory,
             initargs=(self._memory_mb,),
             context=context,
         )
+
+    def _warm(self, pool: ProcessPool) -> None:
         # One small job per worker so the first real request does not pay for lazy imports.
-        warm = [self._submit(self._task, job) for _ in range(self._workers) for job in WARM_UP_JOBS]
+        warm = [pool.schedule(self._task, args=(job,)) for _ in range(self._workers) for job in WARM_UP_JOBS]
         for future in warm:
-            future.result(timeout=60)
+            future.result(timeout=WARM_UP_SECONDS)
 
     def close(self) -> None:
         if self._pool is not None:
-            self._pool.stop()  # type: ignore[no-untyped-call]
-            self._pool.join(timeout=5)
+            self._pool.close()
             self._pool = None
+
+    @property
+    def ready(self) -> bool:
+        """Able to grade now (False while a broken pool is being replaced)."""
+        return self._pool is not None and self._pool.healthy
 
     @property
     def in_flight(self) -> int:
         return self._in_flight
 
-    def _submit(self, task: Callable[[CheckJob], object], job: CheckJob):  # type: ignore[no-untyped-def]
-        assert self._pool is not None, "GradingPool.start() was not called"
-        return self._pool.schedule(task, args=(job,), timeout=self._timeout)
-
-    async def _run(self, task: Callable[[CheckJob], T | SpecProblem], job: CheckJob, owner: str | None) -> T:
+    async def _run(
+        self, task: Callable[[CheckJob], T | SpecProblem | GraderCrash], job: CheckJob, owner: str | None
+    ) -> T:
         """Run in a worker within the queue's capacity, and within `owner`'s share of the workers (so
-        one student's slow answers cannot hold them all); raises FutureTimeout or ProcessExpired."""
+        one student's slow answers cannot hold them all). A timeout raises FutureTimeout (the answer's
+        doing); a fault of the grader itself raises Unavailable (503, retry) or GraderFault (500)."""
+        assert self._pool is not None, "GradingPool.start() was not called"
         if self._in_flight >= self._capacity:
             raise Busy("The grading queue is full; try again shortly.", retry_after=1)
         if owner is not None and self._owners.get(owner, 0) >= self._per_owner:
@@ -88,7 +108,22 @@ class GradingPool:
         if owner is not None:
             self._owners[owner] = self._owners.get(owner, 0) + 1
         try:
-            outcome: T | SpecProblem = await asyncio.wrap_future(self._submit(task, job))
+            future = self._pool.schedule(task, (job,), self._timeout)
+            outcome: T | SpecProblem | GraderCrash = await asyncio.wrap_future(future)
+        except PoolUnavailable as error:
+            log.warning("grading refused: %s", error)
+            raise Unavailable(RESTARTING_MESSAGE, retry_after=2) from error
+        except ProcessExpired as error:
+            # Killed from outside (the OOM killer, an operator) or crashed: not the answer's fault.
+            log.error(
+                "grading worker died during a check (exit code %s); not graded",
+                error.exitcode,
+                extra={"answer": _excerpt(job.answer)},
+            )
+            raise Unavailable(RESTARTING_MESSAGE, retry_after=1) from error
+        except BrokenProcessPool as error:
+            log.error("grading pool broke during a check; not graded", extra={"answer": _excerpt(job.answer)})
+            raise Unavailable(RESTARTING_MESSAGE, retry_after=2) from error
         finally:
             self._in_flight -= 1
             if owner is not None:
@@ -97,6 +132,14 @@ class GradingPool:
                     del self._owners[owner]
         if isinstance(outcome, SpecProblem):
             raise SpecError(outcome.message, outcome.path)
+        if isinstance(outcome, GraderCrash):
+            log.error(
+                "grading crashed: %s; not graded\n%s",
+                outcome.error,
+                outcome.traceback,
+                extra={"answer": _excerpt(job.answer)},
+            )
+            raise GraderFault("Grading failed on our side; it has been logged. Nothing was recorded.")
         return outcome
 
     async def preview(self, job: CheckJob, owner: str | None = None) -> Preview:
@@ -107,11 +150,12 @@ class GradingPool:
             )
         try:
             return await self._run(read_only, job, owner)
-        except (FutureTimeout, ProcessExpired):
+        except FutureTimeout:
             return Preview(None, InputProblem(TIMEOUT_MESSAGE))
 
     async def check(self, job: CheckJob, owner: str | None = None) -> Verdict:
-        """Grade in a worker; a timeout or a killed worker is an `invalid` verdict, never a hang."""
+        """Grade in a worker; a timeout is an `invalid` verdict (the answer's), never a hang; a fault of
+        the grader raises Unavailable or GraderFault, never a verdict."""
         if len(job.answer) > self._max_answer_chars:
             # Refused before any worker sees it: the cheapest hostile answer is the longest.
             limit = self._max_answer_chars
@@ -122,6 +166,3 @@ class GradingPool:
             return await self._run(self._task, job, owner)
         except FutureTimeout:
             return Verdict.invalid(CheckTimeout(TIMEOUT_MESSAGE))
-        except ProcessExpired as error:
-            log.error("grading worker died (exit code %s)", error.exitcode)
-            return Verdict.invalid(TooLarge("This answer is too large to check; simplify it."))

@@ -8,9 +8,11 @@ from starlette.concurrency import run_in_threadpool
 
 from app.db import submissions as submission_repository
 from app.db.records import ProblemRecord, SubmissionRecord
+from app.errors import GraderFault, Unavailable
 from app.schemas.check import VerdictPublic
 from app.schemas.problems import SubmissionResult
 from app.services import Services
+from physics.errors import SpecError
 from physics.verdict import Verdict
 
 log = logging.getLogger("physcheck.submissions")
@@ -30,18 +32,31 @@ async def submit_answer(
     # and only grading tells which it is. The insert refuses a graded one over the limit.
     max_attempts = catalog.max_attempts(record, part_id)
     job = await run_in_threadpool(catalog.job, record, part_id, student, answer)
-    verdict = await services.pool.check(job, share)
+    context = {
+        "problem": record.id,
+        "version": record.version,
+        "part": part_id,
+        "student": student,
+        # Bounded and escaped by the JSON formatter: an answer cannot forge or flood log lines.
+        "answer": answer if len(answer) <= LOGGED_ANSWER_CHARS else answer[:LOGGED_ANSWER_CHARS] + "…",
+    }
+    # A fault of the grader is never filed as the student's verdict and uses no attempt.
+    try:
+        verdict = await services.pool.check(job, share)
+    except SpecError as error:
+        # The stored problem was vetted at upload: its reference failing now is our fault, not the answer's.
+        log.error(
+            "stored problem failed to grade: %s at %s; not filed", error.message, error.path, extra=context
+        )
+        raise GraderFault(
+            "This problem could not be graded on our side; it has been logged. Nothing was recorded."
+        ) from error
+    except (Unavailable, GraderFault) as error:
+        log.error("not graded (%s): %s; not filed", error.code, error.message, extra=context)
+        raise
     log.info(
         "graded",
-        extra={
-            "problem": record.id,
-            "part": part_id,
-            "student": student,
-            "verdict": verdict.outcome.value,
-            "reason": verdict.reason.value,
-            # Bounded and escaped by the JSON formatter: an answer cannot forge or flood log lines.
-            "answer": answer if len(answer) <= LOGGED_ANSWER_CHARS else answer[:LOGGED_ANSWER_CHARS] + "…",
-        },
+        extra={**context, "verdict": verdict.outcome.value, "reason": verdict.reason.value},
     )
     stored, used = await run_in_threadpool(
         _file, services, record, part_id, student, answer, verdict, max_attempts

@@ -6,7 +6,12 @@ parser already loaded (a fresh worker after a kill is ready in milliseconds, not
 
 from __future__ import annotations
 
+import ctypes
+import os
 import resource
+import signal
+import traceback
+from collections.abc import Callable
 from dataclasses import dataclass
 from decimal import Decimal
 
@@ -34,25 +39,56 @@ class SpecProblem:
     path: tuple[str | int, ...]
 
 
+@dataclass(frozen=True)
+class GraderCrash:
+    """An exception inside grading that no answer should cause (RecursionError, OverflowError, a bug):
+    the grader's fault, sent back with its traceback to be logged, never filed as the student's verdict."""
+
+    error: str
+    traceback: str
+
+
+_PR_SET_PDEATHSIG = 1
+
+
 def limit_memory(megabytes: int) -> None:
-    """Worker initializer: an allocation past the limit raises MemoryError instead of swapping."""
+    """Worker initializer: an allocation past the limit raises MemoryError instead of swapping; and the
+    worker dies with the fork server that started it, rather than live on as an unsupervised orphan
+    still reading tasks (its pool sees it as dead and replaces it)."""
     limit = megabytes * 1024 * 1024
     resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
+    if os.uname().sysname == "Linux":
+        ctypes.CDLL(None, use_errno=True).prctl(_PR_SET_PDEATHSIG, signal.SIGKILL)
 
 
-def grade(job: CheckJob) -> Verdict | SpecProblem:
+# A MemoryError stays the student's `too_large`: RLIMIT_AS bounds the work of one answer in a worker
+# that holds nothing else, so running out means this answer needed more than any answer may have
+# (like the size limits checked before evaluation), and a retry would fail the same way.
+TOO_LARGE = "This answer is too large to check; simplify it."
+
+
+def grade(job: CheckJob) -> Verdict | SpecProblem | GraderCrash:
+    return guarded(run_job, job)
+
+
+def guarded(run: Callable[[CheckJob], Verdict], job: CheckJob) -> Verdict | SpecProblem | GraderCrash:
+    """`run(job)`, with each exception sorted into the answer's fault or the grader's."""
     try:
-        return run_job(job)
+        return run(job)
     except SpecError as error:
         return SpecProblem(error.message, error.path)
-    except (MemoryError, RecursionError, OverflowError):
-        return Verdict.invalid(TooLarge("This answer is too large to check; simplify it."))
+    except MemoryError:
+        return Verdict.invalid(TooLarge(TOO_LARGE))
+    except Exception as error:
+        return GraderCrash(repr(error), traceback.format_exc())
 
 
-def read_only(job: CheckJob) -> Preview | SpecProblem:
+def read_only(job: CheckJob) -> Preview | SpecProblem | GraderCrash:
     try:
         return preview(job)
     except SpecError as error:
         return SpecProblem(error.message, error.path)
-    except (MemoryError, RecursionError, OverflowError):
+    except MemoryError:
         return Preview(None, InputProblem("This answer is too large to read; simplify it."))
+    except Exception as error:
+        return GraderCrash(repr(error), traceback.format_exc())

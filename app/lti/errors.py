@@ -5,7 +5,8 @@ router turns it into a plain HTML page (never a stack trace).
      ├── LaunchRefused           status, code, message
      │    ├── MalformedRequest   400   missing or unreadable parameters, unknown or expired state
      │    ├── UntrustedToken     401   the id_token fails a signature, algorithm or claim check
-     │    └── NotPermitted       403   unregistered deployment, role not allowed, bad CSRF token
+     │    ├── NotPermitted       403   unregistered deployment, role not allowed, bad CSRF token
+     │    └── NoSuchProblem      404   the link names a problem we do not have (or retired)
      ├── PlatformNotFound        (issuer, client_id)
      └── PlatformKeysUnavailable (jwks_url, detail): the platform's JWKS could not be fetched or read
 """
@@ -36,6 +37,10 @@ class UntrustedToken(LaunchRefused):
 
 class NotPermitted(LaunchRefused):
     status = 403
+
+
+class NoSuchProblem(LaunchRefused):
+    status = 404
 
 
 class PlatformNotFound(LtiError):

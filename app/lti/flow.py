@@ -23,10 +23,11 @@ from sqlalchemy.orm import Session
 from starlette.concurrency import run_in_threadpool
 
 from app.auth import Role
-from app.db.problems import list_problems
+from app.db.errors import ProblemNotFound
+from app.db.problems import get_problem, list_problems
 from app.lti import keys
 from app.lti.context import LtiContext
-from app.lti.errors import MalformedRequest, NotPermitted, PlatformNotFound
+from app.lti.errors import MalformedRequest, NoSuchProblem, NotPermitted, PlatformNotFound
 from app.lti.id_token import (
     CLAIM_DEPLOYMENT_ID,
     CLAIM_MESSAGE_TYPE,
@@ -178,7 +179,12 @@ async def complete_launch(
         )
     nonce = login.nonce
     claims = await verify_id_token(
-        id_token, platform, context.platform_keys, now=context.clock(), expected_nonce=nonce
+        id_token,
+        platform,
+        context.platform_keys,
+        now=context.clock(),
+        expected_nonce=nonce,
+        max_age=timedelta(seconds=context.settings.lti_max_token_age_seconds),
     )
     problem_id: str | None = None
     if claims.message_type != DEEP_LINKING_REQUEST:
@@ -197,6 +203,8 @@ async def complete_launch(
         with context.database.session() as session:
             if not is_deployed(session, platform.id, claims.deployment_id):
                 raise NotPermitted("unknown_deployment", "This deployment is not registered with the tool.")
+            if problem_id is not None:
+                _require_problem(session, problem_id)
             _spend_nonce(session, platform.id, claims.nonce, now)
             session_id, record = open_session(
                 session, platform_id=platform.id, sub=claims.sub, role=role, name=claims.name, now=now
@@ -213,6 +221,7 @@ async def complete_launch(
                         deployment_id=claims.deployment_id,
                         return_url=claims.deep_link_return_url,
                         data=None if claims.deep_link_data is None else json.dumps(claims.deep_link_data),
+                        accept_multiple=claims.deep_link_accept_multiple,
                         expires_at=now + DEEP_LINK_LIFETIME,
                     )
                 )
@@ -221,6 +230,19 @@ async def complete_launch(
             return LaunchOutcome(session_id, record, claims, platform, problem_id, deep_link_id)
 
     return await run_in_threadpool(open_launch)
+
+
+def _require_problem(session: Session, problem_id: str) -> None:
+    """Refused at launch, before a session or grade target exists: a student would otherwise land on
+    a page that cannot load and the gradebook would wait for a score that never comes."""
+    try:
+        get_problem(session, problem_id)
+    except ProblemNotFound as error:
+        raise NoSuchProblem(
+            "unknown_problem",
+            f"This link names the problem '{problem_id}', which physcheck does not have (it may have "
+            "been retired). Ask your instructor to replace the link.",
+        ) from error
 
 
 def _spend_nonce(session: Session, platform_id: int, nonce: str, now: datetime) -> None:
@@ -286,6 +308,7 @@ class DeepLinkRequestRecord:
     return_url: str
     data: Any
     csrf_token: str
+    accept_multiple: bool
 
 
 def load_deep_link(
@@ -305,6 +328,7 @@ def load_deep_link(
         return_url=row.return_url,
         data=None if row.data is None else json.loads(row.data),
         csrf_token=owner.csrf_token,
+        accept_multiple=row.accept_multiple,
     )
 
 
@@ -330,6 +354,10 @@ def finish_deep_link(
         unknown = [pid for pid in problem_ids if pid not in by_id]
         if unknown:
             raise MalformedRequest("unknown_problem", f"No such problem: {', '.join(unknown)[:200]}.")
+        if not request.accept_multiple and len(set(problem_ids)) > 1:
+            raise MalformedRequest(
+                "one_problem_only", "Here the LMS takes one problem per link: go back and choose one."
+            )
         claims: dict[str, Any] = {
             "iss": request.platform.client_id,
             "aud": request.platform.issuer,

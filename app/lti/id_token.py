@@ -18,6 +18,8 @@ from app.lti.errors import MalformedRequest, UntrustedToken
 from app.lti.platforms import PlatformRecord
 
 LEEWAY = timedelta(seconds=60)
+DEFAULT_MAX_AGE = timedelta(hours=1)  # the setting `lti_max_token_age_seconds`
+RESOURCE_LINK_TYPE = "ltiResourceLink"
 ALGORITHM = "RS256"
 LTI_VERSION = "1.3.0"
 RESOURCE_LINK_REQUEST = "LtiResourceLinkRequest"
@@ -58,6 +60,7 @@ class LaunchClaims:
     lineitem_url: str | None = None  # set only when the platform lets us post scores to it
     deep_link_return_url: str | None = None
     deep_link_data: Any = None  # opaque, echoed back in the response
+    deep_link_accept_multiple: bool = False  # may the response carry several items
 
 
 MAX_HEADER_CHARS = 2048
@@ -97,7 +100,13 @@ def check_header(header: Mapping[str, Any]) -> str:
 
 
 async def verify_id_token(
-    token: str, platform: PlatformRecord, keys: KeySource, *, now: datetime, expected_nonce: str
+    token: str,
+    platform: PlatformRecord,
+    keys: KeySource,
+    *,
+    now: datetime,
+    expected_nonce: str,
+    max_age: timedelta = DEFAULT_MAX_AGE,
 ) -> LaunchClaims:
     """Signature by the platform's published key, then every claim; raises a LaunchRefused subclass."""
     kid = check_header(read_header(token))
@@ -106,7 +115,7 @@ async def verify_id_token(
         verified = jwt.decode(token, key, algorithms=[ALGORITHM])
     except JoseError as error:
         raise UntrustedToken("bad_signature", "The id_token signature does not verify.") from error
-    return check_claims(verified.claims, platform, now=now, expected_nonce=expected_nonce)
+    return check_claims(verified.claims, platform, now=now, expected_nonce=expected_nonce, max_age=max_age)
 
 
 def _timestamp(claims: Mapping[str, Any], name: str) -> datetime:
@@ -145,7 +154,12 @@ def check_audience(claims: Mapping[str, Any], client_id: str) -> None:
 
 
 def check_claims(
-    claims: Mapping[str, Any], platform: PlatformRecord, *, now: datetime, expected_nonce: str
+    claims: Mapping[str, Any],
+    platform: PlatformRecord,
+    *,
+    now: datetime,
+    expected_nonce: str,
+    max_age: timedelta = DEFAULT_MAX_AGE,
 ) -> LaunchClaims:
     """Everything after the signature. Deployment registration is checked by the caller (a database
     look-up), as is the nonce's single use."""
@@ -155,8 +169,14 @@ def check_claims(
     expires_at = _timestamp(claims, "exp")
     if expires_at + LEEWAY < now:
         raise UntrustedToken("expired", "The id_token has expired.")
-    if _timestamp(claims, "iat") - LEEWAY > now:
+    issued_at = _timestamp(claims, "iat")
+    if issued_at - LEEWAY > now:
         raise UntrustedToken("issued_in_future", "The id_token claims to be issued in the future.")
+    if issued_at + max_age + LEEWAY < now:
+        # A far-future `exp` must not make an old token good for ever.
+        raise UntrustedToken(
+            "token_too_old", "The id_token was issued too long ago; open the activity again."
+        )
     nonce = claims.get("nonce")
     if not isinstance(nonce, str) or nonce != expected_nonce:
         raise UntrustedToken("nonce_mismatch", "The id_token's nonce is not the one this login issued.")
@@ -210,6 +230,18 @@ def _with_deep_linking(launch: LaunchClaims, claims: Mapping[str, Any]) -> Launc
     settings = claims.get(CLAIM_DEEP_LINKING_SETTINGS)
     if not isinstance(settings, dict) or not isinstance(settings.get("deep_link_return_url"), str):
         raise UntrustedToken("missing_deep_linking_settings", "The deep linking launch has no return URL.")
+    accepted = settings.get("accept_types")
+    if not isinstance(accepted, list) or RESOURCE_LINK_TYPE not in accepted:
+        shown = ", ".join(str(t)[:40] for t in accepted[:10]) if isinstance(accepted, list) else "nothing"
+        raise MalformedRequest(
+            "resource_links_not_accepted",
+            f"Here the LMS accepts only {shown}; physcheck problems are added as LTI resource links. "
+            "Add the tool where the LMS offers external tool (LTI) links, e.g. as an assignment.",
+        )
     return replace(
-        launch, deep_link_return_url=settings["deep_link_return_url"], deep_link_data=settings.get("data")
+        launch,
+        deep_link_return_url=settings["deep_link_return_url"],
+        deep_link_data=settings.get("data"),
+        # Absent means the platform did not say it takes several: one is always safe.
+        deep_link_accept_multiple=settings.get("accept_multiple") is True,
     )

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from datetime import datetime
 
-from sqlalchemy import Float, ForeignKey, Index, Integer, String, Text, UniqueConstraint
+from sqlalchemy import Boolean, Float, ForeignKey, Index, Integer, String, Text, UniqueConstraint, false
 from sqlalchemy.orm import Mapped, mapped_column
 
 from app.db.base import Base
@@ -102,6 +102,8 @@ class LtiDeepLinkRequest(Base):
     return_url: Mapped[str] = mapped_column(Text)
     data: Mapped[str | None] = mapped_column(Text)
     expires_at: Mapped[datetime] = mapped_column(UTCDateTime())
+    # The platform's `accept_multiple`: if false the instructor picks one problem (migration 0003).
+    accept_multiple: Mapped[bool] = mapped_column(Boolean, server_default=false())
 
 
 class LtiGradeTarget(Base):

@@ -102,20 +102,30 @@ class ProblemChoice:
 
 
 def picker_page(
-    request_id: str, csrf_token: str, choices: Sequence[ProblemChoice], *, frame_ancestors: Sequence[str]
+    request_id: str,
+    csrf_token: str,
+    choices: Sequence[ProblemChoice],
+    *,
+    frame_ancestors: Sequence[str],
+    multiple: bool = True,
 ) -> HTMLResponse:
+    """Checkboxes, or radio buttons when the platform takes one item (`accept_multiple: false`)."""
+    kind = "checkbox" if multiple else "radio"
     items = "".join(
         "<li><label>"
-        f'<input type="checkbox" name="problem" value="{escape(choice.id)}"> '
+        f'<input type="{kind}" name="problem" value="{escape(choice.id)}"> '
         f"{escape(choice.title)} <code>{escape(choice.id)}</code></label></li>"
         for choice in choices
+    )
+    legend = (
+        "Problems to add to the course" if multiple else "The problem to add (this LMS takes one per link)"
     )
     body = (
         "<h1>Add physcheck problems</h1>"
         f'<form method="post" action="/lti/deep-link/{escape(request_id)}">'
         f'<input type="hidden" name="csrf_token" value="{escape(csrf_token)}">'
-        f"<fieldset><legend>Problems to add to the course</legend><ul>{items}</ul></fieldset>"
-        '<p><button type="submit">Add selected problems</button></p></form>'
+        f"<fieldset><legend>{legend}</legend><ul>{items}</ul></fieldset>"
+        f'<p><button type="submit">Add selected problem{"s" if multiple else ""}</button></p></form>'
     )
     return html_page("Add physcheck problems", body, frame_ancestors=frame_ancestors)
 

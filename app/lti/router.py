@@ -67,9 +67,10 @@ async def _refusing(context: LtiContext, action: Callable[[], Awaitable[Response
         return unavailable_page("The LMS's signing keys could not be fetched; try again in a moment.")
 
 
-async def _params(request: Request) -> dict[str, str]:
-    """Query and (for POST) form fields as plain strings; repeated or file fields are refused."""
-    items: list[tuple[str, Any]] = list(request.query_params.multi_items())
+async def _params(request: Request, *, query: bool = True) -> dict[str, str]:
+    """Query (unless `query` is false) and, for POST, form fields as plain strings; file fields are
+    refused, and of a repeated field the last counts."""
+    items: list[tuple[str, Any]] = list(request.query_params.multi_items()) if query else []
     if request.method == "POST":
         form = await request.form(max_files=0, max_fields=_MAX_FORM_FIELDS)
         items += list(form.multi_items())
@@ -99,7 +100,8 @@ async def login(request: Request, context: Context) -> Response:
 @router.post("/lti/launch", include_in_schema=False)
 async def launch(request: Request, context: Context) -> Response:
     async def action() -> Response:
-        form = await _params(request)
+        # Only the form post: an id_token or state in the URL would end up in logs and Referer headers.
+        form = await _params(request, query=False)
         outcome = await complete_launch(context, form, request.cookies.get(BROWSER_COOKIE))
         response: Response
         if outcome.deep_link_id is not None:
@@ -113,6 +115,7 @@ async def launch(request: Request, context: Context) -> Response:
                 outcome.session.csrf_token,
                 await run_in_threadpool(choices),
                 frame_ancestors=await _frame_ancestors(context),
+                multiple=outcome.claims.deep_link_accept_multiple,
             )
         else:
             assert outcome.problem_id is not None

@@ -25,7 +25,6 @@ from app.schemas.problems import (
 from app.services import Services
 from problems.compiled import CompiledProblem, CompiledSymbolicPart
 from problems.errors import ProblemInvalid
-from problems.modelinfo import MIN_AGREEING_METHODS
 
 router = APIRouter(tags=["authoring"])
 
@@ -85,15 +84,21 @@ def _owned(services: Services, problem_id: str, principal: Principal) -> Problem
 @router.post("/v1/problems", status_code=201, response_model=ProblemCreated, openapi_extra=_BODY_DOC)
 async def upload(request: Request, services: ServicesDep, principal: Instructor) -> ProblemCreated:
     document = await _vetted_document(request, services)
+    record = await store_new_problem(services, principal, document)
+    return ProblemCreated(id=record.id, version=record.version)
+
+
+async def store_new_problem(
+    services: Services, principal: Principal, document: dict[str, Any]
+) -> ProblemRecord:
+    """Store a vetted document as a new problem owned by the caller's key (the API and the pages)."""
+    owner = _key_id(principal)
 
     def store() -> ProblemRecord:
         with services.database.session() as session:
-            return problem_repository.create_problem(
-                session, document["id"], document, owner_key_id=_key_id(principal)
-            )
+            return problem_repository.create_problem(session, document["id"], document, owner_key_id=owner)
 
-    record = await run_in_threadpool(store)
-    return ProblemCreated(id=record.id, version=record.version)
+    return await run_in_threadpool(store)
 
 
 @router.put("/v1/problems/{problem_id}", response_model=ProblemCreated, openapi_extra=_BODY_DOC)
@@ -102,6 +107,15 @@ async def new_version(
 ) -> ProblemCreated:
     await run_in_threadpool(_owned, services, problem_id, principal)
     document = await _vetted_document(request, services)
+    record = await store_new_version(services, principal, problem_id, document)
+    return ProblemCreated(id=record.id, version=record.version)
+
+
+async def store_new_version(
+    services: Services, principal: Principal, problem_id: str, document: dict[str, Any]
+) -> ProblemRecord:
+    """Store a vetted document as the next version of the caller's own problem (the API and the pages)."""
+    await run_in_threadpool(_owned, services, problem_id, principal)
     if document["id"] != problem_id:
         raise IdMismatch(
             f"The document's id {document['id']!r} is not {problem_id!r}.",
@@ -112,8 +126,7 @@ async def new_version(
         with services.database.session() as session:
             return problem_repository.add_version(session, problem_id, document)
 
-    record = await run_in_threadpool(store)
-    return ProblemCreated(id=record.id, version=record.version)
+    return await run_in_threadpool(store)
 
 
 @router.delete("/v1/problems/{problem_id}", status_code=204)
@@ -147,6 +160,7 @@ def solution_of(compiled: CompiledProblem) -> SolutionPublic:
                 text=sympy.sstr(expr),
                 latex=sympy.latex(expr),
                 units=units,
+                source="derived" if part.derived else "not derived",
             )
         )
     derived = compiled.derived
@@ -183,7 +197,7 @@ def solution_of(compiled: CompiledProblem) -> SolutionPublic:
         agreement=agreement,
         proofs={} if derived is None else dict(derived.proofs),
         simulation=simulation,
-        methods_agree=derived is not None and all(len(m) >= MIN_AGREEING_METHODS for m in agreement.values()),
+        methods_agree=derived is not None and not derived.disagreements,
     )
 
 

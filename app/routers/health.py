@@ -20,9 +20,15 @@ async def health() -> dict[str, str]:
 
 @router.get("/ready", response_model=None)
 async def ready(services: ServicesDep) -> dict[str, str] | JSONResponse:
-    """Ready for traffic: the database answers and the problems are compiled."""
+    """Ready for traffic: the database answers, grading workers are up and the problems are compiled."""
     if not await run_in_threadpool(services.database.ping):
         return JSONResponse(error_body("not_ready", "The database is not reachable."), status_code=503)
+    if not services.pool.ready:
+        return JSONResponse(
+            error_body("not_ready", "Grading is restarting after a fault."),
+            status_code=503,
+            headers={"Retry-After": "2"},
+        )
     if not services.catalog.warm.is_set():
         return JSONResponse(error_body("not_ready", "Still compiling the problems."), status_code=503)
     return {"status": "ready"}

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import uuid
 from datetime import datetime
-from typing import Annotated, Any
+from typing import Annotated, Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Field
 
@@ -111,6 +111,9 @@ class ReferencePublic(BaseModel):
     text: str
     latex: str
     units: str | None = None
+    # "derived": the engine derived it by two methods and a simulation; "not derived": the author's typed
+    # answer, which nothing checked
+    source: Literal["derived", "not derived"] = "derived"
 
 
 class StepPublic(BaseModel):

@@ -43,6 +43,7 @@ def _derive(model: Model) -> Derivation:
     check_consistency(model, mech)
     methods = [cls(model, mech) for cls in _methods()]
     answers: dict[str, dict[str, sympy.Expr]] = {q.name: {} for q in model.quantities}
+    stopped: dict[str, dict[str, str]] = {q.name: {} for q in model.quantities}  # why a method gave none
     reports: list[MethodReport] = []
     for method in methods:
         method.derive()
@@ -51,42 +52,56 @@ def _derive(model: Model) -> Derivation:
         for quantity in model.quantities:
             try:
                 value = method.answer(quantity)
-            except NotApplicable as reason:
-                notes.append(f"{quantity.name}: {reason}")
+                _check_free_symbols(model, quantity, method, value)
+            except NotApplicable as why:
+                notes.append(f"{quantity.name}: {why}")
+                stopped[quantity.name][method.name] = f"does not apply ({why})"
+                continue
+            except DerivationError as error:
+                notes.append(f"{quantity.name}: stopped: {error.message}")
+                stopped[quantity.name][method.name] = f"stopped: {error.message}"
                 continue
             except PhyscheckError:
                 raise
             except Exception as error:  # sympy and arithmetic failures on an uploaded model
-                raise DerivationError(
-                    f"{quantity.name}: {method.title} failed: {type(error).__name__}: {error}",
-                    quantity=quantity.name,
-                ) from error
-            _check_free_symbols(model, quantity, method, value)
+                reason = f"failed: {type(error).__name__}: {error}"
+                notes.append(f"{quantity.name}: {reason}")
+                stopped[quantity.name][method.name] = reason
+                continue
             results[quantity.name] = value
             answers[quantity.name][method.name] = value
         reports.append(method.report(results, notes))
     quantities: dict[str, sympy.Expr] = {}
     agreement: dict[str, tuple[str, ...]] = {}
     proofs: dict[str, str] = {}
+    findings: list[tuple[tuple[str | int, ...], str]] = []
     for quantity in model.quantities:
         derived = answers[quantity.name]
+        path: tuple[str | int, ...] = ("quantities", quantity.name)
         if len(derived) < MIN_METHODS:
-            raise DerivationError(
-                f"{quantity.name}: only {len(derived)} method(s) could derive it ({', '.join(derived) or 'none'}); "
-                f"at least {MIN_METHODS} are required",
-                quantity=quantity.name,
-            )
+            findings.append((path, _too_few(quantity.name, derived, stopped[quantity.name], methods)))
+            continue
         names = list(derived)
-        first = derived[names[0]]
         how = []
-        for other in names[1:]:
-            how.append(
-                f"{names[0]} = {other}: "
-                + prove_equal(first, derived[other], model, quantity.name, (names[0], other))
-            )
+        try:
+            for other in names[1:]:
+                how.append(
+                    f"{names[0]} = {other}: "
+                    + prove_equal(derived[names[0]], derived[other], model, quantity.name, (names[0], other))
+                )
+        except DerivationError as error:
+            found = "; ".join(f"{name} gives {value}" for name, value in derived.items())
+            findings.append((path, f"{error.message} (all methods: {found})"))
+            continue
         quantities[quantity.name] = _simplest(list(derived.values()))
         agreement[quantity.name] = tuple(names)
         proofs[quantity.name] = "; ".join(how)
+    if findings:
+        raise DerivationError(
+            "; ".join(f"{'.'.join(map(str, p))}: {m}" for p, m in findings),
+            quantity=str(findings[0][0][-1]),
+            findings=findings,
+        )
     simulation = _simulate(model, quantities, methods[0])
     lagrange = methods[0]
     variants: dict[Model, Method] = {model: lagrange}
@@ -114,6 +129,20 @@ def _derive(model: Model) -> Derivation:
     return Derivation(quantities, tuple(reports), agreement, simulation, mistakes, limits, proofs)
 
 
+def _too_few(
+    name: str, derived: dict[str, sympy.Expr], stopped: dict[str, str], methods: list[Method]
+) -> str:
+    """What each method found and why the others stopped, for a quantity fewer than two methods reached."""
+    found = [
+        f"{m.name} gives {derived[m.name]}" if m.name in derived else f"{m.name} {stopped[m.name]}"
+        for m in methods
+    ]
+    return (
+        f"{name}: only {len(derived)} method(s) could derive it ({', '.join(derived) or 'none'}); at least "
+        f"{MIN_METHODS} are required. " + "; ".join(found)
+    )
+
+
 def check_consistency(model: Model, mech: Mechanics) -> None:
     """The two descriptions must describe one system: the positions satisfy every constraint, and the
     constraints leave exactly as many degrees of freedom as there are coordinates."""
@@ -124,7 +153,7 @@ def check_consistency(model: Model, mech: Mechanics) -> None:
             raise DerivationError(
                 f"constraint {constraint.name!r}: the positions in terms of the coordinates violate it "
                 f"(gap = {residue} instead of 0)",
-                quantity=constraint.name,
+                path=("constraints", constraint.name),
             )
     if not model.constraints:
         free = len(mech.dofs)
@@ -143,7 +172,8 @@ def check_consistency(model: Model, mech: Mechanics) -> None:
         free = len(mech.dofs) - numeric.rank(iszerofunc=lambda x: abs(x) < 1e-12)
     if free != len(mech.q):
         raise DerivationError(
-            f"the constraints leave {free} degrees of freedom but the model has {len(mech.q)} coordinates"
+            f"the constraints leave {free} degrees of freedom but the model has {len(mech.q)} coordinates",
+            path=("coordinates",),
         )
 
 
@@ -170,16 +200,25 @@ def _simulate(
     simulator = Simulator(model, lagrange.equilibrium)
     points = domain_points(model, SIMULATION_POINTS, seed=7)
     result: dict[str, SimulationCheck] = {}
+    findings: list[tuple[tuple[str | int, ...], str]] = []
     for quantity in model.quantities:
+        path: tuple[str | int, ...] = ("quantities", quantity.name)
         try:
             check = simulator.check(quantity, quantities[quantity.name], points)
+        except DerivationError as error:
+            findings.append((path, error.message))
+            continue
         except PhyscheckError:
             raise
         except Exception as error:  # a singular or overflowing integration
-            raise DerivationError(
-                f"{quantity.name}: the simulation failed: {type(error).__name__}: {error}",
-                quantity=quantity.name,
-            ) from error
+            findings.append(
+                (path, f"{quantity.name}: the simulation failed: {type(error).__name__}: {error}")
+            )
+            continue
         if check is not None:
             result[quantity.name] = check
+    if findings:
+        raise DerivationError(
+            "; ".join(m for _, m in findings), quantity=str(findings[0][0][-1]), findings=findings
+        )
     return result

@@ -4,10 +4,12 @@ from __future__ import annotations
 
 import re
 from collections.abc import Callable, Mapping
+from functools import partial
 from typing import Any, TypeVar
 
 import sympy
 
+from physics.engine.distances import with_distance_sides
 from physics.engine.elements import expand_elements
 from physics.engine.model import (
     AXES,
@@ -95,7 +97,9 @@ def _load_low_level(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]
     for key, most in LIMITS.items():
         if isinstance(data.get(key), Mapping | list) and len(data[key]) > most:
             raise SpecErrors([SpecError(f"at most {most} entries", (key,))])
-    coordinates = _coordinates(data.get("coordinates"), symbols, errors)
+    coordinate_names = [c for c in data.get("coordinates") or [] if isinstance(c, str)]
+    ranges, coordinate_ranges, positive = _domain(data.get("domain"), symbols, coordinate_names, errors)
+    coordinates = _coordinates(data.get("coordinates"), symbols, coordinate_ranges, errors)
     coord_names = {c.name: c.symbol for c in coordinates}
     coord_scope = {**symbols, **coord_names}
     bodies = _bodies(data.get("bodies"), symbols, coord_scope, errors)
@@ -113,11 +117,10 @@ def _load_low_level(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]
     potentials = _potentials(data.get("potentials"), symbols, bodies, errors)
     collision = _collision(data.get("collision"), symbols, bodies, coordinates, errors)
     state = _state(data.get("state"), symbols, coordinates, errors)
-    ranges, positive = _domain(data.get("domain"), symbols, errors)
     quantities = _quantities(data.get("quantities"), symbols, coordinates, constraints, collision, errors)
     if errors.errors:
         raise SpecErrors(errors.errors)
-    return Model(
+    model = Model(
         coordinates=coordinates,
         bodies=bodies,
         constraints=constraints,
@@ -127,11 +130,13 @@ def _load_low_level(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]
         collision=collision,
         state=state,
         ranges=ranges,
+        coordinate_ranges=tuple((name, low, high) for name, (low, high) in coordinate_ranges.items()),
         positive=positive,
         quantities=quantities,
         parameters=tuple(symbols.values()),
         cartesian=cartesian,
     )
+    return with_distance_sides(model)
 
 
 def _mapping(value: Any, path: Path, errors: _Collector, required: bool = True) -> Mapping[str, Any]:
@@ -163,7 +168,10 @@ def _check_keys(
 
 
 def _coordinates(
-    value: Any, symbols: Mapping[str, sympy.Symbol], errors: _Collector
+    value: Any,
+    symbols: Mapping[str, sympy.Symbol],
+    ranges: Mapping[str, tuple[sympy.Expr, sympy.Expr]],
+    errors: _Collector,
 ) -> tuple[Coordinate, ...]:
     result: list[Coordinate] = []
     for index, name in enumerate(_sequence(value, ("coordinates",), errors, required=True)):
@@ -173,13 +181,23 @@ def _coordinates(
         if any(c.name == name for c in result):
             errors.add(f"coordinate {name!r} declared twice", ("coordinates", index))
             continue
-        symbol = symbols.get(name, sympy.Symbol(name, real=True))
+        symbol = symbols.get(name) or _coordinate_symbol(name, ranges.get(name))
         result.append(
             Coordinate(
                 name, symbol, sympy.Symbol(f"{name}_dot", real=True), sympy.Symbol(f"{name}_ddot", real=True)
             )
         )
     return tuple(result)
+
+
+def _coordinate_symbol(name: str, bounds: tuple[sympy.Expr, sympy.Expr] | None) -> sympy.Symbol:
+    """A coordinate's symbol carries the sign its declared range gives it (sympy then keeps roots,
+    distances and square roots on that side)."""
+    if bounds is not None and bool(bounds[0] >= 0):
+        return sympy.Symbol(name, positive=True)
+    if bounds is not None and bool(bounds[1] <= 0):
+        return sympy.Symbol(name, negative=True)
+    return sympy.Symbol(name, real=True)
 
 
 def _bodies(
@@ -371,29 +389,50 @@ def _state(
 
 
 def _domain(
-    value: Any, symbols: Mapping[str, sympy.Symbol], errors: _Collector
-) -> tuple[tuple[tuple[sympy.Symbol, sympy.Expr, sympy.Expr], ...], tuple[sympy.Expr, ...]]:
+    value: Any, symbols: Mapping[str, sympy.Symbol], coordinates: list[str], errors: _Collector
+) -> tuple[
+    tuple[tuple[sympy.Symbol, sympy.Expr, sympy.Expr], ...],
+    dict[str, tuple[sympy.Expr, sympy.Expr]],
+    tuple[sympy.Expr, ...],
+]:
     spec = _mapping(value, ("domain",), errors, required=False)
     _check_keys(spec, {"ranges", "positive"}, set(), ("domain",), errors)
     ranges: list[tuple[sympy.Symbol, sympy.Expr, sympy.Expr]] = []
+    coordinate_ranges: dict[str, tuple[sympy.Expr, sympy.Expr]] = {}
     for name, bounds in _mapping(spec.get("ranges"), ("domain", "ranges"), errors, required=False).items():
         path: Path = ("domain", "ranges", str(name))
-        if name not in symbols:
-            errors.add(f"unknown symbol {name!r}", path)
+        if name not in symbols and name not in coordinates:
+            errors.add(f"unknown symbol or coordinate {name!r}", path)
             continue
         if not isinstance(bounds, list) or len(bounds) != 2:
             errors.add("a range is [low, high]", path)
             continue
-        low = errors.read(bounds[0], symbols, (*path, 0))
-        high = errors.read(bounds[1], symbols, (*path, 1))
-        if low is not None and high is not None:
+        low = errors.attempt(partial(_bound, bounds[0], symbols, (*path, 0)))
+        high = errors.attempt(partial(_bound, bounds[1], symbols, (*path, 1)))
+        if low is None or high is None:
+            continue
+        if name in coordinates:
+            coordinate_ranges[str(name)] = (low, high)
+        elif low.is_finite and high.is_finite:
             ranges.append((symbols[name], low, high))
+        else:
+            errors.add("a parameter's range is finite (its sign is declared in the symbol table)", path)
     positive: list[sympy.Expr] = []
     for index, text in enumerate(_sequence(spec.get("positive"), ("domain", "positive"), errors)):
         expr = errors.read(text, symbols, ("domain", "positive", index))
         if expr is not None:
             positive.append(expr)
-    return tuple(ranges), tuple(positive)
+    return tuple(ranges), coordinate_ranges, tuple(positive)
+
+
+def _bound(text: Any, symbols: Mapping[str, sympy.Symbol], path: Path) -> sympy.Expr:
+    """A range bound; `oo` and `-oo` leave the range open on that side."""
+    if isinstance(text, str) and text.strip() in _INFINITE:
+        return _INFINITE[text.strip()]
+    return read_expr(text, symbols, path)
+
+
+_INFINITE: dict[str, sympy.Expr] = {"oo": sympy.oo, "+oo": sympy.oo, "-oo": -sympy.oo}
 
 
 def _quantities(

@@ -178,7 +178,8 @@ class Mechanics:
         return total
 
     def distance(self, pair: PairPotential, place: Mapping[str, sympy.Expr]) -> sympy.Expr:
-        """Distance between the pair's bodies (or body and anchor); signed x_b - x_a on a line."""
+        """The length between the pair's bodies (or body and anchor): Euclidean on several axes; on one
+        axis |b - a| with its sign resolved when the model was loaded (`PairPotential.side`)."""
         first = self.model.body(pair.bodies[0])
         if len(pair.bodies) == 2:
             second: Body | None = self.model.body(pair.bodies[1])
@@ -191,7 +192,7 @@ class Mechanics:
         if not ends:
             raise DerivationError(f"the bodies of {pair.bodies} share no axis")
         if len(ends) == 1:
-            return ends[0][1] - ends[0][0]
+            return (pair.side or 1) * (ends[0][1] - ends[0][0])
         return sympy.sqrt(sympy.Add(*((b - a) ** 2 for a, b in ends)))
 
 

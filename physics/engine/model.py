@@ -76,6 +76,9 @@ class PairPotential:
     anchor: tuple[tuple[str, sympy.Expr], ...]
     energy: sympy.Expr
     distance: sympy.Symbol
+    # On one shared axis the length is |b - a|; +1/-1 says which sign b - a keeps on the model's domain,
+    # 0 that the energy is even in the distance (the sign does not matter). Set by `load_model`.
+    side: int = 1
 
 
 @dataclass(frozen=True)
@@ -124,6 +127,7 @@ class Model:
     collision: Collision | None
     state: tuple[tuple[sympy.Symbol, sympy.Expr], ...]  # coordinate/velocity symbol -> value
     ranges: tuple[tuple[sympy.Symbol, sympy.Expr, sympy.Expr], ...]
+    coordinate_ranges: tuple[tuple[str, sympy.Expr, sympy.Expr], ...]  # a coordinate's declared range
     positive: tuple[sympy.Expr, ...]  # expressions the domain keeps positive
     quantities: tuple[Quantity, ...]
     parameters: tuple[sympy.Symbol, ...]  # the problem's symbols, in table order

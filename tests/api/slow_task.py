@@ -2,15 +2,40 @@
 
 from __future__ import annotations
 
+import os
+import signal
 import time
 
-from app.grading.worker import SpecProblem, grade
-from physics.checking import CheckJob
+from app.grading.worker import GraderCrash, SpecProblem, grade, guarded
+from physics.checking import CheckJob, run_job
+from physics.errors import SpecError
 from physics.verdict import Verdict
 
 
-def hanging_grade(job: CheckJob) -> Verdict | SpecProblem:
+def hanging_grade(job: CheckJob) -> Verdict | SpecProblem | GraderCrash:
     if job.answer == "hang":
         while True:
             time.sleep(1)
     return grade(job)
+
+
+def _faulty_run(job: CheckJob) -> Verdict:
+    if job.answer == "recurse":
+        raise RecursionError("maximum recursion depth exceeded")
+    if job.answer == "overflow":
+        raise OverflowError("int too large to convert to float")
+    if job.answer == "nomemory":
+        raise MemoryError
+    if job.answer == "spec":
+        raise SpecError("the reference does not parse", ("parts", 0, "answer"))
+    return run_job(job)
+
+
+def pid_or_grade(job: CheckJob) -> Verdict | SpecProblem | GraderCrash | int:
+    """`pid` answers with the worker's process id (to kill it); `die` kills the worker mid-check;
+    `recurse`, `overflow`, `nomemory` and `spec` raise inside grading, through the worker's own guard."""
+    if job.answer == "pid":
+        return os.getpid()
+    if job.answer == "die":
+        os.kill(os.getpid(), signal.SIGKILL)
+    return guarded(_faulty_run, job)

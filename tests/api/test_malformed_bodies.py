@@ -41,7 +41,9 @@ def chunks(total: int, size: int = 64 * 1024) -> Iterator[bytes]:
         total -= size
 
 
-def test_chunked_body_over_the_cap_is_413(client: TestClient, student_headers: dict[str, str], settings: Settings):
+def test_chunked_body_over_the_cap_is_413(
+    client: TestClient, student_headers: dict[str, str], settings: Settings
+):
     headers = {**student_headers, "Content-Type": "application/json"}
     response = client.post("/v1/check", content=chunks(settings.max_body_bytes + 1), headers=headers)
     assert response.status_code == 413, response.text

@@ -113,6 +113,7 @@ def test_spring_between_two_bodies_oscillates_with_the_reduced_mass() -> None:
             "b": {"mass": "m2", "position": {"x": "X + m1*r/(m1 + m2)"}},
         },
         "elements": {"spring": {"kind": "spring", "between": ["a", "b"], "stiffness": "k", "length": "L0"}},
+        "domain": {"ranges": {"r": ["0", "oo"]}},  # b stays to the right of a: the spring's length is r
         "quantities": {"omega": {"angular_frequency": "r"}, "rest": {"equilibrium": "r"}},
     }
     m1, m2, k, l0 = positive("m1", "m2", "k", "L0").values()

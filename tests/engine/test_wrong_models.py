@@ -96,5 +96,31 @@ def test_a_crash_inside_a_method_becomes_a_derivation_error(monkeypatch: pytest.
         raise ZeroDivisionError("division by zero")
 
     monkeypatch.setattr(LagrangeMethod, "acceleration", crash)
-    with pytest.raises(DerivationError, match="Lagrange's equations failed: ZeroDivisionError"):
+    monkeypatch.setattr(derivation, "_methods", lambda: (LagrangeMethod, NewtonMethod))
+    with pytest.raises(DerivationError) as caught:
         uncached(_load("atwood", lambda d: None))
+    ((path, message),) = caught.value.items()
+    assert path == ("quantities", "acceleration")
+    assert "lagrange failed: ZeroDivisionError" in message
+    assert "newton gives" in message  # what the other method found
+
+
+def test_every_quantity_no_two_methods_reach_is_reported_at_once_with_its_path(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    monkeypatch.setattr(derivation, "_methods", lambda: (LagrangeMethod, NewtonMethod))
+    monkeypatch.setattr(NewtonMethod, "force", lambda self, constraint: sympy.Symbol("nonsense"))
+    model = _load("moving-wedge", lambda d: None)
+    with pytest.raises(DerivationError) as caught:
+        uncached(model)
+    items = dict(caught.value.items())
+    assert set(items) == {("quantities", "normal_force")}
+    assert "lagrange gives" in items[("quantities", "normal_force")]
+    assert "newton stopped" in items[("quantities", "normal_force")]
+
+
+def test_a_violated_constraint_is_reported_at_the_constraint() -> None:
+    model = _load("moving-wedge", lambda d: d["bodies"]["block"]["position"].update(y="s*sin(theta)"))
+    with pytest.raises(DerivationError) as caught:
+        uncached(model)
+    assert caught.value.items()[0][0] == ("constraints", "incline")

@@ -32,6 +32,7 @@ TOOL = "https://tool.test"
 INSTRUCTOR = "http://purl.imsglobal.org/vocab/lis/v2/membership#Instructor"
 LEARNER = "http://purl.imsglobal.org/vocab/lis/v2/membership#Learner"
 SCORE_SCOPE = "https://purl.imsglobal.org/spec/lti-ags/scope/score"
+DEEP_LINKING_SETTINGS = "https://purl.imsglobal.org/spec/lti-dl/claim/deep_linking_settings"
 
 
 def new_private_key_pem() -> str:
@@ -92,6 +93,8 @@ class NextLaunch:
     problem: str | None = "moving-wedge"
     lineitem: str | None = f"{ISSUER}/lineitems/1"
     deep_linking: bool = False
+    accept_types: set[str] | None = None  # deep linking: what the platform takes (default: every type)
+    accept_multiple: bool = True
 
 
 @dataclass
@@ -154,7 +157,14 @@ class FakeLms:
             if spec.lineitem is not None:
                 launch.set_ags(lineitems_url=f"{ISSUER}/lineitems", lineitem_url=spec.lineitem)
             if spec.deep_linking:
-                launch.set_dl(f"{ISSUER}/deep-link-return", title="Pick", extra_data={"course": "physics-1"})
+                launch.set_dl(
+                    f"{ISSUER}/deep-link-return",
+                    title="Pick",
+                    accept_types=spec.accept_types,
+                    extra_data={"course": "physics-1"},
+                )
+                claim = t.cast(dict[str, t.Any], launch._deep_linking_launch_data)
+                claim[DEEP_LINKING_SETTINGS]["accept_multiple"] = spec.accept_multiple
             return t.cast(dict[str, t.Any], launch.lti_launch())
 
         @app.get("/jwks")

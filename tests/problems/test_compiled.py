@@ -198,7 +198,38 @@ def test_part_quantity_missing_from_the_model_is_reported_at_parse() -> None:
     data["parts"][1]["quantity"] = "pulley_force"  # type: ignore[index]
     with pytest.raises(ProblemInvalid) as caught:
         parse_problem(data)
-    assert caught.value.errors == [("parts[1].quantity", "the model has no quantity 'pulley_force'")]
+    assert caught.value.errors == [
+        (
+            "parts[1].quantity",
+            "the model has no quantity 'pulley_force'; its quantities are acceleration, tension",
+        )
+    ]
+
+
+def test_a_misspelled_quantity_beside_a_typed_answer_is_an_error_not_a_fall_back() -> None:
+    data = atwood_data()
+    data["parts"][1]["quantity"] = "tensoin"  # type: ignore[index]
+    data["parts"][1]["answer"] = "m1*g"  # type: ignore[index]  # wrong, and nothing would check it
+    with pytest.raises(ProblemInvalid) as caught:
+        parse_problem(data)
+    ((path, message),) = caught.value.errors
+    assert path == "parts[1].quantity"
+    assert "'tensoin'" in message and "tension" in message
+
+
+def test_a_part_with_only_a_typed_answer_is_labelled_not_derived() -> None:
+    data = atwood_data()
+    data["parts"][1]["id"] = "string_tension"  # type: ignore[index]  # no model quantity of that name
+    for part in data["parts"]:  # type: ignore[union-attr]
+        if part.get("of") == "tension":
+            part["of"] = "string_tension"
+    compiled = compile_problem(parse_problem(data), 1)
+    assert "string_tension" in compiled.not_derived
+    assert "acceleration" not in compiled.not_derived
+    m1, m2, g = (compiled.table[n] for n in ("m1", "m2", "g"))
+    assert (
+        sympy.simplify(compiled.reference_expressions()["string_tension"] - 2 * m1 * m2 * g / (m1 + m2)) == 0
+    )
 
 
 def test_model_faults_are_reported_under_model() -> None:

@@ -1,7 +1,7 @@
 """`pendulum`: a simple pendulum (a bob on a light string or rod) or a rigid one (a body on a pivot).
 
     bob: {kind: pendulum, mass: m, length: L, coordinate: phi}
-      pivot: {x: 0, y: 0}      the fixed pivot
+      pivot: {x: 0, y: 0}      the fixed pivot, or the name of a body it hangs from (a cart)
       body: bob                the swinging body's name (default: the element's)
       inertia: I, distance: d  a rigid pendulum: moment of inertia about its centre of mass, which is d
                                from the pivot (instead of `length`)
@@ -27,7 +27,16 @@ def expand(name: str, spec: Mapping[str, Any], builder: Builder, path: Path) -> 
     fields = Fields(spec, path, builder, FIELDS, REQUIRED)
     body = fields.name("body", name)
     angle = fields.name("coordinate")
-    px, py = fields.point("pivot")
+    px, py = fields.point("pivot") if not isinstance(spec.get("pivot"), str) else ("0", "0")
+    cx, cy = px, py  # the pivot in Cartesian symbols, for the constraints
+    if isinstance(spec.get("pivot"), str):  # hung from a moving body: its position is the pivot
+        carrier = fields.name("pivot")
+        where = builder.position(carrier)
+        if where is None:
+            fields.error(f"no body {carrier!r} defined before this element", "pivot")
+            return
+        px, py = where.get("x", "0"), where.get("y", "0")
+        cx, cy = (f"x_{carrier}" if "x" in where else "0"), (f"y_{carrier}" if "y" in where else "0")
     rigid = fields.has("inertia")
     arm_key = "distance" if rigid else "length"
     if not fields.has(arm_key):
@@ -42,12 +51,12 @@ def expand(name: str, spec: Mapping[str, Any], builder: Builder, path: Path) -> 
     entry: dict[str, Any] = {"mass": fields.text("mass"), "position": position}
     if not rigid:
         builder.body(body, entry, path)
-        dx, dy = offset(f"x_{body}", px), offset(f"y_{body}", py)
+        dx, dy = offset(f"x_{body}", cx), offset(f"y_{body}", cy)
         builder.constraint(name, "string", f"{arm} - sqrt({dx}^2 + {dy}^2)", path)
         return
     builder.body(body, {**entry, "inertia": fields.text("inertia"), "angle": angle}, path)
-    builder.constraint(f"{name}PivotX", "other", f"{offset(f'x_{body}', px)} - {arm}*sin(phi_{body})", path)
-    builder.constraint(f"{name}PivotY", "other", f"{offset(f'y_{body}', py)} + {arm}*cos(phi_{body})", path)
+    builder.constraint(f"{name}PivotX", "other", f"{offset(f'x_{body}', cx)} - {arm}*sin(phi_{body})", path)
+    builder.constraint(f"{name}PivotY", "other", f"{offset(f'y_{body}', cy)} + {arm}*cos(phi_{body})", path)
 
 
 def _minus(base: str, term: str) -> str:

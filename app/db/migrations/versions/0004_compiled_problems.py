@@ -1,7 +1,7 @@
 """Compiled problems persisted across restarts (a cache: derivations and prepared references).
 
-Revision ID: 0003_compiled_problems
-Revises: 0002_lti
+Revision ID: 0004_compiled_problems
+Revises: 0003_deep_link_single_choice
 Create Date: 2026-11-24
 """
 
@@ -12,8 +12,8 @@ from collections.abc import Sequence
 import sqlalchemy as sa
 from alembic import op
 
-revision: str = "0003_compiled_problems"
-down_revision: str | None = "0002_lti"
+revision: str = "0004_compiled_problems"
+down_revision: str | None = "0003_deep_link_single_choice"
 branch_labels: str | Sequence[str] | None = None
 depends_on: str | Sequence[str] | None = None
 

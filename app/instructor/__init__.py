@@ -1,0 +1,1 @@
+"""The instructor pages (`/instructor/…`): problems, uploads, class results, LMS delivery problems."""

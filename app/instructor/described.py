@@ -1,0 +1,179 @@
+"""A compiled problem as an instructor reads it: every part's reference (TeX), its known mistakes and
+limiting cases, the worked solution by each method, and one variant's expected numbers.
+
+Plain, picklable data: the upload vetting worker builds it for a preview before anything is stored,
+and the problem pages build it from the catalog's compiled problem. No FastAPI here.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+from decimal import Decimal
+
+import sympy
+
+from physics.errors import SpecError
+from problems.compiled import CompiledNumericPart, CompiledProblem, CompiledSymbolicPart
+from problems.variants import Variant, format_number, format_quantity, round_sigfigs
+
+SHOWN_FIGURES = 4
+
+
+@dataclass(frozen=True)
+class MistakeInfo:
+    latex: str
+    text: str  # the same, as plain text (chart labels)
+    feedback: str
+    by_author: bool  # written in the problem (else found by the engine)
+
+
+@dataclass(frozen=True)
+class LimitInfo:
+    where: str  # TeX, e.g. "k = 0"
+    description: str
+
+
+@dataclass(frozen=True)
+class PartInfo:
+    id: str
+    kind: str
+    prompt: str
+    latex: str  # the reference (for a numeric part, the expression it is evaluated from)
+    units: str | None
+    tolerance: str | None  # numeric parts: "within 1 %", …
+    expected: str | None  # numeric parts, for the variant described: "4.580 m/s²"
+    expected_full: str | None  # …and the 12 significant figures it is checked against
+    mistakes: tuple[MistakeInfo, ...]
+    limits: tuple[LimitInfo, ...]
+    error: str | None = None  # the numeric reference could not be evaluated for this variant
+
+
+@dataclass(frozen=True)
+class StepInfo:
+    title: str
+    latex: str
+
+
+@dataclass(frozen=True)
+class MethodInfo:
+    title: str
+    steps: tuple[StepInfo, ...]
+    notes: tuple[str, ...]
+
+
+@dataclass(frozen=True)
+class Described:
+    parts: tuple[PartInfo, ...]
+    methods: tuple[MethodInfo, ...]
+    agreement: tuple[tuple[str, tuple[str, ...]], ...]  # quantity -> methods that agree on it
+    methods_agree: bool
+    given: tuple[tuple[str, str], ...]  # the variant's values: (symbol, "2.5 kg")
+
+
+def tolerance_text(rel: Decimal | None, abs_: Decimal | None, sigfigs: int | None, units: str) -> str:
+    said = []
+    if rel is not None:
+        said.append(f"within {format_number((rel * 100).normalize())} %")
+    if abs_ is not None:
+        unit = "" if units == "1" else f" {units}"
+        said.append(f"within ± {format_number(abs_)}{unit}")
+    if sigfigs is not None:
+        said.append(f"exactly {sigfigs} significant figures")
+    return " and ".join(said)
+
+
+def _limit_where(substitutions: Mapping[sympy.Symbol, sympy.Expr]) -> str:
+    terms = []
+    for symbol, value in substitutions.items():
+        arrow = r"\to" if value in (sympy.oo, -sympy.oo) or value == 0 else "="
+        terms.append(f"{sympy.latex(symbol)} {arrow} {sympy.latex(value)}")
+    return ",\\ ".join(terms)
+
+
+def _numeric(part: CompiledNumericPart, variant: Variant | None) -> tuple[str | None, str | None, str | None]:
+    if variant is None:
+        return None, None, None
+    try:
+        value = part.reference(variant)
+    except SpecError as error:
+        return None, None, error.message
+    shown = format_quantity(round_sigfigs(value, SHOWN_FIGURES), part.units)
+    return shown, format_quantity(value, part.units), None
+
+
+def describe(compiled: CompiledProblem, variant: Variant | None = None) -> Described:
+    """Everything an instructor checks a problem by; numeric values for `variant` when given."""
+    doc = compiled.document
+    parts = []
+    for spec in doc.parts:
+        part = compiled.parts[spec.id]
+        if isinstance(part, CompiledSymbolicPart):
+            authored = len(getattr(spec, "mistakes", ()))
+            parts.append(
+                PartInfo(
+                    id=spec.id,
+                    kind=spec.kind,
+                    prompt=spec.prompt,
+                    latex=sympy.latex(part.expected),
+                    units=None,
+                    tolerance=None,
+                    expected=None,
+                    expected_full=None,
+                    mistakes=tuple(
+                        MistakeInfo(sympy.latex(m.expr), sympy.sstr(m.expr), m.feedback, i < authored)
+                        for i, m in enumerate(part.context.mistakes)
+                    ),
+                    limits=tuple(
+                        LimitInfo(_limit_where(case.substitutions), case.description)
+                        for case in part.context.limits
+                    ),
+                )
+            )
+        else:
+            expected, full, error = _numeric(part, variant)
+            tolerance = part.tolerance
+            parts.append(
+                PartInfo(
+                    id=spec.id,
+                    kind=spec.kind,
+                    prompt=spec.prompt,
+                    latex=sympy.latex(part.expr),
+                    units=part.units,
+                    tolerance=tolerance_text(tolerance.rel, tolerance.abs, tolerance.sigfigs, part.units),
+                    expected=expected,
+                    expected_full=full,
+                    mistakes=(),
+                    limits=(),
+                    error=error,
+                )
+            )
+    derived = compiled.derived
+    derivation = derived.raw if derived is not None else None
+    methods = (
+        ()
+        if derivation is None
+        else tuple(
+            MethodInfo(
+                title=method.title,
+                steps=tuple(StepInfo(step.title, step.latex) for step in method.steps),
+                notes=tuple(method.notes),
+            )
+            for method in derivation.methods
+        )
+    )
+    agreement = () if derived is None else tuple((q, tuple(m)) for q, m in derived.agreement.items())
+    given: tuple[tuple[str, str], ...] = ()
+    if variant is not None:
+        given = tuple(
+            (name, format_quantity(value, doc.given[name].unit))
+            for name, value in variant.values.items()
+            if name in doc.given
+        )
+    return Described(
+        parts=tuple(parts),
+        methods=methods,
+        agreement=agreement,
+        methods_agree=derived is not None and not derived.disagreements,
+        given=given,
+    )

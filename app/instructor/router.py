@@ -1,0 +1,703 @@
+"""The instructor pages: sign-in, problems (statement, worked solutions, variants), upload and edit,
+class results, submissions (with the CSV export), and scores an LMS refused.
+
+    GET       /instructor                              -> the problem list
+    GET|POST  /instructor/sign-in, POST /instructor/sign-out
+    GET       /instructor/problems                     every live problem
+    GET|POST  /instructor/problems/new                 paste or upload YAML: preview, then save
+    GET       /instructor/problems/{id}[?student=S]    statement, figure, solutions, S's variant
+    GET|POST  /instructor/problems/{id}/edit           a new version of one's own problem
+    GET       /instructor/problems/{id}/results        how the class did, per part
+    GET       /instructor/submissions[.csv]            every submission, filtered by problem and student
+    GET       /instructor/deliveries                   grade passback the LMS refused or has not taken
+
+Scoped as the API is (`session.py`): only an API-key session names students, sees their work, uploads
+and sees grade passback; an LMS instructor session acts only for itself.
+"""
+
+from __future__ import annotations
+
+import io
+import re
+from collections.abc import Mapping
+from typing import Annotated, Any, Literal
+from urllib.parse import urlencode
+
+import yaml
+from fastapi import APIRouter, Depends, FastAPI, Query, Request
+from fastapi.responses import RedirectResponse, Response
+from starlette.concurrency import run_in_threadpool
+from starlette.datastructures import UploadFile
+
+from app.db import class_results as results_repository
+from app.db import submissions as submission_repository
+from app.db.errors import ProblemExists
+from app.db.errors import ProblemNotFound as StoredProblemNotFound
+from app.db.records import ProblemRecord, Role
+from app.deps import ServicesDep
+from app.errors import AppError
+from app.instructor import session as auth
+from app.instructor.described import Described, MistakeInfo, describe
+from app.instructor.plots import Bar, bar_chart
+from app.lti.outbox import list_delivery_problems
+from app.lti.platforms import platform_origins
+from app.routers.authoring import store_new_problem, store_new_version
+from app.services import Services
+from app.transfer import export_submissions
+from app.web.layout import page
+from problems.loader import MAX_DOCUMENT_BYTES, parse_problem
+from problems.variants import fill_statement, fixed_variant
+
+router = APIRouter(prefix="/instructor", include_in_schema=False)
+
+PAGE_SIZE = 50
+SCRIPT = "/static/instructor.js"
+_ID = re.compile(r"^[A-Za-z0-9][A-Za-z0-9._-]{0,99}$")
+_KEY_ONLY = (
+    "A session opened from an LMS acts only for itself: sign in with an instructor API key to see "
+    "students' work."
+)
+
+
+class PageError(Exception):
+    def __init__(self, status: int, title: str, message: str):
+        super().__init__(message)
+        self.status, self.title, self.message = status, title, message
+
+
+async def signed_in(request: Request, services: ServicesDep) -> auth.Visitor:
+    who = await auth.visitor(request, services)
+    wait = services.key_limiter.retry_after(who.principal.key_id)
+    if wait is not None:
+        raise PageError(429, "Too many requests", f"Too many requests; try again in {wait} s.")
+    return who
+
+
+Visitor = Annotated[auth.Visitor, Depends(signed_in)]
+
+
+def install_page_handlers(app: FastAPI) -> None:
+    """Sign-in redirects and refusals as pages, not the API's JSON errors."""
+
+    @app.exception_handler(auth.SignInRequired)
+    async def sign_in_required(request: Request, _: Exception) -> Response:
+        target = request.url.path + (f"?{request.url.query}" if request.url.query else "")
+        return RedirectResponse(f"/instructor/sign-in?{urlencode({'next': target})}", status_code=303)
+
+    @app.exception_handler(auth.NotAnInstructor)
+    async def not_an_instructor(request: Request, _: Exception) -> Response:
+        return _message(
+            request,
+            403,
+            "For instructors only",
+            "These pages need an instructor key or an "
+            "instructor's LMS session. Students answer problems from their course or at /p/<problem>.",
+        )
+
+    @app.exception_handler(auth.BadCsrf)
+    async def bad_csrf(request: Request, _: Exception) -> Response:
+        return _message(
+            request,
+            403,
+            "Form expired",
+            "This form is out of date or did not come from "
+            "this site. Go back, reload the page and send it again.",
+        )
+
+    @app.exception_handler(PageError)
+    async def page_error(request: Request, error: PageError) -> Response:
+        return _message(request, error.status, error.title, error.message)
+
+
+def _message(
+    request: Request, status: int, title: str, message: str, who: auth.Visitor | None = None
+) -> Response:
+    return page(
+        request, "instructor/message.html", {"title": title, "message": message, "who": who}, status=status
+    )
+
+
+async def _frames(services: Services, who: auth.Visitor) -> list[str]:
+    """An LMS session's pages may sit in the LMS's frame; a key session's are never framed."""
+    if who.principal.api_key:
+        return []
+
+    def load() -> list[str]:
+        with services.database.session(read_only=True) as session:
+            return platform_origins(session)
+
+    return await run_in_threadpool(load)
+
+
+async def _page(
+    request: Request,
+    services: Services,
+    who: auth.Visitor,
+    template: str,
+    context: Mapping[str, Any],
+    *,
+    status: int = 200,
+) -> Response:
+    return page(
+        request,
+        template,
+        {"who": who, "scripts": [SCRIPT], **context},
+        status=status,
+        frame_ancestors=await _frames(services, who),
+    )
+
+
+def _need_key(who: auth.Visitor) -> None:
+    if not who.acts_for_students:
+        raise PageError(403, "Needs an instructor API key", _KEY_ONLY)
+
+
+def _record(services: Services, problem_id: str) -> ProblemRecord:
+    if not _ID.match(problem_id):
+        raise PageError(404, "No such problem", f"There is no problem {problem_id!r}.")
+    try:
+        return services.catalog.get(problem_id)
+    except StoredProblemNotFound:
+        raise PageError(404, "No such problem", f"There is no problem {problem_id!r}.") from None
+
+
+def _safe_next(target: str | None) -> str:
+    if target and target.startswith("/instructor") and "//" not in target and "\\" not in target:
+        return target
+    return "/instructor/problems"
+
+
+def _secure(services: Services) -> bool:
+    return services.settings.base_url.startswith("https://")
+
+
+# ---- signing in --------------------------------------------------------------------------------------
+
+
+@router.get("")
+async def home() -> Response:
+    return RedirectResponse("/instructor/problems", status_code=303)
+
+
+def _sign_in_form(
+    request: Request, services: Services, next_url: str, *, error: str | None = None, status: int = 200
+) -> Response:
+    nonce = request.cookies.get(auth.PRE_COOKIE) or auth.form_nonce()
+    response = page(
+        request,
+        "instructor/sign_in.html",
+        {
+            "title": "Instructor sign-in",
+            "csrf": auth.csrf_token(services.settings.secret, "pre:" + nonce),
+            "next": next_url,
+            "error": error,
+        },
+        status=status,
+    )
+    response.set_cookie(
+        auth.PRE_COOKIE,
+        nonce,
+        max_age=3600,
+        path=auth.COOKIE_PATH,
+        httponly=True,
+        samesite="strict",
+        secure=_secure(services),
+    )
+    return response
+
+
+@router.get("/sign-in")
+async def sign_in_page(request: Request, services: ServicesDep, next: str | None = None) -> Response:
+    return _sign_in_form(request, services, _safe_next(next))
+
+
+@router.post("/sign-in")
+async def sign_in(request: Request, services: ServicesDep) -> Response:
+    form = await request.form()
+    nonce = request.cookies.get(auth.PRE_COOKIE, "")
+    sent = form.get(auth.CSRF_FIELD)
+    auth.check_csrf(
+        services.settings.secret, "pre:" + nonce, sent if isinstance(sent, str) and nonce else None
+    )
+    next_url = _safe_next(str(form.get("next") or ""))
+    key = str(form.get("key") or "").strip()
+    principal = await run_in_threadpool(services.keys.authenticate, key) if key else None
+    if principal is None:
+        return _sign_in_form(request, services, next_url, error="This key is unknown or revoked.", status=401)
+    if principal.role is not Role.INSTRUCTOR:
+        return _sign_in_form(
+            request,
+            services,
+            next_url,
+            error="This is a student key. These pages need an instructor key.",
+            status=403,
+        )
+    response = RedirectResponse(next_url, status_code=303)
+    response.set_cookie(
+        auth.COOKIE,
+        auth.session_cookie(services.settings.secret, int(principal.key_id)),
+        max_age=auth.LIFETIME_SECONDS,
+        path=auth.COOKIE_PATH,
+        httponly=True,
+        samesite="strict",
+        secure=_secure(services),
+    )
+    response.delete_cookie(auth.PRE_COOKIE, path=auth.COOKIE_PATH)
+    return response
+
+
+@router.post("/sign-out")
+async def sign_out(request: Request, services: ServicesDep, who: Visitor) -> Response:
+    await auth.require_csrf(request, services, who)
+    response = RedirectResponse("/instructor/sign-in", status_code=303)
+    response.delete_cookie(auth.COOKIE, path=auth.COOKIE_PATH)
+    return response
+
+
+# ---- problems ----------------------------------------------------------------------------------------
+
+
+@router.get("/problems")
+async def problems(request: Request, services: ServicesDep, who: Visitor) -> Response:
+    def load() -> list[dict[str, Any]]:
+        rows = []
+        for record in services.catalog.list():
+            doc = services.catalog.document(record)
+            rows.append(
+                {
+                    "id": record.id,
+                    "title": doc.title,
+                    "topics": doc.topics,
+                    "parts": len(doc.parts),
+                    "version": record.version,
+                    "owner": "built-in"
+                    if record.builtin
+                    else ("yours" if str(record.owner_key_id) == who.principal.key_id else "uploaded"),
+                }
+            )
+        return rows
+
+    rows = await run_in_threadpool(load)
+    return await _page(
+        request, services, who, "instructor/problems.html", {"title": "Problems", "rows": rows}
+    )
+
+
+# ---- upload and edit ---------------------------------------------------------------------------------
+
+
+async def _source(request: Request) -> tuple[str, Literal["json", "yaml"], str | None]:
+    """(the YAML or JSON text, its format, the action) from the form: an uploaded file wins over the
+    text box. Bytes that are not UTF-8 are shown as such by the vetting."""
+    form = await request.form()
+    text = str(form.get("source") or "")
+    fmt: Literal["json", "yaml"] = "yaml"
+    upload = form.get("file")
+    if isinstance(upload, UploadFile) and upload.filename:
+        data = await upload.read(MAX_DOCUMENT_BYTES + 1)
+        if data:
+            text = data.decode("utf-8", errors="replace")
+            if upload.filename.lower().endswith(".json"):
+                fmt = "json"
+    action = form.get("action")
+    return text, fmt, action if isinstance(action, str) else None
+
+
+async def _edit_page(
+    request: Request,
+    services: Services,
+    who: auth.Visitor,
+    *,
+    problem_id: str | None,
+    source: str,
+    errors: list[dict[str, Any]] | None = None,
+    described: Described | None = None,
+    document: dict[str, Any] | None = None,
+    warnings: list[dict[str, Any]] | None = None,
+    status: int = 200,
+) -> Response:
+    action = "/instructor/problems/new" if problem_id is None else f"/instructor/problems/{problem_id}/edit"
+    preview_doc, preview_statement = None, None
+    if described is not None and document is not None:
+        # Vetted already: only the shape is read again (pydantic, no sympy).
+        preview_doc = parse_problem(document, "json", check_meaning=False)
+        preview_statement = fill_statement(preview_doc.statement, preview_doc, fixed_variant(preview_doc, {}))
+    return await _page(
+        request,
+        services,
+        who,
+        "instructor/edit.html",
+        {
+            "title": "New problem" if problem_id is None else f"New version of {problem_id}",
+            "problem_id": problem_id,
+            "action": action,
+            "source": source,
+            "errors": errors,
+            "described": described,
+            "preview_doc": preview_doc,
+            "preview_statement": preview_statement,
+            "warnings": warnings,
+        },
+        status=status,
+    )
+
+
+class _BlockDumper(yaml.SafeDumper):
+    """Multi-line text (statements, feedback) as `|` blocks, as authors write it."""
+
+
+def _text(dumper: yaml.SafeDumper, data: str) -> yaml.ScalarNode:
+    return dumper.represent_scalar("tag:yaml.org,2002:str", data, style="|" if "\n" in data else None)
+
+
+_BlockDumper.add_representer(str, _text)
+
+
+def yaml_text(document: Mapping[str, Any]) -> str:
+    """A stored document as YAML to edit, keys in the author's order."""
+    return yaml.dump(dict(document), Dumper=_BlockDumper, sort_keys=False, allow_unicode=True, width=100)
+
+
+def _can_upload(who: auth.Visitor) -> None:
+    if not who.principal.api_key or not who.principal.key_id.isdigit():
+        raise PageError(403, "Needs an instructor API key", "Upload problems with an instructor API key.")
+
+
+async def _owned_record(services: Services, who: auth.Visitor, problem_id: str) -> ProblemRecord:
+    record = await run_in_threadpool(_record, services, problem_id)
+    if record.builtin or str(record.owner_key_id) != who.principal.key_id:
+        raise PageError(
+            403,
+            "Not yours to edit",
+            "Only the instructor who uploaded a problem may change it; the built-in bank is read-only.",
+        )
+    return record
+
+
+async def _vet_and_maybe_save(
+    request: Request, services: Services, who: auth.Visitor, problem_id: str | None
+) -> Response:
+    try:
+        return await _vet_and_maybe_save_form(request, services, who, problem_id)
+    finally:
+        await request.close()  # the uploaded file's spooled copy
+
+
+async def _vet_and_maybe_save_form(
+    request: Request, services: Services, who: auth.Visitor, problem_id: str | None
+) -> Response:
+    await auth.require_csrf(request, services, who)
+    source, fmt, action = await _source(request)
+    errors: list[dict[str, Any]]
+    if not source.strip():
+        errors = [{"path": "", "message": "Paste the problem's YAML or choose a file.", "line": None}]
+        return await _edit_page(
+            request, services, who, problem_id=problem_id, source=source, errors=errors, status=422
+        )
+    vetted = await services.authoring.vet(source.encode("utf-8"), fmt)
+    if vetted.document is None:
+        errors = [
+            {"path": path, "message": message, "line": vetted.lines.get(path)}
+            for path, message in vetted.errors
+        ]
+        return await _edit_page(
+            request, services, who, problem_id=problem_id, source=source, errors=errors, status=422
+        )
+    if action != "save":
+        return await _edit_page(
+            request,
+            services,
+            who,
+            problem_id=problem_id,
+            source=source,
+            described=vetted.described,
+            document=vetted.document,
+            warnings=[
+                {"path": path, "message": message, "line": vetted.lines.get(path)}
+                for path, message in vetted.warnings
+            ],
+        )
+    try:
+        if problem_id is None:
+            record = await store_new_problem(services, who.principal, vetted.document)
+        else:
+            record = await store_new_version(services, who.principal, problem_id, vetted.document)
+    except ProblemExists:
+        errors = [{"path": "id", "message": "this id is already taken; choose another", "line": None}]
+        return await _edit_page(
+            request, services, who, problem_id=problem_id, source=source, errors=errors, status=409
+        )
+    except AppError as error:
+        errors = [
+            {"path": d.get("path", ""), "message": d.get("message", ""), "line": None} for d in error.details
+        ] or [{"path": "", "message": error.message, "line": None}]
+        return await _edit_page(
+            request, services, who, problem_id=problem_id, source=source, errors=errors, status=error.status
+        )
+    return RedirectResponse(f"/instructor/problems/{record.id}?saved={record.version}", status_code=303)
+
+
+@router.get("/problems/new")
+async def new_problem(request: Request, services: ServicesDep, who: Visitor) -> Response:
+    _can_upload(who)
+    return await _edit_page(request, services, who, problem_id=None, source="")
+
+
+@router.post("/problems/new")
+async def new_problem_post(request: Request, services: ServicesDep, who: Visitor) -> Response:
+    _can_upload(who)
+    return await _vet_and_maybe_save(request, services, who, None)
+
+
+@router.get("/problems/{problem_id}/edit")
+async def edit_problem(problem_id: str, request: Request, services: ServicesDep, who: Visitor) -> Response:
+    _can_upload(who)
+    record = await _owned_record(services, who, problem_id)
+    return await _edit_page(request, services, who, problem_id=problem_id, source=yaml_text(record.document))
+
+
+@router.post("/problems/{problem_id}/edit")
+async def edit_problem_post(
+    problem_id: str, request: Request, services: ServicesDep, who: Visitor
+) -> Response:
+    _can_upload(who)
+    await _owned_record(services, who, problem_id)
+    return await _vet_and_maybe_save(request, services, who, problem_id)
+
+
+@router.get("/problems/{problem_id}")
+async def problem(
+    problem_id: str,
+    request: Request,
+    services: ServicesDep,
+    who: Visitor,
+    student: Annotated[str | None, Query(max_length=200)] = None,
+    saved: Annotated[int | None, Query()] = None,
+) -> Response:
+    record = await run_in_threadpool(_record, services, problem_id)
+    student = (student or "").strip() or None
+    if student is not None and student != who.principal.own_identity:
+        _need_key(who)
+    whose = student or who.principal.own_identity
+
+    def load() -> dict[str, Any]:
+        catalog = services.catalog
+        doc = catalog.document(record)
+        variant = catalog.variant(record, whose)
+        compiled = catalog.compiled(record)
+        return {
+            "doc": doc,
+            "record": record,
+            "statement": fill_statement(doc.statement, doc, variant),
+            "described": describe(compiled, variant),
+        }
+
+    context = await run_in_threadpool(load)
+    own = not record.builtin and str(record.owner_key_id) == who.principal.key_id
+    return await _page(
+        request,
+        services,
+        who,
+        "instructor/problem.html",
+        {
+            **context,
+            "title": context["doc"].title,
+            "student": student,
+            "whose": whose,
+            "own": own,
+            "saved": saved,
+        },
+    )
+
+
+# ---- class results -----------------------------------------------------------------------------------
+
+
+def _plural(count: int, noun: str) -> str:
+    return f"{count} {noun}{'' if count == 1 else 's'}"
+
+
+def _mistake_label(mistakes: Mapping[str, MistakeInfo], feedback: str) -> str:
+    """A chart's label for a known mistake: its expression, else its feedback without TeX dollars."""
+    known = mistakes.get(feedback)
+    return known.text if known is not None else feedback.replace("$", "")
+
+
+def _percent(part: results_repository.PartResults) -> str:
+    share = part.percent_correct
+    return "–" if share is None else f"{share:.0f} %"
+
+
+@router.get("/problems/{problem_id}/results")
+async def results(problem_id: str, request: Request, services: ServicesDep, who: Visitor) -> Response:
+    _need_key(who)
+    record = await run_in_threadpool(_record, services, problem_id)
+
+    def load() -> dict[str, Any]:
+        doc = services.catalog.document(record)
+        part_ids = [p.id for p in doc.parts]
+        with services.database.session(read_only=True) as session:
+            found = results_repository.class_results(session, problem_id, part_ids)
+        described = describe(services.catalog.compiled(record))
+        return {"doc": doc, "parts": found, "described": described}
+
+    data = await run_in_threadpool(load)
+    mistakes = {m.feedback: m for info in data["described"].parts for m in info.mistakes}
+    overview = bar_chart(
+        "overview",
+        "Students with a correct answer, per part",
+        [
+            Bar(
+                f"Part {i + 1}: {part.part_id}",
+                part.percent_correct or 0.0,
+                f"{part.correct} of {part.tried} ({_percent(part)})",
+            )
+            for i, part in enumerate(data["parts"])
+        ],
+        maximum=100.0,
+    )
+    sections = []
+    for index, part in enumerate(data["parts"]):
+        chart = f"part-{index}"
+        sections.append(
+            {
+                "index": index,
+                "part": part,
+                "percent": _percent(part),
+                "attempts_chart": bar_chart(
+                    f"{chart}-attempts",
+                    f"Part {index + 1}: attempts used up to the first correct answer",
+                    [
+                        Bar(_plural(n, "attempt"), students, _plural(students, "student"))
+                        for n, students in part.first_correct.items()
+                    ],
+                ),
+                "reasons_chart": bar_chart(
+                    f"{chart}-reasons",
+                    f"Part {index + 1}: wrong answers by reason",
+                    [
+                        Bar(c.key.replace("_", " "), c.submissions, _plural(c.submissions, "answer"))
+                        for c in part.wrong_reasons
+                    ],
+                ),
+                "mistakes_chart": bar_chart(
+                    f"{chart}-mistakes",
+                    f"Part {index + 1}: wrong answers by known mistake",
+                    [
+                        Bar(_mistake_label(mistakes, c.key), c.submissions, _plural(c.submissions, "answer"))
+                        for c in part.mistakes
+                    ],
+                ),
+            }
+        )
+    return await _page(
+        request,
+        services,
+        who,
+        "instructor/results.html",
+        {
+            "title": f"Class results: {data['doc'].title}",
+            "doc": data["doc"],
+            "record": record,
+            "overview": overview,
+            "sections": sections,
+            "mistakes": mistakes,
+        },
+    )
+
+
+# ---- submissions -------------------------------------------------------------------------------------
+
+
+def _filters(problem: str | None, student: str | None) -> tuple[str | None, str | None]:
+    return (problem or "").strip() or None, (student or "").strip() or None
+
+
+@router.get("/submissions")
+async def submissions(
+    request: Request,
+    services: ServicesDep,
+    who: Visitor,
+    problem: Annotated[str | None, Query(max_length=100)] = None,
+    student: Annotated[str | None, Query(max_length=200)] = None,
+    cursor: Annotated[str | None, Query(max_length=200)] = None,
+) -> Response:
+    _need_key(who)
+    problem, student = _filters(problem, student)
+
+    def load() -> tuple[Any, list[str]]:
+        with services.database.session(read_only=True) as session:
+            found = submission_repository.list_submissions(
+                session, problem_id=problem, student=student, limit=PAGE_SIZE, cursor=cursor or None
+            )
+        return found, [record.id for record in services.catalog.list()]
+
+    try:
+        found, problem_ids = await run_in_threadpool(load)
+    except AppError as error:  # pragma: no cover - defensive; storage errors are below
+        raise PageError(error.status, "Cannot list submissions", error.message) from None
+    except ValueError:
+        raise PageError(422, "Cannot list submissions", "That page link is not valid any more.") from None
+    query = {k: v for k, v in (("problem", problem), ("student", student)) if v}
+    return await _page(
+        request,
+        services,
+        who,
+        "instructor/submissions.html",
+        {
+            "title": "Submissions",
+            "items": found.items,
+            "next": None if found.next is None else "?" + urlencode({**query, "cursor": found.next}),
+            "csv": "/instructor/submissions.csv" + ("?" + urlencode(query) if query else ""),
+            "problem": problem,
+            "student": student,
+            "problem_ids": problem_ids,
+            "preview_prefix": results_repository.PREVIEW_PREFIX,
+        },
+    )
+
+
+@router.get("/submissions.csv")
+async def submissions_csv(
+    services: ServicesDep,
+    who: Visitor,
+    problem: Annotated[str | None, Query(max_length=100)] = None,
+    student: Annotated[str | None, Query(max_length=200)] = None,
+) -> Response:
+    _need_key(who)
+    problem, student = _filters(problem, student)
+    out = io.StringIO()
+    await run_in_threadpool(
+        lambda: export_submissions(services.database, problem, out, student=student, progress=False)
+    )
+    name = "submissions" + (f"-{problem}" if problem and _ID.match(problem) else "") + ".csv"
+    return Response(
+        out.getvalue(),
+        media_type="text/csv; charset=utf-8",
+        headers={
+            "Content-Disposition": f'attachment; filename="{name}"',
+            "Cache-Control": "no-store",
+            "X-Content-Type-Options": "nosniff",
+        },
+    )
+
+
+# ---- LMS delivery problems ---------------------------------------------------------------------------
+
+
+@router.get("/deliveries")
+async def deliveries(request: Request, services: ServicesDep, who: Visitor) -> Response:
+    _need_key(who)
+
+    def load() -> list[Any]:
+        with services.database.session(read_only=True) as session:
+            return list_delivery_problems(session)
+
+    items = await run_in_threadpool(load)
+    return await _page(
+        request,
+        services,
+        who,
+        "instructor/deliveries.html",
+        {"title": "LMS delivery problems", "items": items},
+    )

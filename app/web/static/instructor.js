@@ -1,0 +1,35 @@
+// Display formulas and tables wider than the screen scroll sideways (physcheck.css); make those, and
+// only those, reachable with the keyboard so that they can be scrolled without a mouse.
+"use strict";
+function reachOverflowing() {
+  for (const box of document.querySelectorAll('math[display="block"], .table-wrap')) {
+    if (box.scrollWidth > box.clientWidth + 1) {
+      box.tabIndex = 0;
+    } else {
+      box.removeAttribute("tabindex");
+    }
+  }
+}
+window.addEventListener("load", reachOverflowing);
+window.addEventListener("resize", reachOverflowing);
+
+// "line 12" beside an upload error: select that line in the text box, ready to be fixed.
+document.addEventListener("click", (event) => {
+  const link = event.target instanceof Element ? event.target.closest("a[data-line]") : null;
+  const box = document.getElementById("source");
+  if (!link || !box) {
+    return;
+  }
+  event.preventDefault();
+  const wanted = Number(link.dataset.line);
+  const lines = box.value.split("\n");
+  let start = 0;
+  for (let index = 0; index < wanted - 1 && index < lines.length; index += 1) {
+    start += lines[index].length + 1;
+  }
+  const end = start + (lines[wanted - 1] || "").length;
+  box.focus();
+  box.setSelectionRange(start, end);
+  const lineHeight = parseFloat(getComputedStyle(box).lineHeight) || 20;
+  box.scrollTop = Math.max(0, (wanted - 3) * lineHeight);
+});

@@ -1,0 +1,115 @@
+"""Uploads through `POST /v1/problems` meet the engine's trust rules: a wrong model is never verified."""
+
+from __future__ import annotations
+
+import json
+from typing import Any
+
+import pytest
+import yaml
+
+from tests.api.test_authoring import BANK, atwood_upload
+
+
+def upload(client: Any, headers: dict[str, str], doc: dict[str, Any]) -> Any:
+    return client.post(
+        "/v1/problems", content=json.dumps(doc), headers={**headers, "content-type": "application/json"}
+    )
+
+
+def hanging_spring(ranges: dict[str, list[str]] | None) -> dict[str, Any]:
+    """A mass on a vertical spring of natural length L0, hung from a ceiling: how far below it does it rest?"""
+    model: dict[str, Any] = {
+        "coordinates": ["s"],
+        "bodies": {"bob": {"mass": "m", "position": {"y": "-s"}}},
+        "gravity": "g",
+        "potentials": [{"bodies": ["bob"], "anchor": {"y": 0}, "distance": "d", "energy": "k*(d - L0)^2/2"}],
+        "quantities": {"rest_length": {"equilibrium": "s"}},
+    }
+    if ranges is not None:
+        model["domain"] = {"ranges": ranges}
+    return {
+        "id": "hanging-spring",
+        "title": "Mass hanging on a spring",
+        "topics": ["springs"],
+        "statement": "A mass $m$ hangs on a spring $k$ of natural length $L_0$ from the ceiling.",
+        "symbols": {
+            "m": {"meaning": "mass", "dimension": "kg"},
+            "k": {"meaning": "spring constant", "dimension": "N/m"},
+            "g": {"meaning": "gravity", "dimension": "m/s^2"},
+            "L0": {"meaning": "natural length", "dimension": "m"},
+        },
+        "given": {
+            "m": {"min": 0.5, "max": 2, "unit": "kg"},
+            "k": {"min": 50, "max": 100, "unit": "N/m"},
+            "g": {"min": 9.81, "max": 9.81, "unit": "m/s^2"},
+            "L0": {"min": 0.1, "max": 0.3, "unit": "m"},
+        },
+        "parts": [
+            {
+                "id": "rest_length",
+                "kind": "symbolic",
+                "prompt": "How far below the ceiling does the mass rest?",
+                "answer": "L0 + m*g/k",
+            }
+        ],
+        "model": model,
+    }
+
+
+def _details(response: Any) -> dict[str, str]:
+    assert response.status_code == 422, response.text
+    return {d["path"]: d["message"] for d in response.json()["error"]["details"]}
+
+
+def test_a_spring_whose_side_is_not_declared_is_refused_with_the_reason(client, instructor_headers):
+    details = _details(upload(client, instructor_headers, hanging_spring(None)))
+    assert "not even in d" in details["model.potentials[0].distance"]
+
+
+def test_a_spring_whose_side_is_declared_derives_l0_plus_m_g_over_k(client, instructor_headers):
+    response = upload(client, instructor_headers, hanging_spring({"s": ["0", "oo"]}))
+    assert response.status_code == 201, response.text
+    solution = client.get("/v1/problems/hanging-spring/solution", headers=instructor_headers).json()
+    (reference,) = solution["references"]
+    assert reference["source"] == "derived"
+    assert solution["methods_agree"] is True
+
+
+def test_a_misspelled_quantity_is_refused_even_beside_a_typed_answer(client, instructor_headers):
+    doc = atwood_upload()
+    doc["parts"][1]["quantity"] = "tensoin"
+    doc["parts"][1]["answer"] = "m1*g"
+    details = _details(upload(client, instructor_headers, doc))
+    assert "'tensoin'" in details["parts[1].quantity"]
+
+
+def test_a_part_with_only_a_typed_answer_is_labelled_not_derived(client, instructor_headers):
+    doc = atwood_upload()
+    doc["parts"][1]["id"] = "string_tension"
+    response = upload(client, instructor_headers, doc)
+    assert response.status_code == 201, response.text
+    solution = client.get("/v1/problems/my-atwood/solution", headers=instructor_headers).json()
+    sources = {r["part"]: r["source"] for r in solution["references"]}
+    assert sources["string_tension"] == "not derived"
+    assert sources["acceleration"] == sources["acceleration_numeric"] == "derived"
+
+
+@pytest.mark.parametrize("problem", ["atwood"])
+def test_bank_verify_names_the_parts_that_are_not_derived(problem: str) -> None:
+    from problems.loader import parse_problem
+    from problems.selftest import verify_problem
+
+    doc = yaml.safe_load((BANK / problem / "problem.yaml").read_text())
+    doc["model"] = yaml.safe_load((BANK / problem / "model.yaml").read_text())
+    doc["parts"][1]["id"] = "string_tension"
+    summary = verify_problem(parse_problem(doc), variants=1).summary()
+    assert "not derived (typed answer only): string_tension" in summary
+
+
+def test_a_derivation_fault_is_reported_at_its_place_in_the_model(client, instructor_headers):
+    doc = atwood_upload()
+    doc["model"].pop("elements")
+    doc["model"]["constraints"] = {"string": {"kind": "string", "gap": "y_m1 - y_m2"}}  # the positions break it
+    details = _details(upload(client, instructor_headers, doc))
+    assert "violate" in details["model.constraints.string"]

@@ -1,0 +1,217 @@
+"""A fault of the grader is never the student's: dead workers are replaced, and nothing is filed meanwhile."""
+
+from __future__ import annotations
+
+import asyncio
+import os
+import signal
+import threading
+import time
+from collections.abc import Iterator
+
+import pytest
+from fastapi.testclient import TestClient
+
+from app.db.database import Database
+from app.errors import GraderFault, Unavailable
+from app.grading.pool import GradingPool
+from app.keys import create_key
+from app.main import create_app
+from app.settings import Settings
+from physics.checking import SymbolDecl, SymbolicJob
+from physics.errors import SpecError
+from tests.api.slow_task import pid_or_grade
+
+SYMBOLS = (SymbolDecl("m", "kg"),)
+RECOVERY_DEADLINE = 60  # only so that a broken pool fails the test instead of hanging it
+SUBMIT = "/v1/problems/moving-wedge/parts/wedge_acceleration/submissions"
+CORRECT = "-m g sin(θ)cos(θ)/(M + m sin^2 θ)"
+
+
+def job(answer: str) -> SymbolicJob:
+    return SymbolicJob(answer=answer, expected="m", symbols=SYMBOLS)
+
+
+def make_pool(**overrides: object) -> GradingPool:
+    options: dict[str, object] = dict(
+        workers=1, timeout=5.0, memory_mb=1024, max_tasks=100, queue_size=8, task=pid_or_grade
+    )
+    return GradingPool(**(options | overrides))  # type: ignore[arg-type]
+
+
+@pytest.fixture(scope="module")
+def faulty_pool() -> Iterator[GradingPool]:
+    pool = make_pool()
+    pool.start()
+    yield pool
+    pool.close()
+
+
+def worker_pid(pool: GradingPool) -> int:
+    pid = asyncio.run(pool.check(job("pid")))
+    assert isinstance(pid, int)
+    return pid
+
+
+def graded_after_recovery(pool: GradingPool) -> tuple[str, int]:
+    """Check until grading works again; only 'unavailable' (503) is an acceptable answer meanwhile."""
+    deadline = time.monotonic() + RECOVERY_DEADLINE
+    while True:
+        try:
+            verdict = asyncio.run(pool.check(job("m")))
+            return verdict.outcome.value, worker_pid(pool)
+        except Unavailable as refused:
+            assert refused.status == 503 and refused.headers["Retry-After"]
+            assert time.monotonic() < deadline, "grading did not come back"
+            time.sleep(0.1)
+
+
+@pytest.mark.slow
+def test_an_idle_worker_killed_from_outside_is_replaced_and_grading_resumes(faulty_pool):
+    victim = worker_pid(faulty_pool)
+    os.kill(victim, signal.SIGKILL)  # what the kernel's OOM killer does
+    outcome, worker = graded_after_recovery(faulty_pool)
+    assert outcome == "correct"
+    assert worker != victim
+    assert faulty_pool.ready
+
+
+@pytest.mark.slow
+def test_a_worker_that_dies_mid_check_is_a_retryable_503_not_a_verdict(faulty_pool):
+    with pytest.raises(Unavailable) as refused:
+        asyncio.run(faulty_pool.check(job("die")))
+    assert refused.value.status == 503 and refused.value.headers["Retry-After"]
+    assert graded_after_recovery(faulty_pool)[0] == "correct"
+
+
+@pytest.mark.parametrize(
+    ("answer", "raised"),
+    [
+        pytest.param("recurse", GraderFault, id="RecursionError"),
+        pytest.param("overflow", GraderFault, id="OverflowError"),
+        pytest.param("spec", SpecError, id="SpecError"),  # the caller decides whose reference it was
+    ],
+)
+def test_an_exception_inside_grading_is_a_fault_not_a_verdict(faulty_pool, answer, raised):
+    with pytest.raises(raised):
+        asyncio.run(faulty_pool.check(job(answer)))
+
+
+def test_running_out_of_memory_under_the_worker_limit_is_the_answers_too_large(faulty_pool):
+    verdict = asyncio.run(faulty_pool.check(job("nomemory")))
+    assert (verdict.outcome.value, verdict.reason.value) == ("invalid", "too_large")
+
+
+class GatedPool(GradingPool):
+    """Its first pool starts at once; replacements wait until the test opens the gate."""
+
+    def __init__(self) -> None:
+        super().__init__(
+            workers=1, timeout=5.0, memory_mb=1024, max_tasks=100, queue_size=8, task=pid_or_grade
+        )
+        self.gate = threading.Event()
+        self._made = 0
+
+    def _new_pool(self):  # type: ignore[no-untyped-def]
+        self._made += 1
+        if self._made > 1:
+            self.gate.wait(RECOVERY_DEADLINE)
+        return super()._new_pool()
+
+
+def _key(settings: Settings, role: str, name: str) -> dict[str, str]:
+    database = Database(settings.database_url)
+    try:
+        return {"Authorization": f"Bearer {create_key(database, role, name)[0]}"}
+    finally:
+        database.dispose()
+
+
+@pytest.mark.slow
+def test_while_grading_is_down_ready_and_checks_answer_503_with_retry_after(db: Database):
+    settings = Settings(database_url=db.url, secret="test-secret-0123456789", warm_up=False)
+    pool = GatedPool()
+    pool.start()
+    try:
+        with TestClient(create_app(settings, pool=pool)) as client:
+            headers = _key(settings, "instructor", "prof")
+            body = {"kind": "symbolic", "answer": "m", "expected": "m", "symbols": {"m": {"dimension": "kg"}}}
+            assert client.get("/ready").status_code == 200
+            os.kill(worker_pid(pool), signal.SIGKILL)
+            deadline = time.monotonic() + RECOVERY_DEADLINE
+            while pool.ready:
+                assert time.monotonic() < deadline, "the broken pool was never noticed"
+                time.sleep(0.05)
+            for response in (client.get("/ready"), client.post("/v1/check", json=body, headers=headers)):
+                assert response.status_code == 503
+                assert response.headers["Retry-After"]
+                assert set(response.json()["error"]) == {"code", "message", "details"}
+            pool.gate.set()
+            while (response := client.post("/v1/check", json=body, headers=headers)).status_code == 503:
+                assert time.monotonic() < deadline, "grading did not come back"
+                time.sleep(0.1)
+            assert response.status_code == 200 and response.json()["verdict"] == "correct"
+            assert client.get("/ready").status_code == 200
+    finally:
+        pool.gate.set()
+        pool.close()
+
+
+@pytest.fixture
+def submitting(db: Database, faulty_pool: GradingPool) -> Iterator[tuple[TestClient, dict[str, str]]]:
+    settings = Settings(database_url=db.url, secret="test-secret-0123456789", warm_up=False)
+    with TestClient(create_app(settings, pool=faulty_pool)) as client:
+        yield client, _key(settings, "student", "ada")
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize(
+    ("answer", "status", "code"),
+    [
+        pytest.param("die", 503, "unavailable", id="worker-died"),
+        pytest.param("recurse", 500, "grader_fault", id="RecursionError"),
+        pytest.param("overflow", 500, "grader_fault", id="OverflowError"),
+        pytest.param("spec", 500, "grader_fault", id="stored-reference-fails"),
+    ],
+)
+def test_a_grader_fault_on_a_submission_files_nothing_and_uses_no_attempt(submitting, answer, status, code):
+    client, student = submitting
+    response = client.post(SUBMIT, json={"answer": answer}, headers=student)
+    assert response.status_code == status, response.text
+    assert response.json()["error"]["code"] == code
+    assert client.get("/v1/submissions", headers=student).json()["items"] == []
+    deadline = time.monotonic() + RECOVERY_DEADLINE
+    while (graded := client.post(SUBMIT, json={"answer": CORRECT}, headers=student)).status_code == 503:
+        assert time.monotonic() < deadline, "grading did not come back"
+        time.sleep(0.1)
+    assert graded.status_code == 201, graded.text
+    assert (graded.json()["verdict"], graded.json()["attempts_used"]) == ("correct", 1)
+
+
+@pytest.mark.slow
+def test_the_upload_vetting_pool_replaces_itself_too():
+    """The supervisor both pools use (grading and upload vetting), on a bare pool of one worker."""
+    import multiprocessing
+    from concurrent.futures.process import BrokenProcessPool
+
+    from pebble import ProcessPool
+
+    from app.grading.supervised import PoolUnavailable, SupervisedPool
+
+    context = multiprocessing.get_context("forkserver")
+    pool = SupervisedPool("upload-vetting", lambda: ProcessPool(max_workers=1, context=context))
+    pool.start()
+    try:
+        victim = pool.schedule(os.getpid, (), 30).result(timeout=30)
+        os.kill(victim, signal.SIGKILL)
+        deadline = time.monotonic() + RECOVERY_DEADLINE
+        while True:
+            try:
+                worker = pool.schedule(os.getpid, (), 30).result(timeout=30)
+                break
+            except (PoolUnavailable, BrokenProcessPool):
+                assert time.monotonic() < deadline, "the pool did not come back"
+                time.sleep(0.1)
+        assert worker != victim and pool.healthy
+    finally:
+        pool.close()

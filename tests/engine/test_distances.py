@@ -1,0 +1,75 @@
+"""Distances in potentials are lengths: the hanging-spring trap derives the right answer or is refused."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import pytest
+import sympy
+
+from physics.engine import derive, load_model
+from physics.errors import SpecErrors
+
+NAMES = ("m", "k", "g", "L0")
+SYMBOLS = {name: sympy.Symbol(name, positive=True) for name in NAMES}
+m, k, g, L0 = (SYMBOLS[n] for n in NAMES)
+
+
+def hanging_spring(
+    position: str, coordinate: str, ranges: dict[str, list[str]] | None = None
+) -> dict[str, Any]:
+    """A mass on a vertical spring of natural length L0 hung from an anchor at the origin."""
+    data: dict[str, Any] = {
+        "coordinates": [coordinate],
+        "bodies": {"bob": {"mass": "m", "position": {"y": position}}},
+        "gravity": "g",
+        "potentials": [{"bodies": ["bob"], "anchor": {"y": 0}, "distance": "d", "energy": "k*(d - L0)^2/2"}],
+        "quantities": {"rest": {"equilibrium": coordinate}, "omega": {"angular_frequency": coordinate}},
+    }
+    if ranges is not None:
+        data["domain"] = {"ranges": ranges}
+    return data
+
+
+def test_a_spring_whose_side_is_not_declared_is_refused_with_the_reason() -> None:
+    with pytest.raises(SpecErrors) as caught:
+        load_model(hanging_spring("y", "y"), SYMBOLS)
+    (error,) = caught.value.errors
+    assert error.path == ("potentials", 0, "distance")
+    assert "not even in d" in error.message
+    assert "domain.ranges" in error.message
+
+
+@pytest.mark.parametrize(
+    ("position", "coordinate", "ranges", "rest"),
+    [
+        pytest.param("y", "y", {"y": ["-oo", "0"]}, -(L0 + m * g / k), id="below-the-anchor"),
+        pytest.param("-s", "s", {"s": ["0", "oo"]}, L0 + m * g / k, id="length-down-from-the-anchor"),
+        pytest.param("y", "y", {"y": ["0", "oo"]}, L0 - m * g / k, id="standing-on-the-spring"),
+    ],
+)
+def test_a_declared_side_gives_the_extension_m_g_over_k(
+    position: str, coordinate: str, ranges: dict[str, list[str]], rest: sympy.Expr
+) -> None:
+    result = derive(load_model(hanging_spring(position, coordinate, ranges), SYMBOLS))
+    assert sympy.simplify(result.quantities["rest"] - rest) == 0
+    assert sympy.simplify(result.quantities["omega"] - sympy.sqrt(k / m)) == 0
+    assert set(result.simulation) == {"rest", "omega"}
+
+
+def test_an_energy_even_in_the_distance_needs_no_side() -> None:
+    data = hanging_spring("y", "y")
+    data["potentials"][0]["energy"] = "k*d^2/2"
+    result = derive(load_model(data, SYMBOLS))
+    assert sympy.simplify(result.quantities["rest"] + m * g / k) == 0
+
+
+def test_a_range_that_straddles_the_anchor_does_not_fix_the_side() -> None:
+    with pytest.raises(SpecErrors) as caught:
+        load_model(hanging_spring("y", "y", {"y": ["-2*L0", "L0"]}), SYMBOLS)
+    assert caught.value.errors[0].path == ("potentials", 0, "distance")
+
+
+def test_a_bounded_range_on_one_side_fixes_it() -> None:
+    result = derive(load_model(hanging_spring("y", "y", {"y": ["-10*L0", "-L0/100"]}), SYMBOLS))
+    assert sympy.simplify(result.quantities["rest"] + L0 + m * g / k) == 0

@@ -1,0 +1,114 @@
+"""A real `physcheck serve` survives SIGKILL of a grading worker and of the fork server behind them."""
+
+from __future__ import annotations
+
+import os
+import signal
+import time
+from pathlib import Path
+
+import httpx
+import pytest
+
+from app.db.database import Database
+from app.db.migrate import migrate
+from app.keys import create_key
+from tests.service.live import LiveServer
+
+pytestmark = pytest.mark.slow
+
+RECOVERY_DEADLINE = 90  # only so that a server that never recovers fails the test instead of hanging it
+BODY = {
+    "kind": "symbolic",
+    "answer": "m g",
+    "expected": "g*m",
+    "symbols": {"m": {"dimension": "kg"}, "g": {"dimension": "m/s^2"}},
+}
+
+
+def _children(pid: int) -> list[int]:
+    found = []
+    for entry in Path("/proc").iterdir():
+        if entry.name.isdigit():
+            try:
+                stat = (entry / "stat").read_text()
+            except OSError:
+                continue
+            # The command name may hold spaces and parentheses: the fields follow its last ')'.
+            if int(stat.rsplit(")", 1)[1].split()[1]) == pid:
+                found.append(int(entry.name))
+    return found
+
+
+def _cmdline(pid: int) -> str:
+    try:
+        return (Path("/proc") / str(pid) / "cmdline").read_bytes().replace(b"\0", b" ").decode()
+    except OSError:
+        return ""
+
+
+def _fork_server(server: LiveServer) -> int:
+    assert server.process is not None
+    (found,) = [p for p in _children(server.process.pid) if "forkserver" in _cmdline(p)]
+    return found
+
+
+def _grading_check(http: httpx.Client) -> httpx.Response:
+    return http.post("/v1/check", json=BODY)
+
+
+def _recovers(server: LiveServer, http: httpx.Client) -> list[int]:
+    """Poll /ready and a check until both succeed; return every status seen meanwhile."""
+    seen, deadline = [], time.monotonic() + RECOVERY_DEADLINE
+    while True:
+        ready = httpx.get(f"{server.url}/ready", timeout=10)
+        check = _grading_check(http)
+        seen += [ready.status_code, check.status_code]
+        for response in (ready, check):
+            if response.status_code == 503:
+                assert response.headers["Retry-After"], response.text
+                assert set(response.json()["error"]) == {"code", "message", "details"}
+        if ready.status_code == check.status_code == 200:
+            assert check.json()["verdict"] == "correct"
+            return seen
+        assert time.monotonic() < deadline, f"not recovered; statuses {seen}"
+        time.sleep(0.1)
+
+
+@pytest.fixture
+def served(database_url: str, tmp_path: Path):
+    migrate(database_url)
+    database = Database(database_url)
+    try:
+        key = create_key(database, "instructor", "prof")[0]
+    finally:
+        database.dispose()
+    server = LiveServer(database_url, tmp_path / "server.log", warm_up="false", check_workers="2").start()
+    try:
+        with httpx.Client(
+            base_url=server.url, headers={"Authorization": f"Bearer {key}"}, timeout=30
+        ) as http:
+            assert _grading_check(http).status_code == 200
+            yield server, http
+    finally:
+        server.kill()
+
+
+def test_grading_resumes_after_an_idle_worker_is_killed(served):
+    server, http = served
+    workers = _children(_fork_server(server))
+    assert workers, "no grading workers found"
+    for worker in workers:  # both, so that no running task keeps pebble's pool alive
+        os.kill(worker, signal.SIGKILL)
+    seen = _recovers(server, http)
+    assert set(seen) <= {200, 503}, seen
+    assert not set(_children(_fork_server(server))) & set(workers)
+
+
+def test_grading_resumes_after_the_fork_server_is_killed(served):
+    server, http = served
+    fork_server = _fork_server(server)
+    os.kill(fork_server, signal.SIGKILL)
+    seen = _recovers(server, http)
+    assert set(seen) <= {200, 503}, seen
+    assert _fork_server(server) != fork_server
