@@ -170,10 +170,11 @@ class CompiledProblem:
         return part.job(answer, variant)
 
     def prepare(self) -> CompiledProblem:
-        """Prepare every symbolic part's reference now (sample points and values), e.g. to persist them."""
+        """Prepare every symbolic part's reference now (sample points, values, mistakes, limits), e.g. to
+        persist them."""
         for part in self.parts.values():
             if isinstance(part, CompiledSymbolicPart):
-                part.question  # noqa: B018 - computed and cached
+                part.question.reference.complete()
         return self
 
     def reference_expressions(self) -> dict[str, sympy.Expr]:
