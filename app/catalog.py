@@ -26,8 +26,10 @@ from app.db.errors import ProblemExists, ProblemNotFound
 from app.db.records import ProblemRecord
 from physics.checking import CheckJob
 from problems.compiled import CompiledProblem, build_problem, code_fingerprint
+from problems.errors import ProblemInvalid
 from problems.loader import load_bank, parse_problem
 from problems.schema import ProblemDocument
+from problems.semantics import semantic_errors
 from problems.variants import Variant, draw_variant, student_view
 
 log = logging.getLogger("physcheck.catalog")
@@ -103,9 +105,23 @@ class Catalog:
         self._compiling: dict[tuple[str, int, str], threading.Lock] = {}
 
     def sync_builtin(self) -> list[ProblemRecord]:
-        """Store the built-in bank: unchanged files keep their version, edited ones get a new one."""
+        """Store the built-in bank: unchanged files keep their version, edited ones get a new one.
+
+        Only a new or edited document has its meaning checked (a restart reads the bank's shape only:
+        the stored version was checked when it was stored).
+        """
+        stored = {record.id: record.document_hash for record in self.list()}
+        documents = load_bank(self._bank_dir, check_meaning=False)
+        faults = [
+            (f"{doc.id}:{path}", message)
+            for doc in documents
+            if stored.get(doc.id) != problem_repository.document_hash(doc.model_dump(mode="json"))
+            for path, message in semantic_errors(doc)
+        ]
+        if faults:
+            raise ProblemInvalid(faults, "the built-in bank")
         saved = []
-        for doc in load_bank(self._bank_dir):
+        for doc in documents:
             try:
                 with self._database.session() as session:
                     saved.append(

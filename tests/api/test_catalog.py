@@ -121,3 +121,13 @@ def test_changed_checker_code_compiles_again(db, small_bank, compilations, monke
     monkeypatch.setattr(catalog_module, "code_fingerprint", lambda: "the code has changed")
     start(db, small_bank)
     assert sorted(compilations[2:]) == ["atwood", "incline-pulley"]
+
+
+def test_an_edited_bank_document_has_its_meaning_checked_again(db, small_bank):
+    from problems.errors import ProblemInvalid
+
+    start(db, small_bank)
+    problem = small_bank / "atwood" / "problem.yaml"
+    problem.write_text(problem.read_text().replace("answer: 2*m1*m2*g/(m1 + m2)", "answer: 2*m1*q*g/(m1 + m2)"))
+    with pytest.raises(ProblemInvalid, match="q"):
+        Catalog(db, SECRET, small_bank).sync_builtin()
