@@ -9,6 +9,7 @@ from __future__ import annotations
 import asyncio
 import logging
 import multiprocessing
+from collections.abc import Callable
 from concurrent.futures import TimeoutError as FutureTimeout
 from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass, field, replace
@@ -16,22 +17,26 @@ from typing import Any, Literal
 
 from pebble import ProcessExpired, ProcessPool
 
-from app.errors import Unavailable
+from app.errors import Busy, Unavailable
 from app.grading.supervised import PoolUnavailable, SupervisedPool
 from app.grading.worker import limit_memory
 from app.instructor.described import Described, describe
 from app.web.document_text import render_problems
 from physics.errors import DerivationError
+from physics.figures import model_figure
 from problems.compiled import compile_problem
 from problems.errors import ProblemInvalid
 from problems.loader import parse_problem
 from problems.locate import locate
-from problems.schema import format_path
+from problems.modelinfo import load_doc_model
+from problems.schema import ProblemDocument, format_path
 from problems.selftest import verify_problem
-from problems.variants import fixed_variant
+from problems.symbols import symbol_table
+from problems.variants import fixed_variant, si_values
 
 log = logging.getLogger("physcheck.authoring")
 UPLOAD_SELFTEST_VARIANTS = 5
+UPLOAD_RETRY_AFTER = 10  # seconds: a vetting takes seconds to minutes
 
 
 @dataclass(frozen=True)
@@ -45,6 +50,7 @@ class Vetted:
     described: Described | None = None
     warnings: list[tuple[str, str]] = field(default_factory=list)
     lines: dict[str, int] = field(default_factory=dict)
+    figure: str | None = None  # SVG drawn from the model at the givens' midpoints
 
 
 def vet(source: bytes, fmt: Literal["json", "yaml"]) -> Vetted:
@@ -83,14 +89,38 @@ def _vet(source: bytes, fmt: Literal["json", "yaml"]) -> Vetted:
         return Vetted(None, errors)
     # Midpoint values of every given: the numbers a preview shows before any student has a variant.
     described = describe(compile_problem(doc), fixed_variant(doc, {}))
-    return Vetted(doc.model_dump(mode="json"), described=described, warnings=render_problems(doc))
+    return Vetted(
+        doc.model_dump(mode="json"), described=described, warnings=render_problems(doc), figure=_figure(doc)
+    )
+
+
+def _figure(doc: ProblemDocument) -> str | None:
+    """The figure a student would see (at the midpoint values), or None: it only illustrates."""
+    if doc.model is None:
+        return None
+    try:
+        table = symbol_table(doc)
+        values = si_values(doc, fixed_variant(doc, {}), table)
+        model = load_doc_model(doc, table)
+        return model_figure(model, {s.name: float(v) for s, v in values.items()}, title=doc.title)
+    except Exception:  # a model the figures cannot draw yet still makes a good problem
+        return None
 
 
 class AuthoringPool:
-    def __init__(self, timeout: float, memory_mb: int):
+    """One vetting worker with a bounded queue in front of it, and at most one upload per instructor
+    key in it at a time: a vetting may take minutes, so one instructor must not make all others wait."""
+
+    def __init__(self, timeout: float, memory_mb: int, queue_size: int = 4):
         self._timeout = timeout
         self._memory_mb = memory_mb
+        self._capacity = 1 + queue_size
+        self._in_flight = 0
+        self._owners: set[str] = set()
         self._pool: SupervisedPool | None = None
+
+    # The function the worker runs (tests put a slow one here).
+    _task: Callable[[bytes, Literal["json", "yaml"]], Vetted] = staticmethod(vet)
 
     def _new_pool(self) -> ProcessPool:
         context = multiprocessing.get_context("forkserver")
@@ -107,12 +137,31 @@ class AuthoringPool:
             self._pool.close()
             self._pool = None
 
-    async def vet(self, source: bytes, fmt: Literal["json", "yaml"]) -> Vetted:
+    async def vet(self, source: bytes, fmt: Literal["json", "yaml"], owner: str | None = None) -> Vetted:
+        """Vet in the worker; 503 + Retry-After when the queue is full or `owner` (an instructor key)
+        already has an upload being vetted."""
+        if self._in_flight >= self._capacity:
+            raise Busy("Uploads are queued to the limit; try again shortly.", retry_after=UPLOAD_RETRY_AFTER)
+        if owner is not None and owner in self._owners:
+            raise Busy(
+                "Your previous upload is still being checked; send the next when it is done.",
+                retry_after=UPLOAD_RETRY_AFTER,
+            )
         if self._pool is None:
             self.start()
         assert self._pool is not None
+        self._in_flight += 1
+        if owner is not None:
+            self._owners.add(owner)
         try:
-            return await asyncio.wrap_future(self._pool.schedule(vet, (source, fmt), self._timeout))
+            return await self._vet(self._pool, source, fmt)
+        finally:
+            self._in_flight -= 1
+            self._owners.discard(owner or "")
+
+    async def _vet(self, pool: SupervisedPool, source: bytes, fmt: Literal["json", "yaml"]) -> Vetted:
+        try:
+            return await asyncio.wrap_future(pool.schedule(self._task, (source, fmt), self._timeout))
         except FutureTimeout:
             return Vetted(
                 None, [("model", f"deriving and self-testing took longer than {self._timeout:.0f} s")]

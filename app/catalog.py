@@ -25,12 +25,15 @@ from app.db.database import Database
 from app.db.errors import ProblemExists, ProblemNotFound
 from app.db.records import ProblemRecord
 from physics.checking import CheckJob
+from physics.figures import model_figure
 from problems.compiled import CompiledProblem, build_problem, code_fingerprint
 from problems.errors import ProblemInvalid
 from problems.loader import load_bank, parse_problem
+from problems.modelinfo import load_doc_model
 from problems.schema import ProblemDocument
 from problems.semantics import semantic_errors
-from problems.variants import Variant, draw_variant, student_view
+from problems.symbols import symbol_table
+from problems.variants import Variant, draw_variant, si_values, student_view
 
 log = logging.getLogger("physcheck.catalog")
 T = TypeVar("T")
@@ -241,3 +244,17 @@ class Catalog:
 
     def variant(self, record: ProblemRecord, student: str) -> Variant:
         return draw_variant(self.document(record), record.version, student, self._secret)
+
+    def figure(self, problem_id: str, student: str) -> str | None:
+        """The problem's figure (SVG) with this student's values; None for a problem with no model."""
+        try:
+            record = self.get(problem_id)
+        except ProblemNotFound:
+            return None
+        doc = self.document(record)
+        if doc.model is None:
+            return None
+        table = symbol_table(doc)
+        values = si_values(doc, self.variant(record, student), table)
+        model = load_doc_model(doc, table)
+        return model_figure(model, {s.name: float(v) for s, v in values.items()}, title=doc.title)

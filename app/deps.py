@@ -4,11 +4,12 @@ from __future__ import annotations
 
 from typing import Annotated
 
-from fastapi import Depends, Header, Request
+from fastapi import Depends, Request, Security
 
 from app.auth import Principal, bearer_token
 from app.errors import Forbidden, RateLimited, Unauthenticated
 from app.lti.sessions import principal_from_session
+from app.openapi import bearer_scheme
 from app.services import Services
 
 
@@ -21,9 +22,10 @@ ServicesDep = Annotated[Services, Depends(get_services)]
 
 
 def current_principal(
-    request: Request, services: ServicesDep, authorization: Annotated[str | None, Header()] = None
+    request: Request, services: ServicesDep, _scheme: Annotated[object, Security(bearer_scheme)] = None
 ) -> Principal:
     """The caller: a bearer API key, or else the session an LTI launch opened (POSTs need its CSRF token)."""
+    authorization = request.headers.get("authorization")
     if authorization is None:
         principal = principal_from_session(request)
         if principal is None:

@@ -22,6 +22,7 @@ from app.lti.context import LtiContext
 from app.lti.grades import queue_grade
 from app.lti.outbox import OutboxWorker
 from app.middleware import BodyLimit, RequestContext, configure_logging
+from app.openapi import install_docs
 from app.ratelimit import rate_limiters
 from app.routers import authoring as authoring_routes
 from app.routers import check, health, problems, submissions
@@ -65,9 +66,14 @@ def create_app(
                 grading.close()
             raise
         # Started on the first upload: most instances never vet one.
-        authoring = AuthoringPool(settings.upload_timeout_seconds, settings.check_memory_mb)
+        authoring = AuthoringPool(
+            settings.upload_timeout_seconds, settings.check_memory_mb, settings.upload_queue_size
+        )
         key_limiter, student_limiter = rate_limiters(
-            settings.redis_url, settings.rate_limit_per_minute, settings.student_rate_limit_per_minute
+            settings.redis_url,
+            settings.rate_limit_per_minute,
+            settings.student_rate_limit_per_minute,
+            settings.redis_prefix,
         )
         app.state.services = Services(
             settings=settings,
@@ -86,6 +92,7 @@ def create_app(
             transport=lms_transport,
             student_view=storage.catalog.student_view,
             authenticate_key=storage.keys.authenticate,
+            figure=storage.catalog.figure,
             rate_limit=functools.partial(budget_wait, app.state.services),
         )
         outbox = OutboxWorker(storage.database, lms_transport)
@@ -108,7 +115,10 @@ def create_app(
         version="1",
         summary="Checks physics answers: symbolic, numeric with units, against engine-derived references.",
         lifespan=lifespan,
+        docs_url=None,
+        redoc_url=None,
     )
+    install_docs(app)
     install_error_handlers(app)
     app.add_middleware(BodyLimit, max_bytes=settings.max_body_bytes)
     app.add_middleware(RequestContext)

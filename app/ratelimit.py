@@ -2,6 +2,11 @@
 
 One instance counts in memory; several instances share their counts through Redis when
 `PHYSCHECK_REDIS_URL` is set, so a caller's budget is the same whichever instance it reaches.
+
+Redis is asked with short timeouts and behind a circuit breaker: when it fails, each instance counts
+in its own memory (a caller's budget is then at most N times the limit over N instances: limited, and
+with no latency spent on a dead or hung Redis) and tries Redis again every `REDIS_RETRY_SECONDS`,
+logging the outage once a minute at most.
 """
 
 from __future__ import annotations
@@ -60,19 +65,84 @@ return 0
 """
 
 
-class RedisRateLimiter:
-    """The same window, kept in Redis; if Redis cannot be reached the request is allowed (and logged):
-    a limiter outage must not take the service down with it."""
+REDIS_TIMEOUT_SECONDS = 0.1  # connect and read: Redis on the local network answers in well under 1 ms
+REDIS_RETRY_SECONDS = 10.0
+REDIS_LOG_EVERY_SECONDS = 60.0
 
-    def __init__(self, client: Any, per_minute: int, prefix: str, clock: Callable[[], float] = time.time):
+
+class CircuitBreaker:
+    """Closed, Redis is asked; after a failure, open: Redis is skipped for `retry_seconds`, then one
+    caller may try it (the others keep skipping it) and closes the breaker if it answers."""
+
+    def __init__(
+        self,
+        retry_seconds: float = REDIS_RETRY_SECONDS,
+        log_every: float = REDIS_LOG_EVERY_SECONDS,
+        clock: Callable[[], float] = time.monotonic,
+    ):
+        self._retry_seconds = retry_seconds
+        self._log_every = log_every
+        self._clock = clock
+        self._lock = threading.Lock()
+        self._open_until: float | None = None  # None: closed
+        self._probing = False
+        self._logged_at: float | None = None
+
+    @property
+    def closed(self) -> bool:
+        return self._open_until is None
+
+    def allow(self) -> bool:
+        with self._lock:
+            if self._open_until is None:
+                return True
+            if self._probing or self._clock() < self._open_until:
+                return False
+            self._probing = True
+            return True
+
+    def succeeded(self) -> None:
+        with self._lock:
+            if self._open_until is not None:
+                log.warning("Redis answers again; rate limits are shared through it again")
+            self._open_until, self._probing, self._logged_at = None, False, None
+
+    def failed(self, error: Exception) -> None:
+        with self._lock:
+            now = self._clock()
+            self._open_until, self._probing = now + self._retry_seconds, False
+            if self._logged_at is None or now - self._logged_at >= self._log_every:
+                self._logged_at = now
+                log.error(
+                    "Redis unavailable (%s); counting rate limits in this process, retrying every %.0f s",
+                    error,
+                    self._retry_seconds,
+                )
+
+
+class RedisRateLimiter:
+    """The same window, kept in Redis; while Redis fails (see CircuitBreaker), counted in memory."""
+
+    def __init__(
+        self,
+        client: Any,
+        per_minute: int,
+        prefix: str,
+        clock: Callable[[], float] = time.time,
+        breaker: CircuitBreaker | None = None,
+    ):
         self._per_minute = per_minute
         self._prefix = prefix
         self._clock = clock
         self._script = client.register_script(_SLIDING_WINDOW)
+        self._breaker = breaker or CircuitBreaker()
+        self._fallback = MemoryRateLimiter(per_minute)
 
     def retry_after(self, caller: str) -> int | None:
         import redis
 
+        if not self._breaker.allow():
+            return self._fallback.retry_after(caller)
         now_ms = int(self._clock() * 1000)
         try:
             wait = int(
@@ -82,19 +152,31 @@ class RedisRateLimiter:
                 )
             )
         except redis.RedisError as error:
-            log.error("rate limiter unavailable, allowing the request: %s", error)
-            return None
+            self._breaker.failed(error)
+            return self._fallback.retry_after(caller)
+        self._breaker.succeeded()
         return wait or None
 
 
-def rate_limiters(redis_url: str | None, per_key: int, per_student: int) -> tuple[RateLimiter, RateLimiter]:
-    """The per-key and per-student limiters: shared through Redis when a URL is given."""
+def rate_limiters(
+    redis_url: str | None, per_key: int, per_student: int, prefix: str = "physcheck"
+) -> tuple[RateLimiter, RateLimiter]:
+    """The per-key and per-student limiters: shared through Redis when a URL is given, under keys that
+    start with `prefix` (the deployment's name, so that several deployments can share one Redis)."""
     if redis_url is None:
         return MemoryRateLimiter(per_key), MemoryRateLimiter(per_student)
     import redis
+    from redis.backoff import NoBackoff
+    from redis.retry import Retry
 
-    client = redis.Redis.from_url(redis_url, socket_timeout=0.5, socket_connect_timeout=0.5)
+    client = redis.Redis.from_url(
+        redis_url,
+        socket_timeout=REDIS_TIMEOUT_SECONDS,
+        socket_connect_timeout=REDIS_TIMEOUT_SECONDS,
+        retry=Retry(NoBackoff(), 0),  # redis-py retries 3 times with backoff by default: seconds per request
+    )
+    breaker = CircuitBreaker()  # one outage, one breaker, one log line
     return (
-        RedisRateLimiter(client, per_key, "physcheck:rate:key"),
-        RedisRateLimiter(client, per_student, "physcheck:rate:student"),
+        RedisRateLimiter(client, per_key, f"{prefix}:rate:key", breaker=breaker),
+        RedisRateLimiter(client, per_student, f"{prefix}:rate:student", breaker=breaker),
     )

@@ -31,12 +31,16 @@ class Settings(BaseSettings):
 
     # Above the answer limit on purpose: an over-long answer gets an `invalid` verdict, not a 413.
     upload_timeout_seconds: float = Field(default=120.0, gt=0)
+    # Uploads waiting for the one vetting worker before 503 + Retry-After (one per instructor key at most).
+    upload_queue_size: int = Field(default=4, ge=0)
 
     max_body_bytes: int = Field(default=2 * 1024 * 1024, ge=1024)
     max_answer_chars: int = Field(default=2000, ge=10)
 
     # Shared rate-limit counts for several instances (redis://host:6379/0); unset: per instance.
     redis_url: str | None = None
+    # Start of every Redis key, so that several deployments can share one Redis.
+    redis_prefix: str = Field(default="physcheck", min_length=1, max_length=64, pattern=r"^[A-Za-z0-9_.-]+$")
     rate_limit_per_minute: int = Field(default=600, ge=1)
     student_rate_limit_per_minute: int = Field(default=60, ge=1)
 

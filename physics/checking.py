@@ -10,6 +10,7 @@ cached per worker.
 
 from __future__ import annotations
 
+import dataclasses
 import pickle
 import threading
 from collections import OrderedDict
@@ -19,6 +20,7 @@ from functools import cached_property, lru_cache
 
 import sympy
 
+from physics.dimensions import Dimension
 from physics.errors import AnswerError, SpecError
 from physics.mathinput import InputLimits, parse_math
 from physics.numeric import NumericSpec, check_numeric
@@ -32,6 +34,8 @@ from physics.symbolic import (
     make_symbol,
     prepare_reference,
 )
+from physics.symbolic.dimensional import DimensionMismatch, UnknownDimension, expression_dimension
+from physics.symbolic.reading import read_symbolic_answer
 from physics.units import unit_dimension
 from physics.verdict import InputProblem, ReadAs, Verdict
 
@@ -144,12 +148,19 @@ def check_answer(
     """Grade one answer; an unreadable answer is an `invalid` verdict, never an exception."""
     if isinstance(question, NumericSpec):
         return check_numeric(answer, question)
+    reference = question.reference
+    dimensions = {symbol.name: dim for symbol, dim in reference.dims.items()}
     try:
-        parsed = parse_math(answer, question.names, limits=limits or InputLimits())
-        judgement = judge_symbolic(parsed.expr, question.reference)
+        parsed = read_symbolic_answer(
+            answer, question.names, limits or InputLimits(), dimensions, reference.dimension
+        )
+        judgement = judge_symbolic(parsed.expr, reference)
     except AnswerError as error:
         return Verdict.invalid(error)
-    return Verdict.graded(judgement, parsed.read_as)
+    verdict = Verdict.graded(judgement, parsed.read_as)
+    if parsed.read_as.note is not None:  # the reading was chosen by dimension: say so first
+        return dataclasses.replace(verdict, feedback=f"{parsed.read_as.note}. {verdict.feedback}")
+    return verdict
 
 
 @dataclass(frozen=True)
@@ -166,14 +177,45 @@ def preview(job: CheckJob) -> Preview:
         verdict = check_numeric(job.answer, job.spec)
         return Preview(verdict.read_as, verdict.error)
     if isinstance(job, PartJob):
-        names = compiled_question(job).names
+        compiled = compiled_question(job)
+        names = compiled.names
+        symbols = compiled.context.symbols
+        dimensions = {spec.name: spec.dimension for spec in symbols.values() if spec.dimension is not None}
+        try:
+            expected_dimension: Dimension | None = expression_dimension(
+                compiled.expected,
+                {s: spec.dimension for s, spec in symbols.items() if spec.dimension is not None},
+            )
+        except (DimensionMismatch, UnknownDimension):
+            expected_dimension = None
     else:
-        table = {decl.name: make_symbol(symbol_spec(decl)) for decl in job.symbols}
+        specs = {decl.name: symbol_spec(decl) for decl in job.symbols}
+        table = {name: make_symbol(spec) for name, spec in specs.items()}
         names = table if job.allowed is None else {n: table[n] for n in job.allowed if n in table}
+        dimensions = {name: spec.dimension for name, spec in specs.items() if spec.dimension is not None}
+        expected_dimension = _expected_dimension(job.expected, table, dimensions)
     try:
-        return Preview(parse_math(job.answer, names, limits=job.limits_config).read_as, None)
+        read = read_symbolic_answer(
+            job.answer,
+            names,
+            job.limits_config,
+            dimensions,
+            expected_dimension,
+        )
+        return Preview(read.read_as, None)
     except AnswerError as error:
         return Preview(None, InputProblem(error.message, error.position))
+
+
+def _expected_dimension(
+    expected: str, table: Mapping[str, sympy.Symbol], dimensions: Mapping[str, Dimension]
+) -> Dimension | None:
+    """The dimension a symbolic answer must have, for settling its ambiguous divisions (None: unknown)."""
+    try:
+        reference = read_expression(expected, table, ("expected",))
+        return expression_dimension(reference, {table[name]: dim for name, dim in dimensions.items()})
+    except (SpecError, DimensionMismatch, UnknownDimension):
+        return None
 
 
 def run_job(job: CheckJob) -> Verdict:

@@ -4,6 +4,7 @@
      ├── AnswerError        an answer could not be read: an `invalid` verdict, no attempt used
      │    ├── ParseError          reason parse_error
      │    ├── AmbiguousInput      reason ambiguous (carries both readings)
+     │    │    └── AmbiguousDivision   `a/b c`, which the expected dimension may settle
      │    ├── UnknownSymbol       reason unknown_symbol (carries the allowed names)
      │    ├── UnknownFunction     reason unknown_function (carries the allowed functions)
      │    ├── TooLarge            reason too_large (a size limit checked before evaluation)
@@ -51,6 +52,10 @@ class AmbiguousInput(AnswerError):
     def __init__(self, message: str, position: int | None, readings: Sequence[str]) -> None:
         super().__init__(message, position)
         self.readings = tuple(readings)
+
+
+class AmbiguousDivision(AmbiguousInput):
+    """`a/b c`: (a/b)·c or a/(b·c); `position` is the `/`, which a reader may settle by dimension."""
 
 
 class UnknownSymbol(AnswerError):

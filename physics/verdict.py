@@ -39,6 +39,7 @@ class ReadAs:
 
     text: str
     latex: str
+    note: str | None = None  # how one of several readings was chosen (by the expected dimension)
 
 
 @dataclass(frozen=True)

@@ -111,6 +111,8 @@ class CompiledNumericPart:
     document: ProblemDocument = field(repr=False)
     table: Mapping[str, sympy.Symbol] = field(repr=False)
     derived: bool = False  # its expression is a model quantity derived by the engine
+    arithmetic: bool = True
+    units_system: str | None = None
 
     def reference(self, variant: Variant) -> Decimal:
         """The expected value for this student, in `units`, to 12 significant figures."""
@@ -124,6 +126,8 @@ class CompiledNumericPart:
             units=None if dimensionless else self.units,
             units_required=self.units_required and not dimensionless,
             tolerance=self.tolerance,
+            arithmetic=self.arithmetic,
+            units_system=self.units_system,
         )
 
     def job(self, answer: str, variant: Variant) -> NumericJob:
@@ -397,7 +401,17 @@ def _numeric_part(
     _require_dimension(expr, part, specs, table, path)
     tolerance = Tolerance(rel=part.tolerance.rel, abs=part.tolerance.abs, sigfigs=part.tolerance.sigfigs)
     return CompiledNumericPart(
-        part.id, part.of, expr, part.units, part.units_required, tolerance, doc, table, from_model
+        part.id,
+        part.of,
+        expr,
+        part.units,
+        part.units_required,
+        tolerance,
+        doc,
+        table,
+        from_model,
+        arithmetic=part.arithmetic,
+        units_system=part.units_system,
     )
 
 

@@ -16,7 +16,7 @@ import sympy
 from physics.engine import derive, load_model
 from physics.errors import SpecError, SpecErrors
 from problems.schema import ProblemDocument
-from problems.symbols import symbol_table
+from problems.symbols import symbol_specs, symbol_table
 
 MIN_AGREEING_METHODS = 2  # a derived quantity counts as checked when two methods give it
 
@@ -61,7 +61,10 @@ def load_doc_model(doc: ProblemDocument, table: Mapping[str, sympy.Symbol]) -> A
     """The engine's Model for `doc.model`; raises SpecError/SpecErrors with paths inside the model."""
     if doc.model is None:
         raise SpecError("the problem has no model", ("model",))
-    return load_model(doc.model, table)
+    dimensions = {
+        name: spec.dimension for name, spec in symbol_specs(doc).items() if spec.dimension is not None
+    }
+    return load_model(doc.model, table, dimensions)
 
 
 def model_quantity_names(doc: ProblemDocument) -> frozenset[str]:

@@ -23,16 +23,42 @@ MAX_TEXT = 20_000
 MAX_EXPRESSION = 2_000
 MAX_ITEMS = 64
 
+# What the database and the grader can hold: attempt counters are 32-bit integers (and a limit this
+# high is no limit in practice); given values, tolerances and bounds are exact decimals that the grader
+# also turns into floats, so their size and precision stay far inside a double's range.
+MAX_ATTEMPTS = 1_000_000
+MAX_DIGITS = 40
+MAX_EXPONENT = 100
+
 _SLUG = r"^[a-z0-9]+(?:-[a-z0-9]+)*$"
 _PART_ID = r"^[a-z][a-z0-9_]*$"
 _NUMBER_TEXT = re.compile(r"^[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?$")
 
 
 def _to_decimal(value: Any) -> Any:
-    """Numbers become exact decimals as written (9.81 stays 9.81); bools and non-finite values are refused."""
+    """Numbers become exact decimals as written (9.81 stays 9.81); bools, non-finite values and numbers
+    too large, too small or too precise to grade are refused."""
+    return _in_range(_as_decimal(value))
+
+
+def _in_range(value: Decimal) -> Decimal:
+    if not value.is_finite():
+        raise ValueError("must be a finite number")
+    if value and not -MAX_EXPONENT <= value.adjusted() <= MAX_EXPONENT:
+        raise ValueError(f"must be between 1e-{MAX_EXPONENT} and 1e{MAX_EXPONENT} in size (or 0)")
+    # Not normalize(): it rounds to the context's 28 digits first.
+    if len("".join(map(str, value.as_tuple().digits)).strip("0")) > MAX_DIGITS:
+        raise ValueError(f"must have at most {MAX_DIGITS} significant digits")
+    return value
+
+
+def _as_decimal(value: Any) -> Decimal:
     if isinstance(value, bool):
         raise ValueError("must be a number, not true/false")
     if isinstance(value, int):
+        # Compared before converting: a 10,000-digit integer is refused without building it.
+        if abs(value) >= 10 ** (MAX_EXPONENT + 1):
+            raise ValueError(f"must be between 1e-{MAX_EXPONENT} and 1e{MAX_EXPONENT} in size (or 0)")
         return Decimal(value)
     if isinstance(value, float):
         if not math.isfinite(value):
@@ -49,14 +75,30 @@ def _to_decimal(value: Any) -> Any:
 
 
 def _to_bound(value: Any) -> Any:
-    """A range bound: a number (kept exact) or expression text such as "pi/2"."""
+    """A range bound: a number (kept exact) or expression text such as "pi/2"; text that is a plain
+    number ("1e500") is held to the limits of a number."""
     if isinstance(value, str):
-        return value
+        return _to_decimal(value) if _NUMBER_TEXT.match(value.strip()) else value
     if isinstance(value, bool) or not isinstance(value, int | float | Decimal):
         raise ValueError("must be a number or expression text")
     return _to_decimal(value)
 
 
+def _whole(value: Any) -> Any:
+    """YAML and JSON `true` would otherwise pass as the integer 1."""
+    if isinstance(value, bool):
+        raise ValueError("must be a whole number, not true/false")
+    return value
+
+
+def _attempts(value: Any) -> Any:
+    # Said here too: a float such as 1e30 would otherwise fail as "unable to parse", not as too many.
+    if isinstance(value, int | float) and not isinstance(value, bool) and value > MAX_ATTEMPTS:
+        raise ValueError(f"must be <= {MAX_ATTEMPTS}")
+    return _whole(value)
+
+
+Attempts = Annotated[int, BeforeValidator(_attempts), Field(ge=1, le=MAX_ATTEMPTS)]
 ExactNumber = Annotated[Decimal, BeforeValidator(_to_decimal), Field(allow_inf_nan=False)]
 Bound = Annotated[Decimal | str, BeforeValidator(_to_bound)]
 Text = Annotated[str, Field(min_length=1, max_length=MAX_TEXT)]
@@ -87,7 +129,7 @@ class GivenDecl(_Strict):
     min: ExactNumber
     max: ExactNumber
     unit: Annotated[str, Field(min_length=1, max_length=100)]
-    sigfigs: Annotated[int, Field(ge=1, le=12)] | None = None
+    sigfigs: Annotated[int, BeforeValidator(_whole), Field(ge=1, le=12)] | None = None
     step: Annotated[ExactNumber, Field(gt=0)] | None = None
 
     @model_validator(mode="after")
@@ -110,7 +152,7 @@ class LimitDecl(_Strict):
 class ToleranceDecl(_Strict):
     rel: Annotated[ExactNumber, Field(gt=0)] | None = None
     abs: Annotated[ExactNumber, Field(gt=0)] | None = None
-    sigfigs: Annotated[int, Field(ge=1, le=15)] | None = None
+    sigfigs: Annotated[int, BeforeValidator(_whole), Field(ge=1, le=15)] | None = None
 
     @model_validator(mode="after")
     def _at_least_one(self) -> ToleranceDecl:
@@ -128,7 +170,7 @@ class SymbolicPart(_Strict):
     symbols: Annotated[list[Name], Field(max_length=MAX_ITEMS)] | None = None
     mistakes: Annotated[list[MistakeDecl], Field(max_length=MAX_ITEMS)] = []
     limits: Annotated[list[LimitDecl], Field(max_length=MAX_ITEMS)] = []
-    max_attempts: Annotated[int, Field(ge=1)] | None = None  # graded attempts; None: the problem's
+    max_attempts: Attempts | None = None  # graded attempts; None: the problem's
 
     @property
     def quantity_name(self) -> str:
@@ -144,7 +186,9 @@ class NumericPart(_Strict):
     units: Annotated[str, Field(min_length=1, max_length=100)]
     tolerance: ToleranceDecl = ToleranceDecl(rel=DEFAULT_REL_TOLERANCE)
     units_required: bool = True
-    max_attempts: Annotated[int, Field(ge=1)] | None = None
+    arithmetic: bool = True  # the number may be arithmetic (`229/50 m/s^2`); False: a plain decimal
+    units_system: Literal["SI"] | None = None  # "SI": refuse answers in ft, lb, atm, …
+    max_attempts: Attempts | None = None
 
     @property
     def dimensionless(self) -> bool:
@@ -168,7 +212,7 @@ class ProblemDocument(_Strict):
     constraints: Annotated[list[Expression], Field(max_length=MAX_ITEMS)] = []
     given: Annotated[dict[Name, GivenDecl], Field(max_length=MAX_ITEMS)] = {}
     parts: Annotated[list[Part], Field(min_length=1, max_length=MAX_ITEMS)]
-    max_attempts: Annotated[int, Field(ge=1)] | None = None  # per part, unless a part sets its own
+    max_attempts: Attempts | None = None  # per part, unless a part sets its own
     # Validated by the engine (`physics.engine.load_model`), not here.
     model: dict[str, Any] | None = None
 
@@ -248,7 +292,7 @@ def _clean_loc(loc: tuple[str | int, ...], error_type: str) -> tuple[str | int, 
 
 def shape_errors(exc: ValidationError) -> list[ErrorItem]:
     """Every pydantic error as (path, message), in the order pydantic found them, without repeats."""
-    found: list[ErrorItem] = []
+    found: dict[ErrorItem, None] = {}  # ordered and without repeats, in linear time
     for err in exc.errors(include_url=False):
         loc = _clean_loc(tuple(err["loc"]), err["type"])
         path = format_path(loc)
@@ -264,7 +308,5 @@ def shape_errors(exc: ValidationError) -> list[ErrorItem]:
             message = str(err["msg"])
             if message.startswith("Value error, "):
                 message = message[len("Value error, ") :]
-        item = (path, message)
-        if item not in found:
-            found.append(item)
-    return found
+        found[(path, message)] = None
+    return list(found)

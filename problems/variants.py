@@ -232,10 +232,15 @@ def student_view(problem: ProblemDocument, variant: Variant) -> dict[str, Any]:
     """What one student may see: statement with their values, givens, parts; never a reference."""
     parts: list[dict[str, Any]] = []
     for part in problem.parts:
+        tolerance: dict[str, int | float] | None = None
         if isinstance(part, SymbolicPart):
             units, names = None, part.symbols if part.symbols is not None else list(problem.symbols)
         else:
             units, names = part.units, []
+            tolerance = {
+                key: int(value) if key == "sigfigs" else float(value)
+                for key, value in part.tolerance.model_dump(exclude_none=True).items()
+            }
         limit = part.max_attempts if part.max_attempts is not None else problem.max_attempts
         parts.append(
             {
@@ -245,6 +250,7 @@ def student_view(problem: ProblemDocument, variant: Variant) -> dict[str, Any]:
                 "units": units,
                 "symbols": names,
                 "max_attempts": limit,
+                "tolerance": tolerance,
             }
         )
     return {

@@ -44,9 +44,11 @@ class GradingPool:
         max_answer_chars: int = 2000,
         per_owner: int = 2,
         task: Callable[[CheckJob], Verdict | SpecProblem | GraderCrash] = grade,
+        preview_task: Callable[[CheckJob], Preview | SpecProblem | GraderCrash] = read_only,
         verdicts_cached: int = 4096,
     ):
         self._task = task
+        self._preview_task = preview_task
         # Grading is a pure function of the job (a stored part's job names its compiled version by
         # digest), so identical jobs share a verdict. Only verdicts a worker returned are kept, never a
         # timeout or a fault, which depend on the moment.
@@ -156,7 +158,7 @@ class GradingPool:
                 None, InputProblem(f"The answer is longer than {self._max_answer_chars} characters.")
             )
         try:
-            return await self._run(read_only, job, owner)
+            return await self._run(self._preview_task, job, owner)
         except FutureTimeout:
             return Preview(None, InputProblem(TIMEOUT_MESSAGE))
 

@@ -44,13 +44,7 @@ async def submit_answer(
     try:
         verdict = await services.pool.check(job, share)
     except SpecError as error:
-        # The stored problem was vetted at upload: its reference failing now is our fault, not the answer's.
-        log.error(
-            "stored problem failed to grade: %s at %s; not filed", error.message, error.path, extra=context
-        )
-        raise GraderFault(
-            "This problem could not be graded on our side; it has been logged. Nothing was recorded."
-        ) from error
+        raise stored_problem_fault(error, context) from error
     except (Unavailable, GraderFault) as error:
         log.error("not graded (%s): %s; not filed", error.code, error.message, extra=context)
         raise
@@ -66,6 +60,14 @@ async def submit_answer(
         submission_id=stored.id,
         attempts_used=used,
         max_attempts=max_attempts,
+    )
+
+
+def stored_problem_fault(error: SpecError, context: dict[str, object]) -> GraderFault:
+    """A stored problem was vetted at upload: its reference failing now is our fault, not the answer's."""
+    log.error("stored problem failed to grade: %s at %s", error.message, error.path, extra=context)
+    return GraderFault(
+        "This problem could not be graded on our side; it has been logged. Nothing was recorded."
     )
 
 

@@ -18,6 +18,7 @@ and sees grade passback; an LMS instructor session acts only for itself.
 from __future__ import annotations
 
 import io
+import logging
 import re
 from collections.abc import Mapping
 from typing import Annotated, Any, Literal
@@ -34,8 +35,8 @@ from app.db import submissions as submission_repository
 from app.db.errors import ProblemExists
 from app.db.errors import ProblemNotFound as StoredProblemNotFound
 from app.db.records import ProblemRecord, Role
-from app.deps import ServicesDep
-from app.errors import AppError
+from app.deps import ServicesDep, budget_wait
+from app.errors import AppError, Busy
 from app.instructor import session as auth
 from app.instructor.described import Described, MistakeInfo, describe
 from app.instructor.plots import Bar, bar_chart
@@ -49,6 +50,7 @@ from problems.loader import MAX_DOCUMENT_BYTES, parse_problem
 from problems.variants import fill_statement, fixed_variant
 
 router = APIRouter(prefix="/instructor", include_in_schema=False)
+log = logging.getLogger("physcheck.instructor")
 
 PAGE_SIZE = 50
 SCRIPT = "/static/instructor.js"
@@ -67,7 +69,7 @@ class PageError(Exception):
 
 async def signed_in(request: Request, services: ServicesDep) -> auth.Visitor:
     who = await auth.visitor(request, services)
-    wait = services.key_limiter.retry_after(who.principal.key_id)
+    wait = budget_wait(services, who.principal)
     if wait is not None:
         raise PageError(429, "Too many requests", f"Too many requests; try again in {wait} s.")
     return who
@@ -314,6 +316,7 @@ async def _edit_page(
     described: Described | None = None,
     document: dict[str, Any] | None = None,
     warnings: list[dict[str, Any]] | None = None,
+    figure: str | None = None,
     status: int = 200,
 ) -> Response:
     action = "/instructor/problems/new" if problem_id is None else f"/instructor/problems/{problem_id}/edit"
@@ -337,6 +340,7 @@ async def _edit_page(
             "preview_doc": preview_doc,
             "preview_statement": preview_statement,
             "warnings": warnings,
+            "figure": figure,
         },
         status=status,
     )
@@ -394,7 +398,10 @@ async def _vet_and_maybe_save_form(
         return await _edit_page(
             request, services, who, problem_id=problem_id, source=source, errors=errors, status=422
         )
-    vetted = await services.authoring.vet(source.encode("utf-8"), fmt)
+    try:
+        vetted = await services.authoring.vet(source.encode("utf-8"), fmt, who.principal.key_id)
+    except Busy as error:  # the vetting queue is full, this key has one in flight, or it is restarting
+        raise PageError(503, "Try again shortly", error.message) from error
     if vetted.document is None:
         errors = [
             {"path": path, "message": message, "line": vetted.lines.get(path)}
@@ -412,6 +419,7 @@ async def _vet_and_maybe_save_form(
             source=source,
             described=vetted.described,
             document=vetted.document,
+            figure=vetted.figure,
             warnings=[
                 {"path": path, "message": message, "line": vetted.lines.get(path)}
                 for path, message in vetted.warnings
@@ -485,11 +493,17 @@ async def problem(
         doc = catalog.document(record)
         variant = catalog.variant(record, whose)
         compiled = catalog.compiled(record)
+        try:
+            figure = catalog.figure(problem_id, whose)
+        except Exception:  # an illustration: the page is complete without it
+            log.exception("no figure for problem %r", problem_id)
+            figure = None
         return {
             "doc": doc,
             "record": record,
             "statement": fill_statement(doc.statement, doc, variant),
             "described": describe(compiled, variant),
+            "figure": figure,
         }
 
     context = await run_in_threadpool(load)

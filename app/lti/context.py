@@ -32,6 +32,8 @@ class LtiContext:
     # unknown), and a student key -> Principal (None if unknown or revoked).
     student_view: Callable[[str, str], Mapping[str, Any]] | None = None
     authenticate_key: Callable[[str], Principal | None] | None = None
+    # (problem_id, student) -> the problem's figure as SVG text with that student's values, or None.
+    figure: Callable[[str, str], str | None] | None = None
     # Spends one request of a key's rate budget (the API's): None if allowed, else seconds to wait.
     rate_limit: Callable[[Principal], int | None] | None = None
     platform_keys: PlatformKeyCache = field(init=False)

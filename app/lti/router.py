@@ -5,7 +5,7 @@
     POST     /lti/launch           the platform's form post with id_token and state
     POST     /lti/deep-link/{id}   the instructor's choice -> signed response, auto-posted back
     GET      /lti/jwks             our public keys (also /.well-known/jwks.json)
-    GET      /p/{problem_id}       the student page (see `student_page`), and its script and fragment
+    GET      /p/{problem_id}       the student page and /problems (app.web.student_page), with fragments
 """
 
 from __future__ import annotations
@@ -18,7 +18,7 @@ from fastapi import APIRouter, Request
 from fastapi.responses import JSONResponse, RedirectResponse, Response
 from starlette.concurrency import run_in_threadpool
 
-from app.lti import keys, student_page
+from app.lti import keys
 from app.lti.context import LtiContext, LtiContextDep
 from app.lti.errors import LaunchRefused, MalformedRequest, PlatformKeysUnavailable
 from app.lti.flow import (
@@ -32,6 +32,7 @@ from app.lti.flow import (
 from app.lti.pages import auto_post_page, picker_page, refusal_page, unavailable_page
 from app.lti.platforms import platform_origins
 from app.lti.sessions import SESSION_COOKIE, SESSION_LIFETIME
+from app.web import student_page
 
 router = APIRouter(tags=["lti"])
 router.include_router(student_page.router)

@@ -14,6 +14,7 @@ from app.db.records import ProblemRecord
 from app.deps import Instructor, ServicesDep
 from app.errors import AppError, Forbidden
 from app.lti.outbox import DeliveryProblem, list_delivery_problems
+from app.openapi import AUTHENTICATED, errors
 from app.schemas.problems import (
     MethodPublic,
     ProblemCreated,
@@ -26,7 +27,8 @@ from app.services import Services
 from problems.compiled import CompiledProblem, CompiledSymbolicPart
 from problems.errors import ProblemInvalid
 
-router = APIRouter(tags=["authoring"])
+# Every route here is for instructors: a student key is 403.
+router = APIRouter(tags=["authoring"], responses=AUTHENTICATED | errors(403))
 
 _YAML_TYPES = {"application/yaml", "application/x-yaml", "text/yaml", "text/x-yaml"}
 _BODY_DOC: dict[str, Any] = {
@@ -58,8 +60,8 @@ def _format(request: Request) -> Literal["json", "yaml"]:
     raise UnsupportedMediaType(f"Send the problem as application/json or application/yaml, not {media}.")
 
 
-async def _vetted_document(request: Request, services: Services) -> dict[str, Any]:
-    vetted = await services.authoring.vet(await request.body(), _format(request))
+async def _vetted_document(request: Request, services: Services, principal: Principal) -> dict[str, Any]:
+    vetted = await services.authoring.vet(await request.body(), _format(request), principal.key_id)
     if vetted.document is None:
         raise ProblemInvalid(vetted.errors)
     return vetted.document
@@ -81,9 +83,15 @@ def _owned(services: Services, problem_id: str, principal: Principal) -> Problem
     return record
 
 
-@router.post("/v1/problems", status_code=201, response_model=ProblemCreated, openapi_extra=_BODY_DOC)
+@router.post(
+    "/v1/problems",
+    status_code=201,
+    response_model=ProblemCreated,
+    openapi_extra=_BODY_DOC,
+    responses=errors(409, 413, 415, 422),
+)
 async def upload(request: Request, services: ServicesDep, principal: Instructor) -> ProblemCreated:
-    document = await _vetted_document(request, services)
+    document = await _vetted_document(request, services, principal)
     record = await store_new_problem(services, principal, document)
     return ProblemCreated(id=record.id, version=record.version)
 
@@ -101,12 +109,17 @@ async def store_new_problem(
     return await run_in_threadpool(store)
 
 
-@router.put("/v1/problems/{problem_id}", response_model=ProblemCreated, openapi_extra=_BODY_DOC)
+@router.put(
+    "/v1/problems/{problem_id}",
+    response_model=ProblemCreated,
+    openapi_extra=_BODY_DOC,
+    responses=errors(404, 413, 415, 422),
+)
 async def new_version(
     problem_id: str, request: Request, services: ServicesDep, principal: Instructor
 ) -> ProblemCreated:
     await run_in_threadpool(_owned, services, problem_id, principal)
-    document = await _vetted_document(request, services)
+    document = await _vetted_document(request, services, principal)
     record = await store_new_version(services, principal, problem_id, document)
     return ProblemCreated(id=record.id, version=record.version)
 
@@ -129,7 +142,7 @@ async def store_new_version(
     return await run_in_threadpool(store)
 
 
-@router.delete("/v1/problems/{problem_id}", status_code=204)
+@router.delete("/v1/problems/{problem_id}", status_code=204, responses=errors(404, 422))
 async def retire(problem_id: str, services: ServicesDep, principal: Instructor) -> Response:
     await run_in_threadpool(_owned, services, problem_id, principal)
 
@@ -141,7 +154,7 @@ async def retire(problem_id: str, services: ServicesDep, principal: Instructor) 
     return Response(status_code=204)
 
 
-@router.get("/v1/problems/{problem_id}/solution", response_model=SolutionPublic)
+@router.get("/v1/problems/{problem_id}/solution", response_model=SolutionPublic, responses=errors(404, 422))
 async def solution(problem_id: str, services: ServicesDep, _: Instructor) -> SolutionPublic:
     record = await run_in_threadpool(services.catalog.get, problem_id)
     compiled = await run_in_threadpool(services.catalog.compiled, record)
@@ -197,7 +210,10 @@ def solution_of(compiled: CompiledProblem) -> SolutionPublic:
         agreement=agreement,
         proofs={} if derived is None else dict(derived.proofs),
         simulation=simulation,
-        methods_agree=derived is not None and not derived.disagreements,
+        checks={} if derivation is None else dict(getattr(derivation, "checks", {})),
+        methods_agree=derived is not None
+        and not derived.disagreements
+        and all(len(m) >= 2 for m in agreement.values()),
     )
 
 

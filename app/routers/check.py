@@ -7,12 +7,13 @@ from typing import Annotated
 from fastapi import APIRouter, Body
 
 from app.deps import CurrentPrincipal, ServicesDep
+from app.openapi import AUTHENTICATED, errors
 from app.schemas.check import CheckIn, VerdictPublic
 
-router = APIRouter(tags=["check"])
+router = APIRouter(tags=["check"], responses=AUTHENTICATED)
 
 
-@router.post("/v1/check", response_model=VerdictPublic)
+@router.post("/v1/check", response_model=VerdictPublic, responses=errors(413, 422))
 async def check(
     body: Annotated[CheckIn, Body()], services: ServicesDep, principal: CurrentPrincipal
 ) -> VerdictPublic:

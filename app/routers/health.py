@@ -2,14 +2,21 @@
 
 from __future__ import annotations
 
+from typing import Any
+
 from fastapi import APIRouter
 from fastapi.responses import JSONResponse
 from starlette.concurrency import run_in_threadpool
 
 from app.deps import ServicesDep
 from app.errors import error_body
+from app.openapi import ErrorBody, Ready
 
 router = APIRouter(tags=["health"])
+_READY: dict[int | str, dict[str, Any]] = {
+    200: {"model": Ready},
+    503: {"model": ErrorBody, "description": "Not ready: the database does not answer, or still compiling."},
+}
 
 
 @router.get("/health")
@@ -18,7 +25,7 @@ async def health() -> dict[str, str]:
     return {"status": "ok"}
 
 
-@router.get("/ready", response_model=None)
+@router.get("/ready", response_model=None, responses=_READY)
 async def ready(services: ServicesDep) -> dict[str, str] | JSONResponse:
     """Ready for traffic: the database answers, grading workers are up and the problems are compiled."""
     if not await run_in_threadpool(services.database.ping):

@@ -11,7 +11,8 @@ from app.auth import Principal
 from app.db.records import ProblemRecord
 from app.deps import CurrentPrincipal, ServicesDep
 from app.errors import AppError, Forbidden, NotFound
-from app.grading.submit import submit_answer
+from app.grading.submit import stored_problem_fault, submit_answer
+from app.openapi import AUTHENTICATED, errors
 from app.schemas.problems import (
     PartSummary,
     PreviewIn,
@@ -23,8 +24,10 @@ from app.schemas.problems import (
     SubmissionResult,
 )
 from app.services import Services
+from app.web.rendering import tex_to_mathml
+from physics.errors import SpecError
 
-router = APIRouter(tags=["problems"])
+router = APIRouter(tags=["problems"], responses=AUTHENTICATED)
 
 
 class StudentNotAllowed(AppError):
@@ -63,7 +66,7 @@ async def list_problems(services: ServicesDep, _: CurrentPrincipal) -> list[Prob
     return summaries
 
 
-@router.get("/v1/problems/{problem_id}", response_model=ProblemPublic)
+@router.get("/v1/problems/{problem_id}", response_model=ProblemPublic, responses=errors(403, 404, 422))
 async def get_problem(
     problem_id: str,
     services: ServicesDep,
@@ -79,7 +82,10 @@ async def get_problem(
 
 
 @router.post(
-    "/v1/problems/{problem_id}/parts/{part_id}/submissions", status_code=201, response_model=SubmissionResult
+    "/v1/problems/{problem_id}/parts/{part_id}/submissions",
+    status_code=201,
+    response_model=SubmissionResult,
+    responses=errors(403, 404, 409, 413, 422),
 )
 async def submit(
     problem_id: str, part_id: str, body: SubmissionIn, services: ServicesDep, principal: CurrentPrincipal
@@ -90,7 +96,11 @@ async def submit(
     return await submit_answer(services, record, part_id, who, body.answer, principal.grading_share)
 
 
-@router.post("/v1/problems/{problem_id}/parts/{part_id}/preview", response_model=PreviewPublic)
+@router.post(
+    "/v1/problems/{problem_id}/parts/{part_id}/preview",
+    response_model=PreviewPublic,
+    responses=errors(404, 413, 422),
+)
 async def preview(
     problem_id: str, part_id: str, body: PreviewIn, services: ServicesDep, principal: CurrentPrincipal
 ) -> PreviewPublic:
@@ -99,8 +109,12 @@ async def preview(
     record = await run_in_threadpool(services.catalog.get, problem_id)
     _require_part(services, record, part_id)
     job = await run_in_threadpool(services.catalog.job, record, part_id, who, body.answer)
-    result = await services.pool.preview(job, principal.grading_share)
-    return PreviewPublic(read_as=result.read_as, error=result.error)
+    try:
+        result = await services.pool.preview(job, principal.grading_share)
+    except SpecError as error:
+        raise stored_problem_fault(error, {"problem": record.id, "part": part_id, "student": who}) from error
+    mathml = str(tex_to_mathml(result.read_as.latex, display=True)) if result.read_as else None
+    return PreviewPublic(read_as=result.read_as, error=result.error, mathml=mathml)
 
 
 def _require_part(services: Services, record: ProblemRecord, part_id: str) -> None:

@@ -11,14 +11,15 @@ from app.db import submissions as submission_repository
 from app.db.records import Page, SubmissionRecord
 from app.deps import CurrentPrincipal, ServicesDep
 from app.errors import Forbidden
+from app.openapi import AUTHENTICATED, errors
 from app.schemas.problems import StudentId, SubmissionPage, SubmissionPublic
 
-router = APIRouter(tags=["submissions"])
+router = APIRouter(tags=["submissions"], responses=AUTHENTICATED)
 
 MAX_PAGE = 1000
 
 
-@router.get("/v1/submissions", response_model=SubmissionPage)
+@router.get("/v1/submissions", response_model=SubmissionPage, responses=errors(403, 422))
 async def list_submissions(
     services: ServicesDep,
     principal: CurrentPrincipal,

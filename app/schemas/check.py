@@ -137,6 +137,8 @@ class NumericCheckIn(Strict):
     units: ShortText | None = None
     units_required: StrictBool = True
     tolerance: ToleranceIn | None = None
+    arithmetic: StrictBool = True  # the number may be arithmetic (`229/50 m/s^2`); False: a plain decimal
+    units_system: Literal["SI"] | None = None  # "SI": refuse answers in ft, lb, atm, …
 
     @field_validator("expected")
     @classmethod
@@ -150,6 +152,8 @@ class NumericCheckIn(Strict):
             units=self.units,
             units_required=self.units_required,
             tolerance=DEFAULT_TOLERANCE if self.tolerance is None else self.tolerance.tolerance(),
+            arithmetic=self.arithmetic,
+            units_system=self.units_system,
         )
         return NumericJob(answer=self.answer, spec=spec)
 
@@ -162,6 +166,8 @@ class ReadAsPublic(BaseModel):
 
     text: str
     latex: str
+    # Set when the expected dimension chose between readings (`mv/qB` as m·v/(q·B)); shown to students.
+    note: str | None = None
 
 
 class InputErrorPublic(BaseModel):

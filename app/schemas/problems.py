@@ -41,6 +41,7 @@ class PartPublic(BaseModel):
     units: str | None
     symbols: list[str]
     max_attempts: int | None = None  # graded attempts allowed; None: unlimited
+    tolerance: dict[str, float | int] | None = None  # numeric parts: how close counts as right
 
 
 class ProblemPublic(BaseModel):
@@ -73,6 +74,8 @@ class PreviewIn(BaseModel):
 class PreviewPublic(BaseModel):
     read_as: ReadAsPublic | None
     error: InputErrorPublic | None
+    # The reading typeset as MathML (from read_as.latex, made on the server) for the student page.
+    mathml: str | None = None
 
 
 class SubmissionResult(VerdictPublic):
@@ -145,3 +148,5 @@ class SolutionPublic(BaseModel):
     proofs: dict[str, str]
     simulation: dict[str, SimulationPublic]
     methods_agree: bool
+    # checks of the model itself beside method agreement (energy bookkeeping, limiting cases, dimensions)
+    checks: dict[str, str] = {}

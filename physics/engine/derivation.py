@@ -6,6 +6,7 @@ from functools import lru_cache
 
 import sympy
 
+from physics.engine.checks import physical_checks
 from physics.engine.conservation import ConservationMethod
 from physics.engine.lagrange import LagrangeMethod
 from physics.engine.mechanics import Mechanics
@@ -126,7 +127,8 @@ def _derive(model: Model) -> Derivation:
             limits[quantity.name] = generate_limits(model, reference)
         except Exception:
             limits[quantity.name] = ()
-    return Derivation(quantities, tuple(reports), agreement, simulation, mistakes, limits, proofs)
+    checks = physical_checks(model, quantities, lagrange, LagrangeMethod)
+    return Derivation(quantities, tuple(reports), agreement, simulation, mistakes, limits, proofs, checks)
 
 
 def _too_few(

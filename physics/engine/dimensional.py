@@ -120,6 +120,8 @@ def _faults(checks: list[Check], dims: Dims) -> list[SpecError]:
 
 
 def _fault(expr: sympy.Expr, expected: Expected, dims: Dims) -> str | None:
+    if not expr.free_symbols:
+        return None  # a bare number (an anchor at 0) is read in SI units
     try:
         found = expression_dimension(expr, dims)
     except UnknownDimension:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import re
 from collections.abc import Callable, Mapping
 from functools import partial
@@ -9,6 +10,8 @@ from typing import Any, TypeVar
 
 import sympy
 
+from physics.dimensions import Dimension
+from physics.engine.dimensional import check_dimensions
 from physics.engine.distances import with_distance_sides
 from physics.engine.elements import expand_elements
 from physics.engine.model import (
@@ -23,6 +26,7 @@ from physics.engine.model import (
     PairPotential,
     Quantity,
     QuantityKind,
+    StatedLimit,
 )
 from physics.engine.text import Path, read_expr
 from physics.errors import SpecError, SpecErrors
@@ -40,6 +44,7 @@ _SECTIONS = frozenset(
         "state",
         "domain",
         "quantities",
+        "limits",
     }
 )
 _QUANTITY_TARGET = {
@@ -52,7 +57,15 @@ _QUANTITY_TARGET = {
     QuantityKind.PERIOD: "coordinate",
 }
 # Sizes beyond any textbook model: the derivation's cost grows fast with them, and models are uploaded.
-LIMITS = {"coordinates": 8, "bodies": 12, "constraints": 16, "friction": 8, "potentials": 8, "quantities": 30}
+LIMITS = {
+    "limits": 12,
+    "coordinates": 8,
+    "bodies": 12,
+    "constraints": 16,
+    "friction": 8,
+    "potentials": 8,
+    "quantities": 30,
+}
 T = TypeVar("T")
 
 
@@ -78,11 +91,22 @@ class _Collector:
         return self.attempt(lambda: read_expr(text, scope, path))
 
 
-def load_model(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]) -> Model:
-    """Validate a model section into a Model; raises SpecErrors listing every fault with its path."""
+def load_model(
+    data: Mapping[str, Any],
+    symbols: Mapping[str, sympy.Symbol],
+    dimensions: Mapping[str, Dimension] | None = None,
+) -> Model:
+    """Validate a model section into a Model; raises SpecErrors listing every fault with its path.
+
+    With the symbols' `dimensions` (name -> Dimension), every position, energy, mass, ... is also
+    checked for dimensional consistency."""
     expanded = expand_elements(data, symbols)  # composable elements -> the low-level sections
     try:
-        return _load_low_level(expanded.data, symbols)
+        model = _load_low_level(expanded.data, symbols)
+        faults = check_dimensions(model, dimensions) if dimensions else []
+        if faults:
+            raise SpecErrors(faults)
+        return dataclasses.replace(model, dimensions_checked=True) if dimensions else model
     except SpecErrors as group:
         raise expanded.relocate(group) from None
 
@@ -118,6 +142,7 @@ def _load_low_level(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]
     collision = _collision(data.get("collision"), symbols, bodies, coordinates, errors)
     state = _state(data.get("state"), symbols, coordinates, errors)
     quantities = _quantities(data.get("quantities"), symbols, coordinates, constraints, collision, errors)
+    limits = _stated_limits(data.get("limits"), symbols, {q.name for q in quantities}, errors)
     if errors.errors:
         raise SpecErrors(errors.errors)
     model = Model(
@@ -135,8 +160,39 @@ def _load_low_level(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]
         quantities=quantities,
         parameters=tuple(symbols.values()),
         cartesian=cartesian,
+        limits=limits,
     )
     return with_distance_sides(model)
+
+
+def _stated_limits(
+    value: Any, symbols: Mapping[str, sympy.Symbol], quantities: set[str], errors: _Collector
+) -> tuple[StatedLimit, ...]:
+    result: list[StatedLimit] = []
+    for index, entry in enumerate(_sequence(value, ("limits",), errors)):
+        path: Path = ("limits", index)
+        spec = _mapping(entry, path, errors)
+        _check_keys(spec, {"where", "expect", "description"}, {"where", "expect"}, path, errors)
+        where: list[tuple[sympy.Symbol, sympy.Expr]] = []
+        for name, text in _mapping(spec.get("where"), (*path, "where"), errors).items():
+            if name not in symbols:
+                errors.add(f"unknown symbol {name!r}", (*path, "where", str(name)))
+                continue
+            bound = errors.attempt(partial(_bound, text, symbols, (*path, "where", str(name))))
+            if bound is not None:
+                where.append((symbols[name], bound))
+        expect: list[tuple[str, sympy.Expr]] = []
+        for name, text in _mapping(spec.get("expect"), (*path, "expect"), errors).items():
+            if name not in quantities:
+                errors.add(f"unknown quantity {name!r}", (*path, "expect", str(name)))
+                continue
+            expr = errors.read(text, symbols, (*path, "expect", str(name)))
+            if expr is not None:
+                expect.append((str(name), expr))
+        description = spec.get("description", "")
+        if where and expect:
+            result.append(StatedLimit(tuple(where), tuple(expect), str(description)))
+    return tuple(result)
 
 
 def _mapping(value: Any, path: Path, errors: _Collector, required: bool = True) -> Mapping[str, Any]:

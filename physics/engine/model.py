@@ -117,6 +117,16 @@ class Quantity:
 
 
 @dataclass(frozen=True)
+class StatedLimit:
+    """A limiting case the author states: with `where` taken to its values, each quantity in `expect`
+    must tend to the given expression (e.g. the wedge held fixed: M -> oo, its acceleration -> 0)."""
+
+    where: tuple[tuple[sympy.Symbol, sympy.Expr], ...]
+    expect: tuple[tuple[str, sympy.Expr], ...]
+    description: str
+
+
+@dataclass(frozen=True)
 class Model:
     coordinates: tuple[Coordinate, ...]
     bodies: tuple[Body, ...]
@@ -132,6 +142,8 @@ class Model:
     quantities: tuple[Quantity, ...]
     parameters: tuple[sympy.Symbol, ...]  # the problem's symbols, in table order
     cartesian: tuple[tuple[str, sympy.Symbol], ...]  # Cartesian symbol names of every body
+    limits: tuple[StatedLimit, ...] = ()
+    dimensions_checked: bool = False  # every term was found dimensionally consistent when loaded
 
     def body(self, name: str) -> Body:
         return next(b for b in self.bodies if b.name == name)

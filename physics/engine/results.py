@@ -47,3 +47,5 @@ class Derivation:
     mistakes: Mapping[str, tuple[KnownMistake, ...]]
     limits: Mapping[str, tuple[LimitCase, ...]]
     proofs: Mapping[str, str] = field(default_factory=dict)  # quantity -> "symbolic" or "sampled (...)"
+    # physical checks beside method agreement (energy bookkeeping, limiting cases): name -> what was shown
+    checks: Mapping[str, str] = field(default_factory=dict)

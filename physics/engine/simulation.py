@@ -23,6 +23,8 @@ from physics.engine.results import SimulationCheck
 from physics.errors import DerivationError
 
 TOLERANCE = 1e-3
+ENERGY_TOLERANCE = 1e-6  # RK4 keeps the books far better than this over a short motion
+ENERGY_STEPS = 100
 Point = dict[sympy.Symbol, float]
 Vector = list[float]
 Measured = tuple[str, float, float | None]  # (what was compared, measured value, own error or None)
@@ -70,6 +72,15 @@ class Dynamics:
         self._potential = _compile(position, [self.mech.potential])
         self._mapping = _compile(position, [d.mapping for d in self.mech.dofs])
         self._mass = _compile(position, list(self.mech.mass_matrix))
+        # generalized non-conservative forces (kinetic friction), given the multipliers: their power
+        # is what the mechanical energy may change by
+        lam = list(self.mech.multipliers)
+        friction = self.mech.friction_forces(lam)
+        generalized = [
+            sympy.Add(*(f * sympy.diff(d.mapping, q) for f, d in zip(friction, self.mech.dofs, strict=True)))
+            for q in self.mech.q
+        ]
+        self._nonconservative = _compile([*args, *lam], generalized)
 
     def values(self, point: Point) -> Vector:
         return [point[p] for p in self.params]
@@ -85,6 +96,16 @@ class Dynamics:
     def derivative(self, params: Vector) -> Callable[[Vector], Vector]:
         n = self.n
         return lambda y: y[n:] + self.unknowns(y[:n], y[n:], params)[:n]
+
+    def power(self, q: Vector, qd: Vector, params: Vector, multipliers: Vector) -> float:
+        """Power of the non-conservative forces: Q_nc . q'."""
+        forces = self._nonconservative(*q, *qd, *params, *multipliers)
+        return sum(f * v for f, v in zip(forces, qd, strict=True))
+
+    def energy(self, q: Vector, qd: Vector, params: Vector) -> float:
+        matrix = self.mass(q, params)
+        kinetic = 0.5 * sum(qd[i] * matrix[i][j] * qd[j] for i in range(self.n) for j in range(self.n))
+        return kinetic + self.potential(q, params)
 
     def potential(self, q: Vector, params: Vector) -> float:
         return self._potential(*q, *params)[0]
@@ -160,6 +181,73 @@ class Simulator:
             QuantityKind.PROJECTILE_SPEED: self._collision,
             QuantityKind.ENERGY_FRACTION_LOST: self._collision,
         }
+
+    def energy_balance(self, points: Sequence[Point]) -> SimulationCheck | None:
+        """Integrate the motion from the model's state and keep the books: the change of T + V must equal
+        the work of the non-conservative forces, and friction may only take energy out."""
+        worst, moved = 0.0, False
+        for point in points:
+            change, work, kinetic = self._books(point)
+            scale = max(kinetic, abs(change), abs(work), 1e-300)
+            moved = moved or kinetic > 0
+            error = abs(change - work) / scale
+            at = ", ".join(f"{s}={v:.4g}" for s, v in point.items())
+            if not error <= ENERGY_TOLERANCE:
+                raise DerivationError(
+                    f"energy bookkeeping fails: over an integrated motion T + V changes by {change:.8g} but the "
+                    f"non-conservative forces do work {work:.8g} at {at}",
+                    path=(),
+                )
+            if work > ENERGY_TOLERANCE * scale:
+                raise DerivationError(
+                    f"kinetic friction does positive work ({work:.8g}) in the integrated motion: a body slides "
+                    f"against the direction the model's friction assumes (`sliding`) at {at}",
+                    path=("friction",),
+                )
+            worst = max(worst, error)
+        if not moved:
+            return None
+        return SimulationCheck(
+            "work of the non-conservative forces against the change of T + V along an integrated motion",
+            worst,
+            len(points),
+        )
+
+    def _books(self, point: Point) -> tuple[float, float, float]:
+        """(change of T + V, work of the non-conservative forces, largest kinetic energy) along a short
+        integrated motion from the model's state, stopped where a sliding body turns back."""
+        dyn = self.dynamics
+        names = [c.name for c in self.model.coordinates]
+        params = dyn.values(point)
+        q, qd = self._start(point)
+        n = dyn.n
+        h = self._step_for(point)
+
+        def f(y: Vector) -> Vector:
+            unknowns = dyn.unknowns(y[:n], y[n : 2 * n], params)
+            return [*y[n : 2 * n], *unknowns[:n], dyn.power(y[:n], y[n : 2 * n], params, unknowns[n:])]
+
+        sliding = [names.index(friction.sliding) for friction in self.model.frictions]
+        states = [[*q, *qd, 0.0]]
+        for _ in range(ENERGY_STEPS):
+            after = rk4(f, states[-1], h, 1)[-1]
+            backwards = [i for i in sliding if after[n + i] < 0]
+            if backwards and all(states[0][n + i] <= 0 for i in backwards):
+                name = names[backwards[0]]
+                raise DerivationError(
+                    f"released from the model's state, the body slides towards decreasing {name}, against the "
+                    f"direction the model's kinetic friction assumes (`sliding: {name}`): give the state a "
+                    f"velocity that way ({name}_dot > 0), or check the domain, at "
+                    + ", ".join(f"{s}={v:.4g}" for s, v in point.items()),
+                    path=("friction",),
+                )
+            if backwards:
+                break  # it stopped and turned back: kinetic friction as modelled ends there
+            states.append(after)
+        start, end = states[0], states[-1]
+        change = dyn.energy(end[:n], end[n : 2 * n], params) - dyn.energy(start[:n], start[n : 2 * n], params)
+        kinetic = max(dyn.energy(y[:n], y[n : 2 * n], params) - dyn.potential(y[:n], params) for y in states)
+        return change, end[-1], abs(kinetic)
 
     # --- dynamics from the model's state -----------------------------------------------------
 

@@ -19,6 +19,7 @@ from physics.mathinput.vocabulary import (
     FUNCTIONS,
     GREEK_LETTERS,
     GREEK_NAMES,
+    LETTER_NAMES,
     PI_SPELLINGS,
 )
 
@@ -82,6 +83,7 @@ class NameTable:
             swapped = _greek_swapped(name)
             if swapped is not None:
                 spellings.append(swapped)
+            spellings.extend(letter for letter, named in LETTER_NAMES.items() if named == name)
             for spelling in spellings:
                 self._exact.setdefault(spelling, name)
             for spelling in spellings + [a for s in spellings for a in _subscript_aliases(s)]:

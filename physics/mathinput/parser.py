@@ -14,9 +14,10 @@ Recursion is bounded by `max_depth`, so deep nesting is a TooLarge, never a Recu
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from typing import Literal, NoReturn
 
-from physics.errors import AmbiguousInput, ParseError, TooLarge
+from physics.errors import AmbiguousDivision, ParseError, TooLarge
 from physics.mathinput.limits import InputLimits
 from physics.mathinput.render import STUDENT_STYLE, render_text
 from physics.mathinput.tokens import Kind, Token
@@ -54,10 +55,16 @@ class _Item:
 
 
 class Parser:
-    def __init__(self, source: str, tokens: list[Token], limits: InputLimits) -> None:
+    """`choices` settles ambiguous divisions by the position of their `/`: 0 reads `a/b c` as (a/b)·c,
+    1 as a/(b·c). An ambiguous division without a choice is refused (AmbiguousDivision)."""
+
+    def __init__(
+        self, source: str, tokens: list[Token], limits: InputLimits, choices: Mapping[int, int] | None = None
+    ) -> None:
         self._source = source
         self._tokens = tokens
         self._limits = limits
+        self._choices = choices or {}
         self._i = 0
         self._depth = 0
         self._abs_depth = 0  # open |...| in the current bracket level; a | there closes instead of opening
@@ -157,13 +164,19 @@ class Parser:
                 break
         if not items:
             return first
-        self._refuse_ambiguous_division(first, items)
+        first, items = self._settle_ambiguous_divisions(first, items)
+        if not items:
+            return first
         return Product(first, tuple((item.op, item.node) for item in items))
 
-    def _refuse_ambiguous_division(self, first: Node, items: list[_Item]) -> None:
-        """`a/b c` could be (a/b)·c or a/(b·c); only an integer fraction opening a term is a coefficient."""
-        for k, item in enumerate(items):
+    def _settle_ambiguous_divisions(self, first: Node, items: list[_Item]) -> tuple[Node, list[_Item]]:
+        """`a/b c` could be (a/b)·c or a/(b·c); only an integer fraction opening a term is a coefficient.
+        Each ambiguous `/` is read as `choices` says, or refused."""
+        k = 0
+        while k < len(items):
+            item = items[k]
             if item.op != "/" or k + 1 >= len(items) or not items[k + 1].juxtaposed:
+                k += 1
                 continue
             if (
                 k == 0
@@ -173,19 +186,33 @@ class Parser:
                 and item.node.integer_literal
                 and items[k + 1].token.space_before
             ):
+                k += 1
                 continue
             run_end = k + 1
             while run_end < len(items) and items[run_end].juxtaposed:
                 run_end += 1
+            choice = self._choices.get(item.token.pos)
+            if choice == 0:  # (a/b)·c
+                first = Group(Product(first, tuple((i.op, i.node) for i in items[: k + 1])))
+                items = items[k + 1 :]
+                k = run_end - (k + 1)
+                continue
+            if choice == 1:
+                run = [i.node for i in items[k + 1 : run_end]]
+                grouped = Group(Product(item.node, tuple(("*", n) for n in run)))
+                items = [*items[:k], _Item("/", grouped, item.token, False), *items[run_end:]]
+                k += 1
+                continue
             numerator = Product(first, tuple((i.op, i.node) for i in items[:k]))
             run = [i.node for i in items[k + 1 : run_end]]
             left = render_text(Product(numerator, (("/", item.node),)), STUDENT_STYLE)
             after = render_text(Product(run[0], tuple(("*", n) for n in run[1:])), STUDENT_STYLE)
             denominator = render_text(Product(item.node, tuple(("*", n) for n in run)), STUDENT_STYLE)
             readings = (f"({left})·{after}", f"{render_text(numerator, STUDENT_STYLE)}/({denominator})")
-            raise AmbiguousInput(
+            raise AmbiguousDivision(
                 f"Did you mean {readings[0]} or {readings[1]}? Add parentheses.", item.token.pos, readings
             )
+        return first, items
 
     def _power(self) -> Node:
         node = self._postfixed()

@@ -7,18 +7,41 @@ from dataclasses import dataclass
 
 import sympy
 
-from physics.errors import ParseError, TooLarge
+from physics.errors import AmbiguousInput, ParseError, TooLarge
 from physics.mathinput.build import Builder
 from physics.mathinput.limits import DEFAULT_LIMITS, InputLimits
 from physics.mathinput.names import NameTable
 from physics.mathinput.parser import Parser
 from physics.mathinput.render import render_latex, render_text
-from physics.mathinput.tokens import tokenize
+from physics.mathinput.tokens import Kind, Token, tokenize
 from physics.mathinput.words import resolve_words
 from physics.verdict import ReadAs
 
 # Values sympy gives to 1/0, 0/0, log(0): no checker can compare them, so they are refused here.
 _UNDEFINED = (sympy.zoo, sympy.nan, sympy.oo, -sympy.oo)
+
+
+def _refuse_exponent_letter_clash(text: str, tokens: list[Token], table: NameTable) -> None:
+    """`2E-3` where `E` is a declared symbol: 2×10⁻³ or 2·E − 3? Refused with both readings."""
+    for token in tokens:
+        if token.kind is not Kind.NUM:
+            continue
+        typed = text[token.pos : token.end]
+        letter = next((c for c in typed if c in "eE"), None)
+        if letter is None or not table.is_declared(letter):
+            continue
+        mantissa, _, exponent = typed.partition(letter)
+        power = exponent.lstrip("+")
+        readings = (
+            f"{mantissa}*10^" + (f"({power})" if power.startswith("-") else power),
+            f"{mantissa}*{letter}{exponent}",
+        )
+        raise AmbiguousInput(
+            f'"{typed}" could be {mantissa}×10^{power} or {mantissa}·{letter}{exponent}, '
+            f"because {letter} is a symbol here: write {readings[0]} or {readings[1]}.",
+            token.pos,
+            readings,
+        )
 
 
 @dataclass(frozen=True)
@@ -28,17 +51,26 @@ class ParsedMath:
 
 
 def parse_math(
-    text: str, names: Mapping[str, sympy.Symbol], *, limits: InputLimits = DEFAULT_LIMITS
+    text: str,
+    names: Mapping[str, sympy.Symbol],
+    *,
+    limits: InputLimits = DEFAULT_LIMITS,
+    choices: Mapping[int, int] | None = None,
 ) -> ParsedMath:
     """Read `text` using only the declared `names` (spelling -> Symbol to use).
+
+    `choices` reads each ambiguous division (by the position of its `/`) one way: 0 as (a/b)·c,
+    1 as a/(b·c); without a choice it is refused (AmbiguousDivision).
 
     Raises ParseError, AmbiguousInput, UnknownSymbol, UnknownFunction or TooLarge, each with a 0-based
     `position` into `text`; sizes are checked before any value is computed.
     """
     table = NameTable(names)
-    tokens = resolve_words(tokenize(text, limits), table)
+    tokens = tokenize(text, limits)
+    _refuse_exponent_letter_clash(text, tokens, table)
+    tokens = resolve_words(tokens, table)
     try:
-        tree = Parser(text, tokens, limits).parse()
+        tree = Parser(text, tokens, limits, choices).parse()
         expr = Builder(table.symbols, limits).build(tree)
         read_as = ReadAs(render_text(tree), render_latex(tree))
     except RecursionError:

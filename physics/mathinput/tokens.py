@@ -18,6 +18,7 @@ from physics.mathinput.vocabulary import (
     OPENERS,
     SUPERSCRIPT_DIGITS,
     SUPERSCRIPT_SIGNS,
+    VULGAR_FRACTIONS,
 )
 
 # More exponent digits than this is refused before int() is asked to read them.
@@ -112,6 +113,15 @@ def tokenize(text: str, limits: InputLimits) -> list[Token]:
             token = Token(Kind.SQRT, ch, start, i, space)
         elif ch in SUPERSCRIPT_DIGITS or ch in SUPERSCRIPT_SIGNS:
             token, i = _read_superscript(chars, i, space)
+        elif ch in VULGAR_FRACTIONS:
+            if tokens and tokens[-1].kind is Kind.NUM and not space:
+                raise ParseError(
+                    f"Write a mixed number as a fraction or a decimal (3/2 or 1.5), not 1{ch}.", i
+                )
+            tokens.extend(_vulgar_fraction(ch, i, space))
+            i += 1
+            space = False
+            continue
         elif ch == ",":
             raise ParseError("Commas are not used in answers; write a product with * or a space.", i)
         else:
@@ -120,6 +130,18 @@ def tokenize(text: str, limits: InputLimits) -> list[Token]:
         space = False
     tokens.append(Token(Kind.END, "", n, n, space))
     return tokens
+
+
+def _vulgar_fraction(ch: str, i: int, space: bool) -> list[Token]:
+    """`½` as the tokens of `(1/2)`, all at the character's position."""
+    top, bottom = VULGAR_FRACTIONS[ch]
+    return [
+        Token(Kind.LPAREN, "(", i, i + 1, space),
+        Token(Kind.NUM, str(top), i, i + 1, False, Fraction(top)),
+        Token(Kind.OP, "/", i, i + 1),
+        Token(Kind.NUM, str(bottom), i, i + 1, False, Fraction(bottom)),
+        Token(Kind.RPAREN, ")", i, i + 1),
+    ]
 
 
 def _read_number(chars: list[str], i: int, space: bool, limits: InputLimits) -> tuple[Token, int]:

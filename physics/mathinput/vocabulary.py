@@ -33,8 +33,27 @@ CHARACTER_VARIANTS: Final = MappingProxyType(
         "ϑ": "θ", "ϕ": "φ", "ϵ": "ε", "ϱ": "ρ", "ς": "σ", "µ": "μ", "º": "°",
         "−": "-", "–": "-", "‐": "-", "‑": "-", "﹣": "-", "＋": "+",
         "×": "*", "·": "*", "⋅": "*", "∙": "*", "÷": "/",
+        # Subscript digits, as in v₀, ε₀, r₁: the same names as v0 (an alias of v_0), ε0, r1.
+        "₀": "0", "₁": "1", "₂": "2", "₃": "3", "₄": "4", "₅": "5", "₆": "6", "₇": "7", "₈": "8", "₉": "9",
+        # Fullwidth forms, from East Asian input methods.
+        "（": "(", "）": ")", "［": "[", "］": "]", "｛": "{", "｝": "}", "＊": "*", "／": "/", "＾": "^",
+        "－": "-", "０": "0", "１": "1", "２": "2", "３": "3", "４": "4", "５": "5", "６": "6",
+        "７": "7", "８": "8", "９": "9", "．": ".",
+        "ℏ": "ħ",  # the Planck constant sign, as the letter ħ
     }
 )  # fmt: skip
+
+# Vulgar fractions: each reads as a bracketed fraction, `½ m v²` as (1/2)·m·v².
+VULGAR_FRACTIONS: Final = MappingProxyType(
+    {
+        "½": (1, 2), "⅓": (1, 3), "⅔": (2, 3), "¼": (1, 4), "¾": (3, 4), "⅕": (1, 5), "⅖": (2, 5),
+        "⅗": (3, 5), "⅘": (4, 5), "⅙": (1, 6), "⅚": (5, 6), "⅛": (1, 8), "⅜": (3, 8), "⅝": (5, 8),
+        "⅞": (7, 8),
+    }
+)  # fmt: skip
+
+# Letters that stand for a declared name, like a Greek letter for its name: `ħ` for a declared `hbar`.
+LETTER_NAMES: Final = MappingProxyType({"ħ": "hbar"})
 
 SUPERSCRIPT_DIGITS: Final = MappingProxyType(
     {"⁰": 0, "¹": 1, "²": 2, "³": 3, "⁴": 4, "⁵": 5, "⁶": 6, "⁷": 7, "⁸": 8, "⁹": 9}
@@ -53,7 +72,7 @@ FUNCTIONS: Final = MappingProxyType(
         "arctan": "atan", "asec": "asec", "acsc": "acsc", "acot": "acot", "arcsec": "asec",
         "arccsc": "acsc", "arccot": "acot", "sinh": "sinh", "cosh": "cosh", "tanh": "tanh",
         "asinh": "asinh", "acosh": "acosh", "atanh": "atanh", "arsinh": "asinh", "arcosh": "acosh",
-        "artanh": "atanh", "factorial": "factorial",
+        "artanh": "atanh", "factorial": "factorial", "cosec": "csc", "arccosec": "acsc", "Abs": "abs",
     }
 )  # fmt: skip
 

@@ -1,4 +1,10 @@
-"""A numeric answer as read: the number, then the units (if any) that follow it."""
+"""A numeric answer as read: the number (a decimal literal or, where allowed, exact arithmetic), then
+the units (if any) that follow it.
+
+A plain literal followed by units (`4.58 m/s^2`, `1.2e3 N`, `45%`) is read first, exactly as before,
+because only it shows significant figures. Anything else is read as arithmetic by
+`physics.numeric.arithmetic` (`229/50 m/s^2`, `2π rad`, `0.5 kg * 9.8 m/s^2`).
+"""
 
 from __future__ import annotations
 
@@ -6,9 +12,10 @@ import re
 from dataclasses import dataclass
 from fractions import Fraction
 
+from physics.dimensions import Dimension
 from physics.errors import AnswerError, ParseError, TooLarge
 from physics.numeric.literal import NumberLiteral, read_number
-from physics.units import ParsedUnits, parse_units
+from physics.units import ParsedUnits, UnitReading, read_units
 from physics.verdict import ReadAs
 
 MAX_ANSWER_LENGTH = 200
@@ -16,40 +23,76 @@ MAX_ANSWER_LENGTH = 200
 
 @dataclass(frozen=True)
 class NumericAnswer:
-    number: NumberLiteral
+    value: Fraction  # exact for literals and rational arithmetic; irrational arithmetic to ~60 digits
+    text: str  # the number part as read: `4.58e3`, `229/50`, `2*pi`
+    latex: str
+    end: int  # just past the number part
     units: ParsedUnits | None  # None when no units were written
     units_position: int | None  # where the units start in the answer
     units_text: str = ""  # the units as typed
+    literal: NumberLiteral | None = None  # the number, when it is a plain decimal literal
+    note: str | None = None  # how a reading was chosen (`5 ms^-1` read as m/s for a speed)
 
-    @property
-    def value(self) -> Fraction:
-        """The number's exact value, in the written units."""
-        return self.number.value
+    @staticmethod
+    def of_literal(
+        number: NumberLiteral,
+        units: ParsedUnits | None,
+        units_position: int | None,
+        units_text: str = "",
+        note: str | None = None,
+    ) -> NumericAnswer:
+        return NumericAnswer(
+            number.value,
+            number.text,
+            number.latex,
+            number.end,
+            units,
+            units_position,
+            units_text,
+            number,
+            note,
+        )
 
     def read_as(self, units: ParsedUnits | None = None) -> ReadAs:
         """How the answer was understood; `units` stands in for units the answer left implicit."""
         shown = self.units if self.units is not None else units
         if shown is None or shown.is_dimensionless_number:
-            return ReadAs(self.number.text, self.number.latex)
+            return ReadAs(self.text, self.latex, self.note)
         if shown.text == "°":  # 30°, not 30 °
-            return ReadAs(f"{self.number.text}°", f"{self.number.latex}{shown.latex}")
-        return ReadAs(f"{self.number.text} {shown.text}", rf"{self.number.latex}\,{shown.latex}")
+            return ReadAs(f"{self.text}°", f"{self.latex}{shown.latex}", self.note)
+        return ReadAs(f"{self.text} {shown.text}", rf"{self.latex}\,{shown.latex}", self.note)
 
 
 _RECIPROCAL = re.compile(r"1\s*/")  # `4.9e12 1/s` is a number and a unit, not two numbers
+_STARTS_LITERAL = re.compile(r"\s*[-−+]?\s*\.?[0-9]")
+_NOT_ARITHMETIC = re.compile(r"[\s\d.,*·⋅]*")  # after a literal: more digits or a times sign only
 
 
-def read_numeric_answer(text: str) -> NumericAnswer:
-    """Read `4.58 m/s^2`, `-1.2e3 N`, `45%`, `16.49 km/h`; AnswerError with a position if it cannot be."""
-    if len(text) > MAX_ANSWER_LENGTH:
-        raise TooLarge(f"An answer may be at most {MAX_ANSWER_LENGTH} characters", MAX_ANSWER_LENGTH)
-    number = read_number(text)
+class _NumberFormError(Exception):
+    """The decimal literal itself is malformed (`4.5.8`, `4,58`, `4.58×10^`); carries the AnswerError."""
+
+    def __init__(self, error: AnswerError) -> None:
+        super().__init__(error.message)
+        self.error = error
+
+
+def read_literal_answer(text: str, expected: Dimension | None = None) -> NumericAnswer:
+    """Read `4.58 m/s^2`, `-1.2e3 N`, `45%`, `16.49 km/h`: a decimal literal and units."""
+    return _read_literal(text, expected)[0]
+
+
+def _read_literal(text: str, expected: Dimension | None) -> tuple[NumericAnswer, int]:
+    """The answer, and where its number ended; _NumberFormError when the number itself is malformed."""
+    try:
+        number = read_number(text)
+    except AnswerError as error:
+        raise _NumberFormError(error) from None
     rest_start = number.end
     while rest_start < len(text) and text[rest_start].isspace():
         rest_start += 1
     unit_text = text[rest_start:].rstrip()
     if not unit_text:
-        return NumericAnswer(number, None, None)
+        return NumericAnswer.of_literal(number, None, None), number.end
     reciprocal = _RECIPROCAL.match(unit_text)
     if unit_text.startswith("/"):  # `4.9e12 /s`: a unit of the form 1/…
         unit_text, rest_start = "1" + unit_text, rest_start - 1
@@ -60,10 +103,66 @@ def read_numeric_answer(text: str) -> NumericAnswer:
             "Two numbers side by side: write one number without spaces or separators (12500, not 12 500)",
             rest_start,
         )
+    reading = read_units_at(unit_text, rest_start, expected)
+    return NumericAnswer.of_literal(number, reading.units, rest_start, unit_text, reading.note), number.end
+
+
+def read_units_at(unit_text: str, start: int, expected: Dimension | None) -> UnitReading:
+    """`read_units`, with any error's position moved to where the units start in the answer."""
     try:
-        units = parse_units(unit_text)
+        return read_units(unit_text, expected)
     except AnswerError as error:
         if error.position is not None:
-            error.position += rest_start
+            error.position += start
         raise
-    return NumericAnswer(number, units, rest_start, unit_text)
+
+
+def read_numeric_answer(
+    text: str, expected: Dimension | None = None, *, arithmetic: bool = True
+) -> NumericAnswer:
+    """Read a numeric answer; AnswerError with a position if it cannot be.
+
+    `expected`: the dimension the units should have, to choose between readings of glued unit names.
+    `arithmetic`: whether the number may be an expression (`229/50`); if not, a plain decimal is required.
+    """
+    if len(text) > MAX_ANSWER_LENGTH:
+        raise TooLarge(f"An answer may be at most {MAX_ANSWER_LENGTH} characters", MAX_ANSWER_LENGTH)
+    # Imported here: arithmetic pulls in the math reader and sympy, which plain literals never need.
+    from physics.numeric.arithmetic import number_part_end, read_arithmetic_answer
+
+    try:
+        return read_literal_answer(text, expected)
+    except _NumberFormError as malformed:
+        # No literal starts the answer (`pi/6`, `√2`): only arithmetic can read it. A literal that
+        # starts but is malformed (`4.5.8`, `4,58`) keeps its own, specific, message.
+        literal_error = malformed.error if _STARTS_LITERAL.match(text) else None
+    except AnswerError as error:
+        literal_error = error
+    ends = number_part_end(text)
+    if ends is None:
+        if literal_error is None:
+            raise ParseError("The answer must start with a number, such as 2.5 or 229/50", 0) from None
+        raise literal_error
+    try:
+        answer = read_arithmetic_answer(text, expected)
+    except AnswerError:
+        # Arithmetic that is no more than the literal (`12 500 m`, `4.5.8`) is best blamed by the literal.
+        if literal_error is not None and not _beyond_literal(text, ends):
+            raise literal_error from None
+        raise
+    if not arithmetic:
+        raise ParseError(
+            f"Write a plain decimal number (such as 4.58), not arithmetic such as {answer.text}: "
+            "work the value out first",
+            0,
+        )
+    return answer
+
+
+def _beyond_literal(text: str, ends: int) -> bool:
+    """Whether the arithmetic number part holds more than a decimal literal does (an operator, a word)."""
+    try:
+        number = read_number(text)
+    except AnswerError:
+        return False  # a malformed literal (`4.5.8`): its own message is the specific one
+    return _NOT_ARITHMETIC.fullmatch(text[number.end : ends]) is None

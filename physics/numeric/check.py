@@ -2,15 +2,15 @@
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 from fractions import Fraction
 from functools import cached_property
 
 from physics.dimensions import describe
-from physics.errors import AnswerError, MissingUnits, SigfigsError, UnexpectedUnits
+from physics.errors import AnswerError, MissingUnits, SigfigsError, UnexpectedUnits, UnknownUnit
 from physics.numeric.answer import NumericAnswer, read_numeric_answer
 from physics.numeric.diagnosis import diagnose
-from physics.numeric.literal import NumberLiteral
 from physics.numeric.spec import NumericSpec
 from physics.numeric.tolerance import (
     Tolerance,
@@ -30,18 +30,31 @@ def _units_of(read: NumericAnswer, spec: NumericSpec, target: ParsedUnits | None
     """The units the answer's number is in (None: a pure number), or MissingUnits / UnexpectedUnits."""
     if read.units is None:
         if target is not None and spec.units_required:
-            raise MissingUnits(
-                f"Your answer needs units, for example {read.number.text} {target.text}.", read.number.end
-            )
+            raise MissingUnits(f"Your answer needs units, for example {read.text} {target.text}.", read.end)
         return target
     if target is None:
         raise UnexpectedUnits("This answer is a pure number: remove the units.", read.units_position)
+    if spec.units_system == "SI":
+        foreign = [atom.symbol for atom, _ in read.units.factors if not atom.si]
+        if foreign:
+            raise UnknownUnit(
+                f"This answer must be in SI units: {foreign[0]} is not one (for example, use {target.text}).",
+                read.units_position,
+                foreign[0],
+            )
     return read.units
 
 
-def _check_figures_shown(number: NumberLiteral, tolerance: Tolerance) -> None:
+def _check_figures_shown(read: NumericAnswer, tolerance: Tolerance) -> None:
     if tolerance.sigfigs is None:
         return
+    number = read.literal
+    if number is None:
+        raise SigfigsError(
+            f"Give your answer as a decimal number with {tolerance.sigfigs} significant figures "
+            f"(such as 4.58), not as arithmetic ({read.text}).",
+            0,
+        )
     fewest, most = number.sigfig_range
     if fewest <= tolerance.sigfigs <= most:
         return
@@ -132,22 +145,32 @@ def check_numeric(answer: str, spec: NumericSpec) -> Verdict:
     """
     target = spec.target_units()
     try:
-        read = read_numeric_answer(answer)
+        read = read_numeric_answer(
+            answer, target.dimension if target is not None else None, arithmetic=spec.arithmetic
+        )
         answer_units = _units_of(read, spec, target)
     except AnswerError as error:
         return Verdict.invalid(error)
     read_as = read.read_as(answer_units)
     try:
-        _check_figures_shown(read.number, spec.tolerance)
+        _check_figures_shown(read, spec.tolerance)
     except SigfigsError as error:
         return Verdict.invalid(error, read_as)
     if answer_units is not None and target is not None and answer_units.dimension != target.dimension:
-        return Verdict.graded(_wrong_dimension(read, answer_units, target), read_as)
+        return _noted(Verdict.graded(_wrong_dimension(read, answer_units, target), read_as))
     expected = spec.expected_value
     expected_as_written = expected
     if answer_units is not None and target is not None:
         expected_as_written = target.convert(expected, answer_units)
     comparison = _Comparison(expected, expected_as_written, answer_units, target, spec.tolerance)
     if comparison.passes(read.value):
-        return Verdict.graded(CORRECT, read_as)
-    return Verdict.graded(diagnose(read.value, expected_as_written, comparison.passes), read_as)
+        return _noted(Verdict.graded(CORRECT, read_as))
+    return _noted(Verdict.graded(diagnose(read.value, expected_as_written, comparison.passes), read_as))
+
+
+def _noted(verdict: Verdict) -> Verdict:
+    """Feedback that starts by saying how a reading was chosen, when the expected dimension chose it."""
+    note = verdict.read_as.note if verdict.read_as is not None else None
+    if note is None:
+        return verdict
+    return dataclasses.replace(verdict, feedback=f"{note}. {verdict.feedback}")

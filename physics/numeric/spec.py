@@ -10,6 +10,8 @@ from physics.errors import AnswerError, SpecError
 from physics.numeric.tolerance import DEFAULT_TOLERANCE, Tolerance, as_decimal
 from physics.units import ParsedUnits, parse_units
 
+UNITS_SYSTEMS = (None, "SI")
+
 
 @dataclass(frozen=True)
 class NumericSpec:
@@ -17,13 +19,25 @@ class NumericSpec:
     units: str | None = None  # None: the answer is a pure number
     units_required: bool = True
     tolerance: Tolerance = DEFAULT_TOLERANCE
+    arithmetic: bool = True  # the number may be an expression (`229/50`); False: a plain decimal
+    units_system: str | None = None  # "SI": answers must use SI units (or those accepted with them)
 
     def __post_init__(self) -> None:
         # frozen: normalising what the author passed (a JSON float 4.5807 means the decimal 4.5807)
         object.__setattr__(self, "expected", as_decimal(self.expected, ("expected",)))
         if self.units is not None and not isinstance(self.units, str):
             raise SpecError(f"units must be text, not {self.units!r}", ("units",))
-        self.target_units()  # refuse unusable units when the spec is made, not when a student answers
+        if self.units_system not in UNITS_SYSTEMS:
+            raise SpecError(
+                f'units_system must be "SI" or absent, not {self.units_system!r}', ("units_system",)
+            )
+        target = (
+            self.target_units()
+        )  # refuse unusable units when the spec is made, not when a student answers
+        if self.units_system == "SI" and target is not None:
+            foreign = [atom.symbol for atom, _ in target.factors if not atom.si]
+            if foreign:
+                raise SpecError(f"units {self.units!r} are not SI, but units_system is SI", ("units",))
 
     @property
     def expected_value(self) -> Fraction:

@@ -9,10 +9,18 @@ from __future__ import annotations
 from physics.dimensions import Dimension
 from physics.errors import AnswerError, SpecError
 from physics.units.parsed import IncompatibleUnits, ParsedUnits
-from physics.units.parser import parse_units
+from physics.units.parser import UnitReading, parse_units, read_units
 from physics.units.registry import UnitAtom
 
-__all__ = ["IncompatibleUnits", "ParsedUnits", "UnitAtom", "parse_units", "unit_dimension"]
+__all__ = [
+    "IncompatibleUnits",
+    "ParsedUnits",
+    "UnitAtom",
+    "UnitReading",
+    "parse_units",
+    "read_units",
+    "unit_dimension",
+]
 
 
 def unit_dimension(text: str) -> Dimension:

@@ -22,6 +22,9 @@ class CatalogueEntry:
     # Spellings pint lacks: the contract promises `rev` and `°`; `mins`, `hrs` and `secs` would
     # otherwise be split into products (`min·s`), which no one means.
     extra_spellings: tuple[str, ...] = ()
+    si: bool = True  # an SI unit or one accepted for use with it (SI brochure, table 8)
+    # pint spellings left out: `a` (year) and `G` (gauss) would turn glued names into surprises.
+    skip_spellings: tuple[str, ...] = ()
 
 
 CATALOGUE: tuple[CatalogueEntry, ...] = (
@@ -56,22 +59,62 @@ CATALOGUE: tuple[CatalogueEntry, ...] = (
     # Units accepted for use with the SI.
     CatalogueEntry("liter", True, symbol="L"),
     CatalogueEntry("electron_volt", True),
-    CatalogueEntry("watt_hour", True),
-    CatalogueEntry("bar", True),
+    CatalogueEntry("watt_hour", True, si=False),
     CatalogueEntry("minute", False, extra_spellings=("mins",)),
     CatalogueEntry("hour", False, extra_spellings=("hrs",)),
-    CatalogueEntry("day", False),
+    CatalogueEntry("day", False, extra_spellings=("days",)),
     CatalogueEntry("degree", False, symbol="°", latex="{}^{\\circ}", extra_spellings=("°",)),
-    CatalogueEntry("turn", False, symbol="rev", extra_spellings=("rev",)),
-    CatalogueEntry("revolutions_per_minute", False),
+    CatalogueEntry("turn", False, symbol="rev", extra_spellings=("rev",), si=False),
+    CatalogueEntry("revolutions_per_minute", False, si=False),
     CatalogueEntry("degree_Celsius", False, latex="{}^{\\circ}\\mathrm{C}"),
     # Without it `°F` would be read as degree·farad, a capacitance.
-    CatalogueEntry("degree_Fahrenheit", False, latex="{}^{\\circ}\\mathrm{F}"),
-    CatalogueEntry("angstrom", False, latex=r"\text{Å}"),
+    CatalogueEntry("degree_Fahrenheit", False, latex="{}^{\\circ}\\mathrm{F}", si=False),
+    CatalogueEntry("angstrom", False, latex=r"\text{Å}", si=False),
     CatalogueEntry("unified_atomic_mass_unit", False),
     CatalogueEntry("dalton", False),
-    CatalogueEntry("standard_atmosphere", False),
+    CatalogueEntry("astronomical_unit", False),
+    CatalogueEntry("katal", True),
+    # Units beyond SI that courses use; each from pint's definitions (factor and dimension).
+    CatalogueEntry("standard_atmosphere", False, si=False),
+    CatalogueEntry("bar", True, si=False),
+    CatalogueEntry("foot", False, si=False),
+    CatalogueEntry("inch", False, si=False),
+    CatalogueEntry("mile", False, si=False),
+    CatalogueEntry("yard", False, si=False),
+    CatalogueEntry("mile_per_hour", False, si=False),
+    CatalogueEntry("knot", False, si=False),
+    CatalogueEntry("pound", False, si=False),
+    CatalogueEntry("force_pound", False, si=False),
+    CatalogueEntry("slug", False, si=False),
+    CatalogueEntry("pound_force_per_square_inch", False, si=False),
+    CatalogueEntry("torr", False, si=False),
+    CatalogueEntry("meter_Hg", True, si=False, skip_spellings=("m_Hg",)),  # mmHg is milli + mHg
+    CatalogueEntry("calorie", True, si=False),
+    CatalogueEntry("british_thermal_unit", False, si=False),
+    CatalogueEntry("horsepower", False, si=False),
+    CatalogueEntry("dyne", False, si=False),
+    CatalogueEntry("erg", False, si=False),
+    # pint's `gauss` is the Gaussian-system unit, not commensurable with the tesla; courses mean 1e-4 T.
+    CatalogueEntry("gauss_tesla", False, symbol="G", extra_spellings=("gauss", "G"), si=False),
+    CatalogueEntry("light_year", False, si=False),
+    CatalogueEntry("parsec", False, si=False),
+    CatalogueEntry(
+        "year", False, symbol="yr", si=False, skip_spellings=("a", "julian_year"), extra_spellings=("yrs",)
+    ),
+    CatalogueEntry("gallon", False, si=False),
 )
+
+# Common spellings that are not pint's, each read as the unit expression it stands for. They win over
+# splitting a glued name into units: `ohms` is the ohm, never ohm·second; `mcg` a microgram, never
+# milli·centigram. Plurals of long names (`volts`, `newtons`) need no entry: they are made for every
+# name; these are the short ones.
+ALIASES: dict[str, str] = {
+    "ohms": "ohm", "Ohm": "ohm", "Ohms": "ohm", "rads": "rad", "degs": "°", "revs": "rev",
+    "amps": "A", "gm": "g", "gms": "g", "kgs": "kg", "mcg": "µg", "lbs": "lb",
+    "kph": "km/h", "kmh": "km/h", "kmph": "km/h", "mps": "m/s", "cc": "cm^3", "AU": "au",
+    # `ms-1` is how many textbooks print m·s⁻¹; no one writes a reciprocal millisecond that way.
+    "ms-1": "m/s", "ms-2": "m/s^2",
+}  # fmt: skip
 
 # The decimal SI prefixes, by pint name. Binary prefixes, and the 2022 ones (ronto r, quecto q,
 # ronna R, quetta Q), are left out: no homework uses them, and they would make glued names such as

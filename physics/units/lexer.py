@@ -1,7 +1,9 @@
-"""Tokens of a unit string, from a whitelist: names, integers, `* · ⋅ × / ^ ** ( ) - −`, superscripts.
+"""Tokens of a unit string, from a whitelist: names, integers, `* · ⋅ × . / ^ ** ( ) - −`, superscripts.
 
 Anything else is a ParseError at its position. Spaces only separate tokens: letters glued together
 form one name (`Nm`), which the parser looks up or splits, so `N m` and `Nm` both reach it as names.
+A name with a negative integer glued to it is a power, as textbooks print it (`m s-2` is m·s⁻²), and
+`N.m` is N·m.
 """
 
 from __future__ import annotations
@@ -10,6 +12,7 @@ from dataclasses import dataclass
 from enum import Enum
 
 from physics.errors import ParseError
+from physics.units.catalogue import ALIASES
 
 
 class Kind(Enum):
@@ -39,6 +42,7 @@ _SINGLE = {
     "·": Kind.TIMES,  # middle dot
     "⋅": Kind.TIMES,  # dot operator
     "×": Kind.TIMES,
+    ".": Kind.TIMES,  # `N.m`, `kg.m/s^2`
     "/": Kind.DIVIDE,
     "^": Kind.POWER,
     "(": Kind.LPAREN,
@@ -55,6 +59,16 @@ _MAX_INTEGER_DIGITS = 6
 def _is_name_char(char: str) -> bool:
     # `°` is not a letter but begins `°C`; `_` appears in pint names such as `electron_volt`.
     return char.isalpha() or char in "°_"
+
+
+def _glued_negative_power(text: str, i: int) -> int | None:
+    """The end of a `-2` glued to the name ending at i (`s-2`), or None."""
+    if i + 1 < len(text) and text[i] in "-−" and text[i + 1] in "0123456789":
+        end = i + 1
+        while end < len(text) and text[end] in "0123456789":
+            end += 1
+        return end
+    return None
 
 
 def tokenize(text: str) -> list[Token]:
@@ -75,7 +89,14 @@ def tokenize(text: str) -> list[Token]:
                     f"Write powers of units with ^ (for example m^2 or s^-2), not {text[start : i + 1]!r}",
                     i,
                 )
+            power_end = _glued_negative_power(text, i)
+            if power_end is not None and text[start:power_end].replace("−", "-") in ALIASES:
+                tokens.append(Token(Kind.NAME, text[start:power_end].replace("−", "-"), start))
+                i = power_end
+                continue
             tokens.append(Token(Kind.NAME, text[start:i], start))
+            if power_end is not None:
+                tokens.append(Token(Kind.POWER, "^", i))
         elif char in "0123456789":
             while i < n and text[i] in "0123456789":
                 i += 1
@@ -100,6 +121,8 @@ def tokenize(text: str) -> list[Token]:
         elif char == "*" and text.startswith("**", i):
             i += 2
             tokens.append(Token(Kind.POWER, "**", start))
+        elif char == "." and text[i + 1 : i + 2].isdigit():
+            raise ParseError("A unit string holds whole numbers only: powers as in m^2 or s^-2", start)
         elif char in _SINGLE:
             i += 1
             tokens.append(Token(_SINGLE[char], char, start))

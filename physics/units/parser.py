@@ -8,18 +8,27 @@
 
 With one `/`, the whole product after it is the denominator (`J/kg K` is J/(kg·K)); with several, each
 divides by the single factor after it (`m/s/s`). Several `/` with a product after one of them
-(`J/kg K/s`) is refused as ambiguous. A NAME is a unit spelling (`ms`, `kN`, `meters`); a glued name
-that is not one but splits one way into spellings is their product (`Nm`).
+(`J/kg K/s`) is refused as ambiguous. A NAME is a unit spelling (`ms`, `kN`, `meters`) or an alias
+from `catalogue.ALIASES` (`ohms`, `mps`); a glued name that is neither but splits one way into
+spellings is their product (`Nm`), with a power on its last unit (`kgm^2` is kg·m²). A glued name that
+another single unit also fits (`Kg`, `kgs`) has no safe reading: `read_units` lets the expected
+dimension choose, or refuses it.
 """
 
 from __future__ import annotations
 
+import itertools
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass
 from functools import lru_cache
 
+from physics.dimensions import Dimension, describe
 from physics.errors import AmbiguousInput, ParseError, TooLarge, UnknownUnit
+from physics.units.catalogue import ALIASES
 from physics.units.lexer import Kind, Token, tokenize
 from physics.units.parsed import ParsedUnits
-from physics.units.registry import UnitAtom, lookup, suggestion
+from physics.units.registry import UnitAtom, case_variant, lookup, suggestion
 
 MAX_UNIT_TEXT_LENGTH = 100
 MAX_UNIT_POWER = 12
@@ -52,30 +61,85 @@ def _splits(name: str) -> list[list[UnitAtom]]:
     return [w for w in ways[0] if len(w) >= 2]
 
 
-def _name_units(token: Token) -> ParsedUnits:
-    atom = lookup(token.text)
+Factors = tuple[tuple[UnitAtom, int], ...]
+
+
+@dataclass(frozen=True)
+class _Option:
+    """One reading of a name: its units, and whether it is a glued product (a power then applies to
+    its last unit only: `kgm^2` is kg·m²)."""
+
+    factors: Factors
+    split: bool = False
+
+    def powered(self, power: int) -> ParsedUnits:
+        if not self.split:
+            return ParsedUnits(self.factors) ** power
+        *head, (last, one) = self.factors
+        return ParsedUnits.of([*head, (last, one * power)])
+
+    @property
+    def text(self) -> str:
+        return ParsedUnits(self.factors).text
+
+
+@dataclass(frozen=True)
+class _NameReadings:
+    """The ways one name can be read; `safe`: the first may be taken without a dimension to confirm it."""
+
+    options: tuple[_Option, ...]
+    safe: bool
+
+
+def _readings(name: str, negative_power: bool) -> _NameReadings:
+    """Every reading of a glued name, most literal first.
+
+    A known spelling or alias is taken as it is; a glued name that splits one way only is that product
+    (`Nm`). Where another single unit fits the same letters (`Kg` for kg, `kgs` as a plural of kg) the
+    name has no safe reading: only the expected dimension can choose. A known spelling with a negative
+    power (`ms^-1`) keeps its split as a second reading, for the same choice.
+    """
+    alias = ALIASES.get(name)
+    if alias is not None:
+        return _NameReadings((_Option(_alias_factors(alias)),), safe=True)
+    atom = lookup(name)
+    splits = tuple(_Option(tuple((a, 1) for a in split), split=True) for split in _splits(name))
     if atom is not None:
-        return ParsedUnits(((atom, 1),))
-    splits = _splits(token.text)
-    if len(splits) == 1:
-        return ParsedUnits.of((a, 1) for a in splits[0])
-    if len(splits) > 1:
-        readings = ["·".join(a.symbol for a in split) for split in splits]
-        raise AmbiguousInput(
-            f"{token.text!r} can be read as {readings[0]} or as {readings[1]}; separate the units with "
-            "a space or ·",
-            token.position,
-            readings,
-        )
-    hint = suggestion(token.text)
-    advice = f" (units are case-sensitive: did you mean {hint!r}?)" if hint else ""
-    raise UnknownUnit(f"Unknown unit {token.text!r}{advice}", token.position, token.text)
+        return _NameReadings((_Option(((atom, 1),)), *(splits if negative_power else ())), safe=True)
+    options = list(splits)
+    plural = _plural_of(name)
+    if plural is not None:
+        options.insert(0, _Option(((plural, 1),)))
+    # A case slip counts as a reading where no split does, or where the split starts with a kelvin:
+    # `Kg`, `KJ` are the kilo prefix in capitals; `Nm` stays the newton-metre, never a nanometre.
+    variant = case_variant(name) if not splits or splits[0].factors[0][0].name == "kelvin" else None
+    variant_atom = lookup(variant) if variant is not None else None
+    if variant_atom is not None:
+        options.append(_Option(((variant_atom, 1),)))
+    unique = list({option.text: option for option in options}.values())
+    return _NameReadings(tuple(unique), safe=len(unique) == 1 and variant_atom is None)
+
+
+def _plural_of(name: str) -> UnitAtom | None:
+    """`lbs` is the pound: a lowercase plural of a unit spelling of two letters or more."""
+    if len(name) > 2 and name.endswith("s") and name.isascii() and name.islower():
+        return lookup(name[:-1])
+    return None
+
+
+@lru_cache(maxsize=64)
+def _alias_factors(alias: str) -> Factors:
+    return _Parser(alias, {}).parse().factors
 
 
 class _Parser:
-    def __init__(self, text: str) -> None:
+    """One reading of a unit string; `choices` picks a reading (by index) for names at given positions."""
+
+    def __init__(self, text: str, choices: Mapping[int, int]) -> None:
         self.tokens = tokenize(text)
         self.index = 0
+        self.choices = choices
+        self.open_names: list[tuple[Token, _NameReadings]] = []  # names read more than one way
 
     @property
     def token(self) -> Token:
@@ -140,6 +204,8 @@ class _Parser:
             count += 1
 
     def factor(self) -> ParsedUnits:
+        if self.at(Kind.NAME):
+            return self.name_factor()
         base = self.atom()
         if self.at(Kind.POWER):
             self.advance()
@@ -148,10 +214,25 @@ class _Parser:
             return base ** self._checked_power(self.advance())
         return base
 
+    def name_factor(self) -> ParsedUnits:
+        token = self.advance()
+        power = 1
+        if self.at(Kind.POWER):
+            self.advance()
+            power = self.exponent()
+        elif self.at(Kind.SUPERSCRIPT):
+            power = self._checked_power(self.advance())
+        readings = _readings(token.text, power < 0)
+        if not readings.options:
+            hint = suggestion(token.text)
+            advice = f" (units are case-sensitive: did you mean {hint!r}?)" if hint else ""
+            raise UnknownUnit(f"Unknown unit {token.text!r}{advice}", token.position, token.text)
+        if len(readings.options) > 1 or not readings.safe:
+            self.open_names.append((token, readings))
+        return readings.options[self.choices.get(token.position, 0)].powered(power)
+
     def atom(self) -> ParsedUnits:
         token = self.advance()
-        if token.kind is Kind.NAME:
-            return _name_units(token)
         if token.kind is Kind.INTEGER:
             if token.value != 1:
                 raise ParseError(
@@ -192,9 +273,83 @@ class _Parser:
         return sign * token.value
 
 
+@dataclass(frozen=True)
+class UnitReading:
+    """Units as read, and, when the expected dimension chose between readings, a note saying so."""
+
+    units: ParsedUnits
+    note: str | None = None
+
+
+_MAX_READINGS = 64  # combinations of readings of glued names tried against the expected dimension
+
+
+def _read(text: str, expected: Dimension | None) -> UnitReading:
+    parser = _Parser(text, {})
+    literal = parser.parse()
+    open_names = parser.open_names
+    safe = all(readings.safe for _, readings in open_names)
+    if safe and (expected is None or literal.dimension == expected):
+        return UnitReading(literal)
+    if expected is not None:
+        fits = _fitting(text, open_names, expected)
+        if len(fits) == 1:
+            typed = " ".join(text.split())
+            return UnitReading(
+                fits[0], f"Read {typed} as {fits[0].text}: the only reading that is {describe(expected)}"
+            )
+    if safe:
+        return UnitReading(literal)  # graded: the dimension is wrong
+    token, readings = next((t, r) for t, r in open_names if not r.safe)
+    shown = [option.text for option in readings.options]
+    if len(shown) == 1:
+        raise UnknownUnit(
+            f"Unknown unit {token.text!r} (units are case-sensitive: did you mean {shown[0]!r}?)",
+            token.position,
+            token.text,
+        )
+    raise AmbiguousInput(
+        f"{token.text!r} can be read as {' or as '.join(shown)}; write the unit you mean, "
+        "separating units with a space or ·",
+        token.position,
+        shown,
+    )
+
+
+def _fitting(
+    text: str, open_names: list[tuple[Token, _NameReadings]], expected: Dimension
+) -> list[ParsedUnits]:
+    """The distinct readings of `text` with the expected dimension (none if there are too many to try)."""
+    counts = [len(readings.options) for _, readings in open_names]
+    if math.prod(counts) > _MAX_READINGS:
+        return []
+    fits: list[ParsedUnits] = []
+    for combination in itertools.product(*(range(count) for count in counts)):
+        choices = {token.position: k for (token, _), k in zip(open_names, combination, strict=True)}
+        units = _Parser(text, choices).parse()
+        if units.dimension == expected and units not in fits:
+            fits.append(units)
+    return fits
+
+
 @lru_cache(maxsize=2048)
-def _parse_cached(text: str) -> ParsedUnits:
-    return _Parser(text).parse()
+def _read_cached(text: str, expected: Dimension | None) -> UnitReading:
+    return _read(text, expected)
+
+
+def _check_length(text: str) -> None:
+    if len(text) > MAX_UNIT_TEXT_LENGTH:
+        limit = MAX_UNIT_TEXT_LENGTH
+        raise TooLarge(f"A unit string may be at most {limit} characters", limit)
+
+
+def read_units(text: str, expected: Dimension | None = None) -> UnitReading:
+    """Read a unit string as `parse_units` does; where glued names read several ways (`Kg`: kg or
+    K·g; `ms^-1`: ms⁻¹ or m·s⁻¹) and exactly one reading has the `expected` dimension, take it and
+    say so in `note`. Without one that decides, a name with no safe reading is refused.
+    """
+    _check_length(text)
+    return _read_cached(text, expected)
 
 
 def parse_units(text: str) -> ParsedUnits:
@@ -202,7 +357,4 @@ def parse_units(text: str) -> ParsedUnits:
 
     Raises UnknownUnit, AmbiguousInput, ParseError or TooLarge, with 0-based positions into `text`.
     """
-    if len(text) > MAX_UNIT_TEXT_LENGTH:
-        limit = MAX_UNIT_TEXT_LENGTH
-        raise TooLarge(f"A unit string may be at most {limit} characters", limit)
-    return _parse_cached(text)
+    return read_units(text).units

@@ -40,6 +40,7 @@ class UnitAtom:
     scale: Fraction  # value in coherent SI units (kg, m, s, A, K, mol, cd) of one of this unit
     dimension: Dimension
     offset: Fraction | None = None  # for an offset unit (°C): SI value of its zero
+    si: bool = True  # SI, or accepted for use with it; False for ft, lb, atm, rev, …
 
 
 @dataclass(frozen=True)
@@ -51,7 +52,10 @@ class _Spelling:
 @cache
 def registry() -> pint.UnitRegistry[Fraction]:
     """The one pint registry, with exact (Fraction) arithmetic."""
-    return pint.UnitRegistry(non_int_type=Fraction)
+    ureg: pint.UnitRegistry[Fraction] = pint.UnitRegistry(non_int_type=Fraction)
+    # The gauss of SI-based courses (pint's own `gauss` belongs to the Gaussian system).
+    ureg.define("gauss_tesla = tesla / 10000")
+    return ureg
 
 
 def _unit_definition(ureg: pint.UnitRegistry[Fraction], name: str) -> Any:
@@ -71,6 +75,8 @@ def _spellings_of_unit(
     if entry.symbol:
         candidates.append(entry.symbol)
     for spelling in candidates:
+        if spelling in entry.skip_spellings:
+            continue
         is_name = len(spelling) > _MAX_SYMBOL_LENGTH and spelling.isascii()
         (names if is_name else symbols).append(spelling)
     return symbols, names
@@ -135,7 +141,11 @@ def _dimension_of(ureg: pint.UnitRegistry[Fraction], name: str) -> Dimension:
 
 
 def _exact(number: object) -> Fraction:
-    # The registry is built with non_int_type=Fraction, so factors are Fractions or ints.
+    # The registry is built with non_int_type=Fraction, so factors are Fractions or ints, except where
+    # pint's definition file writes a decimal in e-notation (`gauss = 1e-4 tesla`): that float's
+    # shortest repr is the decimal written.
+    if isinstance(number, float):
+        return Fraction(repr(number))
     if not isinstance(number, Fraction | int):
         raise TypeError(f"pint gave an inexact factor {number!r}")
     return Fraction(number)
@@ -170,6 +180,7 @@ def _atom(prefix: str, entry: CatalogueEntry) -> UnitAtom:
         scale=scale,
         dimension=dimension,
         offset=offset,
+        si=entry.si,
     )
 
 
@@ -191,6 +202,24 @@ def _by_folded_case() -> dict[str, str]:
     for spelling in sorted(spelling_table()):
         index.setdefault(spelling.casefold(), spelling)
     return index
+
+
+@cache
+def _folded_counts() -> dict[str, int]:
+    counts: dict[str, int] = {}
+    for spelling in spelling_table():
+        counts[spelling.casefold()] = counts.get(spelling.casefold(), 0) + 1
+    return counts
+
+
+def case_variant(spelling: str) -> str | None:
+    """The one accepted spelling that differs from `spelling` only in case (`Kg` → `kg`), if exactly one
+    does: `MM` has two (`mm`, `Mm`), so it has none."""
+    folded = spelling.casefold()
+    if _folded_counts().get(folded) != 1:
+        return None
+    match = _by_folded_case()[folded]
+    return match if match != spelling else None
 
 
 def suggestion(spelling: str) -> str | None:

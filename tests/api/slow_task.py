@@ -6,8 +6,9 @@ import os
 import signal
 import time
 
-from app.grading.worker import GraderCrash, SpecProblem, grade, guarded
-from physics.checking import CheckJob, run_job
+from app.authoring import Vetted
+from app.grading.worker import GraderCrash, SpecProblem, grade, guarded, read_only
+from physics.checking import CheckJob, Preview, run_job
 from physics.errors import SpecError
 from physics.verdict import Verdict
 
@@ -39,6 +40,21 @@ def pid_or_grade(job: CheckJob) -> Verdict | SpecProblem | GraderCrash | int:
     if job.answer == "die":
         os.kill(os.getpid(), signal.SIGKILL)
     return guarded(_faulty_run, job)
+
+
+def slow_vet(source: bytes, fmt: str) -> Vetted:
+    """Vetting that takes `sleep` forever (until the pool's time limit kills it)."""
+    if source == b"sleep":
+        while True:
+            time.sleep(1)
+    return Vetted(None, [("", "vetted")])
+
+
+def spec_failing_preview(job: CheckJob) -> Preview | SpecProblem | GraderCrash:
+    """A preview whose reference cannot be read, for `spec`; the worker's own preview otherwise."""
+    if job.answer == "spec":
+        return SpecProblem("the reference does not parse", ("parts", 0, "answer"))
+    return read_only(job)
 
 
 def counted_grade(tally: str, job: CheckJob) -> Verdict | SpecProblem | GraderCrash:

@@ -68,6 +68,16 @@ def numeric(answer: str, expected: float | str = 4.5807, units: str | None = "m/
         pytest.param(
             numeric("4.6 m/s^2", tolerance={"sigfigs": 3}), "invalid", "sigfigs", id="sigfigs-shown"
         ),
+        pytest.param(numeric("229/50 m/s^2"), "correct", "equivalent", id="numeric-arithmetic"),
+        pytest.param(numeric("0.5 kg * 9.16 m/s^2", units="N"), "correct", "equivalent", id="quantities"),
+        pytest.param(
+            numeric("229/50 m/s^2", arithmetic=False), "invalid", "parse_error", id="plain-decimal-asked"
+        ),
+        pytest.param(numeric("2 ohms", expected=2, units="ohm"), "correct", "equivalent", id="ohms"),
+        pytest.param(
+            numeric("15.03 ft/s^2", units_system="SI"), "invalid", "unknown_unit", id="si-only-refuses-ft"
+        ),
+        pytest.param(numeric("15.03 ft/s^2"), "correct", "equivalent", id="ft-converted"),
     ],
 )
 def test_check_gives_contract_verdict_and_reason(client, student_headers, body, verdict, reason):
@@ -90,6 +100,20 @@ def test_read_as_shows_how_the_answer_was_understood(client, student_headers):
     assert "\\theta" in result["read_as"]["latex"]
 
 
+def test_read_as_note_says_how_the_expected_dimension_chose_the_units(client, student_headers):
+    result = client.post(
+        "/v1/check", json=numeric("5 ms^-1", expected=5, units="m/s"), headers=student_headers
+    ).json()
+    assert result["verdict"] == "correct"
+    assert result["read_as"]["text"] == "5 m/s"
+    assert result["read_as"]["note"] == "Read ms^-1 as m/s: the only reading that is a speed"
+
+
+def test_units_system_other_than_si_is_422(client, student_headers):
+    response = client.post("/v1/check", json=numeric("1 m", units_system="imperial"), headers=student_headers)
+    assert response.status_code == 422
+
+
 def test_invalid_verdict_points_at_the_problem(client, student_headers):
     result = client.post("/v1/check", json=symbolic("m g + * M"), headers=student_headers).json()
     assert result["verdict"] == "invalid"
@@ -98,12 +122,22 @@ def test_invalid_verdict_points_at_the_problem(client, student_headers):
 
 
 def test_ambiguous_division_is_refused_with_both_readings(client, student_headers):
-    symbols = {"p": {"dimension": "kg*m/s"}, "m": {"dimension": "kg"}}
+    symbols = {"p": {}, "m": {"dimension": "kg"}}  # p has no dimension: nothing can settle it
     result = client.post(
         "/v1/check", json=symbolic("p^2/2m", "p^2/(2*m)", symbols), headers=student_headers
     ).json()
     assert (result["verdict"], result["reason"]) == ("invalid", "ambiguous")
     assert "(" in result["error"]["message"]
+
+
+def test_ambiguous_division_is_settled_where_one_reading_has_the_expected_dimension(client, student_headers):
+    symbols = {"p": {"dimension": "kg*m/s"}, "m": {"dimension": "kg"}}
+    result = client.post(
+        "/v1/check", json=symbolic("p^2/2m", "p^2/(2*m)", symbols), headers=student_headers
+    ).json()
+    assert (result["verdict"], result["reason"]) == ("correct", "equivalent")
+    assert result["read_as"]["text"] == "p**2/(2*m)"
+    assert result["read_as"]["note"] == "Read as p**2/(2*m): the only reading that is an energy"
 
 
 @pytest.mark.parametrize(

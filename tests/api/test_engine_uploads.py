@@ -110,6 +110,15 @@ def test_bank_verify_names_the_parts_that_are_not_derived(problem: str) -> None:
 def test_a_derivation_fault_is_reported_at_its_place_in_the_model(client, instructor_headers):
     doc = atwood_upload()
     doc["model"].pop("elements")
-    doc["model"]["constraints"] = {"string": {"kind": "string", "gap": "y_m1 - y_m2"}}  # the positions break it
+    doc["model"]["constraints"] = {
+        "string": {"kind": "string", "gap": "y_m1 - y_m2"}
+    }  # the positions break it
     details = _details(upload(client, instructor_headers, doc))
     assert "violate" in details["model.constraints.string"]
+
+
+def test_a_model_term_with_the_wrong_dimension_is_refused_at_its_path(client, instructor_headers):
+    doc = hanging_spring({"s": ["0", "oo"]})
+    doc["model"]["potentials"][0]["energy"] = "k*(d - L0)"  # a force where the energy belongs
+    details = _details(upload(client, instructor_headers, doc))
+    assert "expected an energy" in details["model.potentials[0].energy"]

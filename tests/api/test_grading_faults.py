@@ -20,7 +20,7 @@ from app.main import create_app
 from app.settings import Settings
 from physics.checking import SymbolDecl, SymbolicJob
 from physics.errors import SpecError
-from tests.api.slow_task import pid_or_grade
+from tests.api.slow_task import pid_or_grade, spec_failing_preview
 
 SYMBOLS = (SymbolDecl("m", "kg"),)
 RECOVERY_DEADLINE = 60  # only so that a broken pool fails the test instead of hanging it
@@ -34,7 +34,13 @@ def job(answer: str) -> SymbolicJob:
 
 def make_pool(**overrides: object) -> GradingPool:
     options: dict[str, object] = dict(
-        workers=1, timeout=5.0, memory_mb=1024, max_tasks=100, queue_size=8, task=pid_or_grade
+        workers=1,
+        timeout=5.0,
+        memory_mb=1024,
+        max_tasks=100,
+        queue_size=8,
+        task=pid_or_grade,
+        preview_task=spec_failing_preview,
     )
     return GradingPool(**(options | overrides))  # type: ignore[arg-type]
 
@@ -215,3 +221,12 @@ def test_the_upload_vetting_pool_replaces_itself_too():
         assert worker != victim and pool.healthy
     finally:
         pool.close()
+
+
+@pytest.mark.slow
+def test_a_stored_problem_whose_reference_fails_in_a_preview_is_a_grader_fault(submitting):
+    client, student = submitting
+    url = SUBMIT.replace("submissions", "preview")
+    response = client.post(url, json={"answer": "spec"}, headers=student)
+    assert response.status_code == 500 and response.json()["error"]["code"] == "grader_fault"
+    assert client.post(url, json={"answer": "m g"}, headers=student).status_code == 200

@@ -5,9 +5,11 @@ from __future__ import annotations
 
 import re
 import shutil
+import time
 from collections.abc import Iterator
 from pathlib import Path
 
+import httpx
 import pytest
 from fastapi.testclient import TestClient
 
@@ -17,6 +19,7 @@ from app.keys import create_key
 from app.main import create_app
 from app.settings import Settings
 from problems.loader import BANK_DIR
+from tests.browser import LiveServer, serve
 
 CSRF = re.compile(r'name="csrf" value="([^"]+)"')
 
@@ -86,3 +89,25 @@ def signed_in(client: TestClient, instructor_key: str) -> TestClient:
     response = sign_in(client, instructor_key)
     assert response.status_code == 303, response.text  # type: ignore[attr-defined]
     return client
+
+
+@pytest.fixture(scope="module")
+def live_server(
+    tmp_path_factory: pytest.TempPathFactory, page_grading_pool: GradingPool, yo_yo_only: Path
+) -> Iterator[LiveServer]:
+    """tests/browser.py's live server, with the yo-yo alone for a bank: these pages need one problem,
+    and compiling the whole bank first would take minutes of the run."""
+    folder = tmp_path_factory.mktemp("live")
+    settings = Settings(
+        database_url=f"sqlite:///{folder / 'physcheck.db'}",
+        secret="page-test-secret-0123456789",
+        check_workers=1,
+        bank_dir=yo_yo_only,
+    )
+    app = create_app(settings, pool=page_grading_pool)
+    for url in serve(app):
+        deadline = time.monotonic() + 120
+        while httpx.get(f"{url}/ready").status_code != 200:
+            assert time.monotonic() < deadline, "the yo-yo did not compile"
+            time.sleep(0.2)
+        yield LiveServer(url, app)

@@ -154,7 +154,10 @@ def test_every_post_needs_the_sessions_csrf_token(signed_in: TestClient):
 
 def test_lms_instructor_session_sees_problems_but_no_students_work(client: TestClient, database: Database):
     client.cookies.set(SESSION_COOKIE, lms_session(database, Role.INSTRUCTOR))
-    assert client.get("/instructor/problems").status_code == 200
+    listing = client.get("/instructor/problems")
+    assert listing.status_code == 200
+    assert "Lee (from your LMS)" in listing.text and "Sign out" not in listing.text
+    assert "/instructor/problems/new" not in listing.text  # no upload link
     own = client.get("/instructor/problems/yo-yo")
     assert own.status_code == 200 and "Worked solutions" in own.text
     for path in (
@@ -189,6 +192,8 @@ def test_problem_page_renders_references_mistakes_limits_and_every_method_as_mat
     assert "The string pulls up on the yo-yo" in html  # a known mistake's feedback
     assert "with no moment of inertia the yo-yo falls freely" in html  # a limiting case
     assert "$" not in re.sub(r'alttext="[^"]*"', "", html)  # no TeX left as text
+    figure = re.search(r'<figure class="problem-figure">\s*<svg[^>]*role="img"', html)
+    assert figure, "the figure drawn from the model"
 
 
 def test_a_students_variant_shows_their_values_and_expected_numbers(signed_in: TestClient):
@@ -245,6 +250,7 @@ def test_upload_shows_every_error_with_its_path_and_line_then_previews_then_save
     assert "Preview: no errors" in preview.text
     assert 'alttext="\\frac{g r^{2}}{k^{2} + r^{2}}"' in preview.text  # the derived answer
     assert "Lagrange" in preview.text
+    assert re.search(r'<figure class="problem-figure">\s*<svg', preview.text)
     assert signed_in.get("/instructor/problems/my-yoyo").status_code == 404  # nothing stored yet
 
     saved = signed_in.post(
@@ -394,3 +400,14 @@ def test_preview_lists_texts_that_will_not_render_cleanly_with_their_lines(signe
         f'<code class="path">statement</code> <a class="line" href="#source" data-line="{line}">line {line}</a>'
         in preview.text
     )
+
+
+def test_behind_https_the_session_cookie_is_secure(settings, pages_pool, database: Database):
+    from app.main import create_app
+
+    secure = settings.model_copy(update={"base_url": "https://physcheck.example"})
+    app = create_app(secure, pool=pages_pool)
+    with TestClient(app, base_url="https://testserver", follow_redirects=False) as client:
+        response = sign_in(client, new_key(database, "instructor", "Prof"))
+    cookie = next(c for c in response.headers.get_list("set-cookie") if c.startswith(COOKIE + "="))
+    assert "Secure" in cookie

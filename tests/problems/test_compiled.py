@@ -240,3 +240,21 @@ def test_model_faults_are_reported_under_model() -> None:
     assert caught.value.errors and all(p.startswith("model.") for p, _ in caught.value.errors), (
         caught.value.errors
     )
+
+
+def test_numeric_part_passes_arithmetic_and_units_system_to_its_check() -> None:
+    data = spring()
+    data["parts"][1].update({"arithmetic": False, "units_system": "SI"})
+    part = compile_problem(parse_problem(data), use_model=False).part("angular_frequency_numeric")
+    assert isinstance(part, CompiledNumericPart)
+    spec = part.spec(draw_variant(parse_problem(data), 1, "alice", "s3cret"))
+    assert (spec.arithmetic, spec.units_system) == (False, "SI")
+    assert check_answer("sqrt(2) rad/s", spec).reason is Reason.PARSE_ERROR
+    assert check_answer("1 rev/s", spec).reason is Reason.UNKNOWN_UNIT
+
+
+def test_numeric_part_takes_arithmetic_and_any_units_by_default() -> None:
+    part = compile_problem(parse_problem(spring()), use_model=False).part("angular_frequency_numeric")
+    assert isinstance(part, CompiledNumericPart)
+    spec = part.spec(draw_variant(parse_problem(spring()), 1, "alice", "s3cret"))
+    assert (spec.arithmetic, spec.units_system) == (True, None)

@@ -3,8 +3,8 @@
     elements:
       ramp: {kind: incline, mass: m, angle: theta, coordinate: s, friction: mu}
 
-Each kind is one module here (`incline`, `surface`, `pulley`, `spring`, `pendulum`, `rolling`), registered
-in `KINDS`. `expand_elements` runs before `load_model` reads the model: every element adds ordinary
+Each kind is one module here (`incline`, `surface`, `pulley`, `spring`, `pendulum`, `rolling`,
+`rotating`), registered in `KINDS`. `expand_elements` runs before `load_model` reads the model: every element adds ordinary
 coordinates, bodies, constraints, friction and potentials, in order, after the hand-written ones (which
 stay available and may be mixed with elements; a pulley may tie bodies from either). A fault in what an
 element generated is reported at the element's path.
@@ -19,13 +19,13 @@ from typing import Any
 
 import sympy
 
-from physics.engine.elements import incline, pendulum, pulley, rolling, spring, surface
+from physics.engine.elements import incline, pendulum, pulley, rolling, rotating, spring, surface
 from physics.engine.elements.base import NAME, Builder
 from physics.engine.text import Path
 from physics.errors import SpecError, SpecErrors
 
 Expand = Callable[[str, Mapping[str, Any], Builder, Path], None]
-_MODULES: tuple[ModuleType, ...] = (incline, surface, pulley, spring, pendulum, rolling)
+_MODULES: tuple[ModuleType, ...] = (incline, surface, pulley, spring, pendulum, rolling, rotating)
 KINDS: dict[str, Expand] = {module.KIND: module.expand for module in _MODULES}
 MAX_ELEMENTS = 16
 

@@ -4,7 +4,9 @@
       length: L0               natural length (default 0: the energy is k d^2/2 in the stretch d)
       distance: d              the name of its length in the energy (default: <element>Length)
 
-Generates the potential k (d - L0)^2 / 2 of the distance d between its ends.
+Generates the potential k (d - L0)^2 / 2 of the distance d between its ends. d is a length: with a
+natural length on one axis, the model declares which side of the anchor the body is on (a coordinate
+range), as for any potential.
 """
 
 from __future__ import annotations

@@ -1,0 +1,226 @@
+// The student pages: a student key kept in the tab (key mode), the live preview of how an answer is
+// read (typeset as MathML by the server), submission through the JSON API, then the part's fresh
+// standing and history from the server. HTML inserted here is only ever our own server's rendering,
+// fetched from this origin; text from responses goes through textContent.
+(function () {
+  "use strict";
+  var KEY_STORE = "physcheck-student-key";
+  var root = document.getElementById("problem") || document.getElementById("problem-list");
+  if (!root) { return; }
+  var keyMode = root.getAttribute("data-mode") === "key";
+  var problemId = root.getAttribute("data-problem");
+
+  function key() { return keyMode ? window.sessionStorage.getItem(KEY_STORE) : null; }
+
+  function headers(json) {
+    var h = { "Accept": json ? "application/json" : "text/html" };
+    if (json) { h["Content-Type"] = "application/json"; }
+    var k = key();
+    if (k) {
+      h["Authorization"] = "Bearer " + k;
+    } else {
+      var meta = document.querySelector('meta[name="csrf-token"]');
+      if (meta) { h["X-CSRF-Token"] = meta.getAttribute("content"); }
+    }
+    return h;
+  }
+
+  function post(url, body) {
+    return fetch(url, { method: "POST", headers: headers(true), body: JSON.stringify(body), credentials: "same-origin" })
+      .then(function (response) {
+        return response.json().catch(function () { return {}; }).then(function (data) {
+          return { status: response.status, data: data };
+        });
+      });
+  }
+
+  function getHtml(url) {
+    return fetch(url, { headers: headers(false), credentials: "same-origin" }).then(function (response) {
+      if (response.status !== 200) { throw new Error(String(response.status)); }
+      return response.text().then(function (html) {
+        var template = document.createElement("template");
+        template.innerHTML = html;  // our own server-rendered, escaped fragment
+        return template.content;
+      });
+    });
+  }
+
+  function errorText(r) {
+    if (r.status === 401) {
+      return keyMode
+        ? "Your key is no longer accepted; reload the page and enter it again."
+        : "Your session has ended; open this activity again from your course.";
+    }
+    if (r.status === 429) { return "Too many answers at once; wait a few seconds and try again."; }
+    return (r.data && r.data.error && r.data.error.message) || "Something went wrong; try again.";
+  }
+
+  // The answer as typed with the unreadable spot marked, e.g. "m g +▮" (DOM nodes, no HTML).
+  function marked(text, position) {
+    var line = document.createElement("p");
+    line.className = "error-mark";
+    var code = document.createElement("code");
+    var at = Math.max(0, Math.min(position, text.length));
+    code.appendChild(document.createTextNode(text.slice(0, at)));
+    var mark = document.createElement("mark");
+    mark.textContent = at < text.length ? text.charAt(at) : "\u2003";
+    code.appendChild(mark);
+    code.appendChild(document.createTextNode(text.slice(at + 1)));
+    line.appendChild(document.createTextNode("Here: "));
+    line.appendChild(code);
+    return line;
+  }
+
+  function showPreview(preview, input, data, text) {
+    preview.textContent = "";
+    input.removeAttribute("aria-invalid");
+    if (data.error) {
+      input.setAttribute("aria-invalid", "true");
+      var message = document.createElement("p");
+      message.className = "preview-error";
+      message.textContent = "Cannot read this yet: " + data.error.message;
+      preview.appendChild(message);
+      if (typeof data.error.position === "number") { preview.appendChild(marked(text, data.error.position)); }
+      return;
+    }
+    if (!data.read_as) { return; }
+    var line = document.createElement("div");
+    line.className = "read-as";
+    var label = document.createElement("span");
+    label.textContent = "Read as: ";
+    line.appendChild(label);
+    if (data.mathml) {
+      var holder = document.createElement("span");
+      holder.innerHTML = data.mathml;  // MathML our server typeset from the parsed answer
+      line.appendChild(holder);
+    } else {
+      var plain = document.createElement("code");
+      plain.textContent = data.read_as.text;
+      line.appendChild(plain);
+    }
+    preview.appendChild(line);
+    if (data.read_as.note) {
+      var note = document.createElement("p");
+      note.className = "reading-note";
+      note.textContent = data.read_as.note;
+      preview.appendChild(note);
+    }
+  }
+
+  var WORDS = { correct: "Correct.", incorrect: "Not correct.", invalid: "Could not read this answer." };
+
+  function wire(form) {
+    var part = form.getAttribute("data-part");
+    var base = "/v1/problems/" + encodeURIComponent(problemId) + "/parts/" + encodeURIComponent(part);
+    var input = form.querySelector("input[name=answer]");
+    var button = form.querySelector("button[type=submit]");
+    var preview = form.querySelector(".preview");
+    var verdict = form.querySelector(".verdict");
+    var section = form.closest(".part");
+    var timer = null;
+    var asked = 0;
+
+    function askPreview() {
+      window.clearTimeout(timer);
+      var text = input.value;
+      if (!text.trim()) { preview.textContent = ""; input.removeAttribute("aria-invalid"); return; }
+      timer = window.setTimeout(function () {
+        var mine = ++asked;
+        post(base + "/preview", { answer: text }).then(function (r) {
+          if (mine !== asked) { return; }  // a newer keystroke already asked again
+          if (r.status !== 200) { preview.textContent = errorText(r); return; }
+          showPreview(preview, input, r.data, text);
+        }).catch(function () { preview.textContent = ""; });
+      }, 300);
+    }
+    input.addEventListener("input", askPreview);
+
+    function refresh(lead) {
+      return getHtml("/p/" + encodeURIComponent(problemId) + "/parts/" + encodeURIComponent(part) + "/work")
+        .then(function (fragment) {
+          var work = fragment.querySelector(".work");
+          var target = section.querySelector(".work");
+          if (work && target) { target.innerHTML = work.innerHTML; }
+          var standing = fragment.querySelector("#standing");
+          var current = document.getElementById("standing");
+          if (standing && current) { current.innerHTML = standing.innerHTML; }
+          var latest = fragment.querySelector(".latest");
+          verdict.textContent = "";
+          if (lead) { verdict.appendChild(document.createTextNode(lead + " ")); }
+          if (latest && !lead) {
+            verdict.innerHTML = latest.innerHTML.trim();
+            verdict.setAttribute("data-verdict", latest.getAttribute("data-verdict"));
+          }
+          var locked = (latest && latest.getAttribute("data-locked") === "true") || !!lead;
+          if (locked) { input.disabled = true; button.disabled = true; }
+        });
+    }
+
+    form.addEventListener("submit", function (event) {
+      event.preventDefault();
+      if (input.disabled) { return; }
+      button.disabled = true;
+      verdict.removeAttribute("data-verdict");
+      verdict.textContent = "Checking…";
+      post(base + "/submissions", { answer: input.value }).then(function (r) {
+        if (r.status === 201) {
+          return refresh(null).catch(function () {
+            // Graded and stored, but the fresh standing could not be fetched: say the verdict at least.
+            verdict.textContent = (WORDS[r.data.verdict] || "Checked.") + " Reload the page to see the feedback.";
+          });
+        }
+        if (r.status === 409 && r.data.error && r.data.error.code === "attempts_exhausted") {
+          return refresh("You have used all your attempts on this part.");
+        }
+        verdict.textContent = errorText(r);
+      }).catch(function () {
+        verdict.textContent = "The server could not be reached; your answer was not checked.";
+      }).then(function () { if (!input.disabled) { button.disabled = false; } });
+    });
+  }
+
+  function wireAll() {
+    var forms = document.querySelectorAll("form.answer");
+    for (var i = 0; i < forms.length; i++) { wire(forms[i]); }
+  }
+
+  function contentUrl() {
+    return problemId ? "/p/" + encodeURIComponent(problemId) + "/content" : "/problems/content";
+  }
+
+  function loadWithKey(k) {
+    var content = document.getElementById("content");
+    var message = document.getElementById("key-error");
+    return fetch(contentUrl(), { headers: { "Authorization": "Bearer " + k }, credentials: "omit" })
+      .then(function (response) {
+        if (response.status !== 200) {
+          window.sessionStorage.removeItem(KEY_STORE);
+          message.textContent = response.status === 404 ? "There is no such problem." : "This key was not accepted.";
+          return;
+        }
+        return response.text().then(function (html) {
+          content.innerHTML = html;  // our own server-rendered fragment, fetched from this origin
+          var form = document.getElementById("key-form");
+          if (form) { form.hidden = true; }
+          wireAll();
+          var heading = content.querySelector("h1");
+          if (heading) { heading.setAttribute("tabindex", "-1"); heading.focus(); }
+        });
+      });
+  }
+
+  var keyForm = document.getElementById("key-form");
+  if (keyForm) {
+    keyForm.addEventListener("submit", function (event) {
+      event.preventDefault();
+      var k = document.getElementById("key").value.trim();
+      if (!k) { return; }
+      window.sessionStorage.setItem(KEY_STORE, k);
+      loadWithKey(k);
+    });
+    var saved = window.sessionStorage.getItem(KEY_STORE);
+    if (saved) { loadWithKey(saved); }
+  } else {
+    wireAll();
+  }
+})();

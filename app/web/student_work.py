@@ -1,0 +1,117 @@
+"""A student's standing on one problem, read from the database: per part the attempts used of the
+limit, the best score (what the LMS holds: a later wrong attempt never lowers it), and the history of
+submissions, newest first; for the problem, the sum of the parts' best scores."""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
+from datetime import datetime
+from typing import Any
+
+from app.db import submissions as submission_repository
+from app.db.database import Database
+from app.db.records import SubmissionRecord
+from physics.verdict import Outcome
+
+MAX_PAGES = 5  # 5 000 submissions by one student to one problem: more than anyone needs shown
+PAGE = 1000
+
+
+@dataclass(frozen=True)
+class Attempt:
+    answer: str
+    verdict: str
+    score: float
+    feedback: str
+    error: str
+    number: int | None  # the graded attempt's number; None for an unreadable answer (no attempt used)
+    created_at: datetime
+    latex: str | None  # how the answer was read, to typeset it
+
+
+@dataclass
+class PartWork:
+    used: int = 0
+    limit: int | None = None
+    best: float | None = None  # None: no graded attempt yet
+    history: list[Attempt] = field(default_factory=list)  # newest first
+
+    @property
+    def locked(self) -> bool:
+        return self.limit is not None and self.used >= self.limit
+
+    @property
+    def solved(self) -> bool:
+        return self.best is not None and self.best >= 1.0
+
+    @property
+    def last_answer(self) -> str:
+        return self.history[0].answer if self.history else ""
+
+
+@dataclass
+class ProblemWork:
+    parts: dict[str, PartWork]
+
+    @property
+    def score(self) -> float:
+        return sum(work.best or 0.0 for work in self.parts.values())
+
+    @property
+    def maximum(self) -> int:
+        return len(self.parts)
+
+    @property
+    def attempted(self) -> bool:
+        return any(work.history for work in self.parts.values())
+
+
+def _attempt(record: SubmissionRecord) -> Attempt:
+    invalid = record.verdict == Outcome.INVALID
+    return Attempt(
+        answer=record.answer,
+        verdict=record.verdict.value,
+        score=record.score,
+        feedback="" if invalid else record.feedback,
+        error=record.feedback if invalid else "",
+        number=record.attempt,
+        created_at=record.created_at,
+        latex=record.read_as.latex if record.read_as else None,
+    )
+
+
+def _submissions(database: Database, problem_id: str, student: str) -> list[SubmissionRecord]:
+    items: list[SubmissionRecord] = []
+    cursor = None
+    with database.session(read_only=True) as session:
+        for _ in range(MAX_PAGES):
+            page = submission_repository.list_submissions(
+                session, problem_id=problem_id, student=student, limit=PAGE, cursor=cursor
+            )
+            items.extend(page.items)
+            cursor = page.next
+            if cursor is None:
+                break
+    return items
+
+
+def load_work(
+    database: Database, problem_id: str, student: str, parts: Sequence[Mapping[str, Any]]
+) -> ProblemWork:
+    """The student's work on the parts of `parts` (the student view's parts, with `max_attempts`)."""
+    work = {
+        str(part["id"]): PartWork(limit=part.get("max_attempts") if part.get("max_attempts") else None)
+        for part in parts
+    }
+    for record in _submissions(database, problem_id, student):
+        part = work.get(record.part_id)
+        if part is None:  # a part a later version dropped
+            continue
+        part.history.insert(0, _attempt(record))
+        if record.verdict != Outcome.INVALID:
+            part.best = max(part.best or 0.0, record.score)
+    with database.session(read_only=True) as session:
+        for part_id, part in work.items():
+            part.used = submission_repository.attempts_used(session, problem_id, part_id, student)
+    return ProblemWork(work)

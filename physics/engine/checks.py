@@ -1,0 +1,106 @@
+"""Checks of the model itself, beside the methods' agreement (which only proves the algebra: every
+method reads the same model, so a wrong model is derived "consistently").
+
+- dimensions: done when the model is loaded with its symbols' dimensions (`load_model`);
+- energy bookkeeping: the integrated motion's change of T + V equals the work of the non-conservative
+  forces, and kinetic friction only takes energy out;
+- limiting cases the author states (`limits:`), taken on the derived expressions;
+- friction to zero: the derived expression tends to what the frictionless model derives.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from collections.abc import Callable, Mapping
+
+import sympy
+
+from physics.engine.mechanics import Mechanics
+from physics.engine.method import Method, NotApplicable
+from physics.engine.model import Model, QuantityKind
+from physics.engine.proof import domain_points, prove_equal
+from physics.engine.simulation import Simulator
+from physics.errors import DerivationError
+
+ENERGY_POINTS = 3
+MethodFactory = Callable[[Model, Mechanics], Method]
+
+
+def physical_checks(
+    model: Model, quantities: Mapping[str, sympy.Expr], lagrange: Method, factory: MethodFactory
+) -> dict[str, str]:
+    """name -> what was shown; DerivationError (with the model path) when a check fails."""
+    checks: dict[str, str] = {}
+    if model.dimensions_checked:
+        checks["dimensions"] = (
+            "every position is a length; every mass, inertia, energy, gravity, gap and state consistent"
+        )
+    simulator = Simulator(model, lagrange.equilibrium)
+    balance = simulator.energy_balance(domain_points(model, ENERGY_POINTS, seed=9))
+    if balance is not None:
+        checks["energy balance"] = (
+            f"{balance.compared}: worst relative gap {balance.max_relative_error:.1e} at {balance.points} points"
+        )
+    for index, stated in enumerate(model.limits):
+        where = ", ".join(f"{s} → {v}" for s, v in stated.where)
+        for name, expected in stated.expect:
+            _check_limit(
+                model, quantities[name], stated.where, expected, ("limits", index, "expect", name), name
+            )
+            checks[f"limit {name} ({where})"] = stated.description or f"{name} → {expected}"
+    checks.update(_frictionless(model, quantities, factory))
+    return checks
+
+
+def _limit_of(expr: sympy.Expr, where: tuple[tuple[sympy.Symbol, sympy.Expr], ...]) -> sympy.Expr:
+    for symbol, value in where:
+        expr = sympy.limit(expr, symbol, value) if value.is_infinite or expr.has(symbol) else expr
+    return sympy.simplify(expr)
+
+
+def _check_limit(
+    model: Model,
+    reference: sympy.Expr,
+    where: tuple[tuple[sympy.Symbol, sympy.Expr], ...],
+    expected: sympy.Expr,
+    path: tuple[str | int, ...],
+    name: str,
+) -> None:
+    found = _limit_of(reference, where)
+    if sympy.simplify(found - expected) == 0:
+        return
+    shown = ", ".join(f"{s} → {v}" for s, v in where)
+    if found.has(sympy.oo, -sympy.oo, sympy.zoo, sympy.nan, sympy.AccumBounds):
+        raise DerivationError(f"{name} = {reference} tends to {found} as {shown}, not {expected}", path=path)
+    try:
+        prove_equal(found, expected, model, name, ("the derived limit", "the stated limit"))
+    except DerivationError:
+        raise DerivationError(
+            f"{name} = {reference} tends to {found} as {shown}; the stated limit is {expected}", path=path
+        ) from None
+
+
+def _frictionless(
+    model: Model, quantities: Mapping[str, sympy.Expr], factory: MethodFactory
+) -> dict[str, str]:
+    """Each answer with friction tends, as every coefficient goes to zero, to the frictionless model's."""
+    coefficients = [f.coefficient for f in model.frictions if isinstance(f.coefficient, sympy.Symbol)]
+    if not coefficients or len(coefficients) != len(model.frictions):
+        return {}
+    smooth = dataclasses.replace(model, frictions=())
+    method = factory(smooth, Mechanics(smooth))
+    checks: dict[str, str] = {}
+    for quantity in model.quantities:
+        reference = quantities[quantity.name]
+        if quantity.kind is QuantityKind.SOLVE or not reference.has(*coefficients):
+            continue
+        try:
+            expected = method.answer(quantity)
+        except (NotApplicable, DerivationError):
+            continue
+        where = tuple((c, sympy.Integer(0)) for c in coefficients)
+        _check_limit(model, reference, where, expected, ("friction",), quantity.name)
+        checks[f"limit {quantity.name} (no friction)"] = (
+            f"tends to the frictionless model's {sympy.sstr(expected)}"
+        )
+    return checks

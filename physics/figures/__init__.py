@@ -1,0 +1,21 @@
+"""Figures of problems drawn from their models, as SVG text (no web imports).
+
+    svg = model_figure(model, {"theta": 0.52, "m1": 0.4}, title="Cart on an incline")
+
+`model` is the engine's loaded `Model`; values are SI (angles in radians) by symbol name, and missing
+ones take typical values. The SVG has role="img", a <title> and a <desc> saying what is drawn.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+
+from physics.engine.model import Model
+from physics.figures.scene import compose, symbol_label
+
+__all__ = ["model_figure", "symbol_label"]
+
+
+def model_figure(model: Model, values: Mapping[str, float], *, title: str) -> str:
+    figure = compose(model, values)
+    return figure.canvas.svg(f"Figure: {title}", " ".join(figure.said))

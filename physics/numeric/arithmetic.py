@@ -1,0 +1,180 @@
+"""Numeric answers written as arithmetic: `229/50`, `2π`, `√2`, `9.8*sin(30°)`, `pi/6 rad`, `1/2 m`,
+`2*9.8 m/s^2`, `9.81*m/s^2`, `0.5 kg * 9.8 m/s^2`.
+
+The math reader (its whitelist tokenizer, parser and size limits) reads the number part, the unit
+grammar the units. The number part ends at the first word outside brackets that is not arithmetic
+(a function with its argument, `pi`, `π`, `e`, `x` between numbers) or at a `°` outside brackets; a
+`*` or `·` between the number and its units is allowed. A number after units that follows a `*`
+begins another quantity (`0.5 kg * 9.8 m/s^2`); the quantities multiply, units and all.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from fractions import Fraction
+
+import sympy
+
+from physics.dimensions import Dimension
+from physics.errors import AnswerError, ParseError, TooLarge, UnknownSymbol
+from physics.mathinput import InputLimits, parse_math
+from physics.mathinput.tokens import Kind, Token, tokenize
+from physics.mathinput.vocabulary import FUNCTIONS, PI_SPELLINGS
+from physics.numeric.answer import MAX_ANSWER_LENGTH, NumericAnswer, read_units_at
+from physics.symbolic.numeric import Evaluator
+from physics.units import ParsedUnits
+from physics.units.registry import lookup
+
+LIMITS = InputLimits(max_length=MAX_ANSWER_LENGTH)
+_PREC = 200  # bits (60 digits): far beyond any tolerance, for values such as 2π or √2
+_MAX_VALUE_BITS = 1400  # |value| below 2^1400 (about 10^420), as for decimal literals
+_ARGUMENT_STARTS = frozenset({Kind.LPAREN, Kind.NUM, Kind.WORD, Kind.SQRT, Kind.SUP, Kind.OP})
+_SIMPLE = re.compile(r"-?[0-9.e]+")
+
+
+@dataclass(frozen=True)
+class _Quantity:
+    start: int  # where its number part starts in the answer
+    number_end: int  # just past the number part (before a `*` that precedes the units)
+    units_start: int | None
+    end: int
+
+
+def _is_arithmetic_word(tokens: list[Token], i: int) -> bool:
+    word = tokens[i].text
+    if word in PI_SPELLINGS or word == "e":
+        return True
+    if word == "x":  # `2 x 3`: a times sign between numbers
+        return i > 0 and tokens[i - 1].kind is Kind.NUM and tokens[i + 1].kind is Kind.NUM
+    if word in FUNCTIONS:
+        # `sec` is also the second: a function only when an argument follows (`sec(x)`, `sin 30°`).
+        following = tokens[i + 1]
+        return following.kind in _ARGUMENT_STARTS and not (
+            following.kind is Kind.OP and following.text != "^"
+        )
+    return False
+
+
+def _quantities(tokens: list[Token], text: str) -> list[_Quantity]:
+    found: list[_Quantity] = []
+    start = tokens[0].pos
+    units_start: int | None = None
+    number_end = len(text)
+    depth = 0
+    function_seen = False  # `sin 30°`: the ° is the argument's, not a unit
+    for i, token in enumerate(tokens):
+        if token.kind is Kind.END:
+            break
+        if units_start is None:
+            if token.kind is Kind.LPAREN:
+                depth += 1
+            elif token.kind is Kind.RPAREN:
+                depth -= 1
+            elif depth == 0 and (
+                (token.kind is Kind.WORD and not _is_arithmetic_word(tokens, i))
+                or (token.kind is Kind.POSTFIX and token.text == "°" and not function_seen)
+            ):
+                units_start = token.pos
+                before = tokens[i - 1] if i > 0 else None
+                times = before is not None and before.kind is Kind.OP and before.text == "*"
+                number_end = before.pos if times and before is not None else token.pos
+            elif token.kind is Kind.WORD and token.text in FUNCTIONS:
+                function_seen = True
+        elif token.kind is Kind.NUM and tokens[i - 1].kind is Kind.OP and tokens[i - 1].text == "*":
+            found.append(_Quantity(start, number_end, units_start, tokens[i - 1].pos))
+            start, units_start, number_end, function_seen = token.pos, None, len(text), False
+    found.append(_Quantity(start, number_end, units_start, len(text)))
+    return found
+
+
+def _value(expr: sympy.Expr, position: int) -> Fraction:
+    if expr.is_Rational:
+        return Fraction(int(expr.p), int(expr.q))
+    found = Evaluator({}, 1, _PREC)(expr)[0]
+    if found is None:
+        raise ParseError("This arithmetic has no real value (or one too large to check)", position)
+    sign, mantissa, exponent, bits = found
+    if exponent + bits > _MAX_VALUE_BITS or exponent + bits < -_MAX_VALUE_BITS:
+        raise TooLarge("The value of this arithmetic is too large or too small to check", position)
+    value = Fraction(mantissa) * Fraction(2) ** exponent
+    return -value if sign else value
+
+
+@dataclass(frozen=True)
+class _Read:
+    value: Fraction
+    text: str
+    latex: str
+    units: ParsedUnits | None
+    note: str | None
+
+
+def _read_quantity(text: str, quantity: _Quantity, expected: Dimension | None) -> _Read:
+    number_text = text[quantity.start : quantity.number_end]
+    if not number_text.strip():
+        raise ParseError("The answer must start with a number, such as 2.5 or 229/50", quantity.start)
+    try:
+        parsed = parse_math(number_text, {}, limits=LIMITS)
+    except UnknownSymbol as error:
+        # Only a word inside brackets reaches here: units belong after the number.
+        where = quantity.start + (error.position or 0)
+        hint = "write units after the number, as in sqrt(2) m" if lookup(error.symbol) else ""
+        raise ParseError(
+            f"Unexpected word {error.symbol!r} in the number" + (f": {hint}" if hint else ""), where
+        ) from None
+    except AnswerError as error:
+        if error.position is not None:
+            error.position += quantity.start
+        raise
+    units = note = None
+    if quantity.units_start is not None:
+        reading = read_units_at(
+            text[quantity.units_start : quantity.end].rstrip(), quantity.units_start, expected
+        )
+        units, note = reading.units, reading.note
+    value = _value(parsed.expr, quantity.start)
+    return _Read(value, parsed.read_as.text, parsed.read_as.latex, units, note)
+
+
+def number_part_end(text: str) -> int | None:
+    """Where the number part of `text` read as arithmetic ends; None when the math reader cannot
+    tokenize it (then it is not arithmetic at all)."""
+    try:
+        tokens = tokenize(text, LIMITS)
+    except AnswerError:
+        return None
+    if tokens[0].kind is Kind.END:
+        return None
+    return _quantities(tokens, text)[0].number_end
+
+
+def read_arithmetic_answer(text: str, expected: Dimension | None) -> NumericAnswer:
+    """Read `text` as arithmetic and units (check `number_part_end` first: it must not be None)."""
+    tokens = tokenize(text, LIMITS)
+    quantities = _quantities(tokens, text)
+    single = len(quantities) == 1
+    reads = [_read_quantity(text, q, expected if single else None) for q in quantities]
+    value = Fraction(1)
+    units: ParsedUnits | None = None
+    for read in reads:
+        value *= read.value
+        if read.units is not None:
+            units = read.units if units is None else units * read.units
+    first, last = quantities[0], quantities[-1]
+    if single:
+        shown, latex = reads[0].text, reads[0].latex
+    else:
+        shown = "*".join(r.text if _SIMPLE.fullmatch(r.text) else f"({r.text})" for r in reads)
+        latex = r" \cdot ".join(r.latex for r in reads)
+    units_start = first.units_start
+    return NumericAnswer(
+        value=value,
+        text=shown,
+        latex=latex,
+        end=first.number_end if single else last.end,
+        units=units,
+        units_position=units_start,
+        units_text=text[units_start:].strip() if units_start is not None else "",
+        note=reads[0].note,
+    )

@@ -1,0 +1,82 @@
+"""Reading a symbolic answer, with an ambiguous division settled by dimension where only one reading fits.
+
+`mv/qB` is (m·v/q)·B or m·v/(q·B). The math reader refuses it; here, when every symbol of the answer
+has a declared dimension and exactly one reading has the dimension the answer must have (a radius:
+m·v/(q·B)), that reading is taken and `read_as.note` says so. Where both readings fit, or neither, or a
+dimension is unknown, the refusal stands: dimensions cannot decide, the student must add parentheses.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from collections.abc import Mapping
+
+import sympy
+
+from physics.dimensions import Dimension, describe
+from physics.errors import AmbiguousDivision
+from physics.mathinput import InputLimits, ParsedMath, parse_math
+from physics.symbolic.dimensional import DimensionMismatch, UnknownDimension, expression_dimension
+
+# Ambiguous divisions one answer may have settled: 2^3 readings at most are parsed.
+MAX_SETTLED = 3
+
+
+def read_symbolic_answer(
+    text: str,
+    names: Mapping[str, sympy.Symbol],
+    limits: InputLimits,
+    dimensions: Mapping[str, Dimension],
+    expected: Dimension | None,
+) -> ParsedMath:
+    """`parse_math`, except that an ambiguous division is settled by `expected` when exactly one
+    reading has it (`dimensions`: each symbol's dimension, by name). Raises what parse_math raises."""
+    try:
+        return parse_math(text, names, limits=limits)
+    except AmbiguousDivision as refused:
+        if expected is None:
+            raise
+        readings = _readings(text, names, limits, {}, refused)
+        fitting = [r for r in readings if _fits(r.expr, dimensions, expected, refused)]
+        if len(fitting) > 1:
+            raise AmbiguousDivision(
+                f"{refused.message} Both readings are {describe(expected)}, so the dimensions cannot decide.",
+                refused.position,
+                refused.readings,
+            ) from None
+        if not fitting:
+            raise refused from None
+        chosen = fitting[0]
+        note = f"Read as {chosen.read_as.text}: the only reading that is {describe(expected)}"
+        return ParsedMath(chosen.expr, dataclasses.replace(chosen.read_as, note=note))
+
+
+def _readings(
+    text: str,
+    names: Mapping[str, sympy.Symbol],
+    limits: InputLimits,
+    choices: dict[int, int],
+    refused: AmbiguousDivision,
+) -> list[ParsedMath]:
+    try:
+        return [parse_math(text, names, limits=limits, choices=choices)]
+    except AmbiguousDivision as another:
+        if len(choices) >= MAX_SETTLED or another.position is None or another.position in choices:
+            raise refused from None
+        position = another.position
+        return [
+            *_readings(text, names, limits, {**choices, position: 0}, refused),
+            *_readings(text, names, limits, {**choices, position: 1}, refused),
+        ]
+
+
+def _fits(
+    expr: sympy.Expr, dimensions: Mapping[str, Dimension], expected: Dimension, refused: AmbiguousDivision
+) -> bool:
+    known = {s: dimensions[s.name] for s in expr.free_symbols if s.name in dimensions}
+    try:
+        return expression_dimension(expr, known) == expected
+    except DimensionMismatch:
+        return False
+    except UnknownDimension:
+        raise refused from None  # a symbol without a dimension: nothing can be decided

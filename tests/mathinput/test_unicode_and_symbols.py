@@ -1,0 +1,84 @@
+"""Textbook characters read as the names and numbers they are; `2E-3` refused where `E` is a symbol."""
+
+from __future__ import annotations
+
+import pytest
+import sympy
+
+from physics.errors import AmbiguousInput, ParseError
+from physics.mathinput import parse_math
+from tests.mathinput.support import names, same, sym
+
+TEXTBOOK = [
+    # (typed, declared names, the expression meant)
+    ("v₀ t", ("v_0", "t"), sym("v_0") * sym("t")),
+    ("v₀", ("v0",), sym("v0")),
+    ("ε₀ E", ("epsilon_0", "E"), sym("epsilon_0") * sym("E")),
+    ("1/(4π ε₀ r^2)", ("epsilon_0", "r"), 1 / (4 * sympy.pi * sym("epsilon_0") * sym("r") ** 2)),
+    ("r₁ + r₂", ("r_1", "r_2"), sym("r_1") + sym("r_2")),
+    ("m₁₂", ("m_12",), sym("m_12")),
+    ("½ m v^2", ("m", "v"), sym("m") * sym("v") ** 2 / 2),
+    ("½m v²", ("m", "v"), sym("m") * sym("v") ** 2 / 2),
+    ("¼ m", ("m",), sym("m") / 4),
+    ("¾ x", ("x",), 3 * sym("x") / 4),
+    ("⅓ x", ("x",), sym("x") / 3),
+    ("x^½", ("x",), sympy.sqrt(sym("x"))),
+    ("ħ/2", ("hbar",), sym("hbar") / 2),
+    ("ℏ ω", ("hbar", "omega"), sym("hbar") * sym("omega")),
+    ("hbar ω", ("hbar", "omega"), sym("hbar") * sym("omega")),
+    ("（m+M）g", ("m", "M", "g"), (sym("m") + sym("M")) * sym("g")),
+    ("［m+M］g", ("m", "M", "g"), (sym("m") + sym("M")) * sym("g")),
+    ("｛m+M｝g", ("m", "M", "g"), (sym("m") + sym("M")) * sym("g")),
+    ("２m＊g", ("m", "g"), 2 * sym("m") * sym("g")),
+    ("cosec(x)", ("x",), sympy.csc(sym("x"))),
+    ("cosec x", ("x",), sympy.csc(sym("x"))),
+    ("sec(x)", ("x",), sympy.sec(sym("x"))),
+    ("cot(x)", ("x",), sympy.cot(sym("x"))),
+    ("Abs(x)", ("x",), sympy.Abs(sym("x"))),
+    ("arccosec(x)", ("x",), sympy.acsc(sym("x"))),
+    ("2E-3", ("x",), sympy.Rational(2, 1000)),  # E is not a symbol here: scientific notation
+    ("2e3", ("E",), sympy.Integer(2000)),  # only the letter typed counts
+]
+
+
+@pytest.mark.parametrize(("typed", "declared", "meant"), TEXTBOOK, ids=[c[0] for c in TEXTBOOK])
+def test_textbook_characters_read_as_meant(typed: str, declared: tuple[str, ...], meant: sympy.Expr) -> None:
+    assert same(parse_math(typed, names(*declared)).expr, meant)
+
+
+EXPONENT_CLASHES = [
+    # (typed, declared, the two readings offered)
+    ("2E-3", ("E",), ("2*10^(-3)", "2*E-3")),
+    ("2e3", ("e",), ("2*10^3", "2*e3")),
+    ("m + 4.5E+2", ("m", "E"), ("4.5*10^2", "4.5*E+2")),
+]
+
+
+@pytest.mark.parametrize(
+    ("typed", "declared", "readings"), EXPONENT_CLASHES, ids=[c[0] for c in EXPONENT_CLASHES]
+)
+def test_scientific_notation_with_a_declared_letter_is_refused_with_both_readings(
+    typed: str, declared: tuple[str, ...], readings: tuple[str, str]
+) -> None:
+    with pytest.raises(AmbiguousInput) as caught:
+        parse_math(typed, names(*declared))
+    assert caught.value.readings == readings
+    assert caught.value.position == typed.index(readings[0][0])
+    for reading in readings:
+        assert reading in caught.value.message
+
+
+def test_a_mixed_number_with_a_vulgar_fraction_is_refused_with_the_fix() -> None:
+    with pytest.raises(ParseError) as caught:
+        parse_math("1½ m", names("m"))
+    assert "3/2 or 1.5" in caught.value.message
+    assert caught.value.position == 1
+
+
+def test_vulgar_fraction_read_as_shows_the_fraction() -> None:
+    assert parse_math("½ m v^2", names("m", "v")).read_as.text == "1/2*m*v**2"
+
+
+def test_epsilon_0_declared_accepts_the_greek_letter_with_a_subscript() -> None:
+    read = parse_math("q/(4 π ε₀ r²)", names("q", "epsilon_0", "r"))
+    assert read.read_as.text == "q/(4*pi*epsilon_0*r**2)"

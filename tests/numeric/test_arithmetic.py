@@ -1,0 +1,155 @@
+"""Numeric answers written as arithmetic: read exactly, with units, and refused where a part asks for a
+plain decimal or for significant figures; errors blame the part that is wrong."""
+
+from __future__ import annotations
+
+from decimal import Decimal
+
+import pytest
+
+from physics.numeric import NumericSpec, Tolerance, check_numeric
+from physics.verdict import Outcome, Reason
+
+D = Decimal
+
+ARITHMETIC = [
+    # (answer, expected, units, how it reads): each refused before, blamed on the units
+    ("229/50", "4.58", None, "229/50"),
+    ("6/2", "3", None, "6/2"),
+    ("0.1+0.2", "0.3", None, "0.1 + 0.2"),
+    ("2*pi", "6.28319", None, "2*pi"),
+    ("2π", "6.28319", None, "2*pi"),
+    ("sqrt(2)", "1.41421", None, "sqrt(2)"),
+    ("√2", "1.41421", None, "sqrt(2)"),
+    ("2^0.5", "1.41421", None, "2**0.5"),
+    ("9.8*sin(30°)", "4.9", None, "9.8*sin(30*pi/180)"),
+    ("9.8 sin 30°", "4.9", None, "9.8*sin(30*pi/180)"),
+    ("pi/6 rad", "0.523599", "rad", "pi/6 rad"),
+    ("1/2 m", "0.5", "m", "1/2 m"),
+    ("3/4 J", "0.75", "J", "3/4 J"),
+    ("2*9.8 m/s^2", "19.6", "m/s^2", "2*9.8 m/s^2"),
+    ("9.81*m/s^2", "9.81", "m/s^2", "9.81 m/s^2"),
+    ("4.58·m/s^2", "4.58", "m/s^2", "4.58 m/s^2"),
+    ("4.58 * m/s^2", "4.58", "m/s^2", "4.58 m/s^2"),
+    ("0.5 kg * 9.8 m/s^2", "4.9", "N", "0.5*9.8 kg·m/s^2"),
+    ("0.5 kg · 9.8 m/s^2", "4.9", "N", "0.5*9.8 kg·m/s^2"),
+    ("229/50 km/h", "1.27222", "m/s", "229/50 km/h"),
+    ("5 sec", "5", "s", "5 s"),  # `sec` with no argument is the second, not the secant
+    ("sec(0) m", "1", "m", "sec(0) m"),
+    ("2 x 3 m", "6", "m", "2*3 m"),
+    ("-3/2 N", "-1.5", "N", "-3/2 N"),
+    ("50%", "0.5", None, "50%"),
+]
+
+
+@pytest.mark.parametrize(
+    ("answer", "expected", "units", "shown"),
+    [c for c in ARITHMETIC if c[3] is not None],
+    ids=[c[0] for c in ARITHMETIC if c[3] is not None],
+)
+def test_arithmetic_answer_is_read_exactly_with_its_units(
+    answer: str, expected: str, units: str | None, shown: str
+) -> None:
+    verdict = check_numeric(answer, NumericSpec(D(expected), units, tolerance=Tolerance(rel=D("0.00001"))))
+    assert verdict.outcome is Outcome.CORRECT, verdict.feedback
+    assert verdict.read_as is not None
+    assert verdict.read_as.text == shown
+
+
+def test_rational_arithmetic_is_exact() -> None:
+    exact = NumericSpec(D("0.3"), None, tolerance=Tolerance(abs=D(0)))
+    assert check_numeric("0.1+0.2", exact).outcome is Outcome.CORRECT
+    assert check_numeric("229/50", NumericSpec(D("4.58"), None, tolerance=Tolerance(abs=D(0)))).score == 1.0
+
+
+def test_irrational_arithmetic_is_accurate_far_beyond_any_tolerance() -> None:
+    tight = NumericSpec(D("6.283185307179586476925286766559"), None, tolerance=Tolerance(rel=D("1e-28")))
+    assert check_numeric("2π", tight).outcome is Outcome.CORRECT
+    assert check_numeric("6.2831853", tight).outcome is Outcome.INCORRECT
+
+
+def test_wrong_arithmetic_is_graded_with_a_reason() -> None:
+    verdict = check_numeric("229/5 m/s^2", NumericSpec(D("4.58"), "m/s^2"))
+    assert verdict.outcome is Outcome.INCORRECT
+    assert verdict.reason is Reason.CONSTANT_FACTOR
+    verdict = check_numeric("229/50 m/s", NumericSpec(D("4.58"), "m/s^2"))
+    assert verdict.reason is Reason.WRONG_DIMENSION
+
+
+PLAIN_ONLY = NumericSpec(D("4.58"), "m/s^2", arithmetic=False)
+
+
+@pytest.mark.parametrize("answer", ["229/50 m/s^2", "2*2.29 m/s^2", "√21 m/s^2", "9.81*m/s^2"])
+def test_a_part_that_asks_for_a_plain_decimal_refuses_arithmetic(answer: str) -> None:
+    verdict = check_numeric(answer, PLAIN_ONLY)
+    assert verdict.outcome is Outcome.INVALID
+    assert verdict.reason is Reason.PARSE_ERROR
+    assert "plain decimal number" in verdict.feedback
+
+
+@pytest.mark.parametrize("answer", ["4.58 m/s^2", "4.58e0 m/s^2", "458e-2 m/s^2", "4.58 m·s⁻²"])
+def test_a_part_that_asks_for_a_plain_decimal_takes_decimals(answer: str) -> None:
+    assert check_numeric(answer, PLAIN_ONLY).outcome is Outcome.CORRECT
+
+
+def test_significant_figures_apply_to_a_plain_decimal_only() -> None:
+    spec = NumericSpec(D("4.58"), "m/s^2", tolerance=Tolerance(sigfigs=3))
+    assert check_numeric("4.58 m/s^2", spec).outcome is Outcome.CORRECT
+    verdict = check_numeric("229/50 m/s^2", spec)
+    assert verdict.outcome is Outcome.INVALID
+    assert verdict.reason is Reason.SIGFIGS
+    assert "decimal number with 3 significant figures" in verdict.feedback
+
+
+BLAME = [
+    # (answer, units, reason, position, words): the message names the part that is wrong
+    ("229/50 m/s^2 foo", "m/s^2", Reason.UNKNOWN_UNIT, 13, "Unknown unit 'foo'"),
+    ("229/50+ m/s^2", "m/s^2", Reason.PARSE_ERROR, 6, "Nothing after '+'"),
+    ("sqrt(2 m/s^2", "m/s^2", Reason.PARSE_ERROR, 7, "write units after the number"),
+    ("2*(3 m/s^2", "m/s^2", Reason.PARSE_ERROR, 5, "write units after the number"),
+    ("1/0 m/s^2", "m/s^2", Reason.PARSE_ERROR, 0, "divides by zero"),
+    ("sqrt(-1) m/s^2", "m/s^2", Reason.PARSE_ERROR, 0, "no real value"),
+    ("12 500 m/s^2", "m/s^2", Reason.PARSE_ERROR, 3, "12500"),
+    ("4.5.8 m/s^2", "m/s^2", Reason.PARSE_ERROR, 3, "one decimal point"),
+    ("4,58 m/s^2", "m/s^2", Reason.PARSE_ERROR, 1, "decimal point"),
+    ("m/s^2", "m/s^2", Reason.PARSE_ERROR, 0, "must start with a number"),
+    ("pi", "m/s^2", Reason.MISSING_UNITS, 2, "needs units"),
+]
+
+
+@pytest.mark.parametrize(("answer", "units", "reason", "position", "words"), BLAME, ids=[c[0] for c in BLAME])
+def test_refused_arithmetic_blames_the_right_part(
+    answer: str, units: str, reason: Reason, position: int, words: str
+) -> None:
+    verdict = check_numeric(answer, NumericSpec(D("4.58"), units))
+    assert verdict.outcome is Outcome.INVALID
+    assert verdict.reason is reason
+    assert verdict.error is not None
+    assert verdict.error.position == position
+    assert words in verdict.feedback
+
+
+HOSTILE = [
+    # (answer, reason): size limits apply to arithmetic before anything is computed
+    ("9^9^9 m", Reason.TOO_LARGE),
+    ("(1+1)^(10^6) m", Reason.TOO_LARGE),
+    ("factorial(100000) m", Reason.TOO_LARGE),
+    ("e^1000 m", Reason.TOO_LARGE),
+    ("10^(10^10) m", Reason.TOO_LARGE),
+    ("1" * 41 + "/3 m", Reason.TOO_LARGE),
+    ("(" * 60 + "1" + ")" * 60 + " m", Reason.TOO_LARGE),
+    ("1+" * 120 + "1 m", Reason.TOO_LARGE),
+]
+
+
+@pytest.mark.parametrize(("answer", "reason"), HOSTILE, ids=[c[0][:24] for c in HOSTILE])
+def test_hostile_arithmetic_is_refused_by_the_size_limits(answer: str, reason: Reason) -> None:
+    verdict = check_numeric(answer, NumericSpec(D(1), "m"))
+    assert verdict.outcome is Outcome.INVALID
+    assert verdict.reason is reason
+
+
+@pytest.mark.parametrize("answer", ["__import__('os') m", "eval(1) m", "2; import os", "lambda: 1", "2 m # x"])
+def test_code_in_a_numeric_answer_is_never_run(answer: str) -> None:
+    verdict = check_numeric(answer, NumericSpec(D(2), "m"))
+    assert verdict.outcome is Outcome.INVALID
