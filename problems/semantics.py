@@ -16,6 +16,7 @@ import sympy
 from physics.checking import read_expression, read_relation
 from physics.errors import AnswerError, SpecError
 from physics.symbolic import SymbolSpec, make_symbol
+from physics.units import parse_units
 from problems.errors import ErrorItem
 from problems.modelinfo import missing_quantity, model_quantity_names, spec_error_items
 from problems.schema import GivenDecl, NumericPart, ProblemDocument, SymbolDecl, SymbolicPart, format_path
@@ -23,6 +24,17 @@ from problems.symbols import read_bound, symbol_spec, unit_dimension_at
 from problems.variants import placeholders, unit_scale, valid_range_errors
 
 T = TypeVar("T")
+
+
+def si_units_at(text: str, path: tuple[str | int, ...]) -> None:
+    """A part that asks for SI answers must state its own units in SI."""
+    try:
+        units = parse_units(text)
+    except AnswerError:
+        return  # unit_dimension_at reports it
+    foreign = [atom.symbol for atom, _ in units.factors if not atom.si]
+    if foreign:
+        raise SpecError(f"{foreign[0]} is not an SI unit, but the part asks for SI answers", path)
 
 
 class _Collector:
@@ -203,3 +215,5 @@ def _check_parts(
                 out.add((*path, "of"), f"{part.of!r} is neither a symbolic part nor a model quantity")
             if not part.dimensionless:
                 out.attempt(partial(unit_dimension_at, part.units, (*path, "units")))
+                if part.units_system == "SI":
+                    out.attempt(partial(si_units_at, part.units, (*path, "units")))

@@ -69,6 +69,10 @@ class Described:
     agreement: tuple[tuple[str, tuple[str, ...]], ...]  # quantity -> methods that agree on it
     methods_agree: bool
     given: tuple[tuple[str, str], ...]  # the variant's values: (symbol, "2.5 kg")
+    # checks of the model beside method agreement (energy bookkeeping, limits): name -> what was shown
+    checks: tuple[tuple[str, str], ...] = ()
+    # quantity -> what a numerical simulation compared, and its largest relative error
+    simulation: tuple[tuple[str, str, float], ...] = ()
 
 
 def tolerance_text(rel: Decimal | None, abs_: Decimal | None, sigfigs: int | None, units: str) -> str:
@@ -170,10 +174,20 @@ def describe(compiled: CompiledProblem, variant: Variant | None = None) -> Descr
             for name, value in variant.values.items()
             if name in doc.given
         )
+    checks: tuple[tuple[str, str], ...] = ()
+    simulation: tuple[tuple[str, str, float], ...] = ()
+    if derivation is not None:
+        checks = tuple((str(k), str(v)) for k, v in dict(getattr(derivation, "checks", {})).items())
+        simulation = tuple(
+            (str(name), str(check.compared), float(check.max_relative_error))
+            for name, check in dict(getattr(derivation, "simulation", {})).items()
+        )
     return Described(
         parts=tuple(parts),
         methods=methods,
         agreement=agreement,
         methods_agree=derived is not None and not derived.disagreements,
         given=given,
+        checks=checks,
+        simulation=simulation,
     )

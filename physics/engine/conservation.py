@@ -29,6 +29,8 @@ class ConservationMethod(Method):
         """(cyclic velocities in terms of the others, reduced kinetic energy, remaining coordinates)."""
         if self.model.frictions:
             raise NotApplicable("energy is not conserved with kinetic friction")
+        if self.model.dissipative_forces:
+            raise NotApplicable("energy is not conserved with drag or forces that depend on the motion")
         mech = self.mech
         mass, potential = mech.mass_matrix, mech.potential
         cyclic = [i for i, q in enumerate(mech.q) if not potential.has(q) and not mass.has(q)]

@@ -14,7 +14,7 @@ from collections.abc import Mapping
 import sympy
 
 from physics.dimensions import DIMENSIONLESS, Dimension, describe
-from physics.engine.model import Model
+from physics.engine.model import ForceKind, Model
 from physics.engine.text import Path
 from physics.errors import SpecError
 from physics.symbolic.dimensional import DimensionMismatch, UnknownDimension, expression_dimension
@@ -98,6 +98,13 @@ def _physics(model: Model, dims: Dims) -> list[Check]:
         if symbol in names and value != 0:
             own = dims.get(symbol) if symbol in dims else _velocity_dim(model, symbol, dims)
             checks.append((("state", names[symbol]), value, own))
+    for index, force in enumerate(model.forces):
+        if force.kind is ForceKind.APPLIED:
+            for axis, component in force.components:
+                checks.append((("forces", index, "force", axis), component, FORCE))
+        else:
+            per = TIME if force.kind is ForceKind.LINEAR_DRAG else LENGTH
+            checks.append((("forces", index, force.kind.value), force.coefficient, MASS / per))
     if model.collision is not None:
         checks.append((("collision", "mass"), model.collision.projectile_mass, MASS))
     return checks

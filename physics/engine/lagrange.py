@@ -31,7 +31,7 @@ class LagrangeMethod(Method):
         lagrangian = mech.kinetic - mech.potential
         self.step("Lagrangian", "L = T - V")
         lam = mech.multipliers
-        friction = mech.friction_forces(lam)
+        friction = [f + a for f, a in zip(mech.friction_forces(lam), mech.applied_forces(False), strict=True)]
         equations = []
         for c in model.coordinates:
             generalized = sympy.Add(

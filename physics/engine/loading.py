@@ -16,11 +16,13 @@ from physics.engine.distances import with_distance_sides
 from physics.engine.elements import expand_elements
 from physics.engine.model import (
     AXES,
+    AppliedForce,
     Body,
     Collision,
     Constraint,
     ConstraintKind,
     Coordinate,
+    ForceKind,
     Friction,
     Model,
     PairPotential,
@@ -45,6 +47,7 @@ _SECTIONS = frozenset(
         "domain",
         "quantities",
         "limits",
+        "forces",
     }
 )
 _QUANTITY_TARGET = {
@@ -55,6 +58,7 @@ _QUANTITY_TARGET = {
     QuantityKind.STIFFNESS: "coordinate",
     QuantityKind.ANGULAR_FREQUENCY: "coordinate",
     QuantityKind.PERIOD: "coordinate",
+    QuantityKind.TERMINAL_VELOCITY: "coordinate",
 }
 # Sizes beyond any textbook model: the derivation's cost grows fast with them, and models are uploaded.
 LIMITS = {
@@ -142,6 +146,8 @@ def _load_low_level(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]
     collision = _collision(data.get("collision"), symbols, bodies, coordinates, errors)
     state = _state(data.get("state"), symbols, coordinates, errors)
     quantities = _quantities(data.get("quantities"), symbols, coordinates, constraints, collision, errors)
+    velocities = {f"{c.name}_dot": c.velocity for c in coordinates}
+    forces = _forces(data.get("forces"), symbols, {**coord_scope, **velocities}, bodies, errors)
     limits = _stated_limits(data.get("limits"), symbols, {q.name for q in quantities}, errors)
     if errors.errors:
         raise SpecErrors(errors.errors)
@@ -161,8 +167,43 @@ def _load_low_level(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]
         parameters=tuple(symbols.values()),
         cartesian=cartesian,
         limits=limits,
+        forces=forces,
     )
     return with_distance_sides(model)
+
+
+def _forces(
+    value: Any,
+    symbols: Mapping[str, sympy.Symbol],
+    scope: Mapping[str, sympy.Symbol],
+    bodies: tuple[Body, ...],
+    errors: _Collector,
+) -> tuple[AppliedForce, ...]:
+    result: list[AppliedForce] = []
+    names = {b.name for b in bodies}
+    kinds = [k.value for k in ForceKind]
+    for index, entry in enumerate(_sequence(value, ("forces",), errors)):
+        path: Path = ("forces", index)
+        spec = _mapping(entry, path, errors)
+        given = [k for k in kinds if k in spec]
+        _check_keys(spec, {"body", *kinds}, {"body"}, path, errors)
+        if len(given) != 1:
+            errors.add(f"give exactly one of {kinds}", path)
+            continue
+        body = spec.get("body")
+        if body not in names:
+            errors.add(f"unknown body {body!r}", (*path, "body"))
+            continue
+        kind = ForceKind(given[0])
+        if kind is ForceKind.APPLIED:
+            components = _axes(spec[kind.value], scope, (*path, kind.value), errors)
+            if components:
+                result.append(AppliedForce(str(body), kind, components=components))
+            continue
+        coefficient = errors.read(spec[kind.value], symbols, (*path, kind.value))
+        if coefficient is not None:
+            result.append(AppliedForce(str(body), kind, coefficient=coefficient))
+    return tuple(result)
 
 
 def _stated_limits(

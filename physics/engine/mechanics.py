@@ -12,7 +12,7 @@ from functools import cached_property
 
 import sympy
 
-from physics.engine.model import Body, Model, PairPotential
+from physics.engine.model import Body, ForceKind, Model, PairPotential
 from physics.errors import DerivationError
 
 
@@ -165,6 +165,40 @@ class Mechanics:
             total = [t - friction.coefficient * normal * u for t, u in zip(total, direction, strict=True)]
         return total
 
+    def applied_forces(self, cartesian: bool, drag_only: bool = False) -> list[sympy.Expr]:
+        """Forces without a potential on each Cartesian dof (given forces in the coordinates, drag).
+        Drag reads the body's velocity as the Cartesian velocity symbols (`cartesian`, Newton's view)
+        or as the time derivative of its position in the coordinates (Lagrange's)."""
+        total = [sympy.Integer(0) for _ in self.dofs]
+        for force in self.model.dissipative_forces:
+            if drag_only and force.kind is ForceKind.APPLIED:
+                continue
+            own = [
+                i for i, d in enumerate(self.dofs) if d.body == force.body and not d.name.startswith("phi_")
+            ]
+            if force.kind is ForceKind.APPLIED:
+                given = dict(force.components)
+                for i in own:
+                    total[i] += given.get(self.dofs[i].name.split("_", 1)[0], sympy.Integer(0))
+                continue
+            velocity = {
+                i: self.dofs[i].velocity if cartesian else time_derivative(self.dofs[i].mapping, self.model)
+                for i in own
+            }
+            factor = force.coefficient
+            if force.kind is ForceKind.QUADRATIC_DRAG:
+                factor = factor * sympy.sqrt(sympy.Add(*(v**2 for v in velocity.values())))
+            for i, v in velocity.items():
+                total[i] -= factor * v
+        return total
+
+    def generalized(self, forces: Sequence[sympy.Expr]) -> list[sympy.Expr]:
+        """Generalized forces Q_j = sum_i F_i dx_i/dq_j of forces on the Cartesian dofs."""
+        return [
+            sympy.Add(*(f * sympy.diff(d.mapping, q) for f, d in zip(forces, self.dofs, strict=True)))
+            for q in self.q
+        ]
+
     # --- shared ------------------------------------------------------------------------------
 
     def _potential(self, place: Mapping[str, sympy.Expr]) -> sympy.Expr:
@@ -175,6 +209,12 @@ class Mechanics:
                     total += body.mass * self.model.gravity * place[f"y_{body.name}"]
         for pair in self.model.potentials:
             total += pair.energy.subs(pair.distance, self.distance(pair, place))
+        moving = self.model.moving_symbols
+        for force in self.model.forces:
+            if force.constant(moving):  # a constant force F has the potential -F . r
+                for axis, component in force.components:
+                    if f"{axis}_{force.body}" in place:
+                        total -= component * place[f"{axis}_{force.body}"]
         return total
 
     def distance(self, pair: PairPotential, place: Mapping[str, sympy.Expr]) -> sympy.Expr:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 from abc import ABC, abstractmethod
 
 import sympy
@@ -79,6 +80,8 @@ class Method(ABC):
         if kind is QuantityKind.PERIOD:
             omega = self.frequency(quantity.target, self.equilibrium(quantity.target))
             return sympy.simplify(2 * sympy.pi / omega)
+        if kind is QuantityKind.TERMINAL_VELOCITY:
+            return self.terminal_velocity(quantity.target)
         if kind is QuantityKind.SOLVE:
             assert quantity.inner is not None and quantity.parameter is not None
             return self.solve_for(quantity.parameter, self.answer(quantity.inner), quantity.name)
@@ -111,6 +114,32 @@ class Method(ABC):
             + r",\quad Q'("
             + self.tex(q)
             + "_0) < 0",
+        )
+        return sympy.simplify(stable[0])
+
+    def terminal_velocity(self, coordinate: str) -> sympy.Expr:
+        """The velocity at which the coordinate stops accelerating: this method's own acceleration with the
+        velocity left free, set to zero; the stable root (the acceleration falls as the velocity grows)."""
+        c = self.model.coordinate(coordinate)
+        free = dataclasses.replace(
+            self.model, state=tuple((s, v) for s, v in self.model.state if s != c.velocity)
+        )
+        acceleration = type(self)(free, Mechanics(free)).acceleration(coordinate)
+        if not acceleration.has(c.velocity):
+            raise NotApplicable(f"the acceleration of {coordinate} does not depend on its velocity")
+        roots = [r for r in sympy.solve(acceleration, c.velocity) if r.is_real is not False and r != 0]
+        slope = sympy.diff(acceleration, c.velocity)
+        stable = [
+            r for r in roots if _negative_on_domain(sympy.simplify(slope.subs(c.velocity, r)), self.model)
+        ]
+        if len(stable) != 1:
+            raise DerivationError(
+                f"{self.title}: expected one terminal velocity of {coordinate}, found {stable} among {roots}",
+                quantity=coordinate,
+            )
+        self.step(
+            f"Terminal velocity of {coordinate}",
+            self.tex(sympy.Eq(acceleration, 0)) + r"\Rightarrow " + self.tex(sympy.Eq(c.velocity, stable[0])),
         )
         return sympy.simplify(stable[0])
 

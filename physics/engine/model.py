@@ -15,6 +15,7 @@ from enum import StrEnum
 import sympy
 
 AXES = ("x", "y")
+ZERO = sympy.Integer(0)
 
 
 @dataclass(frozen=True)
@@ -81,6 +82,26 @@ class PairPotential:
     side: int = 1
 
 
+class ForceKind(StrEnum):
+    APPLIED = "force"  # given components, constant or in the coordinates and their velocities
+    LINEAR_DRAG = "drag"  # -b v (viscous damping)
+    QUADRATIC_DRAG = "quadratic_drag"  # -c |v| v (air drag)
+
+
+@dataclass(frozen=True)
+class AppliedForce:
+    """A force on a body (at its centre): given components, or drag opposing its velocity."""
+
+    body: str
+    kind: ForceKind
+    components: tuple[tuple[str, sympy.Expr], ...] = ()  # for APPLIED: (axis, expression)
+    coefficient: sympy.Expr = ZERO  # for drag
+
+    def constant(self, moving: set[sympy.Symbol]) -> bool:
+        """A given force that depends on no coordinate or velocity: it has a potential, -F . r."""
+        return self.kind is ForceKind.APPLIED and not any(e.free_symbols & moving for _, e in self.components)
+
+
 @dataclass(frozen=True)
 class Collision:
     """A projectile particle hits `target` (at rest at `at`) along `direction` and sticks; the
@@ -105,6 +126,7 @@ class QuantityKind(StrEnum):
     SOLVE = "solve"  # the parameter value that makes another quantity vanish
     PROJECTILE_SPEED = "projectile_speed"
     ENERGY_FRACTION_LOST = "energy_fraction_lost"
+    TERMINAL_VELOCITY = "terminal_velocity"  # the velocity of a coordinate at which it stops accelerating
 
 
 @dataclass(frozen=True)
@@ -143,6 +165,7 @@ class Model:
     parameters: tuple[sympy.Symbol, ...]  # the problem's symbols, in table order
     cartesian: tuple[tuple[str, sympy.Symbol], ...]  # Cartesian symbol names of every body
     limits: tuple[StatedLimit, ...] = ()
+    forces: tuple[AppliedForce, ...] = ()
     dimensions_checked: bool = False  # every term was found dimensionally consistent when loaded
 
     def body(self, name: str) -> Body:
@@ -153,6 +176,16 @@ class Model:
 
     def constraint(self, name: str) -> Constraint:
         return next(c for c in self.constraints if c.name == name)
+
+    @property
+    def moving_symbols(self) -> set[sympy.Symbol]:
+        return {c.symbol for c in self.coordinates} | {c.velocity for c in self.coordinates}
+
+    @property
+    def dissipative_forces(self) -> tuple[AppliedForce, ...]:
+        """Forces without a potential: drag, and given forces that depend on coordinates or velocities."""
+        moving = self.moving_symbols
+        return tuple(f for f in self.forces if not f.constant(moving))
 
     def cartesian_symbol(self, name: str) -> sympy.Symbol:
         return dict(self.cartesian)[name]

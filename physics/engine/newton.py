@@ -48,9 +48,10 @@ class NewtonMethod(Method):
         """Gravity and potentials as -grad V in Cartesian coordinates, plus kinetic friction."""
         mech = self.mech
         friction = mech.friction_forces(mech.multipliers)
+        applied = mech.applied_forces(True)
         return [
-            -sympy.diff(mech.cartesian_potential, d.symbol) + f
-            for d, f in zip(mech.dofs, friction, strict=True)
+            -sympy.diff(mech.cartesian_potential, d.symbol) + f + a
+            for d, f, a in zip(mech.dofs, friction, applied, strict=True)
         ]
 
     @cached_property

@@ -75,12 +75,18 @@ class Dynamics:
         # generalized non-conservative forces (kinetic friction), given the multipliers: their power
         # is what the mechanical energy may change by
         lam = list(self.mech.multipliers)
-        friction = self.mech.friction_forces(lam)
-        generalized = [
-            sympy.Add(*(f * sympy.diff(d.mapping, q) for f, d in zip(friction, self.mech.dofs, strict=True)))
-            for q in self.mech.q
+        forces = [
+            f + a
+            for f, a in zip(self.mech.friction_forces(lam), self.mech.applied_forces(False), strict=True)
         ]
-        self._nonconservative = _compile([*args, *lam], generalized)
+        self._nonconservative = _compile([*args, *lam], self.mech.generalized(forces))
+        dissipative = [
+            f + a
+            for f, a in zip(
+                self.mech.friction_forces(lam), self.mech.applied_forces(False, True), strict=True
+            )
+        ]
+        self._dissipative = _compile([*args, *lam], self.mech.generalized(dissipative))
 
     def values(self, point: Point) -> Vector:
         return [point[p] for p in self.params]
@@ -100,6 +106,11 @@ class Dynamics:
     def power(self, q: Vector, qd: Vector, params: Vector, multipliers: Vector) -> float:
         """Power of the non-conservative forces: Q_nc . q'."""
         forces = self._nonconservative(*q, *qd, *params, *multipliers)
+        return sum(f * v for f, v in zip(forces, qd, strict=True))
+
+    def dissipation(self, q: Vector, qd: Vector, params: Vector, multipliers: Vector) -> float:
+        """Power of kinetic friction and drag alone (never positive in a consistent model)."""
+        forces = self._dissipative(*q, *qd, *params, *multipliers)
         return sum(f * v for f, v in zip(forces, qd, strict=True))
 
     def energy(self, q: Vector, qd: Vector, params: Vector) -> float:
@@ -178,6 +189,7 @@ class Simulator:
             QuantityKind.STIFFNESS: self._stiffness,
             QuantityKind.POTENTIAL_FORCE: self._potential_force,
             QuantityKind.SOLVE: self._solve,
+            QuantityKind.TERMINAL_VELOCITY: self._terminal_velocity,
             QuantityKind.PROJECTILE_SPEED: self._collision,
             QuantityKind.ENERGY_FRACTION_LOST: self._collision,
         }
@@ -187,7 +199,7 @@ class Simulator:
         the work of the non-conservative forces, and friction may only take energy out."""
         worst, moved = 0.0, False
         for point in points:
-            change, work, kinetic = self._books(point)
+            change, work, kinetic, dissipated = self._books(point)
             scale = max(kinetic, abs(change), abs(work), 1e-300)
             moved = moved or kinetic > 0
             error = abs(change - work) / scale
@@ -198,9 +210,9 @@ class Simulator:
                     f"non-conservative forces do work {work:.8g} at {at}",
                     path=(),
                 )
-            if work > ENERGY_TOLERANCE * scale:
+            if dissipated > ENERGY_TOLERANCE * scale:
                 raise DerivationError(
-                    f"kinetic friction does positive work ({work:.8g}) in the integrated motion: a body slides "
+                    f"kinetic friction or drag does positive work ({dissipated:.8g}) in the integrated motion: a body slides "
                     f"against the direction the model's friction assumes (`sliding`) at {at}",
                     path=("friction",),
                 )
@@ -213,7 +225,7 @@ class Simulator:
             len(points),
         )
 
-    def _books(self, point: Point) -> tuple[float, float, float]:
+    def _books(self, point: Point) -> tuple[float, float, float, float]:
         """(change of T + V, work of the non-conservative forces, largest kinetic energy) along a short
         integrated motion from the model's state, stopped where a sliding body turns back."""
         dyn = self.dynamics
@@ -225,10 +237,15 @@ class Simulator:
 
         def f(y: Vector) -> Vector:
             unknowns = dyn.unknowns(y[:n], y[n : 2 * n], params)
-            return [*y[n : 2 * n], *unknowns[:n], dyn.power(y[:n], y[n : 2 * n], params, unknowns[n:])]
+            return [
+                *y[n : 2 * n],
+                *unknowns[:n],
+                dyn.power(y[:n], y[n : 2 * n], params, unknowns[n:]),
+                dyn.dissipation(y[:n], y[n : 2 * n], params, unknowns[n:]),
+            ]
 
         sliding = [names.index(friction.sliding) for friction in self.model.frictions]
-        states = [[*q, *qd, 0.0]]
+        states = [[*q, *qd, 0.0, 0.0]]
         for _ in range(ENERGY_STEPS):
             after = rk4(f, states[-1], h, 1)[-1]
             backwards = [i for i in sliding if after[n + i] < 0]
@@ -247,7 +264,7 @@ class Simulator:
         start, end = states[0], states[-1]
         change = dyn.energy(end[:n], end[n : 2 * n], params) - dyn.energy(start[:n], start[n : 2 * n], params)
         kinetic = max(dyn.energy(y[:n], y[n : 2 * n], params) - dyn.potential(y[:n], params) for y in states)
-        return change, end[-1], abs(kinetic)
+        return change, end[-2], abs(kinetic), end[-1]
 
     # --- dynamics from the model's state -----------------------------------------------------
 
@@ -306,7 +323,7 @@ class Simulator:
         trajectory = self._trajectory_around(point, h)
         before, now, after = (dyn.positions(q, params) for q in trajectory)
         accel = [(a - 2 * b + c) / h**2 for a, b, c in zip(before, now, after, strict=True)]
-        grads, base, per_lambda, masses = self._force_parts(trajectory[1], point)
+        grads, base, per_lambda, masses = self._force_parts(trajectory[1], point, self._start(point)[1])
         k = len(grads)
         matrix = [
             [
@@ -330,10 +347,13 @@ class Simulator:
     @cached_property
     def _force_functions(self) -> tuple[Callable[..., list[float]], ...]:
         dyn, mech = self.dynamics, self.dynamics.mech
-        position = [*mech.q, *dyn.params]
+        position = [*mech.q, *mech.qd, *dyn.params]
         place = {d.symbol: d.mapping for d in mech.dofs}
         grads = [g.subs(place) for k in range(len(self.model.constraints)) for g in mech.gap_gradient(k)]
-        base = [(-sympy.diff(mech.cartesian_potential, d.symbol)).subs(place) for d in mech.dofs]
+        base = [
+            (-sympy.diff(mech.cartesian_potential, d.symbol)).subs(place) + applied
+            for d, applied in zip(mech.dofs, mech.applied_forces(False), strict=True)
+        ]
         units = []
         for k in range(len(self.model.constraints)):
             unit = [sympy.Integer(1 if j == k else 0) for j in range(len(self.model.constraints))]
@@ -341,14 +361,28 @@ class Simulator:
         masses = [d.inertia for d in mech.dofs]
         return tuple(_compile(position, exprs) for exprs in (grads, base, units, masses))
 
-    def _force_parts(self, q: Vector, point: Point) -> tuple[list[Vector], Vector, list[Vector], Vector]:
-        values = [*q, *self.dynamics.values(point)]
+    def _force_parts(
+        self, q: Vector, point: Point, qd: Vector | None = None
+    ) -> tuple[list[Vector], Vector, list[Vector], Vector]:
+        values = [*q, *(qd if qd is not None else [0.0] * len(q)), *self.dynamics.values(point)]
         grads_f, base_f, units_f, masses_f = self._force_functions
         n = len(self.dynamics.mech.dofs)
         flat_g, flat_u = grads_f(*values), units_f(*values)
         grads = [flat_g[i * n : (i + 1) * n] for i in range(len(flat_g) // n)]
         units = [flat_u[i * n : (i + 1) * n] for i in range(len(flat_u) // n)]
         return grads, base_f(*values), units, masses_f(*values)
+
+    def _terminal_velocity(self, quantity: Quantity, point: Point, expected: float) -> Measured:
+        """Released with that velocity zero, the integrated motion settles to a constant velocity."""
+        dyn = self.dynamics
+        params = dyn.values(point)
+        i = [c.name for c in self.model.coordinates].index(quantity.target)
+        q, qd = self._start(point)
+        qd[i] = 0.0
+        initial = abs(dyn.unknowns(q, qd, params)[i]) or 1.0
+        relax = abs(expected) / initial  # time to reach the derived speed at the initial acceleration
+        y = rk4(dyn.derivative(params), [*q, *qd], relax / 100, 3000)[-1]
+        return "velocity the integrated motion settles to, released from rest", y[dyn.n + i], None
 
     def _solve(self, quantity: Quantity, point: Point, expected: float) -> Measured:
         """Integrate with the derived parameter value: the inner acceleration must vanish, measured against

@@ -122,3 +122,65 @@ def test_a_model_term_with_the_wrong_dimension_is_refused_at_its_path(client, in
     doc["model"]["potentials"][0]["energy"] = "k*(d - L0)"  # a force where the energy belongs
     details = _details(upload(client, instructor_headers, doc))
     assert "expected an energy" in details["model.potentials[0].energy"]
+
+
+def pulled_block() -> dict[str, Any]:
+    """A block on a rough floor pulled by a rope at an angle: an applied force beside friction."""
+    return {
+        "id": "pulled-block",
+        "title": "Block pulled along a rough floor",
+        "topics": ["friction", "forces"],
+        "statement": "A block $m$ is pulled by a force $F$ at $\\alpha$ above the horizontal; friction $\\mu$.",
+        "symbols": {
+            "m": {"meaning": "mass", "dimension": "kg"},
+            "F": {"meaning": "pull", "dimension": "N"},
+            "alpha": {"meaning": "angle of the rope", "dimension": "1", "range": [0, "pi/2"]},
+            "mu": {"meaning": "kinetic friction coefficient", "dimension": "1"},
+            "g": {"meaning": "gravity", "dimension": "m/s^2"},
+        },
+        "constraints": ["F*sin(alpha) < m*g", "mu*(m*g - F*sin(alpha)) < F*cos(alpha)"],
+        "given": {
+            "m": {"min": 2, "max": 3, "unit": "kg"},
+            "F": {"min": 20, "max": 25, "unit": "N"},
+            "alpha": {"min": 10, "max": 30, "unit": "deg"},
+            "mu": {"min": 0.1, "max": 0.3, "unit": "1"},
+            "g": {"min": 9.81, "max": 9.81, "unit": "m/s^2"},
+        },
+        "parts": [
+            {"id": "acceleration", "kind": "symbolic", "prompt": "Find the acceleration."},
+            {"id": "normal_force", "kind": "symbolic", "prompt": "Find the normal force."},
+        ],
+        "model": {
+            "coordinates": ["x"],
+            "bodies": {"block": {"mass": "m", "position": {"x": "x", "y": 0}}},
+            "gravity": "g",
+            "constraints": {"floor": {"kind": "surface", "gap": "y_block"}},
+            "friction": [{"constraint": "floor", "body": "block", "coefficient": "mu", "sliding": "x"}],
+            "forces": [{"body": "block", "force": {"x": "F*cos(alpha)", "y": "F*sin(alpha)"}}],
+            "domain": {
+                "ranges": {"alpha": ["0", "pi/2"]},
+                "positive": ["m*g - F*sin(alpha)", "F*cos(alpha) - mu*(m*g - F*sin(alpha))"],
+            },
+            "quantities": {"acceleration": {"acceleration": "x"}, "normal_force": {"force": "floor"}},
+        },
+    }
+
+
+def test_an_applied_force_is_derived_and_its_checks_are_listed(client, instructor_headers, student_headers):
+    response = upload(client, instructor_headers, pulled_block())
+    assert response.status_code == 201, response.text
+    solution = client.get("/v1/problems/pulled-block/solution", headers=instructor_headers).json()
+    assert {"dimensions", "energy balance", "limit acceleration (no friction)"} <= set(solution["checks"])
+    verdict = client.post(
+        "/v1/problems/pulled-block/parts/normal_force/submissions",
+        json={"answer": "m*g - F*sin(alpha)"},
+        headers=student_headers,
+    ).json()
+    assert verdict["verdict"] == "correct"
+
+
+def test_a_force_with_the_wrong_dimension_is_refused(client, instructor_headers):
+    doc = pulled_block()
+    doc["model"]["forces"][0]["force"]["x"] = "F*cos(alpha)/m"
+    details = _details(upload(client, instructor_headers, doc))
+    assert "expected a force" in details["model.forces[0].force.x"]

@@ -191,6 +191,7 @@ def test_problem_page_renders_references_mistakes_limits_and_every_method_as_mat
         assert method in html
     assert "The string pulls up on the yo-yo" in html  # a known mistake's feedback
     assert "with no moment of inertia the yo-yo falls freely" in html  # a limiting case
+    assert "energy balance" in html and "in a numerical simulation" in html  # the model's own checks
     assert "$" not in re.sub(r'alttext="[^"]*"', "", html)  # no TeX left as text
     figure = re.search(r'<figure class="problem-figure">\s*<svg[^>]*role="img"', html)
     assert figure, "the figure drawn from the model"

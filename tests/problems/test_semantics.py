@@ -34,6 +34,10 @@ def _unknown_mistake_symbol(d: Doc) -> None:
     d["parts"][0]["mistakes"][0]["answer"] = "sqrt(k/z)"
 
 
+def _si_part_in_non_si_units(d: Doc) -> None:
+    d["parts"][1].update({"units": "rev/s", "units_system": "SI"})
+
+
 def _given_for_unknown_symbol(d: Doc) -> None:
     d["given"]["v"] = {"min": 1, "max": 2, "unit": "m/s"}
 
@@ -110,6 +114,7 @@ CASES = [
     pytest.param(_duplicate_part_ids, ["parts[1].id"], id="duplicate-part-ids"),
     pytest.param(_numeric_of_unknown_quantity, ["parts[1].of"], id="numeric-of-unknown-quantity"),
     pytest.param(_unknown_units, ["parts[1].units"], id="unknown-units"),
+    pytest.param(_si_part_in_non_si_units, ["parts[1].units"], id="si-part-in-non-si-units"),
     pytest.param(_given_unit_of_wrong_dimension, ["given.m.unit"], id="given-unit-wrong-dimension"),
     pytest.param(_unknown_dimension, ["symbols.k.dimension"], id="unknown-dimension"),
     pytest.param(_placeholder_without_given, ["statement"], id="placeholder-without-given"),
