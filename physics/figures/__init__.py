@@ -2,6 +2,8 @@
 
     svg = model_figure(model, {"theta": 0.52, "m1": 0.4}, title="Cart on an incline")
 
+    svg = free_body_figure(model, "block", values, title="Block on a wedge")   # forces on one body
+
 `model` is the engine's loaded `Model`; values are SI (angles in radians) by symbol name, and missing
 ones take typical values. The SVG has role="img", a <title> and a <desc> saying what is drawn.
 """
@@ -11,9 +13,10 @@ from __future__ import annotations
 from collections.abc import Mapping
 
 from physics.engine.model import Model
+from physics.figures.free_body import Force, body_forces, free_body_figure
 from physics.figures.scene import compose, symbol_label
 
-__all__ = ["model_figure", "symbol_label"]
+__all__ = ["Force", "body_forces", "free_body_figure", "model_figure", "symbol_label"]
 
 
 def model_figure(model: Model, values: Mapping[str, float], *, title: str) -> str:

@@ -4,6 +4,7 @@ attributes are used (no style attributes), so pages with a strict Content-Securi
 
 from __future__ import annotations
 
+import hashlib
 import math
 from dataclasses import dataclass, field
 from html import escape
@@ -139,11 +140,13 @@ class Canvas:
         bottom, top = min(self.ys) - margin, max(self.ys) + margin
         width, height = right - left, top - bottom
         view = f"{left:.3f} {-top:.3f} {width:.3f} {height:.3f}"
+        # ids unique to the drawing, so that several figures on one page each keep their own names
+        ident = "figure-" + hashlib.sha256((title + description).encode()).hexdigest()[:10]
         return (
             f'<svg xmlns="http://www.w3.org/2000/svg" viewBox="{view}" role="img" '
             f'width="{width * 40:.0f}" height="{height * 40:.0f}" '
-            'aria-labelledby="figure-title figure-desc" class="figure">'
-            f'<title id="figure-title">{escape(title)}</title><desc id="figure-desc">{escape(description)}</desc>'
+            f'aria-labelledby="{ident}-title {ident}-desc" class="figure">'
+            f'<title id="{ident}-title">{escape(title)}</title><desc id="{ident}-desc">{escape(description)}</desc>'
             + "".join(self.elements)
             + "</svg>"
         )

@@ -157,4 +157,5 @@ def test_class_results_after_seeded_submissions(
 
     page.goto(seeded.url + "/instructor/deliveries")
     expect(page.get_by_role("heading", level=1)).to_have_text("LMS delivery problems")
+    expect(page.get_by_role("status")).to_contain_text("Every score has been delivered")
     check_page(page, f"instructor-deliveries-{device}")

@@ -33,6 +33,7 @@ RIGHT = "g r^2/(r^2 + k^2)"
 WRONG = "g/2"
 WRONG_TENSION = "m g"  # a known mistake, whose feedback has `$...$` maths in it
 UNREADABLE = "m g +"
+SETTLED_BY_DIMENSION = "g/k^2 r^2"  # (g/k²)·r² or g/(k² r²): only the first is an acceleration
 LIMIT = 2
 
 
@@ -105,6 +106,9 @@ def test_student_sees_the_reading_typeset_and_where_an_answer_cannot_be_read(
     expect(preview.locator("math")).to_be_visible()
     expect(preview.locator("math mfrac")).to_have_count(1)  # a fraction, typeset: not linear text
     expect(preview).to_contain_text("Read as")
+    box.fill(SETTLED_BY_DIMENSION)
+    # Two readings, one an acceleration: the page says which was taken and why.
+    expect(preview.locator(".reading-note")).to_contain_text("the only reading that is")
     box.fill(UNREADABLE)
     expect(preview).to_contain_text("Cannot read this yet")
     expect(box).to_have_attribute("aria-invalid", "true")
