@@ -1,47 +1,130 @@
-"""Problems as the service sees them: stored versions, read and compiled once per process, per variant."""
+"""Problems as the service sees them: stored versions, read and compiled once, per variant.
+
+A compiled problem (derivations, prepared references, sample points) is persisted in the database,
+keyed by the version's content hash and the checker code's fingerprint, so a restarted or new instance
+loads it in milliseconds instead of deriving the bank again for a minute, and only a changed version
+(or changed code) is compiled again.
+"""
 
 from __future__ import annotations
 
+import dataclasses
+import hashlib
+import hmac
 import logging
+import pickle
 import threading
 from collections import OrderedDict
+from collections.abc import Callable
 from pathlib import Path
-from typing import Any
+from typing import Any, TypeVar
 
+from app.db import compiled as compiled_repository
 from app.db import problems as problem_repository
 from app.db.database import Database
 from app.db.errors import ProblemExists, ProblemNotFound
 from app.db.records import ProblemRecord
 from physics.checking import CheckJob
 from physics.figures import model_figure
-from problems.compiled import CompiledProblem, compile_problem
+from problems.compiled import CompiledProblem, build_problem, code_fingerprint
+from problems.errors import ProblemInvalid
 from problems.loader import load_bank, parse_problem
 from problems.modelinfo import load_doc_model
 from problems.schema import ProblemDocument
+from problems.semantics import semantic_errors
 from problems.symbols import symbol_table
 from problems.variants import Variant, draw_variant, si_values, student_view
 
 log = logging.getLogger("physcheck.catalog")
+T = TypeVar("T")
+
+
+class CompiledStore:
+    """Compiled problems in the database, sealed with an HMAC under the server's secret.
+
+    They are pickles (sympy trees pickle; they have no other faithful format), and unpickling runs
+    code, so only bytes that this service wrote may be opened: a row whose MAC does not verify (edited
+    in the database, or written under another secret) is ignored and compiled again.
+    """
+
+    def __init__(self, database: Database, secret: str):
+        self._database = database
+        self._mac_key = hashlib.sha256(b"physcheck compiled problems\0" + secret.encode()).digest()
+
+    @staticmethod
+    def key(record: ProblemRecord) -> str:
+        return hashlib.sha256(f"{record.document_hash}:{code_fingerprint()}".encode()).hexdigest()
+
+    def _mac(self, key: str, payload: bytes) -> str:
+        return hmac.new(self._mac_key, key.encode() + b"\0" + payload, hashlib.sha256).hexdigest()
+
+    def load(self, record: ProblemRecord) -> CompiledProblem | None:
+        key = self.key(record)
+        with self._database.session(read_only=True) as session:
+            found = compiled_repository.get_compiled(session, key)
+        if found is None:
+            return None
+        payload, mac = found
+        if not hmac.compare_digest(mac, self._mac(key, payload)):
+            log.warning("ignoring a stored compilation of %r that fails its check", record.id)
+            return None
+        compiled = pickle.loads(payload)  # noqa: S301 - sealed by this service (class docstring)
+        if not isinstance(compiled, CompiledProblem):
+            return None
+        # The same document may be stored as several versions: the content is shared, not the number.
+        return dataclasses.replace(compiled, version=record.version)
+
+    def save(self, record: ProblemRecord, compiled: CompiledProblem) -> None:
+        key = self.key(record)
+        payload = pickle.dumps(compiled, protocol=pickle.HIGHEST_PROTOCOL)
+        try:
+            with self._database.session() as session:
+                compiled_repository.put_compiled(session, key, payload, self._mac(key, payload))
+        except Exception as error:  # a cache: another instance may have written it meanwhile
+            log.warning("could not store the compilation of %r: %s", record.id, error)
 
 
 class Catalog:
     def __init__(
-        self, database: Database, secret: str, bank_dir: Path | None = None, documents_cached: int = 256
+        self,
+        database: Database,
+        secret: str,
+        bank_dir: Path | None = None,
+        documents_cached: int = 256,
+        compiled_cached: int = 256,
     ):
         self._database = database
         self._bank_dir = bank_dir
         self._secret = secret
         self._documents: OrderedDict[str, ProblemDocument] = OrderedDict()
         self._limit = documents_cached
+        self._compiled: OrderedDict[tuple[str, int, str], CompiledProblem] = OrderedDict()
+        self._compiled_limit = compiled_cached
+        self._store = CompiledStore(database, secret)
         self._lock = threading.Lock()
+        self._store_lock = threading.Lock()
         self.warm = threading.Event()
         self._closing = threading.Event()
         self._compiling: dict[tuple[str, int, str], threading.Lock] = {}
 
     def sync_builtin(self) -> list[ProblemRecord]:
-        """Store the built-in bank: unchanged files keep their version, edited ones get a new one."""
+        """Store the built-in bank: unchanged files keep their version, edited ones get a new one.
+
+        Only a new or edited document has its meaning checked (a restart reads the bank's shape only:
+        the stored version was checked when it was stored).
+        """
+        stored = {record.id: record.document_hash for record in self.list()}
+        documents = load_bank(self._bank_dir, check_meaning=False)
+        faults = [
+            (f"{doc.id}:{path}", message)
+            for doc in documents
+            if stored.get(doc.id) != problem_repository.document_hash(doc.model_dump(mode="json"))
+            for path, message in semantic_errors(doc)
+        ]
+        if faults:
+            raise ProblemInvalid(faults, "the built-in bank")
         saved = []
-        for doc in load_bank(self._bank_dir):
+        for doc in documents:
             try:
                 with self._database.session() as session:
                     saved.append(
@@ -54,7 +137,7 @@ class Catalog:
         return saved
 
     def warm_up(self) -> None:
-        """Compile every live problem once (derivations take seconds); then the instance is ready."""
+        """Load or compile every live problem once (derivations take seconds); then the instance is ready."""
         try:
             for record in self.list():
                 if self._closing.is_set():
@@ -67,8 +150,11 @@ class Catalog:
             self.warm.set()
 
     def close(self) -> None:
-        """Stop a warm-up still running (it would otherwise compile on after the app has shut down)."""
+        """Stop a warm-up still running (it would otherwise compile on after the app has shut down);
+        returns once no thread uses the database any more."""
         self._closing.set()
+        with self._store_lock:
+            pass
 
     def get(self, problem_id: str, version: int | None = None) -> ProblemRecord:
         with self._database.session(read_only=True) as session:
@@ -93,20 +179,46 @@ class Catalog:
         return doc
 
     def compiled(self, record: ProblemRecord) -> CompiledProblem:
-        """Derivations and prepared references, cached by the bank's compiler per (id, version, hash).
+        """Derivations and prepared references: kept in memory per (id, version, hash), else loaded from
+        the database, else compiled (and stored there).
 
         One compilation per problem version at a time: a burst of first requests waits for it rather
         than deriving the same model once per thread.
         """
         key = (record.id, record.version, record.document_hash)
+        found = self._remembered(key)
+        if found is not None:
+            return found
         with self._lock:
             lock = self._compiling.setdefault(key, threading.Lock())
         try:
             with lock:
-                return compile_problem(self.document(record), record.version)
+                found = self._remembered(key)
+                if found is None:
+                    found = self._stored(lambda: self._store.load(record))
+                if found is None:
+                    found = build_problem(self.document(record), record.version).prepare()
+                    self._stored(lambda: self._store.save(record, found))
+                with self._lock:
+                    self._compiled[key] = found
+                    while len(self._compiled) > self._compiled_limit:
+                        self._compiled.popitem(last=False)
+                return found
         finally:
-            with self._lock:  # later callers find the compiler's cache warm; no lock kept per version
+            with self._lock:  # later callers find the cache warm; no lock kept per version
                 self._compiling.pop(key, None)
+
+    def _stored(self, use: Callable[[], T]) -> T | None:
+        """Use the store unless closing: a warm-up still compiling must not reach a disposed database."""
+        with self._store_lock:
+            return None if self._closing.is_set() else use()
+
+    def _remembered(self, key: tuple[str, int, str]) -> CompiledProblem | None:
+        with self._lock:
+            found = self._compiled.get(key)
+            if found is not None:
+                self._compiled.move_to_end(key)
+            return found
 
     def job(self, record: ProblemRecord, part_id: str, student: str, answer: str) -> CheckJob:
         """The check job for one student's answer: the student's own numbers for a numeric part.

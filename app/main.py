@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import asyncio
 import functools
 import threading
 from collections.abc import AsyncIterator
@@ -45,7 +46,6 @@ def create_app(
 
     @asynccontextmanager
     async def lifespan(app: FastAPI) -> AsyncIterator[None]:
-        storage = await run_in_threadpool(open_storage_when_reachable, settings)
         grading = pool or GradingPool(
             workers=settings.check_workers,
             timeout=settings.check_timeout_seconds,
@@ -55,8 +55,16 @@ def create_app(
             max_answer_chars=settings.max_answer_chars,
             per_owner=settings.student_checks_in_flight,
         )
-        if pool is None:
-            await run_in_threadpool(grading.start)
+        # The workers' fork server imports the checker while this process opens storage: side by side.
+        try:
+            storage, _ = await asyncio.gather(
+                run_in_threadpool(open_storage_when_reachable, settings),
+                run_in_threadpool(grading.start if pool is None else lambda: None),
+            )
+        except BaseException:
+            if pool is None:
+                grading.close()
+            raise
         # Started on the first upload: most instances never vet one.
         authoring = AuthoringPool(
             settings.upload_timeout_seconds, settings.check_memory_mb, settings.upload_queue_size
@@ -87,7 +95,7 @@ def create_app(
             figure=storage.catalog.figure,
             rate_limit=functools.partial(budget_wait, app.state.services),
         )
-        outbox = OutboxWorker(storage.database, settings, lms_transport)
+        outbox = OutboxWorker(storage.database, lms_transport)
         await outbox.start()
         if settings.warm_up:
             threading.Thread(target=storage.catalog.warm_up, name="catalog-warm-up", daemon=True).start()

@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+import hashlib
 import logging
+import threading
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -27,18 +29,43 @@ def open_database(settings: Settings) -> Database:
     return Database(settings.database_url)
 
 
+# How long a key, once found active, is believed without asking the database again: a revocation in
+# this process applies at once (the revocation count), one in another process (the CLI, another
+# instance) within this time.
+KEY_CACHE_SECONDS = 2.0
+KEY_CACHE_SIZE = 10_000
+
+
 class DatabaseKeyStore:
-    def __init__(self, database: Database):
+    def __init__(self, database: Database, clock: Callable[[], float] = time.monotonic):
         self._database = database
+        self._clock = clock
+        # sha256(key) -> (principal, when found, revocation count then); only active keys are kept
+        self._known: dict[bytes, tuple[Principal, float, int]] = {}
+        self._lock = threading.Lock()
 
     def authenticate(self, plaintext: str) -> Principal | None:
+        digest = hashlib.sha256(plaintext.encode("utf-8", "surrogatepass")).digest()
+        now = self._clock()
+        with self._lock:
+            known = self._known.get(digest)
+        if known is not None:
+            principal, found_at, revocations = known
+            if now - found_at < KEY_CACHE_SECONDS and revocations == key_repository.revocations:
+                return principal
+        revocations = key_repository.revocations
         with self._database.session(read_only=True) as session:
             record = key_repository.authenticate(session, plaintext)
         if record is None:
             return None
-        return Principal(
+        principal = Principal(
             key_id=str(record.id), role=record.role, name=record.name or "", student=record.student
         )
+        with self._lock:
+            if len(self._known) >= KEY_CACHE_SIZE:
+                self._known.clear()
+            self._known[digest] = (principal, now, revocations)
+        return principal
 
 
 @dataclass

@@ -2,7 +2,8 @@
 
 The naive way is what many graders do: `parse_expr` on both texts and `simplify(a - b) == 0`. Both are
 timed in this process on the same typical physics answers (correct and wrong ones mixed); physcheck's
-reference preparation is cached as it is in a worker, and the cache warm-up is not timed.
+reference preparation is cached as it is in a worker, and the cache warm-up is not timed; a second
+physcheck line reads and prepares the reference again for every check.
 
     .venv/bin/python bench/check_bench.py [--rounds 30]
 """
@@ -17,7 +18,7 @@ from collections.abc import Callable
 import sympy
 from sympy.parsing.sympy_parser import parse_expr, standard_transformations
 
-from physics.checking import SymbolDecl, SymbolicJob, run_job
+from physics.checking import SymbolDecl, SymbolicJob, run_job, symbolic_question
 
 ANGLE = SymbolDecl("theta", "1", range=("0", "pi/2"))
 KG = "kg"
@@ -82,6 +83,12 @@ def physcheck_check(answer: str, expected: str, symbols: tuple[SymbolDecl, ...])
     return run_job(SymbolicJob(answer=answer, expected=expected, symbols=symbols)).outcome.value == "correct"
 
 
+def physcheck_new_reference(answer: str, expected: str, symbols: tuple[SymbolDecl, ...]) -> bool:
+    """The same, with the reference read and prepared again for every check (a reference never seen)."""
+    symbolic_question.cache_clear()
+    return physcheck_check(answer, expected, symbols)
+
+
 def naive_check(answer: str, expected: str, symbols: tuple[SymbolDecl, ...]) -> bool:
     table = {s.name: sympy.Symbol(s.name, positive=True) for s in symbols}
     a = parse_expr(answer, local_dict=table, transformations=standard_transformations)
@@ -122,6 +129,7 @@ def main() -> None:
     for answer, expected, _ in disagreements:
         print(f"  disagree: {answer}  vs  {expected}")
     ours = summary("physcheck", measure(physcheck_check, args.rounds))
+    summary("physcheck, new reference", measure(physcheck_new_reference, args.rounds))
     naive = summary("parse_expr + simplify", measure(naive_check, args.naive_rounds))
     print(f"ratio (naive / physcheck): p50 {naive[0] / ours[0]:.0f}x   p99 {naive[1] / ours[1]:.0f}x")
 

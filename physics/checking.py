@@ -1,16 +1,22 @@
 """One entry point for checking an answer, used in-process (bank self-test) and in worker processes.
 
-A `CheckJob` is plain, picklable data (texts and flags) so it can cross into a killable worker; the
-worker reads every text with the whitelist parser, because instructor text is as untrusted as a
-student's. Prepared references are cached per worker, keyed on the job's reference-side fields.
+A `CheckJob` is picklable so it can cross into a killable worker. An ad-hoc check (`SymbolicJob`)
+carries the request's texts, which the worker reads with the whitelist parser, because instructor
+text is as untrusted as a student's. A stored problem's part (`PartJob`) carries what the server
+compiled, sympy trees pickled once, never text printed by sympy and parsed again (the parser does
+not read everything sympy prints: `Abs`, `sign`, `Piecewise`, `Min`). Prepared references are
+cached per worker.
 """
 
 from __future__ import annotations
 
 import dataclasses
+import pickle
+import threading
+from collections import OrderedDict
 from collections.abc import Mapping
 from dataclasses import dataclass, field
-from functools import lru_cache
+from functools import cached_property, lru_cache
 
 import sympy
 
@@ -71,15 +77,69 @@ class NumericJob:
     spec: NumericSpec
 
 
-CheckJob = SymbolicJob | NumericJob
-
-
 @dataclass(frozen=True)
 class SymbolicQuestion:
     """A symbolic part ready to grade: the reference prepared once, the names the answer may use."""
 
     names: Mapping[str, sympy.Symbol]
     reference: PreparedReference
+
+
+@dataclass(frozen=True)
+class CompiledQuestion:
+    """A stored problem's symbolic part as the server compiled it: sympy trees, no text to read again."""
+
+    names: Mapping[str, sympy.Symbol]  # what the answer may use
+    expected: sympy.Expr
+    context: SymbolicContext
+
+    @cached_property
+    def question(self) -> SymbolicQuestion:
+        """The prepared reference (sampling the domain once; sympy-heavy, hence lazy and cached).
+
+        Pickled with the question once computed, so a worker given a prepared one does not sample again.
+        """
+        return SymbolicQuestion(self.names, prepare_reference(self.expected, self.context))
+
+
+@dataclass(frozen=True)
+class PartJob:
+    """An answer to a stored problem's symbolic part.
+
+    `payload` is the part's CompiledQuestion pickled by this service's own server process (never bytes
+    from a request), `key` a digest of it: a worker unpickles and prepares each key once.
+    """
+
+    answer: str
+    key: str
+    payload: bytes = field(repr=False)
+    limits_config: InputLimits = field(default_factory=InputLimits)
+
+
+CheckJob = SymbolicJob | PartJob | NumericJob
+
+PART_CACHE_SIZE = 256
+_parts: OrderedDict[str, CompiledQuestion] = OrderedDict()
+_parts_lock = threading.Lock()
+
+
+def compiled_question(job: PartJob) -> CompiledQuestion:
+    """The job's question, unpickled once per key in this process (LRU)."""
+    with _parts_lock:
+        found = _parts.get(job.key)
+        if found is not None:
+            _parts.move_to_end(job.key)
+            return found
+    # Safe to unpickle: the server process wrote these bytes itself (CompiledSymbolicPart.job);
+    # requests never carry a payload.
+    loaded = pickle.loads(job.payload)  # noqa: S301
+    if not isinstance(loaded, CompiledQuestion):
+        raise TypeError(f"a part job carries a {type(loaded).__name__}, not a CompiledQuestion")
+    with _parts_lock:
+        _parts[job.key] = loaded
+        while len(_parts) > PART_CACHE_SIZE:
+            _parts.popitem(last=False)
+    return loaded
 
 
 def check_answer(
@@ -116,17 +176,31 @@ def preview(job: CheckJob) -> Preview:
     if isinstance(job, NumericJob):
         verdict = check_numeric(job.answer, job.spec)
         return Preview(verdict.read_as, verdict.error)
-    specs = {decl.name: symbol_spec(decl) for decl in job.symbols}
-    table = {name: make_symbol(spec) for name, spec in specs.items()}
-    names = table if job.allowed is None else {name: table[name] for name in job.allowed if name in table}
-    dimensions = {name: spec.dimension for name, spec in specs.items() if spec.dimension is not None}
+    if isinstance(job, PartJob):
+        compiled = compiled_question(job)
+        names = compiled.names
+        symbols = compiled.context.symbols
+        dimensions = {spec.name: spec.dimension for spec in symbols.values() if spec.dimension is not None}
+        try:
+            expected_dimension: Dimension | None = expression_dimension(
+                compiled.expected,
+                {s: spec.dimension for s, spec in symbols.items() if spec.dimension is not None},
+            )
+        except (DimensionMismatch, UnknownDimension):
+            expected_dimension = None
+    else:
+        specs = {decl.name: symbol_spec(decl) for decl in job.symbols}
+        table = {name: make_symbol(spec) for name, spec in specs.items()}
+        names = table if job.allowed is None else {n: table[n] for n in job.allowed if n in table}
+        dimensions = {name: spec.dimension for name, spec in specs.items() if spec.dimension is not None}
+        expected_dimension = _expected_dimension(job.expected, table, dimensions)
     try:
         read = read_symbolic_answer(
             job.answer,
             names,
             job.limits_config,
             dimensions,
-            _expected_dimension(job.expected, table, dimensions),
+            expected_dimension,
         )
         return Preview(read.read_as, None)
     except AnswerError as error:
@@ -148,6 +222,8 @@ def run_job(job: CheckJob) -> Verdict:
     """Grade a job of plain texts; raises SpecError when the reference side is unusable."""
     if isinstance(job, NumericJob):
         return check_numeric(job.answer, job.spec)
+    if isinstance(job, PartJob):
+        return check_answer(job.answer, compiled_question(job).question, job.limits_config)
     question = symbolic_question(
         job.expected, job.symbols, job.constraints, job.mistakes, job.limits, job.allowed
     )

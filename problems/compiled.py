@@ -9,18 +9,27 @@ from __future__ import annotations
 
 import hashlib
 import json
+import pickle
+import sys
 import threading
 from collections import OrderedDict
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from decimal import Decimal
-from functools import cached_property
+from functools import cache, cached_property
+from pathlib import Path
 
+import mpmath
 import sympy
 
-from physics.checking import LimitDecl as CheckLimitDecl
-from physics.checking import NumericJob, SymbolicJob, SymbolicQuestion, read_expression, read_relation
-from physics.checking import SymbolDecl as CheckSymbolDecl
+from physics.checking import (
+    CompiledQuestion,
+    NumericJob,
+    PartJob,
+    SymbolicQuestion,
+    read_expression,
+    read_relation,
+)
 from physics.dimensions import DIMENSIONLESS
 from physics.errors import SpecError
 from physics.numeric import NumericSpec, Tolerance
@@ -40,7 +49,7 @@ from physics.units import unit_dimension
 from problems.errors import ErrorItem, ProblemInvalid
 from problems.modelinfo import Derived, derive_doc, missing_quantity, spec_error_items
 from problems.schema import NumericPart, ProblemDocument, SymbolicPart, format_path
-from problems.symbols import bound_text, check_decls, read_bound, symbol_specs
+from problems.symbols import read_bound, symbol_specs
 from problems.variants import Variant, evaluate_reference, si_values
 
 CACHE_SIZE = 256  # live problem versions kept compiled; beyond it they are derived again
@@ -52,21 +61,41 @@ class CompiledSymbolicPart:
 
     id: str
     quantity: str
-    expected: sympy.Expr
-    names: Mapping[str, sympy.Symbol]  # what the answer may use
-    context: SymbolicContext
-    # The same, as text, for check jobs that cross into worker processes (read back by the parser).
-    job_template: SymbolicJob
+    compiled: CompiledQuestion
     derived: bool = False  # False: the reference is the author's typed answer, which no method checked
 
-    @cached_property
+    @property
+    def expected(self) -> sympy.Expr:
+        return self.compiled.expected
+
+    @property
+    def names(self) -> Mapping[str, sympy.Symbol]:
+        """What the answer may use."""
+        return self.compiled.names
+
+    @property
+    def context(self) -> SymbolicContext:
+        return self.compiled.context
+
+    @property
     def question(self) -> SymbolicQuestion:
         """The prepared reference (sampling the domain once; sympy-heavy, hence lazy and cached)."""
-        return SymbolicQuestion(names=self.names, reference=prepare_reference(self.expected, self.context))
+        return self.compiled.question
 
-    def job(self, answer: str) -> SymbolicJob:
-        t = self.job_template
-        return SymbolicJob(answer, t.expected, t.symbols, t.constraints, t.mistakes, t.limits, t.allowed)
+    @cached_property
+    def _payload(self) -> tuple[str, bytes]:
+        # Pickled once per part (with the prepared reference when it is already computed): a job then
+        # costs the worker a copy of bytes, and the worker unpickles it once per key.
+        payload = pickle.dumps(self.compiled, protocol=pickle.HIGHEST_PROTOCOL)
+        return hashlib.sha256(payload).hexdigest(), payload
+
+    def job(self, answer: str) -> PartJob:
+        key, payload = self._payload
+        return PartJob(answer, key, payload)
+
+    def __getstate__(self) -> dict[str, object]:
+        # The part is pickled whole when a compiled problem is persisted: not its job payload too.
+        return {name: value for name, value in self.__dict__.items() if name != "_payload"}
 
 
 @dataclass(frozen=True)
@@ -135,7 +164,7 @@ class CompiledProblem:
             raise ValueError(f"part {part_id!r} is numeric: its question depends on the student's variant")
         return part.spec(variant)
 
-    def job(self, part_id: str, answer: str, variant: Variant | None = None) -> SymbolicJob | NumericJob:
+    def job(self, part_id: str, answer: str, variant: Variant | None = None) -> PartJob | NumericJob:
         """A picklable check job for a worker process."""
         part = self.parts[part_id]
         if isinstance(part, CompiledSymbolicPart):
@@ -144,12 +173,34 @@ class CompiledProblem:
             raise ValueError(f"part {part_id!r} is numeric: its job depends on the student's variant")
         return part.job(answer, variant)
 
+    def prepare(self) -> CompiledProblem:
+        """Prepare every symbolic part's reference now (sample points, values, mistakes, limits), e.g. to
+        persist them."""
+        for part in self.parts.values():
+            if isinstance(part, CompiledSymbolicPart):
+                part.question.reference.complete()
+        return self
+
     def reference_expressions(self) -> dict[str, sympy.Expr]:
         """Every part's reference expression (instructor-only: the solutions page)."""
         return {
             pid: p.expected if isinstance(p, CompiledSymbolicPart) else p.expr
             for pid, p in self.parts.items()
         }
+
+
+@cache
+def code_fingerprint() -> str:
+    """A digest of the code that compiles and grades (physics/, problems/) and the libraries it leans
+    on: whatever is persisted under it is stale as soon as any of that changes."""
+    digest = hashlib.sha256()
+    digest.update(f"{sys.version_info[:2]} sympy {sympy.__version__} mpmath {mpmath.__version__}".encode())
+    root = Path(__file__).resolve().parent.parent
+    for package in ("physics", "problems"):
+        for path in sorted((root / package).rglob("*.py")):
+            digest.update(str(path.relative_to(root)).encode())
+            digest.update(path.read_bytes())
+    return digest.hexdigest()
 
 
 def document_digest(doc: ProblemDocument) -> str:
@@ -173,7 +224,7 @@ def compile_problem(doc: ProblemDocument, version: int = 0, *, use_model: bool =
         if key in _cache:
             _cache.move_to_end(key)
             return _cache[key]
-    compiled = _compile(doc, version, key[2], use_model)
+    compiled = build_problem(doc, version, use_model=use_model)
     with _cache_lock:
         _cache[key] = compiled
         while len(_cache) > CACHE_SIZE:
@@ -181,12 +232,9 @@ def compile_problem(doc: ProblemDocument, version: int = 0, *, use_model: bool =
     return compiled
 
 
-def clear_cache() -> None:
-    with _cache_lock:
-        _cache.clear()
-
-
-def _compile(doc: ProblemDocument, version: int, digest: str, use_model: bool) -> CompiledProblem:
+def build_problem(doc: ProblemDocument, version: int = 0, *, use_model: bool = True) -> CompiledProblem:
+    """Compile without the cache (its caller keeps the result); raises as `compile_problem`."""
+    digest = document_digest(doc) + ("" if use_model else ":hand")
     errors: list[ErrorItem] = []
     try:
         specs = symbol_specs(doc)
@@ -203,15 +251,12 @@ def _compile(doc: ProblemDocument, version: int, digest: str, use_model: bool) -
                 [(format_path(("model", *path)), message) for path, message in spec_error_items(error)],
                 doc.id,
             ) from None
-    decls = check_decls(doc)
 
     symbolic: dict[str, CompiledSymbolicPart] = {}
     for index, part in enumerate(doc.parts):
         if isinstance(part, SymbolicPart):
             try:
-                symbolic[part.id] = _symbolic_part(
-                    doc, part, index, table, specs, constraints, decls, derived
-                )
+                symbolic[part.id] = _symbolic_part(part, index, table, specs, constraints, derived)
             except SpecError as error:
                 errors.append((format_path(error.path or ("parts", index)), error.message))
     parts: dict[str, CompiledPart] = {}
@@ -233,13 +278,11 @@ def _constraints(doc: ProblemDocument, table: Mapping[str, sympy.Symbol]) -> tup
 
 
 def _symbolic_part(
-    doc: ProblemDocument,
     part: SymbolicPart,
     index: int,
     table: Mapping[str, sympy.Symbol],
     specs: Mapping[str, SymbolSpec],
     constraints: tuple[sympy.Basic, ...],
-    decls: tuple[CheckSymbolDecl, ...],
     derived: Derived | None,
 ) -> CompiledSymbolicPart:
     path: tuple[str | int, ...] = ("parts", index)
@@ -265,7 +308,6 @@ def _symbolic_part(
                 for name, value in lim.where.items()
             },
             lim.description,
-            tuple((name, bound_text(value)) for name, value in lim.where.items()),
         )
         for j, lim in enumerate(part.limits)
     ]
@@ -275,26 +317,16 @@ def _symbolic_part(
         symbols={table[name]: spec for name, spec in specs.items()},
         constraints=constraints,
         mistakes=tuple(KnownMistake(e, f) for e, f in [*mistakes, *engine_mistakes]),
-        limits=tuple(LimitCase(subs, d) for subs, d, _ in limits)
+        limits=tuple(LimitCase(subs, d) for subs, d in limits)
         + tuple(LimitCase(subs, d) for subs, d in engine_limits),
     )
     if hand is not None and derived_expr is not None:
         _require_agreement(hand, derived_expr, names, context, (*path, "answer"))
-    template = SymbolicJob(
-        answer="",
-        expected=sympy.sstr(expected),
-        symbols=decls,
-        constraints=tuple(doc.constraints),
-        mistakes=tuple((sympy.sstr(e), f) for e, f in [*mistakes, *engine_mistakes]),
-        limits=tuple(CheckLimitDecl(texts, d) for _, d, texts in limits)
-        + tuple(
-            CheckLimitDecl(tuple((str(s), sympy.sstr(v)) for s, v in subs.items()), d)
-            for subs, d in engine_limits
-        ),
-        allowed=allowed_names,
-    )
     return CompiledSymbolicPart(
-        part.id, part.quantity_name, expected, names, context, template, derived=derived_expr is not None
+        part.id,
+        part.quantity_name,
+        CompiledQuestion(names, expected, context),
+        derived=derived_expr is not None,
     )
 
 
@@ -310,10 +342,10 @@ def _new_mistakes(
 
 
 def _new_limits(
-    hand: list[tuple[dict[sympy.Symbol, sympy.Expr], str, tuple[tuple[str, str], ...]]],
+    hand: list[tuple[dict[sympy.Symbol, sympy.Expr], str]],
     engine: tuple[tuple[Mapping[sympy.Symbol, sympy.Expr], str], ...],
 ) -> list[tuple[Mapping[sympy.Symbol, sympy.Expr], str]]:
-    seen = [dict(subs) for subs, _, _ in hand]
+    seen = [dict(subs) for subs, _ in hand]
     kept: list[tuple[Mapping[sympy.Symbol, sympy.Expr], str]] = []
     for subs, description in engine:
         if dict(subs) not in seen:

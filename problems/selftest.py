@@ -1,8 +1,9 @@
 """Bank self-test: does each problem grade its own reference answers the way a student's would be?
 
 For every symbolic part, equivalent rewritings of the reference (expanded, factored, trig-rewritten,
-`together`, `cancel`), rendered to text with sympy's `sstr` and read back by the student parser, must
-be ACCEPTED, and every known mistake REJECTED with its feedback. For every numeric part, across many
+`together`, `cancel`), written as a student would type them (physics.answer_text) and read back by the
+student parser, must be ACCEPTED (a form no student could type, such as `Piecewise`, is judged as a
+tree), and every known mistake REJECTED with its feedback. For every numeric part, across many
 students' variants, the reference value (also in other unit prefixes) must be accepted and a value
 10 % off rejected. The engine's methods must agree. Nothing stops at the first failure.
 """
@@ -17,8 +18,10 @@ from pathlib import Path
 
 import sympy
 
-from physics.checking import check_answer
+from physics.answer_text import student_text
+from physics.checking import SymbolicQuestion, check_answer
 from physics.errors import PhyscheckError
+from physics.symbolic import judge_symbolic
 from physics.verdict import Outcome, Reason, Verdict
 from problems.compiled import CompiledNumericPart, CompiledProblem, CompiledSymbolicPart, compile_problem
 from problems.errors import ProblemInvalid
@@ -218,8 +221,8 @@ def _shown(variant: Variant) -> str:
 # ---- symbolic parts ---------------------------------------------------------------------------
 
 
-def rewritings(expr: sympy.Expr) -> dict[str, str]:
-    """Equivalent forms of `expr` as text the student parser reads (label -> text), without repeats."""
+def equivalent_forms(expr: sympy.Expr) -> dict[str, sympy.Expr]:
+    """Equivalent forms of `expr` (label -> form), without repeats."""
     forms: dict[str, sympy.Expr] = {"as derived": expr}
     transforms: dict[str, Callable[[sympy.Expr], sympy.Expr]] = {
         "expand": sympy.expand,
@@ -232,29 +235,44 @@ def rewritings(expr: sympy.Expr) -> dict[str, str]:
     }
     for label, transform in transforms.items():
         try:
-            forms[label] = transform(expr)
+            form = transform(expr)
         except (TypeError, ValueError, NotImplementedError, sympy.PolynomialError):
             continue
+        if all(form != other for other in forms.values()):
+            forms[label] = form
+    return forms
+
+
+def rewritings(expr: sympy.Expr) -> dict[str, str]:
+    """The equivalent forms a student could type, as text the student parser reads (label -> text)."""
     texts: dict[str, str] = {}
-    for label, form in forms.items():
-        text = sympy.sstr(form)
-        if text not in texts.values():
+    for label, form in equivalent_forms(expr).items():
+        text = student_text(form)
+        if text is not None and text not in texts.values():
             texts[label] = text
     return texts
+
+
+def _grade(form: sympy.Expr, question: SymbolicQuestion) -> tuple[str, Verdict]:
+    """Grade a form as a student's typed text when one could type it (sympy prints forms such as
+    `Piecewise` or `Min` that no student can), else as the tree itself."""
+    text = student_text(form)
+    if text is not None:
+        return text, check_answer(text, question)
+    return sympy.sstr(form), Verdict.graded(judge_symbolic(form, question.reference), None)
 
 
 def _symbolic_checks(problem: str, part: CompiledSymbolicPart) -> list[CheckResult]:
     results: list[CheckResult] = []
     question = part.question
-    for label, text in rewritings(part.expected).items():
-        verdict = check_answer(text, question)
+    for label, form in equivalent_forms(part.expected).items():
+        text, verdict = _grade(form, question)
         ok = verdict.outcome is Outcome.CORRECT
         results.append(
             CheckResult(problem, part.id, f"rewrite {label}", ok, "" if ok else _explain(text, verdict))
         )
     for index, mistake in enumerate(part.context.mistakes, start=1):
-        text = sympy.sstr(mistake.expr)
-        verdict = check_answer(text, question)
+        text, verdict = _grade(mistake.expr, question)
         ok = (
             verdict.outcome is Outcome.INCORRECT
             and verdict.reason is Reason.KNOWN_MISTAKE

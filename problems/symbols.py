@@ -57,7 +57,7 @@ def symbol_table(doc: ProblemDocument) -> dict[str, sympy.Symbol]:
 
 
 def check_decl(name: str, decl: SymbolDecl) -> CheckSymbolDecl:
-    """A symbol as a plain text declaration, for check jobs that cross into worker processes."""
+    """A symbol as the checker's plain text declaration (the form `POST /v1/check` sends too)."""
     return CheckSymbolDecl(
         name=name,
         dimension=decl.dimension,
@@ -67,7 +67,3 @@ def check_decl(name: str, decl: SymbolDecl) -> CheckSymbolDecl:
         integer=decl.integer,
         range=(bound_text(decl.range[0]), bound_text(decl.range[1])) if decl.range is not None else None,
     )
-
-
-def check_decls(doc: ProblemDocument) -> tuple[CheckSymbolDecl, ...]:
-    return tuple(check_decl(name, decl) for name, decl in doc.symbols.items())

@@ -228,16 +228,6 @@ def _json_number(value: Decimal) -> int | float:
     )
 
 
-def listing_view(problem: ProblemDocument) -> dict[str, Any]:
-    """One entry of `GET /v1/problems`: no statement values, no references."""
-    return {
-        "id": problem.id,
-        "title": problem.title,
-        "topics": list(problem.topics),
-        "parts": [{"id": p.id, "kind": p.kind, "prompt": p.prompt} for p in problem.parts],
-    }
-
-
 def student_view(problem: ProblemDocument, variant: Variant) -> dict[str, Any]:
     """What one student may see: statement with their values, givens, parts; never a reference."""
     parts: list[dict[str, Any]] = []

@@ -22,6 +22,8 @@ KEY_RANDOM_BYTES = 32
 LOOKUP_CHARS = 8
 # Longer than any key we issue; anything longer is refused before it is hashed.
 MAX_KEY_LENGTH = 128
+# Bumped by every revocation in this process, so that caches of authenticated keys drop at once.
+revocations = 0
 
 
 def generate_key() -> str:
@@ -88,6 +90,8 @@ def revoke_key(session: Session, key_id: int, *, clock: Callable[[], datetime] =
     if row.revoked_at is None:
         row.revoked_at = clock()
         session.flush()
+    global revocations
+    revocations += 1
     return _record(row)
 
 

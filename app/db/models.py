@@ -14,6 +14,7 @@ from sqlalchemy import (
     ForeignKeyConstraint,
     Index,
     Integer,
+    LargeBinary,
     String,
     Text,
     Uuid,
@@ -73,6 +74,19 @@ class ProblemVersion(Base):
     version: Mapped[int] = mapped_column(Integer, primary_key=True, autoincrement=False)
     document: Mapped[dict[str, Any]] = mapped_column(JSON)
     document_hash: Mapped[str] = mapped_column(String(HASH_LENGTH))
+    created_at: Mapped[datetime] = mapped_column(UTCDateTime())
+
+
+class CompiledProblemRow(Base):
+    """A problem version as this service compiled it (derivations, prepared references), sealed with an
+    HMAC under the server's secret; keyed by the version's content hash and the checker code's
+    fingerprint, so a changed document or changed code is compiled again. A cache: rows may go."""
+
+    __tablename__ = "compiled_problems"
+
+    key: Mapped[str] = mapped_column(String(HASH_LENGTH), primary_key=True)
+    payload: Mapped[bytes] = mapped_column(LargeBinary)
+    mac: Mapped[str] = mapped_column(String(HASH_LENGTH))
     created_at: Mapped[datetime] = mapped_column(UTCDateTime())
 
 

@@ -5,6 +5,7 @@ from __future__ import annotations
 import asyncio
 import logging
 import multiprocessing
+from collections import OrderedDict
 from collections.abc import Callable
 from concurrent.futures import TimeoutError as FutureTimeout
 from concurrent.futures.process import BrokenProcessPool
@@ -44,9 +45,15 @@ class GradingPool:
         per_owner: int = 2,
         task: Callable[[CheckJob], Verdict | SpecProblem | GraderCrash] = grade,
         preview_task: Callable[[CheckJob], Preview | SpecProblem | GraderCrash] = read_only,
+        verdicts_cached: int = 4096,
     ):
         self._task = task
         self._preview_task = preview_task
+        # Grading is a pure function of the job (a stored part's job names its compiled version by
+        # digest), so identical jobs share a verdict. Only verdicts a worker returned are kept, never a
+        # timeout or a fault, which depend on the moment.
+        self._verdicts: OrderedDict[str, Verdict] = OrderedDict()
+        self._verdicts_cached = verdicts_cached
         self._max_answer_chars = max_answer_chars
         self._per_owner = per_owner
         self._owners: dict[str, int] = {}
@@ -164,7 +171,17 @@ class GradingPool:
             return Verdict.invalid(
                 TooLarge(f"The answer is longer than {limit} characters; shorten it.", limit)
             )
+        key = repr(job)  # a part job's repr shows its digest, not its payload
+        known = self._verdicts.get(key)
+        if known is not None:
+            self._verdicts.move_to_end(key)
+            return known
         try:
-            return await self._run(self._task, job, owner)
+            verdict: Verdict = await self._run(self._task, job, owner)
         except FutureTimeout:
             return Verdict.invalid(CheckTimeout(TIMEOUT_MESSAGE))
+        if self._verdicts_cached and isinstance(verdict, Verdict):
+            self._verdicts[key] = verdict
+            while len(self._verdicts) > self._verdicts_cached:
+                self._verdicts.popitem(last=False)
+        return verdict

@@ -36,7 +36,6 @@ from app.db.database import Database
 from app.db.types import utc_now
 from app.lti import keys
 from app.lti.models import LtiGradeTarget, LtiPlatform, LtiScoreOutbox
-from app.settings import Settings
 
 log = logging.getLogger("physcheck.lti.outbox")
 
@@ -343,7 +342,6 @@ class OutboxWorker:
     def __init__(
         self,
         database: Database,
-        settings: Settings,
         transport: httpx.AsyncBaseTransport | None = None,
         *,
         clock: Callable[[], datetime] = utc_now,
@@ -351,7 +349,6 @@ class OutboxWorker:
         poll_interval: float = 2.0,
     ) -> None:
         self.database = database
-        self.settings = settings
         self.transport = transport
         self.clock = clock
         self.batch_size = batch_size

@@ -15,7 +15,10 @@ from app.openapi import ErrorBody, Ready
 router = APIRouter(tags=["health"])
 _READY: dict[int | str, dict[str, Any]] = {
     200: {"model": Ready},
-    503: {"model": ErrorBody, "description": "Not ready: the database does not answer, or still compiling."},
+    503: {
+        "model": ErrorBody,
+        "description": "Not ready: the database does not answer, grading is restarting, or still compiling.",
+    },
 }
 
 
@@ -29,7 +32,11 @@ async def health() -> dict[str, str]:
 async def ready(services: ServicesDep) -> dict[str, str] | JSONResponse:
     """Ready for traffic: the database answers, grading workers are up and the problems are compiled."""
     if not await run_in_threadpool(services.database.ping):
-        return JSONResponse(error_body("not_ready", "The database is not reachable."), status_code=503)
+        return JSONResponse(
+            error_body("not_ready", "The database is not reachable."),
+            status_code=503,
+            headers={"Retry-After": "5"},
+        )
     if not services.pool.ready:
         return JSONResponse(
             error_body("not_ready", "Grading is restarting after a fault."),

@@ -19,6 +19,7 @@ a constant factor is not named: with it the answer would give the reference away
 
 from __future__ import annotations
 
+import numpy as np
 import sympy
 from mpmath import libmp
 
@@ -35,6 +36,7 @@ from physics.symbolic.compare import (
     negated,
 )
 from physics.symbolic.dimensional import DimensionMismatch, UnknownDimension, expression_dimension
+from physics.symbolic.floats import FloatEvaluator, agrees, differs, in_range
 from physics.symbolic.limits import breaks_limit
 from physics.symbolic.numeric import ONE, RND, Column, Evaluator, complex_value
 from physics.symbolic.proof import proves_equal
@@ -96,6 +98,16 @@ def _precisely_equal(answer: sympy.Expr, reference: PreparedReference) -> bool:
     values = Evaluator(reference.precise_columns, size, PRECISE_PREC)(answer)
     return all(
         a is None or (b is not None and close(a, b, reference.scale, PRECISE_TOLERANCE_BITS))
+        for a, b in zip(values, reference.precise_values, strict=True)
+    )
+
+
+def _confirmed(answer: sympy.Expr, reference: PreparedReference) -> bool:
+    """Defined and equal at twice the precision at every one of the check points (no point skipped)."""
+    size = len(reference.precise_values)
+    values = Evaluator(reference.precise_columns, size, PRECISE_PREC)(answer)
+    return size > 0 and all(
+        a is not None and b is not None and close(a, b, reference.scale, PRECISE_TOLERANCE_BITS)
         for a, b in zip(values, reference.precise_values, strict=True)
     )
 
@@ -181,6 +193,36 @@ def diagnose(answer: sympy.Expr, values: Column, reference: PreparedReference, u
     return Judgement(False, Reason.WRONG_VALUE, " ".join(sentences))
 
 
+def _refuted_at(answer: sympy.Expr, reference: PreparedReference, index: int) -> bool:
+    """The answer, in multiprecision at one sample point, is defined there and differs (rule 1)."""
+    point = {s: [reference.sample.columns[s][index]] for s in reference.sample.symbols}
+    value = Evaluator(point, 1, PREC)(answer)[0]
+    expected = reference.values[index]
+    return (
+        value is not None
+        and expected is not None
+        and not close(value, expected, reference.scale, TOLERANCE_BITS)
+    )
+
+
+def _first_look(answer: sympy.Expr, reference: PreparedReference) -> bool | None:
+    """The rule decided from a float64 look at every point and multiprecision at a few: True (equal),
+    False (refuted), None (float64 cannot tell: the full multiprecision path decides)."""
+    floats = reference.floats
+    if not floats.usable:
+        return None
+    values = FloatEvaluator(floats.columns, reference.sample.size)(answer)
+    if values is None or not in_range(values):
+        return None
+    if agrees(values, floats.values, floats.scale):
+        # Equal to 1e-9 everywhere; the precise points catch what float64 cannot see (30 digits of pi).
+        return True if _confirmed(answer, reference) else None
+    suspects = np.flatnonzero(differs(values, floats.values, floats.scale))
+    if suspects.size and _refuted_at(answer, reference, int(suspects[0])):
+        return False
+    return None
+
+
 def judge_symbolic(answer: sympy.Expr, reference: PreparedReference) -> Judgement:
     """Correct when the answer equals the reference on the whole domain; else the first reason found.
 
@@ -189,8 +231,11 @@ def judge_symbolic(answer: sympy.Expr, reference: PreparedReference) -> Judgemen
     expr = _normalize_answer(answer, reference)
     if expr == reference.expected:
         return Judgement(True, Reason.EQUIVALENT, CORRECT)
+    decided = _first_look(expr, reference)
+    if decided is True:
+        return Judgement(True, Reason.EQUIVALENT, CORRECT)
     values = Evaluator(reference.sample.columns, reference.sample.size, PREC)(expr)
-    if _equivalent(expr, values, reference):
+    if decided is None and _equivalent(expr, values, reference):
         return Judgement(True, Reason.EQUIVALENT, CORRECT)
     # The reference is defined at every sample point, so a missing value is the answer's own gap.
     return diagnose(expr, values, reference, undefined=any(v is None for v in values))

@@ -10,6 +10,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from decimal import Decimal
 from fractions import Fraction
+from functools import cached_property
 
 import sympy
 
@@ -18,6 +19,7 @@ from physics.errors import SpecError
 from physics.symbolic.compare import PREC, PRECISE_PREC, typical_scale
 from physics.symbolic.dimensional import DimensionMismatch, UnknownDimension, expression_dimension
 from physics.symbolic.domain import LimitCase, SymbolicContext
+from physics.symbolic.floats import FloatSample, float_sample
 from physics.symbolic.limits import PreparedLimit, prepare_limit
 from physics.symbolic.numeric import Column, Evaluator, Mpf
 from physics.symbolic.sampling import DomainSample, sample_domain, seed_for
@@ -44,8 +46,31 @@ class PreparedReference:
     precise_values: Column  # ...and the reference there at PRECISE_PREC
     dimension: Dimension | None  # what the answer must have; None when unknown
     dims: Mapping[sympy.Symbol, Dimension]  # the symbols whose dimension is declared
-    mistakes: tuple[PreparedMistake, ...]
-    limits: tuple[PreparedLimit, ...]
+    mistake_exprs: tuple[tuple[sympy.Expr, str], ...]  # (expression, feedback), over the context's symbols
+    limit_cases: tuple[LimitCase, ...]
+
+    @cached_property
+    def mistakes(self) -> tuple[PreparedMistake, ...]:
+        """The known mistakes' values, computed on first use: only a wrong answer needs them."""
+        evaluate = Evaluator(self.sample.columns, self.sample.size, PREC)
+        return tuple(PreparedMistake(expr, feedback, evaluate(expr)) for expr, feedback in self.mistake_exprs)
+
+    @cached_property
+    def limits(self) -> tuple[PreparedLimit, ...]:
+        """The limiting cases, computed on first use (at 400 bits: only a wrong answer needs them)."""
+        return tuple(prepare_limit(case, self.expected, self.sample, self.scale) for case in self.limit_cases)
+
+    @cached_property
+    def floats(self) -> FloatSample:
+        """The sample and the reference's values in float64, for the first look at an answer."""
+        return float_sample(self.sample, self.values)
+
+    def complete(self) -> PreparedReference:
+        """Everything computed now (before the reference is persisted or sent to another process)."""
+        self.mistakes  # noqa: B018
+        self.limits  # noqa: B018
+        self.floats  # noqa: B018
+        return self
 
 
 def exact_numbers(expr: sympy.Basic) -> sympy.Basic:
@@ -116,22 +141,17 @@ def prepare_reference(expected: sympy.Expr, context: SymbolicContext) -> Prepare
         [sympy.srepr(c) for c in constraints],
     )
     sample = sample_domain(context, constraints, (reference,), SAMPLE_SIZE, seed, PREC)
-    values = Evaluator(sample.columns, sample.size, PREC)(reference)
+    values = sample.required[0]  # evaluated while sampling (only points where it is defined are kept)
     scale = typical_scale(values)
     precise = min(PRECISE_POINTS, sample.size)
     precise_columns = {s: list(sample.columns[s][:precise]) for s in sample.symbols}
     precise_values = Evaluator(precise_columns, precise, PRECISE_PREC)(reference)
     dims = _declared_dimensions(context)
-    mistakes = []
-    for index, mistake in enumerate(context.mistakes):
-        expr = _reference_side(mistake.expr, context, ("mistakes", index))
-        mistakes.append(
-            PreparedMistake(expr, mistake.feedback, Evaluator(sample.columns, sample.size, PREC)(expr))
-        )
-    limits = tuple(
-        prepare_limit(_renamed_limit(case, context, index), reference, sample, scale)
-        for index, case in enumerate(context.limits)
+    mistakes = tuple(
+        (_reference_side(mistake.expr, context, ("mistakes", index)), mistake.feedback)
+        for index, mistake in enumerate(context.mistakes)
     )
+    limits = tuple(_renamed_limit(case, context, index) for index, case in enumerate(context.limits))
     return PreparedReference(
         expected=reference,
         context=context,
@@ -142,8 +162,8 @@ def prepare_reference(expected: sympy.Expr, context: SymbolicContext) -> Prepare
         precise_values=precise_values,
         dimension=_reference_dimension(reference, context, dims),
         dims=dims,
-        mistakes=tuple(mistakes),
-        limits=limits,
+        mistake_exprs=mistakes,
+        limit_cases=limits,
     )
 
 

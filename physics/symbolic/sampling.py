@@ -44,6 +44,7 @@ class DomainSample:
     symbols: tuple[sympy.Symbol, ...]
     columns: Mapping[sympy.Symbol, Column]
     size: int
+    required: tuple[Column, ...] = ()  # the `required` expressions' values at the points, in order
 
     def point(self, index: int) -> dict[sympy.Symbol, Mpf]:
         return {s: self.columns[s][index] for s in self.symbols}  # type: ignore[misc]
@@ -178,6 +179,7 @@ def sample_domain(
     axes = [axis_for(context.symbols[s], prec) for s in symbols]
     rng = random.Random(seed)  # noqa: S311 - reproducible sampling, not secrecy
     kept: dict[sympy.Symbol, Column] = {s: [] for s in symbols}
+    kept_values: list[Column] = [[] for _ in required]
     found = 0
     for _ in range(MAX_BATCHES):
         grid = _latin_hypercube(rng, len(symbols), size)
@@ -188,13 +190,16 @@ def sample_domain(
         ok = [True] * size
         for relation in constraints:
             ok = [a and b for a, b in zip(ok, _holds(relation, evaluate, size), strict=True)]
-        for expr in required:
-            ok = [a and v is not None for a, v in zip(ok, evaluate(expr), strict=True)]
+        values = [evaluate(expr) for expr in required]
+        for column in values:
+            ok = [a and v is not None for a, v in zip(ok, column, strict=True)]
         for index in (i for i in range(size) if ok[i]):
             if found == size:
                 break
             for s in symbols:
                 kept[s].append(columns[s][index])
+            for out, column in zip(kept_values, values, strict=True):
+                out.append(column[index])
             found += 1
         if found == size:
             break
@@ -204,4 +209,4 @@ def sample_domain(
             "and the reference is defined",
             ("constraints",) if constraints else ("expected",),
         )
-    return DomainSample(symbols, kept, found)
+    return DomainSample(symbols, kept, found, tuple(kept_values))

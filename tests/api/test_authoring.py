@@ -150,3 +150,32 @@ def test_attempt_limit_refuses_graded_answers_but_files_unreadable_ones(
 def test_grade_passback_problems_are_for_instructors(client, instructor_headers, student_headers):
     assert client.get("/v1/lti/delivery-problems", headers=instructor_headers).json() == []
     assert client.get("/v1/lti/delivery-problems", headers=student_headers).status_code == 403
+
+
+def test_upload_using_abs_is_accepted_and_graded_through_the_worker(client, instructor_headers, student_headers):
+    # The reference crosses into the grading worker compiled, never printed by sympy (`Abs(...)`) and
+    # read again by the parser, which knows only `abs`.
+    doc = yaml.safe_load((BANK / "atwood" / "problem.yaml").read_text())
+    doc["id"] = "abs-atwood"
+    acceleration = doc["parts"][0]
+    acceleration["prompt"] = "Find the magnitude of the acceleration."
+    acceleration["answer"] = "abs(m2 - m1)*g/(m1 + m2)"
+    acceleration["mistakes"] = [{"answer": "abs(m2 - m1)*g/m2", "feedback": "Accelerate both masses."}]
+    acceleration["limits"] = []
+    response = upload(client, instructor_headers, doc, "yaml")
+    assert response.status_code == 201, response.text
+
+    def submit(answer: str) -> dict:
+        response = client.post(
+            "/v1/problems/abs-atwood/parts/acceleration/submissions",
+            json={"answer": answer},
+            headers=student_headers,
+        )
+        assert response.status_code == 201, response.text
+        return response.json()
+
+    assert submit("|m1 - m2| g/(m1 + m2)")["verdict"] == "correct"
+    wrong = submit("(m2 - m1) g/(m1 + m2)")  # differs where m1 > m2
+    assert (wrong["verdict"], wrong["reason"]) == ("incorrect", "wrong_value")
+    mistake = submit("abs(m1 - m2) g/m2")
+    assert (mistake["reason"], mistake["feedback"]) == ("known_mistake", "Accelerate both masses.")

@@ -1,12 +1,24 @@
-"""The catalog compiles each problem version once, however many requests arrive first."""
+"""The catalog compiles each problem version once, however many requests arrive first, and keeps it
+across restarts: only a changed version (or changed code) is compiled again."""
 
 from __future__ import annotations
 
+import shutil
 import threading
 import time
+from pathlib import Path
+
+import pytest
+from sqlalchemy import select
 
 from app import catalog as catalog_module
 from app.catalog import Catalog
+from app.db.models import CompiledProblemRow
+from physics.checking import check_answer
+from physics.verdict import Outcome
+
+BANK = Path(__file__).resolve().parents[2] / "problems" / "bank"
+SECRET = "secret-for-the-test"
 
 
 def test_concurrent_first_requests_compile_a_problem_once(db, monkeypatch):
@@ -15,7 +27,7 @@ def test_concurrent_first_requests_compile_a_problem_once(db, monkeypatch):
     record = catalog.get("atwood")
     running, most = [0], [0]
     guard = threading.Lock()
-    real = catalog_module.compile_problem
+    real = catalog_module.build_problem
 
     def slow_compile(doc, version):
         with guard:
@@ -28,7 +40,7 @@ def test_concurrent_first_requests_compile_a_problem_once(db, monkeypatch):
             with guard:
                 running[0] -= 1
 
-    monkeypatch.setattr(catalog_module, "compile_problem", slow_compile)
+    monkeypatch.setattr(catalog_module, "build_problem", slow_compile)
     results = []
     threads = [threading.Thread(target=lambda: results.append(catalog.compiled(record))) for _ in range(4)]
     for thread in threads:
@@ -37,3 +49,85 @@ def test_concurrent_first_requests_compile_a_problem_once(db, monkeypatch):
         thread.join()
     assert most[0] == 1
     assert len(results) == 4 and len({id(r) for r in results}) == 1
+
+
+@pytest.fixture
+def small_bank(tmp_path: Path) -> Path:
+    """Two bank problems with their hand-typed answers only (no model: quick to compile)."""
+    for problem_id in ("atwood", "incline-pulley"):
+        (tmp_path / problem_id).mkdir()
+        shutil.copy(BANK / problem_id / "problem.yaml", tmp_path / problem_id / "problem.yaml")
+    return tmp_path
+
+
+@pytest.fixture
+def compilations(monkeypatch) -> list[str]:
+    """The ids of the problems the catalog compiles (rather than loads), in order."""
+    compiled: list[str] = []
+    real = catalog_module.build_problem
+
+    def counting(doc, version):
+        compiled.append(doc.id)
+        return real(doc, version)
+
+    monkeypatch.setattr(catalog_module, "build_problem", counting)
+    return compiled
+
+
+def start(db, bank: Path, secret: str = SECRET) -> Catalog:
+    """What an instance does at start: store the bank, then compile or load every problem."""
+    catalog = Catalog(db, secret, bank)
+    catalog.sync_builtin()
+    catalog.warm_up()
+    return catalog
+
+
+def grades_its_reference(catalog: Catalog) -> bool:
+    question = catalog.compiled(catalog.get("incline-pulley")).question("acceleration")
+    return check_answer("(m2 - m1 sin(theta)) g/(m1 + m2)", question).outcome is Outcome.CORRECT
+
+
+def test_a_restart_loads_the_compiled_bank_instead_of_compiling_it(db, small_bank, compilations):
+    start(db, small_bank)
+    assert sorted(compilations) == ["atwood", "incline-pulley"]
+    restarted = start(db, small_bank)
+    assert sorted(compilations) == ["atwood", "incline-pulley"]  # nothing compiled again
+    assert grades_its_reference(restarted)
+
+
+def test_only_a_changed_version_is_compiled_again(db, small_bank, compilations):
+    start(db, small_bank)
+    problem = small_bank / "atwood" / "problem.yaml"
+    problem.write_text(problem.read_text().replace("title: Atwood machine", "title: The Atwood machine"))
+    start(db, small_bank)
+    assert compilations[2:] == ["atwood"]
+
+
+def test_a_tampered_or_foreign_entry_is_ignored_and_compiled_again(db, small_bank, compilations):
+    start(db, small_bank)
+    with db.session() as session:
+        for row in session.scalars(select(CompiledProblemRow)):
+            middle = len(row.payload) // 2
+            row.payload = row.payload[:middle] + bytes([row.payload[middle] ^ 1]) + row.payload[middle + 1 :]
+    tampered = start(db, small_bank)
+    assert sorted(compilations[2:]) == ["atwood", "incline-pulley"]
+    assert grades_its_reference(tampered)
+    start(db, small_bank, secret="another-secret-entirely")  # written under another secret: not ours
+    assert sorted(compilations[4:]) == ["atwood", "incline-pulley"]
+
+
+def test_changed_checker_code_compiles_again(db, small_bank, compilations, monkeypatch):
+    start(db, small_bank)
+    monkeypatch.setattr(catalog_module, "code_fingerprint", lambda: "the code has changed")
+    start(db, small_bank)
+    assert sorted(compilations[2:]) == ["atwood", "incline-pulley"]
+
+
+def test_an_edited_bank_document_has_its_meaning_checked_again(db, small_bank):
+    from problems.errors import ProblemInvalid
+
+    start(db, small_bank)
+    problem = small_bank / "atwood" / "problem.yaml"
+    problem.write_text(problem.read_text().replace("answer: 2*m1*m2*g/(m1 + m2)", "answer: 2*m1*q*g/(m1 + m2)"))
+    with pytest.raises(ProblemInvalid, match="q"):
+        Catalog(db, SECRET, small_bank).sync_builtin()

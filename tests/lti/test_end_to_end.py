@@ -162,7 +162,7 @@ def _undelivered(database: Database) -> int:
 async def deliver(sites: Sites) -> list[ReceivedScore]:
     """Drive delivery until nothing is queued (the app's own background worker may deliver some of
     them: claims keep every row to one sender); returns what the LMS has received so far."""
-    worker = OutboxWorker(sites.database, sites.settings, httpx.ASGITransport(app=sites.lms.app))
+    worker = OutboxWorker(sites.database, httpx.ASGITransport(app=sites.lms.app))
     deadline = time.monotonic() + DELIVERY_TIMEOUT
     while await run_in_threadpool(_undelivered, sites.database):
         assert time.monotonic() < deadline, "scores still queued"

@@ -39,7 +39,7 @@ def enqueue(database: Database, student: str, given: float, at: datetime | None 
 
 
 def worker(database: Database, settings: Settings, lms: FakeLms) -> OutboxWorker:
-    return OutboxWorker(database, settings, transport=httpx.ASGITransport(app=lms.app))
+    return OutboxWorker(database, transport=httpx.ASGITransport(app=lms.app))
 
 
 def make_all_due(database: Database) -> None:
@@ -200,9 +200,7 @@ async def test_worker_started_in_background_delivers_and_stops(
 
     await launch_as(browser, lms, "student-1")
     enqueue(database, STUDENT_1, 1.0)
-    delivery = OutboxWorker(
-        database, settings, transport=httpx.ASGITransport(app=lms.app), poll_interval=0.05
-    )
+    delivery = OutboxWorker(database, transport=httpx.ASGITransport(app=lms.app), poll_interval=0.05)
     await delivery.start()
     with anyio.fail_after(20):
         while not lms.scores:

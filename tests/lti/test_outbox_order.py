@@ -22,8 +22,7 @@ from app.lti.outbox import (
     enqueue_scores,
     list_delivery_problems,
 )
-from app.settings import Settings
-from tests.lti.fake_lms import TOOL, FakeLms, register_fake_lms
+from tests.lti.fake_lms import FakeLms, register_fake_lms
 
 pytestmark = pytest.mark.anyio
 PROBLEM = "moving-wedge"
@@ -87,8 +86,7 @@ def passback(db: Database) -> Iterator[Passback]:
     lms = FakeLms()
     lms.trust_tool_keys(jwks)
     clock = Clock()
-    settings = Settings(database_url=db.url, base_url=TOOL, secret="test-secret-123")
-    worker = OutboxWorker(db, settings, transport=httpx.ASGITransport(app=lms.app), clock=clock)
+    worker = OutboxWorker(db, transport=httpx.ASGITransport(app=lms.app), clock=clock)
     yield Passback(db, lms, clock, worker)
 
 

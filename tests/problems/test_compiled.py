@@ -3,13 +3,14 @@
 from __future__ import annotations
 
 import json
+import pickle
 from decimal import Decimal
 from functools import cache
 
 import pytest
 import sympy
 
-from physics.checking import NumericJob, SymbolicJob, check_answer, run_job
+from physics.checking import NumericJob, PartJob, check_answer, run_job
 from physics.verdict import Outcome, Reason
 from problems.compiled import CompiledNumericPart, CompiledProblem, CompiledSymbolicPart, compile_problem
 from problems.errors import ProblemInvalid
@@ -86,11 +87,15 @@ def test_symbolic_question_accepts_the_reference_and_names_a_known_mistake() -> 
     assert wrong.reason is Reason.KNOWN_MISTAKE and "sin" in wrong.feedback
 
 
-def test_jobs_carry_text_that_grades_like_the_question() -> None:
+def test_jobs_carry_the_compiled_question_that_grades_like_the_question() -> None:
     compiled = hand("incline-pulley")
     job = compiled.job("acceleration", "(m2 - m1 sin(theta)) g/(m1 + m2)")
-    assert isinstance(job, SymbolicJob)
-    assert run_job(job).outcome is Outcome.CORRECT
+    assert isinstance(job, PartJob)
+    # As a worker receives it: pickled, so nothing it needs is left behind in this process.
+    crossed = pickle.loads(pickle.dumps(job))
+    assert run_job(crossed).outcome is Outcome.CORRECT
+    wrong = run_job(PartJob("(m2 - m1) g/(m1 + m2)", crossed.key, crossed.payload))
+    assert wrong.reason is Reason.KNOWN_MISTAKE
     variant = draw_variant(bank()["incline-pulley"], 1, "alice", "s3cret")
     numeric = compiled.job("acceleration_numeric", "1 m/s^2", variant)
     assert isinstance(numeric, NumericJob) and numeric.spec.units == "m/s^2"

@@ -104,3 +104,13 @@ def test_every_bank_problem_passes_its_self_test(problem_id: str) -> None:
     [doc] = [d for d in load_bank(check_meaning=False) if d.id == problem_id]
     report = verify_problem(doc, variants=5)
     assert report.ok, report.summary()
+
+
+def test_rewritings_are_typed_as_a_student_would_and_untypeable_forms_left_out() -> None:
+    import sympy
+
+    m1, m2, g = sympy.symbols("m1 m2 g", positive=True)
+    texts = rewritings(sympy.Abs(m1 - m2) * g / (m1 + m2))
+    assert texts["as derived"] == "g*abs(m1 - m2)/(m1 + m2)"
+    assert not any("Abs" in text for text in texts.values())
+    assert rewritings(sympy.Min(m1, m2) * g) == {}

@@ -1,0 +1,58 @@
+"""A sympy expression written as a student would type it, for tests that type the engine's answers.
+
+sympy's own printer writes names the whitelist parser does not read (`Abs`), and some forms have no
+spelling at all (`Piecewise`, `Min`, `sign`): those are not typeable, and `student_text` says so with
+None rather than producing text the parser will refuse.
+"""
+
+from __future__ import annotations
+
+from functools import cache
+
+import sympy
+from sympy.printing.str import StrPrinter
+
+from physics.errors import AnswerError
+from physics.mathinput import parse_math
+from physics.mathinput.vocabulary import FUNCTIONS
+
+_STRUCTURE = (sympy.Add, sympy.Mul, sympy.Pow, sympy.Symbol, sympy.Number, sympy.NumberSymbol)
+
+
+@cache
+def typeable_functions() -> frozenset[type]:
+    """The sympy function classes the parser builds, learnt from the parser itself."""
+    x = sympy.Symbol("x", real=True)  # not positive: abs(x) would simplify away
+    found: set[type] = set()
+    for name in FUNCTIONS:
+        try:
+            built = parse_math(f"{name}(x)", {"x": x}).expr
+        except AnswerError:
+            continue
+        found.update(
+            type(node) for node in sympy.preorder_traversal(built) if isinstance(node, sympy.Function)
+        )
+    return frozenset(found)
+
+
+class _StudentPrinter(StrPrinter):  # type: ignore[misc]
+    def _print_Abs(self, expr: sympy.Abs) -> str:
+        return f"abs({self._print(expr.args[0])})"
+
+    def _print_Exp1(self, expr: sympy.Basic) -> str:
+        return "exp(1)"  # `e` may be a declared symbol
+
+
+def is_typeable(expr: sympy.Basic) -> bool:
+    functions = typeable_functions()
+    return all(
+        isinstance(node, _STRUCTURE) or type(node) in functions for node in sympy.preorder_traversal(expr)
+    )
+
+
+def student_text(expr: sympy.Basic) -> str | None:
+    """Text the whitelist parser reads back as `expr`; None when a student could not type it."""
+    if not is_typeable(expr):
+        return None
+    text: str = _StudentPrinter().doprint(expr)
+    return text

@@ -1,0 +1,46 @@
+"""Active keys are remembered briefly; a revocation still applies at once here, and within seconds
+when another process (the CLI, another instance) revokes."""
+
+from __future__ import annotations
+
+from sqlalchemy import update
+
+from app.db.database import Database
+from app.db.models import ApiKey
+from app.db.types import utc_now
+from app.keys import create_key, revoke_key
+from app.startup import KEY_CACHE_SECONDS, DatabaseKeyStore
+
+
+class Clock:
+    def __init__(self) -> None:
+        self.now = 1000.0
+
+    def __call__(self) -> float:
+        return self.now
+
+
+def test_a_key_revoked_in_this_process_is_refused_at_once(db: Database) -> None:
+    store = DatabaseKeyStore(db, Clock())
+    plaintext, record = create_key(db, "instructor", "prof")
+    assert store.authenticate(plaintext) is not None
+    revoke_key(db, record.id)
+    assert store.authenticate(plaintext) is None
+
+
+def test_a_key_revoked_elsewhere_is_refused_once_the_cache_time_has_passed(db: Database) -> None:
+    clock = Clock()
+    store = DatabaseKeyStore(db, clock)
+    plaintext, record = create_key(db, "student", "ada", student="ada")
+    assert store.authenticate(plaintext) is not None
+    with db.session() as session:  # as another process would: not through this process's code
+        session.execute(update(ApiKey).where(ApiKey.id == record.id).values(revoked_at=utc_now()))
+    clock.now += KEY_CACHE_SECONDS
+    assert store.authenticate(plaintext) is None
+
+
+def test_unknown_keys_are_never_remembered(db: Database) -> None:
+    store = DatabaseKeyStore(db, Clock())
+    assert store.authenticate("pck_not-a-key") is None
+    plaintext, _ = create_key(db, "instructor", "prof")
+    assert store.authenticate(plaintext) is not None
