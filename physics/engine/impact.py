@@ -188,7 +188,8 @@ def _impulses(model: Model) -> Worked:
     else:
         assert hit.restitution is not None
         closing = _dot(in_j[first], n) - _dot(in_j[second], n)
-        (compression,) = sympy.solve(closing, impulse)
+        # linear in J; solved by hand since sympy's solve can lose the root behind cos^2 + sin^2
+        compression = sympy.simplify(-closing.subs(impulse, 0) / sympy.diff(closing, impulse))
         j = (1 + hit.restitution) * compression
         step(
             "Poisson: the compression impulse stops the approach; restitution returns e times it",
