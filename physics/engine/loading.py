@@ -580,6 +580,11 @@ def _quantity(
             errors.add(f"unknown {_QUANTITY_TARGET[kind]} {target!r}", where)
             return None
         return Quantity(name, kind, str(target))
+    if kind is QuantityKind.NORMAL_FREQUENCY:
+        if isinstance(target, bool) or not isinstance(target, int) or not 1 <= target <= len(coordinates):
+            errors.add(f"the mode's number, 1 (lowest) to {len(coordinates)}", where)
+            return None
+        return Quantity(name, kind, str(target))
     if kind is QuantityKind.SOLVE:
         if target not in symbols:
             errors.add(f"unknown symbol {target!r}", where)

@@ -126,6 +126,9 @@ class QuantityKind(StrEnum):
     SOLVE = "solve"  # the parameter value that makes another quantity vanish
     PROJECTILE_SPEED = "projectile_speed"
     ENERGY_FRACTION_LOST = "energy_fraction_lost"
+    NORMAL_FREQUENCY = (
+        "normal_frequency"  # the n-th lowest (1, 2, ...) non-zero normal-mode angular frequency
+    )
     TERMINAL_VELOCITY = "terminal_velocity"  # the velocity of a coordinate at which it stops accelerating
 
 
