@@ -121,9 +121,11 @@ def live_server(
         yield LiveServer(url, app)
 
 
-@pytest.fixture(scope="session")
+@pytest.fixture(scope="module")
 def chromium() -> Iterator[Any]:
-    """One headless Chromium for the run (each test gets its own contexts through `browse`)."""
+    """One headless Chromium per test module (each test gets its own contexts through `browse`).
+    Not per session: Playwright's sync API keeps an event loop running in the main thread while it is
+    open, and async tests in later modules could not start theirs."""
     if CHROMIUM is None:
         pytest.skip("Debian's chromium package is not installed")
     from playwright.sync_api import sync_playwright

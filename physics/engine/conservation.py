@@ -116,6 +116,13 @@ class ConservationMethod(Method):
         )
         return sympy.simplify(sympy.sqrt(omega2))
 
+    def mode_matrices(self, point: dict[sympy.Symbol, sympy.Expr]) -> tuple[sympy.Matrix, sympy.Matrix]:
+        """The energy expanded to second order about the equilibrium: T = q'^T M q'/2, V = q^T K q/2."""
+        mech = self.mech
+        mass = sympy.hessian(mech.kinetic, list(mech.qd)).subs(point).applyfunc(sympy.simplify)
+        stiffness = sympy.hessian(mech.potential, list(mech.q)).subs(point).applyfunc(sympy.simplify)
+        return mass, stiffness
+
     def collision(self, item: QuantityKind) -> sympy.Expr:
         if self.model.collision is None:
             raise NotApplicable("no collision in the model")

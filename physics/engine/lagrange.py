@@ -98,6 +98,19 @@ class LagrangeMethod(Method):
         )
         return force
 
+    def mode_matrices(self, point: dict[sympy.Symbol, sympy.Expr]) -> tuple[sympy.Matrix, sympy.Matrix]:
+        """Lagrange's equations linearized about the equilibrium: M = d(eq)/d(q''), K = d(eq)/dq at rest."""
+        mech = self.mech
+        equations = self.system[0][: len(mech.q)]
+        rest = {**point, **dict.fromkeys(mech.qd, 0), **dict.fromkeys(mech.qdd, 0)}
+        mass = sympy.Matrix(
+            [[sympy.simplify(sympy.diff(e, a).subs(rest)) for a in mech.qdd] for e in equations]
+        )
+        stiffness = sympy.Matrix(
+            [[sympy.simplify(sympy.diff(e, q).subs(rest)) for q in mech.q] for e in equations]
+        )
+        return mass, stiffness
+
     def frequency(self, coordinate: str, equilibrium: sympy.Expr) -> sympy.Expr:
         """Linearized Lagrange equations M q'' + K q = 0 about the equilibrium: omega^2 = eig(M^-1 K)."""
         mech = self.mech

@@ -4,14 +4,22 @@ from __future__ import annotations
 
 import dataclasses
 from abc import ABC, abstractmethod
+from functools import cached_property, lru_cache
 
 import sympy
 
+from physics.engine import modes
 from physics.engine.mechanics import Mechanics
 from physics.engine.model import Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
 from physics.engine.results import MethodReport, Step
 from physics.errors import DerivationError
+
+
+@lru_cache(maxsize=32)
+def stable_equilibrium(model: Model) -> dict[sympy.Symbol, sympy.Expr]:
+    """The stable equilibrium of all the coordinates (shared by the methods: it is where they linearize)."""
+    return modes.equilibrium_point(model, Mechanics(model))
 
 
 class NotApplicable(Exception):
@@ -53,6 +61,30 @@ class Method(ABC):
     def collision(self, item: QuantityKind) -> sympy.Expr:
         raise NotApplicable(f"{self.title} does not treat collisions")
 
+    def mode_matrices(self, point: dict[sympy.Symbol, sympy.Expr]) -> tuple[sympy.Matrix, sympy.Matrix]:
+        """(M, K) of the small oscillations about the equilibrium `point`, as this method sees them."""
+        raise NotApplicable(f"{self.title} does not give normal modes")
+
+    @cached_property
+    def mode_frequencies(self) -> list[sympy.Expr]:
+        """Squared normal-mode frequencies, lowest first."""
+        if self.model.frictions or self.model.dissipative_forces:
+            raise NotApplicable("normal modes are for undamped systems")
+        point = stable_equilibrium(self.model)
+        mass, stiffness = self.mode_matrices(point)
+        squares = modes.squared_frequencies(self.model, mass, stiffness)
+        self.step(
+            "Normal modes",
+            r"\det(K - \omega^2 M) = 0,\ M = "
+            + self.tex(mass)
+            + r",\ K = "
+            + self.tex(stiffness)
+            + r"\Rightarrow \omega^2 \in \{"
+            + ", ".join(self.tex(v) for v in squares)
+            + r"\}",
+        )
+        return squares
+
     # --- quantities -------------------------------------------------------------------------------
 
     def answer(self, quantity: Quantity) -> sympy.Expr:
@@ -80,6 +112,12 @@ class Method(ABC):
         if kind is QuantityKind.PERIOD:
             omega = self.frequency(quantity.target, self.equilibrium(quantity.target))
             return sympy.simplify(2 * sympy.pi / omega)
+        if kind is QuantityKind.EXPRESSION:
+            assert quantity.expression is not None
+            values = {symbol: self.answer(self.model.quantity(name)) for symbol, name in quantity.uses}
+            return sympy.simplify(quantity.expression.subs(values))
+        if kind is QuantityKind.NORMAL_FREQUENCY:
+            return modes.pick(self.mode_frequencies, int(quantity.target))
         if kind is QuantityKind.TERMINAL_VELOCITY:
             return self.terminal_velocity(quantity.target)
         if kind is QuantityKind.SOLVE:

@@ -161,6 +161,15 @@ class NewtonMethod(Method):
         )
         return sympy.simplify(sympy.sqrt(nonzero[0]))
 
+    def mode_matrices(self, point: dict[sympy.Symbol, sympy.Expr]) -> tuple[sympy.Matrix, sympy.Matrix]:
+        """m x'' = -K x on the Cartesian axes (no constraints), K the Hessian of V at the equilibrium."""
+        mech = self.mech
+        if self.model.constraints:
+            raise NotApplicable("Cartesian normal modes are done here only without constraints")
+        place = {d.symbol: d.mapping.subs(point) for d in mech.dofs}
+        stiffness = sympy.hessian(mech.cartesian_potential, [d.symbol for d in mech.dofs]).subs(place)
+        return sympy.diag(*[d.inertia for d in mech.dofs]), stiffness.applyfunc(sympy.simplify)
+
     def collision(self, item: QuantityKind) -> sympy.Expr:
         if self.model.collision is None:
             raise NotApplicable("no collision in the model")

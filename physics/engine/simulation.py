@@ -13,11 +13,13 @@ from dataclasses import dataclass
 from functools import cached_property
 from typing import Any
 
+import mpmath
 import sympy
 
 from physics.engine.collision import merged
 from physics.engine.lagrange import LagrangeMethod
 from physics.engine.mechanics import Mechanics
+from physics.engine.method import stable_equilibrium
 from physics.engine.model import Model, Quantity, QuantityKind
 from physics.engine.results import SimulationCheck
 from physics.errors import DerivationError
@@ -190,6 +192,7 @@ class Simulator:
             QuantityKind.POTENTIAL_FORCE: self._potential_force,
             QuantityKind.SOLVE: self._solve,
             QuantityKind.TERMINAL_VELOCITY: self._terminal_velocity,
+            QuantityKind.NORMAL_FREQUENCY: self._normal_frequency,
             QuantityKind.PROJECTILE_SPEED: self._collision,
             QuantityKind.ENERGY_FRACTION_LOST: self._collision,
         }
@@ -371,6 +374,52 @@ class Simulator:
         grads = [flat_g[i * n : (i + 1) * n] for i in range(len(flat_g) // n)]
         units = [flat_u[i * n : (i + 1) * n] for i in range(len(flat_u) // n)]
         return grads, base_f(*values), units, masses_f(*values)
+
+    def _normal_frequency(self, quantity: Quantity, point: Point, expected: float) -> Measured:
+        """Released from the equilibrium displaced along the mode (M and K measured numerically from the
+        compiled energy), the integrated motion's period."""
+        dyn = self.dynamics
+        params = dyn.values(point)
+        n = dyn.n
+        q0 = [_evaluate(stable_equilibrium(self.model)[c.symbol], point) for c in self.model.coordinates]
+        h = 1e-4
+        stiffness = mpmath.matrix(n, n)
+        for i in range(n):
+            for j in range(n):
+
+                def shifted(a: float, b: float, i: int = i, j: int = j) -> Vector:
+                    return [v + (a if k == i else 0.0) + (b if k == j else 0.0) for k, v in enumerate(q0)]
+
+                stiffness[i, j] = (
+                    dyn.potential(shifted(h, h), params)
+                    - dyn.potential(shifted(h, -h), params)
+                    - dyn.potential(shifted(-h, h), params)
+                    + dyn.potential(shifted(-h, -h), params)
+                ) / (4 * h * h)
+        mass = mpmath.matrix(dyn.mass(q0, params))
+        values, vectors = mpmath.eig(mass**-1 * stiffness)
+        modes = sorted(
+            (float(mpmath.re(v)), [float(mpmath.re(vectors[k, c])) for k in range(n)])
+            for c, v in enumerate(values)
+            if abs(v) > 1e-9 * max(abs(x) for x in values)
+        )
+        omega2, shape = modes[int(quantity.target) - 1]
+        largest = max(range(n), key=lambda k: abs(shape[k]))
+        size = 1e-4 / abs(shape[largest])
+        start = [v + size * x for v, x in zip(q0, shape, strict=True)]
+        estimate = 2 * math.pi / math.sqrt(omega2)
+        per_period = 400
+        states = rk4(dyn.derivative(params), start + [0.0] * n, estimate / per_period, int(3.3 * per_period))
+        values_i = [y[largest] - q0[largest] for y in states]
+        crossings = [
+            k + values_i[k] / (values_i[k] - values_i[k + 1])
+            for k in range(len(values_i) - 1)
+            if values_i[k] < 0 <= values_i[k + 1]
+        ]
+        if len(crossings) < 2:
+            raise DerivationError(f"{quantity.name}: no oscillation seen in the simulation")
+        period = (crossings[-1] - crossings[0]) / (len(crossings) - 1) * estimate / per_period
+        return "2 pi / period of the integrated motion released along the mode", 2 * math.pi / period, None
 
     def _terminal_velocity(self, quantity: Quantity, point: Point, expected: float) -> Measured:
         """Released with that velocity zero, the integrated motion settles to a constant velocity."""

@@ -184,3 +184,69 @@ def test_a_force_with_the_wrong_dimension_is_refused(client, instructor_headers)
     doc["model"]["forces"][0]["force"]["x"] = "F*cos(alpha)/m"
     details = _details(upload(client, instructor_headers, doc))
     assert "expected a force" in details["model.forces[0].force.x"]
+
+
+def three_springs() -> dict[str, Any]:
+    """Two masses between two walls joined by three springs: both normal-mode frequencies."""
+    springs = [
+        {"bodies": ["a"], "anchor": {"x": 0}, "distance": "d", "energy": "k*d^2/2"},
+        {"bodies": ["a", "b"], "distance": "d", "energy": "k*d^2/2"},
+        {"bodies": ["b"], "anchor": {"x": 0}, "distance": "d", "energy": "k*d^2/2"},
+    ]
+    return {
+        "id": "three-springs",
+        "title": "Two masses and three springs",
+        "topics": ["oscillations", "normal modes"],
+        "statement": "Two masses $m$ between two walls are joined by three springs $k$.",
+        "symbols": {
+            "m": {"meaning": "mass", "dimension": "kg"},
+            "k": {"meaning": "spring constant", "dimension": "N/m"},
+        },
+        "given": {"m": {"min": 1, "max": 2, "unit": "kg"}, "k": {"min": 10, "max": 20, "unit": "N/m"}},
+        "parts": [
+            {"id": "slow_mode", "kind": "symbolic", "prompt": "The lower normal-mode angular frequency."},
+            {"id": "fast_mode", "kind": "symbolic", "prompt": "The higher one.", "answer": "sqrt(3*k/m)"},
+        ],
+        "model": {
+            "coordinates": ["x1", "x2"],
+            "bodies": {
+                "a": {"mass": "m", "position": {"x": "x1"}},
+                "b": {"mass": "m", "position": {"x": "x2"}},
+            },
+            "potentials": springs,
+            "quantities": {"slow_mode": {"normal_frequency": 1}, "fast_mode": {"normal_frequency": 2}},
+        },
+    }
+
+
+def test_both_normal_modes_are_derived_from_an_upload(client, instructor_headers, student_headers):
+    response = upload(client, instructor_headers, three_springs())
+    assert response.status_code == 201, response.text
+    verdict = client.post(
+        "/v1/problems/three-springs/parts/slow_mode/submissions",
+        json={"answer": "sqrt(k/m)"},
+        headers=student_headers,
+    ).json()
+    assert verdict["verdict"] == "correct"
+
+
+def test_modes_typed_in_the_wrong_order_are_refused(client, instructor_headers):
+    doc = three_springs()
+    doc["parts"][1]["answer"] = "sqrt(k/m)"  # the lower mode typed for the higher one
+    details = _details(upload(client, instructor_headers, doc))
+    assert "sqrt(3)" in details["parts[1].answer"]
+
+
+def test_a_part_defined_as_a_formula_of_quantities_is_derived(client, instructor_headers):
+    doc = atwood_upload()
+    doc["model"]["quantities"]["net_force"] = {"expression": "tension - m1*g"}
+    doc["parts"].append(
+        {"id": "net_force", "kind": "symbolic", "prompt": "Net force on m1?", "answer": "m1*g"}
+    )
+    details = _details(upload(client, instructor_headers, doc))  # a wrong typed answer is caught
+    assert "disagrees with the model" in details["parts[3].answer"]
+    doc["parts"][3]["answer"] = "m1*(m2 - m1)*g/(m1 + m2)"
+    response = upload(client, instructor_headers, doc)
+    assert response.status_code == 201, response.text
+    solution = client.get("/v1/problems/my-atwood/solution", headers=instructor_headers).json()
+    assert {r["part"]: r["source"] for r in solution["references"]}["net_force"] == "derived"

@@ -94,3 +94,18 @@ def test_skier_slides_for_every_allowed_slope_and_friction() -> None:
 
 def test_built_in_bank_passes_the_meaning_checks() -> None:
     assert {doc.id for doc in load_bank()} == set(bank())
+
+
+def test_bank_has_thirty_problems_and_every_symbolic_part_comes_from_its_model() -> None:
+    from problems.modelinfo import model_quantity_names
+    from problems.schema import SymbolicPart
+
+    docs = load_bank(check_meaning=False)
+    assert len(docs) >= 30
+    typed_only = [
+        f"{doc.id}/{part.id}"
+        for doc in docs
+        for part in doc.parts
+        if isinstance(part, SymbolicPart) and part.quantity_name not in model_quantity_names(doc)
+    ]
+    assert typed_only == []

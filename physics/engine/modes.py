@@ -1,0 +1,102 @@
+"""Normal modes of several coupled degrees of freedom about the stable equilibrium.
+
+The equilibrium solves grad V = 0 in all coordinates at once (a coordinate V does not depend on is
+free: it is set to 0 and its zero-frequency mode left out); it must be stable (the Hessian of V has no
+negative eigenvalue at sampled domain points) and inside the coordinates' declared ranges. Each method
+gives its own mass and stiffness matrices there; the squared frequencies are the non-zero roots of
+det(K - omega^2 M), ordered by their value at a domain point (and checked to keep that order).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+import mpmath
+import sympy
+
+from physics.engine.mechanics import Mechanics
+from physics.engine.model import Model
+from physics.engine.proof import domain_points
+from physics.errors import DerivationError
+
+ORDER_POINTS = 6
+
+
+def equilibrium_point(model: Model, mech: Mechanics) -> dict[sympy.Symbol, sympy.Expr]:
+    """The stable equilibrium of all coordinates together."""
+    potential = mech.potential
+    moving = [q for q in mech.q if potential.has(q)]
+    gradient = [sympy.diff(potential, q) for q in moving]
+    solutions = sympy.solve(gradient, moving, dict=True) if moving else [{}]
+    stable = [
+        {q: sympy.simplify(solution.get(q, sympy.Integer(0))) for q in mech.q}
+        for solution in solutions
+        if all(q in solution for q in moving)
+    ]
+    stable = [point for point in stable if _in_ranges(model, point) and _stable(model, mech, point)]
+    if len(stable) != 1:
+        raise DerivationError(
+            f"expected one stable equilibrium of {', '.join(map(str, moving))}, found {len(stable)} among "
+            f"{solutions}; declare the coordinates' ranges under domain.ranges",
+            path=("domain",),
+        )
+    return stable[0]
+
+
+def _numbers(model: Model, count: int) -> list[dict[sympy.Symbol, float]]:
+    return domain_points(model, count, seed=23)
+
+
+def _in_ranges(model: Model, point: dict[sympy.Symbol, sympy.Expr]) -> bool:
+    by_name = {c.name: c.symbol for c in model.coordinates}
+    for name, low, high in model.coordinate_ranges:
+        value = point[by_name[name]]
+        for at in _numbers(model, 4):
+            number = float(value.subs(at))
+            if not float(low.subs(at)) <= number <= float(high.subs(at)):
+                return False
+    return all(
+        not (q.is_positive and v.is_negative) and not (q.is_negative and v.is_positive)
+        for q, v in point.items()
+    )
+
+
+def _stable(model: Model, mech: Mechanics, point: dict[sympy.Symbol, sympy.Expr]) -> bool:
+    hessian = sympy.hessian(mech.potential, list(mech.q)).subs(point)
+    for at in _numbers(model, ORDER_POINTS):
+        matrix = mpmath.matrix([[float(v) for v in row] for row in hessian.subs(at).tolist()])
+        values = mpmath.eig(matrix, left=False, right=False)
+        scale = max([abs(complex(v)) for v in values] + [1e-300])
+        if any(complex(v).real < -1e-9 * scale for v in values):
+            return False
+    return True
+
+
+def squared_frequencies(model: Model, mass: sympy.Matrix, stiffness: sympy.Matrix) -> list[sympy.Expr]:
+    """Non-zero roots of det(K - lambda M), in increasing order on the whole domain."""
+    lam = sympy.Dummy("lambda")
+    polynomial = sympy.Poly(sympy.expand((stiffness - lam * mass).det()), lam)
+    roots = [sympy.simplify(r) for r in sympy.roots(polynomial, multiple=True)]
+    if len(roots) != polynomial.degree():
+        raise DerivationError("the characteristic polynomial of the normal modes has no closed-form roots")
+    nonzero = [r for r in roots if r != 0]
+    points = _numbers(model, ORDER_POINTS)
+    values = [[complex(sympy.N(r.subs(at))) for r in nonzero] for at in points]
+    nonzero = [
+        r for r, v in zip(nonzero, values[0], strict=True) if abs(v) > 1e-12 * max(1.0, *map(abs, values[0]))
+    ]
+    order = sorted(range(len(nonzero)), key=lambda i: complex(sympy.N(nonzero[i].subs(points[0]))).real)
+    ordered = [nonzero[i] for i in order]
+    for at in points[1:]:
+        numbers = [complex(sympy.N(r.subs(at))).real for r in ordered]
+        if numbers != sorted(numbers):
+            raise DerivationError("the normal modes change order across the domain; narrow it under domain")
+    return ordered
+
+
+def pick(frequencies: Sequence[sympy.Expr], index: int) -> sympy.Expr:
+    if index > len(frequencies):
+        raise DerivationError(
+            f"mode {index} asked for, but the system has {len(frequencies)} oscillating modes"
+        )
+    return sympy.simplify(sympy.sqrt(frequencies[index - 1]))
