@@ -112,6 +112,10 @@ class Method(ABC):
         if kind is QuantityKind.PERIOD:
             omega = self.frequency(quantity.target, self.equilibrium(quantity.target))
             return sympy.simplify(2 * sympy.pi / omega)
+        if kind is QuantityKind.EXPRESSION:
+            assert quantity.expression is not None
+            values = {symbol: self.answer(self.model.quantity(name)) for symbol, name in quantity.uses}
+            return sympy.simplify(quantity.expression.subs(values))
         if kind is QuantityKind.NORMAL_FREQUENCY:
             return modes.pick(self.mode_frequencies, int(quantity.target))
         if kind is QuantityKind.TERMINAL_VELOCITY:
