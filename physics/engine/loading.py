@@ -600,12 +600,35 @@ def _quantities(
 ) -> tuple[Quantity, ...]:
     result: list[Quantity] = []
     for name, entry in _mapping(value, ("quantities",), errors).items():
+        if isinstance(entry, Mapping) and "expression" in entry:
+            result += _expression_quantity(str(name), entry, symbols, result, errors)
+            continue
         quantity = _quantity(
             str(name), entry, ("quantities", str(name)), symbols, coordinates, constraints, collision, errors
         )
         if quantity is not None:
             result.append(quantity)
     return tuple(result)
+
+
+def _expression_quantity(
+    name: str,
+    entry: Mapping[str, Any],
+    symbols: Mapping[str, sympy.Symbol],
+    earlier: list[Quantity],
+    errors: _Collector,
+) -> list[Quantity]:
+    """`T: {expression: "2*pi*R/v"}`: a formula in the parameters and the quantities defined above it."""
+    path: Path = ("quantities", name)
+    _check_keys(entry, {"expression"}, {"expression"}, path, errors)
+    stand_ins = {
+        q.name: sympy.Symbol(f"quantity_{q.name}", real=True) for q in earlier if q.name not in symbols
+    }
+    expr = errors.read(entry["expression"], {**symbols, **stand_ins}, (*path, "expression"))
+    if expr is None:
+        return []
+    uses = tuple((symbol, quantity) for quantity, symbol in stand_ins.items() if expr.has(symbol))
+    return [Quantity(name, QuantityKind.EXPRESSION, expression=expr, uses=uses)]
 
 
 def _quantity(

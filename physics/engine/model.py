@@ -142,7 +142,8 @@ class QuantityKind(StrEnum):
     NORMAL_FREQUENCY = (
         "normal_frequency"  # the n-th lowest (1, 2, ...) non-zero normal-mode angular frequency
     )
-    TERMINAL_VELOCITY = "terminal_velocity"  # the velocity of a coordinate at which it stops accelerating
+    TERMINAL_VELOCITY = "terminal_velocity"
+    EXPRESSION = "expression"  # a formula in the parameters and earlier quantities  # the velocity of a coordinate at which it stops accelerating
     FINAL_VELOCITY = "final_velocity"  # a body's velocity after an impact, along its one axis
     FINAL_SPEED = "final_speed"  # a body's speed after an impact
     KINETIC_ENERGY_LOST = "kinetic_energy_lost"  # by the bodies of an impact (negative: released)
@@ -160,6 +161,9 @@ class Quantity:
     target: str = ""  # coordinate or constraint name
     parameter: sympy.Symbol | None = None  # for SOLVE
     inner: Quantity | None = None  # for SOLVE: the quantity set to zero
+    # for EXPRESSION: the formula, and the stand-in symbol of each earlier quantity it uses
+    expression: sympy.Expr | None = None
+    uses: tuple[tuple[sympy.Symbol, str], ...] = ()
 
 
 @dataclass(frozen=True)
@@ -211,6 +215,9 @@ class Model:
         """Forces without a potential: drag, and given forces that depend on coordinates or velocities."""
         moving = self.moving_symbols
         return tuple(f for f in self.forces if not f.constant(moving))
+
+    def quantity(self, name: str) -> Quantity:
+        return next(q for q in self.quantities if q.name == name)
 
     def cartesian_symbol(self, name: str) -> sympy.Symbol:
         return dict(self.cartesian)[name]

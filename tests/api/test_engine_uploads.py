@@ -235,3 +235,18 @@ def test_modes_typed_in_the_wrong_order_are_refused(client, instructor_headers):
     doc["parts"][1]["answer"] = "sqrt(k/m)"  # the lower mode typed for the higher one
     details = _details(upload(client, instructor_headers, doc))
     assert "sqrt(3)" in details["parts[1].answer"]
+
+
+def test_a_part_defined_as_a_formula_of_quantities_is_derived(client, instructor_headers):
+    doc = atwood_upload()
+    doc["model"]["quantities"]["net_force"] = {"expression": "tension - m1*g"}
+    doc["parts"].append(
+        {"id": "net_force", "kind": "symbolic", "prompt": "Net force on m1?", "answer": "m1*g"}
+    )
+    details = _details(upload(client, instructor_headers, doc))  # a wrong typed answer is caught
+    assert "disagrees with the model" in details["parts[3].answer"]
+    doc["parts"][3]["answer"] = "m1*(m2 - m1)*g/(m1 + m2)"
+    response = upload(client, instructor_headers, doc)
+    assert response.status_code == 201, response.text
+    solution = client.get("/v1/problems/my-atwood/solution", headers=instructor_headers).json()
+    assert {r["part"]: r["source"] for r in solution["references"]}["net_force"] == "derived"
