@@ -139,6 +139,8 @@ class Method(ABC):
         stable = [
             root for root in roots if _negative_on_domain(sympy.simplify(slope.subs(q, root)), self.model)
         ]
+        if len(stable) > 1:  # a symmetric pair, say: the coordinate's declared range chooses
+            stable = [root for root in stable if _in_range(root, coordinate, self.model)]
         if len(stable) != 1:
             raise DerivationError(
                 f"{self.title}: expected one stable equilibrium of {coordinate}, found {len(stable)} among "
@@ -222,6 +224,21 @@ def _real_roots(expr: sympy.Expr, q: sympy.Symbol) -> list[sympy.Expr]:
         and not (q.is_positive and r.is_positive is False)
         and not (q.is_negative and r.is_negative is False)
     ]
+
+
+def _in_range(value: sympy.Expr, coordinate: str, model: Model) -> bool:
+    """value lies inside the coordinate's declared range at sampled domain points (no range: inside)."""
+    bounds = [(low, high) for name, low, high in model.coordinate_ranges if name == coordinate]
+    if not bounds:
+        return True
+    low, high = bounds[0]
+    try:
+        return all(
+            float(low.subs(point)) < float(value.subs(point)) < float(high.subs(point))
+            for point in domain_points(model, 12, seed=5)
+        )
+    except (TypeError, ValueError):
+        return False
 
 
 def _negative_on_domain(expr: sympy.Expr, model: Model) -> bool:

@@ -8,7 +8,7 @@ import pytest
 import sympy
 
 from physics.engine import derive, load_model
-from physics.errors import SpecErrors
+from physics.errors import DerivationError, SpecErrors
 
 NAMES = ("m", "k", "g", "L0")
 SYMBOLS = {name: sympy.Symbol(name, positive=True) for name in NAMES}
@@ -73,3 +73,21 @@ def test_a_range_that_straddles_the_anchor_does_not_fix_the_side() -> None:
 def test_a_bounded_range_on_one_side_fixes_it() -> None:
     result = derive(load_model(hanging_spring("y", "y", {"y": ["-10*L0", "-L0/100"]}), SYMBOLS))
     assert sympy.simplify(result.quantities["rest"] + L0 + m * g / k) == 0
+
+
+def test_a_symmetric_pair_of_stable_equilibria_is_resolved_by_the_declared_range() -> None:
+    names = {n: sympy.Symbol(n, positive=True) for n in ("m", "k", "a", "b")}
+    data: dict[str, Any] = {
+        "coordinates": ["x"],
+        "bodies": {"bead": {"mass": "m", "position": {"x": "x"}}},
+        "potentials": [
+            {"bodies": ["bead"], "anchor": {"x": 0}, "distance": "d", "energy": "k*((d - b)^2 - a^2)^2"}
+        ],
+        "domain": {"positive": ["b - a"], "ranges": {"x": ["b", "b + 2*a"]}},  # minima at b - a and b + a
+        "quantities": {"rest": {"equilibrium": "x"}},
+    }
+    result = derive(load_model(data, names))
+    assert sympy.simplify(result.quantities["rest"] - names["a"] - names["b"]) == 0
+    data["domain"]["ranges"] = {"x": ["0", "oo"]}  # both minima in range: refused, saying so
+    with pytest.raises(DerivationError, match="stable equilibri"):
+        derive(load_model(data, names))
