@@ -715,7 +715,12 @@ def draw_impact(figure: Figure, model: Model, values: Values) -> None:
             canvas.circle(centre, BLOCK / 2, fill=FILLS[index])
         else:
             canvas.polygon(_square(centre, BLOCK), fill=FILLS[index])
-        canvas.text(centre, body_label(body, model))
+        label = body_label(body, model)
+        if plane and label == body.name:  # equal masses: the mass inside, the name beneath
+            canvas.text(centre, symbol_label(body.mass.name) if isinstance(body.mass, sympy.Symbol) else "")
+            canvas.text((centre[0], -0.9), label, size=0.32)
+        else:
+            canvas.text(centre, label)
         velocity = before[name].get("x", sympy.Integer(0))
         if velocity != 0:
             canvas.arrow((centre[0], 0.85), (centre[0] + 1.1, 0.85), width=0.04)
@@ -726,15 +731,30 @@ def draw_impact(figure: Figure, model: Model, values: Values) -> None:
         n = dict(hit.normal)
         nx, ny = (values.number(n.get(a, sympy.Integer(0))) for a in ("x", "y"))
         norm = math.hypot(nx, ny) or 1.0
-        canvas.line((gap, 0.0), (gap + 1.6 * nx / norm, 1.6 * ny / norm), dashed=True, width=0.03)
+        edge = BLOCK / 2  # from the puck's rim, clear of its label
+        canvas.line(
+            (gap + edge * nx / norm, edge * ny / norm),
+            (gap + 1.8 * nx / norm, 1.8 * ny / norm),
+            dashed=True,
+            width=0.03,
+        )
+        canvas.line((gap + edge, 0.0), (gap + 1.8, 0.0), dashed=True, width=0.02)
+        angles = sorted(set().union(*(e.free_symbols for _, e in hit.normal)), key=str)
+        if angles:
+            middle = math.atan2(ny, nx) / 2
+            canvas.text(
+                (gap + 1.25 * math.cos(middle), 1.25 * math.sin(middle)),
+                symbol_label(angles[0].name),
+                size=0.36,
+            )
     else:
         canvas.line((-BLOCK, -BLOCK / 2), (gap + BLOCK, -BLOCK / 2), width=0.05)
     names = " and ".join(body_label(model.body(name), model) for name in hit.bodies)
     if hit.release is not None:
         figure.say(f"{names} together, about to be pushed apart by an explosion.")
     else:
-        kind = "collision" if hit.restitution != 1 else "elastic collision"
-        figure.say(f"{names} about to meet in a {kind}" + (": " + ", ".join(speeds) if speeds else "") + ".")
+        kind = "a collision" if hit.restitution != 1 else "an elastic collision"
+        figure.say(f"{names} about to meet in {kind}" + (": " + ", ".join(speeds) if speeds else "") + ".")
 
 
 def draw_row(figure: Figure, model: Model) -> None:
