@@ -87,3 +87,68 @@ def test_an_uploaded_collision_whose_bodies_separate_is_refused(client, instruct
     response = upload(client, instructor_headers, doc)
     assert response.status_code == 422, response.text
     assert "do not approach" in response.text
+
+
+def shell() -> dict[str, Any]:
+    """A shell at rest bursts into two fragments, releasing Q as kinetic energy."""
+    return {
+        "id": "bursting-shell",
+        "title": "A shell bursts",
+        "topics": ["explosions", "momentum"],
+        "statement": "A shell at rest bursts into fragments $m_1$ and $m_2$ that fly apart along a line; "
+        "the burst gives them kinetic energy $Q$.",
+        "symbols": {
+            "m1": {"meaning": "mass of the first fragment", "dimension": "kg"},
+            "m2": {"meaning": "mass of the second fragment", "dimension": "kg"},
+            "Q": {"meaning": "energy released", "dimension": "J"},
+        },
+        "given": {
+            "m1": {"min": 1, "max": 2, "unit": "kg"},
+            "m2": {"min": 2, "max": 3, "unit": "kg"},
+            "Q": {"min": 100, "max": 200, "unit": "J"},
+        },
+        "parts": [
+            {
+                "id": "v2",
+                "kind": "symbolic",
+                "prompt": "The second fragment's velocity (along the line, away from the first).",
+            },
+            {
+                "id": "v2_numeric",
+                "kind": "numeric",
+                "prompt": "Its value in m/s.",
+                "of": "v2",
+                "units": "m/s",
+            },
+        ],
+        "model": {
+            "coordinates": ["x1", "x2"],
+            "bodies": {
+                "fragment1": {"mass": "m1", "position": {"x": "x1"}},
+                "fragment2": {"mass": "m2", "position": {"x": "x2"}},
+            },
+            "impact": {"bodies": ["fragment1", "fragment2"], "release": "Q"},
+            "quantities": {"v2": {"final_velocity": "fragment2"}},
+        },
+    }
+
+
+def test_an_uploaded_explosion_derives_the_fragments_velocity_and_grades_it(
+    client, instructor_headers, student_headers
+):
+    response = upload(client, instructor_headers, shell())
+    assert response.status_code == 201, response.text
+    solution = client.get("/v1/problems/bursting-shell/solution", headers=instructor_headers).json()
+    assert solution["methods_agree"] is True
+    right = client.post(
+        "/v1/problems/bursting-shell/parts/v2/submissions",
+        json={"answer": "sqrt(2*Q*m1/(m2*(m1 + m2)))"},
+        headers=student_headers,
+    ).json()
+    assert right["verdict"] == "correct"
+    all_energy = client.post(  # as if the second fragment took all of Q
+        "/v1/problems/bursting-shell/parts/v2/submissions",
+        json={"answer": "sqrt(2*Q/m2)"},
+        headers=student_headers,
+    ).json()
+    assert all_energy["verdict"] == "incorrect"
