@@ -238,6 +238,40 @@ def _quantity(
     return sympy.factor(component)
 
 
+INELASTIC = (
+    "That is the perfectly inelastic answer (e = 0), with the bodies moving together afterwards. With a "
+    "coefficient of restitution e they separate: Newton's law gives the separating speed as e times the "
+    "approach speed."
+)
+ELASTIC = (
+    "That assumes an elastic collision, conserving kinetic energy; it is conserved only when e = 1. Use "
+    "momentum conservation with Newton's restitution law."
+)
+RESTITUTION_SIGN = (
+    "The restitution law reverses the relative velocity: the second body leaves the first at e times the "
+    "speed at which they approached (v2 - v1 = e (u1 - u2)), not towards it."
+)
+SWAPPED_MASSES = "Check which mass goes where: the two bodies' masses are swapped."
+
+
+def mistakes(model: Model, reference: sympy.Expr) -> list[tuple[sympy.Expr | None, str]]:
+    """The answers the common slips give: e taken as 0 or 1, the restitution law's sign, masses swapped."""
+    hit = model.impact
+    assert hit is not None
+    found: list[tuple[sympy.Expr | None, str]] = []
+    restitution = hit.restitution
+    if restitution is not None and isinstance(restitution, sympy.Symbol) and reference.has(restitution):
+        found += [
+            (reference.subs(restitution, 0), INELASTIC),
+            (reference.subs(restitution, 1), ELASTIC),
+            (reference.subs(restitution, -restitution), RESTITUTION_SIGN),
+        ]
+    ma, mb = _masses(model)
+    if isinstance(ma, sympy.Symbol) and isinstance(mb, sympy.Symbol):
+        found.append((reference.subs({ma: mb, mb: ma}, simultaneous=True), SWAPPED_MASSES))
+    return found
+
+
 # The derivation methods that work an impact, by method name.
 METHODS: dict[str, Callable[[Model, Quantity, Step], sympy.Expr]] = {
     "conservation": by_conservation,

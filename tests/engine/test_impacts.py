@@ -177,3 +177,14 @@ def test_a_release_that_is_not_an_energy_is_refused() -> None:
     with pytest.raises(SpecErrors) as caught:
         load_model(shell(), SYMBOLS, dims)
     assert [err.path for err in caught.value.errors] == [("impact", "release")]
+
+
+def test_the_common_slips_are_known_mistakes_with_feedback_naming_them() -> None:
+    result = uncached(load_model(carts(), SYMBOLS))
+    mistakes = result.mistakes["v1"]
+    # e taken as 0: the common velocity of a perfectly inelastic collision
+    assert any(_same(m.expr, TOTAL / M) and "perfectly inelastic" in m.feedback for m in mistakes)
+    elastic = (TOTAL - m2 * (u1 - u2)) / M
+    assert any(_same(m.expr, elastic) and "elastic collision" in m.feedback for m in mistakes)
+    sign = (TOTAL + e * m2 * (u1 - u2)) / M
+    assert any(_same(m.expr, sign) and "reverses" in m.feedback for m in mistakes)
