@@ -107,6 +107,13 @@ def _physics(model: Model, dims: Dims) -> list[Check]:
             checks.append((("forces", index, force.kind.value), force.coefficient, MASS / per))
     if model.collision is not None:
         checks.append((("collision", "mass"), model.collision.projectile_mass, MASS))
+    if model.impact is not None:
+        for axis, component in model.impact.normal:
+            checks.append((("impact", "normal", axis), component, None))
+        if model.impact.restitution is not None:
+            checks.append((("impact", "restitution"), model.impact.restitution, DIMENSIONLESS))
+        if model.impact.release is not None:
+            checks.append((("impact", "release"), model.impact.release, ENERGY))
     return checks
 
 

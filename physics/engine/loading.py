@@ -16,6 +16,7 @@ from physics.engine.distances import with_distance_sides
 from physics.engine.elements import expand_elements
 from physics.engine.model import (
     AXES,
+    IMPACT_KINDS,
     AppliedForce,
     Body,
     Collision,
@@ -24,6 +25,7 @@ from physics.engine.model import (
     Coordinate,
     ForceKind,
     Friction,
+    Impact,
     Model,
     PairPotential,
     Quantity,
@@ -48,6 +50,7 @@ _SECTIONS = frozenset(
         "quantities",
         "limits",
         "forces",
+        "impact",
     }
 )
 _QUANTITY_TARGET = {
@@ -149,6 +152,7 @@ def _load_low_level(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]
     velocities = {f"{c.name}_dot": c.velocity for c in coordinates}
     forces = _forces(data.get("forces"), symbols, {**coord_scope, **velocities}, bodies, errors)
     limits = _stated_limits(data.get("limits"), symbols, {q.name for q in quantities}, errors)
+    impact = _impact(data.get("impact"), symbols, bodies, quantities, errors)
     if errors.errors:
         raise SpecErrors(errors.errors)
     model = Model(
@@ -168,6 +172,7 @@ def _load_low_level(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]
         cartesian=cartesian,
         limits=limits,
         forces=forces,
+        impact=impact,
     )
     return with_distance_sides(model)
 
@@ -451,6 +456,59 @@ def _collision(
     return Collision(projectile, mass, direction, target, at, reaches)
 
 
+def _impact(
+    value: Any,
+    symbols: Mapping[str, sympy.Symbol],
+    bodies: tuple[Body, ...],
+    quantities: tuple[Quantity, ...],
+    errors: _Collector,
+) -> Impact | None:
+    asked = [q for q in quantities if q.kind in IMPACT_KINDS]
+    if value is None:
+        for q in asked:
+            errors.add("this quantity needs an impact section", ("quantities", q.name, q.kind.value))
+        return None
+    path: Path = ("impact",)
+    spec = _mapping(value, path, errors)
+    _check_keys(spec, {"bodies", "normal", "restitution", "release"}, {"bodies"}, path, errors)
+    names = spec.get("bodies")
+    known = {b.name: b for b in bodies}
+    if not isinstance(names, list) or len(names) != 2 or len(set(map(str, names))) != 2:
+        errors.add(
+            "two different bodies: [first, second], the normal pointing from the first", (*path, "bodies")
+        )
+        return None
+    for index, name in enumerate(names):
+        if name not in known:
+            errors.add(f"unknown body {name!r}", (*path, "bodies", index))
+        elif known[name].angle is not None:
+            errors.add("an impact is between particles (no angle)", (*path, "bodies", index))
+    if ("restitution" in spec) == ("release" in spec):
+        errors.add("give exactly one of restitution (a collision) and release (an explosion)", path)
+    restitution = (
+        errors.read(spec["restitution"], symbols, (*path, "restitution")) if "restitution" in spec else None
+    )
+    release = errors.read(spec["release"], symbols, (*path, "release")) if "release" in spec else None
+    normal = (
+        _axes(spec["normal"], symbols, (*path, "normal"), errors)
+        if "normal" in spec
+        else (("x", sympy.Integer(1)),)
+    )
+    plane = any(len(known[n].position) > 1 for n in names if n in known)
+    for q in asked:
+        where: Path = ("quantities", q.name, q.kind.value)
+        if q.kind is QuantityKind.KINETIC_ENERGY_LOST:
+            if q.target != "impact":
+                errors.add("the energy lost is the impact's: write `kinetic_energy_lost: impact`", where)
+        elif q.target not in names:
+            errors.add(f"the impact's bodies are {names}, not {q.target!r}", where)
+        elif q.kind is QuantityKind.FINAL_VELOCITY and plane:
+            errors.add("the bodies move in the plane: ask for the final_speed", where)
+    if len(names) != 2 or not all(n in known for n in names) or (restitution is None and release is None):
+        return None
+    return Impact((str(names[0]), str(names[1])), normal, restitution, release)
+
+
 def _coordinate_values(
     value: Any,
     symbols: Mapping[str, sympy.Symbol],
@@ -602,6 +660,8 @@ def _quantity(
         if target not in pool:
             errors.add(f"unknown {_QUANTITY_TARGET[kind]} {target!r}", where)
             return None
+        return Quantity(name, kind, str(target))
+    if kind in IMPACT_KINDS:  # checked against the impact section by `_impact`
         return Quantity(name, kind, str(target))
     if kind is QuantityKind.NORMAL_FREQUENCY:
         if isinstance(target, bool) or not isinstance(target, int) or not 1 <= target <= len(coordinates):

@@ -8,9 +8,9 @@ from functools import cached_property, lru_cache
 
 import sympy
 
-from physics.engine import modes
+from physics.engine import impact, modes
 from physics.engine.mechanics import Mechanics
-from physics.engine.model import Model, Quantity, QuantityKind
+from physics.engine.model import IMPACT_KINDS, Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
 from physics.engine.results import MethodReport, Step
 from physics.errors import DerivationError
@@ -60,6 +60,12 @@ class Method(ABC):
 
     def collision(self, item: QuantityKind) -> sympy.Expr:
         raise NotApplicable(f"{self.title} does not treat collisions")
+
+    def impact(self, quantity: Quantity) -> sympy.Expr:
+        work = impact.METHODS.get(self.name)
+        if work is None or self.model.impact is None:
+            raise NotApplicable(f"{self.title} does not treat impacts")
+        return work(self.model, quantity, self.step)
 
     def mode_matrices(self, point: dict[sympy.Symbol, sympy.Expr]) -> tuple[sympy.Matrix, sympy.Matrix]:
         """(M, K) of the small oscillations about the equilibrium `point`, as this method sees them."""
@@ -120,6 +126,8 @@ class Method(ABC):
             return modes.pick(self.mode_frequencies, int(quantity.target))
         if kind is QuantityKind.TERMINAL_VELOCITY:
             return self.terminal_velocity(quantity.target)
+        if kind in IMPACT_KINDS:
+            return self.impact(quantity)
         if kind is QuantityKind.SOLVE:
             assert quantity.inner is not None and quantity.parameter is not None
             return self.solve_for(quantity.parameter, self.answer(quantity.inner), quantity.name)

@@ -115,6 +115,19 @@ class Collision:
     reaches: tuple[tuple[str, sympy.Expr], ...]
 
 
+@dataclass(frozen=True)
+class Impact:
+    """Two smooth bodies meet at the model's state, moving with its velocities: an impulse along
+    `normal` (pointing from the first body to the second) with Newton's coefficient of `restitution`
+    (1 elastic, 0 perfectly inelastic), or, for an explosion, one that `release`s that much kinetic
+    energy as they part. Exactly one of restitution and release is given."""
+
+    bodies: tuple[str, str]
+    normal: tuple[tuple[str, sympy.Expr], ...]
+    restitution: sympy.Expr | None
+    release: sympy.Expr | None
+
+
 class QuantityKind(StrEnum):
     ACCELERATION = "acceleration"  # second derivative of a coordinate
     FORCE = "force"  # the multiplier of a constraint
@@ -131,6 +144,14 @@ class QuantityKind(StrEnum):
     )
     TERMINAL_VELOCITY = "terminal_velocity"
     EXPRESSION = "expression"  # a formula in the parameters and earlier quantities  # the velocity of a coordinate at which it stops accelerating
+    FINAL_VELOCITY = "final_velocity"  # a body's velocity after an impact, along its one axis
+    FINAL_SPEED = "final_speed"  # a body's speed after an impact
+    KINETIC_ENERGY_LOST = "kinetic_energy_lost"  # by the bodies of an impact (negative: released)
+
+
+IMPACT_KINDS = frozenset(
+    {QuantityKind.FINAL_VELOCITY, QuantityKind.FINAL_SPEED, QuantityKind.KINETIC_ENERGY_LOST}
+)
 
 
 @dataclass(frozen=True)
@@ -173,7 +194,8 @@ class Model:
     cartesian: tuple[tuple[str, sympy.Symbol], ...]  # Cartesian symbol names of every body
     limits: tuple[StatedLimit, ...] = ()
     forces: tuple[AppliedForce, ...] = ()
-    dimensions_checked: bool = False  # every term was found dimensionally consistent when loaded
+    dimensions_checked: bool = False
+    impact: Impact | None = None  # every term was found dimensionally consistent when loaded
 
     def body(self, name: str) -> Body:
         return next(b for b in self.bodies if b.name == name)

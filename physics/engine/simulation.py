@@ -10,17 +10,18 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from functools import cached_property
+from functools import cached_property, partial
 from typing import Any
 
 import mpmath
 import sympy
 
+from physics.engine import impact_simulation
 from physics.engine.collision import merged
 from physics.engine.lagrange import LagrangeMethod
 from physics.engine.mechanics import Mechanics
 from physics.engine.method import stable_equilibrium
-from physics.engine.model import Model, Quantity, QuantityKind
+from physics.engine.model import IMPACT_KINDS, Model, Quantity, QuantityKind
 from physics.engine.results import SimulationCheck
 from physics.errors import DerivationError
 
@@ -195,6 +196,7 @@ class Simulator:
             QuantityKind.NORMAL_FREQUENCY: self._normal_frequency,
             QuantityKind.PROJECTILE_SPEED: self._collision,
             QuantityKind.ENERGY_FRACTION_LOST: self._collision,
+            **dict.fromkeys(IMPACT_KINDS, partial(impact_simulation.measure, self.model)),
         }
 
     def energy_balance(self, points: Sequence[Point]) -> SimulationCheck | None:

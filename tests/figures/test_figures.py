@@ -33,6 +33,8 @@ EXPECTED = {
     "orbit-effective-potential": ({"m", "M", "r"}, "centre"),
     "double-incline": ({"m₁", "m₂", "α", "β"}, "pulley"),
     "yo-yo": ({"m", "r"}, "axle"),
+    "cart-collision": ({"m₁", "m₂", "u₁", "u₂"}, "collision"),
+    "glancing-pucks": ({"m", "u", "φ"}, "elastic collision"),
 }
 
 
