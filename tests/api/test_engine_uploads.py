@@ -29,7 +29,7 @@ def hanging_spring(ranges: dict[str, list[str]] | None) -> dict[str, Any]:
     if ranges is not None:
         model["domain"] = {"ranges": ranges}
     return {
-        "id": "hanging-spring",
+        "id": "my-hanging-spring",
         "title": "Mass hanging on a spring",
         "topics": ["springs"],
         "statement": "A mass $m$ hangs on a spring $k$ of natural length $L_0$ from the ceiling.",
@@ -70,7 +70,7 @@ def test_a_spring_whose_side_is_not_declared_is_refused_with_the_reason(client, 
 def test_a_spring_whose_side_is_declared_derives_l0_plus_m_g_over_k(client, instructor_headers):
     response = upload(client, instructor_headers, hanging_spring({"s": ["0", "oo"]}))
     assert response.status_code == 201, response.text
-    solution = client.get("/v1/problems/hanging-spring/solution", headers=instructor_headers).json()
+    solution = client.get("/v1/problems/my-hanging-spring/solution", headers=instructor_headers).json()
     (reference,) = solution["references"]
     assert reference["source"] == "derived"
     assert solution["methods_agree"] is True
@@ -127,7 +127,7 @@ def test_a_model_term_with_the_wrong_dimension_is_refused_at_its_path(client, in
 def pulled_block() -> dict[str, Any]:
     """A block on a rough floor pulled by a rope at an angle: an applied force beside friction."""
     return {
-        "id": "pulled-block",
+        "id": "my-pulled-block",
         "title": "Block pulled along a rough floor",
         "topics": ["friction", "forces"],
         "statement": "A block $m$ is pulled by a force $F$ at $\\alpha$ above the horizontal; friction $\\mu$.",
@@ -169,10 +169,10 @@ def pulled_block() -> dict[str, Any]:
 def test_an_applied_force_is_derived_and_its_checks_are_listed(client, instructor_headers, student_headers):
     response = upload(client, instructor_headers, pulled_block())
     assert response.status_code == 201, response.text
-    solution = client.get("/v1/problems/pulled-block/solution", headers=instructor_headers).json()
+    solution = client.get("/v1/problems/my-pulled-block/solution", headers=instructor_headers).json()
     assert {"dimensions", "energy balance", "limit acceleration (no friction)"} <= set(solution["checks"])
     verdict = client.post(
-        "/v1/problems/pulled-block/parts/normal_force/submissions",
+        "/v1/problems/my-pulled-block/parts/normal_force/submissions",
         json={"answer": "m*g - F*sin(alpha)"},
         headers=student_headers,
     ).json()
@@ -194,7 +194,7 @@ def three_springs() -> dict[str, Any]:
         {"bodies": ["b"], "anchor": {"x": 0}, "distance": "d", "energy": "k*d^2/2"},
     ]
     return {
-        "id": "three-springs",
+        "id": "my-three-springs",
         "title": "Two masses and three springs",
         "topics": ["oscillations", "normal modes"],
         "statement": "Two masses $m$ between two walls are joined by three springs $k$.",
@@ -223,7 +223,7 @@ def test_both_normal_modes_are_derived_from_an_upload(client, instructor_headers
     response = upload(client, instructor_headers, three_springs())
     assert response.status_code == 201, response.text
     verdict = client.post(
-        "/v1/problems/three-springs/parts/slow_mode/submissions",
+        "/v1/problems/my-three-springs/parts/slow_mode/submissions",
         json={"answer": "sqrt(k/m)"},
         headers=student_headers,
     ).json()
