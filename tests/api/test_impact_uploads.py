@@ -14,7 +14,7 @@ pytestmark = pytest.mark.slow  # each upload derives and simulates the impact in
 
 def carts() -> dict[str, Any]:
     return {
-        "id": "cart-collision",
+        "id": "my-cart-collision",
         "title": "Two carts collide",
         "topics": ["collisions", "momentum"],
         "statement": "Cart $m_1$ at $u_1$ catches up with cart $m_2$ at $u_2$; the coefficient of restitution is $e$.",
@@ -61,7 +61,7 @@ def test_an_uploaded_collision_derives_both_final_velocities_and_grades_them(
 ):
     response = upload(client, instructor_headers, carts())
     assert response.status_code == 201, response.text
-    solution = client.get("/v1/problems/cart-collision/solution", headers=instructor_headers).json()
+    solution = client.get("/v1/problems/my-cart-collision/solution", headers=instructor_headers).json()
     assert {r["part"]: r["source"] for r in solution["references"]} == dict.fromkeys(
         ("v1", "v2", "lost"), "derived"
     )
@@ -69,7 +69,7 @@ def test_an_uploaded_collision_derives_both_final_velocities_and_grades_them(
 
     def grade(part: str, answer: str) -> str:
         verdict = client.post(
-            f"/v1/problems/cart-collision/parts/{part}/submissions",
+            f"/v1/problems/my-cart-collision/parts/{part}/submissions",
             json={"answer": answer},
             headers=student_headers,
         )
