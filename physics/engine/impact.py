@@ -11,7 +11,6 @@ each body's impulse-momentum law with an unknown normal impulse J; J is Poisson'
 from __future__ import annotations
 
 from collections.abc import Callable
-from functools import lru_cache
 
 import sympy
 
@@ -87,23 +86,15 @@ def _parting_root(model: Model, roots: list[sympy.Expr], unchanged: sympy.Expr, 
 Worked = tuple[tuple[tuple[str, str], ...], Velocities, Velocities]  # (steps, before, after)
 
 
-def by_conservation(model: Model, quantity: Quantity, step: Step) -> sympy.Expr:
-    return _replay(_conserved(model), model, quantity, step)
-
-
-def by_impulse(model: Model, quantity: Quantity, step: Step) -> sympy.Expr:
-    return _replay(_impulses(model), model, quantity, step)
-
-
-def _replay(worked: Worked, model: Model, quantity: Quantity, step: Step) -> sympy.Expr:
+def answer(worked: Worked, model: Model, quantity: Quantity, step: Step) -> sympy.Expr:
+    """One quantity from a method's worked impact (its steps written once per method)."""
     steps, before, after = worked
     for title, latex in steps:
         step(title, latex)
     return _quantity(model, quantity, before, after, step)
 
 
-@lru_cache(maxsize=32)
-def _conserved(model: Model) -> Worked:
+def by_conservation(model: Model) -> Worked:
     steps: list[tuple[str, str]] = []
     step = _recorder(steps)
     hit = model.impact
@@ -151,8 +142,7 @@ def _conserved(model: Model) -> Worked:
     return tuple(steps), before, final
 
 
-@lru_cache(maxsize=32)
-def _impulses(model: Model) -> Worked:
+def by_impulse(model: Model) -> Worked:
     steps: list[tuple[str, str]] = []
     step = _recorder(steps)
     hit = model.impact
@@ -273,7 +263,7 @@ def mistakes(model: Model, reference: sympy.Expr) -> list[tuple[sympy.Expr | Non
 
 
 # The derivation methods that work an impact, by method name.
-METHODS: dict[str, Callable[[Model, Quantity, Step], sympy.Expr]] = {
+METHODS: dict[str, Callable[[Model], Worked]] = {
     "conservation": by_conservation,
     "newton": by_impulse,
 }

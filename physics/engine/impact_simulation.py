@@ -10,7 +10,6 @@ here reads the derived formulas: the velocities after come from the integrated f
 from __future__ import annotations
 
 import math
-from functools import lru_cache
 
 import sympy
 
@@ -29,10 +28,10 @@ def _value(expr: sympy.Expr, point: dict[sympy.Symbol, float]) -> float:
     return float(value)
 
 
-@lru_cache(maxsize=32)
-def _integrate(
-    model: Model, point: tuple[tuple[sympy.Symbol, float], ...]
-) -> tuple[list[list[float]], list[list[float]], float]:
+Run = tuple[list[list[float]], list[list[float]], float]
+
+
+def _integrate(model: Model, point: tuple[tuple[sympy.Symbol, float], ...]) -> Run:
     """(velocities before, velocities after: [body][axis]; the speed scale of the motion)."""
     hit = model.impact
     assert hit is not None
@@ -98,12 +97,28 @@ def _integrate(
     return before, after, max(scale, 1e-300)
 
 
-def measure(
-    model: Model, quantity: Quantity, point: dict[sympy.Symbol, float], expected: float
+class ImpactMeasure:
+    """Measures an impact's quantities; integrates each parameter point once for all of them."""
+
+    def __init__(self, model: Model) -> None:
+        self.model = model
+        self.runs: dict[tuple[tuple[sympy.Symbol, float], ...], Run] = {}
+
+    def __call__(
+        self, quantity: Quantity, point: dict[sympy.Symbol, float], expected: float
+    ) -> tuple[str, float, float]:
+        key = tuple(sorted(point.items(), key=lambda kv: kv[0].name))
+        if key not in self.runs:
+            self.runs[key] = _integrate(self.model, key)
+        return _measure(self.model, self.runs[key], quantity, point, expected)
+
+
+def _measure(
+    model: Model, run: Run, quantity: Quantity, point: dict[sympy.Symbol, float], expected: float
 ) -> tuple[str, float, float]:
     hit = model.impact
     assert hit is not None
-    before, after, scale = _integrate(model, tuple(sorted(point.items(), key=lambda kv: kv[0].name)))
+    before, after, scale = run
     what = (
         "an integrated spring-dashpot contact"
         if hit.restitution is not None

@@ -35,6 +35,7 @@ class Method(ABC):
         self.mech = mechanics
         self.steps: list[Step] = []
         self._logged: set[str] = set()
+        self._impact: impact.Worked | None = None  # the impact worked once, for all its quantities
 
     def tex(self, expr: sympy.Basic) -> str:
         return str(sympy.latex(expr, symbol_names=self.mech.latex_names))
@@ -65,7 +66,9 @@ class Method(ABC):
         work = impact.METHODS.get(self.name)
         if work is None or self.model.impact is None:
             raise NotApplicable(f"{self.title} does not treat impacts")
-        return work(self.model, quantity, self.step)
+        if self._impact is None:
+            self._impact = work(self.model)
+        return impact.answer(self._impact, self.model, quantity, self.step)
 
     def mode_matrices(self, point: dict[sympy.Symbol, sympy.Expr]) -> tuple[sympy.Matrix, sympy.Matrix]:
         """(M, K) of the small oscillations about the equilibrium `point`, as this method sees them."""

@@ -10,7 +10,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from functools import cached_property, partial
+from functools import cached_property
 from typing import Any
 
 import mpmath
@@ -196,8 +196,12 @@ class Simulator:
             QuantityKind.NORMAL_FREQUENCY: self._normal_frequency,
             QuantityKind.PROJECTILE_SPEED: self._collision,
             QuantityKind.ENERGY_FRACTION_LOST: self._collision,
-            **dict.fromkeys(IMPACT_KINDS, partial(impact_simulation.measure, self.model)),
+            **dict.fromkeys(IMPACT_KINDS, self._impact),
         }
+
+    @cached_property
+    def _impact(self) -> impact_simulation.ImpactMeasure:
+        return impact_simulation.ImpactMeasure(self.model)
 
     def energy_balance(self, points: Sequence[Point]) -> SimulationCheck | None:
         """Integrate the motion from the model's state and keep the books: the change of T + V must equal
