@@ -25,7 +25,9 @@ from app.db.database import Database
 from app.db.errors import ProblemExists, ProblemNotFound
 from app.db.records import ProblemRecord
 from physics.checking import CheckJob
+from physics.engine.model import Model
 from physics.figures import model_figure
+from physics.figures.free_body import free_body_figure
 from problems.compiled import CompiledProblem, build_problem, code_fingerprint
 from problems.errors import ProblemInvalid
 from problems.loader import load_bank, parse_problem
@@ -247,6 +249,21 @@ class Catalog:
 
     def figure(self, problem_id: str, student: str) -> str | None:
         """The problem's figure (SVG) with this student's values; None for a problem with no model."""
+        drawn = self._model_and_values(problem_id, student)
+        if drawn is None:
+            return None
+        model, values, title = drawn
+        return model_figure(model, values, title=title)
+
+    def free_body_figures(self, problem_id: str, student: str) -> tuple[str, ...]:
+        """One free-body diagram (SVG) per body of the problem's model, with this student's values."""
+        drawn = self._model_and_values(problem_id, student)
+        if drawn is None:
+            return ()
+        model, values, title = drawn
+        return tuple(free_body_figure(model, body.name, values, title=title) for body in model.bodies)
+
+    def _model_and_values(self, problem_id: str, student: str) -> tuple[Model, dict[str, float], str] | None:
         try:
             record = self.get(problem_id)
         except ProblemNotFound:
@@ -257,4 +274,4 @@ class Catalog:
         table = symbol_table(doc)
         values = si_values(doc, self.variant(record, student), table)
         model = load_doc_model(doc, table)
-        return model_figure(model, {s.name: float(v) for s, v in values.items()}, title=doc.title)
+        return model, {s.name: float(v) for s, v in values.items()}, doc.title

@@ -495,15 +495,17 @@ async def problem(
         compiled = catalog.compiled(record)
         try:
             figure = catalog.figure(problem_id, whose)
+            forces = catalog.free_body_figures(problem_id, whose)
         except Exception:  # an illustration: the page is complete without it
             log.exception("no figure for problem %r", problem_id)
-            figure = None
+            figure, forces = None, ()
         return {
             "doc": doc,
             "record": record,
             "statement": fill_statement(doc.statement, doc, variant),
             "described": describe(compiled, variant),
             "figure": figure,
+            "forces": forces,
         }
 
     context = await run_in_threadpool(load)

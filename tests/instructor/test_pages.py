@@ -197,6 +197,14 @@ def test_problem_page_renders_references_mistakes_limits_and_every_method_as_mat
     assert figure, "the figure drawn from the model"
 
 
+def test_problem_page_shows_the_forces_on_each_body_beside_the_worked_solutions(signed_in: TestClient):
+    html = signed_in.get("/instructor/problems/yo-yo").text
+    solutions = html[html.index("Worked solutions") :]
+    diagrams = re.findall(r'<figure class="free-body">\s*<svg[^>]*role="img".*?<desc[^>]*>([^<]*)</desc>', solutions, re.S)
+    assert len(diagrams) == 1, "one diagram per body of the model"
+    assert "Forces on" in diagrams[0] and "T at 90°" in diagrams[0], diagrams  # the string pulls straight up
+
+
 def test_a_students_variant_shows_their_values_and_expected_numbers(signed_in: TestClient):
     services = signed_in.app.state.services  # type: ignore[attr-defined]
     record = services.catalog.get(PROBLEM)
