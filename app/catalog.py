@@ -28,7 +28,7 @@ from physics.checking import CheckJob
 from physics.engine.model import Model
 from physics.figures import model_figure
 from physics.figures.free_body import free_body_figure
-from problems.compiled import CompiledProblem, build_problem, code_fingerprint
+from problems.compiled import CompiledProblem, code_fingerprint, compile_problem, document_digest
 from problems.errors import ProblemInvalid
 from problems.loader import load_bank, parse_problem
 from problems.modelinfo import load_doc_model
@@ -39,6 +39,21 @@ from problems.variants import Variant, draw_variant, si_values, student_view
 
 log = logging.getLogger("physcheck.catalog")
 T = TypeVar("T")
+
+
+_MEANING_CHECKED: set[str] = set()  # digests (document and code) found sound in this process
+
+
+def _meaning_faults(doc: ProblemDocument) -> list[tuple[str, str]]:
+    """semantic_errors, remembered when sound: another app in this process (a test's fresh database)
+    stores the same bank without reading every expression again."""
+    digest = f"{document_digest(doc)}:{code_fingerprint()}"
+    if digest in _MEANING_CHECKED:
+        return []
+    faults = semantic_errors(doc)
+    if not faults:
+        _MEANING_CHECKED.add(digest)
+    return faults
 
 
 class CompiledStore:
@@ -121,7 +136,7 @@ class Catalog:
             (f"{doc.id}:{path}", message)
             for doc in documents
             if stored.get(doc.id) != problem_repository.document_hash(doc.model_dump(mode="json"))
-            for path, message in semantic_errors(doc)
+            for path, message in _meaning_faults(doc)
         ]
         if faults:
             raise ProblemInvalid(faults, "the built-in bank")
@@ -199,7 +214,9 @@ class Catalog:
                 if found is None:
                     found = self._stored(lambda: self._store.load(record))
                 if found is None:
-                    found = build_problem(self.document(record), record.version).prepare()
+                    # compile_problem's process-wide cache: several apps in one process (tests, a fresh
+                    # database) share what is a pure function of the document, its version and the code.
+                    found = compile_problem(self.document(record), record.version).prepare()
                     self._stored(lambda: self._store.save(record, found))
                 with self._lock:
                     self._compiled[key] = found

@@ -27,7 +27,7 @@ def test_concurrent_first_requests_compile_a_problem_once(db, monkeypatch):
     record = catalog.get("atwood")
     running, most = [0], [0]
     guard = threading.Lock()
-    real = catalog_module.build_problem
+    real = catalog_module.compile_problem
 
     def slow_compile(doc, version):
         with guard:
@@ -40,7 +40,7 @@ def test_concurrent_first_requests_compile_a_problem_once(db, monkeypatch):
             with guard:
                 running[0] -= 1
 
-    monkeypatch.setattr(catalog_module, "build_problem", slow_compile)
+    monkeypatch.setattr(catalog_module, "compile_problem", slow_compile)
     results = []
     threads = [threading.Thread(target=lambda: results.append(catalog.compiled(record))) for _ in range(4)]
     for thread in threads:
@@ -64,13 +64,13 @@ def small_bank(tmp_path: Path) -> Path:
 def compilations(monkeypatch) -> list[str]:
     """The ids of the problems the catalog compiles (rather than loads), in order."""
     compiled: list[str] = []
-    real = catalog_module.build_problem
+    real = catalog_module.compile_problem
 
     def counting(doc, version):
         compiled.append(doc.id)
         return real(doc, version)
 
-    monkeypatch.setattr(catalog_module, "build_problem", counting)
+    monkeypatch.setattr(catalog_module, "compile_problem", counting)
     return compiled
 
 
