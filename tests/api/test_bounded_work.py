@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import asyncio
+import itertools
 import time
 from pathlib import Path
 
@@ -94,6 +95,15 @@ def test_honest_check_completes_while_hostile_ones_are_refused(grading_pool):
     assert all(outcome == "invalid/too_large" for outcome in outcomes[:-3]), outcomes
 
 
+_SPELLINGS = itertools.count(2)
+
+
+def unseen_m() -> str:
+    """An answer equal to m that the pool has not graded yet: a remembered verdict skips the queue."""
+    n = next(_SPELLINGS)
+    return f"{n}*m/{n}"
+
+
 @pytest.fixture(scope="module")
 def hanging_pool():
     pool = GradingPool(
@@ -131,7 +141,7 @@ def test_full_queue_answers_busy_with_retry_after(hanging_pool):
         tasks = [asyncio.ensure_future(job) for job in jobs]
         await asyncio.sleep(0.05)
         with pytest.raises(Busy) as refused:
-            await hanging_pool.check(SymbolicJob(answer="m", expected="m", symbols=symbols))
+            await hanging_pool.check(SymbolicJob(answer=unseen_m(), expected="m", symbols=symbols))
         await asyncio.gather(*tasks)
         return refused.value
 
@@ -171,11 +181,11 @@ def test_one_student_cannot_hold_more_than_its_share_of_the_workers(hanging_pool
         held = [asyncio.ensure_future(hanging_pool.check(job("hang"), "ada")) for _ in range(2)]
         await asyncio.sleep(0.05)
         with pytest.raises(Busy, match="still being checked"):
-            await hanging_pool.check(job("m"), "ada")
-        queued = asyncio.ensure_future(hanging_pool.check(job("m"), "bob"))  # another student still gets in
-        unlimited = asyncio.ensure_future(hanging_pool.check(job("m"), None))  # an instructor key too
+            await hanging_pool.check(job(unseen_m()), "ada")
+        queued = asyncio.ensure_future(hanging_pool.check(job(unseen_m()), "bob"))  # another student gets in
+        unlimited = asyncio.ensure_future(hanging_pool.check(job(unseen_m()), None))  # an instructor key too
         results = await asyncio.gather(*held, queued, unlimited)
-        after = await hanging_pool.check(job("m"), "ada")  # the share is given back
+        after = await hanging_pool.check(job(unseen_m()), "ada")  # the share is given back
         return results, after
 
     results, after = asyncio.run(scenario())
