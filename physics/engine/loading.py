@@ -11,6 +11,7 @@ from typing import Any, TypeVar
 import sympy
 
 from physics.dimensions import Dimension
+from physics.engine import reach_loading
 from physics.engine.dimensional import check_dimensions
 from physics.engine.distances import with_distance_sides
 from physics.engine.elements import expand_elements
@@ -153,6 +154,7 @@ def _load_low_level(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]
     forces = _forces(data.get("forces"), symbols, {**coord_scope, **velocities}, bodies, errors)
     limits = _stated_limits(data.get("limits"), symbols, {q.name for q in quantities}, errors)
     impact = _impact(data.get("impact"), symbols, bodies, quantities, errors)
+    reach_loading.check_targets(quantities, bodies, state, coordinates, errors.add)
     if errors.errors:
         raise SpecErrors(errors.errors)
     model = Model(
@@ -647,6 +649,10 @@ def _quantity(
         errors.add(f"give exactly one of {[k.value for k in QuantityKind]}", path)
         return None
     kind = QuantityKind(kinds[0])
+    if reach_loading.handles(kind, spec):
+        return reach_loading.load_quantity(
+            name, kind, spec, path, symbols, coordinates, constraints, errors.add
+        )
     allowed = {kind.value} | ({"zero"} if kind is QuantityKind.SOLVE else set())
     _check_keys(spec, allowed, allowed, path, errors)
     target = spec[kind.value]

@@ -147,8 +147,15 @@ class QuantityKind(StrEnum):
     FINAL_VELOCITY = "final_velocity"  # a body's velocity after an impact, along its one axis
     FINAL_SPEED = "final_speed"  # a body's speed after an impact
     KINETIC_ENERGY_LOST = "kinetic_energy_lost"  # by the bodies of an impact (negative: released)
+    SPEED = "speed"  # a body's speed when the coordinates reach `at`, moving from the state
+    VELOCITY = "velocity"  # a coordinate's velocity when the coordinates reach `at`
+    TIME_OF_FLIGHT = "time_of_flight"  # of a body launched at the state, until it lands at `level`
+    RANGE = "range"  # the body's horizontal displacement when it lands at `level`
+    MAX_HEIGHT = "max_height"  # the body's highest point above where it was launched
 
 
+REACH_KINDS = frozenset({QuantityKind.SPEED, QuantityKind.VELOCITY})
+TRAJECTORY_KINDS = frozenset({QuantityKind.TIME_OF_FLIGHT, QuantityKind.RANGE, QuantityKind.MAX_HEIGHT})
 IMPACT_KINDS = frozenset(
     {QuantityKind.FINAL_VELOCITY, QuantityKind.FINAL_SPEED, QuantityKind.KINETIC_ENERGY_LOST}
 )
@@ -164,6 +171,10 @@ class Quantity:
     # for EXPRESSION: the formula, and the stand-in symbol of each earlier quantity it uses
     expression: sympy.Expr | None = None
     uses: tuple[tuple[sympy.Symbol, str], ...] = ()
+    # where the coordinates are when the quantity is taken (speed, velocity; force and acceleration
+    # there too), reached by the motion from the model's state: ((coordinate, value),)
+    at: tuple[tuple[str, sympy.Expr], ...] = ()
+    level: sympy.Expr | None = None  # TIME_OF_FLIGHT, RANGE: the landing height (y); None: the launch's
 
 
 @dataclass(frozen=True)
