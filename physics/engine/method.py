@@ -8,7 +8,7 @@ from functools import cached_property, lru_cache
 
 import sympy
 
-from physics.engine import impact, modes, trajectory, work_energy
+from physics.engine import damping, impact, mode_shapes, modes, trajectory, work_energy
 from physics.engine.mechanics import Mechanics
 from physics.engine.model import IMPACT_KINDS, TRAJECTORY_KINDS, Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
@@ -142,6 +142,13 @@ class Method(ABC):
             return self.terminal_velocity(quantity.target)
         if kind in IMPACT_KINDS:
             return self.impact(quantity)
+        if kind in damping.KINDS:
+            try:
+                return damping.answer(self, quantity, stable_equilibrium(self.model))
+            except damping.NotThisWay as why:
+                raise NotApplicable(str(why)) from None
+        if kind is QuantityKind.MODE_SHAPE:
+            return mode_shapes.answer(self, quantity, stable_equilibrium(self.model))
         if kind is QuantityKind.SOLVE:
             assert quantity.inner is not None and quantity.parameter is not None
             return self.solve_for(quantity.parameter, self.answer(quantity.inner), quantity.name)

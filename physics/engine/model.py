@@ -152,6 +152,9 @@ class QuantityKind(StrEnum):
     TIME_OF_FLIGHT = "time_of_flight"  # of a body launched at the state, until it lands at `level`
     RANGE = "range"  # the body's horizontal displacement when it lands at `level`
     MAX_HEIGHT = "max_height"  # the body's highest point above where it was launched
+    DAMPED_FREQUENCY = "damped_frequency"  # of an underdamped oscillation about the equilibrium
+    DECAY_TIME = "decay_time"  # the amplitude's e-folding time of that oscillation
+    MODE_SHAPE = "mode_shape"  # amplitude ratio of two coordinates in the n-th normal mode
 
 
 REACH_KINDS = frozenset({QuantityKind.SPEED, QuantityKind.VELOCITY})
@@ -175,6 +178,7 @@ class Quantity:
     # there too), reached by the motion from the model's state: ((coordinate, value),)
     at: tuple[tuple[str, sympy.Expr], ...] = ()
     level: sympy.Expr | None = None  # TIME_OF_FLIGHT, RANGE: the landing height (y); None: the launch's
+    ratio: tuple[str, ...] = ()  # for MODE_SHAPE: (numerator, denominator) coordinates; target = mode
 
 
 @dataclass(frozen=True)
@@ -207,6 +211,7 @@ class Model:
     forces: tuple[AppliedForce, ...] = ()
     dimensions_checked: bool = False
     impact: Impact | None = None  # every term was found dimensionally consistent when loaded
+    time: sympy.Symbol | None = None  # the time `t`, when a given force depends on it
 
     def body(self, name: str) -> Body:
         return next(b for b in self.bodies if b.name == name)
@@ -219,7 +224,8 @@ class Model:
 
     @property
     def moving_symbols(self) -> set[sympy.Symbol]:
-        return {c.symbol for c in self.coordinates} | {c.velocity for c in self.coordinates}
+        moving = {c.symbol for c in self.coordinates} | {c.velocity for c in self.coordinates}
+        return moving | ({self.time} if self.time is not None else set())
 
     @property
     def dissipative_forces(self) -> tuple[AppliedForce, ...]:
