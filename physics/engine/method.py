@@ -8,7 +8,7 @@ from functools import cached_property, lru_cache
 
 import sympy
 
-from physics.engine import impact, modes, slipping
+from physics.engine import damping, impact, mode_shapes, modes, slipping
 from physics.engine.mechanics import Mechanics
 from physics.engine.model import IMPACT_KINDS, SLIP_KINDS, Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
@@ -135,6 +135,13 @@ class Method(ABC):
             return slipping.sliding_phase(self, quantity)
         if kind is QuantityKind.SLIPPING:
             return slipping.slipping_limit(self, quantity)
+        if kind in damping.KINDS:
+            try:
+                return damping.answer(self, quantity, stable_equilibrium(self.model))
+            except damping.NotThisWay as why:
+                raise NotApplicable(str(why)) from None
+        if kind is QuantityKind.MODE_SHAPE:
+            return mode_shapes.answer(self, quantity, stable_equilibrium(self.model))
         if kind is QuantityKind.SOLVE:
             assert quantity.inner is not None and quantity.parameter is not None
             return self.solve_for(quantity.parameter, self.answer(quantity.inner), quantity.name)

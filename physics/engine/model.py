@@ -154,6 +154,9 @@ class QuantityKind(StrEnum):
     SLIP_DISTANCE = "slip_distance"  # how far a coordinate moves until then
     SLIP_END_VELOCITY = "slip_end_velocity"  # a coordinate's velocity when the slipping stops
     SLIPPING = "slipping"  # the parameter value at which a holding contact's |f| reaches mu_s N
+    DAMPED_FREQUENCY = "damped_frequency"  # of an underdamped oscillation about the equilibrium
+    DECAY_TIME = "decay_time"  # the amplitude's e-folding time of that oscillation
+    MODE_SHAPE = "mode_shape"  # amplitude ratio of two coordinates in the n-th normal mode
 
 
 IMPACT_KINDS = frozenset(
@@ -175,6 +178,7 @@ class Quantity:
     # for SLIPPING: the holding contact's friction and normal constraints, and mu_s
     contact: tuple[str, str] = ("", "")
     coefficient: sympy.Expr | None = None
+    ratio: tuple[str, ...] = ()  # for MODE_SHAPE: (numerator, denominator) coordinates; target = mode
 
 
 @dataclass(frozen=True)
@@ -207,6 +211,7 @@ class Model:
     forces: tuple[AppliedForce, ...] = ()
     dimensions_checked: bool = False
     impact: Impact | None = None  # every term was found dimensionally consistent when loaded
+    time: sympy.Symbol | None = None  # the time `t`, when a given force depends on it
 
     def body(self, name: str) -> Body:
         return next(b for b in self.bodies if b.name == name)
@@ -219,7 +224,8 @@ class Model:
 
     @property
     def moving_symbols(self) -> set[sympy.Symbol]:
-        return {c.symbol for c in self.coordinates} | {c.velocity for c in self.coordinates}
+        moving = {c.symbol for c in self.coordinates} | {c.velocity for c in self.coordinates}
+        return moving | ({self.time} if self.time is not None else set())
 
     @property
     def dissipative_forces(self) -> tuple[AppliedForce, ...]:
