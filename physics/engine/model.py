@@ -59,13 +59,16 @@ class Constraint:
 
 @dataclass(frozen=True)
 class Friction:
-    """Kinetic friction mu*lambda at a constraint between a particle and a fixed surface, opposing
-    the sliding, which is towards increasing `sliding` coordinate."""
+    """Kinetic friction mu*lambda at a constraint, opposing the slip, which is towards increasing
+    `sliding` coordinate. On a rigid body it acts at the `contact` point (relative to the body's centre)
+    and so has a torque; with `against`, the surface is that moving body, which feels the reaction."""
 
     constraint: str
     body: str
     coefficient: sympy.Expr
     sliding: str
+    contact: tuple[tuple[str, sympy.Expr], ...] = ()  # (axis, offset from the centre); () at the centre
+    against: str | None = None
 
 
 @dataclass(frozen=True)
@@ -152,6 +155,10 @@ class QuantityKind(StrEnum):
     TIME_OF_FLIGHT = "time_of_flight"  # of a body launched at the state, until it lands at `level`
     RANGE = "range"  # the body's horizontal displacement when it lands at `level`
     MAX_HEIGHT = "max_height"  # the body's highest point above where it was launched
+    SLIP_TIME = "slip_time"  # until a contact with kinetic friction stops slipping (a ball starts rolling)
+    SLIP_DISTANCE = "slip_distance"  # how far a coordinate moves until then
+    SLIP_END_VELOCITY = "slip_end_velocity"  # a coordinate's velocity when the slipping stops
+    SLIPPING = "slipping"  # the parameter value at which a holding contact's |f| reaches mu_s N
     DAMPED_FREQUENCY = "damped_frequency"  # of an underdamped oscillation about the equilibrium
     DECAY_TIME = "decay_time"  # the amplitude's e-folding time of that oscillation
     MODE_SHAPE = "mode_shape"  # amplitude ratio of two coordinates in the n-th normal mode
@@ -162,6 +169,7 @@ TRAJECTORY_KINDS = frozenset({QuantityKind.TIME_OF_FLIGHT, QuantityKind.RANGE, Q
 IMPACT_KINDS = frozenset(
     {QuantityKind.FINAL_VELOCITY, QuantityKind.FINAL_SPEED, QuantityKind.KINETIC_ENERGY_LOST}
 )
+SLIP_KINDS = frozenset({QuantityKind.SLIP_TIME, QuantityKind.SLIP_DISTANCE, QuantityKind.SLIP_END_VELOCITY})
 
 
 @dataclass(frozen=True)
@@ -178,6 +186,9 @@ class Quantity:
     # there too), reached by the motion from the model's state: ((coordinate, value),)
     at: tuple[tuple[str, sympy.Expr], ...] = ()
     level: sympy.Expr | None = None  # TIME_OF_FLIGHT, RANGE: the landing height (y); None: the launch's
+    # for SLIPPING: the holding contact's friction and normal constraints, and mu_s
+    contact: tuple[str, str] = ("", "")
+    coefficient: sympy.Expr | None = None
     ratio: tuple[str, ...] = ()  # for MODE_SHAPE: (numerator, denominator) coordinates; target = mode
 
 
