@@ -8,9 +8,9 @@ from functools import cached_property, lru_cache
 
 import sympy
 
-from physics.engine import damping, impact, mode_shapes, modes
+from physics.engine import damping, impact, mode_shapes, modes, slipping
 from physics.engine.mechanics import Mechanics
-from physics.engine.model import IMPACT_KINDS, Model, Quantity, QuantityKind
+from physics.engine.model import IMPACT_KINDS, SLIP_KINDS, Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
 from physics.engine.results import MethodReport, Step
 from physics.errors import DerivationError
@@ -131,6 +131,10 @@ class Method(ABC):
             return self.terminal_velocity(quantity.target)
         if kind in IMPACT_KINDS:
             return self.impact(quantity)
+        if kind in SLIP_KINDS:
+            return slipping.sliding_phase(self, quantity)
+        if kind is QuantityKind.SLIPPING:
+            return slipping.slipping_limit(self, quantity)
         if kind in damping.KINDS:
             try:
                 return damping.answer(self, quantity, stable_equilibrium(self.model))

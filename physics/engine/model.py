@@ -59,13 +59,16 @@ class Constraint:
 
 @dataclass(frozen=True)
 class Friction:
-    """Kinetic friction mu*lambda at a constraint between a particle and a fixed surface, opposing
-    the sliding, which is towards increasing `sliding` coordinate."""
+    """Kinetic friction mu*lambda at a constraint, opposing the slip, which is towards increasing
+    `sliding` coordinate. On a rigid body it acts at the `contact` point (relative to the body's centre)
+    and so has a torque; with `against`, the surface is that moving body, which feels the reaction."""
 
     constraint: str
     body: str
     coefficient: sympy.Expr
     sliding: str
+    contact: tuple[tuple[str, sympy.Expr], ...] = ()  # (axis, offset from the centre); () at the centre
+    against: str | None = None
 
 
 @dataclass(frozen=True)
@@ -147,6 +150,10 @@ class QuantityKind(StrEnum):
     FINAL_VELOCITY = "final_velocity"  # a body's velocity after an impact, along its one axis
     FINAL_SPEED = "final_speed"  # a body's speed after an impact
     KINETIC_ENERGY_LOST = "kinetic_energy_lost"  # by the bodies of an impact (negative: released)
+    SLIP_TIME = "slip_time"  # until a contact with kinetic friction stops slipping (a ball starts rolling)
+    SLIP_DISTANCE = "slip_distance"  # how far a coordinate moves until then
+    SLIP_END_VELOCITY = "slip_end_velocity"  # a coordinate's velocity when the slipping stops
+    SLIPPING = "slipping"  # the parameter value at which a holding contact's |f| reaches mu_s N
     DAMPED_FREQUENCY = "damped_frequency"  # of an underdamped oscillation about the equilibrium
     DECAY_TIME = "decay_time"  # the amplitude's e-folding time of that oscillation
     MODE_SHAPE = "mode_shape"  # amplitude ratio of two coordinates in the n-th normal mode
@@ -155,6 +162,7 @@ class QuantityKind(StrEnum):
 IMPACT_KINDS = frozenset(
     {QuantityKind.FINAL_VELOCITY, QuantityKind.FINAL_SPEED, QuantityKind.KINETIC_ENERGY_LOST}
 )
+SLIP_KINDS = frozenset({QuantityKind.SLIP_TIME, QuantityKind.SLIP_DISTANCE, QuantityKind.SLIP_END_VELOCITY})
 
 
 @dataclass(frozen=True)
@@ -167,6 +175,9 @@ class Quantity:
     # for EXPRESSION: the formula, and the stand-in symbol of each earlier quantity it uses
     expression: sympy.Expr | None = None
     uses: tuple[tuple[sympy.Symbol, str], ...] = ()
+    # for SLIPPING: the holding contact's friction and normal constraints, and mu_s
+    contact: tuple[str, str] = ("", "")
+    coefficient: sympy.Expr | None = None
     ratio: tuple[str, ...] = ()  # for MODE_SHAPE: (numerator, denominator) coordinates; target = mode
 
 

@@ -10,18 +10,19 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from functools import cached_property
+from functools import cached_property, partial
 from typing import Any
 
 import mpmath
 import sympy
 
-from physics.engine import impact_simulation
+from physics.engine import impact_simulation, slipping
 from physics.engine.collision import merged
+from physics.engine.contact_friction import slip_velocity
 from physics.engine.lagrange import LagrangeMethod
 from physics.engine.mechanics import Mechanics
 from physics.engine.method import stable_equilibrium
-from physics.engine.model import IMPACT_KINDS, Model, Quantity, QuantityKind
+from physics.engine.model import IMPACT_KINDS, SLIP_KINDS, Model, Quantity, QuantityKind
 from physics.engine.results import SimulationCheck
 from physics.errors import DerivationError
 
@@ -226,6 +227,8 @@ class Simulator:
             QuantityKind.PROJECTILE_SPEED: self._collision,
             QuantityKind.ENERGY_FRACTION_LOST: self._collision,
             **dict.fromkeys(IMPACT_KINDS, self._impact),
+            **dict.fromkeys(SLIP_KINDS, partial(slipping.measure_sliding, self)),
+            QuantityKind.SLIPPING: partial(slipping.measure_slipping, self),
         }
 
     @cached_property
@@ -267,7 +270,6 @@ class Simulator:
         """(change of T + V, work of the non-conservative forces, largest kinetic energy) along a short
         integrated motion from the model's state, stopped where a sliding body turns back."""
         dyn = self.dynamics
-        names = [c.name for c in self.model.coordinates]
         params = dyn.values(point)
         q, qd = self._start(point)
         n = dyn.n
@@ -284,13 +286,14 @@ class Simulator:
                 *([1.0] if dyn.clock is not None else []),
             ]
 
-        sliding = [names.index(friction.sliding) for friction in self.model.frictions]
+        slips = self._slip_velocities
+        initial = slips(*q, *qd, *params)
         states = [[*q, *qd, 0.0, 0.0, *dyn.initial([], [], params)]]
         for _ in range(ENERGY_STEPS):
             after = rk4(f, states[-1], h, 1)[-1]
-            backwards = [i for i in sliding if after[n + i] < 0]
-            if backwards and all(states[0][n + i] <= 0 for i in backwards):
-                name = names[backwards[0]]
+            backwards = [k for k, u in enumerate(slips(*after[: 2 * n], *params)) if u < 0]
+            if backwards and all(initial[k] <= 0 for k in backwards):
+                name = self.model.frictions[backwards[0]].sliding
                 raise DerivationError(
                     f"released from the model's state, the body slides towards decreasing {name}, against the "
                     f"direction the model's kinetic friction assumes (`sliding: {name}`): give the state a "
@@ -305,6 +308,13 @@ class Simulator:
         change = dyn.energy(end[:n], end[n : 2 * n], params) - dyn.energy(start[:n], start[n : 2 * n], params)
         kinetic = max(dyn.energy(y[:n], y[n : 2 * n], params) - dyn.potential(y[:n], params) for y in states)
         return change, end[2 * n], abs(kinetic), end[2 * n + 1]
+
+    @cached_property
+    def _slip_velocities(self) -> Callable[..., list[float]]:
+        """Each kinetic friction's slip velocity (positive: slipping the way `sliding` says)."""
+        mech = self.dynamics.mech
+        exprs = [slip_velocity(mech, f) for f in self.model.frictions]
+        return _compile([*mech.q, *mech.qd, *self.dynamics.params], exprs)
 
     # --- dynamics from the model's state -----------------------------------------------------
 
