@@ -11,7 +11,7 @@ from typing import Any, TypeVar
 import sympy
 
 from physics.dimensions import Dimension
-from physics.engine import mode_shapes, reach_loading
+from physics.engine import forcing, mode_shapes, reach_loading
 from physics.engine.dimensional import check_dimensions
 from physics.engine.distances import with_distance_sides
 from physics.engine.elements import expand_elements
@@ -155,10 +155,11 @@ def _load_low_level(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]
     frictions = _frictions(data.get("friction"), symbols, bodies, constraints, coordinates, errors)
     potentials = _potentials(data.get("potentials"), symbols, bodies, errors)
     collision = _collision(data.get("collision"), symbols, bodies, coordinates, errors)
-    state = _state(data.get("state"), symbols, coordinates, errors)
+    time = forcing.time_symbol(symbols)
+    state = _state(data.get("state"), symbols, coordinates, errors, time)
     quantities = _quantities(data.get("quantities"), symbols, coordinates, constraints, collision, errors)
     velocities = {f"{c.name}_dot": c.velocity for c in coordinates}
-    forces = _forces(data.get("forces"), symbols, {**coord_scope, **velocities}, bodies, errors)
+    forces = _forces(data.get("forces"), symbols, {"t": time, **coord_scope, **velocities}, bodies, errors)
     limits = _stated_limits(data.get("limits"), symbols, {q.name for q in quantities}, errors)
     impact = _impact(data.get("impact"), symbols, bodies, quantities, errors)
     reach_loading.check_targets(quantities, bodies, state, coordinates, errors.add)
@@ -184,7 +185,7 @@ def _load_low_level(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]
         forces=forces,
         impact=impact,
     )
-    return with_distance_sides(model)
+    return with_distance_sides(forcing.with_time(model, time))
 
 
 def _forces(
@@ -565,13 +566,18 @@ def _coordinate_values(
 
 
 def _state(
-    value: Any, symbols: Mapping[str, sympy.Symbol], coordinates: tuple[Coordinate, ...], errors: _Collector
+    value: Any,
+    symbols: Mapping[str, sympy.Symbol],
+    coordinates: tuple[Coordinate, ...],
+    errors: _Collector,
+    time: sympy.Symbol,
 ) -> tuple[tuple[sympy.Symbol, sympy.Expr], ...]:
     known = {c.name: c.symbol for c in coordinates} | {f"{c.name}_dot": c.velocity for c in coordinates}
+    known.setdefault(forcing.NAME, time)  # the time, for forces that depend on it
     given: dict[sympy.Symbol, sympy.Expr] = {c.velocity: sympy.Integer(0) for c in coordinates}
     for name, text in _mapping(value, ("state",), errors, required=False).items():
         if name not in known:
-            errors.add(f"unknown coordinate or velocity {name!r}", ("state", str(name)))
+            errors.add(f"unknown coordinate, velocity or time {name!r}", ("state", str(name)))
             continue
         expr = errors.read(text, symbols, ("state", str(name)))
         if expr is not None:
