@@ -10,7 +10,7 @@ import sympy
 
 from physics.engine import impact, modes
 from physics.engine.mechanics import Mechanics
-from physics.engine.model import IMPACT_KINDS, Model, Quantity, QuantityKind
+from physics.engine.model import IMPACT_KINDS, ORBIT_KINDS, Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
 from physics.engine.results import MethodReport, Step
 from physics.errors import DerivationError
@@ -131,6 +131,10 @@ class Method(ABC):
             return self.terminal_velocity(quantity.target)
         if kind in IMPACT_KINDS:
             return self.impact(quantity)
+        if kind in ORBIT_KINDS:
+            from physics.engine import orbits  # here: orbits builds on Method
+
+            return orbits.answer(self, quantity)
         if kind is QuantityKind.SOLVE:
             assert quantity.inner is not None and quantity.parameter is not None
             return self.solve_for(quantity.parameter, self.answer(quantity.inner), quantity.name)

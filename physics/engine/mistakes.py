@@ -12,9 +12,9 @@ from collections.abc import Callable
 
 import sympy
 
-from physics.engine import collision, impact
+from physics.engine import collision, impact, orbits
 from physics.engine.mechanics import Mechanics
-from physics.engine.model import IMPACT_KINDS, ConstraintKind, Model, Quantity, QuantityKind
+from physics.engine.model import IMPACT_KINDS, ORBIT_KINDS, ConstraintKind, Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
 from physics.engine.results import KnownMistake, LimitCase
 
@@ -111,6 +111,8 @@ def generate_mistakes(
         candidates.append((1 - reference, FRACTION_KEPT))
     if quantity.kind in IMPACT_KINDS and model.impact is not None:
         candidates += impact.mistakes(model, reference)
+    if quantity.kind in ORBIT_KINDS:
+        candidates += orbits.mistakes(model, quantity, reference)
     if quantity.kind in (QuantityKind.ANGULAR_FREQUENCY, QuantityKind.PERIOD):
         candidates += _mass_mistakes(model, quantity, reference, rederive)
     return _distinct(model, reference, candidates)

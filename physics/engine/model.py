@@ -147,11 +147,26 @@ class QuantityKind(StrEnum):
     FINAL_VELOCITY = "final_velocity"  # a body's velocity after an impact, along its one axis
     FINAL_SPEED = "final_speed"  # a body's speed after an impact
     KINETIC_ENERGY_LOST = "kinetic_energy_lost"  # by the bodies of an impact (negative: released)
+    # steady circular motion: the angle coordinate turns uniformly, the others stay at the state (orbits.py)
+    CIRCULAR_SPEED = "circular_speed"
+    REVOLUTION_PERIOD = "revolution_period"
+    CIRCULAR_ENERGY = "circular_energy"
+    MECHANICAL_ENERGY = "mechanical_energy"  # T + V at the model's state
+    # with the cyclic coordinates' momenta held at their state values (the effective potential)
+    CIRCULAR_RADIUS = "circular_radius"
+    EPICYCLIC_FREQUENCY = "epicyclic_frequency"
 
 
 IMPACT_KINDS = frozenset(
     {QuantityKind.FINAL_VELOCITY, QuantityKind.FINAL_SPEED, QuantityKind.KINETIC_ENERGY_LOST}
 )
+
+
+STEADY_KINDS = frozenset(
+    {QuantityKind.CIRCULAR_SPEED, QuantityKind.REVOLUTION_PERIOD, QuantityKind.CIRCULAR_ENERGY}
+)
+EFFECTIVE_KINDS = frozenset({QuantityKind.CIRCULAR_RADIUS, QuantityKind.EPICYCLIC_FREQUENCY})
+ORBIT_KINDS = STEADY_KINDS | EFFECTIVE_KINDS | {QuantityKind.MECHANICAL_ENERGY}
 
 
 @dataclass(frozen=True)

@@ -21,7 +21,7 @@ from physics.engine.collision import merged
 from physics.engine.lagrange import LagrangeMethod
 from physics.engine.mechanics import Mechanics
 from physics.engine.method import stable_equilibrium
-from physics.engine.model import IMPACT_KINDS, Model, Quantity, QuantityKind
+from physics.engine.model import IMPACT_KINDS, ORBIT_KINDS, Model, Quantity, QuantityKind
 from physics.engine.results import SimulationCheck
 from physics.errors import DerivationError
 
@@ -197,7 +197,14 @@ class Simulator:
             QuantityKind.PROJECTILE_SPEED: self._collision,
             QuantityKind.ENERGY_FRACTION_LOST: self._collision,
             **dict.fromkeys(IMPACT_KINDS, self._impact),
+            **dict.fromkeys(ORBIT_KINDS, self._orbit),
         }
+
+    @cached_property
+    def _orbit(self) -> Measure:
+        from physics.engine.orbit_simulation import OrbitMeasure  # here: it builds on this module
+
+        return OrbitMeasure(self.dynamics, self._start)
 
     @cached_property
     def _impact(self) -> impact_simulation.ImpactMeasure:
