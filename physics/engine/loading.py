@@ -11,6 +11,7 @@ from typing import Any, TypeVar
 import sympy
 
 from physics.dimensions import Dimension
+from physics.engine import mode_shapes
 from physics.engine.dimensional import check_dimensions
 from physics.engine.distances import with_distance_sides
 from physics.engine.elements import expand_elements
@@ -64,6 +65,8 @@ _QUANTITY_TARGET = {
     QuantityKind.ANGULAR_FREQUENCY: "coordinate",
     QuantityKind.PERIOD: "coordinate",
     QuantityKind.TERMINAL_VELOCITY: "coordinate",
+    QuantityKind.DAMPED_FREQUENCY: "coordinate",
+    QuantityKind.DECAY_TIME: "coordinate",
     **dict.fromkeys(STEADY_KINDS | EFFECTIVE_KINDS, "coordinate"),
 }
 # Sizes beyond any textbook model: the derivation's cost grows fast with them, and models are uploaded.
@@ -671,6 +674,8 @@ def _quantity(
         return Quantity(name, kind, "state")
     if kind in IMPACT_KINDS:  # checked against the impact section by `_impact`
         return Quantity(name, kind, str(target))
+    if kind is QuantityKind.MODE_SHAPE:
+        return errors.attempt(lambda: mode_shapes.read(name, target, where, coordinates))
     if kind is QuantityKind.NORMAL_FREQUENCY:
         if isinstance(target, bool) or not isinstance(target, int) or not 1 <= target <= len(coordinates):
             errors.add(f"the mode's number, 1 (lowest) to {len(coordinates)}", where)

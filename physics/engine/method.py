@@ -8,7 +8,7 @@ from functools import cached_property, lru_cache
 
 import sympy
 
-from physics.engine import impact, modes
+from physics.engine import damping, impact, mode_shapes, modes
 from physics.engine.mechanics import Mechanics
 from physics.engine.model import IMPACT_KINDS, ORBIT_KINDS, Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
@@ -131,6 +131,13 @@ class Method(ABC):
             return self.terminal_velocity(quantity.target)
         if kind in IMPACT_KINDS:
             return self.impact(quantity)
+        if kind in damping.KINDS:
+            try:
+                return damping.answer(self, quantity, stable_equilibrium(self.model))
+            except damping.NotThisWay as why:
+                raise NotApplicable(str(why)) from None
+        if kind is QuantityKind.MODE_SHAPE:
+            return mode_shapes.answer(self, quantity, stable_equilibrium(self.model))
         if kind in ORBIT_KINDS:
             from physics.engine import orbits  # here: orbits builds on Method
 

@@ -12,7 +12,7 @@ from collections.abc import Callable
 
 import sympy
 
-from physics.engine import collision, impact, orbits
+from physics.engine import collision, damping, impact, orbits
 from physics.engine.mechanics import Mechanics
 from physics.engine.model import IMPACT_KINDS, ORBIT_KINDS, ConstraintKind, Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
@@ -115,6 +115,7 @@ def generate_mistakes(
         candidates += orbits.mistakes(model, quantity, reference)
     if quantity.kind in (QuantityKind.ANGULAR_FREQUENCY, QuantityKind.PERIOD):
         candidates += _mass_mistakes(model, quantity, reference, rederive)
+    candidates += damping.mistakes(model, quantity, reference)
     return _distinct(model, reference, candidates)
 
 
@@ -231,6 +232,7 @@ def generate_limits(model: Model, reference: sympy.Expr) -> tuple[LimitCase, ...
     for friction in model.frictions:
         if isinstance(friction.coefficient, sympy.Symbol):
             cases.append((friction.coefficient, sympy.Integer(0), "no friction"))
+    cases += damping.limit_cases(model)
     masses = [b.mass for b in model.bodies if isinstance(b.mass, sympy.Symbol)]
     if len(set(masses)) >= 2:
         for mass in dict.fromkeys(masses):

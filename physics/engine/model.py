@@ -147,6 +147,9 @@ class QuantityKind(StrEnum):
     FINAL_VELOCITY = "final_velocity"  # a body's velocity after an impact, along its one axis
     FINAL_SPEED = "final_speed"  # a body's speed after an impact
     KINETIC_ENERGY_LOST = "kinetic_energy_lost"  # by the bodies of an impact (negative: released)
+    DAMPED_FREQUENCY = "damped_frequency"  # of an underdamped oscillation about the equilibrium
+    DECAY_TIME = "decay_time"  # the amplitude's e-folding time of that oscillation
+    MODE_SHAPE = "mode_shape"  # amplitude ratio of two coordinates in the n-th normal mode
     # steady circular motion: the angle coordinate turns uniformly, the others stay at the state (orbits.py)
     CIRCULAR_SPEED = "circular_speed"
     REVOLUTION_PERIOD = "revolution_period"
@@ -179,6 +182,7 @@ class Quantity:
     # for EXPRESSION: the formula, and the stand-in symbol of each earlier quantity it uses
     expression: sympy.Expr | None = None
     uses: tuple[tuple[sympy.Symbol, str], ...] = ()
+    ratio: tuple[str, ...] = ()  # for MODE_SHAPE: (numerator, denominator) coordinates; target = mode
 
 
 @dataclass(frozen=True)
@@ -211,6 +215,7 @@ class Model:
     forces: tuple[AppliedForce, ...] = ()
     dimensions_checked: bool = False
     impact: Impact | None = None  # every term was found dimensionally consistent when loaded
+    time: sympy.Symbol | None = None  # the time `t`, when a given force depends on it
 
     def body(self, name: str) -> Body:
         return next(b for b in self.bodies if b.name == name)
@@ -223,7 +228,8 @@ class Model:
 
     @property
     def moving_symbols(self) -> set[sympy.Symbol]:
-        return {c.symbol for c in self.coordinates} | {c.velocity for c in self.coordinates}
+        moving = {c.symbol for c in self.coordinates} | {c.velocity for c in self.coordinates}
+        return moving | ({self.time} if self.time is not None else set())
 
     @property
     def dissipative_forces(self) -> tuple[AppliedForce, ...]:

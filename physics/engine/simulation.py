@@ -183,6 +183,8 @@ class Simulator:
         return SimulationCheck(compared, worst, len(points))
 
     def _measures(self) -> dict[QuantityKind, Measure]:
+        from physics.engine import oscillation_measures  # it integrates with this module's tools
+
         return {
             QuantityKind.ACCELERATION: self._acceleration,
             QuantityKind.FORCE: self._force,
@@ -194,6 +196,7 @@ class Simulator:
             QuantityKind.SOLVE: self._solve,
             QuantityKind.TERMINAL_VELOCITY: self._terminal_velocity,
             QuantityKind.NORMAL_FREQUENCY: self._normal_frequency,
+            **oscillation_measures.measures(self),
             QuantityKind.PROJECTILE_SPEED: self._collision,
             QuantityKind.ENERGY_FRACTION_LOST: self._collision,
             **dict.fromkeys(IMPACT_KINDS, self._impact),
@@ -388,9 +391,9 @@ class Simulator:
         units = [flat_u[i * n : (i + 1) * n] for i in range(len(flat_u) // n)]
         return grads, base_f(*values), units, masses_f(*values)
 
-    def _normal_frequency(self, quantity: Quantity, point: Point, expected: float) -> Measured:
-        """Released from the equilibrium displaced along the mode (M and K measured numerically from the
-        compiled energy), the integrated motion's period."""
+    def numeric_modes(self, point: Point) -> tuple[Vector, list[tuple[float, Vector]]]:
+        """(equilibrium, [(omega^2, shape)] lowest first): M and K measured numerically from the compiled
+        energy at the stable equilibrium, never from the derived matrices."""
         dyn = self.dynamics
         params = dyn.values(point)
         n = dyn.n
@@ -410,12 +413,21 @@ class Simulator:
                     + dyn.potential(shifted(-h, -h), params)
                 ) / (4 * h * h)
         mass = mpmath.matrix(dyn.mass(q0, params))
-        values, vectors = mpmath.eig(mass**-1 * stiffness)
+        found = mpmath.eig(mass**-1 * stiffness)
+        values, vectors = found[0], found[-1]  # a 1 x 1 matrix gives (E, EL, ER) whatever is asked
         modes = sorted(
             (float(mpmath.re(v)), [float(mpmath.re(vectors[k, c])) for k in range(n)])
             for c, v in enumerate(values)
             if abs(v) > 1e-9 * max(abs(x) for x in values)
         )
+        return q0, modes
+
+    def _normal_frequency(self, quantity: Quantity, point: Point, expected: float) -> Measured:
+        """Released from the equilibrium displaced along the mode, the integrated motion's period."""
+        dyn = self.dynamics
+        params = dyn.values(point)
+        n = dyn.n
+        q0, modes = self.numeric_modes(point)
         omega2, shape = modes[int(quantity.target) - 1]
         largest = max(range(n), key=lambda k: abs(shape[k]))
         size = 1e-4 / abs(shape[largest])
