@@ -26,7 +26,7 @@ def test_a_satellite_orbit_is_derived_by_every_method(client, instructor_headers
     sources = {r["part"]: r["source"] for r in solution["references"]}
     assert sources["speed"] == sources["period"] == sources["energy"] == "derived"
     assert solution["methods_agree"] is True
-    assert set(solution["agreement"]["period"]) == {"lagrange", "newton", "conservation"}
+    assert set(solution["agreement"]["period"]) >= {"lagrange", "newton", "conservation"}
     assert "revolution" in solution["simulation"]["period"]["compared"]
 
 

@@ -51,7 +51,7 @@ def test_a_satellite_orbit_speed_period_and_energy_by_every_method_and_simulated
     }
     for name, value in expected.items():
         assert sympy.simplify(result.quantities[name] - value) == 0, name
-        assert set(result.agreement[name]) == {"lagrange", "newton", "conservation"}, name
+        assert set(result.agreement[name]) >= {"lagrange", "newton", "conservation"}, name
         assert result.simulation[name].max_relative_error < 1e-3, name
     assert "time of one revolution" in result.simulation["T"].compared
     slips = {m.feedback: m.expr for m in result.mistakes["T"] + result.mistakes["E"]}
@@ -78,7 +78,7 @@ def test_a_harmonic_centre_has_its_epicyclic_frequency_twice_the_orbital_one() -
     assert sympy.simplify(result.quantities["epicyclic"] - 2 * sympy.sqrt(k / m)) == 0
     assert sympy.simplify(result.quantities["energy"] - (k * r**2 / 2 + ell**2 / (2 * m * r**2))) == 0
     for name in ("radius", "epicyclic", "energy"):
-        assert set(result.agreement[name]) == {"lagrange", "newton", "conservation"}, name
+        assert set(result.agreement[name]) >= {"lagrange", "newton", "conservation"}, name
         assert result.simulation[name].max_relative_error < 1e-3, name
 
 
