@@ -106,6 +106,18 @@ class AppliedForce:
 
 
 @dataclass(frozen=True)
+class Frame:
+    """The reference frame the fictitious-forces method works in: translating with a body (each other
+    body feels -m A, A the body's acceleration), or turning at a constant `rate` about the vertical line
+    x = `axis`, its `bodies` turning with it (centrifugal m rate^2 (x - axis) on each)."""
+
+    body: str | None = None
+    rate: sympy.Expr | None = None
+    axis: sympy.Expr = ZERO
+    bodies: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True)
 class Collision:
     """A projectile particle hits `target` (at rest at `at`) along `direction` and sticks; the
     merged body then moves until the coordinates reach `reaches` with zero velocity."""
@@ -222,6 +234,7 @@ class Model:
     forces: tuple[AppliedForce, ...] = ()
     dimensions_checked: bool = False
     impact: Impact | None = None  # every term was found dimensionally consistent when loaded
+    frame: Frame | None = None  # declared (`frame:`) or implied by an element (a wedge, a rotating frame)
     time: sympy.Symbol | None = None  # the time `t`, when a given force depends on it
 
     def body(self, name: str) -> Body:
