@@ -11,7 +11,7 @@ from typing import Any, TypeVar
 import sympy
 
 from physics.dimensions import Dimension
-from physics.engine import forcing, mode_shapes
+from physics.engine import forcing, mode_shapes, reach_loading
 from physics.engine.dimensional import check_dimensions
 from physics.engine.distances import with_distance_sides
 from physics.engine.elements import expand_elements
@@ -26,6 +26,7 @@ from physics.engine.model import (
     ConstraintKind,
     Coordinate,
     ForceKind,
+    Frame,
     Friction,
     Impact,
     Model,
@@ -53,6 +54,7 @@ _SECTIONS = frozenset(
         "limits",
         "forces",
         "impact",
+        "frame",
     }
 )
 _QUANTITY_TARGET = {
@@ -162,6 +164,8 @@ def _load_low_level(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]
     forces = _forces(data.get("forces"), symbols, {"t": time, **coord_scope, **velocities}, bodies, errors)
     limits = _stated_limits(data.get("limits"), symbols, {q.name for q in quantities}, errors)
     impact = _impact(data.get("impact"), symbols, bodies, quantities, errors)
+    frame = _frame(data.get("frame"), symbols, bodies, errors)
+    reach_loading.check_targets(quantities, bodies, state, coordinates, errors.add)
     _check_slip_quantities(quantities, frictions, errors)
     if errors.errors:
         raise SpecErrors(errors.errors)
@@ -183,8 +187,46 @@ def _load_low_level(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]
         limits=limits,
         forces=forces,
         impact=impact,
+        frame=frame,
     )
     return with_distance_sides(forcing.with_time(model, time))
+
+
+def _frame(
+    value: Any, symbols: Mapping[str, sympy.Symbol], bodies: tuple[Body, ...], errors: _Collector
+) -> Frame | None:
+    """`frame: {body: wedge}` (translating with a body) or `{rate: omega, axis: 0, bodies: [bead]}`."""
+    if value is None:
+        return None
+    path: Path = ("frame",)
+    spec = _mapping(value, path, errors)
+    _check_keys(spec, {"body", "rate", "axis", "bodies"}, set(), path, errors)
+    names = {b.name for b in bodies}
+    if ("body" in spec) == ("rate" in spec):
+        errors.add(
+            "give exactly one of body (a frame moving with that body) and rate (a turning frame)", path
+        )
+        return None
+    if "body" in spec:
+        for key in ("axis", "bodies"):
+            if key in spec:
+                errors.add("only a turning frame (rate) has this", (*path, key))
+        if spec["body"] not in names:
+            errors.add(f"unknown body {spec['body']!r}", (*path, "body"))
+            return None
+        return Frame(body=str(spec["body"]))
+    members = spec.get("bodies")
+    if not isinstance(members, list) or not members:
+        errors.add("a list of the bodies turning with the frame", (*path, "bodies"))
+        return None
+    for index, member in enumerate(members):
+        if member not in names:
+            errors.add(f"unknown body {member!r}", (*path, "bodies", index))
+    rate = errors.read(spec["rate"], symbols, (*path, "rate"))
+    axis = errors.read(spec.get("axis", 0), symbols, (*path, "axis"))
+    if rate is None or axis is None or not all(m in names for m in members):
+        return None
+    return Frame(rate=rate, axis=axis, bodies=tuple(map(str, members)))
 
 
 def _forces(
@@ -688,6 +730,10 @@ def _quantity(
         errors.add(f"give exactly one of {[k.value for k in QuantityKind]}", path)
         return None
     kind = QuantityKind(kinds[0])
+    if reach_loading.handles(kind, spec):
+        return reach_loading.load_quantity(
+            name, kind, spec, path, symbols, coordinates, constraints, errors.add
+        )
     allowed = (
         {kind.value}
         | ({"zero"} if kind is QuantityKind.SOLVE else set())

@@ -6,7 +6,7 @@ over them (`time_derivative`), which keeps every expression free of sympy's Func
 
 from __future__ import annotations
 
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from functools import cached_property
 
@@ -239,9 +239,13 @@ class Mechanics:
 
 
 def solve_linear(
-    equations: Sequence[sympy.Expr], unknowns: Sequence[sympy.Symbol], what: str
+    equations: Sequence[sympy.Expr],
+    unknowns: Sequence[sympy.Symbol],
+    what: str,
+    tidy: Callable[[sympy.Expr], sympy.Expr] = sympy.simplify,
 ) -> dict[sympy.Symbol, sympy.Expr]:
-    """The unique solution of linear equations (each `= 0`); DerivationError if there is none."""
+    """The unique solution of linear equations (each `= 0`), each value put through `tidy`;
+    DerivationError if there is none."""
     matrix, rhs = sympy.linear_eq_to_matrix(list(equations), list(unknowns))
     if matrix.shape[0] > matrix.shape[1]:
         rows = _independent_rows(matrix)
@@ -254,7 +258,7 @@ def solve_linear(
         raise DerivationError(
             f"{what}: the equations do not determine {', '.join(map(str, unknowns))} ({error})"
         ) from error
-    result = {u: sympy.simplify(v) for u, v in zip(unknowns, solution, strict=True)}
+    result = {u: tidy(v) for u, v in zip(unknowns, solution, strict=True)}
     if any(v.has(sympy.zoo, sympy.nan, sympy.oo) for v in result.values()):
         raise DerivationError(f"{what}: the equations are singular for {', '.join(map(str, unknowns))}")
     return result

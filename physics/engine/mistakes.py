@@ -12,7 +12,7 @@ from collections.abc import Callable
 
 import sympy
 
-from physics.engine import collision, damping, impact, slipping
+from physics.engine import collision, damping, impact, reach_mistakes, slipping
 from physics.engine.mechanics import Mechanics
 from physics.engine.model import IMPACT_KINDS, SLIP_KINDS, ConstraintKind, Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
@@ -77,7 +77,7 @@ def supports(model: Model) -> list[str]:
 def generate_mistakes(
     model: Model, quantity: Quantity, reference: sympy.Expr, rederive: Rederive
 ) -> tuple[KnownMistake, ...]:
-    candidates: list[tuple[sympy.Expr | None, str]] = []
+    candidates = reach_mistakes.candidates(model, quantity, reference, rederive)  # theirs first: named slips
     trig = reference.atoms(sympy.sin, sympy.cos)
     if trig:
         swap = {t: (sympy.cos if isinstance(t, sympy.sin) else sympy.sin)(t.args[0]) for t in trig}

@@ -22,7 +22,7 @@ from physics.engine.contact_friction import slip_velocity
 from physics.engine.lagrange import LagrangeMethod
 from physics.engine.mechanics import Mechanics
 from physics.engine.method import stable_equilibrium
-from physics.engine.model import IMPACT_KINDS, SLIP_KINDS, Model, Quantity, QuantityKind
+from physics.engine.model import IMPACT_KINDS, SLIP_KINDS, TRAJECTORY_KINDS, Model, Quantity, QuantityKind
 from physics.engine.results import SimulationCheck
 from physics.errors import DerivationError
 
@@ -189,7 +189,7 @@ class Simulator:
     def check(
         self, quantity: Quantity, reference: sympy.Expr, points: Sequence[Point]
     ) -> SimulationCheck | None:
-        measure = self._measures().get(quantity.kind)
+        measure = self._reach if _reaches(quantity) else self._measures().get(quantity.kind)
         if measure is None:
             return None
         worst = 0.0
@@ -230,6 +230,12 @@ class Simulator:
             **dict.fromkeys(SLIP_KINDS, partial(slipping.measure_sliding, self)),
             QuantityKind.SLIPPING: partial(slipping.measure_slipping, self),
         }
+
+    @cached_property
+    def _reach(self) -> Measure:
+        from physics.engine.reach_simulation import ReachMeasure  # it builds on this module
+
+        return ReachMeasure(self)
 
     @cached_property
     def _impact(self) -> impact_simulation.ImpactMeasure:
@@ -672,6 +678,11 @@ class Simulator:
             reached,
             abs(reached - target) / max(abs(target), 1e-12),
         )
+
+
+def _reaches(quantity: Quantity) -> bool:
+    """Taken where the motion from the state gets to (`at`, a flight's end or apex): see reach_simulation."""
+    return bool(quantity.at) or quantity.kind in TRAJECTORY_KINDS
 
 
 def _evaluate(expr: sympy.Expr, point: Point) -> float:
