@@ -106,11 +106,15 @@ class Mechanics:
     @cached_property
     def kinetic(self) -> sympy.Expr:
         """T = sum of 1/2 m v^2 and 1/2 I omega^2, velocities from the positions in the coordinates."""
+        terms: dict[tuple[str, bool], sympy.Expr] = {}
+        for d in self.dofs:
+            key = (d.body, d.name.startswith("phi_"))
+            term = sympy.Rational(1, 2) * d.inertia * time_derivative(d.mapping, self.model) ** 2
+            terms[key] = terms.get(key, sympy.Integer(0)) + term
+        # a body's v^2 in polar-like positions is (r' cos - r theta' sin)^2 + (r' sin + r theta' cos)^2:
+        # simplified per body here, before every method expands it
         return sympy.Add(
-            *(
-                sympy.Rational(1, 2) * d.inertia * time_derivative(d.mapping, self.model) ** 2
-                for d in self.dofs
-            )
+            *(sympy.trigsimp(sympy.expand(t)) if t.has(sympy.sin, sympy.cos) else t for t in terms.values())
         )
 
     @cached_property
@@ -235,7 +239,10 @@ class Mechanics:
             raise DerivationError(f"the bodies of {pair.bodies} share no axis")
         if len(ends) == 1:
             return (pair.side or 1) * (ends[0][1] - ends[0][0])
-        return sympy.sqrt(sympy.Add(*((b - a) ** 2 for a, b in ends)))
+        squared = sympy.Add(*((b - a) ** 2 for a, b in ends))
+        if squared.has(sympy.sin, sympy.cos):  # polar positions: r^2 cos^2 + r^2 sin^2 is r^2
+            squared = sympy.trigsimp(squared)
+        return sympy.sqrt(squared)
 
 
 def solve_linear(
