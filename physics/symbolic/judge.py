@@ -13,7 +13,10 @@ Deciding equivalence (the rule):
    gives no number does a bounded symbolic proof (physics.symbolic.proof) decide: proved or wrong.
 
 Why a wrong answer is wrong, first match wins: known_mistake, wrong_dimension, sign_error,
-constant_factor, wrong_value (with hints on limiting cases). Feedback never shows the reference, and
+constant_factor, wrong_value (with hints on limiting cases). Each is first looked for in float64 at every
+point and confirmed in multiprecision at one or two points; wherever float64 cannot tell (a value out of
+its range, a difference below its resolution, an undefined point) every point is evaluated in
+multiprecision, so the reason is always the one multiprecision gives. Feedback never shows the reference, and
 a constant factor is not named: with it the answer would give the reference away.
 """
 
