@@ -9,14 +9,16 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import sympy
 
 from physics.engine import derive, load_model
 from physics.errors import SpecError, SpecErrors
-from problems.schema import ProblemDocument
 from problems.symbols import symbol_specs, symbol_table
+
+if TYPE_CHECKING:
+    from problems.schema import ProblemDocument
 
 MIN_AGREEING_METHODS = 2  # a derived quantity counts as checked when two methods give it
 
