@@ -172,11 +172,11 @@ class SymbolicKind:
             raise SpecError("needs an answer (there is no model to derive it from)", path)
 
         mistakes = [
-            (read_expression(m.answer, table, (*path, "mistakes", j, "answer")), m.feedback)
+            KnownMistake(read_expression(m.answer, table, (*path, "mistakes", j, "answer")), m.feedback)
             for j, m in enumerate(part.mistakes)
         ]
         limits = [
-            (
+            LimitCase(
                 {
                     table[name]: read_bound(value, (*path, "limits", j, "where", name))
                     for name, value in lim.where.items()
@@ -186,14 +186,14 @@ class SymbolicKind:
             for j, lim in enumerate(part.limits)
         ]
         quantity = part.quantity_name
-        engine_mistakes = _new_mistakes(mistakes, derived.mistakes.get(quantity, ()) if derived else ())
-        engine_limits = _new_limits(limits, derived.limits.get(quantity, ()) if derived else ())
+        # The author's mistakes and limits first (their wording wins), then the engine's new ones.
+        mistakes += _new_mistakes(mistakes, derived.mistakes.get(quantity, ()) if derived else ())
+        limits += _new_limits(limits, derived.limits.get(quantity, ()) if derived else ())
         symbolic_context = SymbolicContext(
             symbols={table[name]: spec for name, spec in context.specs.items()},
             constraints=context.constraints,
-            mistakes=tuple(KnownMistake(e, f) for e, f in [*mistakes, *engine_mistakes]),
-            limits=tuple(LimitCase(subs, d) for subs, d in limits)
-            + tuple(LimitCase(subs, d) for subs, d in engine_limits),
+            mistakes=tuple(mistakes),
+            limits=tuple(limits),
         )
         if hand is not None and derived_expr is not None:
             _require_agreement(hand, derived_expr, symbolic_context, (*path, "answer"))
@@ -245,27 +245,23 @@ SYMBOLIC = SymbolicKind()
 # ---- compiling ----------------------------------------------------------------------------------
 
 
-def _new_mistakes(
-    hand: list[tuple[sympy.Expr, str]], engine: tuple[tuple[sympy.Expr, str], ...]
-) -> list[tuple[sympy.Expr, str]]:
+def _new_mistakes(hand: list[KnownMistake], engine: tuple[KnownMistake, ...]) -> list[KnownMistake]:
     """The engine's mistakes that the author has not already described (the author's wording wins)."""
     kept = list(hand)
-    for expr, feedback in engine:
-        if not any(_same_expression(expr, other) for other, _ in kept):
-            kept.append((expr, feedback))
+    for mistake in engine:
+        if not any(_same_expression(mistake.expr, other.expr) for other in kept):
+            kept.append(mistake)
     return kept[len(hand) :]
 
 
-def _new_limits(
-    hand: list[tuple[dict[sympy.Symbol, sympy.Expr], str]],
-    engine: tuple[tuple[Mapping[sympy.Symbol, sympy.Expr], str], ...],
-) -> list[tuple[Mapping[sympy.Symbol, sympy.Expr], str]]:
-    seen = [dict(subs) for subs, _ in hand]
-    kept: list[tuple[Mapping[sympy.Symbol, sympy.Expr], str]] = []
-    for subs, description in engine:
-        if dict(subs) not in seen:
-            seen.append(dict(subs))
-            kept.append((subs, description))
+def _new_limits(hand: list[LimitCase], engine: tuple[LimitCase, ...]) -> list[LimitCase]:
+    """The engine's limiting cases that the author has not already stated."""
+    seen = [dict(case.substitutions) for case in hand]
+    kept: list[LimitCase] = []
+    for case in engine:
+        if dict(case.substitutions) not in seen:
+            seen.append(dict(case.substitutions))
+            kept.append(case)
     return kept
 
 
