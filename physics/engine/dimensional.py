@@ -74,6 +74,8 @@ def _with_model_symbols(model: Model, dims: Dims) -> dict[sympy.Symbol, Dimensio
             result[c.velocity] = dims[c.symbol] / TIME
     for pair in model.potentials:
         result[pair.distance] = LENGTH
+    if model.time is not None:
+        result.setdefault(model.time, TIME)
     return result
 
 
@@ -94,9 +96,12 @@ def _physics(model: Model, dims: Dims) -> list[Check]:
     names = {c.symbol: c.name for c in model.coordinates} | {
         c.velocity: f"{c.name}_dot" for c in model.coordinates
     }
+    if model.time is not None:
+        names[model.time] = "t"
     for symbol, value in model.state:
         if symbol in names and value != 0:
             own = dims.get(symbol) if symbol in dims else _velocity_dim(model, symbol, dims)
+            own = TIME if symbol == model.time else own
             checks.append((("state", names[symbol]), value, own))
     for index, force in enumerate(model.forces):
         if force.kind is ForceKind.APPLIED:
@@ -114,6 +119,12 @@ def _physics(model: Model, dims: Dims) -> list[Check]:
             checks.append((("impact", "restitution"), model.impact.restitution, DIMENSIONLESS))
         if model.impact.release is not None:
             checks.append((("impact", "release"), model.impact.release, ENERGY))
+    coordinates = {c.name: c.symbol for c in model.coordinates}
+    for quantity in model.quantities:  # where the motion gets to: a coordinate's value, a height
+        for name, value in quantity.at:
+            checks.append((("quantities", quantity.name, "at", name), value, dims.get(coordinates[name])))
+        if quantity.level is not None:
+            checks.append((("quantities", quantity.name, "level"), quantity.level, LENGTH))
     return checks
 
 

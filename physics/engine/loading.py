@@ -11,14 +11,16 @@ from typing import Any, TypeVar
 import sympy
 
 from physics.dimensions import Dimension
-from physics.engine import mode_shapes
+from physics.engine import forcing, mode_shapes, reach_loading
 from physics.engine.dimensional import check_dimensions
 from physics.engine.distances import with_distance_sides
 from physics.engine.elements import expand_elements
 from physics.engine.model import (
     AXES,
+    EFFECTIVE_KINDS,
     IMPACT_KINDS,
     SLIP_KINDS,
+    STEADY_KINDS,
     AppliedForce,
     Body,
     Collision,
@@ -26,6 +28,7 @@ from physics.engine.model import (
     ConstraintKind,
     Coordinate,
     ForceKind,
+    Frame,
     Friction,
     Impact,
     Model,
@@ -53,6 +56,7 @@ _SECTIONS = frozenset(
         "limits",
         "forces",
         "impact",
+        "frame",
     }
 )
 _QUANTITY_TARGET = {
@@ -69,6 +73,7 @@ _QUANTITY_TARGET = {
     QuantityKind.SLIP_END_VELOCITY: "coordinate",
     QuantityKind.DAMPED_FREQUENCY: "coordinate",
     QuantityKind.DECAY_TIME: "coordinate",
+    **dict.fromkeys(STEADY_KINDS | EFFECTIVE_KINDS, "coordinate"),
 }
 _SLIPPING_KEYS = {"friction", "normal", "coefficient"}
 # Sizes beyond any textbook model: the derivation's cost grows fast with them, and models are uploaded.
@@ -155,12 +160,15 @@ def _load_low_level(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]
     frictions = _frictions(data.get("friction"), symbols, bodies, constraints, coordinates, errors)
     potentials = _potentials(data.get("potentials"), symbols, bodies, errors)
     collision = _collision(data.get("collision"), symbols, bodies, coordinates, errors)
-    state = _state(data.get("state"), symbols, coordinates, errors)
+    time = forcing.time_symbol(symbols)
+    state = _state(data.get("state"), symbols, coordinates, errors, time)
     quantities = _quantities(data.get("quantities"), symbols, coordinates, constraints, collision, errors)
     velocities = {f"{c.name}_dot": c.velocity for c in coordinates}
-    forces = _forces(data.get("forces"), symbols, {**coord_scope, **velocities}, bodies, errors)
+    forces = _forces(data.get("forces"), symbols, {"t": time, **coord_scope, **velocities}, bodies, errors)
     limits = _stated_limits(data.get("limits"), symbols, {q.name for q in quantities}, errors)
     impact = _impact(data.get("impact"), symbols, bodies, quantities, errors)
+    frame = _frame(data.get("frame"), symbols, bodies, errors)
+    reach_loading.check_targets(quantities, bodies, state, coordinates, errors.add)
     _check_slip_quantities(quantities, frictions, errors)
     if errors.errors:
         raise SpecErrors(errors.errors)
@@ -182,8 +190,46 @@ def _load_low_level(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]
         limits=limits,
         forces=forces,
         impact=impact,
+        frame=frame,
     )
-    return with_distance_sides(model)
+    return with_distance_sides(forcing.with_time(model, time))
+
+
+def _frame(
+    value: Any, symbols: Mapping[str, sympy.Symbol], bodies: tuple[Body, ...], errors: _Collector
+) -> Frame | None:
+    """`frame: {body: wedge}` (translating with a body) or `{rate: omega, axis: 0, bodies: [bead]}`."""
+    if value is None:
+        return None
+    path: Path = ("frame",)
+    spec = _mapping(value, path, errors)
+    _check_keys(spec, {"body", "rate", "axis", "bodies"}, set(), path, errors)
+    names = {b.name for b in bodies}
+    if ("body" in spec) == ("rate" in spec):
+        errors.add(
+            "give exactly one of body (a frame moving with that body) and rate (a turning frame)", path
+        )
+        return None
+    if "body" in spec:
+        for key in ("axis", "bodies"):
+            if key in spec:
+                errors.add("only a turning frame (rate) has this", (*path, key))
+        if spec["body"] not in names:
+            errors.add(f"unknown body {spec['body']!r}", (*path, "body"))
+            return None
+        return Frame(body=str(spec["body"]))
+    members = spec.get("bodies")
+    if not isinstance(members, list) or not members:
+        errors.add("a list of the bodies turning with the frame", (*path, "bodies"))
+        return None
+    for index, member in enumerate(members):
+        if member not in names:
+            errors.add(f"unknown body {member!r}", (*path, "bodies", index))
+    rate = errors.read(spec["rate"], symbols, (*path, "rate"))
+    axis = errors.read(spec.get("axis", 0), symbols, (*path, "axis"))
+    if rate is None or axis is None or not all(m in names for m in members):
+        return None
+    return Frame(rate=rate, axis=axis, bodies=tuple(map(str, members)))
 
 
 def _forces(
@@ -564,13 +610,18 @@ def _coordinate_values(
 
 
 def _state(
-    value: Any, symbols: Mapping[str, sympy.Symbol], coordinates: tuple[Coordinate, ...], errors: _Collector
+    value: Any,
+    symbols: Mapping[str, sympy.Symbol],
+    coordinates: tuple[Coordinate, ...],
+    errors: _Collector,
+    time: sympy.Symbol,
 ) -> tuple[tuple[sympy.Symbol, sympy.Expr], ...]:
     known = {c.name: c.symbol for c in coordinates} | {f"{c.name}_dot": c.velocity for c in coordinates}
+    known.setdefault(forcing.NAME, time)  # the time, for forces that depend on it
     given: dict[sympy.Symbol, sympy.Expr] = {c.velocity: sympy.Integer(0) for c in coordinates}
     for name, text in _mapping(value, ("state",), errors, required=False).items():
         if name not in known:
-            errors.add(f"unknown coordinate or velocity {name!r}", ("state", str(name)))
+            errors.add(f"unknown coordinate, velocity or time {name!r}", ("state", str(name)))
             continue
         expr = errors.read(text, symbols, ("state", str(name)))
         if expr is not None:
@@ -682,6 +733,10 @@ def _quantity(
         errors.add(f"give exactly one of {[k.value for k in QuantityKind]}", path)
         return None
     kind = QuantityKind(kinds[0])
+    if reach_loading.handles(kind, spec):
+        return reach_loading.load_quantity(
+            name, kind, spec, path, symbols, coordinates, constraints, errors.add
+        )
     allowed = (
         {kind.value}
         | ({"zero"} if kind is QuantityKind.SOLVE else set())
@@ -690,6 +745,8 @@ def _quantity(
     _check_keys(spec, allowed, allowed, path, errors)
     target = spec[kind.value]
     where: Path = (*path, kind.value)
+    if kind is QuantityKind.REVOLUTION_PERIOD and target == "frame":  # the rotating frame's turn
+        return Quantity(name, kind, "frame")
     if kind in _QUANTITY_TARGET:
         pool = (
             {c.name for c in coordinates}
@@ -700,6 +757,11 @@ def _quantity(
             errors.add(f"unknown {_QUANTITY_TARGET[kind]} {target!r}", where)
             return None
         return Quantity(name, kind, str(target))
+    if kind is QuantityKind.MECHANICAL_ENERGY:
+        if target != "state":
+            errors.add("the energy is the model's state's: write `mechanical_energy: state`", where)
+            return None
+        return Quantity(name, kind, "state")
     if kind in IMPACT_KINDS:  # checked against the impact section by `_impact`
         return Quantity(name, kind, str(target))
     if kind is QuantityKind.MODE_SHAPE:

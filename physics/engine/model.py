@@ -106,6 +106,18 @@ class AppliedForce:
 
 
 @dataclass(frozen=True)
+class Frame:
+    """The reference frame the fictitious-forces method works in: translating with a body (each other
+    body feels -m A, A the body's acceleration), or turning at a constant `rate` about the vertical line
+    x = `axis`, its `bodies` turning with it (centrifugal m rate^2 (x - axis) on each)."""
+
+    body: str | None = None
+    rate: sympy.Expr | None = None
+    axis: sympy.Expr = ZERO
+    bodies: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True)
 class Collision:
     """A projectile particle hits `target` (at rest at `at`) along `direction` and sticks; the
     merged body then moves until the coordinates reach `reaches` with zero velocity."""
@@ -150,6 +162,11 @@ class QuantityKind(StrEnum):
     FINAL_VELOCITY = "final_velocity"  # a body's velocity after an impact, along its one axis
     FINAL_SPEED = "final_speed"  # a body's speed after an impact
     KINETIC_ENERGY_LOST = "kinetic_energy_lost"  # by the bodies of an impact (negative: released)
+    SPEED = "speed"  # a body's speed when the coordinates reach `at`, moving from the state
+    VELOCITY = "velocity"  # a coordinate's velocity when the coordinates reach `at`
+    TIME_OF_FLIGHT = "time_of_flight"  # of a body launched at the state, until it lands at `level`
+    RANGE = "range"  # the body's horizontal displacement when it lands at `level`
+    MAX_HEIGHT = "max_height"  # the body's highest point above where it was launched
     SLIP_TIME = "slip_time"  # until a contact with kinetic friction stops slipping (a ball starts rolling)
     SLIP_DISTANCE = "slip_distance"  # how far a coordinate moves until then
     SLIP_END_VELOCITY = "slip_end_velocity"  # a coordinate's velocity when the slipping stops
@@ -157,12 +174,29 @@ class QuantityKind(StrEnum):
     DAMPED_FREQUENCY = "damped_frequency"  # of an underdamped oscillation about the equilibrium
     DECAY_TIME = "decay_time"  # the amplitude's e-folding time of that oscillation
     MODE_SHAPE = "mode_shape"  # amplitude ratio of two coordinates in the n-th normal mode
+    # steady circular motion: the angle coordinate turns uniformly, the others stay at the state (orbits.py)
+    CIRCULAR_SPEED = "circular_speed"
+    REVOLUTION_PERIOD = "revolution_period"
+    CIRCULAR_ENERGY = "circular_energy"
+    MECHANICAL_ENERGY = "mechanical_energy"  # T + V at the model's state
+    # with the cyclic coordinates' momenta held at their state values (the effective potential)
+    CIRCULAR_RADIUS = "circular_radius"
+    EPICYCLIC_FREQUENCY = "epicyclic_frequency"
 
 
+REACH_KINDS = frozenset({QuantityKind.SPEED, QuantityKind.VELOCITY})
+TRAJECTORY_KINDS = frozenset({QuantityKind.TIME_OF_FLIGHT, QuantityKind.RANGE, QuantityKind.MAX_HEIGHT})
 IMPACT_KINDS = frozenset(
     {QuantityKind.FINAL_VELOCITY, QuantityKind.FINAL_SPEED, QuantityKind.KINETIC_ENERGY_LOST}
 )
 SLIP_KINDS = frozenset({QuantityKind.SLIP_TIME, QuantityKind.SLIP_DISTANCE, QuantityKind.SLIP_END_VELOCITY})
+
+
+STEADY_KINDS = frozenset(
+    {QuantityKind.CIRCULAR_SPEED, QuantityKind.REVOLUTION_PERIOD, QuantityKind.CIRCULAR_ENERGY}
+)
+EFFECTIVE_KINDS = frozenset({QuantityKind.CIRCULAR_RADIUS, QuantityKind.EPICYCLIC_FREQUENCY})
+ORBIT_KINDS = STEADY_KINDS | EFFECTIVE_KINDS | {QuantityKind.MECHANICAL_ENERGY}
 
 
 @dataclass(frozen=True)
@@ -175,6 +209,10 @@ class Quantity:
     # for EXPRESSION: the formula, and the stand-in symbol of each earlier quantity it uses
     expression: sympy.Expr | None = None
     uses: tuple[tuple[sympy.Symbol, str], ...] = ()
+    # where the coordinates are when the quantity is taken (speed, velocity; force and acceleration
+    # there too), reached by the motion from the model's state: ((coordinate, value),)
+    at: tuple[tuple[str, sympy.Expr], ...] = ()
+    level: sympy.Expr | None = None  # TIME_OF_FLIGHT, RANGE: the landing height (y); None: the launch's
     # for SLIPPING: the holding contact's friction and normal constraints, and mu_s
     contact: tuple[str, str] = ("", "")
     coefficient: sympy.Expr | None = None
@@ -211,6 +249,7 @@ class Model:
     forces: tuple[AppliedForce, ...] = ()
     dimensions_checked: bool = False
     impact: Impact | None = None  # every term was found dimensionally consistent when loaded
+    frame: Frame | None = None  # declared (`frame:`) or implied by an element (a wedge, a rotating frame)
     time: sympy.Symbol | None = None  # the time `t`, when a given force depends on it
 
     def body(self, name: str) -> Body:

@@ -22,7 +22,15 @@ from physics.engine.contact_friction import slip_velocity
 from physics.engine.lagrange import LagrangeMethod
 from physics.engine.mechanics import Mechanics
 from physics.engine.method import stable_equilibrium
-from physics.engine.model import IMPACT_KINDS, SLIP_KINDS, Model, Quantity, QuantityKind
+from physics.engine.model import (
+    IMPACT_KINDS,
+    ORBIT_KINDS,
+    SLIP_KINDS,
+    TRAJECTORY_KINDS,
+    Model,
+    Quantity,
+    QuantityKind,
+)
 from physics.engine.results import SimulationCheck
 from physics.errors import DerivationError
 
@@ -69,6 +77,12 @@ class Dynamics:
         self.n = len(self.mech.q)
         self.size = len(unknowns)
         self.params = [p for p in model.parameters if p not in self.mech.q]
+        # a force in the time: the time is one more argument, advanced by a clock during integration
+        self.clock: int | None = None
+        if model.time is not None:
+            if model.time not in self.params:
+                self.params.append(model.time)
+            self.clock = self.params.index(model.time)
         args = [*self.mech.q, *self.mech.qd, *self.params]
         self._matrix = _compile(args, list(matrix))
         self._rhs = _compile(args, list(rhs))
@@ -93,7 +107,21 @@ class Dynamics:
         self._dissipative = _compile([*args, *lam], self.mech.generalized(dissipative))
 
     def values(self, point: Point) -> Vector:
-        return [point[p] for p in self.params]
+        """The parameters' values at the point (the time, when not a parameter, from the state)."""
+        start = dict(self.model.state).get(self.model.time) if self.model.time is not None else None
+        return [point[p] if p in point or start is None else _evaluate(start, point) for p in self.params]
+
+    def initial(self, q: Vector, qd: Vector, params: Vector) -> Vector:
+        """The integrated state: positions, velocities and, with a force in the time, the time."""
+        return [*q, *qd, *([params[self.clock]] if self.clock is not None else [])]
+
+    def at(self, params: Vector, y: Vector, index: int) -> Vector:
+        """The parameters at the integrated state y, whose time (if any) is at y[index]."""
+        if self.clock is None:
+            return params
+        now = list(params)
+        now[self.clock] = y[index]
+        return now
 
     def unknowns(self, q: Vector, qd: Vector, params: Vector, extra: Vector | None = None) -> Vector:
         flat = self._matrix(*q, *qd, *params)
@@ -105,6 +133,12 @@ class Dynamics:
 
     def derivative(self, params: Vector) -> Callable[[Vector], Vector]:
         n = self.n
+        if self.clock is not None:  # y = q, q', t: the time advances with the motion
+            return lambda y: [
+                *y[n : 2 * n],
+                *self.unknowns(y[:n], y[n : 2 * n], self.at(params, y, 2 * n))[:n],
+                1.0,
+            ]
         return lambda y: y[n:] + self.unknowns(y[:n], y[n:], params)[:n]
 
     def power(self, q: Vector, qd: Vector, params: Vector, multipliers: Vector) -> float:
@@ -163,7 +197,7 @@ class Simulator:
     def check(
         self, quantity: Quantity, reference: sympy.Expr, points: Sequence[Point]
     ) -> SimulationCheck | None:
-        measure = self._measures().get(quantity.kind)
+        measure = self._reach if _reaches(quantity) else self._measures().get(quantity.kind)
         if measure is None:
             return None
         worst = 0.0
@@ -201,9 +235,22 @@ class Simulator:
             QuantityKind.PROJECTILE_SPEED: self._collision,
             QuantityKind.ENERGY_FRACTION_LOST: self._collision,
             **dict.fromkeys(IMPACT_KINDS, self._impact),
+            **dict.fromkeys(ORBIT_KINDS, self._orbit),
             **dict.fromkeys(SLIP_KINDS, partial(slipping.measure_sliding, self)),
             QuantityKind.SLIPPING: partial(slipping.measure_slipping, self),
         }
+
+    @cached_property
+    def _orbit(self) -> Measure:
+        from physics.engine.orbit_simulation import OrbitMeasure  # here: it builds on this module
+
+        return OrbitMeasure(self.dynamics, self._start)
+
+    @cached_property
+    def _reach(self) -> Measure:
+        from physics.engine.reach_simulation import ReachMeasure  # it builds on this module
+
+        return ReachMeasure(self)
 
     @cached_property
     def _impact(self) -> impact_simulation.ImpactMeasure:
@@ -250,17 +297,19 @@ class Simulator:
         h = self._step_for(point)
 
         def f(y: Vector) -> Vector:
-            unknowns = dyn.unknowns(y[:n], y[n : 2 * n], params)
+            now = dyn.at(params, y, 2 * n + 2)  # a force in the time works at the time of the motion
+            unknowns = dyn.unknowns(y[:n], y[n : 2 * n], now)
             return [
                 *y[n : 2 * n],
                 *unknowns[:n],
-                dyn.power(y[:n], y[n : 2 * n], params, unknowns[n:]),
-                dyn.dissipation(y[:n], y[n : 2 * n], params, unknowns[n:]),
+                dyn.power(y[:n], y[n : 2 * n], now, unknowns[n:]),
+                dyn.dissipation(y[:n], y[n : 2 * n], now, unknowns[n:]),
+                *([1.0] if dyn.clock is not None else []),
             ]
 
         slips = self._slip_velocities
         initial = slips(*q, *qd, *params)
-        states = [[*q, *qd, 0.0, 0.0]]
+        states = [[*q, *qd, 0.0, 0.0, *dyn.initial([], [], params)]]
         for _ in range(ENERGY_STEPS):
             after = rk4(f, states[-1], h, 1)[-1]
             backwards = [k for k, u in enumerate(slips(*after[: 2 * n], *params)) if u < 0]
@@ -279,7 +328,7 @@ class Simulator:
         start, end = states[0], states[-1]
         change = dyn.energy(end[:n], end[n : 2 * n], params) - dyn.energy(start[:n], start[n : 2 * n], params)
         kinetic = max(dyn.energy(y[:n], y[n : 2 * n], params) - dyn.potential(y[:n], params) for y in states)
-        return change, end[-2], abs(kinetic), end[-1]
+        return change, end[2 * n], abs(kinetic), end[2 * n + 1]
 
     @cached_property
     def _slip_velocities(self) -> Callable[..., list[float]]:
@@ -322,9 +371,10 @@ class Simulator:
     ) -> tuple[Vector, ...]:
         dyn = self.dynamics
         q, qd = start if start is not None else self._start(point)
-        f = dyn.derivative(dyn.values(point))
-        forward = rk4(f, q + qd, h / steps, steps)[-1]
-        backward = rk4(f, q + qd, -h / steps, steps)[-1]
+        params = dyn.values(point)
+        f = dyn.derivative(params)
+        forward = rk4(f, dyn.initial(q, qd, params), h / steps, steps)[-1]
+        backward = rk4(f, dyn.initial(q, qd, params), -h / steps, steps)[-1]
         return backward[: dyn.n], q, forward[: dyn.n]
 
     def _acceleration(self, quantity: Quantity, point: Point, expected: float) -> Measured:
@@ -643,6 +693,11 @@ class Simulator:
             reached,
             abs(reached - target) / max(abs(target), 1e-12),
         )
+
+
+def _reaches(quantity: Quantity) -> bool:
+    """Taken where the motion from the state gets to (`at`, a flight's end or apex): see reach_simulation."""
+    return bool(quantity.at) or quantity.kind in TRAJECTORY_KINDS
 
 
 def _evaluate(expr: sympy.Expr, point: Point) -> float:
