@@ -8,7 +8,6 @@ from __future__ import annotations
 
 import asyncio
 import logging
-import multiprocessing
 from collections.abc import Callable
 from concurrent.futures import TimeoutError as FutureTimeout
 from concurrent.futures.process import BrokenProcessPool
@@ -18,6 +17,7 @@ from typing import Any, Literal
 from pebble import ProcessExpired, ProcessPool
 
 from app.errors import Busy, Unavailable
+from app.grading import forkserver
 from app.grading.supervised import PoolUnavailable, SupervisedPool
 from app.grading.worker import limit_memory
 from app.instructor.described import Described, describe
@@ -109,9 +109,8 @@ class AuthoringPool:
     _task: Callable[[bytes, Literal["json", "yaml"]], Vetted] = staticmethod(vet)
 
     def _new_pool(self) -> ProcessPool:
-        context = multiprocessing.get_context("forkserver")
         return ProcessPool(
-            max_workers=1, initializer=limit_memory, initargs=(self._memory_mb,), context=context
+            max_workers=1, initializer=limit_memory, initargs=(self._memory_mb,), context=forkserver.context()
         )
 
     def start(self) -> None:
