@@ -168,3 +168,16 @@ def test_a_place_the_motion_cannot_reach_is_refused_with_the_reason() -> None:
     with pytest.raises(DerivationError) as caught:
         derive(load_model(data, SYMBOLS))
     assert "does not reach theta = pi/2" in str(caught.value)
+
+
+def test_a_speed_in_a_model_of_several_coordinates_is_refused_saying_so() -> None:
+    data = {
+        "coordinates": ["x", "y"],
+        "bodies": {"ball": {"mass": "m", "position": {"x": "x", "y": "y"}}},
+        "gravity": "g",
+        "state": {"x": 0, "y": "L"},
+        "quantities": {"v": {"speed": "ball", "at": {"y": 0}}},
+    }
+    with pytest.raises(DerivationError) as caught:
+        derive(load_model(data, SYMBOLS))
+    assert "worked for one coordinate; the model has 2" in str(caught.value)
