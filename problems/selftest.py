@@ -17,9 +17,9 @@ from pathlib import Path
 
 import sympy
 
-from physics.errors import PhyscheckError
+from physics.errors import DerivationError, PhyscheckError
 from problems.compiled import CompiledProblem, CompiledSymbolicPart, compile_problem
-from problems.errors import ProblemInvalid
+from problems.errors import ProblemInvalid, format_path
 from problems.kinds import kind_of
 from problems.kinds.base import CheckResult
 from problems.kinds.numeric import answer_text, unit_alternatives
@@ -107,6 +107,12 @@ def verify_problem(
     except ProblemInvalid as error:
         report.results.extend(
             CheckResult(doc.id, None, f"compile {path}", False, msg) for path, msg in error.errors
+        )
+        return Report([report])
+    except DerivationError as error:  # every finding, each at its place in the model
+        report.results.extend(
+            CheckResult(doc.id, None, f"derive {format_path(('model', *path))}", False, message)
+            for path, message in error.items()
         )
         return Report([report])
     except PhyscheckError as error:

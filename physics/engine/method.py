@@ -10,7 +10,15 @@ import sympy
 
 from physics.engine import damping, impact, mode_shapes, modes, slipping, trajectory, work_energy
 from physics.engine.mechanics import Mechanics
-from physics.engine.model import IMPACT_KINDS, SLIP_KINDS, TRAJECTORY_KINDS, Model, Quantity, QuantityKind
+from physics.engine.model import (
+    IMPACT_KINDS,
+    ORBIT_KINDS,
+    SLIP_KINDS,
+    TRAJECTORY_KINDS,
+    Model,
+    Quantity,
+    QuantityKind,
+)
 from physics.engine.proof import domain_points
 from physics.engine.results import MethodReport, Step
 from physics.errors import DerivationError
@@ -37,6 +45,8 @@ class Method(ABC):
         self._logged: set[str] = set()
         self._impact: impact.Worked | None = None  # the impact worked once, for all its quantities
         self.arrivals: dict[tuple[object, ...], sympy.Expr] = {}  # work_energy: v^2 where the motion arrives
+        # each coordinate's equilibrium, found once: frequencies, expressions and the simulation ask again
+        self._equilibria: dict[str, sympy.Expr] = {}
 
     @cached_property
     def free(self) -> Method:
@@ -153,6 +163,10 @@ class Method(ABC):
                 raise NotApplicable(str(why)) from None
         if kind is QuantityKind.MODE_SHAPE:
             return mode_shapes.answer(self, quantity, stable_equilibrium(self.model))
+        if kind in ORBIT_KINDS:
+            from physics.engine import orbits  # here: orbits builds on Method
+
+            return orbits.answer(self, quantity)
         if kind is QuantityKind.SOLVE:
             assert quantity.inner is not None and quantity.parameter is not None
             return self.solve_for(quantity.parameter, self.answer(quantity.inner), quantity.name)
@@ -160,6 +174,11 @@ class Method(ABC):
 
     def equilibrium(self, coordinate: str) -> sympy.Expr:
         """The stable root of the generalized force Q(q) = 0: Q'(q0) < 0 on the whole domain."""
+        if coordinate not in self._equilibria:
+            self._equilibria[coordinate] = self._equilibrium(coordinate)
+        return self._equilibria[coordinate]
+
+    def _equilibrium(self, coordinate: str) -> sympy.Expr:
         q = self.model.coordinate(coordinate).symbol
         force = self.potential_force(coordinate)
         others = (force.free_symbols & set(self.mech.q)) - {q}

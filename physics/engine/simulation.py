@@ -22,7 +22,15 @@ from physics.engine.contact_friction import slip_velocity
 from physics.engine.lagrange import LagrangeMethod
 from physics.engine.mechanics import Mechanics
 from physics.engine.method import stable_equilibrium
-from physics.engine.model import IMPACT_KINDS, SLIP_KINDS, TRAJECTORY_KINDS, Model, Quantity, QuantityKind
+from physics.engine.model import (
+    IMPACT_KINDS,
+    ORBIT_KINDS,
+    SLIP_KINDS,
+    TRAJECTORY_KINDS,
+    Model,
+    Quantity,
+    QuantityKind,
+)
 from physics.engine.results import SimulationCheck
 from physics.errors import DerivationError
 
@@ -227,9 +235,16 @@ class Simulator:
             QuantityKind.PROJECTILE_SPEED: self._collision,
             QuantityKind.ENERGY_FRACTION_LOST: self._collision,
             **dict.fromkeys(IMPACT_KINDS, self._impact),
+            **dict.fromkeys(ORBIT_KINDS, self._orbit),
             **dict.fromkeys(SLIP_KINDS, partial(slipping.measure_sliding, self)),
             QuantityKind.SLIPPING: partial(slipping.measure_slipping, self),
         }
+
+    @cached_property
+    def _orbit(self) -> Measure:
+        from physics.engine.orbit_simulation import OrbitMeasure  # here: it builds on this module
+
+        return OrbitMeasure(self.dynamics, self._start)
 
     @cached_property
     def _reach(self) -> Measure:
@@ -349,7 +364,26 @@ class Simulator:
                 [v + (delta if j == i else 0.0) for j, v in enumerate(q)], qd, dyn.values(point)
             )[: dyn.n]
             rate = max(rate, *(abs(a - b) / delta for a, b in zip(moved, qdd, strict=True)))
-        return min(1e-2, math.sqrt(1e-4 * scale / fastest), 1e-3 * scale / speed, 1e-2 / math.sqrt(rate))
+        step = min(1e-2, math.sqrt(1e-4 * scale / fastest), 1e-3 * scale / speed, 1e-2 / math.sqrt(rate))
+        return self._resolve_time(q, qd, point, step)
+
+    def _resolve_time(self, q: Vector, qd: Vector, point: Point, step: float) -> float:
+        """With a force in the time, halve the step until the acceleration's own second difference in
+        time (the system held still) is negligible: a fast driving force needs a short step."""
+        dyn = self.dynamics
+        if dyn.clock is None:
+            return step
+        params = dyn.values(point)
+        now = params[dyn.clock]
+        for _ in range(40):
+            before, at, after = (
+                dyn.unknowns(q, qd, dyn.at(params, [now + d], 0))[: dyn.n] for d in (-step, 0.0, step)
+            )
+            size = max([abs(v) for v in (*before, *at, *after)] + [1e-300])
+            if max(abs(a - 2 * b + c) for a, b, c in zip(before, at, after, strict=True)) <= 1e-6 * size:
+                break
+            step /= 2
+        return step
 
     def _trajectory_around(
         self, point: Point, h: float, steps: int = 10, start: tuple[Vector, Vector] | None = None
