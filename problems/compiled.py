@@ -1,8 +1,10 @@
-"""A problem compiled for grading: per part the question the checker needs, no YAML left.
+"""A problem compiled for grading: per part what its kind compiled (`problems.kinds`), no YAML left.
 
-Compiling derives the model (sympy-heavy), reconciles hand-typed answers with the derivation, and
-merges the engine's known mistakes and limits with the author's. The result is cached per
-(id, version, document hash), so a course's thousand submissions compile the problem once.
+Compiling derives the model (sympy-heavy) once, then hands each part to its kind, expression parts
+first (a numeric part evaluates one of them); each kind reconciles what it needs with the derivation
+(a symbolic part's typed answer must agree with it, the engine's mistakes and limits join the
+author's). The result is cached per (id, version, document hash), so a course's thousand submissions
+compile the problem once.
 """
 
 from __future__ import annotations
