@@ -11,6 +11,7 @@ from app.errors import Forbidden, RateLimited, Unauthenticated
 from app.lti.sessions import principal_from_session
 from app.openapi import bearer_scheme
 from app.services import Services
+from app.storage import ApiKeyStore, ProblemStore, SubmissionStore
 
 
 def get_services(request: Request) -> Services:
@@ -19,6 +20,23 @@ def get_services(request: Request) -> Services:
 
 
 ServicesDep = Annotated[Services, Depends(get_services)]
+
+
+def get_problem_store(services: ServicesDep) -> ProblemStore:
+    return services.stores.problems
+
+
+def get_submission_store(services: ServicesDep) -> SubmissionStore:
+    return services.stores.submissions
+
+
+def get_key_store(services: ServicesDep) -> ApiKeyStore:
+    return services.stores.keys
+
+
+Problems = Annotated[ProblemStore, Depends(get_problem_store)]
+Submissions = Annotated[SubmissionStore, Depends(get_submission_store)]
+ApiKeys = Annotated[ApiKeyStore, Depends(get_key_store)]
 
 
 def current_principal(
