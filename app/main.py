@@ -95,7 +95,7 @@ def create_app(
             rate_limit=functools.partial(budget_wait, app.state.services),
             submissions=storage.stores.submissions,
         )
-        outbox = OutboxWorker(storage.database, lms_transport)
+        outbox = OutboxWorker(storage.stores.outbox, storage.stores.tool_keys, lms_transport)
         await outbox.start()
         if settings.warm_up:
             threading.Thread(target=storage.catalog.warm_up, name="catalog-warm-up", daemon=True).start()

@@ -17,7 +17,6 @@ from app.catalog import Catalog
 from app.db import keys as key_repository
 from app.db.database import Database
 from app.db.migrate import migrate
-from app.lti.grades import queue_grade
 from app.settings import Settings
 from app.storage import ApiKeyStore, Stores, sql_stores
 
@@ -83,9 +82,7 @@ class Storage:
 
 def open_storage(settings: Settings) -> Storage:
     database = open_database(settings)
-    # Grade passback is queued in the transaction that files the submission: never lost, never
-    # sent for a submission that was rolled back.
-    stores = sql_stores(database, on_filed=[queue_grade])
+    stores = sql_stores(database)
     catalog = Catalog(stores, settings.secret, settings.bank_dir)
     catalog.sync_builtin()
     return Storage(database=database, stores=stores, keys=DatabaseKeyStore(stores.keys), catalog=catalog)

@@ -39,7 +39,6 @@ from app.errors import AppError, Busy
 from app.instructor import session as auth
 from app.instructor.described import Described, MistakeInfo, describe
 from app.instructor.plots import Bar, bar_chart
-from app.lti.outbox import list_delivery_problems
 from app.lti.platforms import platform_origins
 from app.routers.authoring import store_new_problem, store_new_version
 from app.services import Services
@@ -702,11 +701,7 @@ async def submissions_csv(
 async def deliveries(request: Request, services: ServicesDep, who: Visitor) -> Response:
     _need_key(who)
 
-    def load() -> list[Any]:
-        with services.database.session(read_only=True) as session:
-            return list_delivery_problems(session)
-
-    items = await run_in_threadpool(load)
+    items = await run_in_threadpool(services.stores.outbox.delivery_problems)
     return await _page(
         request,
         services,

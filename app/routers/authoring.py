@@ -12,7 +12,7 @@ from app.auth import Principal
 from app.db.records import ProblemRecord
 from app.deps import Instructor, Problems, ServicesDep
 from app.errors import AppError, Forbidden
-from app.lti.outbox import DeliveryProblem, list_delivery_problems
+from app.lti.outbox import DeliveryProblem
 from app.openapi import AUTHENTICATED, errors
 from app.schemas.problems import (
     MethodPublic,
@@ -211,8 +211,4 @@ async def delivery_problems(services: ServicesDep, principal: Instructor) -> lis
     if not principal.acts_for_students:
         raise Forbidden("Grade passback across courses is for instructor API keys.")
 
-    def read() -> list[DeliveryProblem]:
-        with services.database.session(read_only=True) as session:
-            return list_delivery_problems(session)
-
-    return await run_in_threadpool(read)
+    return await run_in_threadpool(services.stores.outbox.delivery_problems)

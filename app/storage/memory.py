@@ -20,6 +20,8 @@ from dataclasses import dataclass, replace
 from datetime import datetime
 from typing import Any
 
+from joserfc.jwk import RSAKey
+
 from app.db import keys as key_format
 from app.db.class_results import PREVIEW_PREFIX, WRONG_ANSWERS_SHOWN, Count, PartResults, WrongAnswer
 from app.db.cursor import Position, decode_cursor, encode_cursor
@@ -34,8 +36,14 @@ from app.db.errors import (
 from app.db.problems import document_hash
 from app.db.records import ApiKeyRecord, CreatedKey, Page, ProblemRecord, Role, SubmissionRecord
 from app.db.types import utc_now
-from app.storage.protocols import DEFAULT_PAGE_LIMIT, MAX_PAGE_LIMIT, Filed
-from physics.verdict import Outcome, Verdict
+from app.lti import keys as tool_keys
+from app.lti import outbox
+from app.lti.grades import score_of
+from app.lti.outbox import ClaimedScore, DeliveryProblem, Outcome
+from app.lti.platforms import PlatformRecord
+from app.storage.protocols import DEFAULT_PAGE_LIMIT, MAX_PAGE_LIMIT, Filed, QueuedScore
+from physics.verdict import Outcome as Verdicts
+from physics.verdict import Verdict
 
 Clock = Callable[[], datetime]
 # Runs under the submission store's lock, before the filing is visible (the fake LTI queue uses it).
@@ -216,10 +224,11 @@ class MemorySubmissionStore:
     def __init__(
         self, problems: MemoryProblemStore, hooks: Sequence[FilingHook] = (), clock: Clock = utc_now
     ) -> None:
-        self._problems, self._hooks, self._clock = problems, tuple(hooks), clock
+        # Kept as given (not copied): `memory_stores` adds the grade queue once the store exists.
+        self._problems, self._hooks, self._clock = problems, hooks, clock
         self._rows: list[SubmissionRecord] = []
         self._used: dict[tuple[str, str, str], int] = {}
-        self._lock = threading.Lock()
+        self._lock = threading.RLock()  # a filing hook may read the log (`all`) before the row is added
 
     def file(
         self,
@@ -238,7 +247,7 @@ class MemorySubmissionStore:
         with self._lock:
             used = self._used.get(key, 0)
             attempt = None
-            if verdict.outcome is not Outcome.INVALID:
+            if verdict.outcome is not Verdicts.INVALID:
                 if max_attempts is not None and used >= max_attempts:
                     raise AttemptsExhausted(problem_id, part_id, student, max_attempts)
                 attempt = used = used + 1
@@ -321,7 +330,7 @@ def results_of(rows: Iterable[SubmissionRecord], part_ids: Sequence[str]) -> lis
             continue
         students[part].add(row.student)
         graded[part] += row.attempt is not None
-        if row.verdict is Outcome.CORRECT:
+        if row.verdict is Verdicts.CORRECT:
             right[part].add(row.student)
             if row.attempt is not None:
                 known = first.get((part, row.student))
@@ -330,7 +339,7 @@ def results_of(rows: Iterable[SubmissionRecord], part_ids: Sequence[str]) -> lis
             groups[(part, row.verdict.value, row.reason.value)].append(row)
         if row.reason.value == "known_mistake":
             groups[(part, "mistake", row.feedback)].append(row)
-        if row.verdict is Outcome.INCORRECT:
+        if row.verdict is Verdicts.INCORRECT:
             shown = row.read_as.text if row.read_as is not None else row.answer
             wrong[(part, shown, row.reason.value)].append(row)
 
@@ -385,3 +394,263 @@ class MemoryCompiledCache:
     def put(self, key: str, payload: bytes, mac: str) -> None:
         with self._lock:
             self._rows[key] = (bytes(payload), mac)
+
+
+@dataclass
+class _Target:
+    id: int
+    platform: PlatformRecord
+    student: str
+    problem_id: str
+    lineitem_url: str
+    sub: str
+    last_timestamp: datetime | None = None
+
+
+@dataclass
+class _Score:
+    id: int
+    target: _Target
+    score_given: float
+    score_maximum: float
+    timestamp: datetime
+    status: str
+    next_attempt_at: datetime
+    attempts: int = 0
+    claimed_by: str | None = None
+    claimed_until: datetime | None = None
+    last_status: int | None = None
+    last_error: str | None = None
+
+
+class MemoryScoreOutbox:
+    """The outbox's claim, supersede and retry rules (`app.lti.outbox`), on lists under one lock."""
+
+    def __init__(self) -> None:
+        self._targets: list[_Target] = []
+        self._rows: list[_Score] = []
+        self._lock = threading.Lock()
+
+    def add_target(
+        self, platform: PlatformRecord, *, student: str, problem_id: str, lineitem_url: str, sub: str
+    ) -> None:
+        with self._lock:
+            for target in self._targets:
+                if (target.platform.id, target.student, target.problem_id, target.lineitem_url) == (
+                    platform.id,
+                    student,
+                    problem_id,
+                    lineitem_url,
+                ):
+                    return
+            self._targets.append(
+                _Target(len(self._targets) + 1, platform, student, problem_id, lineitem_url, sub)
+            )
+
+    def launched(self, student: str, problem_id: str) -> bool:
+        with self._lock:
+            return any(t.student == student and t.problem_id == problem_id for t in self._targets)
+
+    def enqueue(
+        self, problem_id: str, student: str, score_given: float, score_maximum: float, timestamp: datetime
+    ) -> int:
+        stamp = outbox.to_millisecond(timestamp)
+        with self._lock:
+            targets = [t for t in self._targets if t.student == student and t.problem_id == problem_id]
+            for target in targets:
+                for row in self._rows:
+                    if row.target is target and row.status == outbox.PENDING:
+                        row.status, row.claimed_by, row.claimed_until = outbox.SUPERSEDED, None, None
+                sent = stamp
+                if target.last_timestamp is not None and sent <= target.last_timestamp:
+                    sent = target.last_timestamp + outbox.TIMESTAMP_STEP
+                target.last_timestamp = sent
+                self._rows.append(
+                    _Score(
+                        len(self._rows) + 1,
+                        target,
+                        score_given,
+                        score_maximum,
+                        sent,
+                        outbox.PENDING,
+                        next_attempt_at=timestamp,
+                    )
+                )
+        return len(targets)
+
+    def claim(self, claim: str, now: datetime, limit: int) -> list[ClaimedScore]:
+        with self._lock:
+            due = sorted(
+                (
+                    row
+                    for row in self._rows
+                    if (row.status == outbox.PENDING and row.next_attempt_at <= now)
+                    or (
+                        row.status == outbox.SENDING
+                        and row.claimed_until is not None
+                        and row.claimed_until < now
+                    )
+                ),
+                key=lambda row: (row.timestamp, row.id),
+            )[:limit]
+            # Judged before any is changed, as the SQL query reads them in one statement.
+            judged = [(row, self._newer_exists(row), self._in_flight(row, now)) for row in due]
+            claimed = []
+            for row, newer, busy in judged:
+                if busy and not newer:
+                    continue
+                if newer:
+                    row.status, row.claimed_by, row.claimed_until = outbox.SUPERSEDED, None, None
+                    continue
+                row.status, row.claimed_by, row.claimed_until = outbox.SENDING, claim, now + outbox.LEASE
+                target = row.target
+                claimed.append(
+                    ClaimedScore(
+                        id=row.id,
+                        claim=claim,
+                        platform_id=target.platform.id,
+                        client_id=target.platform.client_id,
+                        token_url=target.platform.token_url,
+                        lineitem_url=target.lineitem_url,
+                        sub=target.sub,
+                        score_given=row.score_given,
+                        score_maximum=row.score_maximum,
+                        timestamp=row.timestamp,
+                        attempts=row.attempts,
+                    )
+                )
+            return claimed
+
+    def _newer_exists(self, row: _Score) -> bool:
+        return any(
+            other.target is row.target
+            and other is not row
+            and other.timestamp > row.timestamp
+            and other.status != outbox.SUPERSEDED
+            for other in self._rows
+        )
+
+    def _in_flight(self, row: _Score, now: datetime) -> bool:
+        return any(
+            other.target is row.target
+            and other is not row
+            and other.status == outbox.SENDING
+            and other.claimed_until is not None
+            and other.claimed_until >= now
+            for other in self._rows
+        )
+
+    def finish(self, score: ClaimedScore, outcome: Outcome, now: datetime) -> None:
+        change = outbox.finished_values(score, outcome, now)
+        with self._lock:
+            for row in self._rows:
+                if row.id == score.id and row.claimed_by == score.claim:
+                    for name, value in change.items():
+                        if hasattr(row, name):
+                            setattr(row, name, value)
+            if outcome.http_status is not None and change["status"] != outbox.PENDING:
+                for row in self._rows:
+                    if (
+                        row.status == outbox.PENDING
+                        and row.next_attempt_at > now
+                        and row.target.platform.id == score.platform_id
+                    ):
+                        row.next_attempt_at = now
+
+    def delivery_problems(self, *, limit: int = 200) -> list[DeliveryProblem]:
+        shown = (outbox.FAILED, outbox.PENDING, outbox.SENDING, outbox.SUPERSEDED)
+        with self._lock:
+            rows = [
+                row
+                for row in reversed(self._rows)
+                if (row.status == outbox.FAILED or row.attempts > 0) and row.status in shown
+            ][:limit]
+            return [
+                DeliveryProblem(
+                    outbox_id=row.id,
+                    student=row.target.student,
+                    problem_id=row.target.problem_id,
+                    issuer=row.target.platform.issuer,
+                    lineitem_url=row.target.lineitem_url,
+                    score_given=row.score_given,
+                    score_maximum=row.score_maximum,
+                    timestamp=row.timestamp,
+                    status=row.status,
+                    attempts=row.attempts,
+                    last_status=row.last_status,
+                    last_error=row.last_error,
+                )
+                for row in rows
+            ]
+
+    def scores(self) -> list[QueuedScore]:
+        with self._lock:
+            return [
+                QueuedScore(
+                    id=row.id,
+                    student=row.target.student,
+                    problem_id=row.target.problem_id,
+                    score_given=row.score_given,
+                    score_maximum=row.score_maximum,
+                    timestamp=row.timestamp,
+                    status=row.status,
+                    attempts=row.attempts,
+                    claimed_by=row.claimed_by,
+                    next_attempt_at=row.next_attempt_at,
+                )
+                for row in self._rows
+            ]
+
+
+class MemoryToolKeys:
+    """Signing keys in memory: made on first use, the newest signs, the one before stays published."""
+
+    def __init__(self) -> None:
+        self._live: list[RSAKey] = []  # newest first
+        self._lock = threading.Lock()
+
+    def _current(self) -> RSAKey:
+        if not self._live:
+            self._live.insert(0, tool_keys.generate())
+        return self._live[0]
+
+    def sign(self, claims: dict[str, Any]) -> str:
+        with self._lock:
+            key = self._current()
+        return tool_keys.sign_with(key, claims)
+
+    def public_jwks(self) -> dict[str, list[dict[str, Any]]]:
+        with self._lock:
+            self._current()
+            return {"keys": [dict(key.as_dict(private=False)) for key in self._live]}
+
+    def rotate(self) -> str:
+        with self._lock:
+            self._live = [tool_keys.generate(), *self._live[:1]]
+            kid = self._live[0].kid
+        assert kid is not None
+        return kid
+
+
+def grade_queue(
+    outbox_store: MemoryScoreOutbox,
+    problems: MemoryProblemStore,
+    submissions: Callable[[], list[SubmissionRecord]],
+) -> FilingHook:
+    """`app.lti.grades.queue_grade` for the fakes: a launched student's problem score, queued with
+    the submission (the hook runs before the submission is visible, so it is counted here)."""
+
+    def queue(stored: SubmissionRecord) -> None:
+        if stored.verdict is Verdicts.INVALID or not outbox_store.launched(stored.student, stored.problem_id):
+            return
+        document = problems.get(stored.problem_id, stored.problem_version, include_retired=True).document
+        best: dict[str, float] = {}
+        for row in [*submissions(), stored]:
+            if (row.problem_id, row.student) == (stored.problem_id, stored.student) and (
+                row.verdict is not Verdicts.INVALID
+            ):
+                best[row.part_id] = max(best.get(row.part_id, 0.0), row.score)
+        given, maximum = score_of(document, best)
+        outbox_store.enqueue(stored.problem_id, stored.student, given, maximum, stored.created_at)
+
+    return queue

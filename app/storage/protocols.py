@@ -9,10 +9,13 @@ from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
+from datetime import datetime
 from typing import Any, Protocol
 
 from app.db.class_results import PartResults
 from app.db.records import ApiKeyRecord, CreatedKey, Page, ProblemRecord, Role, SubmissionRecord
+from app.lti.outbox import ClaimedScore, DeliveryProblem, Outcome
+from app.lti.platforms import PlatformRecord
 from physics.verdict import Verdict
 
 DEFAULT_PAGE_LIMIT = 100
@@ -125,4 +128,73 @@ class CompiledCache(Protocol):
 
     def put(self, key: str, payload: bytes, mac: str) -> None:
         """Store or replace."""
+        ...
+
+
+@dataclass(frozen=True)
+class QueuedScore:
+    """One row of the grade passback outbox, as operators (and tests) see it."""
+
+    id: int
+    student: str
+    problem_id: str
+    score_given: float
+    score_maximum: float
+    timestamp: datetime
+    status: str
+    attempts: int
+    claimed_by: str | None
+    next_attempt_at: datetime
+
+
+class ScoreOutbox(Protocol):
+    """LMS grade passback: grade targets recorded at launch, scores queued with each graded
+    submission (inside `SubmissionStore.file`), claimed by delivery workers and delivered once."""
+
+    def add_target(
+        self, platform: PlatformRecord, *, student: str, problem_id: str, lineitem_url: str, sub: str
+    ) -> None:
+        """Where a student's score on a problem goes (a line item); recording it again changes nothing."""
+        ...
+
+    def enqueue(
+        self, problem_id: str, student: str, score_given: float, score_maximum: float, timestamp: datetime
+    ) -> int:
+        """Queue a score for every target of (student, problem), superseding any not yet sent;
+        returns how many. Timestamps of a target only grow (by a millisecond when equal)."""
+        ...
+
+    def claim(self, claim: str, now: datetime, limit: int) -> list[ClaimedScore]:
+        """Up to `limit` due scores, oldest timestamp first, for this worker alone until its lease
+        ends. A due score with a newer one for its target is superseded instead; one whose target has
+        an older score in flight waits."""
+        ...
+
+    def finish(self, score: ClaimedScore, outcome: Outcome, now: datetime) -> None:
+        """File the outcome, unless the claim was lost; a platform that answered ends the backoff of
+        every score waiting for it."""
+        ...
+
+    def delivery_problems(self, *, limit: int = 200) -> list[DeliveryProblem]:
+        """Scores failed, still being retried, or superseded after failed tries, newest first."""
+        ...
+
+    def scores(self) -> list[QueuedScore]:
+        """Every queued score, oldest first."""
+        ...
+
+
+class ToolKeys(Protocol):
+    """Our LTI signing keys (RSA), made on first use and rotated with overlap."""
+
+    def sign(self, claims: dict[str, Any]) -> str:
+        """A compact RS256 JWT over `claims` with the current key."""
+        ...
+
+    def public_jwks(self) -> dict[str, list[dict[str, Any]]]:
+        """The public halves of every live key (never empty)."""
+        ...
+
+    def rotate(self) -> str:
+        """A new signing key; the previous one stays published, older ones are retired. Its kid."""
         ...

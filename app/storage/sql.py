@@ -7,6 +7,7 @@ from collections.abc import Callable, Mapping, Sequence
 from datetime import datetime
 from typing import Any
 
+from sqlalchemy import select
 from sqlalchemy.orm import Session
 
 from app.db import class_results as results_repository
@@ -18,7 +19,12 @@ from app.db.class_results import PartResults
 from app.db.database import Database
 from app.db.records import ApiKeyRecord, CreatedKey, Page, ProblemRecord, Role, SubmissionRecord
 from app.db.types import utc_now
-from app.storage.protocols import DEFAULT_PAGE_LIMIT, Filed
+from app.lti import keys as tool_keys
+from app.lti import outbox
+from app.lti.models import LtiGradeTarget, LtiScoreOutbox
+from app.lti.outbox import ClaimedScore, DeliveryProblem, Outcome
+from app.lti.platforms import PlatformRecord
+from app.storage.protocols import DEFAULT_PAGE_LIMIT, Filed, QueuedScore
 from physics.verdict import Verdict
 
 Clock = Callable[[], datetime]
@@ -155,3 +161,77 @@ class SqlCompiledCache:
     def put(self, key: str, payload: bytes, mac: str) -> None:
         with self._database.session() as session:
             compiled_repository.put_compiled(session, key, payload, mac)
+
+
+class SqlScoreOutbox:
+    def __init__(self, database: Database) -> None:
+        self._database = database
+
+    def add_target(
+        self, platform: PlatformRecord, *, student: str, problem_id: str, lineitem_url: str, sub: str
+    ) -> None:
+        with self._database.session() as session:
+            outbox.add_grade_target(
+                session,
+                platform.id,
+                student=student,
+                problem_id=problem_id,
+                lineitem_url=lineitem_url,
+                sub=sub,
+            )
+
+    def enqueue(
+        self, problem_id: str, student: str, score_given: float, score_maximum: float, timestamp: datetime
+    ) -> int:
+        with self._database.session() as session:
+            return outbox.enqueue_scores(session, problem_id, student, score_given, score_maximum, timestamp)
+
+    def claim(self, claim: str, now: datetime, limit: int) -> list[ClaimedScore]:
+        return outbox.claim_batch(self._database, claim, now, limit)
+
+    def finish(self, score: ClaimedScore, outcome: Outcome, now: datetime) -> None:
+        outbox.finish(self._database, score, outcome, now)
+
+    def delivery_problems(self, *, limit: int = 200) -> list[DeliveryProblem]:
+        with self._database.session(read_only=True) as session:
+            return outbox.list_delivery_problems(session, limit=limit)
+
+    def scores(self) -> list[QueuedScore]:
+        query = (
+            select(LtiScoreOutbox, LtiGradeTarget)
+            .join(LtiGradeTarget, LtiGradeTarget.id == LtiScoreOutbox.target_id)
+            .order_by(LtiScoreOutbox.id)
+        )
+        with self._database.session(read_only=True) as session:
+            return [
+                QueuedScore(
+                    id=row.id,
+                    student=target.student,
+                    problem_id=target.problem_id,
+                    score_given=row.score_given,
+                    score_maximum=row.score_maximum,
+                    timestamp=row.timestamp,
+                    status=row.status,
+                    attempts=row.attempts,
+                    claimed_by=row.claimed_by,
+                    next_attempt_at=row.next_attempt_at,
+                )
+                for row, target in session.execute(query)
+            ]
+
+
+class SqlToolKeys:
+    def __init__(self, database: Database, clock: Clock = utc_now) -> None:
+        self._database, self._clock = database, clock
+
+    def sign(self, claims: dict[str, Any]) -> str:
+        with self._database.session() as session:
+            return tool_keys.sign(session, claims, clock=self._clock)
+
+    def public_jwks(self) -> dict[str, list[dict[str, Any]]]:
+        with self._database.session() as session:
+            tool_keys.signing_key(session, clock=self._clock)  # so the set is never empty
+            return tool_keys.public_jwks(session)
+
+    def rotate(self) -> str:
+        return tool_keys.rotate_keys(self._database, clock=self._clock)
