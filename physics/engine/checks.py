@@ -12,12 +12,14 @@ from __future__ import annotations
 
 import dataclasses
 from collections.abc import Callable, Mapping
+from functools import partial
 
 import sympy
 
+from physics.engine import damping
 from physics.engine.mechanics import Mechanics
 from physics.engine.method import Method, NotApplicable
-from physics.engine.model import Model, QuantityKind
+from physics.engine.model import Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points, prove_equal
 from physics.engine.simulation import Simulator
 from physics.errors import DerivationError
@@ -49,7 +51,13 @@ def physical_checks(
             )
             checks[f"limit {name} ({where})"] = stated.description or f"{name} → {expected}"
     checks.update(_frictionless(model, quantities, factory))
+    checks.update(damping.undamped_checks(model, quantities, partial(_frequency, factory)))
     return checks
+
+
+def _frequency(factory: MethodFactory, model: Model, coordinate: str) -> sympy.Expr:
+    method = factory(model, Mechanics(model))
+    return method.answer(Quantity("undamped", QuantityKind.ANGULAR_FREQUENCY, coordinate))
 
 
 def _limit_of(expr: sympy.Expr, where: tuple[tuple[sympy.Symbol, sympy.Expr], ...]) -> sympy.Expr:

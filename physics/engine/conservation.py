@@ -30,7 +30,9 @@ class ConservationMethod(Method):
         if self.model.frictions:
             raise NotApplicable("energy is not conserved with kinetic friction")
         if self.model.dissipative_forces:
-            raise NotApplicable("energy is not conserved with drag or forces that depend on the motion")
+            raise NotApplicable(
+                "energy is not conserved with drag or forces that depend on the motion or the time"
+            )
         mech = self.mech
         mass, potential = mech.mass_matrix, mech.potential
         cyclic = [i for i, q in enumerate(mech.q) if not potential.has(q) and not mass.has(q)]

@@ -8,6 +8,8 @@ import sympy
 
 from physics.engine.checks import physical_checks
 from physics.engine.conservation import ConservationMethod
+from physics.engine.dalembert import DAlembertMethod
+from physics.engine.frames import FramesMethod
 from physics.engine.lagrange import LagrangeMethod
 from physics.engine.mechanics import Mechanics
 from physics.engine.method import Method, NotApplicable
@@ -21,10 +23,11 @@ from physics.errors import DerivationError, PhyscheckError
 
 SIMULATION_POINTS = 3
 MIN_METHODS = 2
+_CORE_METHODS = frozenset({"lagrange", "newton", "conservation"})
 
 
 def _methods() -> tuple[type[Method], ...]:
-    return (LagrangeMethod, NewtonMethod, ConservationMethod)
+    return (LagrangeMethod, NewtonMethod, ConservationMethod, FramesMethod, DAlembertMethod)
 
 
 def derive(model: Model) -> Derivation:
@@ -71,7 +74,8 @@ def _derive(model: Model) -> Derivation:
                 continue
             results[quantity.name] = value
             answers[quantity.name][method.name] = value
-        reports.append(method.report(results, notes))
+        if results or method.steps or method.name in _CORE_METHODS:  # a method that never applied is noise
+            reports.append(method.report(results, notes))
     quantities: dict[str, sympy.Expr] = {}
     agreement: dict[str, tuple[str, ...]] = {}
     proofs: dict[str, str] = {}

@@ -74,6 +74,8 @@ def _with_model_symbols(model: Model, dims: Dims) -> dict[sympy.Symbol, Dimensio
             result[c.velocity] = dims[c.symbol] / TIME
     for pair in model.potentials:
         result[pair.distance] = LENGTH
+    if model.time is not None:
+        result.setdefault(model.time, TIME)
     return result
 
 
@@ -94,9 +96,12 @@ def _physics(model: Model, dims: Dims) -> list[Check]:
     names = {c.symbol: c.name for c in model.coordinates} | {
         c.velocity: f"{c.name}_dot" for c in model.coordinates
     }
+    if model.time is not None:
+        names[model.time] = "t"
     for symbol, value in model.state:
         if symbol in names and value != 0:
             own = dims.get(symbol) if symbol in dims else _velocity_dim(model, symbol, dims)
+            own = TIME if symbol == model.time else own
             checks.append((("state", names[symbol]), value, own))
     for index, force in enumerate(model.forces):
         if force.kind is ForceKind.APPLIED:

@@ -11,12 +11,14 @@ from typing import Any, TypeVar
 import sympy
 
 from physics.dimensions import Dimension
+from physics.engine import forcing, mode_shapes, reach_loading
 from physics.engine.dimensional import check_dimensions
 from physics.engine.distances import with_distance_sides
 from physics.engine.elements import expand_elements
 from physics.engine.model import (
     AXES,
     IMPACT_KINDS,
+    SLIP_KINDS,
     AppliedForce,
     Body,
     Collision,
@@ -24,6 +26,7 @@ from physics.engine.model import (
     ConstraintKind,
     Coordinate,
     ForceKind,
+    Frame,
     Friction,
     Impact,
     Model,
@@ -51,6 +54,7 @@ _SECTIONS = frozenset(
         "limits",
         "forces",
         "impact",
+        "frame",
     }
 )
 _QUANTITY_TARGET = {
@@ -62,7 +66,13 @@ _QUANTITY_TARGET = {
     QuantityKind.ANGULAR_FREQUENCY: "coordinate",
     QuantityKind.PERIOD: "coordinate",
     QuantityKind.TERMINAL_VELOCITY: "coordinate",
+    QuantityKind.SLIP_TIME: "constraint",
+    QuantityKind.SLIP_DISTANCE: "coordinate",
+    QuantityKind.SLIP_END_VELOCITY: "coordinate",
+    QuantityKind.DAMPED_FREQUENCY: "coordinate",
+    QuantityKind.DECAY_TIME: "coordinate",
 }
+_SLIPPING_KEYS = {"friction", "normal", "coefficient"}
 # Sizes beyond any textbook model: the derivation's cost grows fast with them, and models are uploaded.
 LIMITS = {
     "limits": 12,
@@ -147,12 +157,16 @@ def _load_low_level(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]
     frictions = _frictions(data.get("friction"), symbols, bodies, constraints, coordinates, errors)
     potentials = _potentials(data.get("potentials"), symbols, bodies, errors)
     collision = _collision(data.get("collision"), symbols, bodies, coordinates, errors)
-    state = _state(data.get("state"), symbols, coordinates, errors)
+    time = forcing.time_symbol(symbols)
+    state = _state(data.get("state"), symbols, coordinates, errors, time)
     quantities = _quantities(data.get("quantities"), symbols, coordinates, constraints, collision, errors)
     velocities = {f"{c.name}_dot": c.velocity for c in coordinates}
-    forces = _forces(data.get("forces"), symbols, {**coord_scope, **velocities}, bodies, errors)
+    forces = _forces(data.get("forces"), symbols, {"t": time, **coord_scope, **velocities}, bodies, errors)
     limits = _stated_limits(data.get("limits"), symbols, {q.name for q in quantities}, errors)
     impact = _impact(data.get("impact"), symbols, bodies, quantities, errors)
+    frame = _frame(data.get("frame"), symbols, bodies, errors)
+    reach_loading.check_targets(quantities, bodies, state, coordinates, errors.add)
+    _check_slip_quantities(quantities, frictions, errors)
     if errors.errors:
         raise SpecErrors(errors.errors)
     model = Model(
@@ -173,8 +187,46 @@ def _load_low_level(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]
         limits=limits,
         forces=forces,
         impact=impact,
+        frame=frame,
     )
-    return with_distance_sides(model)
+    return with_distance_sides(forcing.with_time(model, time))
+
+
+def _frame(
+    value: Any, symbols: Mapping[str, sympy.Symbol], bodies: tuple[Body, ...], errors: _Collector
+) -> Frame | None:
+    """`frame: {body: wedge}` (translating with a body) or `{rate: omega, axis: 0, bodies: [bead]}`."""
+    if value is None:
+        return None
+    path: Path = ("frame",)
+    spec = _mapping(value, path, errors)
+    _check_keys(spec, {"body", "rate", "axis", "bodies"}, set(), path, errors)
+    names = {b.name for b in bodies}
+    if ("body" in spec) == ("rate" in spec):
+        errors.add(
+            "give exactly one of body (a frame moving with that body) and rate (a turning frame)", path
+        )
+        return None
+    if "body" in spec:
+        for key in ("axis", "bodies"):
+            if key in spec:
+                errors.add("only a turning frame (rate) has this", (*path, key))
+        if spec["body"] not in names:
+            errors.add(f"unknown body {spec['body']!r}", (*path, "body"))
+            return None
+        return Frame(body=str(spec["body"]))
+    members = spec.get("bodies")
+    if not isinstance(members, list) or not members:
+        errors.add("a list of the bodies turning with the frame", (*path, "bodies"))
+        return None
+    for index, member in enumerate(members):
+        if member not in names:
+            errors.add(f"unknown body {member!r}", (*path, "bodies", index))
+    rate = errors.read(spec["rate"], symbols, (*path, "rate"))
+    axis = errors.read(spec.get("axis", 0), symbols, (*path, "axis"))
+    if rate is None or axis is None or not all(m in names for m in members):
+        return None
+    return Frame(rate=rate, axis=axis, bodies=tuple(map(str, members)))
 
 
 def _forces(
@@ -378,19 +430,45 @@ def _frictions(
         path: Path = ("friction", index)
         spec = _mapping(entry, path, errors)
         keys = {"constraint", "body", "coefficient", "sliding"}
-        _check_keys(spec, keys, keys, path, errors)
+        _check_keys(spec, keys | {"contact", "against"}, keys, path, errors)
         body = next((b for b in bodies if b.name == spec.get("body")), None)
+        contact: tuple[tuple[str, sympy.Expr], ...] = ()
         if body is None:
             errors.add(f"unknown body {spec.get('body')!r}", (*path, "body"))
-        elif body.angle is not None:
-            errors.add("kinetic friction is supported on particles only", (*path, "body"))
+        elif body.angle is not None and "contact" not in spec:
+            errors.add(
+                "friction on a rigid body acts at its contact point: give `contact: {x, y}`, the point "
+                "relative to the body's centre",
+                (*path, "contact"),
+            )
+        elif body.angle is None and "contact" in spec:
+            errors.add(
+                "a particle has no size: friction acts at its centre (leave out `contact`)",
+                (*path, "contact"),
+            )
+        elif "contact" in spec:
+            contact = _axes(spec["contact"], symbols, (*path, "contact"), errors)
+        against = spec.get("against")
+        if against is not None and (
+            against == spec.get("body") or not any(b.name == against for b in bodies)
+        ):
+            errors.add(f"expected another body, the one {spec.get('body')!r} slides on", (*path, "against"))
         if not any(c.name == spec.get("constraint") for c in constraints):
             errors.add(f"unknown constraint {spec.get('constraint')!r}", (*path, "constraint"))
         if not any(c.name == spec.get("sliding") for c in coordinates):
             errors.add(f"unknown coordinate {spec.get('sliding')!r}", (*path, "sliding"))
         mu = errors.read(spec.get("coefficient"), symbols, (*path, "coefficient"))
         if mu is not None and body is not None:
-            result.append(Friction(str(spec["constraint"]), body.name, mu, str(spec["sliding"])))
+            result.append(
+                Friction(
+                    str(spec["constraint"]),
+                    body.name,
+                    mu,
+                    str(spec["sliding"]),
+                    contact,
+                    str(against) if against is not None else None,
+                )
+            )
     return tuple(result)
 
 
@@ -529,13 +607,18 @@ def _coordinate_values(
 
 
 def _state(
-    value: Any, symbols: Mapping[str, sympy.Symbol], coordinates: tuple[Coordinate, ...], errors: _Collector
+    value: Any,
+    symbols: Mapping[str, sympy.Symbol],
+    coordinates: tuple[Coordinate, ...],
+    errors: _Collector,
+    time: sympy.Symbol,
 ) -> tuple[tuple[sympy.Symbol, sympy.Expr], ...]:
     known = {c.name: c.symbol for c in coordinates} | {f"{c.name}_dot": c.velocity for c in coordinates}
+    known.setdefault(forcing.NAME, time)  # the time, for forces that depend on it
     given: dict[sympy.Symbol, sympy.Expr] = {c.velocity: sympy.Integer(0) for c in coordinates}
     for name, text in _mapping(value, ("state",), errors, required=False).items():
         if name not in known:
-            errors.add(f"unknown coordinate or velocity {name!r}", ("state", str(name)))
+            errors.add(f"unknown coordinate, velocity or time {name!r}", ("state", str(name)))
             continue
         expr = errors.read(text, symbols, ("state", str(name)))
         if expr is not None:
@@ -647,7 +730,15 @@ def _quantity(
         errors.add(f"give exactly one of {[k.value for k in QuantityKind]}", path)
         return None
     kind = QuantityKind(kinds[0])
-    allowed = {kind.value} | ({"zero"} if kind is QuantityKind.SOLVE else set())
+    if reach_loading.handles(kind, spec):
+        return reach_loading.load_quantity(
+            name, kind, spec, path, symbols, coordinates, constraints, errors.add
+        )
+    allowed = (
+        {kind.value}
+        | ({"zero"} if kind is QuantityKind.SOLVE else set())
+        | (_SLIPPING_KEYS if kind is QuantityKind.SLIPPING else set())
+    )
     _check_keys(spec, allowed, allowed, path, errors)
     target = spec[kind.value]
     where: Path = (*path, kind.value)
@@ -663,11 +754,15 @@ def _quantity(
         return Quantity(name, kind, str(target))
     if kind in IMPACT_KINDS:  # checked against the impact section by `_impact`
         return Quantity(name, kind, str(target))
+    if kind is QuantityKind.MODE_SHAPE:
+        return errors.attempt(lambda: mode_shapes.read(name, target, where, coordinates))
     if kind is QuantityKind.NORMAL_FREQUENCY:
         if isinstance(target, bool) or not isinstance(target, int) or not 1 <= target <= len(coordinates):
             errors.add(f"the mode's number, 1 (lowest) to {len(coordinates)}", where)
             return None
         return Quantity(name, kind, str(target))
+    if kind is QuantityKind.SLIPPING:
+        return _slipping_quantity(name, spec, path, symbols, constraints, errors)
     if kind is QuantityKind.SOLVE:
         if target not in symbols:
             errors.add(f"unknown symbol {target!r}", where)
@@ -690,3 +785,53 @@ def _quantity(
         errors.add(f"the collision's projectile is {collision.projectile!r}, not {target!r}", where)
         return None
     return Quantity(name, kind, str(target))
+
+
+def _slipping_quantity(
+    name: str,
+    spec: Mapping[str, Any],
+    path: Path,
+    symbols: Mapping[str, sympy.Symbol],
+    constraints: tuple[Constraint, ...],
+    errors: _Collector,
+) -> Quantity | None:
+    """`{slipping: theta, friction: hold, normal: slope, coefficient: mu_s}`: the value of a parameter at
+    which the holding contact's friction force reaches mu_s times its normal force."""
+    parameter = spec.get("slipping")
+    found = True
+    if parameter not in symbols:
+        errors.add(f"unknown symbol {parameter!r}", (*path, "slipping"))
+        found = False
+    names = {c.name for c in constraints}
+    for key in ("friction", "normal"):
+        if spec.get(key) not in names:
+            errors.add(f"unknown constraint {spec.get(key)!r}", (*path, key))
+            found = False
+    coefficient = errors.read(spec.get("coefficient"), symbols, (*path, "coefficient"))
+    if not found or coefficient is None:
+        return None
+    return Quantity(
+        name,
+        QuantityKind.SLIPPING,
+        parameter=symbols[str(parameter)],
+        contact=(str(spec["friction"]), str(spec["normal"])),
+        coefficient=coefficient,
+    )
+
+
+def _check_slip_quantities(
+    quantities: tuple[Quantity, ...], frictions: tuple[Friction, ...], errors: _Collector
+) -> None:
+    """A sliding-phase quantity needs the kinetic friction whose slipping it follows."""
+    for quantity in quantities:
+        path: Path = ("quantities", quantity.name, quantity.kind.value)
+        if quantity.kind is QuantityKind.SLIP_TIME and not any(
+            f.constraint == quantity.target for f in frictions
+        ):
+            errors.add(f"no kinetic friction acts at the constraint {quantity.target!r}", path)
+        elif quantity.kind in SLIP_KINDS - {QuantityKind.SLIP_TIME} and len(frictions) != 1:
+            errors.add(
+                f"the model has {len(frictions)} kinetic frictions; this quantity follows the slipping of "
+                "exactly one (ask for `slip_time: <constraint>` instead)",
+                path,
+            )

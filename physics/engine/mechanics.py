@@ -12,6 +12,7 @@ from functools import cached_property
 
 import sympy
 
+from physics.engine.contact_friction import friction_load
 from physics.engine.model import Body, ForceKind, Model, PairPotential
 from physics.errors import DerivationError
 
@@ -156,13 +157,14 @@ class Mechanics:
         return [sympy.simplify(t / norm) for t in tangent]
 
     def friction_forces(self, multipliers: Sequence[sympy.Expr]) -> list[sympy.Expr]:
-        """Kinetic friction on each Cartesian dof: -mu * lambda along the sliding direction."""
+        """Kinetic friction on each Cartesian dof: -mu * lambda along the sliding direction (at a rigid
+        body's contact point, with its torque; on a moving surface, with its reaction)."""
         total = [sympy.Integer(0) for _ in self.dofs]
         names = [c.name for c in self.model.constraints]
         for friction in self.model.frictions:
             normal = multipliers[names.index(friction.constraint)]
-            direction = self.sliding_direction(friction.body, friction.sliding)
-            total = [t - friction.coefficient * normal * u for t, u in zip(total, direction, strict=True)]
+            load = friction_load(self, friction, friction.coefficient * normal)
+            total = [t + f for t, f in zip(total, load, strict=True)]
         return total
 
     def applied_forces(self, cartesian: bool, drag_only: bool = False) -> list[sympy.Expr]:

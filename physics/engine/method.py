@@ -8,9 +8,9 @@ from functools import cached_property, lru_cache
 
 import sympy
 
-from physics.engine import impact, modes
+from physics.engine import damping, impact, mode_shapes, modes, slipping, trajectory, work_energy
 from physics.engine.mechanics import Mechanics
-from physics.engine.model import IMPACT_KINDS, Model, Quantity, QuantityKind
+from physics.engine.model import IMPACT_KINDS, SLIP_KINDS, TRAJECTORY_KINDS, Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
 from physics.engine.results import MethodReport, Step
 from physics.errors import DerivationError
@@ -36,6 +36,13 @@ class Method(ABC):
         self.steps: list[Step] = []
         self._logged: set[str] = set()
         self._impact: impact.Worked | None = None  # the impact worked once, for all its quantities
+        self.arrivals: dict[tuple[object, ...], sympy.Expr] = {}  # work_energy: v^2 where the motion arrives
+
+    @cached_property
+    def free(self) -> Method:
+        """This method on the model with its state left free: accelerations as functions of q and q'."""
+        model = dataclasses.replace(self.model, state=())
+        return type(self)(model, Mechanics(model))
 
     def tex(self, expr: sympy.Basic) -> str:
         return str(sympy.latex(expr, symbol_names=self.mech.latex_names))
@@ -98,6 +105,10 @@ class Method(ABC):
 
     def answer(self, quantity: Quantity) -> sympy.Expr:
         kind = quantity.kind
+        if quantity.at:  # where the motion from the state arrives: speed, velocity, force, acceleration
+            return work_energy.answer(self, quantity)
+        if kind in TRAJECTORY_KINDS:
+            return trajectory.answer(self, quantity)
         if kind is QuantityKind.ACCELERATION:
             return self.acceleration(quantity.target)
         if kind is QuantityKind.FORCE:
@@ -131,6 +142,17 @@ class Method(ABC):
             return self.terminal_velocity(quantity.target)
         if kind in IMPACT_KINDS:
             return self.impact(quantity)
+        if kind in SLIP_KINDS:
+            return slipping.sliding_phase(self, quantity)
+        if kind is QuantityKind.SLIPPING:
+            return slipping.slipping_limit(self, quantity)
+        if kind in damping.KINDS:
+            try:
+                return damping.answer(self, quantity, stable_equilibrium(self.model))
+            except damping.NotThisWay as why:
+                raise NotApplicable(str(why)) from None
+        if kind is QuantityKind.MODE_SHAPE:
+            return mode_shapes.answer(self, quantity, stable_equilibrium(self.model))
         if kind is QuantityKind.SOLVE:
             assert quantity.inner is not None and quantity.parameter is not None
             return self.solve_for(quantity.parameter, self.answer(quantity.inner), quantity.name)

@@ -12,9 +12,9 @@ from collections.abc import Callable
 
 import sympy
 
-from physics.engine import collision, impact
+from physics.engine import collision, damping, impact, reach_mistakes, slipping
 from physics.engine.mechanics import Mechanics
-from physics.engine.model import IMPACT_KINDS, ConstraintKind, Model, Quantity, QuantityKind
+from physics.engine.model import IMPACT_KINDS, SLIP_KINDS, ConstraintKind, Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
 from physics.engine.results import KnownMistake, LimitCase
 
@@ -77,7 +77,7 @@ def supports(model: Model) -> list[str]:
 def generate_mistakes(
     model: Model, quantity: Quantity, reference: sympy.Expr, rederive: Rederive
 ) -> tuple[KnownMistake, ...]:
-    candidates: list[tuple[sympy.Expr | None, str]] = []
+    candidates = reach_mistakes.candidates(model, quantity, reference, rederive)  # theirs first: named slips
     trig = reference.atoms(sympy.sin, sympy.cos)
     if trig:
         swap = {t: (sympy.cos if isinstance(t, sympy.sin) else sympy.sin)(t.args[0]) for t in trig}
@@ -111,8 +111,11 @@ def generate_mistakes(
         candidates.append((1 - reference, FRACTION_KEPT))
     if quantity.kind in IMPACT_KINDS and model.impact is not None:
         candidates += impact.mistakes(model, reference)
+    if quantity.kind in SLIP_KINDS:
+        candidates.append((slipping.without_torque(model, quantity, rederive), slipping.NO_TORQUE))
     if quantity.kind in (QuantityKind.ANGULAR_FREQUENCY, QuantityKind.PERIOD):
         candidates += _mass_mistakes(model, quantity, reference, rederive)
+    candidates += damping.mistakes(model, quantity, reference)
     return _distinct(model, reference, candidates)
 
 
@@ -229,6 +232,7 @@ def generate_limits(model: Model, reference: sympy.Expr) -> tuple[LimitCase, ...
     for friction in model.frictions:
         if isinstance(friction.coefficient, sympy.Symbol):
             cases.append((friction.coefficient, sympy.Integer(0), "no friction"))
+    cases += damping.limit_cases(model)
     masses = [b.mass for b in model.bodies if isinstance(b.mass, sympy.Symbol)]
     if len(set(masses)) >= 2:
         for mass in dict.fromkeys(masses):

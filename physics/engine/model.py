@@ -59,13 +59,16 @@ class Constraint:
 
 @dataclass(frozen=True)
 class Friction:
-    """Kinetic friction mu*lambda at a constraint between a particle and a fixed surface, opposing
-    the sliding, which is towards increasing `sliding` coordinate."""
+    """Kinetic friction mu*lambda at a constraint, opposing the slip, which is towards increasing
+    `sliding` coordinate. On a rigid body it acts at the `contact` point (relative to the body's centre)
+    and so has a torque; with `against`, the surface is that moving body, which feels the reaction."""
 
     constraint: str
     body: str
     coefficient: sympy.Expr
     sliding: str
+    contact: tuple[tuple[str, sympy.Expr], ...] = ()  # (axis, offset from the centre); () at the centre
+    against: str | None = None
 
 
 @dataclass(frozen=True)
@@ -100,6 +103,18 @@ class AppliedForce:
     def constant(self, moving: set[sympy.Symbol]) -> bool:
         """A given force that depends on no coordinate or velocity: it has a potential, -F . r."""
         return self.kind is ForceKind.APPLIED and not any(e.free_symbols & moving for _, e in self.components)
+
+
+@dataclass(frozen=True)
+class Frame:
+    """The reference frame the fictitious-forces method works in: translating with a body (each other
+    body feels -m A, A the body's acceleration), or turning at a constant `rate` about the vertical line
+    x = `axis`, its `bodies` turning with it (centrifugal m rate^2 (x - axis) on each)."""
+
+    body: str | None = None
+    rate: sympy.Expr | None = None
+    axis: sympy.Expr = ZERO
+    bodies: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -147,11 +162,26 @@ class QuantityKind(StrEnum):
     FINAL_VELOCITY = "final_velocity"  # a body's velocity after an impact, along its one axis
     FINAL_SPEED = "final_speed"  # a body's speed after an impact
     KINETIC_ENERGY_LOST = "kinetic_energy_lost"  # by the bodies of an impact (negative: released)
+    SPEED = "speed"  # a body's speed when the coordinates reach `at`, moving from the state
+    VELOCITY = "velocity"  # a coordinate's velocity when the coordinates reach `at`
+    TIME_OF_FLIGHT = "time_of_flight"  # of a body launched at the state, until it lands at `level`
+    RANGE = "range"  # the body's horizontal displacement when it lands at `level`
+    MAX_HEIGHT = "max_height"  # the body's highest point above where it was launched
+    SLIP_TIME = "slip_time"  # until a contact with kinetic friction stops slipping (a ball starts rolling)
+    SLIP_DISTANCE = "slip_distance"  # how far a coordinate moves until then
+    SLIP_END_VELOCITY = "slip_end_velocity"  # a coordinate's velocity when the slipping stops
+    SLIPPING = "slipping"  # the parameter value at which a holding contact's |f| reaches mu_s N
+    DAMPED_FREQUENCY = "damped_frequency"  # of an underdamped oscillation about the equilibrium
+    DECAY_TIME = "decay_time"  # the amplitude's e-folding time of that oscillation
+    MODE_SHAPE = "mode_shape"  # amplitude ratio of two coordinates in the n-th normal mode
 
 
+REACH_KINDS = frozenset({QuantityKind.SPEED, QuantityKind.VELOCITY})
+TRAJECTORY_KINDS = frozenset({QuantityKind.TIME_OF_FLIGHT, QuantityKind.RANGE, QuantityKind.MAX_HEIGHT})
 IMPACT_KINDS = frozenset(
     {QuantityKind.FINAL_VELOCITY, QuantityKind.FINAL_SPEED, QuantityKind.KINETIC_ENERGY_LOST}
 )
+SLIP_KINDS = frozenset({QuantityKind.SLIP_TIME, QuantityKind.SLIP_DISTANCE, QuantityKind.SLIP_END_VELOCITY})
 
 
 @dataclass(frozen=True)
@@ -164,6 +194,14 @@ class Quantity:
     # for EXPRESSION: the formula, and the stand-in symbol of each earlier quantity it uses
     expression: sympy.Expr | None = None
     uses: tuple[tuple[sympy.Symbol, str], ...] = ()
+    # where the coordinates are when the quantity is taken (speed, velocity; force and acceleration
+    # there too), reached by the motion from the model's state: ((coordinate, value),)
+    at: tuple[tuple[str, sympy.Expr], ...] = ()
+    level: sympy.Expr | None = None  # TIME_OF_FLIGHT, RANGE: the landing height (y); None: the launch's
+    # for SLIPPING: the holding contact's friction and normal constraints, and mu_s
+    contact: tuple[str, str] = ("", "")
+    coefficient: sympy.Expr | None = None
+    ratio: tuple[str, ...] = ()  # for MODE_SHAPE: (numerator, denominator) coordinates; target = mode
 
 
 @dataclass(frozen=True)
@@ -196,6 +234,8 @@ class Model:
     forces: tuple[AppliedForce, ...] = ()
     dimensions_checked: bool = False
     impact: Impact | None = None  # every term was found dimensionally consistent when loaded
+    frame: Frame | None = None  # declared (`frame:`) or implied by an element (a wedge, a rotating frame)
+    time: sympy.Symbol | None = None  # the time `t`, when a given force depends on it
 
     def body(self, name: str) -> Body:
         return next(b for b in self.bodies if b.name == name)
@@ -208,7 +248,8 @@ class Model:
 
     @property
     def moving_symbols(self) -> set[sympy.Symbol]:
-        return {c.symbol for c in self.coordinates} | {c.velocity for c in self.coordinates}
+        moving = {c.symbol for c in self.coordinates} | {c.velocity for c in self.coordinates}
+        return moving | ({self.time} if self.time is not None else set())
 
     @property
     def dissipative_forces(self) -> tuple[AppliedForce, ...]:

@@ -66,6 +66,8 @@ def _stable(model: Model, mech: Mechanics, point: dict[sympy.Symbol, sympy.Expr]
     for at in _numbers(model, ORDER_POINTS):
         matrix = mpmath.matrix([[float(v) for v in row] for row in hessian.subs(at).tolist()])
         values = mpmath.eig(matrix, left=False, right=False)
+        if isinstance(values, tuple):  # mpmath returns (E, EL, ER) for a 1 x 1 matrix whatever is asked
+            values = values[0]
         scale = max([abs(complex(v)) for v in values] + [1e-300])
         if any(complex(v).real < -1e-9 * scale for v in values):
             return False

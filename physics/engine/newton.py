@@ -13,6 +13,7 @@ from functools import cached_property
 import sympy
 
 from physics.engine import collision
+from physics.engine.frames import centripetal_accelerations
 from physics.engine.mechanics import solve_linear, time_derivative
 from physics.engine.method import Method, NotApplicable
 from physics.engine.model import QuantityKind
@@ -25,7 +26,17 @@ class NewtonMethod(Method):
     def derive(self) -> None:
         mech = self.mech
         applied = self.applied_forces
-        for d, force in zip(mech.dofs, applied, strict=True):
+        frame = self.model.frame
+        if frame is not None and frame.rate is not None and any(c != 0 for c in self.centripetal):
+            self.step(
+                "In the ground's frame the turning bodies accelerate towards the axis",
+                r"a_x = \ddot{x} - \left("
+                + self.tex(frame.rate)
+                + r"\right)^2 (x - "
+                + self.tex(frame.axis)
+                + ")",
+            )
+        for d, force, centripetal in zip(mech.dofs, applied, self.centripetal, strict=True):
             constraint_terms = sympy.Add(
                 *(
                     lam * g
@@ -38,20 +49,25 @@ class NewtonMethod(Method):
             )
             self.step(
                 f"Newton's second law, {d.name}",
-                self.tex(sympy.Eq(d.inertia * d.acceleration, force + constraint_terms)),
+                self.tex(sympy.Eq(d.inertia * (d.acceleration + centripetal), force + constraint_terms)),
             )
         for constraint in self.model.constraints:
             self.step(f"Constraint {constraint.name}", self.tex(sympy.Eq(constraint.gap, 0)))
 
     @cached_property
+    def centripetal(self) -> list[sympy.Expr]:
+        return centripetal_accelerations(self.model, self.mech)
+
+    @cached_property
     def applied_forces(self) -> list[sympy.Expr]:
-        """Gravity and potentials as -grad V in Cartesian coordinates, plus kinetic friction."""
+        """Gravity and potentials as -grad V in Cartesian coordinates, plus kinetic friction; a turning
+        frame's centrifugal potential stands for the centripetal acceleration (moved to the left side)."""
         mech = self.mech
         friction = mech.friction_forces(mech.multipliers)
         applied = mech.applied_forces(True)
         return [
-            -sympy.diff(mech.cartesian_potential, d.symbol) + f + a
-            for d, f, a in zip(mech.dofs, friction, applied, strict=True)
+            -sympy.diff(mech.cartesian_potential, d.symbol) + f + a + d.inertia * c
+            for d, f, a, c in zip(mech.dofs, friction, applied, self.centripetal, strict=True)
         ]
 
     @cached_property
@@ -59,14 +75,14 @@ class NewtonMethod(Method):
         """Cartesian accelerations and multipliers at the model's state."""
         mech, model = self.mech, self.model
         equations: list[sympy.Expr] = []
-        for d, force in zip(mech.dofs, self.applied_forces, strict=True):
+        for d, force, centripetal in zip(mech.dofs, self.applied_forces, self.centripetal, strict=True):
             constraint_terms = sympy.Add(
                 *(
                     lam * sympy.diff(c.gap, d.symbol)
                     for lam, c in zip(mech.multipliers, model.constraints, strict=True)
                 )
             )
-            equations.append(d.inertia * d.acceleration - force - constraint_terms)
+            equations.append(d.inertia * (d.acceleration + centripetal) - force - constraint_terms)
         for c in model.constraints:
             gradient = [sympy.diff(c.gap, d.symbol) for d in mech.dofs]
             second = sympy.Add(*(g * d.acceleration for g, d in zip(gradient, mech.dofs, strict=True)))

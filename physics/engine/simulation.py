@@ -10,18 +10,19 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from functools import cached_property
+from functools import cached_property, partial
 from typing import Any
 
 import mpmath
 import sympy
 
-from physics.engine import impact_simulation
+from physics.engine import impact_simulation, slipping
 from physics.engine.collision import merged
+from physics.engine.contact_friction import slip_velocity
 from physics.engine.lagrange import LagrangeMethod
 from physics.engine.mechanics import Mechanics
 from physics.engine.method import stable_equilibrium
-from physics.engine.model import IMPACT_KINDS, Model, Quantity, QuantityKind
+from physics.engine.model import IMPACT_KINDS, SLIP_KINDS, TRAJECTORY_KINDS, Model, Quantity, QuantityKind
 from physics.engine.results import SimulationCheck
 from physics.errors import DerivationError
 
@@ -68,6 +69,12 @@ class Dynamics:
         self.n = len(self.mech.q)
         self.size = len(unknowns)
         self.params = [p for p in model.parameters if p not in self.mech.q]
+        # a force in the time: the time is one more argument, advanced by a clock during integration
+        self.clock: int | None = None
+        if model.time is not None:
+            if model.time not in self.params:
+                self.params.append(model.time)
+            self.clock = self.params.index(model.time)
         args = [*self.mech.q, *self.mech.qd, *self.params]
         self._matrix = _compile(args, list(matrix))
         self._rhs = _compile(args, list(rhs))
@@ -92,7 +99,21 @@ class Dynamics:
         self._dissipative = _compile([*args, *lam], self.mech.generalized(dissipative))
 
     def values(self, point: Point) -> Vector:
-        return [point[p] for p in self.params]
+        """The parameters' values at the point (the time, when not a parameter, from the state)."""
+        start = dict(self.model.state).get(self.model.time) if self.model.time is not None else None
+        return [point[p] if p in point or start is None else _evaluate(start, point) for p in self.params]
+
+    def initial(self, q: Vector, qd: Vector, params: Vector) -> Vector:
+        """The integrated state: positions, velocities and, with a force in the time, the time."""
+        return [*q, *qd, *([params[self.clock]] if self.clock is not None else [])]
+
+    def at(self, params: Vector, y: Vector, index: int) -> Vector:
+        """The parameters at the integrated state y, whose time (if any) is at y[index]."""
+        if self.clock is None:
+            return params
+        now = list(params)
+        now[self.clock] = y[index]
+        return now
 
     def unknowns(self, q: Vector, qd: Vector, params: Vector, extra: Vector | None = None) -> Vector:
         flat = self._matrix(*q, *qd, *params)
@@ -104,6 +125,12 @@ class Dynamics:
 
     def derivative(self, params: Vector) -> Callable[[Vector], Vector]:
         n = self.n
+        if self.clock is not None:  # y = q, q', t: the time advances with the motion
+            return lambda y: [
+                *y[n : 2 * n],
+                *self.unknowns(y[:n], y[n : 2 * n], self.at(params, y, 2 * n))[:n],
+                1.0,
+            ]
         return lambda y: y[n:] + self.unknowns(y[:n], y[n:], params)[:n]
 
     def power(self, q: Vector, qd: Vector, params: Vector, multipliers: Vector) -> float:
@@ -162,7 +189,7 @@ class Simulator:
     def check(
         self, quantity: Quantity, reference: sympy.Expr, points: Sequence[Point]
     ) -> SimulationCheck | None:
-        measure = self._measures().get(quantity.kind)
+        measure = self._reach if _reaches(quantity) else self._measures().get(quantity.kind)
         if measure is None:
             return None
         worst = 0.0
@@ -183,6 +210,8 @@ class Simulator:
         return SimulationCheck(compared, worst, len(points))
 
     def _measures(self) -> dict[QuantityKind, Measure]:
+        from physics.engine import oscillation_measures  # it integrates with this module's tools
+
         return {
             QuantityKind.ACCELERATION: self._acceleration,
             QuantityKind.FORCE: self._force,
@@ -194,10 +223,19 @@ class Simulator:
             QuantityKind.SOLVE: self._solve,
             QuantityKind.TERMINAL_VELOCITY: self._terminal_velocity,
             QuantityKind.NORMAL_FREQUENCY: self._normal_frequency,
+            **oscillation_measures.measures(self),
             QuantityKind.PROJECTILE_SPEED: self._collision,
             QuantityKind.ENERGY_FRACTION_LOST: self._collision,
             **dict.fromkeys(IMPACT_KINDS, self._impact),
+            **dict.fromkeys(SLIP_KINDS, partial(slipping.measure_sliding, self)),
+            QuantityKind.SLIPPING: partial(slipping.measure_slipping, self),
         }
+
+    @cached_property
+    def _reach(self) -> Measure:
+        from physics.engine.reach_simulation import ReachMeasure  # it builds on this module
+
+        return ReachMeasure(self)
 
     @cached_property
     def _impact(self) -> impact_simulation.ImpactMeasure:
@@ -238,28 +276,30 @@ class Simulator:
         """(change of T + V, work of the non-conservative forces, largest kinetic energy) along a short
         integrated motion from the model's state, stopped where a sliding body turns back."""
         dyn = self.dynamics
-        names = [c.name for c in self.model.coordinates]
         params = dyn.values(point)
         q, qd = self._start(point)
         n = dyn.n
         h = self._step_for(point)
 
         def f(y: Vector) -> Vector:
-            unknowns = dyn.unknowns(y[:n], y[n : 2 * n], params)
+            now = dyn.at(params, y, 2 * n + 2)  # a force in the time works at the time of the motion
+            unknowns = dyn.unknowns(y[:n], y[n : 2 * n], now)
             return [
                 *y[n : 2 * n],
                 *unknowns[:n],
-                dyn.power(y[:n], y[n : 2 * n], params, unknowns[n:]),
-                dyn.dissipation(y[:n], y[n : 2 * n], params, unknowns[n:]),
+                dyn.power(y[:n], y[n : 2 * n], now, unknowns[n:]),
+                dyn.dissipation(y[:n], y[n : 2 * n], now, unknowns[n:]),
+                *([1.0] if dyn.clock is not None else []),
             ]
 
-        sliding = [names.index(friction.sliding) for friction in self.model.frictions]
-        states = [[*q, *qd, 0.0, 0.0]]
+        slips = self._slip_velocities
+        initial = slips(*q, *qd, *params)
+        states = [[*q, *qd, 0.0, 0.0, *dyn.initial([], [], params)]]
         for _ in range(ENERGY_STEPS):
             after = rk4(f, states[-1], h, 1)[-1]
-            backwards = [i for i in sliding if after[n + i] < 0]
-            if backwards and all(states[0][n + i] <= 0 for i in backwards):
-                name = names[backwards[0]]
+            backwards = [k for k, u in enumerate(slips(*after[: 2 * n], *params)) if u < 0]
+            if backwards and all(initial[k] <= 0 for k in backwards):
+                name = self.model.frictions[backwards[0]].sliding
                 raise DerivationError(
                     f"released from the model's state, the body slides towards decreasing {name}, against the "
                     f"direction the model's kinetic friction assumes (`sliding: {name}`): give the state a "
@@ -273,7 +313,14 @@ class Simulator:
         start, end = states[0], states[-1]
         change = dyn.energy(end[:n], end[n : 2 * n], params) - dyn.energy(start[:n], start[n : 2 * n], params)
         kinetic = max(dyn.energy(y[:n], y[n : 2 * n], params) - dyn.potential(y[:n], params) for y in states)
-        return change, end[-2], abs(kinetic), end[-1]
+        return change, end[2 * n], abs(kinetic), end[2 * n + 1]
+
+    @cached_property
+    def _slip_velocities(self) -> Callable[..., list[float]]:
+        """Each kinetic friction's slip velocity (positive: slipping the way `sliding` says)."""
+        mech = self.dynamics.mech
+        exprs = [slip_velocity(mech, f) for f in self.model.frictions]
+        return _compile([*mech.q, *mech.qd, *self.dynamics.params], exprs)
 
     # --- dynamics from the model's state -----------------------------------------------------
 
@@ -309,9 +356,10 @@ class Simulator:
     ) -> tuple[Vector, ...]:
         dyn = self.dynamics
         q, qd = start if start is not None else self._start(point)
-        f = dyn.derivative(dyn.values(point))
-        forward = rk4(f, q + qd, h / steps, steps)[-1]
-        backward = rk4(f, q + qd, -h / steps, steps)[-1]
+        params = dyn.values(point)
+        f = dyn.derivative(params)
+        forward = rk4(f, dyn.initial(q, qd, params), h / steps, steps)[-1]
+        backward = rk4(f, dyn.initial(q, qd, params), -h / steps, steps)[-1]
         return backward[: dyn.n], q, forward[: dyn.n]
 
     def _acceleration(self, quantity: Quantity, point: Point, expected: float) -> Measured:
@@ -381,9 +429,9 @@ class Simulator:
         units = [flat_u[i * n : (i + 1) * n] for i in range(len(flat_u) // n)]
         return grads, base_f(*values), units, masses_f(*values)
 
-    def _normal_frequency(self, quantity: Quantity, point: Point, expected: float) -> Measured:
-        """Released from the equilibrium displaced along the mode (M and K measured numerically from the
-        compiled energy), the integrated motion's period."""
+    def numeric_modes(self, point: Point) -> tuple[Vector, list[tuple[float, Vector]]]:
+        """(equilibrium, [(omega^2, shape)] lowest first): M and K measured numerically from the compiled
+        energy at the stable equilibrium, never from the derived matrices."""
         dyn = self.dynamics
         params = dyn.values(point)
         n = dyn.n
@@ -403,12 +451,21 @@ class Simulator:
                     + dyn.potential(shifted(-h, -h), params)
                 ) / (4 * h * h)
         mass = mpmath.matrix(dyn.mass(q0, params))
-        values, vectors = mpmath.eig(mass**-1 * stiffness)
+        found = mpmath.eig(mass**-1 * stiffness)
+        values, vectors = found[0], found[-1]  # a 1 x 1 matrix gives (E, EL, ER) whatever is asked
         modes = sorted(
             (float(mpmath.re(v)), [float(mpmath.re(vectors[k, c])) for k in range(n)])
             for c, v in enumerate(values)
             if abs(v) > 1e-9 * max(abs(x) for x in values)
         )
+        return q0, modes
+
+    def _normal_frequency(self, quantity: Quantity, point: Point, expected: float) -> Measured:
+        """Released from the equilibrium displaced along the mode, the integrated motion's period."""
+        dyn = self.dynamics
+        params = dyn.values(point)
+        n = dyn.n
+        q0, modes = self.numeric_modes(point)
         omega2, shape = modes[int(quantity.target) - 1]
         largest = max(range(n), key=lambda k: abs(shape[k]))
         size = 1e-4 / abs(shape[largest])
@@ -621,6 +678,11 @@ class Simulator:
             reached,
             abs(reached - target) / max(abs(target), 1e-12),
         )
+
+
+def _reaches(quantity: Quantity) -> bool:
+    """Taken where the motion from the state gets to (`at`, a flight's end or apex): see reach_simulation."""
+    return bool(quantity.at) or quantity.kind in TRAJECTORY_KINDS
 
 
 def _evaluate(expr: sympy.Expr, point: Point) -> float:

@@ -36,6 +36,7 @@ class Builder:
     symbols: Mapping[str, sympy.Symbol]
     errors: list[SpecError] = field(default_factory=list)
     origins: dict[tuple[str, str | int], Path] = field(default_factory=dict)
+    frame_implied: bool = False  # the model's frame came from an element that only implies one (a wedge)
 
     def _section(self, key: str, kind: type) -> Any:
         current = self.data.get(key)
@@ -81,6 +82,18 @@ class Builder:
 
     def potential(self, entry: dict[str, Any], path: Path) -> None:
         self._listed("potentials", entry, path)
+
+    def frame(self, entry: dict[str, Any], path: Path, implied: bool = False) -> None:
+        """The model's one frame: declared by an element (a rotating frame) or implied (a wedge's), which
+        gives way to a declared one."""
+        if "frame" in self.data and (implied or not self.frame_implied):
+            if not implied:
+                self.errors.append(SpecError("the model already has a frame", path))
+            return
+        self.data["frame"] = entry
+        self.frame_implied = implied
+        for key in entry:
+            self.origins[("frame", key)] = path
 
     def position(self, body: str) -> dict[str, str] | None:
         """A body's position as text per axis (hand-written or generated), if it is defined yet."""

@@ -7,7 +7,8 @@
       wedge: {body: wedge, mass: M, coordinate: X}   the incline is a wedge free to slide on a floor
 
 Generates the block (and wedge), the contact `ramp` (its force is the normal force) and, with a wedge,
-the floor contact `rampFloor`.
+the floor contact `rampFloor`. A wedge implies the model's frame (`frame: {body: wedge}`, unless another
+is declared): the fictitious-forces method works in it.
 """
 
 from __future__ import annotations
@@ -55,6 +56,7 @@ def block_on_line(
             {"mass": parts.text("mass"), "position": {"x": wedge_coordinate, "y": origin[1]}},
             (*path, "wedge"),
         )
+        builder.frame({"body": wedge_body}, (*path, "wedge"), implied=True)
         builder.constraint(
             f"{name}Floor",
             "surface",

@@ -4,7 +4,8 @@ turning vertical plane (a bead on a spinning hoop, a conical pendulum, a car on 
     frame: {kind: rotating, rate: omega, bodies: [bead]}
       axis: 0                  the axis is the vertical line x = axis
 
-In that frame each listed body feels the centrifugal force m rate^2 x away from the axis, which is the
+The element declares the model's frame (`frame: {rate, axis, bodies}`), in which the fictitious-forces
+method works. In that frame each listed body feels the centrifugal force m rate^2 x away from the axis, which is the
 potential -m rate^2 x^2 / 2 of its distance x from the axis. The Coriolis force is perpendicular to the
 plane (the velocity and the axis both lie in it), so it only loads whatever keeps the body in the
 plane and changes nothing in it.
@@ -35,6 +36,7 @@ def expand(name: str, spec: Mapping[str, Any], builder: Builder, path: Path) -> 
         return
     rate = wrap(fields.text("rate"))
     axis = fields.text("axis", "0")
+    builder.frame({"rate": fields.text("rate"), "axis": axis, "bodies": list(bodies)}, path)
     declared = builder.data.get("bodies")
     for index, body in enumerate(bodies):
         entry = declared.get(body) if isinstance(declared, Mapping) else None

@@ -1,0 +1,102 @@
+"""d'Alembert's principle: the virtual work of the applied and inertial forces vanishes.
+
+delta W = sum_i (F_i - m_i a_i) . delta r_i = 0 for every virtual displacement the constraints allow.
+Those displacements are delta r_i = sum_j dr_i/dq_j delta q_j (the positions written in the coordinates
+satisfy every constraint), and the delta q_j are independent, so each coordinate gives one equation.
+The constraint forces do no virtual work and never appear: the method needs workless constraints
+(not kinetic friction, whose force is mu times a normal force), and gives no constraint force.
+The accelerations a_i are the second time derivatives of the positions: vectors, not energies.
+"""
+
+from __future__ import annotations
+
+from functools import cached_property
+
+import sympy
+
+from physics.engine.mechanics import solve_linear, time_derivative
+from physics.engine.method import Method, NotApplicable
+from physics.engine.oscillation import frequency_from_accelerations
+
+
+class DAlembertMethod(Method):
+    name = "dalembert"
+    title = "d'Alembert's principle (virtual work of the applied and inertial forces)"
+
+    def derive(self) -> None:
+        if self.model.frictions:
+            return
+        self.step(
+            "Virtual displacements the constraints allow",
+            r"\delta\mathbf{r}_i = \sum_j \frac{\partial \mathbf{r}_i}{\partial q_j}\,\delta q_j,\quad "
+            r"\delta W = \sum_i (\mathbf{F}_i - m_i\mathbf{a}_i)\cdot\delta\mathbf{r}_i = 0",
+        )
+
+    @cached_property
+    def equations(self) -> list[sympy.Expr]:
+        """One equation per coordinate: the coefficient of its delta q in the virtual work."""
+        mech, model = self.mech, self.model
+        if model.frictions:
+            raise NotApplicable(
+                "kinetic friction does work through a normal force, a constraint force that d'Alembert's "
+                "principle leaves out"
+            )
+        place = mech.cartesian_state()
+        applied = mech.applied_forces(False)
+        effective = []
+        for d, given in zip(mech.dofs, applied, strict=True):
+            force = (-sympy.diff(mech.cartesian_potential, d.symbol)).subs(place) + given
+            inertial = -d.inertia * time_derivative(time_derivative(d.mapping, model), model)
+            effective.append(force + inertial)
+        result = []
+        for c in model.coordinates:
+            work = sympy.Add(
+                *(e * sympy.diff(d.mapping, c.symbol) for e, d in zip(effective, mech.dofs, strict=True))
+            )
+            equation = sympy.collect(sympy.expand(work), list(mech.qdd))
+            self.step(
+                f"Virtual work for δ{c.name}",
+                rf"\sum_i (\mathbf{{F}}_i - m_i\mathbf{{a}}_i)\cdot\frac{{\partial \mathbf{{r}}_i}}"
+                rf"{{\partial {self.tex(c.symbol)}}} = " + self.tex(equation) + " = 0",
+            )
+            result.append(equation)
+        return result
+
+    def _solve(self, values: dict[sympy.Symbol, sympy.Expr]) -> dict[sympy.Symbol, sympy.Expr]:
+        return solve_linear([e.subs(values) for e in self.equations], list(self.mech.qdd), self.title)
+
+    @cached_property
+    def solution(self) -> dict[sympy.Symbol, sympy.Expr]:
+        solution = self._solve(dict(self.model.state))
+        self.step("Solved", r",\quad ".join(self.tex(sympy.Eq(k, v)) for k, v in solution.items()))
+        return solution
+
+    def acceleration(self, coordinate: str) -> sympy.Expr:
+        return self.at_state(self.solution[self.model.coordinate(coordinate).acceleration])
+
+    def force(self, constraint: str) -> sympy.Expr:
+        raise NotApplicable("constraint forces do no virtual work and drop out of d'Alembert's principle")
+
+    def potential_force(self, coordinate: str) -> sympy.Expr:
+        """At rest the inertial forces vanish: the virtual work of the applied forces along the coordinate."""
+        mech = self.mech
+        q = self.model.coordinate(coordinate).symbol
+        place = mech.cartesian_state()
+        force = sympy.simplify(
+            sympy.Add(
+                *(
+                    (-sympy.diff(mech.cartesian_potential, d.symbol)).subs(place) * sympy.diff(d.mapping, q)
+                    for d in mech.dofs
+                )
+            )
+        )
+        self.step(
+            f"Virtual work at rest along {coordinate}",
+            rf"Q_{{{self.tex(q)}}} = \sum_i \mathbf{{F}}_i\cdot\frac{{\partial \mathbf{{r}}_i}}{{\partial "
+            rf"{self.tex(q)}}} = " + self.tex(force),
+        )
+        return force
+
+    def frequency(self, coordinate: str, equilibrium: sympy.Expr) -> sympy.Expr:
+        rest = dict.fromkeys(self.mech.qd, sympy.Integer(0))
+        return frequency_from_accelerations(self, coordinate, equilibrium, self._solve(rest))

@@ -1,0 +1,33 @@
+"""Small oscillations from a method's own equations of motion: q'' = f(q) at rest, linearized.
+
+Shared by the methods that solve for the accelerations directly (fictitious forces, d'Alembert) rather
+than through energies or mass and stiffness matrices: K = -df/dq at the equilibrium, omega^2 its one
+non-zero eigenvalue (a coordinate that f does not pull back, a cyclic one, gives the zero eigenvalue).
+"""
+
+from __future__ import annotations
+
+import sympy
+
+from physics.engine.method import Method, NotApplicable
+
+
+def frequency_from_accelerations(
+    method: Method, coordinate: str, equilibrium: sympy.Expr, accelerations: dict[sympy.Symbol, sympy.Expr]
+) -> sympy.Expr:
+    """omega of small oscillations of `coordinate` about `equilibrium` (the other coordinates at 0, as
+    the other methods take them), from the coordinates' accelerations at rest as functions of q."""
+    mech = method.mech
+    q = method.model.coordinate(coordinate).symbol
+    at = {q: equilibrium, **{c: 0 for c in mech.q if c != q}}
+    stiffness = sympy.Matrix([[-sympy.diff(accelerations[a], c) for c in mech.q] for a in mech.qdd]).subs(at)
+    values = [sympy.simplify(v) for v in stiffness.eigenvals()]
+    nonzero = [v for v in values if v != 0]
+    if len(nonzero) != 1:
+        raise NotApplicable(f"expected one oscillating mode, found {values}")
+    method.step(
+        "Small oscillations of the equation of motion",
+        rf"\ddot{{{method.tex(q)}}} = f({method.tex(q)}),\quad \omega^2 = -\left.\frac{{\partial f}}"
+        rf"{{\partial {method.tex(q)}}}\right|_0 = " + method.tex(nonzero[0]),
+    )
+    return sympy.simplify(sympy.sqrt(nonzero[0]))

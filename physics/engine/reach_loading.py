@@ -1,0 +1,143 @@
+"""Reading the quantities taken where the motion from the state gets to: `speed`/`velocity` (and `force`,
+`acceleration`) `at` a configuration, and a trajectory's `time_of_flight`, `range` and `max_height`.
+
+    speed_bottom: {speed: block, at: {theta: 0}}        # a body's speed when theta reaches 0
+    rate: {velocity: theta, at: {theta: 0}}             # the coordinate's velocity there
+    normal_bottom: {force: track, at: {theta: 0}}       # the constraint force there, with that velocity
+    flight: {time_of_flight: ball, level: "-h"}         # until the body's y is -h (default: launch height)
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping, Sequence
+from typing import Any
+
+import sympy
+
+from physics.engine.model import (
+    REACH_KINDS,
+    TRAJECTORY_KINDS,
+    Body,
+    Constraint,
+    Coordinate,
+    Quantity,
+    QuantityKind,
+)
+from physics.engine.text import Path, read_expr
+from physics.errors import SpecError
+
+AT_KINDS = REACH_KINDS | {QuantityKind.FORCE, QuantityKind.ACCELERATION}
+LEVEL_KINDS = frozenset({QuantityKind.TIME_OF_FLIGHT, QuantityKind.RANGE})
+Report = Callable[[str, Path], None]
+
+
+def handles(kind: QuantityKind, spec: Mapping[str, Any]) -> bool:
+    """Whether this module reads the quantity (its kind is one of ours, or it is taken `at` a place)."""
+    return kind in REACH_KINDS | TRAJECTORY_KINDS or (kind in AT_KINDS and "at" in spec)
+
+
+def load_quantity(
+    name: str,
+    kind: QuantityKind,
+    spec: Mapping[str, Any],
+    path: Path,
+    symbols: Mapping[str, sympy.Symbol],
+    coordinates: Sequence[Coordinate],
+    constraints: Sequence[Constraint],
+    report: Report,
+) -> Quantity | None:
+    """The quantity, or None with every fault reported at its path. Body targets are checked later
+    (`check_targets`), once the bodies are known."""
+    allowed = (
+        {kind.value} | ({"at"} if kind in AT_KINDS else set()) | ({"level"} if kind in LEVEL_KINDS else set())
+    )
+    faults = len([None for key in spec if key not in allowed])
+    for key in spec:
+        if key not in allowed:
+            report(f"unknown key {key!r}; expected one of {sorted(allowed)}", (*path, str(key)))
+    target = spec[kind.value]
+    where: Path = (*path, kind.value)
+    pools = {
+        QuantityKind.VELOCITY: ("coordinate", {c.name for c in coordinates}),
+        QuantityKind.ACCELERATION: ("coordinate", {c.name for c in coordinates}),
+        QuantityKind.FORCE: ("constraint", {c.name for c in constraints}),
+    }
+    if kind in pools and target not in pools[kind][1]:
+        report(f"unknown {pools[kind][0]} {target!r}", where)
+        faults += 1
+    elif kind not in pools and not isinstance(target, str):
+        report("the name of a body", where)
+        faults += 1
+    at: tuple[tuple[str, sympy.Expr], ...] = ()
+    if kind in REACH_KINDS and "at" not in spec:
+        report(
+            "required: where the coordinate gets to, e.g. {theta: 0} (the speed is taken when the motion from "
+            "the state reaches it)",
+            (*path, "at"),
+        )
+        faults += 1
+    elif "at" in spec:
+        at, bad = _read_at(spec["at"], symbols, coordinates, (*path, "at"), report)
+        faults += bad
+    level = None
+    if "level" in spec:
+        try:
+            level = read_expr(spec["level"], symbols, (*path, "level"))
+        except SpecError as error:
+            report(error.message, error.path)
+            faults += 1
+    if faults:
+        return None
+    return Quantity(name, kind, str(target), at=at, level=level)
+
+
+def _read_at(
+    value: Any,
+    symbols: Mapping[str, sympy.Symbol],
+    coordinates: Sequence[Coordinate],
+    path: Path,
+    report: Report,
+) -> tuple[tuple[tuple[str, sympy.Expr], ...], int]:
+    names = {c.name for c in coordinates}
+    if not isinstance(value, Mapping) or len(value) != 1:
+        report("one coordinate and the value it reaches, e.g. {theta: 0}", path)
+        return (), 1
+    ((name, text),) = value.items()
+    if name not in names:
+        report(f"unknown coordinate {name!r}; expected one of {sorted(names)}", (*path, str(name)))
+        return (), 1
+    try:
+        return ((str(name), read_expr(text, symbols, (*path, str(name)))),), 0
+    except SpecError as error:
+        report(error.message, error.path)
+        return (), 1
+
+
+def check_targets(
+    quantities: Sequence[Quantity],
+    bodies: Sequence[Body],
+    state: Sequence[tuple[sympy.Symbol, sympy.Expr]],
+    coordinates: Sequence[Coordinate],
+    report: Report,
+) -> None:
+    """A body target names a body; the motion starts at a configuration the state gives."""
+    names = {b.name for b in bodies}
+    given = {s for s, _ in state}
+    unplaced = [c.name for c in coordinates if c.symbol not in given]
+    starting = False
+    for q in quantities:
+        path: Path = ("quantities", q.name, q.kind.value)
+        if q.kind in TRAJECTORY_KINDS | {QuantityKind.SPEED} and q.target not in names:
+            report(f"unknown body {q.target!r}; expected one of {sorted(names)}", path)
+        elif q.kind in TRAJECTORY_KINDS and not any(a == "y" for a, _ in _body(bodies, q.target).position):
+            report("the body has no height (y position) to fly in", path)
+        starting = starting or bool(q.at) or q.kind in TRAJECTORY_KINDS
+    if starting and unplaced:
+        report(
+            f"the motion starts at the model's state: give where {', '.join(unplaced)} start(s) under `state`",
+            ("state",),
+        )
+
+
+def _body(bodies: Sequence[Body], name: str) -> Body:
+    return next(b for b in bodies if b.name == name)

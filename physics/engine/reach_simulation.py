@@ -1,0 +1,181 @@
+"""Measuring where the motion gets to: integrate the equations of motion from the model's state until an
+event (the coordinate reaches `at`, the body lands or passes its apex), locate the event within the step
+by bisection, and read the quantity off the integrated state. The closed form is never used to steer
+the integration, only to be compared with what was measured.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+from physics.engine.mechanics import time_derivative
+from physics.engine.model import TRAJECTORY_KINDS, Quantity, QuantityKind
+from physics.engine.simulation import Measured, Point, Simulator, Vector, _compile, _evaluate, rk4
+from physics.errors import DerivationError
+
+STEPS_PER_SCALE = 400  # RK4 steps per time scale of the motion: errors far below the 1e-3 tolerance
+MAX_SCALES = 200
+BISECTIONS = 60
+
+
+@dataclass
+class ReachMeasure:
+    """Integrates once per (parameter point, event) and measures every quantity taken there."""
+
+    simulator: Simulator
+    _events: dict[tuple[object, ...], tuple[float, Vector]] = field(default_factory=dict)
+    _velocities: dict[str, Callable[..., list[float]]] = field(default_factory=dict)
+
+    def __call__(self, quantity: Quantity, point: Point, expected: float) -> Measured:
+        if quantity.kind in TRAJECTORY_KINDS:
+            return self._flight(quantity, point)
+        return self._arrival(quantity, point)
+
+    # --- a coordinate reaching a value -----------------------------------------------------------
+
+    def _arrival(self, quantity: Quantity, point: Point) -> Measured:
+        sim = self.simulator
+        dyn = sim.dynamics
+        ((name, value),) = quantity.at
+        i = [c.name for c in sim.model.coordinates].index(name)
+        target = _evaluate(value, point)
+        key = (name, target, *sorted((str(s), v) for s, v in point.items()))
+        if key not in self._events:
+            q, qd = sim._start(point)
+            sign = math.copysign(1.0, target - q[i])
+            params = dyn.values(point)
+            acceleration = dyn.unknowns(q, qd, params)[i]
+            distance = abs(target - q[i])
+            scales = [distance / abs(qd[i])] if qd[i] else []
+            scales += [math.sqrt(2 * distance / abs(acceleration))] if acceleration else []
+            if not scales:
+                raise DerivationError(f"{quantity.name}: released at the state, {name} does not move")
+
+            def turned(y: Vector) -> bool:
+                return y[dyn.n + i] * sign < 0 and abs(y[i] - q[i]) > 1e-9 * max(distance, 1.0)
+
+            self._events[key] = self._integrate(
+                q + qd, min(scales), point, lambda y: sign * (y[i] - target), turned, quantity.name
+            )
+        _, y = self._events[key]
+        n = dyn.n
+        if quantity.kind is QuantityKind.VELOCITY:
+            return f"velocity of {name} when the integrated motion reaches it", y[n + i], None
+        if quantity.kind is QuantityKind.SPEED:
+            velocity = self._velocity(quantity.target)(*y, *dyn.values(point))
+            return (
+                f"speed of {quantity.target} when the integrated motion reaches {name}",
+                math.hypot(*velocity),
+                None,
+            )
+        unknowns = dyn.unknowns(y[:n], y[n:], dyn.values(point))
+        if quantity.kind is QuantityKind.ACCELERATION:
+            return (
+                f"acceleration of {name} from the equations of motion where the integration arrives",
+                unknowns[i],
+                None,
+            )
+        index = [c.name for c in sim.model.constraints].index(quantity.target)
+        return (
+            f"constraint force from the equations of motion at the state the integration reached ({name})",
+            unknowns[n + index],
+            None,
+        )
+
+    # --- a body in flight --------------------------------------------------------------------------
+
+    def _flight(self, quantity: Quantity, point: Point) -> Measured:
+        sim = self.simulator
+        dyn = sim.dynamics
+        params = dyn.values(point)
+        q, qd = sim._start(point)
+        names = [d.name for d in dyn.mech.dofs]
+        axes = [a for a, _ in sim.model.body(quantity.target).position]
+        place = {a: names.index(f"{a}_{quantity.target}") for a in axes}
+        start = dyn.positions(q, params)
+        velocity = self._velocity(quantity.target)
+        vy_index = axes.index("y")
+        vx = velocity(*q, *qd, *params)
+        # the vertical acceleration at launch, measured by a short integrated step: a time scale only
+        h = 1e-6
+        after = sim_rk4(dyn.derivative(params), q + qd, h)
+        ay = (velocity(*after, *params)[vy_index] - vx[vy_index]) / h
+        y0 = start[place["y"]]
+        level = _evaluate(quantity.level, point) if quantity.level is not None else y0
+        if ay >= 0:
+            raise DerivationError(f"{quantity.name}: nothing pulls {quantity.target} down in the simulation")
+        vy = vx[vy_index]
+        scale = (abs(vy) + math.sqrt(vy**2 + 2 * abs(ay) * abs(y0 - level))) / abs(ay)
+        if quantity.kind is QuantityKind.MAX_HEIGHT:
+            key: tuple[object, ...] = ("apex", *sorted((str(s), v) for s, v in point.items()))
+
+            def event(y: Vector) -> float:
+                return -velocity(*y, *params)[vy_index]
+
+        else:
+            key = ("landing", level, *sorted((str(s), v) for s, v in point.items()))
+
+            def event(y: Vector) -> float:
+                return level - dyn.positions(y[: dyn.n], params)[place["y"]]
+
+        if key not in self._events:
+            self._events[key] = self._integrate(q + qd, scale, point, event, lambda y: False, quantity.name)
+        time, y = self._events[key]
+        now = dyn.positions(y[: dyn.n], params)
+        if quantity.kind is QuantityKind.TIME_OF_FLIGHT:
+            return "time until the integrated flight comes down to the landing level", time, None
+        if quantity.kind is QuantityKind.RANGE:
+            return (
+                "horizontal distance of the integrated flight at the landing level",
+                now[place["x"]] - start[place["x"]],
+                None,
+            )
+        return "height of the integrated flight where it stops rising", now[place["y"]] - y0, None
+
+    # --- shared ------------------------------------------------------------------------------------
+
+    def _integrate(
+        self,
+        y: Vector,
+        scale: float,
+        point: Point,
+        event: Callable[[Vector], float],
+        turned: Callable[[Vector], bool],
+        name: str,
+    ) -> tuple[float, Vector]:
+        """(time, state) where `event` first goes from negative to zero or above, after the start."""
+        dyn = self.simulator.dynamics
+        f = dyn.derivative(dyn.values(point))
+        dt = scale / STEPS_PER_SCALE
+        before = event(y)
+        for step in range(STEPS_PER_SCALE * MAX_SCALES):
+            after_y = sim_rk4(f, y, dt)
+            after = event(after_y)
+            if before < 0 <= after:
+                low, high = 0.0, dt
+                for _ in range(BISECTIONS):
+                    middle = (low + high) / 2
+                    if event(sim_rk4(f, y, middle)) >= 0:
+                        high = middle
+                    else:
+                        low = middle
+                return step * dt + high, sim_rk4(f, y, high)
+            if turned(after_y):
+                raise DerivationError(f"{name}: the integrated motion turns back before it gets there")
+            y, before = after_y, after
+        raise DerivationError(f"{name}: the integrated motion never gets there")
+
+    def _velocity(self, body: str) -> Callable[..., list[float]]:
+        """The body's Cartesian velocity (its position's axes) as a compiled function of q, q', parameters."""
+        if body not in self._velocities:
+            sim = self.simulator
+            dyn, model = sim.dynamics, sim.model
+            exprs = [time_derivative(e, model) for _, e in model.body(body).position]
+            self._velocities[body] = _compile([*dyn.mech.q, *dyn.mech.qd, *dyn.params], exprs)
+        return self._velocities[body]
+
+
+def sim_rk4(f: Callable[[Vector], Vector], y: Vector, dt: float) -> Vector:
+    return rk4(f, y, dt, 1)[-1]

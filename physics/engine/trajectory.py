@@ -1,0 +1,264 @@
+"""A body in free flight from the model's state: time of flight, range and maximum height, worked two ways.
+
+Kinematics (Lagrange's and Newton's methods, each from its own equations of motion with the state left
+free): the body's acceleration must be constant (gravity, constant forces; not drag); then
+y(t) = y0 + vy0 t + ay t^2/2, the flight ends at the later root of y(t) = level, the apex is where
+y'(t) = 0, and the range is x(T) - x0.
+
+Energy and momentum (the conservation method): with no horizontal force the horizontal momentum keeps
+vx; energy gives the height at which the vertical velocity vanishes and the vertical velocity on landing;
+the vertical impulse Fy T = m (vy1 - vy0) gives the time, and the range is vx T.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from collections.abc import Callable
+from typing import TYPE_CHECKING
+
+import sympy
+
+from physics.engine.mechanics import time_derivative
+from physics.engine.model import Model, Quantity, QuantityKind
+from physics.engine.proof import domain_points
+from physics.errors import DerivationError
+
+if TYPE_CHECKING:
+    from physics.engine.method import Method
+
+POINTS = 8
+Vector = dict[str, sympy.Expr]  # axis -> component
+
+
+@dataclasses.dataclass(frozen=True)
+class Launch:
+    """Where and how fast the body starts (at the model's state), and the height it lands at."""
+
+    position: Vector
+    velocity: Vector
+    level: sympy.Expr
+
+
+def launch(model: Model, quantity: Quantity) -> Launch:
+    state = dict(model.state)
+    position = dict(model.body(quantity.target).position)
+    start = {a: sympy.simplify(e.subs(state)) for a, e in position.items()}
+    velocity = {a: sympy.simplify(time_derivative(e, model).subs(state)) for a, e in position.items()}
+    moving = model.moving_symbols
+    for axis, value in (*start.items(), *velocity.items()):
+        if value.free_symbols & moving:
+            raise DerivationError(
+                f"{quantity.name}: the launch ({axis} = {value}) depends on coordinates the state does not give",
+                path=("state",),
+            )
+    level = quantity.level if quantity.level is not None else start["y"]
+    return Launch(
+        {a: start.get(a, sympy.Integer(0)) for a in ("x", "y")},
+        {a: velocity.get(a, sympy.Integer(0)) for a in ("x", "y")},
+        level,
+    )
+
+
+def answer(method: Method, quantity: Quantity) -> sympy.Expr:
+    return ROUTES[method.name](method, quantity)
+
+
+# --- kinematics ---------------------------------------------------------------------------------
+
+
+def _lagrange_acceleration(method: Method, body: str) -> Vector:
+    """d^2(position)/dt^2 with the coordinates' accelerations from Lagrange's equations (state free)."""
+    from physics.engine.lagrange import LagrangeMethod
+
+    model = method.model
+    free = method.free
+    assert isinstance(free, LagrangeMethod)
+    solution = free.solution
+    return {
+        axis: sympy.simplify(time_derivative(time_derivative(expr, model), model).subs(solution))
+        for axis, expr in model.body(body).position
+    }
+
+
+def _newton_acceleration(method: Method, body: str) -> Vector:
+    """The body's Cartesian accelerations from Newton's second law (state free)."""
+    from physics.engine.newton import NewtonMethod
+
+    newton = method.free
+    assert isinstance(newton, NewtonMethod)
+    return {
+        d.name.split("_", 1)[0]: sympy.simplify(newton.solution[d.acceleration])
+        for d in newton.mech.dofs
+        if d.body == body and not d.name.startswith("phi_")
+    }
+
+
+ACCELERATIONS: dict[str, Callable[[Method, str], Vector]] = {
+    "lagrange": _lagrange_acceleration,
+    "newton": _newton_acceleration,
+}
+
+
+def by_kinematics(method: Method, quantity: Quantity) -> sympy.Expr:
+    from physics.engine.method import NotApplicable
+
+    model = method.model
+    start = launch(model, quantity)
+    found = ACCELERATIONS[method.name](method, quantity.target)
+    moving = model.moving_symbols
+    if any(a.free_symbols & moving for a in found.values()):
+        raise NotApplicable(
+            f"the acceleration of {quantity.target} ({found}) changes along the flight (drag, a force that "
+            "depends on the motion): not constant-acceleration kinematics"
+        )
+    acceleration = {a: found.get(a, sympy.Integer(0)) for a in ("x", "y")}
+    t = sympy.Symbol("t")
+    path = {a: start.position[a] + start.velocity[a] * t + acceleration[a] * t**2 / 2 for a in ("x", "y")}
+    method.step(
+        f"Constant acceleration of {quantity.target}",
+        r",\quad ".join(
+            method.tex(sympy.Eq(sympy.Symbol(f"{a}(t)"), path[a])) for a in ("x", "y") if path[a] != 0
+        ),
+    )
+    if acceleration["y"] == 0:
+        raise DerivationError(f"{quantity.name}: nothing pulls {quantity.target} down: it never lands")
+    if quantity.kind is QuantityKind.MAX_HEIGHT:
+        apex = -start.velocity["y"] / acceleration["y"]
+        height = sympy.simplify(path["y"].subs(t, apex) - start.position["y"])
+        method.step(
+            "Apex where the vertical velocity vanishes",
+            method.tex(sympy.Eq(sympy.diff(path["y"], t), 0))
+            + r"\Rightarrow t = "
+            + method.tex(apex)
+            + r",\ H = y(t) - y_0 = "
+            + method.tex(height),
+        )
+        return height
+    flight = later_root(
+        model,
+        _quadratic_roots(acceleration["y"] / 2, start.velocity["y"], start.position["y"] - start.level),
+        quantity.name,
+    )
+    method.step(
+        "Landing",
+        method.tex(sympy.Eq(path["y"], start.level)) + r"\Rightarrow T = " + method.tex(flight),
+    )
+    if quantity.kind is QuantityKind.TIME_OF_FLIGHT:
+        return flight
+    distance = sympy.simplify(path["x"].subs(t, flight) - start.position["x"])
+    method.step("Range", r"x(T) - x_0 = " + method.tex(distance))
+    return distance
+
+
+def _quadratic_roots(a: sympy.Expr, b: sympy.Expr, c: sympy.Expr) -> list[sympy.Expr]:
+    """Roots of a t^2 + b t + c = 0 (a != 0) by the formula: sympy's general solver is slow here."""
+    if sympy.simplify(c) == 0:
+        return [sympy.Integer(0), -b / a]
+    root = sympy.sqrt(b**2 - 4 * a * c)
+    return [(-b + root) / (2 * a), (-b - root) / (2 * a)]
+
+
+def later_root(model: Model, roots: list[sympy.Expr], name: str) -> sympy.Expr:
+    """The landing: the root that is positive and latest at every domain point (not the launch, t = 0)."""
+    points = domain_points(model, POINTS, seed=19)
+    chosen: set[int] = set()
+    for point in points:
+        values = []
+        for index, root in enumerate(roots):
+            value = complex(sympy.N(root.subs(point), 15))
+            if abs(value.imag) <= 1e-12 * max(1.0, abs(value)) and value.real > 1e-12:
+                values.append((value.real, index))
+        if not values:
+            raise DerivationError(
+                f"{name}: the body never comes down to the landing level (roots {roots}) at "
+                + ", ".join(f"{s}={v:.4g}" for s, v in point.items()),
+                quantity=name,
+            )
+        chosen.add(max(values)[1])
+    if len(chosen) != 1:
+        raise DerivationError(
+            f"{name}: the landing time is not one root over the domain ({roots})", quantity=name
+        )
+    return sympy.simplify(roots[chosen.pop()])
+
+
+# --- energy and momentum ------------------------------------------------------------------------
+
+
+def by_energy(method: Method, quantity: Quantity) -> sympy.Expr:
+    from physics.engine.method import NotApplicable
+
+    model, mech = method.model, method.mech
+    body = model.body(quantity.target)
+    if any(f.body == body.name for f in model.dissipative_forces):
+        raise NotApplicable(
+            f"drag or a force that depends on the motion acts on {body.name}: energy is not conserved"
+        )
+    own = [d for d in mech.dofs if d.body == body.name and not d.name.startswith("phi_")]
+    holding = [c.name for c in model.constraints if any(c.gap.has(d.symbol) for d in own)]
+    if holding:
+        raise NotApplicable(f"{body.name} is held by {holding}: not in free flight")
+    force = {
+        d.name.split("_", 1)[0]: sympy.simplify(-sympy.diff(mech.cartesian_potential, d.symbol)) for d in own
+    }
+    cartesian = {d.symbol for d in mech.dofs}
+    if any(f.free_symbols & cartesian for f in force.values()):
+        raise NotApplicable(f"the force on {body.name} ({force}) changes along the path")
+    fx, fy = force.get("x", sympy.Integer(0)), force.get("y", sympy.Integer(0))
+    if fx != 0:
+        raise NotApplicable(f"a horizontal force ({fx}) acts: horizontal momentum is not conserved")
+    if fy == 0:
+        raise DerivationError(f"{quantity.name}: nothing pulls {body.name} down: it never lands")
+    start = launch(model, quantity)
+    m, vx, vy = body.mass, start.velocity["x"], start.velocity["y"]
+    method.step(
+        "Horizontal momentum is conserved",
+        rf"F_x = 0 \Rightarrow m v_x = m\,{method.tex(vx)}" if vx != 0 else r"F_x = 0 \Rightarrow v_x = 0",
+    )
+    if quantity.kind is QuantityKind.MAX_HEIGHT:
+        height = sympy.Symbol("H")
+        energy = sympy.Eq(m * (vx**2 + vy**2) / 2, m * vx**2 / 2 - fy * height)
+        found = m * vy**2 / (2 * -fy)  # the one root of that linear equation
+        method.step(
+            "Energy from the launch to the apex (vertical velocity zero)",
+            method.tex(energy) + r"\Rightarrow H = " + method.tex(found),
+        )
+        return sympy.simplify(found)
+    landing = sympy.Symbol("v_y1", real=True)
+    energy = sympy.Eq(m * landing**2 / 2, m * vy**2 / 2 + fy * (start.level - start.position["y"]))
+    size = sympy.sqrt(vy**2 + 2 * fy * (start.level - start.position["y"]) / m)
+    roots = [size, -size]
+    descending = _with_sign(model, roots, fy, quantity.name)
+    flight = sympy.simplify(m * (descending - vy) / fy)
+    method.step(
+        "Energy from the launch to the landing level (vertical part: vx does not change)",
+        method.tex(energy) + r"\Rightarrow v_{y1} = " + method.tex(descending),
+    )
+    method.step(
+        "Vertical impulse over the flight",
+        r"F_y T = m (v_{y1} - v_{y0}) \Rightarrow T = " + method.tex(flight),
+    )
+    if quantity.kind is QuantityKind.TIME_OF_FLIGHT:
+        return flight
+    distance = sympy.simplify(vx * flight)
+    method.step("Range at the conserved horizontal velocity", r"R = v_x T = " + method.tex(distance))
+    return distance
+
+
+def _with_sign(model: Model, roots: list[sympy.Expr], like: sympy.Expr, name: str) -> sympy.Expr:
+    """The root with the sign of `like` at every domain point (the body lands moving the way it is pulled)."""
+    points = domain_points(model, POINTS, seed=23)
+    for root in roots:
+        values = [complex(sympy.N((root * like).subs(p), 15)) for p in points]
+        if all(v.real > 0 and abs(v.imag) <= 1e-12 * abs(v) for v in values):
+            return root
+    raise DerivationError(
+        f"{name}: the body does not come down to the landing level (roots {roots})", quantity=name
+    )
+
+
+ROUTES: dict[str, Callable[[Method, Quantity], sympy.Expr]] = {
+    "lagrange": by_kinematics,
+    "newton": by_kinematics,
+    "conservation": by_energy,
+}

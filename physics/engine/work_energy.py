@@ -1,0 +1,252 @@
+"""Speed at a position: the velocity a coordinate has when the motion from the model's state reaches a
+stated value of it (`at`), worked two ways; then a body's speed, or a force or acceleration there.
+
+Work and energy (the conservation method): T + V where the motion arrives equals T + V at the state
+plus the work of the non-conservative forces along the way, the integral of their generalized force;
+kinetic friction's normal force comes from Newton's law across the surface. On a curved surface that
+force changes with the speed, so the theorem alone does not give friction's work: it then stops.
+
+Integrating the equation of motion (Lagrange's and Newton's methods, each with its own): with the
+state left free, the coordinate's acceleration is A(q) + B(q) q'^2 (friction on a curve and quadratic
+drag bring the B term); v dv/dq = q'' is then linear in w = v^2, dw/dq = 2A + 2Bw, integrated from the
+state to the configuration with the factor exp(-integral of 2B).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from typing import TYPE_CHECKING
+
+import sympy
+
+from physics.engine.mechanics import Mechanics
+from physics.engine.model import Coordinate, Model, Quantity, QuantityKind
+from physics.engine.proof import domain_points
+from physics.errors import DerivationError
+
+if TYPE_CHECKING:
+    from physics.engine.method import Method
+
+POINTS = 8
+
+
+@dataclasses.dataclass(frozen=True)
+class Journey:
+    """The coordinate that moves, where it starts and arrives, its velocity at the start, and which way
+    it goes (+1 towards increasing values)."""
+
+    coordinate: Coordinate
+    start: sympy.Expr
+    end: sympy.Expr
+    velocity: sympy.Expr
+    sign: int
+
+
+def journey(model: Model, quantity: Quantity) -> Journey:
+    from physics.engine.method import NotApplicable
+
+    if len(model.coordinates) != 1:
+        raise NotApplicable(
+            f"the speed at a position is worked for one coordinate; the model has {len(model.coordinates)}"
+        )
+    ((name, end),) = quantity.at
+    c = model.coordinate(name)
+    state = dict(model.state)
+    start = state[c.symbol]
+    return Journey(
+        c, start, end, state.get(c.velocity, sympy.Integer(0)), _direction(model, start, end, name)
+    )
+
+
+def _direction(model: Model, start: sympy.Expr, end: sympy.Expr, name: str) -> int:
+    """The sign of end - start over the whole domain: the coordinate moves that way (without turning)."""
+    difference = sympy.simplify(end - start)
+    if difference.is_positive:
+        return 1
+    if difference.is_negative:
+        return -1
+    values = [float(difference.subs(p)) for p in domain_points(model, POINTS, seed=13)]
+    if all(v > 0 for v in values):
+        return 1
+    if all(v < 0 for v in values):
+        return -1
+    raise DerivationError(
+        f"cannot tell which way {name} moves from its start {start} to {end}: the difference {difference} "
+        "changes sign (or is zero) on the domain",
+        path=("state", name),
+    )
+
+
+def answer(method: Method, quantity: Quantity) -> sympy.Expr:
+    """The quantity where the motion arrives, by this method's own route to the velocity there."""
+    model = method.model
+    trip = journey(model, quantity)
+    key = (trip.coordinate.name, trip.end)
+    if key not in method.arrivals:
+        method.arrivals[key] = ROUTES[method.name](method, trip)
+        _check_reached(model, trip, method.arrivals[key], quantity.name)
+    square = method.arrivals[key]
+    c = trip.coordinate
+    velocity = sympy.simplify(trip.sign * sympy.sqrt(square))
+    if quantity.kind is QuantityKind.VELOCITY:
+        return velocity
+    if quantity.kind is QuantityKind.SPEED:
+        position = dict(model.body(quantity.target).position)
+        rate = sympy.Add(*(sympy.diff(expr, c.symbol) ** 2 for expr in position.values()))
+        speed = sympy.simplify(sympy.sqrt(sympy.simplify(rate.subs(c.symbol, trip.end) * square)))
+        method.step(
+            f"Speed of {quantity.target} there",
+            rf"v_{{\mathrm{{{quantity.target}}}}} = \sqrt{{\dot x^2 + \dot y^2}} = " + method.tex(speed),
+        )
+        return speed
+    reached = dataclasses.replace(model, state=((c.symbol, trip.end), (c.velocity, velocity)))
+    there = type(method)(reached, Mechanics(reached))
+    result = there.answer(dataclasses.replace(quantity, at=()))
+    for step in there.steps:
+        method.step(f"{step.title} (where {c.name} = {sympy.sstr(trip.end)})", step.latex)
+    return result
+
+
+def by_energy(method: Method, trip: Journey) -> sympy.Expr:
+    """q'^2 at the end from T1 + V1 = T0 + V0 + W (work of the non-conservative forces)."""
+    from physics.engine.method import NotApplicable
+    from physics.engine.newton import NewtonMethod
+
+    model, mech, c = method.model, method.mech, trip.coordinate
+    q, qd = c.symbol, c.velocity
+    work = sympy.Integer(0)
+    if model.frictions or model.dissipative_forces:
+        multipliers: list[sympy.Expr] = list(mech.multipliers)
+        if model.frictions:
+            _straight_surfaces(model, mech, c)
+            free = dataclasses.replace(model, state=())
+            across = NewtonMethod(free, Mechanics(free)).solution  # Newton's law as a step of this method
+            multipliers = [across[lam] for lam in mech.multipliers]
+            method.step(
+                "Normal forces from Newton's law across each surface",
+                r",\quad ".join(
+                    method.tex(sympy.Eq(lam, v)) for lam, v in zip(mech.multipliers, multipliers, strict=True)
+                ),
+            )
+        forces = [
+            f + a for f, a in zip(mech.friction_forces(multipliers), mech.applied_forces(False), strict=True)
+        ]
+        generalized = sympy.simplify(mech.generalized(forces)[0])
+        if generalized.has(qd):
+            raise NotApplicable(
+                f"the non-conservative force along {c.name} ({generalized}) depends on the speed along the way "
+                "(a normal force on a curve, drag): its work needs the motion itself"
+            )
+        work = sympy.simplify(sympy.integrate(generalized, (q, trip.start, trip.end)))
+        if work.has(sympy.Integral):
+            raise NotApplicable(f"could not integrate the work of {generalized} along {c.name}")
+        method.step(
+            "Work of the non-conservative forces",
+            rf"W = \int_{{{method.tex(trip.start)}}}^{{{method.tex(trip.end)}}} Q_{{\mathrm{{nc}}}}\,"
+            rf"d{method.tex(q)} = " + method.tex(work),
+        )
+    kinetic, potential = mech.kinetic, mech.potential
+    before = (kinetic + potential).subs({q: trip.start, qd: trip.velocity})
+    inertia = sympy.diff(kinetic, qd, 2).subs(q, trip.end)
+    square = sympy.simplify(2 * (before + work - potential.subs(q, trip.end)) / inertia)
+    w = qd**2
+    method.step(
+        f"Work and energy from {c.name} = {sympy.sstr(trip.start)} to {sympy.sstr(trip.end)}",
+        r"T_1 + V_1 = T_0 + V_0 + W:\quad "
+        + method.tex(
+            sympy.Eq(
+                sympy.simplify(inertia * w / 2 + potential.subs(q, trip.end)), sympy.simplify(before + work)
+            )
+        )
+        + r"\Rightarrow "
+        + method.tex(sympy.Eq(w, square)),
+    )
+    return square
+
+
+def _straight_surfaces(model: Model, mech: Mechanics, c: Coordinate) -> None:
+    """Friction's normal force is the same at every speed only where the surface is straight along the
+    path: the gap's second derivative along it (the curvature term of Newton's law across it) vanishes."""
+    from physics.engine.method import NotApplicable
+
+    place = {d.symbol: d.mapping for d in mech.dofs}
+    for friction in model.frictions:
+        gap = model.constraint(friction.constraint).gap
+        curvature = sympy.Add(
+            *(
+                sympy.diff(gap, a.symbol, b.symbol).subs(place)
+                * sympy.diff(a.mapping, c.symbol)
+                * sympy.diff(b.mapping, c.symbol)
+                for a in mech.dofs
+                for b in mech.dofs
+            )
+        )
+        if sympy.simplify(curvature) != 0:
+            raise NotApplicable(
+                f"the surface {friction.constraint!r} curves along the path, so its normal force, and "
+                "friction's work, depends on the speed along the way: the work needs the motion itself"
+            )
+
+
+def by_integration(method: Method, trip: Journey) -> sympy.Expr:
+    """q'^2 at the end from v dv/dq = A(q) + B(q) v^2 (this method's equation of motion), integrated."""
+    from physics.engine.method import NotApplicable
+
+    c = trip.coordinate
+    q, qd = c.symbol, c.velocity
+    acceleration = method.free.acceleration(c.name)
+    u = sympy.Dummy("u", positive=True)  # the speed; qd = sign * u on the way
+    moving = sympy.expand(acceleration.subs(qd, trip.sign * u))
+    constant = moving.subs(u, 0)
+    quadratic = sympy.expand((moving - constant) / u**2)
+    if quadratic.has(u):
+        raise NotApplicable(
+            f"the acceleration {acceleration} is not A({c.name}) + B({c.name}) {c.name}_dot^2 (linear drag?): "
+            "v dv/dq does not integrate in closed form"
+        )
+    t = sympy.Dummy("t", real=True)
+    growth = (
+        sympy.integrate(2 * quadratic.subs(q, t), (t, trip.start, q)) if quadratic != 0 else sympy.Integer(0)
+    )
+    driven = sympy.integrate(sympy.expand(2 * constant * sympy.exp(-growth)), (q, trip.start, trip.end))
+    # simplified once, at the end: simplify on the integrands costs more than the integration
+    square = sympy.simplify(sympy.exp(growth.subs(q, trip.end)) * (trip.velocity**2 + driven))
+    if square.has(sympy.Integral):
+        raise NotApplicable(f"could not integrate {c.name}'s equation of motion in closed form")
+    w = qd**2
+    method.step(
+        f"{c.name}'s equation of motion as v dv/dq",
+        rf"\ddot{{{method.tex(q)}}} = " + method.tex(acceleration) + r"\Rightarrow "
+        rf"\frac{{d(\dot{{{method.tex(q)}}}^2)}}{{d{method.tex(q)}}} = "
+        + method.tex(2 * constant + 2 * quadratic * w),
+    )
+    method.step(
+        f"Integrated from {c.name} = {sympy.sstr(trip.start)} to {sympy.sstr(trip.end)}",
+        method.tex(sympy.Eq(w, square)),
+    )
+    return square
+
+
+def _check_reached(model: Model, trip: Journey, square: sympy.Expr, name: str) -> None:
+    """v^2 must be positive where the motion arrives, or it never gets there."""
+    for point in domain_points(model, POINTS, seed=17):
+        value = complex(sympy.N(square.subs(point), 15))
+        if abs(value.imag) > 1e-9 * max(1.0, abs(value.real)) or value.real <= 0:
+            raise DerivationError(
+                f"{name}: the motion from the state does not reach {trip.coordinate.name} = {trip.end}: there "
+                f"{trip.coordinate.name}_dot^2 = {square} = {value.real:.4g} at "
+                + ", ".join(f"{s}={v:.4g}" for s, v in point.items()),
+                quantity=name,
+            )
+
+
+ROUTES = {"lagrange": by_integration, "newton": by_integration, "conservation": by_energy}
+
+
+def arrival_velocity(model: Model, quantity: Quantity) -> sympy.Expr:
+    """The coordinate's velocity where the motion arrives, by energy (for mistakes: a slip's re-derivation)."""
+    from physics.engine.conservation import ConservationMethod
+
+    method = ConservationMethod(model, Mechanics(model))
+    trip = journey(model, quantity)
+    return sympy.simplify(trip.sign * sympy.sqrt(by_energy(method, trip)))

@@ -1,0 +1,170 @@
+"""Speed at a position: by work and energy and by integrating the equation of motion (v dv/dq), proved
+equal and measured on an integrated motion; a force where the motion arrives uses the speed it has there."""
+
+from __future__ import annotations
+
+import copy
+from pathlib import Path
+from typing import Any
+
+import pytest
+import sympy
+import yaml
+from sympy import cos, sin, sqrt
+
+from physics.engine import derive, load_model
+from physics.errors import DerivationError, SpecErrors
+
+BANK = Path(__file__).resolve().parents[2] / "problems" / "bank"
+m, R, g, mu, theta, L = sympy.symbols("m R g mu theta L", positive=True)
+SYMBOLS = {str(s): s for s in (m, R, g, mu, theta, L)}
+
+
+def slide() -> dict[str, Any]:
+    data = yaml.safe_load((BANK / "quarter-circle-slide" / "model.yaml").read_text())
+    assert isinstance(data, dict)
+    return data
+
+
+def rough_incline() -> dict[str, Any]:
+    """A block released from rest slides a distance L down a rough incline."""
+    return {
+        "elements": {
+            "ramp": {
+                "kind": "incline",
+                "body": "block",
+                "mass": "m",
+                "angle": "theta",
+                "coordinate": "s",
+                "friction": "mu",
+            }
+        },
+        "gravity": "g",
+        "state": {"s": 0},
+        "domain": {"ranges": {"theta": ["0", "pi/2"]}, "positive": ["tan(theta) - mu"]},
+        "quantities": {
+            "speed": {"speed": "block", "at": {"s": "L"}},
+            "rate": {"velocity": "s", "at": {"s": "L"}},
+        },
+    }
+
+
+def test_the_quarter_circle_slide_gives_sqrt_2gR_and_three_mg_by_independent_routes() -> None:
+    result = derive(load_model(slide(), SYMBOLS))
+    assert sympy.simplify(result.quantities["speed_at_bottom"] - sqrt(2 * g * R)) == 0
+    assert sympy.simplify(result.quantities["normal_force_at_bottom"] - 3 * m * g) == 0
+    assert set(result.agreement["speed_at_bottom"]) == {"lagrange", "newton", "conservation"}
+    assert set(result.agreement["normal_force_at_bottom"]) == {"lagrange", "newton"}
+    for name in ("speed_at_bottom", "normal_force_at_bottom"):
+        check = result.simulation[name]
+        assert check.points >= 3 and check.max_relative_error < 1e-3
+        assert "reach" in check.compared
+    steps = {s.title for method in result.methods for s in method.steps}
+    assert any(t.startswith("Work and energy") for t in steps)
+    assert any("equation of motion as v dv/dq" in t for t in steps)
+
+
+def test_the_normal_force_mistakes_name_the_missing_centripetal_term() -> None:
+    mistakes = derive(load_model(slide(), SYMBOLS)).mistakes["normal_force_at_bottom"]
+    by_answer = {sympy.simplify(k.expr): k.feedback for k in mistakes}
+    assert "at rest" in by_answer[m * g]
+    speed = {sympy.simplify(k.expr) for k in derive(load_model(slide(), SYMBOLS)).mistakes["speed_at_bottom"]}
+    assert sqrt(g * R) in speed  # the factor 2 of the kinetic energy forgotten
+
+
+def test_friction_on_an_incline_does_work_mu_m_g_cos_theta_per_length() -> None:
+    result = derive(load_model(rough_incline(), SYMBOLS))
+    expected = sqrt(2 * g * L * (sin(theta) - mu * cos(theta)))
+    assert sympy.simplify(result.quantities["speed"] - expected) == 0
+    assert set(result.agreement["speed"]) == {"lagrange", "newton", "conservation"}
+    assert result.simulation["rate"].max_relative_error < 1e-3
+    assert any("Work of the non-conservative forces" in s.title for s in result.methods[2].steps)
+
+
+def falling(drag: str) -> dict[str, Any]:
+    """A ball dropped from rest falls a height h against drag."""
+    return {
+        "coordinates": ["y"],
+        "bodies": {"ball": {"mass": "m", "position": {"y": "y"}}},
+        "forces": [{"body": "ball", drag: "c"}],
+        "gravity": "g",
+        "state": {"y": 0},
+        "quantities": {"v": {"velocity": "y", "at": {"y": "-h"}}},
+    }
+
+
+def test_quadratic_drag_is_integrated_and_the_energy_route_says_why_it_stops() -> None:
+    c, h = sympy.symbols("c h", positive=True)
+    result = derive(load_model(falling("quadratic_drag"), {**SYMBOLS, "c": c, "h": h}))
+    expected = -sqrt(m * g / c * (1 - sympy.exp(-2 * c * h / m)))
+    assert sympy.simplify(result.quantities["v"] - expected) == 0
+    assert set(result.agreement["v"]) == {"lagrange", "newton"}
+    (note,) = [n for method in result.methods if method.name == "conservation" for n in method.notes]
+    assert "depends on the speed along the way" in note
+    assert result.simulation["v"].max_relative_error < 1e-3
+
+
+def test_linear_drag_is_refused_with_each_route_s_reason() -> None:
+    c, h = sympy.symbols("c h", positive=True)
+    with pytest.raises(DerivationError) as caught:
+        derive(load_model(falling("drag"), {**SYMBOLS, "c": c, "h": h}))
+    message = str(caught.value)
+    assert "does not integrate in closed form" in message and "depends on the speed" in message
+
+
+@pytest.mark.parametrize(
+    ("edit", "path", "words"),
+    [
+        pytest.param(
+            {"speed_at_bottom": {"speed": "block"}},
+            ("quantities", "speed_at_bottom", "at"),
+            "required",
+            id="speed-without-at",
+        ),
+        pytest.param(
+            {"v": {"velocity": "theta", "at": {"phi": 0}}},
+            ("quantities", "v", "at", "phi"),
+            "unknown coordinate",
+            id="unknown-coordinate",
+        ),
+        pytest.param(
+            {"v": {"speed": "crate", "at": {"theta": 0}}},
+            ("quantities", "v", "speed"),
+            "unknown body",
+            id="unknown-body",
+        ),
+        pytest.param(
+            {"v": {"speed": "block", "at": {"theta": 0}, "level": 0}},
+            ("quantities", "v", "level"),
+            "unknown key",
+            id="level-on-a-speed",
+        ),
+    ],
+)
+def test_a_wrong_speed_quantity_is_refused_at_its_path(
+    edit: dict[str, Any], path: tuple[str, ...], words: str
+) -> None:
+    data = slide()
+    data["quantities"] = edit
+    with pytest.raises(SpecErrors) as caught:
+        load_model(data, SYMBOLS)
+    found = {e.path: e.message for e in caught.value.errors}
+    assert words in found[path]
+
+
+def test_a_speed_needs_the_start_in_the_state() -> None:
+    data = slide()
+    del data["state"]
+    with pytest.raises(SpecErrors) as caught:
+        load_model(data, SYMBOLS)
+    (error,) = caught.value.errors
+    assert error.path == ("state",) and "theta" in error.message
+
+
+def test_a_place_the_motion_cannot_reach_is_refused_with_the_reason() -> None:
+    data = copy.deepcopy(slide())
+    data["state"] = {"theta": "-pi/4"}  # released lower down: it cannot climb to the other rim
+    data["quantities"] = {"v": {"speed": "block", "at": {"theta": "pi/2"}}}
+    with pytest.raises(DerivationError) as caught:
+        derive(load_model(data, SYMBOLS))
+    assert "does not reach theta = pi/2" in str(caught.value)

@@ -1,0 +1,115 @@
+"""Trajectories without drag: time of flight, range and maximum height by constant-acceleration
+kinematics and by energy and momentum, proved equal and measured on an integrated flight."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+import pytest
+import sympy
+import yaml
+from sympy import cos, sin, sqrt
+
+from physics.engine import derive, load_model
+from physics.errors import DerivationError, SpecErrors
+
+BANK = Path(__file__).resolve().parents[2] / "problems" / "bank"
+m, v0, alpha, g, h = sympy.symbols("m v0 alpha g h", positive=True)
+SYMBOLS = {str(s): s for s in (m, v0, alpha, g, h)}
+ALL = {"lagrange", "newton", "conservation"}
+
+
+def launch() -> dict[str, Any]:
+    data = yaml.safe_load((BANK / "projectile" / "model.yaml").read_text())
+    assert isinstance(data, dict)
+    return data
+
+
+def test_flight_over_level_ground_is_derived_by_kinematics_and_by_energy_and_momentum() -> None:
+    result = derive(load_model(launch(), SYMBOLS))
+    expected = {
+        "time_of_flight": 2 * v0 * sin(alpha) / g,
+        "range": v0**2 * sin(2 * alpha) / g,
+        "max_height": (v0 * sin(alpha)) ** 2 / (2 * g),
+    }
+    for name, value in expected.items():
+        assert sympy.simplify(result.quantities[name] - value) == 0, name
+        assert set(result.agreement[name]) == ALL, name
+        check = result.simulation[name]
+        assert check.points >= 3 and check.max_relative_error < 1e-3 and "integrated flight" in check.compared
+    assert "limit range (alpha → pi/2)" in result.checks  # the model's stated limit was checked
+
+
+def test_flight_mistakes_name_the_factor_2_and_the_swapped_components() -> None:
+    mistakes = derive(load_model(launch(), SYMBOLS)).mistakes
+    flight = {sympy.simplify(k.expr): k.feedback for k in mistakes["time_of_flight"]}
+    assert "time to the top" in flight[v0 * sin(alpha) / g]
+    assert "swapped" in flight[2 * v0 * cos(alpha) / g]
+    height = {sympy.simplify(k.expr): k.feedback for k in mistakes["max_height"]}
+    assert "horizontally" in height[v0**2 / (2 * g)]
+
+
+def test_a_landing_level_below_the_launch_takes_the_later_root() -> None:
+    data = launch()
+    data["limits"] = []
+    data["quantities"] = {
+        "T": {"time_of_flight": "ball", "level": "-h"},
+        "R": {"range": "ball", "level": "-h"},
+    }
+    result = derive(load_model(data, SYMBOLS))
+    vy = v0 * sin(alpha)
+    flight = (vy + sqrt(vy**2 + 2 * g * h)) / g
+    assert sympy.simplify(result.quantities["T"] - flight) == 0
+    assert sympy.simplify(result.quantities["R"] - v0 * cos(alpha) * flight) == 0
+    assert set(result.agreement["R"]) == ALL
+
+
+def test_a_flight_with_drag_is_refused_with_each_method_s_reason() -> None:
+    data = launch()
+    data["limits"] = []
+    data["forces"] = [{"body": "ball", "quadratic_drag": "m/h"}]
+    data["quantities"] = {"H": {"max_height": "ball"}}
+    with pytest.raises(DerivationError) as caught:
+        derive(load_model(data, SYMBOLS))
+    message = str(caught.value)
+    assert "changes along the flight" in message and "energy is not conserved" in message
+
+
+@pytest.mark.parametrize(
+    ("edit", "path", "words"),
+    [
+        pytest.param(
+            {"quantities": {"T": {"time_of_flight": "rock"}}},
+            ("quantities", "T", "time_of_flight"),
+            "unknown body",
+            id="unknown-body",
+        ),
+        pytest.param(
+            {"quantities": {"H": {"max_height": "ball", "level": 0}}},
+            ("quantities", "H", "level"),
+            "unknown key",
+            id="level-on-the-height",
+        ),
+        pytest.param(
+            {"quantities": {"T": {"time_of_flight": "ball", "level": "h +"}}},
+            ("quantities", "T", "level"),
+            "cannot read",
+            id="unreadable-level",
+        ),
+        pytest.param(
+            {"state": {"x_dot": "v0"}, "quantities": {"T": {"time_of_flight": "ball"}}},
+            ("state",),
+            "give where x, y start",
+            id="no-launch-point",
+        ),
+    ],
+)
+def test_a_wrong_flight_quantity_is_refused_at_its_path(
+    edit: dict[str, Any], path: tuple[str, ...], words: str
+) -> None:
+    data = {**launch(), "limits": [], **edit}
+    with pytest.raises(SpecErrors) as caught:
+        load_model(data, SYMBOLS)
+    found = {e.path: e.message for e in caught.value.errors}
+    assert words in found[path], found
