@@ -94,6 +94,7 @@ def create_app(
             figure=storage.catalog.figure,
             rate_limit=functools.partial(budget_wait, app.state.services),
             submissions=storage.stores.submissions,
+            tool_keys=storage.stores.tool_keys,
         )
         outbox = OutboxWorker(storage.stores.outbox, storage.stores.tool_keys, lms_transport)
         await outbox.start()
