@@ -11,7 +11,7 @@ from app.errors import Forbidden, RateLimited, Unauthenticated
 from app.lti.sessions import principal_from_session
 from app.openapi import bearer_scheme
 from app.services import Services
-from app.storage import ApiKeyStore, ProblemStore, SubmissionStore
+from app.storage import ProblemStore, SubmissionStore
 
 
 def get_services(request: Request) -> Services:
@@ -30,13 +30,8 @@ def get_submission_store(services: ServicesDep) -> SubmissionStore:
     return services.stores.submissions
 
 
-def get_key_store(services: ServicesDep) -> ApiKeyStore:
-    return services.stores.keys
-
-
 Problems = Annotated[ProblemStore, Depends(get_problem_store)]
 Submissions = Annotated[SubmissionStore, Depends(get_submission_store)]
-ApiKeys = Annotated[ApiKeyStore, Depends(get_key_store)]
 
 
 def current_principal(
