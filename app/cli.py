@@ -59,7 +59,9 @@ def _keys_revoke(args: argparse.Namespace, settings: Settings) -> int:
 def _bank_verify(args: argparse.Namespace, settings: Settings) -> int:
     from app.bank_verify import verify_command
 
-    return verify_command(variants=args.variants, only=args.problem, bank_dir=settings.bank_dir)
+    return verify_command(
+        variants=args.variants, only=args.problem, bank_dir=settings.bank_dir, jobs=args.jobs
+    )
 
 
 def _problems_import(args: argparse.Namespace, settings: Settings) -> int:
@@ -143,6 +145,9 @@ def build_parser() -> argparse.ArgumentParser:
     verify = bank.add_parser("verify", help="re-derive and self-test every problem; non-zero exit on failure")
     verify.add_argument("--variants", type=int, default=20, help="random student variants per problem")
     verify.add_argument("--problem", action="append", default=None, help="only this problem (repeatable)")
+    verify.add_argument(
+        "--jobs", type=int, default=None, help="problems derived at once (default: one per core)"
+    )
     verify.set_defaults(handler=_bank_verify)
 
     problems = commands.add_parser("problems", help="problem files").add_subparsers(

@@ -11,7 +11,7 @@ from functools import cached_property
 import sympy
 
 from physics.engine import collision
-from physics.engine.mechanics import solve_linear, time_derivative
+from physics.engine.mechanics import Mechanics, solve_linear, time_derivative
 from physics.engine.method import Method, NotApplicable
 from physics.engine.model import QuantityKind
 
@@ -34,8 +34,8 @@ class ConservationMethod(Method):
                 "energy is not conserved with drag or forces that depend on the motion or the time"
             )
         mech = self.mech
-        mass, potential = mech.mass_matrix, mech.potential
-        cyclic = [i for i, q in enumerate(mech.q) if not potential.has(q) and not mass.has(q)]
+        mass = mech.mass_matrix
+        cyclic = cyclic_indices(mech)
         state = dict(self.model.state)
         velocities: dict[sympy.Symbol, sympy.Expr] = {}
         if cyclic:
@@ -63,6 +63,11 @@ class ConservationMethod(Method):
             others = [o for o in remaining if o != q]
             others_dot = [next(x.velocity for x in model.coordinates if x.symbol == o) for o in others]
             part_t = sympy.expand(kinetic).coeff(c.velocity, 2) * c.velocity**2
+            # the cyclic velocities held by their momenta leave terms in q alone (p^2 / 2 m r^2 of an
+            # orbit): the centrifugal part of the effective potential
+            part_t += sympy.Add(
+                *(t for t in sympy.Add.make_args(sympy.expand(kinetic)) if t.has(q) and not t.has(*mech.qd))
+            )
             part_v = sympy.Add(*(t for t in sympy.Add.make_args(sympy.expand(potential)) if t.has(q)))
             if (
                 part_t.has(*others, *others_dot)
@@ -133,3 +138,14 @@ class ConservationMethod(Method):
         for title, latex in steps:
             self.step(title, latex)
         return result
+
+
+def cyclic_indices(mech: Mechanics) -> list[int]:
+    """The coordinates neither the potential nor the mass matrix depends on (polar positions leave
+    cos^2 + sin^2 in the mass matrix: simplified before it counts as a dependence)."""
+    mass, potential = mech.mass_matrix, mech.potential
+    return [
+        i
+        for i, q in enumerate(mech.q)
+        if not potential.has(q) and not any(e.has(q) and sympy.simplify(sympy.diff(e, q)) != 0 for e in mass)
+    ]

@@ -63,7 +63,9 @@ class DAlembertMethod(Method):
         return result
 
     def _solve(self, values: dict[sympy.Symbol, sympy.Expr]) -> dict[sympy.Symbol, sympy.Expr]:
-        return solve_linear([e.subs(values) for e in self.equations], list(self.mech.qdd), self.title)
+        return solve_linear(
+            [e.subs(values) for e in self.equations], list(self.mech.qdd), self.title, tidy=sympy.cancel
+        )
 
     @cached_property
     def solution(self) -> dict[sympy.Symbol, sympy.Expr]:

@@ -211,7 +211,10 @@ class FramesMethod(Method):
         for f in self.frame_dofs:
             place[f.symbol] = f.mapping
             place[f.velocity] = time_derivative(f.mapping, self.model)
-        return solve_linear([e.subs(place).subs(values) for e in equations], unknowns, self.title)
+        # cancelled, not simplified: only the few values asked for are simplified, at the state
+        return solve_linear(
+            [e.subs(place).subs(values) for e in equations], unknowns, self.title, tidy=sympy.cancel
+        )
 
     @cached_property
     def solution(self) -> dict[sympy.Symbol, sympy.Expr]:

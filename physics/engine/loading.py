@@ -17,8 +17,10 @@ from physics.engine.distances import with_distance_sides
 from physics.engine.elements import expand_elements
 from physics.engine.model import (
     AXES,
+    EFFECTIVE_KINDS,
     IMPACT_KINDS,
     SLIP_KINDS,
+    STEADY_KINDS,
     AppliedForce,
     Body,
     Collision,
@@ -71,6 +73,7 @@ _QUANTITY_TARGET = {
     QuantityKind.SLIP_END_VELOCITY: "coordinate",
     QuantityKind.DAMPED_FREQUENCY: "coordinate",
     QuantityKind.DECAY_TIME: "coordinate",
+    **dict.fromkeys(STEADY_KINDS | EFFECTIVE_KINDS, "coordinate"),
 }
 _SLIPPING_KEYS = {"friction", "normal", "coefficient"}
 # Sizes beyond any textbook model: the derivation's cost grows fast with them, and models are uploaded.
@@ -752,6 +755,11 @@ def _quantity(
             errors.add(f"unknown {_QUANTITY_TARGET[kind]} {target!r}", where)
             return None
         return Quantity(name, kind, str(target))
+    if kind is QuantityKind.MECHANICAL_ENERGY:
+        if target != "state":
+            errors.add("the energy is the model's state's: write `mechanical_energy: state`", where)
+            return None
+        return Quantity(name, kind, "state")
     if kind in IMPACT_KINDS:  # checked against the impact section by `_impact`
         return Quantity(name, kind, str(target))
     if kind is QuantityKind.MODE_SHAPE:

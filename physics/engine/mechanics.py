@@ -6,7 +6,7 @@ over them (`time_derivative`), which keeps every expression free of sympy's Func
 
 from __future__ import annotations
 
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from functools import cached_property
 
@@ -106,11 +106,15 @@ class Mechanics:
     @cached_property
     def kinetic(self) -> sympy.Expr:
         """T = sum of 1/2 m v^2 and 1/2 I omega^2, velocities from the positions in the coordinates."""
+        terms: dict[tuple[str, bool], sympy.Expr] = {}
+        for d in self.dofs:
+            key = (d.body, d.name.startswith("phi_"))
+            term = sympy.Rational(1, 2) * d.inertia * time_derivative(d.mapping, self.model) ** 2
+            terms[key] = terms.get(key, sympy.Integer(0)) + term
+        # a body's v^2 in polar-like positions is (r' cos - r theta' sin)^2 + (r' sin + r theta' cos)^2:
+        # simplified per body here, before every method expands it
         return sympy.Add(
-            *(
-                sympy.Rational(1, 2) * d.inertia * time_derivative(d.mapping, self.model) ** 2
-                for d in self.dofs
-            )
+            *(sympy.trigsimp(sympy.expand(t)) if t.has(sympy.sin, sympy.cos) else t for t in terms.values())
         )
 
     @cached_property
@@ -235,13 +239,20 @@ class Mechanics:
             raise DerivationError(f"the bodies of {pair.bodies} share no axis")
         if len(ends) == 1:
             return (pair.side or 1) * (ends[0][1] - ends[0][0])
-        return sympy.sqrt(sympy.Add(*((b - a) ** 2 for a, b in ends)))
+        squared = sympy.Add(*((b - a) ** 2 for a, b in ends))
+        if squared.has(sympy.sin, sympy.cos):  # polar positions: r^2 cos^2 + r^2 sin^2 is r^2
+            squared = sympy.trigsimp(squared)
+        return sympy.sqrt(squared)
 
 
 def solve_linear(
-    equations: Sequence[sympy.Expr], unknowns: Sequence[sympy.Symbol], what: str
+    equations: Sequence[sympy.Expr],
+    unknowns: Sequence[sympy.Symbol],
+    what: str,
+    tidy: Callable[[sympy.Expr], sympy.Expr] = sympy.simplify,
 ) -> dict[sympy.Symbol, sympy.Expr]:
-    """The unique solution of linear equations (each `= 0`); DerivationError if there is none."""
+    """The unique solution of linear equations (each `= 0`), each value put through `tidy`;
+    DerivationError if there is none."""
     matrix, rhs = sympy.linear_eq_to_matrix(list(equations), list(unknowns))
     if matrix.shape[0] > matrix.shape[1]:
         rows = _independent_rows(matrix)
@@ -254,7 +265,7 @@ def solve_linear(
         raise DerivationError(
             f"{what}: the equations do not determine {', '.join(map(str, unknowns))} ({error})"
         ) from error
-    result = {u: sympy.simplify(v) for u, v in zip(unknowns, solution, strict=True)}
+    result = {u: tidy(v) for u, v in zip(unknowns, solution, strict=True)}
     if any(v.has(sympy.zoo, sympy.nan, sympy.oo) for v in result.values()):
         raise DerivationError(f"{what}: the equations are singular for {', '.join(map(str, unknowns))}")
     return result

@@ -10,7 +10,15 @@ import sympy
 
 from physics.engine import damping, impact, mode_shapes, modes, slipping, trajectory, work_energy
 from physics.engine.mechanics import Mechanics
-from physics.engine.model import IMPACT_KINDS, SLIP_KINDS, TRAJECTORY_KINDS, Model, Quantity, QuantityKind
+from physics.engine.model import (
+    IMPACT_KINDS,
+    ORBIT_KINDS,
+    SLIP_KINDS,
+    TRAJECTORY_KINDS,
+    Model,
+    Quantity,
+    QuantityKind,
+)
 from physics.engine.proof import domain_points
 from physics.engine.results import MethodReport, Step
 from physics.errors import DerivationError
@@ -153,6 +161,10 @@ class Method(ABC):
                 raise NotApplicable(str(why)) from None
         if kind is QuantityKind.MODE_SHAPE:
             return mode_shapes.answer(self, quantity, stable_equilibrium(self.model))
+        if kind in ORBIT_KINDS:
+            from physics.engine import orbits  # here: orbits builds on Method
+
+            return orbits.answer(self, quantity)
         if kind is QuantityKind.SOLVE:
             assert quantity.inner is not None and quantity.parameter is not None
             return self.solve_for(quantity.parameter, self.answer(quantity.inner), quantity.name)

@@ -12,9 +12,17 @@ from collections.abc import Callable
 
 import sympy
 
-from physics.engine import collision, damping, impact, reach_mistakes, slipping
+from physics.engine import collision, damping, impact, orbits, reach_mistakes, slipping
 from physics.engine.mechanics import Mechanics
-from physics.engine.model import IMPACT_KINDS, SLIP_KINDS, ConstraintKind, Model, Quantity, QuantityKind
+from physics.engine.model import (
+    IMPACT_KINDS,
+    ORBIT_KINDS,
+    SLIP_KINDS,
+    ConstraintKind,
+    Model,
+    Quantity,
+    QuantityKind,
+)
 from physics.engine.proof import domain_points
 from physics.engine.results import KnownMistake, LimitCase
 
@@ -113,6 +121,8 @@ def generate_mistakes(
         candidates += impact.mistakes(model, reference)
     if quantity.kind in SLIP_KINDS:
         candidates.append((slipping.without_torque(model, quantity, rederive), slipping.NO_TORQUE))
+    if quantity.kind in ORBIT_KINDS:
+        candidates += orbits.mistakes(model, quantity, reference)
     if quantity.kind in (QuantityKind.ANGULAR_FREQUENCY, QuantityKind.PERIOD):
         candidates += _mass_mistakes(model, quantity, reference, rederive)
     candidates += damping.mistakes(model, quantity, reference)

@@ -174,6 +174,14 @@ class QuantityKind(StrEnum):
     DAMPED_FREQUENCY = "damped_frequency"  # of an underdamped oscillation about the equilibrium
     DECAY_TIME = "decay_time"  # the amplitude's e-folding time of that oscillation
     MODE_SHAPE = "mode_shape"  # amplitude ratio of two coordinates in the n-th normal mode
+    # steady circular motion: the angle coordinate turns uniformly, the others stay at the state (orbits.py)
+    CIRCULAR_SPEED = "circular_speed"
+    REVOLUTION_PERIOD = "revolution_period"
+    CIRCULAR_ENERGY = "circular_energy"
+    MECHANICAL_ENERGY = "mechanical_energy"  # T + V at the model's state
+    # with the cyclic coordinates' momenta held at their state values (the effective potential)
+    CIRCULAR_RADIUS = "circular_radius"
+    EPICYCLIC_FREQUENCY = "epicyclic_frequency"
 
 
 REACH_KINDS = frozenset({QuantityKind.SPEED, QuantityKind.VELOCITY})
@@ -182,6 +190,13 @@ IMPACT_KINDS = frozenset(
     {QuantityKind.FINAL_VELOCITY, QuantityKind.FINAL_SPEED, QuantityKind.KINETIC_ENERGY_LOST}
 )
 SLIP_KINDS = frozenset({QuantityKind.SLIP_TIME, QuantityKind.SLIP_DISTANCE, QuantityKind.SLIP_END_VELOCITY})
+
+
+STEADY_KINDS = frozenset(
+    {QuantityKind.CIRCULAR_SPEED, QuantityKind.REVOLUTION_PERIOD, QuantityKind.CIRCULAR_ENERGY}
+)
+EFFECTIVE_KINDS = frozenset({QuantityKind.CIRCULAR_RADIUS, QuantityKind.EPICYCLIC_FREQUENCY})
+ORBIT_KINDS = STEADY_KINDS | EFFECTIVE_KINDS | {QuantityKind.MECHANICAL_ENERGY}
 
 
 @dataclass(frozen=True)

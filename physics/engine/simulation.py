@@ -22,7 +22,15 @@ from physics.engine.contact_friction import slip_velocity
 from physics.engine.lagrange import LagrangeMethod
 from physics.engine.mechanics import Mechanics
 from physics.engine.method import stable_equilibrium
-from physics.engine.model import IMPACT_KINDS, SLIP_KINDS, TRAJECTORY_KINDS, Model, Quantity, QuantityKind
+from physics.engine.model import (
+    IMPACT_KINDS,
+    ORBIT_KINDS,
+    SLIP_KINDS,
+    TRAJECTORY_KINDS,
+    Model,
+    Quantity,
+    QuantityKind,
+)
 from physics.engine.results import SimulationCheck
 from physics.errors import DerivationError
 
@@ -227,9 +235,16 @@ class Simulator:
             QuantityKind.PROJECTILE_SPEED: self._collision,
             QuantityKind.ENERGY_FRACTION_LOST: self._collision,
             **dict.fromkeys(IMPACT_KINDS, self._impact),
+            **dict.fromkeys(ORBIT_KINDS, self._orbit),
             **dict.fromkeys(SLIP_KINDS, partial(slipping.measure_sliding, self)),
             QuantityKind.SLIPPING: partial(slipping.measure_slipping, self),
         }
+
+    @cached_property
+    def _orbit(self) -> Measure:
+        from physics.engine.orbit_simulation import OrbitMeasure  # here: it builds on this module
+
+        return OrbitMeasure(self.dynamics, self._start)
 
     @cached_property
     def _reach(self) -> Measure:

@@ -153,3 +153,20 @@ def test_bank_verify_fails_on_a_statement_that_does_not_render_cleanly(tmp_path,
     out = capsys.readouterr().out
     assert "atwood: statement does not render cleanly" in out
     assert "mfrac needs 2 arguments" in out and "stray $ or `" in out
+
+
+def test_bank_verify_side_by_side_reports_every_problem_in_bank_order(tmp_path, monkeypatch, capsys):
+    bank = tmp_path / "bank"
+    for problem in ("mass-spring", "atwood"):
+        shutil.copytree(BANK / problem, bank / problem)
+    problem = (bank / "atwood" / "problem.yaml").read_text()  # a known mistake that is the right answer
+    (bank / "atwood" / "problem.yaml").write_text(problem.replace("answer: m2*g\n", "answer: 2*m1*m2*g/(m1 + m2)\n"))
+    monkeypatch.setenv("PHYSCHECK_BANK_DIR", str(bank))
+    get_settings.cache_clear()
+    try:
+        assert main(["bank", "verify", "--variants", "1", "--jobs", "2"]) != 0
+    finally:
+        get_settings.cache_clear()
+    captured = capsys.readouterr()
+    lines = captured.out.splitlines()
+    assert [line.split(":")[0] for line in lines[:2]] == ["FAIL atwood", "ok   mass-spring"], captured.err

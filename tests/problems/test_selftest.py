@@ -97,10 +97,11 @@ def _bank_ids() -> list[str]:
 
 
 @pytest.mark.slow
+@pytest.mark.bank_selftest
 @pytest.mark.parametrize("problem_id", _bank_ids())
 def test_every_bank_problem_passes_its_self_test(problem_id: str) -> None:
-    # one test per problem, so each stays within the per-test timeout as the bank grows; `physcheck bank
-    # verify` in `make test` runs the full 20 variants, so a few suffice here
+    # one test per problem, so each stays within the per-test timeout as the bank grows; `make test`
+    # deselects these because `physcheck bank verify` runs the same self-test there with 20 variants
     [doc] = [d for d in load_bank(check_meaning=False) if d.id == problem_id]
     report = verify_problem(doc, variants=5)
     assert report.ok, report.summary()

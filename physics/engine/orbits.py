@@ -1,0 +1,283 @@
+"""Steady circular motion and orbits under a central force, in polar (or any) coordinates.
+
+Every quantity here is reached through each method's own acceleration of a coordinate, so Lagrange's
+radial equation, Newton's radial law on the Cartesian axes and the energy with the conserved momenta
+(the effective potential) each give it their own way:
+
+- steady motion (`circular_speed`, `revolution_period`, `circular_energy`, target an angle coordinate
+  theta): the rate theta' = w at which every other coordinate, held at its state value at rest, stops
+  accelerating (w > 0: the force must pull inwards); the turning body's speed |dx/dtheta| w, the period
+  2 pi / w, the energy T + V of that motion;
+- the effective potential (`circular_radius`, `epicyclic_frequency`, target the radial coordinate r):
+  the momenta of the cyclic coordinates (those neither the potential nor the inertia depends on) are
+  held at their state values; with the cyclic velocities written through them, r'' = f(r). The
+  circular orbit is the root with f'(r0) < 0 (the minimum of the effective potential) and small radial
+  oscillations about it have omega^2 = -f'(r0);
+- `mechanical_energy: state`: T + V at the state (in the coordinates, on the Cartesian axes, or with
+  the conserved momenta, one per method).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import weakref
+from collections.abc import Callable
+from typing import Any, TypeVar, cast
+
+import sympy
+
+from physics.engine.conservation import ConservationMethod, cyclic_indices
+from physics.engine.mechanics import Mechanics, solve_linear, time_derivative
+from physics.engine.method import Method, NotApplicable
+from physics.engine.model import EFFECTIVE_KINDS, Model, Quantity, QuantityKind
+from physics.engine.newton import NewtonMethod
+from physics.engine.proof import domain_points
+from physics.errors import DerivationError
+
+# the unknown steady rate; positive, so that of the pair +-w sympy returns the forward turning
+RATE = sympy.Symbol("w_steady", positive=True)
+
+MISSING_TWO_PI = "One revolution is 2π radians: the period is 2π divided by the angular velocity."
+ENERGY_SIGN = (
+    "Check the sign: the potential energy of an attractive force is negative, and in a bound orbit the "
+    "total energy is negative too."
+)
+KINETIC_ONLY = "That is the kinetic energy only: the total mechanical energy adds the potential energy."
+POTENTIAL_ONLY = "That is the potential energy only: the total mechanical energy adds the kinetic energy."
+
+
+def answer(method: Method, quantity: Quantity) -> sympy.Expr:
+    """The orbit quantity as `method` derives it."""
+    kind = quantity.kind
+    if kind is QuantityKind.MECHANICAL_ENERGY:
+        energy = energy_of(method)
+        method.step("Mechanical energy at the state", "E = T + V = " + method.tex(energy))
+        return energy
+    if kind in EFFECTIVE_KINDS:
+        radius, slope = circular_orbit(method, quantity.target)
+        if kind is QuantityKind.CIRCULAR_RADIUS:
+            return radius
+        omega = sympy.simplify(sympy.sqrt(-slope))
+        method.step(
+            f"Small oscillations of {quantity.target} about the circular orbit",
+            rf"\omega^2 = -f'({method.tex(model_symbol(method.model, quantity.target))}_0) = "
+            + method.tex(sympy.simplify(-slope)),
+        )
+        return omega
+    rate, steady = steady_rate(method, quantity.target)
+    if kind is QuantityKind.REVOLUTION_PERIOD:
+        period = sympy.simplify(2 * sympy.pi / rate)
+        method.step("Period of one revolution", r"T = \frac{2\pi}{\omega} = " + method.tex(period))
+        return period
+    if kind is QuantityKind.CIRCULAR_SPEED:
+        speed = sympy.simplify(_speed(steady.model, quantity.target).subs(RATE, rate))
+        method.step("Speed on the circle", "v = " + method.tex(speed))
+        return speed
+    energy = sympy.simplify(energy_of(steady).subs(RATE, rate))
+    method.step("Energy of the circular motion", "E = T + V = " + method.tex(energy))
+    return energy
+
+
+def model_symbol(model: Model, coordinate: str) -> sympy.Symbol:
+    return model.coordinate(coordinate).symbol
+
+
+def energy_of(method: Method) -> sympy.Expr:
+    """T + V at the method's model's state, in the method's own terms."""
+    model, mech = method.model, method.mech
+    state = dict(model.state)
+    if isinstance(method, NewtonMethod):  # on the Cartesian axes: sum of m v^2 / 2
+        place = mech.cartesian_state()
+        kinetic = sympy.Add(*(sympy.Rational(1, 2) * d.inertia * d.velocity**2 for d in mech.dofs)).subs(
+            place
+        )
+        potential = mech.cartesian_potential.subs(place)
+    elif isinstance(method, ConservationMethod):  # with the cyclic velocities through their momenta
+        velocities, kinetic, _ = method.reduced
+        potential = mech.potential
+        kinetic = kinetic.subs(velocities)
+    else:
+        kinetic, potential = mech.kinetic, mech.potential
+    return sympy.simplify((kinetic + potential).subs(state))
+
+
+T = TypeVar("T")
+# worked once per method and target, for all the quantities that use it (not across derivations)
+_WORKED: weakref.WeakKeyDictionary[Method, dict[tuple[str, str], Any]] = weakref.WeakKeyDictionary()
+# what a method computes before it reads the state: shared with the same method at another state
+_STATELESS = ("system", "applied_forces")
+
+
+def _worked(method: Method, key: tuple[str, str], work: Callable[[], T]) -> T:
+    memo = _WORKED.setdefault(method, {})
+    if key not in memo:
+        memo[key] = work()
+    return cast(T, memo[key])
+
+
+def restated(method: Method, model: Model) -> Method:
+    """The same method on the same system at another state (`model` differs from the method's only in
+    its state), reusing the energies and equations that do not depend on the state."""
+    mech = Mechanics(model)
+    mech.__dict__.update({k: v for k, v in method.mech.__dict__.items() if k != "model"})
+    solver = type(method)(model, mech)
+    for name in _STATELESS:
+        if hasattr(type(method), name):
+            solver.__dict__[name] = getattr(method, name)
+    return solver
+
+
+def steady_rate(method: Method, target: str) -> tuple[sympy.Expr, Method]:
+    """(w, the method at the state with target' = RATE and every other coordinate at rest): the rate at
+    which the other coordinates, by this method's own accelerations, stay where the state puts them."""
+    return _worked(method, ("steady", target), lambda: _steady_rate(method, target))
+
+
+def _steady_rate(method: Method, target: str) -> tuple[sympy.Expr, Method]:
+    model = method.model
+    turning = model.coordinate(target)
+    others = [c for c in model.coordinates if c is not turning]
+    if not others:
+        raise NotApplicable("a steady rotation holds other coordinates still, and there are none")
+    still = {c.velocity for c in others} | {turning.velocity}
+    state = {s: v for s, v in model.state if s not in still}
+    state.update({c.velocity: sympy.Integer(0) for c in others})
+    state[turning.velocity] = RATE
+    solver = restated(method, dataclasses.replace(model, state=tuple(state.items())))
+    spin = sympy.simplify(solver.acceleration(target))
+    if spin != 0:
+        raise DerivationError(
+            f"{target} does not turn uniformly ({target}'' = {spin}): a steady rotation needs a coordinate on "
+            "which neither the potential nor the inertia depends",
+            quantity=target,
+        )
+    accelerations = [(c, sympy.simplify(solver.acceleration(c.name))) for c in others]
+    moving = [(c, a) for c, a in accelerations if a != 0]
+    if not moving:
+        raise DerivationError(f"every rate of {target} keeps the other coordinates still", quantity=target)
+    first, acceleration = moving[0]
+    roots = [r for r in sympy.solve(acceleration, RATE) if r.is_real is not False]
+    if len(roots) != 1 or not _positive_on_domain(roots[0], model):
+        raise DerivationError(
+            f"no steady rotation of {target}: {first.name}'' = {acceleration} has no single positive root in "
+            f"{target}' (found {roots}); the force must pull towards the centre",
+            quantity=target,
+        )
+    rate = sympy.simplify(roots[0])
+    for c, a in moving[1:]:
+        if sympy.simplify(a.subs(RATE, rate)) != 0:
+            raise DerivationError(
+                f"no steady rotation of {target}: at {target}' = {rate}, {c.name}'' = {a} does not vanish",
+                quantity=target,
+            )
+    for step in solver.steps:
+        method.step(step.title, step.latex)
+    turning_tex = method.tex(turning.velocity)
+    method.step(
+        f"Steady rotation of {target}",
+        method.tex(sympy.Eq(first.acceleration, acceleration.subs(RATE, turning.velocity)))
+        + rf" = 0 \Rightarrow \omega = {turning_tex} = "
+        + method.tex(rate),
+    )
+    return rate, solver
+
+
+def _speed(steady: Model, target: str) -> sympy.Expr:
+    """|v| of the one body that turns with `target`, in the steady motion (velocities from the state)."""
+    q = steady.coordinate(target).symbol
+    turning = [b for b in steady.bodies if any(e.has(q) for _, e in b.position)]
+    if len(turning) != 1:
+        raise DerivationError(
+            f"circular_speed is the speed of the one body that turns with {target}; {len(turning)} bodies do",
+            quantity=target,
+        )
+    velocity = [time_derivative(e, steady) for _, e in turning[0].position]
+    squared = sympy.Add(*(v**2 for v in velocity)).subs(dict(steady.state))
+    return sympy.sqrt(sympy.simplify(squared))
+
+
+def conserved_state(method: Method, target: str) -> Model:
+    """The model with `target` free and at rest, the other non-cyclic coordinates at rest, and the cyclic
+    velocities written through their momenta, held at the values the state gives them."""
+    model, mech = method.model, method.mech
+    cyclic = cyclic_indices(mech)
+    radial = model.coordinate(target)
+    if not cyclic:
+        raise DerivationError(
+            "no coordinate is cyclic (free of the potential and the inertia), so no momentum is conserved "
+            f"to hold: ask for the equilibrium of {target} instead",
+            quantity=target,
+        )
+    if any(mech.q[i] == radial.symbol for i in cyclic):
+        raise DerivationError(f"{target} is cyclic: it has no circular orbit", quantity=target)
+    state = dict(model.state)
+    mass = mech.mass_matrix.applyfunc(sympy.simplify)
+    velocities = sympy.Matrix(mech.qd)
+    momenta = [sympy.simplify((mass[i, :] * velocities)[0].subs(state)) for i in cyclic]
+    rest = {mech.qd[j]: sympy.Integer(0) for j in range(len(mech.q)) if j not in cyclic}
+    equations = [(mass[i, :] * velocities)[0].subs(rest) - p for i, p in zip(cyclic, momenta, strict=True)]
+    held = solve_linear(equations, [mech.qd[i] for i in cyclic], "the conserved momenta")
+    free = {s: v for s, v in state.items() if s != radial.symbol}
+    free.update(rest)
+    free.update(held)
+    return dataclasses.replace(model, state=tuple(free.items()))
+
+
+def circular_orbit(method: Method, target: str) -> tuple[sympy.Expr, sympy.Expr]:
+    """(r0, f'(r0)): the stable root of r'' = f(r) with the cyclic momenta conserved."""
+    return _worked(method, ("orbit", target), lambda: _circular_orbit(method, target))
+
+
+def _circular_orbit(method: Method, target: str) -> tuple[sympy.Expr, sympy.Expr]:
+    model = method.model
+    r = model.coordinate(target).symbol
+    solver = restated(method, conserved_state(method, target))
+    radial = sympy.simplify(solver.acceleration(target))
+    for step in solver.steps:
+        method.step(step.title, step.latex)
+    roots = sympy.solve(radial, r)
+    slope = sympy.diff(radial, r)
+    stable = [
+        root
+        for root in roots
+        if root.is_real is not False
+        and not (r.is_positive and root.is_positive is False)
+        and _positive_on_domain(-sympy.simplify(slope.subs(r, root)), model)
+    ]
+    if len(stable) != 1:
+        raise DerivationError(
+            f"expected one circular orbit (a stable root of {target}'' = {radial} with the conserved momenta), "
+            f"found {len(stable)} among {roots}",
+            quantity=target,
+        )
+    radius = sympy.simplify(stable[0])
+    method.step(
+        f"Circular orbit: {target}'' = 0 with the conserved momenta",
+        method.tex(sympy.Eq(model.coordinate(target).acceleration, radial))
+        + rf" = 0 \Rightarrow {method.tex(r)}_0 = "
+        + method.tex(radius),
+    )
+    return radius, sympy.simplify(slope.subs(r, radius))
+
+
+def _positive_on_domain(expr: sympy.Expr, model: Model) -> bool:
+    if expr.is_positive is not None:
+        return bool(expr.is_positive)
+    try:
+        return all(float(sympy.N(expr.subs(point))) > 0 for point in domain_points(model, 12, seed=3))
+    except (TypeError, ValueError):
+        return False
+
+
+def mistakes(model: Model, quantity: Quantity, reference: sympy.Expr) -> list[tuple[sympy.Expr | None, str]]:
+    """Slips with an orbit's period and energy: a missing 2 pi, the energy's sign, half of the energy."""
+    kind = quantity.kind
+    if kind is QuantityKind.REVOLUTION_PERIOD:
+        return [(reference / (2 * sympy.pi), MISSING_TWO_PI)]
+    if kind not in (QuantityKind.CIRCULAR_ENERGY, QuantityKind.MECHANICAL_ENERGY):
+        return []
+    result: list[tuple[sympy.Expr | None, str]] = []
+    potential = sympy.simplify(Mechanics(model).potential.subs(dict(model.state)))
+    if not potential.has(*(c.symbol for c in model.coordinates)):
+        result += [(sympy.simplify(reference - potential), KINETIC_ONLY), (potential, POTENTIAL_ONLY)]
+    return [*result, (-reference, ENERGY_SIGN)]
