@@ -44,6 +44,10 @@ class Principal:
 class KeyStore(Protocol):
     def authenticate(self, plaintext: str) -> Principal | None: ...
 
+    def cached(self, plaintext: str) -> Principal | None:
+        """Answered from memory only (no I/O), or None: then `authenticate` decides."""
+        ...
+
 
 def bearer_token(header: str | None) -> str | None:
     if not header:

@@ -80,9 +80,24 @@ class CompiledStore:
         if found is None:
             return None
         payload, mac = found
-        if not hmac.compare_digest(mac, self._mac(key, payload)):
+        if not self._verifies(key, payload, mac):
             log.warning("ignoring a stored compilation of %r that fails its check", record.id)
             return None
+        return self.open(record, payload)
+
+    def sealed(self, records: list[ProblemRecord]) -> dict[str, bytes]:
+        """The stored payload of each record whose compilation is stored and verifies, by key, in one
+        query and without opening any: the MAC proves it is this service's compilation of that content."""
+        keys = {self.key(record): record for record in records}
+        found = self._cache.get_many(keys)
+        return {key: payload for key, (payload, mac) in found.items() if self._verifies(key, payload, mac)}
+
+    def _verifies(self, key: str, payload: bytes, mac: str) -> bool:
+        return hmac.compare_digest(mac, self._mac(key, payload))
+
+    @staticmethod
+    def open(record: ProblemRecord, payload: bytes) -> CompiledProblem | None:
+        """A verified payload unpickled (sympy trees: tens of milliseconds for a large problem)."""
         compiled = pickle.loads(payload)  # noqa: S301 - sealed by this service (class docstring)
         if not isinstance(compiled, CompiledProblem):
             return None
@@ -120,6 +135,7 @@ class Catalog:
         self.warm = threading.Event()
         self._closing = threading.Event()
         self._compiling: dict[tuple[str, int, str], threading.Lock] = {}
+        self._sealed: dict[str, bytes] = {}  # verified stored compilations not opened yet, by store key
 
     def sync_builtin(self) -> list[ProblemRecord]:
         """Store the built-in bank: unchanged files keep their version, edited ones get a new one.
@@ -127,18 +143,28 @@ class Catalog:
         Only a new or edited document has its meaning checked (a restart reads the bank's shape only:
         the stored version was checked when it was stored).
         """
-        stored = {record.id: record.document_hash for record in self.list()}
+        listed = {record.id: record for record in self.list()}
         documents = load_bank(self._bank_dir, check_meaning=False)
+        unchanged = {
+            doc.id
+            for doc in documents
+            if doc.id in listed
+            and listed[doc.id].builtin
+            and listed[doc.id].document_hash == document_hash(doc.model_dump(mode="json"))
+        }
         faults = [
             (f"{doc.id}:{path}", message)
             for doc in documents
-            if stored.get(doc.id) != document_hash(doc.model_dump(mode="json"))
+            if doc.id not in unchanged
             for path, message in _meaning_faults(doc)
         ]
         if faults:
             raise ProblemInvalid(faults, "the built-in bank")
         saved = []
         for doc in documents:
+            if doc.id in unchanged:  # stored as this very document already: nothing to write
+                saved.append(listed[doc.id])
+                continue
             try:
                 saved.append(self._problems.save_builtin(doc.id, doc.model_dump(mode="json")))
             except ProblemExists:
@@ -148,17 +174,34 @@ class Catalog:
         return saved
 
     def warm_up(self) -> None:
-        """Load or compile every live problem once (derivations take seconds); then the instance is ready."""
+        """Make every live problem ready to grade, then set `warm` (the instance is ready).
+
+        A problem whose compilation is stored (and verifies) counts at once: one query finds them all,
+        and they are opened after `warm` is set (or by the first request that needs one). Only the others
+        are compiled (derivations take seconds) before `warm` is set.
+        """
         try:
-            for record in self.list():
+            records = self.list()
+            sealed = self._stored(lambda: self._store.sealed(records)) or {}
+            with self._lock:
+                self._sealed.update(sealed)
+            for record in records:
                 if self._closing.is_set():
                     return
-                try:
-                    self.compiled(record)
-                except Exception:  # one broken problem must not keep the others cold
-                    log.exception("could not compile problem %r version %d", record.id, record.version)
+                if self._store.key(record) not in sealed:
+                    self._compile_logged(record)
         finally:
             self.warm.set()
+        for record in records:  # opened now rather than by a student's first request
+            if self._closing.is_set():
+                return
+            self._compile_logged(record)
+
+    def _compile_logged(self, record: ProblemRecord) -> None:
+        try:
+            self.compiled(record)
+        except Exception:  # one broken problem must not keep the others cold
+            log.exception("could not compile problem %r version %d", record.id, record.version)
 
     def close(self) -> None:
         """Stop a warm-up still running (it would otherwise compile on after the app has shut down);
@@ -204,6 +247,8 @@ class Catalog:
             with lock:
                 found = self._remembered(key)
                 if found is None:
+                    found = self._opened(record)
+                if found is None:
                     found = self._stored(lambda: self._store.load(record))
                 if found is None:
                     # compile_problem's process-wide cache: several apps in one process (tests, a fresh
@@ -218,6 +263,12 @@ class Catalog:
         finally:
             with self._lock:  # later callers find the cache warm; no lock kept per version
                 self._compiling.pop(key, None)
+
+    def _opened(self, record: ProblemRecord) -> CompiledProblem | None:
+        """A payload found sealed at warm-up, unpickled now (each is opened once)."""
+        with self._lock:
+            payload = self._sealed.pop(self._store.key(record), None)
+        return None if payload is None else self._store.open(record, payload)
 
     def _stored(self, use: Callable[[], T]) -> T | None:
         """Use the store unless closing: a warm-up still compiling must not reach a disposed database."""

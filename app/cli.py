@@ -14,6 +14,9 @@ Handler = Callable[[argparse.Namespace, Settings], int]
 
 
 def _serve(args: argparse.Namespace, settings: Settings) -> int:
+    from app.grading.forkserver import start_early
+
+    start_early()  # the workers' fork server loads the checker while this process imports the service
     import uvicorn
 
     from app.main import create_app

@@ -5,16 +5,19 @@ from __future__ import annotations
 from typing import Annotated
 
 from fastapi import Depends, Request, Security
+from starlette.concurrency import run_in_threadpool
 
 from app.auth import Principal, bearer_token
 from app.errors import Forbidden, RateLimited, Unauthenticated
 from app.lti.sessions import principal_from_session
 from app.openapi import bearer_scheme
+from app.ratelimit import MemoryRateLimiter
 from app.services import Services
 from app.storage import ProblemStore, SubmissionStore
 
 
-def get_services(request: Request) -> Services:
+async def get_services(request: Request) -> Services:
+    # async: a plain attribute read, not worth a trip through the thread pool (as every sync dependency)
     services: Services = request.app.state.services
     return services
 
@@ -34,29 +37,44 @@ Problems = Annotated[ProblemStore, Depends(get_problem_store)]
 Submissions = Annotated[SubmissionStore, Depends(get_submission_store)]
 
 
-def current_principal(
+async def current_principal(
     request: Request, services: ServicesDep, _scheme: Annotated[object, Security(bearer_scheme)] = None
 ) -> Principal:
-    """The caller: a bearer API key, or else the session an LTI launch opened (POSTs need its CSRF token)."""
+    """The caller: a bearer API key, or else the session an LTI launch opened (POSTs need its CSRF token).
+
+    On the event loop when the key was seen active moments ago and the rate limit is counted in memory
+    (the common case); whatever needs the database or Redis runs in the thread pool.
+    """
     authorization = request.headers.get("authorization")
     if authorization is None:
-        principal = principal_from_session(request)
+        principal = await run_in_threadpool(principal_from_session, request)
         if principal is None:
             raise Unauthenticated(
                 "Send an API key as 'Authorization: Bearer <key>', or open this from your course."
             )
     else:
         token = bearer_token(authorization)
-        found = None if token is None else services.keys.authenticate(token)
+        found = None if token is None else services.keys.cached(token)
+        if found is None and token is not None:
+            found = await run_in_threadpool(services.keys.authenticate, token)
         if found is None:
             raise Unauthenticated(
                 "This API key is unknown or revoked; send it as 'Authorization: Bearer <key>'."
             )
         principal = found
-    wait = budget_wait(services, principal)
+    if _counted_in_memory(services):
+        wait = budget_wait(services, principal)
+    else:
+        wait = await run_in_threadpool(budget_wait, services, principal)
     if wait is not None:
         raise RateLimited(f"Too many requests; try again in {wait} s.", retry_after=wait)
     return principal
+
+
+def _counted_in_memory(services: Services) -> bool:
+    return isinstance(services.key_limiter, MemoryRateLimiter) and isinstance(
+        services.student_limiter, MemoryRateLimiter
+    )
 
 
 def budget_wait(services: Services, principal: Principal) -> int | None:
@@ -71,7 +89,7 @@ def budget_wait(services: Services, principal: Principal) -> int | None:
 CurrentPrincipal = Annotated[Principal, Depends(current_principal)]
 
 
-def instructor(principal: CurrentPrincipal) -> Principal:
+async def instructor(principal: CurrentPrincipal) -> Principal:
     if not principal.is_instructor:
         raise Forbidden("This needs an instructor key.")
     return principal

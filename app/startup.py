@@ -45,15 +45,25 @@ class DatabaseKeyStore:
         self._known: dict[bytes, tuple[Principal, float, int]] = {}
         self._lock = threading.Lock()
 
-    def authenticate(self, plaintext: str) -> Principal | None:
+    def cached(self, plaintext: str) -> Principal | None:
+        """The key's principal if it was found active within KEY_CACHE_SECONDS and nothing was revoked
+        since; no I/O, so the event loop may call it (None: ask `authenticate`)."""
         digest = hashlib.sha256(plaintext.encode("utf-8", "surrogatepass")).digest()
-        now = self._clock()
         with self._lock:
             known = self._known.get(digest)
-        if known is not None:
-            principal, found_at, revocations = known
-            if now - found_at < KEY_CACHE_SECONDS and revocations == key_repository.revocations:
-                return principal
+        if known is None:
+            return None
+        principal, found_at, revocations = known
+        if self._clock() - found_at < KEY_CACHE_SECONDS and revocations == key_repository.revocations:
+            return principal
+        return None
+
+    def authenticate(self, plaintext: str) -> Principal | None:
+        found = self.cached(plaintext)
+        if found is not None:
+            return found
+        digest = hashlib.sha256(plaintext.encode("utf-8", "surrogatepass")).digest()
+        now = self._clock()
         revocations = key_repository.revocations
         record = self._keys.authenticate(plaintext)
         if record is None:

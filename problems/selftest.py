@@ -20,14 +20,14 @@ import sympy
 
 from physics.answer_text import student_text
 from physics.checking import SymbolicQuestion, check_answer
-from physics.errors import PhyscheckError
+from physics.errors import DerivationError, PhyscheckError
 from physics.symbolic import judge_symbolic
 from physics.verdict import Outcome, Reason, Verdict
 from problems.compiled import CompiledNumericPart, CompiledProblem, CompiledSymbolicPart, compile_problem
 from problems.errors import ProblemInvalid
 from problems.loader import load_bank
 from problems.modelinfo import MIN_AGREEING_METHODS
-from problems.schema import ProblemDocument
+from problems.schema import ProblemDocument, format_path
 from problems.variants import Variant, draw_variant, format_number, round_sigfigs, si_values, unit_scale
 
 # Not a credential: self-test variants only need to be reproducible.
@@ -120,6 +120,12 @@ def verify_problem(
     except ProblemInvalid as error:
         report.results.extend(
             CheckResult(doc.id, None, f"compile {path}", False, msg) for path, msg in error.errors
+        )
+        return Report([report])
+    except DerivationError as error:  # every finding, each at its place in the model
+        report.results.extend(
+            CheckResult(doc.id, None, f"derive {format_path(('model', *path))}", False, message)
+            for path, message in error.items()
         )
         return Report([report])
     except PhyscheckError as error:

@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+from collections.abc import Collection
+
+from sqlalchemy import select
 from sqlalchemy.orm import Session
 
 from app.db.models import CompiledProblemRow
@@ -21,3 +24,13 @@ def put_compiled(session: Session, key: str, payload: bytes, mac: str) -> None:
         session.add(CompiledProblemRow(key=key, payload=payload, mac=mac, created_at=utc_now()))
     else:
         row.payload, row.mac, row.created_at = payload, mac, utc_now()
+
+
+def get_many_compiled(session: Session, keys: Collection[str]) -> dict[str, tuple[bytes, str]]:
+    """(payload, mac) of each of `keys` that is stored, in one query."""
+    rows = session.execute(
+        select(CompiledProblemRow.key, CompiledProblemRow.payload, CompiledProblemRow.mac).where(
+            CompiledProblemRow.key.in_(list(keys))
+        )
+    )
+    return {key: (bytes(payload), mac) for key, payload, mac in rows}

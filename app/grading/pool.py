@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import asyncio
 import logging
-import multiprocessing
 from collections import OrderedDict
 from collections.abc import Callable
 from concurrent.futures import TimeoutError as FutureTimeout
@@ -14,6 +13,7 @@ from typing import TypeVar
 from pebble import ProcessExpired, ProcessPool
 
 from app.errors import Busy, GraderFault, Unavailable
+from app.grading import forkserver
 from app.grading.supervised import PoolUnavailable, SupervisedPool
 from app.grading.worker import WARM_UP_JOBS, GraderCrash, SpecProblem, grade, limit_memory, read_only
 from physics.checking import CheckJob, Preview
@@ -72,18 +72,17 @@ class GradingPool:
     def _new_pool(self) -> ProcessPool:
         # forkserver: workers fork from a clean, pre-warmed process, not from the threaded server.
         # A fork server that died is started again by multiprocessing on the next worker it must fork.
-        context = multiprocessing.get_context("forkserver")
-        context.set_forkserver_preload(["app.grading.worker"])
         return ProcessPool(
             max_workers=self._workers,
             max_tasks=self._max_tasks,
             initializer=limit_memory,
             initargs=(self._memory_mb,),
-            context=context,
+            context=forkserver.context(),
         )
 
     def _warm(self, pool: ProcessPool) -> None:
-        # One small job per worker so the first real request does not pay for lazy imports.
+        # One small job per worker: every worker is forked and answering before the pool counts as
+        # ready (they fork warm from the preloaded fork server, so this takes milliseconds).
         warm = [pool.schedule(self._task, args=(job,)) for _ in range(self._workers) for job in WARM_UP_JOBS]
         for future in warm:
             future.result(timeout=WARM_UP_SECONDS)

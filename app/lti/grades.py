@@ -44,8 +44,8 @@ def score_of(document: Mapping[str, Any], best: Mapping[str, float]) -> tuple[fl
 
 
 def queue_grade(session: Session, stored: SubmissionRecord) -> int:
-    """The `Services.on_graded` hook: inside the submission's transaction, queue the student's new
-    problem score for every LMS line item it was launched from. Returns how many were queued."""
+    """The SQL submission store's filing hook: inside the submission's transaction, queue the
+    student's new problem score for every LMS line item it was launched from. Returns how many."""
     if stored.verdict == Outcome.INVALID:
         return 0
     launched = session.scalar(

@@ -15,7 +15,7 @@ import secrets
 import threading
 import uuid
 from collections import Counter, defaultdict
-from collections.abc import Callable, Iterable, Mapping, Sequence
+from collections.abc import Callable, Collection, Iterable, Mapping, Sequence
 from dataclasses import dataclass, replace
 from datetime import datetime
 from typing import Any
@@ -390,6 +390,10 @@ class MemoryCompiledCache:
     def get(self, key: str) -> tuple[bytes, str] | None:
         with self._lock:
             return self._rows.get(key)
+
+    def get_many(self, keys: Collection[str]) -> dict[str, tuple[bytes, str]]:
+        with self._lock:
+            return {key: self._rows[key] for key in keys if key in self._rows}
 
     def put(self, key: str, payload: bytes, mac: str) -> None:
         with self._lock:

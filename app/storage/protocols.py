@@ -7,7 +7,7 @@ Every call is atomic on its own: callers never open sessions or hold a transacti
 
 from __future__ import annotations
 
-from collections.abc import Mapping, Sequence
+from collections.abc import Collection, Mapping, Sequence
 from dataclasses import dataclass
 from datetime import datetime
 from typing import Any, Protocol
@@ -125,6 +125,10 @@ class CompiledCache(Protocol):
     """Compiled problems across restarts: opaque sealed bytes by key (the catalog seals them)."""
 
     def get(self, key: str) -> tuple[bytes, str] | None: ...
+
+    def get_many(self, keys: Collection[str]) -> dict[str, tuple[bytes, str]]:
+        """(payload, mac) of each of `keys` that is stored, at once."""
+        ...
 
     def put(self, key: str, payload: bytes, mac: str) -> None:
         """Store or replace."""

@@ -3,7 +3,7 @@ repositories, so no caller opens a session."""
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Collection, Mapping, Sequence
 from datetime import datetime
 from typing import Any
 
@@ -157,6 +157,10 @@ class SqlCompiledCache:
     def get(self, key: str) -> tuple[bytes, str] | None:
         with self._database.session(read_only=True) as session:
             return compiled_repository.get_compiled(session, key)
+
+    def get_many(self, keys: Collection[str]) -> dict[str, tuple[bytes, str]]:
+        with self._database.session(read_only=True) as session:
+            return compiled_repository.get_many_compiled(session, keys)
 
     def put(self, key: str, payload: bytes, mac: str) -> None:
         with self._database.session() as session:

@@ -16,7 +16,7 @@ from physics.engine.method import Method, NotApplicable
 from physics.engine.mistakes import generate_limits, generate_mistakes
 from physics.engine.model import Model, Quantity
 from physics.engine.newton import NewtonMethod
-from physics.engine.proof import domain_points, prove_equal
+from physics.engine.proof import clear_domain_points, domain_points, prove_equal
 from physics.engine.results import Derivation, KnownMistake, LimitCase, MethodReport, SimulationCheck
 from physics.engine.simulation import Simulator
 from physics.errors import DerivationError, PhyscheckError
@@ -43,6 +43,7 @@ def derive(model: Model) -> Derivation:
 
 @lru_cache(maxsize=64)
 def _derive(model: Model) -> Derivation:
+    clear_domain_points()  # shared within this derivation only, so vetting times stay honest
     mech = Mechanics(model)
     check_consistency(model, mech)
     methods = [cls(model, mech) for cls in _methods()]
@@ -85,6 +86,10 @@ def _derive(model: Model) -> Derivation:
         path: tuple[str | int, ...] = ("quantities", quantity.name)
         if len(derived) < MIN_METHODS:
             findings.append((path, _too_few(quantity.name, derived, stopped[quantity.name], methods)))
+            continue
+        frame_failed = _frame_failed(model, quantity.name, derived, stopped[quantity.name], methods)
+        if frame_failed:
+            findings.append((path, frame_failed))
             continue
         names = list(derived)
         how = []
@@ -146,6 +151,21 @@ def _too_few(
     return (
         f"{name}: only {len(derived)} method(s) could derive it ({', '.join(derived) or 'none'}); at least "
         f"{MIN_METHODS} are required. " + "; ".join(found)
+    )
+
+
+def _frame_failed(
+    model: Model, name: str, derived: dict[str, sympy.Expr], stopped: dict[str, str], methods: list[Method]
+) -> str | None:
+    """A frame the model declares must work: the fictitious-forces method stopping where the others
+    derive the quantity means the frame does not fit the model (a wrong rate, axis or body)."""
+    reason = stopped.get(FramesMethod.name, "")
+    if model.frame is None or not reason.startswith("stopped"):
+        return None
+    found = "; ".join(f"{m.name} gives {derived[m.name]}" for m in methods if m.name in derived)
+    return (
+        f"{name}: in the model's frame the fictitious forces {reason}, while the other methods derive it "
+        f"({found}): check the frame's rate, axis and bodies against the model"
     )
 
 

@@ -119,6 +119,12 @@ def _physics(model: Model, dims: Dims) -> list[Check]:
             checks.append((("impact", "restitution"), model.impact.restitution, DIMENSIONLESS))
         if model.impact.release is not None:
             checks.append((("impact", "release"), model.impact.release, ENERGY))
+    coordinates = {c.name: c.symbol for c in model.coordinates}
+    for quantity in model.quantities:  # where the motion gets to: a coordinate's value, a height
+        for name, value in quantity.at:
+            checks.append((("quantities", quantity.name, "at", name), value, dims.get(coordinates[name])))
+        if quantity.level is not None:
+            checks.append((("quantities", quantity.name, "level"), quantity.level, LENGTH))
     return checks
 
 

@@ -745,6 +745,8 @@ def _quantity(
     _check_keys(spec, allowed, allowed, path, errors)
     target = spec[kind.value]
     where: Path = (*path, kind.value)
+    if kind is QuantityKind.REVOLUTION_PERIOD and target == "frame":  # the rotating frame's turn
+        return Quantity(name, kind, "frame")
     if kind in _QUANTITY_TARGET:
         pool = (
             {c.name for c in coordinates}

@@ -45,6 +45,8 @@ class Method(ABC):
         self._logged: set[str] = set()
         self._impact: impact.Worked | None = None  # the impact worked once, for all its quantities
         self.arrivals: dict[tuple[object, ...], sympy.Expr] = {}  # work_energy: v^2 where the motion arrives
+        # each coordinate's equilibrium, found once: frequencies, expressions and the simulation ask again
+        self._equilibria: dict[str, sympy.Expr] = {}
 
     @cached_property
     def free(self) -> Method:
@@ -172,6 +174,11 @@ class Method(ABC):
 
     def equilibrium(self, coordinate: str) -> sympy.Expr:
         """The stable root of the generalized force Q(q) = 0: Q'(q0) < 0 on the whole domain."""
+        if coordinate not in self._equilibria:
+            self._equilibria[coordinate] = self._equilibrium(coordinate)
+        return self._equilibria[coordinate]
+
+    def _equilibrium(self, coordinate: str) -> sympy.Expr:
         q = self.model.coordinate(coordinate).symbol
         force = self.potential_force(coordinate)
         others = (force.free_symbols & set(self.mech.q)) - {q}

@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING, Any
 import sympy
 
 from physics.engine.mechanics import solve_linear
-from physics.engine.model import Coordinate, Quantity, QuantityKind
+from physics.engine.model import Coordinate, Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
 from physics.engine.text import Path
 from physics.errors import DerivationError, SpecError, SpecErrors
@@ -83,7 +83,7 @@ def answer(method: Method, quantity: Quantity, point: dict[sympy.Symbol, sympy.E
     return ratio
 
 
-def _null_vector(matrix: sympy.Matrix, model: Any, name: str) -> sympy.Matrix:
+def _null_vector(matrix: sympy.Matrix, model: Model, name: str) -> sympy.Matrix:
     """A non-zero v with matrix v = 0: one component set to 1, the others from all rows but one, the
     left-out row checked at domain points (the matrix is singular only once its entries simplify)."""
     size = matrix.shape[0]

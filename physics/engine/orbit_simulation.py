@@ -17,8 +17,11 @@ import math
 from collections.abc import Callable
 from functools import cached_property
 
+import sympy
+
 from physics.engine.conservation import cyclic_indices
 from physics.engine.model import Quantity, QuantityKind
+from physics.engine.orbits import FRAME, elsewhere
 from physics.engine.simulation import Dynamics, Measured, Point, Vector, rk4, solve_numeric
 from physics.errors import DerivationError
 
@@ -52,6 +55,12 @@ class OrbitMeasure:
             return (
                 "2 pi / period of the radial oscillation of the integrated orbit",
                 2 * math.pi / period,
+                None,
+            )
+        if quantity.target == FRAME:
+            return (
+                "2 pi over the frame's rate at which the simulated bodies rest at the state",
+                self._frame(point),
                 None,
             )
         key = (quantity.target, tuple(point[s] for s in sorted(point, key=str)))
@@ -139,6 +148,52 @@ class OrbitMeasure:
         return [
             k for k, d in enumerate(self.dyn.mech.dofs) if not d.name.startswith("phi_") and d.mapping.has(q)
         ]
+
+    # --- a rotating frame ---------------------------------------------------------------------
+
+    def _frame(self, point: Point) -> float:
+        """2 pi / rate, the rate's own symbol (if the state is not at rest for every rate) found by
+        scanning the numerical accelerations at the state for the value that makes them vanish."""
+        frame = self.model.frame
+        assert frame is not None and frame.rate is not None
+        dyn = self.dyn
+        q, _ = self.start(point)
+        rest = [0.0] * dyn.n
+
+        def accelerations(at: Point) -> Vector:
+            return dyn.unknowns(q, rest, dyn.values(at))[: dyn.n]
+
+        now = accelerations(point)
+        scale = max(abs(a) for a in now)
+        own = [s for s in frame.rate.free_symbols if s in point and not elsewhere(self.model, s)]
+        if scale > 0 and len(own) == 1:
+            symbol = own[0]
+            j = max(range(dyn.n), key=lambda k: abs(now[k]))
+
+            def pull(value: float) -> float:
+                return accelerations({**point, symbol: value})[j]
+
+            grid = [point[symbol] * f for f in SCAN]
+            values = [pull(v) for v in grid]
+            roots = [
+                (grid[k], grid[k + 1]) for k in range(len(grid) - 1) if (values[k] > 0) != (values[k + 1] > 0)
+            ]
+            if len(roots) != 1:
+                raise DerivationError(f"the simulation finds {len(roots)} rates that hold the bodies at rest")
+            low, high = roots[0]
+            sign_low = pull(low) > 0
+            for _ in range(80):
+                middle = (low + high) / 2
+                low, high = (middle, high) if (pull(middle) > 0) == sign_low else (low, middle)
+            point = {**point, symbol: (low + high) / 2}
+            if max(abs(a) for a in accelerations(point)) > 1e-9 * scale:
+                raise DerivationError(
+                    "the simulated bodies do not rest in the frame at the state at any rate"
+                )
+        elif scale > 0:
+            raise DerivationError("the simulated bodies do not rest in the frame at the state")
+        rate = float(sympy.N(frame.rate.subs(point), 20))
+        return 2 * math.pi / rate
 
     # --- the effective potential ---------------------------------------------------------------
 

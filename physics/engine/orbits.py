@@ -34,6 +34,7 @@ from physics.engine.newton import NewtonMethod
 from physics.engine.proof import domain_points
 from physics.errors import DerivationError
 
+FRAME = "frame"  # `revolution_period: frame`: one turn of the model's rotating frame
 # the unknown steady rate; positive, so that of the pair +-w sympy returns the forward turning
 RATE = sympy.Symbol("w_steady", positive=True)
 
@@ -64,6 +65,10 @@ def answer(method: Method, quantity: Quantity) -> sympy.Expr:
             + method.tex(sympy.simplify(-slope)),
         )
         return omega
+    if quantity.target == FRAME:
+        period = sympy.simplify(2 * sympy.pi / frame_rate(method))
+        method.step("Period of one turn of the frame", r"T = \frac{2\pi}{\omega} = " + method.tex(period))
+        return period
     rate, steady = steady_rate(method, quantity.target)
     if kind is QuantityKind.REVOLUTION_PERIOD:
         period = sympy.simplify(2 * sympy.pi / rate)
@@ -180,6 +185,72 @@ def _steady_rate(method: Method, target: str) -> tuple[sympy.Expr, Method]:
         + method.tex(rate),
     )
     return rate, solver
+
+
+def frame_rate(method: Method) -> sympy.Expr:
+    """The rotating frame's rate with the bodies at rest in it at the state: the rate as written when
+    every coordinate's acceleration there vanishes for any rate, else with the rate's own symbol (the
+    one that appears nowhere but in the rate and the centrifugal potential) solved so that they do."""
+    model = method.model
+    rate = model.frame.rate if model.frame is not None else None
+    if rate is None:
+        raise DerivationError(
+            "revolution_period: frame needs a rotating frame (the `rotating` element)", quantity=FRAME
+        )
+    accelerations = [(c, method.acceleration(c.name)) for c in model.coordinates]
+    moving = [(c, a) for c, a in accelerations if not _vanishes(a, model)]
+    if not moving:
+        method.step("At rest in the frame at the state", r"\ddot q = 0,\ \omega = " + method.tex(rate))
+        return rate
+    own = [s for s in rate.free_symbols if s in model.parameters and not elsewhere(model, s)]
+    if len(own) != 1:
+        raise DerivationError(
+            f"the bodies are not at rest in the frame at the state, and the rate {rate} has {len(own)} symbols "
+            "of its own to solve for (one, found nowhere else in the model, is needed)",
+            quantity=FRAME,
+        )
+    (symbol,) = own
+    first, acceleration = moving[0]
+    roots = [r for r in sympy.solve(acceleration, symbol) if _positive_on_domain(r, model)]
+    if len(roots) != 1:
+        raise DerivationError(
+            f"no single rate {symbol} > 0 holds {first.name} at rest in the frame ({first.name}'' = {acceleration})",
+            quantity=FRAME,
+        )
+    value = sympy.simplify(roots[0])
+    for c, a in moving[1:]:
+        if sympy.simplify(a.subs(symbol, value)) != 0:
+            raise DerivationError(f"at {symbol} = {value}, {c.name}'' = {a} does not vanish", quantity=FRAME)
+    method.step(
+        "At rest in the frame at the state",
+        method.tex(sympy.Eq(first.acceleration, acceleration))
+        + rf" = 0 \Rightarrow {method.tex(symbol)} = "
+        + method.tex(value),
+    )
+    return sympy.simplify(rate.subs(symbol, value))
+
+
+def _vanishes(expr: sympy.Expr, model: Model) -> bool:
+    """expr is identically 0; looked at numerically first, since simplifying every method's acceleration
+    costs more than the rest of the quantity."""
+    if expr == 0:
+        return True
+    try:
+        values = [complex(sympy.N(expr.subs(point), 15)) for point in domain_points(model, 3, seed=13)]
+    except (TypeError, ValueError):
+        values = []
+    if any(abs(v) > 1e-9 for v in values):
+        return False
+    return bool(sympy.simplify(expr) == 0)
+
+
+def elsewhere(model: Model, symbol: sympy.Symbol) -> bool:
+    """`symbol` appears in the model beside the frame's rate (positions, masses, gaps, the state...)."""
+    places: list[sympy.Expr] = [e for b in model.bodies for _, e in b.position]
+    places += [b.mass for b in model.bodies] + [b.inertia for b in model.bodies]
+    places += [c.gap for c in model.constraints] + [v for _, v in model.state]
+    places += [model.gravity] if model.gravity is not None else []
+    return any(e.has(symbol) for e in places)
 
 
 def _speed(steady: Model, target: str) -> sympy.Expr:

@@ -10,6 +10,7 @@ import math
 import random
 import zlib
 from collections.abc import Sequence
+from functools import lru_cache
 
 import sympy
 
@@ -24,6 +25,16 @@ MAX_OPS_SYMBOLIC = 400
 
 def domain_points(model: Model, count: int, seed: int = 20260101) -> list[dict[sympy.Symbol, float]]:
     """`count` random points of the parameters' domain (ranges, positive symbols, positivity conditions)."""
+    return [dict(point) for point in _domain_points(model, count, seed)]
+
+
+def clear_domain_points() -> None:
+    _domain_points.cache_clear()
+
+
+@lru_cache(maxsize=256)
+def _domain_points(model: Model, count: int, seed: int) -> tuple[dict[sympy.Symbol, float], ...]:
+    """Drawn once per model, count and seed: every equilibrium's stability test asks for the same ones."""
     rng = random.Random(seed)  # noqa: S311 - reproducible sampling, not security
     bounds = {s: (float(lo), float(hi)) for s, lo, hi in model.ranges}
     points: list[dict[sympy.Symbol, float]] = []
@@ -40,7 +51,7 @@ def domain_points(model: Model, count: int, seed: int = 20260101) -> list[dict[s
         if all(float(c.subs(point)) > 0 for c in model.positive):
             points.append(point)
             if len(points) == count:
-                return points
+                return tuple(points)
     raise DerivationError(f"could not find {count} points in the domain (conditions {model.positive})")
 
 

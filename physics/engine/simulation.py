@@ -364,7 +364,26 @@ class Simulator:
                 [v + (delta if j == i else 0.0) for j, v in enumerate(q)], qd, dyn.values(point)
             )[: dyn.n]
             rate = max(rate, *(abs(a - b) / delta for a, b in zip(moved, qdd, strict=True)))
-        return min(1e-2, math.sqrt(1e-4 * scale / fastest), 1e-3 * scale / speed, 1e-2 / math.sqrt(rate))
+        step = min(1e-2, math.sqrt(1e-4 * scale / fastest), 1e-3 * scale / speed, 1e-2 / math.sqrt(rate))
+        return self._resolve_time(q, qd, point, step)
+
+    def _resolve_time(self, q: Vector, qd: Vector, point: Point, step: float) -> float:
+        """With a force in the time, halve the step until the acceleration's own second difference in
+        time (the system held still) is negligible: a fast driving force needs a short step."""
+        dyn = self.dynamics
+        if dyn.clock is None:
+            return step
+        params = dyn.values(point)
+        now = params[dyn.clock]
+        for _ in range(40):
+            before, at, after = (
+                dyn.unknowns(q, qd, dyn.at(params, [now + d], 0))[: dyn.n] for d in (-step, 0.0, step)
+            )
+            size = max([abs(v) for v in (*before, *at, *after)] + [1e-300])
+            if max(abs(a - 2 * b + c) for a, b, c in zip(before, at, after, strict=True)) <= 1e-6 * size:
+                break
+            step /= 2
+        return step
 
     def _trajectory_around(
         self, point: Point, h: float, steps: int = 10, start: tuple[Vector, Vector] | None = None

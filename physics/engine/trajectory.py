@@ -1,7 +1,7 @@
 """A body in free flight from the model's state: time of flight, range and maximum height, worked two ways.
 
-Kinematics (Lagrange's and Newton's methods, each from its own equations of motion with the state left
-free): the body's acceleration must be constant (gravity, constant forces; not drag); then
+Kinematics (Lagrange's, Newton's and d'Alembert's methods, each from its own equations of motion with
+the state left free): the body's acceleration must be constant (gravity, constant forces; not drag); then
 y(t) = y0 + vy0 t + ay t^2/2, the flight ends at the later root of y(t) = level, the apex is where
 y'(t) = 0, and the range is x(T) - x0.
 
@@ -60,20 +60,17 @@ def launch(model: Model, quantity: Quantity) -> Launch:
 
 
 def answer(method: Method, quantity: Quantity) -> sympy.Expr:
-    return ROUTES[method.name](method, quantity)
+    return ROUTES.get(method.name, by_kinematics)(method, quantity)
 
 
 # --- kinematics ---------------------------------------------------------------------------------
 
 
-def _lagrange_acceleration(method: Method, body: str) -> Vector:
-    """d^2(position)/dt^2 with the coordinates' accelerations from Lagrange's equations (state free)."""
-    from physics.engine.lagrange import LagrangeMethod
-
+def _coordinate_acceleration(method: Method, body: str) -> Vector:
+    """d^2(position)/dt^2 with the coordinates' accelerations from the method's own equations of motion
+    (Lagrange's, d'Alembert's principle, ...; state free)."""
     model = method.model
-    free = method.free
-    assert isinstance(free, LagrangeMethod)
-    solution = free.solution
+    solution = {c.acceleration: method.free.acceleration(c.name) for c in model.coordinates}
     return {
         axis: sympy.simplify(time_derivative(time_derivative(expr, model), model).subs(solution))
         for axis, expr in model.body(body).position
@@ -93,10 +90,7 @@ def _newton_acceleration(method: Method, body: str) -> Vector:
     }
 
 
-ACCELERATIONS: dict[str, Callable[[Method, str], Vector]] = {
-    "lagrange": _lagrange_acceleration,
-    "newton": _newton_acceleration,
-}
+ACCELERATIONS: dict[str, Callable[[Method, str], Vector]] = {"newton": _newton_acceleration}
 
 
 def by_kinematics(method: Method, quantity: Quantity) -> sympy.Expr:
@@ -104,7 +98,7 @@ def by_kinematics(method: Method, quantity: Quantity) -> sympy.Expr:
 
     model = method.model
     start = launch(model, quantity)
-    found = ACCELERATIONS[method.name](method, quantity.target)
+    found = ACCELERATIONS.get(method.name, _coordinate_acceleration)(method, quantity.target)
     moving = model.moving_symbols
     if any(a.free_symbols & moving for a in found.values()):
         raise NotApplicable(
@@ -257,8 +251,5 @@ def _with_sign(model: Model, roots: list[sympy.Expr], like: sympy.Expr, name: st
     )
 
 
-ROUTES: dict[str, Callable[[Method, Quantity], sympy.Expr]] = {
-    "lagrange": by_kinematics,
-    "newton": by_kinematics,
-    "conservation": by_energy,
-}
+# every other method (Lagrange's, d'Alembert's principle, ...) integrates its own constant acceleration
+ROUTES: dict[str, Callable[[Method, Quantity], sympy.Expr]] = {"conservation": by_energy}

@@ -6,7 +6,7 @@ plus the work of the non-conservative forces along the way, the integral of thei
 kinetic friction's normal force comes from Newton's law across the surface. On a curved surface that
 force changes with the speed, so the theorem alone does not give friction's work: it then stops.
 
-Integrating the equation of motion (Lagrange's and Newton's methods, each with its own): with the
+Integrating the equation of motion (Lagrange's, Newton's and d'Alembert's methods, each its own): with the
 state left free, the coordinate's acceleration is A(q) + B(q) q'^2 (friction on a curve and quadratic
 drag bring the B term); v dv/dq = q'' is then linear in w = v^2, dw/dq = 2A + 2Bw, integrated from the
 state to the configuration with the factor exp(-integral of 2B).
@@ -83,7 +83,7 @@ def answer(method: Method, quantity: Quantity) -> sympy.Expr:
     trip = journey(model, quantity)
     key = (trip.coordinate.name, trip.end)
     if key not in method.arrivals:
-        method.arrivals[key] = ROUTES[method.name](method, trip)
+        method.arrivals[key] = ROUTES.get(method.name, by_integration)(method, trip)
         _check_reached(model, trip, method.arrivals[key], quantity.name)
     square = method.arrivals[key]
     c = trip.coordinate
@@ -240,7 +240,8 @@ def _check_reached(model: Model, trip: Journey, square: sympy.Expr, name: str) -
             )
 
 
-ROUTES = {"lagrange": by_integration, "newton": by_integration, "conservation": by_energy}
+# every other method (d'Alembert's principle, ...) integrates its own equation of motion
+ROUTES = {"conservation": by_energy}
 
 
 def arrival_velocity(model: Model, quantity: Quantity) -> sympy.Expr:

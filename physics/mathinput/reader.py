@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass
+from functools import lru_cache
 
 import sympy
 
@@ -50,6 +51,12 @@ class ParsedMath:
     read_as: ReadAs  # rendered from the parse tree, so it shows how the input was grouped
 
 
+@lru_cache(maxsize=256)
+def _name_table(names: tuple[tuple[str, sympy.Symbol], ...]) -> NameTable:
+    """One table per set of declared names (read-only once built): every answer to a part reuses it."""
+    return NameTable(dict(names))
+
+
 def parse_math(
     text: str,
     names: Mapping[str, sympy.Symbol],
@@ -65,7 +72,7 @@ def parse_math(
     Raises ParseError, AmbiguousInput, UnknownSymbol, UnknownFunction or TooLarge, each with a 0-based
     `position` into `text`; sizes are checked before any value is computed.
     """
-    table = NameTable(names)
+    table = _name_table(tuple(names.items()))
     tokens = tokenize(text, limits)
     _refuse_exponent_letter_clash(text, tokens, table)
     tokens = resolve_words(tokens, table)

@@ -36,7 +36,7 @@ from physics.symbolic.compare import (
     negated,
 )
 from physics.symbolic.dimensional import DimensionMismatch, UnknownDimension, expression_dimension
-from physics.symbolic.floats import FloatEvaluator, agrees, differs, in_range
+from physics.symbolic.floats import AGREE, DIFFER, FloatEvaluator, Floats, agrees, differs, in_range
 from physics.symbolic.limits import breaks_limit
 from physics.symbolic.numeric import ONE, RND, Column, Evaluator, complex_value
 from physics.symbolic.proof import proves_equal
@@ -50,6 +50,8 @@ FACTOR_FEEDBACK = (
 )
 WRONG_VALUE_FEEDBACK = "Your answer is not equivalent to the expected one."
 UNDEFINED_FEEDBACK = "Your expression is not defined (or not real) for some allowed values of the symbols."
+# The sample points where a float64 finding is confirmed in multiprecision (the precise points).
+_CHECK_POINTS = (0, 1)
 _NUDGE_BITS = 60
 _NUDGE_TOLERANCE_BITS = 40
 
@@ -205,22 +207,127 @@ def _refuted_at(answer: sympy.Expr, reference: PreparedReference, index: int) ->
     )
 
 
-def _first_look(answer: sympy.Expr, reference: PreparedReference) -> bool | None:
+def _first_look(answer: sympy.Expr, reference: PreparedReference) -> tuple[bool | None, Floats | None]:
     """The rule decided from a float64 look at every point and multiprecision at a few: True (equal),
-    False (refuted), None (float64 cannot tell: the full multiprecision path decides)."""
+    False (refuted), None (float64 cannot tell: the full multiprecision path decides); with the
+    answer's float64 values when they are usable."""
     floats = reference.floats
     if not floats.usable:
-        return None
+        return None, None
     values = FloatEvaluator(floats.columns, reference.sample.size)(answer)
     if values is None or not in_range(values):
-        return None
+        return None, None
     if agrees(values, floats.values, floats.scale):
         # Equal to 1e-9 everywhere; the precise points catch what float64 cannot see (30 digits of pi).
-        return True if _confirmed(answer, reference) else None
+        return (True if _confirmed(answer, reference) else None), values
     suspects = np.flatnonzero(differs(values, floats.values, floats.scale))
     if suspects.size and _refuted_at(answer, reference, int(suspects[0])):
-        return False
+        return False, values
+    return None, values
+
+
+def _at_points(
+    exprs: tuple[sympy.Expr, ...], reference: PreparedReference, indexes: tuple[int, ...]
+) -> list[Column]:
+    """The expressions in multiprecision (PREC) at a few sample points."""
+    columns = {s: [reference.sample.columns[s][i] for i in indexes] for s in reference.sample.symbols}
+    evaluate = Evaluator(columns, len(indexes), PREC)
+    return [evaluate(expr) for expr in exprs]
+
+
+def _same_as(
+    answer: sympy.Expr,
+    values: Floats,
+    target: sympy.Expr,
+    targets: Floats | None,
+    reference: PreparedReference,
+) -> bool | None:
+    """Would multiprecision find the answer equal to `target` at every sample point? Decided from
+    float64 and confirmed in multiprecision: equal at the check points, or different at a point where
+    float64 sees a clear difference; None when float64 cannot tell."""
+    if targets is None:
+        return None
+    scale = reference.floats.scale
+    if agrees(values, targets, scale):
+        mine, theirs = _at_points((answer, target), reference, _CHECK_POINTS)
+        same = all(
+            a is not None and b is not None and close(a, b, reference.scale, TOLERANCE_BITS)
+            for a, b in zip(mine, theirs, strict=True)
+        )
+        return True if same else None
+    suspects = np.flatnonzero(differs(values, targets, scale))
+    if suspects.size:
+        (a,), (b,) = _at_points((answer, target), reference, (int(suspects[0]),))
+        if a is not None and b is not None and not close(a, b, reference.scale, TOLERANCE_BITS):
+            return False
     return None
+
+
+def _constant_factor(answer: sympy.Expr, values: Floats, reference: PreparedReference) -> bool | None:
+    """Is the answer a constant multiple (not ±1, not 0) of the reference, as constant_ratio would find
+    in multiprecision? From float64 ratios, confirmed at two points; None when float64 cannot tell."""
+    floats = reference.floats
+    tiny = floats.scale * 2.0**-40
+    if np.any(np.abs(floats.values) <= tiny):
+        return None  # a point where constant_ratio skips or refuses: left to multiprecision
+    with np.errstate(all="ignore"):
+        ratios = values / floats.values
+    if not np.all(np.isfinite(ratios)):
+        return None
+    spread = np.abs(ratios - ratios[0])
+    far = int(np.argmax(spread))
+    if spread[far] <= AGREE * abs(ratios[0]):
+        indexes = _CHECK_POINTS
+    elif spread[far] > DIFFER * (abs(ratios[0]) + abs(ratios[far])):
+        indexes = (0, far)
+    else:
+        return None
+    (mine,) = _at_points((answer,), reference, indexes)
+    theirs = [reference.values[i] for i in indexes]
+    if any(v is None for v in (*mine, *theirs)):
+        return None
+    first, second = (
+        libmp.mpf_div(a, b, PREC, RND)
+        for a, b in zip(mine, theirs, strict=True)
+        if a is not None and b is not None
+    )
+    constant = close(first, second, libmp.fzero, TOLERANCE_BITS)
+    if indexes is _CHECK_POINTS:
+        if not constant:
+            return None
+        return not close(libmp.mpf_abs(first), ONE, ONE, 40) and first != libmp.fzero
+    return False if not constant else None
+
+
+def _diagnose_in_floats(answer: sympy.Expr, values: Floats, reference: PreparedReference) -> Judgement | None:
+    """`diagnose` decided from float64 values with multiprecision confirmations (same order, same
+    answers); None wherever float64 cannot tell, and the multiprecision diagnosis decides."""
+    if not np.all(np.isfinite(values)):
+        return None  # undefined somewhere: the full path says so in the feedback
+    for (expr, feedback), targets in zip(reference.mistake_exprs, reference.float_mistakes, strict=True):
+        same = _same_as(answer, values, expr, targets, reference)
+        if same is None:
+            return None
+        if same:
+            return Judgement(False, Reason.KNOWN_MISTAKE, feedback)
+    dimension = _dimension_problem(answer, reference)
+    if dimension is not None:
+        return Judgement(False, Reason.WRONG_DIMENSION, dimension)
+    floats = reference.floats
+    same = _same_as(answer, values, -reference.expected, -floats.values, reference)
+    if same is None:
+        return None
+    if same:
+        return Judgement(False, Reason.SIGN_ERROR, SIGN_FEEDBACK)
+    if reference.expected.free_symbols:
+        factor = _constant_factor(answer, values, reference)
+        if factor is None:
+            return None
+        if factor:
+            return Judgement(False, Reason.CONSTANT_FACTOR, FACTOR_FEEDBACK)
+    return Judgement(
+        False, Reason.WRONG_VALUE, " ".join([WRONG_VALUE_FEEDBACK, *_limit_hints(answer, reference)])
+    )
 
 
 def judge_symbolic(answer: sympy.Expr, reference: PreparedReference) -> Judgement:
@@ -231,9 +338,13 @@ def judge_symbolic(answer: sympy.Expr, reference: PreparedReference) -> Judgemen
     expr = _normalize_answer(answer, reference)
     if expr == reference.expected:
         return Judgement(True, Reason.EQUIVALENT, CORRECT)
-    decided = _first_look(expr, reference)
+    decided, floats = _first_look(expr, reference)
     if decided is True:
         return Judgement(True, Reason.EQUIVALENT, CORRECT)
+    if decided is False and floats is not None:
+        quick = _diagnose_in_floats(expr, floats, reference)
+        if quick is not None:
+            return quick
     values = Evaluator(reference.sample.columns, reference.sample.size, PREC)(expr)
     if decided is None and _equivalent(expr, values, reference):
         return Judgement(True, Reason.EQUIVALENT, CORRECT)

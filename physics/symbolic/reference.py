@@ -19,7 +19,7 @@ from physics.errors import SpecError
 from physics.symbolic.compare import PREC, PRECISE_PREC, typical_scale
 from physics.symbolic.dimensional import DimensionMismatch, UnknownDimension, expression_dimension
 from physics.symbolic.domain import LimitCase, SymbolicContext
-from physics.symbolic.floats import FloatSample, float_sample
+from physics.symbolic.floats import FloatEvaluator, Floats, FloatSample, float_sample, in_range
 from physics.symbolic.limits import PreparedLimit, prepare_limit
 from physics.symbolic.numeric import Column, Evaluator, Mpf
 from physics.symbolic.sampling import DomainSample, sample_domain, seed_for
@@ -65,11 +65,22 @@ class PreparedReference:
         """The sample and the reference's values in float64, for the first look at an answer."""
         return float_sample(self.sample, self.values)
 
+    @cached_property
+    def float_mistakes(self) -> tuple[Floats | None, ...]:
+        """The known mistakes in float64 at every point (None where float64 cannot stand in)."""
+        evaluate = FloatEvaluator(self.floats.columns, self.sample.size)
+        found: list[Floats | None] = []
+        for expr, _ in self.mistake_exprs:
+            values = evaluate(expr) if self.floats.usable else None
+            found.append(values if values is not None and in_range(values) else None)
+        return tuple(found)
+
     def complete(self) -> PreparedReference:
         """Everything computed now (before the reference is persisted or sent to another process)."""
         self.mistakes  # noqa: B018
         self.limits  # noqa: B018
         self.floats  # noqa: B018
+        self.float_mistakes  # noqa: B018
         return self
 
 
@@ -135,8 +146,9 @@ def prepare_reference(expected: sympy.Expr, context: SymbolicContext) -> Prepare
     constraints = tuple(
         _reference_side_relation(c, context, ("constraints", i)) for i, c in enumerate(context.constraints)
     )
+    # The points depend on the domain only (not on the reference): references over the same symbols
+    # share them, so a new reference costs one evaluation at points already drawn (sampling.py).
     seed = seed_for(
-        sympy.srepr(reference),
         sorted((s.name, repr(spec)) for s, spec in context.symbols.items()),
         [sympy.srepr(c) for c in constraints],
     )

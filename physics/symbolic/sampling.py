@@ -10,8 +10,11 @@ from __future__ import annotations
 import hashlib
 import math
 import random
+import threading
+from collections import OrderedDict
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
+from typing import Any
 
 import sympy
 from mpmath import libmp
@@ -163,6 +166,73 @@ def _holds(relation: sympy.Basic, evaluate: Evaluator, size: int) -> list[bool]:
     return out
 
 
+@dataclass(frozen=True)
+class _Batch:
+    """One Latin-hypercube batch of candidate points, with where the constraints hold."""
+
+    columns: Mapping[sympy.Symbol, Column]
+    allowed: tuple[bool, ...]
+
+
+_BATCH_CACHE_SIZE = 256
+_first_batches: OrderedDict[tuple[Any, ...], _Batch] = OrderedDict()
+_first_batches_lock = threading.Lock()
+
+
+def _draw(
+    symbols: tuple[sympy.Symbol, ...],
+    axes: Sequence[Axis],
+    constraints: Sequence[sympy.Basic],
+    rng: random.Random,
+    size: int,
+    prec: int,
+) -> _Batch:
+    grid = _latin_hypercube(rng, len(symbols), size)
+    columns: dict[sympy.Symbol, Column] = {
+        s: [axis(u) for u in row] for s, axis, row in zip(symbols, axes, grid, strict=True)
+    }
+    evaluate = Evaluator(columns, size, prec)
+    ok = [True] * size
+    for relation in constraints:
+        ok = [a and b for a, b in zip(ok, _holds(relation, evaluate, size), strict=True)]
+    return _Batch(columns, tuple(ok))
+
+
+def _first_batch(
+    context: SymbolicContext, constraints: Sequence[sympy.Basic], size: int, seed: int, prec: int
+) -> _Batch | None:
+    """The first batch drawn for this domain, if an earlier reference over the same symbols drew it."""
+    key = _batch_key(context, constraints, size, seed, prec)
+    with _first_batches_lock:
+        found = _first_batches.get(key)
+        if found is not None:
+            _first_batches.move_to_end(key)
+        return found
+
+
+def _remember_first_batch(
+    context: SymbolicContext,
+    constraints: Sequence[sympy.Basic],
+    size: int,
+    seed: int,
+    prec: int,
+    batch: _Batch,
+) -> None:
+    key = _batch_key(context, constraints, size, seed, prec)
+    with _first_batches_lock:
+        _first_batches[key] = batch
+        while len(_first_batches) > _BATCH_CACHE_SIZE:
+            _first_batches.popitem(last=False)
+
+
+def _batch_key(
+    context: SymbolicContext, constraints: Sequence[sympy.Basic], size: int, seed: int, prec: int
+) -> tuple[Any, ...]:
+    # Symbols compare with their assumptions; specs with their ranges: equal keys, equal batches.
+    symbols = tuple(sorted(context.symbols.items(), key=lambda item: item[0].name))
+    return (symbols, tuple(constraints), size, seed, prec)
+
+
 def sample_domain(
     context: SymbolicContext,
     constraints: Sequence[sympy.Basic],
@@ -173,31 +243,39 @@ def sample_domain(
 ) -> DomainSample:
     """`size` points satisfying every constraint, where every `required` expression is defined.
 
+    The points depend on the domain and the seed only, so references over the same symbols (and the
+    same seed) share them: the first batch, constraints evaluated, is kept and reused (LRU), and only
+    the `required` expressions are evaluated for a new reference.
+
     Raises SpecError when the domain looks empty (fewer than half the points found).
     """
     symbols = tuple(sorted(context.symbols, key=lambda s: s.name))
-    axes = [axis_for(context.symbols[s], prec) for s in symbols]
     rng = random.Random(seed)  # noqa: S311 - reproducible sampling, not secrecy
     kept: dict[sympy.Symbol, Column] = {s: [] for s in symbols}
     kept_values: list[Column] = [[] for _ in required]
     found = 0
-    for _ in range(MAX_BATCHES):
-        grid = _latin_hypercube(rng, len(symbols), size)
-        columns: dict[sympy.Symbol, Column] = {
-            s: [axis(u) for u in row] for s, axis, row in zip(symbols, axes, grid, strict=True)
-        }
-        evaluate = Evaluator(columns, size, prec)
-        ok = [True] * size
-        for relation in constraints:
-            ok = [a and b for a, b in zip(ok, _holds(relation, evaluate, size), strict=True)]
+    first = _first_batch(context, constraints, size, seed, prec)
+    axes: list[Axis] | None = None
+    for batch_number in range(MAX_BATCHES):
+        if batch_number == 0 and first is not None:
+            batch = first
+            _latin_hypercube(rng, len(symbols), size)  # the draws it took, so later batches are the same
+        else:
+            if axes is None:
+                axes = [axis_for(context.symbols[s], prec) for s in symbols]
+            batch = _draw(symbols, axes, constraints, rng, size, prec)
+            if batch_number == 0:
+                _remember_first_batch(context, constraints, size, seed, prec, batch)
+        evaluate = Evaluator(batch.columns, size, prec)
         values = [evaluate(expr) for expr in required]
+        ok = list(batch.allowed)
         for column in values:
             ok = [a and v is not None for a, v in zip(ok, column, strict=True)]
         for index in (i for i in range(size) if ok[i]):
             if found == size:
                 break
             for s in symbols:
-                kept[s].append(columns[s][index])
+                kept[s].append(batch.columns[s][index])
             for out, column in zip(kept_values, values, strict=True):
                 out.append(column[index])
             found += 1

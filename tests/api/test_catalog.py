@@ -96,6 +96,23 @@ def test_a_restart_loads_the_compiled_bank_instead_of_compiling_it(db, small_ban
     assert grades_its_reference(restarted)
 
 
+def test_a_restart_is_warm_before_it_opens_any_stored_compilation(db, small_bank, monkeypatch):
+    start(db, small_bank)
+    restarted = Catalog(sql_stores(db), SECRET, small_bank)
+    restarted.sync_builtin()
+    warm_when_opened: list[bool] = []
+    real_open = catalog_module.CompiledStore.open
+
+    def observed_open(record, payload):
+        warm_when_opened.append(restarted.warm.is_set())
+        return real_open(record, payload)
+
+    monkeypatch.setattr(catalog_module.CompiledStore, "open", staticmethod(observed_open))
+    restarted.warm_up()
+    assert warm_when_opened == [True, True]  # both opened, and only after the instance said ready
+    assert grades_its_reference(restarted)
+
+
 def test_only_a_changed_version_is_compiled_again(db, small_bank, compilations):
     start(db, small_bank)
     problem = small_bank / "atwood" / "problem.yaml"

@@ -45,3 +45,17 @@ def test_unknown_keys_are_never_remembered(db: Database) -> None:
     assert store.authenticate("pck_not-a-key") is None
     plaintext, _ = create_key(db, "instructor", "prof")
     assert store.authenticate(plaintext) is not None
+
+
+def test_the_memory_only_lookup_forgets_a_key_at_its_revocation(db: Database) -> None:
+    clock = Clock()
+    store = DatabaseKeyStore(SqlApiKeyStore(db), clock)
+    plaintext, record = create_key(db, "instructor", "prof")
+    assert store.cached(plaintext) is None  # never seen: the database decides
+    assert store.authenticate(plaintext) is not None
+    assert store.cached(plaintext) is not None
+    clock.now += KEY_CACHE_SECONDS
+    assert store.cached(plaintext) is None  # too old to believe without asking again
+    assert store.authenticate(plaintext) is not None
+    revoke_key(db, record.id)
+    assert store.cached(plaintext) is None

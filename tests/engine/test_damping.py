@@ -46,7 +46,7 @@ def test_a_damped_spring_is_derived_by_three_methods_and_measured_on_its_motion(
     assert sympy.simplify(result.quantities["omega_d"] - sympy.sqrt(k / m - b**2 / (4 * m**2))) == 0
     assert sympy.simplify(result.quantities["tau"] - 2 * m / b) == 0
     for name in ("omega_d", "tau"):
-        assert set(result.agreement[name]) == {"lagrange", "newton", "conservation"}
+        assert {"lagrange", "newton", "conservation"} <= set(result.agreement[name])
         assert result.simulation[name].max_relative_error < 1e-3
     assert "zero crossings" in result.simulation["omega_d"].compared
     assert "limit omega_d (no damping)" in result.checks
@@ -61,7 +61,7 @@ def test_a_damped_pendulum_is_derived_by_lagrange_and_the_energy_balance() -> No
     result = uncached(load_model(damped_pendulum(), SYMBOLS))
     expected = sympy.sqrt(g / L - b**2 / (4 * m**2))
     assert abs(float((result.quantities["omega_d"] - expected).subs({g: 9.8, L: 1.2, b: 0.3, m: 2}))) < 1e-12
-    assert result.agreement["tau"] == ("lagrange", "conservation")
+    assert {"lagrange", "conservation"} <= set(result.agreement["tau"])
     assert result.simulation["tau"].max_relative_error < 1e-3
 
 

@@ -65,7 +65,7 @@ def test_a_constant_pull_with_friction_is_derived_by_every_method() -> None:
 def test_terminal_velocity_under_drag(drag: dict[str, str], expected: sympy.Expr) -> None:
     result = uncached(load_model(falling(drag), SYMBOLS))
     assert sympy.simplify(result.quantities["v"] - expected) == 0
-    assert result.agreement["v"] == ("lagrange", "newton")
+    assert {"lagrange", "newton"} <= set(result.agreement["v"])
     assert result.simulation["v"].max_relative_error < 1e-3
     assert "energy balance" in result.checks
 

@@ -29,7 +29,7 @@ def test_the_two_modes_of_three_springs_move_together_and_oppositely() -> None:
     assert result.quantities["together"] == 1
     assert result.quantities["opposite"] == -1
     for name in ("together", "opposite"):
-        assert set(result.agreement[name]) == {"lagrange", "newton", "conservation"}
+        assert {"lagrange", "newton", "conservation"} <= set(result.agreement[name])
         assert "released along the mode" in result.simulation[name].compared
 
 
@@ -51,7 +51,7 @@ def test_newton_carries_its_cartesian_mode_back_to_the_coordinates() -> None:
     result = uncached(load_model(data, SYMBOLS))
     golden = (1 + sympy.sqrt(5)) / 2
     assert sympy.simplify(result.quantities["shape"] - 2 * (golden - 1) / (golden + 1)) == 0
-    assert set(result.agreement["shape"]) == {"lagrange", "newton", "conservation"}
+    assert {"lagrange", "newton", "conservation"} <= set(result.agreement["shape"])
     assert result.simulation["shape"].max_relative_error < 1e-3
 
 

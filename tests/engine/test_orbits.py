@@ -115,3 +115,14 @@ def test_an_orbit_quantity_with_a_wrong_target_is_refused_at_its_path(quantity: 
     (error,) = caught.value.errors
     assert error.path[:2] == ("quantities", "q")
     assert message in error.message
+
+
+def test_one_turn_of_a_frame_needs_a_rotating_frame() -> None:
+    spring = {
+        "coordinates": ["x"],
+        "bodies": {"block": {"mass": "m", "position": {"x": "x"}}},
+        "potentials": [{"bodies": ["block"], "anchor": {"x": 0}, "distance": "d", "energy": "k*d^2/2"}],
+        "quantities": {"T": {"revolution_period": "frame"}},
+    }
+    with pytest.raises(DerivationError, match="needs a rotating frame"):
+        uncached(load_model(spring, SYMBOLS))

@@ -32,10 +32,14 @@ def driven_cart(state: dict[str, str] | None = None) -> dict[str, Any]:
     }
 
 
-def test_a_driving_force_is_taken_at_the_states_time_and_its_work_is_counted() -> None:
-    result = uncached(load_model(driven_cart(), SYMBOLS))
+@pytest.mark.parametrize(
+    "domain",
+    [pytest.param({}, id="slow-drive"), pytest.param({"ranges": {"w": ["100", "300"]}}, id="fast-drive")],
+)
+def test_a_driving_force_is_taken_at_the_states_time_and_its_work_is_counted(domain: dict[str, Any]) -> None:
+    result = uncached(load_model({**driven_cart(), "domain": domain}, SYMBOLS))
     assert sympy.simplify(result.quantities["a"] - (F0 / 2 - k * A) / m) == 0
-    assert result.agreement["a"] == ("lagrange", "newton")
+    assert {"lagrange", "newton"} <= set(result.agreement["a"])
     assert result.simulation["a"].max_relative_error < 1e-3
     assert "energy balance" in result.checks
 

@@ -36,6 +36,24 @@ UNSAFE_TEXTS = [
 ]
 
 
+# The bank's own files are read by libyaml's loader (faster at start-up): it refuses the same things.
+BANK_FILE_REFUSALS = [
+    pytest.param(BILLION_LAUGHS, "aliases", id="aliases"),
+    pytest.param("a: &x 1\nb: *x\n", "aliases", id="one-alias"),
+    pytest.param("id: !!python/object/apply:os.system ['true']", "constructor", id="python-tag"),
+    pytest.param("id: a\nid: b\n", "duplicate key", id="duplicate-key"),
+    pytest.param("? [a]\n: 1\n", "plain value", id="list-as-key"),
+]
+
+
+@pytest.mark.parametrize(("text", "message"), BANK_FILE_REFUSALS)
+def test_a_bank_file_read_by_the_fast_loader_is_refused_like_any_other(text: str, message: str) -> None:
+    for trusted in (False, True):
+        with pytest.raises(ProblemInvalid) as caught:
+            read_text(text, "yaml", trusted=trusted)
+        assert message in caught.value.errors[0][1]
+
+
 @pytest.mark.parametrize(("text", "fmt", "message"), UNSAFE_TEXTS)
 def test_unsafe_or_malformed_text_is_refused_without_evaluating_it(text: str, fmt: str, message: str) -> None:
     with pytest.raises(ProblemInvalid) as caught:

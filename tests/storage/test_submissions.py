@@ -207,3 +207,7 @@ def test_compiled_problems_are_kept_and_replaced_by_key(stores: Stores) -> None:
     stores.compiled.put("k", b"second", "mac2")
     stores.compiled.put("other", b"x", "mac3")
     assert stores.compiled.get("k") == (b"second", "mac2")
+    assert stores.compiled.get_many(["k", "other", "missing"]) == {
+        "k": (b"second", "mac2"),
+        "other": (b"x", "mac3"),
+    }

@@ -1,0 +1,12 @@
+"""What the fork server imports before forking any worker: the checker, with its tables built.
+
+Every lazily built table (the parser's, the unit registry, the sampler's) is touched once here by the
+warm-up jobs, so workers inherit them on fork instead of each building them again.
+"""
+
+from __future__ import annotations
+
+from app.grading.worker import WARM_UP_JOBS, grade
+
+for _job in WARM_UP_JOBS:
+    grade(_job)
