@@ -33,8 +33,9 @@ from problems.loader import load_bank, parse_problem
 from problems.modelinfo import load_doc_model
 from problems.schema import ProblemDocument
 from problems.semantics import semantic_errors
+from problems.student import student_view
 from problems.symbols import symbol_table
-from problems.variants import Variant, draw_variant, si_values, student_view
+from problems.variants import Variant, draw_variant, si_values
 
 log = logging.getLogger("physcheck.catalog")
 T = TypeVar("T")

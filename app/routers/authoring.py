@@ -4,7 +4,6 @@ from __future__ import annotations
 
 from typing import Any, Literal
 
-import sympy
 from fastapi import APIRouter, Request, Response
 from starlette.concurrency import run_in_threadpool
 
@@ -23,7 +22,7 @@ from app.schemas.problems import (
     StepPublic,
 )
 from app.services import Services
-from problems.compiled import CompiledProblem, CompiledSymbolicPart
+from problems.compiled import CompiledProblem
 from problems.errors import ProblemInvalid
 
 # Every route here is for instructors: a student key is 403.
@@ -152,15 +151,14 @@ async def solution(problem_id: str, services: ServicesDep, _: Instructor) -> Sol
 def solution_of(compiled: CompiledProblem) -> SolutionPublic:
     references = []
     for part_id, part in compiled.parts.items():
-        expr = part.expected if isinstance(part, CompiledSymbolicPart) else part.expr
-        units = None if isinstance(part, CompiledSymbolicPart) else part.units
+        reference = part.solution()
         references.append(
             ReferencePublic(
                 part=part_id,
                 kind=compiled.document.part(part_id).kind,
-                text=sympy.sstr(expr),
-                latex=sympy.latex(expr),
-                units=units,
+                text=reference.text,
+                latex=reference.latex,
+                units=reference.units,
                 source="derived" if part.derived else "not derived",
             )
         )

@@ -126,6 +126,7 @@ def _parts(view: Mapping[str, Any]) -> list[dict[str, Any]]:
                 "symbols": _symbol_rows(view, part.get("symbols") or []),
                 "tolerance": tolerance_text(part.get("tolerance"), units),
                 "max_attempts": part.get("max_attempts"),
+                "choices": part.get("choices") or [],
             }
         )
     return parts
