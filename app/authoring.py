@@ -22,17 +22,14 @@ from app.grading.supervised import PoolUnavailable, SupervisedPool
 from app.grading.worker import limit_memory
 from app.instructor.described import Described, describe
 from app.web.document_text import render_problems
-from physics.errors import DerivationError
 from physics.figures import model_figure
 from problems.compiled import compile_problem
-from problems.errors import ProblemInvalid
-from problems.loader import parse_problem
 from problems.locate import locate
 from problems.modelinfo import load_doc_model
-from problems.schema import ProblemDocument, format_path
-from problems.selftest import verify_problem
+from problems.schema import ProblemDocument
 from problems.symbols import symbol_table
 from problems.variants import fixed_variant, si_values
+from problems.vetting import vet_document
 
 log = logging.getLogger("physcheck.authoring")
 UPLOAD_SELFTEST_VARIANTS = 5
@@ -71,22 +68,11 @@ def vet(source: bytes, fmt: Literal["json", "yaml"]) -> Vetted:
 
 
 def _vet(source: bytes, fmt: Literal["json", "yaml"]) -> Vetted:
-    """Shape and meaning, then the derivation, then the self-test."""
-    try:
-        doc = parse_problem(source, fmt)
-        compile_problem(doc)
-    except ProblemInvalid as error:
-        return Vetted(None, error.errors)
-    except DerivationError as error:
-        return Vetted(None, [(format_path(("model", *path)), message) for path, message in error.items()])
-    report = verify_problem(doc, variants=UPLOAD_SELFTEST_VARIANTS)
-    if not report.ok:
-        index = {part.id: i for i, part in enumerate(doc.parts)}
-        errors = [
-            (f"parts[{index[f.part]}]" if f.part in index else "model", f"self-test, {f.check}: {f.detail}")
-            for f in report.failures
-        ]
-        return Vetted(None, errors)
+    """Every stage that can run (shape, meaning, derivation, self-test), every error at once."""
+    vetting = vet_document(source, fmt, UPLOAD_SELFTEST_VARIANTS)
+    doc = vetting.document
+    if doc is None:
+        return Vetted(None, vetting.errors)
     # Midpoint values of every given: the numbers a preview shows before any student has a variant.
     described = describe(compile_problem(doc), fixed_variant(doc, {}))
     return Vetted(

@@ -19,11 +19,10 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any, TypeVar
 
-from app.db import compiled as compiled_repository
-from app.db import problems as problem_repository
-from app.db.database import Database
 from app.db.errors import ProblemExists, ProblemNotFound
+from app.db.problems import document_hash
 from app.db.records import ProblemRecord
+from app.storage import CompiledCache, Stores
 from physics.checking import CheckJob
 from physics.engine.model import Model
 from physics.figures import model_figure
@@ -34,8 +33,9 @@ from problems.loader import load_bank, parse_problem
 from problems.modelinfo import load_doc_model
 from problems.schema import ProblemDocument
 from problems.semantics import semantic_errors
+from problems.student import student_view
 from problems.symbols import symbol_table
-from problems.variants import Variant, draw_variant, si_values, student_view
+from problems.variants import Variant, draw_variant, si_values
 
 log = logging.getLogger("physcheck.catalog")
 T = TypeVar("T")
@@ -64,8 +64,8 @@ class CompiledStore:
     in the database, or written under another secret) is ignored and compiled again.
     """
 
-    def __init__(self, database: Database, secret: str):
-        self._database = database
+    def __init__(self, cache: CompiledCache, secret: str):
+        self._cache = cache
         self._mac_key = hashlib.sha256(b"physcheck compiled problems\0" + secret.encode()).digest()
 
     @staticmethod
@@ -77,8 +77,7 @@ class CompiledStore:
 
     def load(self, record: ProblemRecord) -> CompiledProblem | None:
         key = self.key(record)
-        with self._database.session(read_only=True) as session:
-            found = compiled_repository.get_compiled(session, key)
+        found = self._cache.get(key)
         if found is None:
             return None
         payload, mac = found
@@ -91,8 +90,7 @@ class CompiledStore:
         """The stored payload of each record whose compilation is stored and verifies, by key, in one
         query and without opening any: the MAC proves it is this service's compilation of that content."""
         keys = {self.key(record): record for record in records}
-        with self._database.session(read_only=True) as session:
-            found = compiled_repository.get_many_compiled(session, keys)
+        found = self._cache.get_many(keys)
         return {key: payload for key, (payload, mac) in found.items() if self._verifies(key, payload, mac)}
 
     def _verifies(self, key: str, payload: bytes, mac: str) -> bool:
@@ -111,8 +109,7 @@ class CompiledStore:
         key = self.key(record)
         payload = pickle.dumps(compiled, protocol=pickle.HIGHEST_PROTOCOL)
         try:
-            with self._database.session() as session:
-                compiled_repository.put_compiled(session, key, payload, self._mac(key, payload))
+            self._cache.put(key, payload, self._mac(key, payload))
         except Exception as error:  # a cache: another instance may have written it meanwhile
             log.warning("could not store the compilation of %r: %s", record.id, error)
 
@@ -120,20 +117,20 @@ class CompiledStore:
 class Catalog:
     def __init__(
         self,
-        database: Database,
+        stores: Stores,
         secret: str,
         bank_dir: Path | None = None,
         documents_cached: int = 256,
         compiled_cached: int = 256,
     ):
-        self._database = database
+        self._problems = stores.problems
         self._bank_dir = bank_dir
         self._secret = secret
         self._documents: OrderedDict[str, ProblemDocument] = OrderedDict()
         self._limit = documents_cached
         self._compiled: OrderedDict[tuple[str, int, str], CompiledProblem] = OrderedDict()
         self._compiled_limit = compiled_cached
-        self._store = CompiledStore(database, secret)
+        self._store = CompiledStore(stores.compiled, secret)
         self._lock = threading.Lock()
         self._store_lock = threading.Lock()
         self.warm = threading.Event()
@@ -154,7 +151,7 @@ class Catalog:
             for doc in documents
             if doc.id in listed
             and listed[doc.id].builtin
-            and listed[doc.id].document_hash == problem_repository.document_hash(doc.model_dump(mode="json"))
+            and listed[doc.id].document_hash == document_hash(doc.model_dump(mode="json"))
         }
         faults = [
             (f"{doc.id}:{path}", message)
@@ -170,10 +167,7 @@ class Catalog:
                 saved.append(listed[doc.id])
                 continue
             try:
-                with self._database.session() as session:
-                    saved.append(
-                        problem_repository.save_builtin(session, doc.id, doc.model_dump(mode="json"))
-                    )
+                saved.append(self._problems.save_builtin(doc.id, doc.model_dump(mode="json")))
             except ProblemExists:
                 log.warning(
                     "an uploaded problem already uses the bank id %r; the bank's is not served", doc.id
@@ -218,12 +212,10 @@ class Catalog:
             pass
 
     def get(self, problem_id: str, version: int | None = None) -> ProblemRecord:
-        with self._database.session(read_only=True) as session:
-            return problem_repository.get_problem(session, problem_id, version)
+        return self._problems.get(problem_id, version)
 
     def list(self) -> list[ProblemRecord]:
-        with self._database.session(read_only=True) as session:
-            return problem_repository.list_problems(session)
+        return self._problems.list()
 
     def document(self, record: ProblemRecord) -> ProblemDocument:
         """The stored document, validated when it was stored, so only its shape is read again."""

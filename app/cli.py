@@ -69,6 +69,7 @@ def _bank_verify(args: argparse.Namespace, settings: Settings) -> int:
 
 def _problems_import(args: argparse.Namespace, settings: Settings) -> int:
     from app.startup import open_database
+    from app.storage.sql import SqlProblemStore
     from app.transfer import import_problem
     from problems.errors import ProblemInvalid
 
@@ -76,7 +77,7 @@ def _problems_import(args: argparse.Namespace, settings: Settings) -> int:
     try:
         for path in args.files:
             try:
-                record = import_problem(database, Path(path))
+                record = import_problem(SqlProblemStore(database), Path(path))
             except ProblemInvalid as error:
                 print(f"{path}: {len(error.errors)} error(s)", file=sys.stderr)
                 for where, message in error.errors:
@@ -90,11 +91,12 @@ def _problems_import(args: argparse.Namespace, settings: Settings) -> int:
 
 def _problems_export(args: argparse.Namespace, settings: Settings) -> int:
     from app.startup import open_database
+    from app.storage.sql import SqlProblemStore
     from app.transfer import export_problem
 
     database = open_database(settings)
     try:
-        export_problem(database, args.problem_id, args.format, sys.stdout)
+        export_problem(SqlProblemStore(database), args.problem_id, args.format, sys.stdout)
     finally:
         database.dispose()
     return 0
@@ -102,6 +104,7 @@ def _problems_export(args: argparse.Namespace, settings: Settings) -> int:
 
 def _submissions_export(args: argparse.Namespace, settings: Settings) -> int:
     from app.startup import open_database
+    from app.storage.sql import SqlSubmissionStore
     from app.transfer import export_submissions
 
     database = open_database(settings)
@@ -111,7 +114,7 @@ def _submissions_export(args: argparse.Namespace, settings: Settings) -> int:
             if args.output
             else nullcontext(sys.stdout) as out
         ):
-            rows = export_submissions(database, args.problem, out)
+            rows = export_submissions(SqlSubmissionStore(database), args.problem, out)
     finally:
         database.dispose()
     print(f"{rows} submission(s) exported", file=sys.stderr)

@@ -13,6 +13,7 @@ from app.lti.sessions import principal_from_session
 from app.openapi import bearer_scheme
 from app.ratelimit import MemoryRateLimiter
 from app.services import Services
+from app.storage import ProblemStore, SubmissionStore
 
 
 async def get_services(request: Request) -> Services:
@@ -22,6 +23,18 @@ async def get_services(request: Request) -> Services:
 
 
 ServicesDep = Annotated[Services, Depends(get_services)]
+
+
+def get_problem_store(services: ServicesDep) -> ProblemStore:
+    return services.stores.problems
+
+
+def get_submission_store(services: ServicesDep) -> SubmissionStore:
+    return services.stores.submissions
+
+
+Problems = Annotated[ProblemStore, Depends(get_problem_store)]
+Submissions = Annotated[SubmissionStore, Depends(get_submission_store)]
 
 
 async def current_principal(

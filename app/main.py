@@ -19,7 +19,6 @@ from app.grading.pool import GradingPool
 from app.instructor import router as instructor_routes
 from app.lti import router as lti_routes
 from app.lti.context import LtiContext
-from app.lti.grades import queue_grade
 from app.lti.outbox import OutboxWorker
 from app.middleware import BodyLimit, RequestContext, configure_logging
 from app.openapi import install_docs
@@ -78,13 +77,13 @@ def create_app(
         app.state.services = Services(
             settings=settings,
             database=storage.database,
+            stores=storage.stores,
             pool=grading,
             keys=storage.keys,
             key_limiter=key_limiter,
             student_limiter=student_limiter,
             catalog=storage.catalog,
             authoring=authoring,
-            on_graded=[queue_grade],
         )
         app.state.lti = LtiContext(
             storage.database,
@@ -94,8 +93,10 @@ def create_app(
             authenticate_key=storage.keys.authenticate,
             figure=storage.catalog.figure,
             rate_limit=functools.partial(budget_wait, app.state.services),
+            submissions=storage.stores.submissions,
+            tool_keys=storage.stores.tool_keys,
         )
-        outbox = OutboxWorker(storage.database, lms_transport)
+        outbox = OutboxWorker(storage.stores.outbox, storage.stores.tool_keys, lms_transport)
         await outbox.start()
         if settings.warm_up:
             threading.Thread(target=storage.catalog.warm_up, name="catalog-warm-up", daemon=True).start()

@@ -2,30 +2,26 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from dataclasses import dataclass, field
-
-from sqlalchemy.orm import Session
+from dataclasses import dataclass
 
 from app.auth import KeyStore
 from app.authoring import AuthoringPool
 from app.catalog import Catalog
 from app.db.database import Database
-from app.db.records import SubmissionRecord
 from app.grading.pool import GradingPool
 from app.ratelimit import RateLimiter
 from app.settings import Settings
+from app.storage import Stores
 
 
 @dataclass
 class Services:
     settings: Settings
-    database: Database
+    database: Database  # for readiness and the LTI code; routes reach storage through `stores`
+    stores: Stores
     pool: GradingPool
     keys: KeyStore
     key_limiter: RateLimiter
     student_limiter: RateLimiter
     catalog: Catalog
     authoring: AuthoringPool
-    # Called inside the transaction that files each submission (LTI grade passback queues there).
-    on_graded: list[Callable[[Session, SubmissionRecord], object]] = field(default_factory=list)

@@ -18,6 +18,7 @@ from app.db import keys as key_repository
 from app.db.database import Database
 from app.db.migrate import migrate
 from app.settings import Settings
+from app.storage import ApiKeyStore, Stores, sql_stores
 
 log = logging.getLogger("physcheck.startup")
 STARTUP_RETRY_MAX_SECONDS = 10.0
@@ -37,8 +38,8 @@ KEY_CACHE_SIZE = 10_000
 
 
 class DatabaseKeyStore:
-    def __init__(self, database: Database, clock: Callable[[], float] = time.monotonic):
-        self._database = database
+    def __init__(self, keys: ApiKeyStore, clock: Callable[[], float] = time.monotonic):
+        self._keys = keys
         self._clock = clock
         # sha256(key) -> (principal, when found, revocation count then); only active keys are kept
         self._known: dict[bytes, tuple[Principal, float, int]] = {}
@@ -64,8 +65,7 @@ class DatabaseKeyStore:
         digest = hashlib.sha256(plaintext.encode("utf-8", "surrogatepass")).digest()
         now = self._clock()
         revocations = key_repository.revocations
-        with self._database.session(read_only=True) as session:
-            record = key_repository.authenticate(session, plaintext)
+        record = self._keys.authenticate(plaintext)
         if record is None:
             return None
         principal = Principal(
@@ -81,6 +81,7 @@ class DatabaseKeyStore:
 @dataclass
 class Storage:
     database: Database
+    stores: Stores
     keys: DatabaseKeyStore
     catalog: Catalog
 
@@ -91,9 +92,10 @@ class Storage:
 
 def open_storage(settings: Settings) -> Storage:
     database = open_database(settings)
-    catalog = Catalog(database, settings.secret, settings.bank_dir)
+    stores = sql_stores(database)
+    catalog = Catalog(stores, settings.secret, settings.bank_dir)
     catalog.sync_builtin()
-    return Storage(database=database, keys=DatabaseKeyStore(database), catalog=catalog)
+    return Storage(database=database, stores=stores, keys=DatabaseKeyStore(stores.keys), catalog=catalog)
 
 
 def open_storage_when_reachable(settings: Settings, sleep: Callable[[float], None] = time.sleep) -> Storage:

@@ -11,11 +11,9 @@ import yaml
 from tqdm import tqdm
 
 from app.authoring import vet
-from app.db import problems as problem_repository
-from app.db import submissions as submission_repository
-from app.db.database import Database
 from app.db.records import ProblemRecord
 from app.spreadsheet import SafeWriter
+from app.storage import ProblemStore, SubmissionStore
 from problems.errors import ProblemInvalid
 
 SUBMISSION_COLUMNS = (
@@ -35,7 +33,7 @@ SUBMISSION_COLUMNS = (
 EXPORT_PAGE = 1000
 
 
-def import_problem(database: Database, path: Path) -> ProblemRecord:
+def import_problem(problems: ProblemStore, path: Path) -> ProblemRecord:
     """Vet and store a problem file: a new problem, or a new version of one the CLI or bank owns.
 
     Raises ProblemInvalid with every fault found.
@@ -43,14 +41,12 @@ def import_problem(database: Database, path: Path) -> ProblemRecord:
     vetted = vet(path.read_bytes(), "json" if path.suffix.lower() == ".json" else "yaml")
     if vetted.document is None:
         raise ProblemInvalid(vetted.errors)
-    with database.session() as session:
-        # Stored like the built-in bank (no owner key): unchanged files keep their version.
-        return problem_repository.save_builtin(session, vetted.document["id"], vetted.document)
+    # Stored like the built-in bank (no owner key): unchanged files keep their version.
+    return problems.save_builtin(vetted.document["id"], vetted.document)
 
 
-def export_problem(database: Database, problem_id: str, fmt: str, out: TextIO) -> None:
-    with database.session(read_only=True) as session:
-        record = problem_repository.get_problem(session, problem_id, include_retired=True)
+def export_problem(problems: ProblemStore, problem_id: str, fmt: str, out: TextIO) -> None:
+    record = problems.get(problem_id, include_retired=True)
     document = dict(record.document)
     if fmt == "json":
         json.dump(document, out, indent=2, ensure_ascii=False)
@@ -60,7 +56,7 @@ def export_problem(database: Database, problem_id: str, fmt: str, out: TextIO) -
 
 
 def export_submissions(
-    database: Database,
+    submissions: SubmissionStore,
     problem_id: str | None,
     out: TextIO,
     *,
@@ -75,10 +71,7 @@ def export_submissions(
     rows, cursor = 0, None
     with tqdm(unit=" submissions", file=sys.stderr, disable=None if progress else True) as bar:
         while True:
-            with database.session(read_only=True) as session:
-                page = submission_repository.list_submissions(
-                    session, problem_id=problem_id, student=student, limit=EXPORT_PAGE, cursor=cursor
-                )
+            page = submissions.page(problem_id=problem_id, student=student, limit=EXPORT_PAGE, cursor=cursor)
             for item in page.items:
                 writer.writerow(
                     (

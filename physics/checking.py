@@ -1,11 +1,12 @@
 """One entry point for checking an answer, used in-process (bank self-test) and in worker processes.
 
-A `CheckJob` is picklable so it can cross into a killable worker. An ad-hoc check (`SymbolicJob`)
-carries the request's texts, which the worker reads with the whitelist parser, because instructor
-text is as untrusted as a student's. A stored problem's part (`PartJob`) carries what the server
-compiled, sympy trees pickled once, never text printed by sympy and parsed again (the parser does
-not read everything sympy prints: `Abs`, `sign`, `Piecewise`, `Min`). Prepared references are
-cached per worker.
+Every kind of part compiles to a `Question` (`grade` and `read` an answer); a `CheckJob` is an answer
+with the means to get its question in the process that grades, picklable so it can cross into a
+killable worker. An ad-hoc check (`SymbolicJob`) carries the request's texts, which the worker reads
+with the whitelist parser, because instructor text is as untrusted as a student's; it compiles to the
+same `CompiledQuestion` as a stored problem's part. A stored part (`PartJob`) carries what the server
+compiled, sympy trees pickled once, never text printed by sympy and parsed again (the parser does not
+read everything sympy prints: `Abs`, `sign`, `Piecewise`, `Min`). Questions are cached per worker.
 """
 
 from __future__ import annotations
@@ -17,13 +18,14 @@ from collections import OrderedDict
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from functools import cached_property, lru_cache
+from typing import Protocol, cast
 
 import sympy
 
 from physics.dimensions import Dimension
 from physics.errors import AnswerError, SpecError
 from physics.mathinput import InputLimits, parse_math
-from physics.numeric import NumericSpec, check_numeric
+from physics.numeric import NumericSpec
 from physics.symbolic import (
     KnownMistake,
     LimitCase,
@@ -37,7 +39,7 @@ from physics.symbolic import (
 from physics.symbolic.dimensional import DimensionMismatch, UnknownDimension, expression_dimension
 from physics.symbolic.reading import read_symbolic_answer
 from physics.units import unit_dimension
-from physics.verdict import InputProblem, ReadAs, Verdict
+from physics.verdict import InputProblem, Preview, Verdict
 
 
 @dataclass(frozen=True)
@@ -59,22 +61,30 @@ class LimitDecl:
     description: str
 
 
-@dataclass(frozen=True)
-class SymbolicJob:
-    answer: str
-    expected: str
-    symbols: tuple[SymbolDecl, ...]
-    constraints: tuple[str, ...] = ()
-    mistakes: tuple[tuple[str, str], ...] = ()  # (expression text, feedback)
-    limits: tuple[LimitDecl, ...] = ()
-    allowed: tuple[str, ...] | None = None  # names the answer may use; None: every declared symbol
-    limits_config: InputLimits = field(default_factory=InputLimits)
+class Question(Protocol):
+    """A part ready to grade, whatever its kind: what a worker runs an answer against."""
+
+    def grade(self, answer: str, limits: InputLimits) -> Verdict:
+        """The verdict; an unreadable answer is an `invalid` verdict, never an exception."""
+        ...
+
+    def read(self, answer: str, limits: InputLimits) -> Preview:
+        """How the answer reads, without grading it."""
+        ...
 
 
-@dataclass(frozen=True)
-class NumericJob:
-    answer: str
-    spec: NumericSpec
+class CheckJob(Protocol):
+    """One answer and the question it answers, picklable so it can cross into a killable worker."""
+
+    @property
+    def answer(self) -> str: ...
+
+    @property
+    def limits_config(self) -> InputLimits: ...
+
+    def question(self) -> Question:
+        """The question, built (or unpickled) in the process that grades; SpecError on a bad reference."""
+        ...
 
 
 @dataclass(frozen=True)
@@ -84,10 +94,31 @@ class SymbolicQuestion:
     names: Mapping[str, sympy.Symbol]
     reference: PreparedReference
 
+    def grade(self, answer: str, limits: InputLimits) -> Verdict:
+        reference = self.reference
+        dimensions = {symbol.name: dim for symbol, dim in reference.dims.items()}
+        try:
+            parsed = read_symbolic_answer(answer, self.names, limits, dimensions, reference.dimension)
+            judgement = judge_symbolic(parsed.expr, reference)
+        except AnswerError as error:
+            return Verdict.invalid(error)
+        verdict = Verdict.graded(judgement, parsed.read_as)
+        if parsed.read_as.note is not None:  # the reading was chosen by dimension: say so first
+            return dataclasses.replace(verdict, feedback=f"{parsed.read_as.note}. {verdict.feedback}")
+        return verdict
+
+    def read(self, answer: str, limits: InputLimits) -> Preview:
+        dimensions = {symbol.name: dim for symbol, dim in self.reference.dims.items()}
+        try:
+            parsed = read_symbolic_answer(answer, self.names, limits, dimensions, self.reference.dimension)
+        except AnswerError as error:
+            return Preview(None, InputProblem(error.message, error.position))
+        return Preview(parsed.read_as, None)
+
 
 @dataclass(frozen=True)
 class CompiledQuestion:
-    """A stored problem's symbolic part as the server compiled it: sympy trees, no text to read again."""
+    """A symbolic part as compiled from its texts: sympy trees, never text to read again."""
 
     names: Mapping[str, sympy.Symbol]  # what the answer may use
     expected: sympy.Expr
@@ -101,13 +132,77 @@ class CompiledQuestion:
         """
         return SymbolicQuestion(self.names, prepare_reference(self.expected, self.context))
 
+    def grade(self, answer: str, limits: InputLimits) -> Verdict:
+        return self.question.grade(answer, limits)
+
+    def read(self, answer: str, limits: InputLimits) -> Preview:
+        # Only the expected dimension is needed to read: the reference is not prepared for a preview.
+        symbols = self.context.symbols
+        dimensions = {spec.name: spec.dimension for spec in symbols.values() if spec.dimension is not None}
+        try:
+            expected_dimension: Dimension | None = expression_dimension(
+                self.expected,
+                {s: spec.dimension for s, spec in symbols.items() if spec.dimension is not None},
+            )
+        except (DimensionMismatch, UnknownDimension):
+            expected_dimension = None
+        try:
+            read = read_symbolic_answer(answer, self.names, limits, dimensions, expected_dimension)
+        except AnswerError as error:
+            return Preview(None, InputProblem(error.message, error.position))
+        return Preview(read.read_as, None)
+
+
+@dataclass(frozen=True)
+class SymbolicJob:
+    """An ad-hoc symbolic check (`POST /v1/check`): the reference arrives as text, read in the worker
+    with the whitelist parser, because instructor text is as untrusted as a student's."""
+
+    answer: str
+    expected: str
+    symbols: tuple[SymbolDecl, ...]
+    constraints: tuple[str, ...] = ()
+    mistakes: tuple[tuple[str, str], ...] = ()  # (expression text, feedback)
+    limits: tuple[LimitDecl, ...] = ()
+    allowed: tuple[str, ...] | None = None  # names the answer may use; None: every declared symbol
+    limits_config: InputLimits = field(default_factory=InputLimits)
+
+    def question(self) -> CompiledQuestion:
+        return compiled_adhoc(
+            self.expected, self.symbols, self.constraints, self.mistakes, self.limits, self.allowed
+        )
+
+
+@dataclass(frozen=True)
+class NumericJob:
+    """A numeric answer against the value expected of this student (bank or ad-hoc alike)."""
+
+    answer: str
+    spec: NumericSpec
+    limits_config: InputLimits = field(default_factory=InputLimits)
+
+    def question(self) -> NumericSpec:
+        return self.spec
+
+
+@dataclass(frozen=True)
+class QuestionJob:
+    """An answer with a small question carried whole (a kind whose question is plain data)."""
+
+    answer: str
+    payload: Question
+    limits_config: InputLimits = field(default_factory=InputLimits)
+
+    def question(self) -> Question:
+        return self.payload
+
 
 @dataclass(frozen=True)
 class PartJob:
-    """An answer to a stored problem's symbolic part.
+    """An answer to a stored problem's part whose question is heavy (sympy trees, prepared samples).
 
-    `payload` is the part's CompiledQuestion pickled by this service's own server process (never bytes
-    from a request), `key` a digest of it: a worker unpickles and prepares each key once.
+    `payload` is the part's question pickled by this service's own server process (never bytes from a
+    request), `key` a digest of it: a worker unpickles and prepares each key once.
     """
 
     answer: str
@@ -115,131 +210,59 @@ class PartJob:
     payload: bytes = field(repr=False)
     limits_config: InputLimits = field(default_factory=InputLimits)
 
+    def question(self) -> Question:
+        return compiled_question(self)
 
-CheckJob = SymbolicJob | PartJob | NumericJob
 
 PART_CACHE_SIZE = 256
-_parts: OrderedDict[str, CompiledQuestion] = OrderedDict()
+_parts: OrderedDict[str, Question] = OrderedDict()
 _parts_lock = threading.Lock()
 
 
-def compiled_question(job: PartJob) -> CompiledQuestion:
+def compiled_question(job: PartJob) -> Question:
     """The job's question, unpickled once per key in this process (LRU)."""
     with _parts_lock:
         found = _parts.get(job.key)
         if found is not None:
             _parts.move_to_end(job.key)
             return found
-    # Safe to unpickle: the server process wrote these bytes itself (CompiledSymbolicPart.job);
-    # requests never carry a payload.
+    # Safe to unpickle: the server process wrote these bytes itself (`part_job`); requests never carry
+    # a payload.
     loaded = pickle.loads(job.payload)  # noqa: S301
-    if not isinstance(loaded, CompiledQuestion):
-        raise TypeError(f"a part job carries a {type(loaded).__name__}, not a CompiledQuestion")
+    if not callable(getattr(loaded, "grade", None)) or not callable(getattr(loaded, "read", None)):
+        raise TypeError(f"a part job carries a {type(loaded).__name__}, not a question")
     with _parts_lock:
         _parts[job.key] = loaded
         while len(_parts) > PART_CACHE_SIZE:
             _parts.popitem(last=False)
-    return loaded
+    return cast(Question, loaded)
 
 
-def check_answer(
-    answer: str, question: SymbolicQuestion | NumericSpec, limits: InputLimits | None = None
-) -> Verdict:
+def check_answer(answer: str, question: Question, limits: InputLimits | None = None) -> Verdict:
     """Grade one answer; an unreadable answer is an `invalid` verdict, never an exception."""
-    if isinstance(question, NumericSpec):
-        return check_numeric(answer, question)
-    reference = question.reference
-    dimensions = {symbol.name: dim for symbol, dim in reference.dims.items()}
-    try:
-        parsed = read_symbolic_answer(
-            answer, question.names, limits or InputLimits(), dimensions, reference.dimension
-        )
-        judgement = judge_symbolic(parsed.expr, reference)
-    except AnswerError as error:
-        return Verdict.invalid(error)
-    verdict = Verdict.graded(judgement, parsed.read_as)
-    if parsed.read_as.note is not None:  # the reading was chosen by dimension: say so first
-        return dataclasses.replace(verdict, feedback=f"{parsed.read_as.note}. {verdict.feedback}")
-    return verdict
-
-
-@dataclass(frozen=True)
-class Preview:
-    """How an answer reads, before it is submitted: never a verdict, never a hint of correctness."""
-
-    read_as: ReadAs | None
-    error: InputProblem | None
+    return question.grade(answer, limits or InputLimits())
 
 
 def preview(job: CheckJob) -> Preview:
     """Read the answer as its check would, without grading it."""
-    if isinstance(job, NumericJob):
-        verdict = check_numeric(job.answer, job.spec)
-        return Preview(verdict.read_as, verdict.error)
-    if isinstance(job, PartJob):
-        compiled = compiled_question(job)
-        names = compiled.names
-        symbols = compiled.context.symbols
-        dimensions = {spec.name: spec.dimension for spec in symbols.values() if spec.dimension is not None}
-        try:
-            expected_dimension: Dimension | None = expression_dimension(
-                compiled.expected,
-                {s: spec.dimension for s, spec in symbols.items() if spec.dimension is not None},
-            )
-        except (DimensionMismatch, UnknownDimension):
-            expected_dimension = None
-    else:
-        specs = {decl.name: symbol_spec(decl) for decl in job.symbols}
-        table = {name: make_symbol(spec) for name, spec in specs.items()}
-        names = table if job.allowed is None else {n: table[n] for n in job.allowed if n in table}
-        dimensions = {name: spec.dimension for name, spec in specs.items() if spec.dimension is not None}
-        expected_dimension = _expected_dimension(job.expected, table, dimensions)
-    try:
-        read = read_symbolic_answer(
-            job.answer,
-            names,
-            job.limits_config,
-            dimensions,
-            expected_dimension,
-        )
-        return Preview(read.read_as, None)
-    except AnswerError as error:
-        return Preview(None, InputProblem(error.message, error.position))
-
-
-def _expected_dimension(
-    expected: str, table: Mapping[str, sympy.Symbol], dimensions: Mapping[str, Dimension]
-) -> Dimension | None:
-    """The dimension a symbolic answer must have, for settling its ambiguous divisions (None: unknown)."""
-    try:
-        reference = read_expression(expected, table, ("expected",))
-        return expression_dimension(reference, {table[name]: dim for name, dim in dimensions.items()})
-    except (SpecError, DimensionMismatch, UnknownDimension):
-        return None
+    return job.question().read(job.answer, job.limits_config)
 
 
 def run_job(job: CheckJob) -> Verdict:
-    """Grade a job of plain texts; raises SpecError when the reference side is unusable."""
-    if isinstance(job, NumericJob):
-        return check_numeric(job.answer, job.spec)
-    if isinstance(job, PartJob):
-        return check_answer(job.answer, compiled_question(job).question, job.limits_config)
-    question = symbolic_question(
-        job.expected, job.symbols, job.constraints, job.mistakes, job.limits, job.allowed
-    )
-    return check_answer(job.answer, question, job.limits_config)
+    """Grade a job; raises SpecError when the reference side is unusable."""
+    return job.question().grade(job.answer, job.limits_config)
 
 
 @lru_cache(maxsize=256)
-def symbolic_question(
+def compiled_adhoc(
     expected: str,
     symbols: tuple[SymbolDecl, ...],
     constraints: tuple[str, ...] = (),
     mistakes: tuple[tuple[str, str], ...] = (),
     limits: tuple[LimitDecl, ...] = (),
     allowed: tuple[str, ...] | None = None,
-) -> SymbolicQuestion:
-    """Read and prepare the reference side of a symbolic job (cached: a course re-uses its references)."""
+) -> CompiledQuestion:
+    """Read an ad-hoc symbolic reference (cached: a course re-uses its references); SpecError with path."""
     specs = {decl.name: symbol_spec(decl) for decl in symbols}
     table = {name: make_symbol(spec) for name, spec in specs.items()}
     context = SymbolicContext(
@@ -253,9 +276,20 @@ def symbolic_question(
         ),
         limits=tuple(_limit_case(decl, table, i) for i, decl in enumerate(limits)),
     )
-    reference = prepare_reference(read_expression(expected, table, ("expected",)), context)
     names = table if allowed is None else {name: table[name] for name in allowed if name in table}
-    return SymbolicQuestion(names=names, reference=reference)
+    return CompiledQuestion(names, read_expression(expected, table, ("expected",)), context)
+
+
+def symbolic_question(
+    expected: str,
+    symbols: tuple[SymbolDecl, ...],
+    constraints: tuple[str, ...] = (),
+    mistakes: tuple[tuple[str, str], ...] = (),
+    limits: tuple[LimitDecl, ...] = (),
+    allowed: tuple[str, ...] | None = None,
+) -> SymbolicQuestion:
+    """The prepared reference of an ad-hoc symbolic check."""
+    return compiled_adhoc(expected, symbols, constraints, mistakes, limits, allowed).question
 
 
 def symbol_spec(decl: SymbolDecl) -> SymbolSpec:
@@ -264,8 +298,10 @@ def symbol_spec(decl: SymbolDecl) -> SymbolSpec:
     if decl.dimension is not None:
         try:
             dimension = unit_dimension(decl.dimension)
-        except (AnswerError, SpecError) as error:
-            raise SpecError(error.message, ("symbols", decl.name, "dimension")) from None
+        except SpecError as error:
+            raise error.at(("symbols", decl.name, "dimension")) from None
+        except AnswerError as error:
+            raise SpecError.unreadable(error, ("symbols", decl.name, "dimension"), decl.dimension) from None
     low = high = None
     if decl.range is not None:
         low, high = (
@@ -301,8 +337,7 @@ def read_expression(text: str, table: Mapping[str, sympy.Symbol], path: tuple[st
     try:
         return parse_math(text, table).expr
     except AnswerError as error:
-        where = f" at character {error.position}" if error.position is not None else ""
-        raise SpecError(f"{error.message}{where}", path) from None
+        raise SpecError.unreadable(error, path) from None
 
 
 _RELATIONS = {"<=": sympy.Le, ">=": sympy.Ge, "≤": sympy.Le, "≥": sympy.Ge, "<": sympy.Lt, ">": sympy.Gt}

@@ -115,6 +115,19 @@ class SpecError(PhyscheckError):
         self.message = message
         self.path = tuple(path)
 
+    @classmethod
+    def unreadable(cls, error: AnswerError, path: Sequence[str | int], text: str | None = None) -> SpecError:
+        """The one place where an author's text that does not read (a parse error) becomes a SpecError:
+        the parser's message, where it stopped, and the text itself when it is not shown elsewhere."""
+        where = f" at character {error.position}" if error.position is not None else ""
+        if text is None:
+            return cls(f"{error.message}{where}", path)
+        return cls(f"cannot read {text!r}{where}: {error.message}", path)
+
+    def at(self, path: Sequence[str | int]) -> SpecError:
+        """The same fault, located at `path` in the author's document."""
+        return SpecError(self.message, path)
+
 
 class DerivationError(PhyscheckError):
     """The engine failed to derive a quantity, or two methods gave different answers.

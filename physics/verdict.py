@@ -49,6 +49,14 @@ class InputProblem:
 
 
 @dataclass(frozen=True)
+class Preview:
+    """How an answer reads, before it is submitted: never a verdict, never a hint of correctness."""
+
+    read_as: ReadAs | None
+    error: InputProblem | None
+
+
+@dataclass(frozen=True)
 class Judgement:
     """A graded decision before it is wrapped into a verdict: which reason and what to tell the student."""
 

@@ -23,3 +23,14 @@ class ProblemInvalid(SpecError):
         head = f"problem {problem!r} is invalid" if problem else "problem is invalid"
         listing = "; ".join(f"{path}: {message}" if path else message for path, message in self.errors)
         super().__init__(f"{head} ({len(self.errors)} error(s)): {listing}")
+
+
+def format_path(loc: tuple[str | int, ...]) -> str:
+    """("parts", 2, "tolerance", "rel") -> "parts[2].tolerance.rel"."""
+    out = ""
+    for item in loc:
+        if isinstance(item, int):
+            out += f"[{item}]"
+        else:
+            out += f".{item}" if out else str(item)
+    return out

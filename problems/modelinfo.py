@@ -9,14 +9,17 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import sympy
 
 from physics.engine import derive, load_model
 from physics.errors import SpecError, SpecErrors
-from problems.schema import ProblemDocument
+from physics.symbolic import KnownMistake, LimitCase
 from problems.symbols import symbol_specs, symbol_table
+
+if TYPE_CHECKING:
+    from problems.schema import ProblemDocument
 
 MIN_AGREEING_METHODS = 2  # a derived quantity counts as checked when two methods give it
 
@@ -26,10 +29,8 @@ class Derived:
     """A derivation, reduced to what the bank uses; `raw` keeps the engine's object (solutions page)."""
 
     quantities: Mapping[str, sympy.Expr]
-    mistakes: Mapping[str, tuple[tuple[sympy.Expr, str], ...]] = field(default_factory=dict)
-    limits: Mapping[str, tuple[tuple[Mapping[sympy.Symbol, sympy.Expr], str], ...]] = field(
-        default_factory=dict
-    )
+    mistakes: Mapping[str, tuple[KnownMistake, ...]] = field(default_factory=dict)
+    limits: Mapping[str, tuple[LimitCase, ...]] = field(default_factory=dict)
     # quantity -> the methods that derived it and agree (the engine raises when methods disagree)
     agreement: Mapping[str, tuple[str, ...]] = field(default_factory=dict)
     proofs: Mapping[str, str] = field(default_factory=dict)  # quantity -> how agreement was shown
@@ -93,14 +94,14 @@ def _per_quantity(derivation: Any, attribute: str) -> Iterable[tuple[str, Iterab
     return value.items() if isinstance(value, Mapping) else ()
 
 
-def _mistake(item: Any) -> tuple[sympy.Expr, str]:
+def _mistake(item: Any) -> KnownMistake:
     # KnownMistake(expr, feedback), or a plain (expr, feedback) pair.
     if isinstance(item, tuple):
-        return item[0], str(item[1])
-    return item.expr, str(item.feedback)
+        return KnownMistake(item[0], str(item[1]))
+    return KnownMistake(item.expr, str(item.feedback))
 
 
-def _limit(item: Any) -> tuple[Mapping[sympy.Symbol, sympy.Expr], str]:
+def _limit(item: Any) -> LimitCase:
     if isinstance(item, tuple):
-        return dict(item[0]), str(item[1])
-    return dict(item.substitutions), str(item.description)
+        return LimitCase(dict(item[0]), str(item[1]))
+    return LimitCase(dict(item.substitutions), str(item.description))

@@ -1,11 +1,11 @@
 """Bank self-test: does each problem grade its own reference answers the way a student's would be?
 
-For every symbolic part, equivalent rewritings of the reference (expanded, factored, trig-rewritten,
-`together`, `cancel`), written as a student would type them (physics.answer_text) and read back by the
-student parser, must be ACCEPTED (a form no student could type, such as `Piecewise`, is judged as a
-tree), and every known mistake REJECTED with its feedback. For every numeric part, across many
-students' variants, the reference value (also in other unit prefixes) must be accepted and a value
-10 % off rejected. The engine's methods must agree. Nothing stops at the first failure.
+Each part is graded by the cases its kind states (`problems.kinds`): for a symbolic part, equivalent
+rewritings of the reference typed as a student would must be ACCEPTED and every known mistake REJECTED
+with its feedback; for a numeric part, across many students' variants, the reference value (also in
+other units) accepted and a value 10 % off rejected; for a choice, the right one accepted and the
+others rejected. Every student's values must satisfy the problem's constraints and the engine's
+methods must agree. Nothing stops at the first failure.
 """
 
 from __future__ import annotations
@@ -13,52 +13,39 @@ from __future__ import annotations
 import sys
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
-from decimal import ROUND_HALF_UP, Decimal
 from pathlib import Path
 
 import sympy
 
-from physics.answer_text import student_text
-from physics.checking import SymbolicQuestion, check_answer
-from physics.errors import PhyscheckError
-from physics.symbolic import judge_symbolic
-from physics.verdict import Outcome, Reason, Verdict
-from problems.compiled import CompiledNumericPart, CompiledProblem, CompiledSymbolicPart, compile_problem
-from problems.errors import ProblemInvalid
+from physics.errors import DerivationError, PhyscheckError
+from problems.compiled import CompiledProblem, CompiledSymbolicPart, compile_problem
+from problems.errors import ProblemInvalid, format_path
+from problems.kinds import kind_of
+from problems.kinds.base import CheckResult
+from problems.kinds.numeric import answer_text, unit_alternatives
+from problems.kinds.symbolic import equivalent_forms, rewritings
 from problems.loader import load_bank
 from problems.modelinfo import MIN_AGREEING_METHODS
 from problems.schema import ProblemDocument
-from problems.variants import Variant, draw_variant, format_number, round_sigfigs, si_values, unit_scale
+from problems.variants import Variant, draw_variant, si_values
+
+__all__ = [
+    "CheckResult",
+    "ProblemReport",
+    "Report",
+    "answer_text",
+    "equivalent_forms",
+    "rewritings",
+    "unit_alternatives",
+    "verify_bank",
+    "verify_problem",
+]
 
 # Not a credential: self-test variants only need to be reproducible.
 SELFTEST_SECRET = "physcheck-bank-selftest"  # noqa: S105
 DEFAULT_VARIANTS = 20
-OFF_BY = Decimal("1.10")  # a value this far off must be rejected
-
 # (label, done, total): one call per finished part within a problem, or per problem within the bank.
 Progress = Callable[[str, int, int], None]
-
-# Other spellings of common units whose conversion factors are not powers of ten as well as those that are.
-_UNIT_ALTERNATIVES: dict[str, tuple[str, ...]] = {
-    "m/s": ("km/h", "cm/s"),
-    "m/s^2": ("cm/s^2", "mm/s^2"),
-    "s": ("ms", "min"),
-    "rad/s": ("rad/ms", "rev/min"),
-    "N": ("kN", "mN"),
-    "J": ("kJ", "mJ"),
-    "kg": ("g",),
-    "m": ("cm", "mm"),
-    "Hz": ("kHz",),
-}
-
-
-@dataclass(frozen=True)
-class CheckResult:
-    problem: str
-    part: str | None
-    check: str  # e.g. "rewrite factor", "mistake 1", "variant 7 in km/h", "methods agree"
-    ok: bool
-    detail: str = ""
 
 
 @dataclass
@@ -122,6 +109,12 @@ def verify_problem(
             CheckResult(doc.id, None, f"compile {path}", False, msg) for path, msg in error.errors
         )
         return Report([report])
+    except DerivationError as error:  # every finding, each at its place in the model
+        report.results.extend(
+            CheckResult(doc.id, None, f"derive {format_path(('model', *path))}", False, message)
+            for path, message in error.items()
+        )
+        return Report([report])
     except PhyscheckError as error:
         report.results.append(CheckResult(doc.id, None, "derive", False, str(error)))
         return Report([report])
@@ -137,10 +130,7 @@ def verify_problem(
     report.results.extend(_domain_checks(doc.id, compiled, students))
     for done, (part_id, part) in enumerate(compiled.parts.items(), start=1):
         try:
-            if isinstance(part, CompiledSymbolicPart):
-                report.results.extend(_symbolic_checks(doc.id, part))
-            else:
-                report.results.extend(_numeric_checks(doc.id, compiled, part, students))
+            report.results.extend(kind_of(doc.part(part_id)).selftest(doc.id, part, students))
         except PhyscheckError as error:
             report.results.append(CheckResult(doc.id, part_id, "prepare", False, str(error)))
         except Exception as error:  # a grader fault on one part must not stop the rest
@@ -188,7 +178,7 @@ def _agreement_checks(problem: str, compiled: CompiledProblem) -> list[CheckResu
     results = []
     for part in compiled.parts.values():
         if not isinstance(part, CompiledSymbolicPart) or part.quantity not in compiled.derived.quantities:
-            continue
+            continue  # only a symbolic part names a model quantity
         methods = compiled.derived.agreement.get(part.quantity, ())
         proof = compiled.derived.proofs.get(part.quantity, "")
         ok = len(methods) >= MIN_AGREEING_METHODS
@@ -216,136 +206,6 @@ def _domain_checks(problem: str, compiled: CompiledProblem, students: list[Varia
 
 def _shown(variant: Variant) -> str:
     return ", ".join(f"{name} = {value}" for name, value in variant.values.items())
-
-
-# ---- symbolic parts ---------------------------------------------------------------------------
-
-
-def equivalent_forms(expr: sympy.Expr) -> dict[str, sympy.Expr]:
-    """Equivalent forms of `expr` (label -> form), without repeats."""
-    forms: dict[str, sympy.Expr] = {"as derived": expr}
-    transforms: dict[str, Callable[[sympy.Expr], sympy.Expr]] = {
-        "expand": sympy.expand,
-        "factor": sympy.factor,
-        "trigsimp": sympy.trigsimp,
-        "fu": sympy.fu,
-        "together": sympy.together,
-        "cancel": sympy.cancel,
-        "expand_trig": sympy.expand_trig,
-    }
-    for label, transform in transforms.items():
-        try:
-            form = transform(expr)
-        except (TypeError, ValueError, NotImplementedError, sympy.PolynomialError):
-            continue
-        if all(form != other for other in forms.values()):
-            forms[label] = form
-    return forms
-
-
-def rewritings(expr: sympy.Expr) -> dict[str, str]:
-    """The equivalent forms a student could type, as text the student parser reads (label -> text)."""
-    texts: dict[str, str] = {}
-    for label, form in equivalent_forms(expr).items():
-        text = student_text(form)
-        if text is not None and text not in texts.values():
-            texts[label] = text
-    return texts
-
-
-def _grade(form: sympy.Expr, question: SymbolicQuestion) -> tuple[str, Verdict]:
-    """Grade a form as a student's typed text when one could type it (sympy prints forms such as
-    `Piecewise` or `Min` that no student can), else as the tree itself."""
-    text = student_text(form)
-    if text is not None:
-        return text, check_answer(text, question)
-    return sympy.sstr(form), Verdict.graded(judge_symbolic(form, question.reference), None)
-
-
-def _symbolic_checks(problem: str, part: CompiledSymbolicPart) -> list[CheckResult]:
-    results: list[CheckResult] = []
-    question = part.question
-    for label, form in equivalent_forms(part.expected).items():
-        text, verdict = _grade(form, question)
-        ok = verdict.outcome is Outcome.CORRECT
-        results.append(
-            CheckResult(problem, part.id, f"rewrite {label}", ok, "" if ok else _explain(text, verdict))
-        )
-    for index, mistake in enumerate(part.context.mistakes, start=1):
-        text, verdict = _grade(mistake.expr, question)
-        ok = (
-            verdict.outcome is Outcome.INCORRECT
-            and verdict.reason is Reason.KNOWN_MISTAKE
-            and mistake.feedback in verdict.feedback
-        )
-        results.append(
-            CheckResult(problem, part.id, f"mistake {index}", ok, "" if ok else _explain(text, verdict))
-        )
-    return results
-
-
-def _explain(text: str, verdict: Verdict) -> str:
-    return f"{text!r} was {verdict.outcome.value} ({verdict.reason.value}): {verdict.feedback}"
-
-
-# ---- numeric parts ----------------------------------------------------------------------------
-
-
-def answer_text(value: Decimal, sigfigs: int | None) -> str:
-    """A student's way of writing `value`: to the asked sigfigs, else 6 significant figures."""
-    if sigfigs is not None:
-        return format_number(round_sigfigs(value, sigfigs, ROUND_HALF_UP)).replace(" × 10^", "e")
-    return format_number(round_sigfigs(value, 6, ROUND_HALF_UP)).replace(" × 10^", "e")
-
-
-def unit_alternatives(units: str) -> list[str]:
-    """Other units of the same dimension a student might answer in (km/h for m/s, cm/s^2, ...)."""
-    return list(_UNIT_ALTERNATIVES.get(units.strip(), ()))
-
-
-def _numeric_checks(
-    problem: str, compiled: CompiledProblem, part: CompiledNumericPart, students: list[Variant]
-) -> list[CheckResult]:
-    results: list[CheckResult] = []
-    sigfigs = part.tolerance.sigfigs
-    dimensionless = part.units.strip() == "1"
-    for index, variant in enumerate(students):
-        spec = part.spec(variant)
-        reference = spec.expected
-        attempts: list[tuple[str, str, bool]] = []
-        suffix = "" if dimensionless else f" {part.units}"
-        attempts.append((f"variant {index}", answer_text(reference, sigfigs) + suffix, True))
-        if reference != 0:
-            attempts.append(
-                (f"variant {index} 10% off", answer_text(reference * OFF_BY, sigfigs) + suffix, False)
-            )
-        for alternative in unit_alternatives(part.units):
-            factor = unit_scale(part.units) / unit_scale(alternative)
-            if sigfigs is not None and not _power_of_ten(factor):
-                continue  # rounding to n figures in another unit is a different number
-            converted = Decimal(str(sympy.Float(sympy.Rational(*reference.as_integer_ratio()) * factor, 30)))
-            attempts.append(
-                (
-                    f"variant {index} in {alternative}",
-                    f"{answer_text(converted, sigfigs)} {alternative}",
-                    True,
-                )
-            )
-        for label, text, should_pass in attempts:
-            verdict = check_answer(text, spec)
-            ok = (
-                verdict.outcome is Outcome.CORRECT
-            ) == should_pass and verdict.outcome is not Outcome.INVALID
-            detail = "" if ok else f"expected {reference}: " + _explain(text, verdict)
-            results.append(CheckResult(problem, part.id, label, ok, detail))
-    return results
-
-
-def _power_of_ten(factor: sympy.Expr) -> bool:
-    if not factor.is_Rational or factor <= 0:
-        return False
-    p, q = int(factor.p), int(factor.q)
-    return (p == 1 or str(p).rstrip("0") == "1") and (q == 1 or str(q).rstrip("0") == "1")
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -1,66 +1,33 @@
 """Meaning checks on a well-shaped problem document; every fault is collected, none stops the rest.
 
-Each expression is read with the whitelist parser (`physics.checking.read_expression`, as the grading workers read it); unknown
-symbols, unknown units, empty ranges, givens for undeclared symbols, duplicate part ids, parts that
-name no quantity, and placeholders with no given value are reported with their paths.
+Each expression is read with the whitelist parser, as the grading workers read it. Unknown symbols,
+unknown units, empty ranges, givens for undeclared symbols, duplicate part ids and placeholders with
+no given value are reported here with their paths; each part's own faults by its kind
+(`problems.kinds`).
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping
+from collections.abc import Mapping
 from functools import partial
-from typing import TypeVar
 
 import sympy
 
-from physics.checking import read_expression, read_relation
-from physics.errors import AnswerError, SpecError
+from physics.checking import read_relation
+from physics.errors import SpecError
 from physics.symbolic import SymbolSpec, make_symbol
-from physics.units import parse_units
 from problems.errors import ErrorItem
-from problems.modelinfo import missing_quantity, model_quantity_names, spec_error_items
-from problems.schema import GivenDecl, NumericPart, ProblemDocument, SymbolDecl, SymbolicPart, format_path
+from problems.kinds import kind_of
+from problems.kinds.base import Faults, MeaningContext
+from problems.modelinfo import model_quantity_names, spec_error_items
+from problems.schema import GivenDecl, ProblemDocument, SymbolDecl
 from problems.symbols import read_bound, symbol_spec, unit_dimension_at
 from problems.variants import placeholders, unit_scale, valid_range_errors
-
-T = TypeVar("T")
-
-
-def si_units_at(text: str, path: tuple[str | int, ...]) -> None:
-    """A part that asks for SI answers must state its own units in SI."""
-    try:
-        units = parse_units(text)
-    except AnswerError:
-        return  # unit_dimension_at reports it
-    foreign = [atom.symbol for atom, _ in units.factors if not atom.si]
-    if foreign:
-        raise SpecError(f"{foreign[0]} is not an SI unit, but the part asks for SI answers", path)
-
-
-class _Collector:
-    """Runs checks, turning each SpecError into one (path, message) and carrying on."""
-
-    def __init__(self) -> None:
-        self.errors: list[ErrorItem] = []
-
-    def add(self, path: tuple[str | int, ...], message: str) -> None:
-        item = (format_path(path), message)
-        if item not in self.errors:
-            self.errors.append(item)
-
-    def attempt(self, check: Callable[[], T], path: tuple[str | int, ...] = ()) -> T | None:
-        try:
-            return check()
-        except SpecError as error:
-            self.add(error.path or path, error.message)
-        except AnswerError as error:
-            self.add(path, error.message)
-        return None
 
 
 def semantic_errors(doc: ProblemDocument, model_quantities: frozenset[str] | None = None) -> list[ErrorItem]:
     """Every meaning fault of `doc`, in document order. `model_quantities` defaults to the engine's view."""
-    out = _Collector()
+    out = Faults()
     table: dict[str, sympy.Symbol] = {}
     symbols_ok = True
     bad_ranges: set[str] = set()
@@ -108,7 +75,7 @@ def _not_below(low: sympy.Expr, high: sympy.Expr) -> bool:
 
 
 def _check_given(
-    out: _Collector,
+    out: Faults,
     doc: ProblemDocument,
     name: str,
     given: GivenDecl,
@@ -153,7 +120,7 @@ class _AnyName(frozenset[str]):
         return True
 
 
-def _model_quantities(doc: ProblemDocument, out: _Collector, symbols_ok: bool) -> frozenset[str] | None:
+def _model_quantities(doc: ProblemDocument, out: Faults, symbols_ok: bool) -> frozenset[str] | None:
     """The quantity names the model defines (None: no model); model faults are reported under `model`."""
     if doc.model is None:
         return None
@@ -168,52 +135,18 @@ def _model_quantities(doc: ProblemDocument, out: _Collector, symbols_ok: bool) -
 
 
 def _check_parts(
-    out: _Collector,
+    out: Faults,
     doc: ProblemDocument,
     table: Mapping[str, sympy.Symbol],
     quantities: frozenset[str] | None,
 ) -> None:
     seen: dict[str, int] = {}
-    symbolic_ids = {p.id for p in doc.parts if isinstance(p, SymbolicPart)}
+    expression_parts = frozenset(p.id for p in doc.parts if kind_of(p).expression_answer)
+    context = MeaningContext(doc, table, quantities, expression_parts, out)
     for index, part in enumerate(doc.parts):
         path: tuple[str | int, ...] = ("parts", index)
         if part.id in seen:
             out.add((*path, "id"), f"duplicate part id {part.id!r} (also parts[{seen[part.id]}])")
         else:
             seen[part.id] = index
-        if isinstance(part, SymbolicPart):
-            allowed = dict(table)
-            if part.symbols is not None:
-                allowed = {}
-                for j, name in enumerate(part.symbols):
-                    if name not in doc.symbols:
-                        out.add((*path, "symbols", j), f"{name!r} is not a declared symbol")
-                    elif name in table:
-                        allowed[name] = table[name]
-            if part.answer is not None:
-                out.attempt(partial(read_expression, part.answer, allowed, (*path, "answer")))
-            if quantities is None and part.answer is None:
-                out.add(path, "needs an answer (there is no model to derive it from)")
-            elif (
-                quantities is not None
-                and part.quantity_name not in quantities
-                and (part.quantity is not None or part.answer is None)  # a named quantity never falls back
-            ):
-                out.add((*path, "quantity"), missing_quantity(part.quantity_name, quantities))
-            for j, mistake in enumerate(part.mistakes):
-                mpath = (*path, "mistakes", j, "answer")
-                out.attempt(partial(read_expression, mistake.answer, table, mpath))
-            for j, limit in enumerate(part.limits):
-                for name, value in limit.where.items():
-                    lpath = (*path, "limits", j, "where", name)
-                    if name not in doc.symbols:
-                        out.add(lpath, f"{name!r} is not a declared symbol")
-                    else:
-                        out.attempt(partial(read_bound, value, lpath))
-        elif isinstance(part, NumericPart):
-            if part.of not in symbolic_ids and (quantities is None or part.of not in quantities):
-                out.add((*path, "of"), f"{part.of!r} is neither a symbolic part nor a model quantity")
-            if not part.dimensionless:
-                out.attempt(partial(unit_dimension_at, part.units, (*path, "units")))
-                if part.units_system == "SI":
-                    out.attempt(partial(si_units_at, part.units, (*path, "units")))
+        kind_of(part).check_meaning(part, path, context)

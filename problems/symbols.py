@@ -7,6 +7,7 @@ the same sympy Symbols here, in the engine and in the checker (assumptions come 
 from __future__ import annotations
 
 from decimal import Decimal
+from typing import TYPE_CHECKING
 
 import sympy
 
@@ -17,7 +18,10 @@ from physics.dimensions import DIMENSIONLESS, Dimension
 from physics.errors import AnswerError, SpecError
 from physics.symbolic import SymbolSpec, make_symbol
 from physics.units import unit_dimension
-from problems.schema import ProblemDocument, SymbolDecl
+from problems.fields import SymbolDecl
+
+if TYPE_CHECKING:
+    from problems.schema import ProblemDocument
 
 
 def read_bound(value: Decimal | str, path: tuple[str | int, ...]) -> sympy.Expr:
@@ -43,8 +47,10 @@ def unit_dimension_at(text: str, path: tuple[str | int, ...]) -> Dimension:
         return DIMENSIONLESS
     try:
         return unit_dimension(text)
-    except (AnswerError, SpecError) as error:
-        raise SpecError(error.message, path) from None
+    except SpecError as error:
+        raise error.at(path) from None
+    except AnswerError as error:
+        raise SpecError.unreadable(error, path, text) from None
 
 
 def symbol_specs(doc: ProblemDocument) -> dict[str, SymbolSpec]:

@@ -14,13 +14,16 @@ import re
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from decimal import ROUND_CEILING, ROUND_FLOOR, ROUND_HALF_EVEN, Decimal, localcontext
-from typing import Any
+from typing import TYPE_CHECKING
 
 import sympy
 
 from physics.errors import SpecError
 from physics.units import parse_units
-from problems.schema import DEFAULT_SIGFIGS, GivenDecl, ProblemDocument, SymbolicPart
+from problems.fields import DEFAULT_SIGFIGS, GivenDecl
+
+if TYPE_CHECKING:
+    from problems.schema import ProblemDocument
 
 REFERENCE_DIGITS = 30  # working precision of the numeric reference
 REFERENCE_SIGNIFICANT = 12  # digits kept in the reference value
@@ -220,55 +223,3 @@ def fill_statement(statement: str, doc: ProblemDocument, variant: Variant) -> st
 
     segments = _MATH.split(statement)
     return "".join(PLACEHOLDER.sub(fill, s) if i % 2 == 0 else s for i, s in enumerate(segments))
-
-
-def _json_number(value: Decimal) -> int | float:
-    return (
-        int(value) if value == value.to_integral_value() and value.as_tuple().exponent == 0 else float(value)
-    )
-
-
-def student_view(problem: ProblemDocument, variant: Variant) -> dict[str, Any]:
-    """What one student may see: statement with their values, givens, parts; never a reference."""
-    parts: list[dict[str, Any]] = []
-    for part in problem.parts:
-        tolerance: dict[str, int | float] | None = None
-        if isinstance(part, SymbolicPart):
-            units, names = None, part.symbols if part.symbols is not None else list(problem.symbols)
-        else:
-            units, names = part.units, []
-            tolerance = {
-                key: int(value) if key == "sigfigs" else float(value)
-                for key, value in part.tolerance.model_dump(exclude_none=True).items()
-            }
-        limit = part.max_attempts if part.max_attempts is not None else problem.max_attempts
-        parts.append(
-            {
-                "id": part.id,
-                "kind": part.kind,
-                "prompt": part.prompt,
-                "units": units,
-                "symbols": names,
-                "max_attempts": limit,
-                "tolerance": tolerance,
-            }
-        )
-    return {
-        "id": problem.id,
-        "title": problem.title,
-        "statement": fill_statement(problem.statement, problem, variant),
-        "given": {
-            name: {
-                "value": _json_number(value),
-                "unit": problem.given[name].unit,
-                "text": format_quantity(value, problem.given[name].unit),
-            }
-            for name, value in variant.values.items()
-            if name in problem.given
-        },
-        "symbols": {
-            name: {"meaning": decl.meaning, "dimension": decl.dimension}
-            for name, decl in problem.symbols.items()
-        },
-        "parts": parts,
-    }

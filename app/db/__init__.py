@@ -6,6 +6,8 @@ models.py       the tables (ORM rows; only the repositories use them)
 records.py      the dataclasses the repositories return
 keys.py         API keys           problems.py    problems and versions
 submissions.py  submissions and attempt counters   errors.py   domain errors
+
+The service reaches these through `app.storage` (a protocol per store; its SQL stores call these).
 """
 
 from app.db.database import Database

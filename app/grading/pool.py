@@ -16,9 +16,9 @@ from app.errors import Busy, GraderFault, Unavailable
 from app.grading import forkserver
 from app.grading.supervised import PoolUnavailable, SupervisedPool
 from app.grading.worker import WARM_UP_JOBS, GraderCrash, SpecProblem, grade, limit_memory, read_only
-from physics.checking import CheckJob, Preview
+from physics.checking import CheckJob
 from physics.errors import CheckTimeout, SpecError, TooLarge
-from physics.verdict import InputProblem, Verdict
+from physics.verdict import InputProblem, Preview, Verdict
 
 log = logging.getLogger("physcheck.grading")
 T = TypeVar("T")

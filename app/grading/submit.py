@@ -6,14 +6,12 @@ import logging
 
 from starlette.concurrency import run_in_threadpool
 
-from app.db import submissions as submission_repository
-from app.db.records import ProblemRecord, SubmissionRecord
+from app.db.records import ProblemRecord
 from app.errors import GraderFault, Unavailable
 from app.schemas.check import VerdictPublic
 from app.schemas.problems import SubmissionResult
 from app.services import Services
 from physics.errors import SpecError
-from physics.verdict import Verdict
 
 log = logging.getLogger("physcheck.submissions")
 LOGGED_ANSWER_CHARS = 120
@@ -52,13 +50,20 @@ async def submit_answer(
         "graded",
         extra={**context, "verdict": verdict.outcome.value, "reason": verdict.reason.value},
     )
-    stored, used = await run_in_threadpool(
-        _file, services, record, part_id, student, answer, verdict, max_attempts
+    filed = await run_in_threadpool(
+        services.stores.submissions.file,
+        problem_id=record.id,
+        problem_version=record.version,
+        part_id=part_id,
+        student=student,
+        answer=answer,
+        verdict=verdict,
+        max_attempts=max_attempts,
     )
     return SubmissionResult(
         **VerdictPublic.of(verdict).model_dump(),
-        submission_id=stored.id,
-        attempts_used=used,
+        submission_id=filed.record.id,
+        attempts_used=filed.attempts_used,
         max_attempts=max_attempts,
     )
 
@@ -69,29 +74,3 @@ def stored_problem_fault(error: SpecError, context: dict[str, object]) -> Grader
     return GraderFault(
         "This problem could not be graded on our side; it has been logged. Nothing was recorded."
     )
-
-
-def _file(
-    services: Services,
-    record: ProblemRecord,
-    part_id: str,
-    student: str,
-    answer: str,
-    verdict: Verdict,
-    max_attempts: int | None,
-) -> tuple[SubmissionRecord, int]:
-    with services.database.session() as session:
-        stored = submission_repository.record_submission(
-            session,
-            problem_id=record.id,
-            problem_version=record.version,
-            part_id=part_id,
-            student=student,
-            answer=answer,
-            verdict=verdict,
-            max_attempts=max_attempts,
-        )
-        used = stored.attempt or submission_repository.attempts_used(session, record.id, part_id, student)
-        for hook in services.on_graded:
-            hook(session, stored)
-    return stored, used

@@ -15,10 +15,11 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from decimal import Decimal
 
-from physics.checking import CheckJob, NumericJob, Preview, SymbolDecl, SymbolicJob, preview, run_job
+from physics.checking import CheckJob, NumericJob, QuestionJob, SymbolDecl, SymbolicJob, preview, run_job
+from physics.choice import Choice, ChoiceQuestion
 from physics.errors import SpecError, TooLarge
 from physics.numeric import NumericSpec
-from physics.verdict import InputProblem, Verdict
+from physics.verdict import InputProblem, Preview, Verdict
 
 # Touch every lazily built table (parser, unit registry, sampler) before real requests arrive.
 WARM_UP_JOBS: tuple[CheckJob, ...] = (
@@ -28,6 +29,7 @@ WARM_UP_JOBS: tuple[CheckJob, ...] = (
         (SymbolDecl("m", "kg"), SymbolDecl("g", "m/s^2"), SymbolDecl("theta", "1")),
     ),
     NumericJob("4.58 km/h", NumericSpec(expected=Decimal("1.27"), units="m/s")),
+    QuestionJob("B", ChoiceQuestion((Choice("up the slope"), Choice("down the slope")), 0)),
 )
 
 

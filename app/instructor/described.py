@@ -10,11 +10,13 @@ from __future__ import annotations
 from collections.abc import Mapping
 from dataclasses import dataclass
 from decimal import Decimal
+from typing import assert_never
 
 import sympy
 
+from physics.choice import label
 from physics.errors import SpecError
-from problems.compiled import CompiledNumericPart, CompiledProblem, CompiledSymbolicPart
+from problems.compiled import CompiledChoicePart, CompiledNumericPart, CompiledProblem, CompiledSymbolicPart
 from problems.variants import Variant, format_number, format_quantity, round_sigfigs
 
 SHOWN_FIGURES = 4
@@ -106,52 +108,71 @@ def _numeric(part: CompiledNumericPart, variant: Variant | None) -> tuple[str | 
     return shown, format_quantity(value, part.units), None
 
 
+def _part(
+    part_id: str, kind: str, prompt: str, compiled: CompiledProblem, variant: Variant | None
+) -> PartInfo:
+    part = compiled.parts[part_id]
+    doc_part = compiled.document.part(part_id)
+    if isinstance(part, CompiledSymbolicPart):
+        authored = len(getattr(doc_part, "mistakes", ()))
+        return PartInfo(
+            id=part_id,
+            kind=kind,
+            prompt=prompt,
+            latex=sympy.latex(part.expected),
+            units=None,
+            tolerance=None,
+            expected=None,
+            expected_full=None,
+            mistakes=tuple(
+                MistakeInfo(sympy.latex(m.expr), sympy.sstr(m.expr), m.feedback, i < authored)
+                for i, m in enumerate(part.context.mistakes)
+            ),
+            limits=tuple(
+                LimitInfo(_limit_where(case.substitutions), case.description) for case in part.context.limits
+            ),
+        )
+    if isinstance(part, CompiledNumericPart):
+        expected, full, error = _numeric(part, variant)
+        tolerance = part.tolerance
+        return PartInfo(
+            id=part_id,
+            kind=kind,
+            prompt=prompt,
+            latex=sympy.latex(part.expr),
+            units=part.units,
+            tolerance=tolerance_text(tolerance.rel, tolerance.abs, tolerance.sigfigs, part.units),
+            expected=None if expected is None else expected,
+            expected_full=full,
+            mistakes=(),
+            limits=(),
+            error=error,
+        )
+    if isinstance(part, CompiledChoicePart):
+        question = part.multiple
+        return PartInfo(
+            id=part_id,
+            kind=kind,
+            prompt=prompt,
+            latex=part.solution().latex,
+            units=None,
+            tolerance=None,
+            expected=part.solution().text,
+            expected_full=None,
+            mistakes=tuple(
+                MistakeInfo(rf"\text{{{label(j)}}}", label(j), choice.feedback, True)
+                for j, choice in enumerate(question.choices)
+                if choice.feedback is not None
+            ),
+            limits=(),
+        )
+    assert_never(part)
+
+
 def describe(compiled: CompiledProblem, variant: Variant | None = None) -> Described:
     """Everything an instructor checks a problem by; numeric values for `variant` when given."""
     doc = compiled.document
-    parts = []
-    for spec in doc.parts:
-        part = compiled.parts[spec.id]
-        if isinstance(part, CompiledSymbolicPart):
-            authored = len(getattr(spec, "mistakes", ()))
-            parts.append(
-                PartInfo(
-                    id=spec.id,
-                    kind=spec.kind,
-                    prompt=spec.prompt,
-                    latex=sympy.latex(part.expected),
-                    units=None,
-                    tolerance=None,
-                    expected=None,
-                    expected_full=None,
-                    mistakes=tuple(
-                        MistakeInfo(sympy.latex(m.expr), sympy.sstr(m.expr), m.feedback, i < authored)
-                        for i, m in enumerate(part.context.mistakes)
-                    ),
-                    limits=tuple(
-                        LimitInfo(_limit_where(case.substitutions), case.description)
-                        for case in part.context.limits
-                    ),
-                )
-            )
-        else:
-            expected, full, error = _numeric(part, variant)
-            tolerance = part.tolerance
-            parts.append(
-                PartInfo(
-                    id=spec.id,
-                    kind=spec.kind,
-                    prompt=spec.prompt,
-                    latex=sympy.latex(part.expr),
-                    units=part.units,
-                    tolerance=tolerance_text(tolerance.rel, tolerance.abs, tolerance.sigfigs, part.units),
-                    expected=expected,
-                    expected_full=full,
-                    mistakes=(),
-                    limits=(),
-                    error=error,
-                )
-            )
+    parts = tuple(_part(spec.id, spec.kind, spec.prompt, compiled, variant) for spec in doc.parts)
     derived = compiled.derived
     derivation = derived.raw if derived is not None else None
     methods = (

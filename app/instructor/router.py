@@ -31,7 +31,6 @@ from starlette.concurrency import run_in_threadpool
 from starlette.datastructures import UploadFile
 
 from app.db import class_results as results_repository
-from app.db import submissions as submission_repository
 from app.db.errors import ProblemExists
 from app.db.errors import ProblemNotFound as StoredProblemNotFound
 from app.db.records import ProblemRecord, Role
@@ -40,7 +39,6 @@ from app.errors import AppError, Busy
 from app.instructor import session as auth
 from app.instructor.described import Described, MistakeInfo, describe
 from app.instructor.plots import Bar, bar_chart
-from app.lti.outbox import list_delivery_problems
 from app.lti.platforms import platform_origins
 from app.routers.authoring import store_new_problem, store_new_version
 from app.services import Services
@@ -552,8 +550,7 @@ async def results(problem_id: str, request: Request, services: ServicesDep, who:
     def load() -> dict[str, Any]:
         doc = services.catalog.document(record)
         part_ids = [p.id for p in doc.parts]
-        with services.database.session(read_only=True) as session:
-            found = results_repository.class_results(session, problem_id, part_ids)
+        found = services.stores.submissions.class_results(problem_id, part_ids)
         described = describe(services.catalog.compiled(record))
         return {"doc": doc, "parts": found, "described": described}
 
@@ -642,10 +639,9 @@ async def submissions(
     problem, student = _filters(problem, student)
 
     def load() -> tuple[Any, list[str]]:
-        with services.database.session(read_only=True) as session:
-            found = submission_repository.list_submissions(
-                session, problem_id=problem, student=student, limit=PAGE_SIZE, cursor=cursor or None
-            )
+        found = services.stores.submissions.page(
+            problem_id=problem, student=student, limit=PAGE_SIZE, cursor=cursor or None
+        )
         return found, [record.id for record in services.catalog.list()]
 
     try:
@@ -684,7 +680,7 @@ async def submissions_csv(
     problem, student = _filters(problem, student)
     out = io.StringIO()
     await run_in_threadpool(
-        lambda: export_submissions(services.database, problem, out, student=student, progress=False)
+        lambda: export_submissions(services.stores.submissions, problem, out, student=student, progress=False)
     )
     name = "submissions" + (f"-{problem}" if problem and _ID.match(problem) else "") + ".csv"
     return Response(
@@ -705,11 +701,7 @@ async def submissions_csv(
 async def deliveries(request: Request, services: ServicesDep, who: Visitor) -> Response:
     _need_key(who)
 
-    def load() -> list[Any]:
-        with services.database.session(read_only=True) as session:
-            return list_delivery_problems(session)
-
-    items = await run_in_threadpool(load)
+    items = await run_in_threadpool(services.stores.outbox.delivery_problems)
     return await _page(
         request,
         services,

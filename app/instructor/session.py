@@ -23,7 +23,6 @@ from fastapi import Request
 from starlette.concurrency import run_in_threadpool
 
 from app.auth import Principal
-from app.db import keys as key_repository
 from app.db.errors import KeyNotFound
 from app.db.records import Role
 from app.lti.sessions import current_session
@@ -104,11 +103,10 @@ def check_csrf(secret: str, session_ref: str, sent: str | None) -> None:
 
 
 def _key_principal(services: Services, key_id: int) -> Principal | None:
-    with services.database.session(read_only=True) as session:
-        try:
-            record = key_repository.get_key(session, key_id)
-        except KeyNotFound:
-            return None
+    try:
+        record = services.stores.keys.get(key_id)
+    except KeyNotFound:
+        return None
     if record.revoked:
         return None
     return Principal(key_id=str(record.id), role=record.role, name=record.name or "", student=record.student)

@@ -17,7 +17,7 @@ from datetime import datetime, timedelta
 from typing import Any
 from urllib.parse import urlencode, urlsplit
 
-from sqlalchemy import delete, select
+from sqlalchemy import delete
 from sqlalchemy.exc import IntegrityError
 from sqlalchemy.orm import Session
 from starlette.concurrency import run_in_threadpool
@@ -38,7 +38,8 @@ from app.lti.id_token import (
     LaunchClaims,
     verify_id_token,
 )
-from app.lti.models import LtiDeepLinkRequest, LtiGradeTarget, LtiLoginState, LtiSession, LtiUsedNonce
+from app.lti.models import LtiDeepLinkRequest, LtiLoginState, LtiSession, LtiUsedNonce
+from app.lti.outbox import add_grade_target
 from app.lti.pages import ProblemChoice
 from app.lti.platforms import PlatformRecord, find_platform, get_platform, is_deployed
 from app.lti.sessions import SessionRecord, open_session, role_from_claims, token_hash
@@ -226,7 +227,14 @@ async def complete_launch(
                     )
                 )
             if problem_id is not None and claims.lineitem_url is not None:
-                _record_grade_target(session, platform.id, record.student, problem_id, claims)
+                add_grade_target(
+                    session,
+                    platform.id,
+                    student=record.student,
+                    problem_id=problem_id,
+                    lineitem_url=claims.lineitem_url,
+                    sub=claims.sub,
+                )
             return LaunchOutcome(session_id, record, claims, platform, problem_id, deep_link_id)
 
     return await run_in_threadpool(open_launch)
@@ -254,35 +262,6 @@ def _spend_nonce(session: Session, platform_id: int, nonce: str, now: datetime) 
             )
     except IntegrityError as error:
         raise NotPermitted("replayed", "This launch was already used; open the activity again.") from error
-
-
-def _record_grade_target(
-    session: Session, platform_id: int, student: str, problem_id: str, claims: LaunchClaims
-) -> None:
-    assert claims.lineitem_url is not None
-    existing = session.scalars(
-        select(LtiGradeTarget).where(
-            LtiGradeTarget.platform_id == platform_id,
-            LtiGradeTarget.student == student,
-            LtiGradeTarget.problem_id == problem_id,
-            LtiGradeTarget.lineitem_url == claims.lineitem_url,
-        )
-    ).one_or_none()
-    if existing is None:
-        try:
-            with session.begin_nested():
-                session.add(
-                    LtiGradeTarget(
-                        platform_id=platform_id,
-                        student=student,
-                        problem_id=problem_id,
-                        lineitem_url=claims.lineitem_url,
-                        sub=claims.sub,
-                        last_timestamp=None,
-                    )
-                )
-        except IntegrityError:
-            pass  # a concurrent launch recorded it
 
 
 # ---- deep linking ----------------------------------------------------------------------------------

@@ -4,6 +4,9 @@ line item's `scoreMaximum` that deep linking sets."""
 
 from __future__ import annotations
 
+from collections.abc import Mapping
+from typing import Any
+
 from sqlalchemy import exists, func, select
 from sqlalchemy.orm import Session
 
@@ -19,8 +22,6 @@ def problem_score(
 ) -> tuple[float, float]:
     """(score given, score maximum) for one student on one problem version's parts."""
     version = session.get(ProblemVersion, (problem_id, problem_version))
-    parts = version.document.get("parts") if version is not None else None
-    part_ids = [p.get("id") for p in parts if isinstance(p, dict)] if isinstance(parts, list) else []
     rows = session.execute(
         select(Submission.part_id, func.max(Submission.score))
         .where(
@@ -31,13 +32,20 @@ def problem_score(
         .group_by(Submission.part_id)
     ).all()
     best: dict[str, float] = {part_id: float(score or 0.0) for part_id, score in rows}
+    return score_of({} if version is None else version.document, best)
+
+
+def score_of(document: Mapping[str, Any], best: Mapping[str, float]) -> tuple[float, float]:
+    """(score given, score maximum) from the best score on each part: one point per part."""
+    parts = document.get("parts")
+    part_ids = [p.get("id") for p in parts if isinstance(p, dict)] if isinstance(parts, list) else []
     given = sum(best.get(str(part_id), 0.0) for part_id in part_ids)
     return given, float(max(len(part_ids), 1))
 
 
 def queue_grade(session: Session, stored: SubmissionRecord) -> int:
-    """The `Services.on_graded` hook: inside the submission's transaction, queue the student's new
-    problem score for every LMS line item it was launched from. Returns how many were queued."""
+    """The SQL submission store's filing hook: inside the submission's transaction, queue the
+    student's new problem score for every LMS line item it was launched from. Returns how many."""
     if stored.verdict == Outcome.INVALID:
         return 0
     launched = session.scalar(

@@ -34,9 +34,16 @@ def _live_rows(session: Session) -> list[LtiToolKey]:
     return list(session.scalars(query))
 
 
+def generate() -> RSAKey:
+    """A fresh private key with its thumbprint as kid."""
+    key = RSAKey.generate_key(KEY_SIZE, parameters=_KEY_PARAMETERS, private=True, auto_kid=True)
+    assert key.kid is not None
+    return key
+
+
 def create_key(session: Session, *, clock: Callable[[], datetime] = utc_now) -> str:
     """A new key, which becomes the signing key at once; returns its kid."""
-    key = RSAKey.generate_key(KEY_SIZE, parameters=_KEY_PARAMETERS, private=True, auto_kid=True)
+    key = generate()
     assert key.kid is not None
     pem = key.as_pem(private=True)
     session.add(LtiToolKey(kid=key.kid, private_pem=pem.decode("ascii"), created_at=clock(), retired_at=None))
@@ -71,5 +78,8 @@ def rotate_keys(database: Database, *, clock: Callable[[], datetime] = utc_now) 
 
 def sign(session: Session, claims: dict[str, Any], *, clock: Callable[[], datetime] = utc_now) -> str:
     """A compact JWT over `claims`, signed RS256 with the current key and naming its kid."""
-    key = signing_key(session, clock=clock)
+    return sign_with(signing_key(session, clock=clock), claims)
+
+
+def sign_with(key: RSAKey, claims: dict[str, Any]) -> str:
     return jwt.encode({"alg": ALGORITHM, "kid": key.kid}, claims, key, algorithms=[ALGORITHM])

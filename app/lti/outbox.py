@@ -25,17 +25,20 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from datetime import datetime, timedelta
 from email.utils import parsedate_to_datetime
-from typing import Any
+from typing import TYPE_CHECKING, Any
 from urllib.parse import urlsplit, urlunsplit
 
 import httpx
 from sqlalchemy import exists, or_, select, update
+from sqlalchemy.exc import IntegrityError
 from sqlalchemy.orm import Session, aliased
 
 from app.db.database import Database
 from app.db.types import utc_now
-from app.lti import keys
 from app.lti.models import LtiGradeTarget, LtiPlatform, LtiScoreOutbox
+
+if TYPE_CHECKING:  # the stores name this module's records
+    from app.storage.protocols import ScoreOutbox, ToolKeys
 
 log = logging.getLogger("physcheck.lti.outbox")
 
@@ -51,10 +54,10 @@ MAX_ATTEMPTS = 30  # about a day at the longest backoff
 LEASE = timedelta(minutes=2)  # a claimed row not finished by then (a crashed worker) is claimed again
 TOKEN_MARGIN = timedelta(seconds=60)  # renew tokens this long before they expire
 MAX_ERROR_CHARS = 2000
-_TIMESTAMP_STEP = timedelta(milliseconds=1)
+TIMESTAMP_STEP = timedelta(milliseconds=1)
 
 
-def _to_millisecond(moment: datetime) -> datetime:
+def to_millisecond(moment: datetime) -> datetime:
     return moment.replace(microsecond=moment.microsecond // 1000 * 1000)
 
 
@@ -72,7 +75,7 @@ def enqueue_scores(
         LtiGradeTarget.student == student, LtiGradeTarget.problem_id == problem_id
     )
     targets = list(session.scalars(query.order_by(LtiGradeTarget.id).with_for_update()))
-    stamp = _to_millisecond(timestamp)
+    stamp = to_millisecond(timestamp)
     for target in targets:
         # A row being sent (status `sending`) is left alone: it goes first, this one after it.
         session.execute(
@@ -83,7 +86,7 @@ def enqueue_scores(
         )
         sent = stamp
         if target.last_timestamp is not None and sent <= target.last_timestamp:
-            sent = target.last_timestamp + _TIMESTAMP_STEP
+            sent = target.last_timestamp + TIMESTAMP_STEP
         target.last_timestamp = sent
         session.add(
             LtiScoreOutbox(
@@ -99,6 +102,35 @@ def enqueue_scores(
         )
     session.flush()
     return len(targets)
+
+
+def add_grade_target(
+    session: Session, platform_id: int, *, student: str, problem_id: str, lineitem_url: str, sub: str
+) -> None:
+    """Record where a launched student's score on a problem goes, once (a concurrent launch may win)."""
+    existing = session.scalars(
+        select(LtiGradeTarget).where(
+            LtiGradeTarget.platform_id == platform_id,
+            LtiGradeTarget.student == student,
+            LtiGradeTarget.problem_id == problem_id,
+            LtiGradeTarget.lineitem_url == lineitem_url,
+        )
+    ).one_or_none()
+    if existing is None:
+        try:
+            with session.begin_nested():
+                session.add(
+                    LtiGradeTarget(
+                        platform_id=platform_id,
+                        student=student,
+                        problem_id=problem_id,
+                        lineitem_url=lineitem_url,
+                        sub=sub,
+                        last_timestamp=None,
+                    )
+                )
+        except IntegrityError:
+            pass  # a concurrent launch recorded it
 
 
 @dataclass(frozen=True)
@@ -247,22 +279,8 @@ class Outcome:
 
 def finish(database: Database, score: ClaimedScore, outcome: Outcome, now: datetime) -> None:
     """File the outcome, unless our claim was lost (lease expired and another worker took the row)."""
-    attempts = score.attempts + 1
-    values: dict[str, Any] = {
-        "attempts": attempts,
-        "claimed_by": None,
-        "claimed_until": None,
-        "last_status": outcome.http_status,
-        "last_error": outcome.message[:MAX_ERROR_CHARS] if outcome.message else None,
-    }
-    status = outcome.status
-    if status == PENDING and attempts >= MAX_ATTEMPTS:
-        status = FAILED
-    values["status"] = status
-    if status in (DELIVERED, SUPERSEDED):
-        values["delivered_at"] = now
-    if status == PENDING:
-        values["next_attempt_at"] = now + backoff(attempts, outcome.retry_after)
+    values = finished_values(score, outcome, now)
+    status = values["status"]
     with database.session() as session:
         session.execute(
             update(LtiScoreOutbox)
@@ -284,6 +302,28 @@ def finish(database: Database, score: ClaimedScore, outcome: Outcome, now: datet
                 .values(next_attempt_at=now)
                 .execution_options(synchronize_session=False)
             )
+
+
+def finished_values(score: ClaimedScore, outcome: Outcome, now: datetime) -> dict[str, Any]:
+    """The columns a finished delivery sets: attempts, status (failed after MAX_ATTEMPTS), the
+    LMS's answer, and when to try again."""
+    attempts = score.attempts + 1
+    values: dict[str, Any] = {
+        "attempts": attempts,
+        "claimed_by": None,
+        "claimed_until": None,
+        "last_status": outcome.http_status,
+        "last_error": outcome.message[:MAX_ERROR_CHARS] if outcome.message else None,
+    }
+    status = outcome.status
+    if status == PENDING and attempts >= MAX_ATTEMPTS:
+        status = FAILED
+    values["status"] = status
+    if status in (DELIVERED, SUPERSEDED):
+        values["delivered_at"] = now
+    if status == PENDING:
+        values["next_attempt_at"] = now + backoff(attempts, outcome.retry_after)
+    return values
 
 
 def backoff(attempts: int, retry_after: timedelta | None) -> timedelta:
@@ -341,14 +381,16 @@ class OutboxWorker:
 
     def __init__(
         self,
-        database: Database,
+        outbox: ScoreOutbox,
+        tool_keys: ToolKeys,
         transport: httpx.AsyncBaseTransport | None = None,
         *,
         clock: Callable[[], datetime] = utc_now,
         batch_size: int = 20,
         poll_interval: float = 2.0,
     ) -> None:
-        self.database = database
+        self.outbox = outbox
+        self.tool_keys = tool_keys
         self.transport = transport
         self.clock = clock
         self.batch_size = batch_size
@@ -381,7 +423,7 @@ class OutboxWorker:
     async def run_once(self) -> int:
         """Claim due scores and try each once; returns how many were tried."""
         claim = uuid.uuid4().hex
-        batch = await asyncio.to_thread(claim_batch, self.database, claim, self.clock(), self.batch_size)
+        batch = await asyncio.to_thread(self.outbox.claim, claim, self.clock(), self.batch_size)
         if not batch:
             return 0
         async with httpx.AsyncClient(transport=self.transport, timeout=10.0) as client:
@@ -389,7 +431,7 @@ class OutboxWorker:
                 outcome = await self._deliver(client, score)
                 if outcome.status == FAILED:
                     log.warning("LMS refused score %s: %s %s", score.id, outcome.http_status, outcome.message)
-                await asyncio.to_thread(finish, self.database, score, outcome, self.clock())
+                await asyncio.to_thread(self.outbox.finish, score, outcome, self.clock())
         return len(batch)
 
     async def _deliver(self, client: httpx.AsyncClient, score: ClaimedScore) -> Outcome:
@@ -463,5 +505,4 @@ class OutboxWorker:
             "exp": int((now + timedelta(minutes=5)).timestamp()),
             "jti": uuid.uuid4().hex,  # fresh for every request: platforms refuse a reused one
         }
-        with self.database.session() as session:
-            return keys.sign(session, claims, clock=self.clock)
+        return self.tool_keys.sign(claims)

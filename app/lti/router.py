@@ -18,7 +18,6 @@ from fastapi import APIRouter, Request
 from fastapi.responses import JSONResponse, RedirectResponse, Response
 from starlette.concurrency import run_in_threadpool
 
-from app.lti import keys
 from app.lti.context import LtiContext, LtiContextDep
 from app.lti.errors import LaunchRefused, MalformedRequest, PlatformKeysUnavailable
 from app.lti.flow import (
@@ -146,10 +145,6 @@ async def deep_link_return(request_id: str, request: Request, context: Context) 
 @router.get("/lti/jwks", include_in_schema=False)
 @router.get("/.well-known/jwks.json", include_in_schema=False)
 async def jwks(context: Context) -> JSONResponse:
-    def load() -> dict[str, Any]:
-        with context.database.session() as session:
-            keys.signing_key(session, clock=context.clock)  # so the set is never empty
-            return keys.public_jwks(session)
-
-    document = await run_in_threadpool(load)
+    assert context.tool_keys is not None, "set in LtiContext.__post_init__"
+    document = await run_in_threadpool(context.tool_keys.public_jwks)
     return JSONResponse(document, headers={"Cache-Control": "public, max-age=300"})

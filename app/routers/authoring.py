@@ -4,16 +4,14 @@ from __future__ import annotations
 
 from typing import Any, Literal
 
-import sympy
 from fastapi import APIRouter, Request, Response
 from starlette.concurrency import run_in_threadpool
 
 from app.auth import Principal
-from app.db import problems as problem_repository
 from app.db.records import ProblemRecord
-from app.deps import Instructor, ServicesDep
+from app.deps import Instructor, Problems, ServicesDep
 from app.errors import AppError, Forbidden
-from app.lti.outbox import DeliveryProblem, list_delivery_problems
+from app.lti.outbox import DeliveryProblem
 from app.openapi import AUTHENTICATED, errors
 from app.schemas.problems import (
     MethodPublic,
@@ -24,7 +22,7 @@ from app.schemas.problems import (
     StepPublic,
 )
 from app.services import Services
-from problems.compiled import CompiledProblem, CompiledSymbolicPart
+from problems.compiled import CompiledProblem
 from problems.errors import ProblemInvalid
 
 # Every route here is for instructors: a student key is 403.
@@ -101,12 +99,9 @@ async def store_new_problem(
 ) -> ProblemRecord:
     """Store a vetted document as a new problem owned by the caller's key (the API and the pages)."""
     owner = _key_id(principal)
-
-    def store() -> ProblemRecord:
-        with services.database.session() as session:
-            return problem_repository.create_problem(session, document["id"], document, owner_key_id=owner)
-
-    return await run_in_threadpool(store)
+    return await run_in_threadpool(
+        services.stores.problems.create, document["id"], document, owner_key_id=owner
+    )
 
 
 @router.put(
@@ -134,23 +129,15 @@ async def store_new_version(
             f"The document's id {document['id']!r} is not {problem_id!r}.",
             [{"path": "id", "message": f"must be {problem_id!r}"}],
         )
-
-    def store() -> ProblemRecord:
-        with services.database.session() as session:
-            return problem_repository.add_version(session, problem_id, document)
-
-    return await run_in_threadpool(store)
+    return await run_in_threadpool(services.stores.problems.add_version, problem_id, document)
 
 
 @router.delete("/v1/problems/{problem_id}", status_code=204, responses=errors(404, 422))
-async def retire(problem_id: str, services: ServicesDep, principal: Instructor) -> Response:
+async def retire(
+    problem_id: str, services: ServicesDep, problems: Problems, principal: Instructor
+) -> Response:
     await run_in_threadpool(_owned, services, problem_id, principal)
-
-    def store() -> None:
-        with services.database.session() as session:
-            problem_repository.retire_problem(session, problem_id)
-
-    await run_in_threadpool(store)
+    await run_in_threadpool(problems.retire, problem_id)
     return Response(status_code=204)
 
 
@@ -164,15 +151,14 @@ async def solution(problem_id: str, services: ServicesDep, _: Instructor) -> Sol
 def solution_of(compiled: CompiledProblem) -> SolutionPublic:
     references = []
     for part_id, part in compiled.parts.items():
-        expr = part.expected if isinstance(part, CompiledSymbolicPart) else part.expr
-        units = None if isinstance(part, CompiledSymbolicPart) else part.units
+        reference = part.solution()
         references.append(
             ReferencePublic(
                 part=part_id,
                 kind=compiled.document.part(part_id).kind,
-                text=sympy.sstr(expr),
-                latex=sympy.latex(expr),
-                units=units,
+                text=reference.text,
+                latex=reference.latex,
+                units=reference.units,
                 source="derived" if part.derived else "not derived",
             )
         )
@@ -223,8 +209,4 @@ async def delivery_problems(services: ServicesDep, principal: Instructor) -> lis
     if not principal.acts_for_students:
         raise Forbidden("Grade passback across courses is for instructor API keys.")
 
-    def read() -> list[DeliveryProblem]:
-        with services.database.session(read_only=True) as session:
-            return list_delivery_problems(session)
-
-    return await run_in_threadpool(read)
+    return await run_in_threadpool(services.stores.outbox.delivery_problems)

@@ -31,7 +31,7 @@ async def health() -> dict[str, str]:
 @router.get("/ready", response_model=None, responses=_READY)
 async def ready(services: ServicesDep) -> dict[str, str] | JSONResponse:
     """Ready for traffic: the database answers, grading workers are up and the problems are compiled."""
-    if not await run_in_threadpool(services.database.ping):
+    if not await run_in_threadpool(services.stores.ping):
         return JSONResponse(
             error_body("not_ready", "The database is not reachable."),
             status_code=503,

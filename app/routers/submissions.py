@@ -7,9 +7,8 @@ from typing import Annotated
 from fastapi import APIRouter, Query
 from starlette.concurrency import run_in_threadpool
 
-from app.db import submissions as submission_repository
-from app.db.records import Page, SubmissionRecord
-from app.deps import CurrentPrincipal, ServicesDep
+from app.db.records import SubmissionRecord
+from app.deps import CurrentPrincipal, Submissions
 from app.errors import Forbidden
 from app.openapi import AUTHENTICATED, errors
 from app.schemas.problems import StudentId, SubmissionPage, SubmissionPublic
@@ -21,7 +20,7 @@ MAX_PAGE = 1000
 
 @router.get("/v1/submissions", response_model=SubmissionPage, responses=errors(403, 422))
 async def list_submissions(
-    services: ServicesDep,
+    submissions: Submissions,
     principal: CurrentPrincipal,
     problem: Annotated[str | None, Query(max_length=100)] = None,
     student: Annotated[StudentId | None, Query()] = None,
@@ -33,13 +32,9 @@ async def list_submissions(
             raise Forbidden("This key or session sees only its own submissions.")
         student = principal.own_identity
 
-    def read() -> Page[SubmissionRecord]:
-        with services.database.session(read_only=True) as session:
-            return submission_repository.list_submissions(
-                session, problem_id=problem, student=student, limit=limit, cursor=cursor
-            )
-
-    page = await run_in_threadpool(read)
+    page = await run_in_threadpool(
+        submissions.page, problem_id=problem, student=student, limit=limit, cursor=cursor
+    )
     return SubmissionPage(items=[public(item) for item in page.items], next=page.next)
 
 

@@ -34,6 +34,11 @@ class GivenValue(BaseModel):
     text: str
 
 
+class ChoicePublic(BaseModel):
+    label: str  # "A", "B", …: what the student answers with
+    text: str
+
+
 class PartPublic(BaseModel):
     id: str
     kind: str
@@ -42,6 +47,7 @@ class PartPublic(BaseModel):
     symbols: list[str]
     max_attempts: int | None = None  # graded attempts allowed; None: unlimited
     tolerance: dict[str, float | int] | None = None  # numeric parts: how close counts as right
+    choices: list[ChoicePublic] | None = None  # choice parts: what to pick from, answered by label
 
 
 class ProblemPublic(BaseModel):

@@ -126,6 +126,7 @@ def _parts(view: Mapping[str, Any]) -> list[dict[str, Any]]:
                 "symbols": _symbol_rows(view, part.get("symbols") or []),
                 "tolerance": tolerance_text(part.get("tolerance"), units),
                 "max_attempts": part.get("max_attempts"),
+                "choices": part.get("choices") or [],
             }
         )
     return parts
@@ -154,7 +155,7 @@ def _load(context: LtiContext, problem_id: str, student: str) -> Loaded | None:
         view = context.student_view(problem_id, student)
     except LookupError:
         return None
-    work = load_work(context.database, problem_id, student, view.get("parts", []))
+    work = load_work(context.submission_store, problem_id, student, view.get("parts", []))
     return Loaded(view, work, _figure(context, problem_id, student))
 
 
@@ -265,7 +266,7 @@ def _problem_list(request: Request, student: str) -> list[dict[str, Any]]:
             {"id": part.id, "max_attempts": part.max_attempts or document.max_attempts}
             for part in document.parts
         ]
-        work = load_work(context.database, record.id, student, parts)
+        work = load_work(context.submission_store, record.id, student, parts)
         rows.append({"id": record.id, "title": document.title, "topics": document.topics, "work": work})
     return rows
 

@@ -9,9 +9,8 @@ from dataclasses import dataclass, field
 from datetime import datetime
 from typing import Any
 
-from app.db import submissions as submission_repository
-from app.db.database import Database
 from app.db.records import SubmissionRecord
+from app.storage import SubmissionStore
 from physics.verdict import Outcome
 
 MAX_PAGES = 5  # 5 000 submissions by one student to one problem: more than anyone needs shown
@@ -81,37 +80,33 @@ def _attempt(record: SubmissionRecord) -> Attempt:
     )
 
 
-def _submissions(database: Database, problem_id: str, student: str) -> list[SubmissionRecord]:
+def _submissions(store: SubmissionStore, problem_id: str, student: str) -> list[SubmissionRecord]:
     items: list[SubmissionRecord] = []
     cursor = None
-    with database.session(read_only=True) as session:
-        for _ in range(MAX_PAGES):
-            page = submission_repository.list_submissions(
-                session, problem_id=problem_id, student=student, limit=PAGE, cursor=cursor
-            )
-            items.extend(page.items)
-            cursor = page.next
-            if cursor is None:
-                break
+    for _ in range(MAX_PAGES):
+        page = store.page(problem_id=problem_id, student=student, limit=PAGE, cursor=cursor)
+        items.extend(page.items)
+        cursor = page.next
+        if cursor is None:
+            break
     return items
 
 
 def load_work(
-    database: Database, problem_id: str, student: str, parts: Sequence[Mapping[str, Any]]
+    store: SubmissionStore, problem_id: str, student: str, parts: Sequence[Mapping[str, Any]]
 ) -> ProblemWork:
     """The student's work on the parts of `parts` (the student view's parts, with `max_attempts`)."""
     work = {
         str(part["id"]): PartWork(limit=part.get("max_attempts") if part.get("max_attempts") else None)
         for part in parts
     }
-    for record in _submissions(database, problem_id, student):
+    for record in _submissions(store, problem_id, student):
         part = work.get(record.part_id)
         if part is None:  # a part a later version dropped
             continue
         part.history.insert(0, _attempt(record))
         if record.verdict != Outcome.INVALID:
             part.best = max(part.best or 0.0, record.score)
-    with database.session(read_only=True) as session:
-        for part_id, part in work.items():
-            part.used = submission_repository.attempts_used(session, problem_id, part_id, student)
+    for part_id, part in work.items():
+        part.used = store.attempts_used(problem_id, part_id, student)
     return ProblemWork(work)

@@ -29,7 +29,7 @@ MethodFactory = Callable[[Model, Mechanics], Method]
 
 
 def physical_checks(
-    model: Model, quantities: Mapping[str, sympy.Expr], lagrange: Method, factory: MethodFactory
+    model: Model, quantities: Mapping[str, sympy.Expr], simulator: Simulator, factory: MethodFactory
 ) -> dict[str, str]:
     """name -> what was shown; DerivationError (with the model path) when a check fails."""
     checks: dict[str, str] = {}
@@ -37,7 +37,6 @@ def physical_checks(
         checks["dimensions"] = (
             "every position is a length; every mass, inertia, energy, gravity, gap and state consistent"
         )
-    simulator = Simulator(model, lagrange.equilibrium)
     balance = simulator.energy_balance(domain_points(model, ENERGY_POINTS, seed=9))
     if balance is not None:
         checks["energy balance"] = (

@@ -53,7 +53,7 @@ class DAlembertMethod(Method):
             work = sympy.Add(
                 *(e * sympy.diff(d.mapping, c.symbol) for e, d in zip(effective, mech.dofs, strict=True))
             )
-            equation = sympy.collect(sympy.expand(work), list(mech.qdd))
+            equation = sympy.collect(sympy.trigsimp(sympy.expand(work)), list(mech.qdd))
             self.step(
                 f"Virtual work for δ{c.name}",
                 rf"\sum_i (\mathbf{{F}}_i - m_i\mathbf{{a}}_i)\cdot\frac{{\partial \mathbf{{r}}_i}}"
@@ -69,12 +69,13 @@ class DAlembertMethod(Method):
 
     @cached_property
     def solution(self) -> dict[sympy.Symbol, sympy.Expr]:
-        solution = self._solve(dict(self.model.state))
-        self.step("Solved", r",\quad ".join(self.tex(sympy.Eq(k, v)) for k, v in solution.items()))
-        return solution
+        return self._solve(dict(self.model.state))
 
     def acceleration(self, coordinate: str) -> sympy.Expr:
-        return self.at_state(self.solution[self.model.coordinate(coordinate).acceleration])
+        symbol = self.model.coordinate(coordinate).acceleration
+        value = self.at_state(self.solution[symbol])
+        self.step(f"Solved for the acceleration of {coordinate}", self.tex(sympy.Eq(symbol, value)))
+        return value
 
     def force(self, constraint: str) -> sympy.Expr:
         raise NotApplicable("constraint forces do no virtual work and drop out of d'Alembert's principle")

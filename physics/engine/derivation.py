@@ -112,8 +112,9 @@ def _derive(model: Model) -> Derivation:
             quantity=str(findings[0][0][-1]),
             findings=findings,
         )
-    simulation = _simulate(model, quantities, methods[0])
     lagrange = methods[0]
+    simulator = Simulator(model, lagrange.equilibrium)  # one compiled motion for the measures and the checks
+    simulation = _simulate(model, quantities, simulator)
     variants: dict[Model, Method] = {model: lagrange}
 
     def rederive(changed: Model, quantity: Quantity) -> sympy.Expr | None:
@@ -136,7 +137,7 @@ def _derive(model: Model) -> Derivation:
             limits[quantity.name] = generate_limits(model, reference)
         except Exception:
             limits[quantity.name] = ()
-    checks = physical_checks(model, quantities, lagrange, LagrangeMethod)
+    checks = physical_checks(model, quantities, simulator, LagrangeMethod)
     return Derivation(quantities, tuple(reports), agreement, simulation, mistakes, limits, proofs, checks)
 
 
@@ -221,9 +222,8 @@ def _simplest(candidates: list[sympy.Expr]) -> sympy.Expr:
 
 
 def _simulate(
-    model: Model, quantities: dict[str, sympy.Expr], lagrange: Method
+    model: Model, quantities: dict[str, sympy.Expr], simulator: Simulator
 ) -> dict[str, SimulationCheck]:
-    simulator = Simulator(model, lagrange.equilibrium)
     points = domain_points(model, SIMULATION_POINTS, seed=7)
     result: dict[str, SimulationCheck] = {}
     findings: list[tuple[tuple[str | int, ...], str]] = []

@@ -218,12 +218,7 @@ class FramesMethod(Method):
 
     @cached_property
     def solution(self) -> dict[sympy.Symbol, sympy.Expr]:
-        solution = self._solve(dict(self.model.state))
-        self.step(
-            "Solved in the frame",
-            r",\quad ".join(self.tex(sympy.Eq(k, v)) for k, v in solution.items()),
-        )
-        return solution
+        return self._solve(dict(self.model.state))
 
     def _coordinate_accelerations(
         self, solution: dict[sympy.Symbol, sympy.Expr], values: dict[sympy.Symbol, sympy.Expr]
@@ -247,11 +242,17 @@ class FramesMethod(Method):
 
     def acceleration(self, coordinate: str) -> sympy.Expr:
         accelerations = self._coordinate_accelerations(self.solution, dict(self.model.state))
-        return self.at_state(accelerations[self.model.coordinate(coordinate).acceleration])
+        symbol = self.model.coordinate(coordinate).acceleration
+        value = self.at_state(accelerations[symbol])
+        self.step(f"Solved for the acceleration of {coordinate}", self.tex(sympy.Eq(symbol, value)))
+        return value
 
     def force(self, constraint: str) -> sympy.Expr:
         index = [c.name for c in self.model.constraints].index(constraint)
-        return self.at_state(self.solution[self.mech.multipliers[index]])
+        symbol = self.mech.multipliers[index]
+        value = self.at_state(self.solution[symbol])
+        self.step(f"Solved for the force of {constraint}", self.tex(sympy.Eq(symbol, value)))
+        return value
 
     def potential_force(self, coordinate: str) -> sympy.Expr:
         """At rest in a turning frame: gravity, potentials and the centrifugal force along the coordinate."""

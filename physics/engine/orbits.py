@@ -197,8 +197,8 @@ def frame_rate(method: Method) -> sympy.Expr:
         raise DerivationError(
             "revolution_period: frame needs a rotating frame (the `rotating` element)", quantity=FRAME
         )
-    accelerations = [(c, sympy.simplify(method.acceleration(c.name))) for c in model.coordinates]
-    moving = [(c, a) for c, a in accelerations if a != 0]
+    accelerations = [(c, method.acceleration(c.name)) for c in model.coordinates]
+    moving = [(c, a) for c, a in accelerations if not _vanishes(a, model)]
     if not moving:
         method.step("At rest in the frame at the state", r"\ddot q = 0,\ \omega = " + method.tex(rate))
         return rate
@@ -228,6 +228,20 @@ def frame_rate(method: Method) -> sympy.Expr:
         + method.tex(value),
     )
     return sympy.simplify(rate.subs(symbol, value))
+
+
+def _vanishes(expr: sympy.Expr, model: Model) -> bool:
+    """expr is identically 0; looked at numerically first, since simplifying every method's acceleration
+    costs more than the rest of the quantity."""
+    if expr == 0:
+        return True
+    try:
+        values = [complex(sympy.N(expr.subs(point), 15)) for point in domain_points(model, 3, seed=13)]
+    except (TypeError, ValueError):
+        values = []
+    if any(abs(v) > 1e-9 for v in values):
+        return False
+    return bool(sympy.simplify(expr) == 0)
 
 
 def elsewhere(model: Model, symbol: sympy.Symbol) -> bool:

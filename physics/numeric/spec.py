@@ -9,6 +9,7 @@ from fractions import Fraction
 from physics.errors import AnswerError, SpecError
 from physics.numeric.tolerance import DEFAULT_TOLERANCE, Tolerance, as_decimal
 from physics.units import ParsedUnits, parse_units
+from physics.verdict import Preview, Verdict
 
 UNITS_SYSTEMS = (None, "SI")
 
@@ -39,6 +40,17 @@ class NumericSpec:
             if foreign:
                 raise SpecError(f"units {self.units!r} are not SI, but units_system is SI", ("units",))
 
+    def grade(self, answer: str, limits: object = None) -> Verdict:
+        """The verdict on `answer` (physics.checking.Question; a numeric answer has its own limits)."""
+        from physics.numeric.check import check_numeric  # check.py imports this module
+
+        return check_numeric(answer, self)
+
+    def read(self, answer: str, limits: object = None) -> Preview:
+        """How `answer` reads: the numeric check is cheap, so reading is grading without the verdict."""
+        verdict = self.grade(answer)
+        return Preview(verdict.read_as, verdict.error)
+
     @property
     def expected_value(self) -> Fraction:
         return Fraction(self.expected)
@@ -50,6 +62,5 @@ class NumericSpec:
         try:
             parsed = parse_units(self.units)
         except AnswerError as error:
-            where = f" at position {error.position}" if error.position is not None else ""
-            raise SpecError(f"bad units {self.units!r}{where}: {error.message}", ("units",)) from error
+            raise SpecError.unreadable(error, ("units",), self.units) from error
         return None if parsed.is_dimensionless_number else parsed

@@ -31,5 +31,4 @@ def unit_dimension(text: str) -> Dimension:
     try:
         return parse_units(text).dimension
     except AnswerError as error:
-        where = f" at position {error.position}" if error.position is not None else ""
-        raise SpecError(f"bad unit expression {text!r}{where}: {error.message}", ("dimension",)) from error
+        raise SpecError.unreadable(error, ("dimension",), text) from error

@@ -14,6 +14,7 @@ from sqlalchemy import select
 from app import catalog as catalog_module
 from app.catalog import Catalog
 from app.db.models import CompiledProblemRow
+from app.storage import sql_stores
 from physics.checking import check_answer
 from physics.verdict import Outcome
 
@@ -22,7 +23,7 @@ SECRET = "secret-for-the-test"
 
 
 def test_concurrent_first_requests_compile_a_problem_once(db, monkeypatch):
-    catalog = Catalog(db, "secret-for-the-test")
+    catalog = Catalog(sql_stores(db), "secret-for-the-test")
     catalog.sync_builtin()
     record = catalog.get("atwood")
     running, most = [0], [0]
@@ -76,7 +77,7 @@ def compilations(monkeypatch) -> list[str]:
 
 def start(db, bank: Path, secret: str = SECRET) -> Catalog:
     """What an instance does at start: store the bank, then compile or load every problem."""
-    catalog = Catalog(db, secret, bank)
+    catalog = Catalog(sql_stores(db), secret, bank)
     catalog.sync_builtin()
     catalog.warm_up()
     return catalog
@@ -97,7 +98,7 @@ def test_a_restart_loads_the_compiled_bank_instead_of_compiling_it(db, small_ban
 
 def test_a_restart_is_warm_before_it_opens_any_stored_compilation(db, small_bank, monkeypatch):
     start(db, small_bank)
-    restarted = Catalog(db, SECRET, small_bank)
+    restarted = Catalog(sql_stores(db), SECRET, small_bank)
     restarted.sync_builtin()
     warm_when_opened: list[bool] = []
     real_open = catalog_module.CompiledStore.open
@@ -145,6 +146,8 @@ def test_an_edited_bank_document_has_its_meaning_checked_again(db, small_bank):
 
     start(db, small_bank)
     problem = small_bank / "atwood" / "problem.yaml"
-    problem.write_text(problem.read_text().replace("answer: 2*m1*m2*g/(m1 + m2)", "answer: 2*m1*q*g/(m1 + m2)"))
+    problem.write_text(
+        problem.read_text().replace("answer: 2*m1*m2*g/(m1 + m2)", "answer: 2*m1*q*g/(m1 + m2)")
+    )
     with pytest.raises(ProblemInvalid, match="q"):
-        Catalog(db, SECRET, small_bank).sync_builtin()
+        Catalog(sql_stores(db), SECRET, small_bank).sync_builtin()

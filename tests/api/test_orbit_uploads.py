@@ -30,6 +30,7 @@ def test_a_satellite_orbit_is_derived_by_every_method(client, instructor_headers
     assert "revolution" in solution["simulation"]["period"]["compared"]
 
 
+@pytest.mark.slow
 def test_a_repulsive_centre_is_refused_with_the_reason(client, instructor_headers):
     doc = satellite("my-repelled-satellite")
     doc["model"]["potentials"][0]["energy"] = "G*M*m/d"

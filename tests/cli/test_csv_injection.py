@@ -46,29 +46,27 @@ def test_written_row_reads_back_with_separators_and_quotes_as_data():
 
 def test_exported_submissions_carry_no_formula(database_env, tmp_path):  # noqa: F811 (the fixture)
     from app.cli import main
-    from app.db import problems as problem_repository
-    from app.db import submissions as submission_repository
     from app.db.database import Database
+    from app.storage import sql_stores
     from physics.verdict import Judgement, Reason, Verdict
 
     main(["problems", "import", str(_atwood_file(tmp_path))])
     database = Database(database_env)
     try:
-        with database.session() as session:
-            record = problem_repository.get_problem(session, "cli-atwood")
-            for typed, _ in CELLS:
-                submission_repository.record_submission(
-                    session,
-                    problem_id=record.id,
-                    problem_version=1,
-                    part_id="acceleration",
-                    student="=cmd|' /C calc'!A0",
-                    answer=typed,
-                    verdict=Verdict.graded(Judgement(False, Reason.WRONG_VALUE, "f"), None),
-                    max_attempts=None,
-                )
+        stores = sql_stores(database)
+        record = stores.problems.get("cli-atwood")
+        for typed, _ in CELLS:
+            stores.submissions.file(
+                problem_id=record.id,
+                problem_version=1,
+                part_id="acceleration",
+                student="=cmd|' /C calc'!A0",
+                answer=typed,
+                verdict=Verdict.graded(Judgement(False, Reason.WRONG_VALUE, "f"), None),
+                max_attempts=None,
+            )
         out = io.StringIO()
-        assert export_submissions(database, "cli-atwood", out) == len(CELLS)
+        assert export_submissions(stores.submissions, "cli-atwood", out) == len(CELLS)
     finally:
         database.dispose()
     rows = list(csv.DictReader(io.StringIO(out.getvalue())))

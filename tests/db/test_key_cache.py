@@ -10,6 +10,7 @@ from app.db.models import ApiKey
 from app.db.types import utc_now
 from app.keys import create_key, revoke_key
 from app.startup import KEY_CACHE_SECONDS, DatabaseKeyStore
+from app.storage.sql import SqlApiKeyStore
 
 
 class Clock:
@@ -21,7 +22,7 @@ class Clock:
 
 
 def test_a_key_revoked_in_this_process_is_refused_at_once(db: Database) -> None:
-    store = DatabaseKeyStore(db, Clock())
+    store = DatabaseKeyStore(SqlApiKeyStore(db), Clock())
     plaintext, record = create_key(db, "instructor", "prof")
     assert store.authenticate(plaintext) is not None
     revoke_key(db, record.id)
@@ -30,7 +31,7 @@ def test_a_key_revoked_in_this_process_is_refused_at_once(db: Database) -> None:
 
 def test_a_key_revoked_elsewhere_is_refused_once_the_cache_time_has_passed(db: Database) -> None:
     clock = Clock()
-    store = DatabaseKeyStore(db, clock)
+    store = DatabaseKeyStore(SqlApiKeyStore(db), clock)
     plaintext, record = create_key(db, "student", "ada", student="ada")
     assert store.authenticate(plaintext) is not None
     with db.session() as session:  # as another process would: not through this process's code
@@ -40,7 +41,7 @@ def test_a_key_revoked_elsewhere_is_refused_once_the_cache_time_has_passed(db: D
 
 
 def test_unknown_keys_are_never_remembered(db: Database) -> None:
-    store = DatabaseKeyStore(db, Clock())
+    store = DatabaseKeyStore(SqlApiKeyStore(db), Clock())
     assert store.authenticate("pck_not-a-key") is None
     plaintext, _ = create_key(db, "instructor", "prof")
     assert store.authenticate(plaintext) is not None
@@ -48,7 +49,7 @@ def test_unknown_keys_are_never_remembered(db: Database) -> None:
 
 def test_the_memory_only_lookup_forgets_a_key_at_its_revocation(db: Database) -> None:
     clock = Clock()
-    store = DatabaseKeyStore(db, clock)
+    store = DatabaseKeyStore(SqlApiKeyStore(db), clock)
     plaintext, record = create_key(db, "instructor", "prof")
     assert store.cached(plaintext) is None  # never seen: the database decides
     assert store.authenticate(plaintext) is not None

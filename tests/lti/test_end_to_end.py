@@ -28,6 +28,7 @@ from app.lti.models import LtiScoreOutbox
 from app.lti.outbox import DELIVERED, PENDING, SENDING, OutboxWorker
 from app.main import create_app
 from app.settings import Settings
+from app.storage import sql_stores
 from tests.lti.conftest import platform_launch
 from tests.lti.fake_lms import (
     INSTRUCTOR,
@@ -162,7 +163,8 @@ def _undelivered(database: Database) -> int:
 async def deliver(sites: Sites) -> list[ReceivedScore]:
     """Drive delivery until nothing is queued (the app's own background worker may deliver some of
     them: claims keep every row to one sender); returns what the LMS has received so far."""
-    worker = OutboxWorker(sites.database, httpx.ASGITransport(app=sites.lms.app))
+    stores = sql_stores(sites.database)
+    worker = OutboxWorker(stores.outbox, stores.tool_keys, httpx.ASGITransport(app=sites.lms.app))
     deadline = time.monotonic() + DELIVERY_TIMEOUT
     while await run_in_threadpool(_undelivered, sites.database):
         assert time.monotonic() < deadline, "scores still queued"

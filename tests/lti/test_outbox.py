@@ -11,7 +11,7 @@ from sqlalchemy import update
 from app.db.database import Database
 from app.db.types import utc_now
 from app.lti.context import LtiContext
-from app.lti.models import LtiGradeTarget, LtiScoreOutbox
+from app.lti.models import LtiScoreOutbox
 from app.lti.outbox import (
     SCORE_CONTENT_TYPE,
     OutboxWorker,
@@ -21,6 +21,7 @@ from app.lti.outbox import (
     scores_url,
 )
 from app.settings import Settings
+from app.storage import sql_stores
 from tests.lti.conftest import platform_launch, unverified_claims
 from tests.lti.fake_lms import FakeLms
 
@@ -39,7 +40,8 @@ def enqueue(database: Database, student: str, given: float, at: datetime | None 
 
 
 def worker(database: Database, settings: Settings, lms: FakeLms) -> OutboxWorker:
-    return OutboxWorker(database, transport=httpx.ASGITransport(app=lms.app))
+    stores = sql_stores(database)
+    return OutboxWorker(stores.outbox, stores.tool_keys, transport=httpx.ASGITransport(app=lms.app))
 
 
 def make_all_due(database: Database) -> None:
@@ -150,25 +152,6 @@ async def test_each_token_request_uses_a_fresh_jti(
     assert len(jtis) == 2 and len(set(jtis)) == 2
 
 
-def test_scores_for_same_moment_get_strictly_increasing_timestamps(database: Database):
-    with database.session() as session:
-        session.add(
-            LtiGradeTarget(
-                platform_id=1,
-                student=STUDENT_1,
-                problem_id="moving-wedge",
-                lineitem_url="https://lms.test/li",
-                sub="s",
-            )
-        )
-    moment = datetime(2026, 1, 1, 12, 0, 0, 123456, tzinfo=UTC)
-    for given in (1.0, 2.0, 3.0):
-        enqueue(database, STUDENT_1, given, at=moment)
-    with database.session() as session:
-        stamps = [row.timestamp for row in session.query(LtiScoreOutbox).order_by(LtiScoreOutbox.id)]
-    assert stamps == [moment.replace(microsecond=123000) + timedelta(milliseconds=i) for i in range(3)]
-
-
 @pytest.mark.parametrize(
     ("lineitem", "expected"),
     [
@@ -200,7 +183,9 @@ async def test_worker_started_in_background_delivers_and_stops(
 
     await launch_as(browser, lms, "student-1")
     enqueue(database, STUDENT_1, 1.0)
-    delivery = OutboxWorker(database, transport=httpx.ASGITransport(app=lms.app), poll_interval=0.05)
+    stores = sql_stores(database)
+    transport = httpx.ASGITransport(app=lms.app)
+    delivery = OutboxWorker(stores.outbox, stores.tool_keys, transport, poll_interval=0.05)
     await delivery.start()
     with anyio.fail_after(20):
         while not lms.scores:

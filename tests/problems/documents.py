@@ -44,3 +44,23 @@ _SPRING: dict[str, Any] = {
 
 def spring() -> dict[str, Any]:
     return copy.deepcopy(_SPRING)
+
+
+FRICTION_CHOICE: dict[str, Any] = {
+    "id": "friction_direction",
+    "kind": "choice",
+    "prompt": "The block slides down the slope. Which way does friction act on it?",
+    "choices": [
+        {"text": "Up the slope", "correct": True},
+        {"text": "Down the slope", "feedback": "Friction opposes the sliding, which is down the slope."},
+        {"text": "Perpendicular to the slope"},
+    ],
+    "max_attempts": 1,
+}
+
+
+def spring_with_choice() -> dict[str, Any]:
+    """The spring problem with a third part, a multiple choice."""
+    data = spring()
+    data["parts"].append(copy.deepcopy(FRICTION_CHOICE))
+    return data

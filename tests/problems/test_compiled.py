@@ -16,7 +16,8 @@ from problems.compiled import CompiledNumericPart, CompiledProblem, CompiledSymb
 from problems.errors import ProblemInvalid
 from problems.loader import load_bank, parse_problem
 from problems.schema import ProblemDocument
-from problems.variants import draw_variant, fixed_variant, round_sigfigs, student_view
+from problems.student import student_view
+from problems.variants import draw_variant, fixed_variant, round_sigfigs
 from tests.problems.documents import spring
 
 

@@ -9,6 +9,7 @@ import pytest
 
 from problems.loader import parse_problem
 from problems.schema import GivenDecl, ProblemDocument
+from problems.student import student_view
 from problems.variants import (
     Variant,
     draw_value,
@@ -17,7 +18,6 @@ from problems.variants import (
     fixed_variant,
     format_quantity,
     round_sigfigs,
-    student_view,
 )
 from tests.problems.documents import spring
 

@@ -134,6 +134,11 @@
       }, 300);
     }
     input.addEventListener("input", askPreview);
+    // A choice part's radio buttons type the picked letter into the answer box.
+    var choices = form.closest(".part").querySelectorAll("input.choice");
+    for (var c = 0; c < choices.length; c++) {
+      choices[c].addEventListener("change", function () { input.value = this.value; askPreview(); });
+    }
 
     function refresh(lead) {
       return getHtml("/p/" + encodeURIComponent(problemId) + "/parts/" + encodeURIComponent(part) + "/work")

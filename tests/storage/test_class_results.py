@@ -3,11 +3,13 @@ per part, with attempts to the first correct answer and wrong answers grouped by
 
 from __future__ import annotations
 
-from app.db.class_results import class_results
-from app.db.database import Database
-from app.db.submissions import record_submission
+import pytest
+
+from app.storage import Stores
 from physics.verdict import Outcome, ReadAs, Reason, Verdict
-from tests.db.helpers import INVALID, PART, PROBLEM, StepClock, store_problem
+from tests.db.helpers import INVALID, PART, PROBLEM, StepClock
+from tests.storage.conftest import StoresFor
+from tests.storage.helpers import store_problem, submit
 
 OTHER_PART = "block_relative_acceleration"
 RIGHT = Verdict(Outcome.CORRECT, 1.0, Reason.EQUIVALENT, "Correct.", ReadAs("m*g", "m g"))
@@ -36,32 +38,22 @@ LOG = [
 ]
 
 
-def seed(db: Database) -> None:
-    clock = StepClock()
-    with db.session() as session:
-        version = store_problem(session)
-        for student, part, answer, verdict in LOG:
-            record_submission(
-                session,
-                problem_id=PROBLEM,
-                problem_version=version,
-                part_id=part,
-                student=student,
-                answer=answer,
-                verdict=verdict,
-                max_attempts=None,
-                clock=clock,
-            )
+@pytest.fixture
+def stores(stores_for: StoresFor) -> Stores:
+    """Stores holding LOG."""
+    stores = stores_for(StepClock())
+    version = store_problem(stores)
+    for student, part, answer, verdict in LOG:
+        submit(stores, version, verdict, student=student, part=part, answer=answer)
+    return stores
 
 
-def results(db: Database, parts: list[str]) -> dict:
-    with db.session(read_only=True) as session:
-        return {r.part_id: r for r in class_results(session, PROBLEM, parts)}
+def results(stores: Stores, parts: list[str]) -> dict:
+    return {r.part_id: r for r in stores.submissions.class_results(PROBLEM, parts)}
 
 
-def test_tried_correct_and_attempts_to_first_correct_count_students_only(db: Database):
-    seed(db)
-    part = results(db, [PART])[PART]
+def test_tried_correct_and_attempts_to_first_correct_count_students_only(stores: Stores) -> None:
+    part = results(stores, [PART])[PART]
     assert (part.tried, part.correct, part.graded) == (5, 3, 9)
     assert part.percent_correct == 60.0
     assert part.first_correct == {1: 1, 2: 1, 3: 1}
@@ -69,9 +61,8 @@ def test_tried_correct_and_attempts_to_first_correct_count_students_only(db: Dat
     assert part.previews == 2
 
 
-def test_wrong_answers_are_grouped_by_reason_by_known_mistake_and_by_reading(db: Database):
-    seed(db)
-    part = results(db, [PART])[PART]
+def test_wrong_answers_are_grouped_by_reason_by_known_mistake_and_by_reading(stores: Stores) -> None:
+    part = results(stores, [PART])[PART]
     assert [(c.key, c.submissions, c.students) for c in part.wrong_reasons] == [
         ("known_mistake", 3, 2),
         ("sign_error", 1, 1),
@@ -90,10 +81,8 @@ def test_wrong_answers_are_grouped_by_reason_by_known_mistake_and_by_reading(db:
     ]
 
 
-def test_parts_come_in_the_order_asked_and_an_untried_part_is_all_zero(db: Database):
-    seed(db)
-    with db.session(read_only=True) as session:
-        found = class_results(session, PROBLEM, [OTHER_PART, "normal_force", PART])
+def test_parts_come_in_the_order_asked_and_an_untried_part_is_all_zero(stores: Stores) -> None:
+    found = stores.submissions.class_results(PROBLEM, [OTHER_PART, "normal_force", PART])
     assert [r.part_id for r in found] == [OTHER_PART, "normal_force", PART]
     other, untried = found[0], found[1]
     assert (other.tried, other.correct, other.previews) == (1, 0, 1)
@@ -106,8 +95,6 @@ def test_parts_come_in_the_order_asked_and_an_untried_part_is_all_zero(db: Datab
     assert untried.first_correct == {} and not untried.wrong_answers
 
 
-def test_another_problems_submissions_do_not_count(db: Database):
-    seed(db)
-    with db.session(read_only=True) as session:
-        found = class_results(session, "yo-yo", [PART])
+def test_another_problems_submissions_do_not_count(stores: Stores) -> None:
+    found = stores.submissions.class_results("yo-yo", [PART])
     assert (found[0].tried, found[0].graded, found[0].previews) == (0, 0, 0)

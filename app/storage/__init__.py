@@ -1,0 +1,103 @@
+"""Storage behind small protocols, so the routes, the LTI code and the pages never open sessions.
+
+protocols.py   one Protocol per store (keys, problems, submissions, compiled problems, the LMS score
+               outbox, our LTI signing keys)
+sql.py         their SQLAlchemy implementation over the `app.db` repositories (SQLite, PostgreSQL)
+memory.py      in-memory fakes that keep the same contract (tests/storage runs it against all three)
+
+`Stores` is what an application holds: one of each, plus `ping` for readiness.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+from app.db.database import Database
+from app.db.types import utc_now
+from app.lti.grades import queue_grade
+from app.storage.memory import FilingHook as MemoryFilingHook
+from app.storage.memory import (
+    MemoryApiKeyStore,
+    MemoryCompiledCache,
+    MemoryProblemStore,
+    MemoryScoreOutbox,
+    MemorySubmissionStore,
+    MemoryToolKeys,
+    grade_queue,
+)
+from app.storage.protocols import (
+    ApiKeyStore,
+    CompiledCache,
+    Filed,
+    ProblemStore,
+    QueuedScore,
+    ScoreOutbox,
+    SubmissionStore,
+    ToolKeys,
+)
+from app.storage.sql import (
+    Clock,
+    SqlApiKeyStore,
+    SqlCompiledCache,
+    SqlProblemStore,
+    SqlScoreOutbox,
+    SqlSubmissionStore,
+    SqlToolKeys,
+)
+
+__all__ = [
+    "ApiKeyStore",
+    "CompiledCache",
+    "Filed",
+    "ProblemStore",
+    "QueuedScore",
+    "ScoreOutbox",
+    "Stores",
+    "SubmissionStore",
+    "ToolKeys",
+    "memory_stores",
+    "sql_stores",
+]
+
+
+@dataclass(frozen=True)
+class Stores:
+    keys: ApiKeyStore
+    problems: ProblemStore
+    submissions: SubmissionStore
+    compiled: CompiledCache
+    outbox: ScoreOutbox
+    tool_keys: ToolKeys
+    ping: Callable[[], bool] = field(default=lambda: True)
+
+
+def sql_stores(database: Database, *, clock: Clock = utc_now) -> Stores:
+    """The stores on `database`. A graded submission of a student launched from an LMS queues the
+    new score in the submission's own transaction: never lost, never sent for a rolled-back one."""
+    return Stores(
+        keys=SqlApiKeyStore(database, clock),
+        problems=SqlProblemStore(database, clock),
+        submissions=SqlSubmissionStore(database, [queue_grade], clock),
+        compiled=SqlCompiledCache(database),
+        outbox=SqlScoreOutbox(database),
+        tool_keys=SqlToolKeys(database, clock),
+        ping=database.ping,
+    )
+
+
+def memory_stores(*, clock: Clock = utc_now) -> Stores:
+    """Fresh fakes; a graded submission of a launched student queues its score, as with SQL."""
+    problems = MemoryProblemStore(clock)
+    outbox = MemoryScoreOutbox()
+    hooks: list[MemoryFilingHook] = []
+    submissions = MemorySubmissionStore(problems, hooks, clock=clock)
+    hooks.append(grade_queue(outbox, problems, submissions.all))
+    return Stores(
+        keys=MemoryApiKeyStore(clock),
+        problems=problems,
+        submissions=submissions,
+        compiled=MemoryCompiledCache(),
+        outbox=outbox,
+        tool_keys=MemoryToolKeys(),
+    )

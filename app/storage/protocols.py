@@ -1,0 +1,204 @@
+"""What the service asks of storage, one small protocol per store.
+
+Each has a SQL implementation (`sql.py`: SQLite or PostgreSQL, one transaction per call) and an
+in-memory fake (`memory.py`) that the contract tests (`tests/storage/`) hold to the same behaviour.
+Every call is atomic on its own: callers never open sessions or hold a transaction across calls.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Collection, Mapping, Sequence
+from dataclasses import dataclass
+from datetime import datetime
+from typing import Any, Protocol
+
+from app.db.class_results import PartResults
+from app.db.records import ApiKeyRecord, CreatedKey, Page, ProblemRecord, Role, SubmissionRecord
+from app.lti.outbox import ClaimedScore, DeliveryProblem, Outcome
+from app.lti.platforms import PlatformRecord
+from physics.verdict import Verdict
+
+DEFAULT_PAGE_LIMIT = 100
+MAX_PAGE_LIMIT = 1000
+
+
+class ApiKeyStore(Protocol):
+    """API keys, kept only as hashes (`app.db.keys` holds the format)."""
+
+    def create(self, role: Role, *, name: str | None = None, student: str | None = None) -> CreatedKey:
+        """A new key; a student key files under `student` (a fresh id when not given)."""
+        ...
+
+    def authenticate(self, plaintext: str) -> ApiKeyRecord | None:
+        """The active key `plaintext` names, or None (unknown, malformed or revoked)."""
+        ...
+
+    def get(self, key_id: int) -> ApiKeyRecord:
+        """Raises KeyNotFound."""
+        ...
+
+    def revoke(self, key_id: int) -> ApiKeyRecord:
+        """Revoke for good; again keeps the first time. Raises KeyNotFound."""
+        ...
+
+    def list(self, *, include_revoked: bool = True) -> list[ApiKeyRecord]:
+        """Oldest first."""
+        ...
+
+
+class ProblemStore(Protocol):
+    """Problems and their versions: every version kept forever, ids never reused."""
+
+    def get(
+        self, problem_id: str, version: int | None = None, *, include_retired: bool = False
+    ) -> ProblemRecord:
+        """The latest version or the one asked for; ProblemNotFound / ProblemVersionNotFound."""
+        ...
+
+    def list(self, *, include_retired: bool = False, owner_key_id: int | None = None) -> list[ProblemRecord]:
+        """The latest version of each problem, by id."""
+        ...
+
+    def save_builtin(self, problem_id: str, document: Mapping[str, Any]) -> ProblemRecord:
+        """Idempotent: an unchanged document keeps its version. ProblemExists if an instructor owns the id."""
+        ...
+
+    def create(self, problem_id: str, document: Mapping[str, Any], *, owner_key_id: int) -> ProblemRecord:
+        """Version 1 of a new problem; ProblemExists if the id was ever used."""
+        ...
+
+    def add_version(self, problem_id: str, document: Mapping[str, Any]) -> ProblemRecord:
+        """The next version (the latest document again changes nothing); ProblemNotFound if retired."""
+        ...
+
+    def retire(self, problem_id: str) -> ProblemRecord:
+        """Hide from listings and new work; ProblemNotFound if unknown or already retired."""
+        ...
+
+
+@dataclass(frozen=True)
+class Filed:
+    """A stored submission and the graded attempts its student has now used on the part."""
+
+    record: SubmissionRecord
+    attempts_used: int
+
+
+class SubmissionStore(Protocol):
+    """The append-only submissions log and its attempt counters."""
+
+    def file(
+        self,
+        *,
+        problem_id: str,
+        problem_version: int,
+        part_id: str,
+        student: str,
+        answer: str,
+        verdict: Verdict,
+        max_attempts: int | None,
+    ) -> Filed:
+        """Store one submission, atomically with its attempt (a graded verdict uses one; past
+        `max_attempts` AttemptsExhausted and nothing stored) and with the LMS scores it queues. Once
+        this returns, the submission is durable."""
+        ...
+
+    def attempts_used(self, problem_id: str, part_id: str, student: str) -> int: ...
+
+    def page(
+        self,
+        *,
+        problem_id: str | None = None,
+        student: str | None = None,
+        limit: int = DEFAULT_PAGE_LIMIT,
+        cursor: str | None = None,
+    ) -> Page[SubmissionRecord]:
+        """Oldest first by (created_at, id), keyset-paged: InvalidLimit, InvalidCursor."""
+        ...
+
+    def class_results(self, problem_id: str, part_ids: Sequence[str]) -> list[PartResults]:
+        """How the class did on each of `part_ids` (instructors' previews counted apart)."""
+        ...
+
+
+class CompiledCache(Protocol):
+    """Compiled problems across restarts: opaque sealed bytes by key (the catalog seals them)."""
+
+    def get(self, key: str) -> tuple[bytes, str] | None: ...
+
+    def get_many(self, keys: Collection[str]) -> dict[str, tuple[bytes, str]]:
+        """(payload, mac) of each of `keys` that is stored, at once."""
+        ...
+
+    def put(self, key: str, payload: bytes, mac: str) -> None:
+        """Store or replace."""
+        ...
+
+
+@dataclass(frozen=True)
+class QueuedScore:
+    """One row of the grade passback outbox, as operators (and tests) see it."""
+
+    id: int
+    student: str
+    problem_id: str
+    score_given: float
+    score_maximum: float
+    timestamp: datetime
+    status: str
+    attempts: int
+    claimed_by: str | None
+    next_attempt_at: datetime
+
+
+class ScoreOutbox(Protocol):
+    """LMS grade passback: grade targets recorded at launch, scores queued with each graded
+    submission (inside `SubmissionStore.file`), claimed by delivery workers and delivered once."""
+
+    def add_target(
+        self, platform: PlatformRecord, *, student: str, problem_id: str, lineitem_url: str, sub: str
+    ) -> None:
+        """Where a student's score on a problem goes (a line item); recording it again changes nothing."""
+        ...
+
+    def enqueue(
+        self, problem_id: str, student: str, score_given: float, score_maximum: float, timestamp: datetime
+    ) -> int:
+        """Queue a score for every target of (student, problem), superseding any not yet sent;
+        returns how many. Timestamps of a target only grow (by a millisecond when equal)."""
+        ...
+
+    def claim(self, claim: str, now: datetime, limit: int) -> list[ClaimedScore]:
+        """Up to `limit` due scores, oldest timestamp first, for this worker alone until its lease
+        ends. A due score with a newer one for its target is superseded instead; one whose target has
+        an older score in flight waits."""
+        ...
+
+    def finish(self, score: ClaimedScore, outcome: Outcome, now: datetime) -> None:
+        """File the outcome, unless the claim was lost; a platform that answered ends the backoff of
+        every score waiting for it."""
+        ...
+
+    def delivery_problems(self, *, limit: int = 200) -> list[DeliveryProblem]:
+        """Scores failed, still being retried, or superseded after failed tries, newest first."""
+        ...
+
+    def scores(self) -> list[QueuedScore]:
+        """Every queued score, oldest first."""
+        ...
+
+
+class ToolKeys(Protocol):
+    """Our LTI signing keys (RSA), made on first use and rotated with overlap."""
+
+    def sign(self, claims: dict[str, Any]) -> str:
+        """A compact RS256 JWT over `claims` with the current key."""
+        ...
+
+    def public_jwks(self) -> dict[str, list[dict[str, Any]]]:
+        """The public halves of every live key (never empty)."""
+        ...
+
+    def rotate(self) -> str:
+        """A new signing key; the previous one stays published, older ones are retired. Its kid."""
+        ...

@@ -1,0 +1,168 @@
+"""What every answer kind provides, and the contexts it works in.
+
+An answer kind is one module (`problems/kinds/<kind>.py`) that, for one `kind:` of part, defines
+  schema    the part's pydantic model (`kind: Literal[...]`), validated with the rest of the document
+  meaning   the faults of a well-shaped part, each with its path, none stopping the rest
+  compile   the part as the grader needs it: a `CompiledPart`, whose `job` crosses into a worker
+  student   what a student sees of it (never a reference)
+  selftest  the cases the bank self-test grades it by
+and is registered by its `kind` in `problems.kinds.KINDS`, which `problems.kinds.kind_of` matches.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterator, Mapping, Sequence
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any, Protocol, TypeVar
+
+import sympy
+
+from physics.checking import CheckJob, Question
+from physics.errors import AnswerError, SpecError
+from physics.symbolic import SymbolSpec
+from physics.verdict import Verdict
+from problems.errors import ErrorItem, format_path
+
+if TYPE_CHECKING:
+    from problems.modelinfo import Derived
+    from problems.schema import ProblemDocument
+    from problems.variants import Variant
+
+T = TypeVar("T")
+P_contra = TypeVar("P_contra", contravariant=True)
+C = TypeVar("C", bound="CompiledPart")
+Path = tuple[str | int, ...]
+
+
+class Faults:
+    """Runs checks, turning each SpecError into one (path, message) and carrying on."""
+
+    def __init__(self) -> None:
+        self.errors: list[ErrorItem] = []
+
+    def add(self, path: Path, message: str) -> None:
+        item = (format_path(path), message)
+        if item not in self.errors:
+            self.errors.append(item)
+
+    def attempt(self, check: Callable[[], T], path: Path = ()) -> T | None:
+        try:
+            return check()
+        except SpecError as error:
+            self.add(error.path or path, error.message)
+        except AnswerError as error:
+            self.add(path, error.message)
+        return None
+
+
+@dataclass(frozen=True)
+class MeaningContext:
+    """What a part's meaning check may consult: the document, its symbols, the model's quantities."""
+
+    doc: ProblemDocument
+    table: Mapping[str, sympy.Symbol]  # every readable declared symbol
+    quantities: frozenset[str] | None  # the model's quantity names; None: no model
+    expression_parts: frozenset[str]  # ids of parts answered by an expression (what `of` may name)
+    out: Faults
+
+
+@dataclass(frozen=True)
+class CompileContext:
+    """What compiling a part may use; `expressions` holds the expression parts compiled before it."""
+
+    doc: ProblemDocument
+    table: Mapping[str, sympy.Symbol]
+    specs: Mapping[str, SymbolSpec]
+    constraints: tuple[sympy.Basic, ...]
+    derived: Derived | None
+    expressions: Mapping[str, tuple[sympy.Expr, bool]]  # part id -> (its reference, derived by the model)
+
+
+@dataclass(frozen=True)
+class Reference:
+    """A part's reference answer as the instructor's solution shows it."""
+
+    text: str
+    latex: str
+    units: str | None = None
+
+
+@dataclass(frozen=True)
+class CheckResult:
+    problem: str
+    part: str | None
+    check: str  # e.g. "rewrite factor", "mistake 1", "variant 7 in km/h", "methods agree"
+    ok: bool
+    detail: str = ""
+
+
+def explain(text: str, verdict: Verdict) -> str:
+    """A self-test failure's detail: what was typed and how it was judged."""
+    return f"{text!r} was {verdict.outcome.value} ({verdict.reason.value}): {verdict.feedback}"
+
+
+class CompiledPart(Protocol):
+    """A part ready to grade: no YAML left, picklable (compiled problems are persisted)."""
+
+    @property
+    def id(self) -> str: ...
+
+    @property
+    def derived(self) -> bool:
+        """Its reference was derived (or checked) by the engine, not only typed by the author."""
+        ...
+
+    @property
+    def expression(self) -> sympy.Expr | None:
+        """Its reference as an expression (a numeric part: what it evaluates); None: not an expression."""
+        ...
+
+    def prepare(self) -> None:
+        """Do now the work grading would do lazily (e.g. to persist it)."""
+        ...
+
+    def solution(self) -> Reference:
+        """The reference answer as the instructor's solution shows it."""
+        ...
+
+    def question(self, variant: Variant | None = None) -> Question:
+        """What grades an answer; a part whose reference depends on the student needs their variant."""
+        ...
+
+    def job(self, answer: str, variant: Variant | None = None) -> CheckJob:
+        """A picklable check job for a worker process."""
+        ...
+
+
+class AnswerKind(Protocol[P_contra, C]):
+    """One kind of part, from its schema to its self-test (module docstring)."""
+
+    @property
+    def name(self) -> str:
+        """The `kind:` value that selects it."""
+        ...
+
+    @property
+    def expression_answer(self) -> bool:
+        """Answered by an expression that a numeric part's `of` may name."""
+        ...
+
+    def check_meaning(self, part: P_contra, path: Path, context: MeaningContext) -> None:
+        """Report every fault of a well-shaped part into `context.out`."""
+        ...
+
+    def compile(self, part: P_contra, path: Path, context: CompileContext) -> C:
+        """The compiled part; SpecError (with its path) on a fault."""
+        ...
+
+    def student_view(self, part: P_contra, doc: ProblemDocument) -> dict[str, Any]:
+        """The part's fields in a student's view beyond id, kind, prompt and attempts; never a reference."""
+        ...
+
+    def selftest(self, problem: str, part: C, students: Sequence[Variant]) -> list[CheckResult]:
+        """Grade the part's own reference (accepted) and its known wrong answers (rejected)."""
+        ...
+
+    def texts(self, part: P_contra, path: str) -> Iterator[tuple[str, str]]:
+        """(path, text) of what people read in the part beyond its prompt (feedback, descriptions)."""
+        ...

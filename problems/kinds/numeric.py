@@ -1,0 +1,262 @@
+"""Numeric parts: a number with units, evaluated per student from an expression (a symbolic part or a
+model quantity) at their given values, within a tolerance."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator, Mapping, Sequence
+from dataclasses import dataclass, field
+from decimal import ROUND_HALF_UP, Decimal
+from functools import partial
+from typing import TYPE_CHECKING, Annotated, Any, Literal
+
+import sympy
+from pydantic import Field
+
+from physics.checking import NumericJob
+from physics.dimensions import DIMENSIONLESS
+from physics.errors import AnswerError, SpecError
+from physics.numeric import DEFAULT_TOLERANCE, NumericSpec, Tolerance
+from physics.symbolic import SymbolSpec, UnknownDimension, expression_dimension
+from physics.symbolic.dimensional import DimensionMismatch
+from physics.units import parse_units, unit_dimension
+from physics.verdict import Outcome
+from problems.fields import PART_ID, Attempts, Name, Strict, Text, ToleranceDecl
+from problems.kinds.base import CheckResult, CompileContext, MeaningContext, Path, Reference, explain
+from problems.symbols import unit_dimension_at
+from problems.variants import evaluate_reference, format_number, round_sigfigs, si_values, unit_scale
+
+if TYPE_CHECKING:
+    from problems.schema import ProblemDocument
+    from problems.variants import Variant
+
+OFF_BY = Decimal("1.10")  # a value this far off must be rejected
+
+# Other spellings of common units whose conversion factors are not powers of ten as well as those that are.
+_UNIT_ALTERNATIVES: dict[str, tuple[str, ...]] = {
+    "m/s": ("km/h", "cm/s"),
+    "m/s^2": ("cm/s^2", "mm/s^2"),
+    "s": ("ms", "min"),
+    "rad/s": ("rad/ms", "rev/min"),
+    "N": ("kN", "mN"),
+    "J": ("kJ", "mJ"),
+    "kg": ("g",),
+    "m": ("cm", "mm"),
+    "Hz": ("kHz",),
+}
+
+
+class NumericPart(Strict):
+    id: Annotated[str, Field(pattern=PART_ID, max_length=64)]
+    kind: Literal["numeric"]
+    prompt: Text
+    of: Name
+    units: Annotated[str, Field(min_length=1, max_length=100)]
+    tolerance: ToleranceDecl = ToleranceDecl(rel=DEFAULT_TOLERANCE.rel)
+    units_required: bool = True
+    arithmetic: bool = True  # the number may be arithmetic (`229/50 m/s^2`); False: a plain decimal
+    units_system: Literal["SI"] | None = None  # "SI": refuse answers in ft, lb, atm, …
+    max_attempts: Attempts | None = None
+
+    @property
+    def dimensionless(self) -> bool:
+        """`units: "1"` asks for a pure number."""
+        return self.units == "1"
+
+
+@dataclass(frozen=True)
+class CompiledNumericPart:
+    """A numeric part: its expression, evaluated per student at their given values."""
+
+    id: str
+    of: str
+    expr: sympy.Expr
+    units: str
+    units_required: bool
+    tolerance: Tolerance
+    document: ProblemDocument = field(repr=False)
+    table: Mapping[str, sympy.Symbol] = field(repr=False)
+    derived: bool = False  # its expression is a model quantity derived by the engine
+    arithmetic: bool = True
+    units_system: str | None = None
+
+    @property
+    def expression(self) -> sympy.Expr:
+        return self.expr
+
+    def prepare(self) -> None:
+        return None  # nothing is computed lazily
+
+    def solution(self) -> Reference:
+        """The expression the value is evaluated from."""
+        return Reference(sympy.sstr(self.expr), sympy.latex(self.expr), self.units)
+
+    def reference(self, variant: Variant) -> Decimal:
+        """The expected value for this student, in `units`, to 12 significant figures."""
+        values = si_values(self.document, variant, self.table)
+        return evaluate_reference(self.expr, values, self.units, where=self.id)
+
+    def spec(self, variant: Variant) -> NumericSpec:
+        dimensionless = self.units.strip() == "1"
+        return NumericSpec(
+            expected=self.reference(variant),
+            units=None if dimensionless else self.units,
+            units_required=self.units_required and not dimensionless,
+            tolerance=self.tolerance,
+            arithmetic=self.arithmetic,
+            units_system=self.units_system,
+        )
+
+    def question(self, variant: Variant | None = None) -> NumericSpec:
+        if variant is None:
+            raise ValueError(f"part {self.id!r} is numeric: its question depends on the student's variant")
+        return self.spec(variant)
+
+    def job(self, answer: str, variant: Variant | None = None) -> NumericJob:
+        if variant is None:
+            raise ValueError(f"part {self.id!r} is numeric: its job depends on the student's variant")
+        return NumericJob(answer, self.spec(variant))
+
+
+class NumericKind:
+    name = "numeric"
+    expression_answer = False
+
+    def check_meaning(self, part: NumericPart, path: Path, context: MeaningContext) -> None:
+        out, quantities = context.out, context.quantities
+        if part.of not in context.expression_parts and (quantities is None or part.of not in quantities):
+            out.add((*path, "of"), f"{part.of!r} is neither a symbolic part nor a model quantity")
+        if not part.dimensionless:
+            out.attempt(partial(unit_dimension_at, part.units, (*path, "units")))
+            if part.units_system == "SI":
+                out.attempt(partial(si_units_at, part.units, (*path, "units")))
+
+    def compile(self, part: NumericPart, path: Path, context: CompileContext) -> CompiledNumericPart:
+        derived, doc = context.derived, context.doc
+        if part.of in context.expressions:
+            expr, from_model = context.expressions[part.of]
+        elif derived is not None and part.of in derived.quantities:
+            expr, from_model = derived.quantities[part.of], True
+        else:
+            raise SpecError(f"{part.of!r} is neither a symbolic part nor a model quantity", (*path, "of"))
+        missing = sorted(s.name for s in expr.free_symbols if s.name not in doc.given)
+        if missing:
+            raise SpecError(f"needs given values for {', '.join(missing)}", (*path, "of"))
+        _require_dimension(expr, part, context.specs, context.table, path)
+        tolerance = Tolerance(rel=part.tolerance.rel, abs=part.tolerance.abs, sigfigs=part.tolerance.sigfigs)
+        return CompiledNumericPart(
+            part.id,
+            part.of,
+            expr,
+            part.units,
+            part.units_required,
+            tolerance,
+            doc,
+            context.table,
+            from_model,
+            arithmetic=part.arithmetic,
+            units_system=part.units_system,
+        )
+
+    def student_view(self, part: NumericPart, doc: ProblemDocument) -> dict[str, Any]:
+        tolerance = {
+            key: int(value) if key == "sigfigs" else float(value)
+            for key, value in part.tolerance.model_dump(exclude_none=True).items()
+        }
+        return {"units": part.units, "symbols": [], "tolerance": tolerance}
+
+    def selftest(
+        self, problem: str, part: CompiledNumericPart, students: Sequence[Variant]
+    ) -> list[CheckResult]:
+        """Across students' variants, the reference value (also in other units) accepted, 10 % off rejected."""
+        results: list[CheckResult] = []
+        sigfigs = part.tolerance.sigfigs
+        dimensionless = part.units.strip() == "1"
+        for index, variant in enumerate(students):
+            spec = part.spec(variant)
+            reference = spec.expected
+            attempts: list[tuple[str, str, bool]] = []
+            suffix = "" if dimensionless else f" {part.units}"
+            attempts.append((f"variant {index}", answer_text(reference, sigfigs) + suffix, True))
+            if reference != 0:
+                attempts.append(
+                    (f"variant {index} 10% off", answer_text(reference * OFF_BY, sigfigs) + suffix, False)
+                )
+            for alternative in unit_alternatives(part.units):
+                factor = unit_scale(part.units) / unit_scale(alternative)
+                if sigfigs is not None and not _power_of_ten(factor):
+                    continue  # rounding to n figures in another unit is a different number
+                converted = Decimal(
+                    str(sympy.Float(sympy.Rational(*reference.as_integer_ratio()) * factor, 30))
+                )
+                attempts.append(
+                    (
+                        f"variant {index} in {alternative}",
+                        f"{answer_text(converted, sigfigs)} {alternative}",
+                        True,
+                    )
+                )
+            for label, text, should_pass in attempts:
+                verdict = spec.grade(text)
+                ok = (
+                    verdict.outcome is Outcome.CORRECT
+                ) == should_pass and verdict.outcome is not Outcome.INVALID
+                detail = "" if ok else f"expected {reference}: " + explain(text, verdict)
+                results.append(CheckResult(problem, part.id, label, ok, detail))
+        return results
+
+    def texts(self, part: NumericPart, path: str) -> Iterator[tuple[str, str]]:
+        return iter(())
+
+
+NUMERIC = NumericKind()
+
+
+def si_units_at(text: str, path: Path) -> None:
+    """A part that asks for SI answers must state its own units in SI."""
+    try:
+        units = parse_units(text)
+    except AnswerError:
+        return  # unit_dimension_at reports it
+    foreign = [atom.symbol for atom, _ in units.factors if not atom.si]
+    if foreign:
+        raise SpecError(f"{foreign[0]} is not an SI unit, but the part asks for SI answers", path)
+
+
+def _require_dimension(
+    expr: sympy.Expr,
+    part: NumericPart,
+    specs: Mapping[str, SymbolSpec],
+    table: Mapping[str, sympy.Symbol],
+    path: Path,
+) -> None:
+    dims = {table[n]: s.dimension for n, s in specs.items() if s.dimension is not None}
+    try:
+        have = expression_dimension(expr, dims)
+    except UnknownDimension:
+        return  # a symbol without a declared dimension: nothing to compare against
+    except DimensionMismatch as error:
+        raise SpecError(
+            f"the expression for {part.of} is dimensionally inconsistent: {error}", (*path, "of")
+        ) from None
+    want = DIMENSIONLESS if part.dimensionless else unit_dimension(part.units)
+    if have != want:
+        raise SpecError(f"{part.units} does not match the dimension of {part.of}", (*path, "units"))
+
+
+def answer_text(value: Decimal, sigfigs: int | None) -> str:
+    """A student's way of writing `value`: to the asked sigfigs, else 6 significant figures."""
+    if sigfigs is not None:
+        return format_number(round_sigfigs(value, sigfigs, ROUND_HALF_UP)).replace(" × 10^", "e")
+    return format_number(round_sigfigs(value, 6, ROUND_HALF_UP)).replace(" × 10^", "e")
+
+
+def unit_alternatives(units: str) -> list[str]:
+    """Other units of the same dimension a student might answer in (km/h for m/s, cm/s^2, ...)."""
+    return list(_UNIT_ALTERNATIVES.get(units.strip(), ()))
+
+
+def _power_of_ten(factor: sympy.Expr) -> bool:
+    if not factor.is_Rational or factor <= 0:
+        return False
+    p, q = int(factor.p), int(factor.q)
+    return (p == 1 or str(p).rstrip("0") == "1") and (q == 1 or str(q).rstrip("0") == "1")
