@@ -32,6 +32,14 @@ def hand(problem_id: str) -> CompiledProblem:
     return compile_problem(bank()[problem_id], use_model=False)
 
 
+def typed_or_derived(problem_id: str) -> CompiledProblem:
+    """The hand-typed answers; the engine's (cached per process) where a part has only a derived one."""
+    try:
+        return hand(problem_id)
+    except ProblemInvalid:
+        return compile_problem(bank()[problem_id])
+
+
 # The seed document's numbers (skier) and textbook values for the others.
 REFERENCES = [
     pytest.param(
@@ -132,7 +140,7 @@ def test_numeric_units_of_the_wrong_dimension_are_refused() -> None:
 
 @pytest.mark.parametrize("problem_id", sorted(bank()))
 def test_student_view_never_contains_a_reference(problem_id: str) -> None:
-    doc, compiled = bank()[problem_id], hand(problem_id)
+    doc, compiled = bank()[problem_id], typed_or_derived(problem_id)
     variant = draw_variant(doc, 1, "alice", "s3cret")
     shown = json.dumps(student_view(doc, variant), ensure_ascii=False)
     for part_id, part in compiled.parts.items():
