@@ -24,8 +24,12 @@ def grading_pool() -> Iterator[GradingPool]:
 
 @pytest.fixture
 def settings(db: Database) -> Settings:
-    """Settings on a fresh database; `db` runs every API test on SQLite and on PostgreSQL."""
-    return Settings(database_url=db.url, secret="test-secret-0123456789")
+    """Settings on a fresh database; `db` runs every API test on SQLite and on PostgreSQL.
+
+    No warm-up: each app would start deriving the whole bank in this process, stealing the tests' time;
+    a problem a test uses is compiled when first asked for (and shared by every app of the process).
+    """
+    return Settings(database_url=db.url, secret="test-secret-0123456789", warm_up=False)
 
 
 @pytest.fixture

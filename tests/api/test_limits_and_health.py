@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import shutil
 import threading
 import time
 
@@ -10,6 +11,7 @@ from fastapi.testclient import TestClient
 
 from app.main import create_app
 from app.settings import Settings
+from problems.loader import BANK_DIR
 from tests.api.conftest import _headers
 
 BODY = {"kind": "numeric", "answer": "4.58 m/s^2", "expected": 4.58, "units": "m/s^2"}
@@ -49,12 +51,19 @@ def test_a_students_budget_is_shared_by_all_its_keys(limited):
     assert statuses == [200, 200, 429]
 
 
-def test_ready_turns_200_once_the_problems_are_compiled(client):
-    deadline = time.monotonic() + 60
-    while (response := client.get("/ready")).status_code != 200 and time.monotonic() < deadline:
-        assert response.json()["error"]["code"] == "not_ready"
-        time.sleep(0.2)
-    assert response.json() == {"status": "ready"}
+def test_ready_turns_200_once_the_problems_are_compiled(settings, grading_pool, tmp_path):
+    bank = tmp_path / "bank"  # two problems: the whole bank would take minutes to derive here
+    for problem in ("atwood", "mass-spring"):
+        shutil.copytree(BANK_DIR / problem, bank / problem)
+    warming = settings.model_copy(update={"warm_up": True, "bank_dir": bank})
+    with TestClient(create_app(warming, pool=grading_pool)) as client:
+        deadline = time.monotonic() + 120
+        while (response := client.get("/ready")).status_code != 200 and time.monotonic() < deadline:
+            assert response.json()["error"]["code"] == "not_ready"
+            time.sleep(0.2)
+        assert response.json() == {"status": "ready"}
+        catalog = client.app.state.services.catalog  # type: ignore[attr-defined]
+        assert {record.id for record in catalog.list()} == {"atwood", "mass-spring"}
 
 
 def test_unknown_route_answers_in_the_error_shape(client):

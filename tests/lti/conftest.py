@@ -90,7 +90,8 @@ def lms() -> FakeLms:
 
 @pytest.fixture
 def settings(database: Database) -> Settings:
-    return Settings(database_url=database.url, base_url=TOOL, secret="test-secret-123")
+    # no warm-up: deriving the whole bank in this process would slow every test; problems compile on use
+    return Settings(database_url=database.url, base_url=TOOL, secret="test-secret-123", warm_up=False)
 
 
 STUDENT_KEY = "student-key-for-tests"
