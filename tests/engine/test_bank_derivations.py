@@ -15,15 +15,17 @@ def _known() -> list[tuple[str, str, sympy.Expr, frozenset[str]]]:
     m, M, th, g = (s("moving-wedge", n) for n in ("m", "M", "theta", "g"))
     three = frozenset({"lagrange", "newton", "conservation"})
     two = frozenset({"lagrange", "newton"})
+    # the seed document's wedge: also in the wedge's frame (fictitious force) and by d'Alembert's principle
+    five = three | {"frames", "dalembert"}
     rows = [
-        ("moving-wedge", "wedge_acceleration", -m * g * sin(th) * cos(th) / (M + m * sin(th) ** 2), three),
+        ("moving-wedge", "wedge_acceleration", -m * g * sin(th) * cos(th) / (M + m * sin(th) ** 2), five),
         (
             "moving-wedge",
             "block_relative_acceleration",
             (M + m) * g * sin(th) / (M + m * sin(th) ** 2),
-            three,
+            five,
         ),
-        ("moving-wedge", "normal_force", M * m * g * cos(th) / (M + m * sin(th) ** 2), two),
+        ("moving-wedge", "normal_force", M * m * g * cos(th) / (M + m * sin(th) ** 2), two | {"frames"}),
     ]
     m, r, k, g = (s("yo-yo", n) for n in ("m", "r", "k", "g"))
     rows += [
@@ -102,7 +104,7 @@ def test_each_quantity_is_agreed_by_the_expected_methods(
     problem: str, quantity: str, expected: sympy.Expr, methods: frozenset[str]
 ) -> None:
     derivation = bank_derivation(problem)
-    assert set(derivation.agreement[quantity]) == methods
+    assert methods <= set(derivation.agreement[quantity])  # a method that joins later may agree too
     assert len(derivation.agreement[quantity]) >= 2
     for report in derivation.methods:
         if report.name in methods:

@@ -20,7 +20,7 @@ def test_each_method_writes_its_steps_in_latex(problem: str) -> None:
             assert report.steps, report.name
             assert all(step.title and step.latex for step in report.steps)
     names = [r.name for r in derivation.methods]
-    assert names == ["lagrange", "newton", "conservation"]
+    assert names == ["lagrange", "newton", "conservation", "dalembert"]
 
 
 def test_a_method_that_cannot_give_a_quantity_says_why() -> None:
