@@ -92,14 +92,16 @@ def test_upload_with_an_error_fix_it_preview_and_save(
     source.fill(broken)
     page.get_by_role("button", name="Preview").click()
     summary = page.locator("#error-summary")
-    expect(summary.get_by_role("heading")).to_have_text("1 error: nothing was saved")
+    # the fault, and the self-test that could not run because of it (every stage reports at once)
+    expect(summary.get_by_role("heading")).to_have_text("2 errors: nothing was saved")
     expect(summary).to_contain_text("parts[2].tolerance.rel")
+    expect(summary).to_contain_text("not self-tested")
     expect(summary).to_contain_text("line ")
     expect(summary).to_be_focused()
     expect(source).to_have_value(broken)  # the text stays, beside its errors
     check_page(page, f"instructor-upload-error-{device}")
     # "line N" takes the keyboard to that line of the text, selected.
-    summary.get_by_role("link", name=re.compile(r"^line \d+$")).click()
+    summary.get_by_role("link", name=re.compile(r"^line \d+$")).first.click()
     expect(source).to_be_focused()
     selected = page.evaluate(
         "() => { const b = document.getElementById('source'); "
