@@ -20,10 +20,11 @@ lint: $(BIN)/physcheck
 	$(BIN)/ruff format --check app physics problems
 	$(BIN)/mypy
 
-# The bank's per-problem self-test is `physcheck bank verify` (20 variants); pytest's copy of it is left out here.
+# The bank's per-problem self-test is `physcheck bank verify` (20 variants); pytest's copy of it is left out
+# here. --durations: the suite is over its 15-minute budget, so every run names the slowest tests.
 test: lint
 	$(BIN)/physcheck bank verify
-	$(BIN)/pytest -q -m "not bank_selftest"
+	$(BIN)/pytest -q -m "not bank_selftest" --durations=25
 
 # Re-pin both locks from pyproject.toml (needs the network to PyPI).
 lock:
