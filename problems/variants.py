@@ -19,6 +19,7 @@ from typing import TYPE_CHECKING
 import sympy
 
 from physics.errors import SpecError
+from physics.numeric.rounding import round_sigfigs
 from physics.units import parse_units
 from problems.fields import DEFAULT_SIGFIGS, GivenDecl
 
@@ -82,6 +83,7 @@ def draw_value(given: GivenDecl, u: Decimal) -> Decimal:
             return low + given.step * index
         raw = low + (high - low) * u
         sigfigs = given.sigfigs or DEFAULT_SIGFIGS
+        # Half-even, not the grading rule: changing it would change every student's drawn values.
         value = round_sigfigs(raw, sigfigs, ROUND_HALF_EVEN)
         # Rounding may step outside the range; round towards it instead.
         if value < low:
@@ -89,20 +91,6 @@ def draw_value(given: GivenDecl, u: Decimal) -> Decimal:
         elif value > high:
             value = round_sigfigs(raw, sigfigs, ROUND_FLOOR)
         return value
-
-
-def round_sigfigs(value: Decimal, sigfigs: int, rounding: str = ROUND_HALF_EVEN) -> Decimal:
-    """`value` to `sigfigs` significant figures, keeping trailing zeros (2.50 stays 2.50)."""
-    if value == 0:
-        return Decimal(0)
-    exponent = value.adjusted() - sigfigs + 1
-    with localcontext() as ctx:
-        ctx.prec = max(sigfigs + 5, 40)
-        rounded = value.quantize(Decimal(1).scaleb(exponent), rounding=rounding)
-        # 9.96 to 2 figures is 10, which quantize writes as 10.0: re-round at the new magnitude.
-        if rounded.adjusted() != value.adjusted():
-            rounded = rounded.quantize(Decimal(1).scaleb(rounded.adjusted() - sigfigs + 1), rounding=rounding)
-    return rounded
 
 
 def valid_range_errors(given: GivenDecl) -> list[str]:

@@ -16,8 +16,9 @@ import sympy
 
 from physics.choice import label
 from physics.errors import SpecError
+from physics.numeric import round_sigfigs
 from problems.compiled import CompiledChoicePart, CompiledNumericPart, CompiledProblem, CompiledSymbolicPart
-from problems.variants import Variant, format_number, format_quantity, round_sigfigs
+from problems.variants import Variant, format_number, format_quantity
 
 SHOWN_FIGURES = 4
 

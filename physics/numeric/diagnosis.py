@@ -10,7 +10,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from fractions import Fraction
 
-from physics.numeric.tolerance import floor_log10
+from physics.numeric.rounding import floor_log10
 from physics.verdict import Judgement, Reason
 
 # π to far more places than any tolerance can see; used only to recognise 2π and degree slips.

@@ -7,7 +7,8 @@ from decimal import Decimal
 from fractions import Fraction
 
 from physics.errors import AnswerError, SpecError
-from physics.numeric.tolerance import DEFAULT_TOLERANCE, Tolerance, as_decimal
+from physics.numeric.decimals import as_decimal
+from physics.numeric.tolerance import DEFAULT_TOLERANCE, Tolerance
 from physics.units import ParsedUnits, parse_units
 from physics.verdict import Preview, Verdict
 

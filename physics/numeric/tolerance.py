@@ -1,6 +1,7 @@
 """Tolerances for numeric answers, checked in exact arithmetic; every key given must pass.
 
-Each kind is a small pure function chosen by `ToleranceKind`; bounds are inclusive.
+Each kind is a small pure function chosen by `ToleranceKind`; bounds are inclusive. `sigfigs` rounds by
+the one rule of `physics.numeric.rounding`.
 """
 
 from __future__ import annotations
@@ -11,32 +12,10 @@ from enum import Enum
 from fractions import Fraction
 
 from physics.errors import SpecError
+from physics.numeric.decimals import as_decimal
+from physics.numeric.rounding import round_sigfigs
 
 MAX_SIGFIGS = 40
-MAX_SPEC_EXPONENT = 400  # |exponent| of a reference or tolerance value, so Fraction() stays cheap
-MAX_SPEC_DIGITS = 60
-
-
-def as_decimal(value: object, path: tuple[str, ...]) -> Decimal:
-    """An author's number as an exact Decimal. A float is read by its shortest repr (4.5807 → 4.5807),
-    which is what a JSON number meant; anything unusable is a SpecError at `path`."""
-    if isinstance(value, bool) or not isinstance(value, Decimal | int | float | str):
-        raise SpecError(f"{path[-1]} must be a number, not {value!r}", path)
-    try:
-        exact = (
-            value
-            if isinstance(value, Decimal)
-            else Decimal(repr(value) if isinstance(value, float) else value)
-        )
-    except ArithmeticError as error:  # decimal.InvalidOperation for text that is not a number
-        raise SpecError(f"{path[-1]} must be a number, not {value!r}", path) from error
-    if not exact.is_finite():
-        raise SpecError(f"{path[-1]} must be a finite number, not {value!r}", path)
-    if exact and (
-        abs(exact.adjusted()) > MAX_SPEC_EXPONENT or len(exact.as_tuple().digits) > MAX_SPEC_DIGITS
-    ):
-        raise SpecError(f"{path[-1]} is too large or too precise to check against", path)
-    return exact
 
 
 class ToleranceKind(Enum):
@@ -92,30 +71,6 @@ def within_absolute(value: Fraction, expected: Fraction, bound: Fraction) -> boo
     return abs(value - expected) <= bound
 
 
-def floor_log10(value: Fraction) -> int:
-    """The exponent e with 10^e ≤ |value| < 10^(e+1), exactly; value must not be zero."""
-    magnitude = abs(value)
-    exponent = len(str(magnitude.numerator)) - len(str(magnitude.denominator))
-    while Fraction(10) ** exponent > magnitude:
-        exponent -= 1
-    while Fraction(10) ** (exponent + 1) <= magnitude:
-        exponent += 1
-    return exponent
-
-
-def round_sigfigs(value: Fraction, figures: int) -> Fraction:
-    """`value` rounded to `figures` significant figures, halves away from zero (4.585 → 4.59, −4.585 → −4.59)."""
-    if value == 0:
-        return Fraction(0)
-    step = Fraction(10) ** (floor_log10(value) - figures + 1)
-    units = abs(value) / step
-    rounded = int(units)
-    if units - rounded >= Fraction(1, 2):
-        rounded += 1
-    result = rounded * step
-    return result if value > 0 else -result
-
-
 def matches_sigfigs(value: Fraction, expected: Fraction, figures: int) -> bool:
     """The value part of the sigfigs rule (the figures shown are checked when the answer is read)."""
-    return value == round_sigfigs(expected, figures)
+    return value == Fraction(round_sigfigs(expected, figures))

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
-from decimal import ROUND_HALF_UP, Decimal
+from decimal import Decimal
 from functools import partial
 from typing import TYPE_CHECKING, Annotated, Any, Literal
 
@@ -15,7 +15,7 @@ from pydantic import Field
 from physics.checking import NumericJob
 from physics.dimensions import DIMENSIONLESS
 from physics.errors import AnswerError, SpecError
-from physics.numeric import DEFAULT_TOLERANCE, NumericSpec, Tolerance
+from physics.numeric import DEFAULT_TOLERANCE, NumericSpec, Tolerance, round_sigfigs
 from physics.symbolic import SymbolSpec, UnknownDimension, expression_dimension
 from physics.symbolic.dimensional import DimensionMismatch
 from physics.units import parse_units, unit_dimension
@@ -23,7 +23,7 @@ from physics.verdict import Outcome
 from problems.fields import PART_ID, Attempts, Name, Strict, Text, ToleranceDecl
 from problems.kinds.base import CheckResult, CompileContext, MeaningContext, Path, Reference, explain
 from problems.symbols import unit_dimension_at
-from problems.variants import evaluate_reference, format_number, round_sigfigs, si_values, unit_scale
+from problems.variants import evaluate_reference, format_number, si_values, unit_scale
 
 if TYPE_CHECKING:
     from problems.schema import ProblemDocument
@@ -245,9 +245,7 @@ def _require_dimension(
 
 def answer_text(value: Decimal, sigfigs: int | None) -> str:
     """A student's way of writing `value`: to the asked sigfigs, else 6 significant figures."""
-    if sigfigs is not None:
-        return format_number(round_sigfigs(value, sigfigs, ROUND_HALF_UP)).replace(" × 10^", "e")
-    return format_number(round_sigfigs(value, 6, ROUND_HALF_UP)).replace(" × 10^", "e")
+    return format_number(round_sigfigs(value, sigfigs or 6)).replace(" × 10^", "e")
 
 
 def unit_alternatives(units: str) -> list[str]:

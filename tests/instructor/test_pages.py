@@ -21,9 +21,10 @@ from app.instructor.session import COOKIE
 from app.keys import revoke_key
 from app.lti.models import LtiGradeTarget, LtiPlatform, LtiScoreOutbox
 from app.lti.sessions import SESSION_COOKIE, open_session
+from physics.numeric import round_sigfigs
 from physics.verdict import Outcome, ReadAs, Reason, Verdict
 from problems.loader import BANK_DIR
-from problems.variants import format_quantity, round_sigfigs
+from problems.variants import format_quantity
 from tests.instructor.conftest import csrf_of, new_key, sign_in
 from tests.lti.fake_lms import register_fake_lms
 

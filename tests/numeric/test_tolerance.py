@@ -8,7 +8,7 @@ from fractions import Fraction
 import pytest
 
 from physics.errors import SpecError
-from physics.numeric import NumericSpec, Tolerance, check_numeric, round_sigfigs
+from physics.numeric import NumericSpec, Tolerance, check_numeric
 from physics.verdict import Outcome
 
 D = Decimal
@@ -55,30 +55,6 @@ def test_tolerance_edge(answer: str, expected: str, tolerance: Tolerance, correc
 
 def test_default_tolerance_is_one_percent_relative() -> None:
     assert NumericSpec(D(1)).tolerance == Tolerance(rel=D("0.01"))
-
-
-ROUNDING = [
-    # (value, figures, rounded)
-    (F("4.585"), 3, F("4.59")),
-    (F("-4.585"), 3, F("-4.59")),
-    (F("4.5849999"), 3, F("4.58")),
-    (F("9.995"), 3, F(10)),
-    (F(1498), 3, F(1500)),
-    (F("0.00044995"), 4, F("0.0004500")),
-    (F(123456), 1, F(100000)),
-    (F(2, 3), 2, F("0.67")),
-    (F(1, 3), 40, F("0." + "3" * 40)),
-    (F(0), 3, F(0)),
-    (F(10) ** 400, 3, F(10) ** 400),
-    (F(1, 10**400) * 15, 1, F(2, 10**399)),
-]
-
-
-@pytest.mark.parametrize(
-    ("value", "figures", "rounded"), ROUNDING, ids=[f"{c[0]}@{c[1]}"[:40] for c in ROUNDING]
-)
-def test_round_sigfigs_half_away_from_zero(value: Fraction, figures: int, rounded: Fraction) -> None:
-    assert round_sigfigs(value, figures) == rounded
 
 
 BAD_TOLERANCES = [

@@ -11,13 +11,14 @@ import pytest
 import sympy
 
 from physics.checking import NumericJob, PartJob, check_answer, run_job
+from physics.numeric import round_sigfigs
 from physics.verdict import Outcome, Reason
 from problems.compiled import CompiledNumericPart, CompiledProblem, CompiledSymbolicPart, compile_problem
 from problems.errors import ProblemInvalid
 from problems.loader import load_bank, parse_problem
 from problems.schema import ProblemDocument
 from problems.student import student_view
-from problems.variants import draw_variant, fixed_variant, round_sigfigs
+from problems.variants import draw_variant, fixed_variant
 from tests.problems.documents import spring
 
 

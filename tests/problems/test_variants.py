@@ -17,7 +17,6 @@ from problems.variants import (
     fill_statement,
     fixed_variant,
     format_quantity,
-    round_sigfigs,
 )
 from tests.problems.documents import spring
 
@@ -82,20 +81,6 @@ def test_step_grid_reaches_both_ends() -> None:
 def test_fixed_given_always_takes_its_value_as_written() -> None:
     given = GivenDecl(min=Decimal("9.81"), max=Decimal("9.81"), unit="m/s^2")
     assert {draw_value(given, Decimal(u) / 10) for u in range(10)} == {Decimal("9.81")}
-
-
-@pytest.mark.parametrize(
-    ("value", "sigfigs", "expected"),
-    [
-        pytest.param("2.4999", 2, "2.5", id="rounds"),
-        pytest.param("2.5", 3, "2.50", id="keeps-trailing-zero"),
-        pytest.param("9.96", 2, "10", id="carries-into-next-decade"),
-        pytest.param("0.012345", 3, "0.0123", id="small"),
-        pytest.param("12345", 2, "1.2E+4", id="large"),
-    ],
-)
-def test_round_sigfigs(value: str, sigfigs: int, expected: str) -> None:
-    assert str(round_sigfigs(Decimal(value), sigfigs)) == expected
 
 
 def test_rounding_never_leaves_the_range() -> None:
