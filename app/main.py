@@ -5,7 +5,7 @@ from __future__ import annotations
 import asyncio
 import functools
 import threading
-from collections.abc import AsyncIterator
+from collections.abc import AsyncIterator, Callable
 from contextlib import asynccontextmanager
 
 import httpx
@@ -27,7 +27,7 @@ from app.routers import authoring as authoring_routes
 from app.routers import check, health, problems, submissions
 from app.services import Services
 from app.settings import Settings, get_settings
-from app.startup import open_storage_when_reachable
+from app.startup import Storage, open_storage_when_reachable
 from app.web import router as web_routes
 from app.web.layout import STATIC_PATH, static_files
 
@@ -37,9 +37,11 @@ def create_app(
     *,
     pool: GradingPool | None = None,
     lms_transport: httpx.AsyncBaseTransport | None = None,
+    open_storage: Callable[[Settings], Storage] = open_storage_when_reachable,
 ) -> FastAPI:
     """Build the app; a `pool` passed in is shared (tests) and not closed by the app; `lms_transport`
-    carries requests to LMSs (tests pass a loopback one to a fake platform)."""
+    carries requests to LMSs (tests pass a loopback one to a fake platform); `open_storage` gives the
+    stores (tests pass one on the in-memory fakes)."""
     settings = settings or get_settings()
     configure_logging(settings.log_level)
 
@@ -57,7 +59,7 @@ def create_app(
         # The workers' fork server imports the checker while this process opens storage: side by side.
         try:
             storage, _ = await asyncio.gather(
-                run_in_threadpool(open_storage_when_reachable, settings),
+                run_in_threadpool(open_storage, settings),
                 run_in_threadpool(grading.start if pool is None else lambda: None),
             )
         except BaseException:
@@ -86,15 +88,13 @@ def create_app(
             authoring=authoring,
         )
         app.state.lti = LtiContext(
-            storage.database,
+            storage.stores,
             settings,
             transport=lms_transport,
             student_view=storage.catalog.student_view,
             authenticate_key=storage.keys.authenticate,
             figure=storage.catalog.figure,
             rate_limit=functools.partial(budget_wait, app.state.services),
-            submissions=storage.stores.submissions,
-            tool_keys=storage.stores.tool_keys,
         )
         outbox = OutboxWorker(storage.stores.outbox, storage.stores.tool_keys, lms_transport)
         await outbox.start()

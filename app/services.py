@@ -17,7 +17,7 @@ from app.storage import Stores
 @dataclass
 class Services:
     settings: Settings
-    database: Database  # for readiness and the LTI code; routes reach storage through `stores`
+    database: Database | None  # SQL apps' (tests and tools use it); routes reach storage through `stores`
     stores: Stores
     pool: GradingPool
     keys: KeyStore

@@ -80,14 +80,15 @@ class DatabaseKeyStore:
 
 @dataclass
 class Storage:
-    database: Database
+    database: Database | None  # None on the in-memory fakes
     stores: Stores
     keys: DatabaseKeyStore
     catalog: Catalog
 
     def close(self) -> None:
         self.catalog.close()
-        self.database.dispose()
+        if self.database is not None:
+            self.database.dispose()
 
 
 def open_storage(settings: Settings) -> Storage:

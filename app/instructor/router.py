@@ -122,11 +122,7 @@ async def _frames(services: Services, who: auth.Visitor) -> list[str]:
     if who.principal.api_key:
         return []
 
-    def load() -> list[str]:
-        with services.database.session(read_only=True) as session:
-            return platform_origins(session)
-
-    return await run_in_threadpool(load)
+    return await run_in_threadpool(platform_origins, services.stores.platforms)
 
 
 async def _page(

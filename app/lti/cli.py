@@ -17,11 +17,12 @@ def _open(settings: Settings) -> Any:
 
 def _add_platform(args: argparse.Namespace, settings: Settings) -> int:
     from app.lti.platforms import add_platform
+    from app.storage import sql_stores
 
     database = _open(settings)
     try:
         record = add_platform(
-            database,
+            sql_stores(database).platforms,
             args.issuer,
             args.client_id,
             args.deployment_id,

@@ -13,19 +13,17 @@ import httpx
 from fastapi import Depends, Request
 
 from app.auth import Principal
-from app.db.database import Database
 from app.db.types import utc_now
 from app.lti.platform_keys import PlatformKeyCache
 from app.settings import Settings
-from app.storage import SubmissionStore, ToolKeys
-from app.storage.sql import SqlSubmissionStore, SqlToolKeys
+from app.storage import Stores
 
 HTTP_TIMEOUT_SECONDS = 10.0
 
 
 @dataclass
 class LtiContext:
-    database: Database
+    stores: Stores  # the app's: the LTI code reaches storage only through them
     settings: Settings
     # Outgoing HTTP (platform JWKS); tests pass a loopback transport to a fake LMS.
     transport: httpx.AsyncBaseTransport | None = None
@@ -38,23 +36,10 @@ class LtiContext:
     figure: Callable[[str, str], str | None] | None = None
     # Spends one request of a key's rate budget (the API's): None if allowed, else seconds to wait.
     rate_limit: Callable[[Principal], int | None] | None = None
-    # The student page's work and attempts (the app passes its own; by default, on `database`).
-    submissions: SubmissionStore | None = None
-    # Our signing keys, for the JWKS (by default, on `database`).
-    tool_keys: ToolKeys | None = None
     platform_keys: PlatformKeyCache = field(init=False)
 
     def __post_init__(self) -> None:
         self.platform_keys = PlatformKeyCache(self.http_client, self.clock)
-        if self.submissions is None:
-            self.submissions = SqlSubmissionStore(self.database)
-        if self.tool_keys is None:
-            self.tool_keys = SqlToolKeys(self.database, self.clock)
-
-    @property
-    def submission_store(self) -> SubmissionStore:
-        assert self.submissions is not None, "set in __post_init__"
-        return self.submissions
 
     def http_client(self) -> httpx.AsyncClient:
         return httpx.AsyncClient(transport=self.transport, timeout=HTTP_TIMEOUT_SECONDS)

@@ -2,7 +2,8 @@
 
 Login stores (state hash, nonce, platform, browser) and sends the browser to the platform; launch
 takes that row back exactly once (deleted on first use, whatever the outcome), verifies the id_token,
-spends the nonce, and opens a session. Database work runs in a worker thread; HTTP stays async.
+spends the nonce, and opens a session. Storage is the context's stores (each call atomic on its own),
+called from a worker thread; HTTP stays async.
 """
 
 from __future__ import annotations
@@ -17,15 +18,10 @@ from datetime import datetime, timedelta
 from typing import Any
 from urllib.parse import urlencode, urlsplit
 
-from sqlalchemy import delete
-from sqlalchemy.exc import IntegrityError
-from sqlalchemy.orm import Session
 from starlette.concurrency import run_in_threadpool
 
 from app.auth import Role
 from app.db.errors import ProblemNotFound
-from app.db.problems import get_problem, list_problems
-from app.lti import keys
 from app.lti.context import LtiContext
 from app.lti.errors import MalformedRequest, NoSuchProblem, NotPermitted, PlatformNotFound
 from app.lti.id_token import (
@@ -38,11 +34,11 @@ from app.lti.id_token import (
     LaunchClaims,
     verify_id_token,
 )
-from app.lti.models import LtiDeepLinkRequest, LtiLoginState, LtiSession, LtiUsedNonce
-from app.lti.outbox import add_grade_target
 from app.lti.pages import ProblemChoice
-from app.lti.platforms import PlatformRecord, find_platform, get_platform, is_deployed
-from app.lti.sessions import SessionRecord, open_session, role_from_claims, token_hash
+from app.lti.platforms import PlatformRecord
+from app.lti.sessions import SessionRecord, open_session, role_from_claims, student_id, token_hash
+from app.storage import ProblemStore, Stores
+from app.storage.protocols import LoginState, PendingDeepLink
 
 LOGIN_LIFETIME = timedelta(minutes=10)
 DEEP_LINK_LIFETIME = timedelta(hours=1)
@@ -99,28 +95,19 @@ async def begin_login(
     state = secrets.token_urlsafe(32)
     nonce = secrets.token_urlsafe(32)
 
+    stores = context.stores
+
     def store() -> PlatformRecord:
         now = context.clock()
-        with context.database.session() as session:
-            try:
-                platform = find_platform(session, issuer, client_id)
-            except PlatformNotFound as error:
-                raise MalformedRequest(
-                    "unknown_platform", "This LMS is not registered with the tool."
-                ) from error
-            if deployment_id is not None and not is_deployed(session, platform.id, deployment_id):
-                raise NotPermitted("unknown_deployment", "This deployment is not registered with the tool.")
-            session.execute(delete(LtiLoginState).where(LtiLoginState.expires_at < now))
-            session.add(
-                LtiLoginState(
-                    state_hash=token_hash(state),
-                    nonce=nonce,
-                    browser_hash=token_hash(browser_token),
-                    platform_id=platform.id,
-                    expires_at=now + LOGIN_LIFETIME,
-                )
-            )
-            return platform
+        try:
+            platform = stores.platforms.find(issuer, client_id)
+        except PlatformNotFound as error:
+            raise MalformedRequest("unknown_platform", "This LMS is not registered with the tool.") from error
+        if deployment_id is not None and not stores.platforms.is_deployed(platform.id, deployment_id):
+            raise NotPermitted("unknown_deployment", "This deployment is not registered with the tool.")
+        login = LoginState(nonce, token_hash(browser_token), platform.id, now + LOGIN_LIFETIME)
+        stores.launches.save_login(token_hash(state), login, now)
+        return platform
 
     platform = await run_in_threadpool(store)
     query = {
@@ -162,14 +149,14 @@ async def complete_launch(
     state = _param(form, "state")
     assert id_token is not None and state is not None
 
-    def take_state() -> tuple[PlatformRecord, LtiLoginState]:
-        # Deleted on first use, whatever the outcome: the checks run after the transaction commits.
-        with context.database.session() as session:
-            row = session.get(LtiLoginState, token_hash(state))
-            if row is None:
-                raise MalformedRequest("unknown_state", "This launch does not match a login in progress.")
-            session.delete(row)
-            return get_platform(session, row.platform_id), row
+    stores = context.stores
+
+    def take_state() -> tuple[PlatformRecord, LoginState]:
+        # Taken on first use, whatever the outcome: the checks run after it is gone.
+        login = stores.launches.take_login(token_hash(state))
+        if login is None:
+            raise MalformedRequest("unknown_state", "This launch does not match a login in progress.")
+        return stores.platforms.get(login.platform_id), login
 
     platform, login = await run_in_threadpool(take_state)
     if login.expires_at < context.clock():
@@ -200,51 +187,39 @@ async def complete_launch(
         raise NotPermitted("not_instructor", "Only instructors can add problems to a course.")
 
     def open_launch() -> LaunchOutcome:
+        # Refusals first, then the nonce (spent once), then what the launch opens. Each store call is
+        # atomic on its own: a fault after the nonce is a server error, and the student launches again.
         now = context.clock()
-        with context.database.session() as session:
-            if not is_deployed(session, platform.id, claims.deployment_id):
-                raise NotPermitted("unknown_deployment", "This deployment is not registered with the tool.")
-            if problem_id is not None:
-                _require_problem(session, problem_id)
-            _spend_nonce(session, platform.id, claims.nonce, now)
-            session_id, record = open_session(
-                session, platform_id=platform.id, sub=claims.sub, role=role, name=claims.name, now=now
+        if not stores.platforms.is_deployed(platform.id, claims.deployment_id):
+            raise NotPermitted("unknown_deployment", "This deployment is not registered with the tool.")
+        if problem_id is not None:
+            _require_problem(stores.problems, problem_id)
+        if not stores.launches.spend_nonce(platform.id, claims.nonce[:255], now + NONCE_RETENTION, now):
+            raise NotPermitted("replayed", "This launch was already used; open the activity again.")
+        if problem_id is not None and claims.lineitem_url is not None:
+            stores.outbox.add_target(
+                platform,
+                student=student_id(platform.id, claims.sub),
+                problem_id=problem_id,
+                lineitem_url=claims.lineitem_url,
+                sub=claims.sub,
             )
-            deep_link_id: str | None = None
-            session.execute(delete(LtiDeepLinkRequest).where(LtiDeepLinkRequest.expires_at < now))
-            if claims.deep_link_return_url is not None:
-                deep_link_id = secrets.token_urlsafe(32)
-                session.add(
-                    LtiDeepLinkRequest(
-                        id=deep_link_id,
-                        session_hash=token_hash(session_id),
-                        platform_id=platform.id,
-                        deployment_id=claims.deployment_id,
-                        return_url=claims.deep_link_return_url,
-                        data=None if claims.deep_link_data is None else json.dumps(claims.deep_link_data),
-                        accept_multiple=claims.deep_link_accept_multiple,
-                        expires_at=now + DEEP_LINK_LIFETIME,
-                    )
-                )
-            if problem_id is not None and claims.lineitem_url is not None:
-                add_grade_target(
-                    session,
-                    platform.id,
-                    student=record.student,
-                    problem_id=problem_id,
-                    lineitem_url=claims.lineitem_url,
-                    sub=claims.sub,
-                )
-            return LaunchOutcome(session_id, record, claims, platform, problem_id, deep_link_id)
+        session_id, record = open_session(
+            stores.lti_sessions, platform_id=platform.id, sub=claims.sub, role=role, name=claims.name, now=now
+        )
+        deep_link_id = None
+        if claims.deep_link_return_url is not None:
+            deep_link_id = _save_deep_link(stores, platform, claims, token_hash(session_id), now)
+        return LaunchOutcome(session_id, record, claims, platform, problem_id, deep_link_id)
 
     return await run_in_threadpool(open_launch)
 
 
-def _require_problem(session: Session, problem_id: str) -> None:
+def _require_problem(problems: ProblemStore, problem_id: str) -> None:
     """Refused at launch, before a session or grade target exists: a student would otherwise land on
     a page that cannot load and the gradebook would wait for a score that never comes."""
     try:
-        get_problem(session, problem_id)
+        problems.get(problem_id)
     except ProblemNotFound as error:
         raise NoSuchProblem(
             "unknown_problem",
@@ -253,25 +228,35 @@ def _require_problem(session: Session, problem_id: str) -> None:
         ) from error
 
 
-def _spend_nonce(session: Session, platform_id: int, nonce: str, now: datetime) -> None:
-    session.execute(delete(LtiUsedNonce).where(LtiUsedNonce.expires_at < now))
-    try:
-        with session.begin_nested():
-            session.add(
-                LtiUsedNonce(platform_id=platform_id, nonce=nonce[:255], expires_at=now + NONCE_RETENTION)
-            )
-    except IntegrityError as error:
-        raise NotPermitted("replayed", "This launch was already used; open the activity again.") from error
+def _save_deep_link(
+    stores: Stores, platform: PlatformRecord, claims: LaunchClaims, session_hash: str, now: datetime
+) -> str:
+    assert claims.deep_link_return_url is not None
+    request_id = secrets.token_urlsafe(32)
+    stores.launches.save_deep_link(
+        PendingDeepLink(
+            id=request_id,
+            session_hash=session_hash,
+            platform_id=platform.id,
+            deployment_id=claims.deployment_id,
+            return_url=claims.deep_link_return_url,
+            data=None if claims.deep_link_data is None else json.dumps(claims.deep_link_data),
+            accept_multiple=claims.deep_link_accept_multiple,
+            expires_at=now + DEEP_LINK_LIFETIME,
+        ),
+        now,
+    )
+    return request_id
 
 
 # ---- deep linking ----------------------------------------------------------------------------------
 
 
-def problem_choices(session: Session) -> list[ProblemChoice]:
+def problem_choices(problems: ProblemStore) -> list[ProblemChoice]:
     """Every live problem (the bank and instructors' own), with its line item's maximum: one point
     per part."""
     choices = []
-    for record in list_problems(session):
+    for record in problems.list():
         title = record.document.get("title")
         parts = record.document.get("parts")
         count = len(parts) if isinstance(parts, list) and parts else 1
@@ -290,19 +275,17 @@ class DeepLinkRequestRecord:
     accept_multiple: bool
 
 
-def load_deep_link(
-    session: Session, request_id: str, csrf_token: str, now: datetime
-) -> DeepLinkRequestRecord:
+def load_deep_link(stores: Stores, request_id: str, csrf_token: str, now: datetime) -> DeepLinkRequestRecord:
     """The pending request, if the form carries the CSRF token of the session that opened it."""
-    row = session.get(LtiDeepLinkRequest, request_id) if len(request_id) <= 64 else None
+    row = stores.launches.get_deep_link(request_id) if len(request_id) <= 64 else None
     if row is None or row.expires_at < now:
         raise MalformedRequest("unknown_deep_link", "This selection has expired; start again from the LMS.")
-    owner = session.get(LtiSession, row.session_hash)
+    owner = stores.lti_sessions.get(row.session_hash)
     if owner is None or not secrets.compare_digest(owner.csrf_token.encode(), csrf_token.encode()):
         raise NotPermitted("bad_csrf_token", "The form is not one this tool issued to you.")
     return DeepLinkRequestRecord(
         id=row.id,
-        platform=get_platform(session, row.platform_id),
+        platform=stores.platforms.get(row.platform_id),
         deployment_id=row.deployment_id,
         return_url=row.return_url,
         data=None if row.data is None else json.loads(row.data),
@@ -327,29 +310,29 @@ def finish_deep_link(
     """Sign the deep-linking response for the chosen problems; returns (return URL, JWT). The
     request is used up."""
     now = context.clock()
-    with context.database.session() as session:
-        request = load_deep_link(session, request_id, csrf_token, now)
-        by_id = {choice.id: choice for choice in problem_choices(session)}
-        unknown = [pid for pid in problem_ids if pid not in by_id]
-        if unknown:
-            raise MalformedRequest("unknown_problem", f"No such problem: {', '.join(unknown)[:200]}.")
-        if not request.accept_multiple and len(set(problem_ids)) > 1:
-            raise MalformedRequest(
-                "one_problem_only", "Here the LMS takes one problem per link: go back and choose one."
-            )
-        claims: dict[str, Any] = {
-            "iss": request.platform.client_id,
-            "aud": request.platform.issuer,
-            "iat": int(now.timestamp()),
-            "exp": int((now + timedelta(minutes=5)).timestamp()),
-            "nonce": uuid.uuid4().hex,
-            CLAIM_DEPLOYMENT_ID: request.deployment_id,
-            CLAIM_MESSAGE_TYPE: "LtiDeepLinkingResponse",
-            CLAIM_VERSION: LTI_VERSION,
-            CLAIM_CONTENT_ITEMS: [content_item(context, by_id[pid]) for pid in dict.fromkeys(problem_ids)],
-        }
-        if request.data is not None:
-            claims[CLAIM_DL_DATA] = request.data
-        token = keys.sign(session, claims, clock=context.clock)
-        session.execute(delete(LtiDeepLinkRequest).where(LtiDeepLinkRequest.id == request_id))
-        return request.return_url, token
+    stores = context.stores
+    request = load_deep_link(stores, request_id, csrf_token, now)
+    by_id = {choice.id: choice for choice in problem_choices(stores.problems)}
+    unknown = [pid for pid in problem_ids if pid not in by_id]
+    if unknown:
+        raise MalformedRequest("unknown_problem", f"No such problem: {', '.join(unknown)[:200]}.")
+    if not request.accept_multiple and len(set(problem_ids)) > 1:
+        raise MalformedRequest(
+            "one_problem_only", "Here the LMS takes one problem per link: go back and choose one."
+        )
+    claims: dict[str, Any] = {
+        "iss": request.platform.client_id,
+        "aud": request.platform.issuer,
+        "iat": int(now.timestamp()),
+        "exp": int((now + timedelta(minutes=5)).timestamp()),
+        "nonce": uuid.uuid4().hex,
+        CLAIM_DEPLOYMENT_ID: request.deployment_id,
+        CLAIM_MESSAGE_TYPE: "LtiDeepLinkingResponse",
+        CLAIM_VERSION: LTI_VERSION,
+        CLAIM_CONTENT_ITEMS: [content_item(context, by_id[pid]) for pid in dict.fromkeys(problem_ids)],
+    }
+    if request.data is not None:
+        claims[CLAIM_DL_DATA] = request.data
+    token = stores.tool_keys.sign(claims)
+    stores.launches.drop_deep_link(request_id)
+    return request.return_url, token

@@ -50,11 +50,7 @@ def set_cross_site_cookie(response: Response, name: str, value: str, max_age: in
 
 
 async def _frame_ancestors(context: LtiContext) -> list[str]:
-    def load() -> list[str]:
-        with context.database.session(read_only=True) as session:
-            return platform_origins(session)
-
-    return await run_in_threadpool(load)
+    return await run_in_threadpool(platform_origins, context.stores.platforms)
 
 
 async def _refusing(context: LtiContext, action: Callable[[], Awaitable[Response]]) -> Response:
@@ -105,15 +101,10 @@ async def launch(request: Request, context: Context) -> Response:
         outcome = await complete_launch(context, form, request.cookies.get(BROWSER_COOKIE))
         response: Response
         if outcome.deep_link_id is not None:
-
-            def choices() -> Any:
-                with context.database.session(read_only=True) as session:
-                    return problem_choices(session)
-
             response = picker_page(
                 outcome.deep_link_id,
                 outcome.session.csrf_token,
-                await run_in_threadpool(choices),
+                await run_in_threadpool(problem_choices, context.stores.problems),
                 frame_ancestors=await _frame_ancestors(context),
                 multiple=outcome.claims.deep_link_accept_multiple,
             )
@@ -145,6 +136,5 @@ async def deep_link_return(request_id: str, request: Request, context: Context) 
 @router.get("/lti/jwks", include_in_schema=False)
 @router.get("/.well-known/jwks.json", include_in_schema=False)
 async def jwks(context: Context) -> JSONResponse:
-    assert context.tool_keys is not None, "set in LtiContext.__post_init__"
-    document = await run_in_threadpool(context.tool_keys.public_jwks)
+    document = await run_in_threadpool(context.stores.tool_keys.public_jwks)
     return JSONResponse(document, headers={"Cache-Control": "public, max-age=300"})

@@ -1,5 +1,5 @@
-"""Sessions of our own, opened by a launch: a random id in a cookie, its hash and the identity in the
-database. The API accepts the cookie as well as a bearer key (`principal_from_session`)."""
+"""Sessions of our own, opened by a launch: a random id in a cookie, its hash and the identity in an
+`LtiSessionStore`. The API accepts the cookie as well as a bearer key (`principal_from_session`)."""
 
 from __future__ import annotations
 
@@ -8,14 +8,14 @@ import hmac
 import secrets
 from dataclasses import dataclass
 from datetime import datetime, timedelta
+from typing import TYPE_CHECKING
 
 from fastapi import Request
-from sqlalchemy import delete
-from sqlalchemy.orm import Session
 
 from app.auth import Principal, Role
-from app.db.database import Database
-from app.lti.models import LtiSession
+
+if TYPE_CHECKING:  # the stores name this module's record
+    from app.storage.protocols import LtiSessionStore
 
 SESSION_COOKIE = "physcheck_session"
 CSRF_HEADER = "X-CSRF-Token"
@@ -75,9 +75,9 @@ class SessionRecord:
 
 
 def open_session(
-    session: Session, *, platform_id: int, sub: str, role: Role, name: str, now: datetime
+    sessions: LtiSessionStore, *, platform_id: int, sub: str, role: Role, name: str, now: datetime
 ) -> tuple[str, SessionRecord]:
-    """A new session row; returns the cookie value (shown once) and the record."""
+    """A new session; returns the cookie value (shown once) and the record."""
     session_id = secrets.token_urlsafe(32)
     record = SessionRecord(
         platform_id=platform_id,
@@ -88,39 +88,16 @@ def open_session(
         csrf_token=secrets.token_urlsafe(32),
         expires_at=now + SESSION_LIFETIME,
     )
-    session.execute(delete(LtiSession).where(LtiSession.expires_at < now))
-    session.add(
-        LtiSession(
-            id_hash=token_hash(session_id),
-            platform_id=platform_id,
-            sub=sub,
-            student=record.student,
-            role=role.value,
-            name=record.name,
-            csrf_token=record.csrf_token,
-            created_at=now,
-            expires_at=record.expires_at,
-        )
-    )
+    sessions.save(token_hash(session_id), record, now)
     return session_id, record
 
 
-def find_session(database: Database, session_id: str, *, now: datetime) -> SessionRecord | None:
+def find_session(sessions: LtiSessionStore, session_id: str, *, now: datetime) -> SessionRecord | None:
+    """The live session the cookie value names, or None."""
     if not session_id or len(session_id) > 100:
         return None
-    with database.session(read_only=True) as session:
-        row = session.get(LtiSession, token_hash(session_id))
-        if row is None or row.expires_at <= now:
-            return None
-        return SessionRecord(
-            platform_id=row.platform_id,
-            sub=row.sub,
-            student=row.student,
-            role=Role(row.role),
-            name=row.name,
-            csrf_token=row.csrf_token,
-            expires_at=row.expires_at,
-        )
+    record = sessions.get(token_hash(session_id))
+    return None if record is None or record.expires_at <= now else record
 
 
 def current_session(request: Request) -> tuple[str, SessionRecord] | None:
@@ -130,7 +107,7 @@ def current_session(request: Request) -> tuple[str, SessionRecord] | None:
     context = getattr(request.app.state, "lti", None)
     if not session_id or context is None:
         return None
-    record = find_session(context.database, session_id, now=context.clock())
+    record = find_session(context.stores.lti_sessions, session_id, now=context.clock())
     return None if record is None else (token_hash(session_id), record)
 
 

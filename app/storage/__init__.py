@@ -1,9 +1,11 @@
 """Storage behind small protocols, so the routes, the LTI code and the pages never open sessions.
 
 protocols.py   one Protocol per store (keys, problems, submissions, compiled problems, the LMS score
-               outbox, our LTI signing keys)
-sql.py         their SQLAlchemy implementation over the `app.db` repositories (SQLite, PostgreSQL)
-memory.py      in-memory fakes that keep the same contract (tests/storage runs it against all three)
+               outbox, our LTI signing keys, LMS platforms, launch state, LTI sessions)
+sql.py         their SQLAlchemy implementation over the `app.db` repositories (SQLite, PostgreSQL);
+               sql_lti.py for the launch stores
+memory.py      in-memory fakes that keep the same contract (tests/storage runs it against all three);
+               memory_lti.py for the launch stores
 
 `Stores` is what an application holds: one of each, plus `ping` for readiness.
 """
@@ -26,10 +28,14 @@ from app.storage.memory import (
     MemoryToolKeys,
     grade_queue,
 )
+from app.storage.memory_lti import MemoryLaunchStore, MemoryLtiSessionStore, MemoryPlatformStore
 from app.storage.protocols import (
     ApiKeyStore,
     CompiledCache,
     Filed,
+    LaunchStore,
+    LtiSessionStore,
+    PlatformStore,
     ProblemStore,
     QueuedScore,
     ScoreOutbox,
@@ -45,11 +51,15 @@ from app.storage.sql import (
     SqlSubmissionStore,
     SqlToolKeys,
 )
+from app.storage.sql_lti import SqlLaunchStore, SqlLtiSessionStore, SqlPlatformStore
 
 __all__ = [
     "ApiKeyStore",
     "CompiledCache",
     "Filed",
+    "LaunchStore",
+    "LtiSessionStore",
+    "PlatformStore",
     "ProblemStore",
     "QueuedScore",
     "ScoreOutbox",
@@ -69,6 +79,9 @@ class Stores:
     compiled: CompiledCache
     outbox: ScoreOutbox
     tool_keys: ToolKeys
+    platforms: PlatformStore
+    launches: LaunchStore
+    lti_sessions: LtiSessionStore
     ping: Callable[[], bool] = field(default=lambda: True)
 
 
@@ -82,6 +95,9 @@ def sql_stores(database: Database, *, clock: Clock = utc_now) -> Stores:
         compiled=SqlCompiledCache(database),
         outbox=SqlScoreOutbox(database),
         tool_keys=SqlToolKeys(database, clock),
+        platforms=SqlPlatformStore(database, clock),
+        launches=SqlLaunchStore(database),
+        lti_sessions=SqlLtiSessionStore(database),
         ping=database.ping,
     )
 
@@ -100,4 +116,7 @@ def memory_stores(*, clock: Clock = utc_now) -> Stores:
         compiled=MemoryCompiledCache(),
         outbox=outbox,
         tool_keys=MemoryToolKeys(),
+        platforms=MemoryPlatformStore(),
+        launches=MemoryLaunchStore(),
+        lti_sessions=MemoryLtiSessionStore(),
     )

@@ -16,6 +16,7 @@ from app.db.class_results import PartResults
 from app.db.records import ApiKeyRecord, CreatedKey, Page, ProblemRecord, Role, SubmissionRecord
 from app.lti.outbox import ClaimedScore, DeliveryProblem, Outcome
 from app.lti.platforms import PlatformRecord
+from app.lti.sessions import SessionRecord
 from physics.verdict import Verdict
 
 DEFAULT_PAGE_LIMIT = 100
@@ -201,4 +202,97 @@ class ToolKeys(Protocol):
 
     def rotate(self) -> str:
         """A new signing key; the previous one stays published, older ones are retired. Its kid."""
+        ...
+
+
+class PlatformStore(Protocol):
+    """Registered LMSs (LTI 1.3 platforms) and their deployments."""
+
+    def register(
+        self,
+        issuer: str,
+        client_id: str,
+        deployment_ids: Sequence[str],
+        auth_url: str,
+        token_url: str,
+        jwks_url: str,
+    ) -> PlatformRecord:
+        """A new platform, or the known (issuer, client_id) with these URLs and its deployments
+        joined by `deployment_ids` (none is ever removed)."""
+        ...
+
+    def find(self, issuer: str, client_id: str | None) -> PlatformRecord:
+        """The platform for (issuer, client_id); without a client_id, the issuer's only registration.
+        Raises PlatformNotFound."""
+        ...
+
+    def get(self, platform_id: int) -> PlatformRecord:
+        """Raises PlatformNotFound."""
+        ...
+
+    def deployments(self, platform_id: int) -> list[str]: ...
+
+    def is_deployed(self, platform_id: int, deployment_id: str) -> bool: ...
+
+    def list(self) -> list[PlatformRecord]:
+        """Every platform, by id."""
+        ...
+
+
+@dataclass(frozen=True)
+class LoginState:
+    """A login in progress, kept under its state's hash: what the launch answering it must match."""
+
+    nonce: str
+    browser_hash: str
+    platform_id: int
+    expires_at: datetime
+
+
+@dataclass(frozen=True)
+class PendingDeepLink:
+    """A deep-linking request waiting for the instructor's choice; `data` is the platform's JSON text."""
+
+    id: str
+    session_hash: str
+    platform_id: int
+    deployment_id: str
+    return_url: str
+    data: str | None
+    accept_multiple: bool
+    expires_at: datetime
+
+
+class LaunchStore(Protocol):
+    """The launch flow's short-lived state: logins in progress, spent nonces, deep-link requests.
+    Saving drops what expired before `now`."""
+
+    def save_login(self, state_hash: str, login: LoginState, now: datetime) -> None: ...
+
+    def take_login(self, state_hash: str) -> LoginState | None:
+        """The login, removed: of concurrent takers exactly one gets it."""
+        ...
+
+    def spend_nonce(self, platform_id: int, nonce: str, expires_at: datetime, now: datetime) -> bool:
+        """Remember the nonce until `expires_at`; False if it was already spent (a replay)."""
+        ...
+
+    def save_deep_link(self, request: PendingDeepLink, now: datetime) -> None: ...
+
+    def get_deep_link(self, request_id: str) -> PendingDeepLink | None:
+        """As saved, expired or not (the caller judges)."""
+        ...
+
+    def drop_deep_link(self, request_id: str) -> None: ...
+
+
+class LtiSessionStore(Protocol):
+    """Our sessions opened by launches, kept under the hash of the cookie's id."""
+
+    def save(self, id_hash: str, record: SessionRecord, now: datetime) -> None:
+        """Store a new session (dropping those expired before `now`)."""
+        ...
+
+    def get(self, id_hash: str) -> SessionRecord | None:
+        """As saved, expired or not (the caller judges)."""
         ...

@@ -73,11 +73,7 @@ async def _caller(request: Request, context: LtiContext, *, allow_key: bool) -> 
 
 
 async def _ancestors(context: LtiContext) -> list[str]:
-    def load() -> list[str]:
-        with context.database.session(read_only=True) as session:
-            return platform_origins(session)
-
-    return await run_in_threadpool(load)
+    return await run_in_threadpool(platform_origins, context.stores.platforms)
 
 
 def tolerance_text(tolerance: Mapping[str, Any] | None, units: str | None) -> str:
@@ -155,7 +151,7 @@ def _load(context: LtiContext, problem_id: str, student: str) -> Loaded | None:
         view = context.student_view(problem_id, student)
     except LookupError:
         return None
-    work = load_work(context.submission_store, problem_id, student, view.get("parts", []))
+    work = load_work(context.stores.submissions, problem_id, student, view.get("parts", []))
     return Loaded(view, work, _figure(context, problem_id, student))
 
 
@@ -266,7 +262,7 @@ def _problem_list(request: Request, student: str) -> list[dict[str, Any]]:
             {"id": part.id, "max_attempts": part.max_attempts or document.max_attempts}
             for part in document.parts
         ]
-        work = load_work(context.submission_store, record.id, student, parts)
+        work = load_work(context.stores.submissions, record.id, student, parts)
         rows.append({"id": record.id, "title": document.title, "topics": document.topics, "work": work})
     return rows
 

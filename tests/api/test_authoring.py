@@ -152,7 +152,9 @@ def test_grade_passback_problems_are_for_instructors(client, instructor_headers,
     assert client.get("/v1/lti/delivery-problems", headers=student_headers).status_code == 403
 
 
-def test_upload_using_abs_is_accepted_and_graded_through_the_worker(client, instructor_headers, student_headers):
+def test_upload_using_abs_is_accepted_and_graded_through_the_worker(
+    client, instructor_headers, student_headers
+):
     # The reference crosses into the grading worker compiled, never printed by sympy (`Abs(...)`) and
     # read again by the parser, which knows only `abs`.
     doc = yaml.safe_load((BANK / "atwood" / "problem.yaml").read_text())

@@ -25,6 +25,7 @@ from app.lti.sessions import CSRF_HEADER, SESSION_COOKIE, open_session
 from app.main import create_app
 from app.ratelimit import MemoryRateLimiter
 from app.settings import Settings
+from app.storage import sql_stores
 from tests.api.conftest import _headers
 from tests.cli.test_commands import BANK
 from tests.lti.fake_lms import register_fake_lms
@@ -61,10 +62,15 @@ def api(db: Database, grading_pool: Any) -> Iterator[Api]:
     settings = Settings(database_url=db.url, secret="test-secret-0123456789", warm_up=False)
     register_fake_lms(db)
     instructor_key, instructor = create_key(db, "instructor", "prof")
+    session_id, record = open_session(
+        sql_stores(db).lti_sessions,
+        platform_id=1,
+        sub="prof",
+        role=Role.INSTRUCTOR,
+        name="Prof",
+        now=utc_now(),
+    )
     with db.session() as session:
-        session_id, record = open_session(
-            session, platform_id=1, sub="prof", role=Role.INSTRUCTOR, name="Prof", now=utc_now()
-        )
         for problem_id, limit in ((OWNED, None), (LIMITED, 1)):
             document = atwood(problem_id, max_attempts=limit)
             problem_repository.create_problem(session, problem_id, document, owner_key_id=instructor.id)
@@ -168,7 +174,9 @@ def unsupported_media_type(api: Api, method: str, path: str) -> httpx.Response:
 
 def malformed(api: Api, method: str, path: str) -> httpx.Response:
     if method in ("post", "put"):
-        url = path.replace("{problem_id}", OWNED if method == "put" else "yo-yo").replace("{part_id}", "acceleration")
+        url = path.replace("{problem_id}", OWNED if method == "put" else "yo-yo").replace(
+            "{part_id}", "acceleration"
+        )
         headers = {**api.instructor, "Content-Type": "application/json"}
         return api.client.request(method.upper(), url, content=b'{"answer": ', headers=headers)
     if path == "/v1/submissions":
@@ -235,7 +243,9 @@ def documented(spec: dict[str, Any]) -> list[tuple[str, str, int]]:
     ]
 
 
-def schema_error(spec: dict[str, Any], method: str, path: str, status: int, response: httpx.Response) -> str | None:
+def schema_error(
+    spec: dict[str, Any], method: str, path: str, status: int, response: httpx.Response
+) -> str | None:
     """Why the response does not match what the document says, or None."""
     if response.status_code != status:
         return f"answered {response.status_code}: {response.text[:200]}"

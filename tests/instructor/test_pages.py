@@ -21,6 +21,7 @@ from app.instructor.session import COOKIE
 from app.keys import revoke_key
 from app.lti.models import LtiGradeTarget, LtiPlatform, LtiScoreOutbox
 from app.lti.sessions import SESSION_COOKIE, open_session
+from app.storage import sql_stores
 from physics.numeric import round_sigfigs
 from physics.verdict import Outcome, ReadAs, Reason, Verdict
 from problems.loader import BANK_DIR
@@ -40,11 +41,11 @@ def upload_text(problem_id: str = "my-yoyo", title: str = "My yo-yo") -> str:
 
 def lms_session(database: Database, role: Role, sub: str = "lee") -> str:
     register_fake_lms(database)
-    with database.session() as session:
-        platform_id = session.scalars(select(LtiPlatform.id)).one()
-        cookie, _ = open_session(
-            session, platform_id=platform_id, sub=sub, role=role, name="Lee", now=utc_now()
-        )
+    stores = sql_stores(database)
+    [platform] = stores.platforms.list()
+    cookie, _ = open_session(
+        stores.lti_sessions, platform_id=platform.id, sub=sub, role=role, name="Lee", now=utc_now()
+    )
     return cookie
 
 
@@ -201,7 +202,9 @@ def test_problem_page_renders_references_mistakes_limits_and_every_method_as_mat
 def test_problem_page_shows_the_forces_on_each_body_beside_the_worked_solutions(signed_in: TestClient):
     html = signed_in.get("/instructor/problems/yo-yo").text
     solutions = html[html.index("Worked solutions") :]
-    diagrams = re.findall(r'<figure class="free-body">\s*<svg[^>]*role="img".*?<desc[^>]*>([^<]*)</desc>', solutions, re.S)
+    diagrams = re.findall(
+        r'<figure class="free-body">\s*<svg[^>]*role="img".*?<desc[^>]*>([^<]*)</desc>', solutions, re.S
+    )
     assert len(diagrams) == 1, "one diagram per body of the model"
     assert "Forces on" in diagrams[0] and "T at 90°" in diagrams[0], diagrams  # the string pulls straight up
 

@@ -24,6 +24,7 @@ from app.lti import keys
 from app.lti.context import LtiContext
 from app.lti.router import router
 from app.settings import Settings
+from app.storage import sql_stores
 from problems.loader import BANK_DIR
 from tests.lti.fake_lms import CLIENT_ID, DEPLOYMENT_ID, ISSUER, TOOL, FakeLms, register_fake_lms
 
@@ -121,7 +122,7 @@ def fake_authenticate_key(key: str) -> Principal | None:
 @pytest.fixture
 def context(database: Database, settings: Settings, lms: FakeLms) -> LtiContext:
     return LtiContext(
-        database=database,
+        stores=sql_stores(database),
         settings=settings,
         transport=httpx.ASGITransport(app=lms.app),
         student_view=fake_student_view,

@@ -242,10 +242,20 @@ class FakeLms:
         return app
 
 
-def register_fake_lms(database: t.Any) -> None:
-    """What an administrator does with `physcheck lti add-platform` for this LMS."""
+def register_fake_lms(where: t.Any) -> None:
+    """What an administrator does with `physcheck lti add-platform` for this LMS, in a `Database` or
+    in `Stores`."""
+    from app.db.database import Database
     from app.lti.platforms import add_platform
+    from app.storage import sql_stores
 
+    stores = sql_stores(where) if isinstance(where, Database) else where
     add_platform(
-        database, ISSUER, CLIENT_ID, [DEPLOYMENT_ID], f"{ISSUER}/auth", f"{ISSUER}/token", f"{ISSUER}/jwks"
+        stores.platforms,
+        ISSUER,
+        CLIENT_ID,
+        [DEPLOYMENT_ID],
+        f"{ISSUER}/auth",
+        f"{ISSUER}/token",
+        f"{ISSUER}/jwks",
     )

@@ -9,8 +9,8 @@ import pytest
 
 from app.db.database import Database
 from app.lti.cli import register_cli
-from app.lti.platforms import deployments, find_platform
 from app.settings import Settings
+from app.storage import sql_stores
 
 ADD = [
     "lti", "add-platform", "--issuer", "https://canvas.test", "--client-id", "10000000000001",
@@ -40,10 +40,10 @@ def cli_settings(tmp_path: Path) -> Settings:
 def test_add_platform_registers_issuer_client_and_every_deployment(cli_settings: Settings):
     assert run(ADD, cli_settings) == 0
     database = Database(cli_settings.database_url)
-    with database.session() as session:
-        platform = find_platform(session, "https://canvas.test", "10000000000001")
-        assert platform.token_url == "https://canvas.test/login/oauth2/token"
-        assert sorted(deployments(session, platform.id)) == ["1:abc", "2:def"]
+    platforms = sql_stores(database).platforms
+    platform = platforms.find("https://canvas.test", "10000000000001")
+    assert platform.token_url == "https://canvas.test/login/oauth2/token"
+    assert platforms.deployments(platform.id) == ["1:abc", "2:def"]
     database.dispose()
 
 
@@ -51,9 +51,9 @@ def test_add_platform_twice_adds_deployments_without_duplicating(cli_settings: S
     assert run(ADD, cli_settings) == 0
     assert run([*ADD, "--deployment-id", "3:ghi"], cli_settings) == 0
     database = Database(cli_settings.database_url)
-    with database.session() as session:
-        platform = find_platform(session, "https://canvas.test", None)
-        assert sorted(deployments(session, platform.id)) == ["1:abc", "2:def", "3:ghi"]
+    platforms = sql_stores(database).platforms
+    platform = platforms.find("https://canvas.test", None)
+    assert platforms.deployments(platform.id) == ["1:abc", "2:def", "3:ghi"]
     database.dispose()
 
 

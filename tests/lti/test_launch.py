@@ -5,6 +5,7 @@ from __future__ import annotations
 import httpx
 import pytest
 
+from app.db.database import Database
 from app.lti.context import LtiContext
 from app.lti.models import LtiGradeTarget, LtiLoginState, LtiSession
 from tests.lti.conftest import platform_launch
@@ -14,12 +15,12 @@ pytestmark = pytest.mark.anyio
 
 
 async def test_launch_opens_session_and_redirects_to_problem_page(
-    browser: httpx.AsyncClient, context: LtiContext
+    browser: httpx.AsyncClient, context: LtiContext, database: Database
 ):
     response = await platform_launch(browser)
     assert response.status_code == 303, response.text
     assert response.headers["location"] == "/p/moving-wedge"
-    with context.database.session() as session:
+    with database.session() as session:
         row = session.query(LtiSession).one()
         assert row.student == "lti:1:student-1"
         assert row.role == "student"
@@ -35,9 +36,11 @@ async def test_session_cookie_is_cross_site_secure_partitioned_and_http_only(bro
     assert {"samesite=none", "secure", "partitioned", "httponly"} <= attributes
 
 
-async def test_launch_records_grade_target_from_ags_claim(browser: httpx.AsyncClient, context: LtiContext):
+async def test_launch_records_grade_target_from_ags_claim(
+    browser: httpx.AsyncClient, context: LtiContext, database: Database
+):
     await platform_launch(browser)
-    with context.database.session() as session:
+    with database.session() as session:
         target = session.query(LtiGradeTarget).one()
         assert (target.problem_id, target.sub, target.lineitem_url) == (
             "moving-wedge",
@@ -47,11 +50,11 @@ async def test_launch_records_grade_target_from_ags_claim(browser: httpx.AsyncCl
 
 
 async def test_instructor_role_comes_from_signed_roles(
-    browser: httpx.AsyncClient, lms: FakeLms, context: LtiContext
+    browser: httpx.AsyncClient, lms: FakeLms, context: LtiContext, database: Database
 ):
     lms.next_launch.roles = [INSTRUCTOR]
     await platform_launch(browser)
-    with context.database.session() as session:
+    with database.session() as session:
         assert session.query(LtiSession).one().role == "instructor"
 
 

@@ -9,6 +9,7 @@ from html import unescape
 import httpx
 import pytest
 
+from app.db.database import Database
 from app.db.problems import retire_problem
 from app.lti.context import LtiContext
 from app.lti.models import LtiGradeTarget, LtiSession
@@ -20,8 +21,8 @@ from tests.lti.test_launch_refusals import assert_refusal_page
 pytestmark = pytest.mark.anyio
 
 
-def rows(context: LtiContext, model: type) -> int:
-    with context.database.session() as session:
+def rows(database: Database, model: type) -> int:
+    with database.session() as session:
         return session.query(model).count()
 
 
@@ -34,7 +35,12 @@ def rows(context: LtiContext, model: type) -> int:
     ids=["both-in-query", "state-in-query", "id_token-in-query"],
 )  # fmt: skip
 async def test_id_token_or_state_in_the_query_string_is_not_read(
-    browser: httpx.AsyncClient, lms: FakeLms, context: LtiContext, in_query: set[str], code: str
+    browser: httpx.AsyncClient,
+    lms: FakeLms,
+    context: LtiContext,
+    database: Database,
+    in_query: set[str],
+    code: str,
 ):
     login = await start_login(browser)
     fields = {"id_token": rs256(launch_claims(login.nonce), lms.private_pem, lms.kid), "state": login.state}
@@ -42,7 +48,7 @@ async def test_id_token_or_state_in_the_query_string_is_not_read(
     body = {k: v for k, v in fields.items() if k not in in_query}
     response = await browser.post(f"{TOOL}/lti/launch", params=query, data=body)
     assert_refusal_page(response, 400, code)
-    assert rows(context, LtiSession) == 0
+    assert rows(database, LtiSession) == 0
 
 
 # ---- token age ---------------------------------------------------------------------------------------
@@ -58,7 +64,9 @@ def token_issued(lms: FakeLms, seconds_ago: int):
 
 async def launch_with(browser: httpx.AsyncClient, forge) -> httpx.Response:
     login = await start_login(browser)
-    return await browser.post(f"{TOOL}/lti/launch", data={"id_token": forge(login.nonce), "state": login.state})
+    return await browser.post(
+        f"{TOOL}/lti/launch", data={"id_token": forge(login.nonce), "state": login.state}
+    )
 
 
 @pytest.mark.parametrize(
@@ -70,6 +78,7 @@ async def test_token_issued_longer_ago_than_the_maximum_is_refused(
     browser: httpx.AsyncClient,
     lms: FakeLms,
     context: LtiContext,
+    database: Database,
     max_age: int | None,
     seconds_ago: int,
     accepted: bool,
@@ -81,30 +90,30 @@ async def test_token_issued_longer_ago_than_the_maximum_is_refused(
         assert response.status_code == 303, response.text
     else:
         assert_refusal_page(response, 401, "token_too_old")
-        assert rows(context, LtiSession) == 0
+        assert rows(database, LtiSession) == 0
 
 
 # ---- the problem a link names ----------------------------------------------------------------------
 
 
 async def test_launch_for_an_unknown_problem_gets_a_clear_page(
-    browser: httpx.AsyncClient, lms: FakeLms, context: LtiContext
+    browser: httpx.AsyncClient, lms: FakeLms, context: LtiContext, database: Database
 ):
     lms.next_launch.problem = "no-such-problem"
     response = await platform_launch(browser)
     assert_refusal_page(response, 404, "unknown_problem")
     assert "no-such-problem" in response.text
-    assert rows(context, LtiSession) == rows(context, LtiGradeTarget) == 0
+    assert rows(database, LtiSession) == rows(database, LtiGradeTarget) == 0
 
 
 async def test_launch_for_a_retired_problem_gets_a_clear_page(
-    browser: httpx.AsyncClient, lms: FakeLms, context: LtiContext
+    browser: httpx.AsyncClient, lms: FakeLms, context: LtiContext, database: Database
 ):
-    with context.database.session() as session:
+    with database.session() as session:
         retire_problem(session, "yo-yo")
     lms.next_launch.problem = "yo-yo"
     assert_refusal_page(await platform_launch(browser), 404, "unknown_problem")
-    assert rows(context, LtiGradeTarget) == 0
+    assert rows(database, LtiGradeTarget) == 0
 
 
 # ---- deep linking: accept_multiple and accept_types ------------------------------------------------
@@ -123,7 +132,9 @@ def form_action(html: str) -> str:
 
 
 async def open_picker(browser: httpx.AsyncClient, lms: FakeLms, **settings) -> httpx.Response:
-    lms.next_launch = NextLaunch(roles=[INSTRUCTOR], problem=None, lineitem=None, deep_linking=True, **settings)
+    lms.next_launch = NextLaunch(
+        roles=[INSTRUCTOR], problem=None, lineitem=None, deep_linking=True, **settings
+    )
     return await platform_launch(browser)
 
 
@@ -156,9 +167,9 @@ async def test_multiple_choice_platform_gets_checkboxes(browser: httpx.AsyncClie
 
 
 async def test_platform_that_takes_no_resource_links_gets_a_clear_page(
-    browser: httpx.AsyncClient, lms: FakeLms, context: LtiContext
+    browser: httpx.AsyncClient, lms: FakeLms, context: LtiContext, database: Database
 ):
     response = await open_picker(browser, lms, accept_types={"link", "file"})
     assert_refusal_page(response, 400, "resource_links_not_accepted")
     assert "picker" not in response.text and 'name="problem"' not in response.text
-    assert rows(context, LtiSession) == 0
+    assert rows(database, LtiSession) == 0

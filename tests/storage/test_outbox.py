@@ -66,11 +66,9 @@ class Passback:
 
 
 @pytest.fixture
-def platform(backend: str, request: pytest.FixtureRequest) -> PlatformRecord:
-    """The LMS, registered where the store keeps platforms (the fakes take the record as given)."""
-    if backend == "memory":
-        return PlatformRecord(1, ISSUER, CLIENT_ID, *URLS)
-    return add_platform(request.getfixturevalue("db"), ISSUER, CLIENT_ID, [DEPLOYMENT_ID], *URLS)
+def platform(stores: Stores) -> PlatformRecord:
+    """The LMS, registered where the stores keep platforms."""
+    return add_platform(stores.platforms, ISSUER, CLIENT_ID, [DEPLOYMENT_ID], *URLS)
 
 
 @pytest.fixture
