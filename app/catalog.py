@@ -1,9 +1,9 @@
 """Problems as the service sees them: stored versions, read and compiled once, per variant.
 
 A compiled problem (derivations, prepared references, sample points) is persisted in the database,
-keyed by the version's content hash and the checker code's fingerprint, so a restarted or new instance
-loads it in milliseconds instead of deriving the bank again for a minute, and only a changed version
-(or changed code) is compiled again.
+keyed by the version's content hash and the engine's digest (`problems.fingerprint`: what the code does,
+not its docstrings), so a restarted or new instance loads it in milliseconds instead of deriving the
+bank again for minutes, and only a changed version (or a change to what the code does) is compiled again.
 """
 
 from __future__ import annotations
@@ -27,8 +27,9 @@ from physics.checking import CheckJob
 from physics.engine.model import Model
 from physics.figures import model_figure
 from physics.figures.free_body import free_body_figure
-from problems.compiled import CompiledProblem, code_fingerprint, compile_problem, document_digest
+from problems.compiled import CompiledProblem, compile_problem, document_digest
 from problems.errors import ProblemInvalid
+from problems.fingerprint import engine_digest, source_digest
 from problems.loader import load_bank, parse_problem
 from problems.modelinfo import load_doc_model
 from problems.schema import ProblemDocument
@@ -41,13 +42,13 @@ log = logging.getLogger("physcheck.catalog")
 T = TypeVar("T")
 
 
-_MEANING_CHECKED: set[str] = set()  # digests (document and code) found sound in this process
+_MEANING_CHECKED: set[str] = set()  # digests (document and code files) found sound in this process
 
 
 def _meaning_faults(doc: ProblemDocument) -> list[tuple[str, str]]:
     """semantic_errors, remembered when sound: another app in this process (a test's fresh database)
     stores the same bank without reading every expression again."""
-    digest = f"{document_digest(doc)}:{code_fingerprint()}"
+    digest = f"{document_digest(doc)}:{source_digest()}"
     if digest in _MEANING_CHECKED:
         return []
     faults = semantic_errors(doc)
@@ -67,10 +68,27 @@ class CompiledStore:
     def __init__(self, cache: CompiledCache, secret: str):
         self._cache = cache
         self._mac_key = hashlib.sha256(b"physcheck compiled problems\0" + secret.encode()).digest()
+        self._engine: str | None = None
+        self._engine_lock = threading.Lock()
 
-    @staticmethod
-    def key(record: ProblemRecord) -> str:
-        return hashlib.sha256(f"{record.document_hash}:{code_fingerprint()}".encode()).hexdigest()
+    def key(self, record: ProblemRecord) -> str:
+        return hashlib.sha256(f"{record.document_hash}:{self.engine()}".encode()).hexdigest()
+
+    def engine(self) -> str:
+        """The engine's digest, remembered in the store under the digest of its files: computing it
+        parses every engine module (half a CPU-second), which a restart of unchanged code skips."""
+        with self._engine_lock:
+            if self._engine is None:
+                # Hashed as compiled entries' keys are (the column holds 64 characters), from another
+                # kind of text: "engine:" and a digest, theirs a document hash, ":" and a digest.
+                key = hashlib.sha256(f"engine:{source_digest()}".encode()).hexdigest()
+                found = self._cache.get(key)
+                if found is not None and self._verifies(key, *found):
+                    self._engine = found[0].decode()
+                else:
+                    self._engine = engine_digest()
+                    self._put(key, self._engine.encode(), "the engine digest")
+            return self._engine
 
     def _mac(self, key: str, payload: bytes) -> str:
         return hmac.new(self._mac_key, key.encode() + b"\0" + payload, hashlib.sha256).hexdigest()
@@ -106,12 +124,14 @@ class CompiledStore:
         return dataclasses.replace(compiled, version=record.version)
 
     def save(self, record: ProblemRecord, compiled: CompiledProblem) -> None:
-        key = self.key(record)
         payload = pickle.dumps(compiled, protocol=pickle.HIGHEST_PROTOCOL)
+        self._put(self.key(record), payload, f"the compilation of {record.id!r}")
+
+    def _put(self, key: str, payload: bytes, what: str) -> None:
         try:
             self._cache.put(key, payload, self._mac(key, payload))
         except Exception as error:  # a cache: another instance may have written it meanwhile
-            log.warning("could not store the compilation of %r: %s", record.id, error)
+            log.warning("could not store %s: %s", what, error)
 
 
 class Catalog:

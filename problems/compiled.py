@@ -11,15 +11,11 @@ from __future__ import annotations
 
 import hashlib
 import json
-import sys
 import threading
 from collections import OrderedDict
 from collections.abc import Mapping
 from dataclasses import dataclass
-from functools import cache
-from pathlib import Path
 
-import mpmath
 import sympy
 
 from physics.checking import CheckJob, Question, read_relation
@@ -49,7 +45,6 @@ __all__ = [
     "CompiledProblem",
     "CompiledSymbolicPart",
     "build_problem",
-    "code_fingerprint",
     "compile_problem",
     "document_digest",
 ]
@@ -91,20 +86,6 @@ class CompiledProblem:
     def reference_expressions(self) -> dict[str, sympy.Expr]:
         """Every part's reference expression, for the parts answered by one (instructor-only)."""
         return {pid: p.expression for pid, p in self.parts.items() if p.expression is not None}
-
-
-@cache
-def code_fingerprint() -> str:
-    """A digest of the code that compiles and grades (physics/, problems/) and the libraries it leans
-    on: whatever is persisted under it is stale as soon as any of that changes."""
-    digest = hashlib.sha256()
-    digest.update(f"{sys.version_info[:2]} sympy {sympy.__version__} mpmath {mpmath.__version__}".encode())
-    root = Path(__file__).resolve().parent.parent
-    for package in ("physics", "problems"):
-        for path in sorted((root / package).rglob("*.py")):
-            digest.update(str(path.relative_to(root)).encode())
-            digest.update(path.read_bytes())
-    return digest.hexdigest()
 
 
 def document_digest(doc: ProblemDocument) -> str:

@@ -1,5 +1,5 @@
 """The catalog compiles each problem version once, however many requests arrive first, and keeps it
-across restarts: only a changed version (or changed code) is compiled again."""
+across restarts: only a changed version (or code that does something else) is compiled again."""
 
 from __future__ import annotations
 
@@ -134,11 +134,30 @@ def test_a_tampered_or_foreign_entry_is_ignored_and_compiled_again(db, small_ban
     assert sorted(compilations[4:]) == ["atwood", "incline-pulley"]
 
 
-def test_changed_checker_code_compiles_again(db, small_bank, compilations, monkeypatch):
+def test_changed_engine_code_compiles_again(db, small_bank, compilations, monkeypatch):
     start(db, small_bank)
-    monkeypatch.setattr(catalog_module, "code_fingerprint", lambda: "the code has changed")
+    monkeypatch.setattr(catalog_module, "source_digest", lambda: "the files have changed")
+    monkeypatch.setattr(catalog_module, "engine_digest", lambda: "and what they do with them")
     start(db, small_bank)
     assert sorted(compilations[2:]) == ["atwood", "incline-pulley"]
+
+
+def test_an_edit_that_changes_no_code_keeps_the_compiled_bank(db, small_bank, compilations, monkeypatch):
+    start(db, small_bank)
+    monkeypatch.setattr(catalog_module, "source_digest", lambda: "a docstring was edited")
+    restarted = start(db, small_bank)
+    assert sorted(compilations) == ["atwood", "incline-pulley"]  # nothing compiled again
+    assert grades_its_reference(restarted)
+
+
+def test_a_restart_of_unchanged_files_does_not_parse_the_engine_again(db, small_bank, monkeypatch):
+    start(db, small_bank)
+
+    def parse_again() -> str:
+        raise AssertionError("the engine's digest was computed again")
+
+    monkeypatch.setattr(catalog_module, "engine_digest", parse_again)  # as in a new process
+    assert grades_its_reference(start(db, small_bank))
 
 
 def test_an_edited_bank_document_has_its_meaning_checked_again(db, small_bank):
