@@ -292,8 +292,12 @@ def symbolic_question(
     return compiled_adhoc(expected, symbols, constraints, mistakes, limits, allowed).question
 
 
+@lru_cache(maxsize=1024)
 def symbol_spec(decl: SymbolDecl) -> SymbolSpec:
-    """The core's spec for a declared symbol, its texts read; SpecError (with path) on a bad one."""
+    """The core's spec for a declared symbol, its texts read; SpecError (with path) on a bad one.
+
+    Cached: references of a course declare the same symbols again and again (`m` in kg, `theta` in
+    (0, pi/2)), and reading their units and ranges is a fifth of reading a new reference."""
     dimension = None
     if decl.dimension is not None:
         try:

@@ -33,6 +33,11 @@ class Dimension:
         return not self._exponents
 
     def __mul__(self, other: Dimension) -> Dimension:
+        # Most factors of a physics expression are pure numbers: no new Dimension to build.
+        if not other._exponents:
+            return self
+        if not self._exponents:
+            return other
         return Dimension([*self._exponents, *other._exponents])
 
     def __truediv__(self, other: Dimension) -> Dimension:

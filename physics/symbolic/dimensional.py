@@ -49,7 +49,7 @@ def expression_dimension(expr: sympy.Basic, dims: Mapping[sympy.Symbol, Dimensio
         if expr not in dims:
             raise UnknownDimension(expr.name)
         return dims[expr]
-    if not expr.free_symbols:
+    if expr.is_Number or not expr.free_symbols:
         return DIMENSIONLESS  # numbers, pi, e, and any closed-form constant
     if expr.is_Add:
         return _sum_dimension(expr, dims)

@@ -17,7 +17,6 @@ import numpy.typing as npt
 import sympy
 
 from physics.symbolic.numeric import ZERO, Column, to_float
-from physics.symbolic.sampling import DomainSample
 
 Floats = npt.NDArray[np.float64]
 
@@ -48,11 +47,17 @@ def in_range(values: Floats) -> bool:
     return bool(np.all(np.isfinite(values)) and np.all((nonzero > low) & (nonzero < high)))
 
 
-def float_sample(sample: DomainSample, values: Column) -> FloatSample:
-    columns = {s: np.array([to_float(v) for v in sample.columns[s]]) for s in sample.symbols}  # type: ignore[arg-type]
+def rounded(values: Column) -> tuple[Floats, bool]:
+    """Multiprecision values in float64 (nan where undefined), and whether a nonzero one underflowed."""
     floats = np.array([math.nan if v is None else to_float(v) for v in values])
     # An exact zero stays 0.0; a nonzero value that rounds to 0.0 underflowed.
     underflow = any(v is not None and v != ZERO and f == 0 for v, f in zip(values, floats, strict=True))
+    return floats, underflow
+
+
+def float_sample(
+    columns: Mapping[sympy.Symbol, Floats], floats: Floats, underflow: bool = False
+) -> FloatSample:
     usable = not underflow and in_range(floats) and all(in_range(c) for c in columns.values())
     magnitudes = np.abs(floats[np.isfinite(floats)])
     scale = float(np.median(magnitudes)) if magnitudes.size else 1.0

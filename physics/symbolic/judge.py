@@ -202,7 +202,7 @@ def _refuted_at(answer: sympy.Expr, reference: PreparedReference, index: int) ->
     """The answer, in multiprecision at one sample point, is defined there and differs (rule 1)."""
     point = {s: [reference.sample.columns[s][index]] for s in reference.sample.symbols}
     value = Evaluator(point, 1, PREC)(answer)[0]
-    expected = reference.values[index]
+    (expected,) = reference.values_at((index,))
     return (
         value is not None
         and expected is not None
@@ -286,7 +286,7 @@ def _constant_factor(answer: sympy.Expr, values: Floats, reference: PreparedRefe
     else:
         return None
     (mine,) = _at_points((answer,), reference, indexes)
-    theirs = [reference.values[i] for i in indexes]
+    theirs = reference.values_at(indexes)
     if any(v is None for v in (*mine, *theirs)):
         return None
     first, second = (

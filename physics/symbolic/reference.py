@@ -1,7 +1,9 @@
 """Everything about a reference answer that does not depend on the student: prepared once, cached.
 
 The sample points, the reference's values there (and at two points with twice the precision), the
-known mistakes' values, the limiting cases, and the dimension the answer must have.
+known mistakes' values, the limiting cases, and the dimension the answer must have. Values float64
+gives exactly enough (physics.symbolic.bounded) are not computed in multiprecision until a check
+needs them: most checks are decided from float64 and a few multiprecision points.
 """
 
 from __future__ import annotations
@@ -12,17 +14,19 @@ from decimal import Decimal
 from fractions import Fraction
 from functools import cached_property
 
+import numpy as np
 import sympy
+from mpmath import libmp
 
 from physics.dimensions import Dimension, describe
 from physics.errors import SpecError
 from physics.symbolic.compare import PREC, PRECISE_PREC, typical_scale
 from physics.symbolic.dimensional import DimensionMismatch, UnknownDimension, expression_dimension
 from physics.symbolic.domain import LimitCase, SymbolicContext
-from physics.symbolic.floats import FloatEvaluator, Floats, FloatSample, float_sample, in_range
+from physics.symbolic.floats import FloatEvaluator, Floats, FloatSample, float_sample, in_range, rounded
 from physics.symbolic.limits import PreparedLimit, prepare_limit
-from physics.symbolic.numeric import Column, Evaluator, Mpf
-from physics.symbolic.sampling import DomainSample, sample_domain, seed_for
+from physics.symbolic.numeric import ONE, Column, Evaluator, Mpf
+from physics.symbolic.sampling import DomainSample, domain_seed, sample_domain
 
 SAMPLE_SIZE = 24
 PRECISE_POINTS = 2
@@ -40,14 +44,40 @@ class PreparedReference:
     expected: sympy.Expr
     context: SymbolicContext
     sample: DomainSample
-    values: Column  # the reference at every sample point (all defined)
     scale: Mpf  # typical |reference|: the absolute floor of comparisons
-    precise_columns: Mapping[sympy.Symbol, Column]  # PRECISE_POINTS of the sample...
-    precise_values: Column  # ...and the reference there at PRECISE_PREC
     dimension: Dimension | None  # what the answer must have; None when unknown
     dims: Mapping[sympy.Symbol, Dimension]  # the symbols whose dimension is declared
     mistake_exprs: tuple[tuple[sympy.Expr, str], ...]  # (expression, feedback), over the context's symbols
     limit_cases: tuple[LimitCase, ...]
+
+    @cached_property
+    def values(self) -> Column:
+        """The reference at every sample point (all defined), in multiprecision: computed on first use
+        unless sampling had to compute them."""
+        known = self.sample.required[0]
+        if known is not None:
+            return known
+        return Evaluator(self.sample.columns, self.sample.size, PREC)(self.expected)
+
+    def values_at(self, indexes: tuple[int, ...]) -> Column:
+        """The reference at a few sample points, in multiprecision (the same numbers as `values`)."""
+        if "values" in self.__dict__ or self.sample.required[0] is not None:
+            return [self.values[i] for i in indexes]
+        columns = {s: [self.sample.columns[s][i] for i in indexes] for s in self.sample.symbols}
+        return Evaluator(columns, len(indexes), PREC)(self.expected)
+
+    @cached_property
+    def precise_columns(self) -> Mapping[sympy.Symbol, Column]:
+        """The first PRECISE_POINTS sample points..."""
+        size = min(PRECISE_POINTS, self.sample.size)
+        return {s: list(self.sample.columns[s][:size]) for s in self.sample.symbols}
+
+    @cached_property
+    def precise_values(self) -> Column:
+        """...and the reference there at PRECISE_PREC."""
+        return Evaluator(self.precise_columns, min(PRECISE_POINTS, self.sample.size), PRECISE_PREC)(
+            self.expected
+        )
 
     @cached_property
     def mistakes(self) -> tuple[PreparedMistake, ...]:
@@ -63,7 +93,10 @@ class PreparedReference:
     @cached_property
     def floats(self) -> FloatSample:
         """The sample and the reference's values in float64, for the first look at an answer."""
-        return float_sample(self.sample, self.values)
+        known = self.sample.required_floats[0]
+        if known is not None:
+            return float_sample(self.sample.float_columns, known)
+        return float_sample(self.sample.float_columns, *rounded(self.values))
 
     @cached_property
     def float_mistakes(self) -> tuple[Floats | None, ...]:
@@ -77,6 +110,8 @@ class PreparedReference:
 
     def complete(self) -> PreparedReference:
         """Everything computed now (before the reference is persisted or sent to another process)."""
+        self.values  # noqa: B018
+        self.precise_values  # noqa: B018
         self.mistakes  # noqa: B018
         self.limits  # noqa: B018
         self.floats  # noqa: B018
@@ -148,16 +183,8 @@ def prepare_reference(expected: sympy.Expr, context: SymbolicContext) -> Prepare
     )
     # The points depend on the domain only (not on the reference): references over the same symbols
     # share them, so a new reference costs one evaluation at points already drawn (sampling.py).
-    seed = seed_for(
-        sorted((s.name, repr(spec)) for s, spec in context.symbols.items()),
-        [sympy.srepr(c) for c in constraints],
-    )
+    seed = domain_seed(context, constraints)
     sample = sample_domain(context, constraints, (reference,), SAMPLE_SIZE, seed, PREC)
-    values = sample.required[0]  # evaluated while sampling (only points where it is defined are kept)
-    scale = typical_scale(values)
-    precise = min(PRECISE_POINTS, sample.size)
-    precise_columns = {s: list(sample.columns[s][:precise]) for s in sample.symbols}
-    precise_values = Evaluator(precise_columns, precise, PRECISE_PREC)(reference)
     dims = _declared_dimensions(context)
     mistakes = tuple(
         (_reference_side(mistake.expr, context, ("mistakes", index)), mistake.feedback)
@@ -168,15 +195,25 @@ def prepare_reference(expected: sympy.Expr, context: SymbolicContext) -> Prepare
         expected=reference,
         context=context,
         sample=sample,
-        values=values,
-        scale=scale,
-        precise_columns=precise_columns,
-        precise_values=precise_values,
+        scale=_typical_scale(sample),
         dimension=_reference_dimension(reference, context, dims),
         dims=dims,
         mistake_exprs=mistakes,
         limit_cases=limits,
     )
+
+
+def _typical_scale(sample: DomainSample) -> Mpf:
+    """typical_scale of the reference's values, from float64 when sampling found them exactly enough
+    (the scale is only a floor for tolerances: a relative 2^-36 in it changes nothing)."""
+    floats = sample.required_floats[0]
+    if floats is None:
+        values = sample.required[0]
+        assert values is not None  # sampling computes one or the other
+        return typical_scale(values)
+    magnitudes = np.sort(np.abs(floats))
+    median = float(magnitudes[len(magnitudes) // 2])
+    return ONE if median == 0 else libmp.from_float(median)
 
 
 def _reference_side_relation(

@@ -3,24 +3,33 @@
 Each batch is a Latin hypercube (every symbol's range is cut into as many strata as there are points,
 one point per stratum), so both halves of θ ∈ (0, π) are always visited; points that break a
 constraint, or where the reference is undefined, are rejected and another batch is drawn.
+
+Where the reference is defined is decided in float64 wherever float64 can vouch for it
+(physics.symbolic.bounded), and in multiprecision at the other points: the same points are kept as by
+multiprecision alone. The reference's multiprecision values are then computed only where float64 cannot
+give them to within 2^-36 (PRECISE_RELATIVE); the reference computes the rest when a check needs them.
 """
 
 from __future__ import annotations
 
+import functools
 import hashlib
 import math
 import random
 import threading
 from collections import OrderedDict
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
+import numpy as np
 import sympy
 from mpmath import libmp
 
 from physics.errors import SpecError
+from physics.symbolic.bounded import Bounded, BoundedEvaluator, Unsupported
 from physics.symbolic.domain import SymbolicContext, SymbolSpec, symbol_assumptions
+from physics.symbolic.floats import Floats
 from physics.symbolic.numeric import (
     RND,
     Column,
@@ -30,6 +39,7 @@ from physics.symbolic.numeric import (
     evaluate_constant,
     from_int,
     is_negative,
+    to_float,
 )
 
 # Unbounded positive values are drawn log-uniformly over two decades around 1: dimensions are checked
@@ -38,6 +48,8 @@ _LOG10_SPAN = 1.0
 _EDGE = 1e-9  # keeps points strictly inside open ranges
 _INTEGER_SPAN = 12
 MAX_BATCHES = 100  # a constraint may keep only a few percent of the candidates
+# float64 values this close to the multiprecision ones stand in for them (floats.AGREE is 1e-9).
+PRECISE_RELATIVE = 2.0**-36
 
 Axis = Callable[[float], Mpf]
 
@@ -47,7 +59,12 @@ class DomainSample:
     symbols: tuple[sympy.Symbol, ...]
     columns: Mapping[sympy.Symbol, Column]
     size: int
-    required: tuple[Column, ...] = ()  # the `required` expressions' values at the points, in order
+    # The same points rounded to float64 (derived from `columns`, hence not compared).
+    float_columns: Mapping[sympy.Symbol, Floats] = field(compare=False)
+    # The `required` expressions at the points, in order: in float64 where float64 gives every value to
+    # within PRECISE_RELATIVE of multiprecision (else None), in multiprecision otherwise (else None).
+    required_floats: tuple[Floats | None, ...] = field(default=(), compare=False)
+    required: tuple[Column | None, ...] = ()
 
     def point(self, index: int) -> dict[sympy.Symbol, Mpf]:
         return {s: self.columns[s][index] for s in self.symbols}  # type: ignore[misc]
@@ -57,6 +74,23 @@ def seed_for(*parts: object) -> int:
     """A seed that depends only on the reference side (not on Python's per-run string hashing)."""
     digest = hashlib.sha256(repr(parts).encode()).digest()
     return int.from_bytes(digest[:8], "big")
+
+
+def domain_seed(context: SymbolicContext, constraints: Sequence[sympy.Basic]) -> int:
+    """The seed of a domain: its symbols' specs and its constraints (printed by sympy: computed once
+    per domain, it would be a tenth of preparing a reference)."""
+    return _domain_seed(
+        tuple(sorted(context.symbols.items(), key=lambda item: item[0].name)), tuple(constraints)
+    )
+
+
+@functools.lru_cache(maxsize=256)
+def _domain_seed(
+    symbols: tuple[tuple[sympy.Symbol, SymbolSpec], ...], constraints: tuple[sympy.Basic, ...]
+) -> int:
+    return seed_for(
+        sorted((s.name, repr(spec)) for s, spec in symbols), [sympy.srepr(c) for c in constraints]
+    )
 
 
 def _float(value: float, prec: int) -> Mpf:
@@ -172,6 +206,8 @@ class _Batch:
 
     columns: Mapping[sympy.Symbol, Column]
     allowed: tuple[bool, ...]
+    floats: Mapping[sympy.Symbol, Floats]
+    rng_state: Any  # the generator's state after drawing this batch, to draw the next ones
 
 
 _BATCH_CACHE_SIZE = 256
@@ -195,7 +231,8 @@ def _draw(
     ok = [True] * size
     for relation in constraints:
         ok = [a and b for a, b in zip(ok, _holds(relation, evaluate, size), strict=True)]
-    return _Batch(columns, tuple(ok))
+    floats = {s: np.array([to_float(v) for v in column]) for s, column in columns.items()}  # type: ignore[arg-type]
+    return _Batch(columns, tuple(ok), floats, rng.getstate())
 
 
 def _first_batch(
@@ -233,6 +270,39 @@ def _batch_key(
     return (symbols, tuple(constraints), size, seed, prec)
 
 
+def _bounded(
+    exprs: Sequence[sympy.Basic], floats: Mapping[sympy.Symbol, Floats], size: int
+) -> list[Bounded | None]:
+    evaluate = BoundedEvaluator(floats, size)
+    found: list[Bounded | None] = []
+    for expr in exprs:
+        try:
+            found.append(evaluate(expr))
+        except Unsupported:
+            found.append(None)
+    return found
+
+
+def _defined(
+    batch: _Batch, required: Sequence[sympy.Basic], bounded: list[Bounded | None], prec: int
+) -> list[bool]:
+    """Where the constraints hold and every required expression is defined in multiprecision: vouched
+    for by float64 where it can, evaluated in multiprecision at the other points."""
+    ok = list(batch.allowed)
+    vouched = np.ones(len(ok), dtype=bool)
+    for found in bounded:
+        vouched &= found.vouched if found is not None else False
+    unsure = [i for i, allowed in enumerate(ok) if allowed and not vouched[i]]
+    if unsure:
+        columns = {s: [column[i] for i in unsure] for s, column in batch.columns.items()}
+        evaluate = Evaluator(columns, len(unsure), prec)
+        for expr in required:
+            for index, value in zip(unsure, evaluate(expr), strict=True):
+                if value is None:
+                    ok[index] = False
+    return ok
+
+
 def sample_domain(
     context: SymbolicContext,
     constraints: Sequence[sympy.Basic],
@@ -252,33 +322,35 @@ def sample_domain(
     symbols = tuple(sorted(context.symbols, key=lambda s: s.name))
     rng = random.Random(seed)  # noqa: S311 - reproducible sampling, not secrecy
     kept: dict[sympy.Symbol, Column] = {s: [] for s in symbols}
-    kept_values: list[Column] = [[] for _ in required]
+    kept_floats: dict[sympy.Symbol, list[Floats]] = {s: [] for s in symbols}
+    kept_values: list[list[Floats]] = [[] for _ in required]
+    precise = [True] * len(required)
     found = 0
     first = _first_batch(context, constraints, size, seed, prec)
     axes: list[Axis] | None = None
     for batch_number in range(MAX_BATCHES):
         if batch_number == 0 and first is not None:
             batch = first
-            _latin_hypercube(rng, len(symbols), size)  # the draws it took, so later batches are the same
         else:
             if axes is None:
                 axes = [axis_for(context.symbols[s], prec) for s in symbols]
+            if batch_number == 1 and first is not None:
+                rng.setstate(first.rng_state)  # the draws the first batch took, so later ones are the same
             batch = _draw(symbols, axes, constraints, rng, size, prec)
             if batch_number == 0:
                 _remember_first_batch(context, constraints, size, seed, prec, batch)
-        evaluate = Evaluator(batch.columns, size, prec)
-        values = [evaluate(expr) for expr in required]
-        ok = list(batch.allowed)
-        for column in values:
-            ok = [a and v is not None for a, v in zip(ok, column, strict=True)]
-        for index in (i for i in range(size) if ok[i]):
-            if found == size:
-                break
-            for s in symbols:
-                kept[s].append(batch.columns[s][index])
-            for out, column in zip(kept_values, values, strict=True):
-                out.append(column[index])
-            found += 1
+        bounded = _bounded(required, batch.floats, size)
+        ok = _defined(batch, required, bounded, prec)
+        indexes = [i for i in range(size) if ok[i]][: size - found]
+        for s in symbols:
+            kept[s].extend(batch.columns[s][i] for i in indexes)
+            kept_floats[s].append(batch.floats[s][indexes])
+        for k, b in enumerate(bounded):
+            if b is None or not b.precise(PRECISE_RELATIVE)[indexes].all():
+                precise[k] = False
+            else:
+                kept_values[k].append(b.values[indexes])
+        found += len(indexes)
         if found == size:
             break
     if found < math.ceil(size / 2):
@@ -287,4 +359,14 @@ def sample_domain(
             "and the reference is defined",
             ("constraints",) if constraints else ("expected",),
         )
-    return DomainSample(symbols, kept, found, tuple(kept_values))
+    evaluate = Evaluator(kept, found, prec)
+    return DomainSample(
+        symbols,
+        kept,
+        found,
+        {s: np.concatenate(kept_floats[s]) for s in symbols},
+        tuple(
+            np.concatenate(values) if ok else None for values, ok in zip(kept_values, precise, strict=True)
+        ),
+        tuple(None if ok else evaluate(expr) for expr, ok in zip(required, precise, strict=True)),
+    )
