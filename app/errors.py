@@ -139,6 +139,11 @@ def unreadable_body_message(cause: BaseException) -> str:
     return "The body is not readable JSON."
 
 
+def _message(msg: str) -> str:
+    # A field's own validator says what it must be ("must be a finite number"), as in problem uploads.
+    return msg.removeprefix("Value error, ")
+
+
 def _path(loc: Sequence[Any]) -> str:
     parts = [str(p) for p in loc if p not in ("body",)]
     return ".".join(parts)
@@ -179,7 +184,8 @@ def install_error_handlers(app: FastAPI) -> None:
     @app.exception_handler(RequestValidationError)
     async def malformed(request: Request, error: RequestValidationError) -> JSONResponse:
         details = [
-            {"path": _path(e.get("loc", ())), "message": e.get("msg", "invalid")} for e in error.errors()
+            {"path": _path(e.get("loc", ())), "message": _message(e.get("msg", "invalid"))}
+            for e in error.errors()
         ]
         return _json(422, "malformed_request", "The request is malformed: see details.", details)
 

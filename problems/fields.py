@@ -9,8 +9,10 @@ from __future__ import annotations
 from decimal import Decimal
 from typing import Annotated, Any
 
-from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, model_validator
+from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, StrictBool, model_validator
 
+from physics.checking import SymbolDecl as CheckSymbolDecl
+from physics.numeric import DEFAULT_TOLERANCE, Tolerance
 from physics.numeric.decimals import is_number_text, read_decimal
 
 DEFAULT_SIGFIGS = 3
@@ -30,10 +32,19 @@ def _to_bound(value: Any) -> Any:
     """A range bound: a number (kept exact) or expression text such as "pi/2"; text that is a plain
     number ("1e500") is held to the limits of a number."""
     if isinstance(value, str):
-        return read_decimal(value) if is_number_text(value) else value
+        if is_number_text(value):
+            return read_decimal(value)
+        if len(value) > MAX_EXPRESSION:
+            raise ValueError(f"must be at most {MAX_EXPRESSION} characters")
+        return value
     if isinstance(value, bool) or not isinstance(value, int | float | Decimal):
         raise ValueError("must be a number or expression text")
     return read_decimal(value)
+
+
+def bound_text(value: Decimal | str) -> str:
+    """A bound as the checker reads it: number text as written, or the expression."""
+    return str(value) if isinstance(value, Decimal) else value
 
 
 def _whole(value: Any) -> Any:
@@ -62,16 +73,42 @@ class Strict(BaseModel):
     model_config = ConfigDict(extra="forbid", frozen=True, str_strip_whitespace=True)
 
 
-class SymbolDecl(Strict):
-    """A symbol the answers may use. Positive and real unless the flags say otherwise."""
+Dimension = Annotated[str, Field(min_length=1, max_length=100)]
+
+
+class SymbolDeclBase(Strict):
+    """A symbol the answers may use: positive and real unless the flags or an open range say otherwise.
+
+    The one declaration of a symbol, as `POST /v1/check` takes it (meaning and dimension optional) and,
+    with both required, as a problem document does (`SymbolDecl`); `decl` is what the checker reads.
+    """
+
+    meaning: Text | None = None
+    dimension: Dimension | None = None
+    real: StrictBool = False
+    nonzero: StrictBool = False
+    negative: StrictBool = False
+    integer: StrictBool = False
+    range: tuple[Bound, Bound] | None = None
+
+    def decl(self, name: str) -> CheckSymbolDecl:
+        """The symbol as the checker's plain text declaration, read in the process that grades."""
+        return CheckSymbolDecl(
+            name=name,
+            dimension=self.dimension,
+            real=self.real,
+            nonzero=self.nonzero,
+            negative=self.negative,
+            integer=self.integer,
+            range=None if self.range is None else (bound_text(self.range[0]), bound_text(self.range[1])),
+        )
+
+
+class SymbolDecl(SymbolDeclBase):
+    """A symbol of a problem document: its meaning and its dimension are required."""
 
     meaning: Text
-    dimension: Annotated[str, Field(min_length=1, max_length=100)]
-    real: bool = False
-    nonzero: bool = False
-    negative: bool = False
-    integer: bool = False
-    range: tuple[Bound, Bound] | None = None
+    dimension: Dimension
 
 
 class GivenDecl(Strict):
@@ -92,6 +129,8 @@ class GivenDecl(Strict):
 
 
 class MistakeDecl(Strict):
+    """A known wrong answer and what to tell the student who gives it."""
+
     answer: Expression
     feedback: Text
 
@@ -102,12 +141,26 @@ class LimitDecl(Strict):
 
 
 class ToleranceDecl(Strict):
-    rel: Annotated[ExactNumber, Field(gt=0)] | None = None
-    abs: Annotated[ExactNumber, Field(gt=0)] | None = None
+    """A numeric part's (or check's) tolerance; every key given must pass, and 0 asks for the exact value."""
+
+    rel: Annotated[ExactNumber, Field(ge=0)] | None = None
+    abs: Annotated[ExactNumber, Field(ge=0)] | None = None
     sigfigs: Annotated[int, BeforeValidator(_whole), Field(ge=1, le=15)] | None = None
 
     @model_validator(mode="after")
     def _at_least_one(self) -> ToleranceDecl:
+        # An empty tolerance would pass every answer.
         if self.rel is None and self.abs is None and self.sigfigs is None:
             raise ValueError("give at least one of rel, abs, sigfigs")
         return self
+
+    @classmethod
+    def of(cls, tolerance: Tolerance) -> ToleranceDecl:
+        return cls(rel=tolerance.rel, abs=tolerance.abs, sigfigs=tolerance.sigfigs)
+
+    def tolerance(self) -> Tolerance:
+        """The core's tolerance."""
+        return Tolerance(rel=self.rel, abs=self.abs, sigfigs=self.sigfigs)
+
+
+DEFAULT_TOLERANCE_DECL = ToleranceDecl.of(DEFAULT_TOLERANCE)

@@ -11,7 +11,6 @@ from typing import TYPE_CHECKING
 
 import sympy
 
-from physics.checking import SymbolDecl as CheckSymbolDecl
 from physics.checking import read_expression
 from physics.checking import symbol_spec as checker_symbol_spec
 from physics.dimensions import DIMENSIONLESS, Dimension
@@ -32,13 +31,9 @@ def read_bound(value: Decimal | str, path: tuple[str | int, ...]) -> sympy.Expr:
     return read_expression(value, {}, path)
 
 
-def bound_text(value: Decimal | str) -> str:
-    return str(value) if isinstance(value, Decimal) else value
-
-
 def symbol_spec(name: str, decl: SymbolDecl) -> SymbolSpec:
     """The core's spec for one declared symbol, read exactly as the grading workers read it."""
-    return checker_symbol_spec(check_decl(name, decl))
+    return checker_symbol_spec(decl.decl(name))
 
 
 def unit_dimension_at(text: str, path: tuple[str | int, ...]) -> Dimension:
@@ -60,16 +55,3 @@ def symbol_specs(doc: ProblemDocument) -> dict[str, SymbolSpec]:
 def symbol_table(doc: ProblemDocument) -> dict[str, sympy.Symbol]:
     """name -> sympy Symbol with the declared assumptions (positive unless said otherwise)."""
     return {name: make_symbol(spec) for name, spec in symbol_specs(doc).items()}
-
-
-def check_decl(name: str, decl: SymbolDecl) -> CheckSymbolDecl:
-    """A symbol as the checker's plain text declaration (the form `POST /v1/check` sends too)."""
-    return CheckSymbolDecl(
-        name=name,
-        dimension=decl.dimension,
-        real=decl.real,
-        nonzero=decl.nonzero,
-        negative=decl.negative,
-        integer=decl.integer,
-        range=(bound_text(decl.range[0]), bound_text(decl.range[1])) if decl.range is not None else None,
-    )

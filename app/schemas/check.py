@@ -1,9 +1,12 @@
-"""Request and response bodies of `POST /v1/check` (API.md)."""
+"""Request and response bodies of `POST /v1/check` (API.md).
+
+A check is a one-part problem given in the request: its symbols, mistakes, tolerance and choices are the
+declarations a problem document uses (`problems.fields`, `problems.kinds`), its numbers are read by the
+one decimal reader, and its job is what the part's kind compiles to.
+"""
 
 from __future__ import annotations
 
-import re
-from decimal import Decimal, InvalidOperation
 from typing import Annotated, Literal
 
 from pydantic import (
@@ -12,17 +15,15 @@ from pydantic import (
     ConfigDict,
     Field,
     StrictBool,
-    StrictFloat,
-    StrictInt,
     StrictStr,
-    field_validator,
 )
 
-from physics.checking import NumericJob, SymbolDecl, SymbolicJob
-from physics.numeric import DEFAULT_TOLERANCE, NumericSpec, Tolerance
+from physics.checking import NumericJob, QuestionJob, SymbolicJob
+from physics.choice import MAX_CHOICES
+from physics.numeric import NumericSpec
 from physics.verdict import Verdict
-
-Number = StrictInt | StrictFloat
+from problems.fields import DEFAULT_TOLERANCE_DECL, ExactNumber, MistakeDecl, SymbolDeclBase, ToleranceDecl
+from problems.kinds.choice import ChoiceDecl, choice_question
 
 
 def storable(text: str) -> str:
@@ -40,85 +41,19 @@ Text = Annotated[StrictStr, AfterValidator(storable)]
 ShortText = Annotated[Text, Field(max_length=2000)]
 
 
-_DECIMAL = re.compile(r"[+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?")
-
-
-def exact_decimal(value: Number | str) -> Decimal:
-    """JSON numbers arrive as floats; their shortest repr is the decimal the client wrote."""
-    if isinstance(value, str) and not _DECIMAL.fullmatch(value.strip()):
-        # Decimal() alone would also take "4_58" (as 458), "NaN" and "Infinity".
-        raise ValueError(f"not a decimal number: {value!r}")
-    try:
-        result = Decimal(value if isinstance(value, str) else repr(value))
-    except InvalidOperation:
-        raise ValueError(f"not a decimal number: {value!r}") from None
-    if not result.is_finite():
-        raise ValueError("must be a finite number")
-    return result
-
-
-def _bound_text(bound: Number | str) -> str:
-    return bound if isinstance(bound, str) else repr(bound)
-
-
 class Strict(BaseModel):
     model_config = ConfigDict(extra="forbid")
-
-
-class SymbolIn(Strict):
-    dimension: ShortText | None = None
-    real: StrictBool = False
-    nonzero: StrictBool = False
-    negative: StrictBool = False
-    integer: StrictBool = False
-    range: tuple[Number | ShortText, Number | ShortText] | None = None
-    meaning: ShortText | None = None
-
-    def decl(self, name: str) -> SymbolDecl:
-        bounds = None if self.range is None else (_bound_text(self.range[0]), _bound_text(self.range[1]))
-        return SymbolDecl(
-            name=name,
-            dimension=self.dimension,
-            real=self.real,
-            nonzero=self.nonzero,
-            negative=self.negative,
-            integer=self.integer,
-            range=bounds,
-        )
-
-
-class MistakeIn(Strict):
-    answer: ShortText
-    feedback: ShortText
-
-
-class ToleranceIn(Strict):
-    rel: Number | StrictStr | None = None
-    abs: Number | StrictStr | None = None
-    sigfigs: Annotated[StrictInt, Field(ge=1, le=15)] | None = None
-
-    @field_validator("rel", "abs")
-    @classmethod
-    def non_negative(cls, value: Number | str | None) -> Number | str | None:
-        if value is not None and exact_decimal(value) < 0:
-            raise ValueError("must not be negative")
-        return value
-
-    def tolerance(self) -> Tolerance:
-        return Tolerance(
-            rel=None if self.rel is None else exact_decimal(self.rel),
-            abs=None if self.abs is None else exact_decimal(self.abs),
-            sigfigs=self.sigfigs,
-        )
 
 
 class SymbolicCheckIn(Strict):
     kind: Literal["symbolic"]
     answer: Text
     expected: ShortText
-    symbols: dict[Annotated[str, Field(max_length=40)], SymbolIn] = Field(default_factory=dict, max_length=50)
+    symbols: dict[Annotated[str, Field(max_length=40)], SymbolDeclBase] = Field(
+        default_factory=dict, max_length=50
+    )
     constraints: list[ShortText] = Field(default_factory=list, max_length=20)
-    mistakes: list[MistakeIn] = Field(default_factory=list, max_length=50)
+    mistakes: list[MistakeDecl] = Field(default_factory=list, max_length=50)
 
     def job(self) -> SymbolicJob:
         return SymbolicJob(
@@ -133,32 +68,38 @@ class SymbolicCheckIn(Strict):
 class NumericCheckIn(Strict):
     kind: Literal["numeric"]
     answer: Text
-    expected: Number | ShortText
+    expected: ExactNumber
     units: ShortText | None = None
     units_required: StrictBool = True
-    tolerance: ToleranceIn | None = None
+    tolerance: ToleranceDecl | None = None  # absent: DEFAULT_TOLERANCE, as for a part
     arithmetic: StrictBool = True  # the number may be arithmetic (`229/50 m/s^2`); False: a plain decimal
     units_system: Literal["SI"] | None = None  # "SI": refuse answers in ft, lb, atm, …
 
-    @field_validator("expected")
-    @classmethod
-    def finite(cls, value: Number | str) -> Number | str:
-        exact_decimal(value)
-        return value
-
     def job(self) -> NumericJob:
         spec = NumericSpec(
-            expected=exact_decimal(self.expected),
+            expected=self.expected,
             units=self.units,
             units_required=self.units_required,
-            tolerance=DEFAULT_TOLERANCE if self.tolerance is None else self.tolerance.tolerance(),
+            tolerance=(self.tolerance or DEFAULT_TOLERANCE_DECL).tolerance(),
             arithmetic=self.arithmetic,
             units_system=self.units_system,
         )
         return NumericJob(answer=self.answer, spec=spec)
 
 
-CheckIn = Annotated[SymbolicCheckIn | NumericCheckIn, Field(discriminator="kind")]
+class ChoiceCheckIn(Strict):
+    """A multiple-choice answer (a letter, or a choice's whole text) against choices given in the request,
+    exactly one of them `correct`, as a choice part states them."""
+
+    kind: Literal["choice"]
+    answer: Text
+    choices: Annotated[list[ChoiceDecl], Field(min_length=2, max_length=MAX_CHOICES)]
+
+    def job(self) -> QuestionJob:
+        return QuestionJob(self.answer, choice_question(self.choices, ("choices",)))
+
+
+CheckIn = Annotated[SymbolicCheckIn | NumericCheckIn | ChoiceCheckIn, Field(discriminator="kind")]
 
 
 class ReadAsPublic(BaseModel):

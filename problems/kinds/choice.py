@@ -8,7 +8,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Annotated, Any, Literal
 
 import sympy
-from pydantic import Field
+from pydantic import Field, StrictBool
 
 from physics.checking import QuestionJob
 from physics.choice import MAX_CHOICES, Choice, ChoiceQuestion, label
@@ -23,8 +23,10 @@ if TYPE_CHECKING:
 
 
 class ChoiceDecl(Strict):
+    """One choice as an author states it, in a choice part or in a `POST /v1/check` of kind choice."""
+
     text: Text
-    correct: bool = False
+    correct: StrictBool = False
     feedback: Text | None = None  # shown to a student who picks this (wrong) choice
 
 
@@ -60,6 +62,14 @@ class CompiledChoicePart:
         return QuestionJob(answer, self.multiple)
 
 
+def choice_question(choices: Sequence[ChoiceDecl], path: Path) -> ChoiceQuestion:
+    """The question a part's (or an ad-hoc check's) choices make; SpecError at `path` unless one is right."""
+    right = [j for j, choice in enumerate(choices) if choice.correct]
+    if len(right) != 1:
+        raise SpecError(f"mark exactly one choice correct: true ({len(right)} are)", path)
+    return ChoiceQuestion(tuple(Choice(choice.text, choice.feedback) for choice in choices), right[0])
+
+
 class ChoiceKind:
     name = "choice"
     expression_answer = False
@@ -84,11 +94,7 @@ class ChoiceKind:
                 )
 
     def compile(self, part: ChoicePart, path: Path, context: CompileContext) -> CompiledChoicePart:
-        right = [j for j, choice in enumerate(part.choices) if choice.correct]
-        if len(right) != 1:
-            raise SpecError(f"mark exactly one choice correct: true ({len(right)} are)", (*path, "choices"))
-        choices = tuple(Choice(choice.text, choice.feedback) for choice in part.choices)
-        return CompiledChoicePart(part.id, ChoiceQuestion(choices, right[0]))
+        return CompiledChoicePart(part.id, choice_question(part.choices, (*path, "choices")))
 
     def student_view(self, part: ChoicePart, doc: ProblemDocument) -> dict[str, Any]:
         choices = [{"label": label(j), "text": choice.text} for j, choice in enumerate(part.choices)]

@@ -15,12 +15,12 @@ from pydantic import Field
 from physics.checking import NumericJob
 from physics.dimensions import DIMENSIONLESS
 from physics.errors import AnswerError, SpecError
-from physics.numeric import DEFAULT_TOLERANCE, NumericSpec, Tolerance, round_sigfigs
+from physics.numeric import NumericSpec, Tolerance, round_sigfigs
 from physics.symbolic import SymbolSpec, UnknownDimension, expression_dimension
 from physics.symbolic.dimensional import DimensionMismatch
 from physics.units import parse_units, unit_dimension
 from physics.verdict import Outcome
-from problems.fields import PART_ID, Attempts, Name, Strict, Text, ToleranceDecl
+from problems.fields import DEFAULT_TOLERANCE_DECL, PART_ID, Attempts, Name, Strict, Text, ToleranceDecl
 from problems.kinds.base import CheckResult, CompileContext, MeaningContext, Path, Reference, explain
 from problems.symbols import unit_dimension_at
 from problems.variants import evaluate_reference, format_number, si_values, unit_scale
@@ -51,7 +51,7 @@ class NumericPart(Strict):
     prompt: Text
     of: Name
     units: Annotated[str, Field(min_length=1, max_length=100)]
-    tolerance: ToleranceDecl = ToleranceDecl(rel=DEFAULT_TOLERANCE.rel)
+    tolerance: ToleranceDecl = DEFAULT_TOLERANCE_DECL
     units_required: bool = True
     arithmetic: bool = True  # the number may be arithmetic (`229/50 m/s^2`); False: a plain decimal
     units_system: Literal["SI"] | None = None  # "SI": refuse answers in ft, lb, atm, …
@@ -142,14 +142,13 @@ class NumericKind:
         if missing:
             raise SpecError(f"needs given values for {', '.join(missing)}", (*path, "of"))
         _require_dimension(expr, part, context.specs, context.table, path)
-        tolerance = Tolerance(rel=part.tolerance.rel, abs=part.tolerance.abs, sigfigs=part.tolerance.sigfigs)
         return CompiledNumericPart(
             part.id,
             part.of,
             expr,
             part.units,
             part.units_required,
-            tolerance,
+            part.tolerance.tolerance(),
             doc,
             context.table,
             from_model,

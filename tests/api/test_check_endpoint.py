@@ -30,6 +30,17 @@ def numeric(answer: str, expected: float | str = 4.5807, units: str | None = "m/
     return body
 
 
+FRICTION_CHOICES = [
+    {"text": "Up the slope", "correct": True},
+    {"text": "Down the slope", "feedback": "Friction opposes the sliding, which is down the slope."},
+    {"text": "Perpendicular to the slope"},
+]
+
+
+def choice(answer: str, choices: list[dict] | None = None) -> dict:
+    return {"kind": "choice", "answer": answer, "choices": FRICTION_CHOICES if choices is None else choices}
+
+
 @pytest.mark.parametrize(
     ("body", "verdict", "reason"),
     [
@@ -78,6 +89,14 @@ def numeric(answer: str, expected: float | str = 4.5807, units: str | None = "m/
             numeric("15.03 ft/s^2", units_system="SI"), "invalid", "unknown_unit", id="si-only-refuses-ft"
         ),
         pytest.param(numeric("15.03 ft/s^2"), "correct", "equivalent", id="ft-converted"),
+        pytest.param(choice("A"), "correct", "equivalent", id="choice-letter"),
+        pytest.param(choice("(a)"), "correct", "equivalent", id="choice-letter-in-brackets"),
+        pytest.param(choice("  up the SLOPE "), "correct", "equivalent", id="choice-text"),
+        pytest.param(choice("C"), "incorrect", "wrong_value", id="choice-wrong"),
+        pytest.param(choice("b)"), "incorrect", "known_mistake", id="choice-wrong-with-feedback"),
+        pytest.param(choice("D"), "invalid", "parse_error", id="choice-beyond-the-choices"),
+        pytest.param(choice("sideways"), "invalid", "parse_error", id="choice-no-such-text"),
+        pytest.param(choice(""), "invalid", "parse_error", id="choice-empty"),
     ],
 )
 def test_check_gives_contract_verdict_and_reason(client, student_headers, body, verdict, reason):
@@ -89,6 +108,66 @@ def test_check_gives_contract_verdict_and_reason(client, student_headers, body, 
     assert result["score"] == (1.0 if verdict == "correct" else 0.0)
     assert (result["error"] is not None) == (verdict == "invalid")
     assert result["feedback"]
+
+
+def test_a_choice_check_reads_the_answer_as_the_letter_it_names(client, student_headers):
+    result = client.post("/v1/check", json=choice("Down the slope"), headers=student_headers).json()
+    assert result["read_as"]["text"] == "B"
+    assert result["feedback"] == FRICTION_CHOICES[1]["feedback"]
+
+
+def test_an_unreadable_choice_is_invalid_and_says_which_letters_there_are(client, student_headers):
+    result = client.post("/v1/check", json=choice("E"), headers=student_headers).json()
+    assert (result["verdict"], result["score"]) == ("invalid", 0.0)
+    assert result["error"] == {"message": "Answer with the letter of one choice, A to C.", "position": 0}
+
+
+@pytest.mark.parametrize(
+    ("expected", "answer"),
+    [(6.02214076e23, "6.022e23"), (1.602176634e-19, "1.6e-19"), ("6.674e-11", "6.67e-11"), (0, "0")],
+    ids=["avogadro", "charge", "gravitation-text", "zero"],
+)
+def test_physical_constants_are_expected_values_the_check_takes(client, student_headers, expected, answer):
+    result = client.post(
+        "/v1/check", json=numeric(answer, expected=expected, units=None), headers=student_headers
+    ).json()
+    assert (result["verdict"], result["reason"]) == ("correct", "equivalent"), result
+
+
+UNREADABLE_NUMBERS = [
+    # (where, value, message): the one decimal reader's message, at the field's path
+    ("expected", "1e101", "must be 0 or of size from 1e-100 to below 1e101"),
+    ("expected", 1e300, "must be 0 or of size from 1e-100 to below 1e101"),
+    ("expected", 10**200, "must be 0 or of size from 1e-100 to below 1e101"),
+    ("expected", "1e999999999", "must be 0 or of size from 1e-100 to below 1e101"),
+    ("expected", "1." + "1" * 40, "must have at most 40 significant digits"),
+    ("expected", "NaN", "must be a decimal number such as 9.81 or 6.022e23"),
+    ("expected", "4_58", "must be a decimal number such as 9.81 or 6.022e23"),
+    ("expected", True, "must be a number, not true/false"),
+    ("expected", None, "must be a number such as 9.81 or 6.022e23"),
+    ("tolerance.rel", "1e-101", "must be 0 or of size from 1e-100 to below 1e101"),
+    ("tolerance.abs", "Infinity", "must be a decimal number such as 9.81 or 6.022e23"),
+]
+
+
+@pytest.mark.parametrize(
+    ("where", "value", "message"),
+    UNREADABLE_NUMBERS,
+    ids=[f"{c[0]}-{str(c[1])[:20]}" for c in UNREADABLE_NUMBERS],
+)
+def test_an_unreadable_number_is_422_with_its_path_and_the_readers_message(
+    client, student_headers, where, value, message
+):
+    body = numeric("4.58 m/s^2")
+    if where == "expected":
+        body["expected"] = value
+    else:
+        body["tolerance"] = {where.split(".")[1]: value}
+    response = client.post("/v1/check", json=body, headers=student_headers)
+    assert response.status_code == 422, response.text
+    error = response.json()["error"]
+    assert error["code"] == "malformed_request"
+    assert {"path": f"numeric.{where}", "message": message} in error["details"], error
 
 
 def test_read_as_shows_how_the_answer_was_understood(client, student_headers):
@@ -164,6 +243,19 @@ def test_ambiguous_division_is_settled_where_one_reading_has_the_expected_dimens
             "numeric.tolerance.rel",
             id="negative-tolerance",
         ),
+        pytest.param(
+            {"kind": "numeric", "answer": "1", "expected": 1, "tolerance": {}},
+            "numeric.tolerance",
+            id="empty-tolerance-would-pass-everything",
+        ),
+        pytest.param(choice("A", FRICTION_CHOICES[:1]), "choice.choices", id="one-choice"),
+        pytest.param(choice("A", [{"text": f"{i}"} for i in range(27)]), "choice.choices", id="27-choices"),
+        pytest.param(
+            choice("A", [{"text": "Up", "correct": "yes"}, {"text": "Down"}]),
+            "choice.choices.0.correct",
+            id="correct-not-bool",
+        ),
+        pytest.param({"kind": "choice", "answer": "A"}, "choice.choices", id="no-choices"),
     ],
 )
 def test_malformed_request_is_422_in_the_error_shape(client, student_headers, body, path):
@@ -199,6 +291,12 @@ def test_malformed_json_is_422_in_the_error_shape(client, student_headers):
             id="range",
         ),
         pytest.param(symbolic("m", constraints=["M <"]), "constraints.0", id="constraint"),
+        pytest.param(
+            choice("A", [{"text": "Up", "correct": True}, {"text": "Down", "correct": True}]),
+            "choices",
+            id="two-right-choices",
+        ),
+        pytest.param(choice("A", [{"text": "Up"}, {"text": "Down"}]), "choices", id="no-right-choice"),
     ],
 )
 def test_unreadable_reference_is_422_naming_the_field(client, student_headers, body, path):

@@ -85,7 +85,7 @@ def _all(*changes: Callable[[Doc], None]) -> Callable[[Doc], None]:
 
 SHAPE_CASES = [
     pytest.param(
-        _set("parts.1.tolerance", {"rel": -1}), {"parts[1].tolerance.rel": "must be > 0"}, id="negative-rel"
+        _set("parts.1.tolerance", {"rel": -1}), {"parts[1].tolerance.rel": "must be >= 0"}, id="negative-rel"
     ),
     pytest.param(
         _set("parts.1.tolerance", {}),
@@ -128,8 +128,8 @@ SHAPE_CASES = [
         _set("parts.0.max_attempts", 0), {"parts[0].max_attempts": "must be >= 1"}, id="zero-attempts"
     ),
     pytest.param(
-        _all(_set("parts.1.tolerance", {"rel": 0}), _delete("statement"), _set("given.k.unit", 5)),
-        {"parts[1].tolerance.rel": "must be > 0", "statement": "required", "given.k.unit": "must be text"},
+        _all(_set("parts.1.tolerance", {"rel": -0.1}), _delete("statement"), _set("given.k.unit", 5)),
+        {"parts[1].tolerance.rel": "must be >= 0", "statement": "required", "given.k.unit": "must be text"},
         id="three-faults-at-once",
     ),
 ]
