@@ -21,10 +21,11 @@ lint: $(BIN)/physcheck
 	$(BIN)/mypy
 
 # The bank's per-problem self-test is `physcheck bank verify` (20 variants); pytest's copy of it is left out
-# here. --durations: the suite is over its 15-minute budget, so every run names the slowest tests.
+# here. Tests run on every core, a test file per worker (module fixtures such as a live server and a
+# browser are set up once); --durations names the slowest tests of each run.
 test: lint
 	$(BIN)/physcheck bank verify
-	$(BIN)/pytest -q -m "not bank_selftest" --durations=25
+	$(BIN)/pytest -q -n auto --dist loadfile -m "not bank_selftest" --durations=25
 
 # Re-pin both locks from pyproject.toml (needs the network to PyPI).
 lock:
