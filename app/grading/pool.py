@@ -15,7 +15,7 @@ from pebble import ProcessExpired, ProcessPool
 from app.errors import Busy, GraderFault, Unavailable
 from app.grading import forkserver
 from app.grading.supervised import PoolUnavailable, SupervisedPool
-from app.grading.worker import WARM_UP_JOBS, GraderCrash, SpecProblem, grade, limit_memory, read_only
+from app.grading.worker import ROUND_TRIP_JOBS, GraderCrash, SpecProblem, grade, limit_memory, read_only
 from physics.checking import CheckJob
 from physics.errors import CheckTimeout, SpecError, TooLarge
 from physics.verdict import InputProblem, Preview, Verdict
@@ -83,7 +83,9 @@ class GradingPool:
     def _warm(self, pool: ProcessPool) -> None:
         # One small job per worker: every worker is forked and answering before the pool counts as
         # ready (they fork warm from the preloaded fork server, so this takes milliseconds).
-        warm = [pool.schedule(self._task, args=(job,)) for _ in range(self._workers) for job in WARM_UP_JOBS]
+        warm = [
+            pool.schedule(self._task, args=(job,)) for _ in range(self._workers) for job in ROUND_TRIP_JOBS
+        ]
         for future in warm:
             future.result(timeout=WARM_UP_SECONDS)
 

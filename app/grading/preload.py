@@ -6,7 +6,7 @@ warm-up jobs, so workers inherit them on fork instead of each building them agai
 
 from __future__ import annotations
 
-from app.grading.worker import WARM_UP_JOBS, grade
+from app.grading.worker import grade, warm_up_jobs
 
-for _job in WARM_UP_JOBS:
+for _job in warm_up_jobs():
     grade(_job)

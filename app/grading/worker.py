@@ -21,16 +21,22 @@ from physics.errors import SpecError, TooLarge
 from physics.numeric import NumericSpec
 from physics.verdict import InputProblem, Preview, Verdict
 
-# Touch every lazily built table (parser, unit registry, sampler) before real requests arrive.
-WARM_UP_JOBS: tuple[CheckJob, ...] = (
+# One round trip through each fresh worker before its pool counts as ready: jobs whose making builds
+# nothing in the server process (a numeric spec would build the unit registry there).
+ROUND_TRIP_JOBS: tuple[CheckJob, ...] = (
     SymbolicJob(
         "m g sin(θ)",
         "g*m*sin(theta)",
         (SymbolDecl("m", "kg"), SymbolDecl("g", "m/s^2"), SymbolDecl("theta", "1")),
     ),
-    NumericJob("4.58 km/h", NumericSpec(expected=Decimal("1.27"), units="m/s")),
     QuestionJob("B", ChoiceQuestion((Choice("up the slope"), Choice("down the slope")), 0)),
 )
+
+
+def warm_up_jobs() -> tuple[CheckJob, ...]:
+    """A job of each kind, touching every lazily built table (parser, unit registry, sampler): the fork
+    server runs them once, so that every worker forks with them built."""
+    return (*ROUND_TRIP_JOBS, NumericJob("4.58 km/h", NumericSpec(expected=Decimal("1.27"), units="m/s")))
 
 
 @dataclass(frozen=True)

@@ -14,15 +14,17 @@ import re
 import xml.etree.ElementTree as ET  # parses only the MathML latex2mathml made, never input text
 from collections.abc import Iterable, Sequence
 from html import escape
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from latex2mathml.converter import convert
-from markdown_it import MarkdownIt
-from markdown_it.renderer import RendererHTML
-from markdown_it.token import Token
-from markdown_it.utils import EnvType, OptionsDict
 from markupsafe import Markup
-from mdit_py_plugins.dollarmath import dollarmath_plugin
+
+# latex2mathml and markdown-it are imported by the first page that renders text (a tenth of a
+# CPU-second, kept off the way to /ready).
+if TYPE_CHECKING:
+    from markdown_it import MarkdownIt
+    from markdown_it.renderer import RendererHTML
+    from markdown_it.token import Token
+    from markdown_it.utils import EnvType, OptionsDict
 
 MATHML_NS = "{http://www.w3.org/1998/Math/MathML}"
 MAX_TEX_CHARS = 2000
@@ -135,6 +137,8 @@ def _convert(tex: str, display: bool) -> ET.Element:
     """latex2mathml's tree for `tex`, or RenderIssue when it is not clean MathML."""
     if len(tex) > MAX_TEX_CHARS:
         raise RenderIssue(f"formula longer than {MAX_TEX_CHARS} characters")
+    from latex2mathml.converter import convert
+
     try:
         markup = convert(tex, display="block" if display else "inline")
         root = ET.fromstring(markup)  # noqa: S314 (our converter's output, not input)
@@ -184,6 +188,9 @@ def _math_rule(display: bool) -> Any:
 
 @functools.cache
 def _markdown() -> MarkdownIt:
+    from markdown_it import MarkdownIt
+    from mdit_py_plugins.dollarmath import dollarmath_plugin
+
     md = MarkdownIt("commonmark", {"html": False, "typographer": False})
     # `$5 and $6` stays text: a dollar followed by a digit does not open maths.
     dollarmath_plugin(md, allow_labels=False, allow_digits=False, double_inline=True)

@@ -12,9 +12,7 @@ import unicodedata
 from dataclasses import dataclass
 from fractions import Fraction
 from functools import cache
-from typing import Any
-
-import pint
+from typing import TYPE_CHECKING, Any
 
 from physics.dimensions import Dimension
 from physics.units.catalogue import (
@@ -24,6 +22,9 @@ from physics.units.catalogue import (
     SI_PREFIXES,
     CatalogueEntry,
 )
+
+if TYPE_CHECKING:
+    import pint
 
 # A symbol-style spelling takes prefix symbols (`km`); a name-style one takes prefix names
 # (`kilometer`) and a plural `s`. pint's short aliases (`sec`, `hr`) count as symbols.
@@ -52,6 +53,8 @@ class _Spelling:
 @cache
 def registry() -> pint.UnitRegistry[Fraction]:
     """The one pint registry, with exact (Fraction) arithmetic."""
+    import pint  # a twentieth of a CPU-second, paid with the registry (after /ready, in the server)
+
     ureg: pint.UnitRegistry[Fraction] = pint.UnitRegistry(non_int_type=Fraction)
     # The gauss of SI-based courses (pint's own `gauss` belongs to the Gaussian system).
     ureg.define("gauss_tesla = tesla / 10000")

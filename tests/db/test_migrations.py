@@ -7,11 +7,12 @@ import threading
 from alembic import command
 from alembic.autogenerate import compare_metadata
 from alembic.migration import MigrationContext
+from alembic.script import ScriptDirectory
 from sqlalchemy import create_engine, inspect
 from sqlalchemy.pool import NullPool
 
 from app.db.base import Base
-from app.db.migrate import alembic_config, import_models, migrate
+from app.db.migrate import MIGRATIONS_DIR, alembic_config, import_models, migrate, newest_revision
 
 import_models()
 
@@ -80,3 +81,30 @@ def test_two_migrations_started_at_once_both_succeed(database_url: str) -> None:
     assert errors == []
     tables, revision, differences = _state(database_url)
     assert tables >= CORE_TABLES and revision is not None and differences == []
+
+
+def test_the_newest_revision_is_alembics_head_and_every_id_is_its_file_name(database_url: str) -> None:
+    """A start finds the newest revision by file name, without Alembic: the names must say it."""
+    scripts = ScriptDirectory.from_config(alembic_config(database_url))
+    assert newest_revision() == scripts.get_current_head()
+    for script in scripts.walk_revisions():
+        assert script.path is not None
+        assert (MIGRATIONS_DIR / "versions" / f"{script.revision}.py").samefile(script.path)
+
+
+def test_a_database_at_the_newest_revision_is_not_handed_to_alembic(database_url: str, monkeypatch) -> None:
+    migrate(database_url)
+
+    def upgrade(*_args: object) -> None:
+        raise AssertionError("Alembic ran on a database already at the newest revision")
+
+    monkeypatch.setattr(command, "upgrade", upgrade)
+    migrate(database_url)
+
+
+def test_a_database_one_revision_behind_is_upgraded(database_url: str) -> None:
+    migrate(database_url)
+    command.downgrade(alembic_config(database_url), "-1")
+    assert _state(database_url)[1] != newest_revision()
+    migrate(database_url)
+    assert _state(database_url)[1] == newest_revision()
