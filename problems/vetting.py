@@ -32,6 +32,11 @@ NOT_DERIVED = "not derived: {why}; fix those first"
 NOT_SELF_TESTED = "not self-tested: {why}; the self-test runs once the document has no other errors"
 
 
+def stage_not_run(message: str) -> bool:
+    """Whether an error item only says a stage could not run because of the others (not a fault)."""
+    return message.startswith((NOT_DERIVED.partition("{")[0], NOT_SELF_TESTED.partition("{")[0]))
+
+
 @dataclass(frozen=True)
 class Vetting:
     """A sound document (and no errors), or every error found with its path."""

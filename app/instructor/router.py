@@ -46,6 +46,7 @@ from app.transfer import export_submissions
 from app.web.layout import page
 from problems.loader import MAX_DOCUMENT_BYTES, parse_problem
 from problems.variants import fill_statement, fixed_variant
+from problems.vetting import stage_not_run
 
 router = APIRouter(prefix="/instructor", include_in_schema=False)
 log = logging.getLogger("physcheck.instructor")
@@ -307,6 +308,7 @@ async def _edit_page(
     problem_id: str | None,
     source: str,
     errors: list[dict[str, Any]] | None = None,
+    not_run: list[dict[str, Any]] | None = None,
     described: Described | None = None,
     document: dict[str, Any] | None = None,
     warnings: list[dict[str, Any]] | None = None,
@@ -330,6 +332,7 @@ async def _edit_page(
             "action": action,
             "source": source,
             "errors": errors,
+            "not_run": not_run or [],
             "described": described,
             "preview_doc": preview_doc,
             "preview_statement": preview_statement,
@@ -387,6 +390,7 @@ async def _vet_and_maybe_save_form(
     await auth.require_csrf(request, services, who)
     source, fmt, action = await _source(request)
     errors: list[dict[str, Any]]
+    not_run: list[dict[str, Any]]
     if not source.strip():
         errors = [{"path": "", "message": "Paste the problem's YAML or choose a file.", "line": None}]
         return await _edit_page(
@@ -397,12 +401,19 @@ async def _vet_and_maybe_save_form(
     except Busy as error:  # the vetting queue is full, this key has one in flight, or it is restarting
         raise PageError(503, "Try again shortly", error.message) from error
     if vetted.document is None:
-        errors = [
-            {"path": path, "message": message, "line": vetted.lines.get(path)}
-            for path, message in vetted.errors
-        ]
+        errors, not_run = [], []  # the faults, and the stages they kept from running (listed apart)
+        for path, message in vetted.errors:
+            item = {"path": path, "message": message, "line": vetted.lines.get(path)}
+            (not_run if stage_not_run(message) else errors).append(item)
         return await _edit_page(
-            request, services, who, problem_id=problem_id, source=source, errors=errors, status=422
+            request,
+            services,
+            who,
+            problem_id=problem_id,
+            source=source,
+            errors=errors,
+            not_run=not_run,
+            status=422,
         )
     if action != "save":
         return await _edit_page(
