@@ -98,6 +98,7 @@ def database_url(
     backend: str, request: pytest.FixtureRequest, tmp_path_factory: pytest.TempPathFactory
 ) -> Iterator[str]:
     """A fresh, empty database (not migrated)."""
+    assert backend in ("sqlite", "postgres"), f"a database on the {backend!r} backend"
     if backend == "sqlite":
         yield f"sqlite:///{tmp_path_factory.mktemp('db') / 'physcheck.db'}"
         return
@@ -112,6 +113,7 @@ def db(
     backend: str, request: pytest.FixtureRequest, tmp_path_factory: pytest.TempPathFactory
 ) -> Iterator[Database]:
     """A migrated, empty `Database`."""
+    assert backend in ("sqlite", "postgres"), f"a database on the {backend!r} backend"
     if backend == "sqlite":
         url = f"sqlite:///{tmp_path_factory.mktemp('db') / 'physcheck.db'}"
         migrate(url)

@@ -5,6 +5,7 @@ What the rest of the app uses:
 - `app.lti.router.router`: the HTTP routes (`/lti/...`, `/.well-known/jwks.json`).
 - `app.lti.context.LtiContext` kept in `app.state.lti` (or `get_lti_context` overridden).
 - `app.lti.sessions.principal_from_session(request)`: the session cookie as a Principal.
-- `app.lti.outbox.enqueue_scores(...)`, `OutboxWorker`, `list_delivery_problems(session)`.
+- `app.lti.outbox.OutboxWorker` and the outbox's rules; storage is `app.storage`'s (no module here
+  opens a database session).
 - `app.lti.cli.register_cli(subparsers)`: `physcheck lti add-platform | rotate-keys`.
 """

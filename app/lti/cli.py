@@ -43,11 +43,11 @@ def _add_platform(args: argparse.Namespace, settings: Settings) -> int:
 
 
 def _rotate_keys(args: argparse.Namespace, settings: Settings) -> int:
-    from app.lti.keys import rotate_keys
+    from app.storage import sql_stores
 
     database = _open(settings)
     try:
-        kid = rotate_keys(database)
+        kid = sql_stores(database).tool_keys.rotate()
     finally:
         database.dispose()
     print(f"New signing key {kid}; the previous key stays published until the next rotation.")

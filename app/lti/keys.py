@@ -1,85 +1,28 @@
-"""Our signing keys (RSA 2048, `kid` = RFC 7638 thumbprint), the public JWKS, and rotation with overlap."""
+"""Our signing keys (RSA 2048, `kid` = RFC 7638 thumbprint): made and used here, kept by a `ToolKeys`
+store (`app.storage`: the database's keeps them, publishes the JWKS and rotates with overlap)."""
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from datetime import datetime
 from typing import Any
 
 from joserfc import jwt
 from joserfc.jwk import KeyParameters, RSAKey
-from sqlalchemy import select
-from sqlalchemy.orm import Session
-
-from app.db.database import Database
-from app.db.types import utc_now
-from app.lti.models import LtiToolKey
 
 KEY_SIZE = 2048
 ALGORITHM = "RS256"
-_KEY_PARAMETERS: KeyParameters = {"alg": ALGORITHM, "use": "sig"}
-
-
-def _load(row: LtiToolKey) -> RSAKey:
-    return RSAKey.import_key(row.private_pem, parameters={**_KEY_PARAMETERS, "kid": row.kid})
-
-
-def _live_rows(session: Session) -> list[LtiToolKey]:
-    """Live keys, newest first (ties broken by kid so every process agrees which one signs)."""
-    query = (
-        select(LtiToolKey)
-        .where(LtiToolKey.retired_at.is_(None))
-        .order_by(LtiToolKey.created_at.desc(), LtiToolKey.kid)
-    )
-    return list(session.scalars(query))
+KEY_PARAMETERS: KeyParameters = {"alg": ALGORITHM, "use": "sig"}
 
 
 def generate() -> RSAKey:
     """A fresh private key with its thumbprint as kid."""
-    key = RSAKey.generate_key(KEY_SIZE, parameters=_KEY_PARAMETERS, private=True, auto_kid=True)
+    key = RSAKey.generate_key(KEY_SIZE, parameters=KEY_PARAMETERS, private=True, auto_kid=True)
     assert key.kid is not None
     return key
 
 
-def create_key(session: Session, *, clock: Callable[[], datetime] = utc_now) -> str:
-    """A new key, which becomes the signing key at once; returns its kid."""
-    key = generate()
-    assert key.kid is not None
-    pem = key.as_pem(private=True)
-    session.add(LtiToolKey(kid=key.kid, private_pem=pem.decode("ascii"), created_at=clock(), retired_at=None))
-    session.flush()
-    return key.kid
-
-
-def signing_key(session: Session, *, clock: Callable[[], datetime] = utc_now) -> RSAKey:
-    """The newest live key, made on first use."""
-    rows = _live_rows(session)
-    if not rows:
-        create_key(session, clock=clock)
-        rows = _live_rows(session)
-    return _load(rows[0])
-
-
-def public_jwks(session: Session) -> dict[str, list[dict[str, Any]]]:
-    """Every live key's public half: the signing key and the one it replaced."""
-    return {"keys": [dict(_load(row).as_dict(private=False)) for row in _live_rows(session)]}
-
-
-def rotate_keys(database: Database, *, clock: Callable[[], datetime] = utc_now) -> str:
-    """Make a new signing key; keep the previous one published (platforms may have cached it) and
-    retire every older one. Returns the new kid."""
-    with database.session() as session:
-        previous = _live_rows(session)
-        now = clock()
-        for row in previous[1:]:
-            row.retired_at = now
-        return create_key(session, clock=clock)
-
-
-def sign(session: Session, claims: dict[str, Any], *, clock: Callable[[], datetime] = utc_now) -> str:
-    """A compact JWT over `claims`, signed RS256 with the current key and naming its kid."""
-    return sign_with(signing_key(session, clock=clock), claims)
-
-
 def sign_with(key: RSAKey, claims: dict[str, Any]) -> str:
     return jwt.encode({"alg": ALGORITHM, "kid": key.kid}, claims, key, algorithms=[ALGORITHM])
+
+
+def load(private_pem: str, kid: str) -> RSAKey:
+    return RSAKey.import_key(private_pem, parameters={**KEY_PARAMETERS, "kid": kid})

@@ -1,7 +1,8 @@
 """Grade passback (LTI Assignment and Grade Services) through a durable outbox.
 
-`enqueue_scores` runs inside the transaction that stores a graded submission, so a score is never
-lost nor sent for a submission that was rolled back. `OutboxWorker` claims due rows (several server
+Scores are queued inside the transaction that stores a graded submission (`app.storage`'s score
+outbox), so a score is never lost nor sent for a submission that was rolled back. The rules below are
+shared by the SQL store and the in-memory fake. `OutboxWorker` claims due rows (several server
 instances never hold the same row: FOR UPDATE SKIP LOCKED on PostgreSQL, and a conditional UPDATE on
 the row's status everywhere), posts each score with an OAuth2 token got by client assertion, and
 files the outcome: delivered, retried later (network errors, 408, 429, 5xx; Retry-After respected), or
@@ -29,13 +30,8 @@ from typing import TYPE_CHECKING, Any
 from urllib.parse import urlsplit, urlunsplit
 
 import httpx
-from sqlalchemy import exists, or_, select, update
-from sqlalchemy.exc import IntegrityError
-from sqlalchemy.orm import Session, aliased
 
-from app.db.database import Database
 from app.db.types import utc_now
-from app.lti.models import LtiGradeTarget, LtiPlatform, LtiScoreOutbox
 
 if TYPE_CHECKING:  # the stores name this module's records
     from app.storage.protocols import ScoreOutbox, ToolKeys
@@ -61,76 +57,33 @@ def to_millisecond(moment: datetime) -> datetime:
     return moment.replace(microsecond=moment.microsecond // 1000 * 1000)
 
 
-def enqueue_scores(
-    session: Session,
-    problem_id: str,
-    student: str,
-    score_given: float,
-    score_maximum: float,
-    timestamp: datetime,
-) -> int:
-    """Queue the score for every grade target of (student, problem) recorded at launch; returns how
-    many. Call inside the transaction that stores the graded submission."""
-    query = select(LtiGradeTarget).where(
-        LtiGradeTarget.student == student, LtiGradeTarget.problem_id == problem_id
-    )
-    targets = list(session.scalars(query.order_by(LtiGradeTarget.id).with_for_update()))
+# ---- the rules, shared by the SQL store and the in-memory fake ---------------------------------------
+
+# What superseding a score not yet sent changes.
+SUPERSEDE: dict[str, Any] = {"status": SUPERSEDED, "claimed_by": None, "claimed_until": None}
+
+
+def sent_timestamp(timestamp: datetime, last: datetime | None) -> datetime:
+    """The timestamp a target's new score goes out with: to the millisecond, and after the target's
+    last one (by a millisecond when not), so that the LMS sees them grow."""
     stamp = to_millisecond(timestamp)
-    for target in targets:
-        # A row being sent (status `sending`) is left alone: it goes first, this one after it.
-        session.execute(
-            update(LtiScoreOutbox)
-            .where(LtiScoreOutbox.target_id == target.id, LtiScoreOutbox.status == PENDING)
-            .values(status=SUPERSEDED, claimed_by=None, claimed_until=None)
-            .execution_options(synchronize_session=False)
-        )
-        sent = stamp
-        if target.last_timestamp is not None and sent <= target.last_timestamp:
-            sent = target.last_timestamp + TIMESTAMP_STEP
-        target.last_timestamp = sent
-        session.add(
-            LtiScoreOutbox(
-                target_id=target.id,
-                score_given=score_given,
-                score_maximum=score_maximum,
-                timestamp=sent,
-                status=PENDING,
-                attempts=0,
-                next_attempt_at=timestamp,
-                created_at=timestamp,
-            )
-        )
-    session.flush()
-    return len(targets)
+    return stamp if last is None or stamp > last else last + TIMESTAMP_STEP
 
 
-def add_grade_target(
-    session: Session, platform_id: int, *, student: str, problem_id: str, lineitem_url: str, sub: str
-) -> None:
-    """Record where a launched student's score on a problem goes, once (a concurrent launch may win)."""
-    existing = session.scalars(
-        select(LtiGradeTarget).where(
-            LtiGradeTarget.platform_id == platform_id,
-            LtiGradeTarget.student == student,
-            LtiGradeTarget.problem_id == problem_id,
-            LtiGradeTarget.lineitem_url == lineitem_url,
-        )
-    ).one_or_none()
-    if existing is None:
-        try:
-            with session.begin_nested():
-                session.add(
-                    LtiGradeTarget(
-                        platform_id=platform_id,
-                        student=student,
-                        problem_id=problem_id,
-                        lineitem_url=lineitem_url,
-                        sub=sub,
-                        last_timestamp=None,
-                    )
-                )
-        except IntegrityError:
-            pass  # a concurrent launch recorded it
+def claim_values(newer: bool, busy: bool, claim: str, now: datetime) -> dict[str, Any] | None:
+    """What claiming a due score changes: superseded if its target has a newer score; else nothing
+    while an older one for its target is in flight (it waits); else sending, leased to this worker."""
+    if newer:
+        return SUPERSEDE
+    if busy:
+        return None
+    return {"status": SENDING, "claimed_by": claim, "claimed_until": now + LEASE}
+
+
+def wakes_platform(outcome: Outcome, values: dict[str, Any]) -> bool:
+    """Whether a finished delivery ends the backoff of every score waiting for its platform: it
+    answered, and not with a retry."""
+    return outcome.http_status is not None and values["status"] != PENDING
 
 
 @dataclass(frozen=True)
@@ -152,37 +105,6 @@ class DeliveryProblem:
     last_error: str | None
 
 
-def list_delivery_problems(session: Session, *, limit: int = 200) -> list[DeliveryProblem]:
-    """Scores that failed, are still being retried, or were superseded after failed tries, newest
-    first: for instructors."""
-    query = (
-        select(LtiScoreOutbox, LtiGradeTarget, LtiPlatform)
-        .join(LtiGradeTarget, LtiGradeTarget.id == LtiScoreOutbox.target_id)
-        .join(LtiPlatform, LtiPlatform.id == LtiGradeTarget.platform_id)
-        .where(or_(LtiScoreOutbox.status == FAILED, LtiScoreOutbox.attempts > 0))
-        .where(LtiScoreOutbox.status.in_((FAILED, PENDING, SENDING, SUPERSEDED)))
-        .order_by(LtiScoreOutbox.id.desc())
-        .limit(limit)
-    )
-    return [
-        DeliveryProblem(
-            outbox_id=row.id,
-            student=target.student,
-            problem_id=target.problem_id,
-            issuer=platform.issuer,
-            lineitem_url=target.lineitem_url,
-            score_given=row.score_given,
-            score_maximum=row.score_maximum,
-            timestamp=row.timestamp,
-            status=row.status,
-            attempts=row.attempts,
-            last_status=row.last_status,
-            last_error=row.last_error,
-        )
-        for row, target, platform in session.execute(query)
-    ]
-
-
 # ---- claiming --------------------------------------------------------------------------------------
 
 
@@ -201,107 +123,12 @@ class ClaimedScore:
     attempts: int
 
 
-def claim_batch(database: Database, claim: str, now: datetime, limit: int) -> list[ClaimedScore]:
-    """Take up to `limit` due rows for this worker, oldest timestamp first. On PostgreSQL rows another
-    transaction holds are skipped; the conditional UPDATE (status and lease unchanged since we read
-    them) makes the claim exclusive on every backend. A due row with a newer score for its target is
-    superseded instead (e.g. one whose sender crashed); one whose target has an older score in flight
-    waits for it."""
-    due = or_(
-        (LtiScoreOutbox.status == PENDING) & (LtiScoreOutbox.next_attempt_at <= now),
-        (LtiScoreOutbox.status == SENDING) & (LtiScoreOutbox.claimed_until < now),
-    )
-    other = aliased(LtiScoreOutbox)
-    same_target = (other.target_id == LtiScoreOutbox.target_id) & (other.id != LtiScoreOutbox.id)
-    newer_exists = exists().where(
-        same_target, other.timestamp > LtiScoreOutbox.timestamp, other.status != SUPERSEDED
-    )
-    in_flight = exists().where(same_target, other.status == SENDING, other.claimed_until >= now)
-    claimed: list[ClaimedScore] = []
-    with database.session() as session:
-        query = (
-            select(LtiScoreOutbox, newer_exists, in_flight)
-            .where(due)
-            .order_by(LtiScoreOutbox.timestamp, LtiScoreOutbox.id)
-            .limit(limit)
-        )
-        rows = list(session.execute(query.with_for_update(skip_locked=True, of=LtiScoreOutbox)))
-        for row, newer, busy in rows:
-            if busy and not newer:
-                continue
-            unchanged = (
-                (LtiScoreOutbox.id == row.id)
-                & (LtiScoreOutbox.status == row.status)
-                & or_(LtiScoreOutbox.claimed_by.is_(None), LtiScoreOutbox.claimed_by == row.claimed_by)
-            )
-            values: dict[str, Any] = (
-                {"status": SUPERSEDED, "claimed_by": None, "claimed_until": None}
-                if newer
-                else {"status": SENDING, "claimed_by": claim, "claimed_until": now + LEASE}
-            )
-            result = session.execute(
-                update(LtiScoreOutbox)
-                .where(unchanged)
-                .values(**values)
-                .execution_options(synchronize_session=False)
-            )
-            if result.rowcount != 1 or newer:  # type: ignore[attr-defined]
-                continue
-            target = session.get(LtiGradeTarget, row.target_id)
-            assert target is not None
-            platform = session.get(LtiPlatform, target.platform_id)
-            assert platform is not None
-            claimed.append(
-                ClaimedScore(
-                    id=row.id,
-                    claim=claim,
-                    platform_id=platform.id,
-                    client_id=platform.client_id,
-                    token_url=platform.token_url,
-                    lineitem_url=target.lineitem_url,
-                    sub=target.sub,
-                    score_given=row.score_given,
-                    score_maximum=row.score_maximum,
-                    timestamp=row.timestamp,
-                    attempts=row.attempts,
-                )
-            )
-    return claimed
-
-
 @dataclass(frozen=True)
 class Outcome:
     status: str  # DELIVERED, SUPERSEDED, PENDING (retry later) or FAILED
     http_status: int | None = None
     message: str | None = None
     retry_after: timedelta | None = None
-
-
-def finish(database: Database, score: ClaimedScore, outcome: Outcome, now: datetime) -> None:
-    """File the outcome, unless our claim was lost (lease expired and another worker took the row)."""
-    values = finished_values(score, outcome, now)
-    status = values["status"]
-    with database.session() as session:
-        session.execute(
-            update(LtiScoreOutbox)
-            .where(LtiScoreOutbox.id == score.id, LtiScoreOutbox.claimed_by == score.claim)
-            .values(**values)
-            .execution_options(synchronize_session=False)
-        )
-        if outcome.http_status is not None and status != PENDING:
-            # The platform answers again: whatever waits for it goes now, not at the end of a backoff
-            # that grew during the outage.
-            on_platform = select(LtiGradeTarget.id).where(LtiGradeTarget.platform_id == score.platform_id)
-            session.execute(
-                update(LtiScoreOutbox)
-                .where(
-                    LtiScoreOutbox.status == PENDING,
-                    LtiScoreOutbox.next_attempt_at > now,
-                    LtiScoreOutbox.target_id.in_(on_platform),
-                )
-                .values(next_attempt_at=now)
-                .execution_options(synchronize_session=False)
-            )
 
 
 def finished_values(score: ClaimedScore, outcome: Outcome, now: datetime) -> dict[str, Any]:

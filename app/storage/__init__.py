@@ -17,7 +17,6 @@ from dataclasses import dataclass, field
 
 from app.db.database import Database
 from app.db.types import utc_now
-from app.lti.grades import queue_grade
 from app.storage.memory import FilingHook as MemoryFilingHook
 from app.storage.memory import (
     MemoryApiKeyStore,
@@ -52,6 +51,7 @@ from app.storage.sql import (
     SqlToolKeys,
 )
 from app.storage.sql_lti import SqlLaunchStore, SqlLtiSessionStore, SqlPlatformStore
+from app.storage.sql_outbox import queue_grade
 
 __all__ = [
     "ApiKeyStore",

@@ -426,6 +426,12 @@ class _Score:
     last_status: int | None = None
     last_error: str | None = None
 
+    def change(self, values: Mapping[str, Any]) -> None:
+        """Set the columns an SQL UPDATE would (those the fake keeps)."""
+        for name, value in values.items():
+            if hasattr(self, name):
+                setattr(self, name, value)
+
 
 class MemoryScoreOutbox:
     """The outbox's claim, supersede and retry rules (`app.lti.outbox`), on lists under one lock."""
@@ -458,16 +464,13 @@ class MemoryScoreOutbox:
     def enqueue(
         self, problem_id: str, student: str, score_given: float, score_maximum: float, timestamp: datetime
     ) -> int:
-        stamp = outbox.to_millisecond(timestamp)
         with self._lock:
             targets = [t for t in self._targets if t.student == student and t.problem_id == problem_id]
             for target in targets:
                 for row in self._rows:
                     if row.target is target and row.status == outbox.PENDING:
-                        row.status, row.claimed_by, row.claimed_until = outbox.SUPERSEDED, None, None
-                sent = stamp
-                if target.last_timestamp is not None and sent <= target.last_timestamp:
-                    sent = target.last_timestamp + outbox.TIMESTAMP_STEP
+                        row.change(outbox.SUPERSEDE)
+                sent = outbox.sent_timestamp(timestamp, target.last_timestamp)
                 target.last_timestamp = sent
                 self._rows.append(
                     _Score(
@@ -501,12 +504,12 @@ class MemoryScoreOutbox:
             judged = [(row, self._newer_exists(row), self._in_flight(row, now)) for row in due]
             claimed = []
             for row, newer, busy in judged:
-                if busy and not newer:
+                values = outbox.claim_values(newer, busy, claim, now)
+                if values is None:
                     continue
+                row.change(values)
                 if newer:
-                    row.status, row.claimed_by, row.claimed_until = outbox.SUPERSEDED, None, None
                     continue
-                row.status, row.claimed_by, row.claimed_until = outbox.SENDING, claim, now + outbox.LEASE
                 target = row.target
                 claimed.append(
                     ClaimedScore(
@@ -549,10 +552,8 @@ class MemoryScoreOutbox:
         with self._lock:
             for row in self._rows:
                 if row.id == score.id and row.claimed_by == score.claim:
-                    for name, value in change.items():
-                        if hasattr(row, name):
-                            setattr(row, name, value)
-            if outcome.http_status is not None and change["status"] != outbox.PENDING:
+                    row.change(change)
+            if outbox.wakes_platform(outcome, change):
                 for row in self._rows:
                     if (
                         row.status == outbox.PENDING
@@ -609,8 +610,8 @@ class MemoryScoreOutbox:
 class MemoryToolKeys:
     """Signing keys in memory: made on first use, the newest signs, the one before stays published."""
 
-    def __init__(self) -> None:
-        self._live: list[RSAKey] = []  # newest first
+    def __init__(self, live: Sequence[RSAKey] = ()) -> None:
+        self._live: list[RSAKey] = list(live)  # newest first (tests pass one made once: RSA is slow)
         self._lock = threading.Lock()
 
     def _current(self) -> RSAKey:

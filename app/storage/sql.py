@@ -19,11 +19,11 @@ from app.db.class_results import PartResults
 from app.db.database import Database
 from app.db.records import ApiKeyRecord, CreatedKey, Page, ProblemRecord, Role, SubmissionRecord
 from app.db.types import utc_now
-from app.lti import keys as tool_keys
-from app.lti import outbox
 from app.lti.models import LtiGradeTarget, LtiScoreOutbox
 from app.lti.outbox import ClaimedScore, DeliveryProblem, Outcome
 from app.lti.platforms import PlatformRecord
+from app.storage import sql_outbox as outbox
+from app.storage import sql_tool_keys as tool_keys
 from app.storage.protocols import DEFAULT_PAGE_LIMIT, Filed, QueuedScore
 from physics.verdict import Verdict
 

@@ -1,17 +1,52 @@
-"""An app per test on a fresh database, sharing one pool of grading workers for the whole session."""
+"""An app per test, sharing one pool of grading workers for the whole session.
+
+By default the app runs on the in-memory stores (`memory_app_storage`): the routes are under test, and
+the stores' contract is held by tests/storage. Tests that pin what the database does (durability,
+readiness, PostgreSQL) ask for it by using `db` (they then run on SQLite and PostgreSQL) or by
+parametrizing `backend` (["sqlite"]); `settings` and `client` then run on that fresh migrated database.
+"""
 
 from __future__ import annotations
 
 from collections.abc import Iterator
+from typing import Any
 
 import pytest
 from fastapi.testclient import TestClient
 
+from app.catalog import Catalog
 from app.db.database import Database
+from app.db.records import Role
 from app.grading.pool import GradingPool
 from app.keys import create_key
 from app.main import create_app
 from app.settings import Settings
+from app.startup import DatabaseKeyStore, Storage
+from app.storage import memory_stores
+
+SQL_BACKENDS = ["sqlite", pytest.param("postgres", marks=pytest.mark.postgres)]
+SECRET = "test-secret-0123456789"
+
+
+def pytest_generate_tests(metafunc: pytest.Metafunc) -> None:
+    """A test that uses the database itself runs on both SQL backends (unless it names its own)."""
+    named = any("backend" in str(mark.args[0]) for mark in metafunc.definition.iter_markers("parametrize"))
+    if not named and {"db", "database_url"} & set(metafunc.fixturenames):
+        metafunc.parametrize("backend", SQL_BACKENDS)
+
+
+@pytest.fixture
+def backend() -> str:
+    """Overrides the root `backend`: the fakes, unless a test parametrizes `backend` itself."""
+    return "memory"
+
+
+def memory_app_storage(settings: Settings) -> Storage:
+    """What `create_app` opens, on fresh in-memory stores with the built-in bank stored."""
+    stores = memory_stores()
+    catalog = Catalog(stores, settings.secret, settings.bank_dir)
+    catalog.sync_builtin()
+    return Storage(database=None, stores=stores, keys=DatabaseKeyStore(stores.keys), catalog=catalog)
 
 
 @pytest.fixture(scope="session")
@@ -23,22 +58,40 @@ def grading_pool() -> Iterator[GradingPool]:
 
 
 @pytest.fixture
-def settings(db: Database) -> Settings:
-    """Settings on a fresh database; `db` runs every API test on SQLite and on PostgreSQL.
+def settings(backend: str, request: pytest.FixtureRequest) -> Settings:
+    """Settings on this test's backend: a fresh database for SQL (`db`), none for the fakes.
 
     No warm-up: each app would start deriving the whole bank in this process, stealing the tests' time;
     a problem a test uses is compiled when first asked for (and shared by every app of the process).
     """
-    return Settings(database_url=db.url, secret="test-secret-0123456789", warm_up=False)
+    if backend == "memory":
+        return Settings(database_url="sqlite://", secret=SECRET, warm_up=False)  # never opened
+    db: Database = request.getfixturevalue("db")
+    return Settings(database_url=db.url, secret=SECRET, warm_up=False)
+
+
+def make_app(settings: Settings, backend: str, **options: Any) -> Any:
+    """`create_app` on this test's backend (options as `create_app` takes them)."""
+    if backend == "memory":
+        options.setdefault("open_storage", memory_app_storage)
+    return create_app(settings, **options)
 
 
 @pytest.fixture
-def client(settings: Settings, grading_pool: GradingPool) -> Iterator[TestClient]:
-    with TestClient(create_app(settings, pool=grading_pool)) as test_client:
+def client(settings: Settings, backend: str, grading_pool: GradingPool) -> Iterator[TestClient]:
+    with TestClient(make_app(settings, backend, pool=grading_pool)) as test_client:
         yield test_client
 
 
+def key_headers(client: TestClient, role: str, name: str, student: str | None = None) -> dict[str, str]:
+    """A new key of the running app's (any backend), as a bearer header."""
+    stores = client.app.state.services.stores  # type: ignore[attr-defined]
+    created = stores.keys.create(Role(role), name=name, student=student)
+    return {"Authorization": f"Bearer {created.plaintext}"}
+
+
 def _headers(settings: Settings, role: str, name: str) -> dict[str, str]:
+    """A new key in the database `settings` names (SQL backends only), as a bearer header."""
     database = Database(settings.database_url)
     try:
         plaintext, _ = create_key(database, role, name)
@@ -48,10 +101,10 @@ def _headers(settings: Settings, role: str, name: str) -> dict[str, str]:
 
 
 @pytest.fixture
-def student_headers(client: TestClient, settings: Settings) -> dict[str, str]:
-    return _headers(settings, "student", "ada")
+def student_headers(client: TestClient) -> dict[str, str]:
+    return key_headers(client, "student", "ada")
 
 
 @pytest.fixture
-def instructor_headers(client: TestClient, settings: Settings) -> dict[str, str]:
-    return _headers(settings, "instructor", "prof")
+def instructor_headers(client: TestClient) -> dict[str, str]:
+    return key_headers(client, "instructor", "prof")

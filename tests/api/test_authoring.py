@@ -78,10 +78,10 @@ def test_students_cannot_upload(client, student_headers):
     assert upload(client, student_headers, atwood_upload()).status_code == 403
 
 
-def test_only_the_owner_versions_and_retires_a_problem(client, settings, instructor_headers, student_headers):
-    from tests.api.conftest import _headers
+def test_only_the_owner_versions_and_retires_a_problem(client, instructor_headers, student_headers):
+    from tests.api.conftest import key_headers
 
-    other = _headers(settings, "instructor", "other")
+    other = key_headers(client, "instructor", "other")
     upload(client, instructor_headers, atwood_upload())
     changed = copy.deepcopy(atwood_upload())
     changed["title"] = "Atwood machine, revised"

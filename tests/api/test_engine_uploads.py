@@ -11,12 +11,6 @@ import yaml
 from tests.api.test_authoring import BANK, atwood_upload
 
 
-@pytest.fixture
-def backend() -> str:
-    """SQLite only: these pin the engine behind an upload; storage runs on both backends elsewhere."""
-    return "sqlite"
-
-
 def upload(client: Any, headers: dict[str, str], doc: dict[str, Any]) -> Any:
     return client.post(
         "/v1/problems", content=json.dumps(doc), headers={**headers, "content-type": "application/json"}

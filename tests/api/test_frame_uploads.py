@@ -5,12 +5,7 @@ from __future__ import annotations
 
 from typing import Any
 
-import pytest
-
 from tests.api.test_engine_uploads import upload
-
-# SQLite only: these pin the engine behind an upload; storage runs on both backends elsewhere.
-pytestmark = pytest.mark.parametrize("backend", ["sqlite"])
 
 
 def spinning_rod(frame: dict[str, Any] | None = None) -> dict[str, Any]:

@@ -5,13 +5,9 @@ from __future__ import annotations
 
 from typing import Any
 
-import pytest
 import yaml
 
 from tests.api.test_authoring import BANK, upload
-
-# SQLite only: these pin the engine behind an upload; storage runs on both backends elsewhere.
-pytestmark = pytest.mark.parametrize("backend", ["sqlite"])
 
 
 def bowling_ball() -> dict[str, Any]:

@@ -9,9 +9,6 @@ import pytest
 
 from tests.api.test_engine_uploads import upload
 
-# SQLite only: these pin the engine behind an upload; storage runs on both backends elsewhere.
-pytestmark = pytest.mark.parametrize("backend", ["sqlite"])
-
 pytestmark = pytest.mark.slow  # each upload derives and simulates the impact in the vetting worker
 
 

@@ -9,24 +9,23 @@ import time
 import pytest
 from fastapi.testclient import TestClient
 
-from app.main import create_app
 from app.settings import Settings
 from problems.loader import BANK_DIR
-from tests.api.conftest import _headers
+from tests.api.conftest import key_headers, make_app
 
 BODY = {"kind": "numeric", "answer": "4.58 m/s^2", "expected": 4.58, "units": "m/s^2"}
 
 
 @pytest.fixture
-def limited(settings: Settings, grading_pool) -> tuple[TestClient, Settings]:
+def limited(settings: Settings, backend: str, grading_pool) -> tuple[TestClient, Settings]:
     tight = settings.model_copy(update={"rate_limit_per_minute": 3, "student_rate_limit_per_minute": 2})
-    with TestClient(create_app(tight, pool=grading_pool)) as client:
+    with TestClient(make_app(tight, backend, pool=grading_pool)) as client:
         yield client, tight
 
 
 def test_a_key_over_its_budget_gets_429_with_retry_after(limited):
-    client, settings = limited
-    headers = _headers(settings, "instructor", "busy")
+    client, _ = limited
+    headers = key_headers(client, "instructor", "busy")
     statuses = [client.post("/v1/check", json=BODY, headers=headers).status_code for _ in range(4)]
     assert statuses == [200, 200, 200, 429]
     response = client.post("/v1/check", json=BODY, headers=headers)
@@ -35,28 +34,18 @@ def test_a_key_over_its_budget_gets_429_with_retry_after(limited):
 
 
 def test_a_students_budget_is_shared_by_all_its_keys(limited):
-    from app.db.database import Database
-    from app.keys import create_key
-
-    client, settings = limited
-    database = Database(settings.database_url)
-    try:
-        keys = [create_key(database, "student", "ada", student="ada")[0] for _ in range(2)]
-    finally:
-        database.dispose()
-    statuses = [
-        client.post("/v1/check", json=BODY, headers={"Authorization": f"Bearer {keys[i % 2]}"}).status_code
-        for i in range(3)
-    ]
+    client, _ = limited
+    keys = [key_headers(client, "student", "ada", student="ada") for _ in range(2)]
+    statuses = [client.post("/v1/check", json=BODY, headers=keys[i % 2]).status_code for i in range(3)]
     assert statuses == [200, 200, 429]
 
 
-def test_ready_turns_200_once_the_problems_are_compiled(settings, grading_pool, tmp_path):
+def test_ready_turns_200_once_the_problems_are_compiled(settings, backend, grading_pool, tmp_path):
     bank = tmp_path / "bank"  # two problems: the whole bank would take minutes to derive here
     for problem in ("atwood", "mass-spring"):
         shutil.copytree(BANK_DIR / problem, bank / problem)
     warming = settings.model_copy(update={"warm_up": True, "bank_dir": bank})
-    with TestClient(create_app(warming, pool=grading_pool)) as client:
+    with TestClient(make_app(warming, backend, pool=grading_pool)) as client:
         deadline = time.monotonic() + 120
         while (response := client.get("/ready")).status_code != 200 and time.monotonic() < deadline:
             assert response.json()["error"]["code"] == "not_ready"
@@ -97,15 +86,15 @@ def test_openapi_documents_every_contract_endpoint(client):
     assert client.get("/docs").status_code == 200
 
 
-def test_a_full_grading_queue_is_503_with_retry_after(settings):
+def test_a_full_grading_queue_is_503_with_retry_after(settings, backend):
     from app.grading.pool import GradingPool
     from tests.api.slow_task import hanging_grade
 
     pool = GradingPool(workers=1, timeout=3.0, memory_mb=1024, max_tasks=10, queue_size=0, task=hanging_grade)
     pool.start()
     try:
-        with TestClient(create_app(settings, pool=pool)) as client:
-            headers = _headers(settings, "student", "ada")
+        with TestClient(make_app(settings, backend, pool=pool)) as client:
+            headers = key_headers(client, "student", "ada")
             hang = {"kind": "symbolic", "answer": "hang", "expected": "m", "symbols": {"m": {}}}
             first = threading.Thread(target=lambda: client.post("/v1/check", json=hang, headers=headers))
             first.start()
@@ -131,6 +120,6 @@ def test_the_public_default_secret_is_refused_for_an_https_deployment():
 
 @pytest.mark.parametrize("expected", ["4_58", "NaN", "Infinity", "0x10", "4.5.8"])
 def test_a_reference_that_is_not_a_plain_decimal_is_422(client, expected):
-    headers = _headers(client.app.state.services.settings, "student", "ada")
+    headers = key_headers(client, "student", "ada")
     response = client.post("/v1/check", json={**BODY, "expected": expected}, headers=headers)
     assert response.status_code == 422

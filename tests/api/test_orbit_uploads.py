@@ -10,9 +10,6 @@ import yaml
 
 from tests.api.test_authoring import BANK, upload
 
-# SQLite only: these pin the engine behind an upload; storage runs on both backends elsewhere.
-pytestmark = pytest.mark.parametrize("backend", ["sqlite"])
-
 
 def satellite(problem_id: str = "my-satellite") -> dict[str, Any]:
     doc = yaml.safe_load((BANK / "satellite-orbit" / "problem.yaml").read_text())

@@ -5,15 +5,7 @@ from __future__ import annotations
 
 from typing import Any
 
-import pytest
-
 from tests.api.test_engine_uploads import _details, three_springs, upload
-
-
-@pytest.fixture
-def backend() -> str:
-    """SQLite only: what these pin is the engine behind an upload; storage runs on both backends elsewhere."""
-    return "sqlite"
 
 
 def damped_block() -> dict[str, Any]:

@@ -149,10 +149,10 @@ def test_unknown_problem_or_part_is_404(client, student_headers, path, status):
     assert response.json()["error"]["code"] == "not_found"
 
 
-def test_students_see_only_their_own_submissions(client, settings, student_headers, instructor_headers):
-    from tests.api.conftest import _headers
+def test_students_see_only_their_own_submissions(client, student_headers, instructor_headers):
+    from tests.api.conftest import key_headers
 
-    other = _headers(settings, "student", "bob")
+    other = key_headers(client, "student", "bob")
     submit(client, student_headers, "wedge_acceleration", "0")
     submit(client, other, "wedge_acceleration", "0")
     mine = client.get("/v1/submissions", headers=student_headers).json()["items"]

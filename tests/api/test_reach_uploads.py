@@ -5,14 +5,10 @@ from __future__ import annotations
 
 from typing import Any
 
-import pytest
 import yaml
 
 from tests.api.test_authoring import BANK
 from tests.api.test_engine_uploads import _details, upload
-
-# the engine is under test here, not the storage: one database backend keeps these derivations cheap
-pytestmark = pytest.mark.parametrize("backend", ["sqlite"])
 
 
 def bank_upload(problem: str, new_id: str) -> dict[str, Any]:

@@ -9,9 +9,6 @@ import pytest
 
 from tests.api.test_authoring import atwood_upload, upload
 
-# SQLite only: these pin the engine behind an upload; storage runs on both backends elsewhere.
-pytestmark = pytest.mark.parametrize("backend", ["sqlite"])
-
 
 def _details(response: Any) -> dict[str, str]:
     assert response.status_code == 422, response.text

@@ -6,7 +6,7 @@ import base64
 import json
 import shutil
 from collections.abc import AsyncIterator, Iterator
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any
 from urllib.parse import parse_qs, urlsplit
@@ -14,6 +14,7 @@ from urllib.parse import parse_qs, urlsplit
 import httpx
 import pytest
 from fastapi import FastAPI
+from joserfc.jwk import RSAKey
 
 from app.auth import Principal, Role
 from app.db.database import Database
@@ -24,7 +25,8 @@ from app.lti import keys
 from app.lti.context import LtiContext
 from app.lti.router import router
 from app.settings import Settings
-from app.storage import sql_stores
+from app.storage import Stores, memory_stores, sql_stores, sql_tool_keys
+from app.storage.memory import MemoryToolKeys
 from problems.loader import BANK_DIR
 from tests.lti.fake_lms import CLIENT_ID, DEPLOYMENT_ID, ISSUER, TOOL, FakeLms, register_fake_lms
 
@@ -69,7 +71,7 @@ def template_database(tmp_path_factory: pytest.TempPathFactory) -> Path:
     with database.session() as session:
         for problem_id, document in PROBLEMS.items():
             save_builtin(session, problem_id, document)
-        keys.create_key(session)
+        sql_tool_keys.create_key(session)
     register_fake_lms(database)
     database.dispose()
     return path
@@ -90,9 +92,28 @@ def lms() -> FakeLms:
 
 
 @pytest.fixture
-def settings(database: Database) -> Settings:
-    # no warm-up: deriving the whole bank in this process would slow every test; problems compile on use
-    return Settings(database_url=database.url, base_url=TOOL, secret="test-secret-123", warm_up=False)
+def settings() -> Settings:
+    # The tool's stores come with the context; no warm-up: deriving the whole bank in this process
+    # would slow every test (problems compile on use).
+    return Settings(database_url="sqlite://", base_url=TOOL, secret="test-secret-123", warm_up=False)
+
+
+@pytest.fixture(scope="session")
+def tool_key() -> RSAKey:
+    return keys.generate()
+
+
+@pytest.fixture
+def stores(request: pytest.FixtureRequest, tool_key: RSAKey) -> Stores:
+    """The tool's stores: on the SQLite copy when the test looks at the database itself (`database`),
+    else the in-memory fakes with the same problems, platform and signing key."""
+    if "database" in request.fixturenames:
+        return sql_stores(request.getfixturevalue("database"))
+    stores = replace(memory_stores(), tool_keys=MemoryToolKeys([tool_key]))
+    for problem_id, document in PROBLEMS.items():
+        stores.problems.save_builtin(problem_id, document)
+    register_fake_lms(stores)
+    return stores
 
 
 STUDENT_KEY = "student-key-for-tests"
@@ -120,9 +141,9 @@ def fake_authenticate_key(key: str) -> Principal | None:
 
 
 @pytest.fixture
-def context(database: Database, settings: Settings, lms: FakeLms) -> LtiContext:
+def context(stores: Stores, settings: Settings, lms: FakeLms) -> LtiContext:
     return LtiContext(
-        stores=sql_stores(database),
+        stores=stores,
         settings=settings,
         transport=httpx.ASGITransport(app=lms.app),
         student_view=fake_student_view,

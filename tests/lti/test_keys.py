@@ -8,7 +8,7 @@ from joserfc import jwt
 from joserfc.jwk import KeySet
 
 from app.db.database import Database
-from app.lti import keys
+from app.storage import sql_tool_keys as keys
 from tests.lti.fake_lms import TOOL
 
 pytestmark = pytest.mark.anyio

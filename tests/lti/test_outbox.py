@@ -15,13 +15,12 @@ from app.lti.models import LtiScoreOutbox
 from app.lti.outbox import (
     SCORE_CONTENT_TYPE,
     OutboxWorker,
-    enqueue_scores,
-    list_delivery_problems,
     parse_retry_after,
     scores_url,
 )
 from app.settings import Settings
 from app.storage import sql_stores
+from app.storage.sql_outbox import enqueue_scores, list_delivery_problems
 from tests.lti.conftest import platform_launch, unverified_claims
 from tests.lti.fake_lms import FakeLms
 
