@@ -9,7 +9,16 @@ from __future__ import annotations
 from decimal import Decimal
 from typing import Annotated, Any
 
-from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, StrictBool, model_validator
+from pydantic import (
+    AfterValidator,
+    BaseModel,
+    BeforeValidator,
+    ConfigDict,
+    Field,
+    StrictBool,
+    StrictStr,
+    model_validator,
+)
 
 from physics.checking import SymbolDecl as CheckSymbolDecl
 from physics.numeric import DEFAULT_TOLERANCE, Tolerance
@@ -71,6 +80,29 @@ Name = Annotated[str, Field(min_length=1, max_length=32)]
 
 class Strict(BaseModel):
     model_config = ConfigDict(extra="forbid", frozen=True, str_strip_whitespace=True)
+
+
+def storable(text: str) -> str:
+    """Refuse what no database stores (NUL, lone surrogates) as a field's fault, not later as a 500."""
+    if "\x00" in text:
+        raise ValueError("must not contain a NUL character")
+    try:
+        text.encode("utf-8")
+    except UnicodeEncodeError:
+        raise ValueError("must be valid Unicode text (a lone surrogate was sent)") from None
+    return text
+
+
+# An HTTP request's text: a JSON string exactly as sent (an answer's error positions count from its
+# first character, so nothing is stripped).
+RequestText = Annotated[StrictStr, AfterValidator(storable)]
+ShortRequestText = Annotated[RequestText, Field(max_length=MAX_EXPRESSION)]
+
+
+class CheckBody(BaseModel):
+    """A `POST /v1/check` body: a one-part problem given in the request (each kind defines its own)."""
+
+    model_config = ConfigDict(extra="forbid")
 
 
 Dimension = Annotated[str, Field(min_length=1, max_length=100)]

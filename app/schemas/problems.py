@@ -8,7 +8,8 @@ from typing import Annotated, Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Field
 
-from app.schemas.check import InputErrorPublic, ReadAsPublic, Text, VerdictPublic
+from app.schemas.check import InputErrorPublic, ReadAsPublic, VerdictPublic
+from problems.fields import RequestText as Text
 
 StudentId = Annotated[Text, Field(min_length=1, max_length=200)]
 

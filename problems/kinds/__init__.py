@@ -1,8 +1,8 @@
 """Every kind of answer a part may ask for, registered by its `kind` (see `problems.kinds.base`).
 
-Adding a kind is one module beside these, registered below in `Part`, `AnyCompiledPart` and
-`_REGISTERED` (a test checks that they name the same kinds; mypy finds every exhaustive match that
-must learn the new one).
+Adding a kind is one module beside these, registered below in `Part`, `CheckIn` (its `POST /v1/check`
+body), `AnyCompiledPart` and `_REGISTERED` (a test checks that they name the same kinds; mypy finds
+every exhaustive match that must learn the new one).
 """
 
 from __future__ import annotations
@@ -12,11 +12,12 @@ from typing import Annotated, Any
 from pydantic import Field
 
 from problems.kinds.base import AnswerKind, CompiledPart
-from problems.kinds.choice import CHOICE, ChoicePart, CompiledChoicePart
-from problems.kinds.numeric import NUMERIC, CompiledNumericPart, NumericPart
-from problems.kinds.symbolic import SYMBOLIC, CompiledSymbolicPart, SymbolicPart
+from problems.kinds.choice import CHOICE, ChoiceCheckIn, ChoicePart, CompiledChoicePart
+from problems.kinds.numeric import NUMERIC, CompiledNumericPart, NumericCheckIn, NumericPart
+from problems.kinds.symbolic import SYMBOLIC, CompiledSymbolicPart, SymbolicCheckIn, SymbolicPart
 
 Part = Annotated[SymbolicPart | NumericPart | ChoicePart, Field(discriminator="kind")]
+CheckIn = Annotated[SymbolicCheckIn | NumericCheckIn | ChoiceCheckIn, Field(discriminator="kind")]
 AnyCompiledPart = CompiledSymbolicPart | CompiledNumericPart | CompiledChoicePart  # matched exhaustively
 
 _REGISTERED: tuple[AnswerKind[Any, Any], ...] = (SYMBOLIC, NUMERIC, CHOICE)
@@ -32,6 +33,7 @@ __all__ = [
     "KINDS",
     "AnswerKind",
     "AnyCompiledPart",
+    "CheckIn",
     "ChoicePart",
     "CompiledChoicePart",
     "CompiledNumericPart",

@@ -6,6 +6,8 @@ An answer kind is one module (`problems/kinds/<kind>.py`) that, for one `kind:` 
   compile   the part as the grader needs it: a `CompiledPart`, whose `job` crosses into a worker
   student   what a student sees of it (never a reference)
   selftest  the cases the bank self-test grades it by
+  check     its `POST /v1/check` body (`<Kind>CheckIn`): a one-part problem given in the request, built
+            from the same declarations, whose `job` is what a part of the kind grades with
 and is registered by its `kind` in `problems.kinds.KINDS`, which `problems.kinds.kind_of` matches.
 """
 

@@ -14,7 +14,7 @@ from physics.checking import QuestionJob
 from physics.choice import MAX_CHOICES, Choice, ChoiceQuestion, label
 from physics.errors import SpecError
 from physics.verdict import Outcome, Reason
-from problems.fields import PART_ID, Attempts, Strict, Text
+from problems.fields import PART_ID, Attempts, CheckBody, RequestText, Strict, Text
 from problems.kinds.base import CheckResult, CompileContext, MeaningContext, Path, Reference, explain
 
 if TYPE_CHECKING:
@@ -36,6 +36,18 @@ class ChoicePart(Strict):
     prompt: Text
     choices: Annotated[list[ChoiceDecl], Field(min_length=2, max_length=MAX_CHOICES)]
     max_attempts: Attempts | None = None
+
+
+class ChoiceCheckIn(CheckBody):
+    """An ad-hoc choice check: the answer (a letter, or a choice's whole text) against the choices a part
+    would state, exactly one of them `correct`."""
+
+    kind: Literal["choice"]
+    answer: RequestText
+    choices: Annotated[list[ChoiceDecl], Field(min_length=2, max_length=MAX_CHOICES)]
+
+    def job(self) -> QuestionJob:
+        return QuestionJob(self.answer, choice_question(self.choices, ("choices",)))
 
 
 @dataclass(frozen=True)

@@ -10,7 +10,7 @@ from functools import partial
 from typing import TYPE_CHECKING, Annotated, Any, Literal
 
 import sympy
-from pydantic import Field
+from pydantic import Field, StrictBool
 
 from physics.checking import NumericJob
 from physics.dimensions import DIMENSIONLESS
@@ -20,7 +20,19 @@ from physics.symbolic import SymbolSpec, UnknownDimension, expression_dimension
 from physics.symbolic.dimensional import DimensionMismatch
 from physics.units import parse_units, unit_dimension
 from physics.verdict import Outcome
-from problems.fields import DEFAULT_TOLERANCE_DECL, PART_ID, Attempts, Name, Strict, Text, ToleranceDecl
+from problems.fields import (
+    DEFAULT_TOLERANCE_DECL,
+    PART_ID,
+    Attempts,
+    CheckBody,
+    ExactNumber,
+    Name,
+    RequestText,
+    ShortRequestText,
+    Strict,
+    Text,
+    ToleranceDecl,
+)
 from problems.kinds.base import CheckResult, CompileContext, MeaningContext, Path, Reference, explain
 from problems.symbols import unit_dimension_at
 from problems.variants import evaluate_reference, format_number, si_values, unit_scale
@@ -61,6 +73,30 @@ class NumericPart(Strict):
     def dimensionless(self) -> bool:
         """`units: "1"` asks for a pure number."""
         return self.units == "1"
+
+
+class NumericCheckIn(CheckBody):
+    """An ad-hoc numeric check: the expected value in `units`, as a numeric part's reference is."""
+
+    kind: Literal["numeric"]
+    answer: RequestText
+    expected: ExactNumber
+    units: ShortRequestText | None = None
+    units_required: StrictBool = True
+    tolerance: ToleranceDecl | None = None  # absent: the default, as for a part
+    arithmetic: StrictBool = True  # the number may be arithmetic (`229/50 m/s^2`); False: a plain decimal
+    units_system: Literal["SI"] | None = None  # "SI": refuse answers in ft, lb, atm, …
+
+    def job(self) -> NumericJob:
+        spec = NumericSpec(
+            expected=self.expected,
+            units=self.units,
+            units_required=self.units_required,
+            tolerance=(self.tolerance or DEFAULT_TOLERANCE_DECL).tolerance(),
+            arithmetic=self.arithmetic,
+            units_system=self.units_system,
+        )
+        return NumericJob(answer=self.answer, spec=spec)
 
 
 @dataclass(frozen=True)

@@ -14,7 +14,14 @@ import sympy
 from pydantic import Field
 
 from physics.answer_text import student_text
-from physics.checking import CompiledQuestion, PartJob, SymbolicQuestion, check_answer, read_expression
+from physics.checking import (
+    CompiledQuestion,
+    PartJob,
+    SymbolicJob,
+    SymbolicQuestion,
+    check_answer,
+    read_expression,
+)
 from physics.errors import SpecError
 from physics.symbolic import (
     KnownMistake,
@@ -28,11 +35,15 @@ from problems.fields import (
     MAX_ITEMS,
     PART_ID,
     Attempts,
+    CheckBody,
     Expression,
     LimitDecl,
     MistakeDecl,
     Name,
+    RequestText,
+    ShortRequestText,
     Strict,
+    SymbolDeclBase,
     Text,
 )
 from problems.kinds.base import (
@@ -66,6 +77,28 @@ class SymbolicPart(Strict):
     def quantity_name(self) -> str:
         """The model quantity this part asks for: `quantity`, else the part's own id."""
         return self.quantity or self.id
+
+
+class SymbolicCheckIn(CheckBody):
+    """An ad-hoc symbolic check: the reference and its symbols, read in the worker like a part's."""
+
+    kind: Literal["symbolic"]
+    answer: RequestText
+    expected: ShortRequestText
+    symbols: dict[Annotated[str, Field(max_length=40)], SymbolDeclBase] = Field(
+        default_factory=dict, max_length=50
+    )
+    constraints: list[ShortRequestText] = Field(default_factory=list, max_length=20)
+    mistakes: list[MistakeDecl] = Field(default_factory=list, max_length=50)
+
+    def job(self) -> SymbolicJob:
+        return SymbolicJob(
+            answer=self.answer,
+            expected=self.expected,
+            symbols=tuple(spec.decl(name) for name, spec in self.symbols.items()),
+            constraints=tuple(self.constraints),
+            mistakes=tuple((m.answer, m.feedback) for m in self.mistakes),
+        )
 
 
 @dataclass(frozen=True)

@@ -12,7 +12,7 @@ from physics.choice import ChoiceQuestion
 from physics.verdict import Outcome, Reason
 from problems.compiled import compile_problem
 from problems.errors import ProblemInvalid
-from problems.kinds import KINDS, AnyCompiledPart, Part
+from problems.kinds import KINDS, AnyCompiledPart, CheckIn, Part
 from problems.loader import parse_problem
 from problems.selftest import verify_problem
 from problems.student import student_view
@@ -20,14 +20,18 @@ from problems.variants import draw_variant
 from tests.problems.documents import spring_with_choice
 
 
-def _kinds_of_part_union() -> set[str]:
-    union = typing.get_args(Part)[0]
+def _kinds_of(annotated: object) -> set[str]:
+    union = typing.get_args(annotated)[0]
     return {typing.get_args(model.model_fields["kind"].annotation)[0] for model in typing.get_args(union)}
 
 
 def test_every_kind_the_schema_admits_is_registered_and_compiles_to_its_own_part() -> None:
-    assert _kinds_of_part_union() == set(KINDS) == {"symbolic", "numeric", "choice"}
+    assert _kinds_of(Part) == set(KINDS) == {"symbolic", "numeric", "choice"}
     assert len(typing.get_args(AnyCompiledPart)) == len(KINDS)
+
+
+def test_every_registered_kind_can_be_checked_ad_hoc() -> None:
+    assert _kinds_of(CheckIn) == set(KINDS)
 
 
 def test_a_choice_part_compiles_to_a_question_graded_by_letter_or_text() -> None:
