@@ -49,8 +49,8 @@ def expression_dimension(expr: sympy.Basic, dims: Mapping[sympy.Symbol, Dimensio
         if expr not in dims:
             raise UnknownDimension(expr.name)
         return dims[expr]
-    if expr.is_Number or not expr.free_symbols:
-        return DIMENSIONLESS  # numbers, pi, e, and any closed-form constant
+    if expr.is_Atom:
+        return DIMENSIONLESS  # numbers, pi, e, I (a closed-form constant is dimensionless by recursion)
     if expr.is_Add:
         return _sum_dimension(expr, dims)
     if expr.is_Mul:

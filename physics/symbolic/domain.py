@@ -6,6 +6,7 @@ is an open interval and replaces the positive default. Equivalence is decided on
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 
@@ -96,6 +97,8 @@ def symbol_assumptions(spec: SymbolSpec) -> dict[str, bool]:
     return assumptions
 
 
+@functools.lru_cache(maxsize=1024)
 def make_symbol(spec: SymbolSpec) -> sympy.Symbol:
-    """A sympy Symbol named as the spec, with the assumptions its domain allows."""
+    """A sympy Symbol named as the spec, with the assumptions its domain allows (cached: sympy's
+    assumption handling is a tenth of reading a new reference)."""
     return sympy.Symbol(spec.name, **symbol_assumptions(spec))

@@ -58,7 +58,9 @@ def rounded(values: Column) -> tuple[Floats, bool]:
 def float_sample(
     columns: Mapping[sympy.Symbol, Floats], floats: Floats, underflow: bool = False
 ) -> FloatSample:
-    usable = not underflow and in_range(floats) and all(in_range(c) for c in columns.values())
+    usable = (
+        not underflow and in_range(floats) and (not columns or in_range(np.stack(list(columns.values()))))
+    )
     magnitudes = np.abs(floats[np.isfinite(floats)])
     scale = float(np.median(magnitudes)) if magnitudes.size else 1.0
     return FloatSample(columns, floats, scale if scale > 0 else 1.0, usable)

@@ -30,7 +30,6 @@ from physics.dimensions import describe
 from physics.errors import ParseError, UnknownSymbol
 from physics.symbolic.compare import (
     PREC,
-    PRECISE_PREC,
     PRECISE_TOLERANCE_BITS,
     TOLERANCE_BITS,
     agreement,
@@ -99,8 +98,7 @@ def _removable(answer: sympy.Expr, reference: PreparedReference, indexes: tuple[
 
 def _precisely_equal(answer: sympy.Expr, reference: PreparedReference) -> bool:
     """Agreement at twice the precision wherever the answer has a real value among the check points."""
-    size = len(reference.precise_values)
-    values = Evaluator(reference.precise_columns, size, PRECISE_PREC)(answer)
+    values = reference.precise_evaluator()(answer)
     return all(
         a is None or (b is not None and close(a, b, reference.scale, PRECISE_TOLERANCE_BITS))
         for a, b in zip(values, reference.precise_values, strict=True)
@@ -109,9 +107,8 @@ def _precisely_equal(answer: sympy.Expr, reference: PreparedReference) -> bool:
 
 def _confirmed(answer: sympy.Expr, reference: PreparedReference) -> bool:
     """Defined and equal at twice the precision at every one of the check points (no point skipped)."""
-    size = len(reference.precise_values)
-    values = Evaluator(reference.precise_columns, size, PRECISE_PREC)(answer)
-    return size > 0 and all(
+    values = reference.precise_evaluator()(answer)
+    return len(values) > 0 and all(
         a is not None and b is not None and close(a, b, reference.scale, PRECISE_TOLERANCE_BITS)
         for a, b in zip(values, reference.precise_values, strict=True)
     )

@@ -179,11 +179,24 @@ def _pow_point(base: Mpf, exponent: Mpf, prec: int) -> Mpf | None:
 class Evaluator:
     """Evaluates expressions over fixed columns of symbol values; caches shared subtrees."""
 
-    def __init__(self, columns: Mapping[sympy.Symbol, Column], size: int, prec: int) -> None:
+    def __init__(
+        self,
+        columns: Mapping[sympy.Symbol, Column],
+        size: int,
+        prec: int,
+        known: Mapping[sympy.Basic, Column] | None = None,
+    ) -> None:
         self.columns = columns
         self.size = size
         self.prec = prec
-        self._cache: dict[sympy.Basic, Column] = {}
+        # Subtrees already evaluated over the same columns at the same precision (e.g. the reference's,
+        # which an answer often shares: sin(theta), M + m sin(theta)^2).
+        self._cache: dict[sympy.Basic, Column] = dict(known or {})
+
+    @property
+    def known(self) -> Mapping[sympy.Basic, Column]:
+        """Every subtree evaluated so far (to start another evaluator over the same columns from)."""
+        return self._cache
 
     def constant(self, value: Mpf | None) -> Column:
         return [value] * self.size

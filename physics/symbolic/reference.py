@@ -63,8 +63,18 @@ class PreparedReference:
         """The reference at a few sample points, in multiprecision (the same numbers as `values`)."""
         if "values" in self.__dict__ or self.sample.required[0] is not None:
             return [self.values[i] for i in indexes]
-        columns = {s: [self.sample.columns[s][i] for i in indexes] for s in self.sample.symbols}
-        return Evaluator(columns, len(indexes), PREC)(self.expected)
+        known = self._point_values
+        missing = tuple(i for i in indexes if i not in known)
+        if missing:
+            columns = {s: [self.sample.columns[s][i] for i in missing] for s in self.sample.symbols}
+            found = Evaluator(columns, len(missing), PREC)(self.expected)
+            known.update(zip(missing, found, strict=True))
+        return [known[i] for i in indexes]
+
+    @cached_property
+    def _point_values(self) -> dict[int, Mpf | None]:
+        """The points `values_at` computed, kept: a prepared reference meets many wrong answers."""
+        return {}
 
     @cached_property
     def precise_columns(self) -> Mapping[sympy.Symbol, Column]:
@@ -73,11 +83,21 @@ class PreparedReference:
         return {s: list(self.sample.columns[s][:size]) for s in self.sample.symbols}
 
     @cached_property
+    def _precise_subtrees(self) -> Mapping[sympy.Basic, Column]:
+        evaluator = Evaluator(self.precise_columns, min(PRECISE_POINTS, self.sample.size), PRECISE_PREC)
+        evaluator(self.expected)
+        return dict(evaluator.known)
+
+    @cached_property
     def precise_values(self) -> Column:
         """...and the reference there at PRECISE_PREC."""
-        return Evaluator(self.precise_columns, min(PRECISE_POINTS, self.sample.size), PRECISE_PREC)(
-            self.expected
-        )
+        return self._precise_subtrees[self.expected]
+
+    def precise_evaluator(self) -> Evaluator:
+        """An evaluator at the precise points that starts from the reference's subtrees (an answer
+        shares many: sin(theta), M + m sin(theta)^2), so only what differs is computed."""
+        size = min(PRECISE_POINTS, self.sample.size)
+        return Evaluator(self.precise_columns, size, PRECISE_PREC, self._precise_subtrees)
 
     @cached_property
     def mistakes(self) -> tuple[PreparedMistake, ...]:
