@@ -30,7 +30,7 @@ from physics.figures.free_body import free_body_figure
 from problems.compiled import CompiledProblem, compile_problem, document_digest
 from problems.errors import ProblemInvalid
 from problems.fingerprint import engine_digest, source_digest
-from problems.loader import load_bank, parse_problem
+from problems.loader import BANK_DIR, load_bank, parse_problem
 from problems.modelinfo import load_doc_model
 from problems.schema import ProblemDocument
 from problems.semantics import semantic_errors
@@ -43,6 +43,26 @@ T = TypeVar("T")
 
 
 _MEANING_CHECKED: set[str] = set()  # digests (document and code files) found sound in this process
+
+
+_BANKS_READ: dict[Path, tuple[str, list[ProblemDocument]]] = {}  # by directory: its files' digest, documents
+
+
+def _bank_documents(bank_dir: Path | None) -> list[ProblemDocument]:
+    """The bank's documents (shape checked), parsed again only when a file changed: every app in one
+    process (each test's fresh database) stores the same bank, and parsing it is most of a start-up."""
+    root = (bank_dir or BANK_DIR).resolve()
+    digest = hashlib.sha256()
+    for path in sorted(root.rglob("*")):
+        if path.is_file():
+            digest.update(f"{path.relative_to(root)}\0".encode())
+            digest.update(path.read_bytes())
+    found = _BANKS_READ.get(root)
+    if found is not None and found[0] == digest.hexdigest():
+        return list(found[1])
+    documents = load_bank(root, check_meaning=False)
+    _BANKS_READ[root] = (digest.hexdigest(), documents)
+    return list(documents)
 
 
 def _meaning_faults(doc: ProblemDocument) -> list[tuple[str, str]]:
@@ -165,7 +185,7 @@ class Catalog:
         the stored version was checked when it was stored).
         """
         listed = {record.id: record for record in self.list()}
-        documents = load_bank(self._bank_dir, check_meaning=False)
+        documents = _bank_documents(self._bank_dir)
         unchanged = {
             doc.id
             for doc in documents

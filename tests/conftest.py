@@ -8,9 +8,13 @@ other test runs share that server, and are dropped at the end.
 
 from __future__ import annotations
 
+import contextlib
 import os
 import secrets
+import shutil
+import sqlite3
 from collections.abc import Iterator
+from pathlib import Path
 
 import pytest
 from sqlalchemy import Engine, create_engine, text
@@ -108,6 +112,16 @@ def database_url(
     server.drop_database(url)
 
 
+@pytest.fixture(scope="session")
+def migrated_sqlite_file(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """A migrated, empty SQLite file that each test copies (running the migrations is most of its cost)."""
+    path = tmp_path_factory.mktemp("db-template") / "physcheck.db"
+    migrate(f"sqlite:///{path}")
+    with contextlib.closing(sqlite3.connect(path)) as connection:  # all of it in the one file (WAL)
+        connection.execute("PRAGMA wal_checkpoint(TRUNCATE)")
+    return path
+
+
 @pytest.fixture
 def db(
     backend: str, request: pytest.FixtureRequest, tmp_path_factory: pytest.TempPathFactory
@@ -115,8 +129,9 @@ def db(
     """A migrated, empty `Database`."""
     assert backend in ("sqlite", "postgres"), f"a database on the {backend!r} backend"
     if backend == "sqlite":
-        url = f"sqlite:///{tmp_path_factory.mktemp('db') / 'physcheck.db'}"
-        migrate(url)
+        path = tmp_path_factory.mktemp("db") / "physcheck.db"
+        shutil.copyfile(request.getfixturevalue("migrated_sqlite_file"), path)
+        url = f"sqlite:///{path}"
     else:
         url = request.getfixturevalue("migrated_postgres_url")
         _empty_postgres(url)
