@@ -6,6 +6,7 @@ from functools import lru_cache
 
 import sympy
 
+from physics.engine import tidy
 from physics.engine.checks import physical_checks
 from physics.engine.conservation import ConservationMethod
 from physics.engine.dalembert import DAlembertMethod
@@ -44,6 +45,7 @@ def derive(model: Model) -> Derivation:
 @lru_cache(maxsize=64)
 def _derive(model: Model) -> Derivation:
     clear_domain_points()  # shared within this derivation only, so vetting times stay honest
+    tidy.forget()
     mech = Mechanics(model)
     check_consistency(model, mech)
     methods = [cls(model, mech) for cls in _methods()]
@@ -217,7 +219,7 @@ def _check_free_symbols(model: Model, quantity: Quantity, method: Method, value:
 def _simplest(candidates: list[sympy.Expr]) -> sympy.Expr:
     forms: list[sympy.Expr] = []
     for expr in candidates:
-        forms += [sympy.simplify(expr), sympy.factor(sympy.expand_trig(expr))]
+        forms += [tidy.simplify(expr), sympy.factor(sympy.expand_trig(expr))]
     return min(forms, key=lambda e: (sympy.count_ops(e), len(str(e))))
 
 

@@ -8,7 +8,7 @@ from functools import cached_property, lru_cache
 
 import sympy
 
-from physics.engine import damping, impact, mode_shapes, modes, slipping, trajectory, work_energy
+from physics.engine import damping, impact, mode_shapes, modes, slipping, tidy, trajectory, work_energy
 from physics.engine.mechanics import Mechanics
 from physics.engine.model import (
     IMPACT_KINDS,
@@ -259,7 +259,7 @@ class Method(ABC):
         return MethodReport(self.name, self.title, tuple(self.steps), dict(results), tuple(notes))
 
     def at_state(self, expr: sympy.Expr) -> sympy.Expr:
-        return sympy.simplify(expr.subs(dict(self.model.state)))
+        return tidy.simplify(expr.subs(dict(self.model.state)))
 
 
 def _real_roots(expr: sympy.Expr, q: sympy.Symbol) -> list[sympy.Expr]:

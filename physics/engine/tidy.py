@@ -1,0 +1,31 @@
+"""`simplify`, remembered within one derivation.
+
+The methods meet the same expressions again and again: Lagrange's solution is simplified when solved,
+again when read at the state (already substituted), again when the simplest of the methods' answers is
+chosen. `sympy.simplify` is most of a derivation's time and sympy does not cache it, so it is cached
+here, and what it returns counts as simplified (its own result is not simplified a second time).
+"""
+
+from __future__ import annotations
+
+import sympy
+
+MAX_REMEMBERED = 4096  # a bound, should a caller outside `derive` never clear it
+
+_remembered: dict[sympy.Basic, sympy.Expr] = {}
+
+
+def simplify(expr: sympy.Expr) -> sympy.Expr:
+    """`sympy.simplify(expr)`, from memory when this derivation has simplified expr (or reached it)."""
+    found = _remembered.get(expr)
+    if found is None:
+        found = sympy.simplify(expr)
+        if len(_remembered) >= MAX_REMEMBERED:
+            _remembered.clear()
+        _remembered[expr] = found
+    return found
+
+
+def forget() -> None:
+    """Start afresh: each derivation pays for its own simplifications, so vetting times stay honest."""
+    _remembered.clear()
