@@ -300,12 +300,7 @@ def symbol_spec(decl: SymbolDecl) -> SymbolSpec:
     (0, pi/2)), and reading their units and ranges is a fifth of reading a new reference."""
     dimension = None
     if decl.dimension is not None:
-        try:
-            dimension = unit_dimension(decl.dimension)
-        except SpecError as error:
-            raise error.at(("symbols", decl.name, "dimension")) from None
-        except AnswerError as error:
-            raise SpecError.unreadable(error, ("symbols", decl.name, "dimension"), decl.dimension) from None
+        dimension = unit_dimension(decl.dimension, ("symbols", decl.name, "dimension"))
     low = high = None
     if decl.range is not None:
         low, high = (

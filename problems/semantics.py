@@ -16,12 +16,13 @@ import sympy
 from physics.checking import read_relation
 from physics.errors import SpecError
 from physics.symbolic import SymbolSpec, make_symbol
+from physics.units import unit_dimension
 from problems.errors import ErrorItem
 from problems.kinds import kind_of
 from problems.kinds.base import Faults, MeaningContext
 from problems.modelinfo import model_quantity_names, spec_error_items
 from problems.schema import GivenDecl, ProblemDocument, SymbolDecl
-from problems.symbols import read_bound, symbol_spec, unit_dimension_at
+from problems.symbols import read_bound, symbol_spec
 from problems.variants import placeholders, unit_scale, valid_range_errors
 
 
@@ -88,8 +89,8 @@ def _check_given(
         return
     for message in valid_range_errors(given):
         out.add(path, message)
-    unit_dim = out.attempt(lambda: unit_dimension_at(given.unit, (*path, "unit")))
-    symbol_dim = out.attempt(lambda: unit_dimension_at(decl.dimension, ("symbols", name, "dimension")))
+    unit_dim = out.attempt(lambda: unit_dimension(given.unit, (*path, "unit")))
+    symbol_dim = out.attempt(lambda: unit_dimension(decl.dimension, ("symbols", name, "dimension")))
     if unit_dim is not None and symbol_dim is not None and unit_dim != symbol_dim:
         out.add((*path, "unit"), f"{given.unit} does not have the dimension of {name} ({decl.dimension})")
         return

@@ -13,10 +13,7 @@ import sympy
 
 from physics.checking import read_expression
 from physics.checking import symbol_spec as checker_symbol_spec
-from physics.dimensions import DIMENSIONLESS, Dimension
-from physics.errors import AnswerError, SpecError
 from physics.symbolic import SymbolSpec, make_symbol
-from physics.units import unit_dimension
 from problems.fields import SymbolDecl
 
 if TYPE_CHECKING:
@@ -34,18 +31,6 @@ def read_bound(value: Decimal | str, path: tuple[str | int, ...]) -> sympy.Expr:
 def symbol_spec(name: str, decl: SymbolDecl) -> SymbolSpec:
     """The core's spec for one declared symbol, read exactly as the grading workers read it."""
     return checker_symbol_spec(decl.decl(name))
-
-
-def unit_dimension_at(text: str, path: tuple[str | int, ...]) -> Dimension:
-    """The dimension of an author's unit text (`1` is dimensionless); a fault is a SpecError at `path`."""
-    if text.strip() == "1":
-        return DIMENSIONLESS
-    try:
-        return unit_dimension(text)
-    except SpecError as error:
-        raise error.at(path) from None
-    except AnswerError as error:
-        raise SpecError.unreadable(error, path, text) from None
 
 
 def symbol_specs(doc: ProblemDocument) -> dict[str, SymbolSpec]:

@@ -6,6 +6,8 @@ pint (one exact registry, built lazily) supplies the conversion factors; `parser
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 from physics.dimensions import Dimension
 from physics.errors import AnswerError, SpecError
 from physics.units.parsed import IncompatibleUnits, ParsedUnits
@@ -23,12 +25,12 @@ __all__ = [
 ]
 
 
-def unit_dimension(text: str) -> Dimension:
+def unit_dimension(text: str, path: Sequence[str | int] = ("dimension",)) -> Dimension:
     """The dimension of an author's unit expression (`kg`, `m/s^2`, `J`, `1`), for symbol declarations.
 
-    Raises SpecError (the author's fault, not a student's) when the text is not a unit expression.
+    Raises SpecError at `path` (the author's fault, not a student's) when the text is not a unit expression.
     """
     try:
         return parse_units(text).dimension
     except AnswerError as error:
-        raise SpecError.unreadable(error, ("dimension",), text) from error
+        raise SpecError.unreadable(error, path, text) from error

@@ -34,7 +34,6 @@ from problems.fields import (
     ToleranceDecl,
 )
 from problems.kinds.base import CheckResult, CompileContext, MeaningContext, Path, Reference, explain
-from problems.symbols import unit_dimension_at
 from problems.variants import evaluate_reference, format_number, si_values, unit_scale
 
 if TYPE_CHECKING:
@@ -162,7 +161,7 @@ class NumericKind:
         if part.of not in context.expression_parts and (quantities is None or part.of not in quantities):
             out.add((*path, "of"), f"{part.of!r} is neither a symbolic part nor a model quantity")
         if not part.dimensionless:
-            out.attempt(partial(unit_dimension_at, part.units, (*path, "units")))
+            out.attempt(partial(unit_dimension, part.units, (*path, "units")))
             if part.units_system == "SI":
                 out.attempt(partial(si_units_at, part.units, (*path, "units")))
 
@@ -251,7 +250,7 @@ def si_units_at(text: str, path: Path) -> None:
     try:
         units = parse_units(text)
     except AnswerError:
-        return  # unit_dimension_at reports it
+        return  # unit_dimension reports it
     foreign = [atom.symbol for atom, _ in units.factors if not atom.si]
     if foreign:
         raise SpecError(f"{foreign[0]} is not an SI unit, but the part asks for SI answers", path)
