@@ -328,9 +328,10 @@ def test_body_over_the_cap_is_413(client, student_headers, settings):
     assert response.json()["error"]["code"] == "payload_too_large"
 
 
-def test_answer_longer_than_the_limit_is_invalid_not_an_error(client, student_headers, settings):
+@pytest.mark.parametrize("make", [symbolic, numeric, choice], ids=["symbolic", "numeric", "choice"])
+def test_answer_longer_than_the_limit_is_invalid_not_an_error(client, student_headers, settings, make):
     result = client.post(
-        "/v1/check", json=symbolic("m" * (settings.max_answer_chars + 1)), headers=student_headers
+        "/v1/check", json=make("m" * (settings.max_answer_chars + 1)), headers=student_headers
     ).json()
     assert (result["verdict"], result["reason"]) == ("invalid", "too_large")
 
