@@ -45,7 +45,7 @@ class PartInfo:
     latex: str  # the reference (for a numeric part, the expression it is evaluated from)
     units: str | None
     tolerance: str | None  # numeric parts: "within 1 %", …
-    expected: str | None  # numeric parts, for the variant described: "4.580 m/s²"
+    expected: str | None  # numeric parts, for the variant described: "4.580 m/s²" (to the part's sigfigs)
     expected_full: str | None  # …and the 12 significant figures it is checked against
     mistakes: tuple[MistakeInfo, ...]
     limits: tuple[LimitInfo, ...]
@@ -105,7 +105,8 @@ def _numeric(part: CompiledNumericPart, variant: Variant | None) -> tuple[str | 
         value = part.reference(variant)
     except SpecError as error:
         return None, None, error.message
-    shown = format_quantity(round_sigfigs(value, SHOWN_FIGURES), part.units)
+    # A part graded to n significant figures shows the value an answer must equal, by the same rule.
+    shown = format_quantity(round_sigfigs(value, part.tolerance.sigfigs or SHOWN_FIGURES), part.units)
     return shown, format_quantity(value, part.units), None
 
 

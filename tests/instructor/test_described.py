@@ -1,0 +1,35 @@
+"""What the instructor is shown of a numeric part's reference agrees with what grading accepts."""
+
+from __future__ import annotations
+
+from decimal import Decimal
+
+import pytest
+
+from app.instructor.described import SHOWN_FIGURES, describe
+from physics.verdict import Outcome
+from problems.compiled import CompiledNumericPart, compile_problem
+from problems.loader import parse_problem
+from problems.variants import fixed_variant
+from tests.problems.documents import spring
+
+
+@pytest.mark.parametrize("sigfigs", [None, 2, 3, 5])
+def test_a_numeric_reference_is_shown_to_the_figures_its_answers_are_graded_by(sigfigs) -> None:
+    doc = spring()
+    numeric = next(i for i, part in enumerate(doc["parts"]) if part["kind"] == "numeric")
+    if sigfigs is not None:
+        doc["parts"][numeric]["tolerance"] = {"sigfigs": sigfigs}
+    parsed = parse_problem(doc, check_meaning=False)
+    compiled = compile_problem(parsed)
+    variant = fixed_variant(parsed, {})
+    part_id = doc["parts"][numeric]["id"]
+    shown = next(p for p in describe(compiled, variant).parts if p.id == part_id).expected
+    assert shown is not None
+    number = shown.replace(" × 10^", "e").split()[0]
+    assert len(Decimal(number).as_tuple().digits) == (sigfigs or SHOWN_FIGURES)
+    part = compiled.parts[part_id]
+    assert isinstance(part, CompiledNumericPart)
+    if sigfigs is not None:  # what is shown is an answer the part accepts, digit for digit
+        verdict = part.spec(variant).grade(shown)
+        assert verdict.outcome is Outcome.CORRECT, (shown, verdict)
