@@ -24,7 +24,7 @@ import sympy
 
 from physics.dimensions import Dimension
 from physics.errors import AnswerError, SpecError
-from physics.mathinput import InputLimits, parse_math
+from physics.mathinput import InputLimits, parse_expression
 from physics.numeric import NumericSpec
 from physics.symbolic import (
     KnownMistake,
@@ -334,7 +334,7 @@ def read_expression(text: str, table: Mapping[str, sympy.Symbol], path: tuple[st
     if text.strip() in _INFINITY_WORDS:
         return _INFINITY_WORDS[text.strip()]
     try:
-        return parse_math(text, table).expr
+        return parse_expression(text, table)
     except AnswerError as error:
         raise SpecError.unreadable(error, path) from None
 

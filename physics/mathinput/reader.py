@@ -72,6 +72,26 @@ def parse_math(
     Raises ParseError, AmbiguousInput, UnknownSymbol, UnknownFunction or TooLarge, each with a 0-based
     `position` into `text`; sizes are checked before any value is computed.
     """
+    expr, read_as = _read(text, names, limits, choices, render=True)
+    assert read_as is not None
+    return ParsedMath(expr, read_as)
+
+
+def parse_expression(
+    text: str, names: Mapping[str, sympy.Symbol], *, limits: InputLimits = DEFAULT_LIMITS
+) -> sympy.Expr:
+    """`parse_math(...).expr`, without rendering how the text reads (a sixth of the work): for texts
+    whose reading is never shown, such as a reference answer. Raises what parse_math raises."""
+    return _read(text, names, limits, None, render=False)[0]
+
+
+def _read(
+    text: str,
+    names: Mapping[str, sympy.Symbol],
+    limits: InputLimits,
+    choices: Mapping[int, int] | None,
+    render: bool,
+) -> tuple[sympy.Expr, ReadAs | None]:
     table = _name_table(tuple(names.items()))
     tokens = tokenize(text, limits)
     _refuse_exponent_letter_clash(text, tokens, table)
@@ -79,10 +99,10 @@ def parse_math(
     try:
         tree = Parser(text, tokens, limits, choices).parse()
         expr = Builder(table.symbols, limits).build(tree)
-        read_as = ReadAs(render_text(tree), render_latex(tree))
+        read_as = ReadAs(render_text(tree), render_latex(tree)) if render else None
     except RecursionError:
         # Only reachable when a caller raises max_depth far above the default.
         raise TooLarge("The answer is nested too deeply.", 0) from None
     if expr.has(*_UNDEFINED):
         raise ParseError("The answer has no value: it divides by zero or takes the log of zero.", 0)
-    return ParsedMath(expr, read_as)
+    return expr, read_as

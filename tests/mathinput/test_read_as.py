@@ -4,7 +4,8 @@ from __future__ import annotations
 
 import pytest
 
-from physics.mathinput import parse_math
+from physics.errors import AnswerError
+from physics.mathinput import parse_expression, parse_math
 from tests.mathinput.support import names, read, same
 
 WEDGE = ("m", "M", "g", "theta")
@@ -88,3 +89,22 @@ LATEX = [case for case in LATEX if case[2] is not None]
 @pytest.mark.parametrize(("text", "declared", "expected"), LATEX, ids=[t[0] for t in LATEX])
 def test_read_as_latex_uses_frac_and_named_functions(text, declared, expected):
     assert read(text, *declared).read_as.latex == expected
+
+
+@pytest.mark.parametrize(
+    "text",
+    ["-m*g*tan(theta)/(M*(1 + tan(theta)**2) + m*tan(theta)**2)", "sqrt(144*U0/(m*r0**2))", "mgsin(theta)"],
+)
+def test_parse_expression_reads_as_parse_math_without_rendering(text):
+    table = names("m", "M", "g", "theta", "U0", "r0")
+    assert parse_expression(text, table) == parse_math(text, table).expr
+
+
+@pytest.mark.parametrize("text", ["m*", "q*m", "1/0", "m g h h h h h" * 200])
+def test_parse_expression_refuses_what_parse_math_refuses(text):
+    table = names("m", "g", "h")
+    with pytest.raises(AnswerError) as refused:
+        parse_math(text, table)
+    with pytest.raises(type(refused.value)) as also:
+        parse_expression(text, table)
+    assert also.value.position == refused.value.position
