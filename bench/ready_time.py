@@ -1,14 +1,16 @@
-"""Seconds from `physcheck serve` to a 200 from `/ready`: cold (nothing persisted), then warm (restarts).
+"""Seconds from `physcheck serve` to a 200 from `/ready`: cold (nothing persisted) and warm (restarts).
 
-    .venv/bin/python bench/ready_time.py [--warm-runs 3] [--directory DIR]
+    .venv/bin/python bench/ready_time.py [--cold-runs 2] [--warm-runs 5] [--directory DIR]
 
-Starts its own server (bench/load.py's OwnServer: a free 127.0.0.1 port, its own process group, a fresh
-SQLite database in a temporary directory). The cold start derives the whole bank and persists it; each
-warm start is a restart on the same database, which should load the compiled bank instead. Printed:
-the cold time and every warm time with their median. /ready is polled every 20 ms.
+Starts its own servers (bench/load.py's OwnServer: a free 127.0.0.1 port, its own process group, a
+SQLite database in a temporary directory). Each cold start is on a fresh database: it derives the whole
+bank and persists it. The warm starts are restarts on the last cold start's database, which load the
+compiled bank instead. Printed: every time with the median of each, in wall seconds and in CPU seconds
+(all the server's processes up to the 200: the server, the workers' fork server and the workers; on a
+loaded machine wall time is mostly waiting for a core, CPU time is not). /ready is polled every 20 ms.
 
 With `--directory DIR` the database is kept in DIR (created if missing): a later run on the same DIR
-skips the cold start (the bank is persisted there already) and times only warm starts, so that code
+skips the cold starts (the bank is persisted there already) and times only warm starts, so that code
 changes to start-up can be compared before and after without deriving the bank again.
 """
 
@@ -16,6 +18,8 @@ from __future__ import annotations
 
 import argparse
 import contextlib
+import os
+import shutil
 import statistics
 import tempfile
 import time
@@ -26,46 +30,81 @@ from load import OwnServer
 
 POLL = 0.02
 READY_TIMEOUT = 900.0  # a cold start derives the whole bank: minutes on a busy machine
+TICKS = os.sysconf("SC_CLK_TCK")
 
 
-def time_to_ready(server: OwnServer) -> float:
+def group_cpu(group: int) -> float:
+    """CPU seconds (user and system) used so far by the live processes of a process group."""
+    total = 0
+    for entry in Path("/proc").iterdir():
+        if not entry.name.isdigit():
+            continue
+        with contextlib.suppress(OSError):
+            # After the command name (in parentheses, may hold spaces): state, ppid, pgrp, ... utime at
+            # field 14 and stime at 15 of the whole line.
+            fields = (entry / "stat").read_text().rsplit(")", 1)[1].split()
+            if int(fields[2]) == group:
+                total += int(fields[11]) + int(fields[12])
+    return total / TICKS
+
+
+def time_to_ready(server: OwnServer) -> tuple[float, float]:
+    """(wall, CPU) seconds from starting the server to its first 200 from /ready."""
     started = time.perf_counter()
     server.start()
+    assert server.process is not None
     try:
         with httpx.Client(trust_env=False, timeout=2) as client:
             while time.perf_counter() - started < READY_TIMEOUT:
-                if server.process is not None and server.process.poll() is not None:
+                if server.process.poll() is not None:
                     raise RuntimeError(f"the server exited:\n{server.log_tail()}")
                 with contextlib.suppress(httpx.HTTPError):
                     if client.get(f"{server.url}/ready").status_code == 200:
-                        return time.perf_counter() - started
+                        return time.perf_counter() - started, group_cpu(server.process.pid)
                 time.sleep(POLL)
         raise RuntimeError(f"not ready in {READY_TIMEOUT:g} s:\n{server.log_tail()}")
     finally:
         server.stop()
 
 
+def report(label: str, runs: list[tuple[float, float]]) -> None:
+    walls = ", ".join(f"{wall:.2f}" for wall, _ in runs)
+    cpus = ", ".join(f"{cpu:.2f}" for _, cpu in runs)
+    print(
+        f"{label}: wall median {statistics.median(w for w, _ in runs):.2f} s of {walls}; "
+        f"CPU median {statistics.median(c for _, c in runs):.2f} s of {cpus}",
+        flush=True,
+    )
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(
         description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter
     )
-    parser.add_argument("--warm-runs", type=int, default=3)
+    parser.add_argument("--cold-runs", type=int, default=2)
+    parser.add_argument("--warm-runs", type=int, default=5)
     parser.add_argument("--directory", type=Path, help="keep the database here (reused when present)")
     args = parser.parse_args()
     with contextlib.ExitStack() as stack:
         if args.directory is None:
-            directory = Path(stack.enter_context(tempfile.TemporaryDirectory(prefix="physcheck-ready-")))
+            root = Path(stack.enter_context(tempfile.TemporaryDirectory(prefix="physcheck-ready-")))
         else:
-            directory = args.directory
-            directory.mkdir(parents=True, exist_ok=True)
-        persisted = (directory / "bench.db").exists()
+            root = args.directory
+            root.mkdir(parents=True, exist_ok=True)
+        directory = root
+        cold: list[tuple[float, float]] = []
+        if not (root / "bench.db").exists():
+            for run in range(args.cold_runs):
+                last = run == args.cold_runs - 1
+                directory = root if last else Path(tempfile.mkdtemp(prefix="physcheck-cold-"))
+                try:
+                    cold.append(time_to_ready(OwnServer(directory, check_workers=None)))
+                finally:
+                    if not last:
+                        shutil.rmtree(directory)
+            report("cold (nothing persisted)", cold)
         server = OwnServer(directory, check_workers=None)
-        if not persisted:
-            cold = time_to_ready(server)
-            print(f"cold (nothing persisted): {cold:.2f} s")
-        warm = [time_to_ready(server) for _ in range(args.warm_runs)]
-        shown = ", ".join(f"{t:.2f}" for t in warm)
-        print(f"warm (restart, bank persisted): median {statistics.median(warm):.2f} s of {shown}")
+        report("warm (restart, bank persisted)", [time_to_ready(server) for _ in range(args.warm_runs)])
 
 
 if __name__ == "__main__":

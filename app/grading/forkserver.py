@@ -11,7 +11,11 @@ import multiprocessing
 import multiprocessing.context
 from multiprocessing import forkserver
 
-PRELOAD = ["app.grading.preload"]
+# app.cli: each worker runs the program's main script again when it starts, and the `physcheck` script
+# imports app.cli (with the settings: a sixth of a CPU-second), so the fork server imports it once for
+# them all, at start and at every replacement. ("__main__" would say so for any script, but Python
+# 3.11's fork server never receives the main script's path.)
+PRELOAD = ["app.cli", "app.grading.preload"]
 
 
 def context() -> multiprocessing.context.ForkServerContext:
