@@ -46,11 +46,22 @@ def test_ready_turns_200_once_the_problems_are_compiled(settings, backend, gradi
         shutil.copytree(BANK_DIR / problem, bank / problem)
     warming = settings.model_copy(update={"warm_up": True, "bank_dir": bank})
     with TestClient(make_app(warming, backend, pool=grading_pool)) as client:
+        headers = key_headers(client, "student", "first", student="first")
         deadline = time.monotonic() + 120
         while (response := client.get("/ready")).status_code != 200 and time.monotonic() < deadline:
             assert response.json()["error"]["code"] == "not_ready"
             time.sleep(0.2)
         assert response.json() == {"status": "ready"}
+        # Ready means graded at once, a numeric part too (its unit table may still be in the making).
+        checks = [
+            ("acceleration", "(m2 - m1) g/(m1 + m2)", "correct"),
+            ("acceleration_numeric", "1000 m/s^2", "incorrect"),
+        ]
+        for part, answer, verdict in checks:
+            sent = client.post(
+                f"/v1/problems/atwood/parts/{part}/submissions", json={"answer": answer}, headers=headers
+            )
+            assert (sent.status_code, sent.json()["verdict"]) == (201, verdict), sent.json()
         catalog = client.app.state.services.catalog  # type: ignore[attr-defined]
         assert {record.id for record in catalog.list()} == {"atwood", "mass-spring"}
 
