@@ -26,7 +26,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from datetime import datetime, timedelta
 from email.utils import parsedate_to_datetime
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, Protocol
 from urllib.parse import urlsplit, urlunsplit
 
 import httpx
@@ -121,6 +121,83 @@ class ClaimedScore:
     score_maximum: float
     timestamp: datetime
     attempts: int
+
+
+class QueuedRow(Protocol):
+    """An outbox row as either store keeps it (an ORM row, or the fake's record)."""
+
+    @property
+    def id(self) -> int: ...
+    @property
+    def score_given(self) -> float: ...
+    @property
+    def score_maximum(self) -> float: ...
+    @property
+    def timestamp(self) -> datetime: ...
+    @property
+    def status(self) -> str: ...
+    @property
+    def attempts(self) -> int: ...
+    @property
+    def last_status(self) -> int | None: ...
+    @property
+    def last_error(self) -> str | None: ...
+
+
+class TargetRow(Protocol):
+    @property
+    def student(self) -> str: ...
+    @property
+    def problem_id(self) -> str: ...
+    @property
+    def lineitem_url(self) -> str: ...
+    @property
+    def sub(self) -> str: ...
+
+
+class PlatformRow(Protocol):
+    @property
+    def id(self) -> int: ...
+    @property
+    def issuer(self) -> str: ...
+    @property
+    def client_id(self) -> str: ...
+    @property
+    def token_url(self) -> str: ...
+
+
+def claimed_score(claim: str, row: QueuedRow, target: TargetRow, platform: PlatformRow) -> ClaimedScore:
+    """What a worker that claimed `row` needs to deliver it."""
+    return ClaimedScore(
+        id=row.id,
+        claim=claim,
+        platform_id=platform.id,
+        client_id=platform.client_id,
+        token_url=platform.token_url,
+        lineitem_url=target.lineitem_url,
+        sub=target.sub,
+        score_given=row.score_given,
+        score_maximum=row.score_maximum,
+        timestamp=row.timestamp,
+        attempts=row.attempts,
+    )
+
+
+def delivery_problem(row: QueuedRow, target: TargetRow, platform: PlatformRow) -> DeliveryProblem:
+    return DeliveryProblem(
+        outbox_id=row.id,
+        student=target.student,
+        problem_id=target.problem_id,
+        issuer=platform.issuer,
+        lineitem_url=target.lineitem_url,
+        score_given=row.score_given,
+        score_maximum=row.score_maximum,
+        timestamp=row.timestamp,
+        status=row.status,
+        attempts=row.attempts,
+        last_status=row.last_status,
+        last_error=row.last_error,
+    )
 
 
 @dataclass(frozen=True)

@@ -510,22 +510,7 @@ class MemoryScoreOutbox:
                 row.change(values)
                 if newer:
                     continue
-                target = row.target
-                claimed.append(
-                    ClaimedScore(
-                        id=row.id,
-                        claim=claim,
-                        platform_id=target.platform.id,
-                        client_id=target.platform.client_id,
-                        token_url=target.platform.token_url,
-                        lineitem_url=target.lineitem_url,
-                        sub=target.sub,
-                        score_given=row.score_given,
-                        score_maximum=row.score_maximum,
-                        timestamp=row.timestamp,
-                        attempts=row.attempts,
-                    )
-                )
+                claimed.append(outbox.claimed_score(claim, row, row.target, row.target.platform))
             return claimed
 
     def _newer_exists(self, row: _Score) -> bool:
@@ -570,23 +555,7 @@ class MemoryScoreOutbox:
                 for row in reversed(self._rows)
                 if (row.status == outbox.FAILED or row.attempts > 0) and row.status in shown
             ][:limit]
-            return [
-                DeliveryProblem(
-                    outbox_id=row.id,
-                    student=row.target.student,
-                    problem_id=row.target.problem_id,
-                    issuer=row.target.platform.issuer,
-                    lineitem_url=row.target.lineitem_url,
-                    score_given=row.score_given,
-                    score_maximum=row.score_maximum,
-                    timestamp=row.timestamp,
-                    status=row.status,
-                    attempts=row.attempts,
-                    last_status=row.last_status,
-                    last_error=row.last_error,
-                )
-                for row in rows
-            ]
+            return [outbox.delivery_problem(row, row.target, row.target.platform) for row in rows]
 
     def scores(self) -> list[QueuedScore]:
         with self._lock:

@@ -25,6 +25,8 @@ from app.lti.outbox import (
     DeliveryProblem,
     Outcome,
     claim_values,
+    claimed_score,
+    delivery_problem,
     finished_values,
     sent_timestamp,
     wakes_platform,
@@ -113,23 +115,7 @@ def list_delivery_problems(session: Session, *, limit: int = 200) -> list[Delive
         .order_by(LtiScoreOutbox.id.desc())
         .limit(limit)
     )
-    return [
-        DeliveryProblem(
-            outbox_id=row.id,
-            student=target.student,
-            problem_id=target.problem_id,
-            issuer=platform.issuer,
-            lineitem_url=target.lineitem_url,
-            score_given=row.score_given,
-            score_maximum=row.score_maximum,
-            timestamp=row.timestamp,
-            status=row.status,
-            attempts=row.attempts,
-            last_status=row.last_status,
-            last_error=row.last_error,
-        )
-        for row, target, platform in session.execute(query)
-    ]
+    return [delivery_problem(row, target, platform) for row, target, platform in session.execute(query)]
 
 
 def claim_batch(database: Database, claim: str, now: datetime, limit: int) -> list[ClaimedScore]:
@@ -178,21 +164,7 @@ def claim_batch(database: Database, claim: str, now: datetime, limit: int) -> li
             assert target is not None
             platform = session.get(LtiPlatform, target.platform_id)
             assert platform is not None
-            claimed.append(
-                ClaimedScore(
-                    id=row.id,
-                    claim=claim,
-                    platform_id=platform.id,
-                    client_id=platform.client_id,
-                    token_url=platform.token_url,
-                    lineitem_url=target.lineitem_url,
-                    sub=target.sub,
-                    score_given=row.score_given,
-                    score_maximum=row.score_maximum,
-                    timestamp=row.timestamp,
-                    attempts=row.attempts,
-                )
-            )
+            claimed.append(claimed_score(claim, row, target, platform))
     return claimed
 
 
