@@ -51,6 +51,8 @@ def _derive(model: Model) -> Derivation:
     methods = [cls(model, mech) for cls in _methods()]
     answers: dict[str, dict[str, sympy.Expr]] = {q.name: {} for q in model.quantities}
     stopped: dict[str, dict[str, str]] = {q.name: {} for q in model.quantities}  # why a method gave none
+    # a stop placed inside the quantity's own spec (its `at`): the refusal is reported there
+    places: dict[str, tuple[str | int, ...]] = {}
     reports: list[MethodReport] = []
     for method in methods:
         method.derive()
@@ -67,6 +69,8 @@ def _derive(model: Model) -> Derivation:
             except DerivationError as error:
                 notes.append(f"{quantity.name}: stopped: {error.message}")
                 stopped[quantity.name][method.name] = f"stopped: {error.message}"
+                if error.path[:2] == ("quantities", quantity.name):
+                    places[quantity.name] = error.path
                 continue
             except PhyscheckError:
                 raise
@@ -87,7 +91,12 @@ def _derive(model: Model) -> Derivation:
         derived = answers[quantity.name]
         path: tuple[str | int, ...] = ("quantities", quantity.name)
         if len(derived) < MIN_METHODS:
-            findings.append((path, _too_few(quantity.name, derived, stopped[quantity.name], methods)))
+            findings.append(
+                (
+                    places.get(quantity.name, path),
+                    _too_few(quantity.name, derived, stopped[quantity.name], methods),
+                )
+            )
             continue
         frame_failed = _frame_failed(model, quantity.name, derived, stopped[quantity.name], methods)
         if frame_failed:
@@ -111,7 +120,8 @@ def _derive(model: Model) -> Derivation:
     if findings:
         raise DerivationError(
             "; ".join(f"{'.'.join(map(str, p))}: {m}" for p, m in findings),
-            quantity=str(findings[0][0][-1]),
+            quantity=str(findings[0][0][1]),
+            path=findings[0][0],
             findings=findings,
         )
     lagrange = methods[0]

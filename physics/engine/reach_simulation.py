@@ -61,8 +61,10 @@ class ReachMeasure:
             )
         _, y = self._events[key]
         n = dyn.n
+        names = [c.name for c in sim.model.coordinates]
         if quantity.kind is QuantityKind.VELOCITY:
-            return f"velocity of {name} when the integrated motion reaches it", y[n + i], None
+            j = names.index(quantity.target)
+            return f"velocity of {quantity.target} when the integrated motion reaches {name}", y[n + j], None
         if quantity.kind is QuantityKind.SPEED:
             velocity = self._velocity(quantity.target)(*y, *dyn.values(point))
             return (
@@ -73,8 +75,9 @@ class ReachMeasure:
         unknowns = dyn.unknowns(y[:n], y[n:], dyn.values(point))
         if quantity.kind is QuantityKind.ACCELERATION:
             return (
-                f"acceleration of {name} from the equations of motion where the integration arrives",
-                unknowns[i],
+                f"acceleration of {quantity.target} from the equations of motion where the integration arrives "
+                f"({name})",
+                unknowns[names.index(quantity.target)],
                 None,
             )
         index = [c.name for c in sim.model.constraints].index(quantity.target)

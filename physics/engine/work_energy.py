@@ -10,6 +10,13 @@ Integrating the equation of motion (Lagrange's, Newton's and d'Alembert's method
 state left free, the coordinate's acceleration is A(q) + B(q) q'^2 (friction on a curve and quadratic
 drag bring the B term); v dv/dq = q'' is then linear in w = v^2, dw/dq = 2A + 2Bw, integrated from the
 state to the configuration with the factor exp(-integral of 2B).
+
+With several coordinates, every one but the moving coordinate must be cyclic (neither the potential nor
+the inertia involves it) in a model without friction or drag: each one's momentum keeps its value at the
+state, which fixes its velocity as a linear function of the moving coordinate's (`held`). Both routes
+then work with that one degree of freedom (energy: T with the held velocities is (1/2) a(q) q'^2 + c(q),
+no cross term, Routh's reduction; integration: the held velocities put into the equation of motion).
+Any other coordinate is not determined where the motion arrives: refused at the quantity's `at`.
 """
 
 from __future__ import annotations
@@ -19,7 +26,7 @@ from typing import TYPE_CHECKING
 
 import sympy
 
-from physics.engine.mechanics import Mechanics
+from physics.engine.mechanics import Mechanics, solve_linear
 from physics.engine.model import Coordinate, Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
 from physics.errors import DerivationError
@@ -40,22 +47,61 @@ class Journey:
     end: sympy.Expr
     velocity: sympy.Expr
     sign: int
+    # every other coordinate's velocity, held by its conserved momentum, in the moving one's q and q'
+    held: dict[sympy.Symbol, sympy.Expr] = dataclasses.field(default_factory=dict)
 
 
-def journey(model: Model, quantity: Quantity) -> Journey:
-    from physics.engine.method import NotApplicable
-
-    if len(model.coordinates) != 1:
-        raise NotApplicable(
-            f"the speed at a position is worked for one coordinate; the model has {len(model.coordinates)}"
-        )
+def journey(method: Method, quantity: Quantity) -> Journey:
+    model = method.model
     ((name, end),) = quantity.at
     c = model.coordinate(name)
     state = dict(model.state)
     start = state[c.symbol]
+    held = _held(method, c, quantity) if len(model.coordinates) > 1 else {}
     return Journey(
-        c, start, end, state.get(c.velocity, sympy.Integer(0)), _direction(model, start, end, name)
+        c, start, end, state.get(c.velocity, sympy.Integer(0)), _direction(model, start, end, name), held
     )
+
+
+def _held(method: Method, c: Coordinate, quantity: Quantity) -> dict[sympy.Symbol, sympy.Expr]:
+    """The other coordinates' velocities from their conserved momenta (each cyclic), as functions of c
+    and c'; refused at the quantity's `at` when a coordinate is not fixed that way."""
+    from physics.engine.conservation import cyclic_indices
+
+    model, mech = method.model, method.mech
+    where = ("quantities", quantity.name, "at")
+    if model.frictions or model.dissipative_forces:
+        raise DerivationError(
+            f"{quantity.name}: with several coordinates the state where {c.name} arrives is fixed by conserved "
+            "momenta, which friction, drag and forces in the time do not keep: declare a model with "
+            f"{c.name} alone, or one without them",
+            quantity=quantity.name,
+            path=where,
+        )
+    cyclic = cyclic_indices(mech)
+    loose = [o.name for i, o in enumerate(model.coordinates) if o != c and i not in cyclic]
+    if loose:
+        raise DerivationError(
+            f"{quantity.name}: where {c.name} reaches {quantity.at[0][1]}, {', '.join(loose)} is not "
+            "determined: the potential or the inertia depends on it, so no conserved momentum fixes it (two "
+            f"coupled coordinates exchange energy). Declare {', '.join(loose)} fixed (a symbol, not a "
+            f"coordinate), or a model whose other coordinates the potential and the inertia do not involve",
+            quantity=quantity.name,
+            path=where,
+        )
+    mass = mech.mass_matrix
+    n = len(mech.q)
+    state = {**{v: sympy.Integer(0) for v in mech.qd}, **dict(model.state)}
+    others = [i for i in range(n) if mech.q[i] != c.symbol]
+    equations = []
+    for i in others:
+        momentum = sympy.Add(*(mass[i, j] * mech.qd[j] for j in range(n)))
+        initial = sympy.simplify(momentum.subs(state))
+        method.step(
+            f"Momentum conjugate to {mech.q[i]} is conserved", method.tex(sympy.Eq(momentum, initial))
+        )
+        equations.append(momentum - initial)
+    return solve_linear(equations, [mech.qd[i] for i in others], "the conserved momenta")
 
 
 def _direction(model: Model, start: sympy.Expr, end: sympy.Expr, name: str) -> int:
@@ -80,7 +126,7 @@ def _direction(model: Model, start: sympy.Expr, end: sympy.Expr, name: str) -> i
 def answer(method: Method, quantity: Quantity) -> sympy.Expr:
     """The quantity where the motion arrives, by this method's own route to the velocity there."""
     model = method.model
-    trip = journey(model, quantity)
+    trip = journey(method, quantity)
     key = (trip.coordinate.name, trip.end)
     if key not in method.arrivals:
         method.arrivals[key] = ROUTES.get(method.name, by_integration)(method, trip)
@@ -88,21 +134,31 @@ def answer(method: Method, quantity: Quantity) -> sympy.Expr:
     square = method.arrivals[key]
     c = trip.coordinate
     velocity = sympy.simplify(trip.sign * sympy.sqrt(square))
+    arrival = {c.symbol: trip.end, c.velocity: velocity}
+    there = {c.velocity: velocity, **{v: sympy.simplify(e.subs(arrival)) for v, e in trip.held.items()}}
     if quantity.kind is QuantityKind.VELOCITY:
-        return velocity
+        return there[model.coordinate(quantity.target).velocity]
     if quantity.kind is QuantityKind.SPEED:
         position = dict(model.body(quantity.target).position)
-        rate = sympy.Add(*(sympy.diff(expr, c.symbol) ** 2 for expr in position.values()))
-        speed = sympy.simplify(sympy.sqrt(sympy.simplify(rate.subs(c.symbol, trip.end) * square)))
+        moved = [
+            sympy.Add(*(sympy.diff(e, o.symbol) * o.velocity for o in model.coordinates))
+            for e in position.values()
+        ]
+        rate = sympy.Add(*(sympy.expand(v.subs(trip.held)) ** 2 for v in moved)).subs(c.symbol, trip.end)
+        # in q'^2 (odd powers only where momenta start non-zero): v^2 = square, v = the signed velocity
+        squared = sympy.expand(rate).subs(c.velocity**2, square).subs(c.velocity, velocity)
+        speed = sympy.simplify(sympy.sqrt(sympy.simplify(squared)))
         method.step(
             f"Speed of {quantity.target} there",
             rf"v_{{\mathrm{{{quantity.target}}}}} = \sqrt{{\dot x^2 + \dot y^2}} = " + method.tex(speed),
         )
         return speed
-    reached = dataclasses.replace(model, state=((c.symbol, trip.end), (c.velocity, velocity)))
-    there = type(method)(reached, Mechanics(reached))
-    result = there.answer(dataclasses.replace(quantity, at=()))
-    for step in there.steps:
+    # the cyclic coordinates' positions stay as at the state: nothing depends on them
+    arrived = {**dict(model.state), c.symbol: trip.end, **there}
+    reached = dataclasses.replace(model, state=tuple(arrived.items()))
+    solver = type(method)(reached, Mechanics(reached))
+    result = solver.answer(dataclasses.replace(quantity, at=()))
+    for step in solver.steps:
         method.step(f"{step.title} (where {c.name} = {sympy.sstr(trip.end)})", step.latex)
     return result
 
@@ -145,19 +201,22 @@ def by_energy(method: Method, trip: Journey) -> sympy.Expr:
             rf"W = \int_{{{method.tex(trip.start)}}}^{{{method.tex(trip.end)}}} Q_{{\mathrm{{nc}}}}\,"
             rf"d{method.tex(q)} = " + method.tex(work),
         )
-    kinetic, potential = mech.kinetic, mech.potential
-    before = (kinetic + potential).subs({q: trip.start, qd: trip.velocity})
+    kinetic, potential = sympy.expand(mech.kinetic.subs(trip.held)), mech.potential
+    state = {**{v: sympy.Integer(0) for v in mech.qd}, **dict(model.state)}
+    before = (mech.kinetic + potential).subs(state)
+    if sympy.simplify(sympy.diff(kinetic, qd).subs(qd, 0)) != 0:
+        raise NotApplicable(
+            f"the kinetic energy with the conserved momenta is not even in {c.name}'s velocity"
+        )
     inertia = sympy.diff(kinetic, qd, 2).subs(q, trip.end)
-    square = sympy.simplify(2 * (before + work - potential.subs(q, trip.end)) / inertia)
+    # with held momenta, T keeps a part in the moving coordinate alone (the cyclic motion's own energy)
+    rest = kinetic.subs(qd, 0).subs(q, trip.end) + potential.subs(q, trip.end)
+    square = sympy.simplify(2 * (before + work - rest) / inertia)
     w = qd**2
     method.step(
         f"Work and energy from {c.name} = {sympy.sstr(trip.start)} to {sympy.sstr(trip.end)}",
         r"T_1 + V_1 = T_0 + V_0 + W:\quad "
-        + method.tex(
-            sympy.Eq(
-                sympy.simplify(inertia * w / 2 + potential.subs(q, trip.end)), sympy.simplify(before + work)
-            )
-        )
+        + method.tex(sympy.Eq(sympy.simplify(inertia * w / 2 + rest), sympy.simplify(before + work)))
         + r"\Rightarrow "
         + method.tex(sympy.Eq(w, square)),
     )
@@ -195,6 +254,8 @@ def by_integration(method: Method, trip: Journey) -> sympy.Expr:
     c = trip.coordinate
     q, qd = c.symbol, c.velocity
     acceleration = method.free.acceleration(c.name)
+    if trip.held:  # the other coordinates' equations of motion, integrated once: their momenta conserved
+        acceleration = sympy.simplify(acceleration.subs(trip.held))
     u = sympy.Dummy("u", positive=True)  # the speed; qd = sign * u on the way
     moving = sympy.expand(acceleration.subs(qd, trip.sign * u))
     constant = moving.subs(u, 0)
@@ -249,5 +310,5 @@ def arrival_velocity(model: Model, quantity: Quantity) -> sympy.Expr:
     from physics.engine.conservation import ConservationMethod
 
     method = ConservationMethod(model, Mechanics(model))
-    trip = journey(model, quantity)
+    trip = journey(method, quantity)
     return sympy.simplify(trip.sign * sympy.sqrt(by_energy(method, trip)))

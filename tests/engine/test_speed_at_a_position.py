@@ -170,14 +170,58 @@ def test_a_place_the_motion_cannot_reach_is_refused_with_the_reason() -> None:
     assert "does not reach theta = pi/2" in str(caught.value)
 
 
-def test_a_speed_in_a_model_of_several_coordinates_is_refused_saying_so() -> None:
-    data = {
-        "coordinates": ["x", "y"],
-        "bodies": {"ball": {"mass": "m", "position": {"x": "x", "y": "y"}}},
-        "gravity": "g",
-        "state": {"x": 0, "y": "L"},
-        "quantities": {"v": {"speed": "ball", "at": {"y": 0}}},
+def moving_wedge() -> dict[str, Any]:
+    """The bank's moving wedge, the block released from rest at s = 0 (X: the wedge's position)."""
+    data = yaml.safe_load((BANK / "moving-wedge" / "model.yaml").read_text())
+    data["state"] = {"s": 0, "X": 0}
+    drop = "h/sin(theta)"  # down the incline until the block has descended h
+    data["quantities"] = {
+        "wedge_velocity": {"velocity": "X", "at": {"s": drop}},
+        "relative_speed": {"velocity": "s", "at": {"s": drop}},
+        "block_speed": {"speed": "block", "at": {"s": drop}},
+    }
+    return data
+
+
+def test_a_block_on_a_free_wedge_reaches_the_closed_form_speeds_by_momentum_and_energy() -> None:
+    """Horizontal momentum from rest: (M + m) X' + m s' cos(theta) = 0, so X' = -m cos(theta) s'/(M + m).
+    Energy: (1/2) M X'^2 + (1/2) m [(X' + s' cos(theta))^2 + (s' sin(theta))^2] = m g h; with X' put in,
+    T = (1/2) m s'^2 (M + m sin^2(theta))/(M + m), so s'^2 = 2 g h (M + m)/(M + m sin^2(theta)) (the
+    block's speed relative to the wedge) and v_wedge = -m cos(theta) sqrt(2 g h/((M + m)(M + m sin^2))).
+    The block's own velocity is (X' + s' cos(theta), -s' sin(theta))."""
+    M, h = sympy.symbols("M h", positive=True)
+    result = derive(load_model(moving_wedge(), {**SYMBOLS, "M": M, "h": h}))
+    relative = sqrt(2 * g * h * (M + m) / (M + m * sin(theta) ** 2))
+    wedge = -m * cos(theta) * relative / (M + m)
+    block = sqrt((wedge + relative * cos(theta)) ** 2 + (relative * sin(theta)) ** 2)
+    expected = {"wedge_velocity": wedge, "relative_speed": relative, "block_speed": block}
+    for name, value in expected.items():
+        derived = result.quantities[name]
+        at = {m: 1.3, M: 2.9, g: 9.81, theta: 0.61, h: 0.7}
+        assert abs(float(derived.subs(at)) - float(value.subs(at))) < 1e-12, name
+        assert sympy.simplify(derived - value) == 0, name
+        assert {"conservation", "lagrange", "newton"} <= set(result.agreement[name])
+        assert result.simulation[name].max_relative_error < 1e-3
+    steps = {s.title for method in result.methods for s in method.steps}
+    assert "Momentum conjugate to X is conserved" in steps
+    assert any(t.startswith("Work and energy") for t in steps)
+    assert any("equation of motion as v dv/dq" in t for t in steps)
+
+
+def test_a_coordinate_no_conserved_momentum_fixes_is_refused_at_the_quantity_saying_what_to_declare() -> None:
+    """Two masses joined by springs exchange energy: where x1 gets to 0, x2's place and speed are open."""
+    data: dict[str, Any] = {
+        "coordinates": ["x1", "x2"],
+        "bodies": {"a": {"mass": "m", "position": {"x": "x1"}}, "b": {"mass": "m", "position": {"x": "x2"}}},
+        "potentials": [
+            {"bodies": ["a"], "anchor": {"x": 0}, "distance": "d", "energy": "mu*d^2/2"},
+            {"bodies": ["a", "b"], "distance": "d", "energy": "mu*d^2/2"},
+        ],
+        "state": {"x1": "L", "x2": 0},
+        "quantities": {"v": {"velocity": "x1", "at": {"x1": 0}}},
     }
     with pytest.raises(DerivationError) as caught:
         derive(load_model(data, SYMBOLS))
-    assert "worked for one coordinate; the model has 2" in str(caught.value)
+    error = caught.value
+    assert error.path == ("quantities", "v", "at")
+    assert "x2 is not determined" in error.message and "Declare x2 fixed" in error.message
