@@ -16,7 +16,7 @@ from functools import partial
 
 import sympy
 
-from physics.engine import damping
+from physics.engine import damping, tidy
 from physics.engine.mechanics import Mechanics
 from physics.engine.method import Method, NotApplicable
 from physics.engine.model import Model, Quantity, QuantityKind
@@ -62,7 +62,7 @@ def _frequency(factory: MethodFactory, model: Model, coordinate: str) -> sympy.E
 def _limit_of(expr: sympy.Expr, where: tuple[tuple[sympy.Symbol, sympy.Expr], ...]) -> sympy.Expr:
     for symbol, value in where:
         expr = sympy.limit(expr, symbol, value) if value.is_infinite or expr.has(symbol) else expr
-    return sympy.simplify(expr)
+    return tidy.simplify(expr)
 
 
 def _check_limit(
@@ -74,7 +74,7 @@ def _check_limit(
     name: str,
 ) -> None:
     found = _limit_of(reference, where)
-    if sympy.simplify(found - expected) == 0:
+    if tidy.simplify(found - expected) == 0:
         return
     shown = ", ".join(f"{s} → {v}" for s, v in where)
     if found.has(sympy.oo, -sympy.oo, sympy.zoo, sympy.nan, sympy.AccumBounds):

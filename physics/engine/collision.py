@@ -13,6 +13,7 @@ import dataclasses
 
 import sympy
 
+from physics.engine import tidy
 from physics.engine.mechanics import Mechanics, solve_linear
 from physics.engine.model import Model, QuantityKind
 from physics.errors import DerivationError
@@ -67,7 +68,7 @@ def _finish(
     assert hit is not None
     before = hit.projectile_mass * SPEED**2 / 2
     if kind is QuantityKind.ENERGY_FRACTION_LOST:
-        fraction = sympy.simplify((before - kinetic_after) / before)
+        fraction = tidy.simplify((before - kinetic_after) / before)
         steps.append(
             ("Fraction of the kinetic energy lost", r"\frac{K_0 - K_1}{K_0} = " + sympy.latex(fraction))
         )
@@ -76,7 +77,7 @@ def _finish(
     if len(roots) != 1:
         raise DerivationError(f"expected one projectile speed, found {roots}")
     steps.append(("Projectile speed", sympy.latex(sympy.Eq(SPEED, roots[0]))))
-    return sympy.simplify(roots[0])
+    return tidy.simplify(roots[0])
 
 
 def by_conservation(model: Model, kind: QuantityKind, steps: list[tuple[str, str]]) -> sympy.Expr:
@@ -102,8 +103,8 @@ def by_conservation(model: Model, kind: QuantityKind, steps: list[tuple[str, str
         )
     )
     velocities = solve_linear(equations, list(mech.qd), "momentum across the collision")
-    kinetic = sympy.simplify(mech.kinetic.subs(at).subs(velocities))
-    rise = sympy.simplify(mech.potential.subs(reaches) - mech.potential.subs(at))
+    kinetic = tidy.simplify(mech.kinetic.subs(at).subs(velocities))
+    rise = tidy.simplify(mech.potential.subs(reaches) - mech.potential.subs(at))
     steps.append(("Energy conserved after the collision", sympy.latex(sympy.Eq(kinetic, rise))))
     return _finish(kinetic, rise, model, kind, steps)
 
@@ -129,7 +130,7 @@ def by_newton(model: Model, kind: QuantityKind, steps: list[tuple[str, str]]) ->
         )
     )
     solution = solve_linear(equations, velocity + impulses, "impulse balance")
-    kinetic = sympy.simplify(
+    kinetic = tidy.simplify(
         sympy.Add(*(d.inertia * solution[u] ** 2 / 2 for d, u in zip(mech.dofs, velocity, strict=True)))
     )
     if len(mech.q) != 1:
@@ -142,7 +143,7 @@ def by_newton(model: Model, kind: QuantityKind, steps: list[tuple[str, str]]) ->
             for d in mech.dofs
         )
     )
-    work = sympy.simplify(sympy.integrate(force, (q, at[q], reaches[q])))
+    work = tidy.simplify(sympy.integrate(force, (q, at[q], reaches[q])))
     steps.append(
         (
             "Work-energy theorem up to the turning point",

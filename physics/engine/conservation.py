@@ -10,7 +10,7 @@ from functools import cached_property
 
 import sympy
 
-from physics.engine import collision
+from physics.engine import collision, tidy
 from physics.engine.mechanics import Mechanics, solve_linear, time_derivative
 from physics.engine.method import Method, NotApplicable
 from physics.engine.model import QuantityKind
@@ -48,7 +48,7 @@ class ConservationMethod(Method):
                 [mech.qd[i] for i in cyclic],
                 self.title,
             )
-        kinetic = sympy.simplify(mech.kinetic.subs(velocities))
+        kinetic = tidy.simplify(mech.kinetic.subs(velocities))
         remaining = [q for i, q in enumerate(mech.q) if i not in cyclic]
         return velocities, kinetic, remaining
 
@@ -82,12 +82,12 @@ class ConservationMethod(Method):
             self.step(
                 f"Energy of {c.name} is conserved",
                 rf"E = {self.tex(energy)},\ \frac{{dE}}{{dt}} = 0 \Rightarrow "
-                + self.tex(sympy.Eq(sympy.simplify(rate), 0)),
+                + self.tex(sympy.Eq(tidy.simplify(rate), 0)),
             )
             result[c.acceleration] = sympy.solve(rate, c.acceleration)[0]
         for velocity, expr in velocities.items():
             c = next(c for c in model.coordinates if c.velocity == velocity)
-            result[c.acceleration] = sympy.simplify(time_derivative(expr, model).subs(result))
+            result[c.acceleration] = tidy.simplify(time_derivative(expr, model).subs(result))
             self.step(
                 f"Acceleration of {c.name} from its momentum",
                 self.tex(sympy.Eq(c.acceleration, result[c.acceleration])),
@@ -102,7 +102,7 @@ class ConservationMethod(Method):
         q = self.model.coordinate(coordinate).symbol
         if q not in self.reduced[2]:
             raise NotApplicable(f"{coordinate} is cyclic")
-        return sympy.simplify(-sympy.diff(self.mech.potential, q))
+        return tidy.simplify(-sympy.diff(self.mech.potential, q))
 
     def frequency(self, coordinate: str, equilibrium: sympy.Expr) -> sympy.Expr:
         """E = 1/2 M q'^2 + V(q) near the minimum: omega^2 = V''(q0)/M(q0)."""
@@ -115,19 +115,19 @@ class ConservationMethod(Method):
         if inertia.has(*others):
             raise NotApplicable(f"{coordinate} is coupled to other coordinates")
         curvature = sympy.diff(self.mech.potential, c.symbol, 2).subs(c.symbol, equilibrium)
-        omega2 = sympy.simplify(curvature / inertia.subs(c.symbol, equilibrium))
+        omega2 = tidy.simplify(curvature / inertia.subs(c.symbol, equilibrium))
         self.step(
             "Small oscillations from the energy",
             r"E \approx \tfrac12 M_0 \dot q^2 + \tfrac12 V''(q_0)\,\delta q^2,\ \omega^2 = "
             + self.tex(omega2),
         )
-        return sympy.simplify(sympy.sqrt(omega2))
+        return tidy.simplify(sympy.sqrt(omega2))
 
     def mode_matrices(self, point: dict[sympy.Symbol, sympy.Expr]) -> tuple[sympy.Matrix, sympy.Matrix]:
         """The energy expanded to second order about the equilibrium: T = q'^T M q'/2, V = q^T K q/2."""
         mech = self.mech
-        mass = sympy.hessian(mech.kinetic, list(mech.qd)).subs(point).applyfunc(sympy.simplify)
-        stiffness = sympy.hessian(mech.potential, list(mech.q)).subs(point).applyfunc(sympy.simplify)
+        mass = sympy.hessian(mech.kinetic, list(mech.qd)).subs(point).applyfunc(tidy.simplify)
+        stiffness = sympy.hessian(mech.potential, list(mech.q)).subs(point).applyfunc(tidy.simplify)
         return mass, stiffness
 
     def collision(self, item: QuantityKind) -> sympy.Expr:
@@ -147,5 +147,5 @@ def cyclic_indices(mech: Mechanics) -> list[int]:
     return [
         i
         for i, q in enumerate(mech.q)
-        if not potential.has(q) and not any(e.has(q) and sympy.simplify(sympy.diff(e, q)) != 0 for e in mass)
+        if not potential.has(q) and not any(e.has(q) and tidy.simplify(sympy.diff(e, q)) != 0 for e in mass)
     ]

@@ -15,6 +15,7 @@ from typing import TYPE_CHECKING
 
 import sympy
 
+from physics.engine import tidy
 from physics.engine.model import Friction, Model
 
 if TYPE_CHECKING:
@@ -48,7 +49,7 @@ def slip_velocity(mech: Mechanics, friction: Friction) -> sympy.Expr:
     """The contact point's velocity relative to the surface along the slip direction, in the coordinates
     and their velocities: minus the generalized friction per unit magnitude, dotted with q'."""
     generalized = mech.generalized(friction_load(mech, friction, sympy.Integer(1)))
-    return sympy.simplify(-sympy.Add(*(g * v for g, v in zip(generalized, mech.qd, strict=True))))
+    return tidy.simplify(-sympy.Add(*(g * v for g, v in zip(generalized, mech.qd, strict=True))))
 
 
 def only_friction(model: Model, constraint: str = "") -> Friction:

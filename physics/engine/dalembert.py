@@ -14,6 +14,7 @@ from functools import cached_property
 
 import sympy
 
+from physics.engine import tidy
 from physics.engine.mechanics import solve_linear, time_derivative
 from physics.engine.method import Method, NotApplicable
 from physics.engine.oscillation import frequency_from_accelerations
@@ -85,7 +86,7 @@ class DAlembertMethod(Method):
         mech = self.mech
         q = self.model.coordinate(coordinate).symbol
         place = mech.cartesian_state()
-        force = sympy.simplify(
+        force = tidy.simplify(
             sympy.Add(
                 *(
                     (-sympy.diff(mech.cartesian_potential, d.symbol)).subs(place) * sympy.diff(d.mapping, q)

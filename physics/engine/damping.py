@@ -19,6 +19,7 @@ from typing import TYPE_CHECKING
 
 import sympy
 
+from physics.engine import tidy
 from physics.engine.mechanics import time_derivative
 from physics.engine.model import ForceKind, Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
@@ -64,7 +65,7 @@ def linearization(method: Method, point: Point) -> tuple[sympy.Expr, sympy.Expr,
     if len(oscillating) != 1 or sympy.degree(oscillating[0], s) != 2:
         raise NotThisWay(f"expected one damped oscillating mode, found the characteristic factors {factors}")
     a, b, c = (oscillating[0].coeff(s, k) for k in (2, 1, 0))
-    if sympy.simplify(b) == 0:
+    if tidy.simplify(b) == 0:
         raise DerivationError("no viscous damping acts on this motion (add `drag:` to a moving body)")
     method.step(
         "Linearized about the equilibrium",
@@ -86,8 +87,8 @@ def answer(method: Method, quantity: Quantity, point: Point) -> sympy.Expr:
     imaginary = characteristic.coeff(sympy.I)
     real = sympy.expand(characteristic - sympy.I * imaginary)
     # the imaginary part vanishes (omega != 0) only at one decay rate; the real part then gives omega^2
-    rate = sympy.simplify(sympy.solve(sympy.cancel(imaginary / omega), alpha)[0])
-    squared = sympy.simplify(
+    rate = tidy.simplify(sympy.solve(sympy.cancel(imaginary / omega), alpha)[0])
+    squared = tidy.simplify(
         sympy.solve(real.subs(alpha, rate).subs(omega**2, squared_symbol), squared_symbol)[0]
     )
     method.step(
@@ -100,8 +101,8 @@ def answer(method: Method, quantity: Quantity, point: Point) -> sympy.Expr:
     )
     _require_underdamped(method.model, squared, quantity.name)
     if quantity.kind is QuantityKind.DECAY_TIME:
-        return sympy.simplify(1 / rate)
-    return sympy.simplify(sympy.sqrt(sympy.together(squared)))
+        return tidy.simplify(1 / rate)
+    return tidy.simplify(sympy.sqrt(sympy.together(squared)))
 
 
 def _require_underdamped(model: Model, squared: sympy.Expr, name: str) -> None:
@@ -129,7 +130,7 @@ def _linearize(equations: list[sympy.Expr], model: Model, point: Point, where: s
     """(M, C, K): the equations' derivatives in q'', q', q at rest at the equilibrium, where they must vanish."""
     rest = _at_rest(model, point)
     for equation in equations:
-        if sympy.simplify(equation.subs(rest)) != 0:
+        if tidy.simplify(equation.subs(rest)) != 0:
             raise DerivationError(
                 f"{where}: the forces do not balance at the equilibrium of the potentials; write forces that "
                 "depend on the coordinates as potentials"
@@ -137,7 +138,7 @@ def _linearize(equations: list[sympy.Expr], model: Model, point: Point, where: s
 
     def matrix(symbols: list[sympy.Symbol]) -> sympy.Matrix:
         return sympy.Matrix(
-            [[sympy.simplify(sympy.diff(e, v).subs(rest)) for v in symbols] for e in equations]
+            [[tidy.simplify(sympy.diff(e, v).subs(rest)) for v in symbols] for e in equations]
         )
 
     coords = model.coordinates
@@ -160,7 +161,7 @@ def by_lagrange(method: Method, point: Point) -> Matrices:
     method.step(
         "Lagrange's equations with the dissipative generalized forces",
         r"\frac{d}{dt}\frac{\partial L}{\partial \dot q_j} - \frac{\partial L}{\partial q_j} = Q_j,\ Q = "
-        + method.tex(sympy.Matrix(forces).applyfunc(sympy.simplify)),
+        + method.tex(sympy.Matrix(forces).applyfunc(tidy.simplify)),
     )
     return _linearize(equations, model, point, method.title)
 
@@ -198,13 +199,13 @@ def by_energy(method: Method, point: Point) -> Matrices:
     drag = mech.applied_forces(False, True)
     power = sympy.Add(*(f * time_derivative(d.mapping, model) for f, d in zip(drag, mech.dofs, strict=True)))
     rest = _at_rest(model, point)
-    mass = sympy.hessian(mech.kinetic, velocities).subs(rest).applyfunc(sympy.simplify)
-    stiffness = sympy.hessian(mech.potential, list(mech.q)).subs(rest).applyfunc(sympy.simplify)
+    mass = sympy.hessian(mech.kinetic, velocities).subs(rest).applyfunc(tidy.simplify)
+    stiffness = sympy.hessian(mech.potential, list(mech.q)).subs(rest).applyfunc(tidy.simplify)
     # P = -q'^T C q' for linear drag, so C is minus half its Hessian in the velocities
-    damping = (-sympy.hessian(power, velocities) / 2).subs(rest).applyfunc(sympy.simplify)
+    damping = (-sympy.hessian(power, velocities) / 2).subs(rest).applyfunc(tidy.simplify)
     method.step(
         "Energy balance with the power of drag",
-        r"\frac{d}{dt}(T + V) = P = " + method.tex(sympy.simplify(power)) + r" = -\dot q^T C \dot q",
+        r"\frac{d}{dt}(T + V) = P = " + method.tex(tidy.simplify(power)) + r" = -\dot q^T C \dot q",
     )
     return mass, damping, stiffness
 
@@ -247,11 +248,11 @@ def mistakes(model: Model, quantity: Quantity, reference: sympy.Expr) -> list[tu
         return []
     if quantity.kind is QuantityKind.DECAY_TIME:
         return [(reference / 2, ENERGY_TIME), (1 / reference, RATE_FOR_TIME)]
-    undamped = sympy.simplify(reference.subs(dict.fromkeys(drag, 0)))
+    undamped = tidy.simplify(reference.subs(dict.fromkeys(drag, 0)))
     return [
         (undamped, UNDAMPED),
-        (sympy.simplify(reference.subs({b: 2 * b for b in drag})), RATE_NOT_HALVED),
-        (sympy.sqrt(sympy.simplify(2 * undamped**2 - reference**2)), RAISED),
+        (tidy.simplify(reference.subs({b: 2 * b for b in drag})), RATE_NOT_HALVED),
+        (sympy.sqrt(tidy.simplify(2 * undamped**2 - reference**2)), RAISED),
     ]
 
 
@@ -271,8 +272,8 @@ def undamped_checks(
             continue
         free = dataclasses.replace(model, forces=tuple(f for f in model.forces if f.coefficient not in drag))
         expected = undamped_frequency(free, quantity.target)
-        found = sympy.simplify(quantities[quantity.name].subs(dict.fromkeys(drag, 0)))
-        if sympy.simplify(found - expected) != 0:
+        found = tidy.simplify(quantities[quantity.name].subs(dict.fromkeys(drag, 0)))
+        if tidy.simplify(found - expected) != 0:
             raise DerivationError(
                 f"{quantity.name} = {quantities[quantity.name]} tends to {found} without drag, but the model "
                 f"without drag oscillates at {expected}",

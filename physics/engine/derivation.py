@@ -187,7 +187,7 @@ def check_consistency(model: Model, mech: Mechanics) -> None:
     constraints leave exactly as many degrees of freedom as there are coordinates."""
     place = {d.symbol: d.mapping for d in mech.dofs}
     for constraint in model.constraints:
-        residue = sympy.simplify(constraint.gap.subs(place))
+        residue = tidy.simplify(constraint.gap.subs(place))
         if residue != 0:
             raise DerivationError(
                 f"constraint {constraint.name!r}: the positions in terms of the coordinates violate it "

@@ -14,6 +14,7 @@ import random
 
 import sympy
 
+from physics.engine import tidy
 from physics.engine.model import Model, PairPotential
 from physics.engine.proof import domain_points
 from physics.errors import DerivationError, SpecError, SpecErrors
@@ -45,10 +46,10 @@ def with_distance_sides(model: Model) -> Model:
             potentials.append(pair)
             continue
         start, end = ends[0]
-        separation = sympy.simplify(end - start)
+        separation = tidy.simplify(end - start)
         side = _side(separation, model)
         if side is None:
-            if sympy.simplify(pair.energy.subs(pair.distance, -pair.distance) - pair.energy) == 0:
+            if tidy.simplify(pair.energy.subs(pair.distance, -pair.distance) - pair.energy) == 0:
                 side = 0
             else:
                 errors.append(SpecError(_undecided(model, pair, separation), (*path, "distance")))

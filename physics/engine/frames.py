@@ -18,6 +18,7 @@ from functools import cached_property
 
 import sympy
 
+from physics.engine import tidy
 from physics.engine.mechanics import CartesianDof, Mechanics, solve_linear, time_derivative
 from physics.engine.method import Method, NotApplicable
 from physics.engine.model import Frame, Model, PairPotential
@@ -268,7 +269,7 @@ class FramesMethod(Method):
                 for f, static in zip(self.frame_dofs, self.static_forces, strict=True)
             )
         )
-        force = sympy.simplify(force)
+        force = tidy.simplify(force)
         self.step(
             f"Forces along {coordinate} at rest in the frame (gravity, centrifugal)",
             rf"Q_{{{self.tex(q)}}} = \sum_i \mathbf{{F}}_i\cdot\frac{{\partial \mathbf{{r}}'_i}}{{\partial "
@@ -297,7 +298,7 @@ def centrifugal_potentials(model: Model) -> tuple[PairPotential, ...]:
         if len(pair.bodies) != 1 or pair.bodies[0] not in frame.bodies or set(anchor) != {"x"}:
             continue
         own = -model.body(pair.bodies[0]).mass * frame.rate**2 * pair.distance**2 / 2
-        if sympy.simplify(anchor["x"] - frame.axis) == 0 and sympy.simplify(pair.energy - own) == 0:
+        if tidy.simplify(anchor["x"] - frame.axis) == 0 and tidy.simplify(pair.energy - own) == 0:
             found.append(pair)
     return tuple(found)
 

@@ -14,6 +14,7 @@ from collections.abc import Callable
 
 import sympy
 
+from physics.engine import tidy
 from physics.engine.model import Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
 from physics.errors import DerivationError
@@ -34,7 +35,7 @@ def unit_normal(model: Model) -> dict[str, sympy.Expr]:
     assert hit is not None
     given = dict(hit.normal)
     norm = sympy.sqrt(sympy.Add(*(given.get(a, 0) ** 2 for a in axes(model))))
-    return {a: sympy.simplify(given.get(a, sympy.Integer(0)) / norm) for a in axes(model)}
+    return {a: tidy.simplify(given.get(a, sympy.Integer(0)) / norm) for a in axes(model)}
 
 
 def velocities_before(model: Model) -> Velocities:
@@ -46,7 +47,7 @@ def velocities_before(model: Model) -> Velocities:
     for name in hit.bodies:
         position = dict(model.body(name).position)
         result[name] = {
-            a: sympy.simplify(
+            a: tidy.simplify(
                 sympy.Add(
                     *(sympy.diff(position.get(a, 0), c.symbol) * c.velocity for c in model.coordinates)
                 ).subs(state)
@@ -74,7 +75,7 @@ def kinetic(model: Model, velocities: Velocities) -> sympy.Expr:
 def _parting_root(model: Model, roots: list[sympy.Expr], unchanged: sympy.Expr, what: str) -> sympy.Expr:
     """The root of an energy balance with which the bodies part: not the one that leaves the motion as it
     was (`unchanged`, the bodies passing through each other), real, and positive at a domain point."""
-    real = [r for r in roots if r.is_real is not False and sympy.simplify(r - unchanged) != 0]
+    real = [r for r in roots if r.is_real is not False and tidy.simplify(r - unchanged) != 0]
     if len(real) > 1:
         point = domain_points(model, 1, seed=11)[0]
         real = [r for r in real if r.is_positive or (r.is_positive is None and float(r.subs(point)) > 0)]
@@ -179,7 +180,7 @@ def by_impulse(model: Model) -> Worked:
         assert hit.restitution is not None
         closing = _dot(in_j[first], n) - _dot(in_j[second], n)
         # linear in J; solved by hand since sympy's solve can lose the root behind cos^2 + sin^2
-        compression = sympy.simplify(-closing.subs(impulse, 0) / sympy.diff(closing, impulse))
+        compression = tidy.simplify(-closing.subs(impulse, 0) / sympy.diff(closing, impulse))
         j = (1 + hit.restitution) * compression
         step(
             "Poisson: the compression impulse stops the approach; restitution returns e times it",
@@ -200,7 +201,7 @@ def _tidy(expr: sympy.Expr) -> sympy.Expr:
 def _signs_by_domain(model: Model, expr: sympy.Expr) -> sympy.Expr:
     """|a| written as a or -a where a keeps one sign over the domain (u |cos(phi)| with phi in (0, pi/2))."""
     points = domain_points(model, 12, seed=5)
-    expr = sympy.simplify(expr)  # sqrt(cos(phi)^2) -> Abs(cos(phi))
+    expr = tidy.simplify(expr)  # sqrt(cos(phi)^2) -> Abs(cos(phi))
     for part in expr.atoms(sympy.Abs):
         inner = part.args[0]
         values = [float(inner.subs(point)) for point in points]
@@ -215,7 +216,7 @@ def _quantity(
     model: Model, quantity: Quantity, before: Velocities, after: Velocities, step: Step
 ) -> sympy.Expr:
     if quantity.kind is QuantityKind.KINETIC_ENERGY_LOST:
-        lost = sympy.factor(sympy.simplify(kinetic(model, before) - kinetic(model, after)))
+        lost = sympy.factor(tidy.simplify(kinetic(model, before) - kinetic(model, after)))
         step("Kinetic energy lost", r"K_0 - K_1 = " + sympy.latex(lost))
         return lost
     velocity = after[quantity.target]

@@ -11,6 +11,7 @@ from functools import cached_property
 
 import sympy
 
+from physics.engine import tidy
 from physics.engine.mechanics import solve_linear, time_derivative
 from physics.engine.method import Method, NotApplicable
 
@@ -21,8 +22,8 @@ class LagrangeMethod(Method):
 
     def derive(self) -> None:
         mech = self.mech
-        self.step("Kinetic energy", "T = " + self.tex(sympy.simplify(mech.kinetic)))
-        self.step("Potential energy", "V = " + self.tex(sympy.simplify(mech.potential)))
+        self.step("Kinetic energy", "T = " + self.tex(tidy.simplify(mech.kinetic)))
+        self.step("Potential energy", "V = " + self.tex(tidy.simplify(mech.potential)))
 
     @cached_property
     def system(self) -> tuple[list[sympy.Expr], list[sympy.Symbol]]:
@@ -91,7 +92,7 @@ class LagrangeMethod(Method):
 
     def potential_force(self, coordinate: str) -> sympy.Expr:
         q = self.model.coordinate(coordinate).symbol
-        force = sympy.simplify(-sympy.diff(self.mech.potential, q))
+        force = tidy.simplify(-sympy.diff(self.mech.potential, q))
         self.step(
             f"Generalized force on {coordinate}",
             rf"Q_{{{self.tex(q)}}} = -\frac{{\partial V}}{{\partial {self.tex(q)}}} = " + self.tex(force),
@@ -104,10 +105,10 @@ class LagrangeMethod(Method):
         equations = self.system[0][: len(mech.q)]
         rest = {**point, **dict.fromkeys(mech.qd, 0), **dict.fromkeys(mech.qdd, 0)}
         mass = sympy.Matrix(
-            [[sympy.simplify(sympy.diff(e, a).subs(rest)) for a in mech.qdd] for e in equations]
+            [[tidy.simplify(sympy.diff(e, a).subs(rest)) for a in mech.qdd] for e in equations]
         )
         stiffness = sympy.Matrix(
-            [[sympy.simplify(sympy.diff(e, q).subs(rest)) for q in mech.q] for e in equations]
+            [[tidy.simplify(sympy.diff(e, q).subs(rest)) for q in mech.q] for e in equations]
         )
         return mass, stiffness
 
@@ -124,15 +125,15 @@ class LagrangeMethod(Method):
             r"M\ddot{q} + Kq = 0,\ M = "
             + self.tex(mass)
             + r",\ K = "
-            + self.tex(sympy.simplify(stiffness))
+            + self.tex(tidy.simplify(stiffness))
             + r",\ \omega^2 = "
             + self.tex(omega2),
         )
-        return sympy.simplify(sympy.sqrt(omega2))
+        return tidy.simplify(sympy.sqrt(omega2))
 
 
 def _single_nonzero_eigenvalue(matrix: sympy.Matrix) -> sympy.Expr:
-    values = [sympy.simplify(v) for v in matrix.eigenvals()]
+    values = [tidy.simplify(v) for v in matrix.eigenvals()]
     nonzero = [v for v in values if v != 0]
     if len(nonzero) != 1:
         raise NotApplicable(f"expected one oscillating mode, found eigenvalues {values}")

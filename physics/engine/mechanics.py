@@ -159,10 +159,10 @@ class Mechanics:
             for d in self.dofs
         ]
         norm = sympy.sqrt(sympy.Add(*(t**2 for t in tangent)))
-        norm = sympy.simplify(norm)
+        norm = tidy_up.simplify(norm)
         if norm == 0:
             raise DerivationError(f"body {body!r} does not move with coordinate {coordinate!r}")
-        return [sympy.simplify(t / norm) for t in tangent]
+        return [tidy_up.simplify(t / norm) for t in tangent]
 
     def friction_forces(self, multipliers: Sequence[sympy.Expr]) -> list[sympy.Expr]:
         """Kinetic friction on each Cartesian dof: -mu * lambda along the sliding direction (at a rigid

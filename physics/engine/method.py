@@ -130,7 +130,7 @@ class Method(ABC):
         if kind is QuantityKind.STIFFNESS:
             q = self.model.coordinate(quantity.target).symbol
             q0 = self.equilibrium(quantity.target)
-            stiffness = sympy.simplify(-sympy.diff(self.potential_force(quantity.target), q).subs(q, q0))
+            stiffness = tidy.simplify(-sympy.diff(self.potential_force(quantity.target), q).subs(q, q0))
             self.step(
                 f"Stiffness at the equilibrium ({quantity.target})",
                 rf"k = -\left.\frac{{\partial Q}}{{\partial {self.tex(q)}}}\right|_0 = "
@@ -141,11 +141,11 @@ class Method(ABC):
             return self.frequency(quantity.target, self.equilibrium(quantity.target))
         if kind is QuantityKind.PERIOD:
             omega = self.frequency(quantity.target, self.equilibrium(quantity.target))
-            return sympy.simplify(2 * sympy.pi / omega)
+            return tidy.simplify(2 * sympy.pi / omega)
         if kind is QuantityKind.EXPRESSION:
             assert quantity.expression is not None
             values = {symbol: self.answer(self.model.quantity(name)) for symbol, name in quantity.uses}
-            return sympy.simplify(quantity.expression.subs(values))
+            return tidy.simplify(quantity.expression.subs(values))
         if kind is QuantityKind.NORMAL_FREQUENCY:
             return modes.pick(self.mode_frequencies, int(quantity.target))
         if kind is QuantityKind.TERMINAL_VELOCITY:
@@ -189,7 +189,7 @@ class Method(ABC):
         roots = _real_roots(force, q)
         slope = sympy.diff(force, q)
         stable = [
-            root for root in roots if _negative_on_domain(sympy.simplify(slope.subs(q, root)), self.model)
+            root for root in roots if _negative_on_domain(tidy.simplify(slope.subs(q, root)), self.model)
         ]
         if len(stable) > 1:  # a symmetric pair, say: the coordinate's declared range chooses
             stable = [root for root in stable if _in_range(root, coordinate, self.model)]
@@ -207,7 +207,7 @@ class Method(ABC):
             + self.tex(q)
             + "_0) < 0",
         )
-        return sympy.simplify(stable[0])
+        return tidy.simplify(stable[0])
 
     def terminal_velocity(self, coordinate: str) -> sympy.Expr:
         """The velocity at which the coordinate stops accelerating: this method's own acceleration with the
@@ -222,7 +222,7 @@ class Method(ABC):
         roots = [r for r in sympy.solve(acceleration, c.velocity) if r.is_real is not False and r != 0]
         slope = sympy.diff(acceleration, c.velocity)
         stable = [
-            r for r in roots if _negative_on_domain(sympy.simplify(slope.subs(c.velocity, r)), self.model)
+            r for r in roots if _negative_on_domain(tidy.simplify(slope.subs(c.velocity, r)), self.model)
         ]
         if len(stable) != 1:
             raise DerivationError(
@@ -233,7 +233,7 @@ class Method(ABC):
             f"Terminal velocity of {coordinate}",
             self.tex(sympy.Eq(acceleration, 0)) + r"\Rightarrow " + self.tex(sympy.Eq(c.velocity, stable[0])),
         )
-        return sympy.simplify(stable[0])
+        return tidy.simplify(stable[0])
 
     def solve_for(self, parameter: sympy.Symbol, expr: sympy.Expr, name: str) -> sympy.Expr:
         roots = [
@@ -249,7 +249,7 @@ class Method(ABC):
             f"Solve for {parameter}",
             self.tex(sympy.Eq(expr, 0)) + r"\Rightarrow " + self.tex(sympy.Eq(parameter, roots[0])),
         )
-        return sympy.simplify(roots[0])
+        return tidy.simplify(roots[0])
 
     @abstractmethod
     def derive(self) -> None:

@@ -12,7 +12,7 @@ from collections.abc import Callable
 
 import sympy
 
-from physics.engine import collision, damping, impact, orbits, reach_mistakes, slipping
+from physics.engine import collision, damping, impact, orbits, reach_mistakes, slipping, tidy
 from physics.engine.mechanics import Mechanics
 from physics.engine.model import (
     IMPACT_KINDS,
@@ -186,7 +186,7 @@ def _energy_conserved_speed(model: Model) -> sympy.Expr | None:
     mech = Mechanics(after)
     at, reaches = collision.event_points(model)
     rise = mech.potential.subs(reaches) - mech.potential.subs(at)
-    return sympy.simplify(sympy.sqrt(2 * rise / hit.projectile_mass))
+    return tidy.simplify(sympy.sqrt(2 * rise / hit.projectile_mass))
 
 
 def _limit(expr: sympy.Expr, symbol: sympy.Symbol, value: sympy.Expr) -> sympy.Expr | None:
@@ -196,7 +196,7 @@ def _limit(expr: sympy.Expr, symbol: sympy.Symbol, value: sympy.Expr) -> sympy.E
         return None
     if result.has(sympy.oo, -sympy.oo, sympy.zoo, sympy.nan, sympy.AccumBounds):
         return None
-    return sympy.simplify(result)
+    return tidy.simplify(result)
 
 
 def _distinct(

@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING, Any
 
 import sympy
 
+from physics.engine import tidy
 from physics.engine.mechanics import solve_linear
 from physics.engine.model import Coordinate, Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
@@ -66,9 +67,9 @@ def answer(method: Method, quantity: Quantity, point: dict[sympy.Symbol, sympy.E
         vector = jacobian.LUsolve(vector)
     names = [c.name for c in model.coordinates]
     top, bottom = (vector[names.index(n)] for n in quantity.ratio)
-    if sympy.simplify(bottom) == 0:
+    if tidy.simplify(bottom) == 0:
         raise DerivationError(f"{quantity.ratio[1]} does not move in mode {number}", quantity=quantity.name)
-    ratio = sympy.simplify(top / bottom)
+    ratio = tidy.simplify(top / bottom)
     method.step(
         f"Shape of mode {number}",
         r"(K - \omega_{"

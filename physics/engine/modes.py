@@ -14,6 +14,7 @@ from collections.abc import Sequence
 import mpmath
 import sympy
 
+from physics.engine import tidy
 from physics.engine.mechanics import Mechanics
 from physics.engine.model import Model
 from physics.engine.proof import domain_points
@@ -29,7 +30,7 @@ def equilibrium_point(model: Model, mech: Mechanics) -> dict[sympy.Symbol, sympy
     gradient = [sympy.diff(potential, q) for q in moving]
     solutions = sympy.solve(gradient, moving, dict=True) if moving else [{}]
     stable = [
-        {q: sympy.simplify(solution.get(q, sympy.Integer(0))) for q in mech.q}
+        {q: tidy.simplify(solution.get(q, sympy.Integer(0))) for q in mech.q}
         for solution in solutions
         if all(q in solution for q in moving)
     ]
@@ -78,7 +79,7 @@ def squared_frequencies(model: Model, mass: sympy.Matrix, stiffness: sympy.Matri
     """Non-zero roots of det(K - lambda M), in increasing order on the whole domain."""
     lam = sympy.Dummy("lambda")
     polynomial = sympy.Poly(sympy.expand((stiffness - lam * mass).det()), lam)
-    roots = [sympy.simplify(r) for r in sympy.roots(polynomial, multiple=True)]
+    roots = [tidy.simplify(r) for r in sympy.roots(polynomial, multiple=True)]
     if len(roots) != polynomial.degree():
         raise DerivationError("the characteristic polynomial of the normal modes has no closed-form roots")
     nonzero = [r for r in roots if r != 0]
@@ -101,4 +102,4 @@ def pick(frequencies: Sequence[sympy.Expr], index: int) -> sympy.Expr:
         raise DerivationError(
             f"mode {index} asked for, but the system has {len(frequencies)} oscillating modes"
         )
-    return sympy.simplify(sympy.sqrt(frequencies[index - 1]))
+    return tidy.simplify(sympy.sqrt(frequencies[index - 1]))

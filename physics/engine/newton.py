@@ -12,7 +12,7 @@ from functools import cached_property
 
 import sympy
 
-from physics.engine import collision
+from physics.engine import collision, tidy
 from physics.engine.frames import centripetal_accelerations
 from physics.engine.mechanics import solve_linear, time_derivative
 from physics.engine.method import Method, NotApplicable
@@ -145,7 +145,7 @@ class NewtonMethod(Method):
                 for d in mech.dofs
             )
         )
-        force = sympy.simplify(force)
+        force = tidy.simplify(force)
         self.step(
             f"Virtual work of the forces along {coordinate}",
             rf"Q_{{{self.tex(q)}}} = \sum_i F_i \frac{{\partial x_i}}{{\partial {self.tex(q)}}} = "
@@ -164,18 +164,18 @@ class NewtonMethod(Method):
         symbols = [d.symbol for d in mech.dofs]
         stiffness = sympy.hessian(mech.cartesian_potential, symbols).subs(point)
         mass = sympy.diag(*[d.inertia for d in mech.dofs])
-        values = [sympy.simplify(v) for v in (mass.inv() * stiffness).eigenvals()]
+        values = [tidy.simplify(v) for v in (mass.inv() * stiffness).eigenvals()]
         nonzero = [v for v in values if v != 0]
         if len(nonzero) != 1:
             raise NotApplicable(f"expected one oscillating mode, found eigenvalues {values}")
         self.step(
             "Small oscillations of the Cartesian equations",
             r"M\ddot{x} = -Kx,\ K = "
-            + self.tex(sympy.simplify(stiffness))
+            + self.tex(tidy.simplify(stiffness))
             + r",\ \omega^2 = "
             + self.tex(nonzero[0]),
         )
-        return sympy.simplify(sympy.sqrt(nonzero[0]))
+        return tidy.simplify(sympy.sqrt(nonzero[0]))
 
     def mode_matrices(self, point: dict[sympy.Symbol, sympy.Expr]) -> tuple[sympy.Matrix, sympy.Matrix]:
         """m x'' = -K x on the Cartesian axes (no constraints), K the Hessian of V at the equilibrium."""
@@ -184,7 +184,7 @@ class NewtonMethod(Method):
             raise NotApplicable("Cartesian normal modes are done here only without constraints")
         place = {d.symbol: d.mapping.subs(point) for d in mech.dofs}
         stiffness = sympy.hessian(mech.cartesian_potential, [d.symbol for d in mech.dofs]).subs(place)
-        return sympy.diag(*[d.inertia for d in mech.dofs]), stiffness.applyfunc(sympy.simplify)
+        return sympy.diag(*[d.inertia for d in mech.dofs]), stiffness.applyfunc(tidy.simplify)
 
     def collision(self, item: QuantityKind) -> sympy.Expr:
         if self.model.collision is None:

@@ -26,6 +26,7 @@ from typing import Any, TypeVar, cast
 
 import sympy
 
+from physics.engine import tidy
 from physics.engine.conservation import ConservationMethod, cyclic_indices
 from physics.engine.mechanics import Mechanics, solve_linear, time_derivative
 from physics.engine.method import Method, NotApplicable
@@ -58,27 +59,27 @@ def answer(method: Method, quantity: Quantity) -> sympy.Expr:
         radius, slope = circular_orbit(method, quantity.target)
         if kind is QuantityKind.CIRCULAR_RADIUS:
             return radius
-        omega = sympy.simplify(sympy.sqrt(-slope))
+        omega = tidy.simplify(sympy.sqrt(-slope))
         method.step(
             f"Small oscillations of {quantity.target} about the circular orbit",
             rf"\omega^2 = -f'({method.tex(model_symbol(method.model, quantity.target))}_0) = "
-            + method.tex(sympy.simplify(-slope)),
+            + method.tex(tidy.simplify(-slope)),
         )
         return omega
     if quantity.target == FRAME:
-        period = sympy.simplify(2 * sympy.pi / frame_rate(method))
+        period = tidy.simplify(2 * sympy.pi / frame_rate(method))
         method.step("Period of one turn of the frame", r"T = \frac{2\pi}{\omega} = " + method.tex(period))
         return period
     rate, steady = steady_rate(method, quantity.target)
     if kind is QuantityKind.REVOLUTION_PERIOD:
-        period = sympy.simplify(2 * sympy.pi / rate)
+        period = tidy.simplify(2 * sympy.pi / rate)
         method.step("Period of one revolution", r"T = \frac{2\pi}{\omega} = " + method.tex(period))
         return period
     if kind is QuantityKind.CIRCULAR_SPEED:
-        speed = sympy.simplify(_speed(steady.model, quantity.target).subs(RATE, rate))
+        speed = tidy.simplify(_speed(steady.model, quantity.target).subs(RATE, rate))
         method.step("Speed on the circle", "v = " + method.tex(speed))
         return speed
-    energy = sympy.simplify(energy_of(steady).subs(RATE, rate))
+    energy = tidy.simplify(energy_of(steady).subs(RATE, rate))
     method.step("Energy of the circular motion", "E = T + V = " + method.tex(energy))
     return energy
 
@@ -103,7 +104,7 @@ def energy_of(method: Method) -> sympy.Expr:
         kinetic = kinetic.subs(velocities)
     else:
         kinetic, potential = mech.kinetic, mech.potential
-    return sympy.simplify((kinetic + potential).subs(state))
+    return tidy.simplify((kinetic + potential).subs(state))
 
 
 T = TypeVar("T")
@@ -149,14 +150,14 @@ def _steady_rate(method: Method, target: str) -> tuple[sympy.Expr, Method]:
     state.update({c.velocity: sympy.Integer(0) for c in others})
     state[turning.velocity] = RATE
     solver = restated(method, dataclasses.replace(model, state=tuple(state.items())))
-    spin = sympy.simplify(solver.acceleration(target))
+    spin = tidy.simplify(solver.acceleration(target))
     if spin != 0:
         raise DerivationError(
             f"{target} does not turn uniformly ({target}'' = {spin}): a steady rotation needs a coordinate on "
             "which neither the potential nor the inertia depends",
             quantity=target,
         )
-    accelerations = [(c, sympy.simplify(solver.acceleration(c.name))) for c in others]
+    accelerations = [(c, tidy.simplify(solver.acceleration(c.name))) for c in others]
     moving = [(c, a) for c, a in accelerations if a != 0]
     if not moving:
         raise DerivationError(f"every rate of {target} keeps the other coordinates still", quantity=target)
@@ -168,9 +169,9 @@ def _steady_rate(method: Method, target: str) -> tuple[sympy.Expr, Method]:
             f"{target}' (found {roots}); the force must pull towards the centre",
             quantity=target,
         )
-    rate = sympy.simplify(roots[0])
+    rate = tidy.simplify(roots[0])
     for c, a in moving[1:]:
-        if sympy.simplify(a.subs(RATE, rate)) != 0:
+        if tidy.simplify(a.subs(RATE, rate)) != 0:
             raise DerivationError(
                 f"no steady rotation of {target}: at {target}' = {rate}, {c.name}'' = {a} does not vanish",
                 quantity=target,
@@ -217,9 +218,9 @@ def frame_rate(method: Method) -> sympy.Expr:
             f"no single rate {symbol} > 0 holds {first.name} at rest in the frame ({first.name}'' = {acceleration})",
             quantity=FRAME,
         )
-    value = sympy.simplify(roots[0])
+    value = tidy.simplify(roots[0])
     for c, a in moving[1:]:
-        if sympy.simplify(a.subs(symbol, value)) != 0:
+        if tidy.simplify(a.subs(symbol, value)) != 0:
             raise DerivationError(f"at {symbol} = {value}, {c.name}'' = {a} does not vanish", quantity=FRAME)
     method.step(
         "At rest in the frame at the state",
@@ -227,7 +228,7 @@ def frame_rate(method: Method) -> sympy.Expr:
         + rf" = 0 \Rightarrow {method.tex(symbol)} = "
         + method.tex(value),
     )
-    return sympy.simplify(rate.subs(symbol, value))
+    return tidy.simplify(rate.subs(symbol, value))
 
 
 def _vanishes(expr: sympy.Expr, model: Model) -> bool:
@@ -241,7 +242,7 @@ def _vanishes(expr: sympy.Expr, model: Model) -> bool:
         values = []
     if any(abs(v) > 1e-9 for v in values):
         return False
-    return bool(sympy.simplify(expr) == 0)
+    return bool(tidy.simplify(expr) == 0)
 
 
 def elsewhere(model: Model, symbol: sympy.Symbol) -> bool:
@@ -264,7 +265,7 @@ def _speed(steady: Model, target: str) -> sympy.Expr:
         )
     velocity = [time_derivative(e, steady) for _, e in turning[0].position]
     squared = sympy.Add(*(v**2 for v in velocity)).subs(dict(steady.state))
-    return sympy.sqrt(sympy.simplify(squared))
+    return sympy.sqrt(tidy.simplify(squared))
 
 
 def conserved_state(method: Method, target: str) -> Model:
@@ -282,9 +283,9 @@ def conserved_state(method: Method, target: str) -> Model:
     if any(mech.q[i] == radial.symbol for i in cyclic):
         raise DerivationError(f"{target} is cyclic: it has no circular orbit", quantity=target)
     state = dict(model.state)
-    mass = mech.mass_matrix.applyfunc(sympy.simplify)
+    mass = mech.mass_matrix.applyfunc(tidy.simplify)
     velocities = sympy.Matrix(mech.qd)
-    momenta = [sympy.simplify((mass[i, :] * velocities)[0].subs(state)) for i in cyclic]
+    momenta = [tidy.simplify((mass[i, :] * velocities)[0].subs(state)) for i in cyclic]
     rest = {mech.qd[j]: sympy.Integer(0) for j in range(len(mech.q)) if j not in cyclic}
     equations = [(mass[i, :] * velocities)[0].subs(rest) - p for i, p in zip(cyclic, momenta, strict=True)]
     held = solve_linear(equations, [mech.qd[i] for i in cyclic], "the conserved momenta")
@@ -303,7 +304,7 @@ def _circular_orbit(method: Method, target: str) -> tuple[sympy.Expr, sympy.Expr
     model = method.model
     r = model.coordinate(target).symbol
     solver = restated(method, conserved_state(method, target))
-    radial = sympy.simplify(solver.acceleration(target))
+    radial = tidy.simplify(solver.acceleration(target))
     for step in solver.steps:
         method.step(step.title, step.latex)
     roots = sympy.solve(radial, r)
@@ -313,7 +314,7 @@ def _circular_orbit(method: Method, target: str) -> tuple[sympy.Expr, sympy.Expr
         for root in roots
         if root.is_real is not False
         and not (r.is_positive and root.is_positive is False)
-        and _positive_on_domain(-sympy.simplify(slope.subs(r, root)), model)
+        and _positive_on_domain(-tidy.simplify(slope.subs(r, root)), model)
     ]
     if len(stable) != 1:
         raise DerivationError(
@@ -321,14 +322,14 @@ def _circular_orbit(method: Method, target: str) -> tuple[sympy.Expr, sympy.Expr
             f"found {len(stable)} among {roots}",
             quantity=target,
         )
-    radius = sympy.simplify(stable[0])
+    radius = tidy.simplify(stable[0])
     method.step(
         f"Circular orbit: {target}'' = 0 with the conserved momenta",
         method.tex(sympy.Eq(model.coordinate(target).acceleration, radial))
         + rf" = 0 \Rightarrow {method.tex(r)}_0 = "
         + method.tex(radius),
     )
-    return radius, sympy.simplify(slope.subs(r, radius))
+    return radius, tidy.simplify(slope.subs(r, radius))
 
 
 def _positive_on_domain(expr: sympy.Expr, model: Model) -> bool:
@@ -348,7 +349,7 @@ def mistakes(model: Model, quantity: Quantity, reference: sympy.Expr) -> list[tu
     if kind not in (QuantityKind.CIRCULAR_ENERGY, QuantityKind.MECHANICAL_ENERGY):
         return []
     result: list[tuple[sympy.Expr | None, str]] = []
-    potential = sympy.simplify(Mechanics(model).potential.subs(dict(model.state)))
+    potential = tidy.simplify(Mechanics(model).potential.subs(dict(model.state)))
     if not potential.has(*(c.symbol for c in model.coordinates)):
-        result += [(sympy.simplify(reference - potential), KINETIC_ONLY), (potential, POTENTIAL_ONLY)]
+        result += [(tidy.simplify(reference - potential), KINETIC_ONLY), (potential, POTENTIAL_ONLY)]
     return [*result, (-reference, ENERGY_SIGN)]

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import sympy
 
+from physics.engine import tidy
 from physics.engine.method import Method, NotApplicable
 
 
@@ -21,7 +22,7 @@ def frequency_from_accelerations(
     q = method.model.coordinate(coordinate).symbol
     at = {q: equilibrium, **{c: 0 for c in mech.q if c != q}}
     stiffness = sympy.Matrix([[-sympy.diff(accelerations[a], c) for c in mech.q] for a in mech.qdd]).subs(at)
-    values = [sympy.simplify(v) for v in stiffness.eigenvals()]
+    values = [tidy.simplify(v) for v in stiffness.eigenvals()]
     nonzero = [v for v in values if v != 0]
     if len(nonzero) != 1:
         raise NotApplicable(f"expected one oscillating mode, found {values}")
@@ -30,4 +31,4 @@ def frequency_from_accelerations(
         rf"\ddot{{{method.tex(q)}}} = f({method.tex(q)}),\quad \omega^2 = -\left.\frac{{\partial f}}"
         rf"{{\partial {method.tex(q)}}}\right|_0 = " + method.tex(nonzero[0]),
     )
-    return sympy.simplify(sympy.sqrt(nonzero[0]))
+    return tidy.simplify(sympy.sqrt(nonzero[0]))

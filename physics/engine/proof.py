@@ -14,6 +14,7 @@ from functools import lru_cache
 
 import sympy
 
+from physics.engine import tidy
 from physics.engine.model import Model
 from physics.errors import DerivationError
 
@@ -59,11 +60,11 @@ def prove_equal(first: sympy.Expr, second: sympy.Expr, model: Model, what: str, 
     """How `first` == `second` was shown ("symbolic" or "sampled ..."); DerivationError if they differ."""
     difference = first - second
     if sympy.count_ops(difference) <= MAX_OPS_SYMBOLIC:
-        for attempt in (sympy.cancel, sympy.simplify, lambda e: sympy.simplify(e.rewrite(sympy.sin))):
+        for attempt in (sympy.cancel, tidy.simplify, lambda e: tidy.simplify(e.rewrite(sympy.sin))):
             if attempt(difference) == 0:
                 return "symbolic"
         angles = _angle_substitution(model)
-        if angles and sympy.simplify(difference.subs(angles)) == 0:
+        if angles and tidy.simplify(difference.subs(angles)) == 0:
             return "symbolic (angles in range as atan of a positive parameter)"
     worst = 0.0
     for point in domain_points(model, SAMPLES, seed=zlib.crc32(what.encode())):

@@ -8,6 +8,7 @@ from collections.abc import Callable
 
 import sympy
 
+from physics.engine import tidy
 from physics.engine.model import TRAJECTORY_KINDS, Model, Quantity, QuantityKind
 
 Rederive = Callable[[Model, Quantity], sympy.Expr | None]
@@ -73,7 +74,7 @@ def _trajectory(model: Model, quantity: Quantity, reference: sympy.Expr, rederiv
         vx, vy = start.velocity["x"], start.velocity["y"]
         found += [(2 * reference, HEIGHT_FACTOR)]
         if vx != 0:
-            found += [(sympy.simplify(reference * (vx**2 + vy**2) / vy**2), WHOLE_SPEED)]
+            found += [(tidy.simplify(reference * (vx**2 + vy**2) / vy**2), WHOLE_SPEED)]
         return found
     launch_level = rederive(model, dataclasses.replace(quantity, level=None))
     if quantity.level is not None:
@@ -96,4 +97,4 @@ def _force(model: Model, quantity: Quantity, reference: sympy.Expr, rederive: Re
     static = rederive(resting, dataclasses.replace(quantity, at=()))
     if static is None:
         return []
-    return [(static, AT_REST), (sympy.simplify(2 * static - reference), CENTRIPETAL_SIGN)]
+    return [(static, AT_REST), (tidy.simplify(2 * static - reference), CENTRIPETAL_SIGN)]

@@ -22,6 +22,7 @@ from typing import TYPE_CHECKING
 
 import sympy
 
+from physics.engine import tidy
 from physics.engine.contact_friction import only_friction, slip_velocity
 from physics.engine.mechanics import Mechanics, time_derivative
 from physics.engine.model import Model, Quantity, QuantityKind
@@ -52,17 +53,17 @@ def sliding_phase(method: Method, quantity: Quantity) -> sympy.Expr:
     free_method = type(method)(free, Mechanics(free))
     moving = model.moving_symbols
     accelerations = {
-        c.acceleration: sympy.simplify(free_method.acceleration(c.name)) for c in model.coordinates
+        c.acceleration: tidy.simplify(free_method.acceleration(c.name)) for c in model.coordinates
     }
     if any(a.free_symbols & moving for a in accelerations.values()):
         raise NotApplicable("the accelerations change during the sliding (not constant): no closed form")
     slip = slip_velocity(method.mech, friction)
-    rate = sympy.simplify(time_derivative(slip, model).subs(accelerations))
+    rate = tidy.simplify(time_derivative(slip, model).subs(accelerations))
     start = dict(model.state)
-    u0 = sympy.simplify(slip.subs(start).subs(dict.fromkeys(moving, 0)))
+    u0 = tidy.simplify(slip.subs(start).subs(dict.fromkeys(moving, 0)))
     if rate.free_symbols & moving or rate == 0:
         raise NotApplicable("the slip velocity does not change at a constant rate")
-    time = sympy.simplify(-u0 / rate)
+    time = tidy.simplify(-u0 / rate)
     method.step(
         f"Slipping at {friction.constraint} stops",
         rf"u = {method.tex(slip)},\ \dot u = {method.tex(rate)}\Rightarrow t = -u_0/\dot u = {method.tex(time)}",
@@ -73,10 +74,10 @@ def sliding_phase(method: Method, quantity: Quantity) -> sympy.Expr:
     v0 = start.get(c.velocity, sympy.Integer(0))
     a = accelerations[c.acceleration]
     if quantity.kind is QuantityKind.SLIP_END_VELOCITY:
-        value = sympy.simplify(v0 + a * time)
+        value = tidy.simplify(v0 + a * time)
         method.step(f"{c.name}' when slipping stops", method.tex(sympy.Eq(sympy.Symbol("v"), value)))
         return value
-    value = sympy.simplify(v0 * time + a * time**2 / 2)
+    value = tidy.simplify(v0 * time + a * time**2 / 2)
     method.step(f"{c.name} moves while slipping", method.tex(sympy.Eq(sympy.Symbol("d"), value)))
     return value
 
@@ -99,9 +100,9 @@ def slipping_limit(method: Method, quantity: Quantity) -> sympy.Expr:
     friction, normal = method.force(friction_name), method.force(normal_name)
     roots: list[sympy.Expr] = []
     for sign in (1, -1):
-        for root in sympy.solve(sympy.simplify(friction - sign * mu * normal), parameter):
+        for root in sympy.solve(tidy.simplify(friction - sign * mu * normal), parameter):
             if root.is_real is not False and not (parameter.is_positive and root.is_positive is False):
-                roots.append(sympy.simplify(root))
+                roots.append(tidy.simplify(root))
     roots = list(dict.fromkeys(roots))
     inside = [_tidy(r, method.model) for r in roots if _in_parameter_range(r, parameter, method.model)]
     if len(inside) != 1:
@@ -123,7 +124,7 @@ def _tidy(root: sympy.Expr, model: Model) -> sympy.Expr:
     taken when it is simpler and equal at domain points."""
     if not root.has(sympy.atan):
         return root
-    candidate = sympy.atan(sympy.simplify(sympy.expand_trig(sympy.tan(root))))
+    candidate = sympy.atan(tidy.simplify(sympy.expand_trig(sympy.tan(root))))
     if sympy.count_ops(candidate) >= sympy.count_ops(root):
         return root
     try:

@@ -2,8 +2,9 @@
 
 The methods meet the same expressions again and again: Lagrange's solution is simplified when solved,
 again when read at the state (already substituted), again when the simplest of the methods' answers is
-chosen. `sympy.simplify` is most of a derivation's time and sympy does not cache it, so it is cached
-here, and what it returns counts as simplified (its own result is not simplified a second time).
+chosen; each method simplifies the same generalized force, the same stability slope. `sympy.simplify`
+is most of a derivation's time and sympy does not cache it, so it is cached here: the same expression
+in, the same result out, only computed once.
 """
 
 from __future__ import annotations
@@ -16,7 +17,9 @@ _remembered: dict[sympy.Basic, sympy.Expr] = {}
 
 
 def simplify(expr: sympy.Expr) -> sympy.Expr:
-    """`sympy.simplify(expr)`, from memory when this derivation has simplified expr (or reached it)."""
+    """`sympy.simplify(expr)`, from memory when this derivation has simplified expr already."""
+    if not isinstance(expr, sympy.Basic):  # a mutable Matrix cannot be a key
+        return sympy.simplify(expr)
     found = _remembered.get(expr)
     if found is None:
         found = sympy.simplify(expr)

@@ -18,6 +18,7 @@ from typing import TYPE_CHECKING
 
 import sympy
 
+from physics.engine import tidy
 from physics.engine.mechanics import time_derivative
 from physics.engine.model import Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
@@ -42,8 +43,8 @@ class Launch:
 def launch(model: Model, quantity: Quantity) -> Launch:
     state = dict(model.state)
     position = dict(model.body(quantity.target).position)
-    start = {a: sympy.simplify(e.subs(state)) for a, e in position.items()}
-    velocity = {a: sympy.simplify(time_derivative(e, model).subs(state)) for a, e in position.items()}
+    start = {a: tidy.simplify(e.subs(state)) for a, e in position.items()}
+    velocity = {a: tidy.simplify(time_derivative(e, model).subs(state)) for a, e in position.items()}
     moving = model.moving_symbols
     for axis, value in (*start.items(), *velocity.items()):
         if value.free_symbols & moving:
@@ -72,7 +73,7 @@ def _coordinate_acceleration(method: Method, body: str) -> Vector:
     model = method.model
     solution = {c.acceleration: method.free.acceleration(c.name) for c in model.coordinates}
     return {
-        axis: sympy.simplify(time_derivative(time_derivative(expr, model), model).subs(solution))
+        axis: tidy.simplify(time_derivative(time_derivative(expr, model), model).subs(solution))
         for axis, expr in model.body(body).position
     }
 
@@ -84,7 +85,7 @@ def _newton_acceleration(method: Method, body: str) -> Vector:
     newton = method.free
     assert isinstance(newton, NewtonMethod)
     return {
-        d.name.split("_", 1)[0]: sympy.simplify(newton.solution[d.acceleration])
+        d.name.split("_", 1)[0]: tidy.simplify(newton.solution[d.acceleration])
         for d in newton.mech.dofs
         if d.body == body and not d.name.startswith("phi_")
     }
@@ -118,7 +119,7 @@ def by_kinematics(method: Method, quantity: Quantity) -> sympy.Expr:
         raise DerivationError(f"{quantity.name}: nothing pulls {quantity.target} down: it never lands")
     if quantity.kind is QuantityKind.MAX_HEIGHT:
         apex = -start.velocity["y"] / acceleration["y"]
-        height = sympy.simplify(path["y"].subs(t, apex) - start.position["y"])
+        height = tidy.simplify(path["y"].subs(t, apex) - start.position["y"])
         method.step(
             "Apex where the vertical velocity vanishes",
             method.tex(sympy.Eq(sympy.diff(path["y"], t), 0))
@@ -139,14 +140,14 @@ def by_kinematics(method: Method, quantity: Quantity) -> sympy.Expr:
     )
     if quantity.kind is QuantityKind.TIME_OF_FLIGHT:
         return flight
-    distance = sympy.simplify(path["x"].subs(t, flight) - start.position["x"])
+    distance = tidy.simplify(path["x"].subs(t, flight) - start.position["x"])
     method.step("Range", r"x(T) - x_0 = " + method.tex(distance))
     return distance
 
 
 def _quadratic_roots(a: sympy.Expr, b: sympy.Expr, c: sympy.Expr) -> list[sympy.Expr]:
     """Roots of a t^2 + b t + c = 0 (a != 0) by the formula: sympy's general solver is slow here."""
-    if sympy.simplify(c) == 0:
+    if tidy.simplify(c) == 0:
         return [sympy.Integer(0), -b / a]
     root = sympy.sqrt(b**2 - 4 * a * c)
     return [(-b + root) / (2 * a), (-b - root) / (2 * a)]
@@ -173,7 +174,7 @@ def later_root(model: Model, roots: list[sympy.Expr], name: str) -> sympy.Expr:
         raise DerivationError(
             f"{name}: the landing time is not one root over the domain ({roots})", quantity=name
         )
-    return sympy.simplify(roots[chosen.pop()])
+    return tidy.simplify(roots[chosen.pop()])
 
 
 # --- energy and momentum ------------------------------------------------------------------------
@@ -193,7 +194,7 @@ def by_energy(method: Method, quantity: Quantity) -> sympy.Expr:
     if holding:
         raise NotApplicable(f"{body.name} is held by {holding}: not in free flight")
     force = {
-        d.name.split("_", 1)[0]: sympy.simplify(-sympy.diff(mech.cartesian_potential, d.symbol)) for d in own
+        d.name.split("_", 1)[0]: tidy.simplify(-sympy.diff(mech.cartesian_potential, d.symbol)) for d in own
     }
     cartesian = {d.symbol for d in mech.dofs}
     if any(f.free_symbols & cartesian for f in force.values()):
@@ -217,13 +218,13 @@ def by_energy(method: Method, quantity: Quantity) -> sympy.Expr:
             "Energy from the launch to the apex (vertical velocity zero)",
             method.tex(energy) + r"\Rightarrow H = " + method.tex(found),
         )
-        return sympy.simplify(found)
+        return tidy.simplify(found)
     landing = sympy.Symbol("v_y1", real=True)
     energy = sympy.Eq(m * landing**2 / 2, m * vy**2 / 2 + fy * (start.level - start.position["y"]))
     size = sympy.sqrt(vy**2 + 2 * fy * (start.level - start.position["y"]) / m)
     roots = [size, -size]
     descending = _with_sign(model, roots, fy, quantity.name)
-    flight = sympy.simplify(m * (descending - vy) / fy)
+    flight = tidy.simplify(m * (descending - vy) / fy)
     method.step(
         "Energy from the launch to the landing level (vertical part: vx does not change)",
         method.tex(energy) + r"\Rightarrow v_{y1} = " + method.tex(descending),
@@ -234,7 +235,7 @@ def by_energy(method: Method, quantity: Quantity) -> sympy.Expr:
     )
     if quantity.kind is QuantityKind.TIME_OF_FLIGHT:
         return flight
-    distance = sympy.simplify(vx * flight)
+    distance = tidy.simplify(vx * flight)
     method.step("Range at the conserved horizontal velocity", r"R = v_x T = " + method.tex(distance))
     return distance
 

@@ -26,6 +26,7 @@ from typing import TYPE_CHECKING
 
 import sympy
 
+from physics.engine import tidy
 from physics.engine.mechanics import Mechanics, solve_linear
 from physics.engine.model import Coordinate, Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
@@ -96,7 +97,7 @@ def _held(method: Method, c: Coordinate, quantity: Quantity) -> dict[sympy.Symbo
     equations = []
     for i in others:
         momentum = sympy.Add(*(mass[i, j] * mech.qd[j] for j in range(n)))
-        initial = sympy.simplify(momentum.subs(state))
+        initial = tidy.simplify(momentum.subs(state))
         method.step(
             f"Momentum conjugate to {mech.q[i]} is conserved", method.tex(sympy.Eq(momentum, initial))
         )
@@ -106,7 +107,7 @@ def _held(method: Method, c: Coordinate, quantity: Quantity) -> dict[sympy.Symbo
 
 def _direction(model: Model, start: sympy.Expr, end: sympy.Expr, name: str) -> int:
     """The sign of end - start over the whole domain: the coordinate moves that way (without turning)."""
-    difference = sympy.simplify(end - start)
+    difference = tidy.simplify(end - start)
     if difference.is_positive:
         return 1
     if difference.is_negative:
@@ -133,9 +134,9 @@ def answer(method: Method, quantity: Quantity) -> sympy.Expr:
         _check_reached(model, trip, method.arrivals[key], quantity.name)
     square = method.arrivals[key]
     c = trip.coordinate
-    velocity = sympy.simplify(trip.sign * sympy.sqrt(square))
+    velocity = tidy.simplify(trip.sign * sympy.sqrt(square))
     arrival = {c.symbol: trip.end, c.velocity: velocity}
-    there = {c.velocity: velocity, **{v: sympy.simplify(e.subs(arrival)) for v, e in trip.held.items()}}
+    there = {c.velocity: velocity, **{v: tidy.simplify(e.subs(arrival)) for v, e in trip.held.items()}}
     if quantity.kind is QuantityKind.VELOCITY:
         return there[model.coordinate(quantity.target).velocity]
     if quantity.kind is QuantityKind.SPEED:
@@ -147,7 +148,7 @@ def answer(method: Method, quantity: Quantity) -> sympy.Expr:
         rate = sympy.Add(*(sympy.expand(v.subs(trip.held)) ** 2 for v in moved)).subs(c.symbol, trip.end)
         # in q'^2 (odd powers only where momenta start non-zero): v^2 = square, v = the signed velocity
         squared = sympy.expand(rate).subs(c.velocity**2, square).subs(c.velocity, velocity)
-        speed = sympy.simplify(sympy.sqrt(sympy.simplify(squared)))
+        speed = tidy.simplify(sympy.sqrt(tidy.simplify(squared)))
         method.step(
             f"Speed of {quantity.target} there",
             rf"v_{{\mathrm{{{quantity.target}}}}} = \sqrt{{\dot x^2 + \dot y^2}} = " + method.tex(speed),
@@ -187,13 +188,13 @@ def by_energy(method: Method, trip: Journey) -> sympy.Expr:
         forces = [
             f + a for f, a in zip(mech.friction_forces(multipliers), mech.applied_forces(False), strict=True)
         ]
-        generalized = sympy.simplify(mech.generalized(forces)[0])
+        generalized = tidy.simplify(mech.generalized(forces)[0])
         if generalized.has(qd):
             raise NotApplicable(
                 f"the non-conservative force along {c.name} ({generalized}) depends on the speed along the way "
                 "(a normal force on a curve, drag): its work needs the motion itself"
             )
-        work = sympy.simplify(sympy.integrate(generalized, (q, trip.start, trip.end)))
+        work = tidy.simplify(sympy.integrate(generalized, (q, trip.start, trip.end)))
         if work.has(sympy.Integral):
             raise NotApplicable(f"could not integrate the work of {generalized} along {c.name}")
         method.step(
@@ -204,19 +205,19 @@ def by_energy(method: Method, trip: Journey) -> sympy.Expr:
     kinetic, potential = sympy.expand(mech.kinetic.subs(trip.held)), mech.potential
     state = {**{v: sympy.Integer(0) for v in mech.qd}, **dict(model.state)}
     before = (mech.kinetic + potential).subs(state)
-    if sympy.simplify(sympy.diff(kinetic, qd).subs(qd, 0)) != 0:
+    if tidy.simplify(sympy.diff(kinetic, qd).subs(qd, 0)) != 0:
         raise NotApplicable(
             f"the kinetic energy with the conserved momenta is not even in {c.name}'s velocity"
         )
     inertia = sympy.diff(kinetic, qd, 2).subs(q, trip.end)
     # with held momenta, T keeps a part in the moving coordinate alone (the cyclic motion's own energy)
     rest = kinetic.subs(qd, 0).subs(q, trip.end) + potential.subs(q, trip.end)
-    square = sympy.simplify(2 * (before + work - rest) / inertia)
+    square = tidy.simplify(2 * (before + work - rest) / inertia)
     w = qd**2
     method.step(
         f"Work and energy from {c.name} = {sympy.sstr(trip.start)} to {sympy.sstr(trip.end)}",
         r"T_1 + V_1 = T_0 + V_0 + W:\quad "
-        + method.tex(sympy.Eq(sympy.simplify(inertia * w / 2 + rest), sympy.simplify(before + work)))
+        + method.tex(sympy.Eq(tidy.simplify(inertia * w / 2 + rest), tidy.simplify(before + work)))
         + r"\Rightarrow "
         + method.tex(sympy.Eq(w, square)),
     )
@@ -240,7 +241,7 @@ def _straight_surfaces(model: Model, mech: Mechanics, c: Coordinate) -> None:
                 for b in mech.dofs
             )
         )
-        if sympy.simplify(curvature) != 0:
+        if tidy.simplify(curvature) != 0:
             raise NotApplicable(
                 f"the surface {friction.constraint!r} curves along the path, so its normal force, and "
                 "friction's work, depends on the speed along the way: the work needs the motion itself"
@@ -255,7 +256,7 @@ def by_integration(method: Method, trip: Journey) -> sympy.Expr:
     q, qd = c.symbol, c.velocity
     acceleration = method.free.acceleration(c.name)
     if trip.held:  # the other coordinates' equations of motion, integrated once: their momenta conserved
-        acceleration = sympy.simplify(acceleration.subs(trip.held))
+        acceleration = tidy.simplify(acceleration.subs(trip.held))
     u = sympy.Dummy("u", positive=True)  # the speed; qd = sign * u on the way
     moving = sympy.expand(acceleration.subs(qd, trip.sign * u))
     constant = moving.subs(u, 0)
@@ -271,7 +272,7 @@ def by_integration(method: Method, trip: Journey) -> sympy.Expr:
     )
     driven = sympy.integrate(sympy.expand(2 * constant * sympy.exp(-growth)), (q, trip.start, trip.end))
     # simplified once, at the end: simplify on the integrands costs more than the integration
-    square = sympy.simplify(sympy.exp(growth.subs(q, trip.end)) * (trip.velocity**2 + driven))
+    square = tidy.simplify(sympy.exp(growth.subs(q, trip.end)) * (trip.velocity**2 + driven))
     if square.has(sympy.Integral):
         raise NotApplicable(f"could not integrate {c.name}'s equation of motion in closed form")
     w = qd**2
@@ -311,4 +312,4 @@ def arrival_velocity(model: Model, quantity: Quantity) -> sympy.Expr:
 
     method = ConservationMethod(model, Mechanics(model))
     trip = journey(method, quantity)
-    return sympy.simplify(trip.sign * sympy.sqrt(by_energy(method, trip)))
+    return tidy.simplify(trip.sign * sympy.sqrt(by_energy(method, trip)))
