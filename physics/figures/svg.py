@@ -44,10 +44,11 @@ class Canvas:
             f'stroke="{color}" stroke-width="{width}"{dash} stroke-linecap="round"/>'
         )
 
-    def polyline(self, points: list[Point], *, width: float = 0.05) -> None:
+    def polyline(self, points: list[Point], *, width: float = 0.05, dashed: bool = False) -> None:
         self._extend(*points)
+        dash = ' stroke-dasharray="0.15 0.12"' if dashed else ""
         self.elements.append(
-            f'<polyline points="{self._pts(points)}" fill="none" stroke="{INK}" stroke-width="{width}" '
+            f'<polyline points="{self._pts(points)}" fill="none" stroke="{INK}" stroke-width="{width}"{dash} '
             'stroke-linejoin="round"/>'
         )
 

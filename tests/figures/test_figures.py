@@ -35,6 +35,7 @@ EXPECTED = {
     "yo-yo": ({"m", "r"}, "axle"),
     "cart-collision": ({"m₁", "m₂", "u₁", "u₂"}, "collision"),
     "glancing-pucks": ({"m", "u", "φ"}, "elastic collision"),
+    "projectile": ({"m", "v₀", "α"}, "launched from the ground"),
 }
 
 

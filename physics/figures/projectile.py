@@ -1,0 +1,111 @@
+"""A body launched under gravity alone: the launch point, the ground, the launch velocity at its angle
+and the path, dashed and drawn to scale from the student's numbers, to where it lands."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import sympy
+
+from physics.engine.model import Body, Model, QuantityKind
+from physics.figures.scene import Figure, Values, _angle_mark, _angle_symbol, body_label, symbol_label
+from physics.figures.svg import FILLS
+
+SPAN = 7.0  # the larger of the drawn range and height, in figure units
+ARROW = 2.4  # the launch velocity's drawn length
+
+
+@dataclass(frozen=True)
+class Launch:
+    body: Body
+    height: sympy.Expr  # of the launch point, in the model's y
+    landing: sympy.Expr  # the ground's y
+    vx: sympy.Expr
+    vy: sympy.Expr
+
+
+def launch_of(model: Model) -> Launch | None:
+    """A single free body in the plane under gravity, launched from the state: a projectile."""
+    if (
+        model.gravity is None
+        or len(model.bodies) != 1
+        or model.constraints
+        or model.potentials
+        or model.forces
+    ):
+        return None
+    body = model.bodies[0]
+    position = dict(body.position)
+    coordinates = {c.symbol: c for c in model.coordinates}
+    axes = {axis: coordinates.get(position.get(axis)) for axis in ("x", "y")}
+    state = dict(model.state)
+    if any(c is None or c.velocity not in state for c in axes.values()):
+        return None
+    x, y = axes["x"], axes["y"]
+    assert x is not None and y is not None
+    height = state.get(y.symbol, sympy.Integer(0))
+    levels = [
+        q.level for q in model.quantities if q.kind in (QuantityKind.TIME_OF_FLIGHT, QuantityKind.RANGE)
+    ]
+    landing = next((level for level in levels if level is not None), height)
+    return Launch(body, height, landing, state[x.velocity], state[y.velocity])
+
+
+def draw_projectile(figure: Figure, model: Model, launch: Launch, values: Values) -> None:
+    canvas = figure.canvas
+    g = values.number(model.gravity)
+    vx, vy = values.number(launch.vx), values.number(launch.vy)
+    drop = values.number(launch.height) - values.number(launch.landing)  # launch above the ground
+    # The time to land: y(t) = drop + vy t - g t^2 / 2 = 0, the later root.
+    flight = (vy + math.sqrt(max(vy * vy + 2 * g * drop, 0.0))) / g
+    top = drop + max(vy, 0.0) ** 2 / (2 * g)
+    scale = SPAN / max(abs(vx) * flight, top, 1e-9)
+    steps = 40
+    path = [
+        (
+            vx * flight * i / steps * scale,
+            (drop + vy * flight * i / steps - g * (flight * i / steps) ** 2 / 2) * scale,
+        )
+        for i in range(steps + 1)
+    ]
+    start = (0.0, drop * scale)
+    land_x = path[-1][0]
+    left, right = min(0.0, land_x) - 1.2, max(0.0, land_x) + 1.2
+    canvas.ground((left, 0.0), (right, 0.0))
+    height_symbols = sorted(launch.height.free_symbols & set(model.parameters), key=lambda s: s.name)
+    if drop * scale > 0.05:  # a cliff (or tower) under the launch point, its height labelled
+        canvas.polygon([(left, 0.0), (left, start[1]), (0.4, start[1]), (0.4, 0.0)], fill="#eeeeee")
+        canvas.line((left + 0.1, start[1]), (0.4, start[1]), width=0.07)
+        if height_symbols:
+            canvas.text(((left + 0.4) / 2, start[1] / 2), symbol_label(height_symbols[0].name))
+        canvas.line(start, (start[0] + 2.0, start[1]), dashed=True, width=0.03)  # the angle's horizontal
+    canvas.polyline(path, width=0.04, dashed=True)
+    canvas.line((land_x, -0.15), (land_x, 0.15), width=0.05)  # where it lands
+    angle = math.atan2(vy, vx)
+    tip = (start[0] + ARROW * math.cos(angle), start[1] + ARROW * math.sin(angle))
+    canvas.arrow(start, tip, width=0.06)
+    speed = sorted(
+        (
+            s
+            for s in (launch.vx.free_symbols | launch.vy.free_symbols) - values.angles
+            if s in set(model.parameters)
+        ),
+        key=lambda s: s.name,
+    )
+    if speed:
+        side = (-math.sin(angle), math.cos(angle))
+        canvas.text((tip[0] + 0.45 * side[0] + 0.2, tip[1] + 0.45 * side[1]), symbol_label(speed[0].name))
+    symbol = _angle_symbol(launch.vx + launch.vy, values)
+    _angle_mark(figure, start, 0.0, angle, symbol)
+    canvas.circle(start, 0.25, fill=FILLS[0])
+    label = body_label(launch.body, model)
+    canvas.text((start[0] - 0.5, start[1] + 0.45), label, anchor="end")
+    where = "from a height " + symbol_label(height_symbols[0].name) if drop > 0 and height_symbols else ""
+    where = where or ("from above the ground" if drop > 0 else "from the ground")
+    figure.say(
+        f"A ball {label} launched {where}"
+        + (f" at speed {symbol_label(speed[0].name)}" if speed else "")
+        + (f" at an angle {symbol_label(symbol.name)} above the horizontal" if symbol is not None else "")
+        + "; its path (dashed) lands on the ground."
+    )
