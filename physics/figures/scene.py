@@ -779,12 +779,16 @@ def compose(model: Model, given: Mapping[str, float]) -> Figure:
 
 def _compose(model: Model, given: Mapping[str, float]) -> Figure:
     # Elements in their own modules use this module's helpers, so they are imported here.
+    from physics.figures.ladder import draw_ladder, leaning_of
     from physics.figures.projectile import draw_projectile, launch_of
 
     figure = Figure()
     values = Values(model, given)
     if (launch := launch_of(model)) is not None:
         draw_projectile(figure, model, launch, values)
+        return figure
+    if (leaning := leaning_of(model)) is not None:
+        draw_ladder(figure, model, leaning, values)
         return figure
     if model.impact is not None:
         draw_impact(figure, model, values)

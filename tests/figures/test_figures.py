@@ -36,6 +36,7 @@ EXPECTED = {
     "cart-collision": ({"m₁", "m₂", "u₁", "u₂"}, "collision"),
     "glancing-pucks": ({"m", "u", "φ"}, "elastic collision"),
     "projectile": ({"m", "v₀", "α"}, "launched from the ground"),
+    "ladder-slipping": ({"m", "L", "θ"}, "leans against a vertical wall"),
 }
 
 
