@@ -781,6 +781,7 @@ def _compose(model: Model, given: Mapping[str, float]) -> Figure:
     # Elements in their own modules use this module's helpers, so they are imported here.
     from physics.figures.ladder import draw_ladder, leaning_of
     from physics.figures.projectile import draw_projectile, launch_of
+    from physics.figures.track import draw_track, track_of
 
     figure = Figure()
     values = Values(model, given)
@@ -887,6 +888,9 @@ def _compose(model: Model, given: Mapping[str, float]) -> Figure:
             label = next((c.name for c in model.coordinates if c.name not in ("X",)), "d")
             draw_pair(figure, model, bodies[0], bodies[1], label)
             return figure
+    if (track := track_of(model)) is not None:
+        draw_track(figure, model, track, values)
+        return figure
     if len(model.bodies) == 1 and len(model.coordinates) == 1:
         draw_path(figure, model, model.bodies[0], values)
         return figure

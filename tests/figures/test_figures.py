@@ -37,6 +37,7 @@ EXPECTED = {
     "glancing-pucks": ({"m", "u", "φ"}, "elastic collision"),
     "projectile": ({"m", "v₀", "α"}, "launched from the ground"),
     "ladder-slipping": ({"m", "L", "θ"}, "leans against a vertical wall"),
+    "quarter-circle-slide": ({"m", "R"}, "quarter-circle track of radius R, with m at its top"),
 }
 
 
