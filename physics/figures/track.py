@@ -10,8 +10,8 @@ from dataclasses import dataclass
 import sympy
 
 from physics.engine.model import Body, Constraint, ConstraintKind, Model
-from physics.figures.scene import Figure, Point, Values, _is_linear, body_label, symbol_label
-from physics.figures.svg import FILLS
+from physics.figures.scene import Figure, Values, _is_linear, body_label, symbol_label
+from physics.figures.svg import FILLS, Point
 
 SPAN = 5.0  # the track's larger extent, in figure units
 SIZE = 0.8  # the block's side, about
