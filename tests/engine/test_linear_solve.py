@@ -1,0 +1,68 @@
+"""The engine's linear solve (exact elimination over the field of fractions) and its remembered simplify."""
+
+from __future__ import annotations
+
+import pytest
+import sympy
+from sympy import cos, sin
+
+from physics.engine import tidy
+from physics.engine.mechanics import solve_linear
+from physics.errors import DerivationError
+
+m, g, L, th = sympy.symbols("m g L theta", positive=True)
+a, b, lam = sympy.symbols("a b lam", real=True)
+
+
+def _ladder() -> tuple[list[sympy.Expr], list[sympy.Symbol]]:
+    """A ladder's statics in the shape Newton's method builds: one unknown per row, sines and cosines."""
+    wall, floor, foot = sympy.symbols("wall floor foot", real=True)
+    equations = [
+        foot - wall,
+        floor - m * g,
+        L * cos(th) / 2 * floor - L * sin(th) / 2 * (wall + foot),
+    ]
+    return equations, [wall, floor, foot]
+
+
+@pytest.mark.parametrize(
+    ("equations", "unknowns"),
+    [
+        _ladder(),
+        ([m * a + lam * sin(th) - m * g, a * sin(th) - b, b - a * sin(th) ** 2 - lam], [a, b, lam]),
+        ([sympy.Float(0.5) * a + b - g, a - b * m], [a, b]),  # floats: LUsolve, not exact fractions
+    ],
+    ids=["trigonometric", "coupled", "floats"],
+)
+def test_solution_satisfies_the_equations_and_matches_lusolve(
+    equations: list[sympy.Expr], unknowns: list[sympy.Symbol]
+) -> None:
+    solution = solve_linear(equations, unknowns, "test")
+    for equation in equations:
+        assert sympy.simplify(equation.subs(solution)) == 0
+    matrix, rhs = sympy.linear_eq_to_matrix(equations, unknowns)
+    for unknown, value in zip(unknowns, matrix.LUsolve(rhs), strict=True):
+        assert sympy.simplify(solution[unknown] - value) == 0
+
+
+def test_ladder_forces_come_out_as_one_simple_fraction() -> None:
+    equations, unknowns = _ladder()
+    solution = solve_linear(equations, unknowns, "ladder", tidy=lambda e: e)  # exact elimination alone
+    assert sympy.cancel(solution[unknowns[0]] - g * m * cos(th) / (2 * sin(th))) == 0
+    assert sympy.count_ops(solution[unknowns[0]]) <= 8
+
+
+def test_singular_system_is_a_derivation_error() -> None:
+    with pytest.raises(DerivationError, match="do not determine"):
+        solve_linear([a + b - g, 2 * a + 2 * b - 2 * g], [a, b], "singular")
+
+
+def test_simplify_is_remembered_until_forgotten() -> None:
+    tidy.forget()
+    expr = sin(th) ** 2 + cos(th) ** 2 + m
+    first = tidy.simplify(expr)
+    assert first == m + 1
+    assert tidy.simplify(expr) is first
+    tidy.forget()
+    assert tidy._remembered == {}
+    assert tidy.simplify(sympy.Matrix([[expr]])) == sympy.Matrix([[m + 1]])  # a mutable matrix passes through
