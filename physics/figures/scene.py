@@ -17,7 +17,7 @@ from dataclasses import dataclass, field
 import sympy
 
 from physics.engine.impact import velocities_before
-from physics.engine.model import Body, Constraint, ConstraintKind, Model, PairPotential
+from physics.engine.model import Body, Constraint, ConstraintKind, ForceKind, Model, PairPotential
 from physics.figures.svg import FILLS, Canvas, Point
 
 GREEK = [
@@ -637,7 +637,13 @@ def draw_two_blocks_spring(
 
 
 def draw_spring(
-    figure: Figure, model: Model, body: Body, spring_symbol: sympy.Symbol | None, *, vertical: bool = False
+    figure: Figure,
+    model: Model,
+    body: Body,
+    spring_symbol: sympy.Symbol | None,
+    *,
+    vertical: bool = False,
+    damping: sympy.Expr | None = None,
 ) -> None:
     canvas = figure.canvas
     if vertical:
@@ -652,12 +658,24 @@ def draw_spring(
             + " standing on the floor."
         )
         return
-    canvas.ground((0.0, 0.0), (0.0, 2.0), below=False)
-    canvas.ground((0.0, 0.0), (7.0, 0.0))
-    canvas.spring((0.0, BLOCK / 2), (4.0, BLOCK / 2))
-    centre = _block(figure, (4.0 + BLOCK / 2, 0.0), (1.0, 0.0), body_label(body, model), FILLS[0])
-    if spring_symbol is not None:
-        canvas.text((2.0, BLOCK / 2 + 0.55), symbol_label(spring_symbol.name))
+    if damping is not None:  # a dashpot above the spring, both from the wall to a taller block
+        size = 2 * BLOCK
+        canvas.ground((0.0, 0.0), (0.0, size + 0.6), below=False)
+        canvas.ground((0.0, 0.0), (7.0, 0.0))
+        canvas.spring((0.0, 0.45), (4.0, 0.45), amplitude=0.18)
+        canvas.dashpot((0.0, 1.55), (4.0, 1.55))
+        centre = _block(figure, (4.0 + size / 2, 0.0), (1.0, 0.0), body_label(body, model), FILLS[0], size)
+        if spring_symbol is not None:
+            canvas.text((2.0, 1.0), symbol_label(spring_symbol.name))
+        if isinstance(damping, sympy.Symbol):
+            canvas.text((2.1, 2.15), symbol_label(damping.name))
+    else:
+        canvas.ground((0.0, 0.0), (0.0, 2.0), below=False)
+        canvas.ground((0.0, 0.0), (7.0, 0.0))
+        canvas.spring((0.0, BLOCK / 2), (4.0, BLOCK / 2))
+        centre = _block(figure, (4.0 + BLOCK / 2, 0.0), (1.0, 0.0), body_label(body, model), FILLS[0])
+        if spring_symbol is not None:
+            canvas.text((2.0, BLOCK / 2 + 0.55), symbol_label(spring_symbol.name))
     canvas.arrow((centre[0], -0.6), (centre[0] + 1.6, -0.6), width=0.04)
     coordinates = [c.name for c in model.coordinates]
     if coordinates:
@@ -677,6 +695,12 @@ def draw_spring(
     figure.say(
         f"A block {body_label(body, model)} on a horizontal frictionless floor, tied to a wall by a spring"
         + (f" {symbol_label(spring_symbol.name)}" if spring_symbol is not None else "")
+        + (
+            " and, beside it, a dashpot"
+            + (f" {symbol_label(damping.name)}" if isinstance(damping, sympy.Symbol) else "")
+            if damping is not None
+            else ""
+        )
         + "."
     )
 
@@ -878,7 +902,17 @@ def _compose(model: Model, given: Mapping[str, float]) -> Figure:
         if potential.anchor and len(bodies) == 1:
             spring = _stiffness(potential, model)
             vertical = [axis for axis, _ in bodies[0].position] == ["y"]
-            draw_spring(figure, model, bodies[0], spring[0] if spring else None, vertical=vertical)
+            damping = next(
+                (
+                    f.coefficient
+                    for f in model.forces
+                    if f.body == bodies[0].name and f.kind is ForceKind.LINEAR_DRAG
+                ),
+                None,
+            )
+            draw_spring(
+                figure, model, bodies[0], spring[0] if spring else None, vertical=vertical, damping=damping
+            )
             return figure
         if len(bodies) == 2 and quadratic:
             spring = _stiffness(potential, model)

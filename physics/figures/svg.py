@@ -105,6 +105,21 @@ class Canvas:
         points += [(b[0] - ux * lead, b[1] - uy * lead), b]
         self.polyline(points, width=0.045)
 
+    def dashpot(self, a: Point, b: Point, *, bore: float = 0.5) -> None:
+        """A damper from `a` to `b`: a rod into an open cylinder from `a`, a piston on a rod from `b`."""
+        dx, dy = b[0] - a[0], b[1] - a[1]
+        length = math.hypot(dx, dy) or 1.0
+        ux, uy = dx / length, dy / length
+        nx, ny = -uy * bore / 2, ux * bore / 2
+
+        def at(t: float, side: float = 0.0) -> Point:
+            return (a[0] + ux * length * t + nx * side, a[1] + uy * length * t + ny * side)
+
+        self.line(a, at(0.3), width=0.045)
+        self.polyline([at(0.75, 1), at(0.3, 1), at(0.3, -1), at(0.75, -1)], width=0.045)  # open towards b
+        self.line(at(0.58, 0.8), at(0.58, -0.8), width=0.07)  # the piston
+        self.line(at(0.58), b, width=0.045)
+
     def arrow(self, a: Point, b: Point, *, width: float = 0.06, color: str = INK) -> None:
         self.line(a, b, width=width, color=color)
         dx, dy = b[0] - a[0], b[1] - a[1]

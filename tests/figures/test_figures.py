@@ -38,6 +38,7 @@ EXPECTED = {
     "projectile": ({"m", "v₀", "α"}, "launched from the ground"),
     "ladder-slipping": ({"m", "L", "θ"}, "leans against a vertical wall"),
     "quarter-circle-slide": ({"m", "R"}, "quarter-circle track of radius R, with m at its top"),
+    "damped-oscillator": ({"m", "k", "b"}, "a spring k and, beside it, a dashpot b"),
 }
 
 
