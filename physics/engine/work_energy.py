@@ -26,7 +26,7 @@ from typing import TYPE_CHECKING
 
 import sympy
 
-from physics.engine import tidy
+from physics.engine import impact, tidy
 from physics.engine.mechanics import Mechanics, solve_linear
 from physics.engine.model import Coordinate, Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
@@ -148,7 +148,8 @@ def answer(method: Method, quantity: Quantity) -> sympy.Expr:
         rate = sympy.Add(*(sympy.expand(v.subs(trip.held)) ** 2 for v in moved)).subs(c.symbol, trip.end)
         # in q'^2 (odd powers only where momenta start non-zero): v^2 = square, v = the signed velocity
         squared = sympy.expand(rate).subs(c.velocity**2, square).subs(c.velocity, velocity)
-        speed = tidy.simplify(sympy.sqrt(tidy.simplify(squared)))
+        # |cos(theta)| of a wedge's speed written as cos(theta) where the domain keeps it positive
+        speed = impact._signs_by_domain(model, sympy.sqrt(sympy.factor(tidy.simplify(squared))))
         method.step(
             f"Speed of {quantity.target} there",
             rf"v_{{\mathrm{{{quantity.target}}}}} = \sqrt{{\dot x^2 + \dot y^2}} = " + method.tex(speed),
