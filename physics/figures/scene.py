@@ -3,7 +3,10 @@
 Bodies on a fixed surface constraint sit on an incline (or floor) whose slope comes from the
 constraint's gap; a surface between two bodies makes a wedge; a string joining two bodies runs over a
 pulley; a string whose gap turns a body makes a yo-yo; a string of fixed length makes a pendulum; a
-potential with an anchor is a spring from a wall, between two bodies an interaction across a distance.
+potential with an anchor is a spring from a wall (with a dashpot beside it when the body feels linear
+drag), between two bodies an interaction across a distance. In their own modules: a body launched under
+gravity alone (projectile.py), a rod at rest against a floor and a wall (ladder.py), a body on a curved
+track from its start to where a quantity asks about it (track.py).
 Angles are labelled with the problem's symbol that sets them, bodies with their mass symbols. Values
 are the student's (angles set the drawing's slopes) or typical ones; sizes are the figure's own.
 """
