@@ -4,7 +4,10 @@
 
 Starts a trivial FastAPI app and a naive parse_expr + simplify service (bench/trivial_app.py, uvicorn)
 and physcheck's own server (bench/load.py's OwnServer), then drives each with the same closed-loop
-client (bench/load.py's `drive`), one phase after another:
+client, one phase after another. The client is wrk (Debian's `wrk`, as the issue measured: a C client
+that leaves the cores to the servers) when it is installed, with a Lua script cycling through the
+phase's request bodies; else, or with `--client python`, bench/load.py's `drive` (httpx, which itself
+takes much of a core and so lowers every figure, the floor's too):
 
   floor      POST /echo on the trivial app: FastAPI's own cost per request here
   distinct   POST /v1/check, the typical bank answers of bench/load.py, every request's text new
@@ -14,7 +17,8 @@ client (bench/load.py's `drive`), one phase after another:
 
 and prints requests/s, p50 and p99, then each target: distinct >= 20 % of the floor's requests/s
 with p99 <= 50 ms, identical >= 60 % of the floor, naive >= 100x slower than distinct. The machine's
-load moves every figure; the ratios are measured in one run.
+load moves every figure; the ratios are measured in one run. The python client also checks every
+verdict; wrk counts only statuses (the verdicts of the same bodies are checked by the python client).
 """
 
 from __future__ import annotations
@@ -23,11 +27,14 @@ import argparse
 import asyncio
 import contextlib
 import json
+import re
+import shutil
 import subprocess
 import sys
 import tempfile
 import time
 from collections.abc import Iterator, Sequence
+from dataclasses import dataclass
 from pathlib import Path
 
 import httpx
@@ -50,10 +57,11 @@ HERE = Path(__file__).resolve().parent
 DISTINCT_VARIANTS = 400
 
 
-def distinct_checks() -> list[Call]:
-    """Every typical check in DISTINCT_VARIANTS spellings that read the same: no two bodies equal."""
+def distinct_checks(first: int = 2) -> list[Call]:
+    """Every typical check in DISTINCT_VARIANTS spellings that read the same: no two bodies equal (a
+    warm-up draws its spellings from another `first`, so the measured phase reuses no verdict)."""
     calls = []
-    for n in range(2, DISTINCT_VARIANTS + 2):
+    for n in range(first, first + DISTINCT_VARIANTS):
         for answer, expected, symbols, verdict in SYMBOLIC:
             body = {
                 "kind": "symbolic",
@@ -133,9 +141,95 @@ def trivial_app(directory: Path) -> Iterator[str]:
         process.wait(timeout=15)
 
 
+@dataclass(frozen=True)
+class Result:
+    name: str
+    requests: int
+    rate: float  # requests/s
+    p50: float  # ms
+    p99: float  # ms
+    statuses: str
+
+
+def show(result: Result) -> Result:
+    print(
+        f"{result.name:<12}{result.requests:>9}{result.rate:>10.1f}{result.p50:>10.1f}"
+        f"{result.p99:>10.1f}   {result.statuses}"
+    )
+    sys.stdout.flush()
+    return result
+
+
+def lua_string(text: str) -> str:
+    level = "=" * 4
+    assert f"]{level}]" not in text
+    return f"[{level}[{text}]{level}]"
+
+
+def wrk_script(calls: Sequence[Call], key: str | None) -> str:
+    """A wrk script sending `calls` in turn; each wrk thread starts at its own share of them."""
+    bodies = ",\n".join(lua_string((call.body or b"").decode()) for call in calls)
+    auth = f'wrk.headers["Authorization"] = {lua_string("Bearer " + key)}\n' if key else ""
+    return f"""
+local paths = {{{", ".join(lua_string(call.path) for call in calls)}}}
+local bodies = {{
+{bodies}
+}}
+local threads = 0
+function setup(thread)
+  thread:set("first", threads)
+  threads = threads + 1
+end
+local i = 0
+function init(args)
+  i = (first or 0) * 7919 % #bodies
+end
+wrk.method = "POST"
+wrk.headers["Content-Type"] = "application/json"
+{auth}
+function request()
+  i = i % #bodies + 1
+  return wrk.format(nil, paths[i], nil, bodies[i])
+end
+"""
+
+
+UNITS = {"us": 1e-3, "ms": 1.0, "s": 1000.0, "m": 60000.0}
+
+
+def wrk_ms(text: str) -> float:
+    match = re.fullmatch(r"([\d.]+)(us|ms|s|m)", text)
+    assert match, text
+    return float(match[1]) * UNITS[match[2]]
+
+
+def wrk_measure(
+    url: str, key: str | None, name: str, calls: Sequence[Call], args: argparse.Namespace, tmp: Path
+) -> Result:
+    script = tmp / f"{name}.lua"
+    script.write_text(wrk_script(calls, key))
+    command = ["wrk", f"-t{args.threads}", f"-c{args.concurrency}", "--latency", "-s", str(script), url]
+    if args.warmup > 0:
+        subprocess.run([*command[:1], f"-d{args.warmup:g}s", *command[1:]], check=True, capture_output=True)
+    out = subprocess.run(
+        [*command[:1], f"-d{args.duration:g}s", *command[1:]], check=True, capture_output=True, text=True
+    ).stdout
+    percentiles = {p: wrk_ms(v) for p, v in re.findall(r"^\s+(50|99)%\s+(\S+)\s*$", out, re.M)}
+    if len(percentiles) < 2:
+        raise SystemExit(f"wrk printed no latency distribution for {name}:\n{out}")
+    requests = int(re.search(r"(\d+) requests in", out)[1])  # type: ignore[index]
+    bad = re.search(r"Non-2xx or 3xx responses: (\d+)", out)
+    errors = re.search(r"Socket errors: (.*)$", out, re.M)
+    statuses = f"2xx: {requests - (int(bad[1]) if bad else 0)}" + (f", non-2xx: {bad[1]}" if bad else "")
+    if errors:
+        statuses += f", socket errors: {errors[1]}"
+    rate_ = float(re.search(r"Requests/sec:\s+([\d.]+)", out)[1])  # type: ignore[index]
+    return show(Result(name, requests, rate_, percentiles["50"], percentiles["99"], statuses))
+
+
 async def measure(
     url: str, key: str | None, name: str, calls: Sequence[Call], args: argparse.Namespace
-) -> Phase:
+) -> Result:
     limits = httpx.Limits(max_connections=args.concurrency, max_keepalive_connections=args.concurrency)
     headers = {"authorization": f"Bearer {key}"} if key else {}
     async with httpx.AsyncClient(
@@ -144,20 +238,16 @@ async def measure(
         if args.warmup > 0:
             await drive(client, name, calls, args.concurrency, args.warmup)
         phase = await drive(client, name, calls, args.concurrency, args.duration)
-    n = len(phase.honest.latencies)
-    statuses = ", ".join(f"{s}: {c}" for s, c in sorted(phase.honest.statuses.items()))
-    print(
-        f"{name:<12}{n:>9}{n / phase.elapsed:>10.1f}{percentile(phase.honest.latencies, 50):>10.1f}"
-        f"{percentile(phase.honest.latencies, 99):>10.1f}   {statuses}"
-    )
     for what, count in phase.honest.unexpected.most_common():
         print(f"    NOT THE EXPECTED VERDICT ({count}x): {what}")
-    sys.stdout.flush()
-    return phase
+    return show(summary(name, phase))
 
 
-def rate(phase: Phase) -> float:
-    return len(phase.honest.latencies) / phase.elapsed
+def summary(name: str, phase: Phase) -> Result:
+    n = len(phase.honest.latencies)
+    statuses = ", ".join(f"{s}: {c}" for s, c in sorted(phase.honest.statuses.items()))
+    latencies = phase.honest.latencies
+    return Result(name, n, n / phase.elapsed, percentile(latencies, 50), percentile(latencies, 99), statuses)
 
 
 def main(argv: Sequence[str] | None = None) -> int:
@@ -168,6 +258,12 @@ def main(argv: Sequence[str] | None = None) -> int:
     parser.add_argument("--concurrency", type=int, default=16)
     parser.add_argument("--warmup", type=float, default=2.0)
     parser.add_argument("--naive-duration", type=float, default=10.0)
+    parser.add_argument(
+        "--client", choices=["wrk", "python"], default="wrk" if shutil.which("wrk") else "python"
+    )
+    parser.add_argument(
+        "--threads", type=int, default=1, help="wrk's threads (default 1: the servers need the cores)"
+    )
     args = parser.parse_args(argv)
     with tempfile.TemporaryDirectory(prefix="physcheck-targets-") as tmp, trivial_app(Path(tmp)) as trivial:
         server = OwnServer(Path(tmp), None)
@@ -177,21 +273,33 @@ def main(argv: Sequence[str] | None = None) -> int:
             server.start()
             server.wait_ready()
             print(
-                f"{args.concurrency} connections, {args.duration:g} s per phase after {args.warmup:g} s warm-up"
+                f"client {args.client}, {args.concurrency} connections, {args.duration:g} s per phase "
+                f"after {args.warmup:g} s warm-up"
             )
             print(f"{'phase':<12}{'requests':>9}{'req/s':>10}{'p50 ms':>10}{'p99 ms':>10}   statuses")
-            floor = asyncio.run(measure(trivial, None, "floor", [Call("POST", "/echo", b"{}")], args))
-            distinct = asyncio.run(measure(server.url, key, "distinct", distinct_checks(), args))
-            identical = asyncio.run(measure(server.url, key, "identical", identical_check(), args))
             naive_args = argparse.Namespace(**{**vars(args), "duration": args.naive_duration, "warmup": 0})
-            naive = asyncio.run(measure(trivial, None, "naive", naive_checks(), naive_args))
+            if args.client == "wrk":
+                here = Path(tmp)
+                if args.warmup > 0:  # verdicts cached by the warm-up must not serve the measured phase
+                    warm = argparse.Namespace(**{**vars(args), "duration": args.warmup, "warmup": 0})
+                    wrk_measure(server.url, key, "(warm-up)", distinct_checks(10_000), warm, here)
+                floor = wrk_measure(trivial, None, "floor", [Call("POST", "/echo", b"{}")], args, here)
+                distinct = wrk_measure(server.url, key, "distinct", distinct_checks(), args, here)
+                identical = wrk_measure(server.url, key, "identical", identical_check(), args, here)
+                naive = wrk_measure(trivial, None, "naive", naive_checks(), naive_args, here)
+            else:
+                floor = asyncio.run(measure(trivial, None, "floor", [Call("POST", "/echo", b"{}")], args))
+                distinct = asyncio.run(measure(server.url, key, "distinct", distinct_checks(), args))
+                identical = asyncio.run(measure(server.url, key, "identical", identical_check(), args))
+                naive = asyncio.run(measure(trivial, None, "naive", naive_checks(), naive_args))
         finally:
             server.stop()
-    share = rate(distinct) / rate(floor)
-    p99 = percentile(distinct.honest.latencies, 99)
-    print(f"distinct:  {share:.1%} of the floor (target >= 20 %), p99 {p99:.0f} ms (target <= 50 ms)")
-    print(f"identical: {rate(identical) / rate(floor):.1%} of the floor (target >= 60 %)")
-    print(f"naive:     {rate(distinct) / max(rate(naive), 1e-9):.0f}x slower than distinct (target >= 100x)")
+    share = distinct.rate / floor.rate
+    print(
+        f"distinct:  {share:.1%} of the floor (target >= 20 %), p99 {distinct.p99:.0f} ms (target <= 50 ms)"
+    )
+    print(f"identical: {identical.rate / floor.rate:.1%} of the floor (target >= 60 %)")
+    print(f"naive:     {distinct.rate / max(naive.rate, 1e-9):.0f}x slower than distinct (target >= 100x)")
     return 0
 
 
