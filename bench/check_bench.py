@@ -18,7 +18,8 @@ from collections.abc import Callable
 import sympy
 from sympy.parsing.sympy_parser import parse_expr, standard_transformations
 
-from physics.checking import SymbolDecl, SymbolicJob, compiled_adhoc, run_job
+from physics.checking import SymbolDecl, run_job
+from problems.kinds.symbolic import SymbolicJob, adhoc_part
 
 ANGLE = SymbolDecl("theta", "1", range=("0", "pi/2"))
 KG = "kg"
@@ -85,7 +86,7 @@ def physcheck_check(answer: str, expected: str, symbols: tuple[SymbolDecl, ...])
 
 def physcheck_new_reference(answer: str, expected: str, symbols: tuple[SymbolDecl, ...]) -> bool:
     """The same, with the reference read and prepared again for every check (a reference never seen)."""
-    compiled_adhoc.cache_clear()
+    adhoc_part.cache_clear()
     return physcheck_check(answer, expected, symbols)
 
 

@@ -2,11 +2,12 @@
 
 Every kind of part compiles to a `Question` (`grade` and `read` an answer); a `CheckJob` is an answer
 with the means to get its question in the process that grades, picklable so it can cross into a
-killable worker. An ad-hoc check (`SymbolicJob`) carries the request's texts, which the worker reads
-with the whitelist parser, because instructor text is as untrusted as a student's; it compiles to the
-same `CompiledQuestion` as a stored problem's part. A stored part (`PartJob`) carries what the server
-compiled, sympy trees pickled once, never text printed by sympy and parsed again (the parser does not
-read everything sympy prints: `Abs`, `sign`, `Piecewise`, `Min`). Questions are cached per worker.
+killable worker. An ad-hoc symbolic check (`problems.kinds.symbolic.SymbolicJob`) carries the request's
+texts, which the worker reads with the whitelist parser, because instructor text is as untrusted as a
+student's: the kind's own compile makes of them a `CompiledQuestion`, as of a stored problem's part. A
+stored part (`PartJob`) carries what the server compiled, sympy trees pickled once, never text printed
+by sympy and parsed again (the parser does not read everything sympy prints: `Abs`, `sign`, `Piecewise`,
+`Min`). Questions are cached per worker.
 """
 
 from __future__ import annotations
@@ -27,13 +28,10 @@ from physics.errors import AnswerError, SpecError
 from physics.mathinput import InputLimits, parse_expression
 from physics.numeric import NumericSpec
 from physics.symbolic import (
-    KnownMistake,
-    LimitCase,
     PreparedReference,
     SymbolicContext,
     SymbolSpec,
     judge_symbolic,
-    make_symbol,
     prepare_reference,
 )
 from physics.symbolic.dimensional import DimensionMismatch, UnknownDimension, expression_dimension
@@ -53,12 +51,6 @@ class SymbolDecl:
     negative: bool = False
     integer: bool = False
     range: tuple[str, str] | None = None
-
-
-@dataclass(frozen=True)
-class LimitDecl:
-    substitutions: tuple[tuple[str, str], ...]  # (symbol name, value text such as "oo" or "0")
-    description: str
 
 
 class Question(Protocol):
@@ -154,26 +146,6 @@ class CompiledQuestion:
 
 
 @dataclass(frozen=True)
-class SymbolicJob:
-    """An ad-hoc symbolic check (`POST /v1/check`): the reference arrives as text, read in the worker
-    with the whitelist parser, because instructor text is as untrusted as a student's."""
-
-    answer: str
-    expected: str
-    symbols: tuple[SymbolDecl, ...]
-    constraints: tuple[str, ...] = ()
-    mistakes: tuple[tuple[str, str], ...] = ()  # (expression text, feedback)
-    limits: tuple[LimitDecl, ...] = ()
-    allowed: tuple[str, ...] | None = None  # names the answer may use; None: every declared symbol
-    limits_config: InputLimits = field(default_factory=InputLimits)
-
-    def question(self) -> CompiledQuestion:
-        return compiled_adhoc(
-            self.expected, self.symbols, self.constraints, self.mistakes, self.limits, self.allowed
-        )
-
-
-@dataclass(frozen=True)
 class NumericJob:
     """A numeric answer against the value expected of this student (bank or ad-hoc alike)."""
 
@@ -253,45 +225,6 @@ def run_job(job: CheckJob) -> Verdict:
     return job.question().grade(job.answer, job.limits_config)
 
 
-@lru_cache(maxsize=256)
-def compiled_adhoc(
-    expected: str,
-    symbols: tuple[SymbolDecl, ...],
-    constraints: tuple[str, ...] = (),
-    mistakes: tuple[tuple[str, str], ...] = (),
-    limits: tuple[LimitDecl, ...] = (),
-    allowed: tuple[str, ...] | None = None,
-) -> CompiledQuestion:
-    """Read an ad-hoc symbolic reference (cached: a course re-uses its references); SpecError with path."""
-    specs = {decl.name: symbol_spec(decl) for decl in symbols}
-    table = {name: make_symbol(spec) for name, spec in specs.items()}
-    context = SymbolicContext(
-        symbols={table[name]: spec for name, spec in specs.items()},
-        constraints=tuple(
-            read_relation(text, table, ("constraints", i)) for i, text in enumerate(constraints)
-        ),
-        mistakes=tuple(
-            KnownMistake(read_expression(text, table, ("mistakes", i)), feedback)
-            for i, (text, feedback) in enumerate(mistakes)
-        ),
-        limits=tuple(_limit_case(decl, table, i) for i, decl in enumerate(limits)),
-    )
-    names = table if allowed is None else {name: table[name] for name in allowed if name in table}
-    return CompiledQuestion(names, read_expression(expected, table, ("expected",)), context)
-
-
-def symbolic_question(
-    expected: str,
-    symbols: tuple[SymbolDecl, ...],
-    constraints: tuple[str, ...] = (),
-    mistakes: tuple[tuple[str, str], ...] = (),
-    limits: tuple[LimitDecl, ...] = (),
-    allowed: tuple[str, ...] | None = None,
-) -> SymbolicQuestion:
-    """The prepared reference of an ad-hoc symbolic check."""
-    return compiled_adhoc(expected, symbols, constraints, mistakes, limits, allowed).question
-
-
 @lru_cache(maxsize=1024)
 def symbol_spec(decl: SymbolDecl) -> SymbolSpec:
     """The core's spec for a declared symbol, its texts read; SpecError (with path) on a bad one.
@@ -316,15 +249,6 @@ def symbol_spec(decl: SymbolDecl) -> SymbolSpec:
         low=low,
         high=high,
     )
-
-
-def _limit_case(decl: LimitDecl, table: Mapping[str, sympy.Symbol], index: int) -> LimitCase:
-    substitutions: dict[sympy.Symbol, sympy.Expr] = {}
-    for name, value in decl.substitutions:
-        if name not in table:
-            raise SpecError(f"limit names an undeclared symbol {name!r}", ("limits", index, name))
-        substitutions[table[name]] = read_expression(value, {}, ("limits", index, name))
-    return LimitCase(substitutions=substitutions, description=decl.description)
 
 
 _INFINITY_WORDS = {"oo": sympy.oo, "inf": sympy.oo, "infinity": sympy.oo, "∞": sympy.oo, "-oo": -sympy.oo}

@@ -143,7 +143,7 @@ def build_problem(doc: ProblemDocument, version: int = 0, *, use_model: bool = T
     order = sorted(range(len(doc.parts)), key=lambda i: not kind_of(doc.parts[i]).expression_answer)
     for index in order:
         part = doc.parts[index]
-        context = CompileContext(doc, table, specs, constraints, derived, dict(expressions))
+        context = CompileContext(table, specs, constraints, doc, derived, dict(expressions))
         try:
             compiled[part.id] = done = kind_of(part).compile(part, ("parts", index), context)
         except SpecError as error:

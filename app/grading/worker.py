@@ -15,11 +15,12 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from decimal import Decimal
 
-from physics.checking import CheckJob, NumericJob, QuestionJob, SymbolDecl, SymbolicJob, preview, run_job
+from physics.checking import CheckJob, NumericJob, QuestionJob, SymbolDecl, preview, run_job
 from physics.choice import Choice, ChoiceQuestion
 from physics.errors import SpecError, TooLarge
 from physics.numeric import NumericSpec
 from physics.verdict import InputProblem, Preview, Verdict
+from problems.kinds.symbolic import SymbolicJob
 
 # One round trip through each fresh worker before its pool counts as ready: jobs whose making builds
 # nothing in the server process (a numeric spec would build the unit registry there).

@@ -7,14 +7,14 @@ An answer kind is one module (`problems/kinds/<kind>.py`) that, for one `kind:` 
   student   what a student sees of it (never a reference)
   selftest  the cases the bank self-test grades it by
   check     its `POST /v1/check` body (`<Kind>CheckIn`): a one-part problem given in the request, built
-            from the same declarations, whose `job` is what a part of the kind grades with
+            from the same declarations, whose `job` grades it as a part of the kind is graded
 and is registered by its `kind` in `problems.kinds.KINDS`, which `problems.kinds.kind_of` matches.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator, Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any, Protocol, TypeVar
 
 import sympy
@@ -70,14 +70,16 @@ class MeaningContext:
 
 @dataclass(frozen=True)
 class CompileContext:
-    """What compiling a part may use; `expressions` holds the expression parts compiled before it."""
+    """What compiling a part may use: its problem's symbols and domain, and, for a bank part, its document,
+    its model's derivation and the expression parts compiled before it (`expressions`). A `POST /v1/check`
+    body is a one-part problem with no document (`doc` None): the same compile reads it."""
 
-    doc: ProblemDocument
     table: Mapping[str, sympy.Symbol]
     specs: Mapping[str, SymbolSpec]
     constraints: tuple[sympy.Basic, ...]
-    derived: Derived | None
-    expressions: Mapping[str, tuple[sympy.Expr, bool]]  # part id -> (its reference, derived by the model)
+    doc: ProblemDocument | None = None
+    derived: Derived | None = None
+    expressions: Mapping[str, tuple[sympy.Expr, bool]] = field(default_factory=dict)  # id -> (expr, derived)
 
 
 @dataclass(frozen=True)

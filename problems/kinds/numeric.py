@@ -167,6 +167,8 @@ class NumericKind:
 
     def compile(self, part: NumericPart, path: Path, context: CompileContext) -> CompiledNumericPart:
         derived, doc = context.derived, context.doc
+        if doc is None:
+            raise SpecError(f"{part.of!r} is evaluated at a problem's given values", (*path, "of"))
         if part.of in context.expressions:
             expr, from_model = context.expressions[part.of]
         elif derived is not None and part.of in derived.quantities:

@@ -6,8 +6,8 @@ from __future__ import annotations
 import hashlib
 import pickle
 from collections.abc import Callable, Iterator, Mapping, Sequence
-from dataclasses import dataclass
-from functools import cached_property, partial
+from dataclasses import dataclass, field
+from functools import cached_property, lru_cache, partial
 from typing import TYPE_CHECKING, Annotated, Any, Literal
 
 import sympy
@@ -17,17 +17,21 @@ from physics.answer_text import student_text
 from physics.checking import (
     CompiledQuestion,
     PartJob,
-    SymbolicJob,
+    SymbolDecl,
     SymbolicQuestion,
     check_answer,
     read_expression,
+    read_relation,
+    symbol_spec,
 )
 from physics.errors import SpecError
+from physics.mathinput import InputLimits
 from physics.symbolic import (
     KnownMistake,
     LimitCase,
     SymbolicContext,
     judge_symbolic,
+    make_symbol,
     prepare_reference,
 )
 from physics.verdict import Outcome, Reason, Verdict
@@ -99,6 +103,49 @@ class SymbolicCheckIn(CheckBody):
             constraints=tuple(self.constraints),
             mistakes=tuple((m.answer, m.feedback) for m in self.mistakes),
         )
+
+
+@dataclass(frozen=True)
+class SymbolicJob:
+    """An ad-hoc symbolic check: the request's texts, compiled in the worker (instructor text is as
+    untrusted as a student's) by the kind's own compile, as a one-part problem (`adhoc_part`)."""
+
+    answer: str
+    expected: str
+    symbols: tuple[SymbolDecl, ...]
+    constraints: tuple[str, ...] = ()
+    mistakes: tuple[tuple[str, str], ...] = ()  # (expression text, feedback)
+    limits_config: InputLimits = field(default_factory=InputLimits)
+
+    def question(self) -> CompiledQuestion:
+        return adhoc_part(self.expected, self.symbols, self.constraints, self.mistakes).compiled
+
+
+@lru_cache(maxsize=256)
+def adhoc_part(
+    expected: str,
+    symbols: tuple[SymbolDecl, ...],
+    constraints: tuple[str, ...] = (),
+    mistakes: tuple[tuple[str, str], ...] = (),
+) -> CompiledSymbolicPart:
+    """An ad-hoc check as the one part of a problem without a document, compiled as a bank part is (cached:
+    a course re-uses its references); SpecError at the body's path."""
+    specs = {decl.name: symbol_spec(decl) for decl in symbols}
+    table = {name: make_symbol(spec) for name, spec in specs.items()}
+    relations = tuple(read_relation(text, table, ("constraints", i)) for i, text in enumerate(constraints))
+    # The body was validated as sent; the part is only its other shape (nothing stripped: positions hold).
+    part = SymbolicPart.model_construct(
+        id="check",
+        kind="symbolic",
+        prompt="",
+        answer=expected,
+        mistakes=[MistakeDecl.model_construct(answer=text, feedback=feedback) for text, feedback in mistakes],
+    )
+    try:
+        return SYMBOLIC.compile(part, (), CompileContext(table, specs, relations))
+    except SpecError as error:  # at the body's path: its reference is `expected`, a mistake its index
+        path = ("expected",) if error.path == ("answer",) else error.path[:2]
+        raise SpecError(error.message, path) from None
 
 
 @dataclass(frozen=True)

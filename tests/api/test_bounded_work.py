@@ -10,7 +10,8 @@ from pathlib import Path
 import pytest
 
 from app.grading.pool import GradingPool
-from physics.checking import SymbolDecl, SymbolicJob
+from physics.checking import SymbolDecl
+from problems.kinds.symbolic import SymbolicJob
 from tests.api.slow_task import hanging_grade
 
 SYMBOLS = {

@@ -18,8 +18,9 @@ from app.grading.pool import GradingPool
 from app.keys import create_key
 from app.main import create_app
 from app.settings import Settings
-from physics.checking import SymbolDecl, SymbolicJob
+from physics.checking import SymbolDecl
 from physics.errors import SpecError
+from problems.kinds.symbolic import SymbolicJob
 from tests.api.slow_task import pid_or_grade, spec_failing_preview
 
 SYMBOLS = (SymbolDecl("m", "kg"),)

@@ -13,7 +13,8 @@ from fastapi.testclient import TestClient
 from app.grading.pool import GradingPool
 from app.main import create_app
 from app.settings import Settings
-from physics.checking import SymbolDecl, SymbolicJob
+from physics.checking import SymbolDecl
+from problems.kinds.symbolic import SymbolicJob
 from tests.api.conftest import _headers
 from tests.api.slow_task import counted_grade
 

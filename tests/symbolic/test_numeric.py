@@ -79,7 +79,8 @@ TOWERS = [
 @pytest.mark.parametrize("answer", TOWERS)
 def test_towers_of_functions_are_judged_without_computing_astronomical_numbers(answer):
     # mpmath would compute ln 2 or pi to as many bits as the argument has: minutes for these.
-    from physics.checking import SymbolDecl, SymbolicJob, run_job
+    from physics.checking import SymbolDecl, run_job
+    from problems.kinds.symbolic import SymbolicJob
 
     verdict = run_job(SymbolicJob(answer, "x", (SymbolDecl("x", "1"),)))
     assert (verdict.outcome.value, verdict.reason.value) == ("incorrect", "wrong_value")

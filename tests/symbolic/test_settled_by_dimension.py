@@ -5,8 +5,9 @@ from __future__ import annotations
 
 import pytest
 
-from physics.checking import SymbolDecl, SymbolicJob, preview, run_job
+from physics.checking import SymbolDecl, preview, run_job
 from physics.verdict import Outcome, Reason
+from problems.kinds.symbolic import SymbolicJob
 
 CHARGE = (
     SymbolDecl("m", "kg"),
