@@ -21,7 +21,7 @@ from app.instructor import router as instructor_routes
 from app.lti import router as lti_routes
 from app.lti.context import LtiContext
 from app.lti.outbox import OutboxWorker
-from app.middleware import BodyLimit, RequestContext, configure_logging
+from app.middleware import RequestContext, configure_logging
 from app.openapi import install_docs
 from app.ratelimit import rate_limiters
 from app.routers import authoring as authoring_routes
@@ -130,8 +130,7 @@ def create_app(
     )
     install_docs(app)
     install_error_handlers(app)
-    app.add_middleware(BodyLimit, max_bytes=settings.max_body_bytes)
-    app.add_middleware(RequestContext)
+    app.add_middleware(RequestContext, max_bytes=settings.max_body_bytes)
     app.include_router(health.router)
     app.include_router(check.router)
     app.include_router(problems.router)

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from app.auth import KeyStore
 from app.authoring import AuthoringPool
@@ -10,6 +10,7 @@ from app.catalog import Catalog
 from app.db.database import Database
 from app.grading.pool import GradingPool
 from app.ratelimit import RateLimiter
+from app.schemas.check import VerdictJson
 from app.settings import Settings
 from app.storage import Stores
 
@@ -25,3 +26,4 @@ class Services:
     student_limiter: RateLimiter
     catalog: Catalog
     authoring: AuthoringPool
+    verdict_json: VerdictJson = field(default_factory=VerdictJson)

@@ -7,6 +7,7 @@ decimal reader) and builds the job its parts compile to.
 
 from __future__ import annotations
 
+from collections import OrderedDict
 from typing import Literal
 
 from pydantic import BaseModel, ConfigDict
@@ -52,3 +53,25 @@ class VerdictPublic(BaseModel):
             read_as=verdict.read_as,
             error=verdict.error,
         )
+
+
+class VerdictJson:
+    """A verdict's response body, rendered once per verdict object and kept for the most recent
+    `size`: the verdict cache hands back the same object for an identical check, so a repeated check
+    is answered with bytes already made (validated and serialized once, by VerdictPublic)."""
+
+    def __init__(self, size: int = 4096):
+        self._size = size
+        # id -> (verdict, body): holding the verdict keeps its id from being reused by another object
+        self._rendered: OrderedDict[int, tuple[Verdict, bytes]] = OrderedDict()
+
+    def __call__(self, verdict: Verdict) -> bytes:
+        known = self._rendered.get(id(verdict))
+        if known is not None and known[0] is verdict:
+            self._rendered.move_to_end(id(verdict))
+            return known[1]
+        body = VerdictPublic.of(verdict).model_dump_json().encode()
+        self._rendered[id(verdict)] = (verdict, body)
+        while len(self._rendered) > self._size:
+            self._rendered.popitem(last=False)
+        return body
