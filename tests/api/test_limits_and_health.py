@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import io
+import json
+import logging
 import shutil
 import threading
 import time
@@ -75,6 +78,33 @@ def test_unknown_route_answers_in_the_error_shape(client):
 def test_every_response_carries_a_request_id(client):
     assert client.get("/health").headers["x-request-id"]
     assert client.get("/health", headers={"X-Request-ID": "trace-42"}).headers["x-request-id"] == "trace-42"
+
+
+def test_each_request_is_logged_once_with_its_id_status_and_time(client, settings):
+    from app.middleware import JsonLogFormatter
+
+    stream = io.StringIO()
+    handler = logging.StreamHandler(stream)
+    handler.setFormatter(JsonLogFormatter())
+    logger = logging.getLogger("physcheck.http")
+    logger.addHandler(handler)
+    try:
+        fine = client.get("/health")
+        refused = client.post("/v1/check", content=b"x" * (settings.max_body_bytes + 1))
+    finally:
+        logger.removeHandler(handler)
+    assert refused.status_code == 413  # the cap answers before the key is asked for
+    lines = [json.loads(line) for line in stream.getvalue().splitlines()]
+    assert [(line["message"], line["method"], line["path"], line["status"]) for line in lines] == [
+        ("request", "GET", "/health", fine.status_code),
+        ("request", "POST", "/v1/check", 413),
+    ]
+    assert [line["request_id"] for line in lines] == [
+        fine.headers["x-request-id"],
+        refused.headers["x-request-id"],
+    ]
+    assert fine.headers["x-request-id"] != refused.headers["x-request-id"]
+    assert all(isinstance(line["ms"], float) for line in lines)
 
 
 CONTRACT_PATHS = {
