@@ -457,6 +457,12 @@ class MemoryScoreOutbox:
                 _Target(len(self._targets) + 1, platform, student, problem_id, lineitem_url, sub)
             )
 
+    def targets(self) -> list[tuple[str, str, str, str]]:
+        """(student, problem_id, sub, lineitem_url) of every grade target, oldest first: for tests,
+        what a test on SQL would read from the table (the service never asks)."""
+        with self._lock:
+            return [(t.student, t.problem_id, t.sub, t.lineitem_url) for t in self._targets]
+
     def launched(self, student: str, problem_id: str) -> bool:
         with self._lock:
             return any(t.student == student and t.problem_id == problem_id for t in self._targets)

@@ -1,5 +1,6 @@
 """In-memory fakes of the LTI launch stores (platforms, launch state, our sessions), held to the same
-contract as `sql_lti.py` by tests/storage."""
+contract as `sql_lti.py` by tests/storage. `logins` and `records` are for tests alone: they show what a
+test on SQL would count in the tables (the service never asks)."""
 
 from __future__ import annotations
 
@@ -116,6 +117,11 @@ class MemoryLaunchStore:
         with self._lock:
             self._deep_links.pop(request_id, None)
 
+    def logins(self) -> list[LoginState]:
+        """The logins in progress (saved, not yet taken or dropped), oldest first."""
+        with self._lock:
+            return list(self._logins.values())
+
 
 class MemoryLtiSessionStore:
     def __init__(self) -> None:
@@ -130,3 +136,8 @@ class MemoryLtiSessionStore:
     def get(self, id_hash: str) -> SessionRecord | None:
         with self._lock:
             return self._sessions.get(id_hash)
+
+    def records(self) -> list[SessionRecord]:
+        """Every stored session (expired ones not yet dropped too), oldest first."""
+        with self._lock:
+            return list(self._sessions.values())

@@ -14,15 +14,13 @@ from typing import Any
 import pytest
 from fastapi.testclient import TestClient
 
-from app.catalog import Catalog
 from app.db.database import Database
 from app.db.records import Role
 from app.grading.pool import GradingPool
 from app.keys import create_key
 from app.main import create_app
 from app.settings import Settings
-from app.startup import DatabaseKeyStore, Storage
-from app.storage import memory_stores
+from tests.memory_app import memory_app_storage
 
 SQL_BACKENDS = ["sqlite", pytest.param("postgres", marks=pytest.mark.postgres)]
 SECRET = "test-secret-0123456789"
@@ -39,14 +37,6 @@ def pytest_generate_tests(metafunc: pytest.Metafunc) -> None:
 def backend() -> str:
     """Overrides the root `backend`: the fakes, unless a test parametrizes `backend` itself."""
     return "memory"
-
-
-def memory_app_storage(settings: Settings) -> Storage:
-    """What `create_app` opens, on fresh in-memory stores with the built-in bank stored."""
-    stores = memory_stores()
-    catalog = Catalog(stores, settings.secret, settings.bank_dir)
-    catalog.sync_builtin()
-    return Storage(database=None, stores=stores, keys=DatabaseKeyStore(stores.keys), catalog=catalog)
 
 
 @pytest.fixture(scope="session")

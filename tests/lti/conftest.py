@@ -1,4 +1,6 @@
-"""The tool (our router on a migrated SQLite database) and a fake LMS, both on loopback ASGI."""
+"""The tool (our router on the in-memory stores) and a fake LMS, both on loopback ASGI. A test looks
+into the stores through `fakes` where a test on SQL would count rows; the storage contract itself is
+held on SQLite and PostgreSQL by tests/storage."""
 
 from __future__ import annotations
 
@@ -17,16 +19,14 @@ from fastapi import FastAPI
 from joserfc.jwk import RSAKey
 
 from app.auth import Principal, Role
-from app.db.database import Database
-from app.db.migrate import migrate
-from app.db.problems import save_builtin
 from app.grading.pool import GradingPool
 from app.lti import keys
 from app.lti.context import LtiContext
 from app.lti.router import router
 from app.settings import Settings
-from app.storage import Stores, memory_stores, sql_stores, sql_tool_keys
-from app.storage.memory import MemoryToolKeys
+from app.storage import Stores, memory_stores
+from app.storage.memory import MemoryScoreOutbox, MemoryToolKeys
+from app.storage.memory_lti import MemoryLaunchStore, MemoryLtiSessionStore
 from problems.loader import BANK_DIR
 from tests.lti.fake_lms import CLIENT_ID, DEPLOYMENT_ID, ISSUER, TOOL, FakeLms, register_fake_lms
 
@@ -60,32 +60,6 @@ def yo_yo_bank(tmp_path_factory: pytest.TempPathFactory) -> Path:
     return bank
 
 
-@pytest.fixture(scope="session")
-def template_database(tmp_path_factory: pytest.TempPathFactory) -> Path:
-    """Migrated once per run, with the problems, the fake LMS registered and our first signing key;
-    each test gets a copy (migrating and making an RSA key per test would dominate the run time)."""
-    path = tmp_path_factory.mktemp("template") / "tool.db"
-    url = f"sqlite:///{path}"
-    migrate(url)
-    database = Database(url)
-    with database.session() as session:
-        for problem_id, document in PROBLEMS.items():
-            save_builtin(session, problem_id, document)
-        sql_tool_keys.create_key(session)
-    register_fake_lms(database)
-    database.dispose()
-    return path
-
-
-@pytest.fixture
-def database(template_database: Path, tmp_path: Path) -> Iterator[Database]:
-    path = tmp_path / "tool.db"
-    shutil.copyfile(template_database, path)
-    database = Database(f"sqlite:///{path}")
-    yield database
-    database.dispose()
-
-
 @pytest.fixture
 def lms() -> FakeLms:
     return FakeLms()
@@ -104,16 +78,31 @@ def tool_key() -> RSAKey:
 
 
 @pytest.fixture
-def stores(request: pytest.FixtureRequest, tool_key: RSAKey) -> Stores:
-    """The tool's stores: on the SQLite copy when the test looks at the database itself (`database`),
-    else the in-memory fakes with the same problems, platform and signing key."""
-    if "database" in request.fixturenames:
-        return sql_stores(request.getfixturevalue("database"))
+def stores(tool_key: RSAKey) -> Stores:
+    """The tool's stores: in-memory fakes with two problems, the fake LMS registered and our signing
+    key (made once per run: RSA is slow)."""
     stores = replace(memory_stores(), tool_keys=MemoryToolKeys([tool_key]))
     for problem_id, document in PROBLEMS.items():
         stores.problems.save_builtin(problem_id, document)
     register_fake_lms(stores)
     return stores
+
+
+@dataclass(frozen=True)
+class Fakes:
+    """The in-memory stores a test looks into: logins in progress, our sessions, grade targets."""
+
+    launches: MemoryLaunchStore
+    sessions: MemoryLtiSessionStore
+    outbox: MemoryScoreOutbox
+
+
+@pytest.fixture
+def fakes(stores: Stores) -> Fakes:
+    assert isinstance(stores.launches, MemoryLaunchStore), "a test that looks into the fakes runs on them"
+    assert isinstance(stores.lti_sessions, MemoryLtiSessionStore)
+    assert isinstance(stores.outbox, MemoryScoreOutbox)
+    return Fakes(stores.launches, stores.lti_sessions, stores.outbox)
 
 
 STUDENT_KEY = "student-key-for-tests"

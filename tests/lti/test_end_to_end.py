@@ -1,7 +1,10 @@
 """LTI end to end through the real service: the app from `create_app` (bank, grading workers, outbox,
-API) and the fake LMS (the real `lti1p3platform` platform), both on loopback ASGI, on SQLite and on
-PostgreSQL. An instructor deep links a bank problem, a student launches it, answers on the student page
-through the API with the session cookie and CSRF token, and the score reaches the LMS once.
+API) and the fake LMS (the real `lti1p3platform` platform), both on loopback ASGI. An instructor deep
+links a bank problem, a student launches it, answers on the student page through the API with the
+session cookie and CSRF token, and the score reaches the LMS once.
+
+The whole journey runs on SQLite and on PostgreSQL; the tests of who may do what run on the in-memory
+stores (their `backend` fixture).
 """
 
 from __future__ import annotations
@@ -18,17 +21,16 @@ import anyio
 import httpx
 import pytest
 from fastapi import FastAPI
-from sqlalchemy import func, select
 from starlette.concurrency import run_in_threadpool
 
 from app.db.database import Database
+from app.db.records import Role
 from app.grading.pool import GradingPool
-from app.keys import create_key
-from app.lti.models import LtiScoreOutbox
 from app.lti.outbox import DELIVERED, PENDING, SENDING, OutboxWorker
 from app.main import create_app
 from app.settings import Settings
-from app.storage import sql_stores
+from app.storage import Stores
+from app.storage.memory import MemoryScoreOutbox
 from tests.lti.conftest import platform_launch
 from tests.lti.fake_lms import (
     INSTRUCTOR,
@@ -40,6 +42,7 @@ from tests.lti.fake_lms import (
     ReceivedScore,
     register_fake_lms,
 )
+from tests.memory_app import memory_app_storage
 
 # About a second or two each (one bank problem, one shared grading worker): not marked slow.
 pytestmark = pytest.mark.anyio
@@ -56,21 +59,34 @@ DELIVERY_TIMEOUT = 20.0
 # once it does, these pass and the marker must go.
 
 
+SQL_BACKENDS = ["sqlite", pytest.param("postgres", marks=pytest.mark.postgres)]
+
+
 @dataclass
 class Sites:
-    """The student's browser (cookies for both sites), the LMS, and the tool's app and database."""
+    """The student's browser (cookies for both sites), the LMS, and the tool's app and stores."""
 
     browser: httpx.AsyncClient
     lms: FakeLms
     app: FastAPI
-    database: Database
+    stores: Stores
     settings: Settings
 
 
 @pytest.fixture
-def e2e_settings(db: Database, yo_yo_bank: Path) -> Settings:
+def backend() -> str:
+    """The in-memory stores, unless a test parametrizes `backend` with SQL_BACKENDS."""
+    return "memory"
+
+
+@pytest.fixture
+def e2e_settings(backend: str, request: pytest.FixtureRequest, yo_yo_bank: Path) -> Settings:
+    url = "sqlite://"  # never opened on the fakes
+    if backend != "memory":
+        db: Database = request.getfixturevalue("db")
+        url = db.url
     return Settings(
-        database_url=db.url,
+        database_url=url,
         base_url=TOOL,
         secret="end-to-end-secret-0123",
         check_workers=1,
@@ -80,12 +96,14 @@ def e2e_settings(db: Database, yo_yo_bank: Path) -> Settings:
 
 
 @pytest.fixture
-async def sites(e2e_settings: Settings, lti_grading_pool: GradingPool) -> AsyncIterator[Sites]:
+async def sites(backend: str, e2e_settings: Settings, lti_grading_pool: GradingPool) -> AsyncIterator[Sites]:
     lms = FakeLms()
-    app = create_app(e2e_settings, pool=lti_grading_pool, lms_transport=httpx.ASGITransport(app=lms.app))
+    options: dict[str, Any] = {"open_storage": memory_app_storage} if backend == "memory" else {}
+    transport = httpx.ASGITransport(app=lms.app)
+    app = create_app(e2e_settings, pool=lti_grading_pool, lms_transport=transport, **options)
     async with app.router.lifespan_context(app):
-        database: Database = app.state.services.database
-        await run_in_threadpool(register_fake_lms, database)
+        stores: Stores = app.state.services.stores
+        await run_in_threadpool(register_fake_lms, stores)
         mounts = {
             "all://tool.test": httpx.ASGITransport(app=app),
             "all://lms.test": httpx.ASGITransport(app=lms.app),
@@ -93,7 +111,7 @@ async def sites(e2e_settings: Settings, lti_grading_pool: GradingPool) -> AsyncI
         async with httpx.AsyncClient(mounts=mounts, timeout=30) as browser:
             # What an LMS administrator does: paste the tool's JWKS URL (here: its keys).
             lms.trust_tool_keys((await browser.get(f"{TOOL}/.well-known/jwks.json")).json())
-            yield Sites(browser, lms, app, database, e2e_settings)
+            yield Sites(browser, lms, app, stores, e2e_settings)
 
 
 def field(html: str, name: str) -> str:
@@ -154,19 +172,17 @@ async def submit(sites: Sites, csrf: str, part: str, answer: str) -> httpx.Respo
     )
 
 
-def _undelivered(database: Database) -> int:
-    with database.session(read_only=True) as session:
-        query = select(func.count()).select_from(LtiScoreOutbox)
-        return int(session.scalar(query.where(LtiScoreOutbox.status.in_((PENDING, SENDING)))) or 0)
+def _undelivered(stores: Stores) -> int:
+    return sum(score.status in (PENDING, SENDING) for score in stores.outbox.scores())
 
 
 async def deliver(sites: Sites) -> list[ReceivedScore]:
     """Drive delivery until nothing is queued (the app's own background worker may deliver some of
     them: claims keep every row to one sender); returns what the LMS has received so far."""
-    stores = sql_stores(sites.database)
+    stores = sites.stores
     worker = OutboxWorker(stores.outbox, stores.tool_keys, httpx.ASGITransport(app=sites.lms.app))
     deadline = time.monotonic() + DELIVERY_TIMEOUT
-    while await run_in_threadpool(_undelivered, sites.database):
+    while await run_in_threadpool(_undelivered, stores):
         assert time.monotonic() < deadline, "scores still queued"
         if await worker.run_once() == 0:
             await _pause()
@@ -177,11 +193,13 @@ async def _pause() -> None:
     await anyio.sleep(0.05)
 
 
-def statuses(database: Database) -> list[str]:
-    with database.session(read_only=True) as session:
-        return list(session.scalars(select(LtiScoreOutbox.status).order_by(LtiScoreOutbox.id)))
+def statuses(stores: Stores) -> list[str]:
+    return [score.status for score in stores.outbox.scores()]
 
 
+# The whole service on each database: the score queued in the submission's own transaction, the
+# claims of two workers (the app's own and `deliver`'s) on PostgreSQL's row locks.
+@pytest.mark.parametrize("backend", SQL_BACKENDS)
 async def test_deep_linked_problem_is_launched_answered_and_graded_in_the_lms(sites: Sites) -> None:
     item = await deep_link(sites, PROBLEM)
     assert item["type"] == "ltiResourceLink"
@@ -223,7 +241,7 @@ async def test_deep_linked_problem_is_launched_answered_and_graded_in_the_lms(si
     assert unreadable.status_code == 201, unreadable.text
     assert unreadable.json()["verdict"] == "invalid"
     assert len(await deliver(sites)) == 2, "an invalid answer sends nothing"
-    assert statuses(sites.database) == [DELIVERED, DELIVERED]
+    assert await run_in_threadpool(statuses, sites.stores) == [DELIVERED, DELIVERED]
 
 
 async def test_api_refuses_a_session_post_without_its_csrf_token(sites: Sites) -> None:
@@ -242,7 +260,8 @@ async def test_instructor_sees_a_refused_score_among_delivery_problems(sites: Si
     sites.lms.score_status = 422
     assert (await submit(sites, csrf, "acceleration", RIGHT)).status_code == 201
     assert await deliver(sites) == []
-    plaintext, _ = await run_in_threadpool(create_key, sites.database, "instructor", "prof")
+    created = await run_in_threadpool(lambda: sites.stores.keys.create(Role.INSTRUCTOR, name="prof"))
+    plaintext = created.plaintext
     listed = await sites.browser.get(
         f"{TOOL}/v1/lti/delivery-problems", headers={"Authorization": f"Bearer {plaintext}"}
     )
@@ -257,7 +276,8 @@ async def test_an_lms_instructor_session_cannot_reach_other_students_or_their_gr
     item = await deep_link(sites, PROBLEM)
     await launch_student(sites, item)  # records a grade target for the student
     csrf = await open_link(sites, item, "teacher-2", INSTRUCTOR)
-    victim = next(iter(_students(sites.database)))
+    assert isinstance(sites.stores.outbox, MemoryScoreOutbox)
+    victim = next(student for student, *_ in sites.stores.outbox.targets())
     headers = {"X-CSRF-Token": csrf}
     as_victim = await sites.browser.post(
         f"{TOOL}/v1/problems/{PROBLEM}/parts/acceleration/submissions",
@@ -270,10 +290,3 @@ async def test_an_lms_instructor_session_cannot_reach_other_students_or_their_gr
     own = await sites.browser.get(f"{TOOL}/v1/submissions")
     assert own.status_code == 200 and own.json()["items"] == []
     assert await deliver(sites) == []
-
-
-def _students(database: Database) -> set[str]:
-    from app.lti.models import LtiGradeTarget
-
-    with database.session(read_only=True) as session:
-        return set(session.scalars(select(LtiGradeTarget.student)))

@@ -9,10 +9,7 @@ from typing import Any
 import httpx
 import pytest
 
-from app.db.database import Database
-from app.lti.context import LtiContext
-from app.lti.models import LtiSession
-from tests.lti.conftest import start_login
+from tests.lti.conftest import Fakes, start_login
 from tests.lti.fake_lms import (
     CLIENT_ID,
     TOOL,
@@ -88,17 +85,11 @@ def assert_refusal_page(response: httpx.Response, status: int, code: str) -> Non
     assert "physcheck_session" not in response.headers.get("set-cookie", "")
 
 
-def session_count(database: Database) -> int:
-    with database.session() as session:
-        return session.query(LtiSession).count()
-
-
 @pytest.mark.parametrize(("forge", "status", "code"), REFUSED)
 async def test_forged_or_invalid_launch_is_refused(
     browser: httpx.AsyncClient,
     lms: FakeLms,
-    context: LtiContext,
-    database: Database,
+    fakes: Fakes,
     forge: Forger,
     status: int,
     code: str,
@@ -108,7 +99,7 @@ async def test_forged_or_invalid_launch_is_refused(
         f"{TOOL}/lti/launch", data={"id_token": forge(lms, login.nonce), "state": login.state}
     )
     assert_refusal_page(response, status, code)
-    assert session_count(database) == 0
+    assert fakes.sessions.records() == []
 
 
 ACCEPTED: list[Any] = [
@@ -213,7 +204,7 @@ async def test_platform_key_rotation_is_picked_up_by_one_refetch(browser: httpx.
 
 
 async def test_unreachable_platform_keys_give_a_clear_page_not_a_stack_trace(
-    browser: httpx.AsyncClient, lms: FakeLms, context: LtiContext, database: Database
+    browser: httpx.AsyncClient, lms: FakeLms, fakes: Fakes
 ):
     lms.jwks_down = True
     login = await start_login(browser)
@@ -222,7 +213,7 @@ async def test_unreachable_platform_keys_give_a_clear_page_not_a_stack_trace(
     )
     assert response.status_code == 502
     assert "could not be reached" in response.text and "Traceback" not in response.text
-    assert session_count(database) == 0
+    assert fakes.sessions.records() == []
 
 
 @pytest.mark.parametrize(

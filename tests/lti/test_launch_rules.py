@@ -9,21 +9,14 @@ from html import unescape
 import httpx
 import pytest
 
-from app.db.database import Database
-from app.db.problems import retire_problem
 from app.lti.context import LtiContext
-from app.lti.models import LtiGradeTarget, LtiSession
-from tests.lti.conftest import platform_launch, start_login
+from app.storage import Stores
+from tests.lti.conftest import Fakes, platform_launch, start_login
 from tests.lti.fake_lms import INSTRUCTOR, ISSUER, TOOL, FakeLms, NextLaunch
 from tests.lti.forge import FromNow, launch_claims, rs256
 from tests.lti.test_launch_refusals import assert_refusal_page
 
 pytestmark = pytest.mark.anyio
-
-
-def rows(database: Database, model: type) -> int:
-    with database.session() as session:
-        return session.query(model).count()
 
 
 # ---- id_token and state come from the form post only -----------------------------------------------
@@ -37,8 +30,7 @@ def rows(database: Database, model: type) -> int:
 async def test_id_token_or_state_in_the_query_string_is_not_read(
     browser: httpx.AsyncClient,
     lms: FakeLms,
-    context: LtiContext,
-    database: Database,
+    fakes: Fakes,
     in_query: set[str],
     code: str,
 ):
@@ -48,7 +40,7 @@ async def test_id_token_or_state_in_the_query_string_is_not_read(
     body = {k: v for k, v in fields.items() if k not in in_query}
     response = await browser.post(f"{TOOL}/lti/launch", params=query, data=body)
     assert_refusal_page(response, 400, code)
-    assert rows(database, LtiSession) == 0
+    assert fakes.sessions.records() == []
 
 
 # ---- token age ---------------------------------------------------------------------------------------
@@ -78,7 +70,7 @@ async def test_token_issued_longer_ago_than_the_maximum_is_refused(
     browser: httpx.AsyncClient,
     lms: FakeLms,
     context: LtiContext,
-    database: Database,
+    fakes: Fakes,
     max_age: int | None,
     seconds_ago: int,
     accepted: bool,
@@ -90,30 +82,29 @@ async def test_token_issued_longer_ago_than_the_maximum_is_refused(
         assert response.status_code == 303, response.text
     else:
         assert_refusal_page(response, 401, "token_too_old")
-        assert rows(database, LtiSession) == 0
+        assert fakes.sessions.records() == []
 
 
 # ---- the problem a link names ----------------------------------------------------------------------
 
 
 async def test_launch_for_an_unknown_problem_gets_a_clear_page(
-    browser: httpx.AsyncClient, lms: FakeLms, context: LtiContext, database: Database
+    browser: httpx.AsyncClient, lms: FakeLms, fakes: Fakes
 ):
     lms.next_launch.problem = "no-such-problem"
     response = await platform_launch(browser)
     assert_refusal_page(response, 404, "unknown_problem")
     assert "no-such-problem" in response.text
-    assert rows(database, LtiSession) == rows(database, LtiGradeTarget) == 0
+    assert fakes.sessions.records() == fakes.outbox.targets() == []
 
 
 async def test_launch_for_a_retired_problem_gets_a_clear_page(
-    browser: httpx.AsyncClient, lms: FakeLms, context: LtiContext, database: Database
+    browser: httpx.AsyncClient, lms: FakeLms, stores: Stores, fakes: Fakes
 ):
-    with database.session() as session:
-        retire_problem(session, "yo-yo")
+    stores.problems.retire("yo-yo")
     lms.next_launch.problem = "yo-yo"
     assert_refusal_page(await platform_launch(browser), 404, "unknown_problem")
-    assert rows(database, LtiGradeTarget) == 0
+    assert fakes.outbox.targets() == []
 
 
 # ---- deep linking: accept_multiple and accept_types ------------------------------------------------
@@ -167,9 +158,9 @@ async def test_multiple_choice_platform_gets_checkboxes(browser: httpx.AsyncClie
 
 
 async def test_platform_that_takes_no_resource_links_gets_a_clear_page(
-    browser: httpx.AsyncClient, lms: FakeLms, context: LtiContext, database: Database
+    browser: httpx.AsyncClient, lms: FakeLms, fakes: Fakes
 ):
     response = await open_picker(browser, lms, accept_types={"link", "file"})
     assert_refusal_page(response, 400, "resource_links_not_accepted")
     assert "picker" not in response.text and 'name="problem"' not in response.text
-    assert rows(database, LtiSession) == 0
+    assert fakes.sessions.records() == []
