@@ -27,11 +27,11 @@ import pytest
 import uvicorn
 from fastapi import FastAPI
 
-from app.db.database import Database
+from app.db.records import Role
 from app.grading.pool import GradingPool
-from app.keys import create_key
 from app.main import create_app
 from app.settings import Settings
+from app.storage import Stores
 
 CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
 CHROMIUM_ARGS = [
@@ -67,14 +67,14 @@ class LiveServer:
     app: FastAPI
 
     @property
-    def database(self) -> Database:
-        database: Database = self.app.state.services.database
-        return database
+    def stores(self) -> Stores:
+        """The running app's stores (SQL or the in-memory fakes)."""
+        stores: Stores = self.app.state.services.stores
+        return stores
 
     def key(self, role: str, name: str, student: str | None = None) -> str:
         """A new API key's plaintext (`student` names a student key's student)."""
-        plaintext, _ = create_key(self.database, role, name, student=student)
-        return plaintext
+        return self.stores.keys.create(Role(role), name=name, student=student).plaintext
 
 
 def serve(app: FastAPI) -> Iterator[str]:

@@ -1,5 +1,5 @@
-"""The real app (`create_app`) on a fresh SQLite database with a one-problem bank, and helpers to sign
-in to the instructor pages as a browser would (the form's CSRF token read from the page)."""
+"""The real app (`create_app`) on the in-memory stores with a one-problem bank, and helpers to sign in
+to the instructor pages as a browser would (the form's CSRF token read from the page)."""
 
 from __future__ import annotations
 
@@ -11,15 +11,17 @@ from pathlib import Path
 
 import httpx
 import pytest
+from fastapi import FastAPI
 from fastapi.testclient import TestClient
 
-from app.db.database import Database
+from app.db.records import Role
 from app.grading.pool import GradingPool
-from app.keys import create_key
 from app.main import create_app
 from app.settings import Settings
+from app.storage import Stores
 from problems.loader import BANK_DIR
 from tests.browser import LiveServer, serve
+from tests.memory_app import memory_app_storage
 
 CSRF = re.compile(r'name="csrf" value="([^"]+)"')
 
@@ -40,9 +42,9 @@ def yo_yo_only(tmp_path_factory: pytest.TempPathFactory) -> Path:
 
 
 @pytest.fixture
-def settings(tmp_path: Path, yo_yo_only: Path) -> Settings:
+def settings(yo_yo_only: Path) -> Settings:
     return Settings(
-        database_url=f"sqlite:///{tmp_path / 'physcheck.db'}",
+        database_url="sqlite://",  # never opened: the stores are the in-memory fakes
         secret="instructor-pages-secret-0123",
         bank_dir=yo_yo_only,
         warm_up=False,
@@ -50,21 +52,30 @@ def settings(tmp_path: Path, yo_yo_only: Path) -> Settings:
     )
 
 
+def make_app(settings: Settings, pool: GradingPool) -> FastAPI:
+    """`create_app` on fresh in-memory stores."""
+    return create_app(settings, pool=pool, open_storage=memory_app_storage)
+
+
 @pytest.fixture
 def client(settings: Settings, pages_pool: GradingPool) -> Iterator[TestClient]:
-    with TestClient(create_app(settings, pool=pages_pool), follow_redirects=False) as test_client:
+    with TestClient(make_app(settings, pages_pool), follow_redirects=False) as test_client:
         yield test_client
 
 
+def stores_of(client: TestClient) -> Stores:
+    stores: Stores = client.app.state.services.stores  # type: ignore[attr-defined]
+    return stores
+
+
 @pytest.fixture
-def database(client: TestClient) -> Database:
-    database: Database = client.app.state.services.database  # type: ignore[attr-defined]
-    return database
+def stores(client: TestClient) -> Stores:
+    """The running app's stores."""
+    return stores_of(client)
 
 
-def new_key(database: Database, role: str, name: str = "Prof", student: str | None = None) -> str:
-    plaintext, _ = create_key(database, role, name, student=student)
-    return plaintext
+def new_key(stores: Stores, role: str, name: str = "Prof", student: str | None = None) -> str:
+    return stores.keys.create(Role(role), name=name, student=student).plaintext
 
 
 def csrf_of(html: str) -> str:
@@ -80,8 +91,8 @@ def sign_in(client: TestClient, key: str, next_url: str = "/instructor/problems"
 
 
 @pytest.fixture
-def instructor_key(database: Database) -> str:
-    return new_key(database, "instructor", "Prof Ada")
+def instructor_key(stores: Stores) -> str:
+    return new_key(stores, "instructor", "Prof Ada")
 
 
 @pytest.fixture
@@ -92,19 +103,16 @@ def signed_in(client: TestClient, instructor_key: str) -> TestClient:
 
 
 @pytest.fixture(scope="module")
-def live_server(
-    tmp_path_factory: pytest.TempPathFactory, page_grading_pool: GradingPool, yo_yo_only: Path
-) -> Iterator[LiveServer]:
-    """tests/browser.py's live server, with the yo-yo alone for a bank: these pages need one problem,
-    and compiling the whole bank first would take minutes of the run."""
-    folder = tmp_path_factory.mktemp("live")
+def live_server(page_grading_pool: GradingPool, yo_yo_only: Path) -> Iterator[LiveServer]:
+    """tests/browser.py's live server on the in-memory stores, with the yo-yo alone for a bank: these
+    pages need one problem, and compiling the whole bank first would take minutes of the run."""
     settings = Settings(
-        database_url=f"sqlite:///{folder / 'physcheck.db'}",
+        database_url="sqlite://",  # never opened: the app runs on the in-memory stores
         secret="page-test-secret-0123456789",
         check_workers=1,
         bank_dir=yo_yo_only,
     )
-    app = create_app(settings, pool=page_grading_pool)
+    app = make_app(settings, page_grading_pool)
     for url in serve(app):
         deadline = time.monotonic() + 120
         while httpx.get(f"{url}/ready").status_code != 200:

@@ -6,27 +6,24 @@ from __future__ import annotations
 import csv
 import io
 import re
+from datetime import timedelta
 
 import pytest
 import yaml
 from fastapi.testclient import TestClient
-from sqlalchemy import select
 
-from app.db.database import Database
 from app.db.records import Role
-from app.db.submissions import record_submission
 from app.db.types import utc_now
 from app.instructor.router import yaml_text
 from app.instructor.session import COOKIE
-from app.keys import revoke_key
-from app.lti.models import LtiGradeTarget, LtiPlatform, LtiScoreOutbox
+from app.lti import outbox
 from app.lti.sessions import SESSION_COOKIE, open_session
-from app.storage import sql_stores
+from app.storage import Stores
 from physics.numeric import round_sigfigs
 from physics.verdict import Outcome, ReadAs, Reason, Verdict
 from problems.loader import BANK_DIR
 from problems.variants import format_quantity
-from tests.instructor.conftest import csrf_of, new_key, sign_in
+from tests.instructor.conftest import csrf_of, make_app, new_key, sign_in, stores_of
 from tests.lti.fake_lms import register_fake_lms
 
 PROBLEM = "yo-yo"
@@ -39,9 +36,8 @@ def upload_text(problem_id: str = "my-yoyo", title: str = "My yo-yo") -> str:
     return yaml_text(doc)
 
 
-def lms_session(database: Database, role: Role, sub: str = "lee") -> str:
-    register_fake_lms(database)
-    stores = sql_stores(database)
+def lms_session(stores: Stores, role: Role, sub: str = "lee") -> str:
+    register_fake_lms(stores)
     [platform] = stores.platforms.list()
     cookie, _ = open_session(
         stores.lti_sessions, platform_id=platform.id, sub=sub, role=role, name="Lee", now=utc_now()
@@ -49,19 +45,17 @@ def lms_session(database: Database, role: Role, sub: str = "lee") -> str:
     return cookie
 
 
-def file_submissions(database: Database, rows: list[tuple[str, str, str, Verdict]]) -> None:
-    with database.session() as session:
-        for student, part, answer, verdict in rows:
-            record_submission(
-                session,
-                problem_id=PROBLEM,
-                problem_version=1,
-                part_id=part,
-                student=student,
-                answer=answer,
-                verdict=verdict,
-                max_attempts=None,
-            )
+def file_submissions(stores: Stores, rows: list[tuple[str, str, str, Verdict]]) -> None:
+    for student, part, answer, verdict in rows:
+        stores.submissions.file(
+            problem_id=PROBLEM,
+            problem_version=1,
+            part_id=part,
+            student=student,
+            answer=answer,
+            verdict=verdict,
+            max_attempts=None,
+        )
 
 
 RIGHT = Verdict(Outcome.CORRECT, 1.0, Reason.EQUIVALENT, "Correct.", ReadAs("g", "g"))
@@ -103,9 +97,9 @@ def test_instructor_key_signs_in_with_a_signed_httponly_strict_cookie(
     [("student", 403, "This is a student key"), (None, 401, "unknown or revoked")],
 )
 def test_student_or_unknown_key_is_refused_at_sign_in(
-    client: TestClient, database: Database, role: str | None, status: int, message: str
+    client: TestClient, stores: Stores, role: str | None, status: int, message: str
 ):
-    key = new_key(database, role, "bob", student="bob") if role else "pck_not-a-key"
+    key = new_key(stores, role, "bob", student="bob") if role else "pck_not-a-key"
     response = sign_in(client, key)
     assert response.status_code == status
     assert message in response.text
@@ -122,8 +116,8 @@ def test_sign_in_without_the_forms_token_is_refused(client: TestClient, instruct
     assert COOKIE not in client.cookies
 
 
-def test_a_cookie_altered_to_name_another_key_is_no_session(signed_in: TestClient, database: Database):
-    other = new_key(database, "instructor", "someone else")
+def test_a_cookie_altered_to_name_another_key_is_no_session(signed_in: TestClient, stores: Stores):
+    other = new_key(stores, "instructor", "someone else")
     assert other
     value = signed_in.cookies[COOKIE]
     key_id, rest = value.split(".", 1)
@@ -131,9 +125,9 @@ def test_a_cookie_altered_to_name_another_key_is_no_session(signed_in: TestClien
     assert signed_in.get("/instructor/problems").status_code == 303
 
 
-def test_revoking_the_key_signs_its_browser_out(signed_in: TestClient, database: Database):
+def test_revoking_the_key_signs_its_browser_out(signed_in: TestClient, stores: Stores):
     key_id = int(signed_in.cookies[COOKIE].split(".")[0])
-    revoke_key(database, key_id)
+    stores.keys.revoke(key_id)
     assert signed_in.get("/instructor/problems").status_code == 303
 
 
@@ -154,8 +148,8 @@ def test_every_post_needs_the_sessions_csrf_token(signed_in: TestClient):
 # ---- scoping: LMS sessions ----------------------------------------------------------------------------
 
 
-def test_lms_instructor_session_sees_problems_but_no_students_work(client: TestClient, database: Database):
-    client.cookies.set(SESSION_COOKIE, lms_session(database, Role.INSTRUCTOR))
+def test_lms_instructor_session_sees_problems_but_no_students_work(client: TestClient, stores: Stores):
+    client.cookies.set(SESSION_COOKIE, lms_session(stores, Role.INSTRUCTOR))
     listing = client.get("/instructor/problems")
     assert listing.status_code == 200
     assert "Lee (from your LMS)" in listing.text and "Sign out" not in listing.text
@@ -175,8 +169,8 @@ def test_lms_instructor_session_sees_problems_but_no_students_work(client: TestC
         assert "API key" in response.text
 
 
-def test_lms_student_session_is_refused(client: TestClient, database: Database):
-    client.cookies.set(SESSION_COOKIE, lms_session(database, Role.STUDENT, sub="stu"))
+def test_lms_student_session_is_refused(client: TestClient, stores: Stores):
+    client.cookies.set(SESSION_COOKIE, lms_session(stores, Role.STUDENT, sub="stu"))
     response = client.get("/instructor/problems")
     assert response.status_code == 403
     assert "For instructors only" in response.text
@@ -288,7 +282,7 @@ def test_uploaded_file_is_used_and_a_taken_id_is_reported(signed_in: TestClient)
 
 
 def test_edit_saves_a_new_version_through_the_same_path_as_the_api(
-    signed_in: TestClient, instructor_key: str, database: Database
+    signed_in: TestClient, instructor_key: str, stores: Stores
 ):
     token = csrf_of(signed_in.get("/instructor/problems/new").text)
     signed_in.post(
@@ -306,7 +300,7 @@ def test_edit_saves_a_new_version_through_the_same_path_as_the_api(
     # Another instructor may not edit it, nor anyone the built-in bank.
     assert signed_in.get("/instructor/problems/yo-yo/edit").status_code == 403
     signed_in.cookies.clear()
-    sign_in(signed_in, new_key(database, "instructor", "Other"))
+    sign_in(signed_in, new_key(stores, "instructor", "Other"))
     assert signed_in.get("/instructor/problems/my-yoyo/edit").status_code == 403
 
 
@@ -314,10 +308,10 @@ def test_edit_saves_a_new_version_through_the_same_path_as_the_api(
 
 
 def test_class_results_show_counts_charts_and_tables_without_instructors_tries(
-    signed_in: TestClient, database: Database
+    signed_in: TestClient, stores: Stores
 ):
     file_submissions(
-        database,
+        stores,
         [
             ("ada", "acceleration", "g", FREE_FALL),
             ("ada", "acceleration", "g r^2/(r^2+k^2)", RIGHT),
@@ -338,9 +332,9 @@ def test_class_results_show_counts_charts_and_tables_without_instructors_tries(
     assert row and row.groups() == ("2", "2")
 
 
-def test_submissions_are_filtered_by_student_and_downloaded_as_csv(signed_in: TestClient, database: Database):
+def test_submissions_are_filtered_by_student_and_downloaded_as_csv(signed_in: TestClient, stores: Stores):
     file_submissions(
-        database,
+        stores,
         [("ada", "acceleration", "g", FREE_FALL), ("bob", "tension", "m g", FREE_FALL)],
     )
     html = signed_in.get("/instructor/submissions", params={"student": "ada"}).text
@@ -354,34 +348,17 @@ def test_submissions_are_filtered_by_student_and_downloaded_as_csv(signed_in: Te
     assert [(r[5], r[6]) for r in rows[1:]] == [("ada", "g")]
 
 
-def test_delivery_problems_show_what_the_lms_said(signed_in: TestClient, database: Database):
-    register_fake_lms(database)
-    now = utc_now()
-    with database.session() as session:
-        platform_id = session.scalars(select(LtiPlatform.id)).one()
-        target = LtiGradeTarget(
-            platform_id=platform_id,
-            student="lti:1:ada",
-            problem_id=PROBLEM,
-            lineitem_url="https://lms/li/1",
-            sub="ada",
-        )
-        session.add(target)
-        session.flush()
-        session.add(
-            LtiScoreOutbox(
-                target_id=target.id,
-                score_given=1.0,
-                score_maximum=3.0,
-                timestamp=now,
-                status="failed",
-                attempts=1,
-                next_attempt_at=now,
-                last_status=422,
-                last_error="<b>Line item is closed</b>",
-                created_at=now,
-            )
-        )
+def test_delivery_problems_show_what_the_lms_said(signed_in: TestClient, stores: Stores):
+    register_fake_lms(stores)
+    [platform] = stores.platforms.list()
+    stores.outbox.add_target(
+        platform, student="lti:1:ada", problem_id=PROBLEM, lineitem_url="https://lms/li/1", sub="ada"
+    )
+    # Due only in an hour, so the app's own outbox worker leaves it to this test to claim.
+    later = utc_now() + timedelta(hours=1)
+    stores.outbox.enqueue(PROBLEM, "lti:1:ada", 1.0, 3.0, later)
+    [score] = stores.outbox.claim("test", later, 1)
+    stores.outbox.finish(score, outbox.Outcome(outbox.FAILED, 422, "<b>Line item is closed</b>"), later)
     html = signed_in.get("/instructor/deliveries").text
     assert "HTTP 422" in html and "lti:1:ada" in html and "1 / 3" in html
     assert "&lt;b&gt;Line item is closed&lt;/b&gt;" in html  # the LMS's words, escaped
@@ -415,12 +392,10 @@ def test_preview_lists_texts_that_will_not_render_cleanly_with_their_lines(signe
     )
 
 
-def test_behind_https_the_session_cookie_is_secure(settings, pages_pool, database: Database):
-    from app.main import create_app
-
+def test_behind_https_the_session_cookie_is_secure(settings, pages_pool):
     secure = settings.model_copy(update={"base_url": "https://physcheck.example"})
-    app = create_app(secure, pool=pages_pool)
+    app = make_app(secure, pages_pool)
     with TestClient(app, base_url="https://testserver", follow_redirects=False) as client:
-        response = sign_in(client, new_key(database, "instructor", "Prof"))
+        response = sign_in(client, new_key(stores_of(client), "instructor", "Prof"))
     cookie = next(c for c in response.headers.get_list("set-cookie") if c.startswith(COOKIE + "="))
     assert "Secure" in cookie

@@ -2,7 +2,8 @@
 served by uvicorn on a loopback port: type an answer and see it typeset, submit, see the verdict and
 the part's standing; reload and see the best score, the attempts and the history; run out of attempts
 and find the part closed. Key mode with a student key; session mode after an LTI launch from the fake
-LMS. Screenshots go to `artifacts/` (or PHYSCHECK_ARTIFACTS_DIR); axe-core runs on each state.
+LMS. The app runs on the in-memory stores. Screenshots go to `artifacts/` (or PHYSCHECK_ARTIFACTS_DIR);
+axe-core runs on each state.
 """
 
 from __future__ import annotations
@@ -26,6 +27,7 @@ from problems.loader import BANK_DIR
 from tests.browser import PHONE, LiveServer, check_page, serve
 from tests.lti.conftest import platform_launch
 from tests.lti.fake_lms import ISSUER, LEARNER, TOOL, FakeLms, NextLaunch, register_fake_lms
+from tests.memory_app import memory_app_storage
 
 pytestmark = [pytest.mark.browser, pytest.mark.slow]
 PROBLEM = "yo-yo"
@@ -57,14 +59,17 @@ def served(
     tmp_path_factory: pytest.TempPathFactory, page_grading_pool: GradingPool, limited_bank: Path, lms: FakeLms
 ) -> Iterator[LiveServer]:
     settings = Settings(
-        database_url=f"sqlite:///{tmp_path_factory.mktemp('db') / 'physcheck.db'}",
+        database_url="sqlite://",  # never opened: the app runs on the in-memory stores
         base_url=TOOL,  # the LTI launch below reaches the same app in-process under this name
         secret="browser-test-secret-0123",
         check_workers=1,
         bank_dir=limited_bank,
         warm_up=False,
     )
-    app = create_app(settings, pool=page_grading_pool, lms_transport=httpx.ASGITransport(app=lms.app))
+    transport = httpx.ASGITransport(app=lms.app)
+    app = create_app(
+        settings, pool=page_grading_pool, lms_transport=transport, open_storage=memory_app_storage
+    )
     for url in serve(app):
         yield LiveServer(url, app)
 
@@ -187,7 +192,7 @@ def test_wrong_key_is_refused_on_the_page(served: LiveServer, browse: Callable[.
 async def _launch(served: LiveServer, lms: FakeLms) -> str:
     """An LTI launch from the fake LMS into the served app (in-process, under its configured name);
     returns the session cookie the browser would now hold."""
-    await anyio.to_thread.run_sync(register_fake_lms, served.database)
+    await anyio.to_thread.run_sync(register_fake_lms, served.stores)
     mounts = {
         "all://tool.test": httpx.ASGITransport(app=served.app),
         "all://lms.test": httpx.ASGITransport(app=lms.app),
