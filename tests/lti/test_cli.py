@@ -30,6 +30,7 @@ def run(argv: list[str], settings: Settings) -> int:
 
 @pytest.fixture
 def cli_settings(tmp_path: Path) -> Settings:
+    # On SQL: the commands open (and migrate) the database the settings name; there is no fake to pass.
     return Settings(
         database_url=f"sqlite:///{tmp_path / 'cli.db'}",
         base_url="https://tool.test",

@@ -197,8 +197,7 @@ def statuses(stores: Stores) -> list[str]:
     return [score.status for score in stores.outbox.scores()]
 
 
-# The whole service on each database: the score queued in the submission's own transaction, the
-# claims of two workers (the app's own and `deliver`'s) on PostgreSQL's row locks.
+# On SQL: the score queued in the submission's transaction, two workers' claims under row locks.
 @pytest.mark.parametrize("backend", SQL_BACKENDS)
 async def test_deep_linked_problem_is_launched_answered_and_graded_in_the_lms(sites: Sites) -> None:
     item = await deep_link(sites, PROBLEM)
