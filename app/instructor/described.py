@@ -99,7 +99,7 @@ def _limit_where(substitutions: Mapping[sympy.Symbol, sympy.Expr]) -> str:
 
 
 def _numeric(part: CompiledNumericPart, variant: Variant | None) -> tuple[str | None, str | None, str | None]:
-    if variant is None:
+    if variant is None and not isinstance(part.value, Decimal):  # evaluated per student: whose?
         return None, None, None
     try:
         value = part.reference(variant)
@@ -141,7 +141,7 @@ def _part(
             id=part_id,
             kind=kind,
             prompt=prompt,
-            latex=sympy.latex(part.expr),
+            latex=part.solution().latex,
             units=part.units,
             tolerance=tolerance_text(tolerance.rel, tolerance.abs, tolerance.sigfigs, part.units),
             expected=None if expected is None else expected,

@@ -2,7 +2,7 @@
 
 A check is a one-part problem given in the request: each kind's body (`problems.kinds`) uses the
 declarations a problem document does (symbols, mistakes, tolerance, choices, numbers read by the one
-decimal reader) and builds the job its parts compile to.
+decimal reader) and is compiled by its kind's own compile, as a part of a problem is.
 """
 
 from __future__ import annotations

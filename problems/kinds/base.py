@@ -7,7 +7,8 @@ An answer kind is one module (`problems/kinds/<kind>.py`) that, for one `kind:` 
   student   what a student sees of it (never a reference)
   selftest  the cases the bank self-test grades it by
   check     its `POST /v1/check` body (`<Kind>CheckIn`): a one-part problem given in the request, built
-            from the same declarations, whose `job` grades it as a part of the kind is graded
+            from the same declarations, whose `job` compiles it by the kind's own compile (its one part
+            `ADHOC_PART`, no document) and grades it as a part of the kind is graded
 and is registered by its `kind` in `problems.kinds.KINDS`, which `problems.kinds.kind_of` matches.
 """
 
@@ -34,6 +35,8 @@ T = TypeVar("T")
 P_contra = TypeVar("P_contra", contravariant=True)
 C = TypeVar("C", bound="CompiledPart")
 Path = tuple[str | int, ...]
+
+ADHOC_PART = "check"  # the id of the one part a `POST /v1/check` body is
 
 
 class Faults:
@@ -72,7 +75,8 @@ class MeaningContext:
 class CompileContext:
     """What compiling a part may use: its problem's symbols and domain, and, for a bank part, its document,
     its model's derivation and the expression parts compiled before it (`expressions`). A `POST /v1/check`
-    body is a one-part problem with no document (`doc` None): the same compile reads it."""
+    body is a one-part problem with no document (`doc` None), its part `ADHOC_PART`: the same compile
+    reads it."""
 
     table: Mapping[str, sympy.Symbol]
     specs: Mapping[str, SymbolSpec]

@@ -15,7 +15,15 @@ from physics.choice import MAX_CHOICES, Choice, ChoiceQuestion, label
 from physics.errors import SpecError
 from physics.verdict import Outcome, Reason
 from problems.fields import PART_ID, Attempts, CheckBody, RequestText, Strict, Text
-from problems.kinds.base import CheckResult, CompileContext, MeaningContext, Path, Reference, explain
+from problems.kinds.base import (
+    ADHOC_PART,
+    CheckResult,
+    CompileContext,
+    MeaningContext,
+    Path,
+    Reference,
+    explain,
+)
 
 if TYPE_CHECKING:
     from problems.schema import ProblemDocument
@@ -47,7 +55,9 @@ class ChoiceCheckIn(CheckBody):
     choices: Annotated[list[ChoiceDecl], Field(min_length=2, max_length=MAX_CHOICES)]
 
     def job(self) -> QuestionJob:
-        return QuestionJob(self.answer, choice_question(self.choices, ("choices",)))
+        # A one-part problem without a document, compiled as a bank part is (its faults at `choices`).
+        part = ChoicePart.model_construct(id=ADHOC_PART, kind="choice", prompt="", choices=self.choices)
+        return CHOICE.compile(part, (), CompileContext({}, {}, ())).job(self.answer)
 
 
 @dataclass(frozen=True)
@@ -74,14 +84,6 @@ class CompiledChoicePart:
         return QuestionJob(answer, self.multiple)
 
 
-def choice_question(choices: Sequence[ChoiceDecl], path: Path) -> ChoiceQuestion:
-    """The question a part's (or an ad-hoc check's) choices make; SpecError at `path` unless one is right."""
-    right = [j for j, choice in enumerate(choices) if choice.correct]
-    if len(right) != 1:
-        raise SpecError(f"mark exactly one choice correct: true ({len(right)} are)", path)
-    return ChoiceQuestion(tuple(Choice(choice.text, choice.feedback) for choice in choices), right[0])
-
-
 class ChoiceKind:
     name = "choice"
     expression_answer = False
@@ -106,7 +108,11 @@ class ChoiceKind:
                 )
 
     def compile(self, part: ChoicePart, path: Path, context: CompileContext) -> CompiledChoicePart:
-        return CompiledChoicePart(part.id, choice_question(part.choices, (*path, "choices")))
+        right = [j for j, choice in enumerate(part.choices) if choice.correct]
+        if len(right) != 1:
+            raise SpecError(f"mark exactly one choice correct: true ({len(right)} are)", (*path, "choices"))
+        choices = tuple(Choice(choice.text, choice.feedback) for choice in part.choices)
+        return CompiledChoicePart(part.id, ChoiceQuestion(choices, right[0]))
 
     def student_view(self, part: ChoicePart, doc: ProblemDocument) -> dict[str, Any]:
         choices = [{"label": label(j), "text": choice.text} for j, choice in enumerate(part.choices)]

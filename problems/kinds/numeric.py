@@ -1,5 +1,6 @@
-"""Numeric parts: a number with units, evaluated per student from an expression (a symbolic part or a
-model quantity) at their given values, within a tolerance."""
+"""Numeric parts: a number with units, within a tolerance of the expected value, which is either evaluated
+per student from an expression (a symbolic part or a model quantity) at their given values, or stated
+(`value`, the same for every student, exact as written: a `POST /v1/check` body is such a part)."""
 
 from __future__ import annotations
 
@@ -10,7 +11,15 @@ from functools import partial
 from typing import TYPE_CHECKING, Annotated, Any, Literal
 
 import sympy
-from pydantic import Field, StrictBool
+from pydantic import (
+    Field,
+    SerializerFunctionWrapHandler,
+    StrictBool,
+    ValidationInfo,
+    field_validator,
+    model_serializer,
+)
+from pydantic_core import PydanticCustomError
 
 from physics.checking import NumericJob
 from physics.dimensions import DIMENSIONLESS
@@ -33,7 +42,15 @@ from problems.fields import (
     Text,
     ToleranceDecl,
 )
-from problems.kinds.base import CheckResult, CompileContext, MeaningContext, Path, Reference, explain
+from problems.kinds.base import (
+    ADHOC_PART,
+    CheckResult,
+    CompileContext,
+    MeaningContext,
+    Path,
+    Reference,
+    explain,
+)
 from problems.variants import evaluate_reference, format_number, si_values, unit_scale
 
 if TYPE_CHECKING:
@@ -60,7 +77,10 @@ class NumericPart(Strict):
     id: Annotated[str, Field(pattern=PART_ID, max_length=64)]
     kind: Literal["numeric"]
     prompt: Text
-    of: Name
+    # The expected value: stated in `units` (`value`, the same for every student, exact as written), or
+    # `of` a symbolic part or model quantity, evaluated at each student's given values. Exactly one.
+    value: ExactNumber | None = None
+    of: Annotated[Name | None, Field(validate_default=True)] = None  # checked after `value`
     units: Annotated[str, Field(min_length=1, max_length=100)]
     tolerance: ToleranceDecl = DEFAULT_TOLERANCE_DECL
     units_required: bool = True
@@ -68,14 +88,33 @@ class NumericPart(Strict):
     units_system: Literal["SI"] | None = None  # "SI": refuse answers in ft, lb, atm, …
     max_attempts: Attempts | None = None
 
+    @field_validator("of")
+    @classmethod
+    def _of_or_value(cls, of: str | None, info: ValidationInfo) -> str | None:
+        """`of` is required unless `value` is given (a missing `of` is reported where it always was)."""
+        if "value" not in info.data:
+            return of  # an unreadable value is reported at `value`
+        if of is None and info.data["value"] is None:
+            raise PydanticCustomError("missing", "required unless value is given")
+        if of is not None and info.data["value"] is not None:
+            raise ValueError("give of or value, not both")
+        return of
+
+    @model_serializer(mode="wrap")
+    def _dump(self, handler: SerializerFunctionWrapHandler) -> dict[str, Any]:
+        # The one of `of` and `value` not given is left out: a document dumps (and hashes, so its stored
+        # version holds) as it did before parts could state a value.
+        dumped: dict[str, Any] = handler(self)
+        return {key: item for key, item in dumped.items() if item is not None or key not in {"of", "value"}}
+
     @property
     def dimensionless(self) -> bool:
         """`units: "1"` asks for a pure number."""
-        return self.units == "1"
+        return is_pure_number(self.units)
 
 
 class NumericCheckIn(CheckBody):
-    """An ad-hoc numeric check: the expected value in `units`, as a numeric part's reference is."""
+    """An ad-hoc numeric check: the expected value in `units`, as a numeric part's stated `value` is."""
 
     kind: Literal["numeric"]
     answer: RequestText
@@ -87,51 +126,82 @@ class NumericCheckIn(CheckBody):
     units_system: Literal["SI"] | None = None  # "SI": refuse answers in ft, lb, atm, …
 
     def job(self) -> NumericJob:
-        spec = NumericSpec(
-            expected=self.expected,
-            units=self.units,
-            units_required=self.units_required,
-            tolerance=(self.tolerance or DEFAULT_TOLERANCE_DECL).tolerance(),
-            arithmetic=self.arithmetic,
-            units_system=self.units_system,
-        )
-        return NumericJob(answer=self.answer, spec=spec)
+        return adhoc_part(self).job(self.answer)
+
+
+def adhoc_part(body: NumericCheckIn) -> CompiledNumericPart:
+    """An ad-hoc check as the one part of a problem without a document, its `expected` the part's stated
+    `value` (exact, all its digits), compiled as a bank part is; SpecError at the body's path."""
+    # The body was validated as sent; the part is only its other shape (nothing stripped).
+    part = NumericPart.model_construct(
+        id=ADHOC_PART,
+        kind="numeric",
+        prompt="",
+        value=body.expected,
+        units="1" if body.units is None else body.units,  # no units: a pure number, as `units: "1"` asks
+        tolerance=body.tolerance or DEFAULT_TOLERANCE_DECL,
+        units_required=body.units_required,
+        arithmetic=body.arithmetic,
+        units_system=body.units_system,
+    )
+    try:
+        return NUMERIC.compile(part, (), CompileContext({}, {}, ()))
+    except SpecError as error:  # at the body's path: the part's `value` is the body's `expected`
+        path = tuple("expected" if name == "value" else name for name in error.path)
+        raise SpecError(error.message, path) from None
+
+
+@dataclass(frozen=True)
+class Evaluated:
+    """An expected value that depends on the student: `expr` (in SI) at their given values."""
+
+    of: str
+    expr: sympy.Expr
+    document: ProblemDocument = field(repr=False)
+    table: Mapping[str, sympy.Symbol] = field(repr=False)
 
 
 @dataclass(frozen=True)
 class CompiledNumericPart:
-    """A numeric part: its expression, evaluated per student at their given values."""
+    """A numeric part: its expected value evaluated per student, or stated (a Decimal in `units`, exact)."""
 
     id: str
-    of: str
-    expr: sympy.Expr
+    value: Evaluated | Decimal
     units: str
     units_required: bool
     tolerance: Tolerance
-    document: ProblemDocument = field(repr=False)
-    table: Mapping[str, sympy.Symbol] = field(repr=False)
     derived: bool = False  # its expression is a model quantity derived by the engine
     arithmetic: bool = True
     units_system: str | None = None
 
     @property
-    def expression(self) -> sympy.Expr:
-        return self.expr
+    def expression(self) -> sympy.Expr | None:
+        return self.value.expr if isinstance(self.value, Evaluated) else None
 
     def prepare(self) -> None:
         return None  # nothing is computed lazily
 
     def solution(self) -> Reference:
-        """The expression the value is evaluated from."""
-        return Reference(sympy.sstr(self.expr), sympy.latex(self.expr), self.units)
+        """The expression the value is evaluated from, or the value stated."""
+        if isinstance(self.value, Evaluated):
+            expr = self.value.expr
+            return Reference(sympy.sstr(expr), sympy.latex(expr), self.units)
+        text = format_number(self.value)
+        mantissa, times_ten, power = text.partition(" × 10^")
+        latex = rf"{mantissa} \times 10^{{{power}}}" if times_ten else text
+        return Reference(text, latex, self.units)
 
-    def reference(self, variant: Variant) -> Decimal:
-        """The expected value for this student, in `units`, to 12 significant figures."""
-        values = si_values(self.document, variant, self.table)
-        return evaluate_reference(self.expr, values, self.units, where=self.id)
+    def reference(self, variant: Variant | None) -> Decimal:
+        """The expected value for this student, in `units`: stated, or evaluated to 12 significant figures."""
+        if isinstance(self.value, Decimal):
+            return self.value
+        if variant is None:
+            raise ValueError(f"part {self.id!r} is evaluated per student: its value needs their variant")
+        values = si_values(self.value.document, variant, self.value.table)
+        return evaluate_reference(self.value.expr, values, self.units, where=self.id)
 
-    def spec(self, variant: Variant) -> NumericSpec:
-        dimensionless = self.units.strip() == "1"
+    def spec(self, variant: Variant | None) -> NumericSpec:
+        dimensionless = is_pure_number(self.units)
         return NumericSpec(
             expected=self.reference(variant),
             units=None if dimensionless else self.units,
@@ -142,13 +212,9 @@ class CompiledNumericPart:
         )
 
     def question(self, variant: Variant | None = None) -> NumericSpec:
-        if variant is None:
-            raise ValueError(f"part {self.id!r} is numeric: its question depends on the student's variant")
         return self.spec(variant)
 
     def job(self, answer: str, variant: Variant | None = None) -> NumericJob:
-        if variant is None:
-            raise ValueError(f"part {self.id!r} is numeric: its job depends on the student's variant")
         return NumericJob(answer, self.spec(variant))
 
 
@@ -158,7 +224,11 @@ class NumericKind:
 
     def check_meaning(self, part: NumericPart, path: Path, context: MeaningContext) -> None:
         out, quantities = context.out, context.quantities
-        if part.of not in context.expression_parts and (quantities is None or part.of not in quantities):
+        if (
+            part.of is not None
+            and part.of not in context.expression_parts
+            and (quantities is None or part.of not in quantities)
+        ):
             out.add((*path, "of"), f"{part.of!r} is neither a symbolic part nor a model quantity")
         if not part.dimensionless:
             out.attempt(partial(unit_dimension, part.units, (*path, "units")))
@@ -166,32 +236,32 @@ class NumericKind:
                 out.attempt(partial(si_units_at, part.units, (*path, "units")))
 
     def compile(self, part: NumericPart, path: Path, context: CompileContext) -> CompiledNumericPart:
-        derived, doc = context.derived, context.doc
-        if doc is None:
-            raise SpecError(f"{part.of!r} is evaluated at a problem's given values", (*path, "of"))
-        if part.of in context.expressions:
-            expr, from_model = context.expressions[part.of]
-        elif derived is not None and part.of in derived.quantities:
-            expr, from_model = derived.quantities[part.of], True
-        else:
-            raise SpecError(f"{part.of!r} is neither a symbolic part nor a model quantity", (*path, "of"))
-        missing = sorted(s.name for s in expr.free_symbols if s.name not in doc.given)
-        if missing:
-            raise SpecError(f"needs given values for {', '.join(missing)}", (*path, "of"))
-        _require_dimension(expr, part, context.specs, context.table, path)
-        return CompiledNumericPart(
+        value: Evaluated | Decimal
+        if part.of is not None:
+            value, derived = _evaluated(part, part.of, path, context)
+        elif part.value is not None:
+            value, derived = part.value, False
+        else:  # the schema requires one of them
+            raise SpecError("needs of or value", path)
+        compiled = CompiledNumericPart(
             part.id,
-            part.of,
-            expr,
+            value,
             part.units,
             part.units_required,
             part.tolerance.tolerance(),
-            doc,
-            context.table,
-            from_model,
+            derived,
             arithmetic=part.arithmetic,
             units_system=part.units_system,
         )
+        if isinstance(value, Decimal):
+            # The same question for every student: made now, so units it cannot use are the part's
+            # fault at its path, not a fault found when a student answers.
+            try:
+                compiled.spec(None)
+            except SpecError as error:
+                fields = tuple("value" if name == "expected" else name for name in error.path)
+                raise SpecError(error.message, (*path, *fields)) from None
+        return compiled
 
     def student_view(self, part: NumericPart, doc: ProblemDocument) -> dict[str, Any]:
         tolerance = {
@@ -206,8 +276,9 @@ class NumericKind:
         """Across students' variants, the reference value (also in other units) accepted, 10 % off rejected."""
         results: list[CheckResult] = []
         sigfigs = part.tolerance.sigfigs
-        dimensionless = part.units.strip() == "1"
-        for index, variant in enumerate(students):
+        dimensionless = is_pure_number(part.units)
+        # A stated value is every student's: one student's checks are all of them.
+        for index, variant in enumerate(students if isinstance(part.value, Evaluated) else students[:1]):
             spec = part.spec(variant)
             reference = spec.expected
             attempts: list[tuple[str, str, bool]] = []
@@ -247,6 +318,29 @@ class NumericKind:
 NUMERIC = NumericKind()
 
 
+def _evaluated(part: NumericPart, of: str, path: Path, context: CompileContext) -> tuple[Evaluated, bool]:
+    """The expression `of` names, to evaluate per student, and whether the model derived it."""
+    derived, doc = context.derived, context.doc
+    if doc is None:
+        raise SpecError(f"{of!r} is evaluated at a problem's given values", (*path, "of"))
+    if of in context.expressions:
+        expr, from_model = context.expressions[of]
+    elif derived is not None and of in derived.quantities:
+        expr, from_model = derived.quantities[of], True
+    else:
+        raise SpecError(f"{of!r} is neither a symbolic part nor a model quantity", (*path, "of"))
+    missing = sorted(s.name for s in expr.free_symbols if s.name not in doc.given)
+    if missing:
+        raise SpecError(f"needs given values for {', '.join(missing)}", (*path, "of"))
+    _require_dimension(expr, part, of, context.specs, context.table, path)
+    return Evaluated(of, expr, doc, context.table), from_model
+
+
+def is_pure_number(units: str) -> bool:
+    """`units: "1"` asks for a pure number."""
+    return units.strip() == "1"
+
+
 def si_units_at(text: str, path: Path) -> None:
     """A part that asks for SI answers must state its own units in SI."""
     try:
@@ -261,6 +355,7 @@ def si_units_at(text: str, path: Path) -> None:
 def _require_dimension(
     expr: sympy.Expr,
     part: NumericPart,
+    of: str,
     specs: Mapping[str, SymbolSpec],
     table: Mapping[str, sympy.Symbol],
     path: Path,
@@ -272,11 +367,11 @@ def _require_dimension(
         return  # a symbol without a declared dimension: nothing to compare against
     except DimensionMismatch as error:
         raise SpecError(
-            f"the expression for {part.of} is dimensionally inconsistent: {error}", (*path, "of")
+            f"the expression for {of} is dimensionally inconsistent: {error}", (*path, "of")
         ) from None
     want = DIMENSIONLESS if part.dimensionless else unit_dimension(part.units)
     if have != want:
-        raise SpecError(f"{part.units} does not match the dimension of {part.of}", (*path, "units"))
+        raise SpecError(f"{part.units} does not match the dimension of {of}", (*path, "units"))
 
 
 def answer_text(value: Decimal, sigfigs: int | None) -> str:

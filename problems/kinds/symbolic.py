@@ -51,6 +51,7 @@ from problems.fields import (
     Text,
 )
 from problems.kinds.base import (
+    ADHOC_PART,
     CheckResult,
     CompileContext,
     MeaningContext,
@@ -135,7 +136,7 @@ def adhoc_part(
     relations = tuple(read_relation(text, table, ("constraints", i)) for i, text in enumerate(constraints))
     # The body was validated as sent; the part is only its other shape (nothing stripped: positions hold).
     part = SymbolicPart.model_construct(
-        id="check",
+        id=ADHOC_PART,
         kind="symbolic",
         prompt="",
         answer=expected,

@@ -134,6 +134,27 @@ def test_physical_constants_are_expected_values_the_check_takes(client, student_
     assert (result["verdict"], result["reason"]) == ("correct", "equivalent"), result
 
 
+FORTY_DIGITS = "1.234567890123456789012345678901234567890"  # as many as `expected` may have
+OFF_IN_THE_30TH = "1.234567890123456789012345678911234567890"  # one unit more in the 30th digit
+
+
+@pytest.mark.parametrize(
+    ("answer", "tolerance", "verdict"),
+    [
+        pytest.param(FORTY_DIGITS, {"abs": 0}, "correct", id="every-digit-exact"),
+        pytest.param(OFF_IN_THE_30TH, {"abs": 0}, "incorrect", id="30th-digit-off-exact"),
+        pytest.param(OFF_IN_THE_30TH, {"rel": "1e-28"}, "correct", id="30th-digit-off-within-rel"),
+        pytest.param(OFF_IN_THE_30TH, {"rel": "1e-30"}, "incorrect", id="30th-digit-off-beyond-rel"),
+        pytest.param("1.23456789012", {"rel": "1e-20"}, "incorrect", id="rounded-to-12-figures"),
+        pytest.param("1.23456789012", {"rel": "1e-11"}, "correct", id="12-figures-within-rel"),
+    ],
+)
+def test_an_expected_value_is_graded_with_all_its_digits(client, student_headers, answer, tolerance, verdict):
+    body = numeric(f"{answer} m", expected=FORTY_DIGITS, units="m", tolerance=tolerance)
+    result = client.post("/v1/check", json=body, headers=student_headers).json()
+    assert result["verdict"] == verdict, result
+
+
 UNREADABLE_NUMBERS = [
     # (where, value, message): the one decimal reader's message, at the field's path
     ("expected", "1e101", "must be 0 or of size from 1e-100 to below 1e101"),
@@ -297,6 +318,10 @@ def test_malformed_json_is_422_in_the_error_shape(client, student_headers):
             id="two-right-choices",
         ),
         pytest.param(choice("A", [{"text": "Up"}, {"text": "Down"}]), "choices", id="no-right-choice"),
+        pytest.param(numeric("4.58 m/s^2", units="blorps"), "units", id="numeric-unknown-unit"),
+        pytest.param(numeric("4.58 m/s^2", units="m/s^"), "units", id="numeric-unreadable-units"),
+        pytest.param(numeric("4.58", units=""), "units", id="numeric-empty-units"),
+        pytest.param(numeric("1 ft", units="ft", units_system="SI"), "units", id="numeric-units-not-si"),
     ],
 )
 def test_unreadable_reference_is_422_naming_the_field(client, student_headers, body, path):

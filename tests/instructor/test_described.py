@@ -11,7 +11,7 @@ from physics.verdict import Outcome
 from problems.compiled import CompiledNumericPart, compile_problem
 from problems.loader import parse_problem
 from problems.variants import fixed_variant
-from tests.problems.documents import spring
+from tests.problems.documents import spring, stated_value
 
 
 @pytest.mark.parametrize("sigfigs", [None, 2, 3, 5])
@@ -33,3 +33,12 @@ def test_a_numeric_reference_is_shown_to_the_figures_its_answers_are_graded_by(s
     if sigfigs is not None:  # what is shown is an answer the part accepts, digit for digit
         verdict = part.spec(variant).grade(shown)
         assert verdict.outcome is Outcome.CORRECT, (shown, verdict)
+
+
+@pytest.mark.parametrize("with_variant", [False, True], ids=["no-student", "a-student"])
+def test_a_stated_value_is_shown_whoever_the_student(with_variant) -> None:
+    doc = parse_problem(stated_value("6.02214076e23", "1"))
+    compiled = compile_problem(doc, use_model=False)
+    info = describe(compiled, fixed_variant(doc, {}) if with_variant else None).parts[0]
+    assert (info.expected, info.expected_full) == ("6.022 × 10^23", "6.02214076 × 10^23")
+    assert info.latex == r"6.02214076 \times 10^{23}"

@@ -64,3 +64,23 @@ def spring_with_choice() -> dict[str, Any]:
     data = spring()
     data["parts"].append(copy.deepcopy(FRICTION_CHOICE))
     return data
+
+
+def stated_value(value: str = "4.5807", units: str = "m/s^2", **part: Any) -> dict[str, Any]:
+    """A problem of one numeric part that states its value (as a `POST /v1/check` body does)."""
+    return {
+        "id": "stated-value",
+        "title": "Stated value",
+        "statement": "The acceleration of the cart is measured.",
+        "symbols": {"a": {"meaning": "acceleration", "dimension": "m/s^2"}},
+        "parts": [
+            {
+                "id": "a_value",
+                "kind": "numeric",
+                "prompt": "What is a?",
+                "value": value,
+                "units": units,
+                **part,
+            }
+        ],
+    }

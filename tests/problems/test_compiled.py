@@ -17,9 +17,10 @@ from problems.compiled import CompiledNumericPart, CompiledProblem, CompiledSymb
 from problems.errors import ProblemInvalid
 from problems.loader import load_bank, parse_problem
 from problems.schema import ProblemDocument
+from problems.selftest import verify_problem
 from problems.student import student_view
 from problems.variants import draw_variant, fixed_variant
-from tests.problems.documents import spring
+from tests.problems.documents import spring, stated_value
 
 
 @cache
@@ -81,6 +82,19 @@ def test_reference_keeps_twelve_significant_figures() -> None:
     assert isinstance(part, CompiledNumericPart)
     value = part.reference(fixed_variant(bank()["skier-friction"], {"alpha": 35, "mu": "0.13"}))
     assert len(value.as_tuple().digits) == 12
+
+
+def test_a_stated_value_is_every_students_with_all_its_digits() -> None:
+    digits = "1.234567890123456789012345678901234567890"
+    doc = parse_problem(stated_value(digits, "m"))
+    part = compile_problem(doc, use_model=False).part("a_value")
+    assert isinstance(part, CompiledNumericPart)
+    students = [draw_variant(doc, 1, name, "s3cret") for name in ("alice", "bob")]
+    assert {part.reference(student) for student in (None, *students)} == {Decimal(digits)}
+    assert (part.expression, part.derived, part.solution().text) == (None, False, digits)
+    report = verify_problem(doc, variants=3, use_model=False)
+    assert report.ok, report.summary()
+    assert {result.check for result in report.problems[0].results} >= {"variant 0", "variant 0 10% off"}
 
 
 def test_dimensionless_numeric_part_asks_for_a_pure_number() -> None:

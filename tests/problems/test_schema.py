@@ -45,6 +45,19 @@ def test_numeric_part_defaults_to_one_percent_and_required_units() -> None:
     assert part.units_required
 
 
+def test_a_numeric_part_may_state_its_value_and_dumps_only_what_it_was_given() -> None:
+    data = spring()
+    del data["parts"][1]["of"]
+    data["parts"][1]["value"] = "6.02214076e23"
+    stated = parse_problem(data, check_meaning=False)
+    part = stated.parts[1]
+    assert isinstance(part, NumericPart) and (part.of, part.value) == (None, Decimal("6.02214076e23"))
+    assert ProblemDocument.model_validate(stated.model_dump(mode="json")) == stated
+    # Neither dump names the one it lacks: a document without `value` dumps (and hashes) as it always did.
+    assert "of" not in stated.model_dump()["parts"][1]
+    assert "value" not in parse_problem(spring(), check_meaning=False).model_dump()["parts"][1]
+
+
 def test_symbolic_part_quantity_defaults_to_its_id() -> None:
     part = parse_problem(spring(), check_meaning=False).parts[0]
     assert isinstance(part, SymbolicPart) and part.quantity_name == "angular_frequency"
@@ -106,6 +119,14 @@ SHAPE_CASES = [
     ),
     pytest.param(_delete("parts.1.units"), {"parts[1].units": "required"}, id="numeric-without-units"),
     pytest.param(_delete("parts.1.of"), {"parts[1].of": "required"}, id="numeric-without-quantity"),
+    pytest.param(
+        _set("parts.1.value", 4.5), {"parts[1].of": "give of or value, not both"}, id="numeric-of-and-value"
+    ),
+    pytest.param(
+        _all(_delete("parts.1.of"), _set("parts.1.value", "1e999")),
+        {"parts[1].value": "must be 0 or of size from 1e-100 to below 1e101"},
+        id="numeric-unreadable-value",
+    ),
     pytest.param(_set("given.m.sigfigs", 0), {"given.m.sigfigs": "must be >= 1"}, id="zero-sigfigs"),
     pytest.param(
         _set("given.m.step", 0.1), {"given.m": "give sigfigs or step, not both"}, id="sigfigs-and-step"
