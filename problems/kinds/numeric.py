@@ -7,7 +7,7 @@ from __future__ import annotations
 from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from decimal import Decimal
-from functools import partial
+from functools import cached_property, lru_cache, partial
 from typing import TYPE_CHECKING, Annotated, Any, Literal
 
 import sympy
@@ -126,23 +126,35 @@ class NumericCheckIn(CheckBody):
     units_system: Literal["SI"] | None = None  # "SI": refuse answers in ft, lb, atm, …
 
     def job(self) -> NumericJob:
-        return adhoc_part(self).job(self.answer)
+        part = adhoc_part(
+            self.expected, self.units, self.units_required, self.tolerance, self.arithmetic, self.units_system
+        )
+        return part.job(self.answer)
 
 
-def adhoc_part(body: NumericCheckIn) -> CompiledNumericPart:
+@lru_cache(maxsize=256)
+def adhoc_part(
+    expected: Decimal,
+    units: str | None,
+    units_required: bool,
+    tolerance: ToleranceDecl | None,
+    arithmetic: bool,
+    units_system: Literal["SI"] | None,
+) -> CompiledNumericPart:
     """An ad-hoc check as the one part of a problem without a document, its `expected` the part's stated
-    `value` (exact, all its digits), compiled as a bank part is; SpecError at the body's path."""
+    `value` (exact, all its digits), compiled as a bank part is (cached: a course re-uses its references);
+    SpecError at the body's path."""
     # The body was validated as sent; the part is only its other shape (nothing stripped).
     part = NumericPart.model_construct(
         id=ADHOC_PART,
         kind="numeric",
         prompt="",
-        value=body.expected,
-        units="1" if body.units is None else body.units,  # no units: a pure number, as `units: "1"` asks
-        tolerance=body.tolerance or DEFAULT_TOLERANCE_DECL,
-        units_required=body.units_required,
-        arithmetic=body.arithmetic,
-        units_system=body.units_system,
+        value=expected,
+        units="1" if units is None else units,  # no units: a pure number, as `units: "1"` asks
+        tolerance=tolerance or DEFAULT_TOLERANCE_DECL,
+        units_required=units_required,
+        arithmetic=arithmetic,
+        units_system=units_system,
     )
     try:
         return NUMERIC.compile(part, (), CompileContext({}, {}, ()))
@@ -201,9 +213,17 @@ class CompiledNumericPart:
         return evaluate_reference(self.value.expr, values, self.units, where=self.id)
 
     def spec(self, variant: Variant | None) -> NumericSpec:
+        return self._stated if isinstance(self.value, Decimal) else self._spec(self.reference(variant))
+
+    @cached_property
+    def _stated(self) -> NumericSpec:
+        """A stated value's question: every student's, made once (by the compile, which checks it)."""
+        return self._spec(self.reference(None))
+
+    def _spec(self, expected: Decimal) -> NumericSpec:
         dimensionless = is_pure_number(self.units)
         return NumericSpec(
-            expected=self.reference(variant),
+            expected=expected,
             units=None if dimensionless else self.units,
             units_required=self.units_required and not dimensionless,
             tolerance=self.tolerance,
