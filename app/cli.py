@@ -19,13 +19,16 @@ def _serve(args: argparse.Namespace, settings: Settings) -> int:
     start_early()  # the workers' fork server loads the checker while this process imports the service
     import uvicorn
 
+    from app.heap import freeze_long_lived
     from app.main import create_app
 
     backend = settings.database_url.split(":", 1)[0]
     print(
         f"physcheck: serving http://{args.host}:{args.port} ({backend}; API docs at /docs)", file=sys.stderr
     )
-    uvicorn.run(create_app(settings), host=args.host, port=args.port, log_config=None, proxy_headers=True)
+    app = create_app(settings)
+    freeze_long_lived()  # the modules and the app: what this process holds until it exits
+    uvicorn.run(app, host=args.host, port=args.port, log_config=None, proxy_headers=True)
     return 0
 
 

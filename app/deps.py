@@ -62,7 +62,7 @@ async def current_principal(
                 "This API key is unknown or revoked; send it as 'Authorization: Bearer <key>'."
             )
         principal = found
-    if _counted_in_memory(services):
+    if counted_in_memory(services):
         wait = budget_wait(services, principal)
     else:
         wait = await run_in_threadpool(budget_wait, services, principal)
@@ -71,7 +71,7 @@ async def current_principal(
     return principal
 
 
-def _counted_in_memory(services: Services) -> bool:
+def counted_in_memory(services: Services) -> bool:
     return isinstance(services.key_limiter, MemoryRateLimiter) and isinstance(
         services.student_limiter, MemoryRateLimiter
     )

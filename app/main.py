@@ -7,16 +7,20 @@ import functools
 import threading
 from collections.abc import AsyncIterator, Callable
 from contextlib import asynccontextmanager
+from typing import Any
 
 import httpx
 from fastapi import FastAPI
 from starlette.concurrency import run_in_threadpool
+from starlette.types import ASGIApp
 
 from app.authoring import AuthoringPool
 from app.catalog import Catalog
+from app.check_fast_path import CheckFastPath
 from app.deps import budget_wait
 from app.errors import install_error_handlers
 from app.grading.pool import GradingPool
+from app.heap import freeze_long_lived
 from app.instructor import router as instructor_routes
 from app.lti import router as lti_routes
 from app.lti.context import LtiContext
@@ -39,6 +43,20 @@ def _warm_up(catalog: Catalog) -> None:
     # The unit table a numeric check's spec is read against (a fifth of a CPU-second), built after
     # ready like the opening of stored problems, rather than by the first numeric check.
     spelling_table()
+    freeze_long_lived()  # the bank, compiled and opened, stays until the process exits
+
+
+class Physcheck(FastAPI):
+    """FastAPI with two layers outside its own stack: RequestContext (every request's id, body cap and
+    log line) and CheckFastPath (the common `POST /v1/check`, which skips the stack inside)."""
+
+    def __init__(self, *, max_body_bytes: int, **kwargs: Any):
+        self.max_body_bytes = max_body_bytes
+        super().__init__(**kwargs)
+
+    def build_middleware_stack(self) -> ASGIApp:
+        inner = super().build_middleware_stack()
+        return RequestContext(CheckFastPath(inner, self), max_bytes=self.max_body_bytes)
 
 
 def create_app(
@@ -120,7 +138,8 @@ def create_app(
             authoring.close()
             storage.close()
 
-    app = FastAPI(
+    app = Physcheck(
+        max_body_bytes=settings.max_body_bytes,
         title="physcheck",
         version="1",
         summary="Checks physics answers: symbolic, numeric with units, against engine-derived references.",
@@ -130,7 +149,6 @@ def create_app(
     )
     install_docs(app)
     install_error_handlers(app)
-    app.add_middleware(RequestContext, max_bytes=settings.max_body_bytes)
     app.include_router(health.router)
     app.include_router(check.router)
     app.include_router(problems.router)

@@ -84,7 +84,7 @@ class RequestContext:
                 if buffered is None:
                     await self._refuse(send_with_id)
                     return
-                receive = _replay(buffered, receive)
+                receive = replay(buffered, receive)
             try:
                 await self.app(scope, counting_receive, send_with_id)
             except BodyTooLarge:
@@ -124,7 +124,7 @@ class RequestContext:
         await _send_error(send, 413, "payload_too_large", f"The request body is over {self.max_bytes} bytes.")
 
 
-def _replay(first: Message, receive: Receive) -> Receive:
+def replay(first: Message, receive: Receive) -> Receive:
     pending = [first]
 
     async def replaying_receive() -> Message:

@@ -27,7 +27,9 @@ class Settings(BaseSettings):
     check_queue_size: int = Field(default=64, ge=1)
     # Checks one student (or LMS session) may have running at once; instructor API keys are not limited.
     student_checks_in_flight: int = Field(default=2, ge=1)
-    worker_max_tasks: int = Field(default=500, ge=1)
+    # Recycling bounds a slow leak, but a new worker must compile again the references it had cached:
+    # at 500, workers under load were replaced every second or two and stalled checks for 100+ ms.
+    worker_max_tasks: int = Field(default=10_000, ge=1)
 
     # Above the answer limit on purpose: an over-long answer gets an `invalid` verdict, not a 413.
     upload_timeout_seconds: float = Field(default=120.0, gt=0)

@@ -7,6 +7,8 @@ warm-up jobs, so workers inherit them on fork instead of each building them agai
 from __future__ import annotations
 
 from app.grading.worker import grade, warm_up_jobs
+from app.heap import freeze_long_lived
 
 for _job in warm_up_jobs():
     grade(_job)
+freeze_long_lived()  # before any fork: every worker inherits the checker frozen

@@ -1,0 +1,122 @@
+"""`POST /v1/check` answered without FastAPI's per-request machinery when nothing about it is unusual.
+
+The route (app/routers/check.py) defines the endpoint: it is documented, and it answers every request
+this layer passes on. This layer answers only the common case, with the same parts the route uses: a
+JSON body that validates as a CheckIn, a bearer key found active moments ago (`KeyStore.cached`), and
+rate limits counted in memory. Anything else (no key, a key to look up, a session, a malformed body, a
+shared rate limit) goes on to the app with the body replayed, untouched by this layer, so every refusal
+is made in one place; a fault while grading is answered by the app's own exception handlers.
+
+Why it exists: routing, dependency solving and the exception layers cost the server more CPU per check
+than the check costs its worker, and the server's one event loop serves every request (bench/targets.py).
+"""
+
+from __future__ import annotations
+
+import inspect
+import json
+from typing import Any
+
+from fastapi import FastAPI
+from pydantic import TypeAdapter, ValidationError
+from starlette.requests import Request
+from starlette.responses import Response
+from starlette.types import ASGIApp, Message, Receive, Scope, Send
+
+from app.auth import Principal, bearer_token
+from app.deps import budget_wait, counted_in_memory
+from app.errors import RateLimited
+from app.middleware import replay
+from app.schemas.check import CheckIn
+from app.services import Services
+
+CHECK_PATH = "/v1/check"
+_CHECK_IN: TypeAdapter[Any] = TypeAdapter(CheckIn)
+_JSON_HEADERS = [(b"content-type", b"application/json")]
+
+
+class CheckFastPath:
+    def __init__(self, app: ASGIApp, application: FastAPI):
+        self.app = app  # everything else: FastAPI's own stack
+        self.application = application  # its state (the services) and exception handlers
+
+    async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
+        if scope["type"] != "http" or scope["path"] != CHECK_PATH or scope["method"] != "POST":
+            await self.app(scope, receive, send)
+            return
+        services: Services | None = getattr(self.application.state, "services", None)
+        principal = None if services is None else _known_caller(services, scope)
+        if principal is None:
+            await self.app(scope, receive, send)
+            return
+        assert services is not None
+        message = await _whole_body(receive)
+        check_in = _valid_body(message)
+        if check_in is None:
+            await self.app(scope, replay(message, receive), send)
+            return
+        try:
+            wait = budget_wait(services, principal)
+            if wait is not None:
+                raise RateLimited(f"Too many requests; try again in {wait} s.", retry_after=wait)
+            verdict = await services.pool.check(check_in.job(), principal.grading_share)
+        except Exception as error:
+            await self._handled(error, scope, receive, send)
+            return
+        body = services.verdict_json(verdict)
+        headers = [*_JSON_HEADERS, (b"content-length", str(len(body)).encode())]
+        await send({"type": "http.response.start", "status": 200, "headers": headers})
+        await send({"type": "http.response.body", "body": body})
+
+    async def _handled(self, error: Exception, scope: Scope, receive: Receive, send: Send) -> None:
+        """The response the app's exception handler for `error` gives (the route's would be the same)."""
+        handlers = self.application.exception_handlers
+        handler = next(handlers[kind] for kind in type(error).__mro__ if kind in handlers)
+        response = handler(Request(scope, receive), error)
+        if inspect.isawaitable(response):
+            response = await response
+        assert isinstance(response, Response)
+        await response(scope, receive, send)
+
+
+def _known_caller(services: Services, scope: Scope) -> Principal | None:
+    """The caller when it is answered from memory and counted in memory; else None (the app decides)."""
+    if not counted_in_memory(services):
+        return None
+    authorization = content_type = None
+    for name, value in scope["headers"]:
+        if name == b"authorization":
+            authorization = value
+        elif name == b"content-type":
+            content_type = value
+    if authorization is None or content_type is None:
+        return None
+    if content_type.split(b";", 1)[0].strip().lower() != b"application/json":
+        return None
+    token = bearer_token(authorization.decode("latin-1"))
+    return None if token is None else services.keys.cached(token)
+
+
+async def _whole_body(receive: Receive) -> Message:
+    """The request body as one message (the body cap is counted by RequestContext's receive), or the
+    first message that is not body, such as a disconnect."""
+    message = await receive()
+    if message["type"] != "http.request" or not message.get("more_body", False):
+        return message
+    parts = [message.get("body", b"")]
+    while message.get("more_body", False):
+        message = await receive()
+        if message["type"] != "http.request":
+            return message
+        parts.append(message.get("body", b""))
+    return {"type": "http.request", "body": b"".join(parts), "more_body": False}
+
+
+def _valid_body(message: Message) -> Any:
+    """The CheckIn the body validates as, read as FastAPI reads it; None for anything else."""
+    if message["type"] != "http.request":
+        return None
+    try:
+        return _CHECK_IN.validate_python(json.loads(message.get("body", b"")))
+    except (ValueError, ValidationError, RecursionError):  # JSONDecodeError and UnicodeDecodeError too
+        return None
