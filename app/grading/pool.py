@@ -163,16 +163,18 @@ class GradingPool:
         except FutureTimeout:
             return Preview(None, InputProblem(TIMEOUT_MESSAGE))
 
-    async def check(self, job: CheckJob, owner: str | None = None) -> Verdict:
+    async def check(self, job: CheckJob, owner: str | None = None, *, key: str | None = None) -> Verdict:
         """Grade in a worker; a timeout is an `invalid` verdict (the answer's), never a hang; a fault of
-        the grader raises Unavailable or GraderFault, never a verdict."""
+        the grader raises Unavailable or GraderFault, never a verdict. `key` is `repr(job)`, when the
+        caller keeps it with the job."""
         if len(job.answer) > self._max_answer_chars:
             # Refused before any worker sees it: the cheapest hostile answer is the longest.
             limit = self._max_answer_chars
             return Verdict.invalid(
                 TooLarge(f"The answer is longer than {limit} characters; shorten it.", limit)
             )
-        key = repr(job)  # a part job's repr shows its digest, not its payload
+        if key is None:
+            key = repr(job)  # a part job's repr shows its digest, not its payload
         known = self._verdicts.get(key)
         if known is not None:
             self._verdicts.move_to_end(key)

@@ -155,3 +155,22 @@ def test_the_rate_limit_applies_on_the_fast_path(client, grading_pool, settings,
     assert statuses == [200, 200, 200, 429, 429]
     assert refused.json()["error"]["code"] == "rate_limited"
     assert int(refused.headers["retry-after"]) >= 1
+
+
+def test_a_body_sent_again_is_answered_from_its_remembered_job_and_the_memory_stays_bounded(
+    client, known_key, monkeypatch
+):
+    monkeypatch.setattr("app.check_fast_path.REMEMBERED_BODIES", 3)
+    fast = CheckFastPath(Inner(), client.app)
+    over = TestClient(RequestContext(fast, max_bytes=2 * 1024 * 1024))
+    headers = {**known_key, **JSON}
+    first = body(symbolic("m g sin(θ)cos(θ)/(M + m sin^2 θ)"))
+    verdicts = [over.post("/v1/check", content=first, headers=headers).json() for _ in range(2)]
+    assert verdicts[0] == verdicts[1] and verdicts[0]["reason"] == "sign_error"
+    for n in range(5):
+        over.post("/v1/check", content=body(numeric(f"{n} m/s^2")), headers=headers)
+    assert len(fast._jobs) == 3
+    assert first not in fast._jobs
+    huge = body(symbolic("m" + " " * 5000))
+    assert over.post("/v1/check", content=huge, headers=headers).status_code == 200
+    assert huge not in fast._jobs
