@@ -88,7 +88,7 @@ class Builder:
             for operator, factor in node.rest:
                 value = self._build(factor)
                 if operator == "/":
-                    value = sympy.Pow(value, -1)
+                    value = _reciprocal(value)
                 result = self._checked(sympy.Mul(result, value))
             return result
         if isinstance(node, Power):
@@ -170,3 +170,12 @@ class Builder:
                 if abs(int(exp.p)) > self._limits.max_exponent * int(exp.q):
                     raise self._too_large(f"An exponent is too large (at most {self._limits.max_exponent}).")
         return expr
+
+
+def _reciprocal(value: sympy.Expr) -> sympy.Expr:
+    """1/value. A nonzero exact number is inverted directly: the object `Pow(value, -1)` would return,
+    without the sign queries that sympy's Pow makes of it first (over a tenth of a millisecond for each
+    number not met before, such as the 7 of `x/7`)."""
+    if value.is_Rational and value.p != 0:
+        return cast(sympy.Expr, sympy.Rational(value.q, value.p))
+    return cast(sympy.Expr, sympy.Pow(value, -1))

@@ -106,10 +106,22 @@ class _Unsupported(Exception):
 
 
 class FloatEvaluator:
-    def __init__(self, columns: Mapping[sympy.Symbol, Floats], size: int) -> None:
+    def __init__(
+        self,
+        columns: Mapping[sympy.Symbol, Floats],
+        size: int,
+        known: Mapping[sympy.Basic, Floats] | None = None,
+    ) -> None:
         self._columns = columns
         self._size = size
-        self._cache: dict[sympy.Basic, Floats] = {}
+        # Subtrees already evaluated over the same columns (the reference's, which answers share).
+        # Values are never changed in place, so they may be shared.
+        self._cache: dict[sympy.Basic, Floats] = dict(known or {})
+
+    @property
+    def known(self) -> Mapping[sympy.Basic, Floats]:
+        """Every subtree evaluated so far (to start another evaluator over the same columns from)."""
+        return self._cache
 
     def __call__(self, expr: sympy.Basic) -> Floats | None:
         """Values at every point (nan where undefined or not real); None if float64 cannot tell."""

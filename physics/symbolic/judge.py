@@ -38,11 +38,11 @@ from physics.symbolic.compare import (
     negated,
 )
 from physics.symbolic.dimensional import DimensionMismatch, UnknownDimension, expression_dimension
-from physics.symbolic.floats import AGREE, DIFFER, FloatEvaluator, Floats, agrees, differs, in_range
+from physics.symbolic.floats import AGREE, DIFFER, Floats, agrees, differs, in_range
 from physics.symbolic.limits import breaks_limit
 from physics.symbolic.numeric import ONE, RND, Column, Evaluator, complex_value
 from physics.symbolic.proof import proves_equal
-from physics.symbolic.reference import PreparedReference, exact_numbers, rename_symbols
+from physics.symbolic.reference import PreparedReference, exact_numbers, over_context, rename_symbols
 from physics.verdict import Judgement, Reason
 
 CORRECT = "Correct."
@@ -67,6 +67,8 @@ def _normalize_answer(answer: sympy.Basic, reference: PreparedReference) -> symp
     )
     if not isinstance(answer, sympy.Expr) or isinstance(answer, relation):
         raise ParseError("the answer must be an expression, not an equation or a relation")
+    if over_context(answer, reference.context):  # a parsed answer: nothing to rename or make exact
+        return answer
     try:
         renamed = rename_symbols(exact_numbers(answer), reference.context)
     except KeyError as missing:
@@ -197,8 +199,7 @@ def diagnose(answer: sympy.Expr, values: Column, reference: PreparedReference, u
 
 def _refuted_at(answer: sympy.Expr, reference: PreparedReference, index: int) -> bool:
     """The answer, in multiprecision at one sample point, is defined there and differs (rule 1)."""
-    point = {s: [reference.sample.columns[s][index]] for s in reference.sample.symbols}
-    value = Evaluator(point, 1, PREC)(answer)[0]
+    value = reference.point_evaluator((index,))(answer)[0]
     (expected,) = reference.values_at((index,))
     return (
         value is not None
@@ -214,7 +215,7 @@ def _first_look(answer: sympy.Expr, reference: PreparedReference) -> tuple[bool 
     floats = reference.floats
     if not floats.usable:
         return None, None
-    values = FloatEvaluator(floats.columns, reference.sample.size)(answer)
+    values = reference.float_evaluator()(answer)
     if values is None or not in_range(values):
         return None, None
     if agrees(values, floats.values, floats.scale):
@@ -227,12 +228,11 @@ def _first_look(answer: sympy.Expr, reference: PreparedReference) -> tuple[bool 
 
 
 def _at_points(
-    exprs: tuple[sympy.Expr, ...], reference: PreparedReference, indexes: tuple[int, ...]
+    answer: sympy.Expr, reference: PreparedReference, indexes: tuple[int, ...], *targets: sympy.Expr
 ) -> list[Column]:
-    """The expressions in multiprecision (PREC) at a few sample points."""
-    columns = {s: [reference.sample.columns[s][i] for i in indexes] for s in reference.sample.symbols}
-    evaluate = Evaluator(columns, len(indexes), PREC)
-    return [evaluate(expr) for expr in exprs]
+    """The answer and reference-side `targets` in multiprecision (PREC) at a few sample points."""
+    evaluate = reference.point_evaluator(indexes, targets)
+    return [evaluate(answer), *(evaluate(target) for target in targets)]
 
 
 def _same_as(
@@ -249,7 +249,7 @@ def _same_as(
         return None
     scale = reference.floats.scale
     if agrees(values, targets, scale):
-        mine, theirs = _at_points((answer, target), reference, _CHECK_POINTS)
+        mine, theirs = _at_points(answer, reference, _CHECK_POINTS, target)
         same = all(
             a is not None and b is not None and close(a, b, reference.scale, TOLERANCE_BITS)
             for a, b in zip(mine, theirs, strict=True)
@@ -257,7 +257,7 @@ def _same_as(
         return True if same else None
     suspects = np.flatnonzero(differs(values, targets, scale))
     if suspects.size:
-        (a,), (b,) = _at_points((answer, target), reference, (int(suspects[0]),))
+        (a,), (b,) = _at_points(answer, reference, (int(suspects[0]),), target)
         if a is not None and b is not None and not close(a, b, reference.scale, TOLERANCE_BITS):
             return False
     return None
@@ -282,7 +282,7 @@ def _constant_factor(answer: sympy.Expr, values: Floats, reference: PreparedRefe
         indexes = (0, far)
     else:
         return None
-    (mine,) = _at_points((answer,), reference, indexes)
+    (mine,) = _at_points(answer, reference, indexes)
     theirs = reference.values_at(indexes)
     if any(v is None for v in (*mine, *theirs)):
         return None
