@@ -58,7 +58,7 @@ _NUDGE_BITS = 60
 _NUDGE_TOLERANCE_BITS = 40
 
 
-def _normalize_answer(answer: sympy.Basic, reference: PreparedReference) -> sympy.Expr:
+def _require_expression(answer: sympy.Basic) -> sympy.Expr:
     # Not `Boolean`: sympy's Symbol is a Boolean too, and a bare `m` is a fine answer.
     relation = (
         sympy.core.relational.Relational,
@@ -67,6 +67,11 @@ def _normalize_answer(answer: sympy.Basic, reference: PreparedReference) -> symp
     )
     if not isinstance(answer, sympy.Expr) or isinstance(answer, relation):
         raise ParseError("the answer must be an expression, not an equation or a relation")
+    return answer
+
+
+def _normalize_answer(answer: sympy.Basic, reference: PreparedReference) -> sympy.Expr:
+    answer = _require_expression(answer)
     if over_context(answer, reference.context):  # a parsed answer: nothing to rename or make exact
         return answer
     try:
@@ -335,7 +340,19 @@ def judge_symbolic(answer: sympy.Expr, reference: PreparedReference) -> Judgemen
 
     Raises UnknownSymbol (an AnswerError) for a name the context does not declare.
     """
-    expr = _normalize_answer(answer, reference)
+    expr = _require_expression(answer)
+    if not over_context(expr, reference.context):
+        return _judge(_normalize_answer(expr, reference), reference)
+    # A parsed answer: judged once per expression and reference (the judge is deterministic).
+    known = reference.judgement_of(expr)
+    if known is None:
+        known = _judge(expr, reference)
+        reference.remember(expr, known)
+    return known
+
+
+def _judge(expr: sympy.Expr, reference: PreparedReference) -> Judgement:
+    """judge_symbolic of an answer already over the context's symbols, with exact numbers."""
     if expr == reference.expected:
         return Judgement(True, Reason.EQUIVALENT, CORRECT)
     decided, floats = _first_look(expr, reference)
