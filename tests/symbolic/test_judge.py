@@ -9,6 +9,7 @@ import sympy
 
 from physics.errors import ParseError, UnknownSymbol
 from physics.symbolic import bench_equivalence_cases, judge_symbolic, prepare_reference
+from physics.symbolic.reference import MAX_JUDGEMENTS
 from physics.verdict import Reason
 from tests.symbolic.support import context, g, m, sin, theta
 
@@ -61,3 +62,38 @@ BENCH_VERDICTS = [True, True, False, True, False, True, False, True, True, True]
 def test_bench_cases_get_their_known_verdicts(case, correct):
     answer, expected, ctx = case
     assert judge_symbolic(answer, prepare_reference(expected, ctx)).correct is correct
+
+
+def test_a_remembered_judgement_belongs_to_its_reference_and_its_expression():
+    answer = m * g * sin(theta)
+    right = prepare_reference(answer, context(answer))
+    negated = prepare_reference(-answer, context(-answer))
+    for _ in range(2):  # the second round is answered from what each reference remembers
+        assert judge_symbolic(answer, right).correct
+        assert judge_symbolic(answer, negated).reason is Reason.SIGN_ERROR
+        assert judge_symbolic(2 * answer, right).reason is Reason.CONSTANT_FACTOR
+        assert judge_symbolic(-answer, right).reason is Reason.SIGN_ERROR
+
+
+def test_an_answer_over_a_same_named_foreign_symbol_is_not_taken_for_a_remembered_one():
+    # m without the context's assumptions: renamed to the context's m (the same judgement), never
+    # looked up as if it were the context's m, and never stored under the foreign tree.
+    expected = m * g
+    reference = prepare_reference(expected, context(expected))
+    foreign = sympy.Symbol("m") * g
+    assert foreign != expected
+    assert judge_symbolic(expected, reference).correct
+    assert judge_symbolic(foreign, reference).correct
+    assert foreign not in reference._judgements
+
+
+def test_a_reference_remembers_a_bounded_number_of_judgements_and_pickles_none():
+    expected = m * g
+    reference = prepare_reference(expected, context(expected))
+    for k in range(MAX_JUDGEMENTS + 10):
+        assert judge_symbolic((k + 2) * m * g, reference).reason is Reason.CONSTANT_FACTOR
+    assert len(reference._judgements) == MAX_JUDGEMENTS
+    assert 2 * m * g not in reference._judgements  # the oldest went first
+    state = pickle.loads(pickle.dumps(reference)).__dict__
+    assert not {"_judgements", "_point_subtrees", "_float_subtrees"} & state.keys()
+    assert judge_symbolic(2 * m * g, pickle.loads(pickle.dumps(reference))).reason is Reason.CONSTANT_FACTOR
