@@ -27,6 +27,7 @@ from physics.dimensions import Dimension
 from physics.errors import AnswerError, SpecError
 from physics.mathinput import InputLimits, parse_expression
 from physics.numeric import NumericSpec
+from physics.pickling import pickled_by_fields
 from physics.symbolic import (
     PreparedReference,
     SymbolicContext,
@@ -40,6 +41,7 @@ from physics.units import unit_dimension
 from physics.verdict import InputProblem, Preview, Verdict
 
 
+@pickled_by_fields
 @dataclass(frozen=True)
 class SymbolDecl:
     """A symbol as an author declares it: text fields only, read in the worker."""

@@ -4,7 +4,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from physics.pickling import pickled_by_fields
 
+
+@pickled_by_fields
 @dataclass(frozen=True)
 class InputLimits:
     max_length: int = 2000  # characters

@@ -26,6 +26,7 @@ from physics.checking import (
 )
 from physics.errors import SpecError
 from physics.mathinput import InputLimits
+from physics.pickling import pickled_by_fields
 from physics.symbolic import (
     KnownMistake,
     LimitCase,
@@ -106,6 +107,7 @@ class SymbolicCheckIn(CheckBody):
         )
 
 
+@pickled_by_fields
 @dataclass(frozen=True)
 class SymbolicJob:
     """An ad-hoc symbolic check: the request's texts, compiled in the worker (instructor text is as
