@@ -14,6 +14,7 @@ from dataclasses import dataclass
 from decimal import Decimal
 from fractions import Fraction
 from functools import cached_property
+from typing import Any
 
 import numpy as np
 import sympy
@@ -34,10 +35,31 @@ SAMPLE_SIZE = 24
 PRECISE_POINTS = 2
 # Point sets whose reference-side subtrees a prepared reference keeps (`point_evaluator`): the judge
 # asks for the two check points and single suspect points, at most SAMPLE_SIZE + a few sets.
-_MAX_POINT_SETS = 64
+_MAX_GRIDS = 64
+_FLOATS = "float64"  # the grid of `float_evaluator`: every sample point in float64
 # Judgements a prepared reference remembers, by answer expression (the oldest forgotten first).
 MAX_JUDGEMENTS = 64
 _judgements_lock = threading.Lock()
+
+
+class _Grids:
+    """A reference's subtrees evaluated on each grid (a tuple of sample indexes, or _FLOATS), kept from
+    a grid's second use on: a reference met once evaluates nothing ahead of its answer."""
+
+    def __init__(self) -> None:
+        self._known: dict[object, dict[Any, Any] | None] = {}
+
+    def known(self, grid: object) -> dict[Any, Any] | None:
+        """The subtrees kept for this grid (to fill and start from); None at its first use."""
+        kept = self._known
+        if grid not in kept:
+            if len(kept) < _MAX_GRIDS:
+                kept[grid] = None
+            return None
+        found = kept[grid]
+        if found is None:
+            found = kept[grid] = {}
+        return found
 
 
 @dataclass(frozen=True)
@@ -87,13 +109,11 @@ class PreparedReference:
     def point_evaluator(self, indexes: tuple[int, ...], targets: tuple[sympy.Expr, ...] = ()) -> Evaluator:
         """An evaluator at PREC at these sample points that starts from the subtrees of the reference and
         of `targets` (reference-side expressions: its negation, a known mistake) there, evaluated once
-        per point set and kept: an answer is then evaluated only where it differs from them."""
+        per point set and kept from its second use: an answer is then evaluated only where it differs."""
         columns = {s: [self.sample.columns[s][i] for i in indexes] for s in self.sample.symbols}
-        known = self._point_subtrees.get(indexes)
+        known: dict[sympy.Basic, Column] | None = self._grids.known(indexes)
         if known is None:
-            known = {}
-            if len(self._point_subtrees) < _MAX_POINT_SETS:
-                self._point_subtrees[indexes] = known
+            return Evaluator(columns, len(indexes), PREC)
         missing = [target for target in (self.expected, *targets) if target not in known]
         if missing:
             evaluator = Evaluator(columns, len(indexes), PREC, known)
@@ -102,19 +122,22 @@ class PreparedReference:
             known.update(evaluator.known)
         return Evaluator(columns, len(indexes), PREC, known)
 
-    @cached_property
-    def _point_subtrees(self) -> dict[tuple[int, ...], dict[sympy.Basic, Column]]:
-        return {}
-
     def float_evaluator(self) -> FloatEvaluator:
-        """A float64 evaluator over the whole sample that starts from the reference's subtrees."""
-        return FloatEvaluator(self.floats.columns, self.sample.size, self._float_subtrees)
+        """A float64 evaluator over the whole sample that starts from the reference's subtrees (kept
+        from the second use on)."""
+        columns, size = self.floats.columns, self.sample.size
+        known: dict[sympy.Basic, Floats] | None = self._grids.known(_FLOATS)
+        if known is None:
+            return FloatEvaluator(columns, size)
+        if self.expected not in known:
+            evaluator = FloatEvaluator(columns, size, known)
+            evaluator(self.expected)
+            known.update(evaluator.known)
+        return FloatEvaluator(columns, size, known)
 
     @cached_property
-    def _float_subtrees(self) -> Mapping[sympy.Basic, Floats]:
-        evaluator = FloatEvaluator(self.floats.columns, self.sample.size)
-        evaluator(self.expected)
-        return dict(evaluator.known)
+    def _grids(self) -> _Grids:
+        return _Grids()
 
     def judgement_of(self, answer: sympy.Expr) -> Judgement | None:
         """The judgement `remember`ed for this answer expression, if it is still kept."""
@@ -136,11 +159,7 @@ class PreparedReference:
 
     def __getstate__(self) -> dict[str, object]:
         # Pickled with a compiled part: not what is kept for answers (rebuilt on first use).
-        return {
-            name: value
-            for name, value in self.__dict__.items()
-            if name not in ("_point_subtrees", "_float_subtrees", "_judgements")
-        }
+        return {name: value for name, value in self.__dict__.items() if name not in ("_grids", "_judgements")}
 
     @cached_property
     def precise_columns(self) -> Mapping[sympy.Symbol, Column]:

@@ -95,5 +95,5 @@ def test_a_reference_remembers_a_bounded_number_of_judgements_and_pickles_none()
     assert len(reference._judgements) == MAX_JUDGEMENTS
     assert 2 * m * g not in reference._judgements  # the oldest went first
     state = pickle.loads(pickle.dumps(reference)).__dict__
-    assert not {"_judgements", "_point_subtrees", "_float_subtrees"} & state.keys()
+    assert not {"_judgements", "_grids"} & state.keys()
     assert judge_symbolic(2 * m * g, pickle.loads(pickle.dumps(reference))).reason is Reason.CONSTANT_FACTOR
