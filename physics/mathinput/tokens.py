@@ -180,7 +180,9 @@ def _read_number(chars: list[str], i: int, space: bool, limits: InputLimits) -> 
             shift = int(exp_digits) * (-1 if sign == "-" else 1)
             literal += "e" + ("-" if sign == "-" else "") + exp_digits.lstrip("0").rjust(1, "0")
             i = j
-    value = Fraction(int(whole + fraction or "0"), 10 ** len(fraction)) * Fraction(10) ** shift
+    value = Fraction(int(whole + fraction or "0"), 10 ** len(fraction))
+    if shift:
+        value *= Fraction(10) ** shift
     return Token(Kind.NUM, literal, start, i, space, value), i
 
 
