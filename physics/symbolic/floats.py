@@ -41,10 +41,13 @@ class FloatSample:
 
 
 def in_range(values: Floats) -> bool:
+    # ndarray.all() rather than np.all(): the same answer without numpy's dispatch (called per answer)
+    if not np.isfinite(values).all():
+        return False
     magnitudes = np.abs(values)
     nonzero = magnitudes[magnitudes != 0]
     low, high = _SAFE_MAGNITUDES
-    return bool(np.all(np.isfinite(values)) and np.all((nonzero > low) & (nonzero < high)))
+    return bool(((nonzero > low) & (nonzero < high)).all())
 
 
 def rounded(values: Column) -> tuple[Floats, bool]:
@@ -199,8 +202,8 @@ def differs(answer: Floats, target: Floats, scale: float) -> npt.NDArray[np.bool
 
 def agrees(answer: Floats, target: Floats, scale: float) -> bool:
     """Finite and equal within AGREE at every point."""
-    if not (np.all(np.isfinite(answer)) and np.all(np.isfinite(target))):
+    if not (np.isfinite(answer).all() and np.isfinite(target).all()):
         return False
     with np.errstate(all="ignore"):
         allowed = AGREE * (np.maximum(np.abs(answer), np.abs(target)) + scale)
-        return bool(np.all(np.abs(answer - target) <= allowed))
+        return bool((np.abs(answer - target) <= allowed).all())
