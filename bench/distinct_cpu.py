@@ -1,0 +1,127 @@
+"""CPU milliseconds per distinct check as a grading worker spends it, two checkouts compared in lockstep.
+
+    .venv/bin/python bench/distinct_cpu.py OLD_DIR NEW_DIR [--kind all|symbolic|numeric] [--rounds 30]
+
+Each checkout grades in its own process (`app.grading.worker.grade` on the jobs of bench/targets.py's
+distinct bodies, read by the CheckIn schema as the server reads them); the two take turns, one round of
+`--per` checks each, so a loaded machine moves both alike. Prints each side's median CPU per check and
+the median of the per-round ratios new/old. A checkout is made with `git archive <commit> | tar -x -C DIR`.
+`--per-body` prints each body's median instead (one checkout: OLD_DIR only).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import statistics
+import subprocess
+import sys
+import time
+from pathlib import Path
+from typing import Any
+
+
+def child(tree: Path, kind: str, per: int) -> None:
+    """Grade `per` jobs per line read from stdin; print the CPU ms per check of each round."""
+    sys.path[:0] = [str(tree), str(tree / "bench")]
+    from pydantic import TypeAdapter
+    from targets import distinct_checks
+
+    from app.grading.worker import grade, warm_up_jobs
+    from app.schemas.check import CheckIn
+
+    adapter: TypeAdapter[Any] = TypeAdapter(CheckIn)
+    jobs = [adapter.validate_python(json.loads(call.body)).job() for call in distinct_checks()]
+    if kind != "all":
+        jobs = [job for job in jobs if (type(job).__name__ == "SymbolicJob") == (kind == "symbolic")]
+    for job in (*warm_up_jobs(), *jobs[:200]):  # warm-up: tables built on first use, the references
+        grade(job)
+    position = 200
+    for _ in sys.stdin:
+        if position + per > len(jobs):
+            position = 0
+        batch = jobs[position : position + per]
+        position += per
+        started = time.process_time()
+        for job in batch:
+            grade(job)
+        print((time.process_time() - started) / per * 1e3, flush=True)
+
+
+def per_body(tree: Path, rounds: int) -> None:
+    sys.path[:0] = [str(tree), str(tree / "bench")]
+    from pydantic import TypeAdapter
+    from targets import DISTINCT_VARIANTS, distinct_checks
+
+    from app.grading.worker import grade, warm_up_jobs
+    from app.schemas.check import CheckIn
+
+    adapter: TypeAdapter[Any] = TypeAdapter(CheckIn)
+    bodies = [json.loads(call.body) for call in distinct_checks()]
+    width = len(bodies) // DISTINCT_VARIANTS
+    for job in warm_up_jobs():
+        grade(job)
+    for index in range(width):
+        jobs = [adapter.validate_python(body).job() for body in bodies[index::width]]
+        grade(jobs[0])
+        timings = []
+        for round_ in range(rounds):
+            batch = jobs[1 + round_ * 10 : 11 + round_ * 10]
+            started = time.process_time()
+            for job in batch:
+                grade(job)
+            timings.append((time.process_time() - started) / len(batch) * 1e3)
+        body = bodies[index]
+        print(f"{statistics.median(timings):7.3f} ms  {body['kind']:9} {body['answer'].strip()[:50]!r}")
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(
+        description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter
+    )
+    parser.add_argument("old", type=Path)
+    parser.add_argument("new", type=Path, nargs="?")
+    parser.add_argument("--kind", choices=("all", "symbolic", "numeric"), default="all")
+    parser.add_argument("--rounds", type=int, default=30)
+    parser.add_argument("--per", type=int, default=50, help="checks per round")
+    parser.add_argument("--per-body", action="store_true")
+    parser.add_argument("--child", action="store_true", help=argparse.SUPPRESS)
+    args = parser.parse_args()
+    if args.child:
+        child(args.old, args.kind, args.per)
+        return
+    if args.per_body:
+        per_body(args.old, min(args.rounds, 30))
+        return
+    if args.new is None:
+        parser.error("give two checkouts (or --per-body with one)")
+    trees = (args.old.resolve(), args.new.resolve())
+    command = [sys.executable, __file__, "--child", "--kind", args.kind, "--per", str(args.per)]
+    processes = [
+        subprocess.Popen([*command, str(tree)], stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True)
+        for tree in trees
+    ]
+    timings: tuple[list[float], list[float]] = ([], [])
+    for round_ in range(args.rounds):
+        for side in (0, 1) if round_ % 2 == 0 else (1, 0):
+            stdin, stdout = processes[side].stdin, processes[side].stdout
+            assert stdin is not None and stdout is not None
+            stdin.write("go\n")
+            stdin.flush()
+            timings[side].append(float(stdout.readline()))
+    for process in processes:
+        assert process.stdin is not None
+        process.stdin.close()
+        process.wait()
+    for tree, found in zip(trees, timings, strict=True):
+        print(f"{tree}: {statistics.median(found):.3f} ms CPU per check (median of {args.rounds} rounds)")
+    ratios = sorted(new / old for old, new in zip(*timings, strict=True))
+    quarter = len(ratios) // 4
+    print(
+        f"new/old per round: median {statistics.median(ratios):.3f} "
+        f"(quartiles {ratios[quarter]:.3f} to {ratios[-1 - quarter]:.3f}; {args.kind} checks)"
+    )
+
+
+if __name__ == "__main__":
+    main()
