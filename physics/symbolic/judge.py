@@ -22,6 +22,10 @@ a constant factor is not named: with it the answer would give the reference away
 
 from __future__ import annotations
 
+import threading
+import weakref
+from collections import OrderedDict
+
 import numpy as np
 import sympy
 from mpmath import libmp
@@ -335,6 +339,47 @@ def _diagnose_in_floats(answer: sympy.Expr, values: Floats, reference: PreparedR
     )
 
 
+class Remembered:
+    """Judgements by (reference, answer expression), the least recently used forgotten first.
+
+    Many texts read as one expression (`m g sin θ`, `mg*sin(theta)`), and the judge is a pure function of
+    the expression and the reference; only answers over_context are kept, whose equality as sympy trees
+    is equality of everything the judge reads. One bound for the whole process (an answer's tree is up
+    to ~40 KB); a reference is held weakly, so one that is dropped is never matched by a new one at
+    its address.
+    """
+
+    def __init__(self, size: int) -> None:
+        self._size = size
+        self._kept: OrderedDict[tuple[int, sympy.Expr], tuple[weakref.ref[PreparedReference], Judgement]] = (
+            OrderedDict()
+        )
+        self._lock = threading.Lock()
+
+    def get(self, reference: PreparedReference, answer: sympy.Expr) -> Judgement | None:
+        key = (id(reference), answer)
+        with self._lock:
+            found = self._kept.get(key)
+            if found is None or found[0]() is not reference:
+                return None
+            self._kept.move_to_end(key)
+            return found[1]
+
+    def put(self, reference: PreparedReference, answer: sympy.Expr, judgement: Judgement) -> None:
+        key = (id(reference), answer)
+        with self._lock:
+            self._kept[key] = (weakref.ref(reference), judgement)
+            self._kept.move_to_end(key)
+            while len(self._kept) > self._size:
+                self._kept.popitem(last=False)
+
+    def __len__(self) -> int:
+        return len(self._kept)
+
+
+REMEMBERED = Remembered(1024)
+
+
 def judge_symbolic(answer: sympy.Expr, reference: PreparedReference) -> Judgement:
     """Correct when the answer equals the reference on the whole domain; else the first reason found.
 
@@ -344,10 +389,10 @@ def judge_symbolic(answer: sympy.Expr, reference: PreparedReference) -> Judgemen
     if not over_context(expr, reference.context):
         return _judge(_normalize_answer(expr, reference), reference)
     # A parsed answer: judged once per expression and reference (the judge is deterministic).
-    known = reference.judgement_of(expr)
+    known = REMEMBERED.get(reference, expr)
     if known is None:
         known = _judge(expr, reference)
-        reference.remember(expr, known)
+        REMEMBERED.put(reference, expr, known)
     return known
 
 

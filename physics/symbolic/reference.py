@@ -8,7 +8,6 @@ needs them: most checks are decided from float64 and a few multiprecision points
 
 from __future__ import annotations
 
-import threading
 from collections.abc import Mapping
 from dataclasses import dataclass
 from decimal import Decimal
@@ -29,17 +28,14 @@ from physics.symbolic.floats import FloatEvaluator, Floats, FloatSample, float_s
 from physics.symbolic.limits import PreparedLimit, prepare_limit
 from physics.symbolic.numeric import ONE, Column, Evaluator, Mpf
 from physics.symbolic.sampling import DomainSample, domain_seed, sample_domain
-from physics.verdict import Judgement
 
 SAMPLE_SIZE = 24
 PRECISE_POINTS = 2
-# Point sets whose reference-side subtrees a prepared reference keeps (`point_evaluator`): the judge
-# asks for the two check points and single suspect points, at most SAMPLE_SIZE + a few sets.
-_MAX_GRIDS = 64
+# Grids whose reference-side subtrees a prepared reference keeps (`point_evaluator`, `float_evaluator`):
+# the first met (the check points, float64, the usual suspect points); few, as a worker holds many
+# references.
+_MAX_GRIDS = 8
 _FLOATS = "float64"  # the grid of `float_evaluator`: every sample point in float64
-# Judgements a prepared reference remembers, by answer expression (the oldest forgotten first).
-MAX_JUDGEMENTS = 64
-_judgements_lock = threading.Lock()
 
 
 class _Grids:
@@ -138,24 +134,6 @@ class PreparedReference:
     @cached_property
     def _grids(self) -> _Grids:
         return _Grids()
-
-    def judgement_of(self, answer: sympy.Expr) -> Judgement | None:
-        """The judgement `remember`ed for this answer expression, if it is still kept."""
-        return self._judgements.get(answer)
-
-    def remember(self, answer: sympy.Expr, judgement: Judgement) -> None:
-        """Keep a judgement: many texts read as one expression (`m g sin θ`, `mg*sin(theta)`), and the
-        judge is a pure function of the expression and the reference. Only for answers `over_context`,
-        whose equality as sympy trees is equality of everything the judge looks at."""
-        with _judgements_lock:
-            kept = self._judgements
-            kept[answer] = judgement
-            while len(kept) > MAX_JUDGEMENTS:
-                del kept[next(iter(kept))]
-
-    @cached_property
-    def _judgements(self) -> dict[sympy.Expr, Judgement]:
-        return {}
 
     def __getstate__(self) -> dict[str, object]:
         # Pickled with a compiled part: not what is kept for answers (rebuilt on first use).

@@ -9,7 +9,7 @@ import sympy
 
 from physics.errors import ParseError, UnknownSymbol
 from physics.symbolic import bench_equivalence_cases, judge_symbolic, prepare_reference
-from physics.symbolic.reference import MAX_JUDGEMENTS
+from physics.symbolic.judge import REMEMBERED, Remembered
 from physics.verdict import Reason
 from tests.symbolic.support import context, g, m, sin, theta
 
@@ -84,16 +84,39 @@ def test_an_answer_over_a_same_named_foreign_symbol_is_not_taken_for_a_remembere
     assert foreign != expected
     assert judge_symbolic(expected, reference).correct
     assert judge_symbolic(foreign, reference).correct
-    assert foreign not in reference._judgements
+    assert REMEMBERED.get(reference, expected) is not None
+    assert REMEMBERED.get(reference, foreign) is None
 
 
-def test_a_reference_remembers_a_bounded_number_of_judgements_and_pickles_none():
-    expected = m * g
+def test_judgements_are_remembered_up_to_a_bound_the_least_recently_used_forgotten_first():
+    references = [prepare_reference(e, context(e)) for e in (m * g, -m * g, 2 * m * g)]
+    remembered = Remembered(2)
+    judgements = [judge_symbolic(m * g, reference) for reference in references]
+    for reference, judgement in zip(references, judgements, strict=True):
+        remembered.put(reference, m * g, judgement)
+    assert len(remembered) == 2
+    assert remembered.get(references[0], m * g) is None
+    assert remembered.get(references[1], m * g) is judgements[1]
+    assert remembered.get(references[2], m * g) is judgements[2]
+    assert remembered.get(references[1], g) is None
+
+
+def test_a_dropped_reference_is_never_matched_by_a_new_one():
+    remembered = Remembered(8)
+    reference = prepare_reference(m * g, context(m * g))
+    remembered.put(reference, m * g, judge_symbolic(m * g, reference))
+    other = pickle.loads(pickle.dumps(reference))  # equal in every field, another object
+    assert remembered.get(other, m * g) is None
+
+
+def test_a_prepared_reference_pickles_without_what_it_keeps_for_answers():
+    expected = m * g * sin(theta)
     reference = prepare_reference(expected, context(expected))
-    for k in range(MAX_JUDGEMENTS + 10):
-        assert judge_symbolic((k + 2) * m * g, reference).reason is Reason.CONSTANT_FACTOR
-    assert len(reference._judgements) == MAX_JUDGEMENTS
-    assert 2 * m * g not in reference._judgements  # the oldest went first
+    for k in range(2, 6):
+        assert judge_symbolic(k * expected, reference).reason is Reason.CONSTANT_FACTOR
+    assert "_grids" in reference.__dict__
     state = pickle.loads(pickle.dumps(reference)).__dict__
-    assert not {"_judgements", "_grids"} & state.keys()
-    assert judge_symbolic(2 * m * g, pickle.loads(pickle.dumps(reference))).reason is Reason.CONSTANT_FACTOR
+    assert "_grids" not in state
+    assert (
+        judge_symbolic(7 * expected, pickle.loads(pickle.dumps(reference))).reason is Reason.CONSTANT_FACTOR
+    )
