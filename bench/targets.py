@@ -11,7 +11,8 @@ takes much of a core and so lowers every figure, the floor's too):
 
   floor      POST /echo on the trivial app: FastAPI's own cost per request here
   distinct   POST /v1/check, the typical bank answers of bench/load.py, every request's text new
-             (`(answer)*n/n`, numeric answers with n leading spaces): no verdict is reused
+             (each answer times a factor that equals 1 but is a new expression for each n, numeric
+             answers with n leading spaces): no verdict and no remembered judgement is reused
   identical  POST /v1/check, one typical request over and over: the verdict cache's case
   naive      POST /naive: bench/check_bench.py's typical answers, parse_expr + simplify per request
 
@@ -57,15 +58,27 @@ HERE = Path(__file__).resolve().parent
 DISTINCT_VARIANTS = 400
 
 
+# Two symbols of one dimension in each symbol set of bench/load.py's typical answers.
+SAME_DIMENSION = [("m", "M"), ("r", "k"), ("r0", "r"), ("alpha", "mu")]
+
+
+def unit_factor(symbols: dict[str, object], n: int) -> str:
+    """(a + n b)^2/(a^2 + 2n ab + n^2 b^2): equal to 1, yet a new expression for each n. A plain `*n/n`
+    would read as the answer itself, whose judgement the worker remembers from the first spelling."""
+    a, b = next(pair for pair in SAME_DIMENSION if set(pair) <= symbols.keys())
+    return f"({a} + {n} {b})^2/({a}^2 + {2 * n} {a} {b} + {n * n} {b}^2)"
+
+
 def distinct_checks(first: int = 2) -> list[Call]:
-    """Every typical check in DISTINCT_VARIANTS spellings that read the same: no two bodies equal (a
-    warm-up draws its spellings from another `first`, so the measured phase reuses no verdict)."""
+    """Every typical check in DISTINCT_VARIANTS forms of the same value: no two bodies and no two answer
+    expressions equal (a warm-up draws its forms from another `first`, so the measured phase reuses no
+    verdict and no judgement)."""
     calls = []
     for n in range(first, first + DISTINCT_VARIANTS):
         for answer, expected, symbols, verdict in SYMBOLIC:
             body = {
                 "kind": "symbolic",
-                "answer": f"({answer})*{n}/{n}",
+                "answer": f"({answer}) {unit_factor(symbols, n)}",
                 "expected": expected,
                 "symbols": symbols,
             }
