@@ -19,6 +19,7 @@ import sympy
 from sympy.parsing.sympy_parser import parse_expr, standard_transformations
 
 from physics.checking import SymbolDecl, run_job
+from physics.symbolic.judge import REMEMBERED
 from problems.kinds.symbolic import SymbolicJob, adhoc_part
 
 ANGLE = SymbolDecl("theta", "1", range=("0", "pi/2"))
@@ -81,6 +82,9 @@ CASES: list[tuple[str, str, tuple[SymbolDecl, ...]]] = [
 
 
 def physcheck_check(answer: str, expected: str, symbols: tuple[SymbolDecl, ...]) -> bool:
+    """A check whose reference is prepared and whose answer is new to this process: a judgement the
+    worker remembers per answer expression would otherwise serve every round after the first."""
+    REMEMBERED.clear()
     return run_job(SymbolicJob(answer=answer, expected=expected, symbols=symbols)).outcome.value == "correct"
 
 

@@ -376,6 +376,10 @@ class Remembered:
     def __len__(self) -> int:
         return len(self._kept)
 
+    def clear(self) -> None:
+        with self._lock:
+            self._kept.clear()
+
 
 REMEMBERED = Remembered(1024)
 
