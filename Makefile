@@ -21,11 +21,12 @@ lint: $(BIN)/physcheck
 	$(BIN)/mypy
 
 # The bank's per-problem self-test is `physcheck bank verify` (20 variants); pytest's copy of it is left out
-# here. Tests run on every core, a test file per worker (module fixtures such as a live server and a
-# browser are set up once); --durations names the slowest tests of each run.
+# here. Tests run on every core; an idle worker takes tests from a busy one (worksteal), so a file of
+# slow parametrized tests is shared out (a module fixture, such as a live server, may then be set up
+# once per worker); --durations names the slowest tests of each run.
 test: lint
 	$(BIN)/physcheck bank verify
-	$(BIN)/pytest -q -n auto --dist loadfile -m "not bank_selftest" --durations=25
+	$(BIN)/pytest -q -n auto --dist worksteal -m "not bank_selftest" --durations=25
 
 # Re-pin both locks from pyproject.toml (needs the network to PyPI).
 lock:
