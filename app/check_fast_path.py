@@ -25,8 +25,7 @@ from starlette.responses import Response
 from starlette.types import ASGIApp, Message, Receive, Scope, Send
 
 from app.auth import Principal, bearer_token
-from app.deps import budget_wait, counted_in_memory
-from app.errors import RateLimited
+from app.deps import counted_in_memory, spend_budget
 from app.middleware import replay
 from app.schemas.check import CheckIn
 from app.services import Services
@@ -65,9 +64,7 @@ class CheckFastPath:
             await self.app(scope, replay(message, receive), send)
             return
         try:
-            wait = budget_wait(services, principal)
-            if wait is not None:
-                raise RateLimited(f"Too many requests; try again in {wait} s.", retry_after=wait)
+            spend_budget(services, principal)
             if known is None:
                 assert check_in is not None
                 known = self._remember(content, check_in.job())

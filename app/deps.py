@@ -63,12 +63,17 @@ async def current_principal(
             )
         principal = found
     if counted_in_memory(services):
-        wait = budget_wait(services, principal)
+        spend_budget(services, principal)
     else:
-        wait = await run_in_threadpool(budget_wait, services, principal)
+        await run_in_threadpool(spend_budget, services, principal)
+    return principal
+
+
+def spend_budget(services: Services, principal: Principal) -> None:
+    """`budget_wait`, refused with 429 and Retry-After when the budget is spent."""
+    wait = budget_wait(services, principal)
     if wait is not None:
         raise RateLimited(f"Too many requests; try again in {wait} s.", retry_after=wait)
-    return principal
 
 
 def counted_in_memory(services: Services) -> bool:
