@@ -174,11 +174,18 @@ def _dimension_problem(answer: sympy.Expr, reference: PreparedReference) -> str 
 
 
 def _limit_hints(answer: sympy.Expr, reference: PreparedReference) -> list[str]:
-    return [
-        f"Your answer fails a limiting case ({limit.description.rstrip('.')}); check it there."
+    """One sentence naming every limiting case the answer fails, or none (a sentence each read as
+    separate faults, repeating the same advice)."""
+    failed = [
+        limit.description.rstrip(".")
         for limit in reference.limits
         if breaks_limit(answer, limit, reference.scale)
     ]
+    if not failed:
+        return []
+    if len(failed) == 1:
+        return [f"Your answer fails a limiting case ({failed[0]}); check it there."]
+    return [f"Your answer fails {len(failed)} limiting cases; check it in each: {'; '.join(failed)}."]
 
 
 def diagnose(answer: sympy.Expr, values: Column, reference: PreparedReference, undefined: bool) -> Judgement:

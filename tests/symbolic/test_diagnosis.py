@@ -131,3 +131,12 @@ def test_feedback_never_shows_the_reference(answer):
 def test_a_correct_answer_says_so():
     judgement = judge(RELATIVE, RELATIVE)
     assert (judgement.correct, judgement.reason, judgement.feedback) == (True, Reason.EQUIVALENT, "Correct.")
+
+
+def test_several_failed_limits_are_named_in_one_sentence():
+    judgement = judge_symbolic(g * c, wedge_reference(limits=(IMMOVABLE, FLAT)))
+    assert judgement.feedback.count("limiting case") == 1
+    assert (
+        "fails 2 limiting cases; check it in each: an immovable wedge (M → ∞); a flat incline (θ → 0)."
+        in judgement.feedback
+    )
