@@ -3,7 +3,8 @@
 Anything else is a ParseError at its position. Spaces only separate tokens: letters glued together
 form one name (`Nm`), which the parser looks up or splits, so `N m` and `Nm` both reach it as names.
 A name with a negative integer glued to it is a power, as textbooks print it (`m s-2` is m·s⁻²), and
-`N.m` is N·m.
+`N.m` is N·m. Units said in words read as written: `per` divides (`per second` alone is 1/s), `squared` and
+`cubed` raise the unit before them (`metres per second squared` is m/s²).
 """
 
 from __future__ import annotations
@@ -51,6 +52,23 @@ _SINGLE = {
     "−": Kind.MINUS,  # Unicode minus
     "+": Kind.PLUS,
 }
+# Words that are operators, as a student says a unit: no unit has these names.
+_WORD_POWERS = {"squared": 2, "cubed": 3}
+
+
+def _word_tokens(word: str, position: int, first: bool) -> list[Token] | None:
+    """The tokens a word standing for an operator stands for (`per`, `squared`, `cubed`), or None;
+    a `per` that comes first is `1/` (`4.58 per second`, a rate)."""
+    lowered = word.lower()
+    if lowered == "per":
+        divide = Token(Kind.DIVIDE, word, position)
+        return [Token(Kind.INTEGER, "1", position, 1), divide] if first else [divide]
+    if lowered in _WORD_POWERS:
+        power = _WORD_POWERS[lowered]
+        return [Token(Kind.POWER, word, position), Token(Kind.INTEGER, str(power), position, power)]
+    return None
+
+
 _SUPERSCRIPT_DIGITS = {c: i for i, c in enumerate("⁰¹²³⁴⁵⁶⁷⁸⁹")}
 _SUPERSCRIPT_SIGNS = {"⁻": -1, "⁺": 1}
 _MAX_INTEGER_DIGITS = 6
@@ -93,6 +111,10 @@ def tokenize(text: str) -> list[Token]:
             if power_end is not None and text[start:power_end].replace("−", "-") in ALIASES:
                 tokens.append(Token(Kind.NAME, text[start:power_end].replace("−", "-"), start))
                 i = power_end
+                continue
+            words = _word_tokens(text[start:i], start, first=not tokens)
+            if words is not None:
+                tokens.extend(words)
                 continue
             tokens.append(Token(Kind.NAME, text[start:i], start))
             if power_end is not None:

@@ -28,6 +28,10 @@ VERDICTS = [
     ("negative-expected", "-2.45 m/s^2", NEGATIVE, OK, Reason.EQUIVALENT),
     ("superscript-units", "4.58 m·s⁻²", ACCEL, OK, Reason.EQUIVALENT),
     ("slash-slash-units", "4.58 m/s/s", ACCEL, OK, Reason.EQUIVALENT),
+    ("units-in-words", "4.58 metres per second squared", ACCEL, OK, Reason.EQUIVALENT),
+    ("radians-per-second", "4.58 radians per second", OMEGA, OK, Reason.EQUIVALENT),
+    ("per-alone-is-a-rate", "4.58 per second", NumericSpec(D("4.58"), "1/s"), OK, Reason.EQUIVALENT),
+    ("per-without-a-unit", "4.58 m per", ACCEL, BAD, Reason.PARSE_ERROR),
     ("reciprocal-units", "4.58 1/s", NumericSpec(D("4.58"), "1/s"), OK, Reason.EQUIVALENT),
     (
         "fahrenheit-to-kelvin",
