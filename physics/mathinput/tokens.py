@@ -124,12 +124,21 @@ def tokenize(text: str, limits: InputLimits) -> list[Token]:
             continue
         elif ch == ",":
             raise ParseError("Commas are not used in answers; write a product with * or a space.", i)
+        elif ch == "\\":
+            raise ParseError(LATEX_REFUSED, i)
         else:
             raise ParseError(f"Unexpected character {text[i]!r}.", i)
         tokens.append(token)
         space = False
     tokens.append(Token(Kind.END, "", n, n, space))
     return tokens
+
+
+# Pasted from an equation editor or a TeX source: say how to type it, not just "unexpected '\\'".
+LATEX_REFUSED = (
+    "Answers are typed as plain text, not LaTeX: write \\frac{a}{b} as (a)/(b), \\sqrt{x} as sqrt(x), "
+    "\\sin\\theta as sin(theta) or sin θ, x^{2} as x^2, and \\cdot as *."
+)
 
 
 def _vulgar_fraction(ch: str, i: int, space: bool) -> list[Token]:

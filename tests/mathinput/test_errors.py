@@ -32,6 +32,8 @@ PARSE_ERRORS = [
     ("x; y", 1, "Unexpected character ';'"),
     ("4,58", 1, "decimal point"),
     ("x, y", 1, "Commas"),
+    ("-\\frac{m g}{M}", 1, "not LaTeX: write \\frac{a}{b} as (a)/(b)"),
+    ("m g \\sin\\theta", 4, "not LaTeX"),
     ("12 500", 3, "Two numbers side by side"),
     ("x^2 3", 4, "Two numbers side by side"),
     ("sin", 0, "sin needs an argument"),

@@ -110,6 +110,8 @@ CASES = [
     ("x · y", XY, x * y),
     ("x ⋅ y", XY, x * y),
     ("x ÷ y", XY, x / y),
+    ("x ⁄ y", XY, x / y),  # fraction slash
+    ("x ∕ y", XY, x / y),  # division slash
     ("√x", XY, sqrt(x)),
     ("√(x+1)", XY, sqrt(x + 1)),
     ("2√3", XY, 2 * sqrt(3)),
