@@ -294,7 +294,7 @@ def draw_incline(
     return Slope(None if flat else upper, tangent, normal, bases)
 
 
-def _spring_sign(potential: PairPotential, values: Values) -> int:
+def spring_sign(potential: PairPotential, values: Values) -> int:
     """+1 for a spring (energy quadratic in the distance, growing), -1 for a quadratic that falls (the
     centrifugal potential of a rotating frame), 0 for anything else (gravitation, Lennard-Jones...)."""
     energy = sympy.expand(potential.energy)
@@ -333,7 +333,7 @@ def draw_central(figure: Figure, model: Model, body: Body, potential: PairPotent
     )
 
 
-def _stiffness(potential: PairPotential, model: Model) -> list[sympy.Symbol]:
+def stiffness_symbols(potential: PairPotential, model: Model) -> list[sympy.Symbol]:
     """The symbols of the factor in front of the energy's distance term: k in k (d - L0)^2 / 2."""
     factor, _ = potential.energy.as_independent(potential.distance, as_Add=False)
     return sorted((s for s in factor.free_symbols if s in set(model.parameters)), key=lambda s: s.name)
@@ -355,7 +355,7 @@ def draw_slope_spring(
         (anchor[0] - nx * 0.6, anchor[1] - ny * 0.6), (anchor[0] + nx * 0.6, anchor[1] + ny * 0.6), width=0.1
     )
     figure.canvas.spring(anchor, face, amplitude=0.18)
-    stiffness = _stiffness(potential, model)
+    stiffness = stiffness_symbols(potential, model)
     middle = ((anchor[0] + face[0]) / 2 + nx * 0.55, (anchor[1] + face[1]) / 2 + ny * 0.55)
     name = symbol_label(stiffness[0].name) if stiffness else ""
     if name:
@@ -808,6 +808,7 @@ def _compose(model: Model, given: Mapping[str, float]) -> Figure:
     # Elements in their own modules use this module's helpers, so they are imported here.
     from physics.figures.ladder import draw_ladder, leaning_of
     from physics.figures.projectile import draw_projectile, launch_of
+    from physics.figures.springs import draw_spring_line, spring_line_of
     from physics.figures.track import draw_track, track_of
 
     figure = Figure()
@@ -860,7 +861,7 @@ def _compose(model: Model, given: Mapping[str, float]) -> Figure:
                 potential.anchor
                 and len(potential.bodies) == 1
                 and potential.bodies[0] in slope.bases
-                and _spring_sign(potential, values) > 0
+                and spring_sign(potential, values) > 0
             ):
                 draw_slope_spring(figure, model, slope, model.body(potential.bodies[0]), potential)
         over_edge = [
@@ -891,10 +892,13 @@ def _compose(model: Model, given: Mapping[str, float]) -> Figure:
         if len(joined) == 1 and wheels:
             draw_yoyo(figure, model, joined[0], values)
             return figure
+    if (line := spring_line_of(model, values)) is not None:
+        draw_spring_line(figure, model, line)
+        return figure
     if model.potentials:
         potential = model.potentials[0]
         bodies = [model.body(name) for name in potential.bodies]
-        sign = _spring_sign(potential, values)
+        sign = spring_sign(potential, values)
         quadratic = sign > 0
         if potential.anchor and len(bodies) == 1 and sign < 0 and len(model.coordinates) == 1:
             draw_path(figure, model, bodies[0], values, spin=potential)
@@ -903,7 +907,7 @@ def _compose(model: Model, given: Mapping[str, float]) -> Figure:
             draw_central(figure, model, bodies[0], potential)
             return figure
         if potential.anchor and len(bodies) == 1:
-            spring = _stiffness(potential, model)
+            spring = stiffness_symbols(potential, model)
             vertical = [axis for axis, _ in bodies[0].position] == ["y"]
             damping = next(
                 (
@@ -918,7 +922,7 @@ def _compose(model: Model, given: Mapping[str, float]) -> Figure:
             )
             return figure
         if len(bodies) == 2 and quadratic:
-            spring = _stiffness(potential, model)
+            spring = stiffness_symbols(potential, model)
             draw_two_blocks_spring(figure, model, bodies[0], bodies[1], spring[0] if spring else None)
             return figure
         if len(bodies) == 2:
