@@ -3,7 +3,8 @@
 The weight comes from gravity; each constraint the body takes part in pushes or pulls along the gradient
 of its gap (a surface's normal force, a string's tension, rolling friction), as the engine's multipliers
 do; kinetic friction opposes the sliding. Directions are those at the model's reference configuration
-(every coordinate 0) with the given or typical values.
+(every coordinate 0) with the given or typical values. Springs, other potentials, given forces and drag
+come from loads.py (a spring's direction is taken where the body rests).
 """
 
 from __future__ import annotations
@@ -15,11 +16,13 @@ from dataclasses import dataclass
 import sympy
 
 from physics.engine.model import ConstraintKind, Model
+from physics.figures.loads import applied_forces, potential_forces
 from physics.figures.scene import BLOCK, Values, body_label, symbol_label
 from physics.figures.svg import FILLS, Canvas
 
 _LABELS = {ConstraintKind.SURFACE: "N", ConstraintKind.STRING: "T", ConstraintKind.ROLLING: "f"}
 ARROW = 2.2
+SIDE_BY_SIDE = 0.5  # how far apart arrows along one line are drawn
 
 
 @dataclass(frozen=True)
@@ -34,7 +37,8 @@ def _unit(x: float, y: float) -> tuple[float, float] | None:
 
 
 def body_forces(model: Model, body_name: str, given: Mapping[str, float]) -> list[Force]:
-    """The forces on `body_name`: weight, constraint forces and kinetic friction, with directions."""
+    """The forces on `body_name`: weight, constraint forces, kinetic friction, springs and other
+    potentials, given forces and drag, with directions."""
     values = Values(model, given)
     body = model.body(body_name)
     at_rest = {c.symbol: 0.0 for c in model.coordinates}
@@ -83,6 +87,8 @@ def body_forces(model: Model, body_name: str, given: Mapping[str, float]) -> lis
         direction = _unit(-vx, -vy)
         if direction is not None:
             forces.append(Force("f", direction))
+    forces += [Force(label, direction) for label, direction in potential_forces(model, body_name, values)]
+    forces += [Force(label, direction) for label, direction in applied_forces(model, body_name, values)]
     # Two forces of one kind (two strings, two surfaces) are told apart by number.
     seen: dict[str, int] = {}
     for force in forces:
@@ -108,12 +114,22 @@ def free_body_figure(model: Model, body_name: str, given: Mapping[str, float], *
     label = body_label(body, model)
     half = BLOCK / 2
     canvas.polygon([(-half, -half), (half, -half), (half, half), (-half, half)], fill=FILLS[0])
-    canvas.text((0.0, 0.0), label)
+    if len(label) <= 3:
+        canvas.text((0.0, 0.0), label)
+    else:  # a body's name does not fit inside it: beside it, clear of the forces along the axes
+        canvas.text((half + 0.15, half + 0.3), label, size=0.36, anchor="start")
     said = []
+    drawn: list[tuple[float, float]] = []
     for force in body_forces(model, body_name, given):
         dx, dy = force.direction
-        tip = (dx * ARROW, dy * ARROW)
-        canvas.arrow((dx * half, dy * half), tip, width=0.07, color="#a11111")
+        # Forces along one line (a spring and drag, two tensions) are drawn side by side, not on top.
+        beside = sum(1 for ex, ey in drawn if ex * dx + ey * dy > math.cos(math.radians(8)))
+        drawn.append(force.direction)
+        shift = ((-dy, dx) if beside % 2 else (dy, -dx)) if beside else (0.0, 0.0)
+        offset = SIDE_BY_SIDE * ((beside + 1) // 2)
+        ox, oy = shift[0] * offset, shift[1] * offset
+        tip = (dx * ARROW + ox, dy * ARROW + oy)
+        canvas.arrow((dx * half + ox, dy * half + oy), tip, width=0.07, color="#a11111")
         canvas.text((tip[0] + dx * 0.5, tip[1] + dy * 0.5), force.label)
         degrees = round(math.degrees(math.atan2(dy, dx)))
         said.append(f"{force.label} at {degrees}° from the +x axis")
