@@ -130,7 +130,8 @@ def free_body_figure(model: Model, body_name: str, given: Mapping[str, float], *
         ox, oy = shift[0] * offset, shift[1] * offset
         tip = (dx * ARROW + ox, dy * ARROW + oy)
         canvas.arrow((dx * half + ox, dy * half + oy), tip, width=0.07, color="#a11111")
-        canvas.text((tip[0] + dx * 0.5, tip[1] + dy * 0.5), force.label)
+        away = 0.5 + 0.45 * beside  # labels of arrows side by side stagger along them, clear of each other
+        canvas.text((tip[0] + dx * away, tip[1] + dy * away), force.label)
         degrees = round(math.degrees(math.atan2(dy, dx)))
         said.append(f"{force.label} at {degrees}° from the +x axis")
     description = f"Forces on {label}: " + ("; ".join(said) if said else "none") + "."

@@ -51,6 +51,12 @@ model:
   quantities:
     rest_position: {equilibrium: x}
 """
+# The same block hanging between a floor and a ceiling.
+FLOOR_CEILING = (
+    TWO_WALLS.replace("position: {x: x}", "position: {y: x}")
+    .replace("[{x: 0}, block]", "[{y: 0}, block]")
+    .replace("[block, {x: D}]", "[block, {y: D}]")
+)
 STRETCHED = {"m": 0.5, "k1": 40.0, "k2": 60.0, "L1": 0.25, "L2": 0.2, "D": 0.7}  # 0.25 + 0.2 < 0.7
 SQUEEZED = {**STRETCHED, "L1": 0.5, "L2": 0.45}  # 0.5 + 0.45 > 0.7: both springs push
 
@@ -60,13 +66,19 @@ def two_walls() -> Model:
     return load_doc_model(doc, symbol_table(doc))
 
 
+def floor_ceiling() -> Model:
+    doc = parse_problem(FLOOR_CEILING)
+    return load_doc_model(doc, symbol_table(doc))
+
+
 def bank_model(problem_id: str) -> Model:
     doc = BANK[problem_id]
     return load_doc_model(doc, symbol_table(doc))
 
 
 def model_of(problem_id: str) -> Model:
-    return two_walls() if problem_id == "two-walls" else bank_model(problem_id)
+    uploads = {"two-walls": two_walls, "floor-ceiling": floor_ceiling}
+    return uploads[problem_id]() if problem_id in uploads else bank_model(problem_id)
 
 
 def springs_of(model: Model) -> list[str]:
@@ -74,7 +86,7 @@ def springs_of(model: Model) -> list[str]:
     return [p.name for p in model.potentials if spring_sign(p, values) > 0]
 
 
-SPRING_PROBLEMS = ["two-walls", *sorted(i for i in BANK if springs_of(bank_model(i)))]
+SPRING_PROBLEMS = ["two-walls", "floor-ceiling", *sorted(i for i in BANK if springs_of(bank_model(i)))]
 
 
 def zigzags(root: ET.Element) -> list[list[tuple[float, float]]]:
@@ -118,6 +130,19 @@ def test_a_block_between_two_walls_has_a_spring_from_each_wall_labelled_with_its
     assert ends[0][1] < ends[1][0], "the block lies between the springs"
     assert {"k₁", "k₂", "m", "D"} <= texts(root)
     assert "k₁" in root.findtext(f"{SVG}desc", "") and "k₂" in root.findtext(f"{SVG}desc", "")
+
+
+def test_a_block_between_a_floor_and_a_ceiling_has_a_spring_to_each() -> None:
+    root = ET.fromstring(model_figure(floor_ceiling(), STRETCHED, title="floor and ceiling"))
+    surfaces = sorted(
+        float(line.get("y1", "nan"))
+        for line in root.iter(f"{SVG}line")
+        if line.get("stroke-width") == "0.07" and line.get("y1") == line.get("y2")
+    )
+    spans = sorted(sorted((spring[0][1], spring[-1][1])) for spring in zigzags(root))
+    assert len(surfaces) == 2 and len(spans) == 2
+    assert math.isclose(spans[0][0], surfaces[0]) and math.isclose(spans[1][1], surfaces[1])  # SVG y is down
+    assert {"k₁", "k₂", "m", "D"} <= texts(root)
 
 
 def test_three_springs_end_at_the_two_walls_with_both_blocks_between() -> None:
