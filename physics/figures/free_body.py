@@ -87,8 +87,6 @@ def body_forces(model: Model, body_name: str, given: Mapping[str, float]) -> lis
         direction = _unit(-vx, -vy)
         if direction is not None:
             forces.append(Force("f", direction))
-    forces += [Force(label, direction) for label, direction in potential_forces(model, body_name, values)]
-    forces += [Force(label, direction) for label, direction in applied_forces(model, body_name, values)]
     # Two forces of one kind (two strings, two surfaces) are told apart by number.
     seen: dict[str, int] = {}
     for force in forces:
@@ -101,7 +99,10 @@ def body_forces(model: Model, body_name: str, given: Mapping[str, float]) -> lis
             numbered.append(Force(force.label + str(counts[force.label]).translate(_SUB), force.direction))
         else:
             numbered.append(force)
-    return numbered
+    # Springs are named by their constants, as the scene labels them: two springs k are both Fₖ there
+    # too, so they are not numbered (Fₖ₁ would read as the spring k₁).
+    loads = potential_forces(model, body_name, values) + applied_forces(model, body_name, values)
+    return numbered + [Force(label, direction) for label, direction in loads]
 
 
 _SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")

@@ -242,3 +242,10 @@ def test_a_body_name_too_long_for_its_block_is_written_beside_it() -> None:
     root = ET.fromstring(free_body_figure(bank_model("three-springs"), "block1", {}, title="three springs"))
     [name] = [t for t in root.iter(f"{SVG}text") if t.text == "block1"]
     assert float(name.get("x", "0")) >= 0.5  # the block's right edge: the name starts past it
+
+
+def test_two_springs_of_one_constant_are_both_named_by_it_not_numbered() -> None:
+    doc = parse_problem(TWO_WALLS.replace("stiffness: k2", "stiffness: k1"))
+    model = load_doc_model(doc, symbol_table(doc))
+    labels = [f.label for f in body_forces(model, "block", STRETCHED)]
+    assert labels == ["Fₖ₁", "Fₖ₁"]  # as the scene labels both springs k₁; Fₖ₂ would name a spring k₂
