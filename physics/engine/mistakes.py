@@ -8,6 +8,7 @@ collision), with feedback that names the slip, not the answer.
 from __future__ import annotations
 
 import dataclasses
+import enum
 from collections.abc import Callable
 
 import sympy
@@ -32,10 +33,19 @@ SWAPPED_TRIG = (
     "Check which component of each force lies along the surface and which is perpendicular to "
     "it: a sine and a cosine are swapped."
 )
-DROPPED_PROJECTION = (
-    "A projection factor is missing: check each place where a force or an acceleration is "
-    "resolved into components."
+SWAPPED_ANGLE = (
+    "Check where each angle is measured from: the side next to an angle goes with its cosine, the "
+    "side opposite it with its sine. Here a sine and a cosine are swapped."
 )
+SWAPPED_DRIVE = (
+    "Check the driving force's time dependence as the problem states it: a sine and a cosine of "
+    "its phase are swapped."
+)
+DROPPED_PROJECTION = (
+    "A projection factor is missing: check each place where a force, a velocity or an acceleration "
+    "is resolved into components."
+)
+DROPPED_DRIVE = "The driving force changes with time: use its value at the given moment, not its amplitude."
 FRICTION_SIGN = "Kinetic friction opposes the sliding: check the direction of the friction force."
 FIXED_SUPPORT = (
     "This treats the {body} as fixed. It moves too, which changes the accelerations and the contact force."
@@ -86,14 +96,7 @@ def generate_mistakes(
     model: Model, quantity: Quantity, reference: sympy.Expr, rederive: Rederive
 ) -> tuple[KnownMistake, ...]:
     candidates = reach_mistakes.candidates(model, quantity, reference, rederive)  # theirs first: named slips
-    trig = reference.atoms(sympy.sin, sympy.cos)
-    if trig:
-        swap = {t: (sympy.cos if isinstance(t, sympy.sin) else sympy.sin)(t.args[0]) for t in trig}
-        candidates.append((reference.subs(swap, simultaneous=True), SWAPPED_TRIG))
-        numerator, _ = sympy.fraction(sympy.factor(reference))
-        for factor in sympy.Mul.make_args(numerator):
-            if isinstance(factor, sympy.sin | sympy.cos | sympy.tan):
-                candidates.append((reference / factor, DROPPED_PROJECTION))
+    candidates += _trig_mistakes(model, reference)
     for friction in model.frictions:
         if reference.has(*friction.coefficient.free_symbols):
             candidates.append((reference.subs(friction.coefficient, -friction.coefficient), FRICTION_SIGN))
@@ -127,6 +130,73 @@ def generate_mistakes(
         candidates += _mass_mistakes(model, quantity, reference, rederive)
     candidates += damping.mistakes(model, quantity, reference)
     return _distinct(model, reference, candidates)
+
+
+class _Angle(enum.Enum):
+    """What a sine or cosine in an answer comes from, which decides what its slips are called."""
+
+    SURFACE = "surface"  # a slope's angle: components along and across the surface
+    GEOMETRY = "geometry"  # any other angle: a swing, a launch, a line of centres
+    DRIVE = "drive"  # the phase of a force that depends on the time
+
+
+_SWAPPED = {_Angle.SURFACE: SWAPPED_TRIG, _Angle.GEOMETRY: SWAPPED_ANGLE, _Angle.DRIVE: SWAPPED_DRIVE}
+_DROPPED = {
+    _Angle.SURFACE: DROPPED_PROJECTION,
+    _Angle.GEOMETRY: DROPPED_PROJECTION,
+    _Angle.DRIVE: DROPPED_DRIVE,
+}
+
+
+def _trig_mistakes(model: Model, reference: sympy.Expr) -> list[tuple[sympy.Expr | None, str]]:
+    """Sines and cosines swapped, and projection factors dropped, each named for what the angle is: a
+    drive's phase is no component along a surface."""
+    origin = {atom: _angle_origin(model, atom.args[0]) for atom in reference.atoms(sympy.sin, sympy.cos)}
+    candidates: list[tuple[sympy.Expr | None, str]] = []
+    for kind in _Angle:
+        swap = {
+            atom: (sympy.cos if isinstance(atom, sympy.sin) else sympy.sin)(atom.args[0])
+            for atom, found in origin.items()
+            if found is kind
+        }
+        if swap:
+            candidates.append((reference.subs(swap, simultaneous=True), _SWAPPED[kind]))
+    numerator, _ = sympy.fraction(sympy.factor(reference))
+    for factor in sympy.Mul.make_args(numerator):
+        if isinstance(factor, sympy.sin | sympy.cos | sympy.tan):
+            candidates.append((reference / factor, _DROPPED[_angle_origin(model, factor.args[0])]))
+    return candidates
+
+
+def _angle_origin(model: Model, angle: sympy.Expr) -> _Angle:
+    if angle.free_symbols & _drive_symbols(model):
+        return _Angle.DRIVE
+    if angle.free_symbols & _surface_symbols(model):
+        return _Angle.SURFACE
+    return _Angle.GEOMETRY
+
+
+def _drive_symbols(model: Model) -> set[sympy.Symbol]:
+    """The time and what a drive's phase is made of (w in cos(w t)), with the state's time put in."""
+    if model.time is None:
+        return set()
+    at = dict(model.state).get(model.time, model.time)
+    found: set[sympy.Symbol] = {model.time}
+    for force in model.forces:
+        for _, component in force.components:
+            for atom in component.atoms(sympy.sin, sympy.cos, sympy.tan):
+                if atom.has(model.time):
+                    found |= atom.args[0].subs(model.time, at).free_symbols | atom.args[0].free_symbols
+    return found
+
+
+def _surface_symbols(model: Model) -> set[sympy.Symbol]:
+    """The parameters that tilt a surface: those in a surface constraint's gap."""
+    found: set[sympy.Symbol] = set()
+    for constraint in model.constraints:
+        if constraint.kind is ConstraintKind.SURFACE:
+            found |= constraint.gap.free_symbols & set(model.parameters)
+    return found
 
 
 def _support_with_fixed_contact(

@@ -3,10 +3,15 @@ not give the answer away, and limits in which the answer stays finite."""
 
 from __future__ import annotations
 
+from typing import Any
+
 import pytest
 import sympy
 from sympy import cos, sin, sqrt
 
+from physics.engine import derive, load_model
+from physics.engine.mistakes import SWAPPED_TRIG
+from physics.engine.results import KnownMistake
 from tests.engine.conftest import SLOW_PROBLEMS, bank_derivation, s
 
 
@@ -117,3 +122,62 @@ def test_limits_are_finite() -> None:
         for case in cases:
             ((symbol, value),) = case.substitutions.items()
             assert sympy.limit(derivation.quantities[name], symbol, value).is_finite
+
+
+TRIG_NAMES = ("m", "F0", "w", "t", "theta", "g")
+
+
+def driven_up_a_slope() -> dict[str, Any]:
+    """A cart pushed up a smooth incline theta by F0 cos(w t), the time t a symbol of the problem."""
+    return {
+        "elements": {
+            "incline": {
+                "kind": "incline",
+                "body": "cart",
+                "mass": "m",
+                "angle": "theta",
+                "coordinate": "s",
+                "direction": "up",
+            }
+        },
+        "gravity": "g",
+        "forces": [{"body": "cart", "force": {"x": "F0*cos(w*t)*cos(theta)", "y": "F0*cos(w*t)*sin(theta)"}}],
+        "domain": {"ranges": {"theta": ["0", "pi/2"]}},
+        "quantities": {"a": {"acceleration": "s"}, "drive": {"expression": "m*a + m*g*sin(theta)"}},
+    }
+
+
+def _feedback_for(mistakes: tuple[KnownMistake, ...], expr: sympy.Expr) -> list[str]:
+    return [k.feedback for k in mistakes if sympy.simplify(k.expr - expr) == 0]
+
+
+def test_a_swapped_drive_phase_is_not_called_a_component_along_the_surface() -> None:
+    m, f0, w, t, th, g = (sympy.Symbol(n, positive=True) for n in TRIG_NAMES)
+    model = load_model(driven_up_a_slope(), {n: sympy.Symbol(n, positive=True) for n in TRIG_NAMES})
+    derivation = derive(model)
+    assert sympy.simplify(derivation.quantities["a"] - (f0 * cos(w * t) / m - g * sin(th))) == 0
+    mistakes = derivation.mistakes["a"]
+    drive_swapped = _feedback_for(mistakes, f0 * sin(w * t) / m - g * sin(th))
+    slope_swapped = _feedback_for(mistakes, f0 * cos(w * t) / m - g * cos(th))
+    assert drive_swapped and "driving force" in drive_swapped[0] and "surface" not in drive_swapped[0]
+    assert slope_swapped and "along the surface" in slope_swapped[0]
+    amplitude = _feedback_for(derivation.mistakes["drive"], f0)  # F0 cos(w t) taken as F0
+    assert amplitude and "amplitude" in amplitude[0] and "projection" not in amplitude[0]
+    assert all("along the surface" not in k.feedback for k in derivation.mistakes["drive"])
+
+
+@pytest.mark.slow
+def test_a_swing_angle_is_not_called_a_component_along_the_surface() -> None:
+    bm, bbig, length, bth, bg = (s("ballistic-pendulum", n) for n in ("m", "M", "L", "theta", "g"))
+    swapped = sqrt(2 * bg * length * (1 - sin(bth))) * (bm + bbig) / bm
+    feedback = _feedback_for(bank_derivation("ballistic-pendulum").mistakes["bullet_speed"], swapped)
+    assert feedback and "sine and a cosine" in feedback[0] and "surface" not in feedback[0]
+
+
+def test_an_incline_angle_keeps_the_along_the_surface_feedback() -> None:
+    g, th, m = (sympy.Symbol(n, positive=True) for n in ("g", "theta", "m"))
+    data = driven_up_a_slope()
+    data.pop("forces")
+    data["quantities"] = {"normal_force": {"force": "incline"}}
+    derivation = derive(load_model(data, {n: sympy.Symbol(n, positive=True) for n in ("m", "theta", "g")}))
+    assert _feedback_for(derivation.mistakes["normal_force"], m * g * sin(th)) == [SWAPPED_TRIG]

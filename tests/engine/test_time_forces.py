@@ -90,3 +90,12 @@ def test_the_time_is_a_time_in_the_dimensional_check() -> None:
     with pytest.raises(SpecErrors) as caught:
         load_model(data, SYMBOLS, declared)
     assert caught.value.errors[0].path == ("forces", 0, "force", "x")
+
+
+def test_a_swapped_drive_phase_gets_feedback_about_the_drive_not_a_surface() -> None:
+    t = sympy.Symbol("t", positive=True)
+    result = uncached(load_model(driven_cart({"x": "A"}), {**SYMBOLS, "t": t}))
+    sine_drive = (F0 * sympy.sin(w * t) - k * A) / m
+    swapped = [slip.feedback for slip in result.mistakes["a"] if sympy.simplify(slip.expr - sine_drive) == 0]
+    assert swapped and "driving force" in swapped[0]
+    assert all("surface" not in slip.feedback for slip in result.mistakes["a"])
