@@ -156,14 +156,37 @@ def _derive(model: Model) -> Derivation:
 def _too_few(
     name: str, derived: dict[str, sympy.Expr], stopped: dict[str, str], methods: list[Method]
 ) -> str:
-    """What each method found and why the others stopped, for a quantity fewer than two methods reached."""
-    found = [
-        f"{m.name} gives {derived[m.name]}" if m.name in derived else f"{m.name} {stopped[m.name]}"
-        for m in methods
-    ]
+    """What each method found and why the others stopped, for a quantity fewer than two methods reached:
+    a reason several methods share is said once, naming them all."""
+    found = [f"{m.name} gives {derived[m.name]}" for m in methods if m.name in derived]
+    reasons: dict[str, list[str]] = {}
+    for method in methods:
+        if method.name not in derived:
+            reasons.setdefault(_without_name(name, stopped[method.name]), []).append(method.name)
+    found += [_who(names) + " " + (_plural(why) if len(names) > 1 else why) for why, names in reasons.items()]
+    reached = (
+        "no method could derive it"
+        if not derived
+        else f"only {len(derived)} method could derive it ({', '.join(derived)})"
+    )
+    return f"{name}: {reached}; at least {MIN_METHODS} are required. " + "; ".join(found)
+
+
+def _without_name(name: str, reason: str) -> str:
+    """A method's reason without the quantity's name it repeats ("stopped: a: ..." -> "stopped: ...")."""
+    how, colon, why = reason.partition(": ")
+    return f"{how}: {why.removeprefix(f'{name}: ')}" if colon else reason
+
+
+def _who(names: list[str]) -> str:
+    return names[0] if len(names) == 1 else ", ".join(names[:-1]) + " and " + names[-1]
+
+
+def _plural(reason: str) -> str:
     return (
-        f"{name}: only {len(derived)} method(s) could derive it ({', '.join(derived) or 'none'}); at least "
-        f"{MIN_METHODS} are required. " + "; ".join(found)
+        "do not apply" + reason.removeprefix("does not apply")
+        if reason.startswith("does not apply")
+        else reason
     )
 
 

@@ -3,6 +3,7 @@ each derived by at least two methods, measured on the integrated motion, refused
 
 from __future__ import annotations
 
+import re
 from typing import Any
 
 import pytest
@@ -68,7 +69,11 @@ def test_a_damped_pendulum_is_derived_by_lagrange_and_the_energy_balance() -> No
 @pytest.mark.parametrize(
     ("change", "message"),
     [
-        pytest.param({"domain": {}}, "not underdamped on the whole domain", id="underdamping-not-declared"),
+        pytest.param(
+            {"domain": {}},
+            "the motion is not underdamped on the whole domain",
+            id="underdamping-not-declared",
+        ),
         pytest.param(
             {"forces": [{"body": "block", "quadratic_drag": "c"}]},
             "not linear in the velocity",
@@ -84,3 +89,31 @@ def test_a_damped_frequency_the_model_cannot_have_is_refused_with_the_reason(
     with pytest.raises(DerivationError) as caught:
         uncached(load_model(data, SYMBOLS))
     assert message in str(caught.value)
+
+
+@pytest.mark.parametrize(
+    ("change", "reason"),
+    [
+        pytest.param(
+            {"domain": {}}, "the motion is not underdamped on the whole domain", id="maybe-overdamped"
+        ),
+        pytest.param(
+            {"forces": [{"body": "block", "quadratic_drag": "c"}]},
+            "quadratic drag is not linear",
+            id="quadratic",
+        ),
+    ],
+)
+def test_a_refusal_says_each_reason_once_naming_the_methods_that_gave_it(
+    change: dict[str, Any], reason: str
+) -> None:
+    data = {**damped_spring(), **change, "quantities": {"omega_d": {"damped_frequency": "x"}}}
+    with pytest.raises(DerivationError) as caught:
+        uncached(load_model(data, SYMBOLS))
+    ((path, message),) = caught.value.findings
+    assert path == ("quantities", "omega_d")
+    assert message.count(reason) == 1
+    said = re.search(r"(\w+(?:, \w+)*(?: and \w+)?) stopped: " + re.escape(reason), message)
+    assert said is not None, message
+    assert {"lagrange", "newton", "conservation"} <= set(re.split(r", | and ", said.group(1)))
+    assert "omega_d: omega_d" not in message and "stopped: omega_d:" not in message
