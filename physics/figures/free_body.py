@@ -10,6 +10,7 @@ come from loads.py (a spring's direction is taken where the body rests).
 from __future__ import annotations
 
 import math
+from collections import Counter
 from collections.abc import Mapping
 from dataclasses import dataclass
 
@@ -38,9 +39,49 @@ def _unit(x: float, y: float) -> tuple[float, float] | None:
 
 def body_forces(model: Model, body_name: str, given: Mapping[str, float]) -> list[Force]:
     """The forces on `body_name`: weight, constraint forces, kinetic friction, springs and other
-    potentials, given forces and drag, with directions."""
-    values = Values(model, given)
+    potentials, given forces and drag, with directions. A contact has one label in every body's
+    diagram: numbered across the model when two contacts of one kind (two strings, two surfaces) would
+    otherwise share it."""
     body = model.body(body_name)
+    values = Values(model, given)
+    labels = _contact_labels(model, values)
+    forces: list[Force] = []
+    if model.gravity is not None:
+        mass = body.mass.name if isinstance(body.mass, sympy.Symbol) else "m"
+        gravity = model.gravity.name if isinstance(model.gravity, sympy.Symbol) else "g"
+        forces.append(Force(f"{symbol_label(mass)}{symbol_label(gravity)}", (0.0, -1.0)))
+    forces += [Force(labels[source], direction) for source, direction in _contacts(model, body_name, values)]
+    # Springs are named by their constants, as the scene labels them: two springs k are both Fₖ there
+    # too, so they are not numbered (Fₖ₁ would read as the spring k₁).
+    loads = potential_forces(model, body_name, values) + applied_forces(model, body_name, values)
+    return forces + [Force(label, direction) for label, direction in loads]
+
+
+_Source = tuple[str, str | int]  # ("constraint", its name) or ("friction", its index in the model)
+
+
+def _contact_labels(model: Model, values: Values) -> dict[_Source, str]:
+    """One label per contact force drawn on any body, in the model's order."""
+    drawn = {source for body in model.bodies for source, _ in _contacts(model, body.name, values)}
+    sources: list[tuple[_Source, str]] = [
+        (("constraint", c.name), _LABELS.get(c.kind, c.name)) for c in model.constraints
+    ]
+    sources += [(("friction", i), "f") for i in range(len(model.frictions))]
+    sources = [(source, base) for source, base in sources if source in drawn]
+    shared = Counter(base for _, base in sources)
+    counts: Counter[str] = Counter()
+    labels: dict[_Source, str] = {}
+    for source, base in sources:
+        if shared[base] > 1:
+            counts[base] += 1
+            labels[source] = base + str(counts[base]).translate(_SUB)
+        else:
+            labels[source] = base
+    return labels
+
+
+def _contacts(model: Model, body_name: str, values: Values) -> list[tuple[_Source, tuple[float, float]]]:
+    """The constraint and friction forces on one body, each with its source and direction."""
     at_rest = {c.symbol: 0.0 for c in model.coordinates}
     place: dict[sympy.Symbol, float] = {}
     for other in model.bodies:
@@ -52,11 +93,7 @@ def body_forces(model: Model, body_name: str, given: Mapping[str, float]) -> lis
                 place[model.cartesian_symbol(name)] = values.number(expr, at_rest)
             except (TypeError, ValueError, ZeroDivisionError):
                 continue
-    forces: list[Force] = []
-    if model.gravity is not None:
-        mass = body.mass.name if isinstance(body.mass, sympy.Symbol) else "m"
-        gravity = model.gravity.name if isinstance(model.gravity, sympy.Symbol) else "g"
-        forces.append(Force(f"{symbol_label(mass)}{symbol_label(gravity)}", (0.0, -1.0)))
+    found: list[tuple[_Source, tuple[float, float]]] = []
     names = dict(model.cartesian)
     for constraint in model.constraints:
         x, y = names.get(f"x_{body_name}"), names.get(f"y_{body_name}")
@@ -71,38 +108,24 @@ def body_forces(model: Model, body_name: str, given: Mapping[str, float]) -> lis
         direction = _unit(gradient[0], gradient[1])
         if direction is None or constraint.kind is ConstraintKind.OTHER:
             continue
-        label = _LABELS.get(constraint.kind, constraint.name)
-        forces.append(Force(label, direction))
-    for friction in model.frictions:
-        if friction.body != body_name:
+        found.append((("constraint", constraint.name), direction))
+    for index, friction in enumerate(model.frictions):
+        if body_name not in (friction.body, friction.against):
             continue
+        slider = model.body(friction.body)
         coordinate = model.coordinate(friction.sliding).symbol
         try:
-            along = [values.number(sympy.diff(expr, coordinate), at_rest) for _, expr in body.position]
+            along = [values.number(sympy.diff(expr, coordinate), at_rest) for _, expr in slider.position]
         except (TypeError, ValueError, ZeroDivisionError):
             continue
-        axes = [axis for axis, _ in body.position]
+        axes = [axis for axis, _ in slider.position]
         vx = along[axes.index("x")] if "x" in axes else 0.0
         vy = along[axes.index("y")] if "y" in axes else 0.0
-        direction = _unit(-vx, -vy)
+        reaction = -1.0 if body_name == friction.against else 1.0  # the surface body feels -f
+        direction = _unit(-vx * reaction, -vy * reaction)
         if direction is not None:
-            forces.append(Force("f", direction))
-    # Two forces of one kind (two strings, two surfaces) are told apart by number.
-    seen: dict[str, int] = {}
-    for force in forces:
-        seen[force.label] = seen.get(force.label, 0) + 1
-    counts: dict[str, int] = {}
-    numbered = []
-    for force in forces:
-        if seen[force.label] > 1:
-            counts[force.label] = counts.get(force.label, 0) + 1
-            numbered.append(Force(force.label + str(counts[force.label]).translate(_SUB), force.direction))
-        else:
-            numbered.append(force)
-    # Springs are named by their constants, as the scene labels them: two springs k are both Fₖ there
-    # too, so they are not numbered (Fₖ₁ would read as the spring k₁).
-    loads = potential_forces(model, body_name, values) + applied_forces(model, body_name, values)
-    return numbered + [Force(label, direction) for label, direction in loads]
+            found.append((("friction", index), direction))
+    return found
 
 
 _SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")

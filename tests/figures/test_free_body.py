@@ -7,10 +7,13 @@ import xml.etree.ElementTree as ET
 
 import pytest
 
+from physics.engine import Model, load_model
 from physics.figures import body_forces, free_body_figure
 from problems.loader import load_bank
 from problems.modelinfo import load_doc_model
 from problems.symbols import symbol_table
+from tests.engine.test_contact_friction import SYMBOLS as CART_SYMBOLS
+from tests.engine.test_contact_friction import block_on_cart
 
 BANK = {doc.id: doc for doc in load_bank()}
 THIRTY = math.radians(30)
@@ -56,3 +59,74 @@ def test_every_body_of_every_bank_problem_gets_a_free_body_diagram(problem_id: s
         root = ET.fromstring(free_body_figure(model, body.name, {}, title=doc.title))
         assert root.get("role") == "img"
         assert "Forces on" in root.findtext("{http://www.w3.org/2000/svg}desc", "")
+
+
+SVG = "{http://www.w3.org/2000/svg}"
+
+
+def diagram_labels(model: Model, body: str) -> dict[str, tuple[float, float]]:
+    """The force labels drawn in one body's SVG diagram, with the directions body_forces gives them."""
+    root = ET.fromstring(free_body_figure(model, body, {}, title="t"))
+    drawn = {text.text for text in root.iter(f"{SVG}text")}
+    directions = {f.label: f.direction for f in body_forces(model, body, {})}
+    assert set(directions) <= drawn  # every force is labelled in the picture
+    assert len(directions) == len(body_forces(model, body, {}))  # and no label repeats within it
+    return directions
+
+
+def opposite(a: tuple[float, float], b: tuple[float, float]) -> bool:
+    return close(a, (-b[0], -b[1]))
+
+
+def bank_model(problem_id: str) -> Model:
+    doc = BANK[problem_id]
+    return load_doc_model(doc, symbol_table(doc))
+
+
+@pytest.mark.parametrize(
+    ("problem_id", "first", "second"),
+    [
+        pytest.param("moving-wedge", "block", "wedge", id="block-pushes-the-wedge"),
+        pytest.param("blocks-in-contact", "lower", "upper", id="blocks-push-each-other"),
+        pytest.param("pushed-blocks", "block1", "block2", id="pushed-blocks"),
+        pytest.param("double-pendulum", "bob2", "bob1", id="lower-string-pulls-both-bobs"),
+    ],
+)
+def test_a_contact_between_two_bodies_has_one_label_in_both_diagrams(
+    problem_id: str, first: str, second: str
+) -> None:
+    model = bank_model(problem_id)
+    one, other = diagram_labels(model, first), diagram_labels(model, second)
+    shared = [label for label in one if label in other and not label.endswith("g")]
+    assert shared, (one, other)
+    for label in shared:  # action and reaction: the same label, opposite directions
+        assert opposite(one[label], other[label]), (label, one, other)
+
+
+@pytest.mark.parametrize(
+    ("problem_id", "bodies", "kind"),
+    [
+        pytest.param("double-incline", ("m1", "m2"), "N", id="two-slopes"),
+        pytest.param("atwood-massive-pulley", ("m1", "m2"), "T", id="two-strings"),
+        pytest.param("rolling-incline", ("cylinder", "hoop", "sphere", "point"), "N", id="four-racers"),
+        pytest.param("rolling-incline", ("cylinder", "hoop", "sphere"), "f", id="three-grips"),
+    ],
+)
+def test_separate_contacts_of_one_kind_get_separate_labels(
+    problem_id: str, bodies: tuple[str, ...], kind: str
+) -> None:
+    model = bank_model(problem_id)
+    contacts = [{label for label in diagram_labels(model, body) if label.startswith(kind)} for body in bodies]
+    assert all(contacts), contacts
+    for i, mine in enumerate(contacts):
+        for theirs in contacts[i + 1 :]:
+            assert not mine & theirs, contacts
+
+
+def test_friction_against_a_moving_surface_is_drawn_on_both_bodies_with_one_label() -> None:
+    model = load_model(block_on_cart(), CART_SYMBOLS)
+    block, cart = diagram_labels(model, "block"), diagram_labels(model, "cart")
+    friction = [label for label in block if label.startswith("f")]
+    assert len(friction) == 1 and friction[0] in cart
+    assert close(block[friction[0]], (-1.0, 0.0))  # the block slides forward on the cart
+    assert opposite(block[friction[0]], cart[friction[0]])
