@@ -257,7 +257,7 @@ def mistakes(model: Model, quantity: Quantity, reference: sympy.Expr) -> list[tu
 
 
 def limit_cases(model: Model) -> list[tuple[sympy.Symbol, sympy.Expr, str]]:
-    return [(b, sympy.Integer(0), "no damping") for b in drag_coefficients(model)]
+    return [(b, sympy.Integer(0), f"no damping ({b} → 0)") for b in drag_coefficients(model)]
 
 
 def undamped_checks(

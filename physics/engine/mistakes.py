@@ -311,12 +311,15 @@ def generate_limits(model: Model, reference: sympy.Expr) -> tuple[LimitCase, ...
             cases.append((symbol, sympy.Integer(0), f"{symbol} → 0"))
     for friction in model.frictions:
         if isinstance(friction.coefficient, sympy.Symbol):
-            cases.append((friction.coefficient, sympy.Integer(0), "no friction"))
+            cases.append(
+                (friction.coefficient, sympy.Integer(0), f"no friction ({friction.coefficient} → 0)")
+            )
     cases += damping.limit_cases(model)
-    masses = [b.mass for b in model.bodies if isinstance(b.mass, sympy.Symbol)]
-    if len(set(masses)) >= 2:
-        for mass in dict.fromkeys(masses):
-            cases.append((mass, sympy.Integer(0), f"{mass} much lighter than the other masses"))
+    masses = list(dict.fromkeys(b.mass for b in model.bodies if isinstance(b.mass, sympy.Symbol)))
+    for mass in masses if len(masses) >= 2 else []:
+        others = [str(other) for other in masses if other != mass]
+        than = others[0] if len(others) == 1 else "the other masses"
+        cases.append((mass, sympy.Integer(0), f"{mass} much lighter than {than}"))
     placed = set().union(
         *(e.free_symbols for b in model.bodies for _, e in b.position),
         *(b.mass.free_symbols for b in model.bodies),
@@ -325,9 +328,11 @@ def generate_limits(model: Model, reference: sympy.Expr) -> tuple[LimitCase, ...
         for symbol in rigid.inertia.free_symbols - placed:
             cases.append((symbol, sympy.Integer(0), f"{symbol} → 0: no rotational inertia"))
     result: list[LimitCase] = []
+    said: set[tuple[sympy.Symbol, sympy.Expr]] = set()
     for symbol, value, description in cases:
-        if not reference.has(symbol):
+        if not reference.has(symbol) or (symbol, value) in said:  # two frictions may share one mu
             continue
+        said.add((symbol, value))
         if _limit(reference, symbol, value) is not None:
             result.append(LimitCase({symbol: value}, description))
     return tuple(result)

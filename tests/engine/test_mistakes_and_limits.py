@@ -11,7 +11,10 @@ from sympy import cos, sin, sqrt
 
 from physics.engine import derive, load_model
 from physics.engine.mistakes import SWAPPED_TRIG
-from physics.engine.results import KnownMistake
+from physics.engine.results import KnownMistake, LimitCase
+from problems.loader import load_bank
+from problems.modelinfo import load_doc_model
+from problems.symbols import symbol_table
 from tests.engine.conftest import SLOW_PROBLEMS, bank_derivation, s
 
 
@@ -181,3 +184,31 @@ def test_an_incline_angle_keeps_the_along_the_surface_feedback() -> None:
     data["quantities"] = {"normal_force": {"force": "incline"}}
     derivation = derive(load_model(data, {n: sympy.Symbol(n, positive=True) for n in ("m", "theta", "g")}))
     assert _feedback_for(derivation.mistakes["normal_force"], m * g * sin(th)) == [SWAPPED_TRIG]
+
+
+def _bank_limits(problem_id: str, quantity: str) -> tuple[LimitCase, ...]:
+    (doc,) = [d for d in load_bank() if d.id == problem_id]
+    return derive(load_doc_model(doc, symbol_table(doc))).limits[quantity]
+
+
+def test_a_friction_limit_names_its_coefficient_and_is_listed_once_per_coefficient() -> None:
+    two = [
+        c.description
+        for c in _bank_limits("blocks-in-contact", "acceleration")
+        if "friction" in c.description
+    ]
+    assert len(two) == 2 and len(set(two)) == 2  # mu1 and mu2 each, told apart
+    assert all(
+        next(iter(c.substitutions)).name in c.description
+        for c in _bank_limits("blocks-in-contact", "acceleration")
+    )
+    shared = [c for c in _bank_limits("pushed-blocks", "acceleration") if "friction" in c.description]
+    assert len(shared) == 1  # two contacts with one coefficient: one limit
+
+
+def test_a_light_body_is_compared_with_the_other_body_by_name() -> None:
+    m1, m2 = s("atwood", "m1"), s("atwood", "m2")
+    cases = {
+        next(iter(c.substitutions)): c.description for c in bank_derivation("atwood").limits["acceleration"]
+    }
+    assert "than m2" in cases[m1] and "than m1" in cases[m2]
