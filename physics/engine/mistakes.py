@@ -141,16 +141,11 @@ class _Angle(enum.Enum):
 
 
 _SWAPPED = {_Angle.SURFACE: SWAPPED_TRIG, _Angle.GEOMETRY: SWAPPED_ANGLE, _Angle.DRIVE: SWAPPED_DRIVE}
-_DROPPED = {
-    _Angle.SURFACE: DROPPED_PROJECTION,
-    _Angle.GEOMETRY: DROPPED_PROJECTION,
-    _Angle.DRIVE: DROPPED_DRIVE,
-}
 
 
 def _trig_mistakes(model: Model, reference: sympy.Expr) -> list[tuple[sympy.Expr | None, str]]:
     """Sines and cosines swapped, and projection factors dropped, each named for what the angle is: a
-    drive's phase is no component along a surface."""
+    drive's phase is no component along a surface, and dropping it takes the drive's amplitude."""
     origin = {atom: _angle_origin(model, atom.args[0]) for atom in reference.atoms(sympy.sin, sympy.cos)}
     candidates: list[tuple[sympy.Expr | None, str]] = []
     for kind in _Angle:
@@ -161,10 +156,14 @@ def _trig_mistakes(model: Model, reference: sympy.Expr) -> list[tuple[sympy.Expr
         }
         if swap:
             candidates.append((reference.subs(swap, simultaneous=True), _SWAPPED[kind]))
+    drive = {atom: sympy.Integer(1) for atom, found in origin.items() if found is _Angle.DRIVE}
+    if drive:
+        candidates.append((reference.subs(drive, simultaneous=True), DROPPED_DRIVE))
     numerator, _ = sympy.fraction(sympy.factor(reference))
     for factor in sympy.Mul.make_args(numerator):
-        if isinstance(factor, sympy.sin | sympy.cos | sympy.tan):
-            candidates.append((reference / factor, _DROPPED[_angle_origin(model, factor.args[0])]))
+        projection = isinstance(factor, sympy.sin | sympy.cos | sympy.tan)
+        if projection and _angle_origin(model, factor.args[0]) is not _Angle.DRIVE:
+            candidates.append((reference / factor, DROPPED_PROJECTION))
     return candidates
 
 

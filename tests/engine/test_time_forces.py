@@ -98,4 +98,7 @@ def test_a_swapped_drive_phase_gets_feedback_about_the_drive_not_a_surface() -> 
     sine_drive = (F0 * sympy.sin(w * t) - k * A) / m
     swapped = [slip.feedback for slip in result.mistakes["a"] if sympy.simplify(slip.expr - sine_drive) == 0]
     assert swapped and "driving force" in swapped[0]
+    amplitude = (F0 - k * A) / m  # F0 cos(w t) taken as F0
+    taken = [slip.feedback for slip in result.mistakes["a"] if sympy.simplify(slip.expr - amplitude) == 0]
+    assert taken and "amplitude" in taken[0]
     assert all("surface" not in slip.feedback for slip in result.mistakes["a"])
