@@ -56,7 +56,8 @@ def linearization(method: Method, point: Point) -> tuple[sympy.Expr, sympy.Expr,
         raise DerivationError(why)
     build = METHODS.get(method.name)
     if build is None:
-        raise NotThisWay(f"{method.title} does not linearize damped motion")
+        *others, last = METHODS
+        raise NotThisWay(f"damped motion is linearized only by the {', '.join(others)} and {last} methods")
     mass, damping, stiffness = build(method, point)
     s = sympy.Symbol("s")
     polynomial = sympy.expand((mass * s**2 + damping * s + stiffness).det())
