@@ -977,6 +977,7 @@ def draw_path(
         figure.say(f"A rigid body {body_label(body, model)} swings about a fixed pivot at its end.")
         return
     figure.canvas.polyline(points, width=0.07)
+    turning = ""
     if spin is not None:  # a rotating frame: the axis of rotation, with its rate
         top = max(p[1] for p in points) + 1.0
         bottom = min(p[1] for p in points) - 0.5
@@ -985,9 +986,8 @@ def draw_path(
         rates = _other_symbols(spin, body, model)
         if rates:
             figure.canvas.text((0.9, top - 0.2), symbol_label(rates[0].name), anchor="start")
-        figure.say(
-            "It turns about the vertical axis drawn dashed"
-            + (f" at the rate {symbol_label(rates[0].name)}." if rates else ".")
+        turning = "The curve turns about the vertical axis drawn dashed" + (
+            f" at the rate {symbol_label(rates[0].name)}." if rates else "."
         )
     here = points[len(points) * 2 // 3]
     radius = 0.45
@@ -996,6 +996,8 @@ def draw_path(
         (here[0] + radius + 0.2, here[1] + radius * 2 + 0.2), body_label(body, model), anchor="start"
     )
     figure.say(f"{body_label(body, model)} moves along the curve drawn (a wire or a surface).")
+    if turning:  # said after the curve it refers to
+        figure.say(turning)
 
 
 def _wedge_roles(surface: Constraint, model: Model) -> tuple[Body, Body]:

@@ -89,3 +89,11 @@ def test_every_shape_lies_inside_the_view_box(problem_id: str) -> None:
 )
 def test_symbols_are_labelled_as_the_statement_typesets_them(name: str, label: str) -> None:
     assert symbol_label(name) == label
+
+
+def test_a_turning_curve_is_said_after_the_body_on_it_so_the_sentence_names_what_turns() -> None:
+    sentences = figure_of("bead-rotating-hoop").findtext(f"{SVG}desc", "").split(". ")
+    turning = [i for i, sentence in enumerate(sentences) if "turns about the vertical axis" in sentence]
+    moving = [i for i, sentence in enumerate(sentences) if "moves along the curve" in sentence]
+    assert turning and moving and moving[0] < turning[0]
+    assert not sentences[turning[0]].startswith("It ")
