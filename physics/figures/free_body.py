@@ -3,8 +3,10 @@
 The weight comes from gravity; each constraint the body takes part in pushes or pulls along the gradient
 of its gap (a surface's normal force, a string's tension, rolling friction), as the engine's multipliers
 do; kinetic friction opposes the sliding. Directions are those at the model's reference configuration
-(every coordinate 0) with the given or typical values. Springs, other potentials, given forces and drag
-come from loads.py (a spring's direction is taken where the body rests).
+(every coordinate 0) with the given or typical values. A contact keeps one label in every diagram of
+the problem (the incline's N on the block is the N on the wedge, opposite); friction against a moving
+surface is drawn on both bodies. Springs, other potentials, given forces and drag come from loads.py (a
+spring's direction is taken where the body rests).
 """
 
 from __future__ import annotations
