@@ -15,6 +15,7 @@ import math
 from collections import Counter
 from collections.abc import Mapping
 from dataclasses import dataclass
+from functools import lru_cache
 
 import sympy
 
@@ -45,16 +46,15 @@ def body_forces(model: Model, body_name: str, given: Mapping[str, float]) -> lis
     diagram: numbered across the model when two contacts of one kind (two strings, two surfaces) would
     otherwise share it."""
     body = model.body(body_name)
-    values = Values(model, given)
-    labels = _contact_labels(model, values)
     forces: list[Force] = []
     if model.gravity is not None:
         mass = body.mass.name if isinstance(body.mass, sympy.Symbol) else "m"
         gravity = model.gravity.name if isinstance(model.gravity, sympy.Symbol) else "g"
         forces.append(Force(f"{symbol_label(mass)}{symbol_label(gravity)}", (0.0, -1.0)))
-    forces += [Force(labels[source], direction) for source, direction in _contacts(model, body_name, values)]
+    forces += _contact_forces(model, tuple(sorted(given.items())))[body_name]
     # Springs are named by their constants, as the scene labels them: two springs k are both Fₖ there
     # too, so they are not numbered (Fₖ₁ would read as the spring k₁).
+    values = Values(model, given)
     loads = potential_forces(model, body_name, values) + applied_forces(model, body_name, values)
     return forces + [Force(label, direction) for label, direction in loads]
 
@@ -62,9 +62,21 @@ def body_forces(model: Model, body_name: str, given: Mapping[str, float]) -> lis
 _Source = tuple[str, str | int]  # ("constraint", its name) or ("friction", its index in the model)
 
 
-def _contact_labels(model: Model, values: Values) -> dict[_Source, str]:
+@lru_cache(maxsize=16)
+def _contact_forces(model: Model, given: tuple[tuple[str, float], ...]) -> dict[str, tuple[Force, ...]]:
+    """Every body's contact forces, labelled together: a problem's diagrams are drawn one body at a
+    time, and each needs the others' contacts to number its own."""
+    values = Values(model, dict(given))
+    contacts = {body.name: _contacts(model, body.name, values) for body in model.bodies}
+    labels = _contact_labels(model, {source for found in contacts.values() for source, _ in found})
+    return {
+        name: tuple(Force(labels[source], direction) for source, direction in found)
+        for name, found in contacts.items()
+    }
+
+
+def _contact_labels(model: Model, drawn: set[_Source]) -> dict[_Source, str]:
     """One label per contact force drawn on any body, in the model's order."""
-    drawn = {source for body in model.bodies for source, _ in _contacts(model, body.name, values)}
     sources: list[tuple[_Source, str]] = [
         (("constraint", c.name), _LABELS.get(c.kind, c.name)) for c in model.constraints
     ]
