@@ -67,8 +67,9 @@ def _derive(model: Model) -> Derivation:
                 stopped[quantity.name][method.name] = f"does not apply ({why})"
                 continue
             except DerivationError as error:
-                notes.append(f"{quantity.name}: stopped: {error.message}")
-                stopped[quantity.name][method.name] = f"stopped: {error.message}"
+                said = error.message.removeprefix(f"{quantity.name}: ")  # the name is said once, here
+                notes.append(f"{quantity.name}: stopped: {said}")
+                stopped[quantity.name][method.name] = f"stopped: {said}"
                 if error.path[:2] == ("quantities", quantity.name):
                     places[quantity.name] = error.path
                 continue
@@ -162,7 +163,7 @@ def _too_few(
     reasons: dict[str, list[str]] = {}
     for method in methods:
         if method.name not in derived:
-            reasons.setdefault(_without_name(name, stopped[method.name]), []).append(method.name)
+            reasons.setdefault(stopped[method.name], []).append(method.name)
     found += [_who(names) + " " + (_plural(why) if len(names) > 1 else why) for why, names in reasons.items()]
     reached = (
         "no method could derive it"
@@ -170,12 +171,6 @@ def _too_few(
         else f"only {len(derived)} method could derive it ({', '.join(derived)})"
     )
     return f"{name}: {reached}; at least {MIN_METHODS} are required. " + "; ".join(found)
-
-
-def _without_name(name: str, reason: str) -> str:
-    """A method's reason without the quantity's name it repeats ("stopped: a: ..." -> "stopped: ...")."""
-    how, colon, why = reason.partition(": ")
-    return f"{how}: {why.removeprefix(f'{name}: ')}" if colon else reason
 
 
 def _who(names: list[str]) -> str:
