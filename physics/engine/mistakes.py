@@ -159,6 +159,8 @@ def _trig_mistakes(model: Model, reference: sympy.Expr) -> list[tuple[sympy.Expr
     drive = {atom: sympy.Integer(1) for atom, found in origin.items() if found is _Angle.DRIVE}
     if drive:
         candidates.append((reference.subs(drive, simultaneous=True), DROPPED_DRIVE))
+    if not origin:  # a bare tan (mu = tan(alpha)) has no component to drop
+        return candidates
     numerator, _ = sympy.fraction(sympy.factor(reference))
     for factor in sympy.Mul.make_args(numerator):
         projection = isinstance(factor, sympy.sin | sympy.cos | sympy.tan)

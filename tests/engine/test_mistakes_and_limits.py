@@ -212,3 +212,11 @@ def test_a_light_body_is_compared_with_the_other_body_by_name() -> None:
         next(iter(c.substitutions)): c.description for c in bank_derivation("atwood").limits["acceleration"]
     }
     assert "than m2" in cases[m1] and "than m1" in cases[m2]
+
+
+def test_a_bare_tangent_is_not_offered_as_a_dropped_projection() -> None:
+    (doc,) = [d for d in load_bank() if d.id == "skier-friction"]
+    derivation = derive(load_doc_model(doc, symbol_table(doc)))
+    assert derivation.quantities["friction_coefficient"].has(sympy.tan)
+    # mu = 1 (tan(alpha) dropped) is no slip anyone makes
+    assert all("projection" not in slip.feedback for slip in derivation.mistakes["friction_coefficient"])
