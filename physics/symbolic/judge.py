@@ -184,7 +184,7 @@ def _limit_hints(answer: sympy.Expr, reference: PreparedReference) -> list[str]:
     if not failed:
         return []
     if len(failed) == 1:
-        return [f"Your answer fails a limiting case ({failed[0]}); check it there."]
+        return [f"Your answer fails a limiting case, {failed[0]}: check it there."]
     return [f"Your answer fails {len(failed)} limiting cases; check it in each: {'; '.join(failed)}."]
 
 
