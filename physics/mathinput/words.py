@@ -5,6 +5,8 @@ A glued run (`mgsin`) becomes several tokens, each with its own position in the 
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 from physics.errors import AmbiguousInput, TooLarge, UnknownFunction, UnknownSymbol
 from physics.mathinput.names import NameTable, Part
 from physics.mathinput.tokens import Kind, Token
@@ -77,12 +79,24 @@ def resolve_words(tokens: list[Token], table: NameTable) -> list[Token]:
             )
         allowed = table.declared
         listed = ", ".join(allowed) if allowed else "none"
+        constants = "the constants pi and e" if table.euler_available else "the constant pi"
         raise UnknownSymbol(
-            f'Unknown symbol "{word}". Symbols you can use: {listed} (and the constants pi and e).'
-            if table.euler_available
-            else f'Unknown symbol "{word}". Symbols you can use: {listed} (and the constant pi).',
+            f'Unknown symbol "{word}". Symbols you can use: {listed} (and {constants}).'
+            + _greek_stand_in_hint(word, allowed),
             tok.pos,
             word,
             allowed,
         )
     return out
+
+
+# Latin letters students type for a Greek one that looks alike: `wt` for ωt, `u` for μ.
+_STAND_INS = {"w": ("omega", "ω"), "u": ("mu", "μ")}
+
+
+def _greek_stand_in_hint(word: str, declared: Sequence[str]) -> str:
+    """A sentence for an unknown word holding a Latin stand-in for a declared Greek symbol, or ""."""
+    for letter, (name, glyph) in _STAND_INS.items():
+        if letter in word and letter not in declared and any(d.startswith(name) for d in declared):
+            return f" If {letter} stands for {glyph}, type {name} or {glyph}."
+    return ""

@@ -121,6 +121,28 @@ def test_unknown_symbol_is_refused_listing_the_allowed_names(typed, declared, sy
         assert name in caught.value.message
 
 
+GREEK_STAND_INS = [
+    # (typed, declared, a sentence the refusal must hold, or None: no hint)
+    ("wt", ("omega", "t"), "If w stands for ω, type omega or ω."),
+    ("A cos(w0 t)", ("A", "omega_0", "t"), "If w stands for ω, type omega or ω."),
+    ("u g", ("mu", "g"), "If u stands for μ, type mu or μ."),
+    ("wt", ("w", "omega", "x"), None),  # w is declared: the unknown word is something else
+    ("wt", ("theta", "t"), None),  # no omega to mean
+]
+
+
+@pytest.mark.parametrize(
+    ("typed", "declared", "hint"), GREEK_STAND_INS, ids=[f"{g[0]}-{g[1]}" for g in GREEK_STAND_INS]
+)
+def test_a_latin_stand_in_for_a_declared_greek_letter_is_pointed_out(typed, declared, hint):
+    with pytest.raises(UnknownSymbol) as caught:
+        read(typed, *declared)
+    if hint is None:
+        assert "stands for" not in caught.value.message
+    else:
+        assert hint in caught.value.message
+
+
 UNKNOWN_FUNCTIONS = [
     ("f(x)", "f", 0),
     ("2 + g(x)", "g", 4),
