@@ -107,6 +107,22 @@ def _read_literal(text: str, expected: Dimension | None) -> tuple[NumericAnswer,
     return NumericAnswer.of_literal(number, reading.units, rest_start, unit_text, reading.note), number.end
 
 
+def _no_number_first(text: str) -> ParseError:
+    """Why an answer that does not start with a number is refused: an equation (`a = 4.58 m/s^2`) or
+    an approximation sign (`≈ 4.58`) is named, as students write them on paper."""
+    equals = text.find("=")
+    if equals >= 0:
+        return ParseError(
+            "Give the value alone, without a name and '=': write what comes after the '='", equals
+        )
+    stripped = text.lstrip()
+    if stripped[:1] in ("≈", "~"):
+        return ParseError(
+            f"Give the value without '{stripped[0]}': write the number itself", len(text) - len(stripped)
+        )
+    return ParseError("The answer must start with a number, such as 2.5 or 229/50", 0)
+
+
 def read_units_at(unit_text: str, start: int, expected: Dimension | None) -> UnitReading:
     """`read_units`, with any error's position moved to where the units start in the answer."""
     try:
@@ -141,7 +157,7 @@ def read_numeric_answer(
     ends = number_part_end(text)
     if ends is None:
         if literal_error is None:
-            raise ParseError("The answer must start with a number, such as 2.5 or 229/50", 0) from None
+            raise _no_number_first(text) from None
         raise literal_error
     try:
         answer = read_arithmetic_answer(text, expected)

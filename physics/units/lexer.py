@@ -143,6 +143,8 @@ def tokenize(text: str) -> list[Token]:
         elif char == "*" and text.startswith("**", i):
             i += 2
             tokens.append(Token(Kind.POWER, "**", start))
+        elif char == "." and not text[i + 1 :].strip():
+            i += 1  # the full stop of a sentence: `4.58 m/s^2.`
         elif char == "." and text[i + 1 : i + 2].isdigit():
             raise ParseError("A unit string holds whole numbers only: powers as in m^2 or s^-2", start)
         elif char in _SINGLE:

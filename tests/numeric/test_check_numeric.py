@@ -29,6 +29,7 @@ VERDICTS = [
     ("superscript-units", "4.58 m·s⁻²", ACCEL, OK, Reason.EQUIVALENT),
     ("slash-slash-units", "4.58 m/s/s", ACCEL, OK, Reason.EQUIVALENT),
     ("units-in-words", "4.58 metres per second squared", ACCEL, OK, Reason.EQUIVALENT),
+    ("sentence-full-stop", "4.58 m/s^2.", ACCEL, OK, Reason.EQUIVALENT),
     ("radians-per-second", "4.58 radians per second", OMEGA, OK, Reason.EQUIVALENT),
     ("per-alone-is-a-rate", "4.58 per second", NumericSpec(D("4.58"), "1/s"), OK, Reason.EQUIVALENT),
     ("per-without-a-unit", "4.58 m per", ACCEL, BAD, Reason.PARSE_ERROR),
@@ -169,6 +170,8 @@ WORDING = [
     ("1234000 N", SIGFIGS3, "3 significant figures (yours shows 4 to 7)"),
     ("12 500 m/s^2", ACCEL, "12500"),
     ("4,58 m/s^2", ACCEL, "decimal point"),
+    ("a = 4.58 m/s^2", ACCEL, "Give the value alone, without a name and '='"),
+    ("≈ 4.58 m/s^2", ACCEL, "Give the value without '≈'"),
 ]
 
 
@@ -186,6 +189,7 @@ POSITIONS = [
     ("4.58 KG/s^2", 5),
     ("4,58 m/s^2", 1),
     ("12 500 m/s^2", 3),
+    ("a = 4.58 m/s^2", 2),  # the '='
 ]
 
 
