@@ -133,51 +133,69 @@ def _given_label(force: AppliedForce, values: Values) -> str:
     return symbol_label(named[0].name) if len(named) == 1 else "F"
 
 
-def applied_forces(model: Model, body_name: str, values: Values) -> list[tuple[str, Direction]]:
-    """Given forces on the body, at the model's state, and drag against its velocity there (against
-    motion towards increasing coordinates when it starts at rest, like kinetic friction)."""
-    found: list[tuple[str, Direction]] = []
-    body = model.body(body_name)
-    state = {symbol: value for symbol, value in model.state}
+def _moving_state(model: Model, values: Values) -> dict[sympy.Symbol, float]:
+    """The coordinates and velocities of the model's state (0 where it gives none), and the time 0."""
     moving = {c.symbol: 0.0 for c in model.coordinates} | {c.velocity: 0.0 for c in model.coordinates}
-    for symbol, value in state.items():
+    for symbol, value in model.state:
         try:
             moving[symbol] = values.number(value)
         except _EVALUATION_ERRORS:
             continue
     if model.time is not None:
         moving[model.time] = 0.0
-    for force in (f for f in model.forces if f.body == body_name):
+    return moving
+
+
+def given_forces(model: Model, body_name: str, values: Values) -> list[tuple[str, Direction]]:
+    """The given forces on the body (a push F), with their directions at the model's state; the scene
+    draws them too, so both figures name them alike."""
+    moving = _moving_state(model, values)
+    found: list[tuple[str, Direction]] = []
+    for force in model.forces:
+        if force.body != body_name or force.kind is not ForceKind.APPLIED:
+            continue
+        given = dict(force.components)
         try:
-            if force.kind is ForceKind.APPLIED:
-                given = dict(force.components)
-                components = [values.number(given.get(axis, sympy.Integer(0)), moving) for axis in ("x", "y")]
-                direction = _unit(*components)
-                label = _given_label(force, values)
-            else:
-                position = dict(body.position)
-                velocity = [
-                    sum(
-                        values.number(sympy.diff(position.get(axis, sympy.Integer(0)), c.symbol), moving)
-                        * moving[c.velocity]
-                        for c in model.coordinates
-                    )
-                    for axis in ("x", "y")
-                ]
-                if _unit(*velocity) is None:  # at rest: as if moving towards increasing coordinates
-                    velocity = [
-                        sum(
-                            values.number(sympy.diff(position.get(axis, sympy.Integer(0)), c.symbol), moving)
-                            for c in model.coordinates
-                        )
-                        for axis in ("x", "y")
-                    ]
-                direction = _unit(-velocity[0], -velocity[1])
-                label = _drag_label(force)
+            direction = _unit(
+                *(values.number(given.get(axis, sympy.Integer(0)), moving) for axis in ("x", "y"))
+            )
         except _EVALUATION_ERRORS:
             continue
         if direction is not None:
-            found.append((label, direction))
+            found.append((_given_label(force, values), direction))
+    return found
+
+
+def applied_forces(model: Model, body_name: str, values: Values) -> list[tuple[str, Direction]]:
+    """Given forces on the body, at the model's state, and drag against its velocity there (against
+    motion towards increasing coordinates when it starts at rest, like kinetic friction)."""
+    found = given_forces(model, body_name, values)
+    body = model.body(body_name)
+    moving = _moving_state(model, values)
+    position = dict(body.position)
+
+    def velocity(speeds: dict[sympy.Symbol, float]) -> list[float]:
+        return [
+            sum(
+                values.number(sympy.diff(position.get(axis, sympy.Integer(0)), c.symbol), moving)
+                * speeds[c.velocity]
+                for c in model.coordinates
+            )
+            for axis in ("x", "y")
+        ]
+
+    for force in model.forces:
+        if force.body != body_name or force.kind is ForceKind.APPLIED:
+            continue
+        try:
+            moving_at = velocity(moving)
+            if _unit(*moving_at) is None:  # at rest: as if moving towards increasing coordinates
+                moving_at = velocity({c.velocity: 1.0 for c in model.coordinates})
+        except _EVALUATION_ERRORS:
+            continue
+        direction = _unit(-moving_at[0], -moving_at[1])
+        if direction is not None:
+            found.append((_drag_label(force), direction))
     return found
 
 

@@ -4,9 +4,10 @@ Bodies on a fixed surface constraint sit on an incline (or floor) whose slope co
 constraint's gap; a surface between two bodies makes a wedge; a string joining two bodies runs over a
 pulley; a string whose gap turns a body makes a yo-yo; a string of fixed length makes a pendulum; a
 potential with an anchor is a spring from a wall (with a dashpot beside it when the body feels linear
-drag), between two bodies an interaction across a distance. In their own modules: a body launched under
-gravity alone (projectile.py), a rod at rest against a floor and a wall (ladder.py), a body on a curved
-track from its start to where a quantity asks about it (track.py).
+drag), between two bodies an interaction across a distance. A given force on a body on a slope is an
+arrow pushing on it. In their own modules: a body launched under gravity alone (projectile.py), a rod at
+rest against a floor and a wall (ladder.py), a body on a curved track from its start to where a quantity
+asks about it (track.py), springs in a line (springs.py), bodies falling with drag (falling.py).
 Angles are labelled with the problem's symbol that sets them, bodies with their mass symbols. Values
 are the student's (angles set the drawing's slopes) or typical ones; sizes are the figure's own.
 """
@@ -244,9 +245,16 @@ def draw_double_incline(figure: Figure, model: Model, surfaces: list[Surface], s
 
 
 def draw_incline(
-    figure: Figure, model: Model, values: Values, surfaces: list[Surface], *, touching: bool = False
+    figure: Figure,
+    model: Model,
+    values: Values,
+    surfaces: list[Surface],
+    *,
+    touching: bool = False,
+    pushes: Mapping[str, list[tuple[str, Point]]] | None = None,
 ) -> Slope:
-    """Bodies on one fixed slope (or floor), spaced along it."""
+    """Bodies on one fixed slope (or floor), spaced along it; `pushes` are the given forces on each body
+    (label, direction in the model's axes), drawn as arrows pushing on it."""
     first = surfaces[0]
     slope = _drawn_slope(first)
     tangent = (math.cos(slope), math.sin(slope))
@@ -267,8 +275,9 @@ def draw_incline(
         _angle_mark(figure, lower, horizontal, toward_upper, first.angle_symbol)
     bodies = [s.body for s in surfaces]
     bases: dict[str, Point] = {}
+    taken: list[_Taken] = []  # bodies and arrows, which a friction label must keep clear of
     count = len(bodies)
-    for index, body in enumerate(bodies):
+    for index, (surface, body) in enumerate(zip(surfaces, bodies, strict=True)):
         fraction = 0.2 + 0.6 * index / (count - 1) if count > 1 else 0.45
         if touching:  # bodies pushing on each other sit side by side
             fraction = 0.35 + index * 1.15 * BLOCK / SLOPE
@@ -277,21 +286,138 @@ def draw_incline(
         label = body_label(body, model)
         fill = FILLS[index % len(FILLS)]
         if body.angle is not None:
-            _circle_body(figure, base, normal, body, label, fill)
+            centre = _circle_body(figure, base, normal, body, label, fill)
+            reach = _CIRCLE
         else:
-            _block(figure, base, tangent, label, fill)
-        for friction in (f for f in model.frictions if f.body == body.name):
-            if isinstance(friction.coefficient, sympy.Symbol):
-                spot = (
-                    base[0] - tangent[0] * 1.1 + normal[0] * 0.3,
-                    base[1] - tangent[1] * 1.1 + normal[1] * 0.3,
-                )
-                canvas.text(spot, symbol_label(friction.coefficient.name), size=0.36)
+            centre = _block(figure, base, tangent, label, fill)
+            reach = BLOCK / 2
+        taken.append(_Taken(centre, centre, reach))
+        for name, direction in (pushes or {}).get(body.name, []):
+            drawn = (
+                _on_drawn_slope(direction, surface, tangent)
+                if _along_slope(model, body, surface)
+                else direction
+            )
+            taken.append(
+                _push(figure, centre, drawn, tangent, reach, round_body=body.angle is not None, label=name)
+            )
+    _friction_labels(figure, model, bodies, bases, taken, tangent, normal, touching=touching)
     angle = f" at angle {symbol_label(first.angle_symbol.name)}" if first.angle_symbol else ""
     names = ", ".join(body_label(b, model) for b in bodies)
     rough = " (with friction)" if model.frictions else ""
     figure.say(f"{'A floor' if flat else 'An incline' + angle}{rough} with {names} on it.")
+    pushed = [
+        f"{name} pushes {body_label(body, model)}"
+        for body in bodies
+        for name, _ in (pushes or {}).get(body.name, [])
+    ]
+    if pushed:
+        figure.say("A force " + ", and a force ".join(pushed) + ", along the arrow drawn.")
     return Slope(None if flat else upper, tangent, normal, bases)
+
+
+@dataclass(frozen=True)
+class _Taken:
+    """Part of the drawing a label must keep clear of: the segment from `start` to `end`, thickened by
+    `reach` (a body is a point thickened by its half-size; an arrow, a line)."""
+
+    start: Point
+    end: Point
+    reach: float
+
+    def near(self, spot: Point, margin: float) -> bool:
+        (ax, ay), (bx, by) = self.start, self.end
+        dx, dy = bx - ax, by - ay
+        length = dx * dx + dy * dy
+        t = 0.0 if length == 0 else min(1.0, max(0.0, ((spot[0] - ax) * dx + (spot[1] - ay) * dy) / length))
+        return math.hypot(spot[0] - ax - t * dx, spot[1] - ay - t * dy) < self.reach + margin
+
+
+_CIRCLE = 0.55  # radius of a round body on a slope
+_PUSH = 1.5  # length of a push's arrow
+
+
+def _on_drawn_slope(direction: Point, surface: Surface, tangent: Point) -> Point:
+    """A direction in the model's axes, turned to keep its angle to the surface on the drawn slope (which
+    is steepened or flattened to read clearly)."""
+    a, b = surface.normal
+    along_model = (b, -a) if b >= 0 else (-b, a)  # as _drawn_slope takes it, pointing right
+    across_model = (-along_model[1], along_model[0])
+    along = direction[0] * along_model[0] + direction[1] * along_model[1]
+    across = direction[0] * across_model[0] + direction[1] * across_model[1]
+    normal = (-tangent[1], tangent[0])
+    return (along * tangent[0] + across * normal[0], along * tangent[1] + across * normal[1])
+
+
+def _along_slope(model: Model, body: Body, surface: Surface) -> bool:
+    """Are the body's given forces written with the slope's angle (along or across it), so that they turn
+    with the drawn slope? A force without it (a horizontal push) keeps its direction on the page."""
+    angle = surface.angle_symbol
+    return angle is not None and any(
+        angle in expr.free_symbols
+        for force in model.forces
+        if force.body == body.name and force.kind is ForceKind.APPLIED
+        for _, expr in force.components
+    )
+
+
+def _push(
+    figure: Figure,
+    centre: Point,
+    direction: Point,
+    tangent: Point,
+    reach: float,
+    *,
+    round_body: bool,
+    label: str,
+) -> _Taken:
+    """An arrow along `direction` whose head meets the body's face on the side the force comes from."""
+    dx, dy = direction
+    if round_body:
+        depth = reach
+    else:  # a block turned with the slope: its face is where the line leaves its square
+        along = abs(dx * tangent[0] + dy * tangent[1])
+        across = abs(-dx * tangent[1] + dy * tangent[0])
+        depth = reach / max(along, across)
+    head = (centre[0] - dx * (depth + 0.05), centre[1] - dy * (depth + 0.05))
+    tail = (head[0] - dx * _PUSH, head[1] - dy * _PUSH)
+    figure.canvas.arrow(tail, head, width=0.05)
+    figure.canvas.text((tail[0] - dx * 0.35, tail[1] - dy * 0.35), label)
+    return _Taken((tail[0] - dx * 0.35, tail[1] - dy * 0.35), head, 0.25)
+
+
+def _friction_labels(
+    figure: Figure,
+    model: Model,
+    bodies: list[Body],
+    bases: dict[str, Point],
+    taken: list[_Taken],
+    tangent: Point,
+    normal: Point,
+    *,
+    touching: bool,
+) -> None:
+    """Each body's coefficient of friction on the surface beside it, clear of the bodies and arrows;
+    bodies side by side on one rough floor share one label."""
+    labelled: set[sympy.Symbol] = set()
+    for body in bodies:
+        for friction in (f for f in model.frictions if f.body == body.name):
+            coefficient = friction.coefficient
+            if not isinstance(coefficient, sympy.Symbol) or (touching and coefficient in labelled):
+                continue
+            base = bases[body.name]
+            # behind the body, else ahead of it, else further off either way
+            spots = [
+                (
+                    base[0] + tangent[0] * along + normal[0] * 0.3,
+                    base[1] + tangent[1] * along + normal[1] * 0.3,
+                )
+                for along in (-1.1, 1.1, -1.8, 1.8, -2.6, 2.6)
+            ]
+            spot = next((p for p in spots if not any(t.near(p, 0.25) for t in taken)), spots[0])
+            figure.canvas.text(spot, symbol_label(coefficient.name), size=0.36)
+            taken.append(_Taken(spot, spot, 0.2))
+            labelled.add(coefficient)
 
 
 def spring_sign(potential: PairPotential, values: Values) -> int:
@@ -556,7 +682,11 @@ def draw_pendulum(
     size = BLOCK * 0.9
     canvas.line(pivot, raised, width=0.04)
     canvas.polygon(_square(raised, size), fill=FILLS[0])
-    canvas.text(raised, body_label(body, model))
+    name = body_label(body, model)
+    if len(name) <= 3:
+        canvas.text(raised, name)
+    else:  # a name does not fit inside the block: beside it, away from the string
+        canvas.text((raised[0] + size / 2 + 0.15, raised[1]), name, size=0.36, anchor="start")
     length_symbols = sorted(
         (s for s in string.gap.free_symbols if s in set(model.parameters)), key=lambda s: s.name
     )
@@ -789,7 +919,11 @@ def draw_row(figure: Figure, model: Model) -> None:
     for index, body in enumerate(model.bodies):
         centre = (index * 2.0, 0.0)
         figure.canvas.polygon(_square(centre, BLOCK), fill=FILLS[index % len(FILLS)])
-        figure.canvas.text(centre, body_label(body, model))
+        label = body_label(body, model)
+        if len(label) <= 3:
+            figure.canvas.text(centre, label)
+        else:  # a name does not fit inside the block: beneath it
+            figure.canvas.text((centre[0], centre[1] - BLOCK / 2 - 0.35), label, size=0.32)
     figure.say("The bodies of the problem: " + ", ".join(body_label(b, model) for b in model.bodies) + ".")
 
 
@@ -806,7 +940,9 @@ def compose(model: Model, given: Mapping[str, float]) -> Figure:
 
 def _compose(model: Model, given: Mapping[str, float]) -> Figure:
     # Elements in their own modules use this module's helpers, so they are imported here.
+    from physics.figures.falling import draw_falling, falling_of
     from physics.figures.ladder import draw_ladder, leaning_of
+    from physics.figures.loads import given_forces
     from physics.figures.projectile import draw_projectile, launch_of
     from physics.figures.springs import draw_spring_line, spring_line_of
     from physics.figures.track import draw_track, track_of
@@ -855,7 +991,8 @@ def _compose(model: Model, given: Mapping[str, float]) -> Figure:
         touching = any(
             {b.name for b in _bodies_in(c.gap, model)} <= {f.body.name for f in fixed} for c in two_body
         )
-        slope = draw_incline(figure, model, values, fixed, touching=touching)
+        pushes = {surface.body.name: given_forces(model, surface.body.name, values) for surface in fixed}
+        slope = draw_incline(figure, model, values, fixed, touching=touching, pushes=pushes)
         for potential in model.potentials:
             if (
                 potential.anchor
@@ -931,6 +1068,9 @@ def _compose(model: Model, given: Mapping[str, float]) -> Figure:
             return figure
     if (track := track_of(model)) is not None:
         draw_track(figure, model, track, values)
+        return figure
+    if (falling := falling_of(model)) is not None:
+        draw_falling(figure, model, falling, values)
         return figure
     if len(model.bodies) == 1 and len(model.coordinates) == 1:
         draw_path(figure, model, model.bodies[0], values)

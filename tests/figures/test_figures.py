@@ -39,6 +39,9 @@ EXPECTED = {
     "ladder-slipping": ({"m", "L", "θ"}, "leans against a vertical wall"),
     "quarter-circle-slide": ({"m", "R"}, "quarter-circle track of radius R, with m at its top"),
     "damped-oscillator": ({"m", "k", "b"}, "a spring k and, beside it, a dashpot b"),
+    "incline-push-friction": ({"m", "θ", "μ", "F"}, "F pushes m"),
+    "pushed-blocks": ({"m₁", "m₂", "μ", "F"}, "F pushes m₁"),
+    "falling-drag": ({"pebble", "ball", "m", "bv", "cv²", "v"}, "pebble moving down at v, with drag bv"),
 }
 
 
