@@ -77,11 +77,14 @@ class Figure:
 
 
 class Values:
-    """Numbers for the model's parameters: the student's, else typical (an angle a third of its range)."""
+    """Numbers for the model's parameters: the student's, else typical (an angle a third of its range,
+    others 1, or 2 or 1/2 where 1 leaves the domain: a ball of radius r = 1 in a bowl of radius R = 1
+    has no bowl to roll in)."""
 
     def __init__(self, model: Model, given: Mapping[str, float]) -> None:
         self.subs: dict[sympy.Symbol, float] = {}
         ranges = {symbol: (low, high) for symbol, low, high in model.ranges}
+        typical = set()
         for symbol in model.parameters:
             if symbol.name in given:
                 self.subs[symbol] = float(given[symbol.name])
@@ -90,7 +93,32 @@ class Values:
                 self.subs[symbol] = low + (high - low) / 3
             else:
                 self.subs[symbol] = 1.0
+                typical.add(symbol)
         self.angles = set(ranges)
+        for expr in model.positive:
+            self._into_domain(expr, model.positive, typical)
+
+    def _into_domain(
+        self, expr: sympy.Expr, positive: tuple[sympy.Expr, ...], typical: set[sympy.Symbol]
+    ) -> None:
+        """Change one typical value, if need be, so that `expr` is positive and no other expression of
+        the domain stops being so."""
+        if self._positive(expr):
+            return
+        for symbol in sorted(expr.free_symbols & typical, key=lambda s: s.name):
+            for value in (2.0, 0.5):
+                before = self.subs[symbol]
+                kept = [e for e in positive if self._positive(e)]
+                self.subs[symbol] = value
+                if self._positive(expr) and all(self._positive(e) for e in kept):
+                    return
+                self.subs[symbol] = before
+
+    def _positive(self, expr: sympy.Expr) -> bool:
+        try:
+            return self.number(expr) > 0
+        except (TypeError, ValueError, ZeroDivisionError):
+            return False
 
     def number(self, expr: sympy.Expr, extra: Mapping[sympy.Symbol, float] | None = None) -> float:
         return float(expr.subs({**self.subs, **(extra or {})}))
