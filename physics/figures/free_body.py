@@ -6,7 +6,8 @@ do; kinetic friction opposes the sliding. Directions are those at the model's re
 (every coordinate 0) with the given or typical values. A contact keeps one label in every diagram of
 the problem (the incline's N on the block is the N on the wedge, opposite); friction against a moving
 surface is drawn on both bodies. Springs, other potentials, given forces and drag come from loads.py (a
-spring's direction is taken where the body rests).
+spring's direction is taken where the body rests); constraints of kind "other" (a wire, a hoop, a pivot
+or axle, a floor's grip) from held.py, which reads what they are from their gaps.
 """
 
 from __future__ import annotations
@@ -19,7 +20,8 @@ from functools import lru_cache
 
 import sympy
 
-from physics.engine.model import ConstraintKind, Model
+from physics.engine.model import Constraint, ConstraintKind, Model
+from physics.figures.held import held_forces
 from physics.figures.loads import applied_forces, potential_forces
 from physics.figures.scene import BLOCK, Values, body_label, symbol_label
 from physics.figures.svg import FILLS, Canvas
@@ -68,20 +70,21 @@ def _contact_forces(model: Model, given: tuple[tuple[str, float], ...]) -> dict[
     time, and each needs the others' contacts to number its own."""
     values = Values(model, dict(given))
     contacts = {body.name: _contacts(model, body.name, values) for body in model.bodies}
-    labels = _contact_labels(model, {source for found in contacts.values() for source, _ in found})
+    labels = _contact_labels(
+        model, {source: base for found in contacts.values() for source, base, _ in found}
+    )
     return {
-        name: tuple(Force(labels[source], direction) for source, direction in found)
+        name: tuple(Force(labels[source], direction) for source, _, direction in found)
         for name, found in contacts.items()
     }
 
 
-def _contact_labels(model: Model, drawn: set[_Source]) -> dict[_Source, str]:
-    """One label per contact force drawn on any body, in the model's order."""
-    sources: list[tuple[_Source, str]] = [
-        (("constraint", c.name), _LABELS.get(c.kind, c.name)) for c in model.constraints
-    ]
-    sources += [(("friction", i), "f") for i in range(len(model.frictions))]
-    sources = [(source, base) for source, base in sources if source in drawn]
+def _contact_labels(model: Model, drawn: dict[_Source, str]) -> dict[_Source, str]:
+    """One label per contact force drawn on any body (`drawn` gives each its letter), in the model's
+    order."""
+    order: list[_Source] = [("constraint", c.name) for c in model.constraints]
+    order += [("friction", i) for i in range(len(model.frictions))]
+    sources = [(source, drawn[source]) for source in order if source in drawn]
     shared = Counter(base for _, base in sources)
     counts: Counter[str] = Counter()
     labels: dict[_Source, str] = {}
@@ -94,8 +97,8 @@ def _contact_labels(model: Model, drawn: set[_Source]) -> dict[_Source, str]:
     return labels
 
 
-def _contacts(model: Model, body_name: str, values: Values) -> list[tuple[_Source, tuple[float, float]]]:
-    """The constraint and friction forces on one body, each with its source and direction."""
+def _contacts(model: Model, body_name: str, values: Values) -> list[tuple[_Source, str, tuple[float, float]]]:
+    """The constraint and friction forces on one body, each with its source, its letter and direction."""
     at_rest = {c.symbol: 0.0 for c in model.coordinates}
     place: dict[sympy.Symbol, float] = {}
     for other in model.bodies:
@@ -107,7 +110,8 @@ def _contacts(model: Model, body_name: str, values: Values) -> list[tuple[_Sourc
                 place[model.cartesian_symbol(name)] = values.number(expr, at_rest)
             except (TypeError, ValueError, ZeroDivisionError):
                 continue
-    found: list[tuple[_Source, tuple[float, float]]] = []
+    found: list[tuple[_Source, str, tuple[float, float]]] = []
+    held: list[tuple[Constraint, tuple[float, float]]] = []  # kind "other": a wire, a pivot, a grip
     names = dict(model.cartesian)
     for constraint in model.constraints:
         x, y = names.get(f"x_{body_name}"), names.get(f"y_{body_name}")
@@ -120,9 +124,12 @@ def _contacts(model: Model, body_name: str, values: Values) -> list[tuple[_Sourc
         except (TypeError, ValueError, ZeroDivisionError):  # not defined at the reference configuration
             continue
         direction = _unit(gradient[0], gradient[1])
-        if direction is None or constraint.kind is ConstraintKind.OTHER:
+        if direction is None:
             continue
-        found.append((("constraint", constraint.name), direction))
+        if constraint.kind is ConstraintKind.OTHER:
+            held.append((constraint, direction))
+            continue
+        found.append((("constraint", constraint.name), _LABELS[constraint.kind], direction))
     for index, friction in enumerate(model.frictions):
         if body_name not in (friction.body, friction.against):
             continue
@@ -138,8 +145,8 @@ def _contacts(model: Model, body_name: str, values: Values) -> list[tuple[_Sourc
         reaction = -1.0 if body_name == friction.against else 1.0  # the surface body feels -f
         direction = _unit(-vx * reaction, -vy * reaction)
         if direction is not None:
-            found.append((("friction", index), direction))
-    return found
+            found.append((("friction", index), "f", direction))
+    return found + held_forces(model, body_name, values, held, found)
 
 
 _SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
