@@ -6,7 +6,9 @@ from __future__ import annotations
 import csv
 import io
 import re
+import shutil
 from datetime import timedelta
+from pathlib import Path
 
 import pytest
 import yaml
@@ -14,10 +16,12 @@ from fastapi.testclient import TestClient
 
 from app.db.records import Role
 from app.db.types import utc_now
+from app.grading.pool import GradingPool
 from app.instructor.router import yaml_text
 from app.instructor.session import COOKIE
 from app.lti import outbox
 from app.lti.sessions import SESSION_COOKIE, open_session
+from app.settings import Settings
 from app.storage import Stores
 from physics.numeric import round_sigfigs
 from physics.verdict import Outcome, ReadAs, Reason, Verdict
@@ -201,6 +205,20 @@ def test_problem_page_shows_the_forces_on_each_body_beside_the_worked_solutions(
     )
     assert len(diagrams) == 1, "one diagram per body of the model"
     assert "Forces on" in diagrams[0] and "T at 90°" in diagrams[0], diagrams  # the string pulls straight up
+
+
+def test_a_rod_on_an_axle_shows_the_axle_holding_it_in_its_free_body_diagram(
+    settings: Settings, pages_pool: GradingPool, tmp_path: Path
+) -> None:
+    """The axle's force, which the problem asks for, was missing: the diagram showed the weight alone."""
+    shutil.copytree(BANK_DIR / "physical-pendulum", tmp_path / "physical-pendulum")
+    with TestClient(make_app(settings.model_copy(update={"bank_dir": tmp_path}), pages_pool)) as client:
+        sign_in(client, new_key(stores_of(client), "instructor", "Prof Ada"))
+        html = client.get("/instructor/problems/physical-pendulum").text
+    diagrams = re.findall(
+        r'<figure class="free-body">\s*<svg[^>]*role="img".*?<desc[^>]*>([^<]*)</desc>', html, re.S
+    )
+    assert len(diagrams) == 1 and "Fₐₓₗₑ at 90°" in diagrams[0] and "mg at -90°" in diagrams[0], diagrams
 
 
 def test_a_students_variant_shows_their_values_and_expected_numbers(signed_in: TestClient):
