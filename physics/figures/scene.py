@@ -7,7 +7,8 @@ potential with an anchor is a spring from a wall (with a dashpot beside it when 
 drag), between two bodies an interaction across a distance. A given force on a body on a slope is an
 arrow pushing on it. In their own modules: a body launched under gravity alone (projectile.py), a rod at
 rest against a floor and a wall (ladder.py), a body on a curved track from its start to where a quantity
-asks about it (track.py), springs in a line (springs.py), bodies falling with drag (falling.py).
+asks about it (track.py), springs in a line (springs.py), bodies falling with drag (falling.py),
+pendulums hung one from another (chain.py).
 Angles are labelled with the problem's symbol that sets them, bodies with their mass symbols. Values
 are the student's (angles set the drawing's slopes) or typical ones; sizes are the figure's own.
 """
@@ -968,6 +969,7 @@ def compose(model: Model, given: Mapping[str, float]) -> Figure:
 
 def _compose(model: Model, given: Mapping[str, float]) -> Figure:
     # Elements in their own modules use this module's helpers, so they are imported here.
+    from physics.figures.chain import draw_pendulum_chain, pendulum_chain_of
     from physics.figures.falling import draw_falling, falling_of
     from physics.figures.ladder import draw_ladder, leaning_of
     from physics.figures.loads import given_forces
@@ -988,6 +990,9 @@ def _compose(model: Model, given: Mapping[str, float]) -> Figure:
         return figure
     strings = [c for c in model.constraints if c.kind is ConstraintKind.STRING]
     pendulum = [c for c in strings if not _is_linear(c.gap, model)]
+    if (chain := pendulum_chain_of(model, pendulum)) is not None:
+        draw_pendulum_chain(figure, model, chain)
+        return figure
     if pendulum:
         joined = _bodies_in(pendulum[0].gap, model)
         bobs = [b for b in joined if not _moves_linearly(b, model)] or joined

@@ -41,6 +41,10 @@ EXPECTED = {
     "damped-oscillator": ({"m", "k", "b"}, "a spring k and, beside it, a dashpot b"),
     "incline-push-friction": ({"m", "θ", "μ", "F"}, "F pushes m"),
     "pushed-blocks": ({"m₁", "m₂", "μ", "F"}, "F pushes m₁"),
+    "double-pendulum": (
+        {"bob1", "bob2", "m", "L", "p₁", "p₂"},
+        "bob2 hangs from bob1 on a light rod of length L",
+    ),
     "falling-drag": ({"pebble", "ball", "m", "bv", "cv²", "v"}, "pebble moving down at v, with drag bv"),
 }
 
