@@ -6,12 +6,13 @@ text, the token count and number literals are enforced here, before any value is
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-from enum import Enum
+from dataclasses import replace
 from fractions import Fraction
 
 from physics.errors import ParseError, TooLarge
+from physics.mathinput.latex import LatexReader
 from physics.mathinput.limits import InputLimits
+from physics.mathinput.tokentypes import Kind, Token
 from physics.mathinput.vocabulary import (
     CHARACTER_VARIANTS,
     CLOSERS,
@@ -21,38 +22,10 @@ from physics.mathinput.vocabulary import (
     VULGAR_FRACTIONS,
 )
 
+__all__ = ["Kind", "Token", "tokenize"]
+
 # More exponent digits than this is refused before int() is asked to read them.
 _MAX_SCI_EXPONENT_DIGITS = 6
-
-
-class Kind(Enum):
-    NUM = "number"
-    WORD = "word"  # a run of letters/digits/underscores, resolved by the name table
-    NAME = "name"  # a declared name (canonical spelling in `text`)
-    CONST = "constant"  # pi or e
-    FUNC = "function"  # canonical function name in `text`
-    OP = "operator"  # one of + - * / ^
-    LPAREN = "opening bracket"
-    RPAREN = "closing bracket"
-    BAR = "|"
-    SUP = "superscript"
-    POSTFIX = "postfix"  # ! % ° (and the word deg, after resolution)
-    SQRT = "√"
-    END = "end"
-
-
-@dataclass(frozen=True, slots=True)
-class Token:
-    kind: Kind
-    text: str  # normalized: "^" for ** as well, "*" for × · ⋅, "-" for −; "°" for the word deg
-    pos: int
-    end: int
-    space_before: bool = False
-    value: Fraction | None = None  # NUM and SUP only
-
-    @property
-    def is_integer_literal(self) -> bool:
-        return self.kind is Kind.NUM and self.text.isdigit()
 
 
 def _is_word_start(ch: str) -> bool:
@@ -71,13 +44,14 @@ def tokenize(text: str, limits: InputLimits) -> list[Token]:
             limits.max_length,
         )
     chars = [CHARACTER_VARIANTS.get(ch, ch) for ch in text]
+    latex = LatexReader(chars)
     tokens: list[Token] = []
     n = len(chars)
     i = 0
     space = False
     while i < n:
         ch = chars[i]
-        if ch.isspace():
+        if ch.isspace() or (ch == "~" and latex.active):  # `~`: LaTeX's unbreakable space
             space = True
             i += 1
             continue
@@ -89,13 +63,33 @@ def tokenize(text: str, limits: InputLimits) -> list[Token]:
         elif _is_word_start(ch):
             while i < n and _is_word_char(chars[i]):
                 i += 1
-            token = Token(Kind.WORD, "".join(chars[start:i]), start, i, space)
+            if chars[i - 1] == "_" and i < n and chars[i] in "{\\":  # v_{0}, v_\theta
+                token, i = latex.subscripted_word(start, i)
+                token = replace(token, space_before=space)
+            else:
+                token = Token(Kind.WORD, "".join(chars[start:i]), start, i, space)
         elif ch == "*" and i + 1 < n and chars[i + 1] == "*":
             i += 2
             token = Token(Kind.OP, "^", start, i, space)
+        elif ch == "^" and (degree_end := latex.degree_end(i + 1)) is not None:  # 30^\circ
+            token = Token(Kind.POSTFIX, "°", start, degree_end, space)
+            i = degree_end
         elif ch in "+-*/^":
             i += 1
             token = Token(Kind.OP, ch, start, i, space)
+        elif ch in "\\{}":
+            if ch == "\\":
+                emitted, i = latex.command(i)
+            else:
+                emitted, i = (latex.open_brace if ch == "{" else latex.close_brace)(i)
+            if not emitted:  # a spacing command, or `{}`
+                space = True
+                continue
+            tokens.extend([replace(emitted[0], space_before=space), *emitted[1:]])
+            if len(tokens) > limits.max_tokens:
+                raise TooLarge(f"The answer has too many parts (at most {limits.max_tokens} tokens).", start)
+            space = False
+            continue
         elif ch in OPENERS:
             i += 1
             token = Token(Kind.LPAREN, ch, start, i, space)
@@ -124,21 +118,13 @@ def tokenize(text: str, limits: InputLimits) -> list[Token]:
             continue
         elif ch == ",":
             raise ParseError("Commas are not used in answers; write a product with * or a space.", i)
-        elif ch == "\\":
-            raise ParseError(LATEX_REFUSED, i)
         else:
             raise ParseError(f"Unexpected character {text[i]!r}.", i)
         tokens.append(token)
         space = False
+    latex.finish()
     tokens.append(Token(Kind.END, "", n, n, space))
     return tokens
-
-
-# Pasted from an equation editor or a TeX source: say how to type it, not just "unexpected '\\'".
-LATEX_REFUSED = (
-    "Answers are typed as plain text, not LaTeX: write \\frac{a}{b} as (a)/(b), \\sqrt{x} as sqrt(x), "
-    "\\sin\\theta as sin(theta) or sin θ, x^{2} as x^2, and \\cdot as *."
-)
 
 
 def _vulgar_fraction(ch: str, i: int, space: bool) -> list[Token]:

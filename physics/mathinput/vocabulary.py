@@ -106,3 +106,78 @@ LATEX_FUNCTIONS: Final = MappingProxyType(
         "log10": r"\log_{10}",
     }
 )  # fmt: skip
+
+# -- LaTeX as equation editors paste it (read by latex.py); commands without their backslash ----------
+LATEX_FRACTIONS: Final = frozenset({"frac", "dfrac", "tfrac", "cfrac"})
+# Each is also a key of FUNCTIONS.
+LATEX_FUNCTION_COMMANDS: Final = frozenset(
+    {
+        "sin", "cos", "tan", "sec", "csc", "cot", "arcsin", "arccos", "arctan", "sinh", "cosh", "tanh",
+        "exp", "ln", "log",
+    }
+)  # fmt: skip
+# Commands that are a letter, as the word the name table knows (`\theta` is theta, `\varphi` is phi).
+LATEX_LETTERS: Final = MappingProxyType(
+    {
+        **{name: name for name in GREEK_LETTERS if name[0].islower() and name != "omicron"},
+        **{name: name for name in GREEK_LETTERS if name[0].isupper() and name not in LATIN_LOOKING_CAPITALS},
+        "varepsilon": "epsilon", "vartheta": "theta", "varphi": "phi", "varrho": "rho", "varsigma": "sigma",
+        "hbar": "hbar",
+    }
+)  # fmt: skip
+LATEX_OPERATORS: Final = MappingProxyType({"cdot": "*", "times": "*", "ast": "*", "div": "/"})
+# Spacing and style commands: read as a space.
+LATEX_SPACES: Final = frozenset(
+    {
+        ",", ";", ":", "!", " ", ">", "quad", "qquad", "enspace", "thinspace", "medspace", "thickspace",
+        "negthinspace", "displaystyle", "textstyle",
+    }
+)  # fmt: skip
+# `\left(`, `\bigl[`: a size before a delimiter; the delimiter is what counts.
+LATEX_SIZES: Final = frozenset(
+    {
+        "left", "right", "big", "Big", "bigg", "Bigg", "bigl", "bigr", "Bigl", "Bigr", "biggl", "biggr",
+        "Biggl", "Biggr",
+    }
+)  # fmt: skip
+# Commands that are a bracket or a bar, standing alone or after a size (`\{`, `\left\lvert`).
+LATEX_BRACKETS: Final = MappingProxyType(
+    {
+        "{": "{", "}": "}", "lbrace": "{", "rbrace": "}", "lbrack": "[", "rbrack": "]",
+        "vert": "|", "lvert": "|", "rvert": "|",
+    }
+)  # fmt: skip
+# `\mathrm{max}`, `\text{v}`: a name in an upright or text font is still the name.
+LATEX_TEXT_WRAPPERS: Final = frozenset({"mathrm", "text", "textrm", "mathit", "operatorname"})
+
+# How to type what an unknown command was for; the default hint serves every other one.
+LATEX_PLAIN_TEXT_HINT: Final = (
+    "type it in plain text: (a)/(b) for \\frac{a}{b}, sqrt(x), sin(theta), x^2 and * for \\cdot "
+    "(the LaTeX read here: \\frac, \\sqrt, \\sin and the other functions, Greek letters, \\cdot, "
+    "\\times, \\left( \\right), ^{…} and _{…})"
+)
+_NAME_AS_LISTED = "type the symbol as the problem lists it (v, v_x, F_net): a plain name has no accents"
+_ONE_EXPRESSION = "type only the expression, without =, relations or a second line"
+_WORK_IT_OUT = "an answer is an expression in the problem's symbols: work the operation out first"
+LATEX_HINTS: Final = MappingProxyType(
+    {
+        **dict.fromkeys(
+            ("vec", "hat", "bar", "dot", "ddot", "tilde", "overline", "overrightarrow", "mathbf",
+             "boldsymbol", "bm"),
+            _NAME_AS_LISTED,
+        ),
+        **dict.fromkeys(
+            ("\\", "newline", "approx", "ne", "neq", "le", "leq", "ge", "geq", "lt", "gt", "equiv",
+             "to", "rightarrow", "Rightarrow", "implies", "sim", "propto", "begin", "end"),
+            _ONE_EXPRESSION,
+        ),
+        **dict.fromkeys(
+            ("int", "iint", "oint", "sum", "prod", "lim", "partial", "nabla", "infty"),
+            _WORK_IT_OUT,
+        ),
+        "pm": "give one answer, with its sign", "mp": "give one answer, with its sign",
+        "circ": "write degrees as 30^\\circ or 30°",
+        "ell": "type the name the problem uses for it (l or L)",
+        **{capital: f"type the letter {capital[0]} (LaTeX has no \\{capital})" for capital in LATIN_LOOKING_CAPITALS},
+    }
+)  # fmt: skip

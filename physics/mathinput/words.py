@@ -20,6 +20,11 @@ def reading_text(reading: tuple[Part, ...]) -> str:
     return "*".join(part.canonical for part in reading)
 
 
+def _keeps_whole(reading: tuple[Part, ...], tok: Token) -> bool:
+    """Whether no part of the reading starts inside a stretch typed as one (`\\theta`, `x_{mg}`)."""
+    return not any(low < part.start < high for part in reading for low, high in tok.unsplittable)
+
+
 def resolve_words(tokens: list[Token], table: NameTable) -> list[Token]:
     """Replace every WORD token; raise on the first word that is unknown or reads two ways."""
     out: list[Token] = []
@@ -48,22 +53,21 @@ def resolve_words(tokens: list[Token], table: NameTable) -> list[Token]:
                 "put spaces or * between the names.",
                 tok.pos,
             )
-        resolution = table.resolve(word)
-        reading = resolution.unique
-        if reading is not None:
-            for k, part in enumerate(reading):
+        readings = [r for r in table.resolve(word).readings if _keeps_whole(r, tok)]
+        if len(readings) == 1:
+            for k, part in enumerate(readings[0]):
                 out.append(
                     Token(
                         _PART_KINDS[part.kind],
                         part.canonical,
-                        tok.pos + part.start,
-                        tok.pos + part.end,
+                        tok.position_in_text(part.start),
+                        tok.position_in_text(part.end),
                         tok.space_before if k == 0 else False,
                     )
                 )
             continue
-        if resolution.readings:
-            texts = [reading_text(r) for r in resolution.readings]
+        if readings:
+            texts = [reading_text(r) for r in readings]
             raise AmbiguousInput(
                 f'"{word}" can be read as {texts[0]} or {texts[1]}. '
                 "Write * or a space between the names you mean.",

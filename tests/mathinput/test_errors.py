@@ -32,8 +32,9 @@ PARSE_ERRORS = [
     ("x; y", 1, "Unexpected character ';'"),
     ("4,58", 1, "decimal point"),
     ("x, y", 1, "Commas"),
-    ("-\\frac{m g}{M}", 1, "not LaTeX: write \\frac{a}{b} as (a)/(b)"),
-    ("m g \\sin\\theta", 4, "not LaTeX"),
+    # LaTeX is read (test_latex.py); a command it does not know is refused at its backslash
+    ("-\\frac{x}{\\vec{y}}", 10, "Unknown LaTeX command \\vec: type the symbol as the problem lists it"),
+    ("x \\sin\\thetay", 6, "Unknown LaTeX command \\thetay: type it in plain text: (a)/(b)"),
     ("12 500", 3, "Two numbers side by side"),
     ("x^2 3", 4, "Two numbers side by side"),
     ("sin", 0, "sin needs an argument"),
