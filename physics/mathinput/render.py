@@ -188,7 +188,9 @@ def _latex_product(node: Product) -> str:
 def _latex_power(node: Power) -> str:
     base = ungroup(node.base)
     exponent = _latex(node.exponent)[0]
-    if isinstance(base, Call) and base.func in LATEX_FUNCTIONS and base.func != "log10":
+    # \sin^{2} x, but never \sin^{-1} x: that is how arcsin is written.
+    positive = isinstance(ungroup(node.exponent), Num)
+    if isinstance(base, Call) and base.func in LATEX_FUNCTIONS and base.func != "log10" and positive:
         return _latex_call(base.func, base.arg, exponent)
     piece = _latex(node.base)
     return _paren(piece, piece[1] < _ATOM) + f"^{{{exponent}}}"
