@@ -14,7 +14,7 @@ from fractions import Fraction
 
 from physics.dimensions import Dimension
 from physics.errors import AnswerError, ParseError, TooLarge
-from physics.numeric.literal import NumberLiteral, read_number
+from physics.numeric.literal import NumberLiteral, read_number, skip_spaces
 from physics.units import ParsedUnits, UnitReading, read_units
 from physics.verdict import ReadAs
 
@@ -87,9 +87,7 @@ def _read_literal(text: str, expected: Dimension | None) -> tuple[NumericAnswer,
         number = read_number(text)
     except AnswerError as error:
         raise _NumberFormError(error) from None
-    rest_start = number.end
-    while rest_start < len(text) and text[rest_start].isspace():
-        rest_start += 1
+    rest_start = skip_spaces(text, number.end)
     unit_text = text[rest_start:].rstrip()
     if not unit_text:
         return NumericAnswer.of_literal(number, None, None), number.end
@@ -154,7 +152,10 @@ def read_numeric_answer(
         literal_error = malformed.error if _STARTS_LITERAL.match(text) else None
     except AnswerError as error:
         literal_error = error
-    ends = number_part_end(text)
+    try:
+        ends = number_part_end(text)
+    except AnswerError as latex_error:  # LaTeX that the math reader refuses, where and why
+        raise (literal_error or latex_error) from None
     if ends is None:
         if literal_error is None:
             raise _no_number_first(text) from None

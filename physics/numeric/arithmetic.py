@@ -11,7 +11,7 @@ begins another quantity (`0.5 kg * 9.8 m/s^2`); the quantities multiply, units a
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from fractions import Fraction
 
 import sympy
@@ -24,6 +24,7 @@ from physics.mathinput.vocabulary import FUNCTIONS, PI_SPELLINGS
 from physics.numeric.answer import MAX_ANSWER_LENGTH, NumericAnswer, read_units_at
 from physics.symbolic.numeric import Evaluator
 from physics.units import ParsedUnits
+from physics.units.latex import units_start as latex_units_start
 from physics.units.registry import lookup
 
 LIMITS = InputLimits(max_length=MAX_ANSWER_LENGTH)
@@ -79,13 +80,31 @@ def _quantities(tokens: list[Token], text: str) -> list[_Quantity]:
                 before = tokens[i - 1] if i > 0 else None
                 times = before is not None and before.kind is Kind.OP and before.text == "*"
                 number_end = before.pos if times and before is not None else token.pos
-            elif token.kind is Kind.WORD and token.text in FUNCTIONS:
-                function_seen = True
+            elif token.kind is Kind.FUNC or (token.kind is Kind.WORD and token.text in FUNCTIONS):
+                function_seen = True  # a FUNC is a LaTeX function command, `\sin`
         elif token.kind is Kind.NUM and tokens[i - 1].kind is Kind.OP and tokens[i - 1].text == "*":
             found.append(_Quantity(start, number_end, units_start, tokens[i - 1].pos))
             start, units_start, number_end, function_seen = token.pos, None, len(text), False
     found.append(_Quantity(start, number_end, units_start, len(text)))
     return found
+
+
+def _split(text: str) -> list[_Quantity]:
+    """The quantities of `text`. In LaTeX, a text-font command outside brackets begins the units
+    (`\\frac{229}{50}\\,\\mathrm{m/s^2}`): the math reader reads what is before it, the units reader the rest."""
+    cut = latex_units_start(text)
+    number_text = text if cut is None else text[:cut]
+    tokens = tokenize(number_text, LIMITS)
+    if tokens[0].kind is Kind.END:
+        raise ParseError("The answer must start with a number, such as 2.5 or 229/50", 0)
+    if cut is None:
+        return _quantities(tokens, text)
+    *before, last = _quantities(tokens, number_text)
+    if last.units_start is not None:  # `2 kg\,\mathrm{m}`: the units go on to the end
+        return [*before, replace(last, end=len(text))]
+    times = tokens[-2] if tokens[-2].kind is Kind.OP and tokens[-2].text == "*" else None
+    number_end = times.pos if times is not None else cut  # `2\pi \cdot \mathrm{rad}`
+    return [*before, _Quantity(last.start, number_end, cut, len(text))]
 
 
 def _value(expr: sympy.Expr, position: int) -> Fraction:
@@ -139,20 +158,18 @@ def _read_quantity(text: str, quantity: _Quantity, expected: Dimension | None) -
 
 def number_part_end(text: str) -> int | None:
     """Where the number part of `text` read as arithmetic ends; None when the math reader cannot
-    tokenize it (then it is not arithmetic at all)."""
+    tokenize it (then it is not arithmetic at all), but its error for LaTeX that it refuses."""
     try:
-        tokens = tokenize(text, LIMITS)
+        return _split(text)[0].number_end
     except AnswerError:
+        if "\\" in text:
+            raise
         return None
-    if tokens[0].kind is Kind.END:
-        return None
-    return _quantities(tokens, text)[0].number_end
 
 
 def read_arithmetic_answer(text: str, expected: Dimension | None) -> NumericAnswer:
     """Read `text` as arithmetic and units (check `number_part_end` first: it must not be None)."""
-    tokens = tokenize(text, LIMITS)
-    quantities = _quantities(tokens, text)
+    quantities = _split(text)
     single = len(quantities) == 1
     reads = [_read_quantity(text, q, expected if single else None) for q in quantities]
     value = Fraction(1)

@@ -75,10 +75,30 @@ class NumberLiteral:
         return text + (r"\,\%" if self.percent else "")
 
 
-def _skip_spaces(text: str, i: int) -> int:
-    while i < len(text) and text[i].isspace():
-        i += 1
+# LaTeX, as equation editors paste a number: `4.58 \\times 10^{3}`, `4.58\\,\\mathrm{m}`, `45\\,\\%`.
+_LATEX_SPACES = ("\\,", "\\;", "\\:", "\\!", "\\ ", "~")
+_LATEX_TIMES = ("\\times", "\\cdot")
+
+
+def skip_spaces(text: str, i: int) -> int:
+    while i < len(text):
+        if text[i].isspace():
+            i += 1
+        elif text.startswith(_LATEX_SPACES, i) and "\\" in text:
+            i += 1 if text[i] == "~" else 2
+        else:
+            break
     return i
+
+
+def _times_sign_end(text: str, j: int) -> int | None:
+    """The end of a times sign at j (`×`, `*`, `\\times`, `\\cdot`), or None."""
+    if j < len(text) and text[j] in _TIMES_SIGNS:
+        return j + 1
+    for command in _LATEX_TIMES:
+        if text.startswith(command, j) and not text[j + len(command) : j + len(command) + 1].isalpha():
+            return j + len(command)
+    return None
 
 
 def _run(text: str, i: int, alphabet: str | dict[str, int]) -> int:
@@ -96,7 +116,7 @@ def _exponent_value(digits: str, sign: int, position: int) -> int:
 
 def _signed_exponent(text: str, i: int) -> tuple[int, int] | None:
     """An ASCII exponent `3`, `-3`, `−3`, `+3`, `(-3)` at i: (value, end), or None if there is none."""
-    parenthesised = i < len(text) and text[i] == "("
+    parenthesised = i < len(text) and text[i] in "({"  # `^(-3)`, or LaTeX's `^{-3}`
     j = i + 1 if parenthesised else i
     sign = 1
     if j < len(text) and text[j] in _MINUS_SIGNS + "+":
@@ -106,7 +126,7 @@ def _signed_exponent(text: str, i: int) -> tuple[int, int] | None:
     if end == j:
         return None
     if parenthesised:
-        if end >= len(text) or text[end] != ")":
+        if end >= len(text) or text[end] != {"(": ")", "{": "}"}[text[i]]:
             return None
         return _exponent_value(text[j:end], sign, j), end + 1
     return _exponent_value(text[j:end], sign, j), end
@@ -138,9 +158,10 @@ def _scientific(text: str, i: int) -> tuple[int, int] | None:
     """A power of ten after the mantissa ending at i: (exponent, end), or None if none is written."""
     if i < len(text) and text[i] in "eE":
         return _signed_exponent(text, i + 1)
-    j = _skip_spaces(text, i)
-    if j < len(text) and text[j] in _TIMES_SIGNS:
-        k = _skip_spaces(text, j + 1)
+    j = skip_spaces(text, i)
+    times_end = _times_sign_end(text, j)
+    if times_end is not None:
+        k = skip_spaces(text, times_end)
         if text.startswith("10", k):
             after = k + 2
             if after < len(text) and text[after] in _DIGITS + ".,":
@@ -154,12 +175,12 @@ def _scientific(text: str, i: int) -> tuple[int, int] | None:
 
 def read_number(text: str, start: int = 0) -> NumberLiteral:
     """The number at the start of `text` (after spaces), or ParseError / TooLarge with a position."""
-    i = _skip_spaces(text, start)
+    i = skip_spaces(text, start)
     position = i
     negative = False
     if i < len(text) and text[i] in _MINUS_SIGNS + "+":
         negative = text[i] in _MINUS_SIGNS
-        i = _skip_spaces(text, i + 1)
+        i = skip_spaces(text, i + 1)
     integer_end = _run(text, i, _DIGITS)
     integer_digits = text[i:integer_end]
     has_point = integer_end < len(text) and text[integer_end] == "."
@@ -200,10 +221,10 @@ def _finish(
     negative: bool,
     position: int,
 ) -> NumberLiteral:
-    j = _skip_spaces(text, i)
-    percent = j < len(text) and text[j] == "%"
+    j = skip_spaces(text, i)
+    percent = text.startswith(("%", "\\%"), j)
     if percent:
-        i = j + 1
+        i = j + (1 if text[j] == "%" else 2)
     return NumberLiteral(
         negative=negative,
         integer_digits=integer_digits,

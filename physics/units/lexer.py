@@ -9,11 +9,12 @@ A name with a negative integer glued to it is a power, as textbooks print it (`m
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from enum import Enum
 
-from physics.errors import ParseError
+from physics.errors import AnswerError, ParseError
 from physics.units.catalogue import ALIASES
+from physics.units.latex import plain_units
 
 
 class Kind(Enum):
@@ -90,6 +91,21 @@ def _glued_negative_power(text: str, i: int) -> int | None:
 
 
 def tokenize(text: str) -> list[Token]:
+    """The tokens of a unit string; LaTeX (`\\mathrm{m/s^2}`) is read as the plain units it shows, with
+    positions into what was typed."""
+    if "\\" not in text and "{" not in text and "}" not in text:
+        return _tokenize(text)
+    plain, where = plain_units(text)
+    try:
+        tokens = _tokenize(plain)
+    except AnswerError as error:
+        if error.position is not None:
+            error.position = where[error.position]
+        raise
+    return [replace(token, position=where[token.position]) for token in tokens]
+
+
+def _tokenize(text: str) -> list[Token]:
     tokens: list[Token] = []
     i = 0
     n = len(text)
