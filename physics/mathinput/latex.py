@@ -17,7 +17,7 @@ from fractions import Fraction
 from typing import Literal
 
 from physics.errors import ParseError
-from physics.mathinput.tokentypes import Kind, Token
+from physics.mathinput.tokentypes import Kind, SpelledWord, Token
 from physics.mathinput.vocabulary import (
     FUNCTIONS,
     LATEX_BRACKETS,
@@ -190,7 +190,7 @@ class LatexReader:
         """`frac` for `\\frac`, `,` for `\\,`: the name after the backslash at i, and its end."""
         j = i + 1
         if j >= self._n:
-            raise ParseError(f"A '\\' ends the answer: {LATEX_PLAIN_TEXT_HINT}.", i)
+            raise ParseError("A '\\' ends the answer: finish its command, or remove it.", i)
         if not _is_command_letter(self._chars[j]):
             return self._chars[j], j + 1
         while j < self._n and _is_command_letter(self._chars[j]):
@@ -240,7 +240,7 @@ class LatexReader:
             name, end = self._command_name(j)
             if name in LATEX_LETTERS:
                 word = LATEX_LETTERS[name]
-                return Token(
+                return SpelledWord(
                     Kind.WORD,
                     word,
                     j,
@@ -320,7 +320,9 @@ class LatexReader:
             unsplittable = (*unsplittable, (len(text), len(text) + len(subscript)))
             text += subscript
             positions.extend(sub_positions)
-        return Token(Kind.WORD, text, start, j, char_positions=(*positions, j), unsplittable=unsplittable), j
+        return SpelledWord(
+            Kind.WORD, text, start, j, char_positions=(*positions, j), unsplittable=unsplittable
+        ), j
 
     def _subscript(self, j: int) -> tuple[str, list[int], int]:
         """The subscript at j, after a `_`: `{0}`, `{max}`, `{\\text{max}}`, `\\theta`."""

@@ -31,18 +31,24 @@ class Token:
     end: int
     space_before: bool = False
     value: Fraction | None = None  # NUM and SUP only
-    # A WORD read from LaTeX (`\theta_{0}` is the word theta_0) is not spelled as typed: where each of
-    # its characters (and its end) was typed, and the stretches a reading may not split (a command's
-    # name, a braced subscript).
-    char_positions: tuple[int, ...] | None = None
-    unsplittable: tuple[tuple[int, int], ...] = ()
 
     @property
     def is_integer_literal(self) -> bool:
         return self.kind is Kind.NUM and self.text.isdigit()
 
     def position_in_text(self, offset: int) -> int:
-        """Where the character at `offset` in this WORD's text was typed (`len(text)`: the end)."""
-        if self.char_positions is not None:
-            return self.char_positions[offset]
+        """Where the character at `offset` in this token's text was typed (`len(text)`: the end)."""
         return self.pos + offset
+
+
+@dataclass(frozen=True, slots=True)
+class SpelledWord(Token):
+    """A WORD read from LaTeX, not spelled as typed (`\\theta_{0}` is the word theta_0): where each of its
+    characters (and its end) was typed, and the stretches a reading may not split (a command's name, a
+    braced subscript). A subclass, so that the plain tokens stay as cheap to make as before."""
+
+    char_positions: tuple[int, ...] = ()
+    unsplittable: tuple[tuple[int, int], ...] = ()
+
+    def position_in_text(self, offset: int) -> int:
+        return self.char_positions[offset]

@@ -152,9 +152,9 @@ LATEX_TEXT_WRAPPERS: Final = frozenset({"mathrm", "text", "textrm", "mathit", "o
 
 # How to type what an unknown command was for; the default hint serves every other one.
 LATEX_PLAIN_TEXT_HINT: Final = (
-    "type it in plain text: (a)/(b) for \\frac{a}{b}, sqrt(x), sin(theta), x^2 and * for \\cdot "
-    "(the LaTeX read here: \\frac, \\sqrt, \\sin and the other functions, Greek letters, \\cdot, "
-    "\\times, \\left( \\right), ^{…} and _{…})"
+    "type that part in plain text, as in sqrt(x), sin(theta), x^2 or a*b (the LaTeX read here is "
+    "\\frac, \\sqrt, functions such as \\sin, Greek letters, \\cdot, \\times, \\left( \\right), "
+    "^{…} and _{…})"
 )
 _NAME_AS_LISTED = "type the symbol as the problem lists it (v, v_x, F_net): a plain name has no accents"
 _ONE_EXPRESSION = "type only the expression, without =, relations or a second line"

@@ -9,7 +9,7 @@ from collections.abc import Sequence
 
 from physics.errors import AmbiguousInput, TooLarge, UnknownFunction, UnknownSymbol
 from physics.mathinput.names import NameTable, Part
-from physics.mathinput.tokens import Kind, Token
+from physics.mathinput.tokentypes import Kind, SpelledWord, Token
 from physics.mathinput.vocabulary import DEGREE_WORD, LISTED_FUNCTIONS, MAX_WORD_LENGTH, TIMES_WORD
 
 _ENDS_OPERAND = frozenset({Kind.NUM, Kind.NAME, Kind.CONST, Kind.RPAREN, Kind.POSTFIX, Kind.SUP})
@@ -20,7 +20,7 @@ def reading_text(reading: tuple[Part, ...]) -> str:
     return "*".join(part.canonical for part in reading)
 
 
-def _keeps_whole(reading: tuple[Part, ...], tok: Token) -> bool:
+def _keeps_whole(reading: tuple[Part, ...], tok: SpelledWord) -> bool:
     """Whether no part of the reading starts inside a stretch typed as one (`\\theta`, `x_{mg}`)."""
     return not any(low < part.start < high for part in reading for low, high in tok.unsplittable)
 
@@ -53,7 +53,9 @@ def resolve_words(tokens: list[Token], table: NameTable) -> list[Token]:
                 "put spaces or * between the names.",
                 tok.pos,
             )
-        readings = [r for r in table.resolve(word).readings if _keeps_whole(r, tok)]
+        readings = table.resolve(word).readings
+        if isinstance(tok, SpelledWord):
+            readings = tuple(r for r in readings if _keeps_whole(r, tok))
         if len(readings) == 1:
             for k, part in enumerate(readings[0]):
                 out.append(
