@@ -68,9 +68,10 @@ def _is_word_char(ch: str) -> bool:
 class LatexReader:
     """The LaTeX of one text: the tokenizer hands it every backslash and brace, and `^\\circ`."""
 
-    def __init__(self, chars: list[str]) -> None:
+    def __init__(self, chars: list[str], units_in_fonts: bool = False) -> None:
         self._chars = chars
         self._n = len(chars)
+        self._units_in_fonts = units_in_fonts
         self._frames: list[_Frame] = []
         # Only in a text written in LaTeX is `~` a space and `{}` nothing (`~x` stays refused).
         self.active = "\\" in chars
@@ -148,6 +149,9 @@ class LatexReader:
             return [token], after
         if name in LATEX_BRACKETS:
             return [_bracket(LATEX_BRACKETS[name], i, end)], end
+        if name in LATEX_TEXT_WRAPPERS and self._units_in_fonts:
+            units = self._units(i, name, end)
+            return [units], units.end
         if name in LATEX_TEXT_WRAPPERS:
             text, positions, after = self._braced_name(name, end)
             token, after = self._word_on(text, positions, ((0, len(text)),), i, after, digits=False)
@@ -362,6 +366,19 @@ class LatexReader:
         if name in LATEX_TEXT_WRAPPERS:
             return self._braced_name(name, end)
         raise ParseError(refusal, j)
+
+    def _units(self, i: int, name: str, end: int) -> Token:
+        """`\\mathrm{m/s^2}` in a numeric answer: units, as one WORD spelled as typed (never arithmetic)
+        for the numeric reader to hand to the unit reader."""
+        j = self._skip_spaces(end)
+        if j >= self._n or self._chars[j] != "{":
+            raise ParseError(f"\\{name} needs braces after it, as in \\{name}{{m/s}}.", min(j, self._n))
+        depth = 0
+        for k in range(j, self._n):
+            depth += {"{": 1, "}": -1}.get(self._chars[k], 0)
+            if depth == 0:
+                return Token(Kind.WORD, self._text(i, k + 1), i, k + 1)
+        raise ParseError(f"Unbalanced brace: the '{{' of \\{name} is never closed.", j)
 
     def _braced_name(self, name: str, i: int) -> tuple[str, list[int], int]:
         """The name in `\\mathrm{…}` from i (after the command): its text, positions and end."""

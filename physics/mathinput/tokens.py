@@ -36,15 +36,19 @@ def _is_word_char(ch: str) -> bool:
     return ch.isalpha() or ch in "0123456789_"
 
 
-def tokenize(text: str, limits: InputLimits) -> list[Token]:
-    """Split `text` into tokens ending with an END token; raise ParseError/TooLarge with a position."""
+def tokenize(text: str, limits: InputLimits, *, units_in_fonts: bool = False) -> list[Token]:
+    """Split `text` into tokens ending with an END token; raise ParseError/TooLarge with a position.
+
+    `units_in_fonts`: a numeric answer's `\\mathrm{…}` or `\\text{…}` holds its units, and is one WORD as
+    typed (`\\mathrm{m/s^2}`); elsewhere it may hold only a name, which is the word.
+    """
     if len(text) > limits.max_length:
         raise TooLarge(
             f"The answer is too long ({len(text)} characters; at most {limits.max_length}).",
             limits.max_length,
         )
     chars = [CHARACTER_VARIANTS.get(ch, ch) for ch in text]
-    latex = LatexReader(chars)
+    latex = LatexReader(chars, units_in_fonts)
     tokens: list[Token] = []
     n = len(chars)
     i = 0

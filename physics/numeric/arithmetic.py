@@ -5,13 +5,14 @@ The math reader (its whitelist tokenizer, parser and size limits) reads the numb
 grammar the units. The number part ends at the first word outside brackets that is not arithmetic
 (a function with its argument, `pi`, `π`, `e`, `x` between numbers) or at a `°` outside brackets; a
 `*` or `·` between the number and its units is allowed. A number after units that follows a `*`
-begins another quantity (`0.5 kg * 9.8 m/s^2`); the quantities multiply, units and all.
+begins another quantity (`0.5 kg * 9.8 m/s^2`); the quantities multiply, units and all. In LaTeX, a
+`\\mathrm{…}` or `\\text{…}` holds units (`\\frac{229}{50}\\,\\mathrm{m/s^2}`).
 """
 
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from fractions import Fraction
 
 import sympy
@@ -24,7 +25,6 @@ from physics.mathinput.vocabulary import FUNCTIONS, PI_SPELLINGS
 from physics.numeric.answer import MAX_ANSWER_LENGTH, NumericAnswer, read_units_at
 from physics.symbolic.numeric import Evaluator
 from physics.units import ParsedUnits
-from physics.units.latex import units_start as latex_units_start
 from physics.units.registry import lookup
 
 LIMITS = InputLimits(max_length=MAX_ANSWER_LENGTH)
@@ -90,21 +90,11 @@ def _quantities(tokens: list[Token], text: str) -> list[_Quantity]:
 
 
 def _split(text: str) -> list[_Quantity]:
-    """The quantities of `text`. In LaTeX, a text-font command outside brackets begins the units
-    (`\\frac{229}{50}\\,\\mathrm{m/s^2}`): the math reader reads what is before it, the units reader the rest."""
-    cut = latex_units_start(text)
-    number_text = text if cut is None else text[:cut]
-    tokens = tokenize(number_text, LIMITS)
+    """The quantities of `text` (a numeric answer's `\\mathrm{…}` or `\\text{…}` is units)."""
+    tokens = tokenize(text, LIMITS, units_in_fonts=True)
     if tokens[0].kind is Kind.END:
         raise ParseError("The answer must start with a number, such as 2.5 or 229/50", 0)
-    if cut is None:
-        return _quantities(tokens, text)
-    *before, last = _quantities(tokens, number_text)
-    if last.units_start is not None:  # `2 kg\,\mathrm{m}`: the units go on to the end
-        return [*before, replace(last, end=len(text))]
-    times = tokens[-2] if tokens[-2].kind is Kind.OP and tokens[-2].text == "*" else None
-    number_end = times.pos if times is not None else cut  # `2\pi \cdot \mathrm{rad}`
-    return [*before, _Quantity(last.start, number_end, cut, len(text))]
+    return _quantities(tokens, text)
 
 
 def _value(expr: sympy.Expr, position: int) -> Fraction:

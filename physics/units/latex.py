@@ -125,24 +125,3 @@ def plain_units(text: str) -> tuple[str, list[int]]:
         raise ParseError("Unbalanced brace: this '{' is never closed in the units", frames[-1][1])
     where.append(n)
     return "".join(out), where
-
-
-def units_start(text: str) -> int | None:
-    """Where a text-font command (`\\mathrm{…}`, `\\text{…}`) outside brackets first begins units in a
-    numeric answer written in LaTeX (`\\frac{229}{50}\\,\\mathrm{m/s^2}`), or None."""
-    depth = 0
-    i = 0
-    while i < len(text):
-        ch = text[i]
-        if ch in "({[":
-            depth += 1
-        elif ch in ")}]":
-            depth -= 1
-        elif ch == "\\" and i + 1 < len(text):
-            name, end = _command_name(text, i)
-            if depth == 0 and name in _TEXT_FONTS:
-                return i
-            i = end
-            continue
-        i += 1
-    return None
