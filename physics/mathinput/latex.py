@@ -203,9 +203,13 @@ class LatexReader:
 
     def _unknown(self, i: int, name: str) -> ParseError:
         shown = name if len(name) <= _SHOWN_NAME_LENGTH else name[:_SHOWN_NAME_LENGTH] + "…"
-        return ParseError(
-            f"Unknown LaTeX command \\{shown}: {LATEX_HINTS.get(name, LATEX_PLAIN_TEXT_HINT)}.", i
-        )
+        hint = LATEX_HINTS.get(name, LATEX_PLAIN_TEXT_HINT)
+        # `\sinx`, `\thetat`: TeX reads the letters after a command as part of its name.
+        glued = [known for known in (*LATEX_FUNCTION_COMMANDS, *LATEX_LETTERS) if name.startswith(known)]
+        if glued and name not in LATEX_HINTS:
+            known = max(glued, key=len)
+            hint = f"put a space after \\{known}, as in \\{known} {shown[len(known) :]}"
+        return ParseError(f"Unknown LaTeX command \\{shown}: {hint}.", i)
 
     def _argument(
         self, command: str, start: int, i: int, kind: FrameKind, index: Token | None = None

@@ -34,7 +34,7 @@ PARSE_ERRORS = [
     ("x, y", 1, "Commas"),
     # LaTeX is read (test_latex.py); a command it does not know is refused at its backslash
     ("-\\frac{x}{\\vec{y}}", 10, "Unknown LaTeX command \\vec: type the symbol as the problem lists it"),
-    ("x \\sin\\thetay", 6, "Unknown LaTeX command \\thetay: type that part in plain text"),
+    ("x \\sin\\thetay", 6, "Unknown LaTeX command \\thetay: put a space after \\theta, as in \\theta y"),
     ("12 500", 3, "Two numbers side by side"),
     ("x^2 3", 4, "Two numbers side by side"),
     ("sin", 0, "sin needs an argument"),

@@ -131,7 +131,7 @@ LATEX_ERRORS = [
     (r"x \\ y", 2, r"Unknown LaTeX command \\"),
     (r"\int x", 0, r"Unknown LaTeX command \int: an answer is an expression"),
     (r"\Alpha", 0, r"type the letter A (LaTeX has no \Alpha)"),
-    (r"\sinx", 0, r"Unknown LaTeX command \sinx"),
+    (r"\sinx", 0, r"Unknown LaTeX command \sinx: put a space after \sin, as in \sin x."),
     ("\\" + "a" * 500, 0, "Unknown LaTeX command \\" + "a" * 24 + "…:"),
     ("x \\", 2, "A '\\' ends the answer"),
     (r"\frac{x}{y", 8, r"the '{' of \frac is never closed"),
