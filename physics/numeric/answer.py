@@ -105,9 +105,9 @@ def _read_literal(text: str, expected: Dimension | None) -> tuple[NumericAnswer,
     return NumericAnswer.of_literal(number, reading.units, rest_start, unit_text, reading.note), number.end
 
 
-def _no_number_first(text: str) -> ParseError:
+def _no_number_first(text: str, otherwise: AnswerError | None = None) -> AnswerError:
     """Why an answer that does not start with a number is refused: an equation (`a = 4.58 m/s^2`) or
-    an approximation sign (`≈ 4.58`) is named, as students write them on paper."""
+    an approximation sign (`≈ 4.58`) is named, as students write them on paper; else `otherwise`."""
     equals = text.find("=")
     if equals >= 0:
         return ParseError(
@@ -118,7 +118,7 @@ def _no_number_first(text: str) -> ParseError:
         return ParseError(
             f"Give the value without '{stripped[0]}': write the number itself", len(text) - len(stripped)
         )
-    return ParseError("The answer must start with a number, such as 2.5 or 229/50", 0)
+    return otherwise or ParseError("The answer must start with a number, such as 2.5 or 229/50", 0)
 
 
 def read_units_at(unit_text: str, start: int, expected: Dimension | None) -> UnitReading:
@@ -155,7 +155,7 @@ def read_numeric_answer(
     try:
         ends = number_part_end(text)
     except AnswerError as latex_error:  # LaTeX that the math reader refuses, where and why
-        raise (literal_error or latex_error) from None
+        raise (literal_error or _no_number_first(text, latex_error)) from None
     if ends is None:
         if literal_error is None:
             raise _no_number_first(text) from None
