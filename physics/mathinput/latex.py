@@ -35,12 +35,13 @@ from physics.mathinput.vocabulary import (
 FrameKind = Literal["group", "argument", "numerator", "denominator", "radicand"]
 _MAX_ROOT_INDEX_DIGITS = 3
 _SHOWN_NAME_LENGTH = 24  # of an unknown command quoted back
-_OPENING = {"(": Kind.LPAREN, "[": Kind.LPAREN, "{": Kind.LPAREN, ")": Kind.RPAREN, "]": Kind.RPAREN}
-_WHAT = {
-    "argument": "an argument",
-    "numerator": "a numerator",
-    "denominator": "a denominator",
-    "radicand": "an argument",
+_BRACKET_KINDS = {"(": Kind.LPAREN, "[": Kind.LPAREN, "{": Kind.LPAREN, ")": Kind.RPAREN, "]": Kind.RPAREN}
+# What each argument is called in a message.
+_PART = {
+    "argument": "argument",
+    "numerator": "numerator",
+    "denominator": "denominator",
+    "radicand": "argument",
 }
 
 
@@ -220,15 +221,17 @@ class LatexReader:
         if j < self._n and self._chars[j] == "{":
             k = self._skip_spaces(j + 1)
             if k < self._n and self._chars[k] == "}":
-                part = _WHAT[kind].split()[-1]
                 raise ParseError(
-                    f"{command} has an empty {part}: write it inside the braces, as in {example}.", j
+                    f"{command} has an empty {_PART[kind]}: write it inside the braces, as in {example}.", j
                 )
             self._frames.append(_Frame(kind, command, start, j, index))
             return [Token(Kind.LPAREN, "{", j, j + 1)], j + 1
         single = self._single(j)
         if single is None:
-            raise ParseError(f"{command} needs {_WHAT[kind]} in braces, as in {example}.", min(j, self._n))
+            article = "an" if _PART[kind][0] == "a" else "a"
+            raise ParseError(
+                f"{command} needs {article} {_PART[kind]} in braces, as in {example}.", min(j, self._n)
+            )
         token, end = single
         following, end = self._close(
             _Frame(kind, command, start, j, index), _zero_width(Kind.RPAREN, ")", end), end
@@ -288,20 +291,22 @@ class LatexReader:
     def _function(self, i: int, name: str, end: int) -> tuple[Token, int]:
         if name != "log" or end >= self._n or self._chars[end] != "_":
             return Token(Kind.FUNC, FUNCTIONS[name], i, end), end
-        # \log_{10} and \log_10 are log10; no other base has a name.
-        j = end + 1
-        braced = j < self._n and self._chars[j] == "{"
-        k = self._skip_spaces(j + 1) if braced else j
-        after = self._skip_spaces(k + 2) if braced else k + 2
-        if self._text(k, k + 2) == "10" and (
-            (braced and self._text(after, after + 1) == "}")
-            or (not braced and not self._text(after, after + 1).isdigit())
-        ):
-            stop = after + 1 if braced else after
-            return Token(Kind.FUNC, "log10", i, stop), stop
-        raise ParseError(
-            r"Write a logarithm to another base b as ln(x)/ln(b); \log_{10} is read as log10.", end
-        )
+        stop = self._base_ten_end(end)
+        if stop is None:
+            raise ParseError(
+                r"Write a logarithm to another base b as ln(x)/ln(b); \log_{10} is read as log10.", end
+            )
+        return Token(Kind.FUNC, "log10", i, stop), stop
+
+    def _base_ten_end(self, j: int) -> int | None:
+        """The end of `_10` or `_{10}` at j (after `\\log`), or None: no other base has a name."""
+        if self._text(j, j + 3) == "_10" and not self._text(j + 3, j + 4).isdigit():
+            return j + 3
+        if self._text(j, j + 2) != "_{":
+            return None
+        k = self._skip_spaces(j + 2)
+        close = self._skip_spaces(k + 2)
+        return close + 1 if self._text(k, k + 2) == "10" and self._text(close, close + 1) == "}" else None
 
     def _letter(self, i: int, name: str, end: int) -> tuple[Token, int]:
         word = LATEX_LETTERS[name]
@@ -423,4 +428,4 @@ def _bracket(char: str, pos: int, end: int) -> Token:
         return Token(Kind.BAR, "|", pos, end)
     if char == "}":
         return Token(Kind.RPAREN, "}", pos, end)
-    return Token(_OPENING[char], char, pos, end)
+    return Token(_BRACKET_KINDS[char], char, pos, end)

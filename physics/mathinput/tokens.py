@@ -1,7 +1,8 @@
 """Tokenizer: splits math text into tokens that carry their 0-based position in the original text.
 
 Nothing here interprets names; words are resolved later by `names.NameTable`. Size limits on the
-text, the token count and number literals are enforced here, before any value is built.
+text, the token count and number literals are enforced here, before any value is built. Backslashes
+and braces go to `latex.LatexReader`, which makes of pasted LaTeX the tokens of the plain text it means.
 """
 
 from __future__ import annotations
