@@ -123,6 +123,8 @@ def tokenize(text: str, limits: InputLimits, *, units_in_fonts: bool = False) ->
             continue
         elif ch == ",":
             raise ParseError("Commas are not used in answers; write a product with * or a space.", i)
+        elif ch in "=≈":  # `a = g sin θ`, `≈ 2g`, as written on paper
+            raise ParseError(f"Give the expression alone, without '{ch}' (nor the name before it).", i)
         else:
             raise ParseError(f"Unexpected character {text[i]!r}.", i)
         tokens.append(token)

@@ -32,6 +32,8 @@ PARSE_ERRORS = [
     ("x; y", 1, "Unexpected character ';'"),
     ("4,58", 1, "decimal point"),
     ("x, y", 1, "Commas"),
+    ("x = y", 2, "Give the expression alone, without '='"),
+    ("≈ 2 x", 0, "without '≈'"),
     # LaTeX is read (test_latex.py); a command it does not know is refused at its backslash
     ("-\\frac{x}{\\vec{y}}", 10, "Unknown LaTeX command \\vec: type the symbol as the problem lists it"),
     ("x \\sin\\thetay", 6, "Unknown LaTeX command \\thetay: put a space after \\theta, as in \\theta y"),
