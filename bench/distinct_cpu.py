@@ -1,9 +1,11 @@
 """CPU milliseconds per distinct check as a grading worker spends it, two checkouts compared in lockstep.
 
     .venv/bin/python bench/distinct_cpu.py OLD_DIR NEW_DIR [--kind all|symbolic|numeric] [--rounds 30]
+        [--phase distinct|same]
 
 Each checkout grades in its own process (`app.grading.worker.grade` on the jobs of bench/targets.py's
-distinct bodies, read by the CheckIn schema as the server reads them); the two take turns, one round of
+distinct bodies, or with `--phase same` its `same` bodies: check_bench's answers in parse_expr's syntax,
+read by the CheckIn schema as the server reads them); the two take turns, one round of
 `--per` checks each, so a loaded machine moves both alike. Prints each side's median CPU per check and
 the median of the per-round ratios new/old. A checkout is made with `git archive <commit> | tar -x -C DIR`.
 `--per-body` prints each body's median instead (one checkout: OLD_DIR only).
@@ -21,17 +23,18 @@ from pathlib import Path
 from typing import Any
 
 
-def child(tree: Path, kind: str, per: int) -> None:
+def child(tree: Path, kind: str, per: int, phase: str) -> None:
     """Grade `per` jobs per line read from stdin; print the CPU ms per check of each round."""
     sys.path[:0] = [str(tree), str(tree / "bench")]
     from pydantic import TypeAdapter
-    from targets import distinct_checks
+    from targets import distinct_checks, same_checks
 
     from app.grading.worker import grade, warm_up_jobs
     from app.schemas.check import CheckIn
 
     adapter: TypeAdapter[Any] = TypeAdapter(CheckIn)
-    jobs = [adapter.validate_python(json.loads(call.body)).job() for call in distinct_checks()]
+    calls = same_checks() if phase == "same" else distinct_checks()
+    jobs = [adapter.validate_python(json.loads(call.body)).job() for call in calls]
     if kind != "all":
         jobs = [job for job in jobs if (type(job).__name__ == "SymbolicJob") == (kind == "symbolic")]
     for job in (*warm_up_jobs(), *jobs[:200]):  # warm-up: tables built on first use, the references
@@ -82,13 +85,14 @@ def main() -> None:
     parser.add_argument("old", type=Path)
     parser.add_argument("new", type=Path, nargs="?")
     parser.add_argument("--kind", choices=("all", "symbolic", "numeric"), default="all")
+    parser.add_argument("--phase", choices=("distinct", "same"), default="distinct")
     parser.add_argument("--rounds", type=int, default=30)
     parser.add_argument("--per", type=int, default=50, help="checks per round")
     parser.add_argument("--per-body", action="store_true")
     parser.add_argument("--child", action="store_true", help=argparse.SUPPRESS)
     args = parser.parse_args()
     if args.child:
-        child(args.old, args.kind, args.per)
+        child(args.old, args.kind, args.per, args.phase)
         return
     if args.per_body:
         per_body(args.old, min(args.rounds, 30))
@@ -96,7 +100,17 @@ def main() -> None:
     if args.new is None:
         parser.error("give two checkouts (or --per-body with one)")
     trees = (args.old.resolve(), args.new.resolve())
-    command = [sys.executable, __file__, "--child", "--kind", args.kind, "--per", str(args.per)]
+    command = [
+        sys.executable,
+        __file__,
+        "--child",
+        "--kind",
+        args.kind,
+        "--per",
+        str(args.per),
+        "--phase",
+        args.phase,
+    ]
     processes = [
         subprocess.Popen([*command, str(tree)], stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True)
         for tree in trees
@@ -119,7 +133,7 @@ def main() -> None:
     quarter = len(ratios) // 4
     print(
         f"new/old per round: median {statistics.median(ratios):.3f} "
-        f"(quartiles {ratios[quarter]:.3f} to {ratios[-1 - quarter]:.3f}; {args.kind} checks)"
+        f"(quartiles {ratios[quarter]:.3f} to {ratios[-1 - quarter]:.3f}; {args.kind} checks, {args.phase})"
     )
 
 
