@@ -26,6 +26,8 @@ from physics.mathinput.vocabulary import (
 PartKind = Literal["name", "const", "func"]
 
 _TRAILING_DIGITS = re.compile(r"^([^\W\d_]+)(\d+)$")
+# Words whose resolution a table keeps (each at most vocabulary.MAX_WORD_LENGTH letters).
+_MAX_RESOLVED = 256
 
 
 @dataclass(frozen=True, slots=True)
@@ -101,11 +103,22 @@ class NameTable:
             pieces.setdefault(typed, []).append(("func", canon))
         self._pieces = pieces
         self._longest_piece = max((len(p) for p in pieces), default=1)
+        self._resolved: dict[str, Resolution] = {}
 
     def is_declared(self, word: str) -> bool:
         return word in self._exact
 
     def resolve(self, word: str) -> Resolution:
+        """The readings of `word`: the same object for the same word (a table serves every answer to its
+        part, whose words repeat: resolved once each, up to _MAX_RESOLVED words)."""
+        found = self._resolved.get(word)
+        if found is None:
+            found = self._resolve(word)
+            if len(self._resolved) < _MAX_RESOLVED:
+                self._resolved[word] = found
+        return found
+
+    def _resolve(self, word: str) -> Resolution:
         if word in self._exact:
             return Resolution(((Part("name", self._exact[word], 0, len(word)),),))
         if word in self._functions:

@@ -165,3 +165,19 @@ def test_undeclared_name_before_a_bracket_is_an_unknown_function(typed, function
 
 def test_declared_name_before_a_bracket_is_multiplication():
     assert same(read("m(g+M)", "m", "g", "M").expr, sym("m") * (sym("g") + sym("M")))
+
+
+def test_a_table_reads_a_word_the_same_when_asked_again_and_past_its_memory():
+    from physics.mathinput import names as table_module
+
+    declared = {name: sympy.Symbol(name, positive=True) for name in ("m", "M", "g", "theta", "mu_k")}
+    fresh = table_module.NameTable(declared)
+    words = ["mgsin", "theta", "mu_k", "μk", "Mg", "q", "cos", "pi", "e"]
+    first = {word: fresh.resolve(word) for word in words}
+    # Fill the table's memory with other words, then ask again: the same readings, remembered or not.
+    for index in range(table_module._MAX_RESOLVED + 10):
+        fresh.resolve(f"x{index}")
+    assert {word: fresh.resolve(word) for word in words} == first
+    assert {word: table_module.NameTable(declared).resolve(word) for word in words} == first
+    assert first["mgsin"].unique is not None and len(first["mgsin"].unique) == 3
+    assert first["q"].readings == ()
