@@ -71,10 +71,6 @@ class Parser:
 
     # -- helpers -------------------------------------------------------------------------------
     @property
-    def _peek(self) -> Token:
-        return self._tokens[self._i]
-
-    @property
     def _prev(self) -> Token | None:
         return self._tokens[self._i - 1] if self._i > 0 else None
 
@@ -83,9 +79,6 @@ class Parser:
         if tok.kind is not Kind.END:
             self._i += 1
         return tok
-
-    def _is_op(self, tok: Token, ops: str) -> bool:
-        return tok.kind is Kind.OP and tok.text in ops
 
     def _typed(self, tok: Token) -> str:
         return self._source[tok.pos : tok.end] or tok.text
@@ -102,27 +95,27 @@ class Parser:
 
     # -- grammar -------------------------------------------------------------------------------
     def parse(self) -> Node:
-        if self._peek.kind is Kind.END:
+        if self._tokens[self._i].kind is Kind.END:
             raise ParseError("The answer is empty.", 0)
         node = self._sum()
-        tok = self._peek
+        tok = self._tokens[self._i]
         if tok.kind is not Kind.END:
             self._fail_after_expression(tok)
         return node
 
     def _sum(self) -> Node:
-        self._enter(self._peek)
+        self._enter(self._tokens[self._i])
         first = self._term()
         rest: list[tuple[Literal["+", "-"], Node]] = []
-        while self._is_op(self._peek, "+-"):
+        while (tok := self._tokens[self._i]).kind is Kind.OP and tok.text in "+-":
             op = self._advance()
             rest.append(("+" if op.text == "+" else "-", self._term()))
         self._leave()
         return Sum(first, tuple(rest)) if rest else first
 
     def _term(self) -> Node:
-        tok = self._peek
-        if self._is_op(tok, "+-"):
+        tok = self._tokens[self._i]
+        if tok.kind is Kind.OP and tok.text in "+-":
             self._advance()
             self._enter(tok)
             operand = self._term()
@@ -131,8 +124,8 @@ class Parser:
         return self._product()
 
     def _signed(self) -> Node:
-        tok = self._peek
-        if self._is_op(tok, "+-"):
+        tok = self._tokens[self._i]
+        if tok.kind is Kind.OP and tok.text in "+-":
             self._advance()
             self._enter(tok)
             operand = self._signed()
@@ -147,8 +140,8 @@ class Parser:
         first = self._power()
         items: list[_Item] = []
         while True:
-            tok = self._peek
-            if self._is_op(tok, "*/"):
+            tok = self._tokens[self._i]
+            if tok.kind is Kind.OP and tok.text in "*/":
                 self._advance()
                 items.append(_Item("*" if tok.text == "*" else "/", self._signed(), tok, False))
             elif self._starts_factor(tok):
@@ -217,8 +210,8 @@ class Parser:
     def _power(self) -> Node:
         node = self._postfixed()
         while True:
-            tok = self._peek
-            if self._is_op(tok, "^"):
+            tok = self._tokens[self._i]
+            if tok.kind is Kind.OP and tok.text in "^":
                 self._advance()
                 self._enter(tok)
                 node = Power(node, self._exponent(), tok.pos)
@@ -230,8 +223,8 @@ class Parser:
                 return node
 
     def _exponent(self) -> Node:
-        tok = self._peek
-        if self._is_op(tok, "+-"):
+        tok = self._tokens[self._i]
+        if tok.kind is Kind.OP and tok.text in "+-":
             self._advance()
             self._enter(tok)
             operand = self._exponent()
@@ -241,13 +234,13 @@ class Parser:
 
     def _postfixed(self) -> Node:
         node = self._atom()
-        while self._peek.kind is Kind.POSTFIX:
+        while self._tokens[self._i].kind is Kind.POSTFIX:
             tok = self._advance()
             node = Postfix(_POSTFIX_KINDS[tok.text], node, tok.pos)
         return node
 
     def _atom(self) -> Node:
-        tok = self._peek
+        tok = self._tokens[self._i]
         if tok.kind is Kind.NUM:
             self._advance()
             assert tok.value is not None
@@ -272,12 +265,12 @@ class Parser:
 
     def _bracketed(self) -> Node:
         opening = self._advance()
-        if self._peek.kind is Kind.RPAREN:
+        if self._tokens[self._i].kind is Kind.RPAREN:
             raise ParseError("Empty brackets: write something inside them.", opening.pos)
         saved, self._abs_depth = self._abs_depth, 0
         inner = self._sum()
         self._abs_depth = saved
-        closing = self._peek
+        closing = self._tokens[self._i]
         if closing.kind is Kind.RPAREN:
             if closing.text != OPENERS[opening.text]:
                 raise ParseError(
@@ -295,7 +288,7 @@ class Parser:
         self._abs_depth += 1
         inner = self._sum()
         self._abs_depth -= 1
-        closing = self._peek
+        closing = self._tokens[self._i]
         if closing.kind is Kind.BAR:
             self._advance()
             return Call("abs", inner, opening.pos)
@@ -307,8 +300,8 @@ class Parser:
         func = func_tok.text
         typed = self._typed(func_tok)
         power: Node | None = None
-        tok = self._peek
-        if self._is_op(tok, "^"):
+        tok = self._tokens[self._i]
+        if tok.kind is Kind.OP and tok.text in "^":
             self._advance()
             power = self._function_power(typed)
         elif tok.kind is Kind.SUP:
@@ -320,8 +313,8 @@ class Parser:
         return Power(node, power, func_tok.pos) if power is not None else node
 
     def _function_power(self, typed: str) -> Node:
-        tok = self._peek
-        if self._is_op(tok, "+-") and self._tokens[self._i + 1].kind is Kind.NUM:
+        tok = self._tokens[self._i]
+        if (tok.kind is Kind.OP and tok.text in "+-") and self._tokens[self._i + 1].kind is Kind.NUM:
             self._advance()
             number = self._advance()
             assert number.value is not None
@@ -337,7 +330,7 @@ class Parser:
 
     def _argument(self, func_tok: Token, typed: str) -> Node:
         """A function written without brackets takes the next factor: `sin 2θ`, `sin θ^2`, `√x`."""
-        tok = self._peek
+        tok = self._tokens[self._i]
         if tok.kind is Kind.LPAREN:
             return Group(self._bracketed())
         if tok.kind is Kind.BAR:
@@ -345,7 +338,7 @@ class Parser:
         if tok.kind in (Kind.NUM, Kind.NAME, Kind.CONST, Kind.FUNC, Kind.SQRT):
             self._enter(tok)
             node = self._power()
-            follower = self._peek
+            follower = self._tokens[self._i]
             if (
                 tok.kind is Kind.NUM
                 and follower.kind in (Kind.NAME, Kind.CONST)
@@ -354,7 +347,7 @@ class Parser:
                 node = Product(node, (("*", self._power()),))
             self._leave()
             return node
-        if self._is_op(tok, "+-"):
+        if tok.kind is Kind.OP and tok.text in "+-":
             raise ParseError(f"Put the argument of {typed} in brackets, as in {typed}(-x).", tok.pos)
         raise ParseError(f"{typed} needs an argument, as in {typed}(x).", func_tok.pos)
 
