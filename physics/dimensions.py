@@ -32,19 +32,35 @@ class Dimension:
     def is_dimensionless(self) -> bool:
         return not self._exponents
 
+    @classmethod
+    def _of(cls, exponents: dict[str, Fraction]) -> Dimension:
+        """From exponents already checked and made Fractions (those of Dimensions): what __init__ would
+        build of them, without checking and converting each again (dimensions are combined per node of
+        every wrong answer's tree)."""
+        made = cls.__new__(cls)
+        made._exponents = tuple(sorted((b, p) for b, p in exponents.items() if p != 0))
+        return made
+
     def __mul__(self, other: Dimension) -> Dimension:
         # Most factors of a physics expression are pure numbers: no new Dimension to build.
         if not other._exponents:
             return self
         if not self._exponents:
             return other
-        return Dimension([*self._exponents, *other._exponents])
+        exponents = dict(self._exponents)
+        for base, power in other._exponents:
+            exponents[base] = exponents.get(base, 0) + power
+        return Dimension._of(exponents)
 
     def __truediv__(self, other: Dimension) -> Dimension:
-        return Dimension([*self._exponents, *((b, -p) for b, p in other._exponents)])
+        exponents = dict(self._exponents)
+        for base, power in other._exponents:
+            exponents[base] = exponents.get(base, 0) - power
+        return Dimension._of(exponents)
 
     def __pow__(self, power: Fraction | int) -> Dimension:
-        return Dimension((b, p * Fraction(power)) for b, p in self._exponents)
+        power = Fraction(power)
+        return Dimension._of({b: p * power for b, p in self._exponents})
 
     def __eq__(self, other: object) -> bool:
         return isinstance(other, Dimension) and self._exponents == other._exponents

@@ -2,10 +2,12 @@
 
 from __future__ import annotations
 
+from fractions import Fraction
+
 import pytest
 import sympy
 
-from physics.dimensions import DIMENSIONLESS
+from physics.dimensions import DIMENSIONLESS, Dimension
 from physics.symbolic import (
     DimensionMismatch,
     SymbolicContext,
@@ -136,3 +138,31 @@ def test_the_declared_expected_dimension_is_used_when_the_reference_has_symbols_
 def test_a_zero_answer_has_every_dimension():
     judgement = judge(0 * g, g * sin(theta))
     assert judgement.reason is Reason.WRONG_VALUE
+
+
+HALF = Fraction(1, 2)
+ALGEBRA = [
+    # (left, right) exponents: a product, quotient or power of Dimensions must be the Dimension that the
+    # checking constructor builds from the exponents they add up to
+    ({"mass": 1}, {"length": 2, "time": -2}),
+    ({"length": 1, "time": -1}, {"time": 1}),
+    ({"length": 1}, {"length": -1}),
+    ({"mass": 1, "length": 2, "time": -2}, {"mass": 1, "length": 2, "time": -2}),
+    ({"length": HALF}, {"length": HALF, "current": 3}),
+    ({}, {"temperature": -1}),
+]
+
+
+@pytest.mark.parametrize(("left", "right"), ALGEBRA)
+def test_dimension_arithmetic_gives_the_dimension_of_the_summed_exponents(left, right):
+    a_dim, b_dim = Dimension(left), Dimension(right)
+    bases = set(left) | set(right)
+    total = Dimension({b: Fraction(left.get(b, 0)) + right.get(b, 0) for b in bases})
+    difference = Dimension({b: Fraction(left.get(b, 0)) - right.get(b, 0) for b in bases})
+    assert a_dim * b_dim == total
+    assert hash(a_dim * b_dim) == hash(total)
+    assert a_dim / b_dim == difference
+    assert all(isinstance(p, Fraction) for p in (a_dim / b_dim).exponents.values())
+    for power in (2, -1, HALF, Fraction(-3, 2), 0):
+        assert a_dim**power == Dimension({b: Fraction(p) * power for b, p in left.items()})
+    assert a_dim / a_dim == DIMENSIONLESS
