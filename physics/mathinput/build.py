@@ -14,6 +14,7 @@ from typing import cast
 import sympy
 
 from physics.errors import ParseError, TooLarge
+from physics.mathinput.exact import exact_number
 from physics.mathinput.limits import InputLimits
 from physics.mathinput.tree import Call, Const, Group, Name, Neg, Node, Num, Power, Product, Sum
 
@@ -70,7 +71,7 @@ class Builder:
         if isinstance(node, Group):
             return self._build(node.inner)
         if isinstance(node, Num):
-            return cast(sympy.Expr, sympy.Rational(node.value.numerator, node.value.denominator))
+            return cast(sympy.Expr, exact_number(node.value.numerator, node.value.denominator))
         if isinstance(node, Name):
             return cast(sympy.Expr, self._symbols[node.name])
         if isinstance(node, Const):
@@ -177,5 +178,5 @@ def _reciprocal(value: sympy.Expr) -> sympy.Expr:
     without the sign queries that sympy's Pow makes of it first (over a tenth of a millisecond for each
     number not met before, such as the 7 of `x/7`)."""
     if value.is_Rational and value.p != 0:
-        return cast(sympy.Expr, sympy.Rational(value.q, value.p))
+        return cast(sympy.Expr, exact_number(int(value.q), int(value.p)))
     return cast(sympy.Expr, sympy.Pow(value, -1))
