@@ -44,7 +44,7 @@ from physics.symbolic.compare import (
 from physics.symbolic.dimensional import DimensionMismatch, UnknownDimension, expression_dimension
 from physics.symbolic.floats import AGREE, DIFFER, Floats, agrees, differs, in_range
 from physics.symbolic.limits import breaks_limit
-from physics.symbolic.numeric import ONE, RND, Column, Evaluator, complex_value
+from physics.symbolic.numeric import ONE, RND, Column, Evaluator, Mpf, complex_value
 from physics.symbolic.proof import proves_equal
 from physics.symbolic.reference import PreparedReference, exact_numbers, over_context, rename_symbols
 from physics.verdict import Judgement, Reason
@@ -213,9 +213,29 @@ def diagnose(answer: sympy.Expr, values: Column, reference: PreparedReference, u
     return Judgement(False, Reason.WRONG_VALUE, " ".join(sentences))
 
 
-def _refuted_at(answer: sympy.Expr, reference: PreparedReference, index: int) -> bool:
+class _AtPoints:
+    """The answer in multiprecision (PREC) at sample points, each point evaluated once per judgement:
+    the refutation, the sign check and the factor check look at overlapping points (the first suspect
+    is often point 0, a check point). The evaluator computes point by point, so a point's value is the
+    same whichever points it is evaluated with: the one each check would compute on its own."""
+
+    def __init__(self, answer: sympy.Expr, reference: PreparedReference) -> None:
+        self._answer = answer
+        self._reference = reference
+        self._values: dict[int, Mpf | None] = {}
+
+    def __call__(self, indexes: tuple[int, ...]) -> Column:
+        values = self._values
+        missing = tuple(index for index in dict.fromkeys(indexes) if index not in values)
+        if missing:
+            found = self._reference.point_evaluator(missing)(self._answer)
+            values.update(zip(missing, found, strict=True))
+        return [values[index] for index in indexes]
+
+
+def _refuted_at(answer_at: _AtPoints, reference: PreparedReference, index: int) -> bool:
     """The answer, in multiprecision at one sample point, is defined there and differs (rule 1)."""
-    value = reference.point_evaluator((index,))(answer)[0]
+    (value,) = answer_at((index,))
     (expected,) = reference.values_at((index,))
     return (
         value is not None
@@ -224,7 +244,9 @@ def _refuted_at(answer: sympy.Expr, reference: PreparedReference, index: int) ->
     )
 
 
-def _first_look(answer: sympy.Expr, reference: PreparedReference) -> tuple[bool | None, Floats | None]:
+def _first_look(
+    answer: sympy.Expr, reference: PreparedReference, answer_at: _AtPoints
+) -> tuple[bool | None, Floats | None]:
     """The rule decided from a float64 look at every point and multiprecision at a few: True (equal),
     False (refuted), None (float64 cannot tell: the full multiprecision path decides); with the
     answer's float64 values when they are usable."""
@@ -238,21 +260,24 @@ def _first_look(answer: sympy.Expr, reference: PreparedReference) -> tuple[bool 
         # Equal to 1e-9 everywhere; the precise points catch what float64 cannot see (30 digits of pi).
         return (True if _confirmed(answer, reference) else None), values
     suspects = np.flatnonzero(differs(values, floats.values, floats.scale))
-    if suspects.size and _refuted_at(answer, reference, int(suspects[0])):
+    if suspects.size and _refuted_at(answer_at, reference, int(suspects[0])):
         return False, values
     return None, values
 
 
 def _at_points(
-    answer: sympy.Expr, reference: PreparedReference, indexes: tuple[int, ...], *targets: sympy.Expr
+    answer_at: _AtPoints, reference: PreparedReference, indexes: tuple[int, ...], *targets: sympy.Expr
 ) -> list[Column]:
     """The answer and reference-side `targets` in multiprecision (PREC) at a few sample points."""
+    mine = answer_at(indexes)
+    if not targets:
+        return [mine]
     evaluate = reference.point_evaluator(indexes, targets)
-    return [evaluate(answer), *(evaluate(target) for target in targets)]
+    return [mine, *(evaluate(target) for target in targets)]
 
 
 def _same_as(
-    answer: sympy.Expr,
+    answer_at: _AtPoints,
     values: Floats,
     target: sympy.Expr,
     targets: Floats | None,
@@ -265,7 +290,7 @@ def _same_as(
         return None
     scale = reference.floats.scale
     if agrees(values, targets, scale):
-        mine, theirs = _at_points(answer, reference, _CHECK_POINTS, target)
+        mine, theirs = _at_points(answer_at, reference, _CHECK_POINTS, target)
         same = all(
             a is not None and b is not None and close(a, b, reference.scale, TOLERANCE_BITS)
             for a, b in zip(mine, theirs, strict=True)
@@ -273,13 +298,13 @@ def _same_as(
         return True if same else None
     suspects = np.flatnonzero(differs(values, targets, scale))
     if suspects.size:
-        (a,), (b,) = _at_points(answer, reference, (int(suspects[0]),), target)
+        (a,), (b,) = _at_points(answer_at, reference, (int(suspects[0]),), target)
         if a is not None and b is not None and not close(a, b, reference.scale, TOLERANCE_BITS):
             return False
     return None
 
 
-def _constant_factor(answer: sympy.Expr, values: Floats, reference: PreparedReference) -> bool | None:
+def _constant_factor(answer_at: _AtPoints, values: Floats, reference: PreparedReference) -> bool | None:
     """Is the answer a constant multiple (not ±1, not 0) of the reference, as constant_ratio would find
     in multiprecision? From float64 ratios, confirmed at two points; None when float64 cannot tell."""
     floats = reference.floats
@@ -298,7 +323,7 @@ def _constant_factor(answer: sympy.Expr, values: Floats, reference: PreparedRefe
         indexes = (0, far)
     else:
         return None
-    (mine,) = _at_points(answer, reference, indexes)
+    (mine,) = _at_points(answer_at, reference, indexes)
     theirs = reference.values_at(indexes)
     if any(v is None for v in (*mine, *theirs)):
         return None
@@ -315,13 +340,15 @@ def _constant_factor(answer: sympy.Expr, values: Floats, reference: PreparedRefe
     return False if not constant else None
 
 
-def _diagnose_in_floats(answer: sympy.Expr, values: Floats, reference: PreparedReference) -> Judgement | None:
+def _diagnose_in_floats(
+    answer: sympy.Expr, values: Floats, reference: PreparedReference, answer_at: _AtPoints
+) -> Judgement | None:
     """`diagnose` decided from float64 values with multiprecision confirmations (same order, same
     answers); None wherever float64 cannot tell, and the multiprecision diagnosis decides."""
     if not np.all(np.isfinite(values)):
         return None  # undefined somewhere: the full path says so in the feedback
     for (expr, feedback), targets in zip(reference.mistake_exprs, reference.float_mistakes, strict=True):
-        same = _same_as(answer, values, expr, targets, reference)
+        same = _same_as(answer_at, values, expr, targets, reference)
         if same is None:
             return None
         if same:
@@ -330,13 +357,13 @@ def _diagnose_in_floats(answer: sympy.Expr, values: Floats, reference: PreparedR
     if dimension is not None:
         return Judgement(False, Reason.WRONG_DIMENSION, dimension)
     floats = reference.floats
-    same = _same_as(answer, values, -reference.expected, -floats.values, reference)
+    same = _same_as(answer_at, values, -reference.expected, -floats.values, reference)
     if same is None:
         return None
     if same:
         return Judgement(False, Reason.SIGN_ERROR, SIGN_FEEDBACK)
     if reference.expected.free_symbols:
-        factor = _constant_factor(answer, values, reference)
+        factor = _constant_factor(answer_at, values, reference)
         if factor is None:
             return None
         if factor:
@@ -411,11 +438,12 @@ def _judge(expr: sympy.Expr, reference: PreparedReference) -> Judgement:
     """judge_symbolic of an answer already over the context's symbols, with exact numbers."""
     if expr == reference.expected:
         return Judgement(True, Reason.EQUIVALENT, CORRECT)
-    decided, floats = _first_look(expr, reference)
+    answer_at = _AtPoints(expr, reference)
+    decided, floats = _first_look(expr, reference, answer_at)
     if decided is True:
         return Judgement(True, Reason.EQUIVALENT, CORRECT)
     if decided is False and floats is not None:
-        quick = _diagnose_in_floats(expr, floats, reference)
+        quick = _diagnose_in_floats(expr, floats, reference, answer_at)
         if quick is not None:
             return quick
     values = Evaluator(reference.sample.columns, reference.sample.size, PREC)(expr)

@@ -84,3 +84,24 @@ def test_towers_of_functions_are_judged_without_computing_astronomical_numbers(a
 
     verdict = run_job(SymbolicJob(answer, "x", (SymbolDecl("x", "1"),)))
     assert (verdict.outcome.value, verdict.reason.value) == ("incorrect", "wrong_value")
+
+
+POINTS = [(-3, 1), (0, 1), (1, 3), (7, 5), (-22, 7), (4, 1)]
+
+
+@pytest.mark.parametrize(
+    "expr",
+    [c[1] for c in CASES] + [sympy.sin(x) ** 2 + sympy.cos(x) ** 2 - 1],
+    ids=[c[0] for c in CASES] + ["cancellation"],
+)
+def test_a_points_value_is_the_same_whichever_points_are_evaluated_with_it(expr):
+    # The judge evaluates an answer once per point and reuses the value in later checks at other
+    # groups of points: the evaluator must compute each point on its own.
+    together = Evaluator({x: [from_rational(p, q, PREC) for p, q in POINTS]}, len(POINTS), PREC)(expr)
+    alone = [Evaluator({x: [from_rational(p, q, PREC)]}, 1, PREC)(expr)[0] for p, q in POINTS]
+    assert together == alone
+    pairs = [
+        Evaluator({x: [from_rational(*a, PREC), from_rational(*b, PREC)]}, 2, PREC)(expr)
+        for a, b in zip(POINTS, POINTS[::-1])
+    ]
+    assert [pair[0] for pair in pairs] == alone
