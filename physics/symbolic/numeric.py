@@ -225,7 +225,7 @@ class Evaluator:
         if expr.is_Add:
             return self._add([self(arg) for arg in expr.args])
         if expr.is_Mul:
-            return self._fold(libmp.mpf_mul, [self(arg) for arg in expr.args])
+            return self._product([self(arg) for arg in expr.args])
         if expr.is_Pow:
             return self._pow(expr)
         unary = _UNARY.get(type(expr))
@@ -268,13 +268,28 @@ class Evaluator:
             out.append(total)
         return out
 
-    def _fold(self, op: Callable[[Mpf, Mpf, int, str], Mpf], columns: Sequence[Column]) -> Column:
-        out = list(columns[0])
-        for column in columns[1:]:
-            out = [
-                None if a is None or b is None else _safe(op, a, b, self.prec, RND)
-                for a, b in zip(out, column, strict=True)
-            ]
+    def _product(self, columns: Sequence[Column]) -> Column:
+        """Point by point, the factors multiplied left to right: None from the first undefined factor
+        or failed step on, as `_safe` would make of it. One pass per point rather than one list per
+        factor: at the few points of a check, a product has more factors than points."""
+        prec = self.prec
+        multiply = libmp.mpf_mul
+        out: Column = []
+        for row in zip(*columns, strict=True):
+            product = row[0]
+            for factor in row[1:]:
+                if product is None or factor is None:
+                    product = None
+                    break
+                try:
+                    product = multiply(product, factor, prec, RND)
+                except _FAILURES:
+                    product = None
+                    break
+                if product in _SPECIAL:
+                    product = None
+                    break
+            out.append(product)
         return out
 
     def _pow(self, expr: sympy.Basic) -> Column:

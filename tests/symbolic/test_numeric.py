@@ -105,3 +105,32 @@ def test_a_points_value_is_the_same_whichever_points_are_evaluated_with_it(expr)
         for a, b in zip(POINTS, POINTS[::-1])
     ]
     assert [pair[0] for pair in pairs] == alone
+
+
+def _folded(columns, prec):
+    """How a product was evaluated before: factor by factor, a list per factor, each step through _safe."""
+    from physics.symbolic.numeric import RND, _safe
+
+    out = list(columns[0])
+    for column in columns[1:]:
+        out = [
+            None if a is None or b is None else _safe(libmp.mpf_mul, a, b, prec, RND)
+            for a, b in zip(out, column)
+        ]
+    return out
+
+
+def test_a_product_is_the_factor_by_factor_fold_point_by_point():
+    import random
+
+    rng = random.Random(5)
+    values = [None, libmp.fzero, libmp.from_int(3), libmp.from_int(-7), from_rational(1, 3, PREC)]
+    values += [
+        libmp.from_man_exp(1, 2**40),
+        libmp.from_man_exp(-5, -(2**40)),
+    ]  # a product past the exponent range
+    values += [from_rational(rng.randint(-(10**9), 10**9), rng.randint(1, 10**9), PREC) for _ in range(6)]
+    for _ in range(300):
+        columns = [[rng.choice(values) for _ in range(4)] for _ in range(rng.randint(2, 6))]
+        evaluator = Evaluator({}, 4, PREC)
+        assert evaluator._product(columns) == _folded(columns, PREC)
