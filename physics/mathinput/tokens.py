@@ -33,8 +33,8 @@ def _is_word_start(ch: str) -> bool:
     return ch.isalpha()
 
 
-def _is_word_char(ch: str) -> bool:
-    return ch.isalpha() or ch in "0123456789_"
+# What may follow the first letter of a word, besides letters.
+_WORD_MARKS = frozenset("0123456789_")
 
 
 def tokenize(text: str, limits: InputLimits, *, units_in_fonts: bool = False) -> list[Token]:
@@ -48,7 +48,8 @@ def tokenize(text: str, limits: InputLimits, *, units_in_fonts: bool = False) ->
             f"The answer is too long ({len(text)} characters; at most {limits.max_length}).",
             limits.max_length,
         )
-    chars = [CHARACTER_VARIANTS.get(ch, ch) for ch in text]
+    # Every variant is a non-ASCII character: plain ASCII text has none to replace.
+    chars = list(text) if text.isascii() else [CHARACTER_VARIANTS.get(ch, ch) for ch in text]
     latex = LatexReader(chars, units_in_fonts)
     tokens: list[Token] = []
     n = len(chars)
@@ -66,7 +67,8 @@ def tokenize(text: str, limits: InputLimits, *, units_in_fonts: bool = False) ->
         if (ch.isdigit() and ch.isascii()) or (ch == "." and i + 1 < n and chars[i + 1].isdigit()):
             token, i = _read_number(chars, i, space, limits)
         elif _is_word_start(ch):
-            while i < n and _is_word_char(chars[i]):
+            i += 1
+            while i < n and ((c := chars[i]).isalpha() or c in _WORD_MARKS):
                 i += 1
             if chars[i - 1] == "_" and i < n and chars[i] in "{\\":  # v_{0}, v_\theta
                 token, i = latex.subscripted_word(start, i)

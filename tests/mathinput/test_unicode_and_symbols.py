@@ -82,3 +82,11 @@ def test_vulgar_fraction_read_as_shows_the_fraction() -> None:
 def test_epsilon_0_declared_accepts_the_greek_letter_with_a_subscript() -> None:
     read = parse_math("q/(4 π ε₀ r²)", names("q", "epsilon_0", "r"))
     assert read.read_as.text == "q/(4*pi*epsilon_0*r**2)"
+
+
+def test_every_character_variant_is_outside_ascii() -> None:
+    # The tokenizer reads plain ASCII text as it is, without looking each character up as a variant.
+    from physics.mathinput.vocabulary import CHARACTER_VARIANTS
+
+    assert [ch for ch in CHARACTER_VARIANTS if ch.isascii()] == []
+    assert parse_math("2·x − y", names("x", "y")).read_as.text == "2*x - y"
