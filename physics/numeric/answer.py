@@ -91,6 +91,7 @@ def _read_literal(text: str, expected: Dimension | None) -> tuple[NumericAnswer,
     unit_text = text[rest_start:].rstrip()
     if not unit_text:
         return NumericAnswer.of_literal(number, None, None), number.end
+    unit_text, rest_start = unbracketed_units(unit_text, rest_start)
     reciprocal = _RECIPROCAL.match(unit_text)
     if unit_text.startswith("/"):  # `4.9e12 /s`: a unit of the form 1/…
         unit_text, rest_start = "1" + unit_text, rest_start - 1
@@ -119,6 +120,27 @@ def _no_number_first(text: str, otherwise: AnswerError | None = None) -> AnswerE
             f"Give the value without '{stripped[0]}': write the number itself", len(text) - len(stripped)
         )
     return otherwise or ParseError("The answer must start with a number, such as 2.5 or 229/50", 0)
+
+
+def unbracketed_units(unit_text: str, start: int) -> tuple[str, int]:
+    """Units in square brackets, as physics texts print them (`4.58 [m/s^2]`): the text inside and
+    where it starts in the answer; other unit text as it is. A bracket that does not enclose all the
+    units (`[m/s^2`, `[m]/s`) is refused here, where the message can say what is wrong; empty
+    brackets are left to the math reader, which names them."""
+    if not unit_text.startswith("["):
+        return unit_text, start
+    closing = unit_text.find("]")
+    if closing < 0:
+        raise ParseError("Unbalanced bracket: this '[' is never closed.", start)
+    if closing != len(unit_text) - 1:
+        raise ParseError(
+            "Square brackets go around all of the units, as in [m/s^2], or are left out", start + closing
+        )
+    inside = unit_text[1:closing]
+    units = inside.strip()
+    if not units:
+        return unit_text, start
+    return units, start + 1 + inside.index(units[0])
 
 
 def read_units_at(unit_text: str, start: int, expected: Dimension | None) -> UnitReading:

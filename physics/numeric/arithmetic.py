@@ -22,7 +22,12 @@ from physics.errors import AnswerError, ParseError, TooLarge, UnknownSymbol
 from physics.mathinput import InputLimits, parse_math
 from physics.mathinput.tokens import Kind, Token, tokenize
 from physics.mathinput.vocabulary import FUNCTIONS, PI_SPELLINGS
-from physics.numeric.answer import MAX_ANSWER_LENGTH, NumericAnswer, read_units_at
+from physics.numeric.answer import (
+    MAX_ANSWER_LENGTH,
+    NumericAnswer,
+    read_units_at,
+    unbracketed_units,
+)
 from physics.symbolic.numeric import Evaluator
 from physics.units import ParsedUnits
 from physics.units.registry import lookup
@@ -57,6 +62,22 @@ def _is_arithmetic_word(tokens: list[Token], i: int) -> bool:
     return False
 
 
+_ENDS_NUMBER = frozenset({Kind.NUM, Kind.RPAREN, Kind.WORD, Kind.POSTFIX})
+
+
+def _opens_units(tokens: list[Token], i: int) -> bool:
+    """Whether the `[` at i opens units in square brackets after a number (`9.8 [m/s^2]`, `9.8*[m]`),
+    not arithmetic (`2 [pi]`); elsewhere (`[m]`, `2+[m]`) the brackets are refused as before."""
+    if tokens[i].text != "[" or i == 0:
+        return False
+    before, following = tokens[i - 1], tokens[i + 1]
+    if not (before.kind in _ENDS_NUMBER or (before.kind is Kind.OP and before.text == "*")):
+        return False
+    if following.kind is Kind.POSTFIX:
+        return following.text == "°"
+    return following.kind is Kind.WORD and not _is_arithmetic_word(tokens, i + 1)
+
+
 def _quantities(tokens: list[Token], text: str) -> list[_Quantity]:
     found: list[_Quantity] = []
     start = tokens[0].pos
@@ -68,12 +89,13 @@ def _quantities(tokens: list[Token], text: str) -> list[_Quantity]:
         if token.kind is Kind.END:
             break
         if units_start is None:
-            if token.kind is Kind.LPAREN:
+            if token.kind is Kind.LPAREN and not (depth == 0 and _opens_units(tokens, i)):
                 depth += 1
             elif token.kind is Kind.RPAREN:
                 depth -= 1
             elif depth == 0 and (
-                (token.kind is Kind.WORD and not _is_arithmetic_word(tokens, i))
+                token.kind is Kind.LPAREN  # `[` opening units: the test above let it through
+                or (token.kind is Kind.WORD and not _is_arithmetic_word(tokens, i))
                 or (token.kind is Kind.POSTFIX and token.text == "°" and not function_seen)
             ):
                 units_start = token.pos
@@ -116,6 +138,7 @@ class _Read:
     text: str
     latex: str
     units: ParsedUnits | None
+    units_text: str  # as typed, without the square brackets around them
     note: str | None
 
 
@@ -137,13 +160,15 @@ def _read_quantity(text: str, quantity: _Quantity, expected: Dimension | None) -
             error.position += quantity.start
         raise
     units = note = None
+    unit_text = ""
     if quantity.units_start is not None:
-        reading = read_units_at(
-            text[quantity.units_start : quantity.end].rstrip(), quantity.units_start, expected
+        unit_text, start = unbracketed_units(
+            text[quantity.units_start : quantity.end].rstrip(), quantity.units_start
         )
+        reading = read_units_at(unit_text, start, expected)
         units, note = reading.units, reading.note
     value = _value(parsed.expr, quantity.start)
-    return _Read(value, parsed.read_as.text, parsed.read_as.latex, units, note)
+    return _Read(value, parsed.read_as.text, parsed.read_as.latex, units, unit_text, note)
 
 
 def number_part_end(text: str) -> int | None:
@@ -175,6 +200,7 @@ def read_arithmetic_answer(text: str, expected: Dimension | None) -> NumericAnsw
         shown = "*".join(r.text if _SIMPLE.fullmatch(r.text) else f"({r.text})" for r in reads)
         latex = r" \cdot ".join(r.latex for r in reads)
     units_start = first.units_start
+    units_text = text[units_start:].strip() if units_start is not None else ""
     return NumericAnswer(
         value=value,
         text=shown,
@@ -182,6 +208,6 @@ def read_arithmetic_answer(text: str, expected: Dimension | None) -> NumericAnsw
         end=first.number_end if single else last.end,
         units=units,
         units_position=units_start,
-        units_text=text[units_start:].strip() if units_start is not None else "",
+        units_text=reads[0].units_text if single else units_text,
         note=reads[0].note,
     )
