@@ -25,7 +25,8 @@ import sympy
 
 from physics.dimensions import Dimension
 from physics.errors import AnswerError, SpecError
-from physics.mathinput import InputLimits, parse_expression
+from physics.mathinput import InputLimits, ParsedMath, parse_expression
+from physics.mathinput.powered import other_reading_hint, reading_note
 from physics.numeric import NumericSpec
 from physics.pickling import pickled_by_fields
 from physics.symbolic import (
@@ -97,9 +98,29 @@ class SymbolicQuestion:
         except AnswerError as error:
             return Verdict.invalid(error)
         verdict = Verdict.graded(judgement, parsed.read_as)
-        if parsed.read_as.note is not None:  # the reading was chosen by dimension: say so first
-            return dataclasses.replace(verdict, feedback=f"{parsed.read_as.note}. {verdict.feedback}")
+        lead = parsed.read_as.note  # how the answer was read (chosen by dimension, `sin θ^2`): said first
+        if not judgement.correct and self._other_reading_is_right(answer, limits, parsed):
+            # In place of the note on `sin θ^2`: it was read as sin(θ²), and (sin θ)² would be right.
+            assert lead is not None  # a bare powered argument always has its note
+            lead = lead.replace(str(reading_note(parsed.powered)), other_reading_hint(parsed.powered))
+        if lead is not None:
+            return dataclasses.replace(verdict, feedback=f"{lead}. {verdict.feedback}")
         return verdict
+
+    def _other_reading_is_right(self, answer: str, limits: InputLimits, parsed: ParsedMath) -> bool:
+        """Whether reading each bare function argument's power as the function's (`sin θ^2` as
+        (sin θ)²) makes the answer right: then the student is told how to write what they meant."""
+        if not parsed.powered:
+            return False
+        reference = self.reference
+        dimensions = {symbol.name: dim for symbol, dim in reference.dims.items()}
+        try:
+            other = read_symbolic_answer(
+                answer, self.names, limits, dimensions, reference.dimension, powers_outside=True
+            )
+            return judge_symbolic(other.expr, reference).correct
+        except AnswerError:
+            return False
 
     def read(self, answer: str, limits: InputLimits) -> Preview:
         dimensions = {symbol.name: dim for symbol, dim in self.reference.dims.items()}

@@ -19,6 +19,7 @@ from typing import Literal, NoReturn
 
 from physics.errors import AmbiguousDivision, ParseError, TooLarge
 from physics.mathinput.limits import InputLimits
+from physics.mathinput.powered import PoweredArgument
 from physics.mathinput.render import STUDENT_STYLE, render_text
 from physics.mathinput.tokens import Kind, Token
 from physics.mathinput.tree import (
@@ -56,15 +57,28 @@ class _Item:
 
 class Parser:
     """`choices` settles ambiguous divisions by the position of their `/`: 0 reads `a/b c` as (a/b)·c,
-    1 as a/(b·c). An ambiguous division without a choice is refused (AmbiguousDivision)."""
+    1 as a/(b·c). An ambiguous division without a choice is refused (AmbiguousDivision).
+
+    A function without brackets takes the next factor with its power (`sin θ^2` is sin(θ²)); each such
+    argument is listed in `powered`, so the reading can be shown. `powers_outside` reads the power as
+    the function's instead ((sin θ)²): the reading a student may have meant, to compare, never to grade.
+    """
 
     def __init__(
-        self, source: str, tokens: list[Token], limits: InputLimits, choices: Mapping[int, int] | None = None
+        self,
+        source: str,
+        tokens: list[Token],
+        limits: InputLimits,
+        choices: Mapping[int, int] | None = None,
+        *,
+        powers_outside: bool = False,
     ) -> None:
         self._source = source
         self._tokens = tokens
         self._limits = limits
         self._choices = choices or {}
+        self._powers_outside = powers_outside
+        self.powered: list[PoweredArgument] = []
         self._i = 0
         self._depth = 0
         self._abs_depth = 0  # open |...| in the current bracket level; a | there closes instead of opening
@@ -208,7 +222,10 @@ class Parser:
         return first, items
 
     def _power(self) -> Node:
-        node = self._postfixed()
+        return self._raised(self._postfixed())
+
+    def _raised(self, node: Node) -> Node:
+        """`node` with the powers written after it (`^2`, `**2`, `²`)."""
         while True:
             tok = self._tokens[self._i]
             if tok.kind is Kind.OP and tok.text in "^":
@@ -256,7 +273,7 @@ class Parser:
             return self._call(tok)
         if tok.kind is Kind.SQRT:
             self._advance()
-            return Call("sqrt", self._argument(tok, "√"), tok.pos)
+            return Call("sqrt", self._argument(tok, "√", bare_function=False)[0], tok.pos)
         if tok.kind is Kind.LPAREN:
             return Group(self._bracketed())
         if tok.kind is Kind.BAR:
@@ -307,9 +324,15 @@ class Parser:
         elif tok.kind is Kind.SUP:
             self._advance()
             power = _superscript_node(tok)
+        # `sin^2 θ^2` (or `sin^-1 x^2`) already says where a power goes: its argument's power is no
+        # slip to point out.
+        bare_function = power is None
         if power is not None and _is_minus_one(power) and func in INVERSES:
             func, power = INVERSES[func], None
-        node: Node = Call(func, self._argument(func_tok, typed), func_tok.pos)
+        argument, outside = self._argument(func_tok, typed, bare_function=bare_function)
+        node: Node = Call(func, argument, func_tok.pos)
+        if outside is not None:
+            node = Power(node, outside.exponent, outside.pos)
         return Power(node, power, func_tok.pos) if power is not None else node
 
     def _function_power(self, typed: str) -> Node:
@@ -328,28 +351,69 @@ class Parser:
             return Group(self._bracketed())
         raise ParseError(f"Write a power of {typed} as {typed}^2(x) or {typed}(x)^2.", tok.pos)
 
-    def _argument(self, func_tok: Token, typed: str) -> Node:
-        """A function written without brackets takes the next factor: `sin 2θ`, `sin θ^2`, `√x`."""
+    def _argument(self, func_tok: Token, typed: str, *, bare_function: bool) -> tuple[Node, Power | None]:
+        """A function written without brackets takes the next factor: `sin 2θ`, `sin θ^2`, `√x`.
+
+        Returns the argument, and, for a `bare_function` (no power of its own, not `√`: `√x^2` is
+        plainly √(x²)) whose argument ends with a power, the power to raise the function to instead
+        when `powers_outside` (`sin θ^2` as (sin θ)²), else None."""
         tok = self._tokens[self._i]
         if tok.kind is Kind.LPAREN:
-            return Group(self._bracketed())
+            return Group(self._bracketed()), None
         if tok.kind is Kind.BAR:
-            return self._bars()
+            return self._bars(), None
         if tok.kind in (Kind.NUM, Kind.NAME, Kind.CONST, Kind.FUNC, Kind.SQRT):
             self._enter(tok)
-            node = self._power()
+            start = self._i
+            base = self._postfixed()
+            node = last = self._raised(base)
             follower = self._tokens[self._i]
             if (
                 tok.kind is Kind.NUM
                 and follower.kind in (Kind.NAME, Kind.CONST)
                 and not follower.space_before
             ):
-                node = Product(node, (("*", self._power()),))
+                base = self._postfixed()
+                last = self._raised(base)
+                node = Product(node, (("*", last),))
             self._leave()
-            return node
+            if last is base or not isinstance(last, Power) or not bare_function:
+                return node, None
+            typed_as = self._powered_argument(func_tok, start, last)
+            if typed_as is None:
+                return node, None
+            self.powered.append(typed_as)
+            if not self._powers_outside:
+                return node, None
+            if node is last:
+                return last.base, last
+            assert isinstance(node, Product)
+            return Product(node.first, (("*", last.base),)), last
         if tok.kind is Kind.OP and tok.text in "+-":
             raise ParseError(f"Put the argument of {typed} in brackets, as in {typed}(-x).", tok.pos)
         raise ParseError(f"{typed} needs an argument, as in {typed}(x).", func_tok.pos)
+
+    def _powered_argument(self, func_tok: Token, start: int, power: Power) -> PoweredArgument | None:
+        """How `sin θ^2` was typed, from the tokens of its argument (from `start`) and its final power;
+        None if the power's sign cannot be found among them (then nothing is said about it)."""
+        caret = next((t for t in self._tokens[start : self._i] if t.pos == power.pos), None)
+        if caret is None or caret.kind not in (Kind.OP, Kind.SUP):
+            return None
+        end = self._tokens[self._i - 1].end
+        exponent = ungroup(power.exponent)
+        whole = (
+            int(exponent.value)
+            if isinstance(exponent, Num) and exponent.integer_literal and exponent.value > 0
+            else None
+        )
+        source = self._source
+        return PoweredArgument(
+            typed=source[func_tok.pos : end],
+            function=self._typed(func_tok),
+            base=source[self._tokens[start].pos : caret.pos].rstrip(),
+            exponent=source[caret.end : end] if caret.kind is Kind.OP else str(caret.value),
+            whole_power=whole,
+        )
 
     # -- errors --------------------------------------------------------------------------------
     def _fail_atom(self, tok: Token) -> NoReturn:

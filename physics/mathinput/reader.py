@@ -13,6 +13,7 @@ from physics.mathinput.build import Builder
 from physics.mathinput.limits import DEFAULT_LIMITS, InputLimits
 from physics.mathinput.names import NameTable
 from physics.mathinput.parser import Parser
+from physics.mathinput.powered import PoweredArgument, reading_note
 from physics.mathinput.render import render_latex, render_text
 from physics.mathinput.tokens import Kind, Token, tokenize
 from physics.mathinput.words import resolve_words
@@ -49,6 +50,7 @@ def _refuse_exponent_letter_clash(text: str, tokens: list[Token], table: NameTab
 class ParsedMath:
     expr: sympy.Expr
     read_as: ReadAs  # rendered from the parse tree, so it shows how the input was grouped
+    powered: tuple[PoweredArgument, ...] = ()  # bare function arguments with a power: `sin θ^2`
 
 
 @lru_cache(maxsize=256)
@@ -63,18 +65,21 @@ def parse_math(
     *,
     limits: InputLimits = DEFAULT_LIMITS,
     choices: Mapping[int, int] | None = None,
+    powers_outside: bool = False,
 ) -> ParsedMath:
     """Read `text` using only the declared `names` (spelling -> Symbol to use).
 
     `choices` reads each ambiguous division (by the position of its `/`) one way: 0 as (a/b)·c,
-    1 as a/(b·c); without a choice it is refused (AmbiguousDivision).
+    1 as a/(b·c); without a choice it is refused (AmbiguousDivision). A bare function argument with a
+    power (`sin θ^2`) reads as sin(θ²) and `read_as.note` says so; `powers_outside` reads it as
+    (sin θ)², the other reading, for comparison.
 
     Raises ParseError, AmbiguousInput, UnknownSymbol, UnknownFunction or TooLarge, each with a 0-based
     `position` into `text`; sizes are checked before any value is computed.
     """
-    expr, read_as = _read(text, names, limits, choices, render=True)
+    expr, read_as, powered = _read(text, names, limits, choices, render=True, powers_outside=powers_outside)
     assert read_as is not None
-    return ParsedMath(expr, read_as)
+    return ParsedMath(expr, read_as, powered)
 
 
 def parse_expression(
@@ -82,7 +87,7 @@ def parse_expression(
 ) -> sympy.Expr:
     """`parse_math(...).expr`, without rendering how the text reads (a sixth of the work): for texts
     whose reading is never shown, such as a reference answer. Raises what parse_math raises."""
-    return _read(text, names, limits, None, render=False)[0]
+    return _read(text, names, limits, None, render=False, powers_outside=False)[0]
 
 
 def _read(
@@ -91,18 +96,21 @@ def _read(
     limits: InputLimits,
     choices: Mapping[int, int] | None,
     render: bool,
-) -> tuple[sympy.Expr, ReadAs | None]:
+    powers_outside: bool,
+) -> tuple[sympy.Expr, ReadAs | None, tuple[PoweredArgument, ...]]:
     table = _name_table(tuple(names.items()))
     tokens = tokenize(text, limits)
     _refuse_exponent_letter_clash(text, tokens, table)
     tokens = resolve_words(tokens, table)
     try:
-        tree = Parser(text, tokens, limits, choices).parse()
+        parser = Parser(text, tokens, limits, choices, powers_outside=powers_outside)
+        tree = parser.parse()
         expr = Builder(table.symbols, limits).build(tree)
-        read_as = ReadAs(render_text(tree), render_latex(tree)) if render else None
+        powered = tuple(parser.powered)
+        read_as = ReadAs(render_text(tree), render_latex(tree), reading_note(powered)) if render else None
     except RecursionError:
         # Only reachable when a caller raises max_depth far above the default.
         raise TooLarge("The answer is nested too deeply.", 0) from None
     if expr.has(*_UNDEFINED):
         raise ParseError("The answer has no value: it divides by zero or takes the log of zero.", 0)
-    return expr, read_as
+    return expr, read_as, powered

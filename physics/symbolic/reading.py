@@ -28,15 +28,18 @@ def read_symbolic_answer(
     limits: InputLimits,
     dimensions: Mapping[str, Dimension],
     expected: Dimension | None,
+    *,
+    powers_outside: bool = False,
 ) -> ParsedMath:
     """`parse_math`, except that an ambiguous division is settled by `expected` when exactly one
-    reading has it (`dimensions`: each symbol's dimension, by name). Raises what parse_math raises."""
+    reading has it (`dimensions`: each symbol's dimension, by name). Raises what parse_math raises.
+    `powers_outside` reads `sin θ^2` as (sin θ)², as parse_math does."""
     try:
-        return parse_math(text, names, limits=limits)
+        return parse_math(text, names, limits=limits, powers_outside=powers_outside)
     except AmbiguousDivision as refused:
         if expected is None:
             raise
-        readings = _readings(text, names, limits, {}, refused)
+        readings = _readings(text, names, limits, {}, refused, powers_outside)
         fitting = [r for r in readings if _fits(r.expr, dimensions, expected, refused)]
         if len(fitting) > 1:
             raise AmbiguousDivision(
@@ -48,7 +51,9 @@ def read_symbolic_answer(
             raise refused from None
         chosen = fitting[0]
         note = f"Read as {chosen.read_as.text}: the only reading that is {describe(expected)}"
-        return ParsedMath(chosen.expr, dataclasses.replace(chosen.read_as, note=note))
+        if chosen.read_as.note is not None:  # how a bare function argument with a power was read
+            note = f"{note}. {chosen.read_as.note}"
+        return dataclasses.replace(chosen, read_as=dataclasses.replace(chosen.read_as, note=note))
 
 
 def _readings(
@@ -57,16 +62,17 @@ def _readings(
     limits: InputLimits,
     choices: dict[int, int],
     refused: AmbiguousDivision,
+    powers_outside: bool,
 ) -> list[ParsedMath]:
     try:
-        return [parse_math(text, names, limits=limits, choices=choices)]
+        return [parse_math(text, names, limits=limits, choices=choices, powers_outside=powers_outside)]
     except AmbiguousDivision as another:
         if len(choices) >= MAX_SETTLED or another.position is None or another.position in choices:
             raise refused from None
         position = another.position
         return [
-            *_readings(text, names, limits, {**choices, position: 0}, refused),
-            *_readings(text, names, limits, {**choices, position: 1}, refused),
+            *_readings(text, names, limits, {**choices, position: 0}, refused, powers_outside),
+            *_readings(text, names, limits, {**choices, position: 1}, refused, powers_outside),
         ]
 
 

@@ -209,6 +209,33 @@ def test_read_as_note_says_how_the_expected_dimension_chose_the_units(client, st
     assert result["read_as"]["note"] == "Read ms^-1 as m/s: the only reading that is a speed"
 
 
+def test_read_as_note_says_how_a_bare_function_argument_with_a_power_was_read(client, student_headers):
+    result = client.post(
+        "/v1/check", json=symbolic("-m g sin θ cos θ/(M + m sin θ^2)"), headers=student_headers
+    ).json()
+    assert (result["verdict"], result["reason"]) == ("incorrect", "wrong_value")
+    assert result["read_as"]["text"] == "-m*g*sin(theta)*cos(theta)/(M + m*sin(theta**2))"
+    assert result["read_as"]["note"] == "sin θ^2 is read as sin(θ²); for (sin θ)² write sin^2 θ or (sin θ)^2"
+    assert result["feedback"].startswith("Read as sin(θ²); if you meant (sin θ)², write sin^2 θ. ")
+
+
+def test_read_as_note_is_absent_where_the_power_is_written_unambiguously(client, student_headers):
+    result = client.post(
+        "/v1/check", json=symbolic("-m g sin θ cos θ/(M + m (sin θ)^2)"), headers=student_headers
+    ).json()
+    assert result["verdict"] == "correct"
+    assert result["read_as"].get("note") is None
+
+
+def test_numeric_units_in_square_brackets_are_read_as_the_units(client, student_headers):
+    result = client.post("/v1/check", json=numeric("4.58 [m/s^2]"), headers=student_headers).json()
+    assert result["verdict"] == "correct"
+    assert result["read_as"]["text"] == "4.58 m/s^2"
+    refused = client.post("/v1/check", json=numeric("4.58 [m/furlong]"), headers=student_headers).json()
+    assert (refused["verdict"], refused["reason"]) == ("invalid", "unknown_unit")
+    assert refused["error"]["position"] == 8
+
+
 def test_units_system_other_than_si_is_422(client, student_headers):
     response = client.post("/v1/check", json=numeric("1 m", units_system="imperial"), headers=student_headers)
     assert response.status_code == 422

@@ -112,6 +112,17 @@ def test_invalid_submission_is_stored_but_uses_no_attempt(client, student_header
     assert len(client.get("/v1/submissions", headers=student_headers).json()["items"]) == 2
 
 
+def test_sin_theta_squared_is_read_as_sin_of_theta_squared_and_the_student_is_told(client, student_headers):
+    answer = "-m g sinθcosθ/(M + m sinθ^2)"  # meant (sin θ)², read as sin(θ²)
+    shown = client.post(
+        f"{WEDGE}/parts/wedge_acceleration/preview", json={"answer": answer}, headers=student_headers
+    ).json()
+    assert shown["read_as"]["note"] == "sinθ^2 is read as sin(θ²); for (sin θ)² write sin^2 θ or (sin θ)^2"
+    result = submit(client, student_headers, "wedge_acceleration", answer).json()
+    assert (result["verdict"], result["attempts_used"]) == ("incorrect", 1)
+    assert result["feedback"].startswith("Read as sin(θ²); if you meant (sin θ)², write sin^2 θ. ")
+
+
 def test_known_mistake_gets_its_targeted_feedback(client, student_headers):
     result = submit(client, student_headers, "wedge_acceleration", "-m g sin(θ) cos(θ)/M").json()
     assert (result["verdict"], result["reason"]) == ("incorrect", "known_mistake")
