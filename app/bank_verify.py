@@ -12,6 +12,7 @@ from pathlib import Path
 from tqdm import tqdm
 
 from app.web.document_text import render_problems
+from physics.wording import counted
 from problems.errors import ProblemInvalid
 from problems.loader import load_bank
 from problems.schema import ProblemDocument
@@ -43,7 +44,7 @@ def verify_command(
     for problem, path, why in unrendered:
         print(f"  {problem}: {path} does not render cleanly: {why}")
     if unrendered:
-        print(f"{len(unrendered)} text(s) do not render cleanly")
+        print(f"{counted(len(unrendered), 'text')} failed to render cleanly")
     return 0 if report.ok and not unrendered else 1
 
 

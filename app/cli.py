@@ -9,6 +9,7 @@ from contextlib import nullcontext
 from pathlib import Path
 
 from app.settings import Settings, get_settings
+from physics.wording import counted
 
 Handler = Callable[[argparse.Namespace, Settings], int]
 
@@ -82,7 +83,7 @@ def _problems_import(args: argparse.Namespace, settings: Settings) -> int:
             try:
                 record = import_problem(SqlProblemStore(database), Path(path))
             except ProblemInvalid as error:
-                print(f"{path}: {len(error.errors)} error(s)", file=sys.stderr)
+                print(f"{path}: {counted(len(error.errors), 'error')}", file=sys.stderr)
                 for where, message in error.errors:
                     print(f"  {where}: {message}", file=sys.stderr)
                 return 1
@@ -120,7 +121,7 @@ def _submissions_export(args: argparse.Namespace, settings: Settings) -> int:
             rows = export_submissions(SqlSubmissionStore(database), args.problem, out)
     finally:
         database.dispose()
-    print(f"{rows} submission(s) exported", file=sys.stderr)
+    print(f"{counted(rows, 'submission')} exported", file=sys.stderr)
     return 0
 
 

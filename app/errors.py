@@ -30,6 +30,7 @@ from starlette.exceptions import HTTPException as StarletteHTTPException
 
 from app.db import errors as storage
 from physics.errors import DerivationError, SpecError
+from physics.wording import counted
 from problems.errors import ProblemInvalid
 from problems.schema import format_path
 
@@ -158,7 +159,9 @@ def install_error_handlers(app: FastAPI) -> None:
     async def problem_invalid(request: Request, error: ProblemInvalid) -> JSONResponse:
         details = [{"path": path, "message": message} for path, message in error.errors]
         count = len(details)
-        return _json(422, "invalid_problem", f"The problem has {count} error(s): see details.", details)
+        return _json(
+            422, "invalid_problem", f"The problem has {counted(count, 'error')}: see details.", details
+        )
 
     @app.exception_handler(SpecError)
     async def spec_error(request: Request, error: SpecError) -> JSONResponse:

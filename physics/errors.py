@@ -26,6 +26,8 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
+from physics.wording import counted
+
 
 class PhyscheckError(Exception):
     """Base of every error the physics core raises on purpose."""
@@ -163,4 +165,4 @@ class SpecErrors(SpecError):
         self.errors = tuple(errors)
         lines = [f"{'/'.join(str(p) for p in e.path) or '(document)'}: {e.message}" for e in self.errors]
         first_path = self.errors[0].path if self.errors else ()
-        super().__init__(f"{len(self.errors)} error(s):\n" + "\n".join(lines), first_path)
+        super().__init__(f"{counted(len(self.errors), 'error')}:\n" + "\n".join(lines), first_path)

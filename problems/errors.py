@@ -10,6 +10,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from physics.errors import SpecError
+from physics.wording import counted
 
 ErrorItem = tuple[str, str]
 
@@ -22,7 +23,7 @@ class ProblemInvalid(SpecError):
         self.problem = problem
         head = f"problem {problem!r} is invalid" if problem else "problem is invalid"
         listing = "; ".join(f"{path}: {message}" if path else message for path, message in self.errors)
-        super().__init__(f"{head} ({len(self.errors)} error(s)): {listing}")
+        super().__init__(f"{head} ({counted(len(self.errors), 'error')}): {listing}")
 
 
 def format_path(loc: tuple[str | int, ...]) -> str:

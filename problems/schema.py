@@ -7,10 +7,12 @@ both and reports every fault at once with its path.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import Annotated, Any
 
 from pydantic import Field, ValidationError
 
+from physics.wording import counted
 from problems.errors import ErrorItem, format_path
 from problems.fields import (
     DEFAULT_SIGFIGS,
@@ -78,7 +80,9 @@ _PART_TAGS = set(KINDS)
 _KIND_NAMES = [f"'{name}'" for name in KINDS]
 _KIND_LIST = f"{', '.join(_KIND_NAMES[:-1])} or {_KIND_NAMES[-1]}"
 
-_MESSAGES: dict[str, str] = {
+# A template is formatted with pydantic's context; a function takes that context where a count
+# decides the wording.
+_MESSAGES: dict[str, str | Callable[[dict[str, Any]], str]] = {
     "missing": "required",
     "extra_forbidden": "unknown field",
     "union_tag_invalid": f"kind must be {_KIND_LIST}",
@@ -97,8 +101,8 @@ _MESSAGES: dict[str, str] = {
     "greater_than_equal": "must be >= {ge}",
     "less_than_equal": "must be <= {le}",
     "less_than": "must be < {lt}",
-    "too_short": "must have at least {min_length} item(s)",
-    "too_long": "must have at most {max_length} item(s)",
+    "too_short": lambda ctx: f"must have at least {counted(ctx['min_length'], 'item')}",
+    "too_long": lambda ctx: f"must have at most {counted(ctx['max_length'], 'item')}",
     "string_too_short": "must not be empty",
     "string_too_long": "must be at most {max_length} characters",
 }
@@ -131,7 +135,9 @@ def shape_errors(exc: ValidationError) -> list[ErrorItem]:
         template = _FIELD_MESSAGES.get((str(loc[-1]) if loc else "", err["type"])) or _MESSAGES.get(
             err["type"]
         )
-        if template is not None:
+        if callable(template):
+            message = template(err.get("ctx", {}))
+        elif template is not None:
             try:
                 message = template.format(**err.get("ctx", {}))
             except (KeyError, IndexError):

@@ -18,6 +18,7 @@ from pathlib import Path
 import sympy
 
 from physics.errors import DerivationError, PhyscheckError
+from physics.wording import counted
 from problems.compiled import CompiledProblem, CompiledSymbolicPart, compile_problem
 from problems.errors import ProblemInvalid, format_path
 from problems.kinds import kind_of
@@ -87,7 +88,9 @@ class Report:
             where = f"{r.problem}/{r.part}" if r.part else r.problem
             lines.append(f"  {where}: {r.check}: {r.detail}")
         total = sum(len(p.results) for p in self.problems)
-        lines.append(f"{len(self.problems)} problem(s), {total} checks, {len(self.failures)} failure(s)")
+        lines.append(
+            f"{counted(len(self.problems), 'problem')}, {counted(total, 'check')}, {counted(len(self.failures), 'failure')}"
+        )
         return "\n".join(lines)
 
 

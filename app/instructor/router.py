@@ -44,6 +44,7 @@ from app.routers.authoring import store_new_problem, store_new_version
 from app.services import Services
 from app.transfer import export_submissions
 from app.web.layout import page
+from physics.wording import counted
 from problems.loader import MAX_DOCUMENT_BYTES, parse_problem
 from problems.variants import fill_statement, fixed_variant
 from problems.vetting import stage_not_run
@@ -534,10 +535,6 @@ async def problem(
 # ---- class results -----------------------------------------------------------------------------------
 
 
-def _plural(count: int, noun: str) -> str:
-    return f"{count} {noun}{'' if count == 1 else 's'}"
-
-
 def _mistake_label(mistakes: Mapping[str, MistakeInfo], feedback: str) -> str:
     """A chart's label for a known mistake: its expression, else its feedback without TeX dollars."""
     known = mistakes.get(feedback)
@@ -588,7 +585,7 @@ async def results(problem_id: str, request: Request, services: ServicesDep, who:
                     f"{chart}-attempts",
                     f"Part {index + 1}: attempts used up to the first correct answer",
                     [
-                        Bar(_plural(n, "attempt"), students, _plural(students, "student"))
+                        Bar(counted(n, "attempt"), students, counted(students, "student"))
                         for n, students in part.first_correct.items()
                     ],
                 ),
@@ -596,7 +593,7 @@ async def results(problem_id: str, request: Request, services: ServicesDep, who:
                     f"{chart}-reasons",
                     f"Part {index + 1}: wrong answers by reason",
                     [
-                        Bar(c.key.replace("_", " "), c.submissions, _plural(c.submissions, "answer"))
+                        Bar(c.key.replace("_", " "), c.submissions, counted(c.submissions, "answer"))
                         for c in part.wrong_reasons
                     ],
                 ),
@@ -604,7 +601,7 @@ async def results(problem_id: str, request: Request, services: ServicesDep, who:
                     f"{chart}-mistakes",
                     f"Part {index + 1}: wrong answers by known mistake",
                     [
-                        Bar(_mistake_label(mistakes, c.key), c.submissions, _plural(c.submissions, "answer"))
+                        Bar(_mistake_label(mistakes, c.key), c.submissions, counted(c.submissions, "answer"))
                         for c in part.mistakes
                     ],
                 ),

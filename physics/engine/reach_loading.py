@@ -134,7 +134,8 @@ def check_targets(
         starting = starting or bool(q.at) or q.kind in TRAJECTORY_KINDS
     if starting and unplaced:
         report(
-            f"the motion starts at the model's state: give where {', '.join(unplaced)} start(s) under `state`",
+            f"the motion starts at the model's state: give where {', '.join(unplaced)} "
+            f"{'starts' if len(unplaced) == 1 else 'start'} under `state`",
             ("state",),
         )
 

@@ -55,6 +55,15 @@ def test_broken_upload_lists_every_error_with_its_path(client, instructor_header
     assert error["code"] == "invalid_problem"
     paths = {detail["path"] for detail in error["details"]}
     assert {"title", "parts[0].kind", "parts[2].tolerance.rel"} <= paths, paths
+    assert error["message"] == f"The problem has {len(error['details'])} errors: see details."
+
+
+def test_upload_with_one_error_says_error_in_the_singular(client, instructor_headers):
+    doc = atwood_upload()
+    doc["parts"][0]["answer"] = "(m2 - m1)*g/m2"
+    error = upload(client, instructor_headers, doc).json()["error"]
+    assert len(error["details"]) == 1, error["details"]
+    assert error["message"] == "The problem has 1 error: see details."
 
 
 def test_hand_typed_reference_contradicting_the_derivation_is_refused(client, instructor_headers):

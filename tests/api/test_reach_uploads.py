@@ -51,7 +51,7 @@ def test_a_speed_whose_start_is_not_in_the_state_is_refused_at_the_state(client,
     doc = bank_upload("quarter-circle-slide", "my-slide")
     del doc["model"]["state"]
     details = _details(upload(client, instructor_headers, doc))
-    assert "give where theta start" in details["model.state"]
+    assert "give where theta starts under" in details["model.state"]
 
 
 def test_a_speed_where_the_block_never_arrives_is_refused_with_the_reason(client, instructor_headers):

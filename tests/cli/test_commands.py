@@ -121,7 +121,10 @@ def test_submissions_export_writes_csv_with_every_row(database_env, tmp_path, ca
 
 def test_bank_verify_passes_on_a_good_problem(capsys):
     assert main(["bank", "verify", "--variants", "2", "--problem", "atwood"]) == 0
-    assert "0 failure(s)" in capsys.readouterr().out
+    out = capsys.readouterr().out
+    assert "1 problem, " in out
+    assert "0 failures" in out
+    assert "(s)" not in out
 
 
 def test_bank_verify_fails_on_a_broken_bank(tmp_path, monkeypatch, capsys):
@@ -152,6 +155,7 @@ def test_bank_verify_fails_on_a_statement_that_does_not_render_cleanly(tmp_path,
         get_settings.cache_clear()
     out = capsys.readouterr().out
     assert "atwood: statement does not render cleanly" in out
+    assert "2 texts failed to render cleanly" in out
     assert "mfrac needs 2 arguments" in out and "stray $ or `" in out
 
 

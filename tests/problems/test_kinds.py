@@ -99,7 +99,7 @@ def test_one_choice_is_too_few() -> None:
     data["parts"][2]["choices"] = data["parts"][2]["choices"][:1]
     with pytest.raises(ProblemInvalid) as caught:
         parse_problem(data)
-    assert caught.value.errors == [("parts[2].choices", "must have at least 2 item(s)")]
+    assert caught.value.errors == [("parts[2].choices", "must have at least 2 items")]
 
 
 def test_the_student_sees_the_choices_and_never_which_is_right() -> None:

@@ -144,7 +144,7 @@ SHAPE_CASES = [
         id="range-bound-mapping",
     ),
     pytest.param(_set("parts.0.typo", 1), {"parts[0].typo": "unknown field"}, id="unknown-part-field"),
-    pytest.param(_set("parts", []), {"parts": "must have at least 1 item(s)"}, id="no-parts"),
+    pytest.param(_set("parts", []), {"parts": "must have at least 1 item"}, id="no-parts"),
     pytest.param(
         _set("parts.0.max_attempts", 0), {"parts[0].max_attempts": "must be >= 1"}, id="zero-attempts"
     ),

@@ -89,7 +89,7 @@ def test_unit_alternatives_cover_prefixes_and_km_per_hour() -> None:
 
 
 def test_report_summary_counts_failures() -> None:
-    assert Report().summary().endswith("0 problem(s), 0 checks, 0 failure(s)")
+    assert Report().summary().endswith("0 problems, 0 checks, 0 failures")
 
 
 def _bank_ids() -> list[str]:
