@@ -682,6 +682,37 @@ def _cart(figure: Figure, pivot: Point, label: str) -> None:
     canvas.text((centre[0], top - height / 2), label)
 
 
+# What a pendulum's swinging body is called when the model's name for it says so; otherwise a bob.
+PENDULUM_BODIES = ("ball", "block", "bob", "sphere", "stone")
+
+
+def pendulum_words(body: Body, string: Constraint) -> tuple[str, str]:
+    """(what swings, what holds it): ("ball", "string"), ("bob", "rod")... from the model's names."""
+    name = body.name.lower()
+    noun = next((word for word in PENDULUM_BODIES if word in name), "bob")
+    return noun, "rod" if "rod" in string.name.lower() else "string"
+
+
+def _turning_rate(model: Model, body: Body) -> sympy.Expr | None:
+    """The rate of a rotating frame the body turns with (a conical pendulum), else None."""
+    frame = model.frame
+    if frame is None or frame.rate is None or body.name not in frame.bodies:
+        return None
+    return frame.rate
+
+
+def _state_angle(model: Model, body: Body, values: Values) -> float | None:
+    """The pendulum's angle from the downward vertical at the model's state, when the state gives it."""
+    state = dict(model.state)
+    for c in model.coordinates:
+        if c.symbol in state and any(expr.has(c.symbol) for _, expr in body.position):
+            try:
+                return values.number(state[c.symbol])
+            except (TypeError, ValueError):
+                return None
+    return None
+
+
 def draw_pendulum(
     figure: Figure,
     model: Model,
@@ -697,24 +728,43 @@ def draw_pendulum(
     angle_symbol = next((expr for expr in reached.values() if isinstance(expr, sympy.Symbol)), None)
     angle = values.number(angle_symbol) if angle_symbol is not None else math.radians(30)
     angle = min(max(angle, math.radians(20)), math.radians(60))
+    noun, support = pendulum_words(body, string)
+    rate = _turning_rate(model, body)
+    state_angle = _state_angle(model, body, values)
+    # A string pendulum whose state is above the pivot's level is whirled round a vertical circle.
+    whirled = rate is None and state_angle is not None and math.cos(state_angle) < 0
+    if whirled:
+        angle = math.pi
     pivot = (0.0, 0.0)
     if pivot_body is None:
         canvas.ground((-1.5, 0.0), (1.5, 0.0), below=False)
     else:
         _cart(figure, pivot, body_label(pivot_body, model))
-        figure.say(
-            f"A cart {body_label(pivot_body, model)} rolls on a horizontal floor; a pendulum hangs from it."
-        )
     canvas.line(pivot, (0.0, -length - 0.3), dashed=True, width=0.03)
     raised = (length * math.sin(angle), -length * math.cos(angle))
     lowest = (0.0, -length)
     size = BLOCK * 0.9
+    if whirled:
+        circle = [
+            (length * math.sin(i * math.pi / 24), -length * math.cos(i * math.pi / 24)) for i in range(49)
+        ]
+        canvas.polyline(circle, dashed=True, width=0.03)
+    if rate is not None:  # the horizontal circle the bob goes round, seen obliquely, and the turning rate
+        ring = [(raised[0] * math.cos(i * math.pi / 24), raised[1] + 0.3 * raised[0] * math.sin(i * math.pi / 24))
+                for i in range(49)]  # fmt: skip
+        canvas.polyline(ring, dashed=True, width=0.03)
+        canvas.arc((0.0, -length - 0.3), 0.5, math.radians(200), math.radians(340))
+        if isinstance(rate, sympy.Symbol):
+            canvas.text((0.8, -length - 0.5), symbol_label(rate.name), anchor="start")
     canvas.line(pivot, raised, width=0.04)
-    canvas.polygon(_square(raised, size), fill=FILLS[0])
+    if noun == "block":
+        canvas.polygon(_square(raised, size), fill=FILLS[0])
+    else:
+        canvas.circle(raised, size / 2, fill=FILLS[0])
     name = body_label(body, model)
     if len(name) <= 3:
         canvas.text(raised, name)
-    else:  # a name does not fit inside the block: beside it, away from the string
+    else:  # a name does not fit inside the body: beside it, away from the string
         canvas.text((raised[0] + size / 2 + 0.15, raised[1]), name, size=0.36, anchor="start")
     length_symbols = sorted(
         (s for s in string.gap.free_symbols if s in set(model.parameters)), key=lambda s: s.name
@@ -725,9 +775,25 @@ def draw_pendulum(
         )
     if angle_symbol is not None:
         _angle_mark(figure, pivot, -math.pi / 2, -math.pi / 2 + angle, angle_symbol)
-    said = f"A block {body_label(body, model)} hangs on a string"
-    if length_symbols:
-        said += f" of length {symbol_label(length_symbols[0].name)}"
+    held = f"a {support}" + (f" of length {symbol_label(length_symbols[0].name)}" if length_symbols else "")
+    if pivot_body is not None:
+        said = (
+            f"A cart {body_label(pivot_body, model)} rolls on a horizontal floor; "
+            f"a {noun} {name} hangs from it on {held}"
+        )
+    elif whirled:
+        said = (
+            f"A {noun} {name} on {held} is whirled in a vertical circle (dashed) about the {support}'s "
+            "fixed end; it is drawn at the top"
+        )
+    elif rate is not None:
+        at = f" at the rate {symbol_label(rate.name)}" if isinstance(rate, sympy.Symbol) else ""
+        said = (
+            f"A {noun} {name} hangs from a fixed point on {held} and goes round a horizontal circle (dashed)"
+            f"{at}, the {support} sweeping out a cone about the vertical (dashed) through that point"
+        )
+    else:
+        said = f"A {noun} {name} hangs from a fixed point on {held}"
     if collision is not None:
         canvas.polygon(_square(lowest, size), fill="none")
         bullet = (-3.2, -length)
