@@ -17,6 +17,7 @@ from physics.engine import collision, damping, impact, orbits, reach_mistakes, s
 from physics.engine.mechanics import Mechanics
 from physics.engine.model import (
     IMPACT_KINDS,
+    MAGNITUDE_KINDS,
     ORBIT_KINDS,
     SLIP_KINDS,
     ConstraintKind,
@@ -24,7 +25,7 @@ from physics.engine.model import (
     Quantity,
     QuantityKind,
 )
-from physics.engine.proof import domain_points
+from physics.engine.proof import domain_points, proven_sign
 from physics.engine.results import KnownMistake, LimitCase
 
 Rederive = Callable[[Model, Quantity], sympy.Expr | None]
@@ -129,7 +130,7 @@ def generate_mistakes(
     if quantity.kind in (QuantityKind.ANGULAR_FREQUENCY, QuantityKind.PERIOD):
         candidates += _mass_mistakes(model, quantity, reference, rederive)
     candidates += damping.mistakes(model, quantity, reference)
-    return _distinct(model, reference, candidates)
+    return _distinct(model, quantity, reference, candidates)
 
 
 class _Angle(enum.Enum):
@@ -271,10 +272,13 @@ def _limit(expr: sympy.Expr, symbol: sympy.Symbol, value: sympy.Expr) -> sympy.E
 
 
 def _distinct(
-    model: Model, reference: sympy.Expr, candidates: list[tuple[sympy.Expr | None, str]]
+    model: Model, quantity: Quantity, reference: sympy.Expr, candidates: list[tuple[sympy.Expr | None, str]]
 ) -> tuple[KnownMistake, ...]:
-    """Drop candidates that vanish, equal the answer or repeat another, compared at a few domain points."""
+    """Drop candidates that vanish, equal the answer or repeat another, compared at a few domain points,
+    and, for a time, length, speed or frequency the answer proves positive, those proven negative or not
+    real: -2 v0/(7 g mu) for a skid's time (friction's sign flipped) is no answer a student would give."""
     points = domain_points(model, 4, seed=11)
+    magnitude = quantity.kind in MAGNITUDE_KINDS and proven_sign(reference, model) == 1
 
     def values(expr: sympy.Expr) -> list[complex] | None:
         try:
@@ -288,7 +292,7 @@ def _distinct(
     answer = values(reference)
     kept: list[tuple[KnownMistake, list[complex]]] = []
     for expr, feedback in candidates:
-        if expr is None:
+        if expr is None or (magnitude and proven_sign(expr, model) in (-1, 0)):
             continue
         seen = values(expr)
         if seen is None or answer is None or all(abs(v) < 1e-12 for v in seen) or same(seen, answer):

@@ -197,6 +197,29 @@ STEADY_KINDS = frozenset(
 )
 EFFECTIVE_KINDS = frozenset({QuantityKind.CIRCULAR_RADIUS, QuantityKind.EPICYCLIC_FREQUENCY})
 ORBIT_KINDS = STEADY_KINDS | EFFECTIVE_KINDS | {QuantityKind.MECHANICAL_ENERGY}
+# Times, lengths, speeds and frequencies: where the answer is positive, a negative value is no slip
+# a student makes (a force, an acceleration or an energy of the wrong sign is one).
+MAGNITUDE_KINDS = frozenset(
+    {
+        QuantityKind.ANGULAR_FREQUENCY,
+        QuantityKind.PERIOD,
+        QuantityKind.NORMAL_FREQUENCY,
+        QuantityKind.DAMPED_FREQUENCY,
+        QuantityKind.DECAY_TIME,
+        QuantityKind.PROJECTILE_SPEED,
+        QuantityKind.SPEED,
+        QuantityKind.FINAL_SPEED,
+        QuantityKind.TIME_OF_FLIGHT,
+        QuantityKind.RANGE,
+        QuantityKind.MAX_HEIGHT,
+        QuantityKind.SLIP_TIME,
+        QuantityKind.SLIP_DISTANCE,
+        QuantityKind.CIRCULAR_SPEED,
+        QuantityKind.REVOLUTION_PERIOD,
+        QuantityKind.CIRCULAR_RADIUS,
+        QuantityKind.EPICYCLIC_FREQUENCY,
+    }
+)
 
 
 @dataclass(frozen=True)

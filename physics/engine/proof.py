@@ -86,6 +86,20 @@ def prove_equal(first: sympy.Expr, second: sympy.Expr, model: Model, what: str, 
     return f"sampled ({SAMPLES} points of the domain, {DIGITS} digits, worst relative gap {worst:.1e})"
 
 
+def proven_sign(expr: sympy.Expr, model: Model) -> int | None:
+    """1 or -1 when sympy's assumptions prove `expr` positive or negative over the whole domain, 0 when
+    they prove it is not real, None when they cannot tell. The proof uses the symbols' declared signs and
+    each angle ranging over (0, pi/2) or (0, pi) (through a positive tangent), not sampled values."""
+    for form in (expr, expr.subs(_angle_substitution(model))):
+        if form.is_positive:
+            return 1
+        if form.is_negative:
+            return -1
+        if form.is_extended_real is False:
+            return 0
+    return None
+
+
 def _angle_substitution(model: Model) -> dict[sympy.Symbol, sympy.Expr]:
     """theta = atan(t) (or 2 atan(t)) with t > 0 for an angle ranging over (0, pi/2) (or (0, pi)): the
     trigonometric functions become algebraic in t with known signs, which lets simplify close sqrt forms

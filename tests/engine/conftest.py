@@ -24,6 +24,8 @@ SYMBOLS: dict[str, tuple[str, ...]] = {
     "rolling-incline": ("m", "R", "theta", "g"),
     "mass-spring": ("m", "k"),
     "atwood": ("m1", "m2", "g"),
+    "bowling-ball-skid": ("m", "R", "v0", "mu", "g"),
+    "quarter-circle-slide": ("m", "R", "g"),
 }
 SLOW_PROBLEMS = frozenset(
     {"moving-wedge", "lennard-jones", "ballistic-pendulum", "skier-friction", "rolling-incline"}

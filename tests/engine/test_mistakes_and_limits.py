@@ -11,11 +11,13 @@ from sympy import cos, sin, sqrt
 
 from physics.engine import derive, load_model
 from physics.engine.mistakes import SWAPPED_TRIG
+from physics.engine.proof import proven_sign
 from physics.engine.results import KnownMistake, LimitCase
+from physics.mathinput import parse_math
 from problems.loader import load_bank
 from problems.modelinfo import load_doc_model
 from problems.symbols import symbol_table
-from tests.engine.conftest import SLOW_PROBLEMS, bank_derivation, s
+from tests.engine.conftest import SLOW_PROBLEMS, bank_derivation, bank_model, s
 
 
 def _mistakes() -> list[tuple[str, str, sympy.Expr, str]]:
@@ -220,3 +222,54 @@ def test_a_bare_tangent_is_not_offered_as_a_dropped_projection() -> None:
     assert derivation.quantities["friction_coefficient"].has(sympy.tan)
     # mu = 1 (tan(alpha) dropped) is no slip anyone makes
     assert all("projection" not in slip.feedback for slip in derivation.mistakes["friction_coefficient"])
+
+
+# (problem, quantity, slip whose mistake must stay): a time, length or speed the answer proves positive
+# gets no mistake proven negative (friction's sign flipped gives -2 v0/(7 g mu) for a skid's time); a
+# force keeps one, since a force of the wrong sign is a slip students make.
+NEGATIVE_MISTAKES = [
+    ("bowling-ball-skid", "skid_time", None),
+    ("bowling-ball-skid", "skid_distance", None),
+    ("bowling-ball-skid", "rolling_speed", None),
+    ("quarter-circle-slide", "normal_force_at_bottom", "centripetal acceleration points towards"),
+]
+
+
+@pytest.mark.parametrize(("problem", "quantity", "kept"), NEGATIVE_MISTAKES)
+def test_no_negative_mistake_for_a_positive_magnitude(problem: str, quantity: str, kept: str | None) -> None:
+    derivation = bank_derivation(problem)
+    model = bank_model(problem)
+    assert proven_sign(derivation.quantities[quantity], model) == 1
+    negative = [m for m in derivation.mistakes[quantity] if proven_sign(m.expr, model) in (-1, 0)]
+    if kept is None:
+        assert negative == []
+        assert derivation.mistakes[quantity] or quantity == "rolling_speed"  # the other slips stay
+    else:
+        assert any(kept in m.feedback for m in negative), derivation.mistakes[quantity]
+
+
+def test_friction_sign_flip_of_a_skid_time_is_not_offered() -> None:
+    v0, g, mu = (s("bowling-ball-skid", n) for n in ("v0", "g", "mu"))
+    offered = [m.expr for m in bank_derivation("bowling-ball-skid").mistakes["skid_time"]]
+    assert all(sympy.simplify(e + 2 * v0 / (7 * g * mu)) != 0 for e in offered), offered
+
+
+@pytest.mark.parametrize(
+    ("text", "sign"),
+    [
+        ("2*v0/(7*g*mu)", 1),
+        ("-2*v0/(7*g*mu)", -1),
+        ("sqrt(-g*mu)", 0),
+        ("v0 - g", None),  # positive or negative depending on the values
+    ],
+)
+def test_proven_sign_uses_the_symbols_declared_signs(text: str, sign: int | None) -> None:
+    names = {n: s("bowling-ball-skid", n) for n in ("v0", "g", "mu")}
+    assert proven_sign(parse_math(text, names).expr, bank_model("bowling-ball-skid")) == sign
+
+
+def test_proven_sign_uses_an_angles_range() -> None:
+    theta, g = s("skier-friction", "alpha"), s("skier-friction", "g")
+    model = bank_model("skier-friction")
+    assert proven_sign(g * sin(theta) * cos(theta), model) == 1
+    assert proven_sign(-g * cos(theta), model) == -1
