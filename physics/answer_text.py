@@ -1,8 +1,10 @@
-"""A sympy expression written as a student would type it, for tests that type the engine's answers.
+"""A sympy expression written as a student would type it, for tests that type the engine's answers,
+and as an instructor types it, for the messages that quote the engine's expressions to them.
 
 sympy's own printer writes names the whitelist parser does not read (`Abs`), and some forms have no
 spelling at all (`Piecewise`, `Min`, `sign`): those are not typeable, and `student_text` says so with
-None rather than producing text the parser will refuse.
+None rather than producing text the parser will refuse. `typed_text` always gives text, with `^` for
+powers (`k1*(-L1 + leftLength)^2/2`, not sympy's `**`).
 """
 
 from __future__ import annotations
@@ -41,6 +43,19 @@ class _StudentPrinter(StrPrinter):  # type: ignore[misc]
 
     def _print_Exp1(self, expr: sympy.Basic) -> str:
         return "exp(1)"  # `e` may be a declared symbol
+
+
+class _TypedPrinter(_StudentPrinter):
+    def _print_Pow(self, expr: sympy.Pow, rational: bool = False) -> str:
+        # sympy joins base and exponent, both already written by this printer, with its one `**`
+        text: str = super()._print_Pow(expr, rational)
+        return text.replace("**", "^")
+
+
+def typed_text(value: object) -> str:
+    """An expression, or a list, tuple or mapping of them, as an instructor types it: for messages."""
+    text: str = _TypedPrinter().doprint(value)
+    return text
 
 
 def is_typeable(expr: sympy.Basic) -> bool:

@@ -17,6 +17,7 @@ from pathlib import Path
 
 import sympy
 
+from physics.answer_text import typed_text
 from physics.errors import DerivationError, PhyscheckError
 from physics.wording import counted
 from problems.compiled import CompiledProblem, CompiledSymbolicPart, compile_problem
@@ -199,7 +200,7 @@ def _domain_checks(problem: str, compiled: CompiledProblem, students: list[Varia
         for relation in compiled.constraints:
             at = relation.xreplace(values)
             if not at.free_symbols and at is not sympy.true:
-                broken.append(f"{sympy.sstr(relation)} fails at {_shown(variant)}")
+                broken.append(f"{typed_text(relation)} fails at {_shown(variant)}")
         if compiled.constraints:
             results.append(
                 CheckResult(problem, None, f"variant {index} in domain", not broken, "; ".join(broken))

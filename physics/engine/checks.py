@@ -16,6 +16,7 @@ from functools import partial
 
 import sympy
 
+from physics.answer_text import typed_text
 from physics.engine import damping, tidy
 from physics.engine.mechanics import Mechanics
 from physics.engine.method import Method, NotApplicable
@@ -43,12 +44,12 @@ def physical_checks(
             f"{balance.compared}: worst relative gap {balance.max_relative_error:.1e} at {balance.points} points"
         )
     for index, stated in enumerate(model.limits):
-        where = ", ".join(f"{s} → {v}" for s, v in stated.where)
+        where = ", ".join(f"{s} → {typed_text(v)}" for s, v in stated.where)
         for name, expected in stated.expect:
             _check_limit(
                 model, quantities[name], stated.where, expected, ("limits", index, "expect", name), name
             )
-            checks[f"limit {name} ({where})"] = stated.description or f"{name} → {expected}"
+            checks[f"limit {name} ({where})"] = stated.description or f"{name} → {typed_text(expected)}"
     checks.update(_frictionless(model, quantities, factory))
     checks.update(damping.undamped_checks(model, quantities, partial(_frequency, factory)))
     return checks
@@ -76,14 +77,18 @@ def _check_limit(
     found = _limit_of(reference, where)
     if tidy.simplify(found - expected) == 0:
         return
-    shown = ", ".join(f"{s} → {v}" for s, v in where)
+    shown = ", ".join(f"{s} → {typed_text(v)}" for s, v in where)
     if found.has(sympy.oo, -sympy.oo, sympy.zoo, sympy.nan, sympy.AccumBounds):
-        raise DerivationError(f"{name} = {reference} tends to {found} as {shown}, not {expected}", path=path)
+        raise DerivationError(
+            f"{name} = {typed_text(reference)} tends to {typed_text(found)} as {shown}, not {typed_text(expected)}",
+            path=path,
+        )
     try:
         prove_equal(found, expected, model, name, ("the derived limit", "the stated limit"))
     except DerivationError:
         raise DerivationError(
-            f"{name} = {reference} tends to {found} as {shown}; the stated limit is {expected}", path=path
+            f"{name} = {typed_text(reference)} tends to {typed_text(found)} as {shown}; the stated limit is {typed_text(expected)}",
+            path=path,
         ) from None
 
 
@@ -108,6 +113,6 @@ def _frictionless(
         where = tuple((c, sympy.Integer(0)) for c in coefficients)
         _check_limit(model, reference, where, expected, ("friction",), quantity.name)
         checks[f"limit {quantity.name} (no friction)"] = (
-            f"tends to the frictionless model's {sympy.sstr(expected)}"
+            f"tends to the frictionless model's {typed_text(expected)}"
         )
     return checks

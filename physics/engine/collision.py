@@ -13,6 +13,7 @@ import dataclasses
 
 import sympy
 
+from physics.answer_text import typed_text
 from physics.engine import tidy
 from physics.engine.mechanics import Mechanics, solve_linear
 from physics.engine.model import Model, QuantityKind
@@ -75,7 +76,7 @@ def _finish(
         return fraction
     roots = [r for r in sympy.solve(kinetic_after - rise, SPEED) if r.is_positive is not False]
     if len(roots) != 1:
-        raise DerivationError(f"expected one projectile speed, found {roots}")
+        raise DerivationError(f"expected one projectile speed, found {typed_text(roots)}")
     steps.append(("Projectile speed", sympy.latex(sympy.Eq(SPEED, roots[0]))))
     return tidy.simplify(roots[0])
 

@@ -19,6 +19,7 @@ from typing import TYPE_CHECKING
 
 import sympy
 
+from physics.answer_text import typed_text
 from physics.engine import tidy
 from physics.engine.mechanics import time_derivative
 from physics.engine.model import ForceKind, Model, Quantity, QuantityKind
@@ -64,7 +65,9 @@ def linearization(method: Method, point: Point) -> tuple[sympy.Expr, sympy.Expr,
     factors = [f for f, _ in sympy.factor_list(polynomial, s)[1] if f.has(s)]
     oscillating = [f for f in factors if sympy.degree(f, s) >= 2 and f.subs(s, 0) != 0]
     if len(oscillating) != 1 or sympy.degree(oscillating[0], s) != 2:
-        raise NotThisWay(f"expected one damped oscillating mode, found the characteristic factors {factors}")
+        raise NotThisWay(
+            f"expected one damped oscillating mode, found the characteristic factors {typed_text(factors)}"
+        )
     a, b, c = (oscillating[0].coeff(s, k) for k in (2, 1, 0))
     if tidy.simplify(b) == 0:
         raise DerivationError("no viscous damping acts on this motion (add `drag:` to a moving body)")
@@ -112,7 +115,7 @@ def _require_underdamped(model: Model, squared: sympy.Expr, name: str) -> None:
         if not value.real > 0:
             shown = ", ".join(f"{s}={v:.4g}" for s, v in at.items())
             raise DerivationError(
-                f"{name}: the motion is not underdamped on the whole domain: omega_d^2 = {squared} is "
+                f"{name}: the motion is not underdamped on the whole domain: omega_d^2 = {typed_text(squared)} is "
                 f"{value.real:.4g} at {shown}; declare the underdamped condition under domain.positive "
                 "(for a mass on a spring with drag b: 4*k*m - b^2)",
                 quantity=name,
@@ -276,11 +279,11 @@ def undamped_checks(
         found = tidy.simplify(quantities[quantity.name].subs(dict.fromkeys(drag, 0)))
         if tidy.simplify(found - expected) != 0:
             raise DerivationError(
-                f"{quantity.name} = {quantities[quantity.name]} tends to {found} without drag, but the model "
-                f"without drag oscillates at {expected}",
+                f"{quantity.name} = {typed_text(quantities[quantity.name])} tends to {typed_text(found)} without drag, but the model "
+                f"without drag oscillates at {typed_text(expected)}",
                 path=("forces",),
             )
         checks[f"limit {quantity.name} (no damping)"] = (
-            f"tends to the undamped model's angular frequency {sympy.sstr(expected)}"
+            f"tends to the undamped model's angular frequency {typed_text(expected)}"
         )
     return checks

@@ -6,6 +6,7 @@ from functools import lru_cache
 
 import sympy
 
+from physics.answer_text import typed_text
 from physics.engine import tidy
 from physics.engine.checks import physical_checks
 from physics.engine.conservation import ConservationMethod
@@ -108,11 +109,11 @@ def _derive(model: Model) -> Derivation:
         try:
             for other in names[1:]:
                 how.append(
-                    f"{names[0]} = {other}: "
+                    f"{names[0]} = {typed_text(other)}: "
                     + prove_equal(derived[names[0]], derived[other], model, quantity.name, (names[0], other))
                 )
         except DerivationError as error:
-            found = "; ".join(f"{name} gives {value}" for name, value in derived.items())
+            found = "; ".join(f"{name} gives {typed_text(value)}" for name, value in derived.items())
             findings.append((path, f"{error.message} (all methods: {found})"))
             continue
         quantities[quantity.name] = _simplest(list(derived.values()))
@@ -159,7 +160,7 @@ def _too_few(
 ) -> str:
     """What each method found and why the others stopped, for a quantity fewer than two methods reached:
     a reason several methods share is said once, naming them all."""
-    found = [f"{m.name} gives {derived[m.name]}" for m in methods if m.name in derived]
+    found = [f"{m.name} gives {typed_text(derived[m.name])}" for m in methods if m.name in derived]
     reasons: dict[str, list[str]] = {}
     for method in methods:
         if method.name not in derived:
@@ -193,7 +194,7 @@ def _frame_failed(
     reason = stopped.get(FramesMethod.name, "")
     if model.frame is None or not reason.startswith("stopped"):
         return None
-    found = "; ".join(f"{m.name} gives {derived[m.name]}" for m in methods if m.name in derived)
+    found = "; ".join(f"{m.name} gives {typed_text(derived[m.name])}" for m in methods if m.name in derived)
     return (
         f"{name}: in the model's frame the fictitious forces {reason}, while the other methods derive it "
         f"({found}): check the frame's rate, axis and bodies against the model"
@@ -209,7 +210,7 @@ def check_consistency(model: Model, mech: Mechanics) -> None:
         if residue != 0:
             raise DerivationError(
                 f"constraint {constraint.name!r}: the positions in terms of the coordinates violate it "
-                f"(gap = {residue} instead of 0)",
+                f"(gap = {typed_text(residue)} instead of 0)",
                 path=("constraints", constraint.name),
             )
     if not model.constraints:
@@ -238,7 +239,7 @@ def _check_free_symbols(model: Model, quantity: Quantity, method: Method, value:
     extra = value.free_symbols - set(model.parameters)
     if extra:
         raise DerivationError(
-            f"{quantity.name}: {method.title} leaves {sorted(map(str, extra))} in the answer {value}; give their "
+            f"{quantity.name}: {method.title} leaves {sorted(map(str, extra))} in the answer {typed_text(value)}; give their "
             "values in the model's state",
             quantity=quantity.name,
         )

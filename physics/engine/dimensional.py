@@ -13,6 +13,7 @@ from collections.abc import Mapping
 
 import sympy
 
+from physics.answer_text import typed_text
 from physics.dimensions import DIMENSIONLESS, Dimension, describe
 from physics.engine.model import ForceKind, Model
 from physics.engine.text import Path
@@ -152,7 +153,7 @@ def _fault(expr: sympy.Expr, expected: Expected, dims: Dims) -> str | None:
     except UnknownDimension:
         return None  # a symbol without a declared dimension: nothing to compare against
     except DimensionMismatch as error:
-        return f"dimensionally inconsistent: {expr} {error.message}"
+        return f"dimensionally inconsistent: {typed_text(expr)} {error.message}"
     if expected is not None and found != expected:
-        return f"{expr} is {describe(found)}; expected {describe(expected)}"
+        return f"{typed_text(expr)} is {describe(found)}; expected {describe(expected)}"
     return None

@@ -14,6 +14,7 @@ import random
 
 import sympy
 
+from physics.answer_text import typed_text
 from physics.engine import tidy
 from physics.engine.model import Model, PairPotential
 from physics.engine.proof import domain_points
@@ -101,7 +102,8 @@ def _undecided(model: Model, pair: PairPotential, separation: sympy.Expr) -> str
         else "declare the parameters' signs so that it is fixed"
     )
     return (
-        f"the distance {pair.distance} {what} is the length |{separation}|, and the model does not say which "
-        f"sign {separation} has; the energy {pair.energy} is not even in {pair.distance}, so a signed "
+        f"the distance {pair.distance} {what} is the length |{typed_text(separation)}|, and the model does not "
+        f"say which sign {typed_text(separation)} has; the energy {typed_text(pair.energy)} is not even in "
+        f"{pair.distance}, so a signed "
         f"distance would put the equilibrium on the wrong side of the anchor: {hint}"
     )

@@ -14,6 +14,7 @@ from collections.abc import Callable
 
 import sympy
 
+from physics.answer_text import typed_text
 from physics.engine import tidy
 from physics.engine.model import Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
@@ -80,7 +81,7 @@ def _parting_root(model: Model, roots: list[sympy.Expr], unchanged: sympy.Expr, 
         point = domain_points(model, 1, seed=11)[0]
         real = [r for r in real if r.is_positive or (r.is_positive is None and float(r.subs(point)) > 0)]
     if len(real) != 1:
-        raise DerivationError(f"expected one {what} with which the bodies part, found {roots}")
+        raise DerivationError(f"expected one {what} with which the bodies part, found {typed_text(roots)}")
     return real[0]
 
 

@@ -13,6 +13,7 @@ import math
 
 import sympy
 
+from physics.answer_text import typed_text
 from physics.engine.impact import axes, unit_normal, velocities_before
 from physics.engine.model import Model, Quantity, QuantityKind
 from physics.errors import DerivationError
@@ -24,7 +25,7 @@ LONGEST = 40.0  # a critically damped contact (e = 0) never lets go: by then the
 def _value(expr: sympy.Expr, point: dict[sympy.Symbol, float]) -> float:
     value = sympy.N(expr.subs(point), 20)
     if not value.is_real:
-        raise DerivationError(f"{expr} is not real at {point}")
+        raise DerivationError(f"{typed_text(expr)} is not real at {typed_text(point)}")
     return float(value)
 
 

@@ -11,6 +11,7 @@ from functools import cached_property
 
 import sympy
 
+from physics.answer_text import typed_text
 from physics.engine import tidy
 from physics.engine.mechanics import solve_linear, time_derivative
 from physics.engine.method import Method, NotApplicable
@@ -136,5 +137,5 @@ def _single_nonzero_eigenvalue(matrix: sympy.Matrix) -> sympy.Expr:
     values = [tidy.simplify(v) for v in matrix.eigenvals()]
     nonzero = [v for v in values if v != 0]
     if len(nonzero) != 1:
-        raise NotApplicable(f"expected one oscillating mode, found eigenvalues {values}")
+        raise NotApplicable(f"expected one oscillating mode, found eigenvalues {typed_text(values)}")
     return nonzero[0]

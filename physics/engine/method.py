@@ -8,6 +8,7 @@ from functools import cached_property, lru_cache
 
 import sympy
 
+from physics.answer_text import typed_text
 from physics.engine import damping, impact, mode_shapes, modes, slipping, tidy, trajectory, work_energy
 from physics.engine.mechanics import Mechanics
 from physics.engine.model import (
@@ -196,7 +197,7 @@ class Method(ABC):
         if len(stable) != 1:
             raise DerivationError(
                 f"{self.title}: expected one stable equilibrium of {coordinate}, found {len(stable)} among "
-                f"the roots {roots} of Q = {force}",
+                f"the roots {typed_text(roots)} of Q = {typed_text(force)}",
                 quantity=coordinate,
             )
         self.step(
@@ -226,7 +227,7 @@ class Method(ABC):
         ]
         if len(stable) != 1:
             raise DerivationError(
-                f"{self.title}: expected one terminal velocity of {coordinate}, found {stable} among {roots}",
+                f"{self.title}: expected one terminal velocity of {coordinate}, found {typed_text(stable)} among {typed_text(roots)}",
                 quantity=coordinate,
             )
         self.step(
@@ -243,7 +244,8 @@ class Method(ABC):
         ]
         if len(roots) != 1:
             raise DerivationError(
-                f"{self.title}: {name}: expected one value of {parameter}, found {roots}", quantity=name
+                f"{self.title}: {name}: expected one value of {parameter}, found {typed_text(roots)}",
+                quantity=name,
             )
         self.step(
             f"Solve for {parameter}",

@@ -14,6 +14,7 @@ from collections.abc import Sequence
 import mpmath
 import sympy
 
+from physics.answer_text import typed_text
 from physics.engine import tidy
 from physics.engine.mechanics import Mechanics
 from physics.engine.model import Model
@@ -38,7 +39,7 @@ def equilibrium_point(model: Model, mech: Mechanics) -> dict[sympy.Symbol, sympy
     if len(stable) != 1:
         raise DerivationError(
             f"expected one stable equilibrium of {', '.join(map(str, moving))}, found {len(stable)} among "
-            f"{solutions}; declare the coordinates' ranges under domain.ranges",
+            f"{typed_text(solutions)}; declare the coordinates' ranges under domain.ranges",
             path=("domain",),
         )
     return stable[0]

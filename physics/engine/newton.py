@@ -12,6 +12,7 @@ from functools import cached_property
 
 import sympy
 
+from physics.answer_text import typed_text
 from physics.engine import collision, tidy
 from physics.engine.frames import centripetal_accelerations
 from physics.engine.mechanics import solve_linear, time_derivative
@@ -167,7 +168,7 @@ class NewtonMethod(Method):
         values = [tidy.simplify(v) for v in (mass.inv() * stiffness).eigenvals()]
         nonzero = [v for v in values if v != 0]
         if len(nonzero) != 1:
-            raise NotApplicable(f"expected one oscillating mode, found eigenvalues {values}")
+            raise NotApplicable(f"expected one oscillating mode, found eigenvalues {typed_text(values)}")
         self.step(
             "Small oscillations of the Cartesian equations",
             r"M\ddot{x} = -Kx,\ K = "

@@ -26,6 +26,7 @@ from typing import Any, TypeVar, cast
 
 import sympy
 
+from physics.answer_text import typed_text
 from physics.engine import tidy
 from physics.engine.conservation import ConservationMethod, cyclic_indices
 from physics.engine.mechanics import Mechanics, solve_linear, time_derivative
@@ -153,7 +154,7 @@ def _steady_rate(method: Method, target: str) -> tuple[sympy.Expr, Method]:
     spin = tidy.simplify(solver.acceleration(target))
     if spin != 0:
         raise DerivationError(
-            f"{target} does not turn uniformly ({target}'' = {spin}): a steady rotation needs a coordinate on "
+            f"{target} does not turn uniformly ({target}'' = {typed_text(spin)}): a steady rotation needs a coordinate on "
             "which neither the potential nor the inertia depends",
             quantity=target,
         )
@@ -165,15 +166,15 @@ def _steady_rate(method: Method, target: str) -> tuple[sympy.Expr, Method]:
     roots = [r for r in sympy.solve(acceleration, RATE) if r.is_real is not False]
     if len(roots) != 1 or not _positive_on_domain(roots[0], model):
         raise DerivationError(
-            f"no steady rotation of {target}: {first.name}'' = {acceleration} has no single positive root in "
-            f"{target}' (found {roots}); the force must pull towards the centre",
+            f"no steady rotation of {target}: {first.name}'' = {typed_text(acceleration)} has no single positive root in "
+            f"{target}' (found {typed_text(roots)}); the force must pull towards the centre",
             quantity=target,
         )
     rate = tidy.simplify(roots[0])
     for c, a in moving[1:]:
         if tidy.simplify(a.subs(RATE, rate)) != 0:
             raise DerivationError(
-                f"no steady rotation of {target}: at {target}' = {rate}, {c.name}'' = {a} does not vanish",
+                f"no steady rotation of {target}: at {target}' = {typed_text(rate)}, {c.name}'' = {typed_text(a)} does not vanish",
                 quantity=target,
             )
     for step in solver.steps:
@@ -206,7 +207,7 @@ def frame_rate(method: Method) -> sympy.Expr:
     own = [s for s in rate.free_symbols if s in model.parameters and not elsewhere(model, s)]
     if len(own) != 1:
         raise DerivationError(
-            f"the bodies are not at rest in the frame at the state, and the rate {rate} has {len(own)} symbols "
+            f"the bodies are not at rest in the frame at the state, and the rate {typed_text(rate)} has {len(own)} symbols "
             "of its own to solve for (one, found nowhere else in the model, is needed)",
             quantity=FRAME,
         )
@@ -215,13 +216,16 @@ def frame_rate(method: Method) -> sympy.Expr:
     roots = [r for r in sympy.solve(acceleration, symbol) if _positive_on_domain(r, model)]
     if len(roots) != 1:
         raise DerivationError(
-            f"no single rate {symbol} > 0 holds {first.name} at rest in the frame ({first.name}'' = {acceleration})",
+            f"no single rate {symbol} > 0 holds {first.name} at rest in the frame ({first.name}'' = {typed_text(acceleration)})",
             quantity=FRAME,
         )
     value = tidy.simplify(roots[0])
     for c, a in moving[1:]:
         if tidy.simplify(a.subs(symbol, value)) != 0:
-            raise DerivationError(f"at {symbol} = {value}, {c.name}'' = {a} does not vanish", quantity=FRAME)
+            raise DerivationError(
+                f"at {symbol} = {typed_text(value)}, {c.name}'' = {typed_text(a)} does not vanish",
+                quantity=FRAME,
+            )
     method.step(
         "At rest in the frame at the state",
         method.tex(sympy.Eq(first.acceleration, acceleration))
@@ -318,8 +322,8 @@ def _circular_orbit(method: Method, target: str) -> tuple[sympy.Expr, sympy.Expr
     ]
     if len(stable) != 1:
         raise DerivationError(
-            f"expected one circular orbit (a stable root of {target}'' = {radial} with the conserved momenta), "
-            f"found {len(stable)} among {roots}",
+            f"expected one circular orbit (a stable root of {target}'' = {typed_text(radial)} with the conserved momenta), "
+            f"found {len(stable)} among {typed_text(roots)}",
             quantity=target,
         )
     radius = tidy.simplify(stable[0])

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import sympy
 
+from physics.answer_text import typed_text
 from physics.engine import tidy
 from physics.engine.method import Method, NotApplicable
 
@@ -25,7 +26,7 @@ def frequency_from_accelerations(
     values = [tidy.simplify(v) for v in stiffness.eigenvals()]
     nonzero = [v for v in values if v != 0]
     if len(nonzero) != 1:
-        raise NotApplicable(f"expected one oscillating mode, found {values}")
+        raise NotApplicable(f"expected one oscillating mode, found {typed_text(values)}")
     method.step(
         "Small oscillations of the equation of motion",
         rf"\ddot{{{method.tex(q)}}} = f({method.tex(q)}),\quad \omega^2 = -\left.\frac{{\partial f}}"

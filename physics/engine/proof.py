@@ -14,6 +14,7 @@ from functools import lru_cache
 
 import sympy
 
+from physics.answer_text import typed_text
 from physics.engine import tidy
 from physics.engine.model import Model
 from physics.errors import DerivationError
@@ -53,7 +54,9 @@ def _domain_points(model: Model, count: int, seed: int) -> tuple[dict[sympy.Symb
             points.append(point)
             if len(points) == count:
                 return tuple(points)
-    raise DerivationError(f"could not find {count} points in the domain (conditions {model.positive})")
+    raise DerivationError(
+        f"could not find {count} points in the domain (conditions {typed_text(model.positive)})"
+    )
 
 
 def prove_equal(first: sympy.Expr, second: sympy.Expr, model: Model, what: str, names: Sequence[str]) -> str:
@@ -73,12 +76,13 @@ def prove_equal(first: sympy.Expr, second: sympy.Expr, model: Model, what: str, 
         b = sympy.N(second, DIGITS, subs=exact)
         if not (a.is_real and b.is_real):
             raise DerivationError(
-                f"{what}: not real at {point}: {names[0]} gives {a}, {names[1]} gives {b}", quantity=what
+                f"{what}: not real at {typed_text(point)}: {names[0]} gives {typed_text(a)}, {names[1]} gives {typed_text(b)}",
+                quantity=what,
             )
         gap = abs(a - b)
         if gap > TOLERANCE * max(1, abs(a), abs(b)):
             raise DerivationError(
-                f"{what}: the methods disagree. {names[0]} gives {first}, {names[1]} gives {second}; "
+                f"{what}: the methods disagree. {names[0]} gives {typed_text(first)}, {names[1]} gives {typed_text(second)}; "
                 f"at {_show(point)} they are {float(a):.10g} and {float(b):.10g}",
                 quantity=what,
             )

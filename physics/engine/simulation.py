@@ -16,6 +16,7 @@ from typing import Any
 import mpmath
 import sympy
 
+from physics.answer_text import typed_text
 from physics.engine import impact_simulation, slipping
 from physics.engine.collision import merged
 from physics.engine.contact_friction import slip_velocity
@@ -211,7 +212,7 @@ class Simulator:
             if not error <= TOLERANCE:
                 raise DerivationError(
                     f"{quantity.name}: the simulation disagrees with the derivation ({compared}): measured "
-                    f"{measured:.8g}, derived {reference} = {expected:.8g} (relative error {error:.2g}) at "
+                    f"{measured:.8g}, derived {typed_text(reference)} = {expected:.8g} (relative error {error:.2g}) at "
                     + ", ".join(f"{s}={v:.4g}" for s, v in point.items()),
                     quantity=quantity.name,
                 )
@@ -566,7 +567,9 @@ class Simulator:
         ) / h**2
         inertia = dyn.mass(base, params)[i][i]
         if stiffness <= 0:
-            raise DerivationError(f"{coordinate}: the potential is not a minimum at the equilibrium {q0}")
+            raise DerivationError(
+                f"{coordinate}: the potential is not a minimum at the equilibrium {typed_text(q0)}"
+            )
         estimate = 2 * math.pi * math.sqrt(inertia / stiffness)
         per_period = 400
         start = shifted(1e-4 * (abs(q0) or 1.0))
@@ -722,5 +725,5 @@ def _reaches(quantity: Quantity) -> bool:
 def _evaluate(expr: sympy.Expr, point: Point) -> float:
     value = sympy.N(expr.subs(point), 20)
     if not value.is_real:
-        raise DerivationError(f"{expr} is not real at {point}")
+        raise DerivationError(f"{typed_text(expr)} is not real at {typed_text(point)}")
     return float(value)

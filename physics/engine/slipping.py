@@ -22,6 +22,7 @@ from typing import TYPE_CHECKING
 
 import sympy
 
+from physics.answer_text import typed_text
 from physics.engine import tidy
 from physics.engine.contact_friction import only_friction, slip_velocity
 from physics.engine.mechanics import Mechanics, time_derivative
@@ -108,7 +109,7 @@ def slipping_limit(method: Method, quantity: Quantity) -> sympy.Expr:
     if len(inside) != 1:
         raise DerivationError(
             f"{method.title}: {quantity.name}: expected one value of {parameter} in its declared range at "
-            f"which |f| = {mu} N, found {inside} among {roots}",
+            f"which |f| = {typed_text(mu)} N, found {typed_text(inside)} among {typed_text(roots)}",
             quantity=quantity.name,
         )
     method.step(

@@ -18,6 +18,7 @@ from typing import TYPE_CHECKING
 
 import sympy
 
+from physics.answer_text import typed_text
 from physics.engine import tidy
 from physics.engine.mechanics import time_derivative
 from physics.engine.model import Model, Quantity, QuantityKind
@@ -49,7 +50,7 @@ def launch(model: Model, quantity: Quantity) -> Launch:
     for axis, value in (*start.items(), *velocity.items()):
         if value.free_symbols & moving:
             raise DerivationError(
-                f"{quantity.name}: the launch ({axis} = {value}) depends on coordinates the state does not give",
+                f"{quantity.name}: the launch ({axis} = {typed_text(value)}) depends on coordinates the state does not give",
                 path=("state",),
             )
     level = quantity.level if quantity.level is not None else start["y"]
@@ -103,7 +104,7 @@ def by_kinematics(method: Method, quantity: Quantity) -> sympy.Expr:
     moving = model.moving_symbols
     if any(a.free_symbols & moving for a in found.values()):
         raise NotApplicable(
-            f"the acceleration of {quantity.target} ({found}) changes along the flight (drag, a force that "
+            f"the acceleration of {quantity.target} ({typed_text(found)}) changes along the flight (drag, a force that "
             "depends on the motion): not constant-acceleration kinematics"
         )
     acceleration = {a: found.get(a, sympy.Integer(0)) for a in ("x", "y")}
@@ -165,14 +166,14 @@ def later_root(model: Model, roots: list[sympy.Expr], name: str) -> sympy.Expr:
                 values.append((value.real, index))
         if not values:
             raise DerivationError(
-                f"{name}: the body never comes down to the landing level (roots {roots}) at "
+                f"{name}: the body never comes down to the landing level (roots {typed_text(roots)}) at "
                 + ", ".join(f"{s}={v:.4g}" for s, v in point.items()),
                 quantity=name,
             )
         chosen.add(max(values)[1])
     if len(chosen) != 1:
         raise DerivationError(
-            f"{name}: the landing time is not one root over the domain ({roots})", quantity=name
+            f"{name}: the landing time is not one root over the domain ({typed_text(roots)})", quantity=name
         )
     return tidy.simplify(roots[chosen.pop()])
 
@@ -198,10 +199,12 @@ def by_energy(method: Method, quantity: Quantity) -> sympy.Expr:
     }
     cartesian = {d.symbol for d in mech.dofs}
     if any(f.free_symbols & cartesian for f in force.values()):
-        raise NotApplicable(f"the force on {body.name} ({force}) changes along the path")
+        raise NotApplicable(f"the force on {body.name} ({typed_text(force)}) changes along the path")
     fx, fy = force.get("x", sympy.Integer(0)), force.get("y", sympy.Integer(0))
     if fx != 0:
-        raise NotApplicable(f"a horizontal force ({fx}) acts: horizontal momentum is not conserved")
+        raise NotApplicable(
+            f"a horizontal force ({typed_text(fx)}) acts: horizontal momentum is not conserved"
+        )
     if fy == 0:
         raise DerivationError(f"{quantity.name}: nothing pulls {body.name} down: it never lands")
     start = launch(model, quantity)
@@ -248,7 +251,7 @@ def _with_sign(model: Model, roots: list[sympy.Expr], like: sympy.Expr, name: st
         if all(v.real > 0 and abs(v.imag) <= 1e-12 * abs(v) for v in values):
             return root
     raise DerivationError(
-        f"{name}: the body does not come down to the landing level (roots {roots})", quantity=name
+        f"{name}: the body does not come down to the landing level (roots {typed_text(roots)})", quantity=name
     )
 
 

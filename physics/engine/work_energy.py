@@ -26,6 +26,7 @@ from typing import TYPE_CHECKING
 
 import sympy
 
+from physics.answer_text import typed_text
 from physics.engine import impact, tidy
 from physics.engine.mechanics import Mechanics, solve_linear
 from physics.engine.model import Coordinate, Model, Quantity, QuantityKind
@@ -83,7 +84,7 @@ def _held(method: Method, c: Coordinate, quantity: Quantity) -> dict[sympy.Symbo
     loose = [o.name for i, o in enumerate(model.coordinates) if o != c and i not in cyclic]
     if loose:
         raise DerivationError(
-            f"{quantity.name}: where {c.name} reaches {quantity.at[0][1]}, {', '.join(loose)} is not "
+            f"{quantity.name}: where {c.name} reaches {typed_text(quantity.at[0][1])}, {', '.join(loose)} is not "
             "determined: the potential or the inertia depends on it, so no conserved momentum fixes it (two "
             f"coupled coordinates exchange energy). Declare {', '.join(loose)} fixed (a symbol, not a "
             f"coordinate), or a model whose other coordinates the potential and the inertia do not involve",
@@ -118,7 +119,7 @@ def _direction(model: Model, start: sympy.Expr, end: sympy.Expr, name: str) -> i
     if all(v < 0 for v in values):
         return -1
     raise DerivationError(
-        f"cannot tell which way {name} moves from its start {start} to {end}: the difference {difference} "
+        f"cannot tell which way {name} moves from its start {typed_text(start)} to {typed_text(end)}: the difference {typed_text(difference)} "
         "changes sign (or is zero) on the domain",
         path=("state", name),
     )
@@ -161,7 +162,7 @@ def answer(method: Method, quantity: Quantity) -> sympy.Expr:
     solver = type(method)(reached, Mechanics(reached))
     result = solver.answer(dataclasses.replace(quantity, at=()))
     for step in solver.steps:
-        method.step(f"{step.title} (where {c.name} = {sympy.sstr(trip.end)})", step.latex)
+        method.step(f"{step.title} (where {c.name} = {typed_text(trip.end)})", step.latex)
     return result
 
 
@@ -192,12 +193,12 @@ def by_energy(method: Method, trip: Journey) -> sympy.Expr:
         generalized = tidy.simplify(mech.generalized(forces)[0])
         if generalized.has(qd):
             raise NotApplicable(
-                f"the non-conservative force along {c.name} ({generalized}) depends on the speed along the way "
+                f"the non-conservative force along {c.name} ({typed_text(generalized)}) depends on the speed along the way "
                 "(a normal force on a curve, drag): its work needs the motion itself"
             )
         work = tidy.simplify(sympy.integrate(generalized, (q, trip.start, trip.end)))
         if work.has(sympy.Integral):
-            raise NotApplicable(f"could not integrate the work of {generalized} along {c.name}")
+            raise NotApplicable(f"could not integrate the work of {typed_text(generalized)} along {c.name}")
         method.step(
             "Work of the non-conservative forces",
             rf"W = \int_{{{method.tex(trip.start)}}}^{{{method.tex(trip.end)}}} Q_{{\mathrm{{nc}}}}\,"
@@ -216,7 +217,7 @@ def by_energy(method: Method, trip: Journey) -> sympy.Expr:
     square = tidy.simplify(2 * (before + work - rest) / inertia)
     w = qd**2
     method.step(
-        f"Work and energy from {c.name} = {sympy.sstr(trip.start)} to {sympy.sstr(trip.end)}",
+        f"Work and energy from {c.name} = {typed_text(trip.start)} to {typed_text(trip.end)}",
         r"T_1 + V_1 = T_0 + V_0 + W:\quad "
         + method.tex(sympy.Eq(tidy.simplify(inertia * w / 2 + rest), tidy.simplify(before + work)))
         + r"\Rightarrow "
@@ -264,7 +265,7 @@ def by_integration(method: Method, trip: Journey) -> sympy.Expr:
     quadratic = sympy.expand((moving - constant) / u**2)
     if quadratic.has(u):
         raise NotApplicable(
-            f"the acceleration {acceleration} is not A({c.name}) + B({c.name}) {c.name}_dot^2 (linear drag?): "
+            f"the acceleration {typed_text(acceleration)} is not A({c.name}) + B({c.name}) {c.name}_dot^2 (linear drag?): "
             "v dv/dq does not integrate in closed form"
         )
     t = sympy.Dummy("t", real=True)
@@ -284,7 +285,7 @@ def by_integration(method: Method, trip: Journey) -> sympy.Expr:
         + method.tex(2 * constant + 2 * quadratic * w),
     )
     method.step(
-        f"Integrated from {c.name} = {sympy.sstr(trip.start)} to {sympy.sstr(trip.end)}",
+        f"Integrated from {c.name} = {typed_text(trip.start)} to {typed_text(trip.end)}",
         method.tex(sympy.Eq(w, square)),
     )
     return square
@@ -296,8 +297,8 @@ def _check_reached(model: Model, trip: Journey, square: sympy.Expr, name: str) -
         value = complex(sympy.N(square.subs(point), 15))
         if abs(value.imag) > 1e-9 * max(1.0, abs(value.real)) or value.real <= 0:
             raise DerivationError(
-                f"{name}: the motion from the state does not reach {trip.coordinate.name} = {trip.end}: there "
-                f"{trip.coordinate.name}_dot^2 = {square} = {value.real:.4g} at "
+                f"{name}: the motion from the state does not reach {trip.coordinate.name} = {typed_text(trip.end)}: there "
+                f"{trip.coordinate.name}_dot^2 = {typed_text(square)} = {value.real:.4g} at "
                 + ", ".join(f"{s}={v:.4g}" for s, v in point.items()),
                 quantity=name,
             )

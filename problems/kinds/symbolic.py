@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING, Annotated, Any, Literal
 import sympy
 from pydantic import Field
 
-from physics.answer_text import student_text
+from physics.answer_text import student_text, typed_text
 from physics.checking import (
     CompiledQuestion,
     PartJob,
@@ -364,7 +364,7 @@ def _require_agreement(hand: sympy.Expr, derived: sympy.Expr, context: SymbolicC
     bare = SymbolicContext(symbols=context.symbols, constraints=context.constraints)
     judgement = judge_symbolic(hand, prepare_reference(derived, bare))
     if not judgement.correct:
-        raise SpecError(f"disagrees with the model, which derives {sympy.sstr(derived)}", path)
+        raise SpecError(f"disagrees with the model, which derives {typed_text(derived)}", path)
 
 
 # ---- self-test ----------------------------------------------------------------------------------

@@ -70,4 +70,4 @@ def test_an_upload_whose_frame_turns_at_the_wrong_rate_is_refused(client, instru
     assert response.status_code == 422, response.text
     details = {d["path"]: d["message"] for d in response.json()["error"]["details"]}
     message = details["model.quantities.start"]
-    assert "frames gives 5*L0*omega**2" in message and "lagrange gives L0*omega**2" in message
+    assert "frames gives 5*L0*omega^2" in message and "lagrange gives L0*omega^2" in message

@@ -19,6 +19,7 @@ from typing import Any
 
 import sympy
 
+from physics.answer_text import typed_text
 from physics.engine.elements.base import DIRECTIONS, Builder, Fields, offset, text_of, wrap
 from physics.engine.text import Path
 from physics.errors import SpecError
@@ -78,7 +79,7 @@ def expand(name: str, spec: Mapping[str, Any], builder: Builder, path: Path) -> 
     constant = sympy.simplify(-(lengths[0] + lengths[1]))
     if constant.free_symbols - set(builder.symbols.values()):
         fields.error(
-            f"the ends' positions change the string's length by {sympy.sstr(-constant)}; "
+            f"the ends' positions change the string's length by {typed_text(-constant)}; "
             "make them move together",
             "ends",
         )
