@@ -22,6 +22,7 @@ from physics.engine.proof import clear_domain_points, domain_points, prove_equal
 from physics.engine.results import Derivation, KnownMistake, LimitCase, MethodReport, SimulationCheck
 from physics.engine.simulation import Simulator
 from physics.errors import DerivationError, PhyscheckError
+from physics.wording import counted
 
 SIMULATION_POINTS = 3
 MIN_METHODS = 2
@@ -230,7 +231,8 @@ def check_consistency(model: Model, mech: Mechanics) -> None:
         free = len(mech.dofs) - numeric.rank(iszerofunc=lambda x: abs(x) < 1e-12)
     if free != len(mech.q):
         raise DerivationError(
-            f"the constraints leave {free} degrees of freedom but the model has {len(mech.q)} coordinates",
+            f"the constraints leave {counted(free, 'degree of freedom', 'degrees of freedom')} but the model has "
+            f"{counted(len(mech.q), 'coordinate')}",
             path=("coordinates",),
         )
 

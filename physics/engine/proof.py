@@ -18,6 +18,7 @@ from physics.answer_text import typed_text
 from physics.engine import tidy
 from physics.engine.model import Model
 from physics.errors import DerivationError
+from physics.wording import counted
 
 SAMPLES = 60
 DIGITS = 30
@@ -55,7 +56,7 @@ def _domain_points(model: Model, count: int, seed: int) -> tuple[dict[sympy.Symb
             if len(points) == count:
                 return tuple(points)
     raise DerivationError(
-        f"could not find {count} points in the domain (conditions {typed_text(model.positive)})"
+        f"could not find {counted(count, 'point')} in the domain (conditions {typed_text(model.positive)})"
     )
 
 
