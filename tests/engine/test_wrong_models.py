@@ -34,7 +34,7 @@ def test_missing_constraint_leaves_too_many_degrees_of_freedom() -> None:
     model = _load(
         "atwood", lambda d: d.update(constraints={}, quantities={"acceleration": {"acceleration": "s"}})
     )
-    with pytest.raises(DerivationError, match="2 degrees of freedom but the model has 1 coordinate$"):
+    with pytest.raises(DerivationError, match=r"2 degrees of freedom but the model has 1 coordinate$"):
         uncached(model)
 
 
