@@ -2,10 +2,12 @@
 
 The weight comes from gravity; each constraint the body takes part in pushes or pulls along the gradient
 of its gap (a surface's normal force, a string's tension, rolling friction), as the engine's multipliers
-do; kinetic friction opposes the sliding. Directions are those at the model's reference configuration
-(every coordinate 0) with the given or typical values. A contact keeps one label in every diagram of
-the problem (the incline's N on the block is the N on the wedge, opposite); friction against a moving
-surface is drawn on both bodies. Springs, other potentials, given forces and drag come from loads.py (a
+do; kinetic friction opposes the sliding. Directions are those in the configuration the scene draws
+(configuration.py: the model's state, or where the scene places a body) with the given or typical
+values. A contact keeps one label in every diagram of the problem (the incline's N on the block is the N
+on the wedge, opposite; a pendulum's T on the bob pulls its cart at the pivot); friction against a
+moving surface is drawn on both bodies. A body under gravity that the model moves only along x (a cart)
+stands on a floor that the model leaves out, pushing it up: N. Springs, other potentials, given forces and drag come from loads.py (a
 spring's direction is taken where the body rests); constraints of kind "other" (a wire, a hoop, a pivot
 or axle, a floor's grip) from held.py, which reads what they are from their gaps.
 """
@@ -21,6 +23,7 @@ from functools import lru_cache
 import sympy
 
 from physics.engine.model import Constraint, ConstraintKind, Model
+from physics.figures.configuration import drawn_configuration
 from physics.figures.held import held_forces
 from physics.figures.loads import applied_forces, potential_forces
 from physics.figures.scene import BLOCK, Values, body_label, symbol_label
@@ -61,7 +64,8 @@ def body_forces(model: Model, body_name: str, given: Mapping[str, float]) -> lis
     return forces + [Force(label, direction) for label, direction in loads]
 
 
-_Source = tuple[str, str | int]  # ("constraint", its name) or ("friction", its index in the model)
+# ("constraint", its name), ("friction", its index in the model) or ("floor", the body's name)
+_Source = tuple[str, str | int]
 
 
 @lru_cache(maxsize=16)
@@ -69,7 +73,8 @@ def _contact_forces(model: Model, given: tuple[tuple[str, float], ...]) -> dict[
     """Every body's contact forces, labelled together: a problem's diagrams are drawn one body at a
     time, and each needs the others' contacts to number its own."""
     values = Values(model, dict(given))
-    contacts = {body.name: _contacts(model, body.name, values) for body in model.bodies}
+    drawn = drawn_configuration(model, dict(given))
+    contacts = {body.name: _contacts(model, body.name, values, drawn) for body in model.bodies}
     labels = _contact_labels(
         model, {source: base for found in contacts.values() for source, base, _ in found}
     )
@@ -83,6 +88,7 @@ def _contact_labels(model: Model, drawn: dict[_Source, str]) -> dict[_Source, st
     """One label per contact force drawn on any body (`drawn` gives each its letter), in the model's
     order."""
     order: list[_Source] = [("constraint", c.name) for c in model.constraints]
+    order += [("floor", body.name) for body in model.bodies]
     order += [("friction", i) for i in range(len(model.frictions))]
     sources = [(source, drawn[source]) for source in order if source in drawn]
     shared = Counter(base for _, base in sources)
@@ -97,9 +103,11 @@ def _contact_labels(model: Model, drawn: dict[_Source, str]) -> dict[_Source, st
     return labels
 
 
-def _contacts(model: Model, body_name: str, values: Values) -> list[tuple[_Source, str, tuple[float, float]]]:
-    """The constraint and friction forces on one body, each with its source, its letter and direction."""
-    at_rest = {c.symbol: 0.0 for c in model.coordinates}
+def _contacts(
+    model: Model, body_name: str, values: Values, drawn: dict[sympy.Symbol, float]
+) -> list[tuple[_Source, str, tuple[float, float]]]:
+    """The constraint and friction forces on one body in the configuration `drawn`, each with its
+    source, its letter and direction."""
     place: dict[sympy.Symbol, float] = {}
     for other in model.bodies:
         for name, expr in [
@@ -107,21 +115,25 @@ def _contacts(model: Model, body_name: str, values: Values) -> list[tuple[_Sourc
             *([(f"phi_{other.name}", other.angle)] if other.angle is not None else []),
         ]:
             try:
-                place[model.cartesian_symbol(name)] = values.number(expr, at_rest)
+                place[model.cartesian_symbol(name)] = values.number(expr, drawn)
             except (TypeError, ValueError, ZeroDivisionError):
                 continue
     found: list[tuple[_Source, str, tuple[float, float]]] = []
     held: list[tuple[Constraint, tuple[float, float]]] = []  # kind "other": a wire, a pivot, a grip
     names = dict(model.cartesian)
+    x, y = names.get(f"x_{body_name}"), names.get(f"y_{body_name}")
     for constraint in model.constraints:
-        x, y = names.get(f"x_{body_name}"), names.get(f"y_{body_name}")
         if not {s for s in (x, y) if s is not None} & constraint.gap.free_symbols:
             continue
+        # A body the model moves along one axis only (a cart) would feel only that component of its
+        # pull: it feels the whole of the other body's, reversed (the bob's string pulls the cart).
+        partner = _partner(model, body_name, constraint) if None in (x, y) else None
         try:
-            gradient = [
-                values.number(sympy.diff(constraint.gap, s), place) if s is not None else 0.0 for s in (x, y)
-            ]
-        except (TypeError, ValueError, ZeroDivisionError):  # not defined at the reference configuration
+            if partner is None:
+                gradient = [_slope(constraint, s, place, values) for s in (x, y)]
+            else:
+                gradient = [-_slope(constraint, names[f"{axis}_{partner}"], place, values) for axis in "xy"]
+        except (TypeError, ValueError, ZeroDivisionError):  # not defined in the drawn configuration
             continue
         direction = _unit(gradient[0], gradient[1])
         if direction is None:
@@ -130,13 +142,15 @@ def _contacts(model: Model, body_name: str, values: Values) -> list[tuple[_Sourc
             held.append((constraint, direction))
             continue
         found.append((("constraint", constraint.name), _LABELS[constraint.kind], direction))
+    if model.gravity is not None and x is not None and y is None:
+        found.append((("floor", body_name), "N", (0.0, 1.0)))
     for index, friction in enumerate(model.frictions):
         if body_name not in (friction.body, friction.against):
             continue
         slider = model.body(friction.body)
         coordinate = model.coordinate(friction.sliding).symbol
         try:
-            along = [values.number(sympy.diff(expr, coordinate), at_rest) for _, expr in slider.position]
+            along = [values.number(sympy.diff(expr, coordinate), drawn) for _, expr in slider.position]
         except (TypeError, ValueError, ZeroDivisionError):
             continue
         axes = [axis for axis, _ in slider.position]
@@ -147,6 +161,27 @@ def _contacts(model: Model, body_name: str, values: Values) -> list[tuple[_Sourc
         if direction is not None:
             found.append((("friction", index), "f", direction))
     return found + held_forces(model, body_name, values, held, found)
+
+
+def _slope(
+    constraint: Constraint, symbol: sympy.Symbol | None, place: dict[sympy.Symbol, float], values: Values
+) -> float:
+    """The constraint's gap's rate of change with one of a body's Cartesian coordinates (0 if it has none)."""
+    return 0.0 if symbol is None else values.number(sympy.diff(constraint.gap, symbol), place)
+
+
+def _partner(model: Model, body_name: str, constraint: Constraint) -> str | None:
+    """The one other body the constraint joins to `body_name`, if that body moves in both x and y."""
+    names = dict(model.cartesian)
+    free = constraint.gap.free_symbols
+    others = [
+        b.name
+        for b in model.bodies
+        if b.name != body_name and {names.get(f"x_{b.name}"), names.get(f"y_{b.name}")} & free
+    ]
+    if len(others) != 1 or not {f"x_{others[0]}", f"y_{others[0]}"} <= set(names):
+        return None
+    return others[0]
 
 
 _SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")

@@ -72,6 +72,9 @@ def symbol_label(name: str) -> str:
 class Figure:
     canvas: Canvas = field(default_factory=Canvas)
     said: list[str] = field(default_factory=list)
+    # Coordinates a drawing placed its bodies at where it does not draw the model's state (a pendulum
+    # swung aside to show that it swings): the free-body diagrams are drawn there too.
+    placed: dict[sympy.Symbol, float] = field(default_factory=dict)
 
     def say(self, sentence: str) -> None:
         self.said.append(sentence)
@@ -713,6 +716,27 @@ def _state_angle(model: Model, body: Body, values: Values) -> float | None:
     return None
 
 
+def _swung_to(model: Model, body: Body, angle: float, values: Values) -> dict[sympy.Symbol, float]:
+    """The value of the coordinate that swings the body (its angle from the downward vertical, in
+    the model's sense) that puts it `angle` from the vertical, on the side the figure draws it: +x."""
+    swinging = [
+        c.symbol
+        for c in model.coordinates
+        if any(sympy.diff(expr, c.symbol, 2) != 0 for _, expr in body.position)
+    ]
+    if len(swinging) != 1:
+        return {}
+    q = swinging[0]
+    x = dict(body.position).get("x", sympy.Integer(0))
+    rest = {c.symbol: 0.0 for c in model.coordinates}
+    try:
+        hanging = values.number(x, rest)
+        aside = {s: (values.number(x, {**rest, q: s}) - hanging) * math.sin(angle) for s in (angle, -angle)}
+    except (TypeError, ValueError, ZeroDivisionError):
+        return {q: angle}
+    return {q: angle if aside[angle] >= aside[-angle] else -angle}
+
+
 def draw_pendulum(
     figure: Figure,
     model: Model,
@@ -731,10 +755,14 @@ def draw_pendulum(
     noun, support = pendulum_words(body, string)
     rate = _turning_rate(model, body)
     state_angle = _state_angle(model, body, values)
-    # A string pendulum whose state is above the pivot's level is whirled round a vertical circle.
-    whirled = rate is None and state_angle is not None and math.cos(state_angle) < 0
-    if whirled:
-        angle = math.pi
+    # Drawn at the state's angle when the state gives one (a ball at the top of its circle, a bob
+    # passing the bottom), else swung aside to show that it swings. In a turning frame the state is the
+    # cone's angle that the problem asks for, which the figure does not give away.
+    if rate is None and state_angle is not None:
+        angle = state_angle
+    # A string pendulum drawn above the pivot's level is whirled round a vertical circle.
+    whirled = rate is None and math.cos(angle) < 0
+    figure.placed.update(_swung_to(model, body, angle, values))
     pivot = (0.0, 0.0)
     if pivot_body is None:
         canvas.ground((-1.5, 0.0), (1.5, 0.0), below=False)
@@ -1191,11 +1219,13 @@ def draw_path(
     if model.coordinates[0].name in ranges or body.angle is not None:
         samples = [i / 20 for i in range(-16, 17)]
     points = []
+    reached = []  # the coordinate's value at each point
     for t in samples:
         try:
             points.append((values.number(x_expr, {coordinate: t}), values.number(y_expr, {coordinate: t})))
         except (TypeError, ValueError):
             continue
+        reached.append(t)
     if len(points) < 2:
         raise ValueError("no path")
     span = max(
@@ -1205,6 +1235,8 @@ def draw_path(
     scale = 5.0 / span if span > 0 else 1.0
     points = [(x * scale, y * scale) for x, y in points]
     pivot = body.angle is not None and not [c for c in model.constraints if c.kind is ConstraintKind.SURFACE]
+    # The body is drawn two thirds of the way along its path.
+    figure.placed[coordinate] = reached[len(points) * 2 // 3]
     if pivot:
         figure.canvas.polyline(points, width=0.03)
         figure.canvas.ground((-1.0, 0.0), (1.0, 0.0), below=False)

@@ -1,0 +1,30 @@
+"""The configuration a problem is drawn in, shared by its scene and its free-body diagrams so that every
+force in a diagram points as it does in the scene: the model's state where it gives a coordinate, else
+0, except where the scene places a body itself (a pendulum swung aside to show that it swings, in a
+turning frame at an angle that does not give the cone's away; a bead partway along its hoop).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+
+import sympy
+
+from physics.engine.model import Model
+from physics.figures.scene import Values, compose
+
+_EVALUATION_ERRORS = (TypeError, ValueError, ZeroDivisionError)
+
+
+def drawn_configuration(model: Model, given: Mapping[str, float]) -> dict[sympy.Symbol, float]:
+    """Every coordinate's value in the configuration the scene draws, with the parameters in `given`
+    (SI, radians) or typical values."""
+    values = Values(model, given)
+    place = {c.symbol: 0.0 for c in model.coordinates}
+    for symbol, value in model.state:
+        if symbol in place:
+            try:
+                place[symbol] = values.number(value)
+            except _EVALUATION_ERRORS:
+                continue
+    return place | compose(model, given).placed
