@@ -26,7 +26,7 @@ from physics.engine.model import Constraint, ConstraintKind, Model
 from physics.figures.configuration import drawn_configuration
 from physics.figures.held import held_forces
 from physics.figures.loads import applied_forces, potential_forces
-from physics.figures.scene import BLOCK, Values, body_label, symbol_label
+from physics.figures.scene import BLOCK, Values, _is_linear, body_label, symbol_label
 from physics.figures.svg import FILLS, Canvas
 
 _LABELS = {ConstraintKind.SURFACE: "N", ConstraintKind.STRING: "T", ConstraintKind.ROLLING: "f"}
@@ -125,9 +125,11 @@ def _contacts(
     for constraint in model.constraints:
         if not {s for s in (x, y) if s is not None} & constraint.gap.free_symbols:
             continue
-        # A body the model moves along one axis only (a cart) would feel only that component of its
-        # pull: it feels the whole of the other body's, reversed (the bob's string pulls the cart).
-        partner = _partner(model, body_name, constraint) if None in (x, y) else None
+        # A body the model moves along one axis only (a cart) would feel only that component of a
+        # pull along the line to another body (a pendulum's rod): it feels the whole of the other
+        # body's, reversed. A string over a pulley (a linear gap) pulls each body its own way.
+        joined = None in (x, y) and not _is_linear(constraint.gap, model)
+        partner = _partner(model, body_name, constraint) if joined else None
         try:
             if partner is None:
                 gradient = [_slope(constraint, s, place, values) for s in (x, y)]
@@ -142,6 +144,7 @@ def _contacts(
             held.append((constraint, direction))
             continue
         found.append((("constraint", constraint.name), _LABELS[constraint.kind], direction))
+    found = _along_surfaces(model, found)
     if model.gravity is not None and x is not None and y is None:
         found.append((("floor", body_name), "N", (0.0, 1.0)))
     for index, friction in enumerate(model.frictions):
@@ -161,6 +164,31 @@ def _contacts(
         if direction is not None:
             found.append((("friction", index), "f", direction))
     return found + held_forces(model, body_name, values, held, found)
+
+
+def _along_surfaces(
+    model: Model, found: list[tuple[_Source, str, tuple[float, float]]]
+) -> list[tuple[_Source, str, tuple[float, float]]]:
+    """Rolling friction turned along the surface it rolls on: a rolling constraint's gap (the arc
+    rolled against the turn) may follow only the body's x, which is along the surface only where that is
+    level (a ball off the bottom of a bowl)."""
+    normals = [
+        d
+        for (kind, name), _, d in found
+        if kind == "constraint" and model.constraint(str(name)).kind is ConstraintKind.SURFACE
+    ]
+    if len(normals) != 1:
+        return found
+    nx, ny = normals[0]
+    turned = []
+    for (kind, name), label, (dx, dy) in found:
+        if kind == "constraint" and model.constraint(str(name)).kind is ConstraintKind.ROLLING:
+            across = dx * nx + dy * ny
+            along = _unit(dx - across * nx, dy - across * ny)
+            if along is not None:
+                (dx, dy) = along
+        turned.append(((kind, name), label, (dx, dy)))
+    return turned
 
 
 def _slope(
