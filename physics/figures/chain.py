@@ -75,6 +75,7 @@ def draw_pendulum_chain(figure: Figure, model: Model, chain: list[tuple[Body, Co
         coordinate = _new_coordinate(body, model, seen)
         if coordinate is not None:
             seen.add(coordinate)
+            figure.placed[coordinate] = angle  # the angle it is marked as: the diagrams are drawn there
             canvas.arc(pivot, 1.0, -math.pi / 2, -math.pi / 2 + angle)
             middle = -math.pi / 2 + angle / 2
             canvas.text(

@@ -83,3 +83,9 @@ def test_rolling_friction_on_a_ball_drawn_off_the_bowls_bottom_lies_along_the_bo
     (fx, fy), (nx, ny) = found["f"], found["N"]
     assert abs(nx) > 0.1  # drawn off the bottom, where a level friction would cross the surface
     assert math.isclose(fx * nx + fy * ny, 0.0, abs_tol=1e-9)
+
+
+def test_a_double_pendulums_lower_rod_pulls_both_bobs_along_it_as_drawn_swung_aside() -> None:
+    lower = _forces("double-pendulum", "bob2")["T₂"]
+    assert abs(lower[0]) > 0.1  # the scene swings the rods aside from the vertical
+    assert _close(_forces("double-pendulum", "bob1")["T₂"], (-lower[0], -lower[1]))
