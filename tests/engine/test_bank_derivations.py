@@ -79,6 +79,21 @@ def _known() -> list[tuple[str, str, sympy.Expr, frozenset[str]]]:
         ("atwood", "acceleration", (m2 - m1) * g / (m1 + m2), three),
         ("atwood", "tension", 2 * m1 * m2 * g / (m1 + m2), two),
     ]
+    # A ball launched without spin: friction slows it (mu g) and spins it up (5 mu g / 2R) until
+    # v = omega R; energy is not conserved, so Lagrange and Newton only.
+    v0, mu, g = (s("bowling-ball-skid", n) for n in ("v0", "mu", "g"))
+    rows += [
+        ("bowling-ball-skid", "skid_time", 2 * v0 / (7 * mu * g), two),
+        ("bowling-ball-skid", "skid_distance", 12 * v0**2 / (49 * mu * g), two),
+        ("bowling-ball-skid", "rolling_speed", sympy.Rational(5, 7) * v0, two),
+    ]
+    # Released level with the centre of a frictionless quarter circle: v^2 = 2gR at the bottom, where
+    # N - mg = m v^2/R.
+    m, radius, g = (s("quarter-circle-slide", n) for n in ("m", "R", "g"))
+    rows += [
+        ("quarter-circle-slide", "speed_at_bottom", sqrt(2 * g * radius), three),
+        ("quarter-circle-slide", "normal_force_at_bottom", 3 * m * g, two),
+    ]
     return rows
 
 
