@@ -13,18 +13,9 @@ import sympy
 from physics.engine.model import Model
 from physics.figures.scene import Values, compose
 
-_EVALUATION_ERRORS = (TypeError, ValueError, ZeroDivisionError)
-
 
 def drawn_configuration(model: Model, given: Mapping[str, float]) -> dict[sympy.Symbol, float]:
     """Every coordinate's value in the configuration the scene draws, with the parameters in `given`
     (SI, radians) or typical values."""
-    values = Values(model, given)
-    place = {c.symbol: 0.0 for c in model.coordinates}
-    for symbol, value in model.state:
-        if symbol in place:
-            try:
-                place[symbol] = values.number(value)
-            except _EVALUATION_ERRORS:
-                continue
+    place = Values(model, given).at_state(model, {c.symbol: 0.0 for c in model.coordinates})
     return place | compose(model, given).placed

@@ -46,13 +46,7 @@ def resting_configuration(model: Model, values: Values) -> dict[sympy.Symbol, fl
     """The coordinates where the potential energy is least, if it is a quadratic with one minimum in
     the coordinates it depends on; else the model's state. A coordinate left free stays at its value
     as a symbol of the table (a radius r), else at 0."""
-    place = {c.symbol: values.subs.get(c.symbol, 0.0) for c in model.coordinates}
-    for symbol, value in model.state:
-        if symbol in place:
-            try:
-                place[symbol] = values.number(value)
-            except _EVALUATION_ERRORS:
-                continue
+    place = values.at_state(model, {c.symbol: values.subs.get(c.symbol, 0.0) for c in model.coordinates})
     parameters = {s: v for s, v in values.subs.items() if s not in place}  # a coordinate may be a symbol too
     try:
         energy = sympy.expand(Mechanics(model).potential.subs(parameters))

@@ -127,6 +127,17 @@ class Values:
     def number(self, expr: sympy.Expr, extra: Mapping[sympy.Symbol, float] | None = None) -> float:
         return float(expr.subs({**self.subs, **(extra or {})}))
 
+    def at_state(self, model: Model, place: dict[sympy.Symbol, float]) -> dict[sympy.Symbol, float]:
+        """`place` with each coordinate the model's state gives a number moved there (a state that
+        cannot be evaluated with these values is left out)."""
+        for symbol, value in model.state:
+            if symbol in place:
+                try:
+                    place[symbol] = self.number(value)
+                except (TypeError, ValueError, ZeroDivisionError, OverflowError):
+                    continue
+        return place
+
 
 def body_label(body: Body, model: Model) -> str:
     masses = [b.mass for b in model.bodies]
