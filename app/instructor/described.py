@@ -14,6 +14,7 @@ from typing import assert_never
 
 import sympy
 
+from physics.answer_text import typed_text
 from physics.choice import label
 from physics.errors import SpecError
 from physics.numeric import round_sigfigs
@@ -127,7 +128,7 @@ def _part(
             expected=None,
             expected_full=None,
             mistakes=tuple(
-                MistakeInfo(sympy.latex(m.expr), sympy.sstr(m.expr), m.feedback, i < authored)
+                MistakeInfo(sympy.latex(m.expr), typed_text(m.expr), m.feedback, i < authored)
                 for i, m in enumerate(part.context.mistakes)
             ),
             limits=tuple(

@@ -9,7 +9,7 @@ import pytest
 from app.instructor.described import SHOWN_FIGURES, describe
 from physics.verdict import Outcome
 from problems.compiled import CompiledNumericPart, compile_problem
-from problems.loader import parse_problem
+from problems.loader import load_bank, parse_problem
 from problems.variants import fixed_variant
 from tests.problems.documents import spring, stated_value
 
@@ -42,3 +42,11 @@ def test_a_stated_value_is_shown_whoever_the_student(with_variant) -> None:
     info = describe(compiled, fixed_variant(doc, {}) if with_variant else None).parts[0]
     assert (info.expected, info.expected_full) == ("6.022 × 10^23", "6.02214076 × 10^23")
     assert info.latex == r"6.02214076 \times 10^{23}"
+
+
+def test_mistakes_are_labelled_as_an_instructor_types_them() -> None:
+    """The class-results charts label each known mistake with this text: powers as ^, not Python's **."""
+    doc = next(d for d in load_bank() if d.id == "moving-wedge")
+    texts = [m.text for part in describe(compile_problem(doc)).parts for m in part.mistakes]
+    assert any("^" in text for text in texts), texts  # the wedge's slips hold sin(theta)^2
+    assert not any("**" in text for text in texts), texts
