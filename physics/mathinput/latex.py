@@ -17,19 +17,17 @@ from fractions import Fraction
 from typing import Literal
 
 from physics.errors import ParseError
+from physics.latex_words import LATEX_FRACTIONS, LATEX_SPACES, LATEX_TEXT_WRAPPERS
 from physics.mathinput.tokentypes import Kind, SpelledWord, Token
 from physics.mathinput.vocabulary import (
     FUNCTIONS,
     LATEX_BRACKETS,
-    LATEX_FRACTIONS,
     LATEX_FUNCTION_COMMANDS,
     LATEX_HINTS,
     LATEX_LETTERS,
     LATEX_OPERATORS,
     LATEX_PLAIN_TEXT_HINT,
     LATEX_SIZES,
-    LATEX_SPACES,
-    LATEX_TEXT_WRAPPERS,
 )
 
 FrameKind = Literal["group", "argument", "numerator", "denominator", "radicand"]

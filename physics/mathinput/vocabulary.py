@@ -108,7 +108,6 @@ LATEX_FUNCTIONS: Final = MappingProxyType(
 )  # fmt: skip
 
 # -- LaTeX as equation editors paste it (read by latex.py); commands without their backslash ----------
-LATEX_FRACTIONS: Final = frozenset({"frac", "dfrac", "tfrac", "cfrac"})
 # Each is also a key of FUNCTIONS.
 LATEX_FUNCTION_COMMANDS: Final = frozenset(
     {
@@ -126,13 +125,6 @@ LATEX_LETTERS: Final = MappingProxyType(
     }
 )  # fmt: skip
 LATEX_OPERATORS: Final = MappingProxyType({"cdot": "*", "times": "*", "ast": "*", "div": "/"})
-# Spacing and style commands: read as a space.
-LATEX_SPACES: Final = frozenset(
-    {
-        ",", ";", ":", "!", " ", ">", "quad", "qquad", "enspace", "thinspace", "medspace", "thickspace",
-        "negthinspace", "displaystyle", "textstyle",
-    }
-)  # fmt: skip
 # `\left(`, `\bigl[`: a size before a delimiter; the delimiter is what counts.
 LATEX_SIZES: Final = frozenset(
     {
@@ -147,8 +139,6 @@ LATEX_BRACKETS: Final = MappingProxyType(
         "vert": "|", "lvert": "|", "rvert": "|",
     }
 )  # fmt: skip
-# `\mathrm{max}`, `\text{v}`: a name in an upright or text font is still the name.
-LATEX_TEXT_WRAPPERS: Final = frozenset({"mathrm", "text", "textrm", "mathit", "operatorname"})
 
 # How to type what an unknown command was for; the default hint serves every other one.
 LATEX_PLAIN_TEXT_HINT: Final = (

@@ -10,10 +10,8 @@ side, so `\\mu\\mathrm{m}` is μm and `\\mathrm{k}\\Omega` kΩ, while `\\,` and 
 from __future__ import annotations
 
 from physics.errors import ParseError
+from physics.latex_words import LATEX_FRACTIONS, LATEX_SPACES, LATEX_TEXT_WRAPPERS
 
-_SPACES = frozenset({",", ";", ":", "!", " ", ">", "quad", "qquad", "enspace", "thinspace"})
-_TEXT_FONTS = frozenset({"mathrm", "text", "textrm", "mathit", "operatorname"})
-_FRACTIONS = frozenset({"frac", "dfrac", "tfrac"})
 _SYMBOLS = {"mu": "µ", "Omega": "Ω", "circ": "°", "degree": "°", "cdot": "·", "times": "×"}
 _TEXT_FONT_HINT = "write the units in plain text, as in m/s^2, or in \\mathrm{…}"
 
@@ -74,17 +72,17 @@ def plain_units(text: str) -> tuple[str, list[int]]:
         ch = text[i]
         if ch == "\\":
             name, end = _command_name(text, i)
-            if name in _SPACES:
+            if name in LATEX_SPACES:
                 put(" ", i)
             elif name in _SYMBOLS:
                 put(_SYMBOLS[name], i)
                 if name.isalpha():  # TeX drops the spaces that end a command's name: `\mu m` is µm
                     end = _skip_spaces(text, end)
-            elif name in _TEXT_FONTS:
+            elif name in LATEX_TEXT_WRAPPERS:
                 brace = _opening_brace(text, end, "\\" + name)
                 frames.append(("font", brace))
                 end = brace + 1
-            elif name in _FRACTIONS:
+            elif name in LATEX_FRACTIONS:
                 brace = _opening_brace(text, end, "\\" + name)
                 put("((", i)
                 frames.append(("numerator", brace))
