@@ -164,8 +164,30 @@ def check_numeric(answer: str, spec: NumericSpec) -> Verdict:
         expected_as_written = target.convert(expected, answer_units)
     comparison = _Comparison(expected, expected_as_written, answer_units, target, spec.tolerance)
     if comparison.passes(read.value):
-        return _noted(Verdict.graded(CORRECT, read_as))
-    return _noted(Verdict.graded(diagnose(read.value, expected_as_written, comparison.passes), read_as))
+        judgement = CORRECT
+    else:
+        judgement = diagnose(read.value, expected_as_written, comparison.passes)
+    remark = _cycles_or_radians(answer_units, target)
+    if remark:
+        judgement = dataclasses.replace(judgement, feedback=f"{judgement.feedback} {remark}")
+    return _noted(Verdict.graded(judgement, read_as))
+
+
+def _cycles_or_radians(answer: ParsedUnits | None, target: ParsedUnits | None) -> str:
+    """Hz and rad/s are both s⁻¹ once the radian is a pure number, so either is read and graded; but the
+    SI keeps the hertz for a frequency f and rad/s for an angular frequency ω = 2πf, and a student who
+    mixes them up mostly mixes up f and ω too."""
+    if answer is None or target is None:
+        return ""
+    if _has_unit(answer, "hertz") and _has_unit(target, "radian"):
+        return "Hz is the unit of a frequency f (cycles per second); an angular frequency ω = 2πf is given in rad/s."
+    if _has_unit(answer, "radian") and _has_unit(target, "hertz"):
+        return "rad/s is the unit of an angular frequency ω; a frequency f = ω/2π is given in Hz."
+    return ""
+
+
+def _has_unit(units: ParsedUnits, name: str) -> bool:
+    return any(atom.name.endswith(name) for atom, _ in units.factors)
 
 
 def _noted(verdict: Verdict) -> Verdict:
