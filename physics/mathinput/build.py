@@ -192,24 +192,30 @@ class Builder:
 class _Run:
     """Factors whose product in one Mul call is the tree the pairwise fold builds, with no size check
     failing on the way: every factor's parts (a Mul's arguments, or the factor itself) are distinct
-    powers of distinct non-numeric bases, after at most one exact coefficient per factor.
+    powers of distinct non-numeric bases, after at most one exact coefficient per factor; or a factor
+    is a nonzero exact number, opening the run or joining parts that are not one sum alone.
 
     Why that suffices: sympy's Mul.flatten then merges nothing (no two parts share a base, and it
     merges numeric powers only, which are kept out), so each step only multiplies the coefficients
     and sorts the parts into its canonical order; a product of the same parts and coefficients sorts
     the same in one call. The two cases where flatten distributes a number over a sum (its 2-argument
-    rule, and a result that is a number times one sum) need a factor that is a number, or a step
-    whose result is a coefficient and one part: a run has neither (each factor brings at least one
-    part and none cancels). The coefficients' bits are budgeted below every size check, and every
+    rule, and a result that is a number times one sum) need a step that multiplies a number and one
+    sum (with or without a coefficient), or a step whose result is a coefficient and one sum: a run
+    has neither. A number joins only parts that are not one sum alone; after a number that opens the
+    run, the next factor may not be one sum; and every other step brings parts to parts (two at
+    least, none cancelling). The coefficients' bits are budgeted below every size check, and every
     part was size-checked when its factor was built (a reciprocal's exponents only change sign), so
     the fold's per-step checks would refuse nothing either.
     """
 
     def __init__(self, first: sympy.Expr, limits: InputLimits) -> None:
-        self.factors = [first]
+        self.factors: list[sympy.Expr] = []
         self._bases: set[sympy.Basic] = set()
         self._budget = min(_BIG_NUMBER_BITS, limits.max_int_bits)
+        self._parts = 0  # non-numeric parts taken
+        self._one_sum = False  # the parts taken are one sum alone
         self._open = self._take(first)
+        self.factors.append(first)
 
     def admits(self, value: sympy.Expr) -> bool:
         """Take `value` into the run if one Mul call over the run stays the fold's tree."""
@@ -219,13 +225,18 @@ class _Run:
         return True
 
     def _take(self, value: sympy.Expr) -> bool:
+        if value.is_Rational:
+            # Opening the run, or joining parts: the step multiplies it into their coefficient.
+            if value == 0 or self._one_sum or (self.factors and not self._parts):
+                return False
+            return self._spend(_bits(value))
         parts = value.args if value.is_Mul else (value,)
         bits = 0
         if parts[0].is_Number and value.is_Mul:
             coefficient = parts[0]
             if not coefficient.is_Rational:
                 return False
-            bits = int(coefficient.p).bit_length() + int(coefficient.q).bit_length()
+            bits = _bits(coefficient)
             parts = parts[1:]
         bases = []
         for part in parts:
@@ -235,16 +246,29 @@ class _Run:
             if base.is_Number:
                 return False
             bases.append(base)
+        one_sum = len(parts) == 1 and parts[0].is_Add
         if (
             not bases
-            or bits > self._budget
+            or (one_sum and self.factors and not self._parts)  # a number times one sum
             or len(set(bases)) < len(bases)
             or self._bases.intersection(bases)
+            or not self._spend(bits)
         ):
             return False
-        self._budget -= bits
         self._bases.update(bases)
+        self._one_sum = one_sum and not self._parts
+        self._parts += len(parts)
         return True
+
+    def _spend(self, bits: int) -> bool:
+        if bits > self._budget:
+            return False
+        self._budget -= bits
+        return True
+
+
+def _bits(number: sympy.Rational) -> int:
+    return int(number.p).bit_length() + int(number.q).bit_length()
 
 
 def _reciprocal(value: sympy.Expr) -> sympy.Expr:
