@@ -40,7 +40,8 @@ from physics.mathinput.tree import (
 from physics.mathinput.vocabulary import INVERSES, OPENERS
 
 _POSTFIX_KINDS: dict[str, PostfixKind] = {"!": "factorial", "%": "percent", "°": "degrees"}
-_FACTOR_STARTS = frozenset({Kind.NUM, Kind.NAME, Kind.CONST, Kind.FUNC, Kind.LPAREN, Kind.SQRT})
+# A tuple, not a set: membership by identity, without Enum's hash (a Python call) for every token.
+_FACTOR_STARTS = (Kind.NUM, Kind.NAME, Kind.CONST, Kind.FUNC, Kind.LPAREN, Kind.SQRT)
 
 
 class _Item:
