@@ -43,8 +43,10 @@ def _refuse_exponent_letter_clash(text: str, tokens: list[Token], table: NameTab
         if token.kind is not Kind.NUM:
             continue
         typed = text[token.pos : token.end]
-        letter = next((c for c in typed if c in "eE"), None)
-        if letter is None or not table.is_declared(letter):
+        if "e" not in typed and "E" not in typed:  # most numbers: no letter to look for
+            continue
+        letter = next(c for c in typed if c in "eE")
+        if not table.is_declared(letter):
             continue
         mantissa, _, exponent = typed.partition(letter)
         power = exponent.lstrip("+")
