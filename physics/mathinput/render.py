@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass
+from functools import lru_cache
 
 from physics.mathinput.tree import (
     Call,
@@ -102,6 +103,7 @@ def _is_neg(node: Node) -> bool:
     return isinstance(ungroup(node), Neg)
 
 
+@lru_cache(maxsize=1024)  # a few declared names, met in every answer
 def latex_name(name: str) -> str:
     if "_" in name and not name.startswith("_"):
         base, sub = name.split("_", 1)
