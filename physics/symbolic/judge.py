@@ -309,11 +309,11 @@ def _constant_factor(answer_at: _AtPoints, values: Floats, reference: PreparedRe
     in multiprecision? From float64 ratios, confirmed at two points; None when float64 cannot tell."""
     floats = reference.floats
     tiny = floats.scale * 2.0**-40
-    if np.any(np.abs(floats.values) <= tiny):
+    if (np.abs(floats.values) <= tiny).any():
         return None  # a point where constant_ratio skips or refuses: left to multiprecision
     with np.errstate(all="ignore"):
         ratios = values / floats.values
-    if not np.all(np.isfinite(ratios)):
+    if not np.isfinite(ratios).all():
         return None
     spread = np.abs(ratios - ratios[0])
     far = int(np.argmax(spread))
@@ -345,7 +345,7 @@ def _diagnose_in_floats(
 ) -> Judgement | None:
     """`diagnose` decided from float64 values with multiprecision confirmations (same order, same
     answers); None wherever float64 cannot tell, and the multiprecision diagnosis decides."""
-    if not np.all(np.isfinite(values)):
+    if not np.isfinite(values).all():
         return None  # undefined somewhere: the full path says so in the feedback
     for (expr, feedback), targets in zip(reference.mistake_exprs, reference.float_mistakes, strict=True):
         same = _same_as(answer_at, values, expr, targets, reference)
