@@ -277,4 +277,7 @@ def _reciprocal(value: sympy.Expr) -> sympy.Expr:
     number not met before, such as the 7 of `x/7`)."""
     if value.is_Rational and value.p != 0:
         return cast(sympy.Expr, exact_number(int(value.q), int(value.p)))
-    return cast(sympy.Expr, sympy.Pow(value, -1))
+    # S.NegativeOne, not the int -1: the same power, under the key sympy's cache gives the one Mul.flatten
+    # asks for when it rebuilds each factor of a product (Pow(base, S.NegativeOne)); with the int it
+    # missed, and every denominator was computed a second time.
+    return cast(sympy.Expr, sympy.Pow(value, sympy.S.NegativeOne))
