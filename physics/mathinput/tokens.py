@@ -29,10 +29,6 @@ __all__ = ["Kind", "Token", "tokenize"]
 _MAX_SCI_EXPONENT_DIGITS = 6
 
 
-def _is_word_start(ch: str) -> bool:
-    return ch.isalpha()
-
-
 # What may follow the first letter of a word, besides letters.
 _WORD_MARKS = frozenset("0123456789_")
 
@@ -53,6 +49,7 @@ def tokenize(text: str, limits: InputLimits, *, units_in_fonts: bool = False) ->
     latex = LatexReader(chars, units_in_fonts)
     tokens: list[Token] = []
     n = len(chars)
+    max_tokens = limits.max_tokens
     i = 0
     space = False
     while i < n:
@@ -61,12 +58,12 @@ def tokenize(text: str, limits: InputLimits, *, units_in_fonts: bool = False) ->
             space = True
             i += 1
             continue
-        if len(tokens) >= limits.max_tokens:
-            raise TooLarge(f"The answer has too many parts (at most {limits.max_tokens} tokens).", i)
+        if len(tokens) >= max_tokens:
+            raise TooLarge(f"The answer has too many parts (at most {max_tokens} tokens).", i)
         start = i
         if (ch.isdigit() and ch.isascii()) or (ch == "." and i + 1 < n and chars[i + 1].isdigit()):
             token, i = _read_number(chars, i, space, limits)
-        elif _is_word_start(ch):
+        elif ch.isalpha():  # a word starts with a letter
             i += 1
             while i < n and ((c := chars[i]).isalpha() or c in _WORD_MARKS):
                 i += 1
@@ -93,8 +90,8 @@ def tokenize(text: str, limits: InputLimits, *, units_in_fonts: bool = False) ->
                 space = True
                 continue
             tokens.extend([replace(emitted[0], space_before=space), *emitted[1:]])
-            if len(tokens) > limits.max_tokens:
-                raise TooLarge(f"The answer has too many parts (at most {limits.max_tokens} tokens).", start)
+            if len(tokens) > max_tokens:
+                raise TooLarge(f"The answer has too many parts (at most {max_tokens} tokens).", start)
             space = False
             continue
         elif ch in OPENERS:
@@ -184,7 +181,12 @@ def _read_number(chars: list[str], i: int, space: bool, limits: InputLimits) -> 
             shift = int(exp_digits) * (-1 if sign == "-" else 1)
             literal += "e" + ("-" if sign == "-" else "") + exp_digits.lstrip("0").rjust(1, "0")
             i = j
-    value = Fraction(int(whole + fraction or "0"), 10 ** len(fraction))
+    # Fraction(n) for a whole number: the value Fraction(n, 1) is, without its gcd.
+    value = (
+        Fraction(int(whole + fraction or "0"), 10 ** len(fraction))
+        if fraction
+        else Fraction(int(whole or "0"))
+    )
     if shift:
         value *= Fraction(10) ** shift
     return Token(Kind.NUM, literal, start, i, space, value), i
