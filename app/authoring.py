@@ -18,7 +18,8 @@ from pebble import ProcessExpired, ProcessPool
 
 from app.errors import Busy, Unavailable
 from app.grading import forkserver
-from app.grading.supervised import PoolUnavailable, SupervisedPool
+from app.grading.processes import PoolUnavailable
+from app.grading.supervised import SupervisedPool
 from app.grading.worker import limit_memory
 from app.instructor.described import Described, describe
 from app.web.document_text import render_problems

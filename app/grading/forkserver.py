@@ -15,7 +15,8 @@ from multiprocessing import forkserver
 # imports app.cli (with the settings: a sixth of a CPU-second), so the fork server imports it once for
 # them all, at start and at every replacement. ("__main__" would say so for any script, but Python
 # 3.11's fork server never receives the main script's path.)
-PRELOAD = ["app.cli", "app.grading.preload"]
+# app.grading.processes: every grading worker's loop, which a worker would otherwise import as it starts.
+PRELOAD = ["app.cli", "app.grading.preload", "app.grading.processes"]
 
 
 def context() -> multiprocessing.context.ForkServerContext:

@@ -7,14 +7,11 @@ import logging
 from collections import OrderedDict
 from collections.abc import Callable
 from concurrent.futures import TimeoutError as FutureTimeout
-from concurrent.futures.process import BrokenProcessPool
 from typing import TypeVar
-
-from pebble import ProcessExpired, ProcessPool
 
 from app.errors import Busy, GraderFault, Unavailable
 from app.grading import forkserver
-from app.grading.supervised import PoolUnavailable, SupervisedPool
+from app.grading.processes import PoolUnavailable, WorkerDied, WorkerPool
 from app.grading.worker import ROUND_TRIP_JOBS, GraderCrash, SpecProblem, grade, limit_memory, read_only
 from physics.checking import CheckJob
 from physics.errors import CheckTimeout, SpecError, TooLarge
@@ -63,28 +60,39 @@ class GradingPool:
         self._max_tasks = max_tasks
         self._capacity = workers + queue_size
         self._in_flight = 0
-        self._pool: SupervisedPool | None = None
+        self._pool: WorkerPool | None = None
 
     def start(self) -> None:
-        self._pool = SupervisedPool("grading", self._new_pool, self._warm)
-        self._pool.start()
+        pool = self._new_pool()
+        pool.start()
+        try:
+            self._warm(pool)
+        except BaseException:
+            pool.close()
+            raise
+        self._pool = pool
 
-    def _new_pool(self) -> ProcessPool:
+    def _new_pool(self) -> WorkerPool:
         # forkserver: workers fork from a clean, pre-warmed process, not from the threaded server.
         # A fork server that died is started again by multiprocessing on the next worker it must fork.
-        return ProcessPool(
-            max_workers=self._workers,
+        return WorkerPool(
+            "grading",
+            forkserver.context(),
+            workers=self._workers,
             max_tasks=self._max_tasks,
             initializer=limit_memory,
             initargs=(self._memory_mb,),
-            context=forkserver.context(),
+            tasks=(self._task, self._preview_task),
         )
 
-    def _warm(self, pool: ProcessPool) -> None:
+    def _warm(self, pool: WorkerPool) -> None:
         # One small job per worker: every worker is forked and answering before the pool counts as
-        # ready (they fork warm from the preloaded fork server, so this takes milliseconds).
+        # ready (they fork warm from the preloaded fork server, so this takes milliseconds). The first
+        # jobs go one to each idle worker.
         warm = [
-            pool.schedule(self._task, args=(job,)) for _ in range(self._workers) for job in ROUND_TRIP_JOBS
+            pool.schedule(self._task, (job,), WARM_UP_SECONDS)
+            for _ in range(self._workers)
+            for job in ROUND_TRIP_JOBS
         ]
         for future in warm:
             future.result(timeout=WARM_UP_SECONDS)
@@ -96,8 +104,8 @@ class GradingPool:
 
     @property
     def ready(self) -> bool:
-        """Able to grade now (False while a broken pool is being replaced)."""
-        return self._pool is not None and self._pool.healthy
+        """Able to grade now (False while no worker is left and none can be started yet)."""
+        return self._pool is not None and self._pool.ready
 
     @property
     def in_flight(self) -> int:
@@ -123,7 +131,7 @@ class GradingPool:
         except PoolUnavailable as error:
             log.warning("grading refused: %s", error)
             raise Unavailable(RESTARTING_MESSAGE, retry_after=2) from error
-        except ProcessExpired as error:
+        except WorkerDied as error:
             # Killed from outside (the OOM killer, an operator) or crashed: not the answer's fault.
             log.error(
                 "grading worker died during a check (exit code %s); not graded",
@@ -131,9 +139,6 @@ class GradingPool:
                 extra={"answer": _excerpt(job.answer)},
             )
             raise Unavailable(RESTARTING_MESSAGE, retry_after=1) from error
-        except BrokenProcessPool as error:
-            log.error("grading pool broke during a check; not graded", extra={"answer": _excerpt(job.answer)})
-            raise Unavailable(RESTARTING_MESSAGE, retry_after=2) from error
         finally:
             self._in_flight -= 1
             if owner is not None:

@@ -1,10 +1,11 @@
-"""A pebble process pool that is replaced when it breaks, so one killed worker cannot end grading.
+"""A pebble process pool that is replaced when it breaks, so one killed worker cannot end upload vetting.
 
 pebble marks a whole pool broken for good when a worker dies while no task is running ("All workers
 expired"), or when the fork server that starts workers is gone; every later `schedule` then raises.
 A watcher thread notices within `interval` seconds, stops the broken pool, fails whatever was still
 waiting on it, and starts (and warms) a fresh one; meanwhile `healthy` is False and `schedule` raises
-`PoolUnavailable`, which the service answers with 503 and Retry-After.
+`PoolUnavailable`, which the service answers with 503 and Retry-After. (Grading, where the cost per
+task matters, runs on its own lighter pool, `app.grading.processes`.)
 """
 
 from __future__ import annotations
@@ -19,11 +20,9 @@ from typing import Any
 
 from pebble import ProcessPool
 
+from app.grading.processes import PoolUnavailable
+
 log = logging.getLogger("physcheck.grading")
-
-
-class PoolUnavailable(Exception):
-    """The pool cannot take work now: it broke and is being replaced, or it is shutting down."""
 
 
 class SupervisedPool:

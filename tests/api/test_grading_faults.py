@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import asyncio
+import itertools
 import os
 import signal
 import threading
@@ -110,20 +111,26 @@ def test_running_out_of_memory_under_the_worker_limit_is_the_answers_too_large(f
 
 
 class GatedPool(GradingPool):
-    """Its first pool starts at once; replacements wait until the test opens the gate."""
+    """Its first worker starts at once; replacements wait until the test opens the gate (as they wait
+    for a fork server that is loading the checker again)."""
 
     def __init__(self) -> None:
         super().__init__(
             workers=1, timeout=5.0, memory_mb=1024, max_tasks=100, queue_size=8, task=pid_or_grade
         )
         self.gate = threading.Event()
-        self._made = 0
 
     def _new_pool(self):  # type: ignore[no-untyped-def]
-        self._made += 1
-        if self._made > 1:
-            self.gate.wait(RECOVERY_DEADLINE)
-        return super()._new_pool()
+        pool = super()._new_pool()
+        spawn, started = pool._spawn, itertools.count()
+
+        def gated_spawn():  # type: ignore[no-untyped-def]
+            if next(started):
+                self.gate.wait(RECOVERY_DEADLINE)
+            return spawn()
+
+        pool._spawn = gated_spawn
+        return pool
 
 
 def _key(settings: Settings, role: str, name: str) -> dict[str, str]:
@@ -197,13 +204,14 @@ def test_a_grader_fault_on_a_submission_files_nothing_and_uses_no_attempt(submit
 
 @pytest.mark.slow
 def test_the_upload_vetting_pool_replaces_itself_too():
-    """The supervisor both pools use (grading and upload vetting), on a bare pool of one worker."""
+    """The upload-vetting pool's supervisor, on a bare pebble pool of one worker."""
     import multiprocessing
     from concurrent.futures.process import BrokenProcessPool
 
     from pebble import ProcessPool
 
-    from app.grading.supervised import PoolUnavailable, SupervisedPool
+    from app.grading.processes import PoolUnavailable
+    from app.grading.supervised import SupervisedPool
 
     context = multiprocessing.get_context("forkserver")
     pool = SupervisedPool("upload-vetting", lambda: ProcessPool(max_workers=1, context=context))

@@ -1,0 +1,465 @@
+"""Killable worker processes, each behind its own pipe, and one supervisor thread for them all.
+
+A caller's thread pickles a job and writes it straight to an idle worker's pipe (or queues it when none
+is idle) and gets a `concurrent.futures.Future`, which any event loop can await. The supervisor thread
+waits on every worker's pipe, with the nearest deadline as its timeout: it resolves futures, hands
+queued jobs to freed workers, kills a worker whose job overran (`TimeoutError`), notices one that died
+(`WorkerDied`), retires one after `max_tasks` jobs, and starts a replacement for each. When no worker is
+left and none can be started (the fork server is gone or reloading), `ready` is False and `schedule`
+raises `PoolUnavailable` until one starts again (tried every second).
+
+    PoolError
+     ├── PoolUnavailable   no worker can take the job now (down, or the pool is closing)
+     └── WorkerDied        the worker running the job died (killed from outside, crashed)
+
+A worker's messages: an empty one when it is ready for jobs (so a job's time limit starts when the
+worker can start it, not while it is still starting); then the pool sends `pickle((function, args))`
+and the worker answers with `pickle((True, result))` or `pickle((False, exception))`, until its pipe
+closes, when it exits. Each is framed by its length and written in one `write`, so that one `read`
+usually takes it whole (a pipe holds one message at a time): a system call fewer each way than
+`Connection.recv_bytes`.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import logging
+import os
+import pickle
+import selectors
+import signal
+import threading
+import time
+from collections import deque
+from collections.abc import Callable, Sequence
+from concurrent.futures import Future, InvalidStateError
+from concurrent.futures import TimeoutError as FutureTimeout
+from dataclasses import dataclass
+from multiprocessing.connection import Connection
+from multiprocessing.context import ForkServerContext
+from multiprocessing.process import BaseProcess
+from typing import Any
+
+log = logging.getLogger("physcheck.grading")
+
+RETRY_SECONDS = 1.0  # between attempts to start a worker when starting one failed
+START_SECONDS = 60.0  # for the first workers to be ready (the fork server may be loading the checker)
+CLOSE_SECONDS = 10.0
+# The supervisor wakes at least this often, so that a job sent while it sleeps needs no wake-up write
+# unless its deadline is nearer (with the service's 2 s limit, never).
+IDLE_WAKE_SECONDS = 1.0
+
+
+class PoolError(Exception):
+    """The pool could not run the job; never the job's own fault."""
+
+
+class PoolUnavailable(PoolError):
+    """No worker can take work now: none could be started, or the pool is closing."""
+
+
+class WorkerDied(PoolError):
+    """The worker running the job died before answering (the OOM killer, an operator, a crash)."""
+
+    def __init__(self, exitcode: int | None):
+        super().__init__(f"the worker died (exit code {exitcode})")
+        self.exitcode = exitcode
+
+
+_HEADER = 4  # bytes of a message's length, big-endian
+_CHUNK = 1 << 16
+
+
+def _framed(payload: bytes) -> bytes:
+    return len(payload).to_bytes(_HEADER, "big") + payload
+
+
+def _send(fd: int, message: bytes) -> None:
+    """Write a framed message (blocking: a worker reads its pipe whenever a message is due)."""
+    view = memoryview(message)
+    while view:
+        view = view[os.write(fd, view) :]
+
+
+def _receive(fd: int) -> bytes | None:
+    """The next message's payload, or None when the other end closed (before or during it)."""
+    data = b""
+    while len(data) < _HEADER or len(data) < _HEADER + int.from_bytes(data[:_HEADER], "big"):
+        more = os.read(fd, _CHUNK)
+        if not more:
+            return None
+        data += more
+    return data[_HEADER:]
+
+
+def serve(
+    conn: Connection,
+    initializer: Callable[..., object] | None,
+    initargs: Sequence[object],
+    tasks: Sequence[Callable[..., object]],
+) -> None:
+    """A worker's whole life: run each job read from `conn` and answer on it, until it is closed.
+    `tasks` are only unpickled, and so imported, before the worker says it is ready: a job's time limit
+    must not pay for importing its function's module (a test's task may import half the app)."""
+    del tasks
+    signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C is the server's; the server stops its workers
+    if initializer is not None:
+        initializer(*initargs)
+    fd = conn.fileno()
+    _send(fd, _framed(b""))  # ready
+    while (message := _receive(fd)) is not None:
+        try:
+            function, args = pickle.loads(message)  # noqa: S301 (from the server, over our own pipe)
+            outcome: tuple[bool, object] = (True, function(*args))
+        except Exception as error:
+            outcome = (False, error)
+        try:
+            reply = pickle.dumps(outcome, pickle.HIGHEST_PROTOCOL)
+        except Exception as error:
+            reply = pickle.dumps((False, PoolError(f"the answer could not be pickled: {error!r}")))
+        _send(fd, _framed(reply))
+
+
+@dataclass(eq=False)
+class _Job:
+    message: bytes
+    future: Future[Any]
+    timeout: float
+    deadline: float = float("inf")
+    running: bool = False
+
+
+@dataclass(eq=False)
+class _Worker:
+    process: BaseProcess
+    conn: Connection
+    job: _Job | None = None  # after its removal, the job it died running (failed when it is reaped)
+    done: int = 0
+    ready: bool = False  # it said so: it takes jobs from now on
+
+
+# What the supervisor's selector watches: a live worker's pipe, a gone worker's sentinel, the wake pipe.
+_PIPE, _SENTINEL, _WAKE = "pipe", "sentinel", "wake"
+# A future with the worker's pickled answer, or with the exception the pool raises in its stead.
+_Settled = list[tuple[Future[Any], bytes | BaseException]]
+
+
+class WorkerPool:
+    def __init__(
+        self,
+        name: str,
+        context: ForkServerContext,
+        workers: int,
+        max_tasks: int,
+        initializer: Callable[..., object] | None = None,
+        initargs: Sequence[object] = (),
+        tasks: Sequence[Callable[..., object]] = (),
+    ):
+        self._name = name
+        self._context = context
+        self._wanted = workers
+        self._max_tasks = max_tasks
+        self._initializer = initializer
+        self._initargs = tuple(initargs)
+        self._tasks = tuple(tasks)
+        self._lock = threading.Lock()
+        self._live: list[_Worker] = []
+        self._idle: list[_Worker] = []
+        self._gone: list[_Worker] = []  # removed, until the fork server reports their exit
+        self._queue: deque[_Job] = deque()
+        self._down = True  # no worker, and none could be started: refuse rather than queue
+        self._closed = False
+        self._retry_at = 0.0
+        self._wake_at = 0.0  # when the supervisor wakes at the latest: a nearer deadline must wake it
+        self._selector = selectors.DefaultSelector()
+        self._wake_r, self._wake_w = os.pipe()
+        os.set_blocking(self._wake_r, False)
+        os.set_blocking(self._wake_w, False)
+        self._selector.register(self._wake_r, selectors.EVENT_READ, (_WAKE, None))
+        self._supervisor: threading.Thread | None = None
+
+    def start(self) -> None:
+        """Start every worker and wait until each is ready, then the supervisor; if a worker does not
+        start, close the pool and raise."""
+        try:
+            for _ in range(self._wanted):
+                self._add(self._spawn())
+            for worker in self._live:
+                if not worker.conn.poll(START_SECONDS) or _receive(worker.conn.fileno()) is None:
+                    raise PoolUnavailable(f"a {self._name} worker did not start")
+                worker.ready = True
+                self._idle.append(worker)
+        except BaseException:
+            self.close()
+            raise
+        self._supervisor = threading.Thread(
+            target=self._supervise, name=f"{self._name}-supervisor", daemon=True
+        )
+        self._supervisor.start()
+
+    @property
+    def ready(self) -> bool:
+        return not (self._down or self._closed)
+
+    def schedule(self, function: Callable[..., Any], args: tuple[Any, ...], timeout: float) -> Future[Any]:
+        """Run `function(*args)` in a worker, killing it if it runs longer than `timeout` seconds. The
+        future raises TimeoutError then, WorkerDied if the worker dies, PoolUnavailable if the pool
+        loses its last worker or closes first; `schedule` itself raises PoolUnavailable while down."""
+        job = _Job(_framed(pickle.dumps((function, args), pickle.HIGHEST_PROTOCOL)), Future(), timeout)
+        with self._lock:
+            if self._closed:
+                raise PoolUnavailable(f"the {self._name} pool is closing")
+            if self._down:
+                raise PoolUnavailable(f"the {self._name} pool has no worker (one is being started)")
+            self._queue.append(job)
+            self._dispatch()
+        return job.future
+
+    def close(self) -> None:
+        """Stop the supervisor, kill the workers, and fail every job not answered yet."""
+        with self._lock:
+            if self._closed:
+                return
+            self._closed = True
+            self._wake()  # locked: the supervisor closes the wake pipe on its way out, after this
+        supervisor = self._supervisor
+        if supervisor is not None:
+            supervisor.join(CLOSE_SECONDS)
+        with self._lock:
+            live, self._live, self._idle = self._live, [], []
+            workers, self._gone = live + self._gone, []
+            jobs = [worker.job for worker in workers if worker.job is not None] + list(self._queue)
+            self._queue.clear()
+        for worker in live:
+            worker.process.kill()
+            worker.conn.close()
+        for worker in workers:
+            worker.process.join(CLOSE_SECONDS)
+            with contextlib.suppress(ValueError):  # still running after all: the OS will see to it
+                worker.process.close()
+        for job in jobs:
+            _settle(job.future, PoolUnavailable(f"the {self._name} pool was closed"))
+        if supervisor is None:
+            self._release()  # else the supervisor releases them on its way out
+
+    # Below: the supervisor thread's, but for `_dispatch` and `_wake`, which callers run too.
+
+    def _dispatch(self) -> None:
+        """Hand queued jobs to idle workers (the lock held)."""
+        while self._idle and self._queue:
+            job = self._queue.popleft()
+            if not job.running:
+                if not job.future.set_running_or_notify_cancel():
+                    continue  # cancelled while queued
+                job.running = True
+            worker = self._idle.pop()
+            job.deadline = time.monotonic() + job.timeout
+            try:
+                _send(worker.conn.fileno(), job.message)
+            except OSError:
+                # It died while idle; its end of the pipe tells the supervisor. The job goes to the next.
+                self._queue.appendleft(job)
+                continue
+            worker.job = job
+            if job.deadline < self._wake_at:
+                self._wake_at = job.deadline
+                self._wake()
+
+    def _wake(self) -> None:
+        with contextlib.suppress(OSError):  # full: a wake-up is already pending
+            os.write(self._wake_w, b"\0")
+
+    def _supervise(self) -> None:
+        try:
+            while not self._closed:
+                try:
+                    self._round()
+                except Exception:
+                    log.exception("the %s pool's supervisor failed; going on", self._name)
+                    time.sleep(RETRY_SECONDS)
+        finally:
+            if self._closed:
+                self._release()
+
+    def _round(self) -> None:
+        """Wait for an answer, a death or a deadline; settle them, replace workers, dispatch."""
+        with self._lock:
+            self._wake_at = self._next_wake()
+            timeout = max(0.0, self._wake_at - time.monotonic())
+        events = self._selector.select(timeout)
+        answers: list[tuple[_Worker, bytes | None]] = []
+        gone: list[_Worker] = []
+        for key, _ in events:
+            kind, worker = key.data
+            if kind == _WAKE:
+                with contextlib.suppress(BlockingIOError):
+                    os.read(self._wake_r, 4096)
+            elif kind == _PIPE:
+                try:
+                    answers.append((worker, _receive(worker.conn.fileno())))
+                except OSError:
+                    answers.append((worker, None))
+            else:
+                gone.append(worker)
+        settled: _Settled = []
+        with self._lock:
+            if self._closed:
+                return
+            for worker, answer in answers:
+                if answer is None:
+                    self._lost(worker, settled)
+                else:
+                    self._answered(worker, answer, settled)
+            self._expire(time.monotonic(), settled)
+            for worker in gone:
+                self._reap(worker, settled)
+        # Replacements first: a caller told its worker died or overran finds a live one when it retries.
+        self._replenish(settled)
+        with self._lock:
+            self._dispatch()
+        for future, outcome in settled:
+            _settle(future, outcome)
+
+    def _next_wake(self) -> float:
+        wake = time.monotonic() + IDLE_WAKE_SECONDS
+        for worker in self._live:
+            if worker.job is not None:
+                wake = min(wake, worker.job.deadline)
+        if len(self._live) < self._wanted:
+            wake = min(wake, self._retry_at)
+        return wake
+
+    def _answered(self, worker: _Worker, answer: bytes, settled: _Settled) -> None:
+        job, worker.job = worker.job, None
+        if job is None:  # a new worker, ready
+            worker.ready = True
+            self._idle.append(worker)
+            return
+        settled.append((job.future, answer))
+        worker.done += 1
+        if worker.done >= self._max_tasks:
+            # Memory hygiene: a fresh worker forks from the clean fork server; this one exits on EOF.
+            self._remove(worker)
+        else:
+            self._idle.append(worker)
+
+    def _lost(self, worker: _Worker, settled: _Settled) -> None:
+        """Its pipe closed: it died. Its job fails once its death is reaped, with the exit code."""
+        if not worker.ready:
+            # Its start failed (its initializer, say): starting the next at once could loop for ever.
+            log.error("a new %s worker died as it started; retrying in %g s", self._name, RETRY_SECONDS)
+            self._retry_at = time.monotonic() + RETRY_SECONDS
+        else:
+            log.warning("a %s worker died; replacing it", self._name)
+        self._remove(worker)
+        if not self._live:
+            self._fall_down(settled)
+
+    def _expire(self, now: float, settled: _Settled) -> None:
+        for worker in [w for w in self._live if w.job is not None and w.job.deadline <= now]:
+            assert worker.job is not None
+            settled.append((worker.job.future, FutureTimeout()))
+            worker.job = None
+            worker.process.kill()
+            self._remove(worker)
+
+    def _remove(self, worker: _Worker) -> None:
+        """Out of the pool: its pipe closed, its sentinel watched until its exit is known."""
+        self._live.remove(worker)
+        if worker in self._idle:
+            self._idle.remove(worker)
+        self._selector.unregister(worker.conn)
+        worker.conn.close()
+        self._gone.append(worker)
+        self._selector.register(worker.process.sentinel, selectors.EVENT_READ, (_SENTINEL, worker))
+
+    def _reap(self, worker: _Worker, settled: _Settled) -> None:
+        self._gone.remove(worker)
+        self._selector.unregister(worker.process.sentinel)
+        worker.process.join(0)  # the sentinel is ready: this reads the exit code, never waits
+        if worker.job is not None:
+            settled.append((worker.job.future, WorkerDied(worker.process.exitcode)))
+        worker.process.close()
+
+    def _fall_down(self, settled: _Settled) -> None:
+        """No worker left after a fault: refuse new jobs, and fail the queued ones rather than keep them
+        waiting for as long as the fork server takes to come back."""
+        self._down = True
+        settled += [
+            (job.future, PoolUnavailable(f"the {self._name} pool lost its workers")) for job in self._queue
+        ]
+        self._queue.clear()
+
+    def _replenish(self, settled: _Settled) -> None:
+        """Start workers up to the number wanted (unlocked: a start takes milliseconds, or seconds when
+        the fork server must be started again); after a failure, try again after RETRY_SECONDS."""
+        while len(self._live) < self._wanted and not self._closed and time.monotonic() >= self._retry_at:
+            try:
+                worker = self._spawn()
+            except Exception:
+                log.exception("could not start a %s worker; retrying in %g s", self._name, RETRY_SECONDS)
+                self._retry_at = time.monotonic() + RETRY_SECONDS
+                with self._lock:
+                    if not self._live:
+                        self._fall_down(settled)
+                return
+            with self._lock:
+                if self._closed:
+                    worker.process.kill()
+                    worker.conn.close()
+                    return
+                was_down = self._down
+                self._add(worker)
+            if was_down:
+                log.warning("the %s pool has a worker again", self._name)
+
+    def _spawn(self) -> _Worker:
+        ours, theirs = self._context.Pipe()
+        process = self._context.Process(
+            target=serve,
+            args=(theirs, self._initializer, self._initargs, self._tasks),
+            name=f"{self._name}-worker",
+            daemon=True,
+        )
+        try:
+            process.start()
+        except BaseException:
+            ours.close()
+            raise
+        finally:
+            theirs.close()  # the worker's end: only the worker may hold it, or its death shows no EOF
+        return _Worker(process, ours)
+
+    def _add(self, worker: _Worker) -> None:
+        """In the pool, though idle only once it says it is ready (jobs meanwhile wait in the queue)."""
+        self._live.append(worker)
+        self._selector.register(worker.conn, selectors.EVENT_READ, (_PIPE, worker))
+        self._down = False
+
+    def _release(self) -> None:
+        with self._lock:
+            self._selector.close()
+            os.close(self._wake_r)
+            os.close(self._wake_w)
+
+
+def _settle(future: Future[Any], outcome: bytes | BaseException) -> None:
+    """Resolve with a worker's pickled answer, or with the exception the pool raised in its stead."""
+    with contextlib.suppress(InvalidStateError):  # cancelled while queued
+        _resolve(future, outcome)
+
+
+def _resolve(future: Future[Any], outcome: bytes | BaseException) -> None:
+    if future.done():
+        return
+    if isinstance(outcome, bytes):
+        try:
+            ok, value = pickle.loads(outcome)  # noqa: S301 (from our own worker, over our own pipe)
+        except Exception as error:
+            ok, value = False, PoolError(f"the worker's answer could not be read: {error!r}")
+        if ok:
+            future.set_result(value)
+            return
+        assert isinstance(value, BaseException)
+        outcome = value
+    future.set_exception(outcome)

@@ -1,0 +1,111 @@
+"""The grading pool's own processes: overrun jobs are killed, dead and worn workers replaced, nothing lost."""
+
+from __future__ import annotations
+
+import os
+import signal
+import time
+from collections.abc import Iterator
+from concurrent.futures import TimeoutError as FutureTimeout
+from contextlib import contextmanager
+
+import pytest
+
+from app.grading import forkserver
+from app.grading.processes import PoolUnavailable, WorkerDied, WorkerPool
+
+DEADLINE = 60  # only so that a broken pool fails the test instead of hanging it
+
+
+@contextmanager
+def started(workers: int = 1, max_tasks: int = 100) -> Iterator[WorkerPool]:
+    pool = WorkerPool("test", forkserver.context(), workers=workers, max_tasks=max_tasks)
+    pool.start()
+    try:
+        yield pool
+    finally:
+        pool.close()
+
+
+def pid(pool: WorkerPool) -> int:
+    answer = pool.schedule(os.getpid, (), DEADLINE).result(DEADLINE)
+    assert isinstance(answer, int)
+    return answer
+
+
+def gone(process: int) -> bool:
+    """Dead (or a zombie of the fork server's, not yet reaped): never running a job again."""
+    try:
+        with open(f"/proc/{process}/stat") as stat:
+            return stat.read().rsplit(")", 1)[1].split()[0] in {"Z", "X"}
+    except FileNotFoundError:
+        return True
+
+
+def test_a_job_past_its_deadline_is_killed_and_its_worker_replaced():
+    with started() as pool:
+        overrunner = pid(pool)
+        with pytest.raises(FutureTimeout):
+            pool.schedule(time.sleep, (DEADLINE,), 0.2).result(DEADLINE)
+        assert pid(pool) != overrunner
+        deadline = time.monotonic() + DEADLINE
+        while not gone(overrunner):
+            assert time.monotonic() < deadline, "the overrunning worker was not killed"
+            time.sleep(0.05)
+
+
+def test_a_worker_is_recycled_after_max_tasks_and_no_job_is_lost():
+    with started(max_tasks=2) as pool:
+        one_by_one = [pid(pool) for _ in range(6)]
+        assert len(set(one_by_one)) == 3
+        assert one_by_one[0] == one_by_one[1] != one_by_one[2] == one_by_one[3] != one_by_one[4]
+        at_once = [pool.schedule(os.getpid, (), DEADLINE) for _ in range(9)]
+        assert len({future.result(DEADLINE) for future in at_once}) == 5
+
+
+def test_a_worker_killed_mid_job_fails_that_job_and_is_replaced():
+    with started() as pool:
+        victim = pid(pool)
+        running = pool.schedule(time.sleep, (DEADLINE,), DEADLINE)  # sent to the idle victim at once
+        os.kill(victim, signal.SIGKILL)
+        with pytest.raises(WorkerDied) as died:
+            running.result(DEADLINE)
+        assert died.value.exitcode == -signal.SIGKILL
+        assert pid(pool) != victim
+
+
+def test_more_jobs_than_workers_are_queued_and_all_answered():
+    with started(workers=2) as pool:
+        futures = [pool.schedule(pow, (n, 2), DEADLINE) for n in range(20)]
+        assert [future.result(DEADLINE) for future in futures] == [n * n for n in range(20)]
+
+
+def test_an_exception_in_a_job_is_its_futures_exception():
+    with started() as pool:
+        with pytest.raises(ValueError, match="invalid literal"):
+            pool.schedule(int, ("x",), DEADLINE).result(DEADLINE)
+        assert pool.schedule(int, ("7",), DEADLINE).result(DEADLINE) == 7
+
+
+def test_closing_fails_the_running_and_queued_jobs_and_refuses_new_ones():
+    with started() as pool:
+        pending = [pool.schedule(time.sleep, (DEADLINE,), DEADLINE) for _ in range(4)]
+        pool.close()
+        for future in pending:
+            with pytest.raises(PoolUnavailable):
+                future.result(DEADLINE)
+        assert not pool.ready
+        with pytest.raises(PoolUnavailable):
+            pool.schedule(os.getpid, (), DEADLINE)
+
+
+def test_a_worker_that_cannot_start_fails_the_pools_start():
+    pool = WorkerPool(
+        "test", forkserver.context(), workers=1, max_tasks=100, initializer=os._exit, initargs=(3,)
+    )
+    try:
+        with pytest.raises(PoolUnavailable, match="did not start"):
+            pool.start()
+        assert not pool.ready
+    finally:
+        pool.close()
