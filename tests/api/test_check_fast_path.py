@@ -112,6 +112,18 @@ def test_a_readable_check_from_a_known_key_never_reaches_the_app(
     assert inner.seen == []
 
 
+def test_a_key_not_held_in_memory_is_looked_up_and_its_check_stays_on_the_fast_path(client):
+    """As when the memory of a busy script's key expires: its requests are not handed to the app."""
+    fresh = key_headers(client, "instructor", "fresh")  # made, never used: not in memory yet
+    inner = Inner()
+    response = fast_path_over(inner, client.app).post(
+        "/v1/check", content=body(numeric("4.58 m/s^2")), headers={**fresh, **JSON}
+    )
+    assert response.status_code == 200
+    assert response.json()["verdict"] == "correct"
+    assert inner.seen == []
+
+
 UNUSUAL = [
     ("no-key", {}, body(numeric("4.58 m/s^2"))),
     ("unknown-key", {"Authorization": "Bearer not-a-key"}, body(numeric("4.58 m/s^2"))),
