@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import asyncio
 import logging
 from collections import OrderedDict
 from collections.abc import Callable
@@ -126,8 +125,7 @@ class GradingPool:
         if owner is not None:
             self._owners[owner] = self._owners.get(owner, 0) + 1
         try:
-            future = self._pool.schedule(task, (job,), self._timeout)
-            outcome: T | SpecProblem | GraderCrash = await asyncio.wrap_future(future)
+            outcome: T | SpecProblem | GraderCrash = await self._pool.run(task, (job,), self._timeout)
         except PoolUnavailable as error:
             log.warning("grading refused: %s", error)
             raise Unavailable(RESTARTING_MESSAGE, retry_after=2) from error

@@ -1,7 +1,8 @@
 """Killable worker processes, each behind its own pipe, and one supervisor thread for them all.
 
 A caller's thread pickles a job and writes it straight to an idle worker's pipe (or queues it when none
-is idle) and gets a `concurrent.futures.Future`, which any event loop can await. The supervisor thread
+is idle) and gets a `concurrent.futures.Future` (`schedule`), or awaits the answer on its own event loop
+(`run`, which spares the server a thread-safe future and its chaining per check). The supervisor thread
 waits on every worker's pipe, with the nearest deadline as its timeout: it resolves futures, hands
 queued jobs to freed workers, kills a worker whose job overran (`TimeoutError`), notices one that died
 (`WorkerDied`), retires one after `max_tasks` jobs, and starts a replacement for each. When no worker is
@@ -22,6 +23,7 @@ usually takes it whole (a pipe holds one message at a time): a system call fewer
 
 from __future__ import annotations
 
+import asyncio
 import contextlib
 import logging
 import os
@@ -123,7 +125,7 @@ def serve(
 @dataclass(eq=False)
 class _Job:
     message: bytes
-    future: Future[Any]
+    future: Future[Any] | asyncio.Future[Any]
     timeout: float
     deadline: float = float("inf")
     running: bool = False
@@ -141,7 +143,7 @@ class _Worker:
 # What the supervisor's selector watches: a live worker's pipe, a gone worker's sentinel, the wake pipe.
 _PIPE, _SENTINEL, _WAKE = "pipe", "sentinel", "wake"
 # A future with the worker's pickled answer, or with the exception the pool raises in its stead.
-_Settled = list[tuple[Future[Any], bytes | BaseException]]
+_Settled = list[tuple[Future[Any] | asyncio.Future[Any], bytes | BaseException]]
 
 
 class WorkerPool:
@@ -205,7 +207,24 @@ class WorkerPool:
         """Run `function(*args)` in a worker, killing it if it runs longer than `timeout` seconds. The
         future raises TimeoutError then, WorkerDied if the worker dies, PoolUnavailable if the pool
         loses its last worker or closes first; `schedule` itself raises PoolUnavailable while down."""
-        job = _Job(_framed(pickle.dumps((function, args), pickle.HIGHEST_PROTOCOL)), Future(), timeout)
+        future: Future[Any] = Future()
+        self._enqueue(function, args, timeout, future)
+        return future
+
+    async def run(self, function: Callable[..., Any], args: tuple[Any, ...], timeout: float) -> Any:
+        """`schedule`'s job, awaited on the running event loop; it raises what that future would."""
+        future: asyncio.Future[Any] = asyncio.get_running_loop().create_future()
+        self._enqueue(function, args, timeout, future)
+        return await future
+
+    def _enqueue(
+        self,
+        function: Callable[..., Any],
+        args: tuple[Any, ...],
+        timeout: float,
+        future: Future[Any] | asyncio.Future[Any],
+    ) -> None:
+        job = _Job(_framed(pickle.dumps((function, args), pickle.HIGHEST_PROTOCOL)), future, timeout)
         with self._lock:
             if self._closed:
                 raise PoolUnavailable(f"the {self._name} pool is closing")
@@ -213,7 +232,6 @@ class WorkerPool:
                 raise PoolUnavailable(f"the {self._name} pool has no worker (one is being started)")
             self._queue.append(job)
             self._dispatch()
-        return job.future
 
     def close(self) -> None:
         """Stop the supervisor, kill the workers, and fail every job not answered yet."""
@@ -249,7 +267,7 @@ class WorkerPool:
         while self._idle and self._queue:
             job = self._queue.popleft()
             if not job.running:
-                if not job.future.set_running_or_notify_cancel():
+                if not _running(job.future):
                     continue  # cancelled while queued
                 job.running = True
             worker = self._idle.pop()
@@ -443,23 +461,40 @@ class WorkerPool:
             os.close(self._wake_w)
 
 
-def _settle(future: Future[Any], outcome: bytes | BaseException) -> None:
+def _running(future: Future[Any] | asyncio.Future[Any]) -> bool:
+    """Marked running, unless it was cancelled while queued (an event loop's future is only read: its
+    loop alone may change it)."""
+    if isinstance(future, Future):
+        return future.set_running_or_notify_cancel()
+    return not future.cancelled()
+
+
+def _settle(future: Future[Any] | asyncio.Future[Any], outcome: bytes | BaseException) -> None:
     """Resolve with a worker's pickled answer, or with the exception the pool raised in its stead."""
-    with contextlib.suppress(InvalidStateError):  # cancelled while queued
-        _resolve(future, outcome)
+    ok, value = _read(outcome)
+    if isinstance(future, Future):
+        with contextlib.suppress(InvalidStateError):  # cancelled while queued
+            _resolve(future, ok, value)
+    else:
+        with contextlib.suppress(RuntimeError):  # its loop has closed: nobody is waiting any more
+            future.get_loop().call_soon_threadsafe(_resolve, future, ok, value)
 
 
-def _resolve(future: Future[Any], outcome: bytes | BaseException) -> None:
-    if future.done():
+def _read(outcome: bytes | BaseException) -> tuple[bool, Any]:
+    """(True, the result) from a worker's pickled answer; else (False, the exception to raise)."""
+    if not isinstance(outcome, bytes):
+        return False, outcome
+    try:
+        ok, value = pickle.loads(outcome)  # noqa: S301 (from our own worker, over our own pipe)
+    except Exception as error:
+        return False, PoolError(f"the worker's answer could not be read: {error!r}")
+    return ok, value
+
+
+def _resolve(future: Future[Any] | asyncio.Future[Any], ok: bool, value: Any) -> None:
+    if future.done():  # cancelled (the request went away), or settled by close() meanwhile
         return
-    if isinstance(outcome, bytes):
-        try:
-            ok, value = pickle.loads(outcome)  # noqa: S301 (from our own worker, over our own pipe)
-        except Exception as error:
-            ok, value = False, PoolError(f"the worker's answer could not be read: {error!r}")
-        if ok:
-            future.set_result(value)
-            return
-        assert isinstance(value, BaseException)
-        outcome = value
-    future.set_exception(outcome)
+    if ok:
+        future.set_result(value)
+    else:
+        future.set_exception(value)

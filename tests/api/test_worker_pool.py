@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import asyncio
 import os
 import signal
 import time
@@ -109,3 +110,31 @@ def test_a_worker_that_cannot_start_fails_the_pools_start():
         assert not pool.ready
     finally:
         pool.close()
+
+
+def test_run_answers_on_the_awaiting_event_loop_as_schedule_does():
+    async def both() -> tuple[int, BaseException]:
+        answer = await pool.run(pow, (7, 2), DEADLINE)
+        with pytest.raises(FutureTimeout) as overran:
+            await pool.run(time.sleep, (DEADLINE,), 0.2)
+        return answer, overran.value
+
+    with started() as pool:
+        answer, overran = asyncio.run(both())
+        assert answer == 49 and isinstance(overran, FutureTimeout)
+
+
+def test_a_job_whose_caller_went_away_leaves_the_pool_answering():
+    """A request cancelled while its job runs, its event loop closed before the answer comes back."""
+
+    async def abandon() -> None:
+        waiting = asyncio.ensure_future(pool.run(time.sleep, (0.3,), DEADLINE))
+        await asyncio.sleep(0.05)
+        waiting.cancel()
+
+    with started() as pool:
+        worker = pid(pool)
+        asyncio.run(abandon())
+        queued = [pool.schedule(pow, (n, 3), DEADLINE) for n in range(3)]
+        assert [future.result(DEADLINE) for future in queued] == [0, 1, 8]
+        assert pid(pool) == worker  # answered, not killed: the job ran out its 0.3 s
