@@ -5,6 +5,7 @@ from __future__ import annotations
 import io
 import json
 import logging
+import os
 import shutil
 import threading
 import time
@@ -164,3 +165,11 @@ def test_a_reference_that_is_not_a_plain_decimal_is_422(client, expected):
     headers = key_headers(client, "student", "ada")
     response = client.post("/v1/check", json={**BODY, "expected": expected}, headers=headers)
     assert response.status_code == 422
+
+
+def test_an_instance_runs_two_more_grading_workers_than_it_has_cores_unless_told(monkeypatch):
+    monkeypatch.delenv("PHYSCHECK_CHECK_WORKERS", raising=False)
+    cores = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count()
+    assert Settings(secret="settings-test-secret").check_workers == (cores or 1) + 2
+    monkeypatch.setenv("PHYSCHECK_CHECK_WORKERS", "1")
+    assert Settings(secret="settings-test-secret").check_workers == 1
