@@ -8,18 +8,15 @@ from __future__ import annotations
 
 import asyncio
 import logging
+import threading
 from collections.abc import Callable
 from concurrent.futures import TimeoutError as FutureTimeout
-from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass, field, replace
 from typing import Any, Literal
 
-from pebble import ProcessExpired, ProcessPool
-
 from app.errors import Busy, Unavailable
 from app.grading import forkserver
-from app.grading.processes import PoolUnavailable
-from app.grading.supervised import SupervisedPool
+from app.grading.processes import PoolUnavailable, WorkerDied, WorkerPool
 from app.grading.worker import limit_memory
 from app.instructor.described import Described, describe
 from app.web.document_text import render_problems
@@ -35,6 +32,9 @@ from problems.vetting import vet_document
 log = logging.getLogger("physcheck.authoring")
 UPLOAD_SELFTEST_VARIANTS = 5
 UPLOAD_RETRY_AFTER = 10  # seconds: a vetting takes seconds to minutes
+# A derivation leaves sympy's caches and the compiled models behind in the worker: a fresh one, forked
+# from the clean fork server, after this many vettings keeps the worker's memory from creeping up.
+VETTINGS_PER_WORKER = 50
 
 
 @dataclass(frozen=True)
@@ -104,28 +104,38 @@ class AuthoringPool:
         self._capacity = 1 + queue_size
         self._in_flight = 0
         self._owners: set[str] = set()
-        self._pool: SupervisedPool | None = None
+        self._starting = threading.Lock()  # two first uploads at once start one pool
+        self._pool: WorkerPool | None = None
 
     # The function the worker runs (tests put a slow one here).
     _task: Callable[[bytes, Literal["json", "yaml"]], Vetted] = staticmethod(vet)
 
-    def _new_pool(self) -> ProcessPool:
-        return ProcessPool(
-            max_workers=1, initializer=limit_memory, initargs=(self._memory_mb,), context=forkserver.context()
-        )
-
     def start(self) -> None:
-        self._pool = SupervisedPool("upload-vetting", self._new_pool)
-        self._pool.start()
+        """Start the vetting worker and wait until it is ready (a no-op when it is already started)."""
+        with self._starting:
+            if self._pool is not None:
+                return
+            pool = WorkerPool(
+                "upload-vetting",
+                forkserver.context(),
+                workers=1,
+                max_tasks=VETTINGS_PER_WORKER,
+                initializer=limit_memory,
+                initargs=(self._memory_mb,),
+                tasks=(self._task,),
+            )
+            pool.start()
+            self._pool = pool
 
     def close(self) -> None:
-        if self._pool is not None:
-            self._pool.close()
-            self._pool = None
+        with self._starting:
+            pool, self._pool = self._pool, None
+        if pool is not None:
+            pool.close()
 
     async def vet(self, source: bytes, fmt: Literal["json", "yaml"], owner: str | None = None) -> Vetted:
         """Vet in the worker; 503 + Retry-After when the queue is full or `owner` (an instructor key)
-        already has an upload being vetted."""
+        already has an upload being vetted, or when the worker cannot take it (being replaced)."""
         if self._in_flight >= self._capacity:
             raise Busy("Uploads are queued to the limit; try again shortly.", retry_after=UPLOAD_RETRY_AFTER)
         if owner is not None and owner in self._owners:
@@ -133,27 +143,33 @@ class AuthoringPool:
                 "Your previous upload is still being checked; send the next when it is done.",
                 retry_after=UPLOAD_RETRY_AFTER,
             )
-        if self._pool is None:
-            self.start()
-        assert self._pool is not None
         self._in_flight += 1
         if owner is not None:
             self._owners.add(owner)
         try:
-            return await self._vet(self._pool, source, fmt)
+            return await self._vet(source, fmt)
         finally:
             self._in_flight -= 1
             self._owners.discard(owner or "")
 
-    async def _vet(self, pool: SupervisedPool, source: bytes, fmt: Literal["json", "yaml"]) -> Vetted:
+    async def _vet(self, source: bytes, fmt: Literal["json", "yaml"]) -> Vetted:
         try:
-            return await asyncio.wrap_future(pool.schedule(self._task, (source, fmt), self._timeout))
+            pool = self._pool
+            if pool is None:
+                # Off the event loop: the first worker takes a moment to start (and the fork server
+                # longer, when it must be started again).
+                await asyncio.to_thread(self.start)
+                pool = self._pool
+                if pool is None:  # closed meanwhile
+                    raise PoolUnavailable("the upload-vetting pool was closed")
+            vetted: Vetted = await pool.run(self._task, (source, fmt), self._timeout)
+            return vetted
         except FutureTimeout:
             return Vetted(
                 None, [("model", f"deriving and self-testing took longer than {self._timeout:.0f} s")]
             )
-        except (PoolUnavailable, ProcessExpired, BrokenProcessPool) as error:
-            # A worker killed from outside, or a pool being replaced: not the upload's fault.
+        except (PoolUnavailable, WorkerDied) as error:
+            # A worker killed from outside, or one being replaced: not the upload's fault.
             log.error("upload vetting failed on our side: %r", error)
             raise Unavailable(
                 "Checking uploads is restarting after a fault; try again in a moment.", retry_after=2

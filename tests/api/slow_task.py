@@ -43,10 +43,13 @@ def pid_or_grade(job: CheckJob) -> Verdict | SpecProblem | GraderCrash | int:
 
 
 def slow_vet(source: bytes, fmt: str) -> Vetted:
-    """Vetting that takes `sleep` forever (until the pool's time limit kills it)."""
+    """Vetting that takes `sleep` forever (until the pool's time limit, or a test, kills it); `pid`
+    answers with the worker's process id (to kill it)."""
     if source == b"sleep":
         while True:
             time.sleep(1)
+    if source == b"pid":
+        return Vetted(None, [("pid", str(os.getpid()))])
     return Vetted(None, [("", "vetted")])
 
 

@@ -13,6 +13,7 @@ from collections.abc import Iterator
 import pytest
 from fastapi.testclient import TestClient
 
+from app.authoring import AuthoringPool
 from app.db.database import Database
 from app.errors import GraderFault, Unavailable
 from app.grading.pool import GradingPool
@@ -22,7 +23,7 @@ from app.settings import Settings
 from physics.checking import SymbolDecl
 from physics.errors import SpecError
 from problems.kinds.symbolic import SymbolicJob
-from tests.api.slow_task import pid_or_grade, spec_failing_preview
+from tests.api.slow_task import pid_or_grade, slow_vet, spec_failing_preview
 
 SYMBOLS = (SymbolDecl("m", "kg"),)
 RECOVERY_DEADLINE = 60  # only so that a broken pool fails the test instead of hanging it
@@ -202,34 +203,57 @@ def test_a_grader_fault_on_a_submission_files_nothing_and_uses_no_attempt(submit
     assert (graded.json()["verdict"], graded.json()["attempts_used"]) == ("correct", 1)
 
 
+class SlowAuthoringPool(AuthoringPool):
+    _task = staticmethod(slow_vet)  # type: ignore[assignment]
+
+
+@pytest.fixture
+def vetting() -> Iterator[AuthoringPool]:
+    pool = SlowAuthoringPool(timeout=30.0, memory_mb=1024)
+    yield pool
+    pool.close()
+
+
+async def vetting_pid(pool: AuthoringPool) -> int:
+    """The vetting worker's process id, once the pool has one to vet with (503s meanwhile)."""
+    deadline = time.monotonic() + RECOVERY_DEADLINE
+    while True:
+        try:
+            vetted = await pool.vet(b"pid", "json")
+        except Unavailable:
+            assert time.monotonic() < deadline, "upload vetting did not come back"
+            await asyncio.sleep(0.1)
+            continue
+        [(path, pid)] = vetted.errors
+        assert path == "pid", vetted.errors  # vetted by the task, not failed by the pool
+        return int(pid)
+
+
 @pytest.mark.slow
-def test_the_upload_vetting_pool_replaces_itself_too():
-    """The upload-vetting pool's supervisor, on a bare pebble pool of one worker."""
-    import multiprocessing
-    from concurrent.futures.process import BrokenProcessPool
-
-    from pebble import ProcessPool
-
-    from app.grading.processes import PoolUnavailable
-    from app.grading.supervised import SupervisedPool
-
-    context = multiprocessing.get_context("forkserver")
-    pool = SupervisedPool("upload-vetting", lambda: ProcessPool(max_workers=1, context=context))
-    pool.start()
-    try:
-        victim = pool.schedule(os.getpid, (), 30).result(timeout=30)
+def test_a_vetting_worker_killed_while_idle_is_replaced_for_the_next_upload(vetting):
+    async def scenario():
+        victim = await vetting_pid(vetting)
         os.kill(victim, signal.SIGKILL)
-        deadline = time.monotonic() + RECOVERY_DEADLINE
-        while True:
-            try:
-                worker = pool.schedule(os.getpid, (), 30).result(timeout=30)
-                break
-            except (PoolUnavailable, BrokenProcessPool):
-                assert time.monotonic() < deadline, "the pool did not come back"
-                time.sleep(0.1)
-        assert worker != victim and pool.healthy
-    finally:
-        pool.close()
+        return victim, await vetting_pid(vetting)
+
+    victim, successor = asyncio.run(scenario())
+    assert successor != victim
+
+
+@pytest.mark.slow
+def test_an_upload_whose_vetting_worker_is_killed_gets_503_not_a_vetting_error(vetting):
+    async def scenario():
+        victim = await vetting_pid(vetting)
+        upload = asyncio.ensure_future(vetting.vet(b"sleep", "json"))
+        await asyncio.sleep(0)  # the upload runs up to its await: sent to the worker by then
+        os.kill(victim, signal.SIGKILL)
+        with pytest.raises(Unavailable) as refused:
+            await upload
+        return refused.value, victim, await vetting_pid(vetting)
+
+    refused, victim, successor = asyncio.run(scenario())
+    assert refused.status == 503 and int(refused.headers["Retry-After"]) > 0
+    assert successor != victim
 
 
 @pytest.mark.slow

@@ -108,7 +108,7 @@ def test_grading_resumes_after_an_idle_worker_is_killed(served):
     server, http = served
     workers = _children(_fork_server(server))
     assert workers, "no grading workers found"
-    for worker in workers:  # both, so that no running task keeps pebble's pool alive
+    for worker in workers:  # both: the hardest case, no worker left (503s) until a replacement starts
         os.kill(worker, signal.SIGKILL)
     seen = _recovers(server, http)
     assert set(seen) <= {200, 503}, seen
