@@ -85,6 +85,8 @@ def test_student_works_a_bank_problem_at_desktop_and_phone_widths(
     verdict = page.locator(".verdict").first
     expect(verdict).to_have_text(re.compile(r"^(Correct|Not correct)\."), timeout=FIRST_USE_MS)
     expect(page.locator("section.part").first.locator(".attempts")).to_contain_text("Attempts: 1")
+    # The verdict box (a live region) says the count too, to a screen reader only: it is shown just below.
+    expect(verdict.locator(".visually-hidden")).to_have_text(re.compile(r"^Attempts: 1 "))
     page.reload()
     expect(page.get_by_role("heading", level=1)).to_be_focused()
     expect(page.get_by_label("Your answer").first).to_have_value(answer)
