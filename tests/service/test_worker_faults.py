@@ -126,3 +126,26 @@ def test_grading_resumes_after_the_fork_server_is_killed(served):
     while not (found := _fork_servers(server)) and time.monotonic() < deadline:
         time.sleep(0.2)
     assert found and fork_server not in found, found
+
+
+def test_a_sigterm_to_the_whole_process_group_stops_the_server_without_losing_workers_first(served):
+    """As systemd stops a service: the server shuts its workers down itself, with nothing to replace."""
+    server, _ = served
+    assert server.process is not None
+    process, log = server.process, server._log_path
+    fork_server = _fork_server(server)
+    server.stop()  # SIGTERM to the group, then waits for the server to exit
+    assert process.returncode in (0, -signal.SIGTERM)  # uvicorn re-raises the signal once shut down
+    text = log.read_text()
+    assert "worker died" not in text and "could not start" not in text, text[-2000:]
+    deadline = time.monotonic() + RECOVERY_DEADLINE
+    while (Path("/proc") / str(fork_server)).exists() and "Z" not in _state(fork_server):
+        assert time.monotonic() < deadline, "the fork server outlived the server"
+        time.sleep(0.1)
+
+
+def _state(pid: int) -> str:
+    try:
+        return (Path("/proc") / str(pid) / "stat").read_text().rsplit(")", 1)[1].split()[0]
+    except OSError:
+        return "X"
