@@ -8,6 +8,8 @@ from __future__ import annotations
 from types import MappingProxyType
 from typing import Final
 
+from physics.characters import FULLWIDTH
+
 GREEK_LETTERS: Final = MappingProxyType(
     {
         "alpha": "α", "beta": "β", "gamma": "γ", "delta": "δ", "epsilon": "ε", "zeta": "ζ",
@@ -35,11 +37,8 @@ CHARACTER_VARIANTS: Final = MappingProxyType(
         "×": "*", "·": "*", "⋅": "*", "∙": "*", "÷": "/", "⁄": "/", "∕": "/",  # fraction and division slashes
         # Subscript digits, as in v₀, ε₀, r₁: the same names as v0 (an alias of v_0), ε0, r1.
         "₀": "0", "₁": "1", "₂": "2", "₃": "3", "₄": "4", "₅": "5", "₆": "6", "₇": "7", "₈": "8", "₉": "9",
-        # Fullwidth forms, from East Asian input methods.
-        "（": "(", "）": ")", "［": "[", "］": "]", "｛": "{", "｝": "}", "＊": "*", "／": "/", "＾": "^",
-        "－": "-", "０": "0", "１": "1", "２": "2", "３": "3", "４": "4", "５": "5", "６": "6",
-        "７": "7", "８": "8", "９": "9", "．": ".",
         "ℏ": "ħ",  # the Planck constant sign, as the letter ħ
+        **FULLWIDTH,  # from East Asian input methods
     }
 )  # fmt: skip
 

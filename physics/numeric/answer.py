@@ -12,6 +12,7 @@ import re
 from dataclasses import dataclass
 from fractions import Fraction
 
+from physics.characters import fullwidth_as_ascii
 from physics.dimensions import Dimension
 from physics.errors import AnswerError, ParseError, TooLarge
 from physics.numeric.literal import NumberLiteral, read_number, skip_spaces
@@ -163,6 +164,7 @@ def read_numeric_answer(
     """
     if len(text) > MAX_ANSWER_LENGTH:
         raise TooLarge(f"An answer may be at most {MAX_ANSWER_LENGTH} characters", MAX_ANSWER_LENGTH)
+    text = fullwidth_as_ascii(text)
     # Imported here: arithmetic pulls in the math reader and sympy, which plain literals never need.
     from physics.numeric.arithmetic import number_part_end, read_arithmetic_answer
 

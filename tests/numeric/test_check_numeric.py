@@ -52,6 +52,9 @@ VERDICTS = [
     ("leading-slash-units", "4.58 /s", NumericSpec(D("4.58"), "1/s"), OK, Reason.EQUIVALENT),
     ("number-then-number-over-unit", "4.58 12/s", NumericSpec(D("4.58"), "1/s"), BAD, Reason.PARSE_ERROR),
     ("glued-units", "4.58m/s^2", ACCEL, OK, Reason.EQUIVALENT),
+    ("fullwidth-units", "4.58 ｍ／ｓ＾２", ACCEL, OK, Reason.EQUIVALENT),  # East Asian input methods
+    ("fullwidth-number", "４．５８ m/s^2", ACCEL, OK, Reason.EQUIVALENT),
+    ("fullwidth-brackets", "4.58 ［m/s^2］", ACCEL, OK, Reason.EQUIVALENT),
     ("prefixed-units", "4580 mm/s^2", ACCEL, OK, Reason.EQUIVALENT),
     ("scientific", "4.58e0 m/s^2", ACCEL, OK, Reason.EQUIVALENT),
     ("times-ten", "458×10^-2 m/s^2", ACCEL, OK, Reason.EQUIVALENT),
