@@ -21,13 +21,12 @@ from typing import Any
 
 from fastapi import FastAPI
 from pydantic import TypeAdapter, ValidationError
-from starlette.concurrency import run_in_threadpool
 from starlette.requests import Request
 from starlette.responses import Response
 from starlette.types import ASGIApp, Message, Receive, Scope, Send
 
 from app.auth import Principal, bearer_token
-from app.deps import counted_in_memory, spend_budget
+from app.deps import counted_in_memory, key_principal, spend_budget
 from app.middleware import replay
 from app.schemas.check import CheckIn
 from app.services import Services
@@ -123,13 +122,10 @@ async def _known_caller(services: Services, scope: Scope) -> Principal | None:
     token = bearer_token(authorization.decode("latin-1"))
     if token is None:
         return None
-    found = services.keys.cached(token)
-    if found is None:
-        try:
-            found = await run_in_threadpool(services.keys.authenticate, token)
-        except Exception:
-            return None
-    return found
+    try:
+        return await key_principal(services, token)
+    except Exception:
+        return None
 
 
 async def _whole_body(receive: Receive) -> Message:

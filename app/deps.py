@@ -54,9 +54,7 @@ async def current_principal(
             )
     else:
         token = bearer_token(authorization)
-        found = None if token is None else services.keys.cached(token)
-        if found is None and token is not None:
-            found = await run_in_threadpool(services.keys.authenticate, token)
+        found = None if token is None else await key_principal(services, token)
         if found is None:
             raise Unauthenticated(
                 "This API key is unknown or revoked; send it as 'Authorization: Bearer <key>'."
@@ -74,6 +72,15 @@ def spend_budget(services: Services, principal: Principal) -> None:
     wait = budget_wait(services, principal)
     if wait is not None:
         raise RateLimited(f"Too many requests; try again in {wait} s.", retry_after=wait)
+
+
+async def key_principal(services: Services, token: str) -> Principal | None:
+    """The key's principal, from memory on the event loop when it was seen active moments ago, else
+    from the database in the thread pool; None for an unknown or revoked key."""
+    found = services.keys.cached(token)
+    if found is None:
+        found = await run_in_threadpool(services.keys.authenticate, token)
+    return found
 
 
 def counted_in_memory(services: Services) -> bool:

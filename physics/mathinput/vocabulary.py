@@ -33,7 +33,7 @@ LATIN_LOOKING_CAPITALS: Final = frozenset(
 CHARACTER_VARIANTS: Final = MappingProxyType(
     {
         "ϑ": "θ", "ϕ": "φ", "ϵ": "ε", "ϱ": "ρ", "ς": "σ", "µ": "μ", "º": "°",
-        "−": "-", "–": "-", "‐": "-", "‑": "-", "﹣": "-", "＋": "+",
+        "−": "-", "–": "-", "‐": "-", "‑": "-", "﹣": "-",
         "×": "*", "·": "*", "⋅": "*", "∙": "*", "÷": "/", "⁄": "/", "∕": "/",  # fraction and division slashes
         # Subscript digits, as in v₀, ε₀, r₁: the same names as v0 (an alias of v_0), ε0, r1.
         "₀": "0", "₁": "1", "₂": "2", "₃": "3", "₄": "4", "₅": "5", "₆": "6", "₇": "7", "₈": "8", "₉": "9",
