@@ -137,8 +137,8 @@ HOSTILE_SYMBOLIC: list[str] = [
     "m*" * (MEGABYTE // 2) + "g",
     "(" * 990 + "m" + ")" * 990,
     "sin(" * 400 + "theta" + ")" * 400,
-    "exp(exp(exp(exp(exp(exp(m))))))",
-    "m^(m^(m^m))",  # as of writing, the one that holds a grading worker until the check timeout
+    "exp(exp(exp(exp(exp(exp(m))))))",  # held a worker to the time limit (in sympy evalf) before 2026-11-26
+    "m^(m^(m^m))",
     "10^10^10^10 * m g",
     "factorial(10^10)",
     "__import__('os').system('echo pwned')",

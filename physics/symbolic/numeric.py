@@ -16,6 +16,8 @@ import mpmath
 import sympy
 from mpmath import libmp
 
+from physics.symbolic.overflow import overflows
+
 Mpf = tuple[int, int, int, int]
 Column = list[Mpf | None]
 
@@ -327,6 +329,9 @@ class Evaluator:
             if len(present) < len(row):
                 out.append(None)
                 continue
+            if overflows(expr, {s: to_float(v) for s, v in zip(symbols, present, strict=True)}):
+                out.append(None)
+                continue
             subs = {s: sympy_float(v, self.prec) for s, v in zip(symbols, present, strict=True)}
             out.append(_real_mpf(expr, subs, dps, self.prec))
         return out
@@ -358,8 +363,10 @@ def evaluate_constant(expr: sympy.Basic, prec: int) -> Mpf | None:
 
 def complex_value(expr: sympy.Basic, point: Mapping[sympy.Symbol, Mpf], prec: int) -> tuple[Mpf, Mpf] | None:
     """(real, imaginary) parts by sympy's evalf, for answers with complex intermediates; None if undefined."""
-    dps = libmp.prec_to_dps(prec)
     symbols = expr.free_symbols
+    if overflows(expr, {s: to_float(v) for s, v in point.items() if s in symbols}):
+        return None
+    dps = libmp.prec_to_dps(prec)
     subs = {s: sympy_float(v, prec) for s, v in point.items() if s in symbols}
     try:
         parts = expr.evalf(dps, subs=subs).as_real_imag()

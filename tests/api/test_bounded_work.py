@@ -46,6 +46,23 @@ def test_hostile_answer_is_invalid_too_large(client, student_headers, answer):
     assert (result["verdict"], result["reason"]) == ("invalid", "too_large"), result
 
 
+# Each is read (no size limit is broken) but has no value sympy's evalf could compute in bounded time:
+# the judge must decide it without evalf, long before the time limit kills the worker.
+UNBOUNDED_VALUES = [
+    pytest.param("exp(exp(exp(exp(exp(exp(m))))))*g*h", "wrong_dimension", id="exp-tower-of-a-mass"),
+    pytest.param("m*g*h*exp(exp(exp(exp(exp(exp(x^2))))))", "wrong_value", id="exp-tower"),
+    pytest.param("m*g*h*factorial(exp(exp(exp(exp(x^2)))))", "wrong_value", id="factorial-of-exp-tower"),
+]
+
+
+@pytest.mark.parametrize(("answer", "reason"), UNBOUNDED_VALUES)
+def test_answer_with_unbounded_value_is_graded_not_timed_out(client, student_headers, answer, reason):
+    response = client.post("/v1/check", json=symbolic(answer), headers=student_headers)
+    assert response.status_code == 200
+    result = response.json()
+    assert (result["verdict"], result["reason"]) == ("incorrect", reason), result
+
+
 INJECTIONS = [
     "__import__('os').system('touch {marker}')",
     "().__class__.__base__.__subclasses__()",

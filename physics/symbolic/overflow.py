@@ -1,0 +1,100 @@
+"""Whether an expression's value at a point runs out of float64's range on the way, in complex128.
+
+sympy's evalf computes `exp(exp(exp(exp(m))))` and `sin(10^10^5)` exactly as asked, with working
+precision as large as the numbers (bits of e or π by the million): minutes, for no value worth
+comparing. Where evalf stands in for our own evaluators (a complex intermediate, a function they do
+not know), this look in complex floats first, a few microseconds, tells whether every intermediate stays
+finite. It only ever vetoes: its values are never compared with anything.
+"""
+
+from __future__ import annotations
+
+import cmath
+import math
+from collections.abc import Callable, Mapping
+
+import sympy
+
+_UNARY: dict[type, Callable[[complex], complex]] = {
+    sympy.sin: cmath.sin,
+    sympy.cos: cmath.cos,
+    sympy.tan: cmath.tan,
+    sympy.cot: lambda z: 1 / cmath.tan(z),
+    sympy.sec: lambda z: 1 / cmath.cos(z),
+    sympy.csc: lambda z: 1 / cmath.sin(z),
+    sympy.asin: cmath.asin,
+    sympy.acos: cmath.acos,
+    sympy.atan: cmath.atan,
+    sympy.acot: lambda z: cmath.atan(1 / z),
+    sympy.asec: lambda z: cmath.acos(1 / z),
+    sympy.acsc: lambda z: cmath.asin(1 / z),
+    sympy.sinh: cmath.sinh,
+    sympy.cosh: cmath.cosh,
+    sympy.tanh: cmath.tanh,
+    sympy.asinh: cmath.asinh,
+    sympy.acosh: cmath.acosh,
+    sympy.atanh: cmath.atanh,
+    sympy.exp: cmath.exp,
+    sympy.log: cmath.log,
+    sympy.Abs: lambda z: complex(abs(z)),
+}
+
+
+class _Unknown(Exception):
+    """A node this look cannot follow (factorial, an unevaluated function): it vetoes nothing."""
+
+
+class _Overflow(Exception):
+    pass
+
+
+def overflows(expr: sympy.Basic, point: Mapping[sympy.Symbol, float]) -> bool:
+    """True when some intermediate of `expr` at `point` is not a finite complex128 (an overflow, a
+    division by zero, a log of zero): evalf would compute with numbers of unbounded size there, or
+    find no value. False when every intermediate is finite, or when a node is one this look cannot
+    evaluate (it then leaves the decision to evalf, under the check's time limit)."""
+    try:
+        _value(expr, point)
+    except _Unknown:
+        return False
+    except (_Overflow, OverflowError, ZeroDivisionError, ValueError):
+        return True
+    return False
+
+
+def _finite(z: complex) -> complex:
+    if not (math.isfinite(z.real) and math.isfinite(z.imag)):
+        raise _Overflow
+    return z
+
+
+def _value(expr: sympy.Basic, point: Mapping[sympy.Symbol, float]) -> complex:
+    if expr.is_Symbol:
+        if expr not in point:
+            raise _Unknown
+        return complex(point[expr])
+    if expr.is_Number or expr is sympy.pi or expr is sympy.E:
+        if not expr.is_finite or expr.is_extended_real is False:
+            raise _Unknown  # zoo, nan: evalf finds no value either, quickly
+        return _finite(complex(float(expr)))
+    if expr is sympy.I:
+        return 1j
+    args = [_value(arg, point) for arg in expr.args]
+    if expr.is_Add:
+        return _finite(sum(args, 0j))
+    if expr.is_Mul:
+        product = 1 + 0j
+        for factor in args:
+            product = _finite(product * factor)
+        return product
+    if expr.is_Pow:
+        base, exponent = args
+        if base == 0:
+            if exponent.real <= 0:
+                raise ZeroDivisionError
+            return 0j
+        return _finite(cmath.exp(exponent * cmath.log(base)))
+    unary = _UNARY.get(type(expr))
+    if unary is None or len(args) != 1:
+        raise _Unknown
+    return _finite(unary(args[0]))

@@ -1,0 +1,41 @@
+"""The complex128 look that keeps sympy's evalf away from numbers of unbounded size: it vetoes an
+expression whose value at the point leaves float64's range on the way, and nothing else."""
+
+from __future__ import annotations
+
+import pytest
+import sympy
+
+from physics.symbolic.numeric import complex_value, from_int
+from physics.symbolic.overflow import overflows
+
+x, y = sympy.symbols("x y", positive=True)
+E = sympy.exp
+
+
+@pytest.mark.parametrize(
+    ("expr", "vetoed"),
+    [
+        pytest.param(x * y + sympy.sin(x), False, id="ordinary"),
+        pytest.param(sympy.sqrt(-x) * sympy.sqrt(-y), False, id="complex-intermediates"),
+        pytest.param(sympy.log(-x), False, id="complex-log"),
+        pytest.param(E(E(x)), False, id="two-exps-stay-finite"),
+        pytest.param(E(E(E(E(x)))), True, id="exp-tower"),
+        pytest.param(E(E(E(E(10 + sympy.sqrt(-x))))), True, id="exp-tower-through-a-complex-value"),
+        pytest.param(sympy.sin(E(E(E(E(x))))), True, id="function-of-a-huge-number"),
+        pytest.param(x ** (x ** (x**x)) * 0 + 10 ** (10**400 * x), True, id="huge-power"),
+        pytest.param(1 / (x - 2), True, id="division-by-zero"),
+        pytest.param(sympy.log(x - 2), True, id="log-of-zero"),
+        pytest.param(sympy.factorial(x), False, id="unknown-function-left-to-evalf"),
+    ],
+)
+def test_overflow_vetoes_only_values_beyond_float64(expr, vetoed):
+    assert overflows(expr, {x: 2.0, y: 3.0}) is vetoed
+
+
+def test_complex_value_of_an_exp_tower_is_none_not_a_huge_computation():
+    point = {x: from_int(3)}
+    assert complex_value(E(E(E(E(E(E(x)))))), point, 133) is None
+    # Complex intermediates still go through evalf: sqrt(-x)^2 = -x, real.
+    real, imaginary = complex_value(sympy.sqrt(-x) * sympy.sqrt(-x), point, 133)  # type: ignore[misc]
+    assert (real, imaginary) == (from_int(-3), from_int(0))
