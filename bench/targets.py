@@ -16,7 +16,10 @@ takes much of a core and so lowers every figure, the floor's too):
   identical  POST /v1/check, one typical request over and over: the verdict cache's case
   same       POST /v1/check, bench/check_bench.py's typical answers (parse_expr's syntax) in the
              distinct phase's forms, every text new
-  naive      POST /naive: the same texts as `same`, parse_expr + simplify per request
+  naive      POST /naive: the same texts as `same`, parse_expr + simplify per request, in one uvicorn
+             process as the issue measured it (simplify holds the GIL: one core)
+  naive x2   the same on two uvicorn processes, one per core as physcheck's workers: how much of the
+             ratio is physcheck using both cores
 
 and prints requests/s, p50 and p99, then each target: distinct >= 20 % of the floor's requests/s
 with p99 <= 50 ms, identical >= 60 % of the floor, naive >= 100x slower than physcheck on the same
@@ -159,7 +162,7 @@ def naive_checks() -> list[Call]:
 
 
 @contextlib.contextmanager
-def trivial_app(directory: Path) -> Iterator[str]:
+def trivial_app(directory: Path, workers: int = 1) -> Iterator[str]:
     port = free_port()
     with (directory / "trivial.log").open("ab") as log:
         process = subprocess.Popen(
@@ -177,6 +180,8 @@ def trivial_app(directory: Path) -> Iterator[str]:
                 "--log-level",
                 "warning",
                 "--no-access-log",
+                "--workers",
+                str(workers),
             ],
             stdout=log,
             stderr=subprocess.STDOUT,
@@ -331,7 +336,11 @@ def main(argv: Sequence[str] | None = None) -> int:
         "--threads", type=int, default=1, help="wrk's threads (default 1: the servers need the cores)"
     )
     args = parser.parse_args(argv)
-    with tempfile.TemporaryDirectory(prefix="physcheck-targets-") as tmp, trivial_app(Path(tmp)) as trivial:
+    with (
+        tempfile.TemporaryDirectory(prefix="physcheck-targets-") as tmp,
+        trivial_app(Path(tmp)) as trivial,
+        trivial_app(Path(tmp), workers=2) as trivial_two,
+    ):
         server = OwnServer(Path(tmp), None)
         server.env["PHYSCHECK_WARM_UP"] = "false"  # /v1/check needs no bank: ready without deriving it
         try:
@@ -356,6 +365,7 @@ def main(argv: Sequence[str] | None = None) -> int:
             identical = run(server.url, key, "identical", identical_check(), args)
             same = run(server.url, key, "same", same_checks(), cold)
             naive = run(trivial, None, "naive", naive_checks(), naive_args)
+            naive_two = run(trivial_two, None, "naive x2", naive_checks(), naive_args)
             for phase, sent in ((distinct, distinct_checks()), (same, same_checks())):
                 if phase.requests > len(sent):
                     print(
@@ -371,6 +381,10 @@ def main(argv: Sequence[str] | None = None) -> int:
     print(
         f"naive:     {same.rate / max(naive.rate, 1e-9):.0f}x slower than physcheck on the same answers "
         f"(target >= 100x); {distinct.rate / max(naive.rate, 1e-9):.0f}x slower than distinct"
+    )
+    print(
+        f"           {same.rate / max(naive_two.rate, 1e-9):.0f}x slower on the same answers when it runs in two "
+        "processes, one per core, as physcheck's workers do (the issue's naive service ran in one)"
     )
     return 0
 
