@@ -329,7 +329,7 @@ class Evaluator:
             if len(present) < len(row):
                 out.append(None)
                 continue
-            if overflows(expr, {s: to_float(v) for s, v in zip(symbols, present, strict=True)}):
+            if overflows(expr, dict(zip(symbols, present, strict=True))):
                 out.append(None)
                 continue
             subs = {s: sympy_float(v, self.prec) for s, v in zip(symbols, present, strict=True)}
@@ -364,7 +364,7 @@ def evaluate_constant(expr: sympy.Basic, prec: int) -> Mpf | None:
 def complex_value(expr: sympy.Basic, point: Mapping[sympy.Symbol, Mpf], prec: int) -> tuple[Mpf, Mpf] | None:
     """(real, imaginary) parts by sympy's evalf, for answers with complex intermediates; None if undefined."""
     symbols = expr.free_symbols
-    if overflows(expr, {s: to_float(v) for s, v in point.items() if s in symbols}):
+    if overflows(expr, {s: v for s, v in point.items() if s in symbols}):
         return None
     dps = libmp.prec_to_dps(prec)
     subs = {s: sympy_float(v, prec) for s, v in point.items() if s in symbols}

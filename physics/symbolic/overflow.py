@@ -14,6 +14,7 @@ import math
 from collections.abc import Callable, Mapping
 
 import sympy
+from mpmath import libmp
 
 _UNARY: dict[type, Callable[[complex], complex]] = {
     sympy.sin: cmath.sin,
@@ -48,18 +49,28 @@ class _Overflow(Exception):
     pass
 
 
-def overflows(expr: sympy.Basic, point: Mapping[sympy.Symbol, float]) -> bool:
-    """True when some intermediate of `expr` at `point` is not a finite complex128 (an overflow, a
-    division by zero, a log of zero): evalf would compute with numbers of unbounded size there, or
-    find no value. False when every intermediate is finite, or when a node is one this look cannot
-    evaluate (it then leaves the decision to evalf, under the check's time limit)."""
+def overflows(expr: sympy.Basic, point: Mapping[sympy.Symbol, tuple[int, int, int, int]]) -> bool:
+    """True when some intermediate of `expr` at `point` (libmp values) is not a finite complex128 (an
+    overflow, a division by zero, a log of zero): evalf would compute with numbers of unbounded size
+    there, or find no value. False when every intermediate is finite, or when a node or a point value
+    is one this look cannot stand in for (it then leaves the decision to evalf, under the check's time
+    limit)."""
     try:
-        _value(expr, point)
+        _value(expr, {symbol: _float(value) for symbol, value in point.items()})
     except _Unknown:
         return False
     except (_Overflow, OverflowError, ZeroDivisionError, ValueError):
         return True
     return False
+
+
+def _float(value: tuple[int, int, int, int]) -> float:
+    """The point value in float64; beyond its range (inf, or a nonzero value that underflows to 0) the
+    look would veto what evalf computes well, so it stands aside."""
+    result = float(libmp.to_float(value))
+    if not math.isfinite(result) or (result == 0 and value != libmp.fzero):
+        raise _Unknown
+    return result
 
 
 def _finite(z: complex) -> complex:

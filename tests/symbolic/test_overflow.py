@@ -6,7 +6,7 @@ from __future__ import annotations
 import pytest
 import sympy
 
-from physics.symbolic.numeric import complex_value, from_int
+from physics.symbolic.numeric import complex_value, from_int, from_rational
 from physics.symbolic.overflow import overflows
 
 x, y = sympy.symbols("x y", positive=True)
@@ -30,7 +30,19 @@ E = sympy.exp
     ],
 )
 def test_overflow_vetoes_only_values_beyond_float64(expr, vetoed):
-    assert overflows(expr, {x: 2.0, y: 3.0}) is vetoed
+    assert overflows(expr, {x: from_int(2), y: from_int(3)}) is vetoed
+
+
+@pytest.mark.parametrize(
+    "value",
+    [
+        pytest.param(from_int(10**400), id="beyond-float64"),
+        pytest.param(from_rational(1, 10**400, 133), id="underflows"),
+    ],
+)
+def test_a_point_value_float64_cannot_hold_vetoes_nothing(value):
+    # evalf computes log(x) there well; only an intermediate that overflows is a reason to stand aside.
+    assert overflows(sympy.log(x) * y, {x: value, y: from_int(3)}) is False
 
 
 def test_complex_value_of_an_exp_tower_is_none_not_a_huge_computation():
