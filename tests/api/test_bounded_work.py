@@ -52,6 +52,8 @@ UNBOUNDED_VALUES = [
     pytest.param("exp(exp(exp(exp(exp(exp(m))))))*g*h", "wrong_dimension", id="exp-tower-of-a-mass"),
     pytest.param("m*g*h*exp(exp(exp(exp(exp(exp(x^2))))))", "wrong_value", id="exp-tower"),
     pytest.param("m*g*h*factorial(exp(exp(exp(exp(x^2)))))", "wrong_value", id="factorial-of-exp-tower"),
+    # No value anywhere, so the bounded proof is tried: trigsimp of a function of a function.
+    pytest.param("m*g*h*sinh(sinh(sinh(sinh(sinh(sinh(x^2+2))))))", "wrong_value", id="sinh-nest"),
 ]
 
 
