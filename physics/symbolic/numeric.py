@@ -16,7 +16,7 @@ import mpmath
 import sympy
 from mpmath import libmp
 
-from physics.symbolic.overflow import overflows
+from physics.symbolic.overflow import overflows, too_costly
 
 Mpf = tuple[int, int, int, int]
 Column = list[Mpf | None]
@@ -321,6 +321,8 @@ class Evaluator:
         """Slow path for functions this module does not know: sympy's own evalf at each point."""
         symbols = sorted(expr.free_symbols, key=lambda s: s.name)
         columns = [self.columns[s] for s in symbols]
+        if too_costly(expr):
+            return self.constant(None)
         dps = libmp.prec_to_dps(self.prec)
         out: Column = []
         for index in range(self.size):
@@ -364,7 +366,7 @@ def evaluate_constant(expr: sympy.Basic, prec: int) -> Mpf | None:
 def complex_value(expr: sympy.Basic, point: Mapping[sympy.Symbol, Mpf], prec: int) -> tuple[Mpf, Mpf] | None:
     """(real, imaginary) parts by sympy's evalf, for answers with complex intermediates; None if undefined."""
     symbols = expr.free_symbols
-    if overflows(expr, {s: v for s, v in point.items() if s in symbols}):
+    if too_costly(expr) or overflows(expr, {s: v for s, v in point.items() if s in symbols}):
         return None
     dps = libmp.prec_to_dps(prec)
     subs = {s: sympy_float(v, prec) for s, v in point.items() if s in symbols}

@@ -5,6 +5,11 @@ precision as large as the numbers (bits of e or π by the million): minutes, for
 comparing. Where evalf stands in for our own evaluators (a complex intermediate, a function they do
 not know), this look in complex floats first, a few microseconds, tells whether every intermediate stays
 finite. It only ever vetoes: its values are never compared with anything.
+
+evalf is also slow without any large number: it evaluates a complex intermediate again at a higher
+precision for every level of functions and fractional powers above it, so its time grows about fourfold
+per level and with the width of each level (`((-x)^(1/3))` seven deep took 1.5 s a point, `log10`
+twelve deep ran to the time limit). `too_costly` weighs that nesting before evalf is called.
 """
 
 from __future__ import annotations
@@ -41,8 +46,32 @@ _UNARY: dict[type, Callable[[complex], complex]] = {
 }
 
 
+# Each level of functions or fractional powers multiplies the weight of what it holds by _LEVEL_COST;
+# at _EVALF_BUDGET evalf takes about 5 ms a point. The complex answers people write weigh under 40
+# (sqrt(cos(2θ)), (e^{iθ} - e^{-iθ})/(2i), sqrt(-a) sqrt(-b)).
+_LEVEL_COST = 4
+_EVALF_BUDGET = 500
+
+
+def too_costly(expr: sympy.Basic) -> bool:
+    """True when evalf's nested re-evaluations of `expr` would cost more than _EVALF_BUDGET."""
+    return _weight(expr) > _EVALF_BUDGET
+
+
+def _weight(expr: sympy.Basic) -> int:
+    total = 0
+    for arg in expr.args:
+        total += _weight(arg)
+        if total > _EVALF_BUDGET:
+            break  # already too costly: the rest of the tree need not be walked
+    if expr.is_Function or (expr.is_Pow and not expr.exp.is_Integer):
+        return _LEVEL_COST * total
+    return max(total, 1)
+
+
 class _Unknown(Exception):
-    """A node this look cannot follow (factorial, an unevaluated function): it vetoes nothing."""
+    """A node this look cannot follow (an unevaluated function, a factorial of a complex number): it
+    vetoes nothing."""
 
 
 class _Overflow(Exception):
@@ -79,6 +108,14 @@ def _finite(z: complex) -> complex:
     return z
 
 
+def _factorial(z: complex) -> complex:
+    """Γ(z + 1) of a real z: factorial(factorial(factorial(x))) is far past float64 (math.gamma raises
+    OverflowError), and evalf would compute it with π and ln √(2π) to as many bits as its value has."""
+    if z.imag != 0:
+        raise _Unknown
+    return _finite(complex(math.gamma(z.real + 1)))  # ValueError at a pole (a negative integer)
+
+
 def _value(expr: sympy.Basic, point: Mapping[sympy.Symbol, float]) -> complex:
     if expr.is_Symbol:
         if expr not in point:
@@ -105,6 +142,8 @@ def _value(expr: sympy.Basic, point: Mapping[sympy.Symbol, float]) -> complex:
                 raise ZeroDivisionError
             return 0j
         return _finite(cmath.exp(exponent * cmath.log(base)))
+    if isinstance(expr, sympy.factorial):
+        return _factorial(args[0])
     unary = _UNARY.get(type(expr))
     if unary is None or len(args) != 1:
         raise _Unknown

@@ -52,8 +52,11 @@ UNBOUNDED_VALUES = [
     pytest.param("exp(exp(exp(exp(exp(exp(m))))))*g*h", "wrong_dimension", id="exp-tower-of-a-mass"),
     pytest.param("m*g*h*exp(exp(exp(exp(exp(exp(x^2))))))", "wrong_value", id="exp-tower"),
     pytest.param("m*g*h*factorial(exp(exp(exp(exp(x^2)))))", "wrong_value", id="factorial-of-exp-tower"),
+    pytest.param("m*g*h*factorial(factorial(factorial(x)))", "wrong_value", id="factorial-tower"),
     # No value anywhere, so the bounded proof is tried: trigsimp of a function of a function.
     pytest.param("m*g*h*sinh(sinh(sinh(sinh(sinh(sinh(x^2+2))))))", "wrong_value", id="sinh-nest"),
+    # Complex intermediates nested twelve deep: evalf's time grows fourfold per level.
+    pytest.param("m*g*h*" + "log10(" * 12 + "x^2+2" + ")" * 12, "wrong_value", id="log10-nest"),
 ]
 
 

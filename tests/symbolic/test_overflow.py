@@ -7,7 +7,7 @@ import pytest
 import sympy
 
 from physics.symbolic.numeric import complex_value, from_int, from_rational
-from physics.symbolic.overflow import overflows
+from physics.symbolic.overflow import overflows, too_costly
 
 x, y = sympy.symbols("x y", positive=True)
 E = sympy.exp
@@ -26,7 +26,10 @@ E = sympy.exp
         pytest.param(x ** (x ** (x**x)) * 0 + 10 ** (10**400 * x), True, id="huge-power"),
         pytest.param(1 / (x - 2), True, id="division-by-zero"),
         pytest.param(sympy.log(x - 2), True, id="log-of-zero"),
-        pytest.param(sympy.factorial(x), False, id="unknown-function-left-to-evalf"),
+        pytest.param(sympy.factorial(x), False, id="small-factorial"),
+        pytest.param(sympy.factorial(sympy.factorial(sympy.factorial(y))), True, id="factorial-tower"),
+        pytest.param(sympy.factorial(sympy.sqrt(-x)), False, id="complex-factorial-left-to-evalf"),
+        pytest.param(sympy.gamma(x), False, id="unknown-function-left-to-evalf"),
     ],
 )
 def test_overflow_vetoes_only_values_beyond_float64(expr, vetoed):
@@ -51,3 +54,32 @@ def test_complex_value_of_an_exp_tower_is_none_not_a_huge_computation():
     # Complex intermediates still go through evalf: sqrt(-x)^2 = -x, real.
     real, imaginary = complex_value(sympy.sqrt(-x) * sympy.sqrt(-x), point, 133)  # type: ignore[misc]
     assert (real, imaginary) == (from_int(-3), from_int(0))
+
+
+def nested(level: int, times: int) -> sympy.Expr:
+    expr = x**2 + 2
+    for _ in range(times):
+        expr = level(expr)
+    return expr
+
+
+@pytest.mark.parametrize(
+    ("expr", "costly"),
+    [
+        pytest.param(sympy.sqrt(sympy.cos(2 * x)), False, id="sqrt-of-cos"),
+        pytest.param(-sympy.I * (E(sympy.I * x) - E(-sympy.I * x)) / 2, False, id="euler-sine"),
+        pytest.param(sympy.sqrt(-x) * sympy.sqrt(-y), False, id="two-roots"),
+        pytest.param(nested(lambda e: sympy.log(e, 10), 3), False, id="log10-three-deep"),
+        pytest.param(nested(lambda e: sympy.log(e, 10), 12), True, id="log10-twelve-deep"),
+        pytest.param(
+            nested(lambda e: 3 * (-1 - e) ** sympy.Rational(1, 3), 7), True, id="cube-roots-seven-deep"
+        ),
+        pytest.param(nested(lambda e: sympy.log(-e) * sympy.log(-1 - e), 4), True, id="wide-and-deep"),
+    ],
+)
+def test_evalf_is_refused_where_its_nested_reevaluations_grow_too_costly(expr, costly):
+    assert too_costly(expr) is costly
+
+
+def test_complex_value_of_a_deep_nest_is_none_not_a_long_evalf():
+    assert complex_value(nested(lambda e: sympy.log(e, 10), 12), {x: from_int(3)}, 133) is None
