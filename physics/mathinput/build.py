@@ -17,6 +17,7 @@ from physics.errors import ParseError, TooLarge
 from physics.mathinput.exact import exact_number
 from physics.mathinput.limits import InputLimits
 from physics.mathinput.tree import Call, Const, Group, Name, Neg, Node, Num, Power, Product, Sum
+from physics.symbolic.overflow import beyond_float
 
 # sympy factors the number under a numeric root (seconds for a 2000-bit fraction; a q-th root of a
 # fraction first raises its denominator to the power q-1) and merges roots in products, so all numeric
@@ -93,6 +94,10 @@ class Builder:
         if isinstance(node, Call):
             arg = self._build(node.arg)
             self._position = node.pos
+            if arg.is_number and not arg.is_Rational and beyond_float(arg):
+                # sympy would reduce sec(e^(10^40)) modulo π with π to as many bits as the argument's
+                # magnitude has, whenever it is asked whether the value is real (here, or building on it).
+                raise self._too_large(f"The argument of {node.func}(…) is too large to compute with.")
             if node.func == "factorial":
                 return self._factorial(arg)
             if node.func == "sqrt":

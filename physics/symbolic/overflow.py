@@ -102,6 +102,20 @@ def _float(value: tuple[int, int, int, int]) -> float:
     return result
 
 
+def beyond_float(constant: sympy.Basic) -> bool:
+    """True when some intermediate of `constant` overflows float64 (sec(sinh(10^40)^2), exp(2^4000));
+    not when it divides by zero or leaves a function's domain, which a look in floats cannot tell from
+    rounding. sympy's own questions about such a constant (is it real? finite?) evaluate it with π to
+    as many bits as its magnitude has."""
+    try:
+        _value(constant, {})
+    except (_Overflow, OverflowError):
+        return True
+    except (_Unknown, ZeroDivisionError, ValueError):
+        return False
+    return False
+
+
 def _finite(z: complex) -> complex:
     if not (math.isfinite(z.real) and math.isfinite(z.imag)):
         raise _Overflow

@@ -35,6 +35,7 @@ HOSTILE = [
     pytest.param("(x+2)^10000", id="huge-polynomial"),
     pytest.param("(" * 100_000 + "x" + ")" * 100_000, id="deep-nesting"),
     pytest.param("m" * 1_000_000, id="one-megabyte"),
+    pytest.param("m*g*h*sec(sinh(10^40)^2)", id="function-of-an-astronomical-constant"),
 ]
 
 

@@ -7,7 +7,7 @@ import pytest
 import sympy
 
 from physics.symbolic.numeric import complex_value, from_int, from_rational
-from physics.symbolic.overflow import overflows, too_costly
+from physics.symbolic.overflow import beyond_float, overflows, too_costly
 
 x, y = sympy.symbols("x y", positive=True)
 E = sympy.exp
@@ -83,3 +83,22 @@ def test_evalf_is_refused_where_its_nested_reevaluations_grow_too_costly(expr, c
 
 def test_complex_value_of_a_deep_nest_is_none_not_a_long_evalf():
     assert complex_value(nested(lambda e: sympy.log(e, 10), 12), {x: from_int(3)}, 133) is None
+
+
+@pytest.mark.parametrize(
+    ("constant", "beyond"),
+    [
+        pytest.param(E(2**62) * sympy.pi, True, id="overflows"),
+        pytest.param(sympy.sinh(sympy.Integer(10) ** 40), True, id="sinh-of-a-big-integer"),
+        pytest.param(sympy.Integer(2) ** 4000 * sympy.pi, True, id="big-integer"),
+        pytest.param(E(40) * sympy.pi, False, id="large-but-finite"),
+        pytest.param(
+            1 / (sympy.sin(1) ** 2 + sympy.cos(1) ** 2 - 1 + sympy.pi - sympy.pi), False, id="near-zero"
+        ),
+        pytest.param(
+            sympy.log(sympy.pi - sympy.pi + 0 * sympy.E), False, id="log-of-zero-is-not-an-overflow"
+        ),
+    ],
+)
+def test_beyond_float_is_an_overflow_only(constant, beyond):
+    assert beyond_float(constant) is beyond
