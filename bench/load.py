@@ -141,6 +141,7 @@ HOSTILE_SYMBOLIC: list[str] = [
     "m^(m^(m^m))",
     "10^10^10^10 * m g",
     "factorial(10^10)",
+    "sec(sinh(10^40)^2) m g",  # held a worker to the time limit (sympy's realness query) before 2026-11-26
     "__import__('os').system('echo pwned')",
     "'; DROP TABLE submissions; --",
     "<script>alert(1)</script>{{7*7}}${jndi:ldap://127.0.0.1/x}",
