@@ -17,7 +17,7 @@ from physics.errors import ParseError, TooLarge
 from physics.mathinput.exact import exact_number
 from physics.mathinput.limits import InputLimits
 from physics.mathinput.tree import Call, Const, Group, Name, Neg, Node, Num, Power, Product, Sum
-from physics.symbolic.overflow import beyond_float
+from physics.overflow import beyond_float
 
 # sympy factors the number under a numeric root (seconds for a 2000-bit fraction; a q-th root of a
 # fraction first raises its denominator to the power q-1) and merges roots in products, so all numeric

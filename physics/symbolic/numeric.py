@@ -16,7 +16,7 @@ import mpmath
 import sympy
 from mpmath import libmp
 
-from physics.symbolic.overflow import overflows, too_costly
+from physics.overflow import overflows, too_costly
 
 Mpf = tuple[int, int, int, int]
 Column = list[Mpf | None]

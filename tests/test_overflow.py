@@ -6,8 +6,8 @@ from __future__ import annotations
 import pytest
 import sympy
 
+from physics.overflow import beyond_float, overflows, too_costly
 from physics.symbolic.numeric import complex_value, from_int, from_rational
-from physics.symbolic.overflow import beyond_float, overflows, too_costly
 
 x, y = sympy.symbols("x y", positive=True)
 E = sympy.exp
