@@ -60,7 +60,8 @@ class Parser:
     """`choices` settles ambiguous divisions by the position of their `/`: 0 reads `a/b c` as (a/b)·c,
     1 as a/(b·c). An ambiguous division without a choice is refused (AmbiguousDivision).
 
-    A function without brackets takes the next factor with its power (`sin θ^2` is sin(θ²)); each such
+    A function without brackets takes the next factor with its power (`sin θ^2` is sin(θ²)), or the
+    whole word typed without a space (`cos ωt` is cos(ωt), as physics writes it); each such
     argument is listed in `powered`, so the reading can be shown. `powers_outside` reads the power as
     the function's instead ((sin θ)²): the reading a student may have meant, to compare, never to grade.
     """
@@ -353,7 +354,8 @@ class Parser:
         raise ParseError(f"Write a power of {typed} as {typed}^2(x) or {typed}(x)^2.", tok.pos)
 
     def _argument(self, func_tok: Token, typed: str, *, bare_function: bool) -> tuple[Node, Power | None]:
-        """A function written without brackets takes the next factor: `sin 2θ`, `sin θ^2`, `√x`.
+        """A function written without brackets takes the next factor, or the word typed without a space
+        that starts with it: `sin 2θ`, `sin θ^2`, `√x`, `cos ωt`, `√2gh` (but `sin θ m` is sin(θ)·m).
 
         Returns the argument, and, for a `bare_function` (no power of its own, not `√`: `√x^2` is
         plainly √(x²)) whose argument ends with a power, the power to raise the function to instead
@@ -367,17 +369,17 @@ class Parser:
             self._enter(tok)
             start = self._i
             base = self._postfixed()
-            node = last = self._raised(base)
-            follower = self._tokens[self._i]
-            if (
-                tok.kind is Kind.NUM
-                and follower.kind in (Kind.NAME, Kind.CONST)
-                and not follower.space_before
-            ):
+            factors = [self._raised(base)]
+            # The word typed without a space is the argument: `cos ωt`, `sin kx`, `√2gh`, `sin 2πft`.
+            while tok.kind is not Kind.FUNC and tok.kind is not Kind.SQRT:
+                follower = self._tokens[self._i]
+                if follower.kind not in (Kind.NAME, Kind.CONST) or follower.space_before:
+                    break
                 base = self._postfixed()
-                last = self._raised(base)
-                node = Product(node, (("*", last),))
+                factors.append(self._raised(base))
             self._leave()
+            last = factors[-1]
+            node = _product_of(factors)
             if last is base or not isinstance(last, Power) or not bare_function:
                 return node, None
             typed_as = self._powered_argument(func_tok, start, last)
@@ -386,10 +388,7 @@ class Parser:
             self.powered.append(typed_as)
             if not self._powers_outside:
                 return node, None
-            if node is last:
-                return last.base, last
-            assert isinstance(node, Product)
-            return Product(node.first, (("*", last.base),)), last
+            return _product_of([*factors[:-1], last.base]), last
         if tok.kind is Kind.OP and tok.text in "+-":
             raise ParseError(f"Put the argument of {typed} in brackets, as in {typed}(-x).", tok.pos)
         raise ParseError(f"{typed} needs an argument, as in {typed}(x).", func_tok.pos)
@@ -456,3 +455,7 @@ def _is_minus_one(node: Node) -> bool:
         inner = ungroup(node.operand)
         return isinstance(inner, Num) and inner.value == 1
     return isinstance(node, Num) and node.value == -1
+
+
+def _product_of(factors: list[Node]) -> Node:
+    return factors[0] if len(factors) == 1 else Product(factors[0], tuple(("*", f) for f in factors[1:]))

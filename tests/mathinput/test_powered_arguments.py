@@ -66,13 +66,14 @@ def test_no_note_where_the_power_is_not_on_a_bare_argument(answer: str) -> None:
     assert read(answer, *SYMBOLS).read_as.note is None
 
 
-theta, x = sym("theta"), sym("x")
+theta, x, omega, t = sym("theta"), sym("x"), sym("omega"), sym("t")
 READINGS = [
     # (answer, as read, the other reading)
     ("sin θ^2", sympy.sin(theta**2), sympy.sin(theta) ** 2),
     ("sin 2θ^2", sympy.sin(2 * theta**2), sympy.sin(2 * theta) ** 2),
     ("sin θ²/2", sympy.sin(theta**2) / 2, sympy.sin(theta) ** 2 / 2),
     ("x sin cos x^2", x * sympy.sin(sympy.cos(x**2)), x * sympy.sin(sympy.cos(x) ** 2)),
+    ("sin ωt^2", sympy.sin(omega * t**2), sympy.sin(omega * t) ** 2),
     ("sin(θ)^2", sympy.sin(theta) ** 2, sympy.sin(theta) ** 2),  # no other reading
     ("sin(θ^2)", sympy.sin(theta**2), sympy.sin(theta**2)),
 ]

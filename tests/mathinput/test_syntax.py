@@ -12,6 +12,8 @@ m, M, g, theta, x, y = sym("m"), sym("M"), sym("g"), sym("theta"), sym("x"), sym
 a, b, c, h, v, k, r = sym("a"), sym("b"), sym("c"), sym("h"), sym("v"), sym("k"), sym("r")
 WEDGE = ("m", "M", "g", "theta")
 XY = ("x", "y")
+WAVE = ("A", "omega", "t", "k", "x", "f", "g", "h")
+A, omega, t, f = sym("A"), sym("omega"), sym("t"), sym("f")
 
 CASES = [
     # operators and precedence
@@ -81,6 +83,19 @@ CASES = [
     ("sin x/2", XY, sin(x) / 2),
     ("sqrt x", XY, sqrt(x)),
     ("cos sin x", XY, cos(sin(x))),
+    # ...or the word typed without a space that starts with it, as physics writes `A cos ωt`
+    ("A cos ωt", WAVE, A * cos(omega * t)),
+    ("A cos ω t", WAVE, A * cos(omega) * t),
+    ("sin kx cos ωt", WAVE, sin(k * x) * cos(omega * t)),
+    ("A sin(kx - ωt)", WAVE, A * sin(k * x - omega * t)),
+    ("cos 2ωt", WAVE, cos(2 * omega * t)),
+    ("sin 2πft", WAVE, sin(2 * pi * f * t)),
+    ("√2gh", WAVE, sqrt(2 * g * h)),
+    ("sqrt 2gh", WAVE, sqrt(2 * g * h)),
+    ("sin^2 ωt", WAVE, sin(omega * t) ** 2),
+    ("sin ωt^2", WAVE, sin(omega * t**2)),
+    ("sinθcosθ", WEDGE, sin(theta) * cos(theta)),
+    ("m sinθ g", WEDGE, m * sin(theta) * g),
     ("sin|x|", XY, sin(Abs(x))),
     (
         "-m g sin(θ)cos(θ)/(M + m sin^2 θ)",
