@@ -84,6 +84,10 @@ def tokenize(text: str, limits: InputLimits, *, units_in_fonts: bool = False) ->
         elif ch in "\\{}":
             if ch == "\\":
                 emitted, i = latex.command(i)
+                # As in LaTeX, the spaces that end a control word are no gap: `\cos\omega t` shows ωt.
+                if emitted and chars[i - 1].isalpha():
+                    while i < n and chars[i].isspace():
+                        i += 1
             else:
                 emitted, i = (latex.open_brace if ch == "{" else latex.close_brace)(i)
             if not emitted:  # a spacing command, or `{}`

@@ -36,6 +36,11 @@ READS_AS_PLAIN = [
     (r"-\frac{m g \sin\theta\cos\theta}{M + m\sin^2\theta}", "-m g sin(θ)cos(θ)/(M + m sin^2 θ)"),
     (r"-\dfrac{m g \sin\theta\cos\theta}{M + m\sin^{2}\theta}", "-m g sin(θ)cos(θ)/(M + m sin^2 θ)"),
     (r"\tfrac{x}{y}", "x/y"),
+    # the spaces that end a control word are no gap, as in LaTeX: the argument goes on (`cos ωt`)
+    (r"x\cos\omega t", "x cos(ω t)"),
+    (r"x \cos \omega t", "x cos(ω t)"),
+    (r"x\cos\omega\,t", "x cos(ω) t"),
+    (r"\sin\theta \cos\theta", "sin(θ) cos(θ)"),
     (r"\frac{1}{2} m v_0^2", "1/2 m v_0^2"),
     (r"\frac12 m v_{0}^{2}", "(1/2) m v_0^2"),
     (r"\frac xy", "x/y"),
