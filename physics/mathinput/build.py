@@ -26,6 +26,12 @@ _ROOT_BITS_BUDGET = 512
 # Exact numbers above this size each cost sympy real work (trig of pi/big, logs, gcds); an answer may
 # build distinct ones only up to twice max_int_bits in total.
 _BIG_NUMBER_BITS = 256
+# A root of an expression that may be negative may be complex, and sympy, building a root or abs() of
+# such roots nested in one another, asks whether each is real through its argument, which asks the
+# same of the roots inside it: the time grows five- to tenfold per level (abs of a sum of roots of
+# negatives three deep took 0.6 s, a plain nest eight deep seconds). Two such levels are far more than
+# physics needs (sqrt(2g(h - sqrt(R^2 - x^2)))); roots of what is surely nonnegative are not counted.
+_MAX_ROOT_NESTING = 2
 
 _FUNCTIONS: dict[str, Callable[[sympy.Expr], sympy.Expr]] = {
     "exp": sympy.exp,
@@ -155,6 +161,11 @@ class Builder:
                         raise self._too_large("A power of numbers in the answer is too large to compute.")
             elif base is not sympy.E and (abs(p) > limits.max_exponent * q or q > limits.max_exponent):
                 raise self._too_large(f"An exponent is too large (at most {limits.max_exponent}).")
+        if not exponent.is_Integer and _root_nesting(base) >= _MAX_ROOT_NESTING:
+            raise self._too_large(
+                f"Roots of expressions that may be negative are nested too deeply (at most {_MAX_ROOT_NESTING} "
+                "inside one another)."
+            )
         return self._real(self._checked(sympy.Pow(base, exponent)), "power")
 
     def _real(self, expr: sympy.Expr, what: str) -> sympy.Expr:
@@ -270,6 +281,26 @@ class _Run:
             return False
         self._budget -= bits
         return True
+
+
+def _root_nesting(expr: sympy.Basic) -> int:
+    """How deep roots (non-integer powers) of what may be negative nest in `expr`, one inside another's base."""
+    inner = max((_root_nesting(arg) for arg in expr.args), default=0)
+    if expr.is_Pow and not expr.exp.is_Integer and not _surely_nonnegative(expr.base):
+        return inner + 1
+    return inner
+
+
+def _surely_nonnegative(expr: sympy.Basic) -> bool:
+    """Nonnegative by its form alone (sympy's own answer is the costly question): unknown is False."""
+    if expr.is_Number or expr.is_NumberSymbol or expr.is_Symbol:
+        return bool(expr.is_nonnegative)  # a stored assumption, or a number's sign
+    if expr.is_Add or expr.is_Mul:
+        return all(_surely_nonnegative(arg) for arg in expr.args)
+    if expr.is_Pow:
+        even = expr.exp.is_Integer and expr.exp.is_even
+        return _surely_nonnegative(expr.base) or bool(even and expr.base.is_Symbol and expr.base.is_real)
+    return isinstance(expr, sympy.Abs)
 
 
 def _bits(number: sympy.Rational) -> int:

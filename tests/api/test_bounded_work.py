@@ -36,6 +36,8 @@ HOSTILE = [
     pytest.param("(" * 100_000 + "x" + ")" * 100_000, id="deep-nesting"),
     pytest.param("m" * 1_000_000, id="one-megabyte"),
     pytest.param("m*g*h*sec(sinh(10^40)^2)", id="function-of-an-astronomical-constant"),
+    pytest.param("m*g*h*" + "(-" * 9 + "x^2-1" + ")^(1/3)" * 9, id="roots-of-negatives-nest"),
+    pytest.param(r"m g h \cdot " + r"\sqrt[3]{-" * 9 + "x^2-1" + "}" * 9, id="latex-roots-of-negatives-nest"),
 ]
 
 
