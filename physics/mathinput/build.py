@@ -32,6 +32,12 @@ _BIG_NUMBER_BITS = 256
 # negatives three deep took 0.6 s, a plain nest eight deep seconds). Two such levels are far more than
 # physics needs (sqrt(2g(h - sqrt(R^2 - x^2)))); roots of what is surely nonnegative are not counted.
 _MAX_ROOT_NESTING = 2
+# A function asks whether its argument is real or positive, and sympy answers for an argument that may
+# be complex by writing out its real and imaginary parts: a power (a + ib)^n as n + 1 terms, of the parts
+# of a and b, a function's parts from its argument's. `_complex_weight` is about that size; past the
+# budget the parts took from a third of a second (abs(cosh(cosh(acos(x)^5)^5)), weight 56) to minutes
+# (cosh(cosh(θ acos(θ)^100)^100)), while what is surely real weighs 1 and physics answers a few.
+_COMPLEX_WEIGHT_BUDGET = 40
 
 _FUNCTIONS: dict[str, Callable[[sympy.Expr], sympy.Expr]] = {
     "exp": sympy.exp,
@@ -67,6 +73,7 @@ class Builder:
         self._root_bits = 0
         self._big_numbers: set[sympy.Rational] = set()
         self._big_bits = 0
+        self._weights: dict[sympy.Basic, int] = {}
 
     def build(self, node: Node) -> sympy.Expr:
         return self._checked(self._build(node))
@@ -104,6 +111,8 @@ class Builder:
                 # sympy would reduce sec(e^(10^40)) modulo π with π to as many bits as the argument's
                 # magnitude has, whenever it is asked whether the value is real (here, or building on it).
                 raise self._too_large(f"The argument of {node.func}(…) is too large to compute with.")
+            if self._complex_weight(arg) > _COMPLEX_WEIGHT_BUDGET:
+                raise self._too_large(f"The argument of {node.func}(…) is too complicated to compute with.")
             if node.func == "factorial":
                 return self._factorial(arg)
             if node.func == "sqrt":
@@ -161,12 +170,31 @@ class Builder:
                         raise self._too_large("A power of numbers in the answer is too large to compute.")
             elif base is not sympy.E and (abs(p) > limits.max_exponent * q or q > limits.max_exponent):
                 raise self._too_large(f"An exponent is too large (at most {limits.max_exponent}).")
+        if not exponent.is_Integer and self._complex_weight(base) > _COMPLEX_WEIGHT_BUDGET:
+            raise self._too_large("The base of this power is too complicated to compute with.")
         if not exponent.is_Integer and _root_nesting(base) >= _MAX_ROOT_NESTING:
             raise self._too_large(
                 f"Roots of expressions that may be negative are nested too deeply (at most {_MAX_ROOT_NESTING} "
                 "inside one another)."
             )
         return self._real(self._checked(sympy.Pow(base, exponent)), "power")
+
+    def _complex_weight(self, expr: sympy.Basic) -> int:
+        """The size sympy's real and imaginary parts of `expr` would have (`_COMPLEX_WEIGHT_BUDGET`)."""
+        known = self._weights.get(expr)
+        if known is not None:
+            return known
+        if _surely_real(expr):
+            weight = 1
+        elif expr.is_Add or expr.is_Mul:
+            weight = sum(self._complex_weight(arg) for arg in expr.args)
+        elif expr.is_Pow and expr.exp.is_Integer:
+            weight = self._complex_weight(expr.base) * abs(int(expr.exp))
+        else:  # a function or a root: its parts are functions of its argument's
+            weight = 1 + sum(self._complex_weight(arg) for arg in expr.args)
+        weight = min(weight, _COMPLEX_WEIGHT_BUDGET + 1)  # keeps the products small
+        self._weights[expr] = weight
+        return weight
 
     def _real(self, expr: sympy.Expr, what: str) -> sympy.Expr:
         """Refuse a constant with no real value (acos(2), sqrt(-1)): nothing physical is imaginary, and
@@ -301,6 +329,28 @@ def _surely_nonnegative(expr: sympy.Basic) -> bool:
         even = expr.exp.is_Integer and expr.exp.is_even
         return _surely_nonnegative(expr.base) or bool(even and expr.base.is_Symbol and expr.base.is_real)
     return isinstance(expr, sympy.Abs)
+
+
+# Real for every real argument (or infinite: tan at a pole is not complex).
+_REAL_OF_REAL = (
+    *(sympy.sin, sympy.cos, sympy.tan, sympy.sec, sympy.csc, sympy.cot),
+    *(sympy.exp, sympy.sinh, sympy.cosh, sympy.tanh, sympy.atan, sympy.acot),
+)
+
+
+def _surely_real(expr: sympy.Basic) -> bool:
+    """Real by its form alone (sympy's own answer is the costly question): unknown is False."""
+    if expr.is_Rational or expr.is_Float or expr.is_NumberSymbol or expr.is_Symbol:
+        return bool(expr.is_real)  # a stored assumption
+    if expr.is_Add or expr.is_Mul:
+        return all(_surely_real(arg) for arg in expr.args)
+    if expr.is_Pow:
+        return (expr.exp.is_Integer and _surely_real(expr.base)) or (
+            _surely_nonnegative(expr.base) and _surely_real(expr.exp)
+        )
+    if isinstance(expr, sympy.Abs) or (isinstance(expr, sympy.log) and _surely_nonnegative(expr.args[0])):
+        return True  # log(0) has no value at all, and is refused as such
+    return isinstance(expr, _REAL_OF_REAL) and _surely_real(expr.args[0])
 
 
 def _bits(number: sympy.Rational) -> int:

@@ -38,6 +38,11 @@ HOSTILE = [
     pytest.param("m*g*h*sec(sinh(10^40)^2)", id="function-of-an-astronomical-constant"),
     pytest.param("m*g*h*" + "(-" * 9 + "x^2-1" + ")^(1/3)" * 9, id="roots-of-negatives-nest"),
     pytest.param(r"m g h \cdot " + r"\sqrt[3]{-" * 9 + "x^2-1" + "}" * 9, id="latex-roots-of-negatives-nest"),
+    pytest.param("m*g*h*cosh(cosh(x acos(x)^100)^100)", id="function-of-a-complex-power"),
+    pytest.param(
+        r"m g h \cosh\left(\cosh^{100}\left(x\arccos^{100}x\right)\right)",
+        id="latex-function-of-a-complex-power",
+    ),
 ]
 
 

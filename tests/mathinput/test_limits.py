@@ -56,6 +56,11 @@ HOSTILE = [
         "abs(" + "+".join(["(-(-(-x)^(1/5))^(1/5))^(1/5)"] * 4) + ")",
     ),
     ("fifth roots of a negative sum nested seven deep", "(-1-" * 7 + "x" + ")^(1/5)" * 7),
+    # A function asks whether its argument is real, and sympy writes out the real and imaginary parts
+    # of an argument that may be complex: (a + ib)^100 in 101 terms, functions of them twice over.
+    ("function of a function of a complex power", "tanh(cosh(acos(x)^100))"),
+    ("abs of a function of a complex power", "abs(cosh(acos(x)^100))"),
+    ("LaTeX squared cosh nested five deep", r"\cosh^2\cosh^2\cosh^2\cosh^2\cosh^2\arccos x"),
 ]
 
 
@@ -92,6 +97,10 @@ WITHIN_LIMITS = [
     "(-(-x)^(1/3))^(1/3)",  # roots of what may be negative, two deep
     r"\sqrt{2 x \left(x - \sqrt{x^2 - 1}\right)}",
     "sqrt(1 + sqrt(1 + sqrt(1 + sqrt(1 + x))))",  # roots of what is surely positive, any depth
+    "acos(x)^100",  # a power that may be complex, no function asking about it
+    "abs(cosh(acos(x)^12))",
+    "sqrt(1 - x^2)^3 asin(x)^2 log(x - 1)",
+    "log10(" * 12 + "x^2+2" + ")" * 12,
 ]
 
 
