@@ -38,6 +38,12 @@ _MAX_ROOT_NESTING = 2
 # budget the parts took from a third of a second (abs(cosh(cosh(acos(x)^5)^5)), weight 56) to minutes
 # (cosh(cosh(θ acos(θ)^100)^100)), while what is surely real weighs 1 and physics answers a few.
 _COMPLEX_WEIGHT_BUDGET = 40
+# asin(sin(N)) and its kin reduce a constant N modulo 2π and compare the rest with π, at most to sympy's
+# evalf precision: past about 10^105 the comparison cannot be decided and sympy raises (a grader crash,
+# not a verdict). Such an angle has no meaning to check; below this size sympy reduces it exactly.
+_MAX_REDUCED_ANGLE = 2.0**300
+_INVERSE_TRIG = frozenset({"asin", "acos", "atan", "asec", "acsc", "acot"})
+_TRIG = (sympy.sin, sympy.cos, sympy.tan, sympy.sec, sympy.csc, sympy.cot)
 
 _FUNCTIONS: dict[str, Callable[[sympy.Expr], sympy.Expr]] = {
     "exp": sympy.exp,
@@ -113,6 +119,8 @@ class Builder:
                 raise self._too_large(f"The argument of {node.func}(…) is too large to compute with.")
             if self._complex_weight(arg) > _COMPLEX_WEIGHT_BUDGET:
                 raise self._too_large(f"The argument of {node.func}(…) is too complicated to compute with.")
+            if node.func in _INVERSE_TRIG and isinstance(arg, _TRIG) and _beyond_reduction(arg.args[0]):
+                raise self._too_large(f"The angle inside {node.func}(…) is too large to compute with.")
             if node.func == "factorial":
                 return self._factorial(arg)
             if node.func == "sqrt":
@@ -351,6 +359,16 @@ def _surely_real(expr: sympy.Basic) -> bool:
     if isinstance(expr, sympy.Abs) or (isinstance(expr, sympy.log) and _surely_nonnegative(expr.args[0])):
         return True  # log(0) has no value at all, and is refused as such
     return isinstance(expr, _REAL_OF_REAL) and _surely_real(expr.args[0])
+
+
+def _beyond_reduction(angle: sympy.Basic) -> bool:
+    """Whether a constant angle is too large for sympy to reduce modulo 2π (`_MAX_REDUCED_ANGLE`)."""
+    if not angle.is_number:
+        return False
+    try:
+        return abs(complex(angle)) > _MAX_REDUCED_ANGLE
+    except (TypeError, OverflowError):
+        return True
 
 
 def _bits(number: sympy.Rational) -> int:

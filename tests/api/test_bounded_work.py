@@ -43,6 +43,7 @@ HOSTILE = [
         r"m g h \cosh\left(\cosh^{100}\left(x\arccos^{100}x\right)\right)",
         id="latex-function-of-a-complex-power",
     ),
+    pytest.param("m*g*h*asin(sin(10^300))", id="inverse-trig-of-a-huge-angle"),
 ]
 
 
