@@ -24,9 +24,10 @@ from typing import Protocol, cast
 import sympy
 
 from physics.dimensions import Dimension
-from physics.errors import AnswerError, SpecError
+from physics.errors import AmbiguousDivision, AnswerError, SpecError
 from physics.mathinput import InputLimits, ParsedMath, parse_expression
 from physics.mathinput.powered import other_reading_hint, reading_note
+from physics.mathinput.reader import build_reading, read_tree
 from physics.numeric import NumericSpec
 from physics.pickling import pickled_by_fields
 from physics.symbolic import (
@@ -37,6 +38,8 @@ from physics.symbolic import (
     prepare_reference,
 )
 from physics.symbolic.dimensional import DimensionMismatch, UnknownDimension, expression_dimension
+from physics.symbolic.judge import EQUIVALENT
+from physics.symbolic.quick import surely_correct
 from physics.symbolic.reading import read_symbolic_answer
 from physics.units import unit_dimension
 from physics.verdict import InputProblem, Preview, Verdict
@@ -93,19 +96,28 @@ class SymbolicQuestion:
         reference = self.reference
         dimensions = {symbol.name: dim for symbol, dim in reference.dims.items()}
         try:
-            parsed = read_symbolic_answer(answer, self.names, limits, dimensions, reference.dimension)
+            reading = read_tree(answer, self.names, limits=limits)
+        except AmbiguousDivision:
+            reading = None  # settled by dimension, where it can be, as the answer is read in full below
+        except AnswerError as error:
+            return Verdict.invalid(error)
+        # Most answers are right: recognised on the parse tree, they skip building sympy's (quick.py).
+        if reading is not None and surely_correct(reading, reference, limits.max_exponent):
+            return _led(Verdict.graded(EQUIVALENT, reading.read_as), reading.read_as.note)
+        try:
+            if reading is None:
+                parsed = read_symbolic_answer(answer, self.names, limits, dimensions, reference.dimension)
+            else:
+                parsed = build_reading(reading, limits)
             judgement = judge_symbolic(parsed.expr, reference)
         except AnswerError as error:
             return Verdict.invalid(error)
-        verdict = Verdict.graded(judgement, parsed.read_as)
         lead = parsed.read_as.note  # how the answer was read (chosen by dimension, `sin θ^2`): said first
         if not judgement.correct and self._other_reading_is_right(answer, limits, parsed):
             # In place of the note on `sin θ^2`: it was read as sin(θ²), and (sin θ)² would be right.
             assert lead is not None  # a bare powered argument always has its note
             lead = lead.replace(str(reading_note(parsed.powered)), other_reading_hint(parsed.powered))
-        if lead is not None:
-            return dataclasses.replace(verdict, feedback=f"{lead}. {verdict.feedback}")
-        return verdict
+        return _led(Verdict.graded(judgement, parsed.read_as), lead)
 
     def _other_reading_is_right(self, answer: str, limits: InputLimits, parsed: ParsedMath) -> bool:
         """Whether reading each bare function argument's power as the function's (`sin θ^2` as
@@ -129,6 +141,11 @@ class SymbolicQuestion:
         except AnswerError as error:
             return Preview(None, InputProblem(error.message, error.position))
         return Preview(parsed.read_as, None)
+
+
+def _led(verdict: Verdict, lead: str | None) -> Verdict:
+    """The verdict with `lead` (how the answer was read) said before its feedback."""
+    return verdict if lead is None else dataclasses.replace(verdict, feedback=f"{lead}. {verdict.feedback}")
 
 
 @dataclass(frozen=True)

@@ -45,7 +45,7 @@ _MAX_REDUCED_ANGLE = 2.0**300
 _INVERSE_TRIG = frozenset({"asin", "acos", "atan", "asec", "acsc", "acot"})
 _TRIG = (sympy.sin, sympy.cos, sympy.tan, sympy.sec, sympy.csc, sympy.cot)
 
-_FUNCTIONS: dict[str, Callable[[sympy.Expr], sympy.Expr]] = {
+FUNCTIONS: dict[str, Callable[[sympy.Expr], sympy.Expr]] = {
     "exp": sympy.exp,
     "log": sympy.log,
     "log10": lambda x: sympy.log(x, 10),
@@ -125,7 +125,7 @@ class Builder:
                 return self._factorial(arg)
             if node.func == "sqrt":
                 return self._power(arg, sympy.Rational(1, 2))
-            return self._real(self._checked(_FUNCTIONS[node.func](arg)), node.func)
+            return self._real(self._checked(FUNCTIONS[node.func](arg)), node.func)
         operand = self._build(node.operand)
         self._position = node.pos
         if node.kind == "factorial":

@@ -16,6 +16,7 @@ from physics.mathinput.parser import Parser
 from physics.mathinput.powered import PoweredArgument, reading_note
 from physics.mathinput.render import render_latex, render_text
 from physics.mathinput.tokens import Kind, Token, tokenize
+from physics.mathinput.tree import Node
 from physics.mathinput.words import resolve_words
 from physics.verdict import ReadAs
 
@@ -69,6 +70,16 @@ class ParsedMath:
     powered: tuple[PoweredArgument, ...] = ()  # bare function arguments with a power: `sin θ^2`
 
 
+@dataclass(frozen=True)
+class TreeReading:
+    """An answer read as far as its parse tree and how it reads, before sympy builds anything."""
+
+    tree: Node
+    read_as: ReadAs
+    powered: tuple[PoweredArgument, ...]
+    symbols: Mapping[str, sympy.Symbol]  # what each name in the tree stands for
+
+
 @lru_cache(maxsize=256)
 def _name_table(names: tuple[tuple[str, sympy.Symbol], ...]) -> NameTable:
     """One table per set of declared names (read-only once built): every answer to a part reuses it."""
@@ -93,9 +104,32 @@ def parse_math(
     Raises ParseError, AmbiguousInput, UnknownSymbol, UnknownFunction or TooLarge, each with a 0-based
     `position` into `text`; sizes are checked before any value is computed.
     """
-    expr, read_as, powered = _read(text, names, limits, choices, render=True, powers_outside=powers_outside)
-    assert read_as is not None
-    return ParsedMath(expr, read_as, powered)
+    return build_reading(
+        read_tree(text, names, limits=limits, choices=choices, powers_outside=powers_outside), limits
+    )
+
+
+def read_tree(
+    text: str,
+    names: Mapping[str, sympy.Symbol],
+    *,
+    limits: InputLimits = DEFAULT_LIMITS,
+    choices: Mapping[int, int] | None = None,
+    powers_outside: bool = False,
+) -> TreeReading:
+    """`parse_math` up to the parse tree: raises what it raises before building, never a refusal of the
+    builder's (`build_reading` makes those)."""
+    tree, powered, table = _tree(text, names, limits, choices, powers_outside)
+    try:
+        read_as = ReadAs(render_text(tree), render_latex(tree), reading_note(powered))
+    except RecursionError:
+        raise _too_deep() from None
+    return TreeReading(tree, read_as, powered, table.symbols)
+
+
+def build_reading(reading: TreeReading, limits: InputLimits = DEFAULT_LIMITS) -> ParsedMath:
+    """The reading's sympy expression: what `parse_math` returns for the text `reading` was read from."""
+    return ParsedMath(_built(reading.tree, reading.symbols, limits), reading.read_as, reading.powered)
 
 
 def parse_expression(
@@ -103,17 +137,17 @@ def parse_expression(
 ) -> sympy.Expr:
     """`parse_math(...).expr`, without rendering how the text reads (a sixth of the work): for texts
     whose reading is never shown, such as a reference answer. Raises what parse_math raises."""
-    return _read(text, names, limits, None, render=False, powers_outside=False)[0]
+    tree, _, table = _tree(text, names, limits, None, False)
+    return _built(tree, table.symbols, limits)
 
 
-def _read(
+def _tree(
     text: str,
     names: Mapping[str, sympy.Symbol],
     limits: InputLimits,
     choices: Mapping[int, int] | None,
-    render: bool,
     powers_outside: bool,
-) -> tuple[sympy.Expr, ReadAs | None, tuple[PoweredArgument, ...]]:
+) -> tuple[Node, tuple[PoweredArgument, ...], NameTable]:
     table = _name_table(tuple(names.items()))
     tokens = tokenize(text, limits)
     _refuse_exponent_letter_clash(text, tokens, table)
@@ -121,12 +155,21 @@ def _read(
     try:
         parser = Parser(text, tokens, limits, choices, powers_outside=powers_outside)
         tree = parser.parse()
-        expr = Builder(table.symbols, limits).build(tree)
-        powered = tuple(parser.powered)
-        read_as = ReadAs(render_text(tree), render_latex(tree), reading_note(powered)) if render else None
     except RecursionError:
-        # Only reachable when a caller raises max_depth far above the default.
-        raise TooLarge("The answer is nested too deeply.", 0) from None
+        raise _too_deep() from None
+    return tree, tuple(parser.powered), table
+
+
+def _built(tree: Node, symbols: Mapping[str, sympy.Symbol], limits: InputLimits) -> sympy.Expr:
+    try:
+        expr = Builder(symbols, limits).build(tree)
+    except RecursionError:
+        raise _too_deep() from None
     if _has_undefined(expr):
         raise ParseError("The answer has no value: it divides by zero or takes the log of zero.", 0)
-    return expr, read_as, powered
+    return expr
+
+
+def _too_deep() -> TooLarge:
+    # Only reachable when a caller raises max_depth far above the default.
+    return TooLarge("The answer is nested too deeply.", 0)

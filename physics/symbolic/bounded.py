@@ -32,7 +32,7 @@ Mask = npt.NDArray[np.bool_]
 _U = 2.0**-53  # float64's unit roundoff
 # The absolute error every value carries: far above float64's subnormals, far below any sampled value.
 _TINY = 1e-290
-# The multiprecision evaluator refuses function arguments beyond 2^64 (numeric._MAX_EXP_ARGUMENT_BITS).
+# The multiprecision evaluator refuses function arguments beyond 2^64 (numeric.MAX_ARGUMENT_BITS).
 _HUGE_ARGUMENT = 2.0**62
 _MAX_POWER = 1024
 # Relative errors beyond this are not small: first-order bounds no longer hold.

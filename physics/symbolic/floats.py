@@ -78,7 +78,7 @@ def _acot(x: Floats) -> Floats:
     return result
 
 
-_UNARY: dict[type, Callable[[Floats], Floats]] = {
+UNARY: dict[type, Callable[[Floats], Floats]] = {
     sympy.sin: np.sin,
     sympy.cos: np.cos,
     sympy.tan: np.tan,
@@ -178,7 +178,7 @@ class FloatEvaluator:
             if exponent == sympy.S.Half:
                 return np.sqrt(bases)
             return np.power(bases, self._value(exponent))  # nan for a negative base: not real
-        unary = _UNARY.get(type(expr))
+        unary = UNARY.get(type(expr))
         if unary is not None and len(expr.args) == 1:
             return unary(self._value(expr.args[0]))
         if isinstance(expr, sympy.atan2):

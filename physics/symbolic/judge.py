@@ -50,6 +50,7 @@ from physics.symbolic.reference import PreparedReference, exact_numbers, over_co
 from physics.verdict import Judgement, Reason
 
 CORRECT = "Correct."
+EQUIVALENT = Judgement(True, Reason.EQUIVALENT, CORRECT)
 SIGN_FEEDBACK = "Check the sign of your answer."
 FACTOR_FEEDBACK = (
     "Your answer is off by a constant factor: check the numerical factors (such as 2, π or a square root)."
@@ -437,17 +438,17 @@ def judge_symbolic(answer: sympy.Expr, reference: PreparedReference) -> Judgemen
 def _judge(expr: sympy.Expr, reference: PreparedReference) -> Judgement:
     """judge_symbolic of an answer already over the context's symbols, with exact numbers."""
     if expr == reference.expected:
-        return Judgement(True, Reason.EQUIVALENT, CORRECT)
+        return EQUIVALENT
     answer_at = _AtPoints(expr, reference)
     decided, floats = _first_look(expr, reference, answer_at)
     if decided is True:
-        return Judgement(True, Reason.EQUIVALENT, CORRECT)
+        return EQUIVALENT
     if decided is False and floats is not None:
         quick = _diagnose_in_floats(expr, floats, reference, answer_at)
         if quick is not None:
             return quick
     values = Evaluator(reference.sample.columns, reference.sample.size, PREC)(expr)
     if decided is None and _equivalent(expr, values, reference):
-        return Judgement(True, Reason.EQUIVALENT, CORRECT)
+        return EQUIVALENT
     # The reference is defined at every sample point, so a missing value is the answer's own gap.
     return diagnose(expr, values, reference, undefined=any(v is None for v in values))

@@ -78,11 +78,11 @@ def _safe(fn: Callable[..., Any], *args: Any) -> Mpf | None:
 
 # No function is evaluated at |x| beyond 2^64: exp(x) has no value worth comparing there, and mpmath
 # would first compute ln 2 or pi to as many bits as x has (m^(m^(m^m)) made that run for minutes).
-_MAX_EXP_ARGUMENT_BITS = 64
+MAX_ARGUMENT_BITS = 64
 
 
 def _exp(x: Mpf, prec: int) -> Mpf | None:
-    if magnitude_bits(x) > _MAX_EXP_ARGUMENT_BITS:
+    if magnitude_bits(x) > MAX_ARGUMENT_BITS:
         return None
     return as_mpf(libmp.mpf_exp(x, prec, RND))
 
@@ -138,7 +138,7 @@ def _sign(x: Mpf, prec: int) -> Mpf:
     return from_int(libmp.mpf_sign(x))
 
 
-_UNARY: dict[type, Unary] = {
+UNARY: dict[type, Unary] = {
     sympy.sin: _plain(libmp.mpf_sin),
     sympy.cos: _plain(libmp.mpf_cos),
     sympy.tan: _plain(libmp.mpf_tan),
@@ -225,15 +225,15 @@ class Evaluator:
         if expr.is_Float:
             return self.constant(_finite(libmp.mpf_pos(expr._mpf_, prec, RND)))
         if expr.is_Add:
-            return self._add([self(arg) for arg in expr.args])
+            return self.add([self(arg) for arg in expr.args])
         if expr.is_Mul:
             return self._product([self(arg) for arg in expr.args])
         if expr.is_Pow:
             return self._pow(expr)
-        unary = _UNARY.get(type(expr))
+        unary = UNARY.get(type(expr))
         if unary is not None and len(expr.args) == 1:
             return [
-                None if x is None or magnitude_bits(x) > _MAX_EXP_ARGUMENT_BITS else _safe(unary, x, prec)
+                None if x is None or magnitude_bits(x) > MAX_ARGUMENT_BITS else _safe(unary, x, prec)
                 for x in self(expr.args[0])
             ]
         if isinstance(expr, sympy.atan2):
@@ -255,7 +255,8 @@ class Evaluator:
             return self.constant(None)  # I, zoo, oo, nan: never a real value
         return self._by_sympy(expr)
 
-    def _add(self, columns: Sequence[Column]) -> Column:
+    def add(self, columns: Sequence[Column]) -> Column:
+        """Columns summed point by point; a sum that cancels to rounding noise is exact zero."""
         out: Column = []
         for row in zip(*columns, strict=True):
             if any(v is None for v in row):

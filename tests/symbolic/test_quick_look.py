@@ -1,0 +1,152 @@
+"""A right answer recognised on its parse tree (physics.symbolic.quick) gets the very verdict the full
+path (build sympy's tree, judge it) gives; everything the look cannot vouch for goes the full way."""
+
+from __future__ import annotations
+
+import random
+
+import pytest
+
+import physics.checking
+from physics.checking import SymbolDecl, SymbolicQuestion
+from physics.mathinput import DEFAULT_LIMITS
+from physics.mathinput.reader import read_tree
+from physics.symbolic.quick import surely_correct
+from physics.verdict import Verdict
+from problems.kinds.symbolic import SymbolicJob
+
+ANGLE = ("1", ("0", "pi/2"))
+WEDGE = {"m": "kg", "M": "kg", "g": "m/s^2", "theta": ANGLE}
+YOYO = {"m": "kg", "r": "m", "k": "m", "g": "m/s^2"}
+LJ = {"U0": "J", "r0": "m", "r": "m", "m": "kg"}
+PENDULUM = {"m": "kg", "M": "kg", "L": "m", "theta": ANGLE, "g": "m/s^2"}
+OSCILLATOR = {"A": "m", "omega": "1/s", "t": "s", "phi": "1", "k": "1/m", "x": "m"}
+
+WEDGE_A = "-m*g*sin(theta)*cos(theta)/(M + m*sin(theta)**2)"
+YOYO_A = "g*r**2/(r**2 + k**2)"
+LJ_F = "12*U0/r0*((r0/r)**13 - (r0/r)**7)"
+PENDULUM_V = "(m + M)/m*sqrt(2*g*L*(1 - cos(theta)))"
+WAVE = "A*cos(omega*t - k*x + phi)"
+
+
+def question(expected: str, symbols: dict[str, object]) -> SymbolicQuestion:
+    decls = tuple(
+        SymbolDecl(name, spec) if isinstance(spec, str) else SymbolDecl(name, spec[0], range=spec[1])  # type: ignore[index]
+        for name, spec in symbols.items()
+    )
+    compiled = SymbolicJob("", expected, decls).question()
+    return compiled.question
+
+
+def recognised(answer: str, asked: SymbolicQuestion) -> bool:
+    return surely_correct(read_tree(answer, asked.names), asked.reference, DEFAULT_LIMITS.max_exponent)
+
+
+def in_full(answer: str, asked: SymbolicQuestion, monkeypatch: pytest.MonkeyPatch) -> Verdict:
+    with monkeypatch.context() as patched:
+        patched.setattr(physics.checking, "surely_correct", lambda *_: False)
+        return asked.grade(answer, DEFAULT_LIMITS)
+
+
+# Right answers as students type them, each recognised on its tree.
+RIGHT = [
+    ("-m g sin(θ)cos(θ)/(M + m sin^2 θ)", WEDGE_A, WEDGE),
+    ("-(m g sin(2θ)/2)/(M + m sin(θ)^2)", WEDGE_A, WEDGE),
+    ("-m*g*sin(theta)*cos(theta)/(M + m - m*cos(theta)^2)", WEDGE_A, WEDGE),
+    ("g/(1 + k^2/r^2)", YOYO_A, YOYO),
+    ("g r²/(r² + k²)", YOYO_A, YOYO),
+    (r"\frac{g}{1 + \frac{k^2}{r^2}}", YOYO_A, YOYO),
+    ("12 U0 ((r0/r)^13 - (r0/r)^7)/r0", LJ_F, LJ),
+    ("12 U0 r0^12/r^13 - 12 U0 r0^6/r^7", LJ_F, LJ),
+    ("2(m + M) sqrt(g L) sin(θ/2)/m", PENDULUM_V, PENDULUM),
+    ("(1 + M/m) √(2gL(1 - cos θ))", PENDULUM_V, PENDULUM),
+    ("A cos(ωt - kx + φ)", WAVE, OSCILLATOR),
+    ("A(cos(ωt - kx) cos φ - sin(ωt - kx) sin φ)", WAVE, OSCILLATOR),
+    ("A e^0 cos(omega t + phi - k x)", WAVE, OSCILLATOR),
+    ("(m + 3 M)^2 m g sin θ cos θ/((m^2 + 6 m M + 9 M^2)(-M - m sin^2 θ))", WEDGE_A, WEDGE),
+]
+
+
+@pytest.mark.parametrize(("answer", "expected", "symbols"), RIGHT)
+def test_a_right_answer_is_recognised_on_its_tree_with_the_full_paths_verdict(
+    answer: str, expected: str, symbols: dict[str, object], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    asked = question(expected, symbols)
+    assert recognised(answer, asked)
+    verdict = asked.grade(answer, DEFAULT_LIMITS)
+    assert verdict.outcome.value == "correct"
+    assert verdict == in_full(answer, asked, monkeypatch)
+
+
+# What the look must leave to the full path, each for the reason in its id: the verdict is then the full
+# path's alone (some are right answers, some wrong, some unreadable there).
+DECLINED = {
+    "wrong": ("-m g sin(θ)cos(θ)/M", WEDGE_A, WEDGE),
+    "wrong by one part in 10^12": ("(1 + 10^-12) g r^2/(r^2 + k^2)", YOYO_A, YOYO),
+    "thirty digits of pi": ("3.14159265358979323846264338328 A cos(ωt - kx + φ)/pi", WAVE, OSCILLATOR),
+    "a log of an exact zero": (f"{YOYO_A} + 0 log(sin(pi))", YOYO_A, YOYO),
+    "a division by an exact zero": (f"{YOYO_A} + 1/sin(pi) - 1/sin(pi)", YOYO_A, YOYO),
+    "a structural zero divided by": (f"({YOYO_A}) (1 + 0/(m - m))", YOYO_A, YOYO),
+    "a merged exponent past the limit": (f"({YOYO_A}) (m^60)^2/(m^60)^2", YOYO_A, YOYO),
+    "a product merging past the limit": (f"({YOYO_A}) m^60 m^50/(m^60 m^50)", YOYO_A, YOYO),
+    "a factorial": (f"({YOYO_A}) 3!/6", YOYO_A, YOYO),
+    "a percent sign": (f"({YOYO_A}) 100%", YOYO_A, YOYO),
+    "roots nested": (f"({YOYO_A}) sqrt(sqrt(m^2))/sqrt(m)", YOYO_A, YOYO),
+    "a cube root": (f"({YOYO_A}) (m^3)^(1/3)/m", YOYO_A, YOYO),
+    "a constant with no real value": (f"{YOYO_A} + 0 acos(2)", YOYO_A, YOYO),
+    "an exponent that is not a number": (f"({YOYO_A}) m^(r/k)/m^(r/k)", YOYO_A, YOYO),
+    "numbers too large in all": (f"({YOYO_A}) (2^64 + 1)^4/(2^64 + 1)^4", YOYO_A, YOYO),
+    "a value beyond 2^100 on the way": (f"{YOYO_A} + e^80 - e^80", YOYO_A, YOYO),
+    "too many nodes": (f"{YOYO_A}" + " + m - m" * 70, YOYO_A, YOYO),
+    "an angle sympy reduces exactly": (f"{YOYO_A} + sin(pi)", YOYO_A, YOYO),
+}
+
+
+@pytest.mark.parametrize(("answer", "expected", "symbols"), DECLINED.values(), ids=DECLINED.keys())
+def test_what_the_tree_cannot_vouch_for_takes_the_full_path(
+    answer: str, expected: str, symbols: dict[str, object], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    asked = question(expected, symbols)
+    assert not recognised(answer, asked)
+    assert asked.grade(answer, DEFAULT_LIMITS) == in_full(answer, asked, monkeypatch)
+
+
+def test_the_reading_note_leads_a_recognised_answer_as_it_leads_a_built_one(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    asked = question("m*g*sin(theta**2)", WEDGE)
+    assert recognised("m g sin θ^2", asked)
+    verdict = asked.grade("m g sin θ^2", DEFAULT_LIMITS)
+    assert verdict.feedback.startswith("sin θ^2 is read as sin(θ²)")
+    assert verdict == in_full("m g sin θ^2", asked, monkeypatch)
+
+
+# Forms equal to 1 and small slips, combined at random with a reference: whatever the look decides,
+# the verdict is the full path's (a few hundred answers, right and wrong, read both ways).
+ONES = [
+    "(m + 3 M)^2/(m^2 + 6 m M + 9 M^2)",
+    "(sin(θ)^2 + cos(θ)^2)",
+    "e^(ln(m))/m",
+    "(1 - sin θ)(1 + sin θ)/cos(θ)^2",
+    "sqrt(m^2)/m",
+    "2 sin(θ/2) cos(θ/2)/sin(θ)",
+    "tan(θ) cos(θ)/sin(θ)",
+    "(M/m + 1) m/(M + m)",
+    "cosh(θ)^2 - sinh(θ)^2",
+    "10^3 m/(1000 m)",
+    "abs(-m)/m",
+    "log10(100)/2",
+]
+SLIPS = ["", "", "", "2 ", "-", "(M/m) ", "sin θ ", "(1 + 10^-9) "]
+
+
+def test_random_rewritings_get_the_full_paths_verdict(monkeypatch: pytest.MonkeyPatch) -> None:
+    rng = random.Random(20261126)
+    asked = question(WEDGE_A, WEDGE)
+    taken = 0
+    for _ in range(150):
+        factors = " ".join(f"({rng.choice(ONES)})" for _ in range(rng.randint(1, 3)))
+        answer = f"{rng.choice(SLIPS)}({WEDGE_A}) {factors}"
+        taken += recognised(answer, asked)
+        assert asked.grade(answer, DEFAULT_LIMITS) == in_full(answer, asked, monkeypatch), answer
+    assert taken > 30  # the look is taken for the right ones among them
