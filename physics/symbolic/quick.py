@@ -245,17 +245,18 @@ class _PreciseTree:
     intermediate value that is undefined, or nonzero and beyond 2^±100 (the module's second condition)."""
 
     def __init__(self, reference: PreparedReference, symbols: Mapping[str, sympy.Symbol]) -> None:
-        self._columns = {name: reference.precise_columns[symbol] for name, symbol in symbols.items()}
+        self._columns = {
+            name: _checked(reference.precise_columns[symbol]) for name, symbol in symbols.items()
+        }
         self._size = len(reference.precise_values)
         self._sums = Evaluator({}, self._size, PRECISE_PREC)  # its sums: cancellation to exact zero
 
     def value(self, node: Node) -> list[Mpf]:
-        checked = []
-        for value in self._evaluate(node):
-            if value is None or (value != ZERO and abs(magnitude_bits(value)) > MAGNITUDE_BITS):
-                raise _Declined
-            checked.append(value)
-        return checked
+        while isinstance(node, Group):
+            node = node.inner
+        if isinstance(node, Name):
+            return self._columns[node.name]
+        return _checked(self._evaluate(node))
 
     def _constant(self, value: Mpf) -> list[Mpf]:
         return [value] * self._size
@@ -264,12 +265,8 @@ class _PreciseTree:
         prec = PRECISE_PREC
         if isinstance(node, Num):
             return self._constant(from_rational(node.value.numerator, node.value.denominator, prec))
-        if isinstance(node, Name):
-            return list(self._columns[node.name])
         if isinstance(node, Const):
             return self._constant(libmp.mpf_pi(prec) if node.which == "pi" else libmp.mpf_e(prec))
-        if isinstance(node, Group):
-            return self.value(node.inner)
         if isinstance(node, Neg):
             return [libmp.mpf_neg(v) for v in self.value(node.operand)]
         if isinstance(node, Sum):
@@ -312,6 +309,17 @@ class _PreciseTree:
             ]
         function = numeric.UNARY[_function(node.func)]
         return [function(x, prec) for x in arguments]
+
+
+def _checked(values: Sequence[Mpf | None]) -> list[Mpf]:
+    """The values, if each is defined and either zero or within 2^±MAGNITUDE_BITS; else _Declined."""
+    checked = []
+    for value in values:
+        # value[2] + value[3]: the binary magnitude of a nonzero value (numeric.magnitude_bits).
+        if value is None or (value != ZERO and abs(value[2] + value[3]) > MAGNITUDE_BITS):
+            raise _Declined
+        checked.append(value)
+    return checked
 
 
 def _power(base: Mpf, exponent: Fraction, prec: int) -> Mpf | None:
