@@ -12,7 +12,8 @@ takes much of a core and so lowers every figure, the floor's too):
   floor      POST /echo on the trivial app: FastAPI's own cost per request here
   distinct   POST /v1/check, the typical bank answers of bench/load.py, every request's text new
              (each answer times a factor that equals 1 but is a new expression for each n, numeric
-             answers with n leading spaces): no verdict and no remembered judgement is reused
+             answers spaced anew for each n, within their 200 characters): no verdict and no
+             remembered judgement is reused
   identical  POST /v1/check, one typical request over and over: the verdict cache's case
   same       POST /v1/check, bench/check_bench.py's typical answers (parse_expr's syntax) in the
              distinct phase's forms, every text new
@@ -79,6 +80,15 @@ def unit_factor(symbols: dict[str, object], n: int) -> str:
     return f"({a} + {n} {b})^2/({a}^2 + {2 * n} {a} {b} + {n * n} {b}^2)"
 
 
+def spaced(answer: str, n: int) -> str:
+    """A numeric answer with spaces that make it new for each n: before it, and between its number and
+    its units (or after it). Within the 200 characters a numeric answer may have: past them it is
+    refused unread, a cheaper check than any real one."""
+    number, _, units = answer.partition(" ")
+    before, between = " " * (n % 40), " " * (1 + n // 40)
+    return f"{before}{number}{between}{units}"
+
+
 def distinct_checks(first: int = 2) -> list[Call]:
     """Every typical check in DISTINCT_VARIANTS forms of the same value: no two bodies and no two answer
     expressions equal (a warm-up draws its forms from another `first`, so the measured phase reuses no
@@ -94,7 +104,7 @@ def distinct_checks(first: int = 2) -> list[Call]:
             }
             calls.append(post("/v1/check", body, expect=verdict))
         for answer, value, units, tolerance, verdict in NUMERIC:
-            numeric: dict[str, object] = {"kind": "numeric", "answer": " " * n + answer, "expected": value}
+            numeric: dict[str, object] = {"kind": "numeric", "answer": spaced(answer, n), "expected": value}
             if units is not None:
                 numeric["units"] = units
             if tolerance is not None:
