@@ -1,6 +1,6 @@
 """The issue's speed targets, measured side by side in one run on this machine.
 
-    .venv/bin/python bench/targets.py [--duration 10] [--concurrency 16] [--warmup 2]
+    .venv/bin/python bench/targets.py [--rounds 3] [--duration 10] [--concurrency 16] [--warmup 2]
 
 Starts a trivial FastAPI app and a naive parse_expr + simplify service (bench/trivial_app.py, uvicorn)
 and physcheck's own server (bench/load.py's OwnServer), then drives each with the same closed-loop
@@ -22,11 +22,13 @@ takes much of a core and so lowers every figure, the floor's too):
   naive x2   the same on two uvicorn processes, one per core as physcheck's workers: how much of the
              ratio is physcheck using both cores
 
-and prints requests/s, p50 and p99, then each target: distinct >= 20 % of the floor's requests/s
-with p99 <= 50 ms, identical >= 60 % of the floor, naive >= 100x slower than physcheck on the same
-texts (`same`; also printed: how much slower than `distinct`, a different mix of answers). The machine's
-load moves every figure; the ratios are measured in one run. The python client also checks every
-verdict; wrk counts only statuses (the verdicts of the same bodies are checked by the python client).
+in turn, `--rounds` times with new texts each round, and prints requests/s, p50 and p99 of each, then
+each target as the median over the rounds of its ratio within a round (this machine's speed moves by
+a third within minutes; a ratio of two phases a minute apart moves less): distinct >= 20 % of the
+floor's requests/s with p99 <= 50 ms, identical >= 60 % of the floor, naive >= 100x slower than
+physcheck on the same texts (`same`; also printed: how much slower than `distinct`, a different mix of
+answers). The python client also checks every verdict; wrk counts only statuses (the verdicts of the
+same bodies are checked by the python client).
 """
 
 from __future__ import annotations
@@ -39,6 +41,7 @@ import functools
 import json
 import re
 import shutil
+import statistics
 import subprocess
 import sys
 import tempfile
@@ -67,6 +70,8 @@ from physics.checking import SymbolDecl
 
 HERE = Path(__file__).resolve().parent
 DISTINCT_VARIANTS = 2000  # more texts than a phase sends: none repeated
+ROUND_STRIDE = 10_000  # between the first forms of two rounds' texts
+WARM_UP_FIRST = 80_000  # past every round's
 
 
 # Two symbols of one dimension in each symbol set of bench/load.py's typical answers.
@@ -85,8 +90,8 @@ def spaced(answer: str, n: int) -> str:
     its units (or after it). Within the 200 characters a numeric answer may have: past them it is
     refused unread, a cheaper check than any real one."""
     number, _, units = answer.partition(" ")
-    before, between = " " * (n % 40), " " * (1 + n // 40)
-    return f"{before}{number}{between}{units}"
+    before, between, after = " " * (n % 30), " " * (1 + n // 30 % 100), " " * (n // 3000 % 30)
+    return f"{before}{number}{between}{units}{after}"
 
 
 def distinct_checks(first: int = 2) -> list[Call]:
@@ -159,7 +164,7 @@ def same_checks(first: int = 2) -> list[Call]:
     return calls
 
 
-def naive_checks() -> list[Call]:
+def naive_checks(first: int = 2) -> list[Call]:
     """`same_answers` as the naive service's bodies: the very texts of `same_checks`."""
     return [
         Call(
@@ -167,7 +172,7 @@ def naive_checks() -> list[Call]:
             "/naive",
             json.dumps({"answer": a, "expected": e, "symbols": [s.name for s in symbols]}).encode(),
         )
-        for a, e, symbols in same_answers()
+        for a, e, symbols in same_answers(first)
     ]
 
 
@@ -331,6 +336,40 @@ def measure_phase(
     return asyncio.run(measure(url, key, name, calls, args))
 
 
+@dataclass(frozen=True)
+class Round:
+    floor: Result
+    distinct: Result
+    identical: Result
+    same: Result
+    naive: Result
+    naive_two: Result
+
+
+def summarize(rounds: Sequence[Round]) -> None:
+    """Each target as the median over the rounds of its ratio within a round (the machine's speed moves
+    between rounds, and within one the phases are a minute apart at most), with every round's value."""
+
+    def line(ratios: list[float], form: str) -> str:
+        return f"median {form.format(statistics.median(ratios))} (rounds: {', '.join(form.format(r) for r in ratios)})"
+
+    share = [r.distinct.rate / r.floor.rate for r in rounds]
+    p99 = [r.distinct.p99 for r in rounds]
+    identical = [r.identical.rate / r.floor.rate for r in rounds]
+    naive = [r.same.rate / max(r.naive.rate, 1e-9) for r in rounds]
+    naive_distinct = [r.distinct.rate / max(r.naive.rate, 1e-9) for r in rounds]
+    naive_two = [r.same.rate / max(r.naive_two.rate, 1e-9) for r in rounds]
+    print(f"distinct:  {line(share, '{:.1%}')} of the floor (target >= 20 %)")
+    print(f"           p99 {line(p99, '{:.0f} ms')} (target <= 50 ms)")
+    print(f"identical: {line(identical, '{:.0%}')} of the floor (target >= 60 %)")
+    print(f"naive:     {line(naive, '{:.0f}x')} slower than physcheck on the same answers (target >= 100x)")
+    print(f"           {line(naive_distinct, '{:.0f}x')} slower than distinct")
+    print(
+        f"           {line(naive_two, '{:.0f}x')} slower on the same answers when it runs in two processes, "
+        "one per core, as physcheck's workers do (the issue's naive service ran in one)"
+    )
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     parser = argparse.ArgumentParser(
         description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter
@@ -339,6 +378,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     parser.add_argument("--concurrency", type=int, default=16)
     parser.add_argument("--warmup", type=float, default=2.0)
     parser.add_argument("--naive-duration", type=float, default=10.0)
+    parser.add_argument(
+        "--rounds", type=int, default=3, help="every phase, this many times in turn (medians are quoted)"
+    )
     parser.add_argument(
         "--client", choices=["wrk", "python"], default="wrk" if shutil.which("wrk") else "python"
     )
@@ -369,33 +411,31 @@ def main(argv: Sequence[str] | None = None) -> int:
             warm = argparse.Namespace(**{**vars(cold), "duration": args.warmup})
             run = functools.partial(measure_phase, args.client, Path(tmp))
             if args.warmup > 0:
-                run(server.url, key, "(warm-up)", distinct_checks(10_000) + same_checks(10_000), warm)
-            floor = run(trivial, None, "floor", [Call("POST", "/echo", b"{}")], args)
-            distinct = run(server.url, key, "distinct", distinct_checks(), cold)
-            identical = run(server.url, key, "identical", identical_check(), args)
-            same = run(server.url, key, "same", same_checks(), cold)
-            naive = run(trivial, None, "naive", naive_checks(), naive_args)
-            naive_two = run(trivial_two, None, "naive x2", naive_checks(), naive_args)
-            for phase, sent in ((distinct, distinct_checks()), (same, same_checks())):
-                if phase.requests > len(sent):
-                    print(
-                        f"WARNING: {phase.name} sent {phase.requests} requests of {len(sent)} texts: some repeated"
-                    )
+                warm_up = distinct_checks(WARM_UP_FIRST) + same_checks(WARM_UP_FIRST)
+                run(server.url, key, "(warm-up)", warm_up, warm)
+            rounds = []
+            for number in range(args.rounds):
+                # Each round's texts are new (`first`): none is answered from an earlier round's verdict.
+                first = 2 + number * ROUND_STRIDE
+                distinct_calls, same_calls = distinct_checks(first), same_checks(first)
+                print(f"round {number + 1}")
+                result = Round(
+                    floor=run(trivial, None, "floor", [Call("POST", "/echo", b"{}")], args),
+                    distinct=run(server.url, key, "distinct", distinct_calls, cold),
+                    identical=run(server.url, key, "identical", identical_check(), args),
+                    same=run(server.url, key, "same", same_calls, cold),
+                    naive=run(trivial, None, "naive", naive_checks(first), naive_args),
+                    naive_two=run(trivial_two, None, "naive x2", naive_checks(first), naive_args),
+                )
+                for phase, sent in ((result.distinct, distinct_calls), (result.same, same_calls)):
+                    if phase.requests > len(sent):
+                        print(
+                            f"WARNING: {phase.name} sent {phase.requests} requests of {len(sent)} texts: some repeated"
+                        )
+                rounds.append(result)
         finally:
             server.stop()
-    share = distinct.rate / floor.rate
-    print(
-        f"distinct:  {share:.1%} of the floor (target >= 20 %), p99 {distinct.p99:.0f} ms (target <= 50 ms)"
-    )
-    print(f"identical: {identical.rate / floor.rate:.1%} of the floor (target >= 60 %)")
-    print(
-        f"naive:     {same.rate / max(naive.rate, 1e-9):.0f}x slower than physcheck on the same answers "
-        f"(target >= 100x); {distinct.rate / max(naive.rate, 1e-9):.0f}x slower than distinct"
-    )
-    print(
-        f"           {same.rate / max(naive_two.rate, 1e-9):.0f}x slower on the same answers when it runs in two "
-        "processes, one per core, as physcheck's workers do (the issue's naive service ran in one)"
-    )
+    summarize(rounds)
     return 0
 
 
