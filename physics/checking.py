@@ -38,8 +38,7 @@ from physics.symbolic import (
     prepare_reference,
 )
 from physics.symbolic.dimensional import DimensionMismatch, UnknownDimension, expression_dimension
-from physics.symbolic.judge import EQUIVALENT
-from physics.symbolic.quick import surely_correct
+from physics.symbolic.quick import judged
 from physics.symbolic.reading import read_symbolic_answer
 from physics.units import unit_dimension
 from physics.verdict import InputProblem, Preview, Verdict
@@ -101,9 +100,12 @@ class SymbolicQuestion:
             reading = None  # settled by dimension, where it can be, as the answer is read in full below
         except AnswerError as error:
             return Verdict.invalid(error)
-        # Most answers are right: recognised on the parse tree, they skip building sympy's (quick.py).
-        if reading is not None and surely_correct(reading, reference, limits.max_exponent):
-            return _led(Verdict.graded(EQUIVALENT, reading.read_as), reading.read_as.note)
+        # Judged on the parse tree where it is enough, most answers skip building sympy's (quick.py); a
+        # wrong one with a bare powered argument is built, to tell whether the other reading is right.
+        if reading is not None:
+            quick = judged(reading, reference, limits.max_exponent)
+            if quick is not None and (quick.correct or not reading.powered):
+                return _led(Verdict.graded(quick, reading.read_as), reading.read_as.note)
         try:
             if reading is None:
                 parsed = read_symbolic_answer(answer, self.names, limits, dimensions, reference.dimension)

@@ -25,12 +25,13 @@ from __future__ import annotations
 import threading
 import weakref
 from collections import OrderedDict
+from collections.abc import Callable
 
 import numpy as np
 import sympy
 from mpmath import libmp
 
-from physics.dimensions import describe
+from physics.dimensions import Dimension, describe
 from physics.errors import ParseError, UnknownSymbol
 from physics.symbolic.compare import (
     PREC,
@@ -168,6 +169,11 @@ def _dimension_problem(answer: sympy.Expr, reference: PreparedReference) -> str 
         return None
     except DimensionMismatch as error:
         return f"Your expression {error.message}."
+    return dimension_difference(found, reference)
+
+
+def dimension_difference(found: Dimension, reference: PreparedReference) -> str | None:
+    """What to say of an answer of a consistent dimension `found`: None when it is the one expected."""
     expected = reference.dimension
     if expected is None or found == expected:
         return None
@@ -214,6 +220,10 @@ def diagnose(answer: sympy.Expr, values: Column, reference: PreparedReference, u
     return Judgement(False, Reason.WRONG_VALUE, " ".join(sentences))
 
 
+# The answer in multiprecision (PREC) at the given sample points.
+AnswerAt = Callable[[tuple[int, ...]], Column]
+
+
 class _AtPoints:
     """The answer in multiprecision (PREC) at sample points, each point evaluated once per judgement:
     the refutation, the sign check and the factor check look at overlapping points (the first suspect
@@ -234,7 +244,7 @@ class _AtPoints:
         return [values[index] for index in indexes]
 
 
-def _refuted_at(answer_at: _AtPoints, reference: PreparedReference, index: int) -> bool:
+def _refuted_at(answer_at: AnswerAt, reference: PreparedReference, index: int) -> bool:
     """The answer, in multiprecision at one sample point, is defined there and differs (rule 1)."""
     (value,) = answer_at((index,))
     (expected,) = reference.values_at((index,))
@@ -246,28 +256,45 @@ def _refuted_at(answer_at: _AtPoints, reference: PreparedReference, index: int) 
 
 
 def _first_look(
-    answer: sympy.Expr, reference: PreparedReference, answer_at: _AtPoints
+    values: Floats | None, reference: PreparedReference, answer_at: AnswerAt, confirmed: Callable[[], bool]
 ) -> tuple[bool | None, Floats | None]:
-    """The rule decided from a float64 look at every point and multiprecision at a few: True (equal),
-    False (refuted), None (float64 cannot tell: the full multiprecision path decides); with the
-    answer's float64 values when they are usable."""
+    """The rule decided from the answer's float64 `values` at every point and multiprecision at a few:
+    True (equal, when `confirmed` at the precise points), False (refuted), None (float64 cannot tell:
+    the full multiprecision path decides); with the values when they are usable."""
     floats = reference.floats
-    if not floats.usable:
-        return None, None
-    values = reference.float_evaluator()(answer)
-    if values is None or not in_range(values):
+    if not floats.usable or values is None or not in_range(values):
         return None, None
     if agrees(values, floats.values, floats.scale):
         # Equal to 1e-9 everywhere; the precise points catch what float64 cannot see (30 digits of pi).
-        return (True if _confirmed(answer, reference) else None), values
+        return (True if confirmed() else None), values
     suspects = np.flatnonzero(differs(values, floats.values, floats.scale))
     if suspects.size and _refuted_at(answer_at, reference, int(suspects[0])):
         return False, values
     return None, values
 
 
+def judged_in_floats(
+    values: Floats | None,
+    reference: PreparedReference,
+    answer_at: AnswerAt,
+    confirmed: Callable[[], bool],
+    dimension_problem: Callable[[], str | None],
+    limit_hints: Callable[[], list[str]],
+) -> Judgement | None:
+    """The judgement decided from the answer's values alone, as `_judge` first tries: float64 at every
+    point (`values`), multiprecision where a finding needs confirming (`answer_at`, `confirmed`), and
+    what its dimension and the limiting cases say; None wherever that cannot tell. quick.py gives it the
+    values of the parse tree, `_judge` those of sympy's."""
+    decided, floats = _first_look(values, reference, answer_at, confirmed)
+    if decided is True:
+        return EQUIVALENT
+    if decided is False and floats is not None:
+        return _diagnose_in_floats(floats, reference, answer_at, dimension_problem, limit_hints)
+    return None
+
+
 def _at_points(
-    answer_at: _AtPoints, reference: PreparedReference, indexes: tuple[int, ...], *targets: sympy.Expr
+    answer_at: AnswerAt, reference: PreparedReference, indexes: tuple[int, ...], *targets: sympy.Expr
 ) -> list[Column]:
     """The answer and reference-side `targets` in multiprecision (PREC) at a few sample points."""
     mine = answer_at(indexes)
@@ -278,7 +305,7 @@ def _at_points(
 
 
 def _same_as(
-    answer_at: _AtPoints,
+    answer_at: AnswerAt,
     values: Floats,
     target: sympy.Expr,
     targets: Floats | None,
@@ -305,7 +332,7 @@ def _same_as(
     return None
 
 
-def _constant_factor(answer_at: _AtPoints, values: Floats, reference: PreparedReference) -> bool | None:
+def _constant_factor(answer_at: AnswerAt, values: Floats, reference: PreparedReference) -> bool | None:
     """Is the answer a constant multiple (not ±1, not 0) of the reference, as constant_ratio would find
     in multiprecision? From float64 ratios, confirmed at two points; None when float64 cannot tell."""
     floats = reference.floats
@@ -342,7 +369,11 @@ def _constant_factor(answer_at: _AtPoints, values: Floats, reference: PreparedRe
 
 
 def _diagnose_in_floats(
-    answer: sympy.Expr, values: Floats, reference: PreparedReference, answer_at: _AtPoints
+    values: Floats,
+    reference: PreparedReference,
+    answer_at: AnswerAt,
+    dimension_problem: Callable[[], str | None],
+    limit_hints: Callable[[], list[str]],
 ) -> Judgement | None:
     """`diagnose` decided from float64 values with multiprecision confirmations (same order, same
     answers); None wherever float64 cannot tell, and the multiprecision diagnosis decides."""
@@ -354,7 +385,7 @@ def _diagnose_in_floats(
             return None
         if same:
             return Judgement(False, Reason.KNOWN_MISTAKE, feedback)
-    dimension = _dimension_problem(answer, reference)
+    dimension = dimension_problem()
     if dimension is not None:
         return Judgement(False, Reason.WRONG_DIMENSION, dimension)
     floats = reference.floats
@@ -369,9 +400,7 @@ def _diagnose_in_floats(
             return None
         if factor:
             return Judgement(False, Reason.CONSTANT_FACTOR, FACTOR_FEEDBACK)
-    return Judgement(
-        False, Reason.WRONG_VALUE, " ".join([WRONG_VALUE_FEEDBACK, *_limit_hints(answer, reference)])
-    )
+    return Judgement(False, Reason.WRONG_VALUE, " ".join([WRONG_VALUE_FEEDBACK, *limit_hints()]))
 
 
 class Remembered:
@@ -440,11 +469,18 @@ def _judge(expr: sympy.Expr, reference: PreparedReference) -> Judgement:
     if expr == reference.expected:
         return EQUIVALENT
     answer_at = _AtPoints(expr, reference)
-    decided, floats = _first_look(expr, reference, answer_at)
+    in_floats = reference.float_evaluator()(expr) if reference.floats.usable else None
+    decided, floats = _first_look(in_floats, reference, answer_at, lambda: _confirmed(expr, reference))
     if decided is True:
         return EQUIVALENT
     if decided is False and floats is not None:
-        quick = _diagnose_in_floats(expr, floats, reference, answer_at)
+        quick = _diagnose_in_floats(
+            floats,
+            reference,
+            answer_at,
+            lambda: _dimension_problem(expr, reference),
+            lambda: _limit_hints(expr, reference),
+        )
         if quick is not None:
             return quick
     values = Evaluator(reference.sample.columns, reference.sample.size, PREC)(expr)

@@ -1,10 +1,10 @@
-"""A right answer recognised on its parse tree, before sympy builds it.
+"""An answer judged on its parse tree, before sympy builds it, wherever the tree is enough.
 
-Most answers a class sends are right, and for a right answer the judge's rule 2 (physics.symbolic.judge:
-float64 agreement at every sample point, confirmed at the precise points) needs only the answer's
-values, which its parse tree gives as well as the sympy tree built from it. Building that tree costs
-about two-fifths of a check and judging it a third, so the parse tree is evaluated first, and
-`surely_correct` is True only when all of this holds:
+The judge decides from values first (physics.symbolic.judge, `judged_in_floats`): float64 at every
+sample point, multiprecision at the precise points to confirm a right answer, at a point or two to
+confirm why a wrong one is wrong, and the answer's dimension. The parse tree gives all of that as well
+as the sympy tree built from it, and building that tree costs about two-fifths of a check, judging it a
+third. So the parse tree is evaluated first, and `judged` returns the judgement that way when:
 
 - the builder could refuse nothing in the tree: few nodes; exact numbers of few bits in all, weighted
   by the powers they are raised to (so sympy makes no number the size checks refuse); every power's
@@ -16,13 +16,16 @@ about two-fifths of a check and judging it a third, so the parse tree is evaluat
   no part into a division by zero, a log of zero or a constant that is not real: such a part is zero
   or out of a real function's domain exactly, and at 266 bits it shows as a value that is undefined
   or beyond those bounds (`1/sin(π)`: 1/1.2e-16 in float64, about 1/10^-80 there);
-- the float64 values agree with the reference's at every point, and the precise ones with the precise
-  reference's, as the judge's first look asks.
+- the answer is not zero at both precise points (sympy may have built 0, whose dimension goes
+  unasked), and where a wrong answer's dimension is asked, the tree's is consistent and every name's
+  known (it is then the built tree's too; a clash is left to the full path, which names the terms in
+  sympy's order); a wrong value's limit hints are asked only where the reference has no limiting case;
+- `judged_in_floats` decides, as it would for sympy's tree.
 
-Otherwise it is False and the answer takes the full path (built, judged, and diagnosed when wrong),
-which a wrong answer reaches after only the float64 look. Both paths apply the same rule to the same
-number, computed on two trees that sympy's rewriting makes equal; they could differ only for an answer
-within float64's rounding of the 1e-9 agreement bound, where either verdict is defensible.
+Otherwise it returns None and the answer takes the full path: built, judged, diagnosed in
+multiprecision where float64 cannot tell. Both paths apply the same rules to the same numbers,
+computed on two trees that sympy's rewriting makes equal; they could differ only for an answer within
+float64's rounding of a tolerance, where either verdict is defensible.
 """
 
 from __future__ import annotations
@@ -34,12 +37,14 @@ import numpy as np
 import sympy
 from mpmath import libmp
 
+from physics.dimensions import DIMENSIONLESS, Dimension
 from physics.mathinput.build import FUNCTIONS
 from physics.mathinput.reader import TreeReading
 from physics.mathinput.tree import Call, Const, Group, Name, Neg, Node, Num, Power, Product, Sum
 from physics.symbolic import floats, numeric
-from physics.symbolic.compare import PRECISE_PREC, PRECISE_TOLERANCE_BITS, close
-from physics.symbolic.floats import Floats, agrees, in_range
+from physics.symbolic.compare import PREC, PRECISE_PREC, PRECISE_TOLERANCE_BITS, close
+from physics.symbolic.floats import Floats
+from physics.symbolic.judge import dimension_difference, judged_in_floats
 from physics.symbolic.numeric import (
     MAX_ARGUMENT_BITS,
     RND,
@@ -52,6 +57,7 @@ from physics.symbolic.numeric import (
     magnitude_bits,
 )
 from physics.symbolic.reference import PreparedReference
+from physics.verdict import Judgement
 
 MAX_NODES = 120
 # All exact numbers' bits, each times the powers it is raised to: what sympy can merge them into stays
@@ -67,10 +73,11 @@ class _Declined(Exception):
     """The tree is outside what this look decides: the full path decides."""
 
 
-def surely_correct(reading: TreeReading, reference: PreparedReference, max_exponent: int) -> bool:
-    """True only where the full path (build, judge) would find the answer correct; see the module."""
-    if not reference.floats.usable:
-        return False
+def judged(reading: TreeReading, reference: PreparedReference, max_exponent: int) -> Judgement | None:
+    """The judgement the full path (build, judge) would give, where the parse tree is enough to find
+    it; None where it is not (see the module)."""
+    if not reference.floats.usable or not reference.precise_values:
+        return None
     try:
         shape = _Shape(max_exponent)
         shape.check(reading.tree)
@@ -78,19 +85,103 @@ def surely_correct(reading: TreeReading, reference: PreparedReference, max_expon
         if not all(
             s in reference.floats.columns and s in reference.precise_columns for s in symbols.values()
         ):
-            return False
+            return None
         with np.errstate(all="ignore"):
             values = _FloatTree(reference, symbols).value(reading.tree)
-        if not in_range(values) or not agrees(values, reference.floats.values, reference.floats.scale):
-            return False
-        precise = _PreciseTree(reference, symbols).value(reading.tree)
+        precise = _TreeValues(
+            reference.precise_columns, len(reference.precise_values), symbols, PRECISE_PREC
+        ).value(reading.tree)
+        if all(value == ZERO for value in precise):
+            return None  # sympy may have built 0, whose dimension is not asked
+        return judged_in_floats(
+            values,
+            reference,
+            _TreeAtPoints(reading.tree, symbols, reference),
+            lambda: all(
+                b is not None and close(a, b, reference.scale, PRECISE_TOLERANCE_BITS)
+                for a, b in zip(precise, reference.precise_values, strict=True)
+            ),
+            lambda: dimension_difference(_dimension(reading.tree, symbols, reference), reference),
+            lambda: _no_limits(reference),
+        )
     except (_Declined, ArithmeticError, ValueError):
-        return False
-    expected = reference.precise_values
-    return len(precise) > 0 and all(
-        b is not None and close(a, b, reference.scale, PRECISE_TOLERANCE_BITS)
-        for a, b in zip(precise, expected, strict=True)
-    )
+        return None
+
+
+def _no_limits(reference: PreparedReference) -> list[str]:
+    """The limit hints of a wrong value, where there is no limiting case to fail (else: the full path)."""
+    if reference.limit_cases:
+        raise _Declined
+    return []
+
+
+def _dimension(node: Node, symbols: Mapping[str, sympy.Symbol], reference: PreparedReference) -> Dimension:
+    """The tree's dimension where it is consistent and every name's is known, which is then the built
+    tree's too (sympy's rewriting keeps a consistent dimension); else _Declined, and the full path
+    says which terms clash, in the order sympy keeps them."""
+    if isinstance(node, Name):
+        found = reference.dims.get(symbols[node.name])
+        if found is None:
+            raise _Declined
+        return found
+    if isinstance(node, Num | Const):
+        return DIMENSIONLESS
+    if isinstance(node, Group):
+        return _dimension(node.inner, symbols, reference)
+    if isinstance(node, Neg):
+        return _dimension(node.operand, symbols, reference)
+    if isinstance(node, Sum):
+        first = _dimension(node.first, symbols, reference)
+        if any(_dimension(term, symbols, reference) != first for _, term in node.rest):
+            raise _Declined
+        return first
+    if isinstance(node, Product):
+        result = _dimension(node.first, symbols, reference)
+        for operator, factor in node.rest:
+            other = _dimension(factor, symbols, reference)
+            result = result * other if operator == "*" else result * other**-1
+        return result
+    if isinstance(node, Power):
+        if _is_e(node.base):
+            return _dimensionless(node.exponent, symbols, reference)
+        exponent = _exponent(node.exponent)
+        assert exponent is not None  # admitted
+        return _dimension(node.base, symbols, reference) ** exponent
+    assert isinstance(node, Call)  # admitted
+    if node.func == "abs":
+        return _dimension(node.arg, symbols, reference)
+    if node.func == "sqrt":
+        return _dimension(node.arg, symbols, reference) ** Fraction(1, 2)
+    return _dimensionless(node.arg, symbols, reference)
+
+
+def _dimensionless(
+    node: Node, symbols: Mapping[str, sympy.Symbol], reference: PreparedReference
+) -> Dimension:
+    if not _dimension(node, symbols, reference).is_dimensionless:
+        raise _Declined
+    return DIMENSIONLESS
+
+
+class _TreeAtPoints:
+    """The tree at PREC at sample points, as judge._AtPoints evaluates sympy's (each point once); None
+    at a point where a value is undefined or beyond 2^±100 on the way, where the judge cannot tell."""
+
+    def __init__(self, tree: Node, symbols: Mapping[str, sympy.Symbol], reference: PreparedReference) -> None:
+        self._tree = tree
+        self._symbols = symbols
+        self._columns = reference.sample.columns
+        self._values: dict[int, Mpf | None] = {}
+
+    def __call__(self, indexes: tuple[int, ...]) -> Column:
+        for index in indexes:
+            if index not in self._values:
+                point = {symbol: [self._columns[symbol][index]] for symbol in self._symbols.values()}
+                try:
+                    (self._values[index],) = _TreeValues(point, 1, self._symbols, PREC).value(self._tree)
+                except (_Declined, ArithmeticError, ValueError):
+                    self._values[index] = None
+        return [self._values[index] for index in indexes]
 
 
 def _exponent(node: Node) -> Fraction | None:
@@ -240,16 +331,21 @@ class _FloatTree:
         return floats.UNARY[_function(node.func)](argument)
 
 
-class _PreciseTree:
-    """The tree at the precise points at PRECISE_PREC, as the judge confirms; raises _Declined at an
+class _TreeValues:
+    """The tree at a few points at `prec`, as numeric.Evaluator computes sympy's; raises _Declined at an
     intermediate value that is undefined, or nonzero and beyond 2^±100 (the module's second condition)."""
 
-    def __init__(self, reference: PreparedReference, symbols: Mapping[str, sympy.Symbol]) -> None:
-        self._columns = {
-            name: _checked(reference.precise_columns[symbol]) for name, symbol in symbols.items()
-        }
-        self._size = len(reference.precise_values)
-        self._sums = Evaluator({}, self._size, PRECISE_PREC)  # its sums: cancellation to exact zero
+    def __init__(
+        self,
+        columns: Mapping[sympy.Symbol, Column],
+        size: int,
+        symbols: Mapping[str, sympy.Symbol],
+        prec: int,
+    ) -> None:
+        self._columns = {name: _checked(columns[symbol]) for name, symbol in symbols.items()}
+        self._size = size
+        self._prec = prec
+        self._sums = Evaluator({}, self._size, prec)  # its sums: cancellation to exact zero
 
     def value(self, node: Node) -> list[Mpf]:
         while isinstance(node, Group):
@@ -262,7 +358,7 @@ class _PreciseTree:
         return [value] * self._size
 
     def _evaluate(self, node: Node) -> Sequence[Mpf | None]:
-        prec = PRECISE_PREC
+        prec = self._prec
         if isinstance(node, Num):
             return self._constant(from_rational(node.value.numerator, node.value.denominator, prec))
         if isinstance(node, Const):

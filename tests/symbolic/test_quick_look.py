@@ -1,5 +1,5 @@
-"""A right answer recognised on its parse tree (physics.symbolic.quick) gets the very verdict the full
-path (build sympy's tree, judge it) gives; everything the look cannot vouch for goes the full way."""
+"""An answer judged on its parse tree (physics.symbolic.quick) gets the very verdict the full path (build
+sympy's tree, judge it) gives; everything the tree cannot vouch for goes the full way."""
 
 from __future__ import annotations
 
@@ -11,8 +11,9 @@ import physics.checking
 from physics.checking import SymbolDecl, SymbolicQuestion
 from physics.mathinput import DEFAULT_LIMITS
 from physics.mathinput.reader import read_tree
-from physics.symbolic.quick import surely_correct
-from physics.verdict import Verdict
+from physics.symbolic.judge import EQUIVALENT
+from physics.symbolic.quick import judged
+from physics.verdict import Judgement, Reason, Verdict
 from problems.kinds.symbolic import SymbolicJob
 
 ANGLE = ("1", ("0", "pi/2"))
@@ -38,13 +39,13 @@ def question(expected: str, symbols: dict[str, object]) -> SymbolicQuestion:
     return compiled.question
 
 
-def recognised(answer: str, asked: SymbolicQuestion) -> bool:
-    return surely_correct(read_tree(answer, asked.names), asked.reference, DEFAULT_LIMITS.max_exponent)
+def quick(answer: str, asked: SymbolicQuestion) -> Judgement | None:
+    return judged(read_tree(answer, asked.names), asked.reference, DEFAULT_LIMITS.max_exponent)
 
 
 def in_full(answer: str, asked: SymbolicQuestion, monkeypatch: pytest.MonkeyPatch) -> Verdict:
     with monkeypatch.context() as patched:
-        patched.setattr(physics.checking, "surely_correct", lambda *_: False)
+        patched.setattr(physics.checking, "judged", lambda *_: None)
         return asked.grade(answer, DEFAULT_LIMITS)
 
 
@@ -72,16 +73,37 @@ def test_a_right_answer_is_recognised_on_its_tree_with_the_full_paths_verdict(
     answer: str, expected: str, symbols: dict[str, object], monkeypatch: pytest.MonkeyPatch
 ) -> None:
     asked = question(expected, symbols)
-    assert recognised(answer, asked)
+    assert quick(answer, asked) == EQUIVALENT
     verdict = asked.grade(answer, DEFAULT_LIMITS)
     assert verdict.outcome.value == "correct"
     assert verdict == in_full(answer, asked, monkeypatch)
 
 
+# Wrong answers whose every reason the tree can find: the full path's reason and feedback.
+WRONG = [
+    ("-m g sin(θ)cos(θ)/M", WEDGE_A, WEDGE, Reason.WRONG_VALUE),
+    ("m g sin(θ)cos(θ)/(M + m sin^2 θ)", WEDGE_A, WEDGE, Reason.SIGN_ERROR),
+    ("-2 m g sin(θ)cos(θ)/(M + m sin^2 θ)", WEDGE_A, WEDGE, Reason.CONSTANT_FACTOR),
+    ("-m sin(θ)cos(θ)/(M + m sin^2 θ)", WEDGE_A, WEDGE, Reason.WRONG_DIMENSION),
+    ("g r/(r^2 + k^2)", YOYO_A, YOYO, Reason.WRONG_DIMENSION),
+    ("2 g/3", YOYO_A, YOYO, Reason.WRONG_VALUE),
+    ("A sin(ωt - kx + φ)", WAVE, OSCILLATOR, Reason.WRONG_VALUE),
+]
+
+
+@pytest.mark.parametrize(("answer", "expected", "symbols", "reason"), WRONG)
+def test_a_wrong_answer_is_diagnosed_on_its_tree_with_the_full_paths_reason(
+    answer: str, expected: str, symbols: dict[str, object], reason: Reason, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    asked = question(expected, symbols)
+    found = quick(answer, asked)
+    assert found is not None and found.reason is reason
+    assert asked.grade(answer, DEFAULT_LIMITS) == in_full(answer, asked, monkeypatch)
+
+
 # What the look must leave to the full path, each for the reason in its id: the verdict is then the full
 # path's alone (some are right answers, some wrong, some unreadable there).
 DECLINED = {
-    "wrong": ("-m g sin(θ)cos(θ)/M", WEDGE_A, WEDGE),
     "wrong by one part in 10^12": ("(1 + 10^-12) g r^2/(r^2 + k^2)", YOYO_A, YOYO),
     "thirty digits of pi": ("3.14159265358979323846264338328 A cos(ωt - kx + φ)/pi", WAVE, OSCILLATOR),
     "a log of an exact zero": (f"{YOYO_A} + 0 log(sin(pi))", YOYO_A, YOYO),
@@ -107,7 +129,7 @@ def test_what_the_tree_cannot_vouch_for_takes_the_full_path(
     answer: str, expected: str, symbols: dict[str, object], monkeypatch: pytest.MonkeyPatch
 ) -> None:
     asked = question(expected, symbols)
-    assert not recognised(answer, asked)
+    assert quick(answer, asked) is None
     assert asked.grade(answer, DEFAULT_LIMITS) == in_full(answer, asked, monkeypatch)
 
 
@@ -115,7 +137,7 @@ def test_the_reading_note_leads_a_recognised_answer_as_it_leads_a_built_one(
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:
     asked = question("m*g*sin(theta**2)", WEDGE)
-    assert recognised("m g sin θ^2", asked)
+    assert quick("m g sin θ^2", asked) == EQUIVALENT
     verdict = asked.grade("m g sin θ^2", DEFAULT_LIMITS)
     assert verdict.feedback.startswith("sin θ^2 is read as sin(θ²)")
     assert verdict == in_full("m g sin θ^2", asked, monkeypatch)
@@ -147,6 +169,14 @@ def test_random_rewritings_get_the_full_paths_verdict(monkeypatch: pytest.Monkey
     for _ in range(150):
         factors = " ".join(f"({rng.choice(ONES)})" for _ in range(rng.randint(1, 3)))
         answer = f"{rng.choice(SLIPS)}({WEDGE_A}) {factors}"
-        taken += recognised(answer, asked)
+        taken += quick(answer, asked) is not None
         assert asked.grade(answer, DEFAULT_LIMITS) == in_full(answer, asked, monkeypatch), answer
-    assert taken > 30  # the look is taken for the right ones among them
+    assert taken > 75  # the tree decides most of them
+
+
+def test_a_wrong_answer_with_a_bare_powered_argument_is_built_to_try_the_other_reading() -> None:
+    asked = question("m*g*sin(theta)**2", WEDGE)
+    found = quick("m g sin θ^2", asked)
+    assert found is not None and not found.correct  # read as sin(θ²): wrong, and the tree says so
+    feedback = asked.grade("m g sin θ^2", DEFAULT_LIMITS).feedback
+    assert feedback.startswith("Read as sin(θ²); if you meant (sin θ)², write sin^2 θ.")
