@@ -101,7 +101,7 @@ def test_a_wrong_answer_is_diagnosed_on_its_tree_with_the_full_paths_reason(
     assert asked.grade(answer, DEFAULT_LIMITS) == in_full(answer, asked, monkeypatch)
 
 
-# What the look must leave to the full path, each for the reason in its id: the verdict is then the full
+# What the tree must leave to the full path, each for the reason in its id: the verdict is then the full
 # path's alone (some are right answers, some wrong, some unreadable there).
 DECLINED = {
     "wrong by one part in 10^12": ("(1 + 10^-12) g r^2/(r^2 + k^2)", YOYO_A, YOYO),
@@ -121,6 +121,9 @@ DECLINED = {
     "a value beyond 2^100 on the way": (f"{YOYO_A} + e^80 - e^80", YOYO_A, YOYO),
     "too many nodes": (f"{YOYO_A}" + " + m - m" * 70, YOYO_A, YOYO),
     "an angle sympy reduces exactly": (f"{YOYO_A} + sin(pi)", YOYO_A, YOYO),
+    "terms whose dimensions clash": ("g + m", YOYO_A, YOYO),
+    "a function of a length": ("g sin(r)", YOYO_A, YOYO),
+    "zero, whose dimension goes unasked": ("m - m", YOYO_A, YOYO),
 }
 
 
