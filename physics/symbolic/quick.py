@@ -75,8 +75,14 @@ class _Declined(Exception):
 
 def judged(reading: TreeReading, reference: PreparedReference, max_exponent: int) -> Judgement | None:
     """The judgement the full path (build, judge) would give, where the parse tree is enough to find
-    it; None where it is not (see the module)."""
-    if not reference.floats.usable or not reference.precise_values:
+    it; None where it is not (see the module). The first answer to a reference takes the full path:
+    there, an answer built equal to the reference is right at once, before the reference's precise
+    values (which this needs) are computed, and a new reference's first answer is often its own text."""
+    if (
+        "precise_values" not in reference.__dict__
+        or not reference.floats.usable
+        or not reference.precise_values
+    ):
         return None
     try:
         shape = _Shape(max_exponent)

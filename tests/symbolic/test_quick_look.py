@@ -30,13 +30,16 @@ PENDULUM_V = "(m + M)/m*sqrt(2*g*L*(1 - cos(theta)))"
 WAVE = "A*cos(omega*t - k*x + phi)"
 
 
-def question(expected: str, symbols: dict[str, object]) -> SymbolicQuestion:
+def question(expected: str, symbols: dict[str, object], *, answered: bool = True) -> SymbolicQuestion:
+    """The part's question; `answered`: as after a first answer, which computes the precise values."""
     decls = tuple(
         SymbolDecl(name, spec) if isinstance(spec, str) else SymbolDecl(name, spec[0], range=spec[1])  # type: ignore[index]
         for name, spec in symbols.items()
     )
-    compiled = SymbolicJob("", expected, decls).question()
-    return compiled.question
+    asked = SymbolicJob("", expected, decls).question().question
+    if answered:
+        assert asked.reference.precise_values
+    return asked
 
 
 def quick(answer: str, asked: SymbolicQuestion) -> Judgement | None:
@@ -134,6 +137,17 @@ def test_what_the_tree_cannot_vouch_for_takes_the_full_path(
     asked = question(expected, symbols)
     assert quick(answer, asked) is None
     assert asked.grade(answer, DEFAULT_LIMITS) == in_full(answer, asked, monkeypatch)
+
+
+def test_the_first_answer_to_a_new_reference_takes_the_full_path(monkeypatch: pytest.MonkeyPatch) -> None:
+    # An answer built equal to the reference is right before the reference's precise values are computed.
+    asked = question("r**2*g/(k**2 + r**2)", YOYO, answered=False)  # a reference text no other test uses
+    assert quick("g r^2/(r^2 + k^2)", asked) is None
+    assert asked.grade("g r^2/(r^2 + k^2)", DEFAULT_LIMITS) == in_full(
+        "g r^2/(r^2 + k^2)", asked, monkeypatch
+    )
+    assert "precise_values" not in asked.reference.__dict__
+    assert quick("g/(1 + k^2/r^2)", question(YOYO_A, YOYO)) == EQUIVALENT
 
 
 def test_the_reading_note_leads_a_recognised_answer_as_it_leads_a_built_one(
