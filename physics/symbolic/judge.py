@@ -468,23 +468,19 @@ def _judge(expr: sympy.Expr, reference: PreparedReference) -> Judgement:
     """judge_symbolic of an answer already over the context's symbols, with exact numbers."""
     if expr == reference.expected:
         return EQUIVALENT
-    answer_at = _AtPoints(expr, reference)
-    in_floats = reference.float_evaluator()(expr) if reference.floats.usable else None
-    decided, floats = _first_look(in_floats, reference, answer_at, lambda: _confirmed(expr, reference))
-    if decided is True:
-        return EQUIVALENT
-    if decided is False and floats is not None:
-        quick = _diagnose_in_floats(
-            floats,
-            reference,
-            answer_at,
-            lambda: _dimension_problem(expr, reference),
-            lambda: _limit_hints(expr, reference),
-        )
-        if quick is not None:
-            return quick
+    quick = judged_in_floats(
+        reference.float_evaluator()(expr) if reference.floats.usable else None,
+        reference,
+        _AtPoints(expr, reference),
+        lambda: _confirmed(expr, reference),
+        lambda: _dimension_problem(expr, reference),
+        lambda: _limit_hints(expr, reference),
+    )
+    if quick is not None:
+        return quick
+    # Where float64 refuted the answer, the point it refuted at differs here too: not equivalent.
     values = Evaluator(reference.sample.columns, reference.sample.size, PREC)(expr)
-    if decided is None and _equivalent(expr, values, reference):
+    if _equivalent(expr, values, reference):
         return EQUIVALENT
     # The reference is defined at every sample point, so a missing value is the answer's own gap.
     return diagnose(expr, values, reference, undefined=any(v is None for v in values))
