@@ -66,6 +66,10 @@ MAX_NUMBER_BITS = 200
 # The builder's complex-parts budget is 40; a tree this light is far inside it.
 MAX_ARGUMENT_WEIGHT = 10
 MAGNITUDE_BITS = 100
+# The tree is evaluated this far above the judge's precisions (PREC, PRECISE_PREC): its sums may cancel
+# terms as large as 2^MAGNITUDE_BITS that sympy cancelled exactly, and what is left must still be as
+# exact as the judge's values of sympy's tree, down to a reference scale as small as 2^-MAGNITUDE_BITS.
+EXTRA_BITS = 2 * MAGNITUDE_BITS
 _NUMBER_SYMBOLS = {"pi": sympy.pi, "e": sympy.E}
 
 
@@ -82,6 +86,7 @@ def judged(reading: TreeReading, reference: PreparedReference, max_exponent: int
         "precise_values" not in reference.__dict__
         or not reference.floats.usable
         or not reference.precise_values
+        or abs(magnitude_bits(reference.scale)) > MAGNITUDE_BITS
     ):
         return None
     try:
@@ -95,7 +100,7 @@ def judged(reading: TreeReading, reference: PreparedReference, max_exponent: int
         with np.errstate(all="ignore"):
             values = _FloatTree(reference, symbols).value(reading.tree)
         precise = _TreeValues(
-            reference.precise_columns, len(reference.precise_values), symbols, PRECISE_PREC
+            reference.precise_columns, len(reference.precise_values), symbols, PRECISE_PREC + EXTRA_BITS
         ).value(reading.tree)
         if all(value == ZERO for value in precise):
             return None  # sympy may have built 0, whose dimension is not asked
@@ -184,7 +189,9 @@ class _TreeAtPoints:
             if index not in self._values:
                 point = {symbol: [self._columns[symbol][index]] for symbol in self._symbols.values()}
                 try:
-                    (self._values[index],) = _TreeValues(point, 1, self._symbols, PREC).value(self._tree)
+                    (self._values[index],) = _TreeValues(point, 1, self._symbols, PREC + EXTRA_BITS).value(
+                        self._tree
+                    )
                 except (_Declined, ArithmeticError, ValueError):
                     self._values[index] = None
         return [self._values[index] for index in indexes]
