@@ -56,7 +56,7 @@ from physics.symbolic.numeric import (
     is_negative,
     magnitude_bits,
 )
-from physics.symbolic.reference import PreparedReference
+from physics.symbolic.reference import PRECISE_POINTS, PreparedReference
 from physics.verdict import Judgement
 
 MAX_NODES = 120
@@ -79,15 +79,12 @@ class _Declined(Exception):
 
 def judged(reading: TreeReading, reference: PreparedReference, max_exponent: int) -> Judgement | None:
     """The judgement the full path (build, judge) would give, where the parse tree is enough to find
-    it; None where it is not (see the module). The first answer to a reference takes the full path:
-    there, an answer built equal to the reference is right at once, before the reference's precise
-    values (which this needs) are computed, and a new reference's first answer is often its own text."""
-    if (
-        "precise_values" not in reference.__dict__
-        or not reference.floats.usable
-        or not reference.precise_values
-        or abs(magnitude_bits(reference.scale)) > MAGNITUDE_BITS
-    ):
+    it; None where it is not (see the module). A right answer before the reference's precise values
+    are computed takes the full path: there, an answer built equal to the reference is right at once,
+    before they are (a new reference's first answer is often its own text). A wrong one never needs
+    them, and a reference that meets only wrong answers never has them."""
+    points = min(PRECISE_POINTS, reference.sample.size)
+    if not reference.floats.usable or not points or abs(magnitude_bits(reference.scale)) > MAGNITUDE_BITS:
         return None
     try:
         shape = _Shape(max_exponent)
@@ -99,24 +96,32 @@ def judged(reading: TreeReading, reference: PreparedReference, max_exponent: int
             return None
         with np.errstate(all="ignore"):
             values = _FloatTree(reference, symbols).value(reading.tree)
-        precise = _TreeValues(
-            reference.precise_columns, len(reference.precise_values), symbols, PRECISE_PREC + EXTRA_BITS
-        ).value(reading.tree)
+        precise = _TreeValues(reference.precise_columns, points, symbols, PRECISE_PREC + EXTRA_BITS).value(
+            reading.tree
+        )
         if all(value == ZERO for value in precise):
             return None  # sympy may have built 0, whose dimension is not asked
         return judged_in_floats(
             values,
             reference,
             _TreeAtPoints(reading.tree, symbols, reference),
-            lambda: all(
-                b is not None and close(a, b, reference.scale, PRECISE_TOLERANCE_BITS)
-                for a, b in zip(precise, reference.precise_values, strict=True)
-            ),
+            lambda: _precisely_equal(precise, reference),
             lambda: dimension_difference(_dimension(reading.tree, symbols, reference), reference),
             lambda: _no_limits(reference),
         )
     except (_Declined, ArithmeticError, ValueError):
         return None
+
+
+def _precisely_equal(precise: Column, reference: PreparedReference) -> bool:
+    """The tree's values equal the reference's at the precise points; _Declined while those are not
+    computed yet (the full path may find the answer right without them)."""
+    if "precise_values" not in reference.__dict__:
+        raise _Declined
+    return all(
+        b is not None and close(a, b, reference.scale, PRECISE_TOLERANCE_BITS)
+        for a, b in zip(precise, reference.precise_values, strict=True)
+    )
 
 
 def _no_limits(reference: PreparedReference) -> list[str]:

@@ -150,6 +150,15 @@ def test_the_first_answer_to_a_new_reference_takes_the_full_path(monkeypatch: py
     assert quick("g/(1 + k^2/r^2)", question(YOYO_A, YOYO)) == EQUIVALENT
 
 
+def test_a_wrong_answer_to_a_new_reference_is_judged_on_its_tree(monkeypatch: pytest.MonkeyPatch) -> None:
+    # A reference that meets only wrong answers never computes its precise values: none is needed.
+    asked = question("g*k**2/(k**2 + r**2)", YOYO, answered=False)  # a reference text no other test uses
+    found = quick("g r^2/(r^2 + k^2)", asked)
+    assert found is not None and found.reason is Reason.WRONG_VALUE
+    assert asked.grade("g r^2/(r^2 + k^2)", DEFAULT_LIMITS) == in_full("g r^2/(r^2 + k^2)", asked, monkeypatch)
+    assert "precise_values" not in asked.reference.__dict__
+
+
 def test_the_reading_note_leads_a_recognised_answer_as_it_leads_a_built_one(
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:
