@@ -113,7 +113,7 @@ def judged(reading: TreeReading, reference: PreparedReference, max_exponent: int
         return None
 
 
-def _precisely_equal(precise: Column, reference: PreparedReference) -> bool:
+def _precisely_equal(precise: Sequence[Mpf], reference: PreparedReference) -> bool:
     """The tree's values equal the reference's at the precise points; _Declined while those are not
     computed yet (the full path may find the answer right without them)."""
     if "precise_values" not in reference.__dict__:

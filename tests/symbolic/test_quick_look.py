@@ -155,7 +155,9 @@ def test_a_wrong_answer_to_a_new_reference_is_judged_on_its_tree(monkeypatch: py
     asked = question("g*k**2/(k**2 + r**2)", YOYO, answered=False)  # a reference text no other test uses
     found = quick("g r^2/(r^2 + k^2)", asked)
     assert found is not None and found.reason is Reason.WRONG_VALUE
-    assert asked.grade("g r^2/(r^2 + k^2)", DEFAULT_LIMITS) == in_full("g r^2/(r^2 + k^2)", asked, monkeypatch)
+    assert asked.grade("g r^2/(r^2 + k^2)", DEFAULT_LIMITS) == in_full(
+        "g r^2/(r^2 + k^2)", asked, monkeypatch
+    )
     assert "precise_values" not in asked.reference.__dict__
 
 
