@@ -22,10 +22,11 @@ from app.errors import install_error_handlers
 from app.grading.pool import GradingPool
 from app.heap import freeze_long_lived
 from app.instructor import router as instructor_routes
+from app.logs import configure_logging
 from app.lti import router as lti_routes
 from app.lti.context import LtiContext
 from app.lti.outbox import OutboxWorker
-from app.middleware import RequestContext, configure_logging
+from app.middleware import RequestContext
 from app.openapi import install_docs
 from app.ratelimit import rate_limiters
 from app.routers import authoring as authoring_routes

@@ -168,8 +168,8 @@ class GradingPool:
 
     async def check(self, job: CheckJob, owner: str | None = None, *, key: str | None = None) -> Verdict:
         """Grade in a worker; a timeout is an `invalid` verdict (the answer's), never a hang; a fault of
-        the grader raises Unavailable or GraderFault, never a verdict. `key` is `repr(job)`, when the
-        caller keeps it with the job."""
+        the grader raises Unavailable or GraderFault, never a verdict. `key` names the job in the verdict
+        cache in place of `repr(job)`, when the caller has a cheaper name (it must name no other job)."""
         if len(job.answer) > self._max_answer_chars:
             # Refused before any worker sees it: the cheapest hostile answer is the longest.
             limit = self._max_answer_chars

@@ -82,7 +82,7 @@ def test_every_response_carries_a_request_id(client):
 
 
 def test_each_request_is_logged_once_with_its_id_status_and_time(client, settings):
-    from app.middleware import JsonLogFormatter
+    from app.logs import JsonLogFormatter
 
     stream = io.StringIO()
     handler = logging.StreamHandler(stream)

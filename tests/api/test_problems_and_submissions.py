@@ -199,7 +199,7 @@ def test_submissions_page_through_with_a_cursor(client, student_headers):
 
 
 def test_logged_answers_are_truncated_and_escaped(client, student_headers):
-    from app.middleware import JsonLogFormatter
+    from app.logs import JsonLogFormatter
 
     stream = io.StringIO()
     handler = logging.StreamHandler(stream)
