@@ -403,7 +403,7 @@ class _TreeValues:
             return product
         if isinstance(node, Power):
             if _is_e(node.base):
-                return [numeric.UNARY[sympy.exp](x, prec) for x in self.value(node.exponent)]
+                return [_unary(sympy.exp, x, prec) for x in self.value(node.exponent)]
             exponent = _exponent(node.exponent)
             assert exponent is not None  # admitted
             return [_power(b, exponent, prec) for b in self.value(node.base)]
@@ -421,8 +421,28 @@ class _TreeValues:
                 else libmp.mpf_div(libmp.mpf_log(x, prec + 10, RND), ten, prec, RND)
                 for x in arguments
             ]
-        function = numeric.UNARY[_function(node.func)]
-        return [function(x, prec) for x in arguments]
+        function = _function(node.func)
+        return [_unary(function, x, prec) for x in arguments]
+
+
+# (function, argument, precision) -> its value, for the latest answers. The sample points are the
+# reference's, so an answer's sin θ or e^(-k t) is the one the previous answers to it had (a check
+# found 20 distinct values among 4,000 function calls, a tenth of its CPU).
+_UNARY_VALUES: dict[tuple[type, Mpf, int], Mpf | None] = {}
+UNARY_VALUES_KEPT = 4096
+
+
+def _unary(function: type, x: Mpf, prec: int) -> Mpf | None:
+    key = (function, x, prec)
+    try:
+        return _UNARY_VALUES[key]
+    except KeyError:
+        pass
+    value = numeric.UNARY[function](x, prec)
+    if len(_UNARY_VALUES) >= UNARY_VALUES_KEPT:
+        _UNARY_VALUES.clear()
+    _UNARY_VALUES[key] = value
+    return value
 
 
 def _checked(values: Sequence[Mpf | None]) -> list[Mpf]:

@@ -208,3 +208,36 @@ def test_a_wrong_answer_with_a_bare_powered_argument_is_built_to_try_the_other_r
     assert found is not None and not found.correct  # read as sin(θ²): wrong, and the tree says so
     feedback = asked.grade("m g sin θ^2", DEFAULT_LIMITS).feedback
     assert feedback.startswith("Read as sin(θ²); if you meant (sin θ)², write sin^2 θ.")
+
+
+def test_a_function_is_evaluated_once_at_a_sample_point_for_every_answer_to_a_reference(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    import sympy
+
+    from physics.symbolic import numeric
+    from physics.symbolic import quick as quick_module
+
+    asked = question("m*g*sin(theta)*cos(theta)", WEDGE)
+    calls: list[tuple[object, int]] = []
+    sine = numeric.UNARY[sympy.sin]
+    monkeypatch.setitem(numeric.UNARY, sympy.sin, lambda x, prec: calls.append((x, prec)) or sine(x, prec))
+    monkeypatch.setattr(quick_module, "_UNARY_VALUES", {})
+    answers = ["m g sin θ cos θ", "g m cos(θ) sin(θ)", "m g sin(θ)/2", "m g sin(θ)/3", "-m g sin θ cos θ"]
+    assert all(quick(answer, asked) is not None for answer in answers)
+    # The tree's own precisions (the judge evaluates the reference at PREC itself).
+    tree_precisions = {q + quick_module.EXTRA_BITS for q in (quick_module.PREC, quick_module.PRECISE_PREC)}
+    mine = [call for call in calls if call[1] in tree_precisions]
+    assert mine and len(mine) == len(set(mine))
+
+
+def test_the_remembered_function_values_stay_bounded(monkeypatch: pytest.MonkeyPatch) -> None:
+    import sympy
+
+    from physics.symbolic import quick as quick_module
+
+    monkeypatch.setattr(quick_module, "_UNARY_VALUES", {})
+    monkeypatch.setattr(quick_module, "UNARY_VALUES_KEPT", 8)
+    for n in range(1, 30):
+        quick_module._unary(sympy.sin, (0, n, 0, n.bit_length()), 53)
+        assert len(quick_module._UNARY_VALUES) <= 8
