@@ -50,7 +50,7 @@ class LoopBatchingHandler(logging.StreamHandler):  # type: ignore[type-arg]
     def emit(self, record: logging.LogRecord) -> None:  # called with the handler's lock held
         try:
             self._pending.append(self.format(record) + self.terminator)
-            loop = asyncio._get_running_loop()
+            loop = _running_loop()
             if loop is None or record.levelno >= logging.WARNING:
                 self._write_pending()
             elif len(self._pending) == 1:
@@ -67,6 +67,13 @@ class LoopBatchingHandler(logging.StreamHandler):  # type: ignore[type-arg]
         if self._pending:
             lines, self._pending = "".join(self._pending), []
             self.stream.write(lines)
+
+
+def _running_loop() -> asyncio.AbstractEventLoop | None:
+    try:
+        return asyncio.get_running_loop()
+    except RuntimeError:  # none in this thread
+        return None
 
 
 def configure_logging(level: str) -> None:
