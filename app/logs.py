@@ -41,7 +41,8 @@ class LoopBatchingHandler(logging.StreamHandler):  # type: ignore[type-arg]
     """A stream handler that writes the lines logged on an event loop's thread once per loop iteration,
     in one write: a server under load logs a line per request, and a system call per line cost its
     event loop more than making the line. Warnings, errors and lines from other threads are written at
-    once, after whatever is pending, so the order of lines is kept."""
+    once, after whatever is pending, so the order of lines is kept; `flush` (logging does it at exit)
+    writes what is pending. A process killed outright loses at most its last iteration's lines."""
 
     def __init__(self) -> None:
         super().__init__()
