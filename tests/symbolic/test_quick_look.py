@@ -6,11 +6,14 @@ from __future__ import annotations
 import random
 
 import pytest
+import sympy
 
 import physics.checking
+import physics.symbolic.quick as quick_module
 from physics.checking import SymbolDecl, SymbolicQuestion
 from physics.mathinput import DEFAULT_LIMITS
 from physics.mathinput.reader import read_tree
+from physics.symbolic import numeric
 from physics.symbolic.judge import EQUIVALENT
 from physics.symbolic.quick import judged
 from physics.verdict import Judgement, Reason, Verdict
@@ -213,11 +216,6 @@ def test_a_wrong_answer_with_a_bare_powered_argument_is_built_to_try_the_other_r
 def test_a_function_is_evaluated_once_at_a_sample_point_for_every_answer_to_a_reference(
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:
-    import sympy
-
-    from physics.symbolic import numeric
-    from physics.symbolic import quick as quick_module
-
     asked = question("m*g*sin(theta)*cos(theta)", WEDGE)
     calls: list[tuple[object, int]] = []
     sine = numeric.UNARY[sympy.sin]
@@ -232,10 +230,6 @@ def test_a_function_is_evaluated_once_at_a_sample_point_for_every_answer_to_a_re
 
 
 def test_the_remembered_function_values_stay_bounded(monkeypatch: pytest.MonkeyPatch) -> None:
-    import sympy
-
-    from physics.symbolic import quick as quick_module
-
     monkeypatch.setattr(quick_module, "_UNARY_VALUES", {})
     monkeypatch.setattr(quick_module, "UNARY_VALUES_KEPT", 8)
     for n in range(1, 30):
