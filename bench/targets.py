@@ -69,9 +69,12 @@ from load import (
 from physics.checking import SymbolDecl
 
 HERE = Path(__file__).resolve().parent
-DISTINCT_VARIANTS = 2000  # more texts than a phase sends: none repeated
-ROUND_STRIDE = 10_000  # between the first forms of two rounds' texts
-WARM_UP_FIRST = 80_000  # past every round's
+# More texts than a phase sends at 6,000 requests/s (`same` has ten per form): none repeated.
+DISTINCT_VARIANTS = 6000
+ROUND_STRIDE = DISTINCT_VARIANTS  # between the first forms of two rounds' texts
+# `spaced` makes 90,000 numeric forms: the warm-up's are the last of them, past every round's.
+WARM_UP_FIRST = 90_000 - DISTINCT_VARIANTS
+MAX_ROUNDS = (WARM_UP_FIRST - 2) // ROUND_STRIDE
 
 
 # Two symbols of one dimension in each symbol set of bench/load.py's typical answers.
@@ -388,6 +391,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         "--threads", type=int, default=1, help="wrk's threads (default 1: the servers need the cores)"
     )
     args = parser.parse_args(argv)
+    if args.rounds > MAX_ROUNDS:
+        parser.error(f"--rounds: at most {MAX_ROUNDS}, or a round's numeric answers would repeat another's")
     with (
         tempfile.TemporaryDirectory(prefix="physcheck-targets-") as tmp,
         trivial_app(Path(tmp)) as trivial,

@@ -24,6 +24,7 @@ from sqlalchemy.pool import NullPool
 
 from app.db.database import Database
 from app.db.migrate import migrate
+from tests.sampling import described, fix_seed
 
 # Browser fixtures (live_server, browse, check_page...) shared by every page test.
 pytest_plugins = ["tests.browser"]
@@ -158,3 +159,11 @@ def _empty_postgres(url: str) -> None:
                 connection.execute(text(f"TRUNCATE {names} RESTART IDENTITY CASCADE"))
     finally:
         engine.dispose()
+
+
+def pytest_configure(config: pytest.Config) -> None:
+    fix_seed()
+
+
+def pytest_report_header(config: pytest.Config) -> str:
+    return described()

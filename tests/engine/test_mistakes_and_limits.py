@@ -14,9 +14,9 @@ from physics.engine.mistakes import SWAPPED_TRIG
 from physics.engine.proof import proven_sign
 from physics.engine.results import KnownMistake, LimitCase
 from physics.mathinput import parse_math
-from problems.loader import load_bank
 from problems.modelinfo import load_doc_model
 from problems.symbols import symbol_table
+from tests.bank import bank_documents
 from tests.engine.conftest import SLOW_PROBLEMS, bank_derivation, bank_model, s
 
 
@@ -189,7 +189,7 @@ def test_an_incline_angle_keeps_the_along_the_surface_feedback() -> None:
 
 
 def _bank_limits(problem_id: str, quantity: str) -> tuple[LimitCase, ...]:
-    (doc,) = [d for d in load_bank() if d.id == problem_id]
+    doc = bank_documents()[problem_id]
     return derive(load_doc_model(doc, symbol_table(doc))).limits[quantity]
 
 
@@ -217,7 +217,7 @@ def test_a_light_body_is_compared_with_the_other_body_by_name() -> None:
 
 
 def test_a_bare_tangent_is_not_offered_as_a_dropped_projection() -> None:
-    (doc,) = [d for d in load_bank() if d.id == "skier-friction"]
+    doc = bank_documents()["skier-friction"]
     derivation = derive(load_doc_model(doc, symbol_table(doc)))
     assert derivation.quantities["friction_coefficient"].has(sympy.tan)
     # mu = 1 (tan(alpha) dropped) is no slip anyone makes

@@ -9,11 +9,11 @@ import re
 import pytest
 
 from physics.figures import body_forces, model_figure
-from problems.loader import load_bank
 from problems.modelinfo import load_doc_model
 from problems.symbols import symbol_table
+from tests.bank import bank_documents
 
-BANK = {doc.id: doc for doc in load_bank()}
+BANK = bank_documents()
 PENDULUMS = {  # problem: the body on the string
     "vertical-circle": "ball",
     "conical-pendulum": "bob",

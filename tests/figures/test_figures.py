@@ -8,13 +8,13 @@ import xml.etree.ElementTree as ET
 import pytest
 
 from physics.figures import model_figure, symbol_label
-from problems.loader import load_bank
 from problems.modelinfo import load_doc_model
 from problems.symbols import symbol_table
 from problems.variants import draw_variant, si_values
+from tests.bank import bank_documents
 
 SVG = "{http://www.w3.org/2000/svg}"
-BANK = {doc.id: doc for doc in load_bank()}
+BANK = bank_documents()
 # What each figure must show: labels of bodies, angles and lengths, and words of its description.
 EXPECTED = {
     "atwood": ({"m₁", "m₂"}, "pulley"),

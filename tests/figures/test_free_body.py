@@ -9,13 +9,13 @@ import pytest
 
 from physics.engine import Model, load_model
 from physics.figures import body_forces, free_body_figure
-from problems.loader import load_bank
 from problems.modelinfo import load_doc_model
 from problems.symbols import symbol_table
+from tests.bank import bank_documents
 from tests.engine.test_contact_friction import SYMBOLS as CART_SYMBOLS
 from tests.engine.test_contact_friction import block_on_cart
 
-BANK = {doc.id: doc for doc in load_bank()}
+BANK = bank_documents()
 THIRTY = math.radians(30)
 
 

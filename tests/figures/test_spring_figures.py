@@ -12,12 +12,13 @@ import pytest
 from physics.engine.model import Model
 from physics.figures import body_forces, free_body_figure, model_figure
 from physics.figures.scene import Values, spring_sign
-from problems.loader import load_bank, parse_problem
+from problems.loader import parse_problem
 from problems.modelinfo import load_doc_model
 from problems.symbols import symbol_table
+from tests.bank import bank_documents
 
 SVG = "{http://www.w3.org/2000/svg}"
-BANK = {doc.id: doc for doc in load_bank()}
+BANK = bank_documents()
 # An instructor's upload whose scene once showed only the left spring and wall, and whose free-body
 # diagram was empty.
 TWO_WALLS = """

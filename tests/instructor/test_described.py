@@ -9,8 +9,9 @@ import pytest
 from app.instructor.described import SHOWN_FIGURES, describe
 from physics.verdict import Outcome
 from problems.compiled import CompiledNumericPart, compile_problem
-from problems.loader import load_bank, parse_problem
+from problems.loader import parse_problem
 from problems.variants import fixed_variant
+from tests.bank import bank_documents
 from tests.problems.documents import spring, stated_value
 
 
@@ -46,7 +47,7 @@ def test_a_stated_value_is_shown_whoever_the_student(with_variant) -> None:
 
 def test_mistakes_are_labelled_as_an_instructor_types_them() -> None:
     """The class-results charts label each known mistake with this text: powers as ^, not Python's **."""
-    doc = next(d for d in load_bank() if d.id == "moving-wedge")
+    doc = bank_documents()["moving-wedge"]
     texts = [m.text for part in describe(compile_problem(doc)).parts for m in part.mistakes]
     assert any("^" in text for text in texts), texts  # the wedge's slips hold sin(theta)^2
     assert not any("**" in text for text in texts), texts

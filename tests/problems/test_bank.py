@@ -3,12 +3,12 @@
 from __future__ import annotations
 
 from decimal import Decimal
-from functools import cache
 
 import pytest
 
 from problems.loader import load_bank
 from problems.schema import NumericPart, ProblemDocument
+from tests.bank import bank_documents
 
 # API.md's table, plus the task's additions; (symbols, parts) per problem id.
 CONTRACT: dict[str, tuple[set[str], list[str]]] = {
@@ -51,9 +51,8 @@ CONTRACT: dict[str, tuple[set[str], list[str]]] = {
 }
 
 
-@cache
 def bank() -> dict[str, ProblemDocument]:
-    return {doc.id: doc for doc in load_bank(check_meaning=False)}
+    return bank_documents()
 
 
 def test_bank_holds_the_contract_problems_unchanged_and_more() -> None:

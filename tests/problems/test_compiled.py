@@ -15,17 +15,17 @@ from physics.numeric import round_sigfigs
 from physics.verdict import Outcome, Reason
 from problems.compiled import CompiledNumericPart, CompiledProblem, CompiledSymbolicPart, compile_problem
 from problems.errors import ProblemInvalid
-from problems.loader import load_bank, parse_problem
+from problems.loader import parse_problem
 from problems.schema import ProblemDocument
 from problems.selftest import verify_problem
 from problems.student import student_view
 from problems.variants import draw_variant, fixed_variant
+from tests.bank import bank_documents
 from tests.problems.documents import spring, stated_value
 
 
-@cache
 def bank() -> dict[str, ProblemDocument]:
-    return {doc.id: doc for doc in load_bank(check_meaning=False)}
+    return bank_documents()
 
 
 @cache

@@ -7,7 +7,7 @@ from html.parser import HTMLParser
 import pytest
 
 from app.web.rendering import render_inline, render_issues, render_markdown, tex_to_mathml
-from problems.loader import load_bank
+from tests.bank import bank_documents
 
 
 def test_inline_maths_becomes_mathml_with_its_tex_kept_for_assistive_technology() -> None:
@@ -84,5 +84,5 @@ def test_dollar_amounts_are_not_maths() -> None:
 def test_every_bank_text_renders_cleanly() -> None:
     from app.web.document_text import render_problems
 
-    problems = {doc.id: render_problems(doc) for doc in load_bank()}
+    problems = {doc.id: render_problems(doc) for doc in bank_documents().values()}
     assert {pid: issues for pid, issues in problems.items() if issues} == {}

@@ -1,0 +1,44 @@
+"""A sample of many like cases (every bank problem's page, say), a new sample each day.
+
+A check over many like cases runs on `sampled(cases, k)` in the default suite, so that the whole
+suite stays within its time on a slow machine; every case is covered within a few days' runs. The
+sample is drawn from a seed: PHYSCHECK_TEST_SEED when set, else the day's number, fixed once per run
+in the controller (`fix_seed`, from conftest's pytest_configure) so that every xdist worker collects the same tests. pytest's header
+prints the seed, which reproduces a failing run's sample; PHYSCHECK_TEST_ALL=1 runs every case.
+"""
+
+from __future__ import annotations
+
+import datetime
+import os
+import random
+from collections.abc import Sequence
+from typing import TypeVar
+
+SEED_ENV = "PHYSCHECK_TEST_SEED"
+ALL_ENV = "PHYSCHECK_TEST_ALL"
+T = TypeVar("T")
+
+
+def fix_seed() -> None:
+    """The run's seed, put in the environment before the xdist workers start: they inherit it."""
+    os.environ.setdefault(SEED_ENV, str(datetime.date.today().toordinal()))
+
+
+def described() -> str:
+    """pytest's header line: how to draw this run's sample again, or run every case."""
+    if os.environ.get(ALL_ENV):
+        return f"sampled checks: every case ({ALL_ENV} is set)"
+    seed = os.environ[SEED_ENV]
+    return (
+        f"sampled checks: seed {seed} ({SEED_ENV}={seed} draws the same sample; {ALL_ENV}=1 runs every case)"
+    )
+
+
+def sampled(cases: Sequence[T], k: int, name: str) -> list[T]:
+    """`k` of `cases` (in their order), drawn from the run's seed and `name` (each check its own draw)."""
+    if os.environ.get(ALL_ENV) or len(cases) <= k:
+        return list(cases)
+    fix_seed()
+    chosen = set(random.Random(f"{os.environ[SEED_ENV]}:{name}").sample(range(len(cases)), k))
+    return [case for index, case in enumerate(cases) if index in chosen]
