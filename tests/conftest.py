@@ -165,5 +165,5 @@ def pytest_configure(config: pytest.Config) -> None:
     fix_seed()
 
 
-def pytest_report_header(config: pytest.Config) -> str:
-    return described()
+def pytest_terminal_summary(terminalreporter: pytest.TerminalReporter) -> None:
+    terminalreporter.write_line(described())  # -q prints no header: the seed goes at the end

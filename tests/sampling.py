@@ -3,8 +3,9 @@
 A check over many like cases runs on `sampled(cases, k)` in the default suite, so that the whole
 suite stays within its time on a slow machine; every case is covered within a few days' runs. The
 sample is drawn from a seed: PHYSCHECK_TEST_SEED when set, else the day's number, fixed once per run
-in the controller (`fix_seed`, from conftest's pytest_configure) so that every xdist worker collects the same tests. pytest's header
-prints the seed, which reproduces a failing run's sample; PHYSCHECK_TEST_ALL=1 runs every case.
+in the controller (`fix_seed`, from conftest's pytest_configure) so that every xdist worker collects
+the same tests. pytest's summary prints the seed, which draws a failing run's sample again;
+PHYSCHECK_TEST_ALL=1 runs every case.
 """
 
 from __future__ import annotations
@@ -26,7 +27,7 @@ def fix_seed() -> None:
 
 
 def described() -> str:
-    """pytest's header line: how to draw this run's sample again, or run every case."""
+    """pytest's summary line: how to draw this run's sample again, or run every case."""
     if os.environ.get(ALL_ENV):
         return f"sampled checks: every case ({ALL_ENV} is set)"
     seed = os.environ[SEED_ENV]
