@@ -14,19 +14,24 @@ import hmac
 import logging
 import pickle
 import threading
+import time
+import traceback
 from collections import OrderedDict
 from collections.abc import Callable
+from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
 from pathlib import Path
 from typing import Any, TypeVar
 
 from app.db.errors import ProblemExists, ProblemNotFound
 from app.db.problems import document_hash
 from app.db.records import ProblemRecord
+from app.grading import forkserver
 from app.storage import CompiledCache, Stores
 from physics.checking import CheckJob
 from physics.engine.model import Model
 from physics.figures import model_figure
 from physics.figures.free_body import free_body_figure
+from physics.wording import counted
 from problems.compiled import CompiledProblem, compile_problem, document_digest
 from problems.errors import ProblemInvalid
 from problems.fingerprint import engine_digest, source_digest
@@ -143,8 +148,11 @@ class CompiledStore:
         # The same document may be stored as several versions: the content is shared, not the number.
         return dataclasses.replace(compiled, version=record.version)
 
-    def save(self, record: ProblemRecord, compiled: CompiledProblem) -> None:
-        payload = pickle.dumps(compiled, protocol=pickle.HIGHEST_PROTOCOL)
+    @staticmethod
+    def payload(compiled: CompiledProblem) -> bytes:
+        return pickle.dumps(compiled, protocol=pickle.HIGHEST_PROTOCOL)
+
+    def save(self, record: ProblemRecord, payload: bytes) -> None:
         self._put(self.key(record), payload, f"the compilation of {record.id!r}")
 
     def _put(self, key: str, payload: bytes, what: str) -> None:
@@ -152,6 +160,19 @@ class CompiledStore:
             self._cache.put(key, payload, self._mac(key, payload))
         except Exception as error:  # a cache: another instance may have written it meanwhile
             log.warning("could not store %s: %s", what, error)
+
+
+def derived_payload(doc: ProblemDocument, version: int) -> bytes:
+    """A problem compiled and prepared, as the store keeps it: what a warm-up's derivation process
+    sends back (the warm-up stores these bytes and opens them later, as a restart does).
+
+    A failure comes back as a RuntimeError with the traceback's text: the bank's own errors take
+    arguments that pickle's rebuilding of an exception does not pass, and one that cannot be rebuilt
+    in the server breaks the whole process pool."""
+    try:
+        return CompiledStore.payload(compile_problem(doc, version).prepare())
+    except Exception:
+        raise RuntimeError(traceback.format_exc()) from None
 
 
 class Catalog:
@@ -162,7 +183,10 @@ class Catalog:
         bank_dir: Path | None = None,
         documents_cached: int = 256,
         compiled_cached: int = 256,
+        derive_jobs: int = 1,
     ):
+        """`derive_jobs`: problems a warm-up derives side by side, each in a process of its own (1: one
+        after another, in the warm-up's thread)."""
         self._problems = stores.problems
         self._bank_dir = bank_dir
         self._secret = secret
@@ -177,6 +201,7 @@ class Catalog:
         self._closing = threading.Event()
         self._compiling: dict[tuple[str, int, str], threading.Lock] = {}
         self._sealed: dict[str, bytes] = {}  # verified stored compilations not opened yet, by store key
+        self._derive_jobs = derive_jobs
 
     def sync_builtin(self) -> list[ProblemRecord]:
         """Store the built-in bank: unchanged files keep their version, edited ones get a new one.
@@ -219,30 +244,74 @@ class Catalog:
 
         A problem whose compilation is stored (and verifies) counts at once: one query finds them all,
         and they are opened after `warm` is set (or by the first request that needs one). Only the others
-        are compiled (derivations take seconds) before `warm` is set.
+        are compiled (derivations take seconds) before `warm` is set, `derive_jobs` at a time. One that
+        fails is logged once and left to the first request that needs it.
         """
+        failed: set[str] = set()  # not derived again (nor logged again) by the opening below
         try:
             records = self.list()
             sealed = self._stored(lambda: self._store.sealed(records)) or {}
             with self._lock:
                 self._sealed.update(sealed)
-            for record in records:
-                if self._closing.is_set():
-                    return
-                if self._store.key(record) not in sealed:
-                    self._compile_logged(record)
+            cold = [record for record in records if self._store.key(record) not in sealed]
+            jobs = min(self._derive_jobs, len(cold))
+            if cold:
+                log.info("deriving %s not stored yet, %d at a time", counted(len(cold), "problem"), jobs)
+            started = time.monotonic()
+            if jobs > 1:
+                failed = self._derive_side_by_side(cold, jobs)
+            else:
+                for record in cold:
+                    if self._closing.is_set():
+                        return
+                    if not self._compile_logged(record):
+                        failed.add(record.id)
+            if cold and not self._closing.is_set():
+                log.info("derived %s in %.1f s", counted(len(cold), "problem"), time.monotonic() - started)
         finally:
             self.warm.set()
         for record in records:  # opened now rather than by a student's first request
             if self._closing.is_set():
                 return
-            self._compile_logged(record)
+            if record.id not in failed:
+                self._compile_logged(record)
 
-    def _compile_logged(self, record: ProblemRecord) -> None:
+    def _derive_side_by_side(self, records: list[ProblemRecord], jobs: int) -> set[str]:
+        """Each record derived in a process from the fork server, stored, and left sealed for the
+        opening after `warm` (the server's GIL would serialise derivations in threads); returns the
+        ids of those that failed."""
+        failed: set[str] = set()
+        pool = ProcessPoolExecutor(jobs, mp_context=forkserver.context())
+        try:
+            pending: dict[Future[bytes], ProblemRecord] = {
+                pool.submit(derived_payload, self.document(record), record.version): record
+                for record in records
+            }
+            while pending and not self._closing.is_set():
+                done, _ = wait(pending, timeout=0.5, return_when=FIRST_COMPLETED)
+                for future in done:
+                    record = pending.pop(future)
+                    try:
+                        payload = future.result()
+                    except Exception:  # one broken problem must not keep the others cold
+                        log.exception("could not compile problem %r version %d", record.id, record.version)
+                        failed.add(record.id)
+                        continue
+                    self._stored(lambda: self._store.save(record, payload))  # noqa: B023 - called at once
+                    with self._lock:
+                        self._sealed[self._store.key(record)] = payload
+        finally:
+            # Closing: derivations not started are dropped; one running ends in seconds.
+            pool.shutdown(wait=not self._closing.is_set(), cancel_futures=True)
+        return failed
+
+    def _compile_logged(self, record: ProblemRecord) -> bool:
         try:
             self.compiled(record)
         except Exception:  # one broken problem must not keep the others cold
             log.exception("could not compile problem %r version %d", record.id, record.version)
+            return False
+        return True
 
     def close(self) -> None:
         """Stop a warm-up still running (it would otherwise compile on after the app has shut down);
@@ -295,7 +364,7 @@ class Catalog:
                     # compile_problem's process-wide cache: several apps in one process (tests, a fresh
                     # database) share what is a pure function of the document, its version and the code.
                     found = compile_problem(self.document(record), record.version).prepare()
-                    self._stored(lambda: self._store.save(record, found))
+                    self._stored(lambda: self._store.save(record, CompiledStore.payload(found)))
                 with self._lock:
                     self._compiled[key] = found
                     while len(self._compiled) > self._compiled_limit:

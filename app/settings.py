@@ -12,13 +12,18 @@ from pydantic_settings import BaseSettings, SettingsConfigDict
 DEVELOPMENT_SECRET = "dev-secret-change-me"  # noqa: S105 - refused wherever it would matter
 
 
+def cores() -> int:
+    """The cores this process may run on."""
+    found = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count()
+    return found or 1
+
+
 def default_check_workers() -> int:
     """Two more grading workers than cores: the server shares the cores with its workers, and a worker
     that has answered waits for the server to hand it the next check; with only one per core, a core
     then stood idle under load (2 cores: 2 workers served 10-20 % fewer checks a second than 3-5 did,
     bench/targets.py). A worker at rest holds about 20 MB of its own; the rest is shared."""
-    cores = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count()
-    return (cores or 1) + 2
+    return cores() + 2
 
 
 class Settings(BaseSettings):
@@ -62,6 +67,9 @@ class Settings(BaseSettings):
     bank_dir: Path | None = None
     # Compile every problem at start-up (seconds of sympy) before /ready says yes; off for quick dev runs.
     warm_up: bool = True
+    # Problems a start derives side by side when nothing of theirs is stored yet (a first start, new
+    # code), each in a process of its own: about a minute for the bank on one core.
+    derive_jobs: int = Field(default_factory=cores, ge=1)
     log_level: str = "INFO"
 
     @model_validator(mode="after")

@@ -94,7 +94,7 @@ class Storage:
 def open_storage(settings: Settings) -> Storage:
     database = open_database(settings)
     stores = sql_stores(database)
-    catalog = Catalog(stores, settings.secret, settings.bank_dir)
+    catalog = Catalog(stores, settings.secret, settings.bank_dir, derive_jobs=settings.derive_jobs)
     catalog.sync_builtin()
     return Storage(database=database, stores=stores, keys=DatabaseKeyStore(stores.keys), catalog=catalog)
 

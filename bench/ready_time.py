@@ -6,7 +6,8 @@ Starts its own servers (bench/load.py's OwnServer: a free 127.0.0.1 port, its ow
 SQLite database in a temporary directory). Each cold start is on a fresh database: it derives the whole
 bank and persists it. The warm starts are restarts on the last cold start's database, which load the
 compiled bank instead. Printed: every time with the median of each, in wall seconds and in CPU seconds
-(all the server's processes up to the 200: the server, the workers' fork server and the workers; on a
+(all the server's processes up to the 200: the server, the workers' fork server, the workers and a
+cold start's derivation processes; on a
 loaded machine wall time is mostly waiting for a core, CPU time is not). /ready is polled every 20 ms.
 
 With `--directory DIR` the database is kept in DIR (created if missing): a later run on the same DIR
@@ -34,17 +35,18 @@ TICKS = os.sysconf("SC_CLK_TCK")
 
 
 def group_cpu(group: int) -> float:
-    """CPU seconds (user and system) used so far by the live processes of a process group."""
+    """CPU seconds (user and system) used so far by the live processes of a process group and by the
+    children they have waited for (a cold start's derivation processes, which have exited by then)."""
     total = 0
     for entry in Path("/proc").iterdir():
         if not entry.name.isdigit():
             continue
         with contextlib.suppress(OSError):
-            # After the command name (in parentheses, may hold spaces): state, ppid, pgrp, ... utime at
-            # field 14 and stime at 15 of the whole line.
+            # After the command name (in parentheses, may hold spaces): state, ppid, pgrp, ... utime,
+            # stime, cutime and cstime at fields 14 to 17 of the whole line.
             fields = (entry / "stat").read_text().rsplit(")", 1)[1].split()
             if int(fields[2]) == group:
-                total += int(fields[11]) + int(fields[12])
+                total += sum(int(field) for field in fields[11:15])
     return total / TICKS
 
 

@@ -3,12 +3,14 @@ across restarts: only a changed version (or code that does something else) is co
 
 from __future__ import annotations
 
+import logging
 import shutil
 import threading
 import time
 from pathlib import Path
 
 import pytest
+import yaml
 from sqlalchemy import select
 
 from app import catalog as catalog_module
@@ -170,3 +172,35 @@ def test_an_edited_bank_document_has_its_meaning_checked_again(db, small_bank):
     )
     with pytest.raises(ProblemInvalid, match="q"):
         Catalog(sql_stores(db), SECRET, small_bank).sync_builtin()
+
+
+def test_a_first_start_derives_side_by_side_in_other_processes_and_a_restart_loads_it(
+    db, small_bank, compilations
+):
+    first = Catalog(sql_stores(db), SECRET, small_bank, derive_jobs=2)
+    first.sync_builtin()
+    first.warm_up()
+    assert compilations == []  # derived in processes of their own, not in this one
+    assert grades_its_reference(first)
+    with db.session() as session:
+        assert len(session.scalars(select(CompiledProblemRow)).all()) >= 2
+    restarted = start(db, small_bank)
+    assert compilations == []  # stored by the first start: nothing derived again
+    assert grades_its_reference(restarted)
+
+
+def test_a_problem_that_fails_to_derive_side_by_side_is_logged_and_the_others_are_ready(
+    db, small_bank, caplog
+):
+    stores = sql_stores(db)
+    broken = yaml.safe_load((small_bank / "atwood" / "problem.yaml").read_text())
+    broken["id"] = "broken-atwood"
+    broken["parts"][0]["answer"] = "(m2 - m1)*g/(m1 + m2) + zeta"  # zeta: declared nowhere
+    stores.problems.save_builtin("broken-atwood", broken)
+    catalog = Catalog(stores, SECRET, small_bank, derive_jobs=2)
+    catalog.sync_builtin()
+    with caplog.at_level(logging.ERROR, logger="physcheck.catalog"):
+        catalog.warm_up()
+    assert catalog.warm.is_set()
+    assert [r.getMessage() for r in caplog.records] == ["could not compile problem 'broken-atwood' version 1"]
+    assert grades_its_reference(catalog)
