@@ -24,7 +24,7 @@ from typing import Protocol, cast
 import sympy
 
 from physics.dimensions import Dimension
-from physics.errors import AmbiguousDivision, AnswerError, SpecError
+from physics.errors import AmbiguousGrouping, AnswerError, SpecError
 from physics.mathinput import InputLimits, ParsedMath, parse_expression
 from physics.mathinput.powered import other_reading_hint, reading_note
 from physics.mathinput.reader import build_reading, read_tree
@@ -96,7 +96,7 @@ class SymbolicQuestion:
         dimensions = {symbol.name: dim for symbol, dim in reference.dims.items()}
         try:
             reading = read_tree(answer, self.names, limits=limits)
-        except AmbiguousDivision:
+        except AmbiguousGrouping:
             reading = None  # settled by dimension, where it can be, as the answer is read in full below
         except AnswerError as error:
             return Verdict.invalid(error)

@@ -56,8 +56,10 @@ class AmbiguousInput(AnswerError):
         self.readings = tuple(readings)
 
 
-class AmbiguousDivision(AmbiguousInput):
-    """`a/b c`: (a/b)·c or a/(b·c); `position` is the `/`, which a reader may settle by dimension."""
+class AmbiguousGrouping(AmbiguousInput):
+    """One operator that groups two ways: `a/b c`, (a/b)·c or a/(b·c), and `e^-ωt`, e^(−ω)·t or
+    e^(−ωt). `position` is the operator's (the `/`, the `^`), by which a reader may settle it by
+    dimension."""
 
 
 class UnknownSymbol(AnswerError):

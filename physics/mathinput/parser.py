@@ -17,7 +17,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Literal, NoReturn
 
-from physics.errors import AmbiguousDivision, ParseError, TooLarge
+from physics.errors import AmbiguousGrouping, ParseError, TooLarge
 from physics.mathinput.limits import InputLimits
 from physics.mathinput.powered import PoweredArgument
 from physics.mathinput.render import STUDENT_STYLE, render_text
@@ -57,8 +57,9 @@ class _Item:
 
 
 class Parser:
-    """`choices` settles ambiguous divisions by the position of their `/`: 0 reads `a/b c` as (a/b)·c,
-    1 as a/(b·c). An ambiguous division without a choice is refused (AmbiguousDivision).
+    """`choices` settles ambiguous groupings by the position of their operator: 0 reads `a/b c` as
+    (a/b)·c and `e^-ωt` as e^(−ω)·t, 1 as a/(b·c) and e^(−ωt). One without a choice is refused
+    (AmbiguousGrouping).
 
     A function without brackets takes the next factor with its power (`sin θ^2` is sin(θ²)), or the
     whole word typed without a space (`cos ωt` is cos(ωt), as physics writes it); each such
@@ -218,7 +219,7 @@ class Parser:
             after = render_text(Product(run[0], tuple(("*", n) for n in run[1:])), STUDENT_STYLE)
             denominator = render_text(Product(item.node, tuple(("*", n) for n in run)), STUDENT_STYLE)
             readings = (f"({left})·{after}", f"{render_text(numerator, STUDENT_STYLE)}/({denominator})")
-            raise AmbiguousDivision(
+            raise AmbiguousGrouping(
                 f"Did you mean {readings[0]} or {readings[1]}? Add parentheses.", item.token.pos, readings
             )
         return first, items
@@ -233,13 +234,51 @@ class Parser:
             if tok.kind is Kind.OP and tok.text in "^":
                 self._advance()
                 self._enter(tok)
-                node = Power(node, self._exponent(), tok.pos)
+                exponent = self._exponent()
+                if node == Const("e") and self._word_glued_to(exponent):
+                    exponent = self._settle_exponent(exponent, tok)
+                node = Power(node, exponent, tok.pos)
                 self._leave()
             elif tok.kind is Kind.SUP:
                 self._advance()
                 node = Power(node, _superscript_node(tok), tok.pos)
             else:
                 return node
+
+    def _word_glued_to(self, exponent: Node) -> bool:
+        """Whether a name follows an unbracketed exponent without a space: `e^-ωt`, `e^2x`."""
+        follower = self._tokens[self._i]
+        core = exponent.operand if isinstance(exponent, Neg) else exponent
+        return (
+            follower.kind in (Kind.NAME, Kind.CONST)
+            and not follower.space_before
+            and not isinstance(core, Group)
+        )
+
+    def _settle_exponent(self, exponent: Node, caret: Token) -> Node:
+        """`e^-ωt` is e^(−ω)·t to the grammar, but physics writes e^(−ωt) so: `choices` reads it (by the
+        position of its `^`) one way, 0 as e^(−ω)·t (the name left to the product), 1 as e^(−ωt) (the
+        word typed without a space is the exponent, as with `cos ωt`); without a choice it is refused."""
+        choice = self._choices.get(caret.pos)
+        if choice == 0:
+            return exponent
+        glued: list[Node] = []
+        while self._word_glued_to(exponent):
+            glued.append(self._raised(self._postfixed()))
+        if isinstance(exponent, Neg):
+            whole: Node = Neg(_product_of([exponent.operand, *glued]))
+        else:
+            whole = _product_of([exponent, *glued])
+        if choice == 1:
+            return whole
+        e = Const("e")
+        readings = (
+            render_text(_product_of([Power(e, exponent), *glued]), STUDENT_STYLE),
+            render_text(Power(e, whole), STUDENT_STYLE),
+        )
+        raise AmbiguousGrouping(
+            f"Did you mean {readings[0]} or {readings[1]}? Add parentheses.", caret.pos, readings
+        )
 
     def _exponent(self) -> Node:
         tok = self._tokens[self._i]

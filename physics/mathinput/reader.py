@@ -96,8 +96,8 @@ def parse_math(
 ) -> ParsedMath:
     """Read `text` using only the declared `names` (spelling -> Symbol to use).
 
-    `choices` reads each ambiguous division (by the position of its `/`) one way: 0 as (a/b)·c,
-    1 as a/(b·c); without a choice it is refused (AmbiguousDivision). A bare function argument with a
+    `choices` reads each ambiguous grouping (by the position of its `/` or `^`) one way: 0 as (a/b)·c
+    or e^(−ω)·t, 1 as a/(b·c) or e^(−ωt); without a choice it is refused (AmbiguousGrouping). A bare function argument with a
     power (`sin θ^2`) reads as sin(θ²) and `read_as.note` says so; `powers_outside` reads it as
     (sin θ)², the other reading, for comparison.
 

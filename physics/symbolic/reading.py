@@ -1,8 +1,10 @@
-"""Reading a symbolic answer, with an ambiguous division settled by dimension where only one reading fits.
+"""Reading a symbolic answer, with an ambiguous grouping settled by dimension where only one reading
+fits.
 
-`mv/qB` is (m·v/q)·B or m·v/(q·B). The math reader refuses it; here, when every symbol of the answer
-has a declared dimension and exactly one reading has the dimension the answer must have (a radius:
-m·v/(q·B)), that reading is taken and `read_as.note` says so. Where both readings fit, or neither, or a
+`mv/qB` is (m·v/q)·B or m·v/(q·B), and `A e^-ωt` is A·e^(−ω)·t or A·e^(−ωt). The math reader refuses
+them; here, when every symbol of the answer has a declared dimension and exactly one reading has the
+dimension the answer must have (a radius: m·v/(q·B); a displacement: A·e^(−ωt), since exp of a rate
+has none), that reading is taken and `read_as.note` says so. Where both readings fit, or neither, or a
 dimension is unknown, the refusal stands: dimensions cannot decide, the student must add parentheses.
 """
 
@@ -14,11 +16,11 @@ from collections.abc import Mapping
 import sympy
 
 from physics.dimensions import Dimension, describe
-from physics.errors import AmbiguousDivision
+from physics.errors import AmbiguousGrouping
 from physics.mathinput import InputLimits, ParsedMath, parse_math
 from physics.symbolic.dimensional import DimensionMismatch, UnknownDimension, expression_dimension
 
-# Ambiguous divisions one answer may have settled: 2^3 readings at most are parsed.
+# Ambiguous groupings one answer may have settled: 2^3 readings at most are parsed.
 MAX_SETTLED = 3
 
 
@@ -31,18 +33,18 @@ def read_symbolic_answer(
     *,
     powers_outside: bool = False,
 ) -> ParsedMath:
-    """`parse_math`, except that an ambiguous division is settled by `expected` when exactly one
+    """`parse_math`, except that an ambiguous grouping is settled by `expected` when exactly one
     reading has it (`dimensions`: each symbol's dimension, by name). Raises what parse_math raises.
     `powers_outside` reads `sin θ^2` as (sin θ)², as parse_math does."""
     try:
         return parse_math(text, names, limits=limits, powers_outside=powers_outside)
-    except AmbiguousDivision as refused:
+    except AmbiguousGrouping as refused:
         if expected is None:
             raise
         readings = _readings(text, names, limits, {}, refused, powers_outside)
         fitting = [r for r in readings if _fits(r.expr, dimensions, expected, refused)]
         if len(fitting) > 1:
-            raise AmbiguousDivision(
+            raise AmbiguousGrouping(
                 f"{refused.message} Both readings are {describe(expected)}, so the dimensions cannot decide.",
                 refused.position,
                 refused.readings,
@@ -61,12 +63,12 @@ def _readings(
     names: Mapping[str, sympy.Symbol],
     limits: InputLimits,
     choices: dict[int, int],
-    refused: AmbiguousDivision,
+    refused: AmbiguousGrouping,
     powers_outside: bool,
 ) -> list[ParsedMath]:
     try:
         return [parse_math(text, names, limits=limits, choices=choices, powers_outside=powers_outside)]
-    except AmbiguousDivision as another:
+    except AmbiguousGrouping as another:
         if len(choices) >= MAX_SETTLED or another.position is None or another.position in choices:
             raise refused from None
         position = another.position
@@ -77,7 +79,7 @@ def _readings(
 
 
 def _fits(
-    expr: sympy.Expr, dimensions: Mapping[str, Dimension], expected: Dimension, refused: AmbiguousDivision
+    expr: sympy.Expr, dimensions: Mapping[str, Dimension], expected: Dimension, refused: AmbiguousGrouping
 ) -> bool:
     known = {s: dimensions[s.name] for s in expr.free_symbols if s.name in dimensions}
     try:

@@ -1,5 +1,6 @@
-"""An ambiguous division (`mv/qB`) is settled by dimension where exactly one reading has the dimension
-the answer must have; it is refused where dimensions cannot decide."""
+"""An ambiguous grouping (the division `mv/qB`, the power `A e^-ωt`) is settled by dimension where
+exactly one reading has the dimension the answer must have; it is refused where dimensions cannot
+decide."""
 
 from __future__ import annotations
 
@@ -19,6 +20,9 @@ PENDULUM = (SymbolDecl("m", "kg"), SymbolDecl("M", "kg"), SymbolDecl("g", "m/s^2
 LENNARD_JONES = (SymbolDecl("U0", "J"), SymbolDecl("r0", "m"), SymbolDecl("r", "m"), SymbolDecl("m", "kg"))
 MOMENTUM = (SymbolDecl("p", "kg*m/s"), SymbolDecl("m", "kg"))
 FALL = (SymbolDecl("v", "m/s"), SymbolDecl("g", "m/s^2"))
+DECAY = (SymbolDecl("A", "m"), SymbolDecl("omega", "1/s"), SymbolDecl("t", "s"), SymbolDecl("k", "1/m"))
+PURE = (SymbolDecl("x", "1"), SymbolDecl("y", "1"))
+UNDIMENSIONED = (SymbolDecl("A"), SymbolDecl("omega"), SymbolDecl("t"))
 
 SETTLED = [
     # (answer, reference, symbols, reading taken, what the answer must be)
@@ -28,6 +32,16 @@ SETTLED = [
     ("12/r0 sqrt(U0/m)", "12/r0*sqrt(U0/m)", LENNARD_JONES, "12/r0*sqrt(U0/m)", "an angular frequency"),
     ("p^2/2m", "p^2/(2*m)", MOMENTUM, "p**2/(2*m)", "an energy"),
     ("v^2/2g", "v^2/(2*g)", FALL, "v**2/(2*g)", "a length"),
+    # e^(−ω)·t takes exp of a rate: only e^(−ωt) can be right, as physics writes it
+    ("A e^-ωt", "A*exp(-omega*t)", DECAY, "A*e**(-omega*t)", "a length"),
+    (
+        "A e^-omegat cos(omega t)",
+        "A*exp(-omega*t)*cos(omega*t)",
+        DECAY,
+        "A*e**(-omega*t)*cos(omega*t)",
+        "a length",
+    ),
+    ("A e^-kA", "A*exp(-k*A)", DECAY, "A*e**(-k*A)", "a length"),
 ]
 
 
@@ -71,11 +85,14 @@ REFUSED = [
     ),  # the bracket is a pure number: both readings are forces
     ("p^2/2m", "p^2/(2*m)", (SymbolDecl("p"), SymbolDecl("m", "kg")), "Add parentheses"),  # p undimensioned
     ("mv/qB", "m*v*B", CHARGE, "Add parentheses"),  # neither reading has the reference's dimension
+    ("e^2x", "exp(2*x)", PURE, "Both readings are a pure number"),  # e²·x or e^(2x)
+    ("A e^-2kA", "A*exp(-2*k*A)", DECAY, "Both readings are a length"),  # A·e^(−2)·k·A is one too
+    ("A e^-ωt^2", "A*exp(-omega*t)", DECAY, "Add parentheses"),  # neither exponent is a pure number
 ]
 
 
 @pytest.mark.parametrize(("answer", "reference", "symbols", "words"), REFUSED, ids=[c[0] for c in REFUSED])
-def test_division_that_dimensions_cannot_settle_is_refused_with_both_readings(
+def test_a_grouping_that_dimensions_cannot_settle_is_refused_with_both_readings(
     answer: str, reference: str, symbols: tuple[SymbolDecl, ...], words: str
 ) -> None:
     verdict = run_job(SymbolicJob(answer, reference, symbols))
@@ -96,3 +113,30 @@ def test_more_ambiguous_divisions_than_the_budget_are_refused() -> None:
     answer = " + ".join(["mv/qB"] * 4)
     verdict = run_job(SymbolicJob(answer, "4*m*v/(q*B)", CHARGE))
     assert verdict.reason is Reason.AMBIGUOUS
+
+
+UNCHANGED = [
+    # (answer, reference, symbols, reading): no name glued to an unbracketed exponent of e
+    ("A e^(-ω)t", "A*exp(-omega)*t", UNDIMENSIONED, "A*e**(-omega)*t"),  # the student's brackets
+    ("A e^-ω t", "A*exp(-omega)*t", UNDIMENSIONED, "A*e**(-omega)*t"),  # a space ends the exponent
+    ("x^2y", "x**2*y", PURE, "x**2*y"),  # only e's exponent takes the word
+    ("e^x y", "exp(x)*y", PURE, "e**x*y"),
+]
+
+
+@pytest.mark.parametrize(
+    ("answer", "reference", "symbols", "reading"), UNCHANGED, ids=[c[0] for c in UNCHANGED]
+)
+def test_an_exponent_with_brackets_or_a_space_after_it_is_no_ambiguity(
+    answer: str, reference: str, symbols: tuple[SymbolDecl, ...], reading: str
+) -> None:
+    verdict = run_job(SymbolicJob(answer, reference, symbols))
+    assert verdict.read_as is not None, verdict.feedback
+    assert (verdict.read_as.text, verdict.read_as.note) == (reading, None)
+
+
+def test_the_refusal_of_an_exponent_names_both_readings_at_its_caret() -> None:
+    verdict = run_job(SymbolicJob("e^2x", "exp(2*x)", PURE))
+    assert verdict.error is not None
+    assert verdict.error.position == 1
+    assert verdict.feedback.startswith("Did you mean e^2·x or e^(2·x)? Add parentheses.")
