@@ -66,13 +66,21 @@ class ProblemWork:
         return any(work.history for work in self.parts.values())
 
 
+def shown_feedback(verdict: Outcome, feedback: str) -> str:
+    """The feedback as the page shows it after its own word for the verdict: without the "Correct."
+    that word already says (a settled reading's note leads it: "Read as …: the only reading … Correct.")."""
+    if verdict is Outcome.CORRECT:
+        return feedback.strip().removesuffix("Correct.").strip()
+    return feedback
+
+
 def _attempt(record: SubmissionRecord) -> Attempt:
     invalid = record.verdict == Outcome.INVALID
     return Attempt(
         answer=record.answer,
         verdict=record.verdict.value,
         score=record.score,
-        feedback="" if invalid else record.feedback,
+        feedback="" if invalid else shown_feedback(record.verdict, record.feedback),
         error=record.feedback if invalid else "",
         number=record.attempt,
         created_at=record.created_at,

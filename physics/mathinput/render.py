@@ -46,6 +46,13 @@ def render_text(node: Node, style: TextStyle = CONTRACT_STYLE) -> str:
     return _text(node, style)[0]
 
 
+def in_student_style(text: str) -> str:
+    """A text in the contract's style (`m*v/(q*B)`, `e**(-omega*t)`) in STUDENT_STYLE (`m·v/(q·B)`,
+    `e^(-omega·t)`): how a note tells a student what was read, in words that stay as they are where the
+    note is shown as Markdown (the student page), where `*` would turn to emphasis."""
+    return text.replace("**", STUDENT_STYLE.power).replace("*", STUDENT_STYLE.times)
+
+
 def render_latex(node: Node) -> str:
     return _latex(node)[0]
 

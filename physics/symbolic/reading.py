@@ -18,6 +18,7 @@ import sympy
 from physics.dimensions import Dimension, describe
 from physics.errors import AmbiguousGrouping
 from physics.mathinput import InputLimits, ParsedMath, parse_math
+from physics.mathinput.render import in_student_style
 from physics.symbolic.dimensional import DimensionMismatch, UnknownDimension, expression_dimension
 
 # Ambiguous groupings one answer may have settled: 2^3 readings at most are parsed.
@@ -52,7 +53,9 @@ def read_symbolic_answer(
         if not fitting:
             raise refused from None
         chosen = fitting[0]
-        note = f"Read as {chosen.read_as.text}: the only reading that is {describe(expected)}"
+        note = (
+            f"Read as {in_student_style(chosen.read_as.text)}: the only reading that is {describe(expected)}"
+        )
         if chosen.read_as.note is not None:  # how a bare function argument with a power was read
             note = f"{note}. {chosen.read_as.note}"
         return dataclasses.replace(chosen, read_as=dataclasses.replace(chosen.read_as, note=note))

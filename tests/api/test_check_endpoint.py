@@ -264,7 +264,7 @@ def test_ambiguous_division_is_settled_where_one_reading_has_the_expected_dimens
     ).json()
     assert (result["verdict"], result["reason"]) == ("correct", "equivalent")
     assert result["read_as"]["text"] == "p**2/(2*m)"
-    assert result["read_as"]["note"] == "Read as p**2/(2*m): the only reading that is an energy"
+    assert result["read_as"]["note"] == "Read as p^2/(2·m): the only reading that is an energy"
 
 
 @pytest.mark.parametrize(

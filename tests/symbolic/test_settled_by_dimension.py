@@ -56,8 +56,10 @@ def test_the_only_reading_with_the_expected_dimension_is_graded_and_shown(
     assert verdict.read_as is not None
     assert verdict.read_as.text == reading
     assert verdict.read_as.note is not None
-    assert verdict.read_as.note.startswith(f"Read as {reading}: the only reading that is {kind}")
-    assert verdict.feedback.startswith(f"Read as {reading}")
+    # the note in the student's style: the page shows it as Markdown, where `*` is emphasis
+    typed = reading.replace("**", "^").replace("*", "·")
+    assert verdict.read_as.note.startswith(f"Read as {typed}: the only reading that is {kind}")
+    assert verdict.feedback.startswith(f"Read as {typed}")
 
 
 def test_a_settled_reading_that_is_wrong_is_graded_wrong() -> None:
