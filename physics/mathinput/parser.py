@@ -246,35 +246,53 @@ class Parser:
                 return node
 
     def _word_glued_to(self, exponent: Node) -> bool:
-        """Whether a name follows an unbracketed exponent without a space: `e^-ωt`, `e^2x`."""
-        follower = self._tokens[self._i]
+        """Whether a name, or a `/` and a factor, follows an unbracketed exponent without a space:
+        `e^-ωt`, `e^2x`, `e^-t/τ`."""
         core = exponent.operand if isinstance(exponent, Neg) else exponent
-        return (
-            follower.kind in (Kind.NAME, Kind.CONST)
-            and not follower.space_before
-            and not isinstance(core, Group)
-        )
+        return not isinstance(core, Group) and self._glued_factor() is not None
+
+    def _glued_factor(self) -> Literal["*", "/"] | None:
+        """How the word typed on without a space goes on here: a name (`*`), a `/` before a name or a
+        number (`/`), or not at all (None)."""
+        follower = self._tokens[self._i]
+        if follower.space_before:
+            return None
+        if follower.kind in (Kind.NAME, Kind.CONST):
+            return "*"
+        after = self._tokens[self._i + 1] if follower.kind is not Kind.END else follower
+        if (
+            follower.kind is Kind.OP
+            and follower.text == "/"
+            and after.kind in (Kind.NAME, Kind.CONST, Kind.NUM)
+            and not after.space_before
+        ):
+            return "/"
+        return None
 
     def _settle_exponent(self, exponent: Node, caret: Token) -> Node:
-        """`e^-ωt` is e^(−ω)·t to the grammar, but physics writes e^(−ωt) so: `choices` reads it (by the
-        position of its `^`) one way, 0 as e^(−ω)·t (the name left to the product), 1 as e^(−ωt) (the
-        word typed without a space is the exponent, as with `cos ωt`); without a choice it is refused."""
+        """`e^-ωt` is e^(−ω)·t to the grammar, but physics writes e^(−ωt) so (and `e^-t/τ` e^(−t/τ)):
+        `choices` reads it (by the position of its `^`) one way, 0 as e^(−ω)·t (the rest left to the
+        product), 1 as e^(−ωt) (the word typed without a space is the exponent, as with `cos ωt`);
+        without a choice it is refused. A division in that word may be ambiguous in turn (`e^-bt/2m`)."""
         choice = self._choices.get(caret.pos)
         if choice == 0:
             return exponent
-        glued: list[Node] = []
-        while self._word_glued_to(exponent):
-            glued.append(self._raised(self._postfixed()))
-        if isinstance(exponent, Neg):
-            whole: Node = Neg(_product_of([exponent.operand, *glued]))
-        else:
-            whole = _product_of([exponent, *glued])
+        items: list[_Item] = []
+        while (op := self._glued_factor()) is not None:
+            tok = self._advance() if op == "/" else self._tokens[self._i]
+            items.append(_Item(op, self._raised(self._postfixed()), tok, op == "*"))
+        negative = isinstance(exponent, Neg)
+        first = exponent.operand if isinstance(exponent, Neg) else exponent
         if choice == 1:
-            return whole
+            first, items = self._settle_ambiguous_divisions(first, items)
+            whole = Product(first, tuple((i.op, i.node) for i in items)) if items else first
+            return Neg(whole) if negative else whole
         e = Const("e")
+        rest = tuple((i.op, i.node) for i in items)
+        whole = Product(first, rest)
         readings = (
-            render_text(_product_of([Power(e, exponent), *glued]), STUDENT_STYLE),
-            render_text(Power(e, whole), STUDENT_STYLE),
+            render_text(Product(Power(e, exponent), rest), STUDENT_STYLE),
+            render_text(Power(e, Neg(whole) if negative else whole), STUDENT_STYLE),
         )
         raise AmbiguousGrouping(
             f"Did you mean {readings[0]} or {readings[1]}? Add parentheses.", caret.pos, readings

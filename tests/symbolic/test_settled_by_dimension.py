@@ -20,7 +20,16 @@ PENDULUM = (SymbolDecl("m", "kg"), SymbolDecl("M", "kg"), SymbolDecl("g", "m/s^2
 LENNARD_JONES = (SymbolDecl("U0", "J"), SymbolDecl("r0", "m"), SymbolDecl("r", "m"), SymbolDecl("m", "kg"))
 MOMENTUM = (SymbolDecl("p", "kg*m/s"), SymbolDecl("m", "kg"))
 FALL = (SymbolDecl("v", "m/s"), SymbolDecl("g", "m/s^2"))
-DECAY = (SymbolDecl("A", "m"), SymbolDecl("omega", "1/s"), SymbolDecl("t", "s"), SymbolDecl("k", "1/m"))
+DECAY = (
+    SymbolDecl("A", "m"),
+    SymbolDecl("omega", "1/s"),
+    SymbolDecl("t", "s"),
+    SymbolDecl("k", "1/m"),
+    SymbolDecl("tau", "s"),
+    SymbolDecl("b", "kg/s"),
+    SymbolDecl("m", "kg"),
+)
+CIRCUIT = (SymbolDecl("V0", "V"), SymbolDecl("t", "s"), SymbolDecl("R", "ohm"), SymbolDecl("C", "F"))
 PURE = (SymbolDecl("x", "1"), SymbolDecl("y", "1"))
 UNDIMENSIONED = (SymbolDecl("A"), SymbolDecl("omega"), SymbolDecl("t"))
 
@@ -42,6 +51,16 @@ SETTLED = [
         "a length",
     ),
     ("A e^-kA", "A*exp(-k*A)", DECAY, "A*e**(-k*A)", "a length"),
+    ("A e^-t/τ", "A*exp(-t/tau)", DECAY, "A*e**(-t/tau)", "a length"),
+    # two groupings at once: the `^`, then the `/` in its exponent
+    (
+        "A e^-bt/2m cos(ωt)",
+        "A*exp(-b*t/(2*m))*cos(omega*t)",
+        DECAY,
+        "A*e**(-b*t/(2*m))*cos(omega*t)",
+        "a length",
+    ),
+    ("V0 e^-t/RC", "V0*exp(-t/(R*C))", CIRCUIT, "V0*e**(-t/(R*C))", "a voltage"),
 ]
 
 
@@ -89,6 +108,7 @@ REFUSED = [
     ("mv/qB", "m*v*B", CHARGE, "Add parentheses"),  # neither reading has the reference's dimension
     ("e^2x", "exp(2*x)", PURE, "Both readings are a pure number"),  # e²·x or e^(2x)
     ("A e^-2kA", "A*exp(-2*k*A)", DECAY, "Both readings are a length"),  # A·e^(−2)·k·A is one too
+    ("e^x/2", "exp(x)/2", PURE, "Both readings are a pure number"),  # e^x/2 or e^(x/2)
     ("A e^-ωt^2", "A*exp(-omega*t)", DECAY, "Add parentheses"),  # neither exponent is a pure number
 ]
 
@@ -123,6 +143,8 @@ UNCHANGED = [
     ("A e^-ω t", "A*exp(-omega)*t", UNDIMENSIONED, "A*e**(-omega)*t"),  # a space ends the exponent
     ("x^2y", "x**2*y", PURE, "x**2*y"),  # only e's exponent takes the word
     ("e^x y", "exp(x)*y", PURE, "e**x*y"),
+    ("e^x /2", "exp(x)/2", PURE, "e**x/2"),
+    ("e^x/ 2", "exp(x)/2", PURE, "e**x/2"),
 ]
 
 
