@@ -118,11 +118,8 @@ def _tokenize(text: str) -> list[Token]:
         if _is_name_char(char):
             while i < n and _is_name_char(text[i]):
                 i += 1
-            if i < n and text[i] in "0123456789":
-                raise ParseError(
-                    f"Write powers of units with ^ (for example m^2 or s^-2), not {text[start : i + 1]!r}",
-                    i,
-                )
+            # `m/s2`, `cm3`: a power typed without its ^, as students write it (and as `s-2` is read)
+            glued_power = i < n and text[i] in "0123456789"
             power_end = _glued_negative_power(text, i)
             if power_end is not None and text[start:power_end].replace("−", "-") in ALIASES:
                 tokens.append(Token(Kind.NAME, text[start:power_end].replace("−", "-"), start))
@@ -131,9 +128,11 @@ def _tokenize(text: str) -> list[Token]:
             words = _word_tokens(text[start:i], start, first=not tokens)
             if words is not None:
                 tokens.extend(words)
+                if glued_power:
+                    tokens.append(Token(Kind.POWER, "^", i))
                 continue
             tokens.append(Token(Kind.NAME, text[start:i], start))
-            if power_end is not None:
+            if power_end is not None or glued_power:
                 tokens.append(Token(Kind.POWER, "^", i))
         elif char in "0123456789":
             while i < n and text[i] in "0123456789":

@@ -69,6 +69,11 @@ ALIAS_READINGS = [
     ("m s-2", "m/s^2"),
     ("J kg-1 K-1", "J/(kg·K)"),
     ("kgm^2", "kg·m^2"),  # a power on a glued product belongs to its last unit
+    # a power typed without its ^, as `s-2` is
+    ("m/s2", "m/s^2"),
+    ("cm3", "cm^3"),
+    ("kg m2/s2", "kg·m^2/s^2"),
+    ("kgm2", "kg·m^2"),
 ]
 
 

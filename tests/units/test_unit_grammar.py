@@ -144,8 +144,6 @@ MALFORMED = [
     # (text, position of the fault)
     ("", 0),
     ("   ", 0),
-    ("m2", 1),
-    ("m/s2", 3),
     ("m/", 2),
     ("m^", 2),
     ("m^x", 2),
