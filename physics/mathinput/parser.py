@@ -14,7 +14,7 @@ Recursion is bounded by `max_depth`, so deep nesting is a TooLarge, never a Recu
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from typing import Literal, NoReturn
 
 from physics.errors import AmbiguousGrouping, ParseError, TooLarge
@@ -236,7 +236,9 @@ class Parser:
                 self._enter(tok)
                 exponent = self._exponent()
                 if node == Const("e") and self._word_glued_to(exponent):
-                    exponent = self._settle_exponent(exponent, tok)
+                    exponent = self._settle_exponent(node, exponent, tok, self._glued_factor)
+                elif self._fraction_glued_to(exponent):
+                    exponent = self._settle_exponent(node, exponent, tok, self._glued_fraction)
                 node = Power(node, exponent, tok.pos)
                 self._leave()
             elif tok.kind is Kind.SUP:
@@ -250,6 +252,26 @@ class Parser:
         `e^-ωt`, `e^2x`, `e^-t/τ`."""
         core = exponent.operand if isinstance(exponent, Neg) else exponent
         return not isinstance(core, Group) and self._glued_factor() is not None
+
+    def _fraction_glued_to(self, exponent: Node) -> bool:
+        """Whether `/n` follows an exponent of 1 without a space: `x^1/2`, `x^-1/2`, a root as students
+        type it (no one types x^1 for x). `R^2/5` stays R²/5, as in `2mR^2/5`."""
+        core = exponent.operand if isinstance(exponent, Neg) else exponent
+        return isinstance(core, Num) and core.literal == "1" and self._glued_fraction() is not None
+
+    def _glued_fraction(self) -> Literal["/"] | None:
+        """A `/` and a whole number typed on without a space (taken once: `x^1/2`), else None."""
+        slash, after = self._tokens[self._i], self._tokens[min(self._i + 1, len(self._tokens) - 1)]
+        if (
+            slash.kind is Kind.OP
+            and slash.text == "/"
+            and not slash.space_before
+            and after.kind is Kind.NUM
+            and after.is_integer_literal
+            and not after.space_before
+        ):
+            return "/"
+        return None
 
     def _glued_factor(self) -> Literal["*", "/"] | None:
         """How the word typed on without a space goes on here: a name (`*`), a `/` before a name or a
@@ -269,30 +291,34 @@ class Parser:
             return "/"
         return None
 
-    def _settle_exponent(self, exponent: Node, caret: Token) -> Node:
-        """`e^-ωt` is e^(−ω)·t to the grammar, but physics writes e^(−ωt) so (and `e^-t/τ` e^(−t/τ)):
-        `choices` reads it (by the position of its `^`) one way, 0 as e^(−ω)·t (the rest left to the
-        product), 1 as e^(−ωt) (the word typed without a space is the exponent, as with `cos ωt`);
-        without a choice it is refused. A division in that word may be ambiguous in turn (`e^-bt/2m`)."""
+    def _settle_exponent(
+        self, base: Node, exponent: Node, caret: Token, glued: Callable[[], Literal["*", "/"] | None]
+    ) -> Node:
+        """`e^-ωt` is e^(−ω)·t to the grammar, but physics writes e^(−ωt) so (and `e^-t/τ` e^(−t/τ)),
+        and `(2gh)^1/2` √(2gh): `choices` reads it (by the position of its `^`) one way, 0 as e^(−ω)·t
+        (the rest left to the product), 1 as e^(−ωt) (what is typed on without a space, as `glued`
+        finds it, is the exponent, as with `cos ωt`); without a choice it is refused. A division in
+        that word may be ambiguous in turn (`e^-bt/2m`)."""
         choice = self._choices.get(caret.pos)
         if choice == 0:
             return exponent
         items: list[_Item] = []
-        while (op := self._glued_factor()) is not None:
+        while (op := glued()) is not None:
             tok = self._advance() if op == "/" else self._tokens[self._i]
             items.append(_Item(op, self._raised(self._postfixed()), tok, op == "*"))
+            if glued == self._glued_fraction:
+                break
         negative = isinstance(exponent, Neg)
         first = exponent.operand if isinstance(exponent, Neg) else exponent
         if choice == 1:
             first, items = self._settle_ambiguous_divisions(first, items)
             whole = Product(first, tuple((i.op, i.node) for i in items)) if items else first
             return Neg(whole) if negative else whole
-        e = Const("e")
         rest = tuple((i.op, i.node) for i in items)
         whole = Product(first, rest)
         readings = (
-            render_text(Product(Power(e, exponent), rest), STUDENT_STYLE),
-            render_text(Power(e, Neg(whole) if negative else whole), STUDENT_STYLE),
+            render_text(Product(Power(base, exponent), rest), STUDENT_STYLE),
+            render_text(Power(base, Neg(whole) if negative else whole), STUDENT_STYLE),
         )
         raise AmbiguousGrouping(
             f"Did you mean {readings[0]} or {readings[1]}? Add parentheses.", caret.pos, readings

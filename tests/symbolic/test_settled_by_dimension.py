@@ -29,6 +29,7 @@ DECAY = (
     SymbolDecl("b", "kg/s"),
     SymbolDecl("m", "kg"),
 )
+DROP = (SymbolDecl("g", "m/s^2"), SymbolDecl("h", "m"), SymbolDecl("k", "N/m"), SymbolDecl("m", "kg"))
 CIRCUIT = (SymbolDecl("V0", "V"), SymbolDecl("t", "s"), SymbolDecl("R", "ohm"), SymbolDecl("C", "F"))
 PURE = (SymbolDecl("x", "1"), SymbolDecl("y", "1"))
 UNDIMENSIONED = (SymbolDecl("A"), SymbolDecl("omega"), SymbolDecl("t"))
@@ -61,6 +62,9 @@ SETTLED = [
         "a length",
     ),
     ("V0 e^-t/RC", "V0*exp(-t/(R*C))", CIRCUIT, "V0*e**(-t/(R*C))", "a voltage"),
+    # a root as students type it: (2gh)^1 halved is no speed
+    ("(2gh)^1/2", "sqrt(2*g*h)", DROP, "(2*g*h)**(1/2)", "a speed"),
+    ("2π (k/m)^-1/2", "2*pi*sqrt(m/k)", DROP, "2*pi*(k/m)**(-1/2)", "a time"),
 ]
 
 
@@ -109,6 +113,7 @@ REFUSED = [
     ("e^2x", "exp(2*x)", PURE, "Both readings are a pure number"),  # e²·x or e^(2x)
     ("A e^-2kA", "A*exp(-2*k*A)", DECAY, "Both readings are a length"),  # A·e^(−2)·k·A is one too
     ("e^x/2", "exp(x)/2", PURE, "Both readings are a pure number"),  # e^x/2 or e^(x/2)
+    ("x^1/2", "sqrt(x)", PURE, "Both readings are a pure number"),  # x/2 or √x
     ("A e^-ωt^2", "A*exp(-omega*t)", DECAY, "Add parentheses"),  # neither exponent is a pure number
 ]
 
@@ -138,12 +143,15 @@ def test_more_ambiguous_divisions_than_the_budget_are_refused() -> None:
 
 
 UNCHANGED = [
-    # (answer, reference, symbols, reading): no name glued to an unbracketed exponent of e
+    # (answer, reference, symbols, reading): nothing glued to an unbracketed exponent of e, and no
+    # exponent of 1 with a glued /n
     ("A e^(-ω)t", "A*exp(-omega)*t", UNDIMENSIONED, "A*e**(-omega)*t"),  # the student's brackets
     ("A e^-ω t", "A*exp(-omega)*t", UNDIMENSIONED, "A*e**(-omega)*t"),  # a space ends the exponent
     ("x^2y", "x**2*y", PURE, "x**2*y"),  # only e's exponent takes the word
     ("e^x y", "exp(x)*y", PURE, "e**x*y"),
     ("e^x /2", "exp(x)/2", PURE, "e**x/2"),
+    ("x^2/3", "x^2/3", PURE, "x**2/3"),  # only an exponent of 1 takes the fraction: 2mR^2/5 stays
+    ("x^1 /2", "x/2", PURE, "x**1/2"),
     ("e^x/ 2", "exp(x)/2", PURE, "e**x/2"),
 ]
 
@@ -151,7 +159,7 @@ UNCHANGED = [
 @pytest.mark.parametrize(
     ("answer", "reference", "symbols", "reading"), UNCHANGED, ids=[c[0] for c in UNCHANGED]
 )
-def test_an_exponent_with_brackets_or_a_space_after_it_is_no_ambiguity(
+def test_an_exponent_set_apart_or_not_a_roots_is_no_ambiguity(
     answer: str, reference: str, symbols: tuple[SymbolDecl, ...], reading: str
 ) -> None:
     verdict = run_job(SymbolicJob(answer, reference, symbols))
