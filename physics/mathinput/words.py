@@ -5,7 +5,9 @@ A glued run (`mgsin`) becomes several tokens, each with its own position in the 
 
 from __future__ import annotations
 
+import re
 from collections.abc import Sequence
+from fractions import Fraction
 
 from physics.errors import AmbiguousInput, TooLarge, UnknownFunction, UnknownSymbol
 from physics.mathinput.names import NameTable, Part
@@ -68,6 +70,11 @@ def resolve_words(tokens: list[Token], table: NameTable) -> list[Token]:
                     )
                 )
             continue
+        if not readings and not isinstance(tok, SpelledWord):
+            split = _function_number_split(word, table)
+            if split is not None:  # `sin2θ`: sin, 2, θ, which the parser reads as sin(2θ)
+                out.extend(_split_tokens(split, tok))
+                continue
         if readings:
             texts = [reading_text(r) for r in readings]
             raise AmbiguousInput(
@@ -94,6 +101,56 @@ def resolve_words(tokens: list[Token], table: NameTable) -> list[Token]:
             allowed,
         )
     return out
+
+
+# A word that reads no way as it stands, but does with a number after a function split out: `sin2θ`.
+_FUNCTION_NUMBER = re.compile(r"(\D+?)(\d+)(\D.*)")
+
+
+def _function_number_split(word: str, table: NameTable) -> list[Part | tuple[str, int, int]] | None:
+    """`sin2θ`, `mgsin2θ`, `cos2ωt`, `sin2θcos2θ` as physics types `sin 2θ`: the parts before the first
+    digits (ending with a function), the digits (as text, start, end), and what follows, split the
+    same way where it reads no way as it stands; None unless every piece has exactly one reading."""
+    found = _FUNCTION_NUMBER.fullmatch(word)
+    if found is None:
+        return None
+    before = table.resolve(found.group(1)).unique
+    if before is None or before[-1].kind != "func":
+        return None
+    start, end = found.span(2)
+    rest = found.group(3)
+    after: list[Part | tuple[str, int, int]] | None
+    unique = table.resolve(rest).unique
+    if unique is not None:
+        after = list(unique)
+    elif table.resolve(rest).readings:
+        return None
+    else:
+        after = _function_number_split(rest, table)
+    if after is None:
+        return None
+    shifted = [_shifted(piece, end) for piece in after]
+    return [*before, (found.group(2), start, end), *shifted]
+
+
+def _shifted(piece: Part | tuple[str, int, int], by: int) -> Part | tuple[str, int, int]:
+    if isinstance(piece, Part):
+        return Part(piece.kind, piece.canonical, piece.start + by, piece.end + by)
+    return (piece[0], piece[1] + by, piece[2] + by)
+
+
+def _split_tokens(pieces: list[Part | tuple[str, int, int]], tok: Token) -> list[Token]:
+    tokens = []
+    for k, piece in enumerate(pieces):
+        space = tok.space_before if k == 0 else False
+        if isinstance(piece, Part):
+            start, end = tok.position_in_text(piece.start), tok.position_in_text(piece.end)
+            tokens.append(Token(_PART_KINDS[piece.kind], piece.canonical, start, end, space))
+        else:
+            digits, low, high = piece
+            start, end = tok.position_in_text(low), tok.position_in_text(high)
+            tokens.append(Token(Kind.NUM, digits, start, end, space, Fraction(int(digits))))
+    return tokens
 
 
 # Latin letters students type for a Greek one that looks alike: `wt` for ωt, `u` for μ.

@@ -63,6 +63,12 @@ GLUED = [
     ("μmg", ("mu", "m", "g"), sym("mu") * sym("m") * sym("g")),
     ("mumg", ("mu", "m", "g"), sym("mu") * sym("m") * sym("g")),
     ("mv0", ("m", "v_0"), sym("m") * sym("v_0")),
+    # a number glued after a function, as physics types `sin 2θ`
+    ("sin2θ", ("theta",), sympy.sin(2 * sym("theta"))),
+    ("mgsin2θ", ("m", "g", "theta"), sym("m") * sym("g") * sympy.sin(2 * sym("theta"))),
+    ("cos2ωt", ("omega", "t"), sympy.cos(2 * sym("omega") * sym("t"))),
+    ("sin2θcos2θ", ("theta",), sympy.sin(2 * sym("theta")) * sympy.cos(2 * sym("theta"))),
+    ("m2g", ("m2", "g"), sym("m2") * sym("g")),  # a declared name with its digit is no function's
 ]
 
 
@@ -73,6 +79,19 @@ def test_glued_run_that_splits_one_way_is_that_product(typed, declared, expected
 
 def test_glued_run_reads_back_with_explicit_products():
     assert read("mgh", "m", "g", "h").read_as.text == "m*g*h"
+
+
+def test_a_number_glued_after_a_function_keeps_where_each_piece_was_typed():
+    with pytest.raises(UnknownSymbol) as caught:
+        read("mgsin2q", "m", "g", "theta")
+    assert caught.value.position == 0  # the split needs every piece to read: q does not
+    assert read("v sin2θ", "v", "theta").read_as.text == "v*sin(2*theta)"
+
+
+@pytest.mark.parametrize("typed", ["sin2", "sin2θ2"])
+def test_a_function_and_number_with_nothing_or_a_number_after_stays_unknown(typed):
+    with pytest.raises(UnknownSymbol):
+        read(typed, "theta")
 
 
 AMBIGUOUS_NAMES = [
