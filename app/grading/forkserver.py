@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import multiprocessing
 import multiprocessing.context
+import os
 from multiprocessing import forkserver
 
 # app.cli: each worker runs the program's main script again when it starts, and the `physcheck` script
@@ -24,6 +25,11 @@ def context() -> multiprocessing.context.ForkServerContext:
     found = multiprocessing.get_context("forkserver")
     assert isinstance(found, multiprocessing.context.ForkServerContext)
     found.set_forkserver_preload(PRELOAD)
+    # The fork server runs as `python -c`, which puts the current directory first on sys.path: started
+    # from a directory holding an `app`, `physics` or `problems` folder (another checkout, another
+    # project), every worker imported that instead of this program, or did not start. Python 3.11's
+    # fork server ignores the parent's sys.path, so it is told by the environment it inherits.
+    os.environ["PYTHONSAFEPATH"] = "1"
     return found
 
 
