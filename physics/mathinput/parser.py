@@ -14,7 +14,7 @@ Recursion is bounded by `max_depth`, so deep nesting is a TooLarge, never a Recu
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping
+from collections.abc import Mapping
 from typing import Literal, NoReturn
 
 from physics.errors import AmbiguousGrouping, ParseError, TooLarge
@@ -236,9 +236,9 @@ class Parser:
                 self._enter(tok)
                 exponent = self._exponent()
                 if node == Const("e") and self._word_glued_to(exponent):
-                    exponent = self._settle_exponent(node, exponent, tok, self._glued_factor)
+                    exponent = self._settle_exponent(node, exponent, tok, whole_word=True)
                 elif self._fraction_glued_to(exponent):
-                    exponent = self._settle_exponent(node, exponent, tok, self._glued_fraction)
+                    exponent = self._settle_exponent(node, exponent, tok, whole_word=False)
                 node = Power(node, exponent, tok.pos)
                 self._leave()
             elif tok.kind is Kind.SUP:
@@ -291,23 +291,21 @@ class Parser:
             return "/"
         return None
 
-    def _settle_exponent(
-        self, base: Node, exponent: Node, caret: Token, glued: Callable[[], Literal["*", "/"] | None]
-    ) -> Node:
+    def _settle_exponent(self, base: Node, exponent: Node, caret: Token, *, whole_word: bool) -> Node:
         """`e^-ωt` is e^(−ω)·t to the grammar, but physics writes e^(−ωt) so (and `e^-t/τ` e^(−t/τ)),
         and `(2gh)^1/2` √(2gh): `choices` reads it (by the position of its `^`) one way, 0 as e^(−ω)·t
-        (the rest left to the product), 1 as e^(−ωt) (what is typed on without a space, as `glued`
-        finds it, is the exponent, as with `cos ωt`); without a choice it is refused. A division in
-        that word may be ambiguous in turn (`e^-bt/2m`)."""
+        (the rest left to the product), 1 as e^(−ωt) (what is typed on without a space is the exponent:
+        the `whole_word` as with `cos ωt`, else a root's one fraction); without a choice it is refused.
+        A division in that word may be ambiguous in turn (`e^-bt/2m`)."""
         choice = self._choices.get(caret.pos)
         if choice == 0:
             return exponent
         items: list[_Item] = []
-        while (op := glued()) is not None:
+        op = self._glued_factor() if whole_word else self._glued_fraction()
+        while op is not None:
             tok = self._advance() if op == "/" else self._tokens[self._i]
             items.append(_Item(op, self._raised(self._postfixed()), tok, op == "*"))
-            if glued == self._glued_fraction:
-                break
+            op = self._glued_factor() if whole_word else None
         negative = isinstance(exponent, Neg)
         first = exponent.operand if isinstance(exponent, Neg) else exponent
         if choice == 1:

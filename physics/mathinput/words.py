@@ -119,12 +119,10 @@ def _function_number_split(word: str, table: NameTable) -> list[Part | tuple[str
         return None
     start, end = found.span(2)
     rest = found.group(3)
+    resolved = table.resolve(rest)
     after: list[Part | tuple[str, int, int]] | None
-    unique = table.resolve(rest).unique
-    if unique is not None:
-        after = list(unique)
-    elif table.resolve(rest).readings:
-        return None
+    if resolved.readings:  # one reading, or two: ambiguous, so no split is safe
+        after = list(resolved.unique) if resolved.unique is not None else None
     else:
         after = _function_number_split(rest, table)
     if after is None:
