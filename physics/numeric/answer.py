@@ -15,7 +15,7 @@ from fractions import Fraction
 from physics.characters import fullwidth_as_ascii
 from physics.dimensions import Dimension
 from physics.errors import AnswerError, ParseError, TooLarge
-from physics.numeric.literal import NumberLiteral, read_number, skip_spaces
+from physics.numeric.literal import NumberLiteral, read_number, units_start
 from physics.units import ParsedUnits, UnitReading, read_units
 from physics.verdict import ReadAs
 
@@ -88,7 +88,7 @@ def _read_literal(text: str, expected: Dimension | None) -> tuple[NumericAnswer,
         number = read_number(text)
     except AnswerError as error:
         raise _NumberFormError(error) from None
-    rest_start = skip_spaces(text, number.end)
+    rest_start = units_start(text, number.end)
     unit_text = text[rest_start:].rstrip()
     if not unit_text:
         return NumericAnswer.of_literal(number, None, None), number.end

@@ -101,6 +101,24 @@ def _times_sign_end(text: str, j: int) -> int | None:
     return None
 
 
+# Signs that may join a number to its units (`12.3*m/s`, `12.3·m/s`): `x` is left out, being a letter.
+_JOINING_SIGNS = "*·⋅×"
+
+
+def units_start(text: str, i: int) -> int:
+    """Where the units after the number ending at i start: past spaces, and past a times sign that joins
+    the number to its units (`12.3*m/s`, `12.3 · m/s`, `12.3\\cdot\\mathrm{m/s}`), as STACK and Maxima
+    write a quantity. A sign before a number (`4*3 m`) or before nothing is left for arithmetic."""
+    j = skip_spaces(text, i)
+    times_end = _times_sign_end(text, j)
+    if times_end is None or (text[j] in _TIMES_SIGNS and text[j] not in _JOINING_SIGNS):
+        return j
+    k = skip_spaces(text, times_end)
+    if k == len(text) or text[k] in _DIGITS + ".,":
+        return j
+    return k
+
+
 def _run(text: str, i: int, alphabet: str | dict[str, int]) -> int:
     while i < len(text) and text[i] in alphabet:
         i += 1
