@@ -1,12 +1,13 @@
 """Reading the number at the start of a numeric answer, exactly, with its significant figures.
 
 Accepted: an optional sign (`-`, `−`, `+`), a decimal literal (`4.58`, `.5`, `1500`, `100.`), an
-optional power of ten (`e3`, `E-3`, `×10^3`, `x 10^3`, `*10**3`, `·10⁻³`) and an optional `%`.
+optional power of ten (`e3`, `E-3`, `×10^3`, `x 10^3`, `*10**3`, `·10⁻³`) and an optional `%` (or `percent`).
 Size limits are checked on the raw characters before any arithmetic, so `1e999999` costs nothing.
 """
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 from fractions import Fraction
 
@@ -229,6 +230,19 @@ def read_number(text: str, start: int = 0) -> NumberLiteral:
     return _finish(text, integer_digits, fraction_digits, has_point, exponent, i, negative, position)
 
 
+_PERCENT_WORDS = re.compile(r"per\s?cent\b", re.IGNORECASE)  # `45 percent`, `45 per cent`
+
+
+def _percent_end(text: str, j: int) -> int | None:
+    """The end of a percent sign (`%`, `\\%`) or word at j, else None."""
+    if text.startswith("%", j):
+        return j + 1
+    if text.startswith("\\%", j):
+        return j + 2
+    word = _PERCENT_WORDS.match(text, j)
+    return None if word is None else word.end()
+
+
 def _finish(
     text: str,
     integer_digits: str,
@@ -240,9 +254,10 @@ def _finish(
     position: int,
 ) -> NumberLiteral:
     j = skip_spaces(text, i)
-    percent = text.startswith(("%", "\\%"), j)
-    if percent:
-        i = j + (1 if text[j] == "%" else 2)
+    percent_end = _percent_end(text, j)
+    percent = percent_end is not None
+    if percent_end is not None:
+        i = percent_end
     return NumberLiteral(
         negative=negative,
         integer_digits=integer_digits,

@@ -25,6 +25,9 @@ class CatalogueEntry:
     si: bool = True  # an SI unit or one accepted for use with it (SI brochure, table 8)
     # pint spellings left out: `a` (year) and `G` (gauss) would turn glued names into surprises.
     skip_spellings: tuple[str, ...] = ()
+    # Whether a glued name may be split into it: `c` is the speed of light alone (`0.8 c`, `MeV/c^2`),
+    # never a piece of `mc` (the millicoulomb in lower case).
+    in_products: bool = True
 
 
 CATALOGUE: tuple[CatalogueEntry, ...] = (
@@ -38,6 +41,7 @@ CATALOGUE: tuple[CatalogueEntry, ...] = (
     CatalogueEntry("candela", True),
     # SI derived units with special names.
     CatalogueEntry("radian", True),
+    CatalogueEntry("steradian", True),
     CatalogueEntry("hertz", True),
     CatalogueEntry("newton", True),
     CatalogueEntry("pascal", True),
@@ -71,7 +75,7 @@ CATALOGUE: tuple[CatalogueEntry, ...] = (
     CatalogueEntry("degree_Fahrenheit", False, latex="{}^{\\circ}\\mathrm{F}", si=False),
     CatalogueEntry("angstrom", False, latex=r"\text{Å}", si=False),
     CatalogueEntry("unified_atomic_mass_unit", False),
-    CatalogueEntry("dalton", False),
+    CatalogueEntry("dalton", True),  # kDa, as biophysics writes a protein's mass
     CatalogueEntry("astronomical_unit", False),
     CatalogueEntry("katal", True),
     # Units beyond SI that courses use; each from pint's definitions (factor and dimension).
@@ -97,11 +101,45 @@ CATALOGUE: tuple[CatalogueEntry, ...] = (
     # pint's `gauss` is the Gaussian-system unit, not commensurable with the tesla; courses mean 1e-4 T.
     CatalogueEntry("gauss_tesla", False, symbol="G", extra_spellings=("gauss", "G"), si=False),
     CatalogueEntry("light_year", False, si=False),
-    CatalogueEntry("parsec", False, si=False),
+    CatalogueEntry("parsec", True, si=False),  # kpc, Mpc
     CatalogueEntry(
-        "year", False, symbol="yr", si=False, skip_spellings=("a", "julian_year"), extra_spellings=("yrs",)
+        "year", True, symbol="yr", si=False, skip_spellings=("a", "julian_year"), extra_spellings=("yrs",)
+    ),  # Myr, Gyr
+    # Volumes, masses and forces of US courses (pint's US customary definitions).
+    CatalogueEntry("gallon", False, si=False, extra_spellings=("gals",)),
+    CatalogueEntry("quart", False, si=False),
+    CatalogueEntry("pint", False, si=False),
+    # pint's `cp` is left out: it is the centipoise to a chemist.
+    CatalogueEntry("cup", False, symbol="cup", si=False, extra_spellings=("cups",), skip_spellings=("cp",)),
+    CatalogueEntry("fluid_ounce", False, symbol="fl oz", latex=r"\mathrm{fl\,oz}", si=False),
+    CatalogueEntry("ounce", False, si=False),
+    CatalogueEntry("force_ounce", False, si=False),
+    CatalogueEntry("kip", False, si=False, extra_spellings=("kips",)),
+    CatalogueEntry("kip_per_square_inch", False, si=False),
+    CatalogueEntry("force_kilogram", False, si=False),
+    CatalogueEntry("force_gram", False, si=False, skip_spellings=("pond",)),
+    CatalogueEntry("inch_Hg", False, si=False),
+    # pint's `th` is left out: no one types it, and it would split glued names.
+    CatalogueEntry("thou", False, symbol="thou", skip_spellings=("th",), si=False),
+    CatalogueEntry("mil", False, si=False),  # pint's: the angular mil (a length in mil is `thou`)
+    CatalogueEntry("nautical_mile", False, si=False),
+    # Shown as `tonne`: pint's `t` is left out, being the tesla in lower case.
+    CatalogueEntry("metric_ton", False, symbol="tonne", skip_spellings=("t",), si=False),
+    CatalogueEntry("hectare", False, si=False),
+    CatalogueEntry("acre", False, si=False),
+    # Shown as the micrometre it is; pint's `µ` alone is left out, being a prefix everywhere else.
+    CatalogueEntry(
+        "micron", False, symbol="µm", latex=r"\mathrm{\mu m}", skip_spellings=("µ", "μ", "µm"), si=False
     ),
-    CatalogueEntry("gallon", False, si=False),
+    CatalogueEntry("arcminute", False, si=False),
+    CatalogueEntry("arcsecond", False, si=False),
+    CatalogueEntry("revolutions_per_second", False, si=False),
+    CatalogueEntry("counts_per_second", False, si=False),
+    CatalogueEntry("galileo", True, si=False),  # Gal, mGal: gravimetry's cm/s²
+    CatalogueEntry("curie", True, si=False),
+    CatalogueEntry("rem", True, si=False),
+    CatalogueEntry("ampere_hour", True, si=False),  # Ah, mAh: a battery's charge
+    CatalogueEntry("speed_of_light", False, symbol="c", si=False, in_products=False),  # 0.8 c, MeV/c^2
 )
 
 # Common spellings that are not pint's, each read as the unit expression it stands for. They win over
@@ -110,11 +148,26 @@ CATALOGUE: tuple[CatalogueEntry, ...] = (
 # name; these are the short ones.
 ALIASES: dict[str, str] = {
     "ohms": "ohm", "Ohm": "ohm", "Ohms": "ohm", "rads": "rad", "degs": "°", "revs": "rev",
-    "amps": "A", "gm": "g", "gms": "g", "kgs": "kg", "mcg": "µg", "lbs": "lb",
+    "amps": "A", "gm": "g", "gms": "g", "kgs": "kg", "mcg": "µg", "kilo": "kg", "kilos": "kg",
+    "lbm": "lb", "ftlb": "ft·lbf", "ftlbs": "ft·lbf",
     "kph": "km/h", "kmh": "km/h", "kmph": "km/h", "mps": "m/s", "cc": "cm^3", "AU": "au",
+    # The SI brochure's elided forms; `Cal` is the dietary calorie, the kilocalorie.
+    "kilohm": "kΩ", "kilohms": "kΩ", "megohm": "MΩ", "megohms": "MΩ", "Cal": "kcal", "Cals": "kcal",
     # `ms-1` is how many textbooks print m·s⁻¹; no one writes a reciprocal millisecond that way.
     "ms-1": "m/s", "ms-2": "m/s^2",
 }  # fmt: skip
+
+# Spellings with more than one meaning, each meaning a unit spelling. The first is pint's, taken where no
+# dimension is expected (an author's units); where one is, the meaning with that dimension is taken and
+# said, and a spelling that no meaning fits is refused with all of them.
+MEANINGS: dict[str, tuple[str, ...]] = {
+    "lb": ("lb", "lbf"),  # the pound, or the pound-force as US courses write a weight (50 lb, ft·lb)
+    "lbs": ("lb", "lbf"),
+    "oz": ("oz", "floz", "ozf"),  # mass, volume (a fluid ounce) or force
+    "Gal": ("Gal", "gal"),  # the galileo (cm/s²), or the gallon in capitals
+    "mil": ("mil", "thou"),  # the angular mil, or a thousandth of an inch
+    "c": ("c", "C"),  # the speed of light, or the coulomb in lower case
+}
 
 # The decimal SI prefixes, by pint name. Binary prefixes, and the 2022 ones (ronto r, quecto q,
 # ronna R, quetta Q), are left out: no homework uses them, and they would make glued names such as

@@ -3,8 +3,9 @@
 Anything else is a ParseError at its position. Spaces only separate tokens: letters glued together
 form one name (`Nm`), which the parser looks up or splits, so `N m` and `Nm` both reach it as names.
 A name with a negative integer glued to it is a power, as textbooks print it (`m s-2` is m·s⁻²), and
-`N.m` is N·m. Units said in words read as written: `per` divides (`per second` alone is 1/s), `squared` and
-`cubed` raise the unit before them (`metres per second squared` is m/s²).
+`N.m` and `N-m` are N·m. Units said in words read as written: `per` divides (`per second` alone is 1/s),
+`squared` and `cubed` raise the unit before them (`metres per second squared` is m/s²), `sq`, `square`,
+`cu` and `cubic` the unit after them (`sq ft`, `cubic centimetres`); `fl oz` is the fluid ounce.
 """
 
 from __future__ import annotations
@@ -55,6 +56,7 @@ _SINGLE = {
 }
 # Words that are operators, as a student says a unit: no unit has these names.
 _WORD_POWERS = {"squared": 2, "cubed": 3}
+_LEADING_POWERS = {"sq": 2, "square": 2, "cu": 3, "cubic": 3}  # `sq ft`, `cubic metres`
 
 
 def _word_tokens(word: str, position: int, first: bool) -> list[Token] | None:
@@ -105,19 +107,54 @@ def tokenize(text: str) -> list[Token]:
     return [replace(token, position=where[token.position]) for token in tokens]
 
 
+def _after_word(text: str, i: int) -> int:
+    """Past the full stop of an abbreviation (`sq.`, `fl.`) and spaces after the word ending at i."""
+    if i < len(text) and text[i] == ".":
+        i += 1
+    while i < len(text) and text[i].isspace():
+        i += 1
+    return i
+
+
+def _fluid_ounce_end(text: str, word: str, i: int) -> int | None:
+    """The end of `fl oz` (`fl. oz`) when the word `fl` ends at i, else None."""
+    if word != "fl":
+        return None
+    j = _after_word(text, i)
+    if text.startswith("oz", j) and not (j + 2 < len(text) and _is_name_char(text[j + 2])):
+        return j + 2
+    return None
+
+
 def _tokenize(text: str) -> list[Token]:
     tokens: list[Token] = []
     i = 0
     n = len(text)
+    leading: tuple[int, Token] | None = None  # `sq`, `cubic`: the power waiting for the next unit
     while i < n:
         char = text[i]
         if char.isspace():
             i += 1
             continue
         start = i
+        if leading is not None and not _is_name_char(char):
+            raise ParseError(f"{leading[1].text!r} needs a unit after it, as in sq m", leading[1].position)
         if _is_name_char(char):
             while i < n and _is_name_char(text[i]):
                 i += 1
+            word = text[start:i]
+            if word.lower() in _LEADING_POWERS and leading is None:
+                power = _LEADING_POWERS[word.lower()]
+                leading = (power, Token(Kind.POWER, word, start))
+                i = _after_word(text, i)
+                continue
+            fluid_ounce_end = _fluid_ounce_end(text, word, i)
+            if fluid_ounce_end is not None:
+                tokens.append(Token(Kind.NAME, "floz", start))
+                i = fluid_ounce_end
+                _raise_by(tokens, leading)
+                leading = None
+                continue
             # `m/s2`, `cm3`: a power typed without its ^, as students write it (and as `s-2` is read)
             glued_power = i < n and text[i] in "0123456789"
             power_end = _glued_negative_power(text, i)
@@ -133,7 +170,11 @@ def _tokenize(text: str) -> list[Token]:
                 continue
             tokens.append(Token(Kind.NAME, text[start:i], start))
             if power_end is not None or glued_power:
+                if leading is not None:
+                    raise ParseError(f"Give {leading[1].text!r} or a power, not both", i)
                 tokens.append(Token(Kind.POWER, "^", i))
+            _raise_by(tokens, leading)
+            leading = None
         elif char in "0123456789":
             while i < n and text[i] in "0123456789":
                 i += 1
@@ -162,11 +203,24 @@ def _tokenize(text: str) -> list[Token]:
             i += 1  # the full stop of a sentence: `4.58 m/s^2.`
         elif char == "." and text[i + 1 : i + 2].isdigit():
             raise ParseError("A unit string holds whole numbers only: powers as in m^2 or s^-2", start)
+        elif char == "-" and 0 < i < n - 1 and _is_name_char(text[i - 1]) and text[i + 1].isalpha():
+            i += 1  # `N-m`, `ft-lb`, `kW-h`: a hyphen between units joins them, as engineers write it
+            tokens.append(Token(Kind.TIMES, char, start))
         elif char in _SINGLE:
             i += 1
             tokens.append(Token(_SINGLE[char], char, start))
         else:
             hint = " (use a decimal point, not a comma, and one answer only)" if char == "," else ""
             raise ParseError(f"Unexpected character {char!r} in the units{hint}", start)
+    if leading is not None:
+        raise ParseError(f"{leading[1].text!r} needs a unit after it, as in sq m", leading[1].position)
     tokens.append(Token(Kind.END, "", n))
     return tokens
+
+
+def _raise_by(tokens: list[Token], leading: tuple[int, Token] | None) -> None:
+    """Put the power of a leading `sq` or `cubic` after the unit just read (`sq ft` is ft^2)."""
+    if leading is not None:
+        power, word = leading
+        tokens.append(word)
+        tokens.append(Token(Kind.INTEGER, str(power), word.position, power))

@@ -25,10 +25,10 @@ from functools import lru_cache
 
 from physics.dimensions import Dimension, describe
 from physics.errors import AmbiguousInput, ParseError, TooLarge, UnknownUnit
-from physics.units.catalogue import ALIASES
+from physics.units.catalogue import ALIASES, MEANINGS
 from physics.units.lexer import Kind, Token, tokenize
 from physics.units.parsed import ParsedUnits
-from physics.units.registry import UnitAtom, case_variant, lookup, suggestion
+from physics.units.registry import UnitAtom, case_variant, lookup, lookup_piece, pint_unit, suggestion
 
 MAX_UNIT_TEXT_LENGTH = 100
 MAX_UNIT_POWER = 12
@@ -48,7 +48,7 @@ def _splits(name: str) -> list[list[UnitAtom]]:
         for end in range(start + 1, len(name) + 1):
             if not ways[end]:
                 continue
-            atom = lookup(name[start:end])
+            atom = lookup_piece(name[start:end])
             if atom is None:
                 continue
             for rest in ways[end]:
@@ -85,10 +85,18 @@ class _Option:
 
 @dataclass(frozen=True)
 class _NameReadings:
-    """The ways one name can be read; `safe`: the first may be taken without a dimension to confirm it."""
+    """The ways one name can be read; `safe`: the first may be taken without a dimension to confirm it;
+    `default`: the first (pint's meaning of a spelling with several, `lb`) is taken where no dimension
+    is expected, and said nothing about where it is the one that fits."""
 
     options: tuple[_Option, ...]
     safe: bool
+    default: bool = False
+
+    @property
+    def plain(self) -> bool:
+        """Its first reading may stand without a note: safe, or pint's own meaning of the spelling."""
+        return self.safe or self.default
 
 
 def _readings(name: str, negative_power: bool) -> _NameReadings:
@@ -99,6 +107,9 @@ def _readings(name: str, negative_power: bool) -> _NameReadings:
     name has no safe reading: only the expected dimension can choose. A known spelling with a negative
     power (`ms^-1`) keeps its split as a second reading, for the same choice.
     """
+    meanings = MEANINGS.get(name)
+    if meanings is not None:
+        return _NameReadings(tuple(_Option(((_meaning(m), 1),)) for m in meanings), safe=False, default=True)
     alias = ALIASES.get(name)
     if alias is not None:
         return _NameReadings((_Option(_alias_factors(alias)),), safe=True)
@@ -112,12 +123,49 @@ def _readings(name: str, negative_power: bool) -> _NameReadings:
         options.insert(0, _Option(((plural, 1),)))
     # A case slip counts as a reading where no split does, or where the split starts with a kelvin:
     # `Kg`, `KJ` are the kilo prefix in capitals; `Nm` stays the newton-metre, never a nanometre.
-    variant = case_variant(name) if not splits or splits[0].factors[0][0].name == "kelvin" else None
+    slip = not splits or splits[0].factors[0][0].name == "kelvin"
+    alias_variant = _ALIASES_BY_FOLDED_CASE.get(name.casefold()) if slip else None  # `Kilos`, `Kgs`
+    variant = alias_variant or (case_variant(name) if slip else None)
     variant_atom = lookup(variant) if variant is not None else None
-    if variant_atom is not None:
+    if alias_variant is not None:
+        options.append(_Option(_alias_factors(ALIASES[alias_variant])))
+    elif variant_atom is not None:
         options.append(_Option(((variant_atom, 1),)))
     unique = list({option.text: option for option in options}.values())
-    return _NameReadings(tuple(unique), safe=len(unique) == 1 and variant_atom is None)
+    if not unique:
+        # `sqft`, `cuin`; then the long tail by pint's own names (`furlongs`, `fortnight`).
+        pint_only = pint_unit(name)
+        other = _squared_or_cubed(name) or (None if pint_only is None else (pint_only, 1))
+        if other is not None:
+            return _NameReadings((_Option((other,)),), safe=True)
+    return _NameReadings(tuple(unique), safe=len(unique) == 1 and variant is None)
+
+
+# Aliases by their letters in lower case, where only one alias has them: a case slip's reading.
+_ALIASES_BY_FOLDED_CASE = {
+    folded: alias
+    for alias in ALIASES
+    if sum(other.casefold() == (folded := alias.casefold()) for other in ALIASES) == 1
+}
+
+
+def _meaning(spelling: str) -> UnitAtom:
+    atom = lookup(spelling)
+    assert atom is not None, f"catalogue.MEANINGS names {spelling!r}, which is no unit spelling"
+    return atom
+
+
+_AREA_OR_VOLUME = {"sq": 2, "cu": 3}
+
+
+def _squared_or_cubed(name: str) -> tuple[UnitAtom, int] | None:
+    """`sqft`, `sqm`, `cuin`: a unit glued after `sq` or `cu`, squared or cubed (the spaced `sq ft` is
+    the lexer's), else None."""
+    power = _AREA_OR_VOLUME.get(name[:2])
+    atom = lookup(name[2:]) if power is not None and len(name) > 2 else None
+    if atom is None or power is None:
+        return None
+    return atom, power
 
 
 def _plural_of(name: str) -> UnitAtom | None:
@@ -289,11 +337,15 @@ def _read(text: str, expected: Dimension | None) -> UnitReading:
     literal = parser.parse()
     open_names = parser.open_names
     safe = all(readings.safe for _, readings in open_names)
-    if safe and (expected is None or literal.dimension == expected):
+    plain = all(readings.plain for _, readings in open_names)
+    if (safe and literal.dimension == expected) or (plain and expected is None):
         return UnitReading(literal)
+    fits: list[ParsedUnits] = []
     if expected is not None:
         fits = _fitting(text, open_names, expected)
         if len(fits) == 1:
+            if plain and fits[0] == literal:  # `50 lb` for a mass: pint's pound, as typed
+                return UnitReading(literal)
             typed = " ".join(text.split())
             return UnitReading(
                 fits[0], f"Read {typed} as {fits[0].text}: the only reading that is {describe(expected)}"
@@ -302,6 +354,15 @@ def _read(text: str, expected: Dimension | None) -> UnitReading:
         return UnitReading(literal)  # graded: the dimension is wrong
     token, readings = next((t, r) for t, r in open_names if not r.safe)
     shown = [option.text for option in readings.options]
+    if readings.default and expected is not None:
+        typed = " ".join(text.split())
+        which = "more than one reading" if fits else "no reading"
+        raise AmbiguousInput(
+            f"{token.text!r} can mean {' or '.join(shown)}, and {which} of {typed} is {describe(expected)}: "
+            "write the units you mean",
+            token.position,
+            shown,
+        )
     if len(shown) == 1:
         raise UnknownUnit(
             f"Unknown unit {token.text!r} (units are case-sensitive: did you mean {shown[0]!r}?)",

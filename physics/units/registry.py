@@ -78,7 +78,7 @@ def _spellings_of_unit(
     if entry.symbol:
         candidates.append(entry.symbol)
     for spelling in candidates:
-        if spelling in entry.skip_spellings:
+        if spelling in entry.skip_spellings or " " in spelling:  # `fl oz` is a display, not a token
             continue
         is_name = len(spelling) > _MAX_SYMBOL_LENGTH and spelling.isascii()
         (names if is_name else symbols).append(spelling)
@@ -93,7 +93,7 @@ def _plural(name: str) -> str | None:
 
 @cache
 def spelling_table() -> dict[str, _Spelling]:
-    """Every accepted spelling (`km`, `kilometres`, `µs`, `°C`) mapped to its prefix and unit."""
+    """Every accepted spelling (`km`, `kilometres`, `µs`, `°C`, `micromol`) mapped to its prefix and unit."""
     ureg = registry()
     table: dict[str, _Spelling] = {}
 
@@ -128,6 +128,15 @@ def spelling_table() -> dict[str, _Spelling]:
         for symbol in symbols:
             for prefix, prefix_symbol in prefix_symbols:
                 add(prefix_symbol + symbol, prefix, entry)
+            # A prefix spelled out before a symbol, as WeBWorK and chemists write it: `micromol`,
+            # `nanomol`, `microN`, `millisec` (pint's names only: its `mc` and `mu` would make `mcd` a
+            # microcandela; and not before `m`, `g`, `s`, `l`, making `kilos` a kilosecond).
+            if len(symbol) == 1 and symbol.islower():
+                continue
+            for prefix in SI_PREFIXES:
+                plural = _plural(prefix + symbol)
+                for form in (prefix + symbol, plural) if plural else (prefix + symbol,):
+                    add(form, prefix, entry)
         for name in names:
             plural = _plural(name)
             for prefix, prefix_name in prefix_names:
@@ -187,16 +196,61 @@ def _atom(prefix: str, entry: CatalogueEntry) -> UnitAtom:
     )
 
 
-def lookup(spelling: str) -> UnitAtom | None:
-    """The unit a single spelling names (`ms`, `kN`, `µm`, `um`, `Ω`, `°C`), or None."""
+def _found(spelling: str) -> _Spelling | None:
     table = spelling_table()
     found = table.get(spelling)
     if found is None:
         # Compatibility forms: the micro sign and the Greek mu, the ohm sign and capital omega, `ℓ`.
         found = table.get(unicodedata.normalize("NFKC", spelling))
-    if found is None:
+    return found
+
+
+def lookup(spelling: str) -> UnitAtom | None:
+    """The unit a single spelling names (`ms`, `kN`, `µm`, `um`, `Ω`, `°C`), or None."""
+    found = _found(spelling)
+    return None if found is None else _atom(found.prefix, found.entry)
+
+
+def lookup_piece(spelling: str) -> UnitAtom | None:
+    """`lookup`, for a piece of a glued name: None for a unit that is never glued to others (`c`)."""
+    found = _found(spelling)
+    if found is None or not found.entry.in_products:
         return None
     return _atom(found.prefix, found.entry)
+
+
+_MIN_NAME_LENGTH = 4
+
+
+@cache
+def pint_unit(name: str) -> UnitAtom | None:
+    """A unit pint defines by this full name or long alias (`furlong`, `fortnight`, `barn`, plural
+    `furlongs`) that the catalogue leaves out, or None: pint's definitions rather than a list of our
+    own. Symbols (`gr` is pint's grain, to a student a gram) and prefixes stay the catalogue's; so do
+    angles (pint's `cycle` is 2π rad, not the hertz's cycle) and units that are not a plain factor (dB).
+    """
+    if len(name) < _MIN_NAME_LENGTH or not name.isascii() or not name.replace("_", "").isalpha():
+        return None
+    ureg = registry()
+    candidates = [name, name[:-1]] if name.endswith("s") and name.islower() else [name]
+    for candidate in candidates:
+        definition = ureg._units.get(candidate)
+        if definition is None or candidate not in (definition.name, *definition.aliases):
+            continue
+        if not definition.is_multiplicative or definition.is_logarithmic:
+            return None
+        root = ureg.get_root_units(definition.name)[1]._units
+        if "radian" in root or any(d not in PINT_DIMENSIONS for d in ureg.get_dimensionality(candidate)):
+            return None
+        shown = definition.name.replace("_", " ")
+        entry = CatalogueEntry(
+            definition.name, False, symbol=definition.name, latex=rf"\text{{{shown}}}", si=False
+        )
+        try:
+            return _atom("", entry)
+        except TypeError:  # an inexact factor: not a unit to grade with
+            return None
+    return None
 
 
 @cache

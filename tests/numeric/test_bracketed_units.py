@@ -63,9 +63,9 @@ def test_square_brackets_holding_arithmetic_are_not_units(answer: str, value: st
 
 REFUSED = [
     # (answer, reason, position, words): errors inside the brackets point inside them
-    ("4.58 [m/furlong]", Reason.UNKNOWN_UNIT, 8, "Unknown unit 'furlong'"),
-    ("4.58 [ m/furlong ]", Reason.UNKNOWN_UNIT, 9, "Unknown unit 'furlong'"),
-    ("229/50 [m/furlong]", Reason.UNKNOWN_UNIT, 10, "Unknown unit 'furlong'"),
+    ("4.58 [m/smoot]", Reason.UNKNOWN_UNIT, 8, "Unknown unit 'smoot'"),
+    ("4.58 [ m/smoot ]", Reason.UNKNOWN_UNIT, 9, "Unknown unit 'smoot'"),
+    ("229/50 [m/smoot]", Reason.UNKNOWN_UNIT, 10, "Unknown unit 'smoot'"),
     ("4.58 [m/s^2 foo]", Reason.UNKNOWN_UNIT, 12, "Unknown unit 'foo'"),
     ("4.58 [m/s^2", Reason.PARSE_ERROR, 5, "never closed"),
     ("229/50 [m/s^2", Reason.PARSE_ERROR, 7, "never closed"),

@@ -99,7 +99,7 @@ VERDICTS = [
     ("missing-units-percent", "45%", SPEED, BAD, Reason.MISSING_UNITS),
     ("unexpected-units", "0.45 m", PURE, BAD, Reason.UNEXPECTED_UNITS),
     ("unexpected-angle-units", "0.45 rad", PURE, BAD, Reason.UNEXPECTED_UNITS),
-    ("unknown-unit", "4.58 furlongs", ACCEL, BAD, Reason.UNKNOWN_UNIT),
+    ("unknown-unit", "4.58 smoots", ACCEL, BAD, Reason.UNKNOWN_UNIT),
     ("unknown-unit-case", "4.58 M/S^2", ACCEL, BAD, Reason.UNKNOWN_UNIT),
     ("comma", "4,58 m/s^2", ACCEL, BAD, Reason.PARSE_ERROR),
     ("two-numbers", "12 500 m/s^2", ACCEL, BAD, Reason.PARSE_ERROR),
@@ -213,7 +213,7 @@ POSITIONS = [
     ("4.58", 4),  # missing units: just after the number
     ("  4.58  ", 6),
     ("0.45 m", 5),  # unexpected units: where they start
-    ("4.58 m/furlong", 7),
+    ("4.58 m/smoot", 7),
     ("4.58 KG/s^2", 5),
     ("4,58 m/s^2", 1),
     ("12 500 m/s^2", 3),

@@ -63,7 +63,7 @@ def _numeric_of_unknown_quantity(d: Doc) -> None:
 
 
 def _unknown_units(d: Doc) -> None:
-    d["parts"][1]["units"] = "furlongs"
+    d["parts"][1]["units"] = "smoots"
 
 
 def _given_unit_of_wrong_dimension(d: Doc) -> None:

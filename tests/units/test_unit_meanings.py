@@ -1,0 +1,122 @@
+"""A unit spelling with several meanings (`lb`, `oz`, `Gal`, `mil`, `c`) is settled by the dimension the
+answer must have, as the glued names `Kg` and `ms^-1` are; where no dimension settles it, it is refused
+with every meaning and no attempt is used. An author's units, where no dimension is expected, take
+pint's meaning."""
+
+from __future__ import annotations
+
+from decimal import Decimal
+
+import pytest
+
+from physics.dimensions import Dimension
+from physics.errors import AmbiguousInput, UnknownUnit
+from physics.numeric import NumericSpec, check_numeric
+from physics.units import parse_units, read_units, unit_dimension
+from physics.verdict import Outcome, Reason
+
+D = Decimal
+MASS = Dimension({"mass": 1})
+LENGTH = Dimension({"length": 1})
+SPEED = Dimension({"length": 1, "time": -1})
+ACCELERATION = Dimension({"length": 1, "time": -2})
+FORCE = Dimension({"mass": 1, "length": 1, "time": -2})
+ENERGY = Dimension({"mass": 1, "length": 2, "time": -2})
+VOLUME = Dimension({"length": 3})
+CHARGE = Dimension({"current": 1, "time": 1})
+ONE = Dimension()
+
+SETTLED = [
+    # (answer, spec units, expected value in them, reading taken, note): each graded correct
+    ("50 lb", "N", "222.41", "50 lbf", "Read lb as lbf: the only reading that is a force"),
+    ("50 lbs", "N", "222.41", "50 lbf", "Read lbs as lbf: the only reading that is a force"),
+    ("50 lb", "kg", "22.680", "50 lb", None),
+    ("10 ft·lb", "J", "13.558", "10 ft·lbf", "Read ft·lb as ft·lbf: the only reading that is an energy"),
+    ("10 ft lb", "J", "13.558", "10 ft·lbf", "Read ft lb as ft·lbf: the only reading that is an energy"),
+    ("10 lb ft", "N·m", "13.558", "10 lbf·ft", "Read lb ft as lbf·ft: the only reading that is an energy"),
+    ("10 ft-lb", "J", "13.558", "10 ft·lbf", "Read ft-lb as ft·lbf: the only reading that is an energy"),
+    (
+        "30 lb/in^2",
+        "kPa",
+        "206.84",
+        "30 lbf/in^2",
+        "Read lb/in^2 as lbf/in^2: the only reading that is a pressure",
+    ),
+    ("2 Gal", "m/s^2", "0.02", "2 Gal", None),
+    ("2 Gal", "L", "7.5708", "2 gal", "Read Gal as gal: the only reading that is a volume"),
+    ("2 mil", "mm", "0.0508", "2 thou", "Read mil as thou: the only reading that is a length"),
+    ("8 oz", "g", "226.80", "8 oz", None),
+    ("8 oz", "mL", "236.59", "8 fl oz", "Read oz as fl oz: the only reading that is a volume"),
+    ("8 oz", "N", "2.2241", "8 ozf", "Read oz as ozf: the only reading that is a force"),
+    ("0.8 c", "m/s", "2.3983e8", "0.8 c", None),
+    ("5 c", "C", "5", "5 C", "Read c as C: the only reading that is an electric charge"),
+]
+
+
+@pytest.mark.parametrize(
+    ("answer", "units", "expected", "reading", "note"), SETTLED, ids=[f"{c[0]} for {c[1]}" for c in SETTLED]
+)
+def test_the_meaning_with_the_expected_dimension_is_taken_and_said(
+    answer: str, units: str, expected: str, reading: str, note: str | None
+) -> None:
+    verdict = check_numeric(answer, NumericSpec(D(expected), units))
+    assert verdict.outcome is Outcome.CORRECT, verdict.feedback
+    assert verdict.read_as is not None
+    assert verdict.read_as.text == reading
+    assert verdict.read_as.note == note
+    if note is not None:
+        assert verdict.feedback.startswith(note)
+
+
+REFUSED = [
+    # (answer, spec units, meanings named): no meaning has the dimension the answer must have
+    ("50 lb", "m/s", ["lb", "lbf"]),
+    ("2 Gal", "s", ["Gal", "gal"]),
+    ("2 mil", "s", ["mil", "thou"]),
+    ("8 oz", "J", ["oz", "fl oz", "ozf"]),
+    ("3 c", "m", ["c", "C"]),
+]
+
+
+@pytest.mark.parametrize(
+    ("answer", "units", "meanings"), REFUSED, ids=[c[0] + " for " + c[1] for c in REFUSED]
+)
+def test_a_spelling_no_meaning_of_which_fits_is_refused_with_every_meaning(
+    answer: str, units: str, meanings: list[str]
+) -> None:
+    verdict = check_numeric(answer, NumericSpec(D(1), units))
+    assert verdict.outcome is Outcome.INVALID
+    assert verdict.reason is Reason.AMBIGUOUS
+    assert verdict.score == 0
+    assert verdict.error is not None and verdict.error.position == answer.index(" ") + 1
+    for meaning in meanings:
+        assert meaning in verdict.feedback
+
+
+def test_the_refusal_carries_the_readings() -> None:
+    with pytest.raises(AmbiguousInput) as refused:
+        read_units("lb", SPEED)
+    assert refused.value.readings == ("lb", "lbf")
+
+
+@pytest.mark.parametrize(
+    ("units", "dimension"),
+    [("lb", MASS), ("lbs", MASS), ("oz", MASS), ("Gal", ACCELERATION), ("mil", ONE), ("c", SPEED)],
+)
+def test_without_an_expected_dimension_a_spelling_means_what_pint_defines(
+    units: str, dimension: Dimension
+) -> None:
+    assert parse_units(units).dimension == dimension
+    assert unit_dimension(units) == dimension  # an author's symbol declaration
+
+
+def test_pounds_per_square_inch_where_a_pressure_is_expected_are_the_psi() -> None:
+    reading = read_units("lb/in^2", Dimension({"mass": 1, "length": -1, "time": -2}))
+    assert reading.units.scale == parse_units("psi").scale
+
+
+def test_the_speed_of_light_is_never_a_piece_of_a_glued_name() -> None:
+    # `mc` is the millicoulomb or the megacoulomb in the wrong case, never a metre times c
+    with pytest.raises(UnknownUnit, match="case-sensitive"):
+        read_units("mc", CHARGE)
+    assert parse_units("MeV/c^2").dimension == MASS
