@@ -4,7 +4,7 @@
      ├── AnswerError        an answer could not be read: an `invalid` verdict, no attempt used
      │    ├── ParseError          reason parse_error
      │    ├── AmbiguousInput      reason ambiguous (carries both readings)
-     │    │    └── AmbiguousDivision   `a/b c`, which the expected dimension may settle
+     │    │    └── AmbiguousGrouping   `a/b c`, `e^-ωt`: the expected dimension (or a space) may settle it
      │    ├── UnknownSymbol       reason unknown_symbol (carries the allowed names)
      │    ├── UnknownFunction     reason unknown_function (carries the allowed functions)
      │    ├── TooLarge            reason too_large (a size limit checked before evaluation)
@@ -59,7 +59,14 @@ class AmbiguousInput(AnswerError):
 class AmbiguousGrouping(AmbiguousInput):
     """One operator that groups two ways: `a/b c`, (a/b)·c or a/(b·c), and `e^-ωt`, e^(−ω)·t or
     e^(−ωt). `position` is the operator's (the `/`, the `^`), by which a reader may settle it by
-    dimension."""
+    dimension. `spaced`: a division whose divisor is followed by a space (`a/b c`, not `a/bc`), which
+    spacing reads as (a/b)·c where dimensions cannot decide."""
+
+    def __init__(
+        self, message: str, position: int | None, readings: Sequence[str], *, spaced: bool = False
+    ) -> None:
+        super().__init__(message, position, readings)
+        self.spaced = spaced
 
 
 class UnknownSymbol(AnswerError):

@@ -220,7 +220,10 @@ class Parser:
             denominator = render_text(Product(item.node, tuple(("*", n) for n in run)), STUDENT_STYLE)
             readings = (f"({left})·{after}", f"{render_text(numerator, STUDENT_STYLE)}/({denominator})")
             raise AmbiguousGrouping(
-                f"Did you mean {readings[0]} or {readings[1]}? Add parentheses.", item.token.pos, readings
+                f"Did you mean {readings[0]} or {readings[1]}? Add parentheses.",
+                item.token.pos,
+                readings,
+                spaced=items[k + 1].token.space_before,
             )
         return first, items
 

@@ -4,8 +4,11 @@ fits.
 `mv/qB` is (m·v/q)·B or m·v/(q·B), and `A e^-ωt` is A·e^(−ω)·t or A·e^(−ωt). The math reader refuses
 them; here, when every symbol of the answer has a declared dimension and exactly one reading has the
 dimension the answer must have (a radius: m·v/(q·B); a displacement: A·e^(−ωt), since exp of a rate
-has none), that reading is taken and `read_as.note` says so. Where both readings fit, or neither, or a
-dimension is unknown, the refusal stands: dimensions cannot decide, the student must add parentheses.
+has none), that reading is taken and `read_as.note` says so. Where both readings of a division fit, spacing
+decides as it does for a function's argument: a space before the next factor ends the divisor
+(`12 U0/r ((r0/r)^12 - (r0/r)^6)` is (12·U0/r)·(…)), and the note says so; a divisor glued to what
+follows (`a/bc`) is refused. Where neither fits, or a dimension is unknown, the refusal stands: the
+student must add parentheses.
 """
 
 from __future__ import annotations
@@ -45,6 +48,9 @@ def read_symbolic_answer(
         readings = _readings(text, names, limits, {}, refused, powers_outside)
         fitting = [r for r in readings if _fits(r.expr, dimensions, expected, refused)]
         if len(fitting) > 1:
+            spaced = _spaced_reading(text, names, limits, powers_outside, fitting, expected)
+            if spaced is not None:
+                return spaced
             raise AmbiguousGrouping(
                 f"{refused.message} Both readings are {describe(expected)}, so the dimensions cannot decide.",
                 refused.position,
@@ -59,6 +65,63 @@ def read_symbolic_answer(
         if chosen.read_as.note is not None:  # how a bare function argument with a power was read
             note = f"{note}. {chosen.read_as.note}"
         return dataclasses.replace(chosen, read_as=dataclasses.replace(chosen.read_as, note=note))
+
+
+def _spaced_reading(
+    text: str,
+    names: Mapping[str, sympy.Symbol],
+    limits: InputLimits,
+    powers_outside: bool,
+    fitting: list[ParsedMath],
+    expected: Dimension,
+) -> ParsedMath | None:
+    """The one `fitting` reading left when each division with a space after its divisor is read as
+    spacing reads it (`a/b c` as (a/b)·c), with a note saying so; None if none or several are left."""
+    fits = {r.read_as.text for r in fitting}
+    found = [
+        (parsed, pairs)
+        for parsed, pairs in _by_spacing(text, names, limits, {}, (), powers_outside)
+        if parsed.read_as.text in fits
+    ]
+    if len(found) != 1 or not found[0][1]:
+        return None
+    chosen, pairs = found[0]
+    taken, other = (" and ".join(dict.fromkeys(side)) for side in zip(*pairs, strict=True))
+    several = len(set(pairs)) > 1
+    note = (
+        f"Read as {in_student_style(chosen.read_as.text)}: {'every reading is' if several else 'both readings are'} "
+        f"{describe(expected)}, and a space ends the divisor, so it is {taken}; write {other} for the "
+        f"other reading{'s' if several else ''}"
+    )
+    if chosen.read_as.note is not None:
+        note = f"{note}. {chosen.read_as.note}"
+    return dataclasses.replace(chosen, read_as=dataclasses.replace(chosen.read_as, note=note))
+
+
+def _by_spacing(
+    text: str,
+    names: Mapping[str, sympy.Symbol],
+    limits: InputLimits,
+    choices: dict[int, int],
+    pairs: tuple[tuple[str, str], ...],
+    powers_outside: bool,
+) -> list[tuple[ParsedMath, tuple[tuple[str, str], ...]]]:
+    """Every reading with each spaced division read as (a/b)·c, and the (taken, other) readings of those
+    divisions; the other groupings both ways, as `_readings` does."""
+    try:
+        parsed = parse_math(text, names, limits=limits, choices=choices, powers_outside=powers_outside)
+        return [(parsed, pairs)]
+    except AmbiguousGrouping as grouping:
+        position = grouping.position
+        if len(choices) >= MAX_SETTLED or position is None or position in choices:
+            return []
+        if grouping.spaced:
+            taken = ((grouping.readings[0], grouping.readings[1]),)
+            return _by_spacing(text, names, limits, {**choices, position: 0}, pairs + taken, powers_outside)
+        return [
+            *_by_spacing(text, names, limits, {**choices, position: 0}, pairs, powers_outside),
+            *_by_spacing(text, names, limits, {**choices, position: 1}, pairs, powers_outside),
+        ]
 
 
 def _readings(

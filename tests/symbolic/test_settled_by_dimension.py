@@ -32,6 +32,8 @@ DECAY = (
 DROP = (SymbolDecl("g", "m/s^2"), SymbolDecl("h", "m"), SymbolDecl("k", "N/m"), SymbolDecl("m", "kg"))
 CIRCUIT = (SymbolDecl("V0", "V"), SymbolDecl("t", "s"), SymbolDecl("R", "ohm"), SymbolDecl("C", "F"))
 PURE = (SymbolDecl("x", "1"), SymbolDecl("y", "1"))
+PURE3 = (SymbolDecl("x", "1"), SymbolDecl("y", "1"), SymbolDecl("z", "1"))
+UNDIMENSIONED_CHARGE = (SymbolDecl("m"), SymbolDecl("v"), SymbolDecl("q"), SymbolDecl("B"))
 UNDIMENSIONED = (SymbolDecl("A"), SymbolDecl("omega"), SymbolDecl("t"))
 
 SETTLED = [
@@ -103,11 +105,13 @@ def test_preview_shows_the_settled_reading_before_submission() -> None:
 REFUSED = [
     # (answer, reference, symbols, why dimensions cannot decide)
     (
-        "12 U0/r ((r0/r)^12 - (r0/r)^6)",
+        "12 U0/r((r0/r)^12 - (r0/r)^6)",
         "12*U0/r*((r0/r)^12 - (r0/r)^6)",
         LENNARD_JONES,
         "Both readings are a force",
-    ),  # the bracket is a pure number: both readings are forces
+    ),  # the bracket is a pure number, so both readings are forces; glued to the divisor, no space decides
+    ("x/yz", "x*z/y", PURE3, "Both readings are a pure number"),
+    ("m v/q B", "m*v/(q*B)", UNDIMENSIONED_CHARGE, "Add parentheses"),  # the contract's: no dimensions
     ("p^2/2m", "p^2/(2*m)", (SymbolDecl("p"), SymbolDecl("m", "kg")), "Add parentheses"),  # p undimensioned
     ("mv/qB", "m*v*B", CHARGE, "Add parentheses"),  # neither reading has the reference's dimension
     ("e^2x", "exp(2*x)", PURE, "Both readings are a pure number"),  # e²·x or e^(2x)
@@ -172,3 +176,63 @@ def test_the_refusal_of_an_exponent_names_both_readings_at_its_caret() -> None:
     assert verdict.error is not None
     assert verdict.error.position == 1
     assert verdict.feedback.startswith("Did you mean e^2·x or e^(2·x)? Add parentheses.")
+
+
+SPACED = [
+    # (answer, reference, symbols, reading, what both readings are): a space before the next factor ends
+    # the divisor, as calculators and CAS read `a/b c`, where dimensions cannot decide
+    (
+        "12 U0/r ((r0/r)^12 - (r0/r)^6)",
+        "12*U0/r*((r0/r)^12 - (r0/r)^6)",
+        LENNARD_JONES,
+        "12*U0/r*((r0/r)**12 - (r0/r)**6)",
+        "a force",
+    ),
+    ("x/y z", "x*z/y", PURE3, "x/y*z", "a pure number"),
+    ("x/y (z)", "x*z/y", PURE3, "x/y*z", "a pure number"),
+    ("x / y z", "x*z/y", PURE3, "x/y*z", "a pure number"),
+    ("x/y z + x/y z", "2*x*z/y", PURE3, "x/y*z + x/y*z", "a pure number"),
+]
+
+
+@pytest.mark.parametrize(
+    ("answer", "reference", "symbols", "reading", "kind"), SPACED, ids=[c[0] for c in SPACED]
+)
+def test_where_both_readings_fit_a_space_after_the_divisor_ends_it(
+    answer: str, reference: str, symbols: tuple[SymbolDecl, ...], reading: str, kind: str
+) -> None:
+    verdict = run_job(SymbolicJob(answer, reference, symbols))
+    assert verdict.outcome is Outcome.CORRECT, verdict.feedback
+    assert verdict.read_as is not None
+    assert verdict.read_as.text == reading
+    typed = reading.replace("**", "^").replace("*", "·")
+    note = verdict.read_as.note
+    assert note is not None
+    assert note.startswith(f"Read as {typed}: both readings are {kind}, and a space ends the divisor")
+    assert verdict.feedback.startswith(note)
+
+
+def test_the_note_on_a_spaced_divisor_says_how_to_write_the_other_reading() -> None:
+    verdict = run_job(SymbolicJob("x/y z", "x/(y*z)", PURE3))
+    assert verdict.outcome is Outcome.INCORRECT  # read as (x/y)·z, which is not x/(y·z)
+    assert verdict.read_as is not None and verdict.read_as.note is not None
+    assert verdict.read_as.note.endswith("so it is (x/y)·z; write x/(y·z) for the other reading")
+
+
+def test_preview_shows_how_spacing_settled_a_division() -> None:
+    shown = preview(
+        SymbolicJob("12 U0/r ((r0/r)^12 - (r0/r)^6)", "12*U0/r*((r0/r)^12 - (r0/r)^6)", LENNARD_JONES)
+    )
+    assert shown.error is None
+    assert shown.read_as is not None
+    assert shown.read_as.text == "12*U0/r*((r0/r)**12 - (r0/r)**6)"
+    assert shown.read_as.note is not None and "a space ends the divisor" in shown.read_as.note
+
+
+def test_spacing_settles_what_dimension_leaves_open_and_dimension_the_rest() -> None:
+    symbols = (*CHARGE, SymbolDecl("r", "m"), *PURE3)
+    verdict = run_job(SymbolicJob("mv/qB + r x/y z", "m*v/(q*B) + r*x*z/y", symbols))
+    assert verdict.outcome is Outcome.CORRECT, verdict.feedback
+    assert verdict.read_as is not None
+    assert verdict.read_as.text == "m*v/(q*B) + r*x/y*z"
+    assert verdict.read_as.note is not None and "so it is (r·x/y)·z" in verdict.read_as.note
