@@ -20,7 +20,7 @@ from physics.numeric.tolerance import (
     within_relative,
 )
 from physics.units import ParsedUnits, parse_units
-from physics.units.registry import suggestion
+from physics.units.registry import lookup, suggestion
 from physics.verdict import Judgement, Reason, Verdict
 
 CORRECT = Judgement(True, Reason.EQUIVALENT, "Correct.")
@@ -73,6 +73,7 @@ class _Comparison:
     answer_units: ParsedUnits | None
     target: ParsedUnits | None
     tolerance: Tolerance
+    cycles: Fraction = Fraction(1)  # 2π, 1/2π or 1: how a hertz counts against an angle unit (strict)
 
     @cached_property
     def _linear(self) -> tuple[Fraction, Fraction]:
@@ -80,7 +81,7 @@ class _Comparison:
         if self.answer_units is None or self.target is None:
             return Fraction(1), Fraction(0)
         shift = self.answer_units.convert(Fraction(0), self.target)
-        return self.answer_units.convert(Fraction(1), self.target) - shift, shift
+        return (self.answer_units.convert(Fraction(1), self.target) - shift) * self.cycles, shift
 
     @cached_property
     def _bounds(self) -> tuple[Fraction, Fraction]:
@@ -160,30 +161,54 @@ def check_numeric(answer: str, spec: NumericSpec) -> Verdict:
         return _noted(Verdict.graded(_wrong_dimension(read, answer_units, target), read_as))
     expected = spec.expected_value
     expected_as_written = expected
+    cycles = Fraction(1)
     if answer_units is not None and target is not None:
-        expected_as_written = target.convert(expected, answer_units)
-    comparison = _Comparison(expected, expected_as_written, answer_units, target, spec.tolerance)
+        cycles = _cycles(answer_units, target) if spec.angular_units == "strict" else Fraction(1)
+        expected_as_written = target.convert(expected, answer_units) / cycles
+    comparison = _Comparison(expected, expected_as_written, answer_units, target, spec.tolerance, cycles)
     if comparison.passes(read.value):
         judgement = CORRECT
     else:
         judgement = diagnose(read.value, expected_as_written, comparison.passes)
     remark = _cycles_or_radians(answer_units, target)
     if remark:
-        judgement = dataclasses.replace(judgement, feedback=f"{judgement.feedback} {remark}")
+        # Said before the verdict's "Correct." (a page shows its own word for the verdict first and
+        # drops a final "Correct."), after the reason of a wrong answer.
+        feedback = f"{remark} {judgement.feedback}" if judgement.correct else f"{judgement.feedback} {remark}"
+        judgement = dataclasses.replace(judgement, feedback=feedback)
     return _noted(Verdict.graded(judgement, read_as))
 
 
 def _cycles_or_radians(answer: ParsedUnits | None, target: ParsedUnits | None) -> str:
-    """Hz and rad/s are both s⁻¹ once the radian is a pure number, so either is read and graded; but the
-    SI keeps the hertz for a frequency f and rad/s for an angular frequency ω = 2πf, and a student who
-    mixes them up mostly mixes up f and ω too."""
+    """Hz and rad/s are both s⁻¹ once the radian is a pure number, so either is read and graded (unless
+    the part asks for `angular_units: strict`); but the SI keeps the hertz for a frequency f and rad/s
+    for an angular frequency ω = 2πf, and a student who mixes them up mostly mixes up f and ω too."""
     if answer is None or target is None:
         return ""
-    if _has_unit(answer, "hertz") and _has_unit(target, "radian"):
-        return "Hz is the unit of a frequency f (cycles per second); an angular frequency ω = 2πf is given in rad/s."
-    if _has_unit(answer, "radian") and _has_unit(target, "hertz"):
-        return "rad/s is the unit of an angular frequency ω; a frequency f = ω/2π is given in Hz."
+    if _hertz(answer) and _has_unit(target, "radian"):
+        return "An angular frequency ω is usually given in rad/s; Hz (cycles per second) is the unit of a frequency f = ω/2π."
+    if _has_unit(answer, "radian") and _hertz(target):
+        return "A frequency f is usually given in Hz; rad/s is the unit of an angular frequency ω = 2πf."
     return ""
+
+
+def _cycles(answer: ParsedUnits, target: ParsedUnits) -> Fraction:
+    """Under `angular_units: strict`, a hertz is a cycle per second, 2π rad/s: the factor that takes the
+    answer's hertz to the target's angle units (or its angle units to the target's hertz), else 1. Only
+    where one side counts cycles and the other angles: Hz against 1/s or Bq is the same s⁻¹."""
+    answer_angle = any(atom.angle for atom, _ in answer.factors)
+    target_angle = any(atom.angle for atom, _ in target.factors)
+    if answer_angle == target_angle:
+        return Fraction(1)
+    power = _hertz(answer) - _hertz(target)
+    turn = lookup("rev")
+    assert turn is not None
+    return turn.scale**power  # pint's 2π, to 50 digits
+
+
+def _hertz(units: ParsedUnits) -> int:
+    """The power of hertz (any prefix) in `units`."""
+    return sum(power for atom, power in units.factors if atom.name.endswith("hertz"))
 
 
 def _has_unit(units: ParsedUnits, name: str) -> bool:

@@ -13,6 +13,9 @@ from physics.units import ParsedUnits, parse_units
 from physics.verdict import Preview, Verdict
 
 UNITS_SYSTEMS = (None, "SI")
+# "strict": a hertz counts cycles (1 Hz = 2π rad/s), so Hz for an angular frequency is the 2π mistake;
+# absent, Hz and rad/s are both s⁻¹ (the radian a pure number) and either is graded, with a remark.
+ANGULAR_UNITS = (None, "strict")
 
 
 @dataclass(frozen=True)
@@ -23,6 +26,7 @@ class NumericSpec:
     tolerance: Tolerance = DEFAULT_TOLERANCE
     arithmetic: bool = True  # the number may be an expression (`229/50`); False: a plain decimal
     units_system: str | None = None  # "SI": answers must use SI units (or those accepted with them)
+    angular_units: str | None = None  # "strict": Hz is 2π rad/s where the other side has an angle unit
 
     def __post_init__(self) -> None:
         # frozen: normalising what the author passed (a JSON float 4.5807 means the decimal 4.5807)
@@ -32,6 +36,10 @@ class NumericSpec:
         if self.units_system not in UNITS_SYSTEMS:
             raise SpecError(
                 f'units_system must be "SI" or absent, not {self.units_system!r}', ("units_system",)
+            )
+        if self.angular_units not in ANGULAR_UNITS:
+            raise SpecError(
+                f'angular_units must be "strict" or absent, not {self.angular_units!r}', ("angular_units",)
             )
         target = (
             self.target_units()

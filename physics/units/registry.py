@@ -42,6 +42,7 @@ class UnitAtom:
     dimension: Dimension
     offset: Fraction | None = None  # for an offset unit (°C): SI value of its zero
     si: bool = True  # SI, or accepted for use with it; False for ft, lb, atm, rev, …
+    angle: bool = False  # an angle unit, or one with an angle in it (rad, °, rev, rpm): pint's radian
 
 
 @dataclass(frozen=True)
@@ -168,7 +169,8 @@ def _atom(prefix: str, entry: CatalogueEntry) -> UnitAtom:
     ureg = registry()
     definition = _unit_definition(ureg, entry.name)
     dimension = _dimension_of(ureg, entry.name)
-    root_factor = _exact(ureg.get_root_units(entry.name)[0])
+    factor, root_units = ureg.get_root_units(entry.name)
+    root_factor = _exact(factor)
     prefix_scale = _exact(ureg._prefixes[prefix].converter.scale) if prefix else Fraction(1)
     # pint's root unit of mass is the gram; SI's is the kilogram.
     mass_power = dimension.exponents.get("mass", Fraction(0))
@@ -193,6 +195,7 @@ def _atom(prefix: str, entry: CatalogueEntry) -> UnitAtom:
         dimension=dimension,
         offset=offset,
         si=entry.si,
+        angle="radian" in root_units._units,
     )
 
 

@@ -58,6 +58,7 @@ if TYPE_CHECKING:
     from problems.variants import Variant
 
 OFF_BY = Decimal("1.10")  # a value this far off must be rejected
+_LEFT_OUT_WHEN_ABSENT = frozenset({"of", "value", "angular_units"})
 
 # Other spellings of common units whose conversion factors are not powers of ten as well as those that are.
 _UNIT_ALTERNATIVES: dict[str, tuple[str, ...]] = {
@@ -86,6 +87,8 @@ class NumericPart(Strict):
     units_required: bool = True
     arithmetic: bool = True  # the number may be arithmetic (`229/50 m/s^2`); False: a plain decimal
     units_system: Literal["SI"] | None = None  # "SI": refuse answers in ft, lb, atm, …
+    # "strict": a hertz counts cycles, so Hz for an angular frequency is the 2π mistake (absent: s⁻¹ both)
+    angular_units: Literal["strict"] | None = None
     max_attempts: Attempts | None = None
 
     @field_validator("of")
@@ -102,10 +105,12 @@ class NumericPart(Strict):
 
     @model_serializer(mode="wrap")
     def _dump(self, handler: SerializerFunctionWrapHandler) -> dict[str, Any]:
-        # The one of `of` and `value` not given is left out: a document dumps (and hashes, so its stored
-        # version holds) as it did before parts could state a value.
+        # The one of `of` and `value` not given is left out, and `angular_units` when absent: a document
+        # dumps (and hashes, so its stored version holds) as it did before parts had them.
         dumped: dict[str, Any] = handler(self)
-        return {key: item for key, item in dumped.items() if item is not None or key not in {"of", "value"}}
+        return {
+            key: item for key, item in dumped.items() if item is not None or key not in _LEFT_OUT_WHEN_ABSENT
+        }
 
     @property
     def dimensionless(self) -> bool:
@@ -124,10 +129,17 @@ class NumericCheckIn(CheckBody):
     tolerance: ToleranceDecl | None = None  # absent: the default, as for a part
     arithmetic: StrictBool = True  # the number may be arithmetic (`229/50 m/s^2`); False: a plain decimal
     units_system: Literal["SI"] | None = None  # "SI": refuse answers in ft, lb, atm, …
+    angular_units: Literal["strict"] | None = None  # "strict": Hz for an angular frequency is the 2π mistake
 
     def job(self) -> NumericJob:
         part = adhoc_part(
-            self.expected, self.units, self.units_required, self.tolerance, self.arithmetic, self.units_system
+            self.expected,
+            self.units,
+            self.units_required,
+            self.tolerance,
+            self.arithmetic,
+            self.units_system,
+            self.angular_units,
         )
         return part.job(self.answer)
 
@@ -140,6 +152,7 @@ def adhoc_part(
     tolerance: ToleranceDecl | None,
     arithmetic: bool,
     units_system: Literal["SI"] | None,
+    angular_units: Literal["strict"] | None = None,
 ) -> CompiledNumericPart:
     """An ad-hoc check as the one part of a problem without a document, its `expected` the part's stated
     `value` (exact, all its digits), compiled as a bank part is (cached: a course re-uses its references);
@@ -155,6 +168,7 @@ def adhoc_part(
         units_required=units_required,
         arithmetic=arithmetic,
         units_system=units_system,
+        angular_units=angular_units,
     )
     try:
         return NUMERIC.compile(part, (), CompileContext({}, {}, ()))
@@ -185,6 +199,7 @@ class CompiledNumericPart:
     derived: bool = False  # its expression is a model quantity derived by the engine
     arithmetic: bool = True
     units_system: str | None = None
+    angular_units: str | None = None
 
     @property
     def expression(self) -> sympy.Expr | None:
@@ -229,6 +244,7 @@ class CompiledNumericPart:
             tolerance=self.tolerance,
             arithmetic=self.arithmetic,
             units_system=self.units_system,
+            angular_units=self.angular_units,
         )
 
     def question(self, variant: Variant | None = None) -> NumericSpec:
@@ -272,6 +288,7 @@ class NumericKind:
             derived,
             arithmetic=part.arithmetic,
             units_system=part.units_system,
+            angular_units=part.angular_units,
         )
         if isinstance(value, Decimal):
             # The same question for every student: made now, so units it cannot use are the part's

@@ -89,6 +89,23 @@ def choice(answer: str, choices: list[dict] | None = None) -> dict:
             numeric("15.03 ft/s^2", units_system="SI"), "invalid", "unknown_unit", id="si-only-refuses-ft"
         ),
         pytest.param(numeric("15.03 ft/s^2"), "correct", "equivalent", id="ft-converted"),
+        pytest.param(numeric("4.58 Hz", units="rad/s"), "correct", "equivalent", id="hertz-for-omega"),
+        pytest.param(
+            numeric("4.58 Hz", units="rad/s", angular_units="strict"),
+            "incorrect",
+            "constant_factor",
+            id="hertz-for-omega-strict",
+        ),
+        pytest.param(
+            numeric("12.3*m/s", expected=12.3, units="m/s", tolerance={"sigfigs": 3}),
+            "correct",
+            "equivalent",
+            id="joined-literal",
+        ),
+        pytest.param(
+            numeric("50 lb", expected="222.41", units="N"), "correct", "equivalent", id="pound-force"
+        ),
+        pytest.param(numeric("50 lb", units="m/s"), "invalid", "ambiguous", id="pound-for-a-speed"),
         pytest.param(choice("A"), "correct", "equivalent", id="choice-letter"),
         pytest.param(choice("(a)"), "correct", "equivalent", id="choice-letter-in-brackets"),
         pytest.param(choice("  up the SLOPE "), "correct", "equivalent", id="choice-text"),
@@ -234,6 +251,12 @@ def test_numeric_units_in_square_brackets_are_read_as_the_units(client, student_
     refused = client.post("/v1/check", json=numeric("4.58 [m/smoot]"), headers=student_headers).json()
     assert (refused["verdict"], refused["reason"]) == ("invalid", "unknown_unit")
     assert refused["error"]["position"] == 8
+
+
+def test_angular_units_other_than_strict_is_422(client, student_headers):
+    body = numeric("1 Hz", units="rad/s", angular_units="loose")
+    response = client.post("/v1/check", json=body, headers=student_headers)
+    assert response.status_code == 422
 
 
 def test_units_system_other_than_si_is_422(client, student_headers):

@@ -183,31 +183,6 @@ def test_feedback_wording(answer: str, spec: NumericSpec, words: str) -> None:
     assert words in check_numeric(answer, spec).feedback
 
 
-FREQUENCY = NumericSpec(D("0.729"), "Hz")
-CYCLES_OR_RADIANS = [
-    # (answer, spec, outcome, what the feedback adds: "" for nothing)
-    ("4.58 Hz", OMEGA, OK, "Hz is the unit of a frequency f"),  # s⁻¹ either way: graded, but told
-    ("0.729 Hz", OMEGA, NO, "an angular frequency ω = 2πf is given in rad/s"),  # f given for ω
-    ("0.00458 kHz", OMEGA, OK, "Hz is the unit of a frequency f"),
-    ("4.58 rad/s", FREQUENCY, NO, "a frequency f = ω/2π is given in Hz"),
-    ("4.58 rad/s", OMEGA, OK, ""),
-    ("4.58 1/s", OMEGA, OK, ""),
-    ("0.729 1/s", FREQUENCY, OK, ""),
-]
-
-
-@pytest.mark.parametrize(("answer", "spec", "outcome", "words"), CYCLES_OR_RADIANS)
-def test_hertz_for_an_angular_frequency_or_radians_for_a_frequency_is_remarked_on(
-    answer: str, spec: NumericSpec, outcome: Outcome, words: str
-) -> None:
-    verdict = check_numeric(answer, spec)
-    assert verdict.outcome is outcome
-    if words:
-        assert words in verdict.feedback
-    else:
-        assert "Hz" not in verdict.feedback and "rad/s" not in verdict.feedback
-
-
 POSITIONS = [
     # (answer, position of the error)
     ("4.58", 4),  # missing units: just after the number

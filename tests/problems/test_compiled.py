@@ -282,3 +282,14 @@ def test_numeric_part_takes_arithmetic_and_any_units_by_default() -> None:
     assert isinstance(part, CompiledNumericPart)
     spec = part.spec(draw_variant(parse_problem(spring()), 1, "alice", "s3cret"))
     assert (spec.arithmetic, spec.units_system) == (True, None)
+
+
+def test_numeric_part_passes_angular_units_to_its_check_and_dumps_as_before_without_it() -> None:
+    data = spring()
+    assert "angular_units" not in parse_problem(data).model_dump()["parts"][1]
+    data["parts"][1]["angular_units"] = "strict"
+    doc = parse_problem(data)
+    assert doc.model_dump()["parts"][1]["angular_units"] == "strict"
+    part = compile_problem(doc, use_model=False).part("angular_frequency_numeric")
+    assert isinstance(part, CompiledNumericPart)
+    assert part.spec(draw_variant(doc, 1, "alice", "s3cret")).angular_units == "strict"
