@@ -73,7 +73,7 @@ class _Comparison:
     answer_units: ParsedUnits | None
     target: ParsedUnits | None
     tolerance: Tolerance
-    cycles: Fraction = Fraction(1)  # 2π, 1/2π or 1: how a hertz counts against an angle unit (strict)
+    cycles: Fraction | None = None  # 2π or 1/2π: how a hertz counts against angle units (strict), if it does
 
     @cached_property
     def _linear(self) -> tuple[Fraction, Fraction]:
@@ -81,7 +81,8 @@ class _Comparison:
         if self.answer_units is None or self.target is None:
             return Fraction(1), Fraction(0)
         shift = self.answer_units.convert(Fraction(0), self.target)
-        return (self.answer_units.convert(Fraction(1), self.target) - shift) * self.cycles, shift
+        scale = self.answer_units.convert(Fraction(1), self.target) - shift
+        return (scale if self.cycles is None else scale * self.cycles), shift
 
     @cached_property
     def _bounds(self) -> tuple[Fraction, Fraction]:
@@ -161,10 +162,12 @@ def check_numeric(answer: str, spec: NumericSpec) -> Verdict:
         return _noted(Verdict.graded(_wrong_dimension(read, answer_units, target), read_as))
     expected = spec.expected_value
     expected_as_written = expected
-    cycles = Fraction(1)
+    cycles = None
     if answer_units is not None and target is not None:
-        cycles = _cycles(answer_units, target) if spec.angular_units == "strict" else Fraction(1)
-        expected_as_written = target.convert(expected, answer_units) / cycles
+        expected_as_written = target.convert(expected, answer_units)
+        cycles = _cycles(answer_units, target) if spec.angular_units == "strict" else None
+        if cycles is not None:
+            expected_as_written /= cycles
     comparison = _Comparison(expected, expected_as_written, answer_units, target, spec.tolerance, cycles)
     if comparison.passes(read.value):
         judgement = CORRECT
@@ -192,15 +195,15 @@ def _cycles_or_radians(answer: ParsedUnits | None, target: ParsedUnits | None) -
     return ""
 
 
-def _cycles(answer: ParsedUnits, target: ParsedUnits) -> Fraction:
+def _cycles(answer: ParsedUnits, target: ParsedUnits) -> Fraction | None:
     """Under `angular_units: strict`, a hertz is a cycle per second, 2π rad/s: the factor that takes the
-    answer's hertz to the target's angle units (or its angle units to the target's hertz), else 1. Only
-    where one side counts cycles and the other angles: Hz against 1/s or Bq is the same s⁻¹."""
+    answer's hertz to the target's angle units (or its angle units to the target's hertz), else None.
+    Only where one side counts cycles and the other angles: Hz against 1/s or Bq is the same s⁻¹."""
     answer_angle = any(atom.angle for atom, _ in answer.factors)
     target_angle = any(atom.angle for atom, _ in target.factors)
-    if answer_angle == target_angle:
-        return Fraction(1)
     power = _hertz(answer) - _hertz(target)
+    if answer_angle == target_angle or power == 0:
+        return None
     turn = lookup("rev")
     assert turn is not None
     return turn.scale**power  # pint's 2π, to 50 digits
