@@ -14,6 +14,7 @@ from typing import assert_never
 
 import sympy
 
+from app.instructor.worked import Comparison, MethodInfo, worked_solutions
 from physics.answer_text import typed_text
 from physics.choice import label
 from physics.errors import SpecError
@@ -54,22 +55,9 @@ class PartInfo:
 
 
 @dataclass(frozen=True)
-class StepInfo:
-    title: str
-    latex: str
-
-
-@dataclass(frozen=True)
-class MethodInfo:
-    title: str
-    steps: tuple[StepInfo, ...]
-    notes: tuple[str, ...]
-
-
-@dataclass(frozen=True)
 class Described:
     parts: tuple[PartInfo, ...]
-    methods: tuple[MethodInfo, ...]
+    methods: tuple[MethodInfo, ...]  # the worked solutions, in the seed's order (worked.py)
     agreement: tuple[tuple[str, tuple[str, ...]], ...]  # quantity -> methods that agree on it
     methods_agree: bool
     given: tuple[tuple[str, str], ...]  # the variant's values: (symbol, "2.5 kg")
@@ -77,6 +65,7 @@ class Described:
     checks: tuple[tuple[str, str], ...] = ()
     # quantity -> what a numerical simulation compared, and its largest relative error
     simulation: tuple[tuple[str, str, float], ...] = ()
+    comparison: Comparison | None = None  # the methods compared, where two or more answer
 
 
 def tolerance_text(rel: Decimal | None, abs_: Decimal | None, sigfigs: int | None, units: str) -> str:
@@ -178,18 +167,10 @@ def describe(compiled: CompiledProblem, variant: Variant | None = None) -> Descr
     parts = tuple(_part(spec.id, spec.kind, spec.prompt, compiled, variant) for spec in doc.parts)
     derived = compiled.derived
     derivation = derived.raw if derived is not None else None
-    methods = (
-        ()
-        if derivation is None
-        else tuple(
-            MethodInfo(
-                title=method.title,
-                steps=tuple(StepInfo(step.title, step.latex) for step in method.steps),
-                notes=tuple(method.notes),
-            )
-            for method in derivation.methods
-        )
-    )
+    methods: tuple[MethodInfo, ...] = ()
+    comparison: Comparison | None = None
+    if derivation is not None:
+        methods, comparison = worked_solutions(compiled, derivation, variant)
     agreement = () if derived is None else tuple((q, tuple(m)) for q, m in derived.agreement.items())
     given: tuple[tuple[str, str], ...] = ()
     if variant is not None:
@@ -214,4 +195,5 @@ def describe(compiled: CompiledProblem, variant: Variant | None = None) -> Descr
         given=given,
         checks=checks,
         simulation=simulation,
+        comparison=comparison,
     )

@@ -44,7 +44,7 @@ def static_files() -> StaticFiles:
 def security_headers(frame_ancestors: Sequence[str] = ()) -> dict[str, str]:
     ancestors = " ".join(["'self'", *frame_ancestors])
     csp = (
-        "default-src 'none'; style-src 'self'; script-src 'self'; img-src 'self' data:; "
+        "default-src 'none'; style-src 'self'; script-src 'self'; img-src 'self' data:; font-src 'self'; "
         f"connect-src 'self'; form-action 'self'; frame-ancestors {ancestors}; base-uri 'none'"
     )
     return {

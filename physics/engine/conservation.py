@@ -95,6 +95,7 @@ class ConservationMethod(Method):
                 rf"{e} = {self.tex(energy)},\ \frac{{\mathrm{{d}}{e}}}{{\mathrm{{d}}t}} = 0 \Rightarrow "
                 + self.tex(sympy.Eq(tidy.simplify(rate), 0)),
                 StepKind.EQUATION,
+                [c.acceleration],
             )
             result[c.acceleration] = sympy.solve(rate, c.acceleration)[0]
         for velocity, expr in velocities.items():

@@ -72,17 +72,19 @@ class DAlembertMethod(Method):
 
     @cached_property
     def solution(self) -> dict[sympy.Symbol, sympy.Expr]:
-        return self._solve(dict(self.model.state))
+        solution = self._solve(dict(self.model.state))
+        self.step(
+            f"Solve the {len(self.equations)} equations for the {len(self.mech.qdd)} accelerations",
+            r"\text{each coordinate's acceleration follows}",
+            StepKind.SOLVE,
+            list(self.mech.qdd),
+        )
+        return solution
 
     def acceleration(self, coordinate: str) -> sympy.Expr:
         symbol = self.model.coordinate(coordinate).acceleration
         value = self.at_state(self.solution[symbol])
-        self.step(
-            f"Solved for the acceleration of {self.named(coordinate)}",
-            self.tex(sympy.Eq(symbol, value)),
-            StepKind.SOLVE,
-            [symbol],
-        )
+        self.step(f"The acceleration of {self.named(coordinate)}", self.tex(sympy.Eq(symbol, value)))
         return value
 
     def force(self, constraint: str) -> sympy.Expr:

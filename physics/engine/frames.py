@@ -66,6 +66,7 @@ class FramesMethod(Method):
 
     def tex(self, expr: sympy.Basic) -> str:
         names = self.latex_names if self.model.frame is not None else self.mech.latex_names
+        self._printed |= expr.free_symbols
         return str(sympy.latex(expr, symbol_names=names))
 
     @cached_property
@@ -227,7 +228,16 @@ class FramesMethod(Method):
 
     @cached_property
     def solution(self) -> dict[sympy.Symbol, sympy.Expr]:
-        return self._solve(dict(self.model.state))
+        solution = self._solve(dict(self.model.state))
+        equations, unknowns = self.equations
+        self.step(
+            f"Solve the {len(equations)} equations for the {len(unknowns)} unknowns: the accelerations in the "
+            "frame and the constraint forces",
+            r"\text{then the coordinates' accelerations follow from those in the frame}",
+            StepKind.SOLVE,
+            unknowns,
+        )
+        return solution
 
     def _coordinate_accelerations(
         self, solution: dict[sympy.Symbol, sympy.Expr], values: dict[sympy.Symbol, sympy.Expr]
@@ -254,10 +264,7 @@ class FramesMethod(Method):
         symbol = self.model.coordinate(coordinate).acceleration
         value = self.at_state(accelerations[symbol])
         self.step(
-            f"Solved for the acceleration of {self.named(coordinate)}",
-            self.tex(sympy.Eq(symbol, value)),
-            StepKind.SOLVE,
-            [symbol],
+            f"Solved for the acceleration of {self.named(coordinate)}", self.tex(sympy.Eq(symbol, value))
         )
         return value
 
@@ -268,8 +275,6 @@ class FramesMethod(Method):
         self.step(
             f"Solved for {self.force_named(constraint)}, {self.mech.notation.forces[constraint].words}",
             self.tex(sympy.Eq(symbol, value)),
-            StepKind.SOLVE,
-            [symbol],
         )
         return value
 

@@ -22,14 +22,14 @@ from __future__ import annotations
 
 import re
 from collections.abc import Iterable, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from enum import StrEnum
 from functools import lru_cache
 from typing import Any
 
 import sympy
 
-from physics.engine.model import Constraint, ConstraintKind, Model
+from physics.engine.model import Body, Constraint, ConstraintKind, Model
 from physics.errors import SpecError
 from physics.mathinput.render import latex_name
 
@@ -109,6 +109,8 @@ class Notation:
     bodies: Mapping[str, str]  # body name -> default words ("the block"); «» marks are filled from these
     cartesian: Mapping[str, Name]  # "x_block" -> its name
     letters: Letters
+    masses: Mapping[str, str] = field(default_factory=dict)  # body -> its mass symbol's name, if one
+    gravity: str = ""  # TeX of gravity's acceleration, "" without gravity
 
     def tex_names(self, model: Model) -> dict[sympy.Symbol, str]:
         """sympy symbol -> TeX for every symbol a step may print that is not a problem symbol."""
@@ -123,8 +125,8 @@ class Notation:
             names[symbol] = tex
             names[sympy.Symbol(f"v_{key}", real=True)] = dotted(tex, 1)
             names[sympy.Symbol(f"a_{key}", real=True)] = dotted(tex, 2)
-        for c in model.constraints:
-            names[sympy.Symbol(f"lambda_{c.name}", real=True)] = self.forces[c.name].tex
+        for constraint in model.constraints:
+            names[sympy.Symbol(f"lambda_{constraint.name}", real=True)] = self.forces[constraint.name].tex
         return names
 
 
@@ -229,7 +231,9 @@ def notation_of(model: Model) -> Notation:
     frictions = _frictions(model, forces, taken)
     cartesian = _cartesian(model, taken, coordinates)
     letters = _letters(taken | {n.tex for n in forces.values()} | {n.tex for n in frictions})
-    return Notation(coordinates, forces, conditions, frictions, bodies, cartesian, letters)
+    masses = {b.name: str(b.mass) for b in model.bodies if isinstance(b.mass, sympy.Symbol)}
+    gravity = "" if model.gravity is None else str(sympy.latex(model.gravity))
+    return Notation(coordinates, forces, conditions, frictions, bodies, cartesian, letters, masses, gravity)
 
 
 def _spare(candidates: Iterable[str], taken: set[str]) -> str:
@@ -246,11 +250,11 @@ def _coordinate_words(name: str, model: Model) -> str:
     """What a coordinate is, from how the bodies move with it: a distance along a fixed direction, or an
     angle; the model's `notation` says it better."""
     c = model.coordinate(name)
-    moved = []
+    moved: list[tuple[Body, dict[str, sympy.Expr]]] = []
     for body in model.bodies:
-        direction = [sympy.diff(expr, c.symbol) for _, expr in body.position]
-        if any(d != 0 for d in direction):
-            moved.append((body, dict(zip((a for a, _ in body.position), direction, strict=True))))
+        changes = [sympy.diff(expr, c.symbol) for _, expr in body.position]
+        if any(d != 0 for d in changes):
+            moved.append((body, dict(zip((a for a, _ in body.position), changes, strict=True))))
         elif body.angle is not None and sympy.diff(body.angle, c.symbol) != 0:
             moved.append((body, {}))
     if not moved:
@@ -267,7 +271,7 @@ def _coordinate_words(name: str, model: Model) -> str:
         (0, -1): "downwards",
     }
     parts = [sympy.sympify(direction.get(axis, 0)) for axis in ("x", "y")]
-    key = tuple(int(p) if p.is_Integer else 9 for p in parts)
+    key = (int(parts[0]) if parts[0].is_Integer else 9, int(parts[1]) if parts[1].is_Integer else 9)
     way = says.get(key, "along the direction its position changes with it")
     others = [f"«{b.name}»" for b, _ in moved[1:]]
     tail = f"; {' and '.join(others)} move{'s' if len(others) == 1 else ''} with it" if others else ""
@@ -376,11 +380,11 @@ def _force_kind(constraint: Constraint, model: Model) -> tuple[str, str, str]:
             noun = "surface"  # a rolling element names the surface after its body
         surface = f"the {noun or humanize(constraint.name)}"
         return "normal", f"the normal force from {surface} on {first}", f"{first} stays on {surface}"
-    if (surface := _grip(constraint, model)) is not None:
+    if (grip := _grip(constraint, model)) is not None:
         return (
             "static",
-            f"the static friction from {surface} on {first}, along it",
-            f"{first} does not slip along {surface}",
+            f"the static friction from {grip} on {first}, along it",
+            f"{first} does not slip along {grip}",
         )
     pin = _noun(constraint.name, _PIN_NOUNS)
     axis = _pin_axis(constraint, model)

@@ -8,6 +8,7 @@ from enum import StrEnum
 
 import sympy
 
+from physics.engine.notation import Notation
 from physics.symbolic.domain import KnownMistake, LimitCase
 
 __all__ = [
@@ -70,3 +71,4 @@ class Derivation:
     proofs: Mapping[str, str] = field(default_factory=dict)  # quantity -> "symbolic" or "sampled (...)"
     # physical checks beside method agreement (energy bookkeeping, limiting cases): name -> what was shown
     checks: Mapping[str, str] = field(default_factory=dict)
+    notation: Notation | None = None  # the names the worked solutions use, and what each means
