@@ -21,7 +21,28 @@ import xml.etree.ElementTree as ET  # only latex2mathml's own output is parsed
 
 MATHML_NS = "{http://www.w3.org/1998/Math/MathML}"
 FUNCTIONS = frozenset(
-    "sin cos tan cot sec csc sinh cosh tanh coth arcsin arccos arctan ln log exp det lim max min".split()
+    [
+        "sin",
+        "cos",
+        "tan",
+        "cot",
+        "sec",
+        "csc",
+        "sinh",
+        "cosh",
+        "tanh",
+        "coth",
+        "arcsin",
+        "arccos",
+        "arctan",
+        "ln",
+        "log",
+        "exp",
+        "det",
+        "lim",
+        "max",
+        "min",
+    ]
 )
 _ACCENTS = frozenset("\u00a8\u02d9\u02c6\u005e\u007e\u02dc\u00af\u2192\u20d7\u0307\u0308")
 # accents as the spacing characters MathML Core expects (the font's MATH table places them)
@@ -66,7 +87,7 @@ def _opens_fence(element: ET.Element) -> bool:
     first = element
     while _tag(first) in ("mrow", "msup", "msub") and len(first) > 0:
         first = first[0]
-    return _tag(first) == "mo" and first.get("fence") == "true" or (first.text or "") in "([{"
+    return (_tag(first) == "mo" and first.get("fence") == "true") or (first.text or "") in "([{"
 
 
 def _is_operator(element: ET.Element) -> bool:

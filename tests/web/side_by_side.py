@@ -36,7 +36,7 @@ def mathjax_svgs(items: list[dict[str, Any]]) -> dict[str, Any]:
     node = shutil.which("node")
     if where is None or node is None:
         raise RuntimeError("MathJax (npm mathjax-full) or node is not installed")
-    done = subprocess.run(  # noqa: S603 (our own script, JSON on stdin)
+    done = subprocess.run(
         [node, str(RENDER)],
         input=json.dumps(items),
         capture_output=True,
@@ -98,7 +98,9 @@ def main() -> None:  # pragma: no cover - a tool run by hand
     args = parser.parse_args()
     with sync_playwright() as playwright:
         browser = playwright.chromium.launch(executable_path=CHROMIUM, headless=True, args=CHROMIUM_ARGS)
-        context = browser.new_context(viewport={"width": args.width, "height": 900}, bypass_csp=True, device_scale_factor=args.scale)
+        context = browser.new_context(
+            viewport={"width": args.width, "height": 900}, bypass_csp=True, device_scale_factor=args.scale
+        )
         page = context.new_page()
         base = "/".join(args.url.split("/")[:3])
         if args.instructor_key:
