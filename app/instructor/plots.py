@@ -21,9 +21,10 @@ TEXT_COLOUR = "#1a1a1a"
 
 @dataclass(frozen=True)
 class Bar:
-    label: str
+    label: str  # plain text: the chart's description for screen readers, and the label when no `shown`
     value: float
     text: str  # written after the bar, e.g. "12 (40 %)"
+    shown: Markup | None = None  # the label as the page typesets it (a known mistake's formula, as MathML)
 
 
 def _short(label: str) -> str:
@@ -43,9 +44,15 @@ def bar_chart(chart_id: str, title: str, bars: Sequence[Bar], *, maximum: float 
     for index, bar in enumerate(bars):
         y = TOP + ROW * index
         length = max(room * bar.value * scale, 0.0)
-        rows.append(
+        label = (
             f'<text x="0" y="{y + 13}" fill="{TEXT_COLOUR}" font-size="13">{escape(_short(bar.label))}</text>'
-            f'<rect x="0" y="{y + 18}" width="{length:.1f}" height="14" fill="{BAR_COLOUR}"/>'
+            if bar.shown is None
+            # typeset like the page's formulas (MathML in an HTML island), clipped to the chart's width
+            else f'<foreignObject x="0" y="{y - 4}" width="{WIDTH}" height="22"><div '
+            f'xmlns="http://www.w3.org/1999/xhtml" class="chart-label">{bar.shown}</div></foreignObject>'
+        )
+        rows.append(
+            label + f'<rect x="0" y="{y + 18}" width="{length:.1f}" height="14" fill="{BAR_COLOUR}"/>'
             f'<text x="{length + 6:.1f}" y="{y + 30}" fill="{TEXT_COLOUR}" font-size="13">'
             f"{escape(bar.text)}</text>"
         )

@@ -44,6 +44,8 @@ from app.routers.authoring import store_new_problem, store_new_version
 from app.services import Services
 from app.transfer import export_submissions
 from app.web.layout import page
+from app.web.rendering import render_inline, tex_to_mathml
+from physics.mathinput.render import in_student_style
 from physics.wording import counted
 from problems.loader import MAX_DOCUMENT_BYTES, parse_problem
 from problems.variants import fill_statement, fixed_variant
@@ -535,10 +537,13 @@ async def problem(
 # ---- class results -----------------------------------------------------------------------------------
 
 
-def _mistake_label(mistakes: Mapping[str, MistakeInfo], feedback: str) -> str:
-    """A chart's label for a known mistake: its expression, else its feedback without TeX dollars."""
+def _mistake_bar(mistakes: Mapping[str, MistakeInfo], feedback: str, submissions: int) -> Bar:
+    """A chart's bar for a known mistake, labelled with its formula typeset (else its feedback), and
+    described for screen readers in the student style of typing (`g·m/M`, never sympy's `g*m/M`)."""
     known = mistakes.get(feedback)
-    return known.text if known is not None else feedback.replace("$", "")
+    spoken = in_student_style(known.text) if known is not None else feedback.replace("$", "")
+    shown = tex_to_mathml(known.latex) if known is not None else render_inline(feedback)
+    return Bar(spoken, submissions, counted(submissions, "answer"), shown)
 
 
 def _percent(part: results_repository.PartResults) -> str:
@@ -600,10 +605,7 @@ async def results(problem_id: str, request: Request, services: ServicesDep, who:
                 "mistakes_chart": bar_chart(
                     f"{chart}-mistakes",
                     f"Part {index + 1}: wrong answers by known mistake",
-                    [
-                        Bar(_mistake_label(mistakes, c.key), c.submissions, counted(c.submissions, "answer"))
-                        for c in part.mistakes
-                    ],
+                    [_mistake_bar(mistakes, c.key, c.submissions) for c in part.mistakes],
                 ),
             }
         )

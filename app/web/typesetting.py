@@ -105,6 +105,9 @@ def polish(root: ET.Element) -> None:
                 child.attrib.clear()
                 if len(child.text or "") == 1:
                     child.set("mathvariant", "normal")
+            elif tag == "mo" and child.text == "/":  # TeX's slash is an ordinary symbol: no space around it
+                child.set("lspace", "0")
+                child.set("rspace", "0")
             elif tag == "mover" and len(child) == 2 and (child[1].text or "") in _ACCENTS:
                 child.set("accent", "true")  # on the letter, by the font's accent attachment
                 child[1].text = _SPACING.get(child[1].text or "", child[1].text)

@@ -223,10 +223,10 @@ METHODS: dict[str, Callable[[Method, Point], Matrices]] = {
 
 # --- what the derivation hands on: known mistakes, limits, the undamped check -------------------------
 
-UNDAMPED = "That is the undamped angular frequency: damping lowers it to sqrt(omega0^2 - gamma^2/4)."
+UNDAMPED = "That is the undamped angular frequency: damping lowers it to $\\sqrt{\\omega_0^2 - \\gamma^2/4}$."
 RATE_NOT_HALVED = (
-    "The amplitude decays at half the damping rate, gamma/2 = b/(2m): the damped frequency is "
-    "sqrt(omega0^2 - gamma^2/4), not sqrt(omega0^2 - gamma^2)."
+    "The amplitude decays at half the damping rate, $\\gamma/2 = b/(2m)$: the damped frequency is "
+    "$\\sqrt{\\omega_0^2 - \\gamma^2/4}$, not $\\sqrt{\\omega_0^2 - \\gamma^2}$."
 )
 RAISED = "Damping slows the oscillation: the damped frequency is below the undamped one, not above it."
 ENERGY_TIME = (

@@ -37,7 +37,7 @@ if TYPE_CHECKING:
 SLIP_STEPS = 2000  # RK4 steps over the expected sliding time
 NO_TORQUE = (
     "The friction at the contact also turns the body (its torque about the centre): the slipping stops "
-    "when the contact point's velocity v - R*omega vanishes, not when the body stops."
+    "when the contact point's velocity $v - R\\omega$ vanishes, not when the body stops."
 )
 
 
