@@ -8,6 +8,8 @@ Templates get the renderer as filters: `{{ text | markdown }}` (paragraphs), `{{
 
 from __future__ import annotations
 
+import html
+import re
 from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import Any
@@ -34,6 +36,16 @@ def _tex_block(tex: str) -> Markup:
 
 
 templates.env.filters["tex_block"] = _tex_block
+_SCALE_NOTE = re.compile(r'^<svg[^>]*\sdata-scale-note="([^"]*)"')
+
+
+def scale_note(svg: str | None) -> str:
+    """What a figure could not draw at its value ("Not to scale: α = 2° is drawn as 5°."), or ""."""
+    found = _SCALE_NOTE.match(svg or "")
+    return html.unescape(found.group(1)) if found else ""
+
+
+templates.env.filters["scale_note"] = scale_note
 
 
 def static_files() -> StaticFiles:
