@@ -534,6 +534,58 @@ async def problem(
     )
 
 
+_RELEASE_RULES = {
+    "after_attempts": "when they have answered every part correctly or used its last attempt",
+    "always": "at once, as the problem says",
+    "never": "never: the problem says so",
+}
+
+
+@router.get("/problems/{problem_id}/solution")
+async def solution(
+    problem_id: str,
+    request: Request,
+    services: ServicesDep,
+    who: Visitor,
+    student: Annotated[str | None, Query(max_length=200)] = None,
+) -> Response:
+    """The worked solution as a hand-out (print stylesheet), with one student's values or one's own."""
+    record = await run_in_threadpool(_record, services, problem_id)
+    student = (student or "").strip() or None
+    if student is not None and student != who.principal.own_identity:
+        _need_key(who)
+    whose = student or who.principal.own_identity
+
+    def load() -> dict[str, Any]:
+        catalog = services.catalog
+        doc = catalog.document(record)
+        variant = catalog.variant(record, whose)
+        try:
+            figure = catalog.figure(problem_id, whose)
+            forces = catalog.free_body_figures(problem_id, whose)
+        except Exception:  # an illustration: the solution is complete without it
+            log.exception("no figure for problem %r", problem_id)
+            figure, forces = None, ()
+        return {
+            "doc": doc,
+            "record": record,
+            "statement": fill_statement(doc.statement, doc, variant),
+            "described": describe(catalog.compiled(record), variant),
+            "figure": figure,
+            "forces": forces,
+            "release_rule": _RELEASE_RULES[doc.solutions],
+        }
+
+    context = await run_in_threadpool(load)
+    return await _page(
+        request,
+        services,
+        who,
+        "instructor/solution.html",
+        {**context, "title": f"Worked solution: {context['doc'].title}", "whose": whose},
+    )
+
+
 # ---- class results -----------------------------------------------------------------------------------
 
 

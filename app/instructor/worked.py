@@ -54,6 +54,12 @@ class StepInfo:
     latex: str
     number: str | None = None  # "2.3" for a numbered equation
 
+    @property
+    def lines(self) -> tuple[str, ...]:
+        """The formula as display lines: results listed with `,\\quad` and a general form followed by
+        `:\\quad` go one to a line, so that none is wider than a phone or a printed page needs."""
+        return tuple(line for line in _split_top_level(self.latex, (r",\quad ", r":\quad ")) if line.strip())
+
 
 @dataclass(frozen=True)
 class CheckInfo:
@@ -98,6 +104,25 @@ class ComparisonRow:
 class Comparison:
     rows: tuple[ComparisonRow, ...]
     advice: str  # Markdown: which method and why, for this problem
+
+
+def _split_top_level(tex: str, separators: tuple[str, ...]) -> list[str]:
+    """`tex` cut at each separator outside braces."""
+    pieces, depth, start, index = [], 0, 0, 0
+    while index < len(tex):
+        char = tex[index]
+        if char == "{":
+            depth += 1
+        elif char == "}":
+            depth -= 1
+        elif depth == 0 and (found := next((s for s in separators if tex.startswith(s, index)), None)):
+            pieces.append(tex[start:index])
+            index += len(found)
+            start = index
+            continue
+        index += 1
+    pieces.append(tex[start:])
+    return pieces
 
 
 def body_words(doc: ProblemDocument, notation: Notation, masses: Mapping[str, str]) -> dict[str, str]:
