@@ -485,3 +485,76 @@ def _letters(taken: set[str]) -> Letters:
         energy=pick("E", r"\mathcal{E}"),
         generalized=pick("Q", r"\mathcal{Q}"),
     )
+
+
+# --- the audit: what `physcheck bank verify` and the tests hold every worked solution to -----------------
+
+_INTERNAL_WORD = re.compile(r"\b[A-Za-z]+(?:_[A-Za-z0-9]+|[a-z][A-Z][A-Za-z]*|\d+)\b")
+_MATH = re.compile(r"\$[^$]*\$")
+_ITALIC_D = re.compile(r"\\frac\{d[A-Za-z]?\}|\\frac\{d\(")
+_ENGINE_TEX = re.compile(r"\\lambda_\{|\\mathrm\{phi|\bg_k\b|\\nabla g")
+
+
+def defined_symbols(model: Model) -> set[str]:
+    """The names of every symbol a worked solution may print: the problem's, the coordinates and their
+    rates, each body's Cartesian coordinates and rates (also relative to a moving frame), the
+    constraint forces and the time."""
+    names = {str(p) for p in model.parameters} | {"t"}
+    for c in model.coordinates:
+        names |= {c.name, str(c.velocity), str(c.acceleration)}
+    for key, _ in model.cartesian:
+        names |= {key, f"v_{key}", f"a_{key}", f"{key}_rel", f"v_{key}_rel", f"a_{key}_rel"}
+    names |= {f"lambda_{c.name}" for c in model.constraints}
+    return names
+
+
+def audit(model: Model, notation: Notation, methods: Iterable[Any]) -> list[str]:
+    """Why the worked solutions (the derivation's method reports) do not read cleanly: a constraint
+    force without a physical name, two things written alike, a name that reads as the d of d/dt, a
+    symbol no set-up defines, or an engine name shown to a reader. Empty when they read cleanly."""
+    faults: list[str] = []
+    for key, name in notation.forces.items():
+        if name.source is Source.GENERATED or not name.words.strip():
+            faults.append(f"the force of constraint {key!r} has no physical name ({name.tex})")
+    problem = {str(p): sympy.latex(p) for p in model.parameters}
+    written: dict[str, str] = {}
+    mine = [
+        *((f"coordinate {k}", n) for k, n in notation.coordinates.items()),
+        *((f"force {k}", n) for k, n in notation.forces.items()),
+        *((f"friction {i + 1}", n) for i, n in enumerate(notation.frictions)),
+        *((f"position {k}", n) for k, n in notation.cartesian.items()),
+    ]
+    for what, name in mine:
+        own = name.source is Source.PROBLEM
+        if name.tex in RESERVED and not own:
+            faults.append(f"{what} is written {name.tex!r}, which reads as a constant or the d of d/dt")
+        if name.tex in written:
+            faults.append(f"{what} and {written[name.tex]} are both written {name.tex!r}")
+        elif name.tex in problem.values() and not own:
+            faults.append(f"{what} is written {name.tex!r}, like the problem's symbol")
+        written[name.tex] = what
+    letters = notation.letters
+    for letter in (letters.kinetic, letters.potential, letters.energy, letters.generalized):
+        if letter in written or letter in problem.values():
+            faults.append(f"the methods' letter {letter!r} is also {written.get(letter, 'a problem symbol')}")
+    defined = defined_symbols(model)
+    bodies = {b.name for b in model.bodies}
+    for report in methods:
+        for step in report.steps:
+            where = f"{report.name}: {step.title!r}"
+            for symbol in step.symbols:
+                if symbol not in defined:
+                    faults.append(f"{where} prints {symbol!r}, which no set-up defines")
+            for mark in BODY_MARK.findall(step.title):
+                if mark not in bodies:
+                    faults.append(f"{where} names an unknown body {mark!r}")
+            prose = _MATH.sub("", BODY_MARK.sub("", step.title))
+            for word in _INTERNAL_WORD.findall(prose):
+                faults.append(f"{where} shows the engine's name {word!r}")
+            if _ITALIC_D.search(step.latex):
+                faults.append(f"{where} writes d/dt with an italic d")
+            if _ENGINE_TEX.search(step.latex + " " + step.title):
+                faults.append(
+                    f"{where} shows the engine's notation: {_ENGINE_TEX.search(step.latex + step.title)}"
+                )
+    return faults
