@@ -223,10 +223,10 @@ def _quantity(
     velocity = after[quantity.target]
     if quantity.kind is QuantityKind.FINAL_SPEED:
         speed = _signs_by_domain(model, sympy.sqrt(sympy.factor(sympy.expand(_dot(velocity, velocity)))))
-        step(f"Speed of {quantity.target} after", sympy.latex(speed))
+        step(f"Speed of «{quantity.target}» after", sympy.latex(speed))
         return speed
     (component,) = velocity.values()
-    step(f"Velocity of {quantity.target} after", sympy.latex(component))
+    step(f"Velocity of «{quantity.target}» after", sympy.latex(component))
     return sympy.factor(component)
 
 

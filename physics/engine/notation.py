@@ -495,11 +495,15 @@ _ITALIC_D = re.compile(r"\\frac\{d[A-Za-z]?\}|\\frac\{d\(")
 _ENGINE_TEX = re.compile(r"\\lambda_\{|\\mathrm\{phi|\bg_k\b|\\nabla g")
 
 
+# symbols a method brings and its step says in words: a root of the characteristic equation
+METHOD_SYMBOLS = frozenset({"lambda"})
+
+
 def defined_symbols(model: Model) -> set[str]:
     """The names of every symbol a worked solution may print: the problem's, the coordinates and their
     rates, each body's Cartesian coordinates and rates (also relative to a moving frame), the
     constraint forces and the time."""
-    names = {str(p) for p in model.parameters} | {"t"}
+    names = {str(p) for p in model.parameters} | {"t"} | METHOD_SYMBOLS
     for c in model.coordinates:
         names |= {c.name, str(c.velocity), str(c.acceleration)}
     for key, _ in model.cartesian:
