@@ -495,8 +495,9 @@ _ITALIC_D = re.compile(r"\\frac\{d[A-Za-z]?\}|\\frac\{d\(")
 _ENGINE_TEX = re.compile(r"\\lambda_\{|\\mathrm\{phi|\bg_k\b|\\nabla g")
 
 
-# symbols a method brings and its step says in words: a root of the characteristic equation
-METHOD_SYMBOLS = frozenset({"lambda"})
+# symbols a method brings and its step says in words: a root of the characteristic equation, a flight's
+# apex height and the vertical velocity on landing
+METHOD_SYMBOLS = frozenset({"lambda", "H", "v_y1"})
 
 
 def defined_symbols(model: Model) -> set[str]:
