@@ -115,9 +115,12 @@ def polish(root: ET.Element) -> None:
         if _tag(parent) in _ROWS:
             _unary_signs(parent)
             _space_functions(parent)
-        if _tag(parent) == "mrow" and _fenced(parent) and not _tall(parent):
-            for fence in (parent[0], parent[-1]):  # TeX's delimiter shortfall: no taller bracket
-                fence.set("stretchy", "false")
+        if _tag(parent) == "mrow" and _fenced(parent):
+            for fence in (parent[0], parent[-1]):
+                if not _tall(parent):  # TeX's delimiter shortfall: no taller bracket
+                    fence.set("stretchy", "false")
+                else:  # cover the content's height and depth, not twice the larger of them about the axis
+                    fence.set("symmetric", "false")
 
 
 def _fenced(row: ET.Element) -> bool:
