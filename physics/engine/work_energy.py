@@ -100,7 +100,9 @@ def _held(method: Method, c: Coordinate, quantity: Quantity) -> dict[sympy.Symbo
         momentum = sympy.Add(*(mass[i, j] * mech.qd[j] for j in range(n)))
         initial = tidy.simplify(momentum.subs(state))
         method.step(
-            f"Momentum conjugate to {mech.q[i]} is conserved", method.tex(sympy.Eq(momentum, initial))
+            f"The momentum conjugate to {method.named(method.model.coordinates[i].name)} is conserved "
+            "(no force acts along it)",
+            method.tex(sympy.Eq(momentum, initial)),
         )
         equations.append(momentum - initial)
     return solve_linear(equations, [mech.qd[i] for i in others], "the conserved momenta")
