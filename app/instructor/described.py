@@ -7,17 +7,19 @@ and the problem pages build it from the catalog's compiled problem. No FastAPI h
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from decimal import Decimal
-from typing import assert_never
+from typing import Any, assert_never
 
 import sympy
 
 from app.instructor.worked import Comparison, MethodInfo, worked_solutions
 from physics.answer_text import typed_text
 from physics.choice import label
-from physics.errors import SpecError
+from physics.errors import PhyscheckError, SpecError
+from physics.mathinput import parse_math
+from physics.mathinput.render import in_student_style
 from physics.numeric import round_sigfigs
 from problems.compiled import CompiledChoicePart, CompiledNumericPart, CompiledProblem, CompiledSymbolicPart
 from problems.variants import Variant, format_number, format_quantity
@@ -100,6 +102,25 @@ def _numeric(part: CompiledNumericPart, variant: Variant | None) -> tuple[str | 
     return shown, format_quantity(value, part.units), None
 
 
+def _mistake(
+    expr: sympy.Expr,
+    feedback: str,
+    written: Sequence[Any],
+    index: int,
+    authored: int,
+    compiled: CompiledProblem,
+) -> MistakeInfo:
+    """A known mistake as the author typed it (`r0/2^(1/6)`, read by our own reader and typeset from its
+    parse tree), or for one the engine found, as sympy writes it."""
+    if index < authored:
+        try:
+            read = parse_math(str(written[index].answer), compiled.table).read_as
+            return MistakeInfo(read.latex, in_student_style(read.text), feedback, True)
+        except PhyscheckError:
+            pass
+    return MistakeInfo(sympy.latex(expr), typed_text(expr), feedback, index < authored)
+
+
 def _part(
     part_id: str, kind: str, prompt: str, compiled: CompiledProblem, variant: Variant | None
 ) -> PartInfo:
@@ -117,7 +138,7 @@ def _part(
             expected=None,
             expected_full=None,
             mistakes=tuple(
-                MistakeInfo(sympy.latex(m.expr), typed_text(m.expr), m.feedback, i < authored)
+                _mistake(m.expr, m.feedback, getattr(doc_part, "mistakes", ()), i, authored, compiled)
                 for i, m in enumerate(part.context.mistakes)
             ),
             limits=tuple(

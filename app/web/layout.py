@@ -21,6 +21,7 @@ from fastapi.templating import Jinja2Templates
 from markupsafe import Markup
 
 from app.web.rendering import render_inline, render_markdown, tex_to_mathml
+from physics.mathinput.render import in_student_style
 
 HERE = Path(__file__).resolve().parent
 STATIC_PATH = "/static"
@@ -46,6 +47,8 @@ def scale_note(svg: str | None) -> str:
 
 
 templates.env.filters["scale_note"] = scale_note
+# an answer as read, in the student style of typing (`r0/2^(1/6)`), never the contract's `**`
+templates.env.filters["typed"] = in_student_style
 
 
 def static_files() -> StaticFiles:
