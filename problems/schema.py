@@ -8,7 +8,7 @@ both and reports every fault at once with its path.
 from __future__ import annotations
 
 from collections.abc import Callable
-from typing import Annotated, Any
+from typing import Annotated, Any, Literal
 
 from pydantic import Field, ValidationError
 
@@ -64,6 +64,9 @@ class ProblemDocument(Strict):
     given: Annotated[dict[Name, GivenDecl], Field(max_length=MAX_ITEMS)] = {}
     parts: Annotated[list[Part], Field(min_length=1, max_length=MAX_ITEMS)]
     max_attempts: Attempts | None = None  # per part, unless a part sets its own
+    # when a student may see the worked solution (app/web/solution_access.py): once every part is done
+    # (answered correctly or out of attempts), from the start, or never
+    solutions: Literal["after_attempts", "always", "never"] = "after_attempts"
     # Validated by the engine (`physics.engine.load_model`), not here.
     model: dict[str, Any] | None = None
 

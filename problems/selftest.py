@@ -18,6 +18,7 @@ from pathlib import Path
 import sympy
 
 from physics.answer_text import typed_text
+from physics.engine.notation import audit
 from physics.errors import DerivationError, PhyscheckError
 from physics.wording import counted
 from problems.compiled import CompiledProblem, CompiledSymbolicPart, compile_problem
@@ -27,7 +28,7 @@ from problems.kinds.base import CheckResult
 from problems.kinds.numeric import answer_text, unit_alternatives
 from problems.kinds.symbolic import equivalent_forms, rewritings
 from problems.loader import load_bank
-from problems.modelinfo import MIN_AGREEING_METHODS
+from problems.modelinfo import MIN_AGREEING_METHODS, load_doc_model
 from problems.schema import ProblemDocument
 from problems.variants import Variant, draw_variant, si_values
 
@@ -129,6 +130,7 @@ def verify_problem(
     report.not_derived = compiled.not_derived
     if compiled.derived is not None:
         report.results.extend(_agreement_checks(doc.id, compiled))
+        report.results.extend(_notation_checks(doc, compiled))
     total = len(compiled.parts)
     students = [draw_variant(doc, version, f"selftest-{i}", secret) for i in range(variants)]
     report.results.extend(_domain_checks(doc.id, compiled, students))
@@ -189,6 +191,17 @@ def _agreement_checks(problem: str, compiled: CompiledProblem) -> list[CheckResu
         detail = proof if ok else f"derived by {', '.join(methods) or 'no method'} only"
         results.append(CheckResult(problem, part.id, "methods agree", ok, detail))
     return results
+
+
+def _notation_checks(doc: ProblemDocument, compiled: CompiledProblem) -> list[CheckResult]:
+    """The worked solutions read cleanly: every constraint force has a physical name, no two things are
+    written alike, every symbol a step prints is defined (physics/engine/notation.py)."""
+    assert compiled.derived is not None
+    derivation = compiled.derived.raw
+    if getattr(derivation, "notation", None) is None:
+        return []
+    faults = audit(load_doc_model(doc, compiled.table), derivation.notation, derivation.methods)
+    return [CheckResult(doc.id, None, "solution notation", not faults, "; ".join(faults[:5]))]
 
 
 def _domain_checks(problem: str, compiled: CompiledProblem, students: list[Variant]) -> list[CheckResult]:

@@ -7,16 +7,19 @@ and the problem pages build it from the catalog's compiled problem. No FastAPI h
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from decimal import Decimal
-from typing import assert_never
+from typing import Any, assert_never
 
 import sympy
 
+from app.instructor.worked import Comparison, MethodInfo, worked_solutions
 from physics.answer_text import typed_text
 from physics.choice import label
-from physics.errors import SpecError
+from physics.errors import PhyscheckError, SpecError
+from physics.mathinput import parse_math
+from physics.mathinput.render import in_student_style
 from physics.numeric import round_sigfigs
 from problems.compiled import CompiledChoicePart, CompiledNumericPart, CompiledProblem, CompiledSymbolicPart
 from problems.variants import Variant, format_number, format_quantity
@@ -54,22 +57,9 @@ class PartInfo:
 
 
 @dataclass(frozen=True)
-class StepInfo:
-    title: str
-    latex: str
-
-
-@dataclass(frozen=True)
-class MethodInfo:
-    title: str
-    steps: tuple[StepInfo, ...]
-    notes: tuple[str, ...]
-
-
-@dataclass(frozen=True)
 class Described:
     parts: tuple[PartInfo, ...]
-    methods: tuple[MethodInfo, ...]
+    methods: tuple[MethodInfo, ...]  # the worked solutions, in the seed's order (worked.py)
     agreement: tuple[tuple[str, tuple[str, ...]], ...]  # quantity -> methods that agree on it
     methods_agree: bool
     given: tuple[tuple[str, str], ...]  # the variant's values: (symbol, "2.5 kg")
@@ -77,6 +67,7 @@ class Described:
     checks: tuple[tuple[str, str], ...] = ()
     # quantity -> what a numerical simulation compared, and its largest relative error
     simulation: tuple[tuple[str, str, float], ...] = ()
+    comparison: Comparison | None = None  # the methods compared, where two or more answer
 
 
 def tolerance_text(rel: Decimal | None, abs_: Decimal | None, sigfigs: int | None, units: str) -> str:
@@ -111,6 +102,25 @@ def _numeric(part: CompiledNumericPart, variant: Variant | None) -> tuple[str | 
     return shown, format_quantity(value, part.units), None
 
 
+def _mistake(
+    expr: sympy.Expr,
+    feedback: str,
+    written: Sequence[Any],
+    index: int,
+    authored: int,
+    compiled: CompiledProblem,
+) -> MistakeInfo:
+    """A known mistake as the author typed it (`r0/2^(1/6)`, read by our own reader and typeset from its
+    parse tree), or for one the engine found, as sympy writes it."""
+    if index < authored:
+        try:
+            read = parse_math(str(written[index].answer), compiled.table).read_as
+            return MistakeInfo(read.latex, in_student_style(read.text), feedback, True)
+        except PhyscheckError:
+            pass
+    return MistakeInfo(sympy.latex(expr), typed_text(expr), feedback, index < authored)
+
+
 def _part(
     part_id: str, kind: str, prompt: str, compiled: CompiledProblem, variant: Variant | None
 ) -> PartInfo:
@@ -128,7 +138,7 @@ def _part(
             expected=None,
             expected_full=None,
             mistakes=tuple(
-                MistakeInfo(sympy.latex(m.expr), typed_text(m.expr), m.feedback, i < authored)
+                _mistake(m.expr, m.feedback, getattr(doc_part, "mistakes", ()), i, authored, compiled)
                 for i, m in enumerate(part.context.mistakes)
             ),
             limits=tuple(
@@ -178,18 +188,10 @@ def describe(compiled: CompiledProblem, variant: Variant | None = None) -> Descr
     parts = tuple(_part(spec.id, spec.kind, spec.prompt, compiled, variant) for spec in doc.parts)
     derived = compiled.derived
     derivation = derived.raw if derived is not None else None
-    methods = (
-        ()
-        if derivation is None
-        else tuple(
-            MethodInfo(
-                title=method.title,
-                steps=tuple(StepInfo(step.title, step.latex) for step in method.steps),
-                notes=tuple(method.notes),
-            )
-            for method in derivation.methods
-        )
-    )
+    methods: tuple[MethodInfo, ...] = ()
+    comparison: Comparison | None = None
+    if derivation is not None:
+        methods, comparison = worked_solutions(compiled, derivation, variant)
     agreement = () if derived is None else tuple((q, tuple(m)) for q, m in derived.agreement.items())
     given: tuple[tuple[str, str], ...] = ()
     if variant is not None:
@@ -214,4 +216,5 @@ def describe(compiled: CompiledProblem, variant: Variant | None = None) -> Descr
         given=given,
         checks=checks,
         simulation=simulation,
+        comparison=comparison,
     )

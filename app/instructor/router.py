@@ -44,6 +44,8 @@ from app.routers.authoring import store_new_problem, store_new_version
 from app.services import Services
 from app.transfer import export_submissions
 from app.web.layout import page
+from app.web.rendering import render_inline, tex_to_mathml
+from physics.mathinput.render import in_student_style
 from physics.wording import counted
 from problems.loader import MAX_DOCUMENT_BYTES, parse_problem
 from problems.variants import fill_statement, fixed_variant
@@ -532,13 +534,68 @@ async def problem(
     )
 
 
+_RELEASE_RULES = {
+    "after_attempts": "when they have answered every part correctly or used its last attempt",
+    "always": "at once, as the problem says",
+    "never": "never: the problem says so",
+}
+
+
+@router.get("/problems/{problem_id}/solution")
+async def solution(
+    problem_id: str,
+    request: Request,
+    services: ServicesDep,
+    who: Visitor,
+    student: Annotated[str | None, Query(max_length=200)] = None,
+) -> Response:
+    """The worked solution as a hand-out (print stylesheet), with one student's values or one's own."""
+    record = await run_in_threadpool(_record, services, problem_id)
+    student = (student or "").strip() or None
+    if student is not None and student != who.principal.own_identity:
+        _need_key(who)
+    whose = student or who.principal.own_identity
+
+    def load() -> dict[str, Any]:
+        catalog = services.catalog
+        doc = catalog.document(record)
+        variant = catalog.variant(record, whose)
+        try:
+            figure = catalog.figure(problem_id, whose)
+            forces = catalog.free_body_figures(problem_id, whose)
+        except Exception:  # an illustration: the solution is complete without it
+            log.exception("no figure for problem %r", problem_id)
+            figure, forces = None, ()
+        return {
+            "doc": doc,
+            "record": record,
+            "statement": fill_statement(doc.statement, doc, variant),
+            "described": describe(catalog.compiled(record), variant),
+            "figure": figure,
+            "forces": forces,
+            "release_rule": _RELEASE_RULES[doc.solutions],
+        }
+
+    context = await run_in_threadpool(load)
+    return await _page(
+        request,
+        services,
+        who,
+        "instructor/solution.html",
+        {**context, "title": f"Worked solution: {context['doc'].title}", "whose": whose},
+    )
+
+
 # ---- class results -----------------------------------------------------------------------------------
 
 
-def _mistake_label(mistakes: Mapping[str, MistakeInfo], feedback: str) -> str:
-    """A chart's label for a known mistake: its expression, else its feedback without TeX dollars."""
+def _mistake_bar(mistakes: Mapping[str, MistakeInfo], feedback: str, submissions: int) -> Bar:
+    """A chart's bar for a known mistake, labelled with its formula typeset (else its feedback), and
+    described for screen readers in the student style of typing (`g·m/M`, never sympy's `g*m/M`)."""
     known = mistakes.get(feedback)
-    return known.text if known is not None else feedback.replace("$", "")
+    spoken = in_student_style(known.text) if known is not None else feedback.replace("$", "")
+    shown = tex_to_mathml(known.latex) if known is not None else render_inline(feedback)
+    return Bar(spoken, submissions, counted(submissions, "answer"), shown)
 
 
 def _percent(part: results_repository.PartResults) -> str:
@@ -600,10 +657,7 @@ async def results(problem_id: str, request: Request, services: ServicesDep, who:
                 "mistakes_chart": bar_chart(
                     f"{chart}-mistakes",
                     f"Part {index + 1}: wrong answers by known mistake",
-                    [
-                        Bar(_mistake_label(mistakes, c.key), c.submissions, counted(c.submissions, "answer"))
-                        for c in part.mistakes
-                    ],
+                    [_mistake_bar(mistakes, c.key, c.submissions) for c in part.mistakes],
                 ),
             }
         )

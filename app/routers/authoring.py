@@ -11,6 +11,7 @@ from app.auth import Principal
 from app.db.records import ProblemRecord
 from app.deps import Instructor, Problems, ServicesDep
 from app.errors import AppError, Forbidden
+from app.instructor.worked import body_words
 from app.lti.outbox import DeliveryProblem
 from app.openapi import AUTHENTICATED, errors
 from app.schemas.problems import (
@@ -22,6 +23,7 @@ from app.schemas.problems import (
     StepPublic,
 )
 from app.services import Services
+from physics.engine.notation import fill_bodies
 from problems.compiled import CompiledProblem
 from problems.errors import ProblemInvalid
 
@@ -164,6 +166,8 @@ def solution_of(compiled: CompiledProblem) -> SolutionPublic:
         )
     derived = compiled.derived
     derivation = derived.raw if derived is not None else None
+    notation = getattr(derivation, "notation", None)
+    bodies = {} if notation is None else body_words(compiled.document, notation, notation.masses)
     methods = (
         []
         if derivation is None
@@ -171,7 +175,10 @@ def solution_of(compiled: CompiledProblem) -> SolutionPublic:
             MethodPublic(
                 name=method.name,
                 title=method.title,
-                steps=[StepPublic(title=step.title, latex=step.latex) for step in method.steps],
+                steps=[
+                    StepPublic(title=fill_bodies(step.title, bodies), latex=step.latex)
+                    for step in method.steps
+                ],
                 notes=list(method.notes),
             )
             for method in derivation.methods

@@ -8,6 +8,8 @@ Templates get the renderer as filters: `{{ text | markdown }}` (paragraphs), `{{
 
 from __future__ import annotations
 
+import html
+import re
 from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import Any
@@ -19,6 +21,7 @@ from fastapi.templating import Jinja2Templates
 from markupsafe import Markup
 
 from app.web.rendering import render_inline, render_markdown, tex_to_mathml
+from physics.mathinput.render import in_student_style
 
 HERE = Path(__file__).resolve().parent
 STATIC_PATH = "/static"
@@ -34,6 +37,18 @@ def _tex_block(tex: str) -> Markup:
 
 
 templates.env.filters["tex_block"] = _tex_block
+_SCALE_NOTE = re.compile(r'^<svg[^>]*\sdata-scale-note="([^"]*)"')
+
+
+def scale_note(svg: str | None) -> str:
+    """What a figure could not draw at its value ("Not to scale: α = 2° is drawn as 5°."), or ""."""
+    found = _SCALE_NOTE.match(svg or "")
+    return html.unescape(found.group(1)) if found else ""
+
+
+templates.env.filters["scale_note"] = scale_note
+# an answer as read, in the student style of typing (`r0/2^(1/6)`), never the contract's `**`
+templates.env.filters["typed"] = in_student_style
 
 
 def static_files() -> StaticFiles:
@@ -44,7 +59,7 @@ def static_files() -> StaticFiles:
 def security_headers(frame_ancestors: Sequence[str] = ()) -> dict[str, str]:
     ancestors = " ".join(["'self'", *frame_ancestors])
     csp = (
-        "default-src 'none'; style-src 'self'; script-src 'self'; img-src 'self' data:; "
+        "default-src 'none'; style-src 'self'; script-src 'self'; img-src 'self' data:; font-src 'self'; "
         f"connect-src 'self'; form-action 'self'; frame-ancestors {ancestors}; base-uri 'none'"
     )
     return {

@@ -18,6 +18,8 @@ from typing import TYPE_CHECKING, Any
 
 from markupsafe import Markup
 
+from app.web.typesetting import polish, textbook_tex
+
 # latex2mathml and markdown-it are imported by the first page that renders text (a tenth of a
 # CPU-second, kept off the way to /ready).
 if TYPE_CHECKING:
@@ -134,19 +136,21 @@ def _problems_in(element: ET.Element) -> Iterable[str]:
 
 
 def _convert(tex: str, display: bool) -> ET.Element:
-    """latex2mathml's tree for `tex`, or RenderIssue when it is not clean MathML."""
+    """latex2mathml's tree for `tex`, typeset as TeX would (typesetting.py), or RenderIssue when it is
+    not clean MathML."""
     if len(tex) > MAX_TEX_CHARS:
         raise RenderIssue(f"formula longer than {MAX_TEX_CHARS} characters")
     from latex2mathml.converter import convert
 
     try:
-        markup = convert(tex, display="block" if display else "inline")
+        markup = convert(textbook_tex(tex), display="block" if display else "inline")
         root = ET.fromstring(markup)  # noqa: S314 (our converter's output, not input)
     except Exception as error:  # latex2mathml raises many types on malformed TeX
         raise RenderIssue(f"TeX not understood: {type(error).__name__}: {error}") from None
     found = list(_problems_in(root))
     if found:
         raise RenderIssue("; ".join(dict.fromkeys(found)))
+    polish(root)
     return root
 
 

@@ -68,9 +68,10 @@ class ProblemWork:
 
 def shown_feedback(verdict: Outcome, feedback: str) -> str:
     """The feedback as the page shows it after its own word for the verdict: without the "Correct."
-    that word already says (a settled reading's note leads it: "Read as …: the only reading … Correct.")."""
-    if verdict is Outcome.CORRECT:
-        return feedback.strip().removesuffix("Correct.").strip()
+    that word already says, whether it ends the feedback (after a settled reading's note: "Read as …: the only
+    reading … Correct.") or starts it (before a unit's note: "Correct. Hz is the unit …")."""
+    if verdict is Outcome.CORRECT:  # leading ("Correct. Hz is the unit …") or trailing
+        return feedback.strip().removeprefix("Correct.").strip().removesuffix("Correct.").strip()
     return feedback
 
 

@@ -14,6 +14,7 @@ from physics.engine import collision, tidy
 from physics.engine.mechanics import Mechanics, solve_linear, time_derivative
 from physics.engine.method import Method, NotApplicable
 from physics.engine.model import QuantityKind
+from physics.engine.results import StepKind
 
 
 class ConservationMethod(Method):
@@ -22,7 +23,11 @@ class ConservationMethod(Method):
 
     def derive(self) -> None:
         if self.model.frictions:
-            self.step("Not conservative", r"\text{kinetic friction dissipates energy}")
+            energy = self.mech.notation.letters.energy
+            self.step(
+                "Not conservative: kinetic friction turns mechanical energy into heat",
+                rf"\Delta {energy} < 0",
+            )
 
     @cached_property
     def reduced(self) -> tuple[dict[sympy.Symbol, sympy.Expr], sympy.Expr, list[sympy.Symbol]]:
@@ -42,7 +47,12 @@ class ConservationMethod(Method):
             momenta = [sympy.Add(*(mass[i, j] * mech.qd[j] for j in range(len(mech.q)))) for i in cyclic]
             initial = [p.subs(state) for p in momenta]
             for i, p, p0 in zip(cyclic, momenta, initial, strict=True):
-                self.step(f"Momentum conjugate to {mech.q[i]} is conserved", self.tex(sympy.Eq(p, p0)))
+                self.step(
+                    f"The momentum conjugate to {self.named(self.model.coordinates[i].name)} is conserved "
+                    "(no force acts along it)",
+                    self.tex(sympy.Eq(p, p0)),
+                    StepKind.EQUATION,
+                )
             velocities = solve_linear(
                 [p - p0 for p, p0 in zip(momenta, initial, strict=True)],
                 [mech.qd[i] for i in cyclic],
@@ -79,18 +89,23 @@ class ConservationMethod(Method):
                 )
             energy = part_t + part_v
             rate = sympy.expand(time_derivative(energy, model) / c.velocity)
+            e = mech.notation.letters.energy
             self.step(
-                f"Energy of {c.name} is conserved",
-                rf"E = {self.tex(energy)},\ \frac{{dE}}{{dt}} = 0 \Rightarrow "
+                f"The energy is conserved; its rate of change gives the acceleration of {self.named(c.name)}",
+                rf"{e} = {self.tex(energy)},\ \frac{{\mathrm{{d}}{e}}}{{\mathrm{{d}}t}} = 0 \Rightarrow "
                 + self.tex(sympy.Eq(tidy.simplify(rate), 0)),
+                StepKind.EQUATION,
+                [c.acceleration],
             )
             result[c.acceleration] = sympy.solve(rate, c.acceleration)[0]
         for velocity, expr in velocities.items():
             c = next(c for c in model.coordinates if c.velocity == velocity)
             result[c.acceleration] = tidy.simplify(time_derivative(expr, model).subs(result))
             self.step(
-                f"Acceleration of {c.name} from its momentum",
+                f"The acceleration of {self.named(c.name)} from its conserved momentum",
                 self.tex(sympy.Eq(c.acceleration, result[c.acceleration])),
+                StepKind.SOLVE,
+                [c.acceleration],
             )
         return result
 
@@ -116,10 +131,13 @@ class ConservationMethod(Method):
             raise NotApplicable(f"{coordinate} is coupled to other coordinates")
         curvature = sympy.diff(self.mech.potential, c.symbol, 2).subs(c.symbol, equilibrium)
         omega2 = tidy.simplify(curvature / inertia.subs(c.symbol, equilibrium))
+        letters, q = self.mech.notation.letters, self.tex(c.symbol)
         self.step(
-            "Small oscillations from the energy",
-            r"E \approx \tfrac12 M_0 \dot q^2 + \tfrac12 V''(q_0)\,\delta q^2,\ \omega^2 = "
-            + self.tex(omega2),
+            "Small oscillations from the energy: its inertia and the curvature of "
+            f"${letters.potential}$ at the equilibrium",
+            rf"{letters.energy} \approx \tfrac12\, {self.tex(inertia.subs(c.symbol, equilibrium))}\, "
+            rf"{self.tex(c.velocity)}^2 + \tfrac12\, {self.tex(curvature)}\,({q} - {q}_{{\mathrm{{eq}}}})^2,"
+            r"\ \omega^2 = " + self.tex(omega2),
         )
         return tidy.simplify(sympy.sqrt(omega2))
 

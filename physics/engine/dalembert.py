@@ -18,6 +18,7 @@ from physics.engine import tidy
 from physics.engine.mechanics import solve_linear, time_derivative
 from physics.engine.method import Method, NotApplicable
 from physics.engine.oscillation import frequency_from_accelerations
+from physics.engine.results import StepKind
 
 
 class DAlembertMethod(Method):
@@ -56,9 +57,10 @@ class DAlembertMethod(Method):
             )
             equation = sympy.collect(sympy.trigsimp(sympy.expand(work)), list(mech.qdd))
             self.step(
-                f"Virtual work for δ{c.name}",
+                f"Virtual work for a virtual displacement $\\delta {self.tex(c.symbol)}$ alone",
                 rf"\sum_i (\mathbf{{F}}_i - m_i\mathbf{{a}}_i)\cdot\frac{{\partial \mathbf{{r}}_i}}"
                 rf"{{\partial {self.tex(c.symbol)}}} = " + self.tex(equation) + " = 0",
+                StepKind.EQUATION,
             )
             result.append(equation)
         return result
@@ -70,12 +72,19 @@ class DAlembertMethod(Method):
 
     @cached_property
     def solution(self) -> dict[sympy.Symbol, sympy.Expr]:
-        return self._solve(dict(self.model.state))
+        solution = self._solve(dict(self.model.state))
+        self.step(
+            f"Solve the {len(self.equations)} equations for the {len(self.mech.qdd)} accelerations",
+            r"\text{each coordinate's acceleration follows}",
+            StepKind.SOLVE,
+            list(self.mech.qdd),
+        )
+        return solution
 
     def acceleration(self, coordinate: str) -> sympy.Expr:
         symbol = self.model.coordinate(coordinate).acceleration
         value = self.at_state(self.solution[symbol])
-        self.step(f"Solved for the acceleration of {coordinate}", self.tex(sympy.Eq(symbol, value)))
+        self.step(f"The acceleration of {self.named(coordinate)}", self.tex(sympy.Eq(symbol, value)))
         return value
 
     def force(self, constraint: str) -> sympy.Expr:
@@ -95,8 +104,8 @@ class DAlembertMethod(Method):
             )
         )
         self.step(
-            f"Virtual work at rest along {coordinate}",
-            rf"Q_{{{self.tex(q)}}} = \sum_i \mathbf{{F}}_i\cdot\frac{{\partial \mathbf{{r}}_i}}{{\partial "
+            f"Virtual work at rest along {self.named(coordinate)}",
+            rf"{self.mech.notation.letters.generalized}_{{{self.tex(q)}}} = \sum_i \mathbf{{F}}_i\cdot\frac{{\partial \mathbf{{r}}_i}}{{\partial "
             rf"{self.tex(q)}}} = " + self.tex(force),
         )
         return force

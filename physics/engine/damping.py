@@ -34,6 +34,8 @@ Point = dict[sympy.Symbol, sympy.Expr]
 Matrices = tuple[sympy.Matrix, sympy.Matrix, sympy.Matrix]  # (M, C, K)
 UNDERDAMPED_POINTS = 24
 
+ROOT = sympy.Symbol("lambda")  # a root of the characteristic equation (notation.METHOD_SYMBOLS)
+
 
 class NotThisWay(Exception):
     """The method cannot linearize this model (reported by `Method.answer` as not applicable)."""
@@ -73,7 +75,7 @@ def linearization(method: Method, point: Point) -> tuple[sympy.Expr, sympy.Expr,
         raise DerivationError("no viscous damping acts on this motion (add `drag:` to a moving body)")
     method.step(
         "Linearized about the equilibrium",
-        r"M\ddot{q} + C\dot{q} + Kq = 0,\ M = "
+        r"\mathbf{M}\ddot{\mathbf{q}} + \mathbf{C}\dot{\mathbf{q}} + \mathbf{K}\mathbf{q} = 0,\ \mathbf{M} = "
         + method.tex(mass)
         + r",\ C = "
         + method.tex(damping)
@@ -97,8 +99,8 @@ def answer(method: Method, quantity: Quantity, point: Point) -> sympy.Expr:
     )
     method.step(
         "Characteristic equation",
-        method.tex(sympy.Eq(a * sympy.Symbol("s") ** 2 + b * sympy.Symbol("s") + c, 0))
-        + r",\ s = -\frac{1}{\tau} \pm i\omega_d \Rightarrow \frac{1}{\tau} = "
+        method.tex(sympy.Eq(a * ROOT**2 + b * ROOT + c, 0))
+        + r",\ \lambda = -\frac{1}{\tau} \pm i\omega_d \Rightarrow \frac{1}{\tau} = "
         + method.tex(rate)
         + r",\ \omega_d^2 = "
         + method.tex(squared),
@@ -164,8 +166,8 @@ def by_lagrange(method: Method, point: Point) -> Matrices:
     ]
     method.step(
         "Lagrange's equations with the dissipative generalized forces",
-        r"\frac{d}{dt}\frac{\partial L}{\partial \dot q_j} - \frac{\partial L}{\partial q_j} = Q_j,\ Q = "
-        + method.tex(sympy.Matrix(forces).applyfunc(tidy.simplify)),
+        r"\frac{\mathrm{d}}{\mathrm{d}t}\frac{\partial \mathcal{L}}{\partial \dot q_j} - \frac{\partial \mathcal{L}}"
+        r"{\partial q_j} = Q_j,\ Q = " + method.tex(sympy.Matrix(forces).applyfunc(tidy.simplify)),
     )
     return _linearize(equations, model, point, method.title)
 
@@ -209,7 +211,10 @@ def by_energy(method: Method, point: Point) -> Matrices:
     damping = (-sympy.hessian(power, velocities) / 2).subs(rest).applyfunc(tidy.simplify)
     method.step(
         "Energy balance with the power of drag",
-        r"\frac{d}{dt}(T + V) = P = " + method.tex(tidy.simplify(power)) + r" = -\dot q^T C \dot q",
+        rf"\frac{{\mathrm{{d}}}}{{\mathrm{{d}}t}}({method.mech.notation.letters.kinetic} + "
+        rf"{method.mech.notation.letters.potential}) = P = "
+        + method.tex(tidy.simplify(power))
+        + r" = -\dot{\mathbf{q}}^{\mathsf{T}} \mathbf{C} \dot{\mathbf{q}}",
     )
     return mass, damping, stiffness
 
@@ -223,10 +228,10 @@ METHODS: dict[str, Callable[[Method, Point], Matrices]] = {
 
 # --- what the derivation hands on: known mistakes, limits, the undamped check -------------------------
 
-UNDAMPED = "That is the undamped angular frequency: damping lowers it to sqrt(omega0^2 - gamma^2/4)."
+UNDAMPED = "That is the undamped angular frequency: damping lowers it to $\\sqrt{\\omega_0^2 - \\gamma^2/4}$."
 RATE_NOT_HALVED = (
-    "The amplitude decays at half the damping rate, gamma/2 = b/(2m): the damped frequency is "
-    "sqrt(omega0^2 - gamma^2/4), not sqrt(omega0^2 - gamma^2)."
+    "The amplitude decays at half the damping rate, $\\gamma/2 = b/(2m)$: the damped frequency is "
+    "$\\sqrt{\\omega_0^2 - \\gamma^2/4}$, not $\\sqrt{\\omega_0^2 - \\gamma^2}$."
 )
 RAISED = "Damping slows the oscillation: the damped frequency is below the undamped one, not above it."
 ENERGY_TIME = (

@@ -153,7 +153,9 @@ def _derive(model: Model) -> Derivation:
         except Exception:
             limits[quantity.name] = ()
     checks = physical_checks(model, quantities, simulator, LagrangeMethod)
-    return Derivation(quantities, tuple(reports), agreement, simulation, mistakes, limits, proofs, checks)
+    return Derivation(
+        quantities, tuple(reports), agreement, simulation, mistakes, limits, proofs, checks, mech.notation
+    )
 
 
 def _too_few(

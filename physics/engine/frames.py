@@ -22,7 +22,9 @@ from physics.engine import tidy
 from physics.engine.mechanics import CartesianDof, Mechanics, solve_linear, time_derivative
 from physics.engine.method import Method, NotApplicable
 from physics.engine.model import Frame, Model, PairPotential
+from physics.engine.notation import split_subscript
 from physics.engine.oscillation import frequency_from_accelerations
+from physics.engine.results import StepKind
 
 
 @dataclass(frozen=True)
@@ -54,15 +56,17 @@ class FramesMethod(Method):
     def latex_names(self) -> dict[sympy.Symbol, str]:
         names = dict(self.mech.latex_names)
         for f in self.frame_dofs:
-            if f.carrier is not None:
-                axis, body = f.dof.name.split("_", 1)
-                names[f.symbol] = rf"{axis}'_{{\mathrm{{{body}}}}}"
-                names[f.velocity] = rf"\dot{{{axis}}}'_{{\mathrm{{{body}}}}}"
-                names[f.acceleration] = rf"\ddot{{{axis}}}'_{{\mathrm{{{body}}}}}"
+            if f.carrier is not None:  # x' of the block: its x relative to the frame's body
+                base, sub = split_subscript(self.mech.notation.cartesian[f.dof.name].tex)
+                primed = f"{base}'" + (f"_{{{sub}}}" if sub else "")
+                names[f.symbol] = primed
+                names[f.velocity] = rf"\dot{{{base}}}'" + (f"_{{{sub}}}" if sub else "")
+                names[f.acceleration] = rf"\ddot{{{base}}}'" + (f"_{{{sub}}}" if sub else "")
         return names
 
     def tex(self, expr: sympy.Basic) -> str:
         names = self.latex_names if self.model.frame is not None else self.mech.latex_names
+        self._printed |= expr.free_symbols
         return str(sympy.latex(expr, symbol_names=names))
 
     @cached_property
@@ -133,7 +137,9 @@ class FramesMethod(Method):
         frame = self.frame
         if frame.body is not None:
             self.step(
-                f"The frame moving with {frame.body}",
+                f"The frame moving with «{frame.body}»: positions $\\mathbf{{r}}'$ relative to it; each other "
+                "body feels the translational fictitious force $-m\\mathbf{A}$, $\\mathbf{A}$ the frame's "
+                "acceleration",
                 rf"\mathbf{{r}}' = \mathbf{{r}} - \mathbf{{r}}_{{\mathrm{{{frame.body}}}}},\quad"
                 rf" \mathbf{{F}}_{{\mathrm{{trans}}}} = -m\,\mathbf{{A}},\ \mathbf{{A}} = "
                 rf"\ddot{{\mathbf{{r}}}}_{{\mathrm{{{frame.body}}}}}",
@@ -154,10 +160,11 @@ class FramesMethod(Method):
             )
         for f, force in zip(self.frame_dofs, self.total_forces, strict=True):
             d = f.dof
-            where = f"for {d.body} itself (seen from the ground)" if frame.body == d.body else "in the frame"
+            where = "(the frame's own body, seen from the ground)" if frame.body == d.body else "in the frame"
             self.step(
-                f"Newton's second law {where}, {d.name}",
+                f"Newton's second law for «{d.body}» {where}, {self.along(d.name)}",
                 self.tex(sympy.Eq(d.inertia * f.acceleration, force)),
+                StepKind.EQUATION,
             )
 
     @cached_property
@@ -200,7 +207,9 @@ class FramesMethod(Method):
                 )
             )
             self.step(
-                f"Constraint {c.name} in the frame, differentiated twice", self.tex(sympy.Eq(second, 0))
+                f"Constraint in the frame ({self.mech.notation.conditions[c.name]}), differentiated twice",
+                self.tex(sympy.Eq(second, 0)),
+                StepKind.EQUATION,
             )
             equations.append(second)
         return equations, [f.acceleration for f in self.frame_dofs] + list(mech.multipliers)
@@ -219,7 +228,16 @@ class FramesMethod(Method):
 
     @cached_property
     def solution(self) -> dict[sympy.Symbol, sympy.Expr]:
-        return self._solve(dict(self.model.state))
+        solution = self._solve(dict(self.model.state))
+        equations, unknowns = self.equations
+        self.step(
+            f"Solve the {len(equations)} equations for the {len(unknowns)} unknowns: the accelerations in the "
+            "frame and the constraint forces",
+            r"\text{then the coordinates' accelerations follow from those in the frame}",
+            StepKind.SOLVE,
+            unknowns,
+        )
+        return solution
 
     def _coordinate_accelerations(
         self, solution: dict[sympy.Symbol, sympy.Expr], values: dict[sympy.Symbol, sympy.Expr]
@@ -245,14 +263,19 @@ class FramesMethod(Method):
         accelerations = self._coordinate_accelerations(self.solution, dict(self.model.state))
         symbol = self.model.coordinate(coordinate).acceleration
         value = self.at_state(accelerations[symbol])
-        self.step(f"Solved for the acceleration of {coordinate}", self.tex(sympy.Eq(symbol, value)))
+        self.step(
+            f"Solved for the acceleration of {self.named(coordinate)}", self.tex(sympy.Eq(symbol, value))
+        )
         return value
 
     def force(self, constraint: str) -> sympy.Expr:
         index = [c.name for c in self.model.constraints].index(constraint)
         symbol = self.mech.multipliers[index]
         value = self.at_state(self.solution[symbol])
-        self.step(f"Solved for the force of {constraint}", self.tex(sympy.Eq(symbol, value)))
+        self.step(
+            f"Solved for {self.force_named(constraint)}, {self.mech.notation.forces[constraint].words}",
+            self.tex(sympy.Eq(symbol, value)),
+        )
         return value
 
     def potential_force(self, coordinate: str) -> sympy.Expr:
@@ -271,8 +294,8 @@ class FramesMethod(Method):
         )
         force = tidy.simplify(force)
         self.step(
-            f"Forces along {coordinate} at rest in the frame (gravity, centrifugal)",
-            rf"Q_{{{self.tex(q)}}} = \sum_i \mathbf{{F}}_i\cdot\frac{{\partial \mathbf{{r}}'_i}}{{\partial "
+            f"Forces along {self.named(coordinate)} at rest in the frame (gravity, centrifugal)",
+            rf"{self.mech.notation.letters.generalized}_{{{self.tex(q)}}} = \sum_i \mathbf{{F}}_i\cdot\frac{{\partial \mathbf{{r}}'_i}}{{\partial "
             rf"{self.tex(q)}}} = " + self.tex(force),
         )
         return force

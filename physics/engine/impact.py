@@ -223,25 +223,25 @@ def _quantity(
     velocity = after[quantity.target]
     if quantity.kind is QuantityKind.FINAL_SPEED:
         speed = _signs_by_domain(model, sympy.sqrt(sympy.factor(sympy.expand(_dot(velocity, velocity)))))
-        step(f"Speed of {quantity.target} after", sympy.latex(speed))
+        step(f"Speed of «{quantity.target}» after", sympy.latex(speed))
         return speed
     (component,) = velocity.values()
-    step(f"Velocity of {quantity.target} after", sympy.latex(component))
+    step(f"Velocity of «{quantity.target}» after", sympy.latex(component))
     return sympy.factor(component)
 
 
 INELASTIC = (
-    "That is the perfectly inelastic answer (e = 0), with the bodies moving together afterwards. With a "
-    "coefficient of restitution e they separate: Newton's law gives the separating speed as e times the "
+    "That is the perfectly inelastic answer ($e = 0$), with the bodies moving together afterwards. With a "
+    "coefficient of restitution $e$ they separate: Newton's law gives the separating speed as $e$ times the "
     "approach speed."
 )
 ELASTIC = (
-    "That assumes an elastic collision, conserving kinetic energy; it is conserved only when e = 1. Use "
+    "That assumes an elastic collision, conserving kinetic energy; it is conserved only when $e = 1$. Use "
     "momentum conservation with Newton's restitution law."
 )
 RESTITUTION_SIGN = (
-    "The restitution law reverses the relative velocity: the second body leaves the first at e times the "
-    "speed at which they approached (v2 - v1 = e (u1 - u2)), not towards it."
+    "The restitution law reverses the relative velocity: the second body leaves the first at $e$ times the "
+    "speed at which they approached ($v_2 - v_1 = e\\,(u_1 - u_2)$), not towards it."
 )
 SWAPPED_MASSES = "Check which mass goes where: the two bodies' masses are swapped."
 

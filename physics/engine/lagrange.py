@@ -15,6 +15,7 @@ from physics.answer_text import typed_text
 from physics.engine import tidy
 from physics.engine.mechanics import solve_linear, time_derivative
 from physics.engine.method import Method, NotApplicable
+from physics.engine.results import StepKind
 
 
 class LagrangeMethod(Method):
@@ -22,16 +23,17 @@ class LagrangeMethod(Method):
     title = "Lagrange's equations"
 
     def derive(self) -> None:
-        mech = self.mech
-        self.step("Kinetic energy", "T = " + self.tex(tidy.simplify(mech.kinetic)))
-        self.step("Potential energy", "V = " + self.tex(tidy.simplify(mech.potential)))
+        mech, letters = self.mech, self.mech.notation.letters
+        self.step("Kinetic energy", f"{letters.kinetic} = " + self.tex(tidy.simplify(mech.kinetic)))
+        self.step("Potential energy", f"{letters.potential} = " + self.tex(tidy.simplify(mech.potential)))
 
     @cached_property
     def system(self) -> tuple[list[sympy.Expr], list[sympy.Symbol]]:
         """Lagrange's equations (and the constraint-force equations), unsolved: (equations = 0, unknowns)."""
         mech, model = self.mech, self.model
         lagrangian = mech.kinetic - mech.potential
-        self.step("Lagrangian", "L = T - V")
+        letters = mech.notation.letters
+        self.step("The Lagrangian", f"{letters.lagrangian} = {letters.kinetic} - {letters.potential}")
         lam = mech.multipliers
         friction = [f + a for f, a in zip(mech.friction_forces(lam), mech.applied_forces(False), strict=True)]
         equations = []
@@ -41,11 +43,15 @@ class LagrangeMethod(Method):
             )
             el = time_derivative(sympy.diff(lagrangian, c.velocity), model) - sympy.diff(lagrangian, c.symbol)
             equation = sympy.collect(sympy.trigsimp(sympy.expand(el - generalized)), list(mech.qdd))
+            q, lag = self.tex(c.symbol), letters.lagrangian
+            source = rf"{letters.generalized}_{{{q}}}" if generalized != 0 else "0"
             self.step(
-                f"Lagrange's equation for {c.name}",
-                rf"\frac{{d}}{{dt}}\frac{{\partial L}}{{\partial \dot{{{self.tex(c.symbol)}}}}} - "
-                rf"\frac{{\partial L}}{{\partial {self.tex(c.symbol)}}} = Q_{{{self.tex(c.symbol)}}}"
+                f"Lagrange's equation for {self.named(c.name)}"
+                + (" (the generalized force of friction or drag on the right)" if generalized != 0 else ""),
+                rf"\frac{{\mathrm{{d}}}}{{\mathrm{{d}}t}}\frac{{\partial {lag}}}{{\partial {self.tex(c.velocity)}}} - "
+                rf"\frac{{\partial {lag}}}{{\partial {q}}} = {source}"
                 r":\quad " + self.tex(sympy.Eq(equation, 0)),
+                StepKind.EQUATION,
             )
             equations.append(equation)
         if lam:
@@ -68,12 +74,47 @@ class LagrangeMethod(Method):
                     )
                 )
                 equations.append(lhs - rhs)
-            self.step(
-                "Constraint forces from Newton's law along each constraint normal",
-                r"\nabla g_k \cdot (M\ddot{\mathbf{x}} - \mathbf{F}) = \sum_l (\nabla g_k\cdot\nabla g_l)"
-                r"\,\lambda_l",
-            )
+            self._show_force_equations(applied, gradients, place)
         return equations, [*mech.qdd, *lam]
+
+    def _show_force_equations(
+        self,
+        applied: list[sympy.Expr],
+        gradients: list[list[sympy.Expr]],
+        place: dict[sympy.Symbol, sympy.Expr],
+    ) -> None:
+        """Newton's second law for as many body axes as there are constraint forces, chosen so that they
+        determine them, with the accelerations written in the coordinates: the textbook's way to the
+        forces once Lagrange's equations give the motion (solved as their projections on the
+        constraints' normals, which are the same equations combined)."""
+        mech, model = self.mech, self.model
+        chosen: list[int] = []
+        for index in range(len(mech.dofs)):
+            rows = [[gradients[k][i] for k in range(len(gradients))] for i in [*chosen, index]]
+            if sympy.Matrix(rows).rank(simplify=True) == len(chosen) + 1:
+                chosen.append(index)
+            if len(chosen) == len(gradients):
+                break
+        for index in chosen:
+            d = mech.dofs[index]
+            pulls = sympy.Add(
+                *(lam * grad[index] for lam, grad in zip(mech.multipliers, gradients, strict=True))
+            )
+            acceleration = tidy.simplify(time_derivative(time_derivative(d.mapping, model), model))
+            named = [
+                self.force_named(c.name)
+                for c, grad in zip(model.constraints, gradients, strict=True)
+                if grad[index] != 0
+            ]
+            self.step(
+                f"Newton's second law for «{d.body}», {self.along(d.name)}, with "
+                f"${self.tex(d.acceleration)} = {self.tex(acceleration)}$ from the coordinates: "
+                f"it gives {' and '.join(named)}",
+                self.tex(
+                    sympy.Eq(d.inertia * acceleration, tidy.simplify(applied[index].subs(place)) + pulls)
+                ),
+                StepKind.EQUATION,
+            )
 
     @cached_property
     def solution(self) -> dict[sympy.Symbol, sympy.Expr]:
@@ -81,7 +122,12 @@ class LagrangeMethod(Method):
         equations, unknowns = self.system
         state = dict(self.model.state)
         solution = solve_linear([e.subs(state) for e in equations], unknowns, self.title)
-        self.step("Solved", r",\quad ".join(self.tex(sympy.Eq(k, v)) for k, v in solution.items()))
+        self.step(
+            f"Solved: {len(equations)} equations for the {len(unknowns)} unknowns",
+            r",\quad ".join(self.tex(sympy.Eq(k, v)) for k, v in solution.items()),
+            StepKind.SOLVE,
+            unknowns,
+        )
         return solution
 
     def acceleration(self, coordinate: str) -> sympy.Expr:
@@ -93,10 +139,12 @@ class LagrangeMethod(Method):
 
     def potential_force(self, coordinate: str) -> sympy.Expr:
         q = self.model.coordinate(coordinate).symbol
+        letters = self.mech.notation.letters
         force = tidy.simplify(-sympy.diff(self.mech.potential, q))
         self.step(
-            f"Generalized force on {coordinate}",
-            rf"Q_{{{self.tex(q)}}} = -\frac{{\partial V}}{{\partial {self.tex(q)}}} = " + self.tex(force),
+            f"Generalized force on {self.named(coordinate)}",
+            rf"{letters.generalized}_{{{self.tex(q)}}} = -\frac{{\partial {letters.potential}}}"
+            rf"{{\partial {self.tex(q)}}} = " + self.tex(force),
         )
         return force
 
@@ -122,10 +170,10 @@ class LagrangeMethod(Method):
         mass = mech.mass_matrix.subs(at)
         omega2 = _single_nonzero_eigenvalue(mass.inv() * stiffness)
         self.step(
-            "Small oscillations",
-            r"M\ddot{q} + Kq = 0,\ M = "
+            "Small oscillations: the mass matrix $\\mathbf{M}$ and stiffness matrix $\\mathbf{K}$",
+            r"\mathbf{M}\ddot{\mathbf{q}} + \mathbf{K}\mathbf{q} = 0,\ \mathbf{M} = "
             + self.tex(mass)
-            + r",\ K = "
+            + r",\ \mathbf{K} = "
             + self.tex(tidy.simplify(stiffness))
             + r",\ \omega^2 = "
             + self.tex(omega2),

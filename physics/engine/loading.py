@@ -37,6 +37,7 @@ from physics.engine.model import (
     QuantityKind,
     StatedLimit,
 )
+from physics.engine.notation import read_notation
 from physics.engine.text import Path, read_expr
 from physics.errors import SpecError, SpecErrors
 
@@ -57,6 +58,7 @@ _SECTIONS = frozenset(
         "forces",
         "impact",
         "frame",
+        "notation",
     }
 )
 _QUANTITY_TARGET = {
@@ -170,6 +172,8 @@ def _load_low_level(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]
     frame = _frame(data.get("frame"), symbols, bodies, errors)
     reach_loading.check_targets(quantities, bodies, state, coordinates, errors.add)
     _check_slip_quantities(quantities, frictions, errors)
+    named = [*coord_names, *(c.name for c in constraints), *(b.name for b in bodies)]
+    notation = errors.attempt(partial(read_notation, data.get("notation"), named)) or ()
     if errors.errors:
         raise SpecErrors(errors.errors)
     model = Model(
@@ -191,6 +195,7 @@ def _load_low_level(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]
         forces=forces,
         impact=impact,
         frame=frame,
+        notation=notation,
     )
     return with_distance_sides(forcing.with_time(model, time))
 

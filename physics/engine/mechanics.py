@@ -18,6 +18,7 @@ from sympy.polys.matrices.exceptions import DMNonInvertibleMatrixError
 from physics.engine import tidy as tidy_up
 from physics.engine.contact_friction import friction_load
 from physics.engine.model import Body, ForceKind, Model, PairPotential
+from physics.engine.notation import Notation, notation_of
 from physics.errors import DerivationError
 
 
@@ -88,22 +89,14 @@ class Mechanics:
         return tuple(sympy.Symbol(f"lambda_{c.name}", real=True) for c in self.model.constraints)
 
     @cached_property
+    def notation(self) -> Notation:
+        return notation_of(self.model)
+
+    @cached_property
     def latex_names(self) -> dict[sympy.Symbol, str]:
-        """How the engine's own symbols are written in worked solutions (dots, body subscripts)."""
-        names: dict[sympy.Symbol, str] = {}
-        for c in self.model.coordinates:
-            base = sympy.latex(c.symbol)
-            names[c.velocity] = rf"\dot{{{base}}}"
-            names[c.acceleration] = rf"\ddot{{{base}}}"
-        for d in self.dofs:
-            axis, body = d.name.split("_", 1)
-            axis_tex = r"\varphi" if axis == "phi" else axis
-            names[d.symbol] = rf"{axis_tex}_{{\mathrm{{{body}}}}}"
-            names[d.velocity] = rf"\dot{{{axis_tex}}}_{{\mathrm{{{body}}}}}"
-            names[d.acceleration] = rf"\ddot{{{axis_tex}}}_{{\mathrm{{{body}}}}}"
-        for constraint, lam in zip(self.model.constraints, self.multipliers, strict=True):
-            names[lam] = rf"\lambda_{{\mathrm{{{constraint.name}}}}}"
-        return names
+        """How the engine's own symbols are written in worked solutions: the coordinates, each body's
+        x, y and angle, and the constraint forces by their physical names (notation.py)."""
+        return self.notation.tex_names(self.model)
 
     # --- generalized description -------------------------------------------------------------
 

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import dataclasses
 from abc import ABC, abstractmethod
+from collections.abc import Sequence
 from functools import cached_property, lru_cache
 
 import sympy
@@ -21,7 +22,7 @@ from physics.engine.model import (
     QuantityKind,
 )
 from physics.engine.proof import domain_points
-from physics.engine.results import MethodReport, Step
+from physics.engine.results import MethodReport, Step, StepKind
 from physics.errors import DerivationError
 
 
@@ -48,6 +49,7 @@ class Method(ABC):
         self.arrivals: dict[tuple[object, ...], sympy.Expr] = {}  # work_energy: v^2 where the motion arrives
         # each coordinate's equilibrium, found once: frequencies, expressions and the simulation ask again
         self._equilibria: dict[str, sympy.Expr] = {}
+        self._printed: set[sympy.Basic] = set()  # symbols printed since the last step (Step.symbols)
 
     @cached_property
     def free(self) -> Method:
@@ -56,12 +58,27 @@ class Method(ABC):
         return type(self)(model, Mechanics(model))
 
     def tex(self, expr: sympy.Basic) -> str:
+        self._printed |= expr.free_symbols
         return str(sympy.latex(expr, symbol_names=self.mech.latex_names))
 
-    def step(self, title: str, latex: str) -> None:
+    def step(
+        self, title: str, latex: str, kind: StepKind = StepKind.WORK, unknowns: Sequence[sympy.Basic] = ()
+    ) -> None:
+        """Log a line of the worked solution (once per title), with the symbols its formulas printed."""
         if title not in self._logged:
             self._logged.add(title)
-            self.steps.append(Step(title, latex))
+            written = tuple(self.tex(u) for u in unknowns)
+            symbols = tuple(sorted(str(s) for s in self._printed))
+            self.steps.append(Step(title, latex, kind, written, symbols))
+        self._printed = set()
+
+    def named(self, coordinate: str) -> str:
+        """A coordinate as the solution writes it, in a title: `$s$`."""
+        return f"${self.mech.notation.coordinates[coordinate].tex}$"
+
+    def force_named(self, constraint: str) -> str:
+        """A constraint's force as the solution writes it, in a title: `$N_{1}$`."""
+        return f"${self.mech.notation.forces[constraint].tex}$"
 
     # --- basics each method may provide --------------------------------------------------------
 
@@ -101,10 +118,10 @@ class Method(ABC):
         mass, stiffness = self.mode_matrices(point)
         squares = modes.squared_frequencies(self.model, mass, stiffness)
         self.step(
-            "Normal modes",
-            r"\det(K - \omega^2 M) = 0,\ M = "
+            "Normal modes: the mass matrix $\\mathbf{M}$ and stiffness matrix $\\mathbf{K}$ at the equilibrium",
+            r"\det(\mathbf{K} - \omega^2 \mathbf{M}) = 0,\ \mathbf{M} = "
             + self.tex(mass)
-            + r",\ K = "
+            + r",\ \mathbf{K} = "
             + self.tex(stiffness)
             + r"\Rightarrow \omega^2 \in \{"
             + ", ".join(self.tex(v) for v in squares)
@@ -132,10 +149,11 @@ class Method(ABC):
             q = self.model.coordinate(quantity.target).symbol
             q0 = self.equilibrium(quantity.target)
             stiffness = tidy.simplify(-sympy.diff(self.potential_force(quantity.target), q).subs(q, q0))
+            generalized = self.mech.notation.letters.generalized
             self.step(
-                f"Stiffness at the equilibrium ({quantity.target})",
-                rf"k = -\left.\frac{{\partial Q}}{{\partial {self.tex(q)}}}\right|_0 = "
-                + self.tex(stiffness),
+                f"Stiffness at the equilibrium of {self.named(quantity.target)}",
+                rf"-\left.\frac{{\partial {generalized}_{{{self.tex(q)}}}}}{{\partial {self.tex(q)}}}"
+                rf"\right|_{{{self.tex(q)}_{{\mathrm{{eq}}}}}} = " + self.tex(stiffness),
             )
             return stiffness
         if kind is QuantityKind.ANGULAR_FREQUENCY:
@@ -200,13 +218,15 @@ class Method(ABC):
                 f"the roots {typed_text(roots)} of Q = {typed_text(force)}",
                 quantity=coordinate,
             )
+        generalized, at = self.mech.notation.letters.generalized, rf"{self.tex(q)}_{{\mathrm{{eq}}}}"
         self.step(
-            f"Equilibrium of {coordinate}",
-            rf"Q({self.tex(q)}) = {self.tex(force)} = 0 \Rightarrow {self.tex(q)}_0 = "
+            f"Equilibrium of {self.named(coordinate)}: the generalized force vanishes, and pulls back",
+            rf"{generalized}_{{{self.tex(q)}}} = {self.tex(force)} = 0 \Rightarrow {at} = "
             + self.tex(stable[0])
-            + r",\quad Q'("
-            + self.tex(q)
-            + "_0) < 0",
+            + rf",\quad \frac{{\partial {generalized}_{{{self.tex(q)}}}}}{{\partial {self.tex(q)}}}"
+            + rf"\Big|_{{{at}}} < 0",
+            StepKind.SOLVE,
+            [q],
         )
         return tidy.simplify(stable[0])
 
@@ -231,7 +251,7 @@ class Method(ABC):
                 quantity=coordinate,
             )
         self.step(
-            f"Terminal velocity of {coordinate}",
+            f"Terminal velocity of {self.named(coordinate)}: the acceleration vanishes",
             self.tex(sympy.Eq(acceleration, 0)) + r"\Rightarrow " + self.tex(sympy.Eq(c.velocity, stable[0])),
         )
         return tidy.simplify(stable[0])
@@ -248,7 +268,7 @@ class Method(ABC):
                 quantity=name,
             )
         self.step(
-            f"Solve for {parameter}",
+            f"Solve for ${sympy.latex(parameter)}$",
             self.tex(sympy.Eq(expr, 0)) + r"\Rightarrow " + self.tex(sympy.Eq(parameter, roots[0])),
         )
         return tidy.simplify(roots[0])
@@ -258,7 +278,20 @@ class Method(ABC):
         """Write the method's general steps (the equations of motion) before quantities are asked."""
 
     def report(self, results: dict[str, sympy.Expr], notes: list[str]) -> MethodReport:
-        return MethodReport(self.name, self.title, tuple(self.steps), dict(results), tuple(notes))
+        printed = {name for step in self.steps for name in step.symbols}
+        forces = tuple(
+            c.name
+            for c, force in zip(self.model.constraints, self.mech.multipliers, strict=True)
+            if str(force) in printed
+        )
+        return MethodReport(self.name, self.title, tuple(self.steps), dict(results), tuple(notes), forces)
+
+    def along(self, dof: str) -> str:
+        """A Cartesian degree of freedom in a title: "along $x$", or "turning ($\\varphi$)"."""
+        axis = dof.split("_", 1)[0]
+        if axis == "phi":
+            return f"for its turning about its centre (${self.mech.notation.cartesian[dof].tex}$)"
+        return f"along ${axis}$"
 
     def at_state(self, expr: sympy.Expr) -> sympy.Expr:
         return tidy.simplify(expr.subs(dict(self.model.state)))

@@ -56,7 +56,7 @@ FIXED_CONTACT = (
     "recoils, which changes that force."
 )
 NO_INERTIA = (
-    "A rolling or spinning body also has rotational kinetic energy, (1/2) I omega^2, and needs a "
+    "A rolling or spinning body also has rotational kinetic energy, $\\tfrac12 I\\omega^2$, and needs a "
     "torque to spin up: include its moment of inertia."
 )
 INELASTIC_ENERGY = (

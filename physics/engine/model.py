@@ -274,6 +274,8 @@ class Model:
     impact: Impact | None = None  # every term was found dimensionally consistent when loaded
     frame: Frame | None = None  # declared (`frame:`) or implied by an element (a wedge, a rotating frame)
     time: sympy.Symbol | None = None  # the time `t`, when a given force depends on it
+    # the author's names for worked solutions: (coordinate, constraint or body, symbol, words); notation.py
+    notation: tuple[tuple[str, str | None, str | None], ...] = ()
 
     def body(self, name: str) -> Body:
         return next(b for b in self.bodies if b.name == name)

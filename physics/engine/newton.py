@@ -18,6 +18,7 @@ from physics.engine.frames import centripetal_accelerations
 from physics.engine.mechanics import solve_linear, time_derivative
 from physics.engine.method import Method, NotApplicable
 from physics.engine.model import QuantityKind
+from physics.engine.results import StepKind
 
 
 class NewtonMethod(Method):
@@ -49,11 +50,15 @@ class NewtonMethod(Method):
                 )
             )
             self.step(
-                f"Newton's second law, {d.name}",
+                f"Newton's second law for «{d.body}», {self.along(d.name)}",
                 self.tex(sympy.Eq(d.inertia * (d.acceleration + centripetal), force + constraint_terms)),
+                StepKind.EQUATION,
             )
         for constraint in self.model.constraints:
-            self.step(f"Constraint {constraint.name}", self.tex(sympy.Eq(constraint.gap, 0)))
+            self.step(
+                f"Constraint: {self.mech.notation.conditions[constraint.name]}",
+                self.tex(sympy.Eq(constraint.gap, 0)),
+            )
 
     @cached_property
     def centripetal(self) -> list[sympy.Expr]:
@@ -94,7 +99,12 @@ class NewtonMethod(Method):
                     for b in mech.dofs
                 )
             )
-            self.step(f"Constraint {c.name} differentiated twice", self.tex(sympy.Eq(second, 0)))
+            self.step(
+                f"The same constraint for the accelerations ({self.mech.notation.conditions[c.name]}), "
+                "differentiated twice in time",
+                self.tex(sympy.Eq(second, 0)),
+                StepKind.EQUATION,
+            )
             equations.append(second)
         place = mech.cartesian_state()
         state = dict(model.state)
@@ -102,8 +112,11 @@ class NewtonMethod(Method):
         unknowns = [d.acceleration for d in mech.dofs] + list(mech.multipliers)
         solution = solve_linear(equations, unknowns, self.title)
         self.step(
-            "Solved for the accelerations and constraint forces",
+            f"Solved: {len(equations)} equations for the {len(unknowns)} unknowns, the accelerations and the "
+            "constraint forces",
             r",\quad ".join(self.tex(sympy.Eq(k, v)) for k, v in solution.items()),
+            StepKind.SOLVE,
+            unknowns,
         )
         return solution
 
@@ -148,9 +161,9 @@ class NewtonMethod(Method):
         )
         force = tidy.simplify(force)
         self.step(
-            f"Virtual work of the forces along {coordinate}",
-            rf"Q_{{{self.tex(q)}}} = \sum_i F_i \frac{{\partial x_i}}{{\partial {self.tex(q)}}} = "
-            + self.tex(force),
+            f"Virtual work of the forces along {self.named(coordinate)}",
+            rf"{self.mech.notation.letters.generalized}_{{{self.tex(q)}}} = \sum_i F_i "
+            rf"\frac{{\partial x_i}}{{\partial {self.tex(q)}}} = " + self.tex(force),
         )
         return force
 
@@ -170,8 +183,8 @@ class NewtonMethod(Method):
         if len(nonzero) != 1:
             raise NotApplicable(f"expected one oscillating mode, found eigenvalues {typed_text(values)}")
         self.step(
-            "Small oscillations of the Cartesian equations",
-            r"M\ddot{x} = -Kx,\ K = "
+            "Small oscillations of the Cartesian equations ($\\mathbf{K}$: the stiffness matrix)",
+            r"\mathbf{M}\ddot{\mathbf{x}} = -\mathbf{K}\mathbf{x},\ \mathbf{K} = "
             + self.tex(tidy.simplify(stiffness))
             + r",\ \omega^2 = "
             + self.tex(nonzero[0]),

@@ -54,7 +54,7 @@ def answer(method: Method, quantity: Quantity) -> sympy.Expr:
     kind = quantity.kind
     if kind is QuantityKind.MECHANICAL_ENERGY:
         energy = energy_of(method)
-        method.step("Mechanical energy at the state", "E = T + V = " + method.tex(energy))
+        method.step("Mechanical energy at the state", _energy_sum(method) + method.tex(energy))
         return energy
     if kind in EFFECTIVE_KINDS:
         radius, slope = circular_orbit(method, quantity.target)
@@ -69,20 +69,25 @@ def answer(method: Method, quantity: Quantity) -> sympy.Expr:
         return omega
     if quantity.target == FRAME:
         period = tidy.simplify(2 * sympy.pi / frame_rate(method))
-        method.step("Period of one turn of the frame", r"T = \frac{2\pi}{\omega} = " + method.tex(period))
+        method.step("Period of one turn of the frame", r"\frac{2\pi}{\omega} = " + method.tex(period))
         return period
     rate, steady = steady_rate(method, quantity.target)
     if kind is QuantityKind.REVOLUTION_PERIOD:
         period = tidy.simplify(2 * sympy.pi / rate)
-        method.step("Period of one revolution", r"T = \frac{2\pi}{\omega} = " + method.tex(period))
+        method.step("Period of one revolution", r"\frac{2\pi}{\omega} = " + method.tex(period))
         return period
     if kind is QuantityKind.CIRCULAR_SPEED:
         speed = tidy.simplify(_speed(steady.model, quantity.target).subs(RATE, rate))
         method.step("Speed on the circle", "v = " + method.tex(speed))
         return speed
     energy = tidy.simplify(energy_of(steady).subs(RATE, rate))
-    method.step("Energy of the circular motion", "E = T + V = " + method.tex(energy))
+    method.step("Energy of the circular motion", _energy_sum(method) + method.tex(energy))
     return energy
+
+
+def _energy_sum(method: Method) -> str:
+    letters = method.mech.notation.letters
+    return f"{letters.energy} = {letters.kinetic} + {letters.potential} = "
 
 
 def model_symbol(model: Model, coordinate: str) -> sympy.Symbol:

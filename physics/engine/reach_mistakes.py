@@ -15,33 +15,37 @@ Rederive = Callable[[Model, Quantity], sympy.Expr | None]
 Candidates = list[tuple[sympy.Expr | None, str]]
 
 HALF_KINETIC = (
-    "Kinetic energy is (1/2) m v^2: setting it equal to the energy gained gives v^2 = 2 (...)/m. Check the "
-    "factor 2."
+    "Kinetic energy is $\\tfrac12 m v^2$: setting it equal to the energy gained gives $v^2 = 2(\\ldots)/m$. "
+    "Check the factor 2."
 )
 AT_REST = (
     "That is the force if the body were at rest there. It is moving along a curve, so the net force "
-    "towards the centre must also supply m v^2/R."
+    "towards the centre must also supply $m v^2/R$."
 )
-CENTRIPETAL_SIGN = (
-    "The centripetal acceleration points towards the centre of the curve: check the sign of the m v^2/R term."
-)
+CENTRIPETAL_SIGN = "The centripetal acceleration points towards the centre of the curve: check the sign of the $m v^2/R$ term."
 LAUNCH_COMPONENTS = (
     "The launch angle is measured from the horizontal: the vertical component of the launch velocity is "
-    "v0 sin(angle) and the horizontal one v0 cos(angle). A sine and a cosine are swapped."
+    "$v_0 \\sin\\alpha$ and the horizontal one $v_0 \\cos\\alpha$, $\\alpha$ the launch angle. A sine and a "
+    "cosine are swapped."
 )
 TIME_TO_APEX = (
     "That is the time to the top of the flight. The body keeps flying until it comes back down to the "
     "landing level."
 )
-HALF_G_TWICE = "In y = v_y0 t - (1/2) g t^2 the factor 1/2 belongs once: here it is used twice (g/2 for g)."
+HALF_G_TWICE = (
+    "In $y = v_{y0} t - \\tfrac12 g t^2$ the factor $\\tfrac12$ belongs once: here it is used twice "
+    "($g/2$ for $g$)."
+)
 APEX_RANGE = "That is the horizontal distance to the top of the flight, not to the landing point."
 LAUNCH_LEVEL = (
     "This lands the body at the height it was launched from; it comes down to the landing level stated."
 )
-HEIGHT_FACTOR = "At the top the vertical kinetic energy (1/2) m v_y0^2 has become m g H: check the factor 2."
+HEIGHT_FACTOR = (
+    "At the top the vertical kinetic energy $\\tfrac12 m v_{y0}^2$ has become $m g H$: check the factor 2."
+)
 WHOLE_SPEED = (
     "At the top the body still moves horizontally: only the vertical part of its kinetic energy, "
-    "(1/2) m v_y0^2, becomes potential energy."
+    "$\\tfrac12 m v_{y0}^2$, becomes potential energy."
 )
 
 

@@ -37,7 +37,7 @@ if TYPE_CHECKING:
 SLIP_STEPS = 2000  # RK4 steps over the expected sliding time
 NO_TORQUE = (
     "The friction at the contact also turns the body (its torque about the centre): the slipping stops "
-    "when the contact point's velocity v - R*omega vanishes, not when the body stops."
+    "when the contact point's velocity $v - R\\omega$ vanishes, not when the body stops."
 )
 
 
@@ -66,7 +66,7 @@ def sliding_phase(method: Method, quantity: Quantity) -> sympy.Expr:
         raise NotApplicable("the slip velocity does not change at a constant rate")
     time = tidy.simplify(-u0 / rate)
     method.step(
-        f"Slipping at {friction.constraint} stops",
+        "The slipping at the contact stops: its slip velocity $u$ reaches zero",
         rf"u = {method.tex(slip)},\ \dot u = {method.tex(rate)}\Rightarrow t = -u_0/\dot u = {method.tex(time)}",
     )
     if quantity.kind is QuantityKind.SLIP_TIME:
@@ -76,10 +76,17 @@ def sliding_phase(method: Method, quantity: Quantity) -> sympy.Expr:
     a = accelerations[c.acceleration]
     if quantity.kind is QuantityKind.SLIP_END_VELOCITY:
         value = tidy.simplify(v0 + a * time)
-        method.step(f"{c.name}' when slipping stops", method.tex(sympy.Eq(sympy.Symbol("v"), value)))
+        method.step(
+            f"The rate of {method.named(c.name)} when the slipping stops",
+            method.tex(sympy.Eq(c.velocity, value)),
+        )
         return value
     value = tidy.simplify(v0 * time + a * time**2 / 2)
-    method.step(f"{c.name} moves while slipping", method.tex(sympy.Eq(sympy.Symbol("d"), value)))
+    change = method.mech.notation.coordinates[c.name].tex
+    method.step(
+        f"How far {method.named(c.name)} moves while the contact slips",
+        rf"\Delta {change} = " + method.tex(value),
+    )
     return value
 
 

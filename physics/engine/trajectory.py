@@ -111,9 +111,11 @@ def by_kinematics(method: Method, quantity: Quantity) -> sympy.Expr:
     t = sympy.Symbol("t")
     path = {a: start.position[a] + start.velocity[a] * t + acceleration[a] * t**2 / 2 for a in ("x", "y")}
     method.step(
-        f"Constant acceleration of {quantity.target}",
+        f"Constant acceleration of «{quantity.target}»: its position at the time $t$",
         r",\quad ".join(
-            method.tex(sympy.Eq(sympy.Symbol(f"{a}(t)"), path[a])) for a in ("x", "y") if path[a] != 0
+            method.tex(sympy.Eq(model.cartesian_symbol(f"{a}_{quantity.target}"), path[a]))
+            for a in ("x", "y")
+            if path[a] != 0 and f"{a}_{quantity.target}" in dict(model.cartesian)
         ),
     )
     if acceleration["y"] == 0:
@@ -218,7 +220,7 @@ def by_energy(method: Method, quantity: Quantity) -> sympy.Expr:
         energy = sympy.Eq(m * (vx**2 + vy**2) / 2, m * vx**2 / 2 - fy * height)
         found = m * vy**2 / (2 * -fy)  # the one root of that linear equation
         method.step(
-            "Energy from the launch to the apex (vertical velocity zero)",
+            "Energy from the launch to the apex, at the height $H$ above the launch (vertical velocity zero)",
             method.tex(energy) + r"\Rightarrow H = " + method.tex(found),
         )
         return tidy.simplify(found)
@@ -229,7 +231,8 @@ def by_energy(method: Method, quantity: Quantity) -> sympy.Expr:
     descending = _with_sign(model, roots, fy, quantity.name)
     flight = tidy.simplify(m * (descending - vy) / fy)
     method.step(
-        "Energy from the launch to the landing level (vertical part: vx does not change)",
+        "Energy from the launch to the landing level, where the vertical velocity is $v_{y1}$ "
+        "(the horizontal velocity does not change)",
         method.tex(energy) + r"\Rightarrow v_{y1} = " + method.tex(descending),
     )
     method.step(

@@ -100,7 +100,9 @@ def _held(method: Method, c: Coordinate, quantity: Quantity) -> dict[sympy.Symbo
         momentum = sympy.Add(*(mass[i, j] * mech.qd[j] for j in range(n)))
         initial = tidy.simplify(momentum.subs(state))
         method.step(
-            f"Momentum conjugate to {mech.q[i]} is conserved", method.tex(sympy.Eq(momentum, initial))
+            f"The momentum conjugate to {method.named(method.model.coordinates[i].name)} is conserved "
+            "(no force acts along it)",
+            method.tex(sympy.Eq(momentum, initial)),
         )
         equations.append(momentum - initial)
     return solve_linear(equations, [mech.qd[i] for i in others], "the conserved momenta")
@@ -279,13 +281,13 @@ def by_integration(method: Method, trip: Journey) -> sympy.Expr:
         raise NotApplicable(f"could not integrate {c.name}'s equation of motion in closed form")
     w = qd**2
     method.step(
-        f"{c.name}'s equation of motion as v dv/dq",
+        f"The equation of motion of {method.named(c.name)}, written for the square of its rate",
         rf"\ddot{{{method.tex(q)}}} = " + method.tex(acceleration) + r"\Rightarrow "
-        rf"\frac{{d(\dot{{{method.tex(q)}}}^2)}}{{d{method.tex(q)}}} = "
+        rf"\frac{{\mathrm{{d}}(\dot{{{method.tex(q)}}}^2)}}{{\mathrm{{d}}{method.tex(q)}}} = "
         + method.tex(2 * constant + 2 * quadratic * w),
     )
     method.step(
-        f"Integrated from {c.name} = {typed_text(trip.start)} to {typed_text(trip.end)}",
+        f"Integrated from {method.named(c.name)} $= {sympy.latex(trip.start)}$ to ${sympy.latex(trip.end)}$",
         method.tex(sympy.Eq(w, square)),
     )
     return square

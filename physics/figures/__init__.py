@@ -11,6 +11,7 @@ ones take typical values. The SVG has role="img", a <title> and a <desc> saying 
 from __future__ import annotations
 
 from collections.abc import Mapping
+from html import escape
 
 from physics.engine.model import Model
 from physics.figures.free_body import Force, body_forces, free_body_figure
@@ -20,5 +21,12 @@ __all__ = ["Force", "body_forces", "free_body_figure", "model_figure", "symbol_l
 
 
 def model_figure(model: Model, values: Mapping[str, float], *, title: str) -> str:
+    """The figure; where an angle could not be drawn at its value it says so, in the drawing, in its
+    description and as `data-to-scale="no"` on the <svg> (the page's caption reads it)."""
     figure = compose(model, values)
-    return figure.canvas.svg(f"Figure: {title}", " ".join(figure.said))
+    said = " ".join(figure.said)
+    if figure.unscaled:
+        note = "Not to scale: " + "; ".join(figure.unscaled) + "."
+        svg = figure.canvas.svg(f"Figure: {title}", f"{said} {note}")
+        return svg.replace("<svg ", '<svg data-to-scale="no" data-scale-note="' + escape(note) + '" ', 1)
+    return figure.canvas.svg(f"Figure: {title}", said)

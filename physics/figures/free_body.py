@@ -23,6 +23,7 @@ from functools import lru_cache
 import sympy
 
 from physics.engine.model import Constraint, ConstraintKind, Model
+from physics.engine.notation import notation_of, split_subscript
 from physics.figures.configuration import drawn_configuration
 from physics.figures.held import held_forces
 from physics.figures.loads import applied_forces, potential_forces
@@ -31,6 +32,8 @@ from physics.figures.svg import FILLS, Canvas
 
 _LABELS = {ConstraintKind.SURFACE: "N", ConstraintKind.STRING: "T", ConstraintKind.ROLLING: "f"}
 ARROW = 2.2
+RIGID = 0.8  # drawn radius of a rigid body
+FORCE_LABEL = 0.55  # force labels read at the size of the page's text, the diagram scaled to a column
 SIDE_BY_SIDE = 0.5  # how far apart arrows along one line are drawn
 
 
@@ -38,6 +41,10 @@ SIDE_BY_SIDE = 0.5  # how far apart arrows along one line are drawn
 class Force:
     label: str
     direction: tuple[float, float]  # unit vector, y up
+    # on a rigid body: the signed lever arm of its line of action about the centre (torque / force,
+    # anticlockwise positive), in the model's lengths, and the symbol that writes it (r)
+    lever: float = 0.0
+    lever_label: str = ""
 
 
 def _unit(x: float, y: float) -> tuple[float, float] | None:
@@ -75,13 +82,61 @@ def _contact_forces(model: Model, given: tuple[tuple[str, float], ...]) -> dict[
     values = Values(model, dict(given))
     drawn = drawn_configuration(model, dict(given))
     contacts = {body.name: _contacts(model, body.name, values, drawn) for body in model.bodies}
-    labels = _contact_labels(
-        model, {source: base for found in contacts.values() for source, base, _ in found}
+    labels = _named(
+        model,
+        _contact_labels(model, {source: base for found in contacts.values() for source, base, _ in found}),
     )
     return {
-        name: tuple(Force(labels[source], direction) for source, _, direction in found)
+        name: tuple(
+            Force(labels[source], direction, *_lever(model, name, source, values, drawn))
+            for source, _, direction in found
+        )
         for name, found in contacts.items()
     }
+
+
+def _named(model: Model, labels: dict[_Source, str]) -> dict[_Source, str]:
+    """The worked solutions' names for the contacts (N₁ from the wedge on the block, T, f), where they
+    have a plain form; a pin's one arrow (the resultant of R_x and R_y) takes the letter, R."""
+    notation = notation_of(model)
+    named = dict(labels)
+    for source, label in labels.items():
+        kind, key = source
+        if kind == "constraint" and str(key) in notation.forces:
+            name = notation.forces[str(key)]
+            base, _ = split_subscript(name.tex)
+            if label.startswith("F") and len(base) == 1:  # the pin's resultant
+                named[source] = base
+            elif name.text:
+                named[source] = name.text
+        elif kind == "friction" and isinstance(key, int) and key < len(notation.frictions):
+            named[source] = notation.frictions[key].text or label
+    return named
+
+
+def _lever(
+    model: Model, body_name: str, source: _Source, values: Values, drawn: dict[sympy.Symbol, float]
+) -> tuple[float, str]:
+    """A constraint force's lever arm about a rigid body's centre: its torque over its force, from the
+    gap's gradient (d gap/d phi over the length of d gap/d(x, y)), and the symbol it is (the yo-yo's r)."""
+    body = model.body(body_name)
+    names = dict(model.cartesian)
+    if body.angle is None or source[0] != "constraint" or f"phi_{body_name}" not in names:
+        return 0.0, ""
+    gap = model.constraint(str(source[1])).gap
+    turn = sympy.diff(gap, names[f"phi_{body_name}"])
+    pushes = [sympy.diff(gap, names[f"{a}_{body_name}"]) if f"{a}_{body_name}" in names else 0 for a in "xy"]
+    size = sympy.sqrt(sum(p**2 for p in pushes))
+    if turn == 0 or size == 0:
+        return 0.0, ""
+    arm = sympy.simplify(turn / size)
+    try:
+        number = values.number(arm, drawn)
+    except (TypeError, ValueError, ZeroDivisionError):
+        return 0.0, ""
+    named = [s for s in arm.free_symbols if s in set(model.parameters)]
+    label = symbol_label(named[0].name) if len(named) == 1 and abs(arm) == named[0] else ""
+    return number, label
 
 
 def _contact_labels(model: Model, drawn: dict[_Source, str]) -> dict[_Source, str]:
@@ -215,21 +270,57 @@ def _partner(model: Model, body_name: str, constraint: Constraint) -> str | None
 _SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 
 
+def _drawn_arms(forces: list[Force]) -> list[float]:
+    """Each force's lever arm as drawn on a wheel of radius RIGID: the longest at the rim, the others in
+    proportion; a lone lever arm (a string on an axle) at half the radius, inside the body."""
+    longest = max((abs(f.lever) for f in forces), default=0.0)
+    if longest == 0:
+        return [0.0 for _ in forces]
+    alone = sum(1 for f in forces if f.lever) == 1
+    return [
+        0.0 if not f.lever else math.copysign(RIGID * (0.5 if alone else abs(f.lever) / longest), f.lever)
+        for f in forces
+    ]
+
+
 def free_body_figure(model: Model, body_name: str, given: Mapping[str, float], *, title: str) -> str:
     """SVG of the forces on one body (role img, <title>, <desc> listing the forces and directions)."""
     canvas = Canvas()
     body = model.body(body_name)
     label = body_label(body, model)
     half = BLOCK / 2
-    canvas.polygon([(-half, -half), (half, -half), (half, half), (-half, half)], fill=FILLS[0])
-    if len(label) <= 3:
+    forces = body_forces(model, body_name, given)
+    arms = _drawn_arms(forces)
+    if body.angle is not None:  # a rigid body: a wheel, each force drawn where its line of action passes
+        canvas.circle((0.0, 0.0), RIGID, fill=FILLS[0])
+        for arm in sorted({abs(a) for a in arms if a} - {RIGID}):
+            canvas.circle((0.0, 0.0), arm, fill=FILLS[3])  # the axle a string is wound on
+    else:
+        canvas.polygon([(-half, -half), (half, -half), (half, half), (-half, half)], fill=FILLS[0])
+    if body.angle is not None and any(arms):  # the centre is where the lever arms start
+        canvas.text((RIGID * 0.45, -RIGID * 0.5), label, size=0.36)
+    elif len(label) <= 3:
         canvas.text((0.0, 0.0), label)
     else:  # a body's name does not fit inside it: beside it, clear of the forces along the axes
         canvas.text((half + 0.15, half + 0.3), label, size=0.36, anchor="start")
     said = []
     drawn: list[tuple[float, float]] = []
-    for force in body_forces(model, body_name, given):
+    for force, arm in zip(forces, arms, strict=True):
         dx, dy = force.direction
+        if arm:  # from the point where the lever arm meets the line of action, the arm drawn dashed
+            start = (arm * dy, -arm * dx)
+            canvas.line((0.0, 0.0), start, width=0.03, dashed=True)
+            if force.lever_label:
+                canvas.text((start[0] / 2, start[1] / 2 + 0.2), force.lever_label, size=0.42)
+            tip = (start[0] + dx * ARROW, start[1] + dy * ARROW)
+            canvas.arrow(start, tip, width=0.07, color="#a11111")
+            canvas.text((tip[0] + dx * 0.5, tip[1] + dy * 0.5), force.label, size=FORCE_LABEL)
+            said.append(
+                f"{force.label} at {round(math.degrees(math.atan2(dy, dx)))}° from the +x axis, acting "
+                f"{'left' if start[0] < 0 else 'right' if start[0] > 0 else 'off'} of the centre"
+                + (f" at lever arm {force.lever_label}" if force.lever_label else "")
+            )
+            continue
         # Forces along one line (a spring and drag, two tensions) are drawn side by side, not on top.
         beside = sum(1 for ex, ey in drawn if ex * dx + ey * dy > math.cos(math.radians(8)))
         drawn.append(force.direction)
@@ -237,9 +328,10 @@ def free_body_figure(model: Model, body_name: str, given: Mapping[str, float], *
         offset = SIDE_BY_SIDE * ((beside + 1) // 2)
         ox, oy = shift[0] * offset, shift[1] * offset
         tip = (dx * ARROW + ox, dy * ARROW + oy)
-        canvas.arrow((dx * half + ox, dy * half + oy), tip, width=0.07, color="#a11111")
+        edge = RIGID if body.angle is not None else half
+        canvas.arrow((dx * edge + ox, dy * edge + oy), tip, width=0.07, color="#a11111")
         away = 0.5 + 0.45 * beside  # labels of arrows side by side stagger along them, clear of each other
-        canvas.text((tip[0] + dx * away, tip[1] + dy * away), force.label)
+        canvas.text((tip[0] + dx * away, tip[1] + dy * away), force.label, size=FORCE_LABEL)
         degrees = round(math.degrees(math.atan2(dy, dx)))
         said.append(f"{force.label} at {degrees}° from the +x axis")
     description = f"Forces on {label}: " + ("; ".join(said) if said else "none") + "."

@@ -48,7 +48,7 @@ def draw_ladder(figure: Figure, model: Model, leaning: Leaning, values: Values) 
     assert body.angle is not None
     symbol = _angle_symbol(body.angle, values)
     angle = values.number(body.angle) if not body.angle.free_symbols - set(values.subs) else math.radians(60)
-    angle = min(max(angle, math.radians(15)), math.radians(80))
+    angle = figure.readable_angle(angle, symbol, low=math.radians(15))
     foot = (side * LENGTH * math.cos(angle), 0.0)
     top = (0.0, LENGTH * math.sin(angle))
     canvas.ground((-side * 0.8, 0.0), (foot[0] + side * 1.8, 0.0))

@@ -54,6 +54,8 @@ GREEK = [
 _SUBSCRIPT = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 BLOCK = 1.0  # side of a block, in figure units
 SLOPE = 7.0  # length of an incline's surface
+# Angles are drawn at their values within this range; outside it the figure says it is not to scale.
+READABLE_ANGLES = (math.radians(5), math.radians(75))
 
 
 def symbol_label(name: str) -> str:
@@ -75,9 +77,23 @@ class Figure:
     # Coordinates a drawing placed its bodies at where it does not draw the model's state (a pendulum
     # swung aside to show that it swings): the free-body diagrams are drawn there too.
     placed: dict[sympy.Symbol, float] = field(default_factory=dict)
+    # what is not drawn at its value ("α = 2.0° drawn as 8°"): the figure then says it is not to scale
+    unscaled: list[str] = field(default_factory=list)
 
     def say(self, sentence: str) -> None:
         self.said.append(sentence)
+
+    def readable_angle(self, angle: float, symbol: sympy.Symbol | None, low: float | None = None) -> float:
+        """`angle` (radians, either sign) as drawn: itself within READABLE_ANGLES (or from `low`),
+        else the nearest readable angle, noted as not to scale."""
+        floor, ceiling = READABLE_ANGLES if low is None else (low, READABLE_ANGLES[1])
+        size = abs(angle)
+        if size < 1e-9 or floor <= size <= ceiling:
+            return angle
+        drawn = min(max(size, floor), ceiling)
+        name = symbol_label(symbol.name) if symbol is not None else "the angle"
+        self.unscaled.append(f"{name} = {math.degrees(size):.3g}° is drawn as {math.degrees(drawn):.0f}°")
+        return math.copysign(drawn, angle)
 
 
 class Values:
@@ -217,8 +233,9 @@ def _block(figure: Figure, base: Point, tangent: Point, label: str, fill: str, s
 def _angle_mark(figure: Figure, vertex: Point, start: float, end: float, symbol: sympy.Symbol | None) -> None:
     if symbol is None:
         return
-    radius = 1.3
     low, high = min(start, end), max(start, end)
+    # a small angle's mark is drawn further out, where its sides are far enough apart for its name
+    radius = min(max(1.3, 0.5 / math.sin(max(high - low, 1e-3))), 3.5)
     figure.canvas.arc(vertex, radius, low, high)
     middle = (low + high) / 2
     figure.canvas.text(
@@ -245,26 +262,26 @@ class Slope:
     bases: dict[str, Point]  # where each body touches the surface
 
 
-def _drawn_slope(surface: Surface) -> float:
-    """The surface's slope from its normal, kept between 20° and 50° so that a figure reads clearly."""
+def _drawn_slope(surface: Surface, figure: Figure) -> float:
+    """The surface's slope from its normal, at its value where that reads clearly (READABLE_ANGLES)."""
     a, b = surface.normal
     tangent = (b, -a) if b >= 0 else (-b, a)
     slope = math.atan2(tangent[1], tangent[0])
     if abs(slope) < 1e-9:
         return 0.0
-    return math.copysign(min(max(abs(slope), math.radians(20)), math.radians(50)), slope)
+    return figure.readable_angle(slope, surface.angle_symbol)
 
 
 def draw_double_incline(figure: Figure, model: Model, surfaces: list[Surface], string: bool) -> None:
     """Two faces of one block meeting at the top, a body on each, a pulley at the apex."""
     canvas = figure.canvas
-    left_angle, right_angle = math.radians(35), math.radians(50)
+    first, second = surfaces
+    left_angle, right_angle = (abs(_drawn_slope(s, figure)) or math.radians(30) for s in surfaces)
     height = 3.5
     apex = (height / math.tan(left_angle), height)
     left_foot, right_foot = (0.0, 0.0), (apex[0] + height / math.tan(right_angle), 0.0)
     canvas.polygon([left_foot, apex, right_foot], fill="#eeeeee")
     canvas.ground((-0.5, 0.0), (right_foot[0] + 0.5, 0.0))
-    first, second = surfaces
     _angle_mark(figure, left_foot, 0.0, left_angle, first.angle_symbol)
     _angle_mark(figure, right_foot, math.pi - right_angle, math.pi, second.angle_symbol)
     spots = []
@@ -299,7 +316,7 @@ def draw_incline(
     """Bodies on one fixed slope (or floor), spaced along it; `pushes` are the given forces on each body
     (label, direction in the model's axes), drawn as arrows pushing on it."""
     first = surfaces[0]
-    slope = _drawn_slope(first)
+    slope = _drawn_slope(first, figure)
     tangent = (math.cos(slope), math.sin(slope))
     normal = (-tangent[1], tangent[0])
     start: Point = (0.0, 0.0)
@@ -662,6 +679,12 @@ def draw_yoyo(figure: Figure, model: Model, body: Body, values: Values) -> None:
     if radius_symbols:
         canvas.text((centre[0] + axle / 2, centre[1] + 0.3), symbol_label(radius_symbols[0].name), size=0.36)
     canvas.text((centre[0] + outer * 0.55, centre[1] - outer * 0.55), body_label(body, model))
+    falling = moving_coordinate(model, body, exclude=())
+    if falling is not None:  # how far it has fallen, positive downwards
+        side = centre[0] + outer + 0.5
+        mark_coordinate(
+            figure, (side, centre[1] + 1.0), (side, centre[1] - 0.4), coordinate_label(model, falling)
+        )
     figure.say(
         f"A yo-yo {body_label(body, model)} hangs from a string wound on its axle"
         + (f" of radius {symbol_label(radius_symbols[0].name)}" if radius_symbols else "")
@@ -868,7 +891,7 @@ def draw_wedge(
     canvas = figure.canvas
     symbol = _angle_symbol(surface.gap, values)
     angle = values.number(symbol) if symbol is not None else math.radians(30)
-    angle = min(max(angle, math.radians(15)), math.radians(60))
+    angle = figure.readable_angle(angle, symbol, low=math.radians(12))
     height = 3.2
     base = height / math.tan(angle)
     top, foot, corner = (0.0, height), (base, 0.0), (0.0, 0.0)
@@ -880,11 +903,57 @@ def draw_wedge(
     spot = (top[0] + (foot[0] - top[0]) * along, top[1] + (foot[1] - top[1]) * along)
     _block(figure, spot, tangent, body_label(block, model), FILLS[1])
     _angle_mark(figure, foot, math.pi - angle, math.pi, symbol)
+    # the axis the statement defines, and the coordinates with their positive directions
+    axis_x(figure, (-1.4, -0.75))
+    wedge_coordinate = moving_coordinate(model, wedge, exclude=())
+    if wedge_coordinate is not None:
+        mark_coordinate(figure, (0.0, 0.3), (1.2, 0.3), coordinate_label(model, wedge_coordinate))
+    slide = moving_coordinate(model, block, exclude=(wedge_coordinate,))
+    if slide is not None:
+        lift = 1.45
+        start = (spot[0] + tangent[1] * -lift, spot[1] + tangent[0] * lift)
+        mark_coordinate(
+            figure,
+            start,
+            (start[0] + tangent[0] * 1.3, start[1] + tangent[1] * 1.3),
+            coordinate_label(model, slide),
+        )
     figure.say(
         f"A block {body_label(block, model)} on the incline of a wedge {body_label(wedge, model)}"
         + (f" of angle {symbol_label(symbol.name)}" if symbol is not None else "")
         + "; the wedge stands on a frictionless floor and can slide."
     )
+
+
+def axis_x(figure: Figure, at: Point) -> None:
+    """The +x axis the statement defines, as an arrow with its name."""
+    figure.canvas.arrow(at, (at[0] + 1.2, at[1]), width=0.04)
+    figure.canvas.text((at[0] + 1.55, at[1]), "x", size=0.4)
+    figure.say("The +x axis points to the right.")
+
+
+def mark_coordinate(figure: Figure, start: Point, end: Point, label: str) -> None:
+    """A coordinate's positive direction: a thin arrow with the coordinate's name beside its middle."""
+    figure.canvas.arrow(start, end, width=0.035, color="#1a5fb4")
+    dx, dy = end[0] - start[0], end[1] - start[1]
+    length = math.hypot(dx, dy) or 1.0
+    middle = ((start[0] + end[0]) / 2 - dy / length * 0.3, (start[1] + end[1]) / 2 + dx / length * 0.3)
+    figure.canvas.text(middle, label, size=0.4)
+    figure.say(f"The coordinate {label} grows along the blue arrow marked {label}.")
+
+
+def moving_coordinate(model: Model, body: Body, exclude: tuple[str | None, ...]) -> str | None:
+    """The coordinate that moves `body` (the first, other than those in `exclude`)."""
+    for c in model.coordinates:
+        if c.name not in exclude and any(sympy.diff(e, c.symbol) != 0 for _, e in body.position):
+            return c.name
+    return None
+
+
+def coordinate_label(model: Model, name: str) -> str:
+    """A coordinate as the worked solutions write it (the model's notation may rename it)."""
+    symbol = next((symbol for key, symbol, _ in model.notation if key == name and symbol), None)
+    return symbol_label(symbol or name)
 
 
 def draw_two_blocks_spring(

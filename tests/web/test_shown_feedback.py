@@ -24,6 +24,11 @@ SHOWN = [
         "Your answer is off by a constant factor.",
         "Your answer is off by a constant factor.",
     ),
+    (
+        Outcome.CORRECT,
+        "Correct. Hz is the unit of frequency; s⁻¹ reads the same.",
+        "Hz is the unit of frequency; s⁻¹ reads the same.",
+    ),
     (Outcome.INCORRECT, "Correct.", "Correct."),  # only a correct verdict's word says it already
 ]
 

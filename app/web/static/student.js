@@ -190,6 +190,8 @@
   }
 
   function contentUrl() {
+    var own = root.getAttribute("data-content");  // a page of its own, such as the worked solution
+    if (own) { return own; }
     return problemId ? "/p/" + encodeURIComponent(problemId) + "/content" : "/problems/content";
   }
 

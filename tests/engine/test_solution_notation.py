@@ -1,0 +1,127 @@
+"""Worked solutions name what they use as a textbook does: every constraint force by its physical name,
+no two things written alike, nothing written as the d of d/dt, every printed symbol defined.
+
+The names are checked for every bank problem (cheap: no derivation); the derived solutions for a few
+always and a daily sample of the rest (`physcheck bank verify`, in `make test`, audits every one)."""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any
+
+import pytest
+import sympy
+
+from physics.engine import derive, load_model
+from physics.engine.notation import RESERVED, Source, audit, notation_of
+from problems.modelinfo import load_doc_model
+from problems.symbols import symbol_table
+from tests.bank import bank_documents
+from tests.sampling import sampled
+
+MODELLED = sorted(doc_id for doc_id, doc in bank_documents().items() if doc.model is not None)
+ALWAYS = ["moving-wedge", "yo-yo", "lennard-jones", "ladder-slipping", "flywheel", "incline-pulley-friction"]
+
+
+def _model(problem: str) -> Any:
+    doc = bank_documents()[problem]
+    return load_doc_model(doc, symbol_table(doc))
+
+
+@pytest.mark.parametrize("problem", MODELLED)
+def test_every_constraint_force_and_coordinate_has_a_name_that_clashes_with_nothing(problem: str) -> None:
+    model = _model(problem)
+    notation = notation_of(model)
+    for key, force in notation.forces.items():
+        assert force.source in (Source.AUTHOR, Source.PHYSICS), (key, force)
+        assert force.words.strip(), key
+    problem_tex = {sympy.latex(p) for p in model.parameters}
+    names = [
+        n.tex
+        for n in (*notation.coordinates.values(), *notation.forces.values(), *notation.cartesian.values())
+    ]
+    assert len(names) == len(set(names)), names
+    for key, name in notation.coordinates.items():
+        assert name.words.strip(), key
+        if name.source is not Source.PROBLEM:
+            assert name.tex not in RESERVED | problem_tex, (key, name.tex)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("problem", ALWAYS + sampled([p for p in MODELLED if p not in ALWAYS], 4, "notation"))
+def test_no_step_of_any_method_uses_an_undefined_or_clashing_symbol(problem: str) -> None:
+    model = _model(problem)
+    derivation = derive(model)
+    assert derivation.notation is not None
+    assert audit(model, derivation.notation, derivation.methods) == []
+
+
+CASES: list[tuple[str, Mapping[str, Any], Mapping[str, str]]] = [
+    # (what, model, expected TeX by coordinate or constraint name)
+    (
+        "a coordinate named d is renamed: it would read as the d of d/dt",
+        {
+            "coordinates": ["d"],
+            "bodies": {"b": {"mass": "m", "position": {"y": "-d"}}},
+            "gravity": "g",
+            "quantities": {"a": {"acceleration": "d"}},
+        },
+        {"d": "q"},
+    ),
+    (
+        "a problem symbol T (a period) keeps the tension off T, and the kinetic energy too",
+        {
+            "coordinates": ["s"],
+            "bodies": {
+                "b": {"mass": "m", "position": {"y": "-1"}},
+                "c": {"mass": "m", "position": {"y": "-s"}},
+            },
+            "gravity": "g",
+            "constraints": {"rope": {"kind": "string", "gap": "y_b + 1"}},
+            "quantities": {"a": {"acceleration": "s"}},
+        },
+        {"rope": r"\mathcal{T}"},
+    ),
+    (
+        "the author's notation names the force and the coordinate",
+        {
+            "coordinates": ["d"],
+            "bodies": {"b": {"mass": "m", "position": {"y": "-d"}}},
+            "gravity": "g",
+            "notation": {"d": {"symbol": "h", "says": "the drop"}, "b": {"says": "the bob"}},
+            "quantities": {"a": {"acceleration": "d"}},
+        },
+        {"d": "h"},
+    ),
+]
+
+
+@pytest.mark.parametrize(("what", "data", "expected"), CASES, ids=[c[0] for c in CASES])
+def test_names_avoid_clashes(what: str, data: Mapping[str, Any], expected: Mapping[str, str]) -> None:
+    symbols = {n: sympy.Symbol(n, positive=True) for n in ("m", "g", "T")}
+    notation = notation_of(load_model(data, symbols))
+    found = {
+        **{k: v.tex for k, v in notation.coordinates.items()},
+        **{k: v.tex for k, v in notation.forces.items()},
+    }
+    for key, tex in expected.items():
+        assert found[key] == tex, (what, found)
+    if "rope" in expected:
+        assert notation.letters.kinetic not in ("T", expected["rope"])
+
+
+def test_the_wedge_names_its_normal_forces_as_the_seed_does() -> None:
+    notation = notation_of(_model("moving-wedge"))
+    assert notation.forces["incline"].tex == "N_{1}"  # between the block and the wedge
+    assert notation.forces["inclineFloor"].tex == "N_{2}"  # from the floor on the wedge
+    assert "floor" in notation.forces["inclineFloor"].words
+
+
+def test_a_yoyo_derivation_writes_the_tension_and_no_internal_name() -> None:
+    derivation = derive(_model("yo-yo"))
+    newton = next(m for m in derivation.methods if m.name == "newton")
+    written = " ".join(s.latex for s in newton.steps)
+    assert r"\lambda" not in written and "T r" in written  # the string's torque, T times r
+    assert newton.forces == ("string",)
+    dalembert = next(m for m in derivation.methods if m.name == "dalembert")
+    assert dalembert.forces == ()  # constraint forces do no virtual work

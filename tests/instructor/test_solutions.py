@@ -1,0 +1,119 @@
+"""Worked solutions: instructors always see them (on the problem page and as a hand-out to print); a
+student sees one only once it is released to them (app/web/solution_access.py, the one gate)."""
+
+from __future__ import annotations
+
+import html
+
+import pytest
+from fastapi.testclient import TestClient
+
+from app.storage import Stores
+from app.web.solution_access import solution_release
+from app.web.student_work import PartWork, ProblemWork
+from tests.bank import bank_documents
+from tests.instructor.conftest import new_key
+from tests.instructor.test_pages import RIGHT, file_submissions
+
+PARTS = ("acceleration", "tension", "acceleration_numeric")
+
+
+def _work(**parts: PartWork) -> ProblemWork:
+    return ProblemWork({part: parts.get(part, PartWork()) for part in PARTS})
+
+
+DONE = PartWork(used=1, best=1.0)
+OUT_OF_ATTEMPTS = PartWork(used=3, limit=3, best=0.0)
+TRYING = PartWork(used=1, limit=3, best=0.0)
+
+RELEASES = [
+    # (what, the document's `solutions`, the student's work, released?)
+    ("nothing tried", "after_attempts", _work(), False),
+    ("every part solved", "after_attempts", _work(**dict.fromkeys(PARTS, DONE)), True),
+    (
+        "solved or out of attempts",
+        "after_attempts",
+        _work(acceleration=OUT_OF_ATTEMPTS, tension=DONE, acceleration_numeric=DONE),
+        True,
+    ),
+    (
+        "one part still has attempts",
+        "after_attempts",
+        _work(acceleration=TRYING, tension=DONE, acceleration_numeric=DONE),
+        False,
+    ),
+    ("released by the document", "always", _work(), True),
+    ("never, however done", "never", _work(**dict.fromkeys(PARTS, DONE)), False),
+]
+
+
+@pytest.mark.parametrize(("what", "policy", "work", "released"), RELEASES, ids=[r[0] for r in RELEASES])
+def test_the_gate_releases_a_solution_only_as_the_problem_says(
+    what: str, policy: str, work: ProblemWork, released: bool
+) -> None:
+    doc = bank_documents()["yo-yo"].model_copy(update={"solutions": policy})
+    release = solution_release(doc, work)
+    assert release.released is released, what
+    assert release.why  # the student is told why, either way
+
+
+def _student(stores: Stores, name: str) -> dict[str, str]:
+    return {"Authorization": "Bearer " + new_key(stores, "student", name, student=name)}
+
+
+def test_a_student_sees_no_solution_before_it_is_released(client: TestClient, stores: Stores) -> None:
+    page = client.get("/p/yo-yo/solution/content", headers=_student(stores, "ada"))
+    assert page.status_code == 200
+    assert "Not released yet" in page.text and "parts 1, 2, 3 still open" in page.text
+    assert (
+        "Lagrange" not in page.text and "The methods compared" not in page.text and "<math" not in page.text
+    )
+
+
+def test_a_student_who_has_solved_every_part_sees_the_solution_with_their_values(
+    client: TestClient, stores: Stores
+) -> None:
+    file_submissions(stores, [("bo", part, "x", RIGHT) for part in PARTS])
+    page = client.get("/p/yo-yo/solution/content", headers=_student(stores, "bo"))
+    assert page.status_code == 200
+    text = html.unescape(page.text)
+    assert "Not released yet" not in text
+    for said in (
+        "The methods compared",
+        "Newton's laws",
+        "Lagrange's equations",
+        "Which method, and why",
+        "Set-up",
+        "Count:",
+        "Answers",
+    ):
+        assert said in text, said
+    assert "Check with the values of this variant" in text  # the method's result at bo's values
+
+
+def test_the_solution_needs_a_student(client: TestClient) -> None:
+    assert client.get("/p/yo-yo/solution/content").status_code == 401
+    page = client.get("/p/yo-yo/solution")  # no session: the page asks for a key, shows nothing
+    assert page.status_code == 200 and 'id="key-form"' in page.text and "<math" not in page.text
+    assert 'data-content="/p/yo-yo/solution/content"' in page.text
+
+
+def test_an_unknown_problem_has_no_solution(client: TestClient, stores: Stores) -> None:
+    assert client.get("/p/no-such/solution/content", headers=_student(stores, "cy")).status_code == 404
+
+
+def test_an_instructor_has_the_hand_out_and_the_link_to_post(signed_in: TestClient) -> None:
+    problem = signed_in.get("/instructor/problems/yo-yo").text
+    assert 'href="/instructor/problems/yo-yo/solution"' in problem
+    assert 'href="/p/yo-yo/solution"' in problem
+    hand_out = signed_in.get("/instructor/problems/yo-yo/solution")
+    assert hand_out.status_code == 200
+    assert "The methods compared" in hand_out.text and "Forces on each body" in hand_out.text
+    assert "answered every part correctly or used its last attempt" in hand_out.text
+
+
+def test_the_problem_page_shows_the_comparison_and_numbered_equations(signed_in: TestClient) -> None:
+    page = signed_in.get("/instructor/problems/yo-yo").text
+    assert '<section class="comparison"' in page
+    assert '<span class="eqno">(1.1)</span>' in page
+    assert "lambda" not in page and "y_yoyo" not in page and "g_k" not in page
