@@ -342,9 +342,10 @@ def sample_domain(
         bounded = _bounded(required, batch.floats, size)
         ok = _defined(batch, required, bounded, prec)
         indexes = [i for i in range(size) if ok[i]][: size - found]
+        whole = len(indexes) == size  # the usual case: every point of the batch kept, in order
         for s in symbols:
-            kept[s].extend(batch.columns[s][i] for i in indexes)
-            kept_floats[s].append(batch.floats[s][indexes])
+            kept[s].extend(batch.columns[s] if whole else [batch.columns[s][i] for i in indexes])
+            kept_floats[s].append(batch.floats[s] if whole else batch.floats[s][indexes])
         for k, b in enumerate(bounded):
             if b is None or not b.precise(PRECISE_RELATIVE)[indexes].all():
                 precise[k] = False
