@@ -17,6 +17,11 @@ takes much of a core and so lowers every figure, the floor's too):
   identical  POST /v1/check, one typical request over and over: the verdict cache's case
   same       POST /v1/check, bench/check_bench.py's typical answers (parse_expr's syntax) in the
              distinct phase's forms, every text new
+  new        POST /v1/check, new references over the usual names: distinct's checks with the
+             reference and the answer each times (n + 1)/(n + 2), a new n per request (a course
+             script's own references, new uploads): every reference is read and prepared anew
+  renamed    POST /v1/check, new references under names never seen: every symbol renamed `m` ->
+             `m_n` in the reference, the answer and the declarations (new symbols, a new domain)
   naive      POST /naive: the same texts as `same`, parse_expr + simplify per request, in one uvicorn
              process as the issue measured it (simplify holds the GIL: one core)
   naive x2   the same on two uvicorn processes, one per core as physcheck's workers: how much of the
@@ -24,10 +29,11 @@ takes much of a core and so lowers every figure, the floor's too):
 
 in turn, `--rounds` times with new texts each round, and prints requests/s, p50 and p99 of each, then
 each target as the median over the rounds of its ratio within a round (this machine's speed moves by
-a third within minutes; a ratio of two phases a minute apart moves less): distinct >= 20 % of the
-floor's requests/s with p99 <= 50 ms, identical >= 60 % of the floor, naive >= 100x slower than
-physcheck on the same texts (`same`; also printed: how much slower than `distinct`, a different mix of
-answers). The python client also checks every verdict; wrk counts only statuses (the verdicts of the
+a third within minutes; a ratio of two phases a minute apart moves less): distinct >= 40 % of the
+floor's requests/s and new >= 25 %, each with p99 <= 25 ms; renamed >= 15 %; identical >= 60 % of
+the floor; naive >= 100x slower than physcheck on the same texts (`same`; also printed: how much
+slower than `distinct`, a different mix of answers). The numeric checks of `new` and `renamed` are
+distinct's (a numeric reference is a number: nothing to read or prepare). The python client also checks every verdict; wrk counts only statuses (the verdicts of the
 same bodies are checked by the python client).
 """
 
@@ -46,7 +52,7 @@ import subprocess
 import sys
 import tempfile
 import time
-from collections.abc import Iterator, Sequence
+from collections.abc import Iterable, Iterator, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -118,6 +124,70 @@ def distinct_checks(first: int = 2) -> list[Call]:
             if tolerance is not None:
                 numeric["tolerance"] = tolerance
             calls.append(post("/v1/check", numeric, expect=verdict))
+    return calls
+
+
+def scaled(text: str, n: int) -> str:
+    """`text` times (n + 1)/(n + 2): a new expression for each n, scaled as its partner is."""
+    return f"({text})*({n} + 1)/({n} + 2)"
+
+
+def _numeric_calls(n: int) -> list[Call]:
+    """The typical numeric checks, spaced anew for n: a numeric reference is a number, nothing to prepare."""
+    calls = []
+    for answer, value, units, tolerance, verdict in NUMERIC:
+        numeric: dict[str, object] = {"kind": "numeric", "answer": spaced(answer, n), "expected": value}
+        if units is not None:
+            numeric["units"] = units
+        if tolerance is not None:
+            numeric["tolerance"] = tolerance
+        calls.append(post("/v1/check", numeric, expect=verdict))
+    return calls
+
+
+def new_reference_checks(first: int = 2, variants: int = DISTINCT_VARIANTS) -> list[Call]:
+    """Every typical check with a reference never sent before, over the usual names: the reference and
+    the answer each scaled by the same new factor (a course script's own references, new uploads)."""
+    calls = []
+    for n in range(first, first + variants):
+        for answer, expected, symbols, verdict in SYMBOLIC:
+            body = {
+                "kind": "symbolic",
+                "answer": scaled(answer, n),
+                "expected": scaled(expected, n),
+                "symbols": symbols,
+            }
+            calls.append(post("/v1/check", body, expect=verdict))
+        calls += _numeric_calls(n)
+    return calls
+
+
+# A declared name and every spelling of it that bench/load.py's typical answers use.
+_SPELLINGS = {"theta": ("theta", "θ"), "alpha": ("alpha", "α"), "mu": ("mu", "μ")}
+
+
+def renamed(text: str, names: Iterable[str], n: int) -> str:
+    """`text` with each of `names` (as a whole word, in any of its spellings) suffixed `_n`: `m` -> `m_7`."""
+    for name in names:
+        for spelling in _SPELLINGS.get(name, (name,)):
+            text = re.sub(rf"(?<![^\W\d_]){re.escape(spelling)}(?![\w])", f"{spelling}_{n}", text)
+    return text
+
+
+def renamed_checks(first: int = 2, variants: int = DISTINCT_VARIANTS) -> list[Call]:
+    """Every typical check under names never seen (`m` -> `m_n`, `theta` -> `theta_n`): a new domain,
+    new symbols, a new reference and a new answer for each n."""
+    calls = []
+    for n in range(first, first + variants):
+        for answer, expected, symbols, verdict in SYMBOLIC:
+            body = {
+                "kind": "symbolic",
+                "answer": renamed(answer, symbols, n),
+                "expected": renamed(expected, symbols, n),
+                "symbols": {f"{name}_{n}": spec for name, spec in symbols.items()},
+            }
+            calls.append(post("/v1/check", body, expect=verdict))
+        calls += _numeric_calls(n)
     return calls
 
 
@@ -345,6 +415,8 @@ class Round:
     distinct: Result
     identical: Result
     same: Result
+    new: Result
+    renamed: Result
     naive: Result
     naive_two: Result
 
@@ -358,12 +430,19 @@ def summarize(rounds: Sequence[Round]) -> None:
 
     share = [r.distinct.rate / r.floor.rate for r in rounds]
     p99 = [r.distinct.p99 for r in rounds]
+    new = [r.new.rate / r.floor.rate for r in rounds]
+    new_p99 = [r.new.p99 for r in rounds]
+    renamed = [r.renamed.rate / r.floor.rate for r in rounds]
     identical = [r.identical.rate / r.floor.rate for r in rounds]
     naive = [r.same.rate / max(r.naive.rate, 1e-9) for r in rounds]
     naive_distinct = [r.distinct.rate / max(r.naive.rate, 1e-9) for r in rounds]
     naive_two = [r.same.rate / max(r.naive_two.rate, 1e-9) for r in rounds]
-    print(f"distinct:  {line(share, '{:.1%}')} of the floor (target >= 20 %)")
-    print(f"           p99 {line(p99, '{:.0f} ms')} (target <= 50 ms)")
+    print(f"floor:     median {statistics.median(r.floor.rate for r in rounds):,.0f} requests/s")
+    print(f"distinct:  {line(share, '{:.1%}')} of the floor (target >= 40 %)")
+    print(f"           p99 {line(p99, '{:.0f} ms')} (target <= 25 ms)")
+    print(f"new:       {line(new, '{:.1%}')} of the floor (target >= 25 %)")
+    print(f"           p99 {line(new_p99, '{:.0f} ms')} (target <= 25 ms)")
+    print(f"renamed:   {line(renamed, '{:.1%}')} of the floor (target >= 15 %)")
     print(f"identical: {line(identical, '{:.0%}')} of the floor (target >= 60 %)")
     print(f"naive:     {line(naive, '{:.0f}x')} slower than physcheck on the same answers (target >= 100x)")
     print(f"           {line(naive_distinct, '{:.0f}x')} slower than distinct")
@@ -417,22 +496,33 @@ def main(argv: Sequence[str] | None = None) -> int:
             run = functools.partial(measure_phase, args.client, Path(tmp))
             if args.warmup > 0:
                 warm_up = distinct_checks(WARM_UP_FIRST) + same_checks(WARM_UP_FIRST)
+                # (their references: a few hundred of each suffice, and a script of 150,000 is large)
+                warm_up += new_reference_checks(WARM_UP_FIRST, 400) + renamed_checks(WARM_UP_FIRST, 400)
                 run(server.url, key, "(warm-up)", warm_up, warm)
             rounds = []
             for number in range(args.rounds):
                 # Each round's texts are new (`first`): none is answered from an earlier round's verdict.
                 first = 2 + number * ROUND_STRIDE
                 distinct_calls, same_calls = distinct_checks(first), same_checks(first)
+                new_calls, renamed_calls = new_reference_checks(first), renamed_checks(first)
                 print(f"round {number + 1}")
                 result = Round(
                     floor=run(trivial, None, "floor", [Call("POST", "/echo", b"{}")], args),
                     distinct=run(server.url, key, "distinct", distinct_calls, cold),
                     identical=run(server.url, key, "identical", identical_check(), args),
                     same=run(server.url, key, "same", same_calls, cold),
+                    new=run(server.url, key, "new", new_calls, cold),
+                    renamed=run(server.url, key, "renamed", renamed_calls, cold),
                     naive=run(trivial, None, "naive", naive_checks(first), naive_args),
                     naive_two=run(trivial_two, None, "naive x2", naive_checks(first), naive_args),
                 )
-                for phase, sent in ((result.distinct, distinct_calls), (result.same, same_calls)):
+                sent_texts = (
+                    (result.distinct, distinct_calls),
+                    (result.same, same_calls),
+                    (result.new, new_calls),
+                    (result.renamed, renamed_calls),
+                )
+                for phase, sent in sent_texts:
                     if phase.requests > len(sent):
                         print(
                             f"WARNING: {phase.name} sent {phase.requests} requests of {len(sent)} texts: some repeated"

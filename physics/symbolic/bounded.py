@@ -121,10 +121,16 @@ _RULES: dict[type, _Rule] = {
 class BoundedEvaluator:
     """Evaluates expressions over float64 columns with error bounds; caches shared subtrees."""
 
-    def __init__(self, columns: Mapping[sympy.Symbol, Floats], size: int) -> None:
+    def __init__(
+        self,
+        columns: Mapping[sympy.Symbol, Floats],
+        size: int,
+        cache: dict[sympy.Basic, Bounded] | None = None,
+    ) -> None:
         self._columns = columns
         self._size = size
-        self._cache: dict[sympy.Basic, Bounded] = {}
+        # Filled as subtrees are evaluated: pass one to share it between evaluators of the same columns.
+        self._cache: dict[sympy.Basic, Bounded] = {} if cache is None else cache
 
     def __call__(self, expr: sympy.Basic) -> Bounded:
         """Raises Unsupported for an expression float64 cannot evaluate at all."""

@@ -30,8 +30,11 @@ float64's rounding of a tolerance, where either verdict is defensible.
 
 from __future__ import annotations
 
+import contextlib
+import itertools
 from collections.abc import Callable, Mapping, Sequence
 from fractions import Fraction
+from typing import Any
 
 import numpy as np
 import sympy
@@ -71,6 +74,8 @@ MAGNITUDE_BITS = 100
 # exact as the judge's values of sympy's tree, down to a reference scale as small as 2^-MAGNITUDE_BITS.
 EXTRA_BITS = 2 * MAGNITUDE_BITS
 _NUMBER_SYMBOLS = {"pi": sympy.pi, "e": sympy.E}
+_FLOATS, _PRECISE = "float64", "precise"  # grids of the subtree memory (beside tuples of sample indexes)
+_LEAVES = (Num, Name, Const)
 
 
 class _Declined(Exception):
@@ -79,10 +84,10 @@ class _Declined(Exception):
 
 def judged(reading: TreeReading, reference: PreparedReference, max_exponent: int) -> Judgement | None:
     """The judgement the full path (build, judge) would give, where the parse tree is enough to find
-    it; None where it is not (see the module). A right answer before the reference's precise values
-    are computed takes the full path: there, an answer built equal to the reference is right at once,
-    before they are (a new reference's first answer is often its own text). A wrong one never needs
-    them, and a reference that meets only wrong answers never has them."""
+    it; None where it is not (see the module). A right answer computes the reference's precise values
+    if no answer did before (one evaluation of the reference at two points: less than building the
+    answer to compare it with the reference); a wrong one never needs them, and a reference that meets
+    only wrong answers never has them."""
     points = min(PRECISE_POINTS, reference.sample.size)
     if not reference.floats.usable or not points or abs(magnitude_bits(reference.scale)) > MAGNITUDE_BITS:
         return None
@@ -94,17 +99,23 @@ def judged(reading: TreeReading, reference: PreparedReference, max_exponent: int
             s in reference.floats.columns and s in reference.precise_columns for s in symbols.values()
         ):
             return None
+        keys = _Keys(symbols)
         with np.errstate(all="ignore"):
-            values = _FloatTree(reference, symbols).value(reading.tree)
-        precise = _TreeValues(reference.precise_columns, points, symbols, PRECISE_PREC + EXTRA_BITS).value(
-            reading.tree
-        )
+            values = _FloatTree(reference, symbols, keys).value(reading.tree)
+        precise = _TreeValues(
+            reference.precise_columns,
+            points,
+            symbols,
+            PRECISE_PREC + EXTRA_BITS,
+            keys,
+            (reference.token, _PRECISE),
+        ).value(reading.tree)
         if all(value == ZERO for value in precise):
             return None  # sympy may have built 0, whose dimension is not asked
         return judged_in_floats(
             values,
             reference,
-            _TreeAtPoints(reading.tree, symbols, reference),
+            _TreeAtPoints(reading.tree, symbols, reference, keys),
             lambda: _precisely_equal(precise, reference),
             lambda: dimension_difference(_dimension(reading.tree, symbols, reference), reference),
             lambda: _no_limits(reference),
@@ -114,10 +125,7 @@ def judged(reading: TreeReading, reference: PreparedReference, max_exponent: int
 
 
 def _precisely_equal(precise: Sequence[Mpf], reference: PreparedReference) -> bool:
-    """The tree's values equal the reference's at the precise points; _Declined while those are not
-    computed yet (the full path may find the answer right without them)."""
-    if "precise_values" not in reference.__dict__:
-        raise _Declined
+    """The tree's values equal the reference's at the precise points."""
     return all(
         b is not None and close(a, b, reference.scale, PRECISE_TOLERANCE_BITS)
         for a, b in zip(precise, reference.precise_values, strict=True)
@@ -183,23 +191,37 @@ class _TreeAtPoints:
     """The tree at PREC at sample points, as judge._AtPoints evaluates sympy's (each point once); None
     at a point where a value is undefined or beyond 2^±100 on the way, where the judge cannot tell."""
 
-    def __init__(self, tree: Node, symbols: Mapping[str, sympy.Symbol], reference: PreparedReference) -> None:
+    def __init__(
+        self, tree: Node, symbols: Mapping[str, sympy.Symbol], reference: PreparedReference, keys: _Keys
+    ) -> None:
         self._tree = tree
         self._symbols = symbols
         self._columns = reference.sample.columns
+        self._token = reference.token
+        self._keys = keys
         self._values: dict[int, Mpf | None] = {}
 
     def __call__(self, indexes: tuple[int, ...]) -> Column:
-        for index in indexes:
+        missing = [index for index in dict.fromkeys(indexes) if index not in self._values]
+        if len(missing) > 1:
+            # The points in one walk; where a point declines, each point alone (as if never batched).
+            with contextlib.suppress(_Declined, ArithmeticError, ValueError):
+                self._values.update(zip(missing, self._at(missing), strict=True))
+        for index in missing:
             if index not in self._values:
-                point = {symbol: [self._columns[symbol][index]] for symbol in self._symbols.values()}
                 try:
-                    (self._values[index],) = _TreeValues(point, 1, self._symbols, PREC + EXTRA_BITS).value(
-                        self._tree
-                    )
+                    (self._values[index],) = self._at([index])
                 except (_Declined, ArithmeticError, ValueError):
                     self._values[index] = None
         return [self._values[index] for index in indexes]
+
+    def _at(self, indexes: list[int]) -> list[Mpf]:
+        columns = self._columns
+        points = {symbol: [columns[symbol][i] for i in indexes] for symbol in self._symbols.values()}
+        grid = (self._token, tuple(indexes))
+        return _TreeValues(points, len(indexes), self._symbols, PREC + EXTRA_BITS, self._keys, grid).value(
+            self._tree
+        )
 
 
 def _exponent(node: Node) -> Fraction | None:
@@ -305,42 +327,131 @@ class _Shape:
         raise _Declined  # a postfix: factorial, percent, degrees
 
 
+# Subtrees' values at a reference's points, by (reference, grid, subtree): many answers to a reference
+# share subtrees (`sin θ`, `M + m sin^2 θ`, a whole answer times a factor), and a subtree's values depend
+# only on its structure, the points and the precision, so a value found here is the very one a new
+# evaluation would compute. Bounded, and cleared when full.
+_SUBTREES: dict[tuple[object, object, int], Any] = {}
+SUBTREES_KEPT = 16384
+# Structural keys of subtrees, interned as numbers that are never given out again (so a memory entry
+# of a forgotten structure can never be met by another).
+_STRUCTURES: dict[tuple[object, ...], int] = {}
+STRUCTURES_KEPT = 65536
+_numbers = itertools.count()
+
+
+class _Keys:
+    """Each node's structural key (a number equal for equal subtrees over the same symbols), computed
+    once per node of one tree."""
+
+    def __init__(self, symbols: Mapping[str, sympy.Symbol]) -> None:
+        self._symbols = symbols
+        self._found: dict[int, int] = {}
+
+    def of(self, node: Node) -> int:
+        found = self._found.get(id(node))
+        if found is None:
+            found = self._found[id(node)] = self._intern(node)
+        return found
+
+    def _intern(self, node: Node) -> int:
+        kind = type(node)
+        structure: tuple[object, ...]
+        if kind is Name:
+            structure = ("n", self._symbols[node.name])  # type: ignore[union-attr]
+        elif kind is Num:
+            structure = ("#", node.value)  # type: ignore[union-attr]
+        elif kind is Const:
+            structure = ("c", node.which)  # type: ignore[union-attr]
+        elif kind is Group:
+            return self.of(node.inner)  # type: ignore[union-attr]
+        elif kind is Neg:
+            structure = ("-", self.of(node.operand))  # type: ignore[union-attr]
+        elif kind is Sum or kind is Product:
+            parts: list[object] = [kind, self.of(node.first)]  # type: ignore[union-attr]
+            for operator, child in node.rest:  # type: ignore[union-attr]
+                parts += (operator, self.of(child))
+            structure = tuple(parts)
+        elif kind is Power:
+            structure = ("^", self.of(node.base), self.of(node.exponent))  # type: ignore[union-attr]
+        elif kind is Call:
+            structure = ("f", node.func, self.of(node.arg))  # type: ignore[union-attr]
+        else:
+            raise _Declined  # a postfix (never admitted)
+        number = _STRUCTURES.get(structure)
+        if number is None:
+            if len(_STRUCTURES) >= STRUCTURES_KEPT:
+                _STRUCTURES.clear()
+            number = _STRUCTURES[structure] = next(_numbers)
+        return number
+
+
+def _remember(key: tuple[object, object, int], values: Any) -> Any:
+    if len(_SUBTREES) >= SUBTREES_KEPT:
+        _SUBTREES.clear()
+    _SUBTREES[key] = values
+    return values
+
+
 class _FloatTree:
     """The tree in float64 at every sample point (numpy), as the judge's first look evaluates sympy's."""
 
-    def __init__(self, reference: PreparedReference, symbols: Mapping[str, sympy.Symbol]) -> None:
+    def __init__(
+        self, reference: PreparedReference, symbols: Mapping[str, sympy.Symbol], keys: _Keys
+    ) -> None:
         self._columns = {name: reference.floats.columns[symbol] for name, symbol in symbols.items()}
         self._size = reference.sample.size
+        self._keys = keys
+        self._grid = (reference.token, _FLOATS)
 
     def value(self, node: Node) -> Floats:
-        if isinstance(node, Num):
-            return np.full(self._size, float(node.value))
-        if isinstance(node, Name):
-            return self._columns[node.name]
-        if isinstance(node, Const):
-            return np.full(self._size, float(_NUMBER_SYMBOLS[node.which]))
-        if isinstance(node, Group):
-            return self.value(node.inner)
-        if isinstance(node, Neg):
-            return -self.value(node.operand)
-        if isinstance(node, Sum):
-            total = self.value(node.first)
-            for sign, term in node.rest:
-                total = total + self.value(term) if sign == "+" else total - self.value(term)
-            return total
-        if isinstance(node, Product):
-            product = self.value(node.first)
-            for operator, factor in node.rest:
-                product = product * self.value(factor) if operator == "*" else product / self.value(factor)
-            return product
-        if isinstance(node, Power):
-            if _is_e(node.base):
-                return np.exp(self.value(node.exponent))
-            exponent = _exponent(node.exponent)
-            assert exponent is not None  # admitted
-            powered: Floats = np.power(self.value(node.base), float(exponent))
-            return powered
-        assert isinstance(node, Call)  # admitted
+        # One rule per node type, found by the type (an answer has dozens of nodes; a chain of
+        # isinstance tests per node was a tenth of a check).
+        kind = type(node)
+        if kind in _LEAVES:
+            return _FLOAT_RULES[kind](self, node)
+        key = (*self._grid, self._keys.of(node))
+        found = _SUBTREES.get(key)
+        if found is None:
+            found = _remember(key, _FLOAT_RULES[kind](self, node))
+        return found  # type: ignore[no-any-return]
+
+    def _num(self, node: Num) -> Floats:
+        return np.full(self._size, float(node.value))
+
+    def _name(self, node: Name) -> Floats:
+        return self._columns[node.name]
+
+    def _const(self, node: Const) -> Floats:
+        return np.full(self._size, float(_NUMBER_SYMBOLS[node.which]))
+
+    def _group(self, node: Group) -> Floats:
+        return self.value(node.inner)
+
+    def _neg(self, node: Neg) -> Floats:
+        return -self.value(node.operand)
+
+    def _sum(self, node: Sum) -> Floats:
+        total = self.value(node.first)
+        for sign, term in node.rest:
+            total = total + self.value(term) if sign == "+" else total - self.value(term)
+        return total
+
+    def _product(self, node: Product) -> Floats:
+        product = self.value(node.first)
+        for operator, factor in node.rest:
+            product = product * self.value(factor) if operator == "*" else product / self.value(factor)
+        return product
+
+    def _power(self, node: Power) -> Floats:
+        if _is_e(node.base):
+            return np.exp(self.value(node.exponent))
+        exponent = _exponent(node.exponent)
+        assert exponent is not None  # admitted
+        powered: Floats = np.power(self.value(node.base), float(exponent))
+        return powered
+
+    def _call(self, node: Call) -> Floats:
         argument = self.value(node.arg)
         if node.func == "sqrt":
             return np.sqrt(argument)
@@ -349,9 +460,23 @@ class _FloatTree:
         return floats.UNARY[_function(node.func)](argument)
 
 
+_FLOAT_RULES: dict[type, Callable[[_FloatTree, Any], Floats]] = {
+    Num: _FloatTree._num,
+    Name: _FloatTree._name,
+    Const: _FloatTree._const,
+    Group: _FloatTree._group,
+    Neg: _FloatTree._neg,
+    Sum: _FloatTree._sum,
+    Product: _FloatTree._product,
+    Power: _FloatTree._power,
+    Call: _FloatTree._call,
+}
+
+
 class _TreeValues:
     """The tree at a few points at `prec`, as numeric.Evaluator computes sympy's; raises _Declined at an
-    intermediate value that is undefined, or nonzero and beyond 2^±100 (the module's second condition)."""
+    intermediate value that is undefined, or nonzero and beyond 2^±100 (the module's second condition).
+    Every step is point by point, so a point's values are the same whichever points it is evaluated with."""
 
     def __init__(
         self,
@@ -359,58 +484,78 @@ class _TreeValues:
         size: int,
         symbols: Mapping[str, sympy.Symbol],
         prec: int,
+        keys: _Keys,
+        grid: tuple[object, object],
     ) -> None:
         self._columns = {name: _checked(columns[symbol]) for name, symbol in symbols.items()}
         self._size = size
         self._prec = prec
         self._sums = Evaluator({}, self._size, prec)  # its sums: cancellation to exact zero
+        self._keys = keys
+        self._grid = grid  # (reference token, the points): with prec, what the values depend on
 
     def value(self, node: Node) -> list[Mpf]:
-        while isinstance(node, Group):
-            node = node.inner
-        if isinstance(node, Name):
-            return self._columns[node.name]
-        return _checked(self._evaluate(node))
+        kind = type(node)
+        while kind is Group:
+            node = node.inner  # type: ignore[union-attr]
+            kind = type(node)
+        if kind is Name:
+            return self._columns[node.name]  # type: ignore[union-attr]
+        if kind is Num or kind is Const:
+            return _checked(_VALUE_RULES[kind](self, node))
+        key = (*self._grid, self._keys.of(node))
+        found = _SUBTREES.get(key)
+        if found is None:
+            found = _remember(key, _checked(_VALUE_RULES[kind](self, node)))
+        return found  # type: ignore[no-any-return]
 
     def _constant(self, value: Mpf) -> list[Mpf]:
         return [value] * self._size
 
-    def _evaluate(self, node: Node) -> Sequence[Mpf | None]:
+    def _num(self, node: Num) -> Sequence[Mpf | None]:
+        return self._constant(from_rational(node.value.numerator, node.value.denominator, self._prec))
+
+    def _const(self, node: Const) -> Sequence[Mpf | None]:
         prec = self._prec
-        if isinstance(node, Num):
-            return self._constant(from_rational(node.value.numerator, node.value.denominator, prec))
-        if isinstance(node, Const):
-            return self._constant(libmp.mpf_pi(prec) if node.which == "pi" else libmp.mpf_e(prec))
-        if isinstance(node, Neg):
-            return [libmp.mpf_neg(v) for v in self.value(node.operand)]
-        if isinstance(node, Sum):
-            terms: list[Column] = [list(self.value(node.first))]
-            for sign, term in node.rest:
-                values = self.value(term)
-                signed: Column = list(values) if sign == "+" else [libmp.mpf_neg(v) for v in values]
-                terms.append(signed)
-            return self._sums.add(terms)
-        if isinstance(node, Product):
-            product = self.value(node.first)
-            for operator, factor in node.rest:
-                values = self.value(factor)
-                if operator == "*":
-                    product = [libmp.mpf_mul(a, b, prec, RND) for a, b in zip(product, values, strict=True)]
-                elif ZERO in values:
-                    raise _Declined
-                else:
-                    product = [libmp.mpf_div(a, b, prec, RND) for a, b in zip(product, values, strict=True)]
-            return product
-        if isinstance(node, Power):
-            if _is_e(node.base):
-                return [_unary(sympy.exp, x, prec) for x in self.value(node.exponent)]
-            exponent = _exponent(node.exponent)
-            assert exponent is not None  # admitted
-            return [_power(b, exponent, prec) for b in self.value(node.base)]
-        assert isinstance(node, Call)  # admitted
+        return self._constant(libmp.mpf_pi(prec) if node.which == "pi" else libmp.mpf_e(prec))
+
+    def _neg(self, node: Neg) -> Sequence[Mpf | None]:
+        return [libmp.mpf_neg(v) for v in self.value(node.operand)]
+
+    def _sum(self, node: Sum) -> Sequence[Mpf | None]:
+        terms: list[Column] = [list(self.value(node.first))]
+        for sign, term in node.rest:
+            values = self.value(term)
+            signed: Column = list(values) if sign == "+" else [libmp.mpf_neg(v) for v in values]
+            terms.append(signed)
+        return self._sums.add(terms)
+
+    def _product(self, node: Product) -> Sequence[Mpf | None]:
+        prec = self._prec
+        product = self.value(node.first)
+        for operator, factor in node.rest:
+            values = self.value(factor)
+            if operator == "*":
+                product = [libmp.mpf_mul(a, b, prec, RND) for a, b in zip(product, values, strict=True)]
+            elif ZERO in values:
+                raise _Declined
+            else:
+                product = [libmp.mpf_div(a, b, prec, RND) for a, b in zip(product, values, strict=True)]
+        return product
+
+    def _power(self, node: Power) -> Sequence[Mpf | None]:
+        prec = self._prec
+        if _is_e(node.base):
+            return [_unary(sympy.exp, x, prec) for x in self.value(node.exponent)]
+        exponent = _exponent(node.exponent)
+        assert exponent is not None  # admitted
+        return [_power(b, exponent, prec) for b in self.value(node.base)]
+
+    def _call(self, node: Call) -> Sequence[Mpf | None]:
+        prec = self._prec
         arguments = self.value(node.arg)
         if node.func == "sqrt":
-            return [_power(x, Fraction(1, 2), prec) for x in arguments]
+            return [_power(x, _HALF, prec) for x in arguments]
         if any(magnitude_bits(x) > MAX_ARGUMENT_BITS for x in arguments):
             raise _Declined  # as numeric.Evaluator, which gives no function of such an argument a value
         if node.func == "log10":
@@ -423,6 +568,18 @@ class _TreeValues:
             ]
         function = _function(node.func)
         return [_unary(function, x, prec) for x in arguments]
+
+
+_HALF = Fraction(1, 2)
+_VALUE_RULES: dict[type, Callable[[_TreeValues, Any], Sequence[Mpf | None]]] = {
+    Num: _TreeValues._num,
+    Const: _TreeValues._const,
+    Neg: _TreeValues._neg,
+    Sum: _TreeValues._sum,
+    Product: _TreeValues._product,
+    Power: _TreeValues._power,
+    Call: _TreeValues._call,
+}
 
 
 # (function, argument, precision) -> its value, for the latest answers. The sample points are the
@@ -447,13 +604,11 @@ def _unary(function: type, x: Mpf, prec: int) -> Mpf | None:
 
 def _checked(values: Sequence[Mpf | None]) -> list[Mpf]:
     """The values, if each is defined and either zero or within 2^±MAGNITUDE_BITS; else _Declined."""
-    checked = []
     for value in values:
         # value[2] + value[3]: the binary magnitude of a nonzero value (numeric.magnitude_bits).
         if value is None or (value != ZERO and abs(value[2] + value[3]) > MAGNITUDE_BITS):
             raise _Declined
-        checked.append(value)
-    return checked
+    return list(values)  # type: ignore[arg-type]
 
 
 def _power(base: Mpf, exponent: Fraction, prec: int) -> Mpf | None:

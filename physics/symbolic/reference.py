@@ -135,9 +135,19 @@ class PreparedReference:
     def _grids(self) -> _Grids:
         return _Grids()
 
+    @cached_property
+    def token(self) -> object:
+        """This reference's own identity in memories of values at its points (physics.symbolic.quick),
+        which hold it: never reused by another reference, as an id() could be."""
+        return object()
+
     def __getstate__(self) -> dict[str, object]:
         # Pickled with a compiled part: not what is kept for answers (rebuilt on first use).
-        return {name: value for name, value in self.__dict__.items() if name not in ("_grids", "_judgements")}
+        return {
+            name: value
+            for name, value in self.__dict__.items()
+            if name not in ("_grids", "_judgements", "token")
+        }
 
     @cached_property
     def precise_columns(self) -> Mapping[sympy.Symbol, Column]:
@@ -253,6 +263,8 @@ def rename_symbols(expr: sympy.Basic, context: SymbolicContext) -> sympy.Basic:
 def _reference_side(expr: sympy.Basic, context: SymbolicContext, path: tuple[str | int, ...]) -> sympy.Expr:
     if not isinstance(expr, sympy.Expr):
         raise SpecError(f"{expr} is not an expression", path)
+    if over_context(expr, context):  # a read reference: nothing to make exact or rename (one walk)
+        return expr
     try:
         renamed = rename_symbols(exact_numbers(expr), context)
     except KeyError as missing:

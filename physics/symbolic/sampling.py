@@ -208,6 +208,9 @@ class _Batch:
     allowed: tuple[bool, ...]
     floats: Mapping[sympy.Symbol, Floats]
     rng_state: Any  # the generator's state after drawing this batch, to draw the next ones
+    # Subtrees of the references over this domain, bounded in float64 at these points: a new reference
+    # over a known domain is mostly made of subtrees an earlier one had (sin θ, M + m sin²θ).
+    bounded: dict[sympy.Basic, Bounded] = field(default_factory=dict, compare=False)
 
 
 _BATCH_CACHE_SIZE = 256
@@ -270,10 +273,14 @@ def _batch_key(
     return (symbols, tuple(constraints), size, seed, prec)
 
 
-def _bounded(
-    exprs: Sequence[sympy.Basic], floats: Mapping[sympy.Symbol, Floats], size: int
-) -> list[Bounded | None]:
-    evaluate = BoundedEvaluator(floats, size)
+_BOUNDED_KEPT = 256  # subtrees per batch
+
+
+def _bounded(exprs: Sequence[sympy.Basic], batch: _Batch, size: int) -> list[Bounded | None]:
+    kept = batch.bounded
+    if len(kept) > _BOUNDED_KEPT:
+        kept.clear()
+    evaluate = BoundedEvaluator(batch.floats, size, kept)
     found: list[Bounded | None] = []
     for expr in exprs:
         try:
@@ -339,12 +346,13 @@ def sample_domain(
             batch = _draw(symbols, axes, constraints, rng, size, prec)
             if batch_number == 0:
                 _remember_first_batch(context, constraints, size, seed, prec, batch)
-        bounded = _bounded(required, batch.floats, size)
+        bounded = _bounded(required, batch, size)
         ok = _defined(batch, required, bounded, prec)
         indexes = [i for i in range(size) if ok[i]][: size - found]
+        whole = len(indexes) == size  # the usual case: every point of the batch kept, in order
         for s in symbols:
-            kept[s].extend(batch.columns[s][i] for i in indexes)
-            kept_floats[s].append(batch.floats[s][indexes])
+            kept[s].extend(batch.columns[s] if whole else [batch.columns[s][i] for i in indexes])
+            kept_floats[s].append(batch.floats[s] if whole else batch.floats[s][indexes])
         for k, b in enumerate(bounded):
             if b is None or not b.precise(PRECISE_RELATIVE)[indexes].all():
                 precise[k] = False

@@ -14,7 +14,7 @@ from physics.checking import SymbolDecl, SymbolicQuestion
 from physics.mathinput import DEFAULT_LIMITS
 from physics.mathinput.reader import read_tree
 from physics.symbolic import numeric
-from physics.symbolic.judge import EQUIVALENT
+from physics.symbolic.judge import EQUIVALENT, FACTOR_FEEDBACK
 from physics.symbolic.quick import judged
 from physics.verdict import Judgement, Reason, Verdict
 from problems.kinds.symbolic import SymbolicJob
@@ -142,15 +142,17 @@ def test_what_the_tree_cannot_vouch_for_takes_the_full_path(
     assert asked.grade(answer, DEFAULT_LIMITS) == in_full(answer, asked, monkeypatch)
 
 
-def test_the_first_answer_to_a_new_reference_takes_the_full_path(monkeypatch: pytest.MonkeyPatch) -> None:
-    # An answer built equal to the reference is right before the reference's precise values are computed.
+def test_the_first_right_answer_to_a_new_reference_is_judged_on_its_tree(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # It computes the reference's precise values (two points) rather than building the answer.
     asked = question("r**2*g/(k**2 + r**2)", YOYO, answered=False)  # a reference text no other test uses
-    assert quick("g r^2/(r^2 + k^2)", asked) is None
+    assert "precise_values" not in asked.reference.__dict__
+    assert quick("g r^2/(r^2 + k^2)", asked) == EQUIVALENT
+    assert "precise_values" in asked.reference.__dict__
     assert asked.grade("g r^2/(r^2 + k^2)", DEFAULT_LIMITS) == in_full(
         "g r^2/(r^2 + k^2)", asked, monkeypatch
     )
-    assert "precise_values" not in asked.reference.__dict__
-    assert quick("g/(1 + k^2/r^2)", question(YOYO_A, YOYO)) == EQUIVALENT
 
 
 def test_a_wrong_answer_to_a_new_reference_is_judged_on_its_tree(monkeypatch: pytest.MonkeyPatch) -> None:
@@ -235,3 +237,59 @@ def test_the_remembered_function_values_stay_bounded(monkeypatch: pytest.MonkeyP
     for n in range(1, 30):
         quick_module._unary(sympy.sin, (0, n, 0, n.bit_length()), 53)
         assert len(quick_module._UNARY_VALUES) <= 8
+
+
+def test_a_subtree_shared_by_answers_to_a_reference_is_evaluated_once_at_each_set_of_points(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    asked = question(WEDGE_A, WEDGE)
+    grids: list[object] = []
+    add = quick_module._VALUE_RULES[quick_module.Sum]
+    monkeypatch.setitem(
+        quick_module._VALUE_RULES,
+        quick_module.Sum,
+        lambda self, node: grids.append(self._grid) or add(self, node),
+    )
+    monkeypatch.setattr(quick_module, "_SUBTREES", {})
+    # One sum each, the same one: evaluated at the precise points once, and once at each other set of
+    # points the wrong answers' diagnoses look at.
+    answers = [
+        "-m g sin θ cos θ/(M + m sin^2 θ)",
+        "-2 m g sin θ cos θ/(M + m sin^2 θ)",
+        "m g/(M + m sin^2 θ)",
+    ]
+    assert [quick(answer, asked) for answer in answers] == [
+        EQUIVALENT,
+        Judgement(False, Reason.CONSTANT_FACTOR, FACTOR_FEEDBACK),
+        quick(answers[2], asked),
+    ]
+    assert grids and len(grids) == len(set(grids))
+    for answer in answers:
+        assert asked.grade(answer, DEFAULT_LIMITS) == in_full(answer, asked, monkeypatch)
+
+
+def test_the_remembered_subtree_values_stay_bounded(monkeypatch: pytest.MonkeyPatch) -> None:
+    asked = question(WEDGE_A, WEDGE)
+    monkeypatch.setattr(quick_module, "_SUBTREES", {})
+    monkeypatch.setattr(quick_module, "SUBTREES_KEPT", 8)
+    for n in range(2, 12):
+        quick(f"(-m g sin θ cos θ/(M + m sin^2 θ)) (m + {n} M)/(m + {n} M)", asked)
+        assert len(quick_module._SUBTREES) <= 8
+
+
+def test_a_point_where_the_answer_is_undefined_leaves_the_other_points_their_values() -> None:
+    # Several points are evaluated in one walk; where one of them declines, each is evaluated alone.
+    asked = question(WEDGE_A, WEDGE)
+    columns = asked.reference.sample.columns
+    theta = asked.names["theta"]
+    first, second = (float(sympy.Float(columns[theta][i])) for i in (0, 1))  # type: ignore[arg-type]
+    middle = round((first + second) / 2, 6)
+    assert min(first, second) < middle < max(first, second)
+    reading = read_tree(f"m g log(θ - {middle})", asked.names)
+    symbols = {name: reading.symbols[name] for name in ("m", "g", "theta")}
+    keys = quick_module._Keys(symbols)
+    together = quick_module._TreeAtPoints(reading.tree, symbols, asked.reference, keys)((0, 1))
+    alone = [
+        quick_module._TreeAtPoints(reading.tree, symbols, asked.reference, keys)((i,))[0] for i in (0, 1)
+    ]
+    assert together == alone and together.count(None) == 1

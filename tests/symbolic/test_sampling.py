@@ -10,6 +10,7 @@ from mpmath import libmp
 
 from physics.errors import SpecError
 from physics.symbolic import SymbolicContext, SymbolSpec, make_symbol, prepare_reference
+from physics.symbolic.bounded import BoundedEvaluator
 from tests.symbolic.support import ACCELERATION, FORCE, M, context, g, m, mu, pi, sin, sqrt, tan, theta
 
 HALF_PI = float(pi / 2)
@@ -78,6 +79,26 @@ def test_the_same_reference_gets_the_same_points():
 
 def test_different_references_get_different_points():
     assert prepare_reference(m * g, context(m * g)).sample != prepare_reference(M * g, context(M * g)).sample
+
+
+def test_a_new_reference_over_a_known_domain_bounds_only_its_new_subtrees(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    wedge = m * g * sin(theta) / (M + m * sin(theta) ** 2)
+    first = prepare_reference(wedge, context(wedge))
+    evaluated: list[sympy.Basic] = []
+    evaluate = BoundedEvaluator._evaluate
+    monkeypatch.setattr(
+        BoundedEvaluator, "_evaluate", lambda self, expr: evaluated.append(expr) or evaluate(self, expr)
+    )
+    scaled = sympy.Rational(3, 4) * wedge
+    second = prepare_reference(scaled, context(scaled))
+    assert second.sample.columns == first.sample.columns
+    # The product itself and its new factor: sin θ, the denominator and the rest were bounded before.
+    assert set(evaluated) <= {scaled, sympy.Rational(3, 4)}
+    monkeypatch.undo()
+    afresh = BoundedEvaluator(second.sample.float_columns, second.sample.size)(scaled)
+    assert afresh.values.tolist() == second.floats.values.tolist()
 
 
 SPEC_ERRORS = [
