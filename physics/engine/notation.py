@@ -270,7 +270,7 @@ def _coordinate_words(name: str, model: Model) -> str:
         (0, 1): "upwards",
         (0, -1): "downwards",
     }
-    parts = [sympy.sympify(direction.get(axis, 0)) for axis in ("x", "y")]
+    parts = [direction.get(axis, sympy.Integer(0)) for axis in ("x", "y")]
     key = (int(parts[0]) if parts[0].is_Integer else 9, int(parts[1]) if parts[1].is_Integer else 9)
     way = says.get(key, "along the direction its position changes with it")
     others = [f"«{b.name}»" for b, _ in moved[1:]]
