@@ -1,0 +1,81 @@
+"""The worked solutions with the widest comparison tables and formulas (the moving wedge's four methods,
+the yo-yo's) at phone width: the page itself never scrolls sideways; a wide table or formula scrolls
+inside its own box."""
+
+from __future__ import annotations
+
+import shutil
+import time
+from collections.abc import Callable, Iterator
+from pathlib import Path
+from typing import Any
+
+import httpx
+import pytest
+
+from app.grading.pool import GradingPool
+from app.settings import Settings
+from problems.loader import BANK_DIR
+from tests.browser import WIDTHS, LiveServer, artifacts_dir, check_page, serve
+from tests.instructor.conftest import make_app
+from tests.instructor.test_pages_browser import signed_in_page
+
+pytestmark = [pytest.mark.browser, pytest.mark.slow]
+
+PROBLEMS = ("moving-wedge", "yo-yo")
+
+# Elements whose right edge passes the viewport's and that no scrolling box holds: the page would move
+# sideways under a thumb, and text past the edge cannot be read.
+_PAST_THE_EDGE = """() => {
+  const edge = document.documentElement.clientWidth + 1;
+  const past = [];
+  for (const el of document.querySelectorAll('main *')) {
+    const box = el.getBoundingClientRect();
+    if (box.width === 0 || box.right <= edge) continue;
+    let held = false;
+    for (let up = el.parentElement; up && !held; up = up.parentElement) {
+      held = ['auto', 'scroll', 'hidden'].includes(getComputedStyle(up).overflowX);
+    }
+    if (!held) past.push(el.tagName + ' ' + (el.textContent || '').trim().slice(0, 40));
+  }
+  return past;
+}"""
+
+
+@pytest.fixture(scope="module")
+def live_server(
+    page_grading_pool: GradingPool, tmp_path_factory: pytest.TempPathFactory
+) -> Iterator[LiveServer]:
+    bank: Path = tmp_path_factory.mktemp("bank")
+    for problem in PROBLEMS:
+        shutil.copytree(BANK_DIR / problem, bank / problem)
+    settings = Settings(
+        database_url="sqlite://",  # never opened: the app runs on the in-memory stores
+        secret="page-test-secret-0123456789",
+        check_workers=1,
+        bank_dir=bank,
+    )
+    app = make_app(settings, page_grading_pool)
+    for url in serve(app):
+        deadline = time.monotonic() + 180
+        while httpx.get(f"{url}/ready").status_code != 200:
+            assert time.monotonic() < deadline, "the bank did not compile"
+            time.sleep(0.2)
+        yield LiveServer(url, app)
+
+
+@pytest.mark.parametrize("problem", PROBLEMS)
+def test_a_phone_never_scrolls_the_solution_sideways(
+    live_server: LiveServer, browse: Callable[..., Any], problem: str
+) -> None:
+    page = signed_in_page(live_server, browse, f"/instructor/problems/{problem}/solution", WIDTHS["phone"])
+    page.wait_for_timeout(300)  # the math font
+    assert page.title().startswith("Worked solution")
+    assert page.evaluate(_PAST_THE_EDGE) == []
+    assert page.evaluate("document.documentElement.scrollWidth <= document.documentElement.clientWidth")
+    # the comparison of methods is read whole, each method a card of labelled lines, with no scrolling
+    table = page.locator(".comparison .table-wrap")
+    assert table.evaluate("el => el.scrollWidth <= el.clientWidth + 1")
+    assert "Constraint forces it names" in table.inner_text()
+    check_page(page, f"solution-{problem}-phone")
+    table.screenshot(path=str(artifacts_dir() / f"solution-{problem}-methods-phone.png"))
