@@ -84,4 +84,3 @@ def test_formulas_have_the_size_mathjax_gives_them(
         if t[0] > 0 and o[0] > 1.25 * t[0]
     ]
     assert not wider, wider[:5]
-
