@@ -22,6 +22,7 @@ from app.errors import install_error_handlers
 from app.grading.pool import GradingPool
 from app.heap import freeze_long_lived
 from app.instructor import router as instructor_routes
+from app.instructor.sign_in_limit import SignInLimiter
 from app.logs import configure_logging
 from app.lti import router as lti_routes
 from app.lti.context import LtiContext
@@ -114,6 +115,9 @@ def create_app(
             student_limiter=student_limiter,
             catalog=storage.catalog,
             authoring=authoring,
+            sign_in_limiter=SignInLimiter.build(
+                settings.redis_url, settings.sign_in_attempts_per_minute, settings.redis_prefix
+            ),
         )
         app.state.lti = LtiContext(
             storage.stores,

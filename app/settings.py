@@ -60,6 +60,8 @@ class Settings(BaseSettings):
     redis_prefix: str = Field(default="physcheck", min_length=1, max_length=64, pattern=r"^[A-Za-z0-9_.-]+$")
     rate_limit_per_minute: int = Field(default=600, ge=1)
     student_rate_limit_per_minute: int = Field(default=60, ge=1)
+    # Instructor sign-in attempts (the pages' form) from one address, and at one key prefix.
+    sign_in_attempts_per_minute: int = Field(default=10, ge=1)
 
     # An LTI launch whose id_token was issued longer ago than this is refused (a replayed old token).
     lti_max_token_age_seconds: int = Field(default=3600, ge=60)
