@@ -63,27 +63,28 @@ class _Walk:
         if not self.frames:
             return False
         frame = self.frames[-1]
-        if frame.mapping:
-            if frame.expect_key:
-                frame.expect_key = False
-                frame.step = key_text if key_text is not None else "?"
-                self.keys += 1
-                if self.keys > MAX_KEYS:
-                    self._refuse(f"the document has more than {MAX_KEYS} keys")
-                return True
-            frame.expect_key = True
+        if frame.mapping and not frame.expect_key:
+            frame.expect_key = True  # the value of the key just read
             return False
-        frame.step = frame.items
+        if frame.mapping:
+            frame.expect_key = False
+            frame.step = key_text if key_text is not None else "?"
+            self.keys += 1
+            if self.keys > MAX_KEYS:
+                self._refuse(f"the document has more than {MAX_KEYS} keys")
+        else:
+            frame.step = frame.items
+            self.list_items += 1
+            if self.list_items > MAX_LIST_ITEMS:
+                self._refuse(f"the document has more than {MAX_LIST_ITEMS} list entries")
         frame.items += 1
-        self.list_items += 1
-        if self.list_items > MAX_LIST_ITEMS:
-            self._refuse(f"the document has more than {MAX_LIST_ITEMS} list entries")
-        steps = tuple(f.step for f in self.frames)
-        if steps == ("parts", frame.items - 1) and frame.items > MAX_PARTS:
+        # Parts are a list; a model's bodies a mapping by name (or a list): entries either way.
+        where = tuple(f.step for f in self.frames[:-1])
+        if where == ("parts",) and frame.items > MAX_PARTS:
             self._refuse(f"the document has more than {MAX_PARTS} parts")
-        if steps == ("model", "bodies", frame.items - 1) and frame.items > MAX_BODIES:
+        if where == ("model", "bodies") and frame.items > MAX_BODIES:
             self._refuse(f"the model has more than {MAX_BODIES} bodies")
-        return False
+        return frame.mapping
 
     def scalar(self, text: str) -> None:
         is_key = self._node(text)

@@ -33,7 +33,7 @@ def _many(path: str, count: int) -> bytes:
     if path == "parts":
         doc["parts"] = [dict(doc["parts"][0], id=f"p{i}") for i in range(count)]
     else:
-        doc["model"]["bodies"] = [{"name": f"b{i}"} for i in range(count)]
+        doc["model"]["bodies"] = {f"b{i}": {"mass": "m1", "position": {"y": "s"}} for i in range(count)}
     return json.dumps(doc).encode()
 
 
@@ -44,7 +44,7 @@ CASES = [
     ("yaml-20000-levels", b"a: " + b"{b: " * 20_000 + b"1" + b"}" * 20_000, YAML, "a.b.b", "nested more"),
     ("20000-keys", _junk_keys(20_000), JSON, "", f"more than {MAX_KEYS} keys"),
     ("too-many-parts", _many("parts", MAX_PARTS + 1), JSON, f"parts[{MAX_PARTS}]", "parts"),
-    ("too-many-bodies", _many("bodies", MAX_BODIES + 1), JSON, f"model.bodies[{MAX_BODIES}]", "bodies"),
+    ("too-many-bodies", _many("bodies", MAX_BODIES + 1), JSON, f"model.bodies.b{MAX_BODIES}", "bodies"),
     ("long-text", json.dumps({"id": "x", "statement": "a" * 30_000}).encode(), JSON, "statement", "longer"),
     ("over-256-KiB", b" " * (300 * 1024) + b"{}", JSON, "", "larger than 256 KiB"),
 ]
