@@ -30,6 +30,9 @@ class Settings(BaseSettings):
     model_config = SettingsConfigDict(env_prefix="PHYSCHECK_", extra="ignore")
 
     database_url: str = "sqlite:///./physcheck.db"
+    # Every wait on the database (a connection, a lock, a statement, a server that never answers) ends
+    # after about this long with 503 + Retry-After rather than holding the request.
+    database_timeout_seconds: float = Field(default=5.0, gt=0, le=300)
     # Server secret for per-student variants and session cookies; a fresh one per start is safe
     # for development only, since variants would change between restarts.
     secret: str = Field(default=DEVELOPMENT_SECRET, min_length=8)
