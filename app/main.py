@@ -84,6 +84,7 @@ def create_app(
             queue_size=settings.check_queue_size,
             max_answer_chars=settings.max_answer_chars,
             per_owner=settings.student_checks_in_flight,
+            log_answers=settings.log_answers,
         )
         # The workers' fork server imports the checker while this process opens storage: side by side.
         try:

@@ -76,6 +76,9 @@ class Settings(BaseSettings):
     # code), each in a process of its own: about a minute for the bank on one core.
     derive_jobs: int = Field(default_factory=cores, ge=1)
     log_level: str = "INFO"
+    # Students' answers are personal data: the log names the submission (problem, part, student,
+    # verdict) but not what was typed, unless an operator turns this on (to debug a reading, say).
+    log_answers: bool = False
 
     @model_validator(mode="after")
     def no_public_secret_in_production(self) -> Settings:
