@@ -31,7 +31,7 @@ from app.middleware import RequestContext
 from app.openapi import install_docs
 from app.ratelimit import rate_limiters
 from app.routers import authoring as authoring_routes
-from app.routers import check, health, problems, submissions
+from app.routers import check, health, problems, student_data, submissions
 from app.services import Services
 from app.settings import Settings, get_settings
 from app.startup import Storage, open_storage_when_reachable
@@ -159,6 +159,7 @@ def create_app(
     app.include_router(check.router)
     app.include_router(problems.router)
     app.include_router(submissions.router)
+    app.include_router(student_data.router)
     app.include_router(authoring_routes.router)
     app.include_router(lti_routes.router)
     app.include_router(web_routes.router)
