@@ -1,8 +1,9 @@
 """A student's personal data, for the requests schools receive: export it all, or erase it all.
 
     GET    /v1/student-data?student=S   every submission, attempt count, LMS grade target (with the
-                                        scores queued for it) and LMS session of S, as JSON
-    DELETE /v1/student-data?student=S   erase all of it at once; the counts of what was deleted
+                                        scores queued for it), LMS session and API key of S, as JSON
+    DELETE /v1/student-data?student=S   erase all of it at once (keys are revoked and their names
+                                        removed); the counts of what was deleted
 
 Instructor API keys only (they act for students); an LMS session acts only for itself, so it may not.
 """
@@ -64,12 +65,20 @@ class LtiSessionPublic(BaseModel):
     expires_at: datetime
 
 
+class StudentKeyPublic(BaseModel):
+    id: int
+    name: str | None
+    created_at: datetime
+    revoked_at: datetime | None
+
+
 class StudentDataPublic(BaseModel):
     student: str
     submissions: list[SubmissionPublic]
     attempts: list[AttemptsPublic]
     grade_targets: list[GradeTargetPublic]
     lti_sessions: list[LtiSessionPublic]
+    keys: list[StudentKeyPublic]
 
 
 class ErasedCounts(BaseModel):
@@ -78,6 +87,7 @@ class ErasedCounts(BaseModel):
     grade_targets: int
     scores: int
     lti_sessions: int
+    keys: int
 
 
 class StudentErased(BaseModel):
@@ -114,6 +124,7 @@ async def erase_student(student: StudentQuery, services: ServicesDep, principal:
             grade_targets=erased.grade_targets,
             scores=erased.scores,
             lti_sessions=erased.lti_sessions,
+            keys=erased.keys,
         ),
     )
 
@@ -144,5 +155,9 @@ def _public(data: StudentData) -> StudentDataPublic:
         lti_sessions=[
             LtiSessionPublic(issuer=s.issuer, sub=s.sub, role=s.role, name=s.name, expires_at=s.expires_at)
             for s in data.lti_sessions
+        ],
+        keys=[
+            StudentKeyPublic(id=k.id, name=k.name, created_at=k.created_at, revoked_at=k.revoked_at)
+            for k in data.keys
         ],
     )

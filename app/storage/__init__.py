@@ -114,9 +114,9 @@ def memory_stores(*, clock: Clock = utc_now) -> Stores:
     hooks: list[MemoryFilingHook] = []
     submissions = MemorySubmissionStore(problems, hooks, clock=clock)
     hooks.append(grade_queue(outbox, problems, submissions.all))
-    platforms, lti_sessions = MemoryPlatformStore(), MemoryLtiSessionStore()
+    platforms, lti_sessions, keys = MemoryPlatformStore(), MemoryLtiSessionStore(), MemoryApiKeyStore(clock)
     return Stores(
-        keys=MemoryApiKeyStore(clock),
+        keys=keys,
         problems=problems,
         submissions=submissions,
         compiled=MemoryCompiledCache(),
@@ -125,5 +125,5 @@ def memory_stores(*, clock: Clock = utc_now) -> Stores:
         platforms=platforms,
         launches=MemoryLaunchStore(),
         lti_sessions=lti_sessions,
-        student_data=MemoryStudentData(submissions, outbox, lti_sessions, platforms),
+        student_data=MemoryStudentData(submissions, outbox, lti_sessions, platforms, keys),
     )

@@ -1,6 +1,7 @@
 """One student's personal data, as a school's export or erasure request needs it: every submission,
 the attempts counted, where their scores go in an LMS (grade targets) and the scores queued there,
-and the sessions LMS launches opened for them. A protocol with its SQL and in-memory implementations.
+the sessions LMS launches opened for them, and their API keys. A protocol with its SQL and in-memory
+implementations.
 
 Erasure is the one exception to "submissions are append-only": the database lets a DELETE through only
 for a student named in `student_erasures`, a row that exists only inside the erasing transaction.
@@ -8,18 +9,20 @@ for a student named in `student_erasures`, a row that exists only inside the era
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from datetime import datetime
 from typing import Protocol
 
-from sqlalchemy import delete, select
+from sqlalchemy import delete, func, select, update
 
+from app.db import keys as key_repository
 from app.db.database import Database
-from app.db.models import AttemptCounter, StudentErasure, Submission
+from app.db.models import ApiKey, AttemptCounter, StudentErasure, Submission
 from app.db.records import SubmissionRecord
 from app.db.submissions import _record as submission_record
+from app.db.types import utc_now
 from app.lti.models import LtiGradeTarget, LtiPlatform, LtiScoreOutbox, LtiSession
-from app.storage.memory import MemoryScoreOutbox, MemorySubmissionStore
+from app.storage.memory import MemoryApiKeyStore, MemoryScoreOutbox, MemorySubmissionStore
 from app.storage.memory_lti import MemoryLtiSessionStore, MemoryPlatformStore
 
 
@@ -59,12 +62,23 @@ class LaunchSession:
 
 
 @dataclass(frozen=True)
+class StudentKey:
+    """A student API key (never its secret, which is stored only as a hash)."""
+
+    id: int
+    name: str | None
+    created_at: datetime
+    revoked_at: datetime | None
+
+
+@dataclass(frozen=True)
 class StudentData:
     student: str
     submissions: list[SubmissionRecord]
     attempts: list[AttemptsUsed]
     grade_targets: list[GradeTarget]
     lti_sessions: list[LaunchSession]
+    keys: list[StudentKey]
 
 
 @dataclass(frozen=True)
@@ -76,6 +90,7 @@ class Erased:
     grade_targets: int
     scores: int
     lti_sessions: int
+    keys: int  # revoked and their names removed (kept as rows: key ids are never reused)
 
 
 class StudentDataStore(Protocol):
@@ -84,7 +99,8 @@ class StudentDataStore(Protocol):
         ...
 
     def erase(self, student: str) -> Erased:
-        """Delete everything stored about `student`, at once (one transaction)."""
+        """Delete everything stored about `student`, at once (one transaction); revoke their API keys
+        and remove the keys' names."""
         ...
 
 
@@ -137,7 +153,13 @@ class SqlStudentData:
                     .order_by(LtiSession.created_at)
                 )
             ]
-        return StudentData(student, submissions, attempts, targets, sessions)
+            keys = [
+                StudentKey(row.id, row.name, row.created_at, row.revoked_at)
+                for row in session.scalars(
+                    select(ApiKey).where(ApiKey.student == student).order_by(ApiKey.id)
+                )
+            ]
+        return StudentData(student, submissions, attempts, targets, sessions, keys)
 
     def erase(self, student: str) -> Erased:
         with self._database.session() as session:
@@ -160,8 +182,16 @@ class SqlStudentData:
                 lti_sessions=_deleted(
                     session.execute(delete(LtiSession).where(LtiSession.student == student))
                 ),
+                keys=_deleted(
+                    session.execute(
+                        update(ApiKey)
+                        .where(ApiKey.student == student)
+                        .values(name=None, revoked_at=func.coalesce(ApiKey.revoked_at, utc_now()))
+                    )
+                ),
             )
             session.execute(delete(StudentErasure).where(StudentErasure.student == student))
+        key_repository.revocations += 1  # caches of authenticated keys drop at once
         return counts
 
 
@@ -178,9 +208,10 @@ class MemoryStudentData:
         outbox: MemoryScoreOutbox,
         sessions: MemoryLtiSessionStore,
         platforms: MemoryPlatformStore,
+        keys: MemoryApiKeyStore,
     ) -> None:
         self._submissions, self._outbox, self._sessions = submissions, outbox, sessions
-        self._platforms = platforms
+        self._platforms, self._keys = platforms, keys
 
     def export(self, student: str) -> StudentData:
         with self._submissions._lock, self._outbox._lock, self._sessions._lock:
@@ -215,7 +246,12 @@ class MemoryStudentData:
                 for r in self._sessions._sessions.values()
                 if r.student == student
             ]
-        return StudentData(student, list(submissions), attempts, targets, sessions)
+        keys = [
+            StudentKey(r.id, r.name, r.created_at, r.revoked_at)
+            for r in self._keys.list()
+            if r.student == student
+        ]
+        return StudentData(student, list(submissions), attempts, targets, sessions, keys)
 
     def erase(self, student: str) -> Erased:
         with self._submissions._lock, self._outbox._lock, self._sessions._lock:
@@ -231,8 +267,23 @@ class MemoryStudentData:
                 grade_targets=len(self._outbox._targets) - len(targets),
                 scores=len(self._outbox._rows) - len(scores),
                 lti_sessions=len(self._sessions._sessions) - len(sessions),
+                keys=self._forget_keys(student),
             )
             subs._rows, subs._used = kept_rows, used
             self._outbox._targets, self._outbox._rows = targets, scores
             self._sessions._sessions = sessions
         return erased
+
+    def _forget_keys(self, student: str) -> int:
+        """Revoke the student's keys and remove their names; how many."""
+        with self._keys._lock:
+            rows = self._keys._rows
+            mine = [key_id for key_id, (_, record) in rows.items() if record.student == student]
+            for key_id in mine:
+                stored_hash, record = rows[key_id]
+                rows[key_id] = (
+                    stored_hash,
+                    replace(record, name=None, revoked_at=record.revoked_at or utc_now()),
+                )
+        key_repository.revocations += 1
+        return len(mine)

@@ -30,7 +30,7 @@ def test_an_instructor_exports_one_students_data(client: TestClient, instructor_
     assert data["student"] == "eve"
     assert [s["answer"] for s in data["submissions"]] == ["g (m2 - m1)/(m1 + m2)", "g"]
     assert data["attempts"] == [{"problem": "atwood", "part": "acceleration", "used": 2}]
-    assert data["grade_targets"] == [] and data["lti_sessions"] == []
+    assert data["grade_targets"] == [] and data["lti_sessions"] == [] and data["keys"] == []
 
 
 def test_an_instructor_erases_one_students_data_and_no_one_elses(
@@ -38,6 +38,8 @@ def test_an_instructor_erases_one_students_data_and_no_one_elses(
 ):
     _file(client, instructor_headers, "eve", "g (m2 - m1)/(m1 + m2)")
     _file(client, instructor_headers, "bob", "2 g")
+    eves_key = key_headers(client, "student", "Eve Example", student="eve")
+    assert client.get("/v1/problems", headers=eves_key).status_code == 200
     response = client.delete(DATA, params={"student": "eve"}, headers=instructor_headers)
     assert response.status_code == 200, response.text
     assert response.json() == {
@@ -48,12 +50,16 @@ def test_an_instructor_erases_one_students_data_and_no_one_elses(
             "grade_targets": 0,
             "scores": 0,
             "lti_sessions": 0,
+            "keys": 1,
         },
     }
     listed = client.get("/v1/submissions", params={"student": "eve"}, headers=instructor_headers).json()
     assert listed["items"] == []
     exported = client.get(DATA, params={"student": "eve"}, headers=instructor_headers).json()
     assert exported["submissions"] == [] and exported["attempts"] == []
+    [key] = exported["keys"]
+    assert key["name"] is None and key["revoked_at"] is not None
+    assert client.get("/v1/problems", headers=eves_key).status_code == 401  # her key is revoked at once
     bob = client.get("/v1/submissions", params={"student": "bob"}, headers=instructor_headers).json()
     assert [item["answer"] for item in bob["items"]] == ["2 g"]
 

@@ -42,6 +42,7 @@ def _two_students(stores: Stores) -> None:
             platform.id, sub, student, Role.STUDENT, f"Name of {sub}", "csrf", now + timedelta(hours=8)
         )
         stores.lti_sessions.save(f"session-{sub}", record, now)
+        stores.keys.create(Role.STUDENT, name=f"Key of {sub}", student=student)
 
 
 def test_export_holds_everything_of_one_student_and_nothing_of_others(stores: Stores):
@@ -56,12 +57,20 @@ def test_export_holds_everything_of_one_student_and_nothing_of_others(stores: St
     assert len(target.scores) >= 1
     [session] = data.lti_sessions
     assert (session.issuer, session.sub, session.name) == (ISSUER, "erased", "Name of erased")
+    [key] = data.keys
+    assert (key.name, key.revoked_at) == ("Key of erased", None)
 
 
 def test_an_unknown_student_exports_empty(stores: Stores):
     _two_students(stores)
     data = stores.student_data.export("nobody")
-    assert (data.submissions, data.attempts, data.grade_targets, data.lti_sessions) == ([], [], [], [])
+    assert (data.submissions, data.attempts, data.grade_targets, data.lti_sessions, data.keys) == (
+        [],
+        [],
+        [],
+        [],
+        [],
+    )
 
 
 def test_erase_removes_one_students_data_and_keeps_the_others(stores: Stores):
@@ -70,7 +79,7 @@ def test_erase_removes_one_students_data_and_keeps_the_others(stores: Stores):
     scores_before = len(stores.outbox.scores())
     erased = stores.student_data.erase(ERASED)
     assert erased == Erased(
-        submissions=2, attempt_counters=1, grade_targets=1, scores=erased.scores, lti_sessions=1
+        submissions=2, attempt_counters=1, grade_targets=1, scores=erased.scores, lti_sessions=1, keys=1
     )
     assert erased.scores >= 1 and len(stores.outbox.scores()) == scores_before - erased.scores
     after = stores.student_data.export(ERASED)
@@ -78,8 +87,11 @@ def test_erase_removes_one_students_data_and_keeps_the_others(stores: Stores):
     assert stores.submissions.page(student=ERASED).items == []
     assert stores.submissions.attempts_used(PROBLEM, PART, ERASED) == 0
     assert stores.lti_sessions.get("session-erased") is None
+    [key] = after.keys  # kept as a row, revoked and nameless
+    assert key.name is None and key.revoked_at is not None
+    assert [k.revoked for k in stores.keys.list() if k.student == ERASED] == [True]
     assert stores.student_data.export(KEPT) == kept_before
-    assert stores.student_data.erase(ERASED) == Erased(0, 0, 0, 0, 0)  # again: nothing left
+    assert stores.student_data.erase(ERASED) == Erased(0, 0, 0, 0, 0, keys=1)  # again: the key row stays
 
 
 def test_an_erased_student_starts_afresh(stores: Stores):
