@@ -91,3 +91,26 @@ def test_a_document_at_the_depth_limit_is_read(fmt):
     deep = _deep_json if fmt == "json" else _deep_yaml
     assert shape_errors(deep(MAX_DEPTH - 1), fmt) == []  # the document itself is the first level
     assert shape_errors(deep(MAX_DEPTH), fmt) != []
+
+
+@pytest.mark.parametrize(
+    ("source", "fmt"),
+    [
+        (json.dumps({"id": "x", "statement": "[{" * 900 + ' \\" ' + "}]" * 900}).encode(), "json"),
+        (b"id: x\nstatement: '" + b"[{" * 900 + b"'\n", "yaml"),
+        (b"id: x\nstatement: |\n  " + b"- " * 900 + b"\n", "yaml"),
+    ],
+    ids=["json-brackets-in-a-string", "yaml-brackets-in-a-string", "yaml-dashes-in-a-block"],
+)
+def test_brackets_inside_text_are_not_nesting(source: bytes, fmt: str):
+    assert shape_errors(source, fmt) == []
+
+
+def test_block_style_yaml_nesting_is_counted_too():
+    source = (
+        "".join(f"{'  ' * level}k{level}:\n" for level in range(MAX_DEPTH + 5))
+        + "  " * (MAX_DEPTH + 5)
+        + "v\n"
+    )
+    [(path, message)] = shape_errors(source.encode(), "yaml")
+    assert path.startswith("k0.k1.k2") and "nested more than" in message
