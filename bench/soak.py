@@ -183,10 +183,11 @@ class Soak:
 
     async def faults_loop(self, until: float) -> None:
         cycle = ["kill-worker", "black-hole"] + (["cut-database"] if self.proxy is not None else [])
-        for fault in iter(lambda: cycle[len(self.faults) % len(cycle)], None):
+        while True:
             await asyncio.sleep(self.args.fault_every)
             if time.monotonic() + self.args.fault_seconds > until:
                 return
+            fault = cycle[len(self.faults) % len(cycle)]
             self.faults.append(fault)
             await getattr(self, fault.replace("-", "_"))()
 
@@ -204,9 +205,9 @@ class Soak:
             self.proxy.forward()
             return
         path = self.database_url.removeprefix("sqlite:///")
-        holder = sqlite3.connect(path, isolation_level=None, timeout=30)
+        holder = sqlite3.connect(path, isolation_level=None, timeout=30, check_same_thread=False)
         try:
-            holder.execute("BEGIN IMMEDIATE")
+            await asyncio.to_thread(holder.execute, "BEGIN IMMEDIATE")  # waits for the server's writes
             await asyncio.sleep(self.args.fault_seconds)
         finally:
             holder.execute("ROLLBACK")
