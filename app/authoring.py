@@ -25,6 +25,7 @@ from problems.compiled import compile_problem
 from problems.locate import locate
 from problems.modelinfo import load_doc_model
 from problems.schema import ProblemDocument
+from problems.shape import shape_errors
 from problems.symbols import symbol_table
 from problems.variants import fixed_variant, si_values
 from problems.vetting import vet_document
@@ -53,6 +54,9 @@ class Vetted:
 
 def vet(source: bytes, fmt: Literal["json", "yaml"]) -> Vetted:
     """Every fault of an upload with its path, and the line each is on."""
+    too_large = shape_errors(source, fmt)  # the pool checked already; the command line's import did not
+    if too_large:
+        return Vetted(None, too_large)
     try:
         vetted = _vet(source, fmt)
     except MemoryError:
@@ -135,7 +139,13 @@ class AuthoringPool:
 
     async def vet(self, source: bytes, fmt: Literal["json", "yaml"], owner: str | None = None) -> Vetted:
         """Vet in the worker; 503 + Retry-After when the queue is full or `owner` (an instructor key)
-        already has an upload being vetted, or when the worker cannot take it (being replaced)."""
+        already has an upload being vetted, or when the worker cannot take it (being replaced).
+
+        A document over a size or shape limit is refused here, never queued: nothing recursive reads
+        it, and junk cannot hold the one vetting worker for its whole time limit."""
+        too_large = await asyncio.to_thread(shape_errors, source, fmt)
+        if too_large:
+            return Vetted(None, too_large)
         if self._in_flight >= self._capacity:
             raise Busy("Uploads are queued to the limit; try again shortly.", retry_after=UPLOAD_RETRY_AFTER)
         if owner is not None and owner in self._owners:

@@ -184,8 +184,20 @@ def install_error_handlers(app: FastAPI) -> None:
             log.error("unmapped storage error: %r", error)
         return _json(status, code, str(error))
 
+    async def refused_caller(request: Request) -> JSONResponse | None:
+        # Imported here: the check needs the dependencies, which raise the errors defined above.
+        from app.auth_first import caller_refusal
+
+        refusal = await caller_refusal(request)
+        return None if refusal is None else await app_error(request, refusal)
+
     @app.exception_handler(RequestValidationError)
     async def malformed(request: Request, error: RequestValidationError) -> JSONResponse:
+        if any(e.get("type") == "json_invalid" for e in error.errors()):
+            # The body was read before the caller was known: the caller first (app/auth_first.py).
+            refused = await refused_caller(request)
+            if refused is not None:
+                return refused
         details = [
             {"path": _path(e.get("loc", ())), "message": _message(e.get("msg", "invalid"))}
             for e in error.errors()
@@ -196,7 +208,10 @@ def install_error_handlers(app: FastAPI) -> None:
     async def http_error(request: Request, error: StarletteHTTPException) -> JSONResponse:
         if error.status_code == 400 and error.__cause__ is not None:
             # FastAPI answers 400 when decoding the JSON body raised anything but JSONDecodeError;
-            # the contract calls every unreadable body a malformed request.
+            # the contract calls every unreadable body a malformed request, once the caller may call.
+            refused = await refused_caller(request)
+            if refused is not None:
+                return refused
             return _json(422, "malformed_request", unreadable_body_message(error.__cause__))
         code = _HTTP_CODES.get(error.status_code, "error")
         return _json(error.status_code, code, str(error.detail), headers=getattr(error, "headers", None))

@@ -22,6 +22,7 @@ from app.errors import install_error_handlers
 from app.grading.pool import GradingPool
 from app.heap import freeze_long_lived
 from app.instructor import router as instructor_routes
+from app.instructor.sign_in_limit import SignInLimiter
 from app.logs import configure_logging
 from app.lti import router as lti_routes
 from app.lti.context import LtiContext
@@ -30,7 +31,7 @@ from app.middleware import RequestContext
 from app.openapi import install_docs
 from app.ratelimit import rate_limiters
 from app.routers import authoring as authoring_routes
-from app.routers import check, health, problems, submissions
+from app.routers import check, health, problems, student_data, submissions
 from app.services import Services
 from app.settings import Settings, get_settings
 from app.startup import Storage, open_storage_when_reachable
@@ -83,6 +84,7 @@ def create_app(
             queue_size=settings.check_queue_size,
             max_answer_chars=settings.max_answer_chars,
             per_owner=settings.student_checks_in_flight,
+            log_answers=settings.log_answers,
         )
         # The workers' fork server imports the checker while this process opens storage: side by side.
         try:
@@ -114,6 +116,9 @@ def create_app(
             student_limiter=student_limiter,
             catalog=storage.catalog,
             authoring=authoring,
+            sign_in_limiter=SignInLimiter.build(
+                settings.redis_url, settings.sign_in_attempts_per_minute, settings.redis_prefix
+            ),
         )
         app.state.lti = LtiContext(
             storage.stores,
@@ -154,6 +159,7 @@ def create_app(
     app.include_router(check.router)
     app.include_router(problems.router)
     app.include_router(submissions.router)
+    app.include_router(student_data.router)
     app.include_router(authoring_routes.router)
     app.include_router(lti_routes.router)
     app.include_router(web_routes.router)

@@ -9,6 +9,7 @@ from app.authoring import AuthoringPool
 from app.catalog import Catalog
 from app.db.database import Database
 from app.grading.pool import GradingPool
+from app.instructor.sign_in_limit import SignInLimiter
 from app.ratelimit import RateLimiter
 from app.schemas.check import VerdictJson
 from app.settings import Settings
@@ -27,3 +28,4 @@ class Services:
     catalog: Catalog
     authoring: AuthoringPool
     verdict_json: VerdictJson = field(default_factory=VerdictJson)
+    sign_in_limiter: SignInLimiter | None = None  # the instructor pages' form; None: not limited

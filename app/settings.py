@@ -30,6 +30,9 @@ class Settings(BaseSettings):
     model_config = SettingsConfigDict(env_prefix="PHYSCHECK_", extra="ignore")
 
     database_url: str = "sqlite:///./physcheck.db"
+    # Every wait on the database (a connection, a lock, a statement, a server that never answers) ends
+    # after about this long with 503 + Retry-After rather than holding the request.
+    database_timeout_seconds: float = Field(default=5.0, gt=0, le=300)
     # Server secret for per-student variants and session cookies; a fresh one per start is safe
     # for development only, since variants would change between restarts.
     secret: str = Field(default=DEVELOPMENT_SECRET, min_length=8)
@@ -60,6 +63,8 @@ class Settings(BaseSettings):
     redis_prefix: str = Field(default="physcheck", min_length=1, max_length=64, pattern=r"^[A-Za-z0-9_.-]+$")
     rate_limit_per_minute: int = Field(default=600, ge=1)
     student_rate_limit_per_minute: int = Field(default=60, ge=1)
+    # Instructor sign-in attempts (the pages' form) from one address, and at one key prefix.
+    sign_in_attempts_per_minute: int = Field(default=10, ge=1)
 
     # An LTI launch whose id_token was issued longer ago than this is refused (a replayed old token).
     lti_max_token_age_seconds: int = Field(default=3600, ge=60)
@@ -71,6 +76,9 @@ class Settings(BaseSettings):
     # code), each in a process of its own: about a minute for the bank on one core.
     derive_jobs: int = Field(default_factory=cores, ge=1)
     log_level: str = "INFO"
+    # Students' answers are personal data: the log names the submission (problem, part, student,
+    # verdict) but not what was typed, unless an operator turns this on (to debug a reading, say).
+    log_answers: bool = False
 
     @model_validator(mode="after")
     def no_public_secret_in_production(self) -> Settings:

@@ -27,7 +27,7 @@ STARTUP_RETRY_MAX_SECONDS = 10.0
 def open_database(settings: Settings) -> Database:
     """Migrate to the newest schema (safe when several instances start at once), then connect."""
     migrate(settings.database_url)
-    return Database(settings.database_url)
+    return Database(settings.database_url, timeout_seconds=settings.database_timeout_seconds)
 
 
 # How long a key, once found active, is believed without asking the database again: a revocation in

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 import sqlite3
 import time
 from collections.abc import Iterator
@@ -12,6 +13,8 @@ from sqlalchemy import Engine, create_engine, event, text
 from sqlalchemy.engine import Connection, make_url
 from sqlalchemy.orm import Session, sessionmaker
 
+from app.db.deadline import ConnectionDeadlines
+
 # How long a SQLite connection waits for another writer before failing with "database is locked".
 DEFAULT_SQLITE_BUSY_TIMEOUT_MS = 10_000
 # Seconds to wait for a PostgreSQL connection (libpq's connect_timeout; a URL may set its own).
@@ -21,21 +24,44 @@ _SQLITE_BEGIN_OPTION = "physcheck_sqlite_begin"
 
 
 def create_database_engine(
-    url: str, *, sqlite_busy_timeout_ms: int = DEFAULT_SQLITE_BUSY_TIMEOUT_MS
+    url: str,
+    *,
+    sqlite_busy_timeout_ms: int = DEFAULT_SQLITE_BUSY_TIMEOUT_MS,
+    timeout_seconds: float | None = None,
 ) -> Engine:
-    """An engine for `sqlite:///path` or `postgresql+psycopg://...`, with the settings each needs."""
+    """An engine for `sqlite:///path` or `postgresql+psycopg://...`, with the settings each needs.
+
+    `timeout_seconds` (the server's; migrations run without one) bounds every wait on the database:
+    for a free connection from the pool, a lock (SQLite's busy timeout, PostgreSQL's statement_timeout)
+    and, on PostgreSQL, a server that never answers (app/db/deadline.py). Past it, the call fails with
+    a database error, which the service answers 503 + Retry-After.
+    """
     parsed = make_url(url)
+    pool = {} if timeout_seconds is None else {"pool_timeout": timeout_seconds}
     if parsed.get_backend_name() == "sqlite":
         if parsed.database in (None, "", ":memory:") or parsed.query.get("mode") == "memory":
             # Each connection would get its own empty database, and migrations would vanish with theirs.
             raise ValueError("in-memory SQLite is not supported; give a file path (sqlite:///path.db)")
-        engine = create_engine(url, connect_args={"check_same_thread": False})
-        _configure_sqlite(engine, sqlite_busy_timeout_ms)
+        engine = create_engine(url, connect_args={"check_same_thread": False}, **pool)
+        busy_ms = sqlite_busy_timeout_ms if timeout_seconds is None else int(timeout_seconds * 1000)
+        _configure_sqlite(engine, busy_ms)
         return engine
     if parsed.get_backend_name() == "postgresql":
         # A database host that does not answer fails a connection in seconds (then 503), not minutes.
-        timeout = {} if "connect_timeout" in parsed.query else {"connect_timeout": POSTGRES_CONNECT_TIMEOUT}
-        return create_engine(url, pool_pre_ping=True, connect_args=timeout)
+        connect_timeout = (
+            POSTGRES_CONNECT_TIMEOUT if timeout_seconds is None else max(2, math.ceil(timeout_seconds))
+        )
+        connect_args: dict[str, Any] = (
+            {} if "connect_timeout" in parsed.query else {"connect_timeout": connect_timeout}
+        )
+        if timeout_seconds is not None:
+            # A statement waiting on a lock, or slow, is ended by the server itself.
+            connect_args["options"] = f"-c statement_timeout={int(timeout_seconds * 1000)}"
+        engine = create_engine(url, pool_pre_ping=True, connect_args=connect_args, **pool)
+        if timeout_seconds is not None:
+            # The server's own timeout does nothing when the server never answers: cut from here.
+            ConnectionDeadlines(timeout_seconds).install(engine)
+        return engine
     raise ValueError(f"unsupported database backend {parsed.get_backend_name()!r}; use sqlite or postgresql")
 
 
@@ -87,9 +113,17 @@ def _use_wal(cursor: Any, busy_timeout_ms: int) -> None:
 class Database:
     """The engine and session factory for one database URL."""
 
-    def __init__(self, url: str, *, sqlite_busy_timeout_ms: int = DEFAULT_SQLITE_BUSY_TIMEOUT_MS) -> None:
+    def __init__(
+        self,
+        url: str,
+        *,
+        sqlite_busy_timeout_ms: int = DEFAULT_SQLITE_BUSY_TIMEOUT_MS,
+        timeout_seconds: float | None = None,
+    ) -> None:
         self.url = url
-        self.engine = create_database_engine(url, sqlite_busy_timeout_ms=sqlite_busy_timeout_ms)
+        self.engine = create_database_engine(
+            url, sqlite_busy_timeout_ms=sqlite_busy_timeout_ms, timeout_seconds=timeout_seconds
+        )
         self._sessions = sessionmaker(self.engine, expire_on_commit=False)
         # The same pool, with connections that begin deferred (no write lock) on SQLite.
         self._read_engine = self.engine.execution_options(**{_SQLITE_BEGIN_OPTION: "DEFERRED"})

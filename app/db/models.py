@@ -137,3 +137,13 @@ class AttemptCounter(Base):
     part_id: Mapped[str] = mapped_column(String(ID_LENGTH), primary_key=True)
     student: Mapped[str] = mapped_column(String(STUDENT_LENGTH), primary_key=True)
     used: Mapped[int] = mapped_column(Integer, default=0)
+
+
+class StudentErasure(Base):
+    """A permit to delete one student's submissions, held only inside the transaction that erases them
+    (inserted, used, deleted): the append-only guard lets a DELETE through for a student named here,
+    and refuses every other UPDATE and DELETE as before. Migration: `0005_erasure`."""
+
+    __tablename__ = "student_erasures"
+
+    student: Mapped[str] = mapped_column(String(STUDENT_LENGTH), primary_key=True)

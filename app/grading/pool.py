@@ -42,7 +42,9 @@ class GradingPool:
         task: Callable[[CheckJob], Verdict | SpecProblem | GraderCrash] = grade,
         preview_task: Callable[[CheckJob], Preview | SpecProblem | GraderCrash] = read_only,
         verdicts_cached: int = 4096,
+        log_answers: bool = False,
     ):
+        self._log_answers = log_answers
         self._task = task
         self._preview_task = preview_task
         # Grading is a pure function of the job (a stored part's job names its compiled version by
@@ -60,6 +62,10 @@ class GradingPool:
         self._capacity = workers + queue_size
         self._in_flight = 0
         self._pool: WorkerPool | None = None
+
+    def _answer(self, job: CheckJob) -> dict[str, str]:
+        """The answer's start for a log line, when answers may be logged (PHYSCHECK_LOG_ANSWERS)."""
+        return {"answer": _excerpt(job.answer)} if self._log_answers else {}
 
     def start(self) -> None:
         pool = self._new_pool()
@@ -134,7 +140,7 @@ class GradingPool:
             log.error(
                 "grading worker died during a check (exit code %s); not graded",
                 error.exitcode,
-                extra={"answer": _excerpt(job.answer)},
+                extra=self._answer(job),
             )
             raise Unavailable(RESTARTING_MESSAGE, retry_after=1) from error
         finally:
@@ -150,7 +156,7 @@ class GradingPool:
                 "grading crashed: %s; not graded\n%s",
                 outcome.error,
                 outcome.traceback,
-                extra={"answer": _excerpt(job.answer)},
+                extra=self._answer(job),
             )
             raise GraderFault("Grading failed on our side; it has been logged. Nothing was recorded.")
         return outcome

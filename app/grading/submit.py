@@ -30,14 +30,17 @@ async def submit_answer(
     # and only grading tells which it is. The insert refuses a graded one over the limit.
     max_attempts = catalog.max_attempts(record, part_id)
     job = await run_in_threadpool(catalog.job, record, part_id, student, answer)
-    context = {
+    context: dict[str, object] = {
         "problem": record.id,
         "version": record.version,
         "part": part_id,
         "student": student,
-        # Bounded and escaped by the JSON formatter: an answer cannot forge or flood log lines.
-        "answer": answer if len(answer) <= LOGGED_ANSWER_CHARS else answer[:LOGGED_ANSWER_CHARS] + "…",
     }
+    if services.settings.log_answers:
+        # Bounded and escaped by the JSON formatter: an answer cannot forge or flood log lines.
+        context["answer"] = (
+            answer if len(answer) <= LOGGED_ANSWER_CHARS else answer[:LOGGED_ANSWER_CHARS] + "…"
+        )
     # A fault of the grader is never filed as the student's verdict and uses no attempt.
     try:
         verdict = await services.pool.check(job, share)

@@ -221,6 +221,19 @@ async def sign_in(request: Request, services: ServicesDep) -> Response:
     )
     next_url = _safe_next(str(form.get("next") or ""))
     key = str(form.get("key") or "").strip()
+    limiter = services.sign_in_limiter
+    address = request.client.host if request.client is not None else ""
+    wait = None if limiter is None else await run_in_threadpool(limiter.retry_after, address, key)
+    if wait is not None:
+        refused = _sign_in_form(
+            request,
+            services,
+            next_url,
+            error=f"Too many sign-in attempts; try again in {wait} s.",
+            status=429,
+        )
+        refused.headers["Retry-After"] = str(wait)
+        return refused
     principal = await run_in_threadpool(services.keys.authenticate, key) if key else None
     if principal is None:
         return _sign_in_form(request, services, next_url, error="This key is unknown or revoked.", status=401)

@@ -2,9 +2,9 @@
 
 from __future__ import annotations
 
-from typing import Any, Literal
+from typing import Annotated, Any, Literal
 
-from fastapi import APIRouter, Request, Response
+from fastapi import APIRouter, Path, Request, Response
 from starlette.concurrency import run_in_threadpool
 
 from app.auth import Principal
@@ -14,6 +14,7 @@ from app.errors import AppError, Forbidden
 from app.instructor.worked import body_words
 from app.lti.outbox import DeliveryProblem
 from app.openapi import AUTHENTICATED, errors
+from app.schemas import examples
 from app.schemas.problems import (
     MethodPublic,
     ProblemCreated,
@@ -34,10 +35,11 @@ _YAML_TYPES = {"application/yaml", "application/x-yaml", "text/yaml", "text/x-ya
 _BODY_DOC: dict[str, Any] = {
     "requestBody": {
         "required": True,
-        "description": "A problem in the bank's own format (see problems/bank/*/problem.yaml).",
+        "description": "A problem in the bank's own format (see problems/bank/*/problem.yaml), within "
+        "the size and shape limits of problems/FORMAT.md.",
         "content": {
-            "application/json": {"schema": {"type": "object"}},
-            "application/yaml": {"schema": {"type": "string"}},
+            "application/json": {"schema": {"type": "object"}, "examples": examples.UPLOAD_JSON},
+            "application/yaml": {"schema": {"type": "string"}, "examples": examples.UPLOAD_YAML},
         },
     }
 }
@@ -113,7 +115,10 @@ async def store_new_problem(
     responses=errors(404, 413, 415, 422),
 )
 async def new_version(
-    problem_id: str, request: Request, services: ServicesDep, principal: Instructor
+    problem_id: Annotated[str, Path(openapi_examples=examples.UPLOADED_PROBLEM_ID)],
+    request: Request,
+    services: ServicesDep,
+    principal: Instructor,
 ) -> ProblemCreated:
     await run_in_threadpool(_owned, services, problem_id, principal)
     document = await _vetted_document(request, services, principal)

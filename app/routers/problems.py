@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from typing import Annotated
 
-from fastapi import APIRouter, Query
+from fastapi import APIRouter, Body, Path, Query
 from starlette.concurrency import run_in_threadpool
 
 from app.auth import Principal
@@ -13,6 +13,7 @@ from app.deps import CurrentPrincipal, ServicesDep
 from app.errors import AppError, Forbidden, NotFound
 from app.grading.submit import stored_problem_fault, submit_answer
 from app.openapi import AUTHENTICATED, errors
+from app.schemas import examples
 from app.schemas.problems import (
     PartSummary,
     PreviewIn,
@@ -28,6 +29,9 @@ from app.web.rendering import tex_to_mathml
 from physics.errors import SpecError
 
 router = APIRouter(tags=["problems"], responses=AUTHENTICATED)
+# Examples for /docs "Try it out": a problem and part of the built-in bank.
+ProblemIdPath = Annotated[str, Path(openapi_examples=examples.PROBLEM_ID)]
+PartIdPath = Annotated[str, Path(openapi_examples=examples.PART_ID)]
 
 
 class StudentNotAllowed(AppError):
@@ -88,7 +92,11 @@ async def get_problem(
     responses=errors(403, 404, 409, 413, 422),
 )
 async def submit(
-    problem_id: str, part_id: str, body: SubmissionIn, services: ServicesDep, principal: CurrentPrincipal
+    problem_id: ProblemIdPath,
+    part_id: PartIdPath,
+    body: Annotated[SubmissionIn, Body(openapi_examples=examples.SUBMISSION)],
+    services: ServicesDep,
+    principal: CurrentPrincipal,
 ) -> SubmissionResult:
     who = student_of(principal, body.student)
     record = await run_in_threadpool(services.catalog.get, problem_id)
@@ -102,7 +110,11 @@ async def submit(
     responses=errors(404, 413, 422),
 )
 async def preview(
-    problem_id: str, part_id: str, body: PreviewIn, services: ServicesDep, principal: CurrentPrincipal
+    problem_id: ProblemIdPath,
+    part_id: PartIdPath,
+    body: Annotated[PreviewIn, Body(openapi_examples=examples.PREVIEW)],
+    services: ServicesDep,
+    principal: CurrentPrincipal,
 ) -> PreviewPublic:
     """How the answer would be read (for a live preview while typing); nothing is graded or stored."""
     who = student_of(principal, None)

@@ -4,6 +4,7 @@ protocols.py   one Protocol per store (keys, problems, submissions, compiled pro
                outbox, our LTI signing keys, LMS platforms, launch state, LTI sessions)
 sql.py         their SQLAlchemy implementation over the `app.db` repositories (SQLite, PostgreSQL);
                sql_lti.py for the launch stores
+student_data.py one student's data across the stores, to export or erase (SQL and in-memory)
 memory.py      in-memory fakes that keep the same contract (tests/storage runs it against all three);
                memory_lti.py for the launch stores
 
@@ -52,6 +53,7 @@ from app.storage.sql import (
 )
 from app.storage.sql_lti import SqlLaunchStore, SqlLtiSessionStore, SqlPlatformStore
 from app.storage.sql_outbox import queue_grade
+from app.storage.student_data import MemoryStudentData, SqlStudentData, StudentDataStore
 
 __all__ = [
     "ApiKeyStore",
@@ -64,6 +66,7 @@ __all__ = [
     "QueuedScore",
     "ScoreOutbox",
     "Stores",
+    "StudentDataStore",
     "SubmissionStore",
     "ToolKeys",
     "memory_stores",
@@ -82,6 +85,7 @@ class Stores:
     platforms: PlatformStore
     launches: LaunchStore
     lti_sessions: LtiSessionStore
+    student_data: StudentDataStore
     ping: Callable[[], bool] = field(default=lambda: True)
 
 
@@ -98,6 +102,7 @@ def sql_stores(database: Database, *, clock: Clock = utc_now) -> Stores:
         platforms=SqlPlatformStore(database, clock),
         launches=SqlLaunchStore(database),
         lti_sessions=SqlLtiSessionStore(database),
+        student_data=SqlStudentData(database),
         ping=database.ping,
     )
 
@@ -109,14 +114,16 @@ def memory_stores(*, clock: Clock = utc_now) -> Stores:
     hooks: list[MemoryFilingHook] = []
     submissions = MemorySubmissionStore(problems, hooks, clock=clock)
     hooks.append(grade_queue(outbox, problems, submissions.all))
+    platforms, lti_sessions, keys = MemoryPlatformStore(), MemoryLtiSessionStore(), MemoryApiKeyStore(clock)
     return Stores(
-        keys=MemoryApiKeyStore(clock),
+        keys=keys,
         problems=problems,
         submissions=submissions,
         compiled=MemoryCompiledCache(),
         outbox=outbox,
         tool_keys=MemoryToolKeys(),
-        platforms=MemoryPlatformStore(),
+        platforms=platforms,
         launches=MemoryLaunchStore(),
-        lti_sessions=MemoryLtiSessionStore(),
+        lti_sessions=lti_sessions,
+        student_data=MemoryStudentData(submissions, outbox, lti_sessions, platforms, keys),
     )

@@ -454,7 +454,15 @@ class MemoryScoreOutbox:
                 ):
                     return
             self._targets.append(
-                _Target(len(self._targets) + 1, platform, student, problem_id, lineitem_url, sub)
+                # Ids never reused, even after a student's targets are erased.
+                _Target(
+                    max((t.id for t in self._targets), default=0) + 1,
+                    platform,
+                    student,
+                    problem_id,
+                    lineitem_url,
+                    sub,
+                )
             )
 
     def targets(self) -> list[tuple[str, str, str, str]]:
@@ -480,7 +488,7 @@ class MemoryScoreOutbox:
                 target.last_timestamp = sent
                 self._rows.append(
                     _Score(
-                        len(self._rows) + 1,
+                        max((row.id for row in self._rows), default=0) + 1,
                         target,
                         score_given,
                         score_maximum,

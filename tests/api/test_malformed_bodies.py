@@ -55,3 +55,23 @@ def test_chunked_body_under_the_cap_is_read_whole(client: TestClient, student_he
     response = client.post("/v1/check", content=iter([VALID[:20], VALID[20:]]), headers=headers)
     assert response.status_code == 200, response.text
     assert response.json()["verdict"] == "correct"
+
+
+UNREADABLE = [b'{"kind": "numeric", "answer": ', b"\xff\xfe not utf-8", b"[" * 100_000]
+JSON_ROUTES = ["/v1/check", "/v1/problems/atwood/parts/acceleration/submissions"]
+
+
+@pytest.mark.parametrize("body", UNREADABLE, ids=["truncated", "not-utf8", "deep"])
+@pytest.mark.parametrize("path", JSON_ROUTES)
+@pytest.mark.parametrize(
+    "authorization", [None, "Bearer not-a-key", "Basic abc"], ids=["no-key", "unknown-key", "not-bearer"]
+)
+def test_caller_is_refused_before_an_unreadable_body_is(
+    client: TestClient, path: str, body: bytes, authorization: str | None
+):
+    headers = {"Content-Type": "application/json"}
+    if authorization is not None:
+        headers["Authorization"] = authorization
+    response = client.post(path, content=body, headers=headers)
+    assert response.status_code == 401, response.text
+    assert response.json()["error"]["code"] == "unauthenticated"

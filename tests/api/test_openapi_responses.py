@@ -122,6 +122,14 @@ CALLS: dict[tuple[str, str], tuple[int, Call]] = {
         200,
         lambda api, h: api.client.get("/v1/lti/delivery-problems", headers=h),
     ),
+    ("get", "/v1/student-data"): (
+        200,
+        lambda api, h: api.client.get("/v1/student-data", params={"student": "eve"}, headers=h),
+    ),
+    ("delete", "/v1/student-data"): (
+        200,
+        lambda api, h: api.client.delete("/v1/student-data", params={"student": "eve"}, headers=h),
+    ),
 }  # fmt: skip
 
 
@@ -183,6 +191,8 @@ def malformed(api: Api, method: str, path: str) -> httpx.Response:
         return api.client.get("/v1/submissions", params={"limit": 0}, headers=api.instructor)
     if path == "/v1/problems/{problem_id}":  # a student key cannot name a student
         return api.client.get("/v1/problems/yo-yo", params={"student": "bob"}, headers=api.student)
+    if path == "/v1/student-data":  # no student named
+        return api.client.request(method.upper(), path, headers=api.instructor)
     # Nothing else to get wrong in a path-only route but the path itself.
     url = path.replace("{problem_id}", "nul%00id")
     return api.client.request(method.upper(), url, headers=api.instructor)

@@ -65,3 +65,21 @@ def test_sqlite_connections_are_configured(tmp_path, pragma: str, expected: obje
 def test_an_unusable_url_is_refused(url: str, message: str) -> None:
     with pytest.raises(ValueError, match=message):
         create_database_engine(url)
+
+
+def test_the_servers_timeout_bounds_lock_waits_and_statements(db: Database) -> None:
+    """A server's Database (with `timeout_seconds`) waits at most that long for a lock (SQLite) or a
+    statement (PostgreSQL's own statement_timeout); migrations' engines (none given) are not bounded."""
+    bounded = Database(db.url, timeout_seconds=1.5)
+    try:
+        with bounded.session(read_only=True) as session:
+            if bounded.backend == "sqlite":
+                assert session.execute(text("PRAGMA busy_timeout")).scalar() == 1500
+            else:
+                assert session.execute(text("SHOW statement_timeout")).scalar() == "1500ms"
+        assert bounded.engine.pool.timeout() == 1.5  # type: ignore[attr-defined]
+    finally:
+        bounded.dispose()
+    if db.backend == "postgresql":
+        with db.session(read_only=True) as session:
+            assert session.execute(text("SHOW statement_timeout")).scalar() == "0"

@@ -9,7 +9,9 @@ import threading
 
 class TcpProxy:
     """Forwards 127.0.0.1:`port` to `target`. `down()` refuses new connections and cuts open ones (a
-    database that went away); `up()` listens on the same port again."""
+    database that went away); `up()` listens on the same port again. `black_hole()` goes on accepting
+    connections and reading what is sent, but passes nothing on either way (a database that accepts and
+    never answers); `forward()` passes new connections on again."""
 
     def __init__(self, target: tuple[str, int], port: int):
         self.target = target
@@ -17,6 +19,13 @@ class TcpProxy:
         self._listener: socket.socket | None = None
         self._open: set[socket.socket] = set()
         self._lock = threading.Lock()
+        self._black_hole = False
+
+    def black_hole(self) -> None:
+        self._black_hole = True
+
+    def forward(self) -> None:
+        self._black_hole = False
 
     def up(self) -> TcpProxy:
         listener = socket.socket()
@@ -47,6 +56,11 @@ class TcpProxy:
                 client, _ = listener.accept()
             except OSError:
                 return
+            if self._black_hole:
+                with self._lock:
+                    self._open.add(client)
+                threading.Thread(target=self._swallow, args=(client,), daemon=True).start()
+                continue
             try:
                 upstream = socket.create_connection(self.target, timeout=5)
             except OSError:
@@ -65,7 +79,8 @@ class TcpProxy:
     def _pump(self, source: socket.socket, sink: socket.socket) -> None:
         try:
             while data := source.recv(65536):
-                sink.sendall(data)
+                if not self._black_hole:
+                    sink.sendall(data)
         except OSError:
             pass
         finally:
@@ -75,3 +90,15 @@ class TcpProxy:
                 with contextlib.suppress(OSError):
                     sock.shutdown(socket.SHUT_RDWR)
                 sock.close()
+
+    def _swallow(self, client: socket.socket) -> None:
+        """Read and drop whatever a connection made while black-holed sends, until it goes away."""
+        try:
+            while client.recv(65536):
+                pass
+        except OSError:
+            pass
+        finally:
+            with self._lock:
+                self._open.discard(client)
+            client.close()
