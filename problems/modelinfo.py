@@ -68,10 +68,28 @@ def load_doc_model(doc: ProblemDocument, table: Mapping[str, sympy.Symbol]) -> A
     return load_model(doc.model, table, dimensions)
 
 
+@dataclass(frozen=True)
+class ModelQuantities:
+    """The quantities a model defines, which of them each `expression` uses, and those listed `unused`."""
+
+    names: frozenset[str]
+    uses: Mapping[str, frozenset[str]] = field(default_factory=dict)
+    unused: frozenset[str] = frozenset()
+
+
+def model_quantities(doc: ProblemDocument) -> ModelQuantities:
+    """What the model defines (cheap: loads, does not derive)."""
+    model = load_doc_model(doc, symbol_table(doc))
+    return ModelQuantities(
+        frozenset(q.name for q in model.quantities),
+        {q.name: frozenset(name for _, name in q.uses) for q in model.quantities if q.uses},
+        frozenset(model.unused),
+    )
+
+
 def model_quantity_names(doc: ProblemDocument) -> frozenset[str]:
     """Names of the quantities the model defines (cheap: loads, does not derive)."""
-    model = load_doc_model(doc, symbol_table(doc))
-    return frozenset(q.name for q in model.quantities)
+    return model_quantities(doc).names
 
 
 def derive_doc(doc: ProblemDocument, table: Mapping[str, sympy.Symbol]) -> Derived:

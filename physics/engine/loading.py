@@ -59,6 +59,7 @@ _SECTIONS = frozenset(
         "impact",
         "frame",
         "notation",
+        "unused",
     }
 )
 _QUANTITY_TARGET = {
@@ -128,7 +129,10 @@ def load_model(
         faults = check_dimensions(model, dimensions) if dimensions else []
         if faults:
             raise SpecErrors(faults)
-        return dataclasses.replace(model, dimensions_checked=True) if dimensions else model
+        if not dimensions:
+            return model
+        declared = tuple((s, dimensions[s.name]) for s in model.parameters if s.name in dimensions)
+        return dataclasses.replace(model, dimensions_checked=True, dimensions=declared)
     except SpecErrors as group:
         raise expanded.relocate(group) from None
 
@@ -168,6 +172,7 @@ def _load_low_level(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]
     velocities = {f"{c.name}_dot": c.velocity for c in coordinates}
     forces = _forces(data.get("forces"), symbols, {"t": time, **coord_scope, **velocities}, bodies, errors)
     limits = _stated_limits(data.get("limits"), symbols, {q.name for q in quantities}, errors)
+    unused = _unused(data.get("unused"), {q.name for q in quantities}, errors)
     impact = _impact(data.get("impact"), symbols, bodies, quantities, errors)
     frame = _frame(data.get("frame"), symbols, bodies, errors)
     reach_loading.check_targets(quantities, bodies, state, coordinates, errors.add)
@@ -196,6 +201,7 @@ def _load_low_level(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]
         impact=impact,
         frame=frame,
         notation=notation,
+        unused=unused,
     )
     return with_distance_sides(forcing.with_time(model, time))
 
@@ -299,6 +305,17 @@ def _stated_limits(
         if where and expect:
             result.append(StatedLimit(tuple(where), tuple(expect), str(description)))
     return tuple(result)
+
+
+def _unused(value: Any, quantities: set[str], errors: _Collector) -> tuple[str, ...]:
+    """`unused: [name, ...]`: quantities no part asks for, on purpose (the problem checks the rest)."""
+    names: list[str] = []
+    for index, name in enumerate(_sequence(value, ("unused",), errors)):
+        if name not in quantities:
+            errors.add(f"unknown quantity {name!r}; the model's are {sorted(quantities)}", ("unused", index))
+        else:
+            names.append(str(name))
+    return tuple(names)
 
 
 def _mapping(value: Any, path: Path, errors: _Collector, required: bool = True) -> Mapping[str, Any]:

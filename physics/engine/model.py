@@ -14,6 +14,8 @@ from enum import StrEnum
 
 import sympy
 
+from physics.dimensions import Dimension
+
 AXES = ("x", "y")
 ZERO = sympy.Integer(0)
 
@@ -276,6 +278,9 @@ class Model:
     time: sympy.Symbol | None = None  # the time `t`, when a given force depends on it
     # the author's names for worked solutions: (coordinate, constraint or body, symbol, words); notation.py
     notation: tuple[tuple[str, str | None, str | None], ...] = ()
+    # the declared dimensions of the problem's symbols (when given): what kind of thing a quantity is
+    dimensions: tuple[tuple[sympy.Symbol, Dimension], ...] = ()
+    unused: tuple[str, ...] = ()  # quantities the author derives on purpose without a part asking for them
 
     def body(self, name: str) -> Body:
         return next(b for b in self.bodies if b.name == name)
