@@ -574,20 +574,48 @@ def _impact(
     path: Path = ("impact",)
     spec = _mapping(value, path, errors)
     _check_keys(spec, {"bodies", "normal", "restitution", "release"}, {"bodies"}, path, errors)
-    names = spec.get("bodies")
+    entries = spec.get("bodies")
     known = {b.name: b for b in bodies}
-    if not isinstance(names, list) or len(names) != 2 or len(set(map(str, names))) != 2:
+    if not isinstance(entries, list) or len(entries) != 2:
+        errors.add(
+            "two different bodies: [first, second], the normal pointing from the first; a floor or wall "
+            "that does not move is {fixed: floor}",
+            (*path, "bodies"),
+        )
+        return None
+    names: list[str] = []
+    fixed: str | None = None
+    flip = False
+    for index, entry in enumerate(entries):
+        where: Path = (*path, "bodies", index)
+        if isinstance(entry, Mapping):
+            partner = entry.get("fixed")
+            if set(entry) != {"fixed"} or not isinstance(partner, str) or not _NAME.match(partner):
+                errors.add(
+                    "a fixed partner is {fixed: <its name>}, a floor or wall that does not move", where
+                )
+            elif partner in known:
+                errors.add(
+                    f"{partner!r} is a body of the model, which moves: name the fixed partner apart", where
+                )
+            elif fixed is not None:
+                errors.add("one of the two may be fixed, not both", where)
+            else:
+                fixed, flip = partner, index == 0
+            continue
+        if entry not in known:
+            errors.add(f"unknown body {entry!r}", where)
+        elif known[entry].angle is not None:
+            errors.add("an impact is between particles (no angle)", where)
+        names.append(str(entry))
+    if len(set(names)) != len(names):
         errors.add(
             "two different bodies: [first, second], the normal pointing from the first", (*path, "bodies")
         )
-        return None
-    for index, name in enumerate(names):
-        if name not in known:
-            errors.add(f"unknown body {name!r}", (*path, "bodies", index))
-        elif known[name].angle is not None:
-            errors.add("an impact is between particles (no angle)", (*path, "bodies", index))
     if ("restitution" in spec) == ("release" in spec):
         errors.add("give exactly one of restitution (a collision) and release (an explosion)", path)
+    if fixed is not None and "release" in spec:
+        errors.add("an explosion parts two bodies: a fixed partner cannot take a share", (*path, "release"))
     restitution = (
         errors.read(spec["restitution"], symbols, (*path, "restitution")) if "restitution" in spec else None
     )
@@ -597,19 +625,22 @@ def _impact(
         if "normal" in spec
         else (("x", sympy.Integer(1)),)
     )
-    plane = any(len(known[n].position) > 1 for n in names if n in known)
+    if flip:  # written from the fixed partner to the body: kept from the moving body to the partner
+        normal = tuple((axis, -component) for axis, component in normal)
     for q in asked:
-        where: Path = ("quantities", q.name, q.kind.value)
+        where = ("quantities", q.name, q.kind.value)
         if q.kind is QuantityKind.KINETIC_ENERGY_LOST:
             if q.target != "impact":
                 errors.add("the energy lost is the impact's: write `kinetic_energy_lost: impact`", where)
         elif q.target not in names:
-            errors.add(f"the impact's bodies are {names}, not {q.target!r}", where)
-        elif q.kind is QuantityKind.FINAL_VELOCITY and plane:
-            errors.add("the bodies move in the plane: ask for the final_speed", where)
-    if len(names) != 2 or not all(n in known for n in names) or (restitution is None and release is None):
+            errors.add(f"the impact's moving bodies are {names}, not {q.target!r}", where)
+        elif q.kind is QuantityKind.FINAL_VELOCITY and len(known[q.target].position) > 1:
+            errors.add(f"{q.target!r} moves in the plane: ask for the final_speed", where)
+    if len(names) + (fixed is not None) != 2 or not all(n in known for n in names):
         return None
-    return Impact((str(names[0]), str(names[1])), normal, restitution, release)
+    if restitution is None and release is None:
+        return None
+    return Impact(tuple(names), normal, restitution, release, fixed)
 
 
 def _coordinate_values(

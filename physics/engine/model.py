@@ -134,15 +134,17 @@ class Collision:
 
 @dataclass(frozen=True)
 class Impact:
-    """Two smooth bodies meet at the model's state, moving with its velocities: an impulse along
-    `normal` (pointing from the first body to the second) with Newton's coefficient of `restitution`
-    (1 elastic, 0 perfectly inelastic), or, for an explosion, one that `release`s that much kinetic
-    energy as they part. Exactly one of restitution and release is given."""
+    """Bodies meet at the model's state, moving with its velocities: an impulse along `normal` (pointing
+    from the first body to the second, or to the `fixed` partner) with Newton's coefficient of
+    `restitution` (1 elastic, 0 perfectly inelastic), or, for an explosion, one that `release`s that
+    much kinetic energy as they part. Exactly one of restitution and release is given. `bodies` are the
+    moving ones: two, or one against a `fixed` partner (a floor, a wall) that does not move."""
 
-    bodies: tuple[str, str]
+    bodies: tuple[str, ...]
     normal: tuple[tuple[str, sympy.Expr], ...]
     restitution: sympy.Expr | None
     release: sympy.Expr | None
+    fixed: str | None = None
 
 
 class QuantityKind(StrEnum):
