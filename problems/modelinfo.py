@@ -62,10 +62,17 @@ def load_doc_model(doc: ProblemDocument, table: Mapping[str, sympy.Symbol]) -> A
     """The engine's Model for `doc.model`; raises SpecError/SpecErrors with paths inside the model."""
     if doc.model is None:
         raise SpecError("the problem has no model", ("model",))
-    dimensions = {
-        name: spec.dimension for name, spec in symbol_specs(doc).items() if spec.dimension is not None
+    specs = symbol_specs(doc)
+    dimensions = {name: spec.dimension for name, spec in specs.items() if spec.dimension is not None}
+    ranges = {
+        name: (
+            spec.low if spec.low is not None else -sympy.oo,
+            spec.high if spec.high is not None else sympy.oo,
+        )
+        for name, spec in specs.items()
+        if spec.has_range
     }
-    return load_model(doc.model, table, dimensions)
+    return load_model(doc.model, table, dimensions, ranges)
 
 
 @dataclass(frozen=True)

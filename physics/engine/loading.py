@@ -118,14 +118,19 @@ def load_model(
     data: Mapping[str, Any],
     symbols: Mapping[str, sympy.Symbol],
     dimensions: Mapping[str, Dimension] | None = None,
+    ranges: Mapping[str, tuple[sympy.Expr, sympy.Expr]] | None = None,
 ) -> Model:
     """Validate a model section into a Model; raises SpecErrors listing every fault with its path.
 
     With the symbols' `dimensions` (name -> Dimension), every position, energy, mass, ... is also
-    checked for dimensional consistency."""
+    checked for dimensional consistency. `ranges`: the symbol table's own ranges (name -> (low, high)),
+    which choose the root a `solve` keeps."""
     expanded = expand_elements(data, symbols)  # composable elements -> the low-level sections
     try:
         model = _load_low_level(expanded.data, symbols)
+        if ranges:
+            bounds = tuple((symbols[n], low, high) for n, (low, high) in ranges.items() if n in symbols)
+            model = dataclasses.replace(model, symbol_ranges=bounds)
         faults = check_dimensions(model, dimensions) if dimensions else []
         if faults:
             raise SpecErrors(faults)

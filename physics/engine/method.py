@@ -23,6 +23,7 @@ from physics.engine.model import (
 )
 from physics.engine.proof import domain_points
 from physics.engine.results import MethodReport, Step, StepKind
+from physics.engine.roots import admissible, declared_range
 from physics.errors import DerivationError
 
 
@@ -257,14 +258,12 @@ class Method(ABC):
         return tidy.simplify(stable[0])
 
     def solve_for(self, parameter: sympy.Symbol, expr: sympy.Expr, name: str) -> sympy.Expr:
-        roots = [
-            r
-            for r in sympy.solve(expr, parameter)
-            if not (parameter.is_positive and r.is_positive is False) and r.is_real is not False
-        ]
+        found = sympy.solve(expr, parameter)
+        roots = admissible(found, parameter, self.model)
         if len(roots) != 1:
             raise DerivationError(
-                f"{self.title}: {name}: expected one value of {parameter}, found {typed_text(roots)}",
+                f"{self.title}: {name}: expected one value of {parameter} {_declared(parameter, self.model)}, "
+                f"found {typed_text(roots)} among the roots {typed_text(found)}",
                 quantity=name,
             )
         self.step(
@@ -295,6 +294,15 @@ class Method(ABC):
 
     def at_state(self, expr: sympy.Expr) -> sympy.Expr:
         return tidy.simplify(expr.subs(dict(self.model.state)))
+
+
+def _declared(symbol: sympy.Symbol, model: Model) -> str:
+    """What the model declares of the symbol, for a message: "(positive, in [0, pi/2])"."""
+    said = ["positive"] if symbol.is_positive else ["negative"] if symbol.is_negative else ["real"]
+    bounds = declared_range(symbol, model)
+    if bounds is not None:
+        said.append(f"in [{bounds[0]:.4g}, {bounds[1]:.4g}]")
+    return f"({', '.join(said)})"
 
 
 def _real_roots(expr: sympy.Expr, q: sympy.Symbol) -> list[sympy.Expr]:

@@ -282,7 +282,11 @@ class Model:
     notation: tuple[tuple[str, str | None, str | None], ...] = ()
     # the declared dimensions of the problem's symbols (when given): what kind of thing a quantity is
     dimensions: tuple[tuple[sympy.Symbol, Dimension], ...] = ()
-    unused: tuple[str, ...] = ()  # quantities the author derives on purpose without a part asking for them
+    unused: tuple[str, ...] = ()
+    # the symbol table's own ranges (`range:` of a symbol): which root a solve keeps (roots.py)
+    symbol_ranges: tuple[
+        tuple[sympy.Symbol, sympy.Expr, sympy.Expr], ...
+    ] = ()  # quantities the author derives on purpose without a part asking for them
 
     def body(self, name: str) -> Body:
         return next(b for b in self.bodies if b.name == name)

@@ -24,6 +24,7 @@ from physics.engine.lagrange import LagrangeMethod
 from physics.engine.mechanics import Mechanics
 from physics.engine.method import stable_equilibrium
 from physics.engine.model import (
+    AXES,
     IMPACT_KINDS,
     ORBIT_KINDS,
     SLIP_KINDS,
@@ -652,21 +653,20 @@ class Simulator:
         return Dynamics(merged(self.model))
 
     @cached_property
-    def _along(self) -> Callable[..., list[float]]:
-        """d(target position . direction)/dq, compiled: how the target moves along the projectile's path."""
+    def _target_motion(self) -> Callable[..., list[float]]:
+        """d(target position)/dq on each axis (x row, then y row), compiled: the target's velocity is
+        this times q', however its constraints guide it (along an incline, round a pendulum's arc)."""
         hit = self.model.collision
         assert hit is not None
         mech = self.dynamics.mech
-        direction = dict(hit.direction)
-        norm = sympy.sqrt(sympy.Add(*(v**2 for v in direction.values())))
-        along = sympy.Add(
-            *(direction.get(axis, 0) / norm * expr for axis, expr in self.model.body(hit.target).position)
-        )
-        return _compile([*mech.q, *self.dynamics.params], [sympy.diff(along, q) for q in mech.q])
+        position = dict(self.model.body(hit.target).position)
+        rows = [sympy.diff(position.get(axis, sympy.Integer(0)), q) for axis in AXES for q in mech.q]
+        return _compile([*mech.q, *self.dynamics.params], rows)
 
     def _collision(self, quantity: Quantity, point: Point, expected: float) -> Measured:
-        """The projectile couples to the target by a stiff drag until they move together (a perfectly
-        inelastic collision); then the merged body moves until it turns back."""
+        """The projectile, a particle in the plane, couples to the target by a stiff drag on their relative
+        velocity until they move together (a perfectly inelastic collision): the target's constraints
+        take whatever part of the blow they resist. Then the merged body moves until it turns back."""
         hit = self.model.collision
         assert hit is not None
         before, after = self.dynamics, self._after
@@ -677,24 +677,36 @@ class Simulator:
         q0 = [_evaluate(at.get(name, sympy.Integer(0)), point) for name in names]
         mass = _evaluate(hit.projectile_mass, point)
         speed = expected if quantity.kind is QuantityKind.PROJECTILE_SPEED else 1.0
+        direction = [_evaluate(dict(hit.direction).get(axis, sympy.Integer(0)), point) for axis in AXES]
+        norm = math.hypot(*direction)
         tau = 1e-4
         drag = mass / tau
+        # the projectile's weight, while it is being stopped: the merged body carries it from then on
+        weight = [0.0, -_evaluate(self.model.gravity, point) if self.model.gravity is not None else 0.0]
 
         def f(y: Vector) -> Vector:
-            q, qd, u = y[:n], y[n : 2 * n], y[2 * n]
-            along = self._along(*q, *params)
-            force = drag * (u - sum(a * b for a, b in zip(along, qd, strict=True)))
-            qdd = before.unknowns(q, qd, params, extra=[force * a for a in along])[:n]
-            return [*qd, *qdd, -force / mass]
+            q, qd, u = y[:n], y[n : 2 * n], y[2 * n : 2 * n + len(AXES)]
+            rows = self._target_motion(*q, *params)
+            jacobian = [rows[k * n : (k + 1) * n] for k in range(len(AXES))]
+            force = [
+                drag * (u[k] - sum(a * b for a, b in zip(jacobian[k], qd, strict=True)))
+                for k in range(len(AXES))
+            ]
+            generalized = [sum(force[k] * jacobian[k][j] for k in range(len(AXES))) for j in range(n)]
+            qdd = before.unknowns(q, qd, params, extra=generalized)[:n]
+            # last: the projectile's height, for the work of its weight
+            return [*qd, *qdd, *(-p / mass + w for p, w in zip(force, weight, strict=True)), u[1]]
 
-        end = rk4(f, [*q0, *[0.0] * n, speed], tau / 10, 300)[-1]
-        q1, qd1, u1 = end[:n], end[n : 2 * n], end[2 * n]
+        start = [*q0, *[0.0] * n, *(speed * d / norm for d in direction), 0.0]
+        end = rk4(f, start, tau / 10, 300)[-1]
+        q1, qd1, u1, rise = end[:n], end[n : 2 * n], end[2 * n : 2 * n + len(AXES)], end[-1]
         matrix = before.mass(q1, params)
-        kinetic = 0.5 * mass * u1**2 + 0.5 * sum(
+        kinetic = 0.5 * mass * sum(c * c for c in u1) + 0.5 * sum(
             qd1[i] * matrix[i][j] * qd1[j] for i in range(n) for j in range(n)
         )
         initial = 0.5 * mass * speed**2
-        lost = (initial - kinetic - (before.potential(q1, params) - before.potential(q0, params))) / initial
+        gained = before.potential(q1, params) - before.potential(q0, params) - mass * weight[1] * rise
+        lost = (initial - kinetic - gained) / initial
         if quantity.kind is QuantityKind.ENERGY_FRACTION_LOST:
             return "kinetic energy lost in an integrated stiff inelastic coupling", lost, None
         ((name, target_text),) = hit.reaches
