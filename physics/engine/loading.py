@@ -743,31 +743,55 @@ def _quantities(
     errors: _Collector,
 ) -> tuple[Quantity, ...]:
     result: list[Quantity] = []
-    for name, entry in _mapping(value, ("quantities",), errors).items():
+    entries = _mapping(value, ("quantities",), errors)
+    # every quantity may be used by an expression, wherever it stands: a mapping has no order
+    stand_ins = {str(n): sympy.Symbol(f"quantity_{n}", real=True) for n in entries if str(n) not in symbols}
+    for name, entry in entries.items():
         if isinstance(entry, Mapping) and "expression" in entry:
-            result += _expression_quantity(str(name), entry, symbols, result, errors)
+            others = {n: s for n, s in stand_ins.items() if n != name}
+            result += _expression_quantity(str(name), entry, symbols, others, errors)
             continue
         quantity = _quantity(
             str(name), entry, ("quantities", str(name)), symbols, coordinates, constraints, collision, errors
         )
         if quantity is not None:
             result.append(quantity)
+    _check_cycles(result, errors)
     return tuple(result)
+
+
+def _check_cycles(quantities: list[Quantity], errors: _Collector) -> None:
+    """Expressions that use each other in a circle define nothing."""
+    uses = {q.name: [name for _, name in q.uses] for q in quantities}
+    reported: set[str] = set()
+
+    def visit(name: str, path: list[str]) -> None:
+        if name in path:
+            circle = [*path[path.index(name) :], name]
+            if not reported & set(circle):
+                reported.update(circle)
+                errors.add(
+                    f"the expressions use each other in a circle: {' -> '.join(circle)}",
+                    ("quantities", circle[0], "expression"),
+                )
+            return
+        for used in uses.get(name, []):
+            visit(used, [*path, name])
+
+    for quantity in quantities:
+        visit(quantity.name, [])
 
 
 def _expression_quantity(
     name: str,
     entry: Mapping[str, Any],
     symbols: Mapping[str, sympy.Symbol],
-    earlier: list[Quantity],
+    stand_ins: Mapping[str, sympy.Symbol],
     errors: _Collector,
 ) -> list[Quantity]:
-    """`T: {expression: "2*pi*R/v"}`: a formula in the parameters and the quantities defined above it."""
+    """`T: {expression: "2*pi*R/v"}`: a formula in the parameters and the model's other quantities."""
     path: Path = ("quantities", name)
     _check_keys(entry, {"expression"}, {"expression"}, path, errors)
-    stand_ins = {
-        q.name: sympy.Symbol(f"quantity_{q.name}", real=True) for q in earlier if q.name not in symbols
-    }
     expr = errors.read(entry["expression"], {**symbols, **stand_ins}, (*path, "expression"))
     if expr is None:
         return []
