@@ -11,7 +11,7 @@ import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from functools import cached_property, partial
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import mpmath
 import sympy
@@ -39,6 +39,10 @@ from physics.errors import DerivationError
 TOLERANCE = 1e-3
 ENERGY_TOLERANCE = 1e-6  # RK4 keeps the books far better than this over a short motion
 ENERGY_STEPS = 100
+THRESHOLD_STEP = 1e-3  # runs at the derived threshold ± this fraction of it
+if TYPE_CHECKING:
+    from physics.engine.reach_simulation import ReachMeasure
+
 Point = dict[sympy.Symbol, float]
 Vector = list[float]
 Measured = tuple[str, float, float | None]  # (what was compared, measured value, own error or None)
@@ -107,6 +111,22 @@ class Dynamics:
             )
         ]
         self._dissipative = _compile([*args, *lam], self.mech.generalized(dissipative))
+
+    def uses(self, symbol: sympy.Symbol) -> bool:
+        """Whether the equations of motion or the start depend on the symbol."""
+        state = [v for _, v in self.model.state]
+        return any(symbol in e.free_symbols for e in [self.mech.kinetic, self.mech.potential, *state]) or any(
+            symbol in g.free_symbols for g in self._gaps
+        )
+
+    @cached_property
+    def _gaps(self) -> list[sympy.Expr]:
+        forces = [c for f in self.model.forces for _, c in f.components] + [
+            f.coefficient for f in self.model.forces
+        ]
+        return (
+            [c.gap for c in self.model.constraints] + forces + [f.coefficient for f in self.model.frictions]
+        )
 
     def values(self, point: Point) -> Vector:
         """The parameters' values at the point (the time, when not a parameter, from the state)."""
@@ -249,7 +269,7 @@ class Simulator:
         return OrbitMeasure(self.dynamics, self._start)
 
     @cached_property
-    def _reach(self) -> Measure:
+    def _reach(self) -> ReachMeasure:
         from physics.engine.reach_simulation import ReachMeasure  # it builds on this module
 
         return ReachMeasure(self)
@@ -534,10 +554,14 @@ class Simulator:
 
     def _solve(self, quantity: Quantity, point: Point, expected: float) -> Measured:
         """Integrate with the derived parameter value: the inner acceleration must vanish, measured against
-        the acceleration with half that value."""
+        the acceleration with half that value. Any other inner quantity the simulation measures (a
+        normal force where the motion gets to, a speed) is a threshold: measured on runs just below and
+        just above the derived value, it must change sign, and where it crosses zero is compared."""
         inner, parameter = quantity.inner, quantity.parameter
-        if inner is None or parameter is None or inner.kind is not QuantityKind.ACCELERATION:
+        if inner is None or parameter is None:
             raise DerivationError(f"{quantity.name}: no simulation for this kind of condition")
+        if inner.kind is not QuantityKind.ACCELERATION or inner.at:
+            return self._threshold(quantity, inner, parameter, point, expected)
         at_value = self._acceleration(inner, {**point, parameter: expected}, 0.0)[1]
         at_half = self._acceleration(inner, {**point, parameter: expected / 2}, 0.0)[1]
         return (
@@ -545,6 +569,60 @@ class Simulator:
             at_value,
             abs(at_value) / max(abs(at_half), 1e-300),
         )
+
+    def _threshold(
+        self, quantity: Quantity, inner: Quantity, parameter: sympy.Symbol, point: Point, expected: float
+    ) -> Measured:
+        measure = self._reach if _reaches(inner) else self._measures().get(inner.kind)
+        if measure is None or inner.kind is QuantityKind.SOLVE:
+            raise DerivationError(f"{quantity.name}: no simulation for this kind of condition")
+        step = THRESHOLD_STEP * max(abs(expected), 1e-12)
+        below, above = expected - step, expected + step
+        try:
+            low, high = self._either_side(inner, parameter, point, expected, (below, above), measure)
+        except DerivationError as error:
+            raise DerivationError(
+                f"{quantity.name}: the runs either side of {parameter} = {expected:.6g} fail: {error.message}",
+                quantity=quantity.name,
+            ) from None
+        if low * high > 0 or low == high:
+            raise DerivationError(
+                f"{quantity.name}: the integrated {inner.kind.value.replace('_', ' ')} does not change sign across "
+                f"{parameter} = {expected:.6g}: {low:.6g} at {below:.6g}, {high:.6g} at {above:.6g}",
+                quantity=quantity.name,
+            )
+        crossing = below - low * (above - below) / (high - low)
+        return (
+            f"where the integrated {inner.kind.value.replace('_', ' ')} changes sign, between runs just below and "
+            "just above",
+            crossing,
+            None,
+        )
+
+    def _either_side(
+        self,
+        inner: Quantity,
+        parameter: sympy.Symbol,
+        point: Point,
+        expected: float,
+        values: tuple[float, float],
+        measure: Measure,
+    ) -> tuple[float, float]:
+        """The inner quantity measured with the parameter at each of `values`."""
+        ends = [value for _, value in inner.at]
+        if (
+            inner.at
+            and not self.dynamics.uses(parameter)
+            and all(v.free_symbols <= {parameter} for v in ends)
+        ):
+            # the parameter only says where the motion is read: one run, read as it passes each value
+            ((_, end),) = inner.at
+            places = [_evaluate(end, {**point, parameter: v}) for v in values]
+            low, high = self._reach.crossings(inner, {**point, parameter: expected}, places)
+            return low, high
+        low = measure(inner, {**point, parameter: values[0]}, 0.0)[1]
+        high = measure(inner, {**point, parameter: values[1]}, 0.0)[1]
+        return low, high
 
     # --- potentials and oscillations ---------------------------------------------------------
 
