@@ -247,6 +247,20 @@ def by_impulse(model: Model) -> Worked:
     return tuple(steps), by_body(mech, found.before), by_body(mech, final)
 
 
+def coordinate_rates(model: Model, after: Velocities) -> list[sympy.Expr]:
+    """The coordinates' velocities that give the bodies' velocities `after` (the constraints hold, so
+    the Cartesian velocities determine them)."""
+    found = contact(model)
+    rates = [sympy.Symbol(f"{c.name}_rate", real=True) for c in model.coordinates]
+    equations = [
+        sympy.Add(*(found.jacobian[i, j] * r for j, r in enumerate(rates)))
+        - after[d.body][d.name.split("_", 1)[0]]
+        for i, d in enumerate(found.mech.dofs)
+    ]
+    solved = solve_linear(equations, rates, "the velocities after the impact", tidy=_tidy)
+    return [solved[r] for r in rates]
+
+
 def _recorder(steps: list[tuple[str, str]]) -> Step:
     return lambda title, latex: steps.append((title, latex))
 

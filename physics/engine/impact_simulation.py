@@ -36,8 +36,10 @@ def _value(expr: sympy.Expr, point: dict[sympy.Symbol, float]) -> float:
 
 
 # (each body's Cartesian velocities before and after: body -> [(axis, value)]; the speed scale of the
-# motion; the kinetic energy before and after)
-Run = tuple[dict[str, list[tuple[str, float]]], dict[str, list[tuple[str, float]]], float, float, float]
+# motion; the kinetic energy before and after; the coordinates' velocities after)
+Run = tuple[
+    dict[str, list[tuple[str, float]]], dict[str, list[tuple[str, float]]], float, float, float, list[float]
+]
 
 
 def _by_body(found: Contact, cartesian: list[float]) -> dict[str, list[tuple[str, float]]]:
@@ -119,7 +121,7 @@ def _integrate(model: Model, found: Contact, point: tuple[tuple[sympy.Symbol, fl
 
     first, last = cartesian(before), cartesian(rates)
     scale = max([abs(v) for v in first + last] + [1e-300])
-    return _by_body(found, first), _by_body(found, last), scale, kinetic(before), kinetic(rates)
+    return _by_body(found, first), _by_body(found, last), scale, kinetic(before), kinetic(rates), rates
 
 
 class ImpactMeasure:
@@ -136,16 +138,23 @@ class ImpactMeasure:
     def __call__(
         self, quantity: Quantity, point: dict[sympy.Symbol, float], expected: float
     ) -> tuple[str, float, float]:
+        return _measure(self.model, self._run(point), quantity, expected)
+
+    def rates(self, point: dict[sympy.Symbol, float]) -> list[float]:
+        """The coordinates' velocities just after the integrated contact."""
+        return self._run(point)[5]
+
+    def _run(self, point: dict[sympy.Symbol, float]) -> Run:
         key = tuple(sorted(point.items(), key=lambda kv: kv[0].name))
         if key not in self.runs:
             self.runs[key] = _integrate(self.model, self.contact, key)
-        return _measure(self.model, self.runs[key], quantity, expected)
+        return self.runs[key]
 
 
 def _measure(model: Model, run: Run, quantity: Quantity, expected: float) -> tuple[str, float, float]:
     hit = model.impact
     assert hit is not None
-    _, after, scale, before_energy, after_energy = run
+    _, after, scale, before_energy, after_energy, _ = run
     what = (
         "an integrated spring-dashpot contact, the constraints holding"
         if hit.restitution is not None

@@ -575,6 +575,11 @@ def _impact(
     if value is None:
         for q in asked:
             errors.add("this quantity needs an impact section", ("quantities", q.name, q.kind.value))
+        for q in quantities:
+            if q.after:
+                errors.add(
+                    "the motion after an impact needs an impact section", ("quantities", q.name, "after")
+                )
         return None
     path: Path = ("impact",)
     spec = _mapping(value, path, errors)

@@ -106,6 +106,34 @@ class Method(ABC):
             self._impact = work(self.model)
         return impact.answer(self._impact, self.model, quantity, self.step)
 
+    def after_impact(self, quantity: Quantity) -> sympy.Expr:
+        """The quantity in the motion that starts with this method's own velocities after the impact."""
+        work = impact.METHODS.get(self.name)
+        if work is None or self.model.impact is None:
+            raise NotApplicable(f"{self.title} does not treat impacts")
+        if self._impact is None:
+            self._impact = work(self.model)
+        steps, _, after = self._impact
+        for title, latex in steps:
+            self.step(title, latex)
+        rates = impact.coordinate_rates(self.model, after)
+        self.step(
+            "The motion after the impact starts with these velocities",
+            r",\ ".join(
+                self.tex(sympy.Eq(c.velocity, r)) for c, r in zip(self.model.coordinates, rates, strict=True)
+            ),
+        )
+        state = {
+            **dict(self.model.state),
+            **{c.velocity: r for c, r in zip(self.model.coordinates, rates, strict=True)},
+        }
+        bounced = dataclasses.replace(self.model, state=tuple(state.items()), impact=None)
+        solver = type(self)(bounced, Mechanics(bounced))
+        result = solver.answer(dataclasses.replace(quantity, after=""))
+        for step in solver.steps:
+            self.step(f"{step.title} (after the impact)", step.latex)
+        return result
+
     def mode_matrices(self, point: dict[sympy.Symbol, sympy.Expr]) -> tuple[sympy.Matrix, sympy.Matrix]:
         """(M, K) of the small oscillations about the equilibrium `point`, as this method sees them."""
         raise NotApplicable(f"{self.title} does not give normal modes")
@@ -134,6 +162,8 @@ class Method(ABC):
 
     def answer(self, quantity: Quantity) -> sympy.Expr:
         kind = quantity.kind
+        if quantity.after:  # in the motion that starts just after the impact
+            return self.after_impact(quantity)
         if quantity.at:  # where the motion from the state arrives: speed, velocity, force, acceleration
             return work_energy.answer(self, quantity)
         if kind in TRAJECTORY_KINDS:

@@ -244,6 +244,7 @@ class Quantity:
     contact: tuple[str, str] = ("", "")
     coefficient: sympy.Expr | None = None
     ratio: tuple[str, ...] = ()  # for MODE_SHAPE: (numerator, denominator) coordinates; target = mode
+    after: str = ""  # "impact": taken in the motion that starts just after the model's impact
 
 
 @dataclass(frozen=True)

@@ -7,6 +7,7 @@ closed-form answer, which is only evaluated at the end to be compared with what 
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
@@ -220,6 +221,8 @@ class Simulator:
         self, quantity: Quantity, reference: sympy.Expr, points: Sequence[Point]
     ) -> SimulationCheck | None:
         measure = self._reach if _reaches(quantity) else self._measures().get(quantity.kind)
+        if quantity.after:
+            measure = self._after_impact
         if measure is None:
             return None
         worst = 0.0
@@ -277,6 +280,32 @@ class Simulator:
     @cached_property
     def _impact(self) -> impact_simulation.ImpactMeasure:
         return impact_simulation.ImpactMeasure(self.model)
+
+    @cached_property
+    def _bounced(self) -> dict[tuple[tuple[str, float], ...], Simulator]:
+        return {}
+
+    def _after_impact(self, quantity: Quantity, point: Point, expected: float) -> Measured:
+        """The motion after the impact, started with the velocities the integrated contact left (never
+        the derived ones), measured as any motion from a state is."""
+        key = tuple(sorted((s.name, v) for s, v in point.items()))
+        if key not in self._bounced:
+            rates = self._impact.rates(point)
+            state = {
+                **dict(self.model.state),
+                **{
+                    c.velocity: sympy.Float(r, 17) for c, r in zip(self.model.coordinates, rates, strict=True)
+                },
+            }
+            bounced = dataclasses.replace(self.model, state=tuple(state.items()), impact=None)
+            self._bounced[key] = Simulator(bounced, self.equilibrium_of)
+        simulator = self._bounced[key]
+        inner = dataclasses.replace(quantity, after="")
+        measure = simulator._reach if _reaches(inner) else simulator._measures().get(inner.kind)
+        if measure is None:
+            raise DerivationError(f"{quantity.name}: no simulation of this quantity after an impact")
+        what, measured, error = measure(inner, point, expected)
+        return f"{what}, after an integrated contact", measured, error
 
     def energy_balance(self, points: Sequence[Point]) -> SimulationCheck | None:
         """Integrate the motion from the model's state and keep the books: the change of T + V must equal

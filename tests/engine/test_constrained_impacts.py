@@ -144,3 +144,30 @@ def test_a_faulty_fixed_partner_is_refused_at_its_path(bodies: str, extra: str, 
     with pytest.raises(SpecErrors) as caught:
         load_model(yaml.safe_load(text), symbols)
     assert any(message in error.message for error in caught.value.errors), caught.value.errors
+
+
+def test_the_flight_after_a_bounce_starts_with_the_velocities_the_impact_leaves() -> None:
+    text = BALL_ON_FLOOR.replace(
+        "  lost: {kinetic_energy_lost: impact}\n",
+        "  lost: {kinetic_energy_lost: impact}\n  rise: {max_height: ball, after: impact}\n"
+        "  airborne: {time_of_flight: ball, after: impact}\n",
+    )
+    result = _derive(text)
+    assert _same(result.quantities["rise"], e**2 * v**2 / (2 * g))
+    assert _same(result.quantities["airborne"], 2 * e * v / g)
+    for name in ("rise", "airborne"):
+        assert set(result.agreement[name]) == {"newton", "conservation"}
+        assert "after an integrated contact" in result.simulation[name].compared
+
+
+def test_the_motion_after_an_impact_needs_one() -> None:
+    text = BALL_ON_FLOOR.replace(
+        "impact: {bodies: [ball, {fixed: floor}], normal: {y: -1}, restitution: e}\n", ""
+    )
+    text = text.replace(
+        "  rebound: {final_velocity: ball}\n  lost: {kinetic_energy_lost: impact}\n",
+        "  rise: {max_height: ball, after: impact}\n",
+    )
+    with pytest.raises(SpecErrors) as caught:
+        load_model(yaml.safe_load(text), SYMBOLS)
+    assert [e.path for e in caught.value.errors] == [("quantities", "rise", "after")]
