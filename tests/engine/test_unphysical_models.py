@@ -57,7 +57,17 @@ quantities:
   rest: {equilibrium: y}
   stretch: {expression: STRETCH}
 """
-DIMENSIONS = {"m": "kg", "m1": "kg", "m2": "kg", "g": "m/s^2", "F": "N", "k": "N/m", "alpha": "1"}
+DIMENSIONS = {
+    "R": "m",
+    "h": "m",
+    "m": "kg",
+    "m1": "kg",
+    "m2": "kg",
+    "g": "m/s^2",
+    "F": "N",
+    "k": "N/m",
+    "alpha": "1",
+}
 
 
 def _derive(text: str, names: str) -> dict[str, sympy.Expr]:
@@ -115,3 +125,30 @@ def test_a_length_negative_on_the_whole_domain_is_refused() -> None:
 def test_a_quantity_nowhere_real_is_refused() -> None:
     error = _refusal(HANGING_SPRING.replace("STRETCH", "sqrt(rest*k/(m*g))"), "m k g")
     assert error.path == ("quantities", "stretch") and "not real anywhere" in error.message
+
+
+LOOP_TOP = """
+coordinates: [theta]
+bodies:
+  block: {mass: m, position: {x: "R*sin(theta)", y: "-R*cos(theta)"}}
+gravity: g
+constraints:
+  track: {kind: surface, gap: "R - sqrt(x_block^2 + y_block^2)"}
+state: {theta: 0, theta_dot: "sqrt(2*g*h)/R"}
+domain:
+  positive: [DOMAIN]
+quantities:
+  top: {force: track, at: {theta: pi}}
+"""
+
+
+def test_a_surface_force_asked_where_the_body_has_already_left_is_refused() -> None:
+    error = _refusal(LOOP_TOP.replace("DOMAIN", '"h - 2*R"'), "m R g h")
+    assert error.path == ("quantities", "top")
+    assert (
+        "the surface would pull at theta = pi where h < 5*R/2: the body leaves it before it gets there"
+        in error.message
+    )
+    m, r, g, h = sympy.symbols("m R g h", positive=True)
+    found = _derive(LOOP_TOP.replace("DOMAIN", '"2*h - 5*R"'), "m R g h")["top"]
+    assert sympy.simplify(found - m * g * (2 * h / r - 5)) == 0
