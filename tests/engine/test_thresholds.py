@@ -63,3 +63,23 @@ def test_a_wrong_threshold_is_caught_by_the_runs_either_side(monkeypatch: pytest
     monkeypatch.setattr(derivation, "_simplest", lambda forms: 2 * R)  # where the block only just arrives
     with pytest.raises(derivation.DerivationError, match="runs either side of h"):
         uncached(load_model(yaml.safe_load(LOOP), SYMBOLS))
+
+
+def test_the_escape_speed_is_where_the_mechanical_energy_vanishes() -> None:
+    text = """
+coordinates: [r, theta]
+bodies:
+  probe: {mass: m, position: {x: "r*cos(theta)", y: "r*sin(theta)"}}
+potentials:
+  - {bodies: [probe], anchor: {x: 0, y: 0}, distance: d, energy: "-G*M*m/d"}
+state: {r: R, theta: 0, r_dot: v0}
+domain:
+  ranges: {r: ["0", "oo"]}
+quantities:
+  escape: {solve: v0, zero: {mechanical_energy: state}}
+"""
+    symbols = {n: sympy.Symbol(n, positive=True) for n in ("G", "M", "m", "R", "v0")}
+    result = uncached(load_model(yaml.safe_load(text), symbols))
+    G, M, radius = symbols["G"], symbols["M"], symbols["R"]
+    assert sympy.simplify(result.quantities["escape"] - sympy.sqrt(2 * G * M / radius)) == 0
+    assert "changes sign" in result.simulation["escape"].compared
