@@ -62,16 +62,41 @@ def load_doc_model(doc: ProblemDocument, table: Mapping[str, sympy.Symbol]) -> A
     """The engine's Model for `doc.model`; raises SpecError/SpecErrors with paths inside the model."""
     if doc.model is None:
         raise SpecError("the problem has no model", ("model",))
-    dimensions = {
-        name: spec.dimension for name, spec in symbol_specs(doc).items() if spec.dimension is not None
+    specs = symbol_specs(doc)
+    dimensions = {name: spec.dimension for name, spec in specs.items() if spec.dimension is not None}
+    ranges = {
+        name: (
+            spec.low if spec.low is not None else -sympy.oo,
+            spec.high if spec.high is not None else sympy.oo,
+        )
+        for name, spec in specs.items()
+        if spec.has_range
     }
-    return load_model(doc.model, table, dimensions)
+    return load_model(doc.model, table, dimensions, ranges)
+
+
+@dataclass(frozen=True)
+class ModelQuantities:
+    """The quantities a model defines, which of them each `expression` uses, and those listed `unused`."""
+
+    names: frozenset[str]
+    uses: Mapping[str, frozenset[str]] = field(default_factory=dict)
+    unused: frozenset[str] = frozenset()
+
+
+def model_quantities(doc: ProblemDocument) -> ModelQuantities:
+    """What the model defines (cheap: loads, does not derive)."""
+    model = load_doc_model(doc, symbol_table(doc))
+    return ModelQuantities(
+        frozenset(q.name for q in model.quantities),
+        {q.name: frozenset(name for _, name in q.uses) for q in model.quantities if q.uses},
+        frozenset(model.unused),
+    )
 
 
 def model_quantity_names(doc: ProblemDocument) -> frozenset[str]:
     """Names of the quantities the model defines (cheap: loads, does not derive)."""
-    model = load_doc_model(doc, symbol_table(doc))
-    return frozenset(q.name for q in model.quantities)
+    return model_quantities(doc).names
 
 
 def derive_doc(doc: ProblemDocument, table: Mapping[str, sympy.Symbol]) -> Derived:

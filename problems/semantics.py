@@ -20,9 +20,11 @@ from physics.units import unit_dimension
 from problems.errors import ErrorItem
 from problems.kinds import kind_of
 from problems.kinds.base import Faults, MeaningContext
-from problems.modelinfo import model_quantity_names, spec_error_items
+from problems.modelinfo import ModelQuantities, spec_error_items
+from problems.modelinfo import model_quantities as defined_quantities
 from problems.schema import GivenDecl, ProblemDocument, SymbolDecl
 from problems.symbols import read_bound, symbol_spec
+from problems.usage import usage_errors
 from problems.variants import placeholders, unit_scale, valid_range_errors
 
 
@@ -65,8 +67,14 @@ def semantic_errors(doc: ProblemDocument, model_quantities: frozenset[str] | Non
         if name not in doc.given:
             out.add(("statement",), f"{{{name}}} names no given value")
 
-    quantities = model_quantities if model_quantities is not None else _model_quantities(doc, out, symbols_ok)
-    _check_parts(out, doc, table, quantities)
+    usage = None
+    if model_quantities is None:
+        usage = _model_quantities(doc, out, symbols_ok)
+        model_quantities = usage.names if usage is not None else None
+    _check_parts(out, doc, table, model_quantities)
+    if usage is not None and not isinstance(usage.names, _AnyName):
+        for path, message in usage_errors(doc, usage):
+            out.errors.append((path, message))
     return out.errors
 
 
@@ -121,18 +129,18 @@ class _AnyName(frozenset[str]):
         return True
 
 
-def _model_quantities(doc: ProblemDocument, out: Faults, symbols_ok: bool) -> frozenset[str] | None:
-    """The quantity names the model defines (None: no model); model faults are reported under `model`."""
+def _model_quantities(doc: ProblemDocument, out: Faults, symbols_ok: bool) -> ModelQuantities | None:
+    """The quantities the model defines (None: no model); model faults are reported under `model`."""
     if doc.model is None:
         return None
     if not symbols_ok:
-        return _AnyName()
+        return ModelQuantities(_AnyName())
     try:
-        return model_quantity_names(doc)
+        return defined_quantities(doc)
     except SpecError as error:
         for path, message in spec_error_items(error):
             out.add(("model", *path), message)
-        return _AnyName()
+        return ModelQuantities(_AnyName())
 
 
 def _check_parts(

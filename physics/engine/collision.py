@@ -17,6 +17,7 @@ from physics.answer_text import typed_text
 from physics.engine import tidy
 from physics.engine.mechanics import Mechanics, solve_linear
 from physics.engine.model import Model, QuantityKind
+from physics.engine.roots import admissible
 from physics.errors import DerivationError
 
 SPEED = sympy.Symbol("v", positive=True)
@@ -74,9 +75,10 @@ def _finish(
             ("Fraction of the kinetic energy lost", r"\frac{K_0 - K_1}{K_0} = " + sympy.latex(fraction))
         )
         return fraction
-    roots = [r for r in sympy.solve(kinetic_after - rise, SPEED) if r.is_positive is not False]
+    found = sympy.solve(kinetic_after - rise, SPEED)
+    roots = admissible(found, SPEED, model)
     if len(roots) != 1:
-        raise DerivationError(f"expected one projectile speed, found {typed_text(roots)}")
+        raise DerivationError(f"expected one positive projectile speed, found {typed_text(found)}")
     steps.append(("Projectile speed", sympy.latex(sympy.Eq(SPEED, roots[0]))))
     return tidy.simplify(roots[0])
 

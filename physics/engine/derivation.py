@@ -10,6 +10,7 @@ from physics.answer_text import typed_text
 from physics.engine import tidy
 from physics.engine.checks import physical_checks
 from physics.engine.conservation import ConservationMethod
+from physics.engine.contacts import check_contact_signs
 from physics.engine.dalembert import DAlembertMethod
 from physics.engine.frames import FramesMethod
 from physics.engine.lagrange import LagrangeMethod
@@ -21,6 +22,7 @@ from physics.engine.newton import NewtonMethod
 from physics.engine.proof import clear_domain_points, domain_points, prove_equal
 from physics.engine.results import Derivation, KnownMistake, LimitCase, MethodReport, SimulationCheck
 from physics.engine.simulation import Simulator
+from physics.engine.soundness import check_gravity, check_magnitudes
 from physics.errors import DerivationError, PhyscheckError
 from physics.wording import counted
 
@@ -50,6 +52,7 @@ def _derive(model: Model) -> Derivation:
     tidy.forget()
     mech = Mechanics(model)
     check_consistency(model, mech)
+    check_gravity(model)
     methods = [cls(model, mech) for cls in _methods()]
     answers: dict[str, dict[str, sympy.Expr]] = {q.name: {} for q in model.quantities}
     stopped: dict[str, dict[str, str]] = {q.name: {} for q in model.quantities}  # why a method gave none
@@ -127,7 +130,9 @@ def _derive(model: Model) -> Derivation:
             path=findings[0][0],
             findings=findings,
         )
+    check_magnitudes(model, quantities)
     lagrange = methods[0]
+    contact_signs = check_contact_signs(model, lagrange, quantities)
     simulator = Simulator(model, lagrange.equilibrium)  # one compiled motion for the measures and the checks
     simulation = _simulate(model, quantities, simulator)
     variants: dict[Model, Method] = {model: lagrange}
@@ -152,7 +157,7 @@ def _derive(model: Model) -> Derivation:
             limits[quantity.name] = generate_limits(model, reference)
         except Exception:
             limits[quantity.name] = ()
-    checks = physical_checks(model, quantities, simulator, LagrangeMethod)
+    checks = {**contact_signs, **physical_checks(model, quantities, simulator, LagrangeMethod)}
     return Derivation(
         quantities, tuple(reports), agreement, simulation, mistakes, limits, proofs, checks, mech.notation
     )

@@ -1,76 +1,122 @@
-"""Two bodies meeting in an impact (1-D or 2-D, both moving) or parting in an explosion, worked two ways.
+"""Bodies meeting in an impact (1-D or 2-D, both moving, or one against a fixed floor or wall) or parting
+in an explosion, worked two ways, with the constraints of every body in it.
 
-Conservation: momentum is conserved on every axis and the contact is smooth (the first body keeps its
-velocity across the normal); the normal relative velocity after is Newton's restitution law, or, when
-the collision is elastic or an explosion, comes from the kinetic energy balance instead. Newton:
-each body's impulse-momentum law with an unknown normal impulse J; J is Poisson's compression impulse
-(the one that stops the normal approach) times 1 + e, or, for an explosion, the impulse whose work
-(J times the mean normal velocity before and after) is the energy released.
+The contact is smooth: its impulse J acts along the normal. A body held by a constraint (a block on a
+fixed incline, a bob on its string) also receives that constraint's impulse during the impact, which
+changes where its momentum goes. Conservation: generalized momentum M q' changes only along the
+contact's row a in the coordinates (the constraints are built into the coordinates, so their impulses
+never enter): u . M q' is conserved for every u with a . u = 0; the normal separation's rate after,
+a . q', is Newton's restitution law, or, for an elastic impact or an explosion, comes from the kinetic
+energy balance. Newton: each Cartesian degree of freedom's impulse-momentum law with J and every
+constraint's impulse unknown, the constraints holding after; J is Poisson's compression impulse (the one
+that stops the normal approach) times 1 + e, or, for an explosion, the impulse whose work (J times the
+mean normal velocity before and after) is the energy released.
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
 
 import sympy
 
 from physics.answer_text import typed_text
 from physics.engine import tidy
-from physics.engine.model import Model, Quantity, QuantityKind
+from physics.engine.mechanics import Mechanics, solve_linear
+from physics.engine.model import AXES, Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
 from physics.errors import DerivationError
 
 Step = Callable[[str, str], None]
-Velocities = dict[str, dict[str, sympy.Expr]]  # body -> axis -> velocity component
+Velocities = dict[str, dict[str, sympy.Expr]]  # body -> axis (x, y, phi) -> velocity component
 
 
-def axes(model: Model) -> tuple[str, ...]:
-    hit = model.impact
-    assert hit is not None
-    used = {axis for name in hit.bodies for axis, _ in model.body(name).position}
-    return tuple(a for a in ("x", "y") if a in used)
+@dataclass(frozen=True)
+class Contact:
+    """The impact seen on every Cartesian degree of freedom of the model at its state: how each moves
+    the contact's normal separation, each one's velocity just before, and how each follows the
+    coordinates (the constraints are in that map: a block held on an incline moves along it)."""
+
+    mech: Mechanics
+    normal_row: tuple[sympy.Expr, ...]  # d(n . (r_second - r_first)) / d(x_d)
+    before: tuple[sympy.Expr, ...]
+    jacobian: sympy.Matrix  # d(x_d)/d(q_j) at the state
+    place: dict[sympy.Symbol, sympy.Expr]  # Cartesian positions at the state
+
+    @property
+    def generalized(self) -> list[sympy.Expr]:
+        """a: the normal separation's rate is a . q' (the contact's row in the coordinates)."""
+        return [
+            tidy.simplify(sympy.Add(*(c * self.jacobian[i, j] for i, c in enumerate(self.normal_row))))
+            for j in range(self.jacobian.shape[1])
+        ]
 
 
 def unit_normal(model: Model) -> dict[str, sympy.Expr]:
     hit = model.impact
     assert hit is not None
     given = dict(hit.normal)
-    norm = sympy.sqrt(sympy.Add(*(given.get(a, 0) ** 2 for a in axes(model))))
-    return {a: tidy.simplify(given.get(a, sympy.Integer(0)) / norm) for a in axes(model)}
+    norm = sympy.sqrt(sympy.Add(*(given.get(a, 0) ** 2 for a in AXES)))
+    return {a: tidy.simplify(given.get(a, sympy.Integer(0)) / norm) for a in AXES}
+
+
+def contact(model: Model, mech: Mechanics | None = None) -> Contact:
+    hit = model.impact
+    assert hit is not None
+    mech = mech or Mechanics(model)
+    state = dict(model.state)
+    n = unit_normal(model)
+    side = {hit.bodies[0]: -1, **({hit.bodies[1]: 1} if len(hit.bodies) > 1 else {})}
+    row = tuple(
+        side.get(d.body, 0) * n[d.name.split("_", 1)[0]]
+        if not d.name.startswith("phi_")
+        else sympy.Integer(0)
+        for d in mech.dofs
+    )
+    jacobian = sympy.Matrix(
+        [[tidy.simplify(sympy.diff(d.mapping, q).subs(state)) for q in mech.q] for d in mech.dofs]
+    )
+    velocities = [state.get(c.velocity, sympy.Integer(0)) for c in model.coordinates]
+    before = tuple(
+        tidy.simplify(sympy.Add(*(jacobian[i, j] * v for j, v in enumerate(velocities))))
+        for i in range(len(mech.dofs))
+    )
+    place = {d.symbol: d.mapping.subs(state) for d in mech.dofs}
+    return Contact(mech, row, before, jacobian, place)
+
+
+def by_body(mech: Mechanics, values: Sequence[sympy.Expr]) -> Velocities:
+    """Per-dof values as body -> axis -> value."""
+    result: Velocities = {}
+    for d, value in zip(mech.dofs, values, strict=True):
+        result.setdefault(d.body, {})[d.name.split("_", 1)[0]] = value
+    return result
 
 
 def velocities_before(model: Model) -> Velocities:
     """Each body's Cartesian velocity at the model's state (positions differentiated in time)."""
-    hit = model.impact
-    assert hit is not None
-    state = dict(model.state)
-    result: Velocities = {}
-    for name in hit.bodies:
-        position = dict(model.body(name).position)
-        result[name] = {
-            a: tidy.simplify(
-                sympy.Add(
-                    *(sympy.diff(position.get(a, 0), c.symbol) * c.velocity for c in model.coordinates)
-                ).subs(state)
-            )
-            for a in axes(model)
-        }
-    return result
+    found = contact(model)
+    return by_body(found.mech, found.before)
 
 
-def _masses(model: Model) -> tuple[sympy.Expr, sympy.Expr]:
+def _masses(model: Model) -> tuple[sympy.Expr, ...]:
     hit = model.impact
     assert hit is not None
-    return model.body(hit.bodies[0]).mass, model.body(hit.bodies[1]).mass
+    return tuple(model.body(name).mass for name in hit.bodies)
 
 
 def _dot(u: dict[str, sympy.Expr], n: dict[str, sympy.Expr]) -> sympy.Expr:
-    return sympy.Add(*(u[a] * n[a] for a in n))
+    return sympy.Add(*(u.get(a, 0) * n[a] for a in n))
 
 
 def kinetic(model: Model, velocities: Velocities) -> sympy.Expr:
-    masses = dict(zip(velocities, _masses(model), strict=True))
-    return sympy.Add(*(masses[b] * _dot(v, v) / 2 for b, v in velocities.items()))
+    """The kinetic energy of every body: 1/2 m v^2, and 1/2 I omega^2 of a rigid body's turning."""
+    total = sympy.Integer(0)
+    for name, velocity in velocities.items():
+        body = model.body(name)
+        for axis, v in velocity.items():
+            total += (body.inertia if axis == "phi" else body.mass) * v**2 / 2
+    return total
 
 
 def _parting_root(model: Model, roots: list[sympy.Expr], unchanged: sympy.Expr, what: str) -> sympy.Expr:
@@ -97,40 +143,37 @@ def answer(worked: Worked, model: Model, quantity: Quantity, step: Step) -> symp
 
 
 def by_conservation(model: Model) -> Worked:
+    """Generalized momentum p = M q' changes only along the contact's row a (the impulse's generalized
+    direction; a constraint's impulse does no work on the coordinates, so it never enters): u . p is
+    conserved for every u with a . u = 0. Then Newton's restitution law on a . q', or for an elastic
+    impact or an explosion the kinetic energy balance."""
     steps: list[tuple[str, str]] = []
     step = _recorder(steps)
     hit = model.impact
     assert hit is not None
-    first, second = hit.bodies
-    n = unit_normal(model)
-    before = velocities_before(model)
-    ma, mb = _masses(model)
-    after = {b: {a: sympy.Symbol(f"v_{b}_{a}", real=True) for a in n} for b in hit.bodies}
-    parting = sympy.Symbol("w", real=True)  # normal velocity of the second body relative to the first
-    equations = [
-        ma * after[first][a] + mb * after[second][a] - ma * before[first][a] - mb * before[second][a]
-        for a in n
-    ]
-    if len(n) == 2:  # smooth contact: the first body's velocity across the normal does not change
-        equations.append(
-            (after[first]["x"] - before[first]["x"]) * n["y"]
-            - (after[first]["y"] - before[first]["y"]) * n["x"]
-        )
-    equations.append(_dot(after[second], n) - _dot(after[first], n) - parting)
-    unknowns = [after[b][a] for b in hit.bodies for a in n]
-    solved = sympy.solve(equations, unknowns, dict=True)
-    if len(solved) != 1:
-        raise DerivationError("momentum conservation did not fix the velocities after the impact")
+    found = contact(model)
+    mech = found.mech
+    state = dict(model.state)
+    mass = mech.mass_matrix.subs(state).applyfunc(tidy.simplify)
+    a = sympy.Matrix(found.generalized)
+    before = sympy.Matrix([state.get(c.velocity, sympy.Integer(0)) for c in model.coordinates])
+    after = sympy.Matrix([sympy.Symbol(f"{c.name}_after", real=True) for c in model.coordinates])
+    parting = sympy.Symbol("w", real=True)  # the normal separation's rate after: a . q'
+    conserved = [(u.T * mass * (after - before))[0] for u in sympy.Matrix([list(a)]).nullspace()]
+    equations = [*conserved, (a.T * after)[0] - parting]
+    solved = solve_linear(equations, list(after), "momentum conservation", tidy=_tidy)
     step(
-        "Momentum conserved; the normal relative velocity after is w",
+        "Momentum conserved in every direction the contact's impulse has no part in "
+        "(the constraints' impulses included: they do no work on the coordinates); the normal "
+        "separation's rate after is w",
         r",\ ".join(sympy.latex(sympy.Eq(e, 0)) for e in equations),
     )
-    in_w = {b: {a: solved[0][after[b][a]] for a in n} for b in hit.bodies}
-    approach = _dot(before[first], n) - _dot(before[second], n)
+    approach = -(a.T * before)[0]
+    in_w = sympy.Matrix([solved[v] for v in after])
     elastic = hit.restitution is not None and hit.restitution == 1
     if hit.release is not None or elastic:
         gain = hit.release if hit.release is not None else sympy.Integer(0)
-        balance = sympy.expand(kinetic(model, in_w) - kinetic(model, before) - gain)
+        balance = sympy.expand(((in_w.T * mass * in_w)[0] - (before.T * mass * before)[0]) / 2 - gain)
         w = _parting_root(model, sympy.solve(balance, parting), -approach, "normal velocity")
         step(
             "Kinetic energy balance" + (" (elastic)" if elastic else " (energy released)"),
@@ -140,33 +183,47 @@ def by_conservation(model: Model) -> Worked:
         assert hit.restitution is not None
         w = hit.restitution * approach
         step("Newton's restitution law", r"w = e\,(u_1 - u_2)\cdot n = " + sympy.latex(w))
-    final = {b: {a: _tidy(v.subs(parting, w)) for a, v in in_w[b].items()} for b in hit.bodies}
-    return tuple(steps), before, final
+    rates = [_tidy(v.subs(parting, w)) for v in in_w]
+    cartesian = [
+        _tidy(sympy.Add(*(found.jacobian[i, j] * r for j, r in enumerate(rates))))
+        for i in range(len(mech.dofs))
+    ]
+    return tuple(steps), by_body(mech, found.before), by_body(mech, cartesian)
 
 
 def by_impulse(model: Model) -> Worked:
+    """Each Cartesian degree of freedom's impulse-momentum law, with the contact's normal impulse J and
+    each constraint's impulse as unknowns (a block held on an incline is pushed by the incline during
+    the impact), the constraints holding after; J is Poisson's compression impulse (the one that stops
+    the normal approach) times 1 + e, or, for an explosion, the impulse whose work is the energy."""
     steps: list[tuple[str, str]] = []
     step = _recorder(steps)
     hit = model.impact
     assert hit is not None
-    first, second = hit.bodies
-    n = unit_normal(model)
-    before = velocities_before(model)
-    ma, mb = _masses(model)
+    found = contact(model)
+    mech = found.mech
     impulse = sympy.Symbol("J", real=True)
-    in_j = {
-        first: {a: before[first][a] - impulse * n[a] / ma for a in n},
-        second: {a: before[second][a] + impulse * n[a] / mb for a in n},
-    }
+    held = [sympy.Symbol(f"Lambda_{c.name}", real=True) for c in model.constraints]
+    gradients = [[g.subs(found.place) for g in mech.gap_gradient(k)] for k in range(len(held))]
+    after = [sympy.Symbol(f"v_{d.name}_after", real=True) for d in mech.dofs]
+    laws = [
+        d.inertia * (after[i] - found.before[i])
+        - impulse * found.normal_row[i]
+        - sympy.Add(*(lam * grad[i] for lam, grad in zip(held, gradients, strict=True)))
+        for i, d in enumerate(mech.dofs)
+    ]
+    holding = [sympy.Add(*(g * v for g, v in zip(grad, after, strict=True))) for grad in gradients]
+    solved = solve_linear([*laws, *holding], [*after, *held], "the impulse-momentum laws", tidy=_tidy)
+    in_j = [solved[v] for v in after]
     step(
-        "Impulse-momentum law for each body, normal impulse J",
-        r",\ ".join(
-            rf"\vec v_{{{b}}} = " + sympy.latex(sympy.Matrix([in_j[b][a] for a in n]).T) for b in hit.bodies
-        ),
+        "Impulse-momentum law for each body, normal impulse J"
+        + (", and each constraint's impulse, the constraint holding after" if held else ""),
+        r",\ ".join(sympy.latex(sympy.Eq(e, 0)) for e in [*laws, *holding]),
     )
+    rate_after = sympy.Add(*(c * v for c, v in zip(found.normal_row, in_j, strict=True)))
+    rate_before = sympy.Add(*(c * v for c, v in zip(found.normal_row, found.before, strict=True)))
     if hit.release is not None:
-        mean = {b: {a: (before[b][a] + in_j[b][a]) / 2 for a in n} for b in hit.bodies}
-        work = impulse * (_dot(mean[second], n) - _dot(mean[first], n))
+        work = impulse * (rate_before + rate_after) / 2
         j = _parting_root(
             model, sympy.solve(sympy.expand(work - hit.release), impulse), sympy.Integer(0), "impulse"
         )
@@ -179,16 +236,29 @@ def by_impulse(model: Model) -> Worked:
         )
     else:
         assert hit.restitution is not None
-        closing = _dot(in_j[first], n) - _dot(in_j[second], n)
         # linear in J; solved by hand since sympy's solve can lose the root behind cos^2 + sin^2
-        compression = tidy.simplify(-closing.subs(impulse, 0) / sympy.diff(closing, impulse))
+        compression = tidy.simplify(-rate_after.subs(impulse, 0) / sympy.diff(rate_after, impulse))
         j = (1 + hit.restitution) * compression
         step(
             "Poisson: the compression impulse stops the approach; restitution returns e times it",
             r"J_c = " + sympy.latex(compression) + r",\ J = (1 + e) J_c = " + sympy.latex(j),
         )
-    final = {b: {a: _tidy(v.subs(impulse, j)) for a, v in in_j[b].items()} for b in hit.bodies}
-    return tuple(steps), before, final
+    final = [_tidy(v.subs(impulse, j)) for v in in_j]
+    return tuple(steps), by_body(mech, found.before), by_body(mech, final)
+
+
+def coordinate_rates(model: Model, after: Velocities) -> list[sympy.Expr]:
+    """The coordinates' velocities that give the bodies' velocities `after` (the constraints hold, so
+    the Cartesian velocities determine them)."""
+    found = contact(model)
+    rates = [sympy.Symbol(f"{c.name}_rate", real=True) for c in model.coordinates]
+    equations = [
+        sympy.Add(*(found.jacobian[i, j] * r for j, r in enumerate(rates)))
+        - after[d.body][d.name.split("_", 1)[0]]
+        for i, d in enumerate(found.mech.dofs)
+    ]
+    solved = solve_linear(equations, rates, "the velocities after the impact", tidy=_tidy)
+    return [solved[r] for r in rates]
 
 
 def _recorder(steps: list[tuple[str, str]]) -> Step:
@@ -220,7 +290,7 @@ def _quantity(
         lost = sympy.factor(tidy.simplify(kinetic(model, before) - kinetic(model, after)))
         step("Kinetic energy lost", r"K_0 - K_1 = " + sympy.latex(lost))
         return lost
-    velocity = after[quantity.target]
+    velocity = {a: v for a, v in after[quantity.target].items() if a != "phi"}
     if quantity.kind is QuantityKind.FINAL_SPEED:
         speed = _signs_by_domain(model, sympy.sqrt(sympy.factor(sympy.expand(_dot(velocity, velocity)))))
         step(f"Speed of «{quantity.target}» after", sympy.latex(speed))
@@ -258,8 +328,9 @@ def mistakes(model: Model, reference: sympy.Expr) -> list[tuple[sympy.Expr | Non
             (reference.subs(restitution, 1), ELASTIC),
             (reference.subs(restitution, -restitution), RESTITUTION_SIGN),
         ]
-    ma, mb = _masses(model)
-    if isinstance(ma, sympy.Symbol) and isinstance(mb, sympy.Symbol):
+    masses = _masses(model)
+    if len(masses) == 2 and all(isinstance(m, sympy.Symbol) for m in masses):
+        ma, mb = masses
         found.append((reference.subs({ma: mb, mb: ma}, simultaneous=True), SWAPPED_MASSES))
     return found
 

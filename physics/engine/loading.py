@@ -59,6 +59,7 @@ _SECTIONS = frozenset(
         "impact",
         "frame",
         "notation",
+        "unused",
     }
 )
 _QUANTITY_TARGET = {
@@ -117,18 +118,26 @@ def load_model(
     data: Mapping[str, Any],
     symbols: Mapping[str, sympy.Symbol],
     dimensions: Mapping[str, Dimension] | None = None,
+    ranges: Mapping[str, tuple[sympy.Expr, sympy.Expr]] | None = None,
 ) -> Model:
     """Validate a model section into a Model; raises SpecErrors listing every fault with its path.
 
     With the symbols' `dimensions` (name -> Dimension), every position, energy, mass, ... is also
-    checked for dimensional consistency."""
+    checked for dimensional consistency. `ranges`: the symbol table's own ranges (name -> (low, high)),
+    which choose the root a `solve` keeps."""
     expanded = expand_elements(data, symbols)  # composable elements -> the low-level sections
     try:
         model = _load_low_level(expanded.data, symbols)
+        if ranges:
+            bounds = tuple((symbols[n], low, high) for n, (low, high) in ranges.items() if n in symbols)
+            model = dataclasses.replace(model, symbol_ranges=bounds)
         faults = check_dimensions(model, dimensions) if dimensions else []
         if faults:
             raise SpecErrors(faults)
-        return dataclasses.replace(model, dimensions_checked=True) if dimensions else model
+        if not dimensions:
+            return model
+        declared = tuple((s, dimensions[s.name]) for s in model.parameters if s.name in dimensions)
+        return dataclasses.replace(model, dimensions_checked=True, dimensions=declared)
     except SpecErrors as group:
         raise expanded.relocate(group) from None
 
@@ -168,6 +177,7 @@ def _load_low_level(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]
     velocities = {f"{c.name}_dot": c.velocity for c in coordinates}
     forces = _forces(data.get("forces"), symbols, {"t": time, **coord_scope, **velocities}, bodies, errors)
     limits = _stated_limits(data.get("limits"), symbols, {q.name for q in quantities}, errors)
+    unused = _unused(data.get("unused"), {q.name for q in quantities}, errors)
     impact = _impact(data.get("impact"), symbols, bodies, quantities, errors)
     frame = _frame(data.get("frame"), symbols, bodies, errors)
     reach_loading.check_targets(quantities, bodies, state, coordinates, errors.add)
@@ -196,6 +206,7 @@ def _load_low_level(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]
         impact=impact,
         frame=frame,
         notation=notation,
+        unused=unused,
     )
     return with_distance_sides(forcing.with_time(model, time))
 
@@ -299,6 +310,17 @@ def _stated_limits(
         if where and expect:
             result.append(StatedLimit(tuple(where), tuple(expect), str(description)))
     return tuple(result)
+
+
+def _unused(value: Any, quantities: set[str], errors: _Collector) -> tuple[str, ...]:
+    """`unused: [name, ...]`: quantities no part asks for, on purpose (the problem checks the rest)."""
+    names: list[str] = []
+    for index, name in enumerate(_sequence(value, ("unused",), errors)):
+        if name not in quantities:
+            errors.add(f"unknown quantity {name!r}; the model's are {sorted(quantities)}", ("unused", index))
+        else:
+            names.append(str(name))
+    return tuple(names)
 
 
 def _mapping(value: Any, path: Path, errors: _Collector, required: bool = True) -> Mapping[str, Any]:
@@ -553,24 +575,57 @@ def _impact(
     if value is None:
         for q in asked:
             errors.add("this quantity needs an impact section", ("quantities", q.name, q.kind.value))
+        for q in quantities:
+            if q.after:
+                errors.add(
+                    "the motion after an impact needs an impact section", ("quantities", q.name, "after")
+                )
         return None
     path: Path = ("impact",)
     spec = _mapping(value, path, errors)
     _check_keys(spec, {"bodies", "normal", "restitution", "release"}, {"bodies"}, path, errors)
-    names = spec.get("bodies")
+    entries = spec.get("bodies")
     known = {b.name: b for b in bodies}
-    if not isinstance(names, list) or len(names) != 2 or len(set(map(str, names))) != 2:
+    if not isinstance(entries, list) or len(entries) != 2:
+        errors.add(
+            "two different bodies: [first, second], the normal pointing from the first; a floor or wall "
+            "that does not move is {fixed: floor}",
+            (*path, "bodies"),
+        )
+        return None
+    names: list[str] = []
+    fixed: str | None = None
+    flip = False
+    for index, entry in enumerate(entries):
+        where: Path = (*path, "bodies", index)
+        if isinstance(entry, Mapping):
+            partner = entry.get("fixed")
+            if set(entry) != {"fixed"} or not isinstance(partner, str) or not _NAME.match(partner):
+                errors.add(
+                    "a fixed partner is {fixed: <its name>}, a floor or wall that does not move", where
+                )
+            elif partner in known:
+                errors.add(
+                    f"{partner!r} is a body of the model, which moves: name the fixed partner apart", where
+                )
+            elif fixed is not None:
+                errors.add("one of the two may be fixed, not both", where)
+            else:
+                fixed, flip = partner, index == 0
+            continue
+        if entry not in known:
+            errors.add(f"unknown body {entry!r}", where)
+        elif known[entry].angle is not None:
+            errors.add("an impact is between particles (no angle)", where)
+        names.append(str(entry))
+    if len(set(names)) != len(names):
         errors.add(
             "two different bodies: [first, second], the normal pointing from the first", (*path, "bodies")
         )
-        return None
-    for index, name in enumerate(names):
-        if name not in known:
-            errors.add(f"unknown body {name!r}", (*path, "bodies", index))
-        elif known[name].angle is not None:
-            errors.add("an impact is between particles (no angle)", (*path, "bodies", index))
     if ("restitution" in spec) == ("release" in spec):
         errors.add("give exactly one of restitution (a collision) and release (an explosion)", path)
+    if fixed is not None and "release" in spec:
+        errors.add("an explosion parts two bodies: a fixed partner cannot take a share", (*path, "release"))
     restitution = (
         errors.read(spec["restitution"], symbols, (*path, "restitution")) if "restitution" in spec else None
     )
@@ -580,19 +635,22 @@ def _impact(
         if "normal" in spec
         else (("x", sympy.Integer(1)),)
     )
-    plane = any(len(known[n].position) > 1 for n in names if n in known)
+    if flip:  # written from the fixed partner to the body: kept from the moving body to the partner
+        normal = tuple((axis, -component) for axis, component in normal)
     for q in asked:
-        where: Path = ("quantities", q.name, q.kind.value)
+        where = ("quantities", q.name, q.kind.value)
         if q.kind is QuantityKind.KINETIC_ENERGY_LOST:
             if q.target != "impact":
                 errors.add("the energy lost is the impact's: write `kinetic_energy_lost: impact`", where)
         elif q.target not in names:
-            errors.add(f"the impact's bodies are {names}, not {q.target!r}", where)
-        elif q.kind is QuantityKind.FINAL_VELOCITY and plane:
-            errors.add("the bodies move in the plane: ask for the final_speed", where)
-    if len(names) != 2 or not all(n in known for n in names) or (restitution is None and release is None):
+            errors.add(f"the impact's moving bodies are {names}, not {q.target!r}", where)
+        elif q.kind is QuantityKind.FINAL_VELOCITY and len(known[q.target].position) > 1:
+            errors.add(f"{q.target!r} moves in the plane: ask for the final_speed", where)
+    if len(names) + (fixed is not None) != 2 or not all(n in known for n in names):
         return None
-    return Impact((str(names[0]), str(names[1])), normal, restitution, release)
+    if restitution is None and release is None:
+        return None
+    return Impact(tuple(names), normal, restitution, release, fixed)
 
 
 def _coordinate_values(
@@ -690,31 +748,55 @@ def _quantities(
     errors: _Collector,
 ) -> tuple[Quantity, ...]:
     result: list[Quantity] = []
-    for name, entry in _mapping(value, ("quantities",), errors).items():
+    entries = _mapping(value, ("quantities",), errors)
+    # every quantity may be used by an expression, wherever it stands: a mapping has no order
+    stand_ins = {str(n): sympy.Symbol(f"quantity_{n}", real=True) for n in entries if str(n) not in symbols}
+    for name, entry in entries.items():
         if isinstance(entry, Mapping) and "expression" in entry:
-            result += _expression_quantity(str(name), entry, symbols, result, errors)
+            others = {n: s for n, s in stand_ins.items() if n != name}
+            result += _expression_quantity(str(name), entry, symbols, others, errors)
             continue
         quantity = _quantity(
             str(name), entry, ("quantities", str(name)), symbols, coordinates, constraints, collision, errors
         )
         if quantity is not None:
             result.append(quantity)
+    _check_cycles(result, errors)
     return tuple(result)
+
+
+def _check_cycles(quantities: list[Quantity], errors: _Collector) -> None:
+    """Expressions that use each other in a circle define nothing."""
+    uses = {q.name: [name for _, name in q.uses] for q in quantities}
+    reported: set[str] = set()
+
+    def visit(name: str, path: list[str]) -> None:
+        if name in path:
+            circle = [*path[path.index(name) :], name]
+            if not reported & set(circle):
+                reported.update(circle)
+                errors.add(
+                    f"the expressions use each other in a circle: {' -> '.join(circle)}",
+                    ("quantities", circle[0], "expression"),
+                )
+            return
+        for used in uses.get(name, []):
+            visit(used, [*path, name])
+
+    for quantity in quantities:
+        visit(quantity.name, [])
 
 
 def _expression_quantity(
     name: str,
     entry: Mapping[str, Any],
     symbols: Mapping[str, sympy.Symbol],
-    earlier: list[Quantity],
+    stand_ins: Mapping[str, sympy.Symbol],
     errors: _Collector,
 ) -> list[Quantity]:
-    """`T: {expression: "2*pi*R/v"}`: a formula in the parameters and the quantities defined above it."""
+    """`T: {expression: "2*pi*R/v"}`: a formula in the parameters and the model's other quantities."""
     path: Path = ("quantities", name)
     _check_keys(entry, {"expression"}, {"expression"}, path, errors)
-    stand_ins = {
-        q.name: sympy.Symbol(f"quantity_{q.name}", real=True) for q in earlier if q.name not in symbols
-    }
     expr = errors.read(entry["expression"], {**symbols, **stand_ins}, (*path, "expression"))
     if expr is None:
         return []

@@ -23,6 +23,7 @@ from physics.engine.model import (
 )
 from physics.engine.proof import domain_points
 from physics.engine.results import MethodReport, Step, StepKind
+from physics.engine.roots import admissible, declared_range
 from physics.errors import DerivationError
 
 
@@ -105,6 +106,34 @@ class Method(ABC):
             self._impact = work(self.model)
         return impact.answer(self._impact, self.model, quantity, self.step)
 
+    def after_impact(self, quantity: Quantity) -> sympy.Expr:
+        """The quantity in the motion that starts with this method's own velocities after the impact."""
+        work = impact.METHODS.get(self.name)
+        if work is None or self.model.impact is None:
+            raise NotApplicable(f"{self.title} does not treat impacts")
+        if self._impact is None:
+            self._impact = work(self.model)
+        steps, _, after = self._impact
+        for title, latex in steps:
+            self.step(title, latex)
+        rates = impact.coordinate_rates(self.model, after)
+        self.step(
+            "The motion after the impact starts with these velocities",
+            r",\ ".join(
+                self.tex(sympy.Eq(c.velocity, r)) for c, r in zip(self.model.coordinates, rates, strict=True)
+            ),
+        )
+        state = {
+            **dict(self.model.state),
+            **{c.velocity: r for c, r in zip(self.model.coordinates, rates, strict=True)},
+        }
+        bounced = dataclasses.replace(self.model, state=tuple(state.items()), impact=None)
+        solver = type(self)(bounced, Mechanics(bounced))
+        result = solver.answer(dataclasses.replace(quantity, after=""))
+        for step in solver.steps:
+            self.step(f"{step.title} (after the impact)", step.latex)
+        return result
+
     def mode_matrices(self, point: dict[sympy.Symbol, sympy.Expr]) -> tuple[sympy.Matrix, sympy.Matrix]:
         """(M, K) of the small oscillations about the equilibrium `point`, as this method sees them."""
         raise NotApplicable(f"{self.title} does not give normal modes")
@@ -133,6 +162,8 @@ class Method(ABC):
 
     def answer(self, quantity: Quantity) -> sympy.Expr:
         kind = quantity.kind
+        if quantity.after:  # in the motion that starts just after the impact
+            return self.after_impact(quantity)
         if quantity.at:  # where the motion from the state arrives: speed, velocity, force, acceleration
             return work_energy.answer(self, quantity)
         if kind in TRAJECTORY_KINDS:
@@ -257,14 +288,12 @@ class Method(ABC):
         return tidy.simplify(stable[0])
 
     def solve_for(self, parameter: sympy.Symbol, expr: sympy.Expr, name: str) -> sympy.Expr:
-        roots = [
-            r
-            for r in sympy.solve(expr, parameter)
-            if not (parameter.is_positive and r.is_positive is False) and r.is_real is not False
-        ]
+        found = sympy.solve(expr, parameter)
+        roots = admissible(found, parameter, self.model)
         if len(roots) != 1:
             raise DerivationError(
-                f"{self.title}: {name}: expected one value of {parameter}, found {typed_text(roots)}",
+                f"{self.title}: {name}: expected one value of {parameter} {_declared(parameter, self.model)}, "
+                f"found {typed_text(roots)} among the roots {typed_text(found)}",
                 quantity=name,
             )
         self.step(
@@ -295,6 +324,15 @@ class Method(ABC):
 
     def at_state(self, expr: sympy.Expr) -> sympy.Expr:
         return tidy.simplify(expr.subs(dict(self.model.state)))
+
+
+def _declared(symbol: sympy.Symbol, model: Model) -> str:
+    """What the model declares of the symbol, for a message: "(positive, in [0, pi/2])"."""
+    said = ["positive"] if symbol.is_positive else ["negative"] if symbol.is_negative else ["real"]
+    bounds = declared_range(symbol, model)
+    if bounds is not None:
+        said.append(f"in [{bounds[0]:.4g}, {bounds[1]:.4g}]")
+    return f"({', '.join(said)})"
 
 
 def _real_roots(expr: sympy.Expr, q: sympy.Symbol) -> list[sympy.Expr]:

@@ -14,6 +14,8 @@ from enum import StrEnum
 
 import sympy
 
+from physics.dimensions import Dimension
+
 AXES = ("x", "y")
 ZERO = sympy.Integer(0)
 
@@ -132,15 +134,17 @@ class Collision:
 
 @dataclass(frozen=True)
 class Impact:
-    """Two smooth bodies meet at the model's state, moving with its velocities: an impulse along
-    `normal` (pointing from the first body to the second) with Newton's coefficient of `restitution`
-    (1 elastic, 0 perfectly inelastic), or, for an explosion, one that `release`s that much kinetic
-    energy as they part. Exactly one of restitution and release is given."""
+    """Bodies meet at the model's state, moving with its velocities: an impulse along `normal` (pointing
+    from the first body to the second, or to the `fixed` partner) with Newton's coefficient of
+    `restitution` (1 elastic, 0 perfectly inelastic), or, for an explosion, one that `release`s that
+    much kinetic energy as they part. Exactly one of restitution and release is given. `bodies` are the
+    moving ones: two, or one against a `fixed` partner (a floor, a wall) that does not move."""
 
-    bodies: tuple[str, str]
+    bodies: tuple[str, ...]
     normal: tuple[tuple[str, sympy.Expr], ...]
     restitution: sympy.Expr | None
     release: sympy.Expr | None
+    fixed: str | None = None
 
 
 class QuantityKind(StrEnum):
@@ -240,6 +244,7 @@ class Quantity:
     contact: tuple[str, str] = ("", "")
     coefficient: sympy.Expr | None = None
     ratio: tuple[str, ...] = ()  # for MODE_SHAPE: (numerator, denominator) coordinates; target = mode
+    after: str = ""  # "impact": taken in the motion that starts just after the model's impact
 
 
 @dataclass(frozen=True)
@@ -276,6 +281,13 @@ class Model:
     time: sympy.Symbol | None = None  # the time `t`, when a given force depends on it
     # the author's names for worked solutions: (coordinate, constraint or body, symbol, words); notation.py
     notation: tuple[tuple[str, str | None, str | None], ...] = ()
+    # the declared dimensions of the problem's symbols (when given): what kind of thing a quantity is
+    dimensions: tuple[tuple[sympy.Symbol, Dimension], ...] = ()
+    unused: tuple[str, ...] = ()
+    # the symbol table's own ranges (`range:` of a symbol): which root a solve keeps (roots.py)
+    symbol_ranges: tuple[
+        tuple[sympy.Symbol, sympy.Expr, sympy.Expr], ...
+    ] = ()  # quantities the author derives on purpose without a part asking for them
 
     def body(self, name: str) -> Body:
         return next(b for b in self.bodies if b.name == name)

@@ -5,6 +5,7 @@
     rate: {velocity: theta, at: {theta: 0}}             # the coordinate's velocity there
     normal_bottom: {force: track, at: {theta: 0}}       # the constraint force there, with that velocity
     flight: {time_of_flight: ball, level: "-h"}         # until the body's y is -h (default: launch height)
+    rebound: {max_height: ball, after: impact}          # in the motion just after the model's impact
 """
 
 from __future__ import annotations
@@ -49,7 +50,9 @@ def load_quantity(
     """The quantity, or None with every fault reported at its path. Body targets are checked later
     (`check_targets`), once the bodies are known."""
     allowed = (
-        {kind.value} | ({"at"} if kind in AT_KINDS else set()) | ({"level"} if kind in LEVEL_KINDS else set())
+        {kind.value, "after"}
+        | ({"at"} if kind in AT_KINDS else set())
+        | ({"level"} if kind in LEVEL_KINDS else set())
     )
     faults = len([None for key in spec if key not in allowed])
     for key in spec:
@@ -86,9 +89,15 @@ def load_quantity(
         except SpecError as error:
             report(error.message, error.path)
             faults += 1
+    after = spec.get("after", "")
+    if after not in ("", "impact"):
+        report(
+            "`after: impact` takes the quantity in the motion just after the model's impact", (*path, "after")
+        )
+        faults += 1
     if faults:
         return None
-    return Quantity(name, kind, str(target), at=at, level=level)
+    return Quantity(name, kind, str(target), at=at, level=level, after=str(after))
 
 
 def _read_at(

@@ -18,6 +18,7 @@ from physics.errors import DerivationError
 STEPS_PER_SCALE = 400  # RK4 steps per time scale of the motion: errors far below the 1e-3 tolerance
 MAX_SCALES = 200
 BISECTIONS = 60
+PUSH = 1e-4  # a vanishing push off an unstable equilibrium, as a share of the motion's speed
 
 
 @dataclass
@@ -36,30 +37,52 @@ class ReachMeasure:
     # --- a coordinate reaching a value -----------------------------------------------------------
 
     def _arrival(self, quantity: Quantity, point: Point) -> Measured:
-        sim = self.simulator
-        dyn = sim.dynamics
         ((name, value),) = quantity.at
-        i = [c.name for c in sim.model.coordinates].index(name)
         target = _evaluate(value, point)
         key = (name, target, *sorted((str(s), v) for s, v in point.items()))
         if key not in self._events:
-            q, qd = sim._start(point)
-            sign = math.copysign(1.0, target - q[i])
-            params = dyn.values(point)
-            acceleration = dyn.unknowns(q, qd, params)[i]
-            distance = abs(target - q[i])
-            scales = [distance / abs(qd[i])] if qd[i] else []
-            scales += [math.sqrt(2 * distance / abs(acceleration))] if acceleration else []
-            if not scales:
-                raise DerivationError(f"{quantity.name}: released at the state, {name} does not move")
+            self._events[key] = self._arrive(quantity, point, [target])[0]
+        return self._read(quantity, self._events[key][1], point)
 
-            def turned(y: Vector) -> bool:
-                return y[dyn.n + i] * sign < 0 and abs(y[i] - q[i]) > 1e-9 * max(distance, 1.0)
+    def crossings(self, quantity: Quantity, point: Point, targets: list[float]) -> list[float]:
+        """The quantity where one integrated motion reaches each of `targets` in turn (the same motion:
+        the targets are not in its equations), read at each."""
+        return [self._read(quantity, y, point)[1] for _, y in self._arrive(quantity, point, targets)]
 
-            self._events[key] = self._integrate(
-                q + qd, min(scales), point, lambda y: sign * (y[i] - target), turned, quantity.name
-            )
-        _, y = self._events[key]
+    def _arrive(self, quantity: Quantity, point: Point, targets: list[float]) -> list[tuple[float, Vector]]:
+        sim = self.simulator
+        dyn = sim.dynamics
+        ((name, _),) = quantity.at
+        i = [c.name for c in sim.model.coordinates].index(name)
+        q, qd = sim._start(point)
+        sign = math.copysign(1.0, targets[-1] - q[i])
+        params = dyn.values(point)
+        acceleration = dyn.unknowns(q, qd, params)[i]
+        distance = abs(targets[-1] - q[i])
+        scales = [distance / abs(qd[i])] if qd[i] else []
+        scales += [math.sqrt(2 * distance / abs(acceleration))] if acceleration else []
+        if not scales:  # at rest where nothing pulls: released from the top with a vanishing push?
+            scales = [self._push(q, qd, i, sign, distance, params, quantity.name)]
+
+        def turned(y: Vector) -> bool:
+            return y[dyn.n + i] * sign < 0 and abs(y[i] - q[i]) > 1e-9 * max(distance, 1.0)
+
+        events: list[tuple[float, Vector]] = []
+        y, elapsed = q + qd, 0.0
+        for target in targets:
+
+            def passed(state: Vector, at: float = target) -> float:
+                return sign * (state[i] - at)
+
+            time, y = self._integrate(y, min(scales), point, passed, turned, quantity.name)
+            elapsed += time
+            events.append((elapsed, y))
+        return events
+
+    def _read(self, quantity: Quantity, y: Vector, point: Point) -> Measured:
+        sim = self.simulator
+        dyn = sim.dynamics
+        ((name, _),) = quantity.at
         n = dyn.n
         names = [c.name for c in sim.model.coordinates]
         if quantity.kind is QuantityKind.VELOCITY:
@@ -86,6 +109,24 @@ class ReachMeasure:
             unknowns[n + index],
             None,
         )
+
+    def _push(
+        self, q: Vector, qd: Vector, i: int, sign: float, distance: float, params: Vector, name: str
+    ) -> float:
+        """A state at rest on an unstable equilibrium (a block on top of a dome): the motion the
+        derivation describes starts with a vanishing push towards the target. Sets that push in qd (a
+        velocity whose energy is PUSH^2 of the motion's) and returns the time scale of the runaway,
+        1/sqrt(da/dq); refused if the equilibrium is stable that way (the coordinate would not move)."""
+        dyn = self.simulator.dynamics
+        h = 1e-6 * max(distance, 1e-12)
+        moved = list(q)
+        moved[i] += sign * h
+        slope = dyn.unknowns(moved, qd, params)[i] * sign / h
+        if not slope > 0:
+            raise DerivationError(f"{name}: released at rest at the state, the coordinate does not move")
+        scale = 1 / math.sqrt(slope)
+        qd[i] = sign * PUSH * distance / scale
+        return scale
 
     # --- a body in flight --------------------------------------------------------------------------
 

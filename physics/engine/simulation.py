@@ -7,11 +7,12 @@ closed-form answer, which is only evaluated at the end to be compared with what 
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from functools import cached_property, partial
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import mpmath
 import sympy
@@ -24,6 +25,7 @@ from physics.engine.lagrange import LagrangeMethod
 from physics.engine.mechanics import Mechanics
 from physics.engine.method import stable_equilibrium
 from physics.engine.model import (
+    AXES,
     IMPACT_KINDS,
     ORBIT_KINDS,
     SLIP_KINDS,
@@ -38,6 +40,10 @@ from physics.errors import DerivationError
 TOLERANCE = 1e-3
 ENERGY_TOLERANCE = 1e-6  # RK4 keeps the books far better than this over a short motion
 ENERGY_STEPS = 100
+THRESHOLD_STEP = 1e-3  # runs at the derived threshold ± this fraction of it
+if TYPE_CHECKING:
+    from physics.engine.reach_simulation import ReachMeasure
+
 Point = dict[sympy.Symbol, float]
 Vector = list[float]
 Measured = tuple[str, float, float | None]  # (what was compared, measured value, own error or None)
@@ -106,6 +112,22 @@ class Dynamics:
             )
         ]
         self._dissipative = _compile([*args, *lam], self.mech.generalized(dissipative))
+
+    def uses(self, symbol: sympy.Symbol) -> bool:
+        """Whether the equations of motion or the start depend on the symbol."""
+        state = [v for _, v in self.model.state]
+        return any(symbol in e.free_symbols for e in [self.mech.kinetic, self.mech.potential, *state]) or any(
+            symbol in g.free_symbols for g in self._gaps
+        )
+
+    @cached_property
+    def _gaps(self) -> list[sympy.Expr]:
+        forces = [c for f in self.model.forces for _, c in f.components] + [
+            f.coefficient for f in self.model.forces
+        ]
+        return (
+            [c.gap for c in self.model.constraints] + forces + [f.coefficient for f in self.model.frictions]
+        )
 
     def values(self, point: Point) -> Vector:
         """The parameters' values at the point (the time, when not a parameter, from the state)."""
@@ -199,6 +221,8 @@ class Simulator:
         self, quantity: Quantity, reference: sympy.Expr, points: Sequence[Point]
     ) -> SimulationCheck | None:
         measure = self._reach if _reaches(quantity) else self._measures().get(quantity.kind)
+        if quantity.after:
+            measure = self._after_impact
         if measure is None:
             return None
         worst = 0.0
@@ -248,7 +272,7 @@ class Simulator:
         return OrbitMeasure(self.dynamics, self._start)
 
     @cached_property
-    def _reach(self) -> Measure:
+    def _reach(self) -> ReachMeasure:
         from physics.engine.reach_simulation import ReachMeasure  # it builds on this module
 
         return ReachMeasure(self)
@@ -256,6 +280,32 @@ class Simulator:
     @cached_property
     def _impact(self) -> impact_simulation.ImpactMeasure:
         return impact_simulation.ImpactMeasure(self.model)
+
+    @cached_property
+    def _bounced(self) -> dict[tuple[tuple[str, float], ...], Simulator]:
+        return {}
+
+    def _after_impact(self, quantity: Quantity, point: Point, expected: float) -> Measured:
+        """The motion after the impact, started with the velocities the integrated contact left (never
+        the derived ones), measured as any motion from a state is."""
+        key = tuple(sorted((s.name, v) for s, v in point.items()))
+        if key not in self._bounced:
+            rates = self._impact.rates(point)
+            state = {
+                **dict(self.model.state),
+                **{
+                    c.velocity: sympy.Float(r, 17) for c, r in zip(self.model.coordinates, rates, strict=True)
+                },
+            }
+            bounced = dataclasses.replace(self.model, state=tuple(state.items()), impact=None)
+            self._bounced[key] = Simulator(bounced, self.equilibrium_of)
+        simulator = self._bounced[key]
+        inner = dataclasses.replace(quantity, after="")
+        measure = simulator._reach if _reaches(inner) else simulator._measures().get(inner.kind)
+        if measure is None:
+            raise DerivationError(f"{quantity.name}: no simulation of this quantity after an impact")
+        what, measured, error = measure(inner, point, expected)
+        return f"{what}, after an integrated contact", measured, error
 
     def energy_balance(self, points: Sequence[Point]) -> SimulationCheck | None:
         """Integrate the motion from the model's state and keep the books: the change of T + V must equal
@@ -533,10 +583,14 @@ class Simulator:
 
     def _solve(self, quantity: Quantity, point: Point, expected: float) -> Measured:
         """Integrate with the derived parameter value: the inner acceleration must vanish, measured against
-        the acceleration with half that value."""
+        the acceleration with half that value. Any other inner quantity the simulation measures (a
+        normal force where the motion gets to, a speed) is a threshold: measured on runs just below and
+        just above the derived value, it must change sign, and where it crosses zero is compared."""
         inner, parameter = quantity.inner, quantity.parameter
-        if inner is None or parameter is None or inner.kind is not QuantityKind.ACCELERATION:
+        if inner is None or parameter is None:
             raise DerivationError(f"{quantity.name}: no simulation for this kind of condition")
+        if inner.kind is not QuantityKind.ACCELERATION or inner.at:
+            return self._threshold(quantity, inner, parameter, point, expected)
         at_value = self._acceleration(inner, {**point, parameter: expected}, 0.0)[1]
         at_half = self._acceleration(inner, {**point, parameter: expected / 2}, 0.0)[1]
         return (
@@ -544,6 +598,60 @@ class Simulator:
             at_value,
             abs(at_value) / max(abs(at_half), 1e-300),
         )
+
+    def _threshold(
+        self, quantity: Quantity, inner: Quantity, parameter: sympy.Symbol, point: Point, expected: float
+    ) -> Measured:
+        measure = self._reach if _reaches(inner) else self._measures().get(inner.kind)
+        if measure is None or inner.kind is QuantityKind.SOLVE:
+            raise DerivationError(f"{quantity.name}: no simulation for this kind of condition")
+        step = THRESHOLD_STEP * max(abs(expected), 1e-12)
+        below, above = expected - step, expected + step
+        try:
+            low, high = self._either_side(inner, parameter, point, expected, (below, above), measure)
+        except DerivationError as error:
+            raise DerivationError(
+                f"{quantity.name}: the runs either side of {parameter} = {expected:.6g} fail: {error.message}",
+                quantity=quantity.name,
+            ) from None
+        if low * high > 0 or low == high:
+            raise DerivationError(
+                f"{quantity.name}: the integrated {inner.kind.value.replace('_', ' ')} does not change sign across "
+                f"{parameter} = {expected:.6g}: {low:.6g} at {below:.6g}, {high:.6g} at {above:.6g}",
+                quantity=quantity.name,
+            )
+        crossing = below - low * (above - below) / (high - low)
+        return (
+            f"where the integrated {inner.kind.value.replace('_', ' ')} changes sign, between runs just below and "
+            "just above",
+            crossing,
+            None,
+        )
+
+    def _either_side(
+        self,
+        inner: Quantity,
+        parameter: sympy.Symbol,
+        point: Point,
+        expected: float,
+        values: tuple[float, float],
+        measure: Measure,
+    ) -> tuple[float, float]:
+        """The inner quantity measured with the parameter at each of `values`."""
+        ends = [value for _, value in inner.at]
+        if (
+            inner.at
+            and not self.dynamics.uses(parameter)
+            and all(v.free_symbols <= {parameter} for v in ends)
+        ):
+            # the parameter only says where the motion is read: one run, read as it passes each value
+            ((_, end),) = inner.at
+            places = [_evaluate(end, {**point, parameter: v}) for v in values]
+            low, high = self._reach.crossings(inner, {**point, parameter: expected}, places)
+            return low, high
+        low = measure(inner, {**point, parameter: values[0]}, 0.0)[1]
+        high = measure(inner, {**point, parameter: values[1]}, 0.0)[1]
+        return low, high
 
     # --- potentials and oscillations ---------------------------------------------------------
 
@@ -652,21 +760,20 @@ class Simulator:
         return Dynamics(merged(self.model))
 
     @cached_property
-    def _along(self) -> Callable[..., list[float]]:
-        """d(target position . direction)/dq, compiled: how the target moves along the projectile's path."""
+    def _target_motion(self) -> Callable[..., list[float]]:
+        """d(target position)/dq on each axis (x row, then y row), compiled: the target's velocity is
+        this times q', however its constraints guide it (along an incline, round a pendulum's arc)."""
         hit = self.model.collision
         assert hit is not None
         mech = self.dynamics.mech
-        direction = dict(hit.direction)
-        norm = sympy.sqrt(sympy.Add(*(v**2 for v in direction.values())))
-        along = sympy.Add(
-            *(direction.get(axis, 0) / norm * expr for axis, expr in self.model.body(hit.target).position)
-        )
-        return _compile([*mech.q, *self.dynamics.params], [sympy.diff(along, q) for q in mech.q])
+        position = dict(self.model.body(hit.target).position)
+        rows = [sympy.diff(position.get(axis, sympy.Integer(0)), q) for axis in AXES for q in mech.q]
+        return _compile([*mech.q, *self.dynamics.params], rows)
 
     def _collision(self, quantity: Quantity, point: Point, expected: float) -> Measured:
-        """The projectile couples to the target by a stiff drag until they move together (a perfectly
-        inelastic collision); then the merged body moves until it turns back."""
+        """The projectile, a particle in the plane, couples to the target by a stiff drag on their relative
+        velocity until they move together (a perfectly inelastic collision): the target's constraints
+        take whatever part of the blow they resist. Then the merged body moves until it turns back."""
         hit = self.model.collision
         assert hit is not None
         before, after = self.dynamics, self._after
@@ -677,24 +784,36 @@ class Simulator:
         q0 = [_evaluate(at.get(name, sympy.Integer(0)), point) for name in names]
         mass = _evaluate(hit.projectile_mass, point)
         speed = expected if quantity.kind is QuantityKind.PROJECTILE_SPEED else 1.0
+        direction = [_evaluate(dict(hit.direction).get(axis, sympy.Integer(0)), point) for axis in AXES]
+        norm = math.hypot(*direction)
         tau = 1e-4
         drag = mass / tau
+        # the projectile's weight, while it is being stopped: the merged body carries it from then on
+        weight = [0.0, -_evaluate(self.model.gravity, point) if self.model.gravity is not None else 0.0]
 
         def f(y: Vector) -> Vector:
-            q, qd, u = y[:n], y[n : 2 * n], y[2 * n]
-            along = self._along(*q, *params)
-            force = drag * (u - sum(a * b for a, b in zip(along, qd, strict=True)))
-            qdd = before.unknowns(q, qd, params, extra=[force * a for a in along])[:n]
-            return [*qd, *qdd, -force / mass]
+            q, qd, u = y[:n], y[n : 2 * n], y[2 * n : 2 * n + len(AXES)]
+            rows = self._target_motion(*q, *params)
+            jacobian = [rows[k * n : (k + 1) * n] for k in range(len(AXES))]
+            force = [
+                drag * (u[k] - sum(a * b for a, b in zip(jacobian[k], qd, strict=True)))
+                for k in range(len(AXES))
+            ]
+            generalized = [sum(force[k] * jacobian[k][j] for k in range(len(AXES))) for j in range(n)]
+            qdd = before.unknowns(q, qd, params, extra=generalized)[:n]
+            # last: the projectile's height, for the work of its weight
+            return [*qd, *qdd, *(-p / mass + w for p, w in zip(force, weight, strict=True)), u[1]]
 
-        end = rk4(f, [*q0, *[0.0] * n, speed], tau / 10, 300)[-1]
-        q1, qd1, u1 = end[:n], end[n : 2 * n], end[2 * n]
+        start = [*q0, *[0.0] * n, *(speed * d / norm for d in direction), 0.0]
+        end = rk4(f, start, tau / 10, 300)[-1]
+        q1, qd1, u1, rise = end[:n], end[n : 2 * n], end[2 * n : 2 * n + len(AXES)], end[-1]
         matrix = before.mass(q1, params)
-        kinetic = 0.5 * mass * u1**2 + 0.5 * sum(
+        kinetic = 0.5 * mass * sum(c * c for c in u1) + 0.5 * sum(
             qd1[i] * matrix[i][j] * qd1[j] for i in range(n) for j in range(n)
         )
         initial = 0.5 * mass * speed**2
-        lost = (initial - kinetic - (before.potential(q1, params) - before.potential(q0, params))) / initial
+        gained = before.potential(q1, params) - before.potential(q0, params) - mass * weight[1] * rise
+        lost = (initial - kinetic - gained) / initial
         if quantity.kind is QuantityKind.ENERGY_FRACTION_LOST:
             return "kinetic energy lost in an integrated stiff inelastic coupling", lost, None
         ((name, target_text),) = hit.reaches

@@ -163,8 +163,9 @@ def answer(method: Method, quantity: Quantity) -> sympy.Expr:
     reached = dataclasses.replace(model, state=tuple(arrived.items()))
     solver = type(method)(reached, Mechanics(reached))
     result = solver.answer(dataclasses.replace(quantity, at=()))
+    where = f"(where {method.named(c.name)} = ${method.tex(trip.end)}$)"
     for step in solver.steps:
-        method.step(f"{step.title} (where {c.name} = {typed_text(trip.end)})", step.latex)
+        method.step(f"{step.title} {where}", step.latex)
     return result
 
 
@@ -219,7 +220,7 @@ def by_energy(method: Method, trip: Journey) -> sympy.Expr:
     square = tidy.simplify(2 * (before + work - rest) / inertia)
     w = qd**2
     method.step(
-        f"Work and energy from {c.name} = {typed_text(trip.start)} to {typed_text(trip.end)}",
+        f"Work and energy from {method.named(c.name)} = ${method.tex(trip.start)}$ to ${method.tex(trip.end)}$",
         r"T_1 + V_1 = T_0 + V_0 + W:\quad "
         + method.tex(sympy.Eq(tidy.simplify(inertia * w / 2 + rest), tidy.simplify(before + work)))
         + r"\Rightarrow "

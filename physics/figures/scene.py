@@ -1087,7 +1087,9 @@ def draw_impact(figure: Figure, model: Model, values: Values) -> None:
             label = symbol_label(velocity.name) if isinstance(velocity, sympy.Symbol) else ""
             canvas.text((centre[0] + 0.55, 1.2), label, size=0.36)
             speeds.append(f"{body_label(body, model)} moving at {label or 'its speed'}")
-    if plane:
+    if hit.fixed is not None:
+        _draw_fixed_partner(figure, model, values)
+    elif plane:
         n = dict(hit.normal)
         nx, ny = (values.number(n.get(a, sympy.Integer(0))) for a in ("x", "y"))
         norm = math.hypot(nx, ny) or 1.0
@@ -1110,11 +1112,28 @@ def draw_impact(figure: Figure, model: Model, values: Values) -> None:
     else:
         canvas.line((-BLOCK, -BLOCK / 2), (gap + BLOCK, -BLOCK / 2), width=0.05)
     names = " and ".join(body_label(model.body(name), model) for name in hit.bodies)
+    if hit.fixed is not None:
+        names += f" and the fixed {hit.fixed}"
     if hit.release is not None:
         figure.say(f"{names} together, about to be pushed apart by an explosion.")
     else:
         kind = "a collision" if hit.restitution != 1 else "an elastic collision"
         figure.say(f"{names} about to meet in {kind}" + (": " + ", ".join(speeds) if speeds else "") + ".")
+
+
+def _draw_fixed_partner(figure: Figure, model: Model, values: Values) -> None:
+    """The floor or wall the body hits: a hatched surface across the normal, where the body meets it."""
+    hit = model.impact
+    assert hit is not None
+    n = dict(hit.normal)
+    nx, ny = (values.number(n.get(a, sympy.Integer(0))) for a in ("x", "y"))
+    norm = math.hypot(nx, ny) or 1.0
+    nx, ny = nx / norm, ny / norm
+    contact = (BLOCK / 2 * nx, BLOCK / 2 * ny)
+    along = (-ny, nx)  # hatched on the +normal side, the solid one
+    figure.canvas.ground(
+        (contact[0] - along[0], contact[1] - along[1]), (contact[0] + along[0], contact[1] + along[1])
+    )
 
 
 def draw_row(figure: Figure, model: Model) -> None:

@@ -87,12 +87,21 @@ def test_a_misspelled_quantity_is_refused_even_beside_a_typed_answer(client, ins
 def test_a_part_with_only_a_typed_answer_is_labelled_not_derived(client, instructor_headers):
     doc = atwood_upload()
     doc["parts"][1]["id"] = "string_tension"
+    doc["model"]["unused"] = ["tension"]  # derived, but no part asks for it: said on purpose
     response = upload(client, instructor_headers, doc)
     assert response.status_code == 201, response.text
     solution = client.get("/v1/problems/my-atwood/solution", headers=instructor_headers).json()
     sources = {r["part"]: r["source"] for r in solution["references"]}
     assert sources["string_tension"] == "not derived"
     assert sources["acceleration"] == sources["acceleration_numeric"] == "derived"
+
+
+def test_an_upload_whose_model_derives_a_quantity_no_part_asks_for_is_refused(client, instructor_headers):
+    doc = atwood_upload()
+    doc["parts"][1]["id"] = "tensoin"  # a typo: the typed answer would be graded, the derivation ignored
+    details = _details(upload(client, instructor_headers, doc))
+    assert "'tensoin'" in details["parts[1].id"] and "'tension'" in details["parts[1].id"]
+    assert "no part asks for the quantity 'tension'" in details["model.quantities.tension"]
 
 
 @pytest.mark.parametrize("problem", ["atwood"])
@@ -103,6 +112,7 @@ def test_bank_verify_names_the_parts_that_are_not_derived(problem: str) -> None:
     doc = yaml.safe_load((BANK / problem / "problem.yaml").read_text())
     doc["model"] = yaml.safe_load((BANK / problem / "model.yaml").read_text())
     doc["parts"][1]["id"] = "string_tension"
+    doc["model"]["unused"] = ["tension"]
     summary = verify_problem(parse_problem(doc), variants=1).summary()
     assert "not derived (typed answer only): string_tension" in summary
 

@@ -27,14 +27,22 @@ def test_a_formula_of_earlier_quantities_is_derived_by_each_method() -> None:
     assert set(result.agreement["time_to_fall_1m"]) == {"lagrange", "newton", "conservation", "dalembert"}
 
 
+def test_a_formula_may_use_a_quantity_defined_below_it() -> None:
+    data = copy.deepcopy(model_data("atwood"))
+    data["quantities"] = {"early": {"expression": "2*later"}, "later": {"acceleration": "s"}}
+    result = uncached(load_model(data, symbols("atwood")))
+    assert sympy.simplify(result.quantities["early"] - 2 * result.quantities["later"]) == 0
+
+
 @pytest.mark.parametrize(
     ("expression", "words"),
     [
-        pytest.param("later + 1", "later", id="a-quantity-defined-below"),
+        pytest.param("nowhere + 1", "nowhere", id="no-such-quantity"),
         pytest.param("tension +", "cannot read", id="unreadable"),
+        pytest.param("early + 1", "nknown", id="itself"),
     ],
 )
-def test_a_formula_may_use_only_quantities_defined_above_it(expression: str, words: str) -> None:
+def test_a_formula_must_use_quantities_of_the_model(expression: str, words: str) -> None:
     data = copy.deepcopy(model_data("atwood"))
     data["quantities"] = {"early": {"expression": expression}, "later": {"acceleration": "s"}}
     with pytest.raises(SpecErrors) as caught:
@@ -42,3 +50,17 @@ def test_a_formula_may_use_only_quantities_defined_above_it(expression: str, wor
     (error,) = caught.value.errors
     assert error.path == ("quantities", "early", "expression")
     assert words in error.message
+
+
+def test_formulas_that_use_each_other_in_a_circle_are_refused() -> None:
+    data = copy.deepcopy(model_data("atwood"))
+    data["quantities"] = {
+        "a": {"expression": "b + 1"},
+        "b": {"expression": "2*a"},
+        "c": {"acceleration": "s"},
+    }
+    with pytest.raises(SpecErrors) as caught:
+        load_model(data, symbols("atwood"))
+    (error,) = caught.value.errors
+    assert error.path == ("quantities", "a", "expression")
+    assert "a circle: a -> b -> a" in error.message

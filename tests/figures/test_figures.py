@@ -35,6 +35,8 @@ EXPECTED = {
     "yo-yo": ({"m", "r"}, "axle"),
     "cart-collision": ({"m₁", "m₂", "u₁", "u₂"}, "collision"),
     "glancing-pucks": ({"m", "u", "φ"}, "elastic collision"),
+    "bouncing-ball": ({"m"}, "the fixed floor"),
+    "cart-hits-block-on-incline": ({"m₁", "m₂", "u"}, "elastic collision"),
     "projectile": ({"m", "v₀", "α"}, "launched from the ground"),
     "ladder-slipping": ({"m", "L", "θ"}, "leans against a vertical wall"),
     "quarter-circle-slide": ({"m", "R"}, "quarter-circle track of radius R, with m at its top"),

@@ -15,6 +15,7 @@ import yaml
 from physics.engine import derive, load_model
 from physics.errors import DerivationError, SpecError
 from physics.mathinput import parse_math
+from physics.units import unit_dimension
 from problems.compiled import compile_problem
 from problems.loader import parse_problem
 
@@ -55,14 +56,19 @@ def test_guide_shows_every_element_kind_and_quantity_kind() -> None:
 def test_guide_model_example_derives_what_it_says(block: str) -> None:
     [names] = _comments(block, "symbols")
     symbols = {n: sympy.Symbol(n, positive=True) for n in names.split()}
+    dimensions = {  # `# dimensions: m=kg k=N/m`: what the problem's symbol table would declare
+        name: unit_dimension(unit, ())
+        for line in _comments(block, "dimensions")
+        for name, unit in (pair.split("=") for pair in line.split())
+    }
     data: Any = yaml.safe_load(block)
     refused = _comments(block, "refused")
     if refused:
         with pytest.raises((SpecError, DerivationError)) as caught:
-            derive(load_model(data, symbols))
+            derive(load_model(data, symbols, dimensions))
         assert refused[0] in str(caught.value)
         return
-    derived = derive(load_model(data, symbols)).quantities
+    derived = derive(load_model(data, symbols, dimensions)).quantities
     gives = _comments(block, "gives")
     assert gives, "an example says what it gives"
     for line in gives:

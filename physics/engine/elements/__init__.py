@@ -51,6 +51,46 @@ class Expanded:
         return SpecErrors(moved)
 
 
+def _in_dependency_order(elements: Mapping[Any, Any], written: Any) -> list[tuple[Any, Any]]:
+    """The elements, each after those that define the bodies it hangs from or pulls on (a pulley after
+    the blocks at its ends, a pendulum after its pivot's), otherwise in the order written: a mapping has
+    no order, and a tool that sorts the keys must not break the model."""
+    defined = set(written) if isinstance(written, Mapping) else set()
+    pending = list(elements.items())
+    ordered: list[tuple[Any, Any]] = []
+    while pending:
+        ready = next((item for item in pending if _needs(item[1]) <= defined), pending[0])
+        pending.remove(ready)
+        ordered.append(ready)
+        defined |= _defines(*ready)
+    return ordered
+
+
+def _needs(spec: Any) -> set[str]:
+    """The bodies an element needs defined before it (by hand or by another element)."""
+    if not isinstance(spec, Mapping):
+        return set()
+    named: list[Any] = []
+    if spec.get("kind") == "pulley" and isinstance(spec.get("ends"), list):
+        named = [end.get("body") for end in spec["ends"] if isinstance(end, Mapping)]
+    elif spec.get("kind") == "pendulum":
+        named = [spec.get("pivot")]
+    elif spec.get("kind") == "rotating" and isinstance(spec.get("bodies"), list):
+        named = spec["bodies"]
+    return {n for n in named if isinstance(n, str)}
+
+
+def _defines(name: Any, spec: Any) -> set[str]:
+    """The bodies an element defines: its own (`body`, default its name) and a wedge's."""
+    if not isinstance(spec, Mapping) or spec.get("kind") not in {"incline", "surface", "rolling", "pendulum"}:
+        return set()
+    found = {spec.get("body", name)}
+    wedge = spec.get("wedge")
+    if isinstance(wedge, Mapping):
+        found.add(wedge.get("body"))
+    return {n for n in found if isinstance(n, str)}
+
+
 def expand_elements(data: Any, symbols: Mapping[str, sympy.Symbol]) -> Expanded:
     """The model with its `elements` expanded; SpecErrors (at the elements' paths) if any is malformed."""
     if not isinstance(data, Mapping) or "elements" not in data:
@@ -61,7 +101,7 @@ def expand_elements(data: Any, symbols: Mapping[str, sympy.Symbol]) -> Expanded:
         raise SpecErrors([SpecError("expected a mapping of element names to elements", ("elements",))])
     if len(elements) > MAX_ELEMENTS:
         raise SpecErrors([SpecError(f"at most {MAX_ELEMENTS} entries", ("elements",))])
-    for name, spec in elements.items():
+    for name, spec in _in_dependency_order(elements, builder.data.get("bodies")):
         path: Path = ("elements", str(name))
         if not isinstance(name, str) or not NAME.match(name):
             builder.errors.append(SpecError("an element's name is a plain name (letters and digits)", path))

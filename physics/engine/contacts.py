@@ -1,0 +1,92 @@
+"""Unilateral contacts: a string only pulls, a surface only pushes.
+
+The methods treat every constraint as bilateral (its multiplier may take either sign), which is right
+for an axle, a bead on a wire or a rolling grip, but not for a string or a body resting on a surface:
+there a negative multiplier means the string would push or the surface pull, so the string goes slack
+or the body leaves the surface, and the motion the model describes is not what happens. Every string's
+and surface's force at the model's state is found on the whole domain; a wrong sign anywhere refuses
+the model at that constraint, saying where.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+
+import sympy
+
+from physics.answer_text import typed_text
+from physics.engine.method import Method
+from physics.engine.model import ConstraintKind, Model, QuantityKind
+from physics.engine.signs import Sign, point_text, sign_on_domain, where_negative
+from physics.errors import DerivationError, PhyscheckError
+
+# kind -> (the force's name, what it would do with the wrong sign, what then happens)
+_UNILATERAL = {
+    ConstraintKind.STRING: ("tension", "the string would push", "it goes slack"),
+    ConstraintKind.SURFACE: ("normal force", "the surface would pull", "the body leaves it"),
+}
+
+
+def check_contact_signs(
+    model: Model, method: Method, quantities: Mapping[str, sympy.Expr] | None = None
+) -> dict[str, str]:
+    """Each string's and surface's force keeps its physical sign over the domain, at the state and
+    wherever an asked force is taken (`at`): a check's name -> what was shown; DerivationError at
+    `constraints.<name>` (or the asked force's quantity) where it does not."""
+    shown: list[str] = []
+    for constraint in model.constraints:
+        if constraint.kind not in _UNILATERAL:
+            continue
+        force = _force(method, constraint.name)
+        if force is None:  # this method cannot give it here: left unchecked
+            continue
+        if _holds(model, constraint.kind, constraint.name, force, ("constraints", constraint.name), ""):
+            shown.append(constraint.name)
+    kinds = {c.name: c.kind for c in model.constraints}
+    for quantity in model.quantities:
+        if quantity.kind is not QuantityKind.FORCE or not quantity.at or quantities is None:
+            continue
+        kind = kinds.get(quantity.target)
+        if kind in _UNILATERAL:
+            ((coordinate, value),) = quantity.at
+            there = f" at {coordinate} = {typed_text(value)}"
+            path = ("quantities", quantity.name)
+            _holds(model, kind, quantity.target, quantities[quantity.name], path, there)
+    if not shown:
+        return {}
+    return {"contact signs": f"{', '.join(shown)}: a string pulls, a surface pushes, on the whole domain"}
+
+
+def _holds(
+    model: Model, kind: ConstraintKind, name: str, force: sympy.Expr, path: tuple[str, ...], there: str
+) -> bool:
+    """True when the force keeps its sign; DerivationError at `path` when it is wrong somewhere; False when
+    its sign could not be found."""
+    loads = [s for f in model.forces for _, c in f.components for s in sorted(c.free_symbols, key=str)]
+    found = sign_on_domain(force, model)
+    if found.sign is Sign.POSITIVE:
+        return True
+    if found.sign in (Sign.NEGATIVE, Sign.MIXED):
+        named, wrong, then = _UNILATERAL[kind]
+        condition = where_negative(force, model, loads)
+        if found.sign is Sign.NEGATIVE:
+            where = f"wherever {condition}, which is the whole domain" if condition else "on the whole domain"
+        else:
+            where = f"where {condition}" if condition else f"at {point_text(found.negative_at or {})}"
+        raise DerivationError(
+            f"constraint {name!r}: {wrong}{there} {where}: {then}{' before it gets there' if there else ''} "
+            f"(its {named} {typed_text(force)} "
+            f"must not be negative). Keep the domain where it holds (domain.positive), or model the "
+            "motion without it",
+            path=path,
+        )
+    return False
+
+
+def _force(method: Method, constraint: str) -> sympy.Expr | None:
+    try:
+        return method.force(constraint)
+    except PhyscheckError:
+        raise
+    except Exception:  # sympy's failures on an uploaded model: its asked quantities were derived already
+        return None

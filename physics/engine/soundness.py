@@ -1,0 +1,85 @@
+"""Checks that the model says what physics allows, beside the methods' agreement: gravity points down,
+and a quantity that is a magnitude (a length, a time, a speed, a frequency) is not negative or complex.
+
+Every method reads the same model, so a weight pointing up or a spring "stretch" of −m g/k is derived,
+proved and simulated consistently; only a check of the model's own sense refuses it.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+
+import sympy
+
+from physics.answer_text import typed_text
+from physics.dimensions import Dimension
+from physics.engine.dimensional import LENGTH, TIME
+from physics.engine.model import MAGNITUDE_KINDS, Model, Quantity, QuantityKind
+from physics.engine.signs import Sign, point_text, sign_on_domain, where_negative
+from physics.errors import DerivationError
+from physics.symbolic.dimensional import DimensionMismatch, UnknownDimension, expression_dimension
+
+# what a quantity of that dimension is, to say so in a refusal
+_MAGNITUDES = {LENGTH: "a length", TIME: "a time", LENGTH / TIME: "a speed", TIME**-1: "a frequency"}
+
+
+def check_gravity(model: Model) -> None:
+    """`gravity: g` is the weight's magnitude along the model's down (−y): it must not be negative."""
+    if model.gravity is None:
+        return
+    found = sign_on_domain(model.gravity, model)
+    if found.sign is Sign.POSITIVE or found.sign is Sign.UNKNOWN:
+        return
+    shown = typed_text(model.gravity)
+    if found.sign is Sign.NOT_REAL:
+        raise DerivationError(f"gravity {shown} is not real on the domain", path=("gravity",))
+    where = (
+        "on the whole domain"
+        if found.sign is Sign.NEGATIVE
+        else f"where {where_negative(model.gravity, model) or point_text(found.negative_at or {})}"
+    )
+    raise DerivationError(
+        f"gravity {shown} is negative {where}: the weight would point up (+y), against the model's own "
+        "down (gravity pulls along −y, y is up). Write gravity as its magnitude (g), and the positions "
+        "with y up",
+        path=("gravity",),
+    )
+
+
+def check_magnitudes(model: Model, quantities: Mapping[str, sympy.Expr]) -> None:
+    """A length, time, speed or frequency proved negative, or not real, on the whole domain is refused at
+    the quantity (any quantity that is nowhere real is)."""
+    dims = dict(model.dimensions)
+    for quantity in model.quantities:
+        value = quantities[quantity.name]
+        found = sign_on_domain(value, model)
+        path = ("quantities", quantity.name)
+        if found.sign is Sign.NOT_REAL:
+            raise DerivationError(
+                f"{quantity.name} = {typed_text(value)} is not real anywhere on the domain: check the model's "
+                "signs (a square root of a negative)",
+                path=path,
+            )
+        if found.sign is not Sign.NEGATIVE:
+            continue
+        what = _magnitude(quantity, value, dims)
+        if what is not None:
+            raise DerivationError(
+                f"{quantity.name} = {typed_text(value)} is {what}, yet negative on the whole domain: check "
+                "the model's signs (a position's direction, a coordinate's sense, a spring's side)",
+                path=path,
+            )
+
+
+def _magnitude(quantity: Quantity, value: sympy.Expr, dims: Mapping[sympy.Symbol, Dimension]) -> str | None:
+    """What makes the quantity a magnitude ("a length"), or None when it may be signed."""
+    if quantity.kind in MAGNITUDE_KINDS:
+        words = quantity.kind.value.replace("_", " ")
+        return f"{'an' if words[0] in 'aeiou' else 'a'} {words}, never negative"
+    if quantity.kind is not QuantityKind.EXPRESSION or not dims:
+        return None
+    try:
+        dimension = expression_dimension(value, dims)
+    except (DimensionMismatch, UnknownDimension):
+        return None
+    return _MAGNITUDES.get(dimension)

@@ -1,0 +1,61 @@
+"""Every model quantity is asked for: one that no part uses is a fault, unless listed under `unused:`.
+
+A quantity the author misspells (`acceleraton`) is derived and then silently ignored, while the part
+meant to use it (`acceleration`) falls back to its typed answer, which students are graded against:
+the engine's derivation protects nothing. So an unasked quantity must be listed on purpose, and a part
+whose id is a near miss of an unasked quantity is refused naming both.
+"""
+
+from __future__ import annotations
+
+from difflib import get_close_matches
+
+from problems.errors import ErrorItem
+from problems.kinds.numeric import NumericPart
+from problems.kinds.symbolic import SymbolicPart
+from problems.modelinfo import ModelQuantities
+from problems.schema import ProblemDocument, format_path
+
+NEAR = 0.8  # difflib's ratio: one slip in a name of eight letters or more, or two in ten
+
+
+def usage_errors(doc: ProblemDocument, model: ModelQuantities) -> list[ErrorItem]:
+    """The unasked quantities not listed `unused`, and the parts whose ids nearly name one."""
+    asked = set()
+    for part in doc.parts:
+        if isinstance(part, SymbolicPart) and part.quantity_name in model.names:
+            asked.add(part.quantity_name)
+        elif isinstance(part, NumericPart) and part.of in model.names:
+            asked.add(part.of)
+    used = set(asked)
+    pending = list(asked)
+    while pending:  # an expression asked for uses its quantities
+        for name in model.uses.get(pending.pop(), ()):
+            if name not in used:
+                used.add(name)
+                pending.append(name)
+    unasked = sorted(model.names - used)
+    errors: list[ErrorItem] = []
+    for index, part in enumerate(doc.parts):
+        if not isinstance(part, SymbolicPart) or part.quantity is not None or part.id in model.names:
+            continue  # only a symbolic part's id names its quantity
+        near = get_close_matches(part.id, unasked, n=1, cutoff=NEAR)
+        if near:
+            errors.append(
+                (
+                    format_path(("parts", index, "id")),
+                    f"part {part.id!r} asks for no model quantity, but the model derives {near[0]!r}, which "
+                    f"no part asks for: a near miss? The part would be graded against its typed answer, not "
+                    f"the derivation; make the names match",
+                )
+            )
+    for name in unasked:
+        if name not in model.unused:
+            errors.append(
+                (
+                    format_path(("model", "quantities", name)),
+                    f"no part asks for the quantity {name!r}: ask for it in a part (its id, `quantity:` or "
+                    "`of:`), remove it, or list it under the model's `unused:` if it is derived on purpose",
+                )
+            )
+    return errors

@@ -1,0 +1,84 @@
+"""`solve` (and a collision's projectile speed) keep the root the solved symbol's declared sign and
+range allow, at every sampled point of the domain: a rate declared positive drops −√, an angle ranged in
+[0, π/2] drops 2π − acos(2/3), a speed drops the root negative where cos θ > 0."""
+
+from __future__ import annotations
+
+import dataclasses
+
+import sympy
+import yaml
+
+from physics.engine import derivation, load_model
+from physics.engine.roots import admissible
+
+uncached = derivation._derive.__wrapped__
+NAMES = ("m", "M", "L", "g", "d", "alpha", "theta", "Omega")
+SYMBOLS = {name: sympy.Symbol(name, positive=True) for name in NAMES}
+m, M, L, g, d, alpha, theta, Omega = (SYMBOLS[n] for n in NAMES)
+
+CONICAL_RATE = """
+# a conical pendulum: the rate Omega at which the bob circles with its string at alpha to the vertical
+coordinates: [phi]
+bodies:
+  bob: {mass: m, position: {x: "L*sin(phi)", y: "-L*cos(phi)"}}
+gravity: g
+constraints:
+  string: {kind: string, gap: "L - sqrt(x_bob^2 + y_bob^2)"}
+elements:
+  frame: {kind: rotating, rate: Omega, bodies: [bob]}
+state: {phi: alpha}
+domain:
+  ranges: {alpha: ["0", "pi/2"]}
+quantities:
+  rate: {solve: Omega, zero: {acceleration: phi}}
+"""
+BULLET_INTO_BLOCK_ON_INCLINE = """
+# A block M rests at the foot of a fixed smooth incline; a bullet m flying horizontally embeds in it,
+# and the block slides a distance d up the incline before it stops.
+elements:
+  ramp: {kind: incline, body: block, mass: M, angle: theta, coordinate: s, direction: up}
+gravity: g
+collision: {projectile: bullet, mass: m, direction: {x: 1}, target: block, at: {s: 0}, reaches: {s: d}}
+domain:
+  ranges: {theta: ["0", "pi/2"]}
+quantities:
+  bullet_speed: {projectile_speed: bullet}
+  lost: {energy_fraction_lost: bullet}
+"""
+
+
+def _same(a: sympy.Expr, b: sympy.Expr) -> bool:
+    return bool(sympy.simplify(a - b) == 0)
+
+
+def test_a_rate_declared_positive_keeps_the_positive_root() -> None:
+    result = uncached(load_model(yaml.safe_load(CONICAL_RATE), SYMBOLS))
+    assert _same(result.quantities["rate"] ** 2, g / (L * sympy.cos(alpha)))
+    assert float(result.quantities["rate"].subs({g: 9.8, L: 1, alpha: 0.5})) > 0
+    assert "rate" in result.simulation
+
+
+def test_the_right_bullet_into_a_block_on_an_incline_is_accepted() -> None:
+    result = uncached(load_model(yaml.safe_load(BULLET_INTO_BLOCK_ON_INCLINE), SYMBOLS))
+    # momentum along the incline (its impulse takes the rest): m v cos(theta) = (m + M) w; then
+    # (m + M) w^2 / 2 = (m + M) g d sin(theta)
+    expected = (m + M) * sympy.sqrt(2 * g * d * sympy.sin(theta)) / (m * sympy.cos(theta))
+    assert _same(result.quantities["bullet_speed"], expected)
+    assert _same(result.quantities["lost"], (M + m * sympy.sin(theta) ** 2) / (M + m))
+    assert set(result.simulation) == {"bullet_speed", "lost"}  # the coupling respects the incline
+
+
+def test_an_angle_keeps_the_root_inside_its_declared_range() -> None:
+    theta_c = sympy.Symbol("theta_c", positive=True)
+    model = load_model(yaml.safe_load(CONICAL_RATE), {**SYMBOLS, "theta_c": theta_c})
+    roots = [sympy.acos(sympy.Rational(2, 3)), 2 * sympy.pi - sympy.acos(sympy.Rational(2, 3))]
+    assert admissible(roots, theta_c, model) == roots  # no range declared: both are angles
+    ranged = dataclasses.replace(model, symbol_ranges=((theta_c, sympy.Integer(0), sympy.pi / 2),))
+    assert admissible(roots, theta_c, ranged) == roots[:1]
+
+
+def test_a_root_whose_sign_rests_on_the_domain_is_judged_there() -> None:
+    model = load_model(yaml.safe_load(CONICAL_RATE), SYMBOLS)
+    root = sympy.sqrt(g / L) / sympy.sqrt(sympy.cos(alpha))
+    assert admissible([-root, root], Omega, model) == [root]

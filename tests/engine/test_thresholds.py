@@ -1,0 +1,85 @@
+"""Threshold conditions: the parameter value at which a force (or another measured quantity) reaches
+zero, solved by the methods and checked by simulation: runs just below and just above the derived
+value must see the quantity change sign, and where it crosses zero is compared with the derivation."""
+
+from __future__ import annotations
+
+import pytest
+import sympy
+import yaml
+
+from physics.engine import derivation, load_model
+
+uncached = derivation._derive.__wrapped__
+NAMES = ("m", "R", "g", "h", "theta_c")
+SYMBOLS = {name: sympy.Symbol(name, positive=True) for name in NAMES}
+m, R, g, h, theta_c = (SYMBOLS[n] for n in NAMES)
+
+LOOP = """
+# a block slides without friction round a vertical loop of radius R (theta from the bottom), entering
+# it with the speed a drop from height h gives
+coordinates: [theta]
+bodies:
+  block: {mass: m, position: {x: "R*sin(theta)", y: "-R*cos(theta)"}}
+gravity: g
+constraints:
+  track: {kind: surface, gap: "R - sqrt(x_block^2 + y_block^2)"}
+state: {theta: 0, theta_dot: "sqrt(2*g*h)/R"}
+domain:
+  positive: ["h - 2*R"]
+quantities:
+  h_min: {solve: h, zero: {force: track, at: {theta: pi}}}
+"""
+DOME = """
+# a block released at rest on top of a smooth hemisphere of radius R, with a vanishing push
+coordinates: [theta]
+bodies:
+  block: {mass: m, position: {x: "R*sin(theta)", y: "R*cos(theta)"}}
+gravity: g
+constraints:
+  dome: {kind: surface, gap: "sqrt(x_block^2 + y_block^2) - R"}
+state: {theta: 0}
+domain:
+  ranges: {theta_c: ["0", "pi/2"]}
+quantities:
+  leaves: {solve: theta_c, zero: {force: dome, at: {theta: theta_c}}}
+"""
+
+
+def test_the_least_height_for_a_loop_the_loop_is_solved_and_simulated() -> None:
+    result = uncached(load_model(yaml.safe_load(LOOP), SYMBOLS))
+    assert sympy.simplify(result.quantities["h_min"] - 5 * R / 2) == 0
+    check = result.simulation["h_min"]
+    assert "changes sign" in check.compared and check.max_relative_error < 1e-3
+
+
+def test_the_angle_where_a_block_leaves_a_dome_keeps_the_root_in_its_range() -> None:
+    result = uncached(load_model(yaml.safe_load(DOME), SYMBOLS))
+    assert result.quantities["leaves"] == sympy.acos(sympy.Rational(2, 3))
+    assert "changes sign" in result.simulation["leaves"].compared
+
+
+def test_a_wrong_threshold_is_caught_by_the_runs_either_side(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(derivation, "_simplest", lambda forms: 2 * R)  # where the block only just arrives
+    with pytest.raises(derivation.DerivationError, match="runs either side of h"):
+        uncached(load_model(yaml.safe_load(LOOP), SYMBOLS))
+
+
+def test_the_escape_speed_is_where_the_mechanical_energy_vanishes() -> None:
+    text = """
+coordinates: [r, theta]
+bodies:
+  probe: {mass: m, position: {x: "r*cos(theta)", y: "r*sin(theta)"}}
+potentials:
+  - {bodies: [probe], anchor: {x: 0, y: 0}, distance: d, energy: "-G*M*m/d"}
+state: {r: R, theta: 0, r_dot: v0}
+domain:
+  ranges: {r: ["0", "oo"]}
+quantities:
+  escape: {solve: v0, zero: {mechanical_energy: state}}
+"""
+    symbols = {n: sympy.Symbol(n, positive=True) for n in ("G", "M", "m", "R", "v0")}
+    result = uncached(load_model(yaml.safe_load(text), symbols))
+    G, M, radius = symbols["G"], symbols["M"], symbols["R"]
+    assert sympy.simplify(result.quantities["escape"] - sympy.sqrt(2 * G * M / radius)) == 0
+    assert "changes sign" in result.simulation["escape"].compared

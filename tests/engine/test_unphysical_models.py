@@ -1,0 +1,154 @@
+"""Models every method derives consistently, and the simulation agrees with, that are still wrong
+physics: a string that would push, a surface that would pull, gravity pointing up, a length that comes
+out negative. Each is refused at the model's path with the reason; the same model made right derives."""
+
+from __future__ import annotations
+
+import pytest
+import sympy
+import yaml
+
+from physics.dimensions import Dimension
+from physics.engine import derivation, load_model
+from physics.errors import DerivationError
+from physics.units import unit_dimension
+
+uncached = derivation._derive.__wrapped__
+
+ATWOOD_THRUST = """
+# m1 and m2 over a light pulley; a rocket pushes m2 up with F
+coordinates: [s]
+bodies:
+  m1: {mass: m1, position: {y: s}}
+  m2: {mass: m2, position: {y: "-s"}}
+gravity: g
+forces:
+  - {body: m2, force: {y: F}}
+elements:
+  string: {kind: pulley, ends: [{body: m1, pulls: up}, {body: m2, pulls: up}]}
+domain:
+  positive: [DOMAIN]
+quantities:
+  acceleration: {acceleration: s}
+"""
+LIFTED_CRATE = """
+coordinates: [x]
+bodies:
+  crate: {mass: m, position: {x: x, y: 0}}
+gravity: g
+constraints:
+  floor: {kind: surface, gap: y_crate}
+forces:
+  - {body: crate, force: {x: "F*cos(alpha)", y: "F*sin(alpha)"}}
+domain:
+  ranges: {alpha: ["0", "pi/2"]}
+quantities:
+  acceleration: {acceleration: x}
+"""
+HANGING_SPRING = """
+# a block hanging from a spring whose top is the origin; y is up
+coordinates: [y]
+bodies:
+  block: {mass: m, position: {y: y}}
+elements:
+  spring: {kind: spring, between: [block, {y: 0}], stiffness: k}
+gravity: g
+quantities:
+  rest: {equilibrium: y}
+  stretch: {expression: STRETCH}
+"""
+DIMENSIONS = {
+    "R": "m",
+    "h": "m",
+    "m": "kg",
+    "m1": "kg",
+    "m2": "kg",
+    "g": "m/s^2",
+    "F": "N",
+    "k": "N/m",
+    "alpha": "1",
+}
+
+
+def _derive(text: str, names: str) -> dict[str, sympy.Expr]:
+    symbols = {name: sympy.Symbol(name, positive=True) for name in names.split()}
+    dimensions: dict[str, Dimension] = {n: unit_dimension(DIMENSIONS[n], ()) for n in symbols}
+    return dict(uncached(load_model(yaml.safe_load(text), symbols, dimensions)).quantities)
+
+
+def _refusal(text: str, names: str) -> DerivationError:
+    with pytest.raises(DerivationError) as caught:
+        _derive(text, names)
+    return caught.value
+
+
+@pytest.mark.parametrize(
+    ("domain", "where"),
+    [
+        ('"F - 2*m2*g"', "wherever F > 2*g*m2, which is the whole domain"),
+        ('"F"', "where F > 2*g*m2"),
+    ],
+)
+def test_a_string_that_would_push_is_refused_where_it_goes_slack(domain: str, where: str) -> None:
+    error = _refusal(ATWOOD_THRUST.replace("DOMAIN", domain), "m1 m2 g F")
+    assert error.path == ("constraints", "string")
+    assert f"the string would push {where}: it goes slack" in error.message
+    assert "m1*(-F + 2*g*m2)/(m1 + m2)" in error.message  # the tension, as derived
+
+
+def test_a_thrust_that_keeps_the_string_taut_derives() -> None:
+    found = _derive(ATWOOD_THRUST.replace("DOMAIN", '"2*m2*g - F"'), "m1 m2 g F")
+    m1, m2, g, f = sympy.symbols("m1 m2 g F", positive=True)
+    assert sympy.simplify(found["acceleration"] - (m2 * g - m1 * g - f) / (m1 + m2)) == 0
+
+
+def test_a_surface_that_would_pull_is_refused_where_the_body_lifts_off() -> None:
+    error = _refusal(LIFTED_CRATE, "m g F alpha")
+    assert error.path == ("constraints", "floor")
+    assert "the surface would pull where" in error.message and "the body leaves it" in error.message
+
+
+def test_gravity_against_the_models_down_is_refused() -> None:
+    error = _refusal(ATWOOD_THRUST.replace("gravity: g", "gravity: -g").replace("DOMAIN", '"F"'), "m1 m2 g F")
+    assert error.path == ("gravity",)
+    assert "gravity -g is negative on the whole domain: the weight would point up" in error.message
+
+
+def test_a_length_negative_on_the_whole_domain_is_refused() -> None:
+    error = _refusal(HANGING_SPRING.replace("STRETCH", "rest"), "m k g")
+    assert error.path == ("quantities", "stretch")
+    assert "stretch = -g*m/k is a length, yet negative on the whole domain" in error.message
+    m, k, g = sympy.symbols("m k g", positive=True)
+    assert _derive(HANGING_SPRING.replace("STRETCH", "-rest"), "m k g")["stretch"] == m * g / k
+
+
+def test_a_quantity_nowhere_real_is_refused() -> None:
+    error = _refusal(HANGING_SPRING.replace("STRETCH", "sqrt(rest*k/(m*g))"), "m k g")
+    assert error.path == ("quantities", "stretch") and "not real anywhere" in error.message
+
+
+LOOP_TOP = """
+coordinates: [theta]
+bodies:
+  block: {mass: m, position: {x: "R*sin(theta)", y: "-R*cos(theta)"}}
+gravity: g
+constraints:
+  track: {kind: surface, gap: "R - sqrt(x_block^2 + y_block^2)"}
+state: {theta: 0, theta_dot: "sqrt(2*g*h)/R"}
+domain:
+  positive: [DOMAIN]
+quantities:
+  top: {force: track, at: {theta: pi}}
+"""
+
+
+def test_a_surface_force_asked_where_the_body_has_already_left_is_refused() -> None:
+    error = _refusal(LOOP_TOP.replace("DOMAIN", '"h - 2*R"'), "m R g h")
+    assert error.path == ("quantities", "top")
+    assert (
+        "the surface would pull at theta = pi where h < 5*R/2: the body leaves it before it gets there"
+        in error.message
+    )
+    m, r, g, h = sympy.symbols("m R g h", positive=True)
+    found = _derive(LOOP_TOP.replace("DOMAIN", '"2*h - 5*R"'), "m R g h")["top"]
+    assert sympy.simplify(found - m * g * (2 * h / r - 5)) == 0
