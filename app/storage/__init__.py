@@ -4,6 +4,7 @@ protocols.py   one Protocol per store (keys, problems, submissions, compiled pro
                outbox, our LTI signing keys, LMS platforms, launch state, LTI sessions)
 sql.py         their SQLAlchemy implementation over the `app.db` repositories (SQLite, PostgreSQL);
                sql_lti.py for the launch stores
+sql_courses.py / memory_courses.py   courses, rosters, sign-in, assignments (app.courses.records)
 memory.py      in-memory fakes that keep the same contract (tests/storage runs it against all three);
                memory_lti.py for the launch stores
 
@@ -27,10 +28,12 @@ from app.storage.memory import (
     MemoryToolKeys,
     grade_queue,
 )
+from app.storage.memory_courses import MemoryCourseStore
 from app.storage.memory_lti import MemoryLaunchStore, MemoryLtiSessionStore, MemoryPlatformStore
 from app.storage.protocols import (
     ApiKeyStore,
     CompiledCache,
+    CourseStore,
     Filed,
     LaunchStore,
     LtiSessionStore,
@@ -50,12 +53,14 @@ from app.storage.sql import (
     SqlSubmissionStore,
     SqlToolKeys,
 )
+from app.storage.sql_courses import SqlCourseStore
 from app.storage.sql_lti import SqlLaunchStore, SqlLtiSessionStore, SqlPlatformStore
 from app.storage.sql_outbox import queue_grade
 
 __all__ = [
     "ApiKeyStore",
     "CompiledCache",
+    "CourseStore",
     "Filed",
     "LaunchStore",
     "LtiSessionStore",
@@ -83,6 +88,7 @@ class Stores:
     launches: LaunchStore
     lti_sessions: LtiSessionStore
     ping: Callable[[], bool] = field(default=lambda: True)
+    courses: CourseStore = field(default_factory=MemoryCourseStore)
 
 
 def sql_stores(database: Database, *, clock: Clock = utc_now) -> Stores:
@@ -99,6 +105,7 @@ def sql_stores(database: Database, *, clock: Clock = utc_now) -> Stores:
         launches=SqlLaunchStore(database),
         lti_sessions=SqlLtiSessionStore(database),
         ping=database.ping,
+        courses=SqlCourseStore(database, clock),
     )
 
 
@@ -119,4 +126,5 @@ def memory_stores(*, clock: Clock = utc_now) -> Stores:
         platforms=MemoryPlatformStore(),
         launches=MemoryLaunchStore(),
         lti_sessions=MemoryLtiSessionStore(),
+        courses=MemoryCourseStore(clock),
     )
