@@ -30,7 +30,7 @@ from app.middleware import RequestContext
 from app.openapi import install_docs
 from app.ratelimit import rate_limiters
 from app.routers import authoring as authoring_routes
-from app.routers import check, health, problems, submissions
+from app.routers import check, courses, health, problems, submissions
 from app.services import Services
 from app.settings import Settings, get_settings
 from app.startup import Storage, open_storage_when_reachable
@@ -155,6 +155,7 @@ def create_app(
     app.include_router(problems.router)
     app.include_router(submissions.router)
     app.include_router(authoring_routes.router)
+    app.include_router(courses.router)
     app.include_router(lti_routes.router)
     app.include_router(web_routes.router)
     app.mount(STATIC_PATH, static_files(), name="static")

@@ -11,9 +11,11 @@
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from datetime import datetime
 
 from app.auth import Principal
+from app.courses.policy import accepting, due_for
 from app.courses.records import AssignmentRecord, CourseNotFound, CourseRecord, StaffRole
 from app.db.records import ProblemRecord
 from app.storage import Stores
@@ -97,3 +99,42 @@ def may_use_problem(
 ) -> bool:
     """Whether an instructor may list, assign, or read the solution of this problem."""
     return record.builtin or record.id in shared or record.owner_key_id in colleague_ids
+
+
+@dataclass(frozen=True)
+class Opening:
+    """Whether a student's answer to a problem counts now, and under which assignment."""
+
+    assignment: AssignmentRecord | None  # None: the student is in no course (no assignment rules)
+    course: CourseRecord | None
+    accepting: bool
+    due: datetime | None
+    why: str = ""
+
+
+def opening(stores: Stores, student: str, problem_id: str, now: datetime) -> Opening | None:
+    """None when the problem is not in any of the student's open assignments (it does not exist for
+    them); else the assignment that takes the answer: the first accepting one by due date, or the
+    latest due when none accepts."""
+    courses = stores.courses.courses_enrolled(student)
+    if not courses:
+        return Opening(None, None, True, None)
+    found: list[tuple[CourseRecord, AssignmentRecord, datetime]] = []
+    for course in courses:
+        for assignment in stores.courses.assignments(course.id):
+            if problem_id in assignment.problems and assignment.spec.opens_at <= now:
+                extension = stores.courses.extensions(assignment.id).get(student)
+                found.append((course, assignment, due_for(assignment, extension)))
+    if not found:
+        return None
+    for course, assignment, due in found:
+        if accepting(assignment, due, now):
+            return Opening(assignment, course, True, due)
+    course, assignment, due = found[-1]
+    return Opening(
+        assignment,
+        course,
+        False,
+        due,
+        f"{assignment.title!r} closed at its due date; answers are no longer accepted.",
+    )

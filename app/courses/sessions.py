@@ -66,3 +66,11 @@ def find(courses: CourseStore, cookie: str, now: datetime) -> tuple[str, Session
         csrf_token=session.csrf_token,
         expires_at=session.expires_at,
     )
+
+
+JOIN_PATH = "/join/"
+_JOIN_ALPHABET = "ABCDEFGHJKLMNPQRSTUVWXYZ23456789"  # no 0/O or 1/I to misread
+
+
+def new_join_code() -> str:
+    return "".join(secrets.choice(_JOIN_ALPHABET) for _ in range(8))
