@@ -21,6 +21,7 @@ from app.deps import budget_wait
 from app.errors import install_error_handlers
 from app.grading.pool import GradingPool
 from app.heap import freeze_long_lived
+from app.instructor import courses as instructor_courses
 from app.instructor import router as instructor_routes
 from app.logs import configure_logging
 from app.lti import router as lti_routes
@@ -160,5 +161,6 @@ def create_app(
     app.include_router(web_routes.router)
     app.mount(STATIC_PATH, static_files(), name="static")
     app.include_router(instructor_routes.router)
+    app.include_router(instructor_courses.router)
     instructor_routes.install_page_handlers(app)
     return app

@@ -6,7 +6,7 @@ from __future__ import annotations
 import threading
 from collections.abc import Callable, Sequence
 from dataclasses import replace
-from datetime import datetime
+from datetime import UTC, datetime
 
 from app.courses.records import (
     AssignmentNotFound,
@@ -27,6 +27,11 @@ from app.db.errors import NotFound
 from app.db.types import utc_now
 
 Clock = Callable[[], datetime]
+
+
+def _utc(spec: AssignmentSpec) -> AssignmentSpec:
+    """As the database gives dates back: in UTC, whatever zone they came in."""
+    return replace(spec, opens_at=spec.opens_at.astimezone(UTC), due_at=spec.due_at.astimezone(UTC))
 
 
 class MemoryCourseStore:
@@ -197,14 +202,14 @@ class MemoryCourseStore:
     def create_assignment(self, course_id: int, spec: AssignmentSpec) -> AssignmentRecord:
         with self._lock:
             self._course(course_id)
-            record = AssignmentRecord(self._next_assignment, course_id, spec, self._clock())
+            record = AssignmentRecord(self._next_assignment, course_id, _utc(spec), self._clock())
             self._next_assignment += 1
             self._assignments[record.id] = record
             return record
 
     def update_assignment(self, assignment_id: int, spec: AssignmentSpec) -> AssignmentRecord:
         with self._lock:
-            record = replace(self._assignment(assignment_id), spec=spec)
+            record = replace(self._assignment(assignment_id), spec=_utc(spec))
             self._assignments[assignment_id] = record
             return record
 
@@ -235,7 +240,7 @@ class MemoryCourseStore:
             if due_at is None:
                 self._extensions.pop((assignment_id, student), None)
             else:
-                self._extensions[(assignment_id, student)] = due_at
+                self._extensions[(assignment_id, student)] = due_at.astimezone(UTC)
 
     def extensions(self, assignment_id: int) -> dict[str, datetime]:
         with self._lock:

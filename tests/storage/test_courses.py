@@ -3,7 +3,8 @@ sign-in links, sessions, assignments and extensions; on SQLite, PostgreSQL and t
 
 from __future__ import annotations
 
-from datetime import timedelta
+from datetime import datetime, timedelta
+from zoneinfo import ZoneInfo
 
 import pytest
 
@@ -218,6 +219,17 @@ def test_assignments_keep_their_problem_order_policies_and_zones(stores: Stores)
     assert got.spec.late == LatePolicy(LateKind.PENALTY, 0.1, 0.5)
     assert got.spec.due_at == NOW + timedelta(days=9)
     assert got.spec.due_at.utcoffset() == timedelta(0)
+
+
+def test_dates_come_back_in_utc_whatever_zone_they_were_given_in(stores: Stores):
+    paris = ZoneInfo("Europe/Paris")
+    course = stores.courses.create_course("A", owner="key:1")
+    due = datetime(2026, 3, 8, 23, 59, tzinfo=paris)
+    made = stores.courses.create_assignment(course.id, _spec(opens_at=due - timedelta(days=7), due_at=due))
+    stores.courses.set_extension(made.id, "s1", due + timedelta(days=1))
+    got = stores.courses.get_assignment(made.id).spec.due_at
+    assert got == due and got.tzinfo is not None and got.utcoffset() == timedelta(0)
+    assert stores.courses.extensions(made.id)["s1"].utcoffset() == timedelta(0)
 
 
 def test_an_assignment_is_updated_and_deleted_with_its_extensions(stores: Stores):
