@@ -29,7 +29,7 @@ from app.lti.context import LtiContext
 from app.lti.outbox import OutboxWorker
 from app.middleware import RequestContext
 from app.openapi import install_docs
-from app.ratelimit import rate_limiters
+from app.ratelimit import preview_limiter, rate_limiters
 from app.routers import authoring as authoring_routes
 from app.routers import check, courses, health, problems, submissions
 from app.services import Services
@@ -115,6 +115,9 @@ def create_app(
             student_limiter=student_limiter,
             catalog=storage.catalog,
             authoring=authoring,
+            preview_limiter=preview_limiter(
+                settings.redis_url, settings.preview_rate_limit_per_minute, settings.redis_prefix
+            ),
         )
         app.state.lti = LtiContext(
             storage.stores,

@@ -9,7 +9,7 @@ from app.authoring import AuthoringPool
 from app.catalog import Catalog
 from app.db.database import Database
 from app.grading.pool import GradingPool
-from app.ratelimit import RateLimiter
+from app.ratelimit import MemoryRateLimiter, RateLimiter
 from app.schemas.check import VerdictJson
 from app.settings import Settings
 from app.storage import Stores
@@ -27,3 +27,5 @@ class Services:
     catalog: Catalog
     authoring: AuthoringPool
     verdict_json: VerdictJson = field(default_factory=VerdictJson)
+    # Live previews' own budget (settings.preview_rate_limit_per_minute), apart from the request budgets.
+    preview_limiter: RateLimiter = field(default_factory=lambda: MemoryRateLimiter(600))

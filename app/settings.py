@@ -60,6 +60,9 @@ class Settings(BaseSettings):
     redis_prefix: str = Field(default="physcheck", min_length=1, max_length=64, pattern=r"^[A-Za-z0-9_.-]+$")
     rate_limit_per_minute: int = Field(default=600, ge=1)
     student_rate_limit_per_minute: int = Field(default=60, ge=1)
+    # Live previews while typing, per student (or key), counted apart from the budgets above: a student
+    # typing at any human pace is never limited, a script hammering the parser still is.
+    preview_rate_limit_per_minute: int = Field(default=600, ge=1)
 
     # An LTI launch whose id_token was issued longer ago than this is refused (a replayed old token).
     lti_max_token_age_seconds: int = Field(default=3600, ge=60)

@@ -12,7 +12,7 @@ from app.auth import Principal
 from app.courses import access
 from app.db.errors import ProblemNotFound
 from app.db.records import ProblemRecord
-from app.deps import CurrentPrincipal, ServicesDep
+from app.deps import CurrentPrincipal, PreviewPrincipal, ServicesDep
 from app.errors import AppError, Conflict, Forbidden, NotFound
 from app.grading.submit import stored_problem_fault, submit_answer
 from app.openapi import AUTHENTICATED, errors
@@ -129,7 +129,7 @@ async def preview(
     body: PreviewIn,
     request: Request,
     services: ServicesDep,
-    principal: CurrentPrincipal,
+    principal: PreviewPrincipal,
 ) -> PreviewPublic:
     """How the answer would be read (for a live preview while typing); nothing is graded or stored."""
     who = student_of(principal, None)

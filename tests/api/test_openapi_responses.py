@@ -289,14 +289,17 @@ def malformed(api: Api, method: str, path: str) -> httpx.Response:
 
 def rate_limited(api: Api, method: str, path: str) -> httpx.Response:
     services = api.services
-    saved = services.key_limiter
+    saved = services.key_limiter, services.preview_limiter
     services.key_limiter = MemoryRateLimiter(1)
+    services.preview_limiter = MemoryRateLimiter(1)  # previews have a budget of their own
     try:
         headers = api.key()
         assert api.client.get("/v1/problems", headers=headers).status_code == 200  # the budget: spent
+        if path.endswith("/preview"):
+            assert CALLS[(method, path)][1](api, headers).status_code == 200  # the preview budget: spent
         return CALLS[(method, path)][1](api, headers)
     finally:
-        services.key_limiter = saved
+        services.key_limiter, services.preview_limiter = saved
 
 
 def unavailable(api: Api, method: str, path: str) -> httpx.Response:
