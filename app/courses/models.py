@@ -80,7 +80,8 @@ class CourseSessionRow(Base):
     __tablename__ = "course_sessions"
 
     id_hash: Mapped[str] = mapped_column(String(HASH_LENGTH), primary_key=True)
-    course_id: Mapped[int] = mapped_column(ForeignKey("courses.id"))
+    # NULL for an instructor's "view as a student" session (their preview identity, in no course).
+    course_id: Mapped[int | None] = mapped_column(ForeignKey("courses.id"))
     student: Mapped[str] = mapped_column(String(STUDENT_LENGTH))
     name: Mapped[str] = mapped_column(String(NAME_LENGTH))
     csrf_token: Mapped[str] = mapped_column(String(HASH_LENGTH))

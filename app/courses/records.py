@@ -83,9 +83,10 @@ class RosterImport:
 
 @dataclass(frozen=True)
 class CourseSession:
-    """A student's session, opened by their personal sign-in link; the cookie holds its id."""
+    """A student's session, opened by their personal sign-in link (or an instructor's "view as a
+    student", in no course); the cookie holds its id."""
 
-    course_id: int
+    course_id: int | None
     student: str
     name: str
     csrf_token: str

@@ -16,6 +16,7 @@ from app.storage.protocols import CourseStore
 COOKIE = "physcheck_course"
 SESSION_LIFETIME = timedelta(days=14)
 LINK_LIFETIME = timedelta(days=30)
+PREVIEW_LIFETIME = timedelta(hours=8)
 SIGN_IN_PATH = "/s/"  # followed by the token
 COURSE_PLATFORM = 0  # no LMS: what a course session's SessionRecord names as its platform
 
@@ -47,6 +48,17 @@ def sign_in(courses: CourseStore, token: str, now: datetime) -> tuple[str, Cours
     cookie = secrets.token_urlsafe(32)
     courses.save_session(token_hash(cookie), session, now)
     return cookie, session
+
+
+def open_preview(courses: CourseStore, key_id: str, name: str, now: datetime) -> str:
+    """ "View as a student" for an instructor key: a student's session under the instructor's preview
+    identity (`preview:<key id>`, filed apart from the class as the instructor's previews always are)."""
+    cookie = secrets.token_urlsafe(32)
+    session = CourseSession(
+        None, f"preview:{key_id}", name, secrets.token_urlsafe(32), now + PREVIEW_LIFETIME
+    )
+    courses.save_session(token_hash(cookie), session, now)
+    return cookie
 
 
 def find(courses: CourseStore, cookie: str, now: datetime) -> tuple[str, SessionRecord] | None:

@@ -9,10 +9,12 @@ instructor's launch alike: `access.require_staff`).
     GET|POST  /instructor/assignments/{a}/edit           the same, for an assignment
     GET       /instructor/courses/{c}/gradebook          students x assignments, a student's parts
     POST      /instructor/courses/{c}/extensions         a student's own due date
+    POST      /instructor/problems/{id}/as-student       view the student's page in one's own session
 """
 
 from __future__ import annotations
 
+import re
 from datetime import datetime
 from typing import Any
 from zoneinfo import ZoneInfo
@@ -43,6 +45,7 @@ from app.services import Services
 
 router = APIRouter(prefix="/instructor", include_in_schema=False)
 MAX_ROSTER_BYTES = 1_000_000
+_PROBLEM_ID = re.compile(r"^[A-Za-z0-9][A-Za-z0-9._-]{0,99}$")
 _LOCAL = "%Y-%m-%dT%H:%M"  # what <input type="datetime-local"> sends and shows
 
 
@@ -448,3 +451,36 @@ async def extension(course_id: int, request: Request, services: ServicesDep, who
 
     await run_in_threadpool(save)
     return RedirectResponse(f"/instructor/courses/{course_id}/gradebook", status_code=303)
+
+
+# ---- view as a student -----------------------------------------------------------------------------
+
+
+@router.post("/problems/{problem_id}/as-student")
+async def view_as_student(problem_id: str, request: Request, services: ServicesDep, who: Visitor) -> Response:
+    """The student's page of a problem in the instructor's own session: a key's visitor gets a
+    student session under their preview identity (their tries filed apart, as always); an LMS
+    instructor's launch session already previews."""
+    await auth.require_csrf(request, services, who)
+    if not _PROBLEM_ID.match(problem_id):
+        raise PageError(404, "No such problem", f"There is no problem {problem_id!r}.")
+    response = RedirectResponse(f"/p/{problem_id}", status_code=303)
+    if who.principal.api_key:
+        now = request.app.state.lti.clock()
+        cookie = await run_in_threadpool(
+            course_sessions.open_preview,
+            services.stores.courses,
+            who.principal.key_id,
+            who.principal.name,
+            now,
+        )
+        response.set_cookie(
+            course_sessions.COOKIE,
+            cookie,
+            max_age=int(course_sessions.PREVIEW_LIFETIME.total_seconds()),
+            path="/",
+            httponly=True,
+            samesite="lax",
+            secure=request.url.scheme == "https",
+        )
+    return response

@@ -110,3 +110,26 @@ def test_the_gradebook_page_links_its_csv_and_another_instructor_sees_nothing(
         assert response.status_code == 404, path
         assert "Ada Lovelace" not in response.text
     assert "Mechanics" not in other.get("/instructor/courses").text
+
+
+def test_view_as_a_student_opens_the_student_page_in_the_instructors_session(
+    signed_in: TestClient, stores: Stores
+):
+    problem = signed_in.get("/instructor/problems/yo-yo")
+    assert "View as a student" in problem.text
+    opened = signed_in.post("/instructor/problems/yo-yo/as-student", data={"csrf": csrf_of(problem.text)})
+    assert opened.status_code == 303 and opened.headers["location"] == "/p/yo-yo"
+    page = signed_in.get("/p/yo-yo")
+    assert page.status_code == 200 and 'data-mode="session"' in page.text  # no key asked for
+    token = re.search(r'name="csrf-token" content="([^"]+)"', page.text)
+    assert token is not None
+    filed = signed_in.post(
+        "/v1/problems/yo-yo/parts/acceleration/submissions",
+        json={"answer": "g"},
+        headers={"X-CSRF-Token": token.group(1)},
+    )
+    assert filed.status_code == 201
+    key_id = stores.keys.list()[0].id
+    assert [s.student for s in stores.submissions.page().items] == [f"preview:{key_id}"]  # filed apart
+    forged = signed_in.post("/instructor/problems/yo-yo/as-student", data={"csrf": "nope"})
+    assert forged.status_code == 403

@@ -81,7 +81,7 @@ def upgrade() -> None:
     op.create_table(
         "course_sessions",
         sa.Column("id_hash", sa.String(64), nullable=False),
-        sa.Column("course_id", sa.Integer(), nullable=False),
+        sa.Column("course_id", sa.Integer(), nullable=True),
         sa.Column("student", sa.String(200), nullable=False),
         sa.Column("name", sa.String(200), nullable=False),
         sa.Column("csrf_token", sa.String(64), nullable=False),
