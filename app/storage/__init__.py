@@ -28,7 +28,7 @@ from app.storage.memory import (
     MemoryToolKeys,
     grade_queue,
 )
-from app.storage.memory_courses import MemoryCourseStore
+from app.storage.memory_courses import MemoryCourseStore, assignment_grade_queue
 from app.storage.memory_lti import MemoryLaunchStore, MemoryLtiSessionStore, MemoryPlatformStore
 from app.storage.protocols import (
     ApiKeyStore,
@@ -53,6 +53,7 @@ from app.storage.sql import (
     SqlSubmissionStore,
     SqlToolKeys,
 )
+from app.storage.sql_assignment_grades import queue_assignment_grades
 from app.storage.sql_courses import SqlCourseStore
 from app.storage.sql_lti import SqlLaunchStore, SqlLtiSessionStore, SqlPlatformStore
 from app.storage.sql_outbox import queue_grade
@@ -97,7 +98,7 @@ def sql_stores(database: Database, *, clock: Clock = utc_now) -> Stores:
     return Stores(
         keys=SqlApiKeyStore(database, clock),
         problems=SqlProblemStore(database, clock),
-        submissions=SqlSubmissionStore(database, [queue_grade], clock),
+        submissions=SqlSubmissionStore(database, [queue_grade, queue_assignment_grades], clock),
         compiled=SqlCompiledCache(database),
         outbox=SqlScoreOutbox(database),
         tool_keys=SqlToolKeys(database, clock),
@@ -116,6 +117,8 @@ def memory_stores(*, clock: Clock = utc_now) -> Stores:
     hooks: list[MemoryFilingHook] = []
     submissions = MemorySubmissionStore(problems, hooks, clock=clock)
     hooks.append(grade_queue(outbox, problems, submissions.all))
+    courses = MemoryCourseStore(clock)
+    hooks.append(assignment_grade_queue(outbox, problems, courses, submissions.all))
     return Stores(
         keys=MemoryApiKeyStore(clock),
         problems=problems,
@@ -126,5 +129,5 @@ def memory_stores(*, clock: Clock = utc_now) -> Stores:
         platforms=MemoryPlatformStore(),
         launches=MemoryLaunchStore(),
         lti_sessions=MemoryLtiSessionStore(),
-        courses=MemoryCourseStore(clock),
+        courses=courses,
     )

@@ -8,6 +8,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import replace
 from datetime import UTC, datetime
 
+from app.courses import passback
 from app.courses.records import (
     AssignmentNotFound,
     AssignmentRecord,
@@ -24,7 +25,10 @@ from app.courses.records import (
     roster_identity,
 )
 from app.db.errors import NotFound
+from app.db.records import SubmissionRecord
 from app.db.types import utc_now
+from app.storage.memory import MemoryProblemStore, MemoryScoreOutbox
+from physics.verdict import Outcome as Verdicts
 
 Clock = Callable[[], datetime]
 
@@ -256,3 +260,45 @@ class MemoryCourseStore:
     def shared_problems(self) -> set[str]:
         with self._lock:
             return set(self._shared)
+
+
+def assignment_grade_queue(
+    outbox_store: MemoryScoreOutbox,
+    problems: MemoryProblemStore,
+    courses: MemoryCourseStore,
+    submissions: Callable[[], list[SubmissionRecord]],
+) -> Callable[[SubmissionRecord], object]:
+    """`sql_assignment_grades.queue_assignment_grades` for the fakes: a launched assignment's new
+    total, queued with the submission (the hook runs before it is visible, so it is counted here)."""
+
+    def queue(stored: SubmissionRecord) -> None:
+        if stored.verdict is Verdicts.INVALID:
+            return
+        keys = {problem for student, problem, _, _ in outbox_store.targets() if student == stored.student}
+        for key in sorted(keys):
+            assignment_id = passback.assignment_of(key)
+            if assignment_id is None:
+                continue
+            try:
+                assignment = courses.get_assignment(assignment_id)
+            except AssignmentNotFound:
+                continue
+            if stored.problem_id not in assignment.problems:
+                continue
+            documents = {}
+            for problem_id in assignment.problems:
+                try:
+                    documents[problem_id] = problems.get(problem_id, include_retired=True).document
+                except NotFound:
+                    continue
+            given, maximum = passback.assignment_score(
+                assignment,
+                documents,
+                [*submissions(), stored],
+                stored.student,
+                courses.extensions(assignment_id).get(stored.student),
+                stored.created_at,
+            )
+            outbox_store.enqueue(key, stored.student, given, maximum, stored.created_at)
+
+    return queue

@@ -59,7 +59,7 @@ def _enrolment(row: Enrolment) -> EnrolmentRecord:
     return EnrolmentRecord(row.course_id, row.student, row.roster_id, row.name, row.email, row.created_at)
 
 
-def _assignment(row: Assignment) -> AssignmentRecord:
+def assignment_record(row: Assignment) -> AssignmentRecord:
     spec = AssignmentSpec(
         title=row.title,
         problems=tuple(str(p) for p in row.problems),
@@ -327,7 +327,7 @@ class SqlCourseStore:
             _write_spec(row, spec)
             session.add(row)
             session.flush()
-            return _assignment(row)
+            return assignment_record(row)
 
     def update_assignment(self, assignment_id: int, spec: AssignmentSpec) -> AssignmentRecord:
         with self._database.session() as session:
@@ -336,7 +336,7 @@ class SqlCourseStore:
                 raise AssignmentNotFound(assignment_id)
             _write_spec(row, spec)
             session.flush()
-            return _assignment(row)
+            return assignment_record(row)
 
     def delete_assignment(self, assignment_id: int) -> None:
         with self._database.session() as session:
@@ -351,7 +351,7 @@ class SqlCourseStore:
             row = session.get(Assignment, assignment_id)
             if row is None:
                 raise AssignmentNotFound(assignment_id)
-            return _assignment(row)
+            return assignment_record(row)
 
     def assignments(self, course_id: int) -> list[AssignmentRecord]:
         query = (
@@ -360,7 +360,7 @@ class SqlCourseStore:
             .order_by(Assignment.due_at, Assignment.id)
         )
         with self._database.session(read_only=True) as session:
-            return [_assignment(row) for row in session.scalars(query)]
+            return [assignment_record(row) for row in session.scalars(query)]
 
     def set_extension(self, assignment_id: int, student: str, due_at: datetime | None) -> None:
         with self._database.session() as session:

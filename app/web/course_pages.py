@@ -25,11 +25,17 @@ from app.courses.gradebook import AssignmentCell
 from app.courses.policy import Status, late_policy_text, shown
 from app.courses.records import AssignmentNotFound, AssignmentRecord, CourseRecord
 from app.lti.context import LtiContext, LtiContextDep
+from app.lti.platforms import platform_origins
 from app.lti.sessions import current_session
 from app.services import Services
 from app.web.layout import page
 
 router = APIRouter(tags=["course pages"], include_in_schema=False)
+
+
+async def _frames(context: LtiContext) -> list[str]:
+    """Framable by the registered LMSs: a launched student meets these pages in the LMS's frame."""
+    return await run_in_threadpool(platform_origins, context.stores.platforms)
 
 
 def _services(request: Request) -> Services:
@@ -115,9 +121,12 @@ async def my_courses(request: Request, context: LtiContextDep) -> HTMLResponse:
         return {"courses": [(c, _rows(services, c, who[0], now)) for c in courses], "student": who[0]}
 
     values = await run_in_threadpool(load)
+    frames = await _frames(context)
     if values is None:
-        return page(request, "courses/signed_out.html", {"title": "Your courses"}, status=401)
-    return page(request, "courses/home.html", {"title": "Your courses", **values})
+        return page(
+            request, "courses/signed_out.html", {"title": "Your courses"}, status=401, frame_ancestors=frames
+        )
+    return page(request, "courses/home.html", {"title": "Your courses", **values}, frame_ancestors=frames)
 
 
 @router.get("/courses/{course_id}/assignments/{assignment_id}")
@@ -172,11 +181,25 @@ async def assignment_page(
         }
 
     values = await run_in_threadpool(load)
+    frames = await _frames(context)
     if values == "signed out":
-        return page(request, "courses/signed_out.html", {"title": "Your courses"}, status=401)
+        return page(
+            request, "courses/signed_out.html", {"title": "Your courses"}, status=401, frame_ancestors=frames
+        )
     if not isinstance(values, dict):
-        return page(request, "student/not_found.html", {"title": "No such assignment"}, status=404)
-    return page(request, "courses/assignment.html", {"title": values["assignment"].title, **values})
+        return page(
+            request,
+            "student/not_found.html",
+            {"title": "No such assignment"},
+            status=404,
+            frame_ancestors=frames,
+        )
+    return page(
+        request,
+        "courses/assignment.html",
+        {"title": values["assignment"].title, **values},
+        frame_ancestors=frames,
+    )
 
 
 def assignment_banner(context: LtiContext, student: str, problem_id: str) -> dict[str, Any] | None:
