@@ -6,7 +6,7 @@ from __future__ import annotations
 from datetime import datetime
 
 from app.catalog import Catalog
-from app.courses import gradebook
+from app.courses import gradebook, passback
 from app.courses.gradebook import AssignmentCell, Gradebook, PartSpec
 from app.courses.records import AssignmentRecord, CourseRecord
 from app.db.errors import ProblemNotFound
@@ -60,4 +60,15 @@ def student_cell(
     extension = stores.courses.extensions(assignment.id).get(student)
     return gradebook.assignment_cell(
         assignment, assignment_parts(catalog, assignment), mine, student, extension, now
+    )
+
+
+def resend_total(
+    stores: Stores, catalog: Catalog, assignment: AssignmentRecord, student: str, now: datetime
+) -> int:
+    """Queue the student's assignment total again for its LMS line items (after an extension changed
+    the penalty); how many were queued (none when it was not launched from an LMS)."""
+    cell = student_cell(stores, catalog, assignment, student, now)
+    return stores.outbox.enqueue(
+        passback.target_key(assignment.id), student, cell.score, float(max(cell.maximum, 1)), now
     )

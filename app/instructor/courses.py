@@ -448,6 +448,9 @@ async def extension(course_id: int, request: Request, services: ServicesDep, who
             raise PageError(422, "No such assignment", "Pick an assignment of this course.")
         due = _parse_local(str(form.get("due_at") or ""), course.timezone)
         services.stores.courses.set_extension(record.id, student, due)
+        service.resend_total(
+            services.stores, services.catalog, record, student, request.app.state.lti.clock()
+        )
 
     await run_in_threadpool(save)
     return RedirectResponse(f"/instructor/courses/{course_id}/gradebook", status_code=303)

@@ -482,15 +482,23 @@ async def list_extensions(
     responses=errors(403, 404, 422),
 )
 async def set_extension(
-    assignment_id: int, student: str, body: ExtensionIn, services: ServicesDep, principal: Instructor
+    assignment_id: int,
+    student: str,
+    body: ExtensionIn,
+    request: Request,
+    services: ServicesDep,
+    principal: Instructor,
 ) -> ExtensionOut:
-    """The student's own due date for this assignment (late penalties count from it)."""
+    """The student's own due date for this assignment (late penalties count from it; an LMS gets the
+    total again)."""
+    now = now_of(request)
 
     def save() -> ExtensionOut:
         record = _assignment_as_staff(services, principal, assignment_id)
         if services.stores.courses.enrolment(record.course_id, student) is None:
             raise NotFound(f"{student!r} is not enrolled in this course.")
         services.stores.courses.set_extension(assignment_id, student, body.due_at)
+        service.resend_total(services.stores, services.catalog, record, student, now)
         return ExtensionOut(student=student, due_at=due_for(record, body.due_at))
 
     return await run_in_threadpool(save)
@@ -500,11 +508,14 @@ async def set_extension(
     "/v1/assignments/{assignment_id}/extensions/{student}", status_code=204, responses=errors(403, 404, 422)
 )
 async def remove_extension(
-    assignment_id: int, student: str, services: ServicesDep, principal: Instructor
+    assignment_id: int, student: str, request: Request, services: ServicesDep, principal: Instructor
 ) -> Response:
+    now = now_of(request)
+
     def remove() -> None:
-        _assignment_as_staff(services, principal, assignment_id)
+        record = _assignment_as_staff(services, principal, assignment_id)
         services.stores.courses.set_extension(assignment_id, student, None)
+        service.resend_total(services.stores, services.catalog, record, student, now)
 
     await run_in_threadpool(remove)
     return Response(status_code=204)

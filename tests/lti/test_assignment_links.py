@@ -43,7 +43,7 @@ async def _instructor_launch(sites: Sites, **changes: Any) -> Any:
     return await platform_launch(sites.browser)
 
 
-async def _build_assignment(sites: Sites) -> int:
+async def _build_assignment(sites: Sites, **fields: str) -> int:
     """In the instructor's launch session: the course the launch made, and an assignment on it."""
     courses = await sites.browser.get(f"{TOOL}/instructor/courses")
     assert courses.status_code == 200, courses.text
@@ -64,7 +64,8 @@ async def _build_assignment(sites: Sites) -> int:
             "due_at": (now + timedelta(days=6)).strftime("%Y-%m-%dT%H:%M"),
             "late": "closed",
             "solutions": "after_due",
-        },
+        }
+        | fields,
     )
     assert saved.status_code == 303, saved.text
     return course
@@ -158,3 +159,34 @@ async def test_an_assignment_link_copied_to_another_lms_course_is_refused(sites:
     assert refused.status_code == 404, refused.text
     assert "another course" in refused.text
     assert sites.stores.outbox.scores() == []
+
+
+async def test_an_extension_sends_the_total_again_without_the_late_penalty(sites: Sites) -> None:
+    await _instructor_launch(sites, deep_linking=True)
+    past = datetime.now(UTC) - timedelta(hours=2)
+    course = await _build_assignment(
+        sites, due_at=past.strftime("%Y-%m-%dT%H:%M"), late="penalty", per_day="10", limit="50"
+    )
+    item = await _deep_link_assignment(sites)
+    await _student_opens(sites, item, "student-1")
+    await _answer(sites, RIGHT)
+    [late] = await deliver(sites)
+    assert late.score["scoreGiven"] == pytest.approx(0.9)  # a day late: 10 % off its one point
+    book = await _instructor_launch(sites, custom=dict(item["custom"]), lineitem=LINEITEM)
+    page = await sites.browser.get(TOOL + book.headers["location"])
+    student = re.search(r'<option value="([^"]+)">User student-1</option>', page.text)
+    assignment = re.search(r'name="assignment"><option value="(\d+)"', page.text)
+    csrf = CSRF.search(page.text)
+    assert student and assignment and csrf
+    extended = await sites.browser.post(
+        f"{TOOL}/instructor/courses/{course}/extensions",
+        data={
+            "csrf": unescape(csrf.group(1)),
+            "student": unescape(student.group(1)),
+            "assignment": assignment.group(1),
+            "due_at": (datetime.now(UTC) + timedelta(days=2)).strftime("%Y-%m-%dT%H:%M"),
+        },
+    )
+    assert extended.status_code == 303, extended.text
+    [_, lifted] = await deliver(sites)
+    assert lifted.score["scoreGiven"] == 1.0 and lifted.score["timestamp"] > late.score["timestamp"]
