@@ -19,10 +19,20 @@ class Principal:
     # False for a session opened by an LMS launch: it acts only for itself, whatever its role, since an
     # instructor of one course must not reach the students (or gradebooks) of another.
     api_key: bool = True
+    # The stable identity of an LMS user ("lti:<platform>:<sub>"): course staff are listed by it.
+    account: str | None = None
 
     @property
     def is_instructor(self) -> bool:
         return self.role is Role.INSTRUCTOR
+
+    @property
+    def member(self) -> str | None:
+        """Who this caller is on a course's staff list: "key:<id>" for an API key, the LMS identity
+        for a launched session."""
+        if self.account is not None:
+            return self.account
+        return f"key:{self.key_id}" if self.api_key else None
 
     @property
     def own_identity(self) -> str:

@@ -45,6 +45,33 @@ async def current_principal(
     On the event loop when the key was seen active moments ago and the rate limit is counted in memory
     (the common case); whatever needs the database or Redis runs in the thread pool.
     """
+    principal = await authenticated(request, services)
+    if counted_in_memory(services):
+        spend_budget(services, principal)
+    else:
+        await run_in_threadpool(spend_budget, services, principal)
+    return principal
+
+
+async def preview_principal(
+    request: Request, services: ServicesDep, _scheme: Annotated[object, Security(bearer_scheme)] = None
+) -> Principal:
+    """The caller of a live preview: its own budget per student (or key), so that typing never spends
+    the budget answers and pages need."""
+    principal = await authenticated(request, services)
+    limiter = services.preview_limiter
+    who = principal.student or f"key:{principal.key_id}"
+    if isinstance(limiter, MemoryRateLimiter):
+        wait = limiter.retry_after(who)
+    else:
+        wait = await run_in_threadpool(limiter.retry_after, who)
+    if wait is not None:
+        raise RateLimited(f"Too many previews; try again in {wait} s.", retry_after=wait)
+    return principal
+
+
+async def authenticated(request: Request, services: Services) -> Principal:
+    """The caller, no budget spent: Unauthenticated when there is none."""
     authorization = request.headers.get("authorization")
     if authorization is None:
         principal = await run_in_threadpool(principal_from_session, request)
@@ -60,10 +87,6 @@ async def current_principal(
                 "This API key is unknown or revoked; send it as 'Authorization: Bearer <key>'."
             )
         principal = found
-    if counted_in_memory(services):
-        spend_budget(services, principal)
-    else:
-        await run_in_threadpool(spend_budget, services, principal)
     return principal
 
 
@@ -99,6 +122,7 @@ def budget_wait(services: Services, principal: Principal) -> int | None:
 
 
 CurrentPrincipal = Annotated[Principal, Depends(current_principal)]
+PreviewPrincipal = Annotated[Principal, Depends(preview_principal)]
 
 
 async def instructor(principal: CurrentPrincipal) -> Principal:

@@ -21,6 +21,7 @@ from app.deps import budget_wait
 from app.errors import install_error_handlers
 from app.grading.pool import GradingPool
 from app.heap import freeze_long_lived
+from app.instructor import courses as instructor_courses
 from app.instructor import router as instructor_routes
 from app.instructor.sign_in_limit import SignInLimiter
 from app.logs import configure_logging
@@ -29,9 +30,9 @@ from app.lti.context import LtiContext
 from app.lti.outbox import OutboxWorker
 from app.middleware import RequestContext
 from app.openapi import install_docs
-from app.ratelimit import rate_limiters
+from app.ratelimit import preview_limiter, rate_limiters
 from app.routers import authoring as authoring_routes
-from app.routers import check, health, problems, student_data, submissions
+from app.routers import check, courses, health, problems, student_data, submissions
 from app.services import Services
 from app.settings import Settings, get_settings
 from app.startup import Storage, open_storage_when_reachable
@@ -119,6 +120,9 @@ def create_app(
             sign_in_limiter=SignInLimiter.build(
                 settings.redis_url, settings.sign_in_attempts_per_minute, settings.redis_prefix
             ),
+            preview_limiter=preview_limiter(
+                settings.redis_url, settings.preview_rate_limit_per_minute, settings.redis_prefix
+            ),
         )
         app.state.lti = LtiContext(
             storage.stores,
@@ -161,9 +165,11 @@ def create_app(
     app.include_router(submissions.router)
     app.include_router(student_data.router)
     app.include_router(authoring_routes.router)
+    app.include_router(courses.router)
     app.include_router(lti_routes.router)
     app.include_router(web_routes.router)
     app.mount(STATIC_PATH, static_files(), name="static")
     app.include_router(instructor_routes.router)
+    app.include_router(instructor_courses.router)
     instructor_routes.install_page_handlers(app)
     return app

@@ -180,3 +180,20 @@ def rate_limiters(
         RedisRateLimiter(client, per_key, f"{prefix}:rate:key", breaker=breaker),
         RedisRateLimiter(client, per_student, f"{prefix}:rate:student", breaker=breaker),
     )
+
+
+def preview_limiter(redis_url: str | None, per_minute: int, prefix: str = "physcheck") -> RateLimiter:
+    """The live previews' own budget, per student or key (shared through Redis when a URL is given)."""
+    if redis_url is None:
+        return MemoryRateLimiter(per_minute)
+    import redis
+    from redis.backoff import NoBackoff
+    from redis.retry import Retry
+
+    client = redis.Redis.from_url(
+        redis_url,
+        socket_timeout=REDIS_TIMEOUT_SECONDS,
+        socket_connect_timeout=REDIS_TIMEOUT_SECONDS,
+        retry=Retry(NoBackoff(), 0),
+    )
+    return RedisRateLimiter(client, per_minute, f"{prefix}:rate:preview")

@@ -10,7 +10,7 @@ from app.catalog import Catalog
 from app.db.database import Database
 from app.grading.pool import GradingPool
 from app.instructor.sign_in_limit import SignInLimiter
-from app.ratelimit import RateLimiter
+from app.ratelimit import MemoryRateLimiter, RateLimiter
 from app.schemas.check import VerdictJson
 from app.settings import Settings
 from app.storage import Stores
@@ -29,3 +29,5 @@ class Services:
     authoring: AuthoringPool
     verdict_json: VerdictJson = field(default_factory=VerdictJson)
     sign_in_limiter: SignInLimiter | None = None  # the instructor pages' form; None: not limited
+    # Live previews' own budget (settings.preview_rate_limit_per_minute), apart from the request budgets.
+    preview_limiter: RateLimiter = field(default_factory=lambda: MemoryRateLimiter(600))

@@ -65,6 +65,9 @@ class Settings(BaseSettings):
     student_rate_limit_per_minute: int = Field(default=60, ge=1)
     # Instructor sign-in attempts (the pages' form) from one address, and at one key prefix.
     sign_in_attempts_per_minute: int = Field(default=10, ge=1)
+    # Live previews while typing, per student (or key), counted apart from the budgets above: a student
+    # typing at any human pace is never limited, a script hammering the parser still is.
+    preview_rate_limit_per_minute: int = Field(default=600, ge=1)
 
     # An LTI launch whose id_token was issued longer ago than this is refused (a replayed old token).
     lti_max_token_age_seconds: int = Field(default=3600, ge=60)

@@ -18,7 +18,7 @@ MIGRATIONS_DIR = Path(__file__).resolve().parent / "migrations"
 # Arbitrary but fixed: every physcheck process agrees on it, nothing else on the server should use it.
 MIGRATION_LOCK_KEY = 0x70687973_63686B31  # "physchk1"
 # Every module that declares tables on Base; Alembic (and the schema test) need them all imported.
-MODEL_MODULES = ("app.db.models", "app.lti.models")
+MODEL_MODULES = ("app.db.models", "app.lti.models", "app.courses.models")
 # Alembic loads env.py and the revisions as modules, which is not safe from two threads at once.
 _ALEMBIC_IMPORT_LOCK = threading.Lock()
 

@@ -142,7 +142,7 @@ class AttemptCounter(Base):
 class StudentErasure(Base):
     """A permit to delete one student's submissions, held only inside the transaction that erases them
     (inserted, used, deleted): the append-only guard lets a DELETE through for a student named here,
-    and refuses every other UPDATE and DELETE as before. Migration: `0005_erasure`."""
+    and refuses every other UPDATE and DELETE as before. Migration: `0006_erasure`."""
 
     __tablename__ = "student_erasures"
 

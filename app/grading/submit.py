@@ -24,11 +24,15 @@ async def submit_answer(
     student: str,
     answer: str,
     share: str | None = None,
+    *,
+    max_attempts: int | None = None,
 ) -> SubmissionResult:
+    """`max_attempts`: an assignment's attempts per part, over the problem's own (None: the problem's)."""
     catalog = services.catalog
     # No early refusal when attempts are used up: an unreadable answer uses none and is still filed,
     # and only grading tells which it is. The insert refuses a graded one over the limit.
-    max_attempts = catalog.max_attempts(record, part_id)
+    if max_attempts is None:
+        max_attempts = catalog.max_attempts(record, part_id)
     job = await run_in_threadpool(catalog.job, record, part_id, student, answer)
     context: dict[str, object] = {
         "problem": record.id,

@@ -30,6 +30,7 @@ from fastapi.responses import RedirectResponse, Response
 from starlette.concurrency import run_in_threadpool
 from starlette.datastructures import UploadFile
 
+from app.courses import access
 from app.db import class_results as results_repository
 from app.db.errors import ProblemExists
 from app.db.errors import ProblemNotFound as StoredProblemNotFound
@@ -271,11 +272,21 @@ async def sign_out(request: Request, services: ServicesDep, who: Visitor) -> Res
 
 
 @router.get("/problems")
-async def problems(request: Request, services: ServicesDep, who: Visitor) -> Response:
+async def problems(request: Request, services: ServicesDep, who: Visitor, q: str = "") -> Response:
+    """The bank, the uploads of the visitor's courses and those shared, by title; `q` searches titles,
+    ids and topics."""
+    needle = q[:100].casefold().strip()
+
     def load() -> list[dict[str, Any]]:
         rows = []
+        colleagues = access.colleagues(services.stores, who.principal)
+        shared = services.stores.courses.shared_problems()
         for record in services.catalog.list():
+            if not access.may_use_problem(record, who.principal, colleagues, shared):
+                continue
             doc = services.catalog.document(record)
+            if needle and needle not in " ".join([doc.title, record.id, *doc.topics]).casefold():
+                continue
             rows.append(
                 {
                     "id": record.id,
@@ -288,11 +299,15 @@ async def problems(request: Request, services: ServicesDep, who: Visitor) -> Res
                     else ("yours" if str(record.owner_key_id) == who.principal.key_id else "uploaded"),
                 }
             )
-        return rows
+        return sorted(rows, key=lambda row: (str(row["title"]).casefold(), row["id"]))
 
     rows = await run_in_threadpool(load)
     return await _page(
-        request, services, who, "instructor/problems.html", {"title": "Problems", "rows": rows}
+        request,
+        services,
+        who,
+        "instructor/problems.html",
+        {"title": "Problems", "rows": rows, "query": q[:100]},
     )
 
 

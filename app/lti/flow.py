@@ -21,6 +21,8 @@ from urllib.parse import urlencode, urlsplit
 from starlette.concurrency import run_in_threadpool
 
 from app.auth import Role
+from app.courses import passback
+from app.courses.records import AssignmentNotFound, AssignmentRecord, StaffRole
 from app.db.errors import ProblemNotFound
 from app.lti.context import LtiContext
 from app.lti.errors import MalformedRequest, NoSuchProblem, NotPermitted, PlatformNotFound
@@ -138,6 +140,8 @@ class LaunchOutcome:
     platform: PlatformRecord
     problem_id: str | None  # resource link launches
     deep_link_id: str | None  # deep linking launches
+    assignment: tuple[int, int] | None = None  # (course id, assignment id) of an assignment's link
+    course_id: int | None = None  # the course of the LMS context (made on an instructor's first launch)
 
 
 async def complete_launch(
@@ -175,13 +179,20 @@ async def complete_launch(
         max_age=timedelta(seconds=context.settings.lti_max_token_age_seconds),
     )
     problem_id: str | None = None
+    assignment_id: int | None = None
     if claims.message_type != DEEP_LINKING_REQUEST:
+        assignment = claims.custom.get("assignment")
         problem = claims.custom.get("problem")
-        if not isinstance(problem, str) or not PROBLEM_ID.match(problem):
+        if assignment is not None:
+            if not str(assignment).isdigit() or len(str(assignment)) > 12:
+                raise MalformedRequest("bad_assignment", "This link's 'assignment' is not an assignment id.")
+            assignment_id = int(str(assignment))
+        elif not isinstance(problem, str) or not PROBLEM_ID.match(problem):
             raise MalformedRequest(
                 "no_problem", "This link names no physcheck problem (custom parameter 'problem')."
             )
-        problem_id = problem
+        else:
+            problem_id = problem
     role = role_from_claims(claims.roles)
     if claims.message_type == DEEP_LINKING_REQUEST and role is not Role.INSTRUCTOR:
         raise NotPermitted("not_instructor", "Only instructors can add problems to a course.")
@@ -194,8 +205,25 @@ async def complete_launch(
             raise NotPermitted("unknown_deployment", "This deployment is not registered with the tool.")
         if problem_id is not None:
             _require_problem(stores.problems, problem_id)
+        assignment = (
+            None if assignment_id is None else _require_assignment(stores, platform, claims, assignment_id)
+        )
         if not stores.launches.spend_nonce(platform.id, claims.nonce[:255], now + NONCE_RETENTION, now):
             raise NotPermitted("replayed", "This launch was already used; open the activity again.")
+        identity = student_id(platform.id, claims.sub)
+        course_id = _join_course(stores, platform, claims, role, identity)
+        if assignment is not None:
+            course_id = assignment.course_id
+            if role is Role.STUDENT:
+                stores.courses.enrol(course_id, identity, claims.name)
+            if claims.lineitem_url is not None:
+                stores.outbox.add_target(
+                    platform,
+                    student=identity,
+                    problem_id=passback.target_key(assignment.id),
+                    lineitem_url=claims.lineitem_url,
+                    sub=claims.sub,
+                )
         if problem_id is not None and claims.lineitem_url is not None:
             stores.outbox.add_target(
                 platform,
@@ -210,7 +238,10 @@ async def complete_launch(
         deep_link_id = None
         if claims.deep_link_return_url is not None:
             deep_link_id = _save_deep_link(stores, platform, claims, token_hash(session_id), now)
-        return LaunchOutcome(session_id, record, claims, platform, problem_id, deep_link_id)
+        placed = None if assignment is None else (assignment.course_id, assignment.id)
+        return LaunchOutcome(
+            session_id, record, claims, platform, problem_id, deep_link_id, placed, course_id
+        )
 
     return await run_in_threadpool(open_launch)
 
@@ -226,6 +257,52 @@ def _require_problem(problems: ProblemStore, problem_id: str) -> None:
             f"This link names the problem '{problem_id}', which physcheck does not have (it may have "
             "been retired). Ask your instructor to replace the link.",
         ) from error
+
+
+def _require_assignment(
+    stores: Stores, platform: PlatformRecord, claims: LaunchClaims, assignment_id: int
+) -> AssignmentRecord:
+    """The assignment a link names, refused at launch unless it belongs to the course of the LMS
+    context launching it (a link copied into another LMS course must be added there again)."""
+    try:
+        assignment = stores.courses.get_assignment(assignment_id)
+    except AssignmentNotFound:
+        assignment = None
+    course = None if assignment is None else stores.courses.get_course(assignment.course_id)
+    if (
+        assignment is None
+        or course is None
+        or claims.context_id is None
+        or (course.lti_platform_id, course.lti_context_id) != (platform.id, claims.context_id)
+    ):
+        raise NoSuchProblem(
+            "unknown_assignment",
+            "This link names a physcheck assignment that is not this course's (it may have been deleted, "
+            "or the link was copied from another course). Ask your instructor to add it again.",
+        )
+    return assignment
+
+
+def _join_course(
+    stores: Stores, platform: PlatformRecord, claims: LaunchClaims, role: Role, identity: str
+) -> int | None:
+    """The LMS context's course: made on an instructor's first launch from it, with the instructor
+    (or TA) on its staff; a student's launch changes nothing here."""
+    if claims.context_id is None:
+        return None
+    context = (platform.id, claims.context_id)
+    if role is not Role.INSTRUCTOR:
+        course = stores.courses.course_for_context(*context)
+        return None if course is None else course.id
+    title = claims.context_title or f"Course {claims.context_id[:40]}"
+    course = stores.courses.create_course(title, owner=identity, owner_name=claims.name, lti_context=context)
+    staff_role = (
+        StaffRole.TA if any(r.endswith("#TeachingAssistant") for r in claims.roles) else StaffRole.INSTRUCTOR
+    )
+    known = {s.member: s.role for s in stores.courses.staff(course.id)}
+    if known.get(identity) is not staff_role and not (identity in known and staff_role is StaffRole.TA):
+        stores.courses.add_staff(course.id, identity, staff_role, claims.name)
+    return course.id
 
 
 def _save_deep_link(
@@ -264,6 +341,24 @@ def problem_choices(problems: ProblemStore) -> list[ProblemChoice]:
     return choices
 
 
+def assignment_choices(stores: Stores, member: str) -> list[ProblemChoice]:
+    """The assignments of the courses this LMS user teaches, each offered as one link (`assignment:<id>`)
+    with one line item: the assignment's total, one point a part."""
+    choices = []
+    for course, _ in stores.courses.courses_taught(member):
+        for assignment in stores.courses.assignments(course.id):
+            points = 0
+            for problem_id in assignment.problems:
+                try:
+                    parts = stores.problems.get(problem_id).document.get("parts")
+                except ProblemNotFound:
+                    continue
+                points += len(parts) if isinstance(parts, list) else 0
+            title = f"{assignment.title} ({course.title}: {len(assignment.problems)} problems)"
+            choices.append(ProblemChoice(passback.target_key(assignment.id), title, float(max(points, 1))))
+    return choices
+
+
 @dataclass(frozen=True)
 class DeepLinkRequestRecord:
     id: str
@@ -273,6 +368,7 @@ class DeepLinkRequestRecord:
     data: Any
     csrf_token: str
     accept_multiple: bool
+    member: str = ""  # the LMS identity of the instructor choosing
 
 
 def load_deep_link(stores: Stores, request_id: str, csrf_token: str, now: datetime) -> DeepLinkRequestRecord:
@@ -291,10 +387,24 @@ def load_deep_link(stores: Stores, request_id: str, csrf_token: str, now: dateti
         data=None if row.data is None else json.loads(row.data),
         csrf_token=owner.csrf_token,
         accept_multiple=row.accept_multiple,
+        member=owner.student,
     )
 
 
 def content_item(context: LtiContext, choice: ProblemChoice) -> dict[str, Any]:
+    assignment_id = passback.assignment_of(choice.id)
+    if assignment_id is not None:  # one link, one line item for the whole assignment
+        return {
+            "type": "ltiResourceLink",
+            "title": choice.title,
+            "url": context.url("/lti/launch"),
+            "custom": {"assignment": str(assignment_id)},
+            "lineItem": {
+                "scoreMaximum": choice.score_maximum,
+                "label": choice.title,
+                "resourceId": f"assignment-{assignment_id}",
+            },
+        }
     return {
         "type": "ltiResourceLink",
         "title": choice.title,
@@ -312,7 +422,8 @@ def finish_deep_link(
     now = context.clock()
     stores = context.stores
     request = load_deep_link(stores, request_id, csrf_token, now)
-    by_id = {choice.id: choice for choice in problem_choices(stores.problems)}
+    offered = [*problem_choices(stores.problems), *assignment_choices(stores, request.member)]
+    by_id = {choice.id: choice for choice in offered}
     unknown = [pid for pid in problem_ids if pid not in by_id]
     if unknown:
         raise MalformedRequest("unknown_problem", f"No such problem: {', '.join(unknown)[:200]}.")

@@ -34,6 +34,7 @@ CLAIM_DEPLOYMENT_ID = LTI + "deployment_id"
 CLAIM_ROLES = LTI + "roles"
 CLAIM_CUSTOM = LTI + "custom"
 CLAIM_RESOURCE_LINK = LTI + "resource_link"
+CLAIM_CONTEXT = LTI + "context"
 CLAIM_AGS_ENDPOINT = "https://purl.imsglobal.org/spec/lti-ags/claim/endpoint"
 CLAIM_DEEP_LINKING_SETTINGS = "https://purl.imsglobal.org/spec/lti-dl/claim/deep_linking_settings"
 SCOPE_SCORE = "https://purl.imsglobal.org/spec/lti-ags/scope/score"
@@ -61,6 +62,8 @@ class LaunchClaims:
     deep_link_return_url: str | None = None
     deep_link_data: Any = None  # opaque, echoed back in the response
     deep_link_accept_multiple: bool = False  # may the response carry several items
+    context_id: str | None = None  # the LMS course (context) launched from, when the platform says
+    context_title: str = ""
 
 
 MAX_HEADER_CHARS = 2048
@@ -207,6 +210,10 @@ def check_claims(
         expires_at=expires_at,
         custom=custom,
     )
+    context = claims.get(CLAIM_CONTEXT)
+    if isinstance(context, dict) and isinstance(context.get("id"), str) and 0 < len(context["id"]) <= 255:
+        title = next((context[k] for k in ("title", "label") if isinstance(context.get(k), str)), "")
+        launch = replace(launch, context_id=context["id"], context_title=str(title)[:200])
     if message_type == RESOURCE_LINK_REQUEST:
         return _with_resource_link(launch, claims)
     return _with_deep_linking(launch, claims)

@@ -118,7 +118,9 @@ def picker_page(
         for choice in choices
     )
     legend = (
-        "Problems to add to the course" if multiple else "The problem to add (this LMS takes one per link)"
+        "Assignments and problems to add to the course (an assignment is one link with one grade)"
+        if multiple
+        else "The assignment or problem to add (this LMS takes one per link)"
     )
     body = (
         "<h1>Add physcheck problems</h1>"

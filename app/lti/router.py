@@ -18,17 +18,19 @@ from fastapi import APIRouter, Request
 from fastapi.responses import JSONResponse, RedirectResponse, Response
 from starlette.concurrency import run_in_threadpool
 
+from app.auth import Role
 from app.lti.context import LtiContext, LtiContextDep
 from app.lti.errors import LaunchRefused, MalformedRequest, PlatformKeysUnavailable
 from app.lti.flow import (
     BROWSER_COOKIE,
     LOGIN_LIFETIME,
+    assignment_choices,
     begin_login,
     complete_launch,
     finish_deep_link,
     problem_choices,
 )
-from app.lti.pages import auto_post_page, picker_page, refusal_page, unavailable_page
+from app.lti.pages import ProblemChoice, auto_post_page, picker_page, refusal_page, unavailable_page
 from app.lti.platforms import platform_origins
 from app.lti.sessions import SESSION_COOKIE, SESSION_LIFETIME
 from app.web import student_page
@@ -104,10 +106,18 @@ async def launch(request: Request, context: Context) -> Response:
             response = picker_page(
                 outcome.deep_link_id,
                 outcome.session.csrf_token,
-                await run_in_threadpool(problem_choices, context.stores.problems),
+                await run_in_threadpool(choices, context, outcome.session.student),
                 frame_ancestors=await _frame_ancestors(context),
                 multiple=outcome.claims.deep_link_accept_multiple,
             )
+        elif outcome.assignment is not None:
+            course_id, assignment_id = outcome.assignment
+            target = (
+                f"/instructor/courses/{course_id}/gradebook"
+                if outcome.session.role is Role.INSTRUCTOR
+                else f"/courses/{course_id}/assignments/{assignment_id}"
+            )
+            response = RedirectResponse(target, status_code=303)
         else:
             assert outcome.problem_id is not None
             response = RedirectResponse(f"/p/{quote(outcome.problem_id, safe='')}", status_code=303)
@@ -117,6 +127,11 @@ async def launch(request: Request, context: Context) -> Response:
         return response
 
     return await _refusing(context, action)
+
+
+def choices(context: LtiContext, member: str) -> list[ProblemChoice]:
+    """The course's assignments first (one link and one grade each), then every problem."""
+    return [*assignment_choices(context.stores, member), *problem_choices(context.stores.problems)]
 
 
 @router.post("/lti/deep-link/{request_id}", include_in_schema=False)

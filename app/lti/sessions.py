@@ -71,6 +71,7 @@ class SessionRecord:
             name=self.name or self.student,
             student=self.student if self.role is Role.STUDENT else None,
             api_key=False,
+            account=self.student,
         )
 
 
@@ -105,10 +106,19 @@ def current_session(request: Request) -> tuple[str, SessionRecord] | None:
     CSRF token from here to put in its page for its scripts to send back."""
     session_id = request.cookies.get(SESSION_COOKIE)
     context = getattr(request.app.state, "lti", None)
-    if not session_id or context is None:
+    if context is None:
         return None
-    record = find_session(context.stores.lti_sessions, session_id, now=context.clock())
-    return None if record is None else (token_hash(session_id), record)
+    if session_id:
+        record = find_session(context.stores.lti_sessions, session_id, now=context.clock())
+        if record is not None:
+            return token_hash(session_id), record
+    # Else a student signed in by a course's personal link (the same shape; see app.courses.sessions).
+    from app.courses import sessions as course_sessions
+
+    course_cookie = request.cookies.get(course_sessions.COOKIE)
+    if not course_cookie:
+        return None
+    return course_sessions.find(context.stores.courses, course_cookie, context.clock())
 
 
 def principal_from_session(request: Request) -> Principal | None:

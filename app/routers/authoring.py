@@ -8,9 +8,10 @@ from fastapi import APIRouter, Path, Request, Response
 from starlette.concurrency import run_in_threadpool
 
 from app.auth import Principal
+from app.courses import access
 from app.db.records import ProblemRecord
 from app.deps import Instructor, Problems, ServicesDep
-from app.errors import AppError, Forbidden
+from app.errors import AppError, Forbidden, NotFound
 from app.instructor.worked import body_words
 from app.lti.outbox import DeliveryProblem
 from app.openapi import AUTHENTICATED, errors
@@ -149,10 +150,18 @@ async def retire(
 
 
 @router.get("/v1/problems/{problem_id}/solution", response_model=SolutionPublic, responses=errors(404, 422))
-async def solution(problem_id: str, services: ServicesDep, _: Instructor) -> SolutionPublic:
+async def solution(problem_id: str, services: ServicesDep, principal: Instructor) -> SolutionPublic:
+    """An upload's solution only to its author's courses' staff, or to anyone once shared."""
     record = await run_in_threadpool(services.catalog.get, problem_id)
+    if not await run_in_threadpool(usable, services, principal, record):
+        raise NotFound(f"There is no problem {problem_id!r}.")
     compiled = await run_in_threadpool(services.catalog.compiled, record)
     return solution_of(compiled)
+
+
+def usable(services: Services, principal: Principal, record: ProblemRecord) -> bool:
+    colleagues = access.colleagues(services.stores, principal)
+    return access.may_use_problem(record, principal, colleagues, services.stores.courses.shared_problems())
 
 
 def solution_of(compiled: CompiledProblem) -> SolutionPublic:

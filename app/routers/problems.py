@@ -2,15 +2,18 @@
 
 from __future__ import annotations
 
+from datetime import datetime
 from typing import Annotated
 
-from fastapi import APIRouter, Body, Path, Query
+from fastapi import APIRouter, Body, Path, Query, Request
 from starlette.concurrency import run_in_threadpool
 
 from app.auth import Principal
+from app.courses import access
+from app.db.errors import ProblemNotFound
 from app.db.records import ProblemRecord
-from app.deps import CurrentPrincipal, ServicesDep
-from app.errors import AppError, Forbidden, NotFound
+from app.deps import CurrentPrincipal, PreviewPrincipal, ServicesDep
+from app.errors import AppError, Conflict, Forbidden, NotFound
 from app.grading.submit import stored_problem_fault, submit_answer
 from app.openapi import AUTHENTICATED, errors
 from app.schemas import examples
@@ -52,8 +55,12 @@ def student_of(principal: Principal, named: str | None) -> str:
 
 
 @router.get("/v1/problems", response_model=list[ProblemSummary])
-async def list_problems(services: ServicesDep, _: CurrentPrincipal) -> list[ProblemSummary]:
-    records = await run_in_threadpool(services.catalog.list)
+async def list_problems(
+    request: Request, services: ServicesDep, principal: CurrentPrincipal
+) -> list[ProblemSummary]:
+    """Instructors: the bank, their courses' uploads and those shared to the bank. Students: the
+    problems of their courses' open assignments (a student in no course: every problem)."""
+    records = await run_in_threadpool(visible_problems, services, principal, now_of(request))
     summaries = []
     for record in records:
         doc = services.catalog.document(record)
@@ -73,11 +80,13 @@ async def list_problems(services: ServicesDep, _: CurrentPrincipal) -> list[Prob
 @router.get("/v1/problems/{problem_id}", response_model=ProblemPublic, responses=errors(403, 404, 422))
 async def get_problem(
     problem_id: str,
+    request: Request,
     services: ServicesDep,
     principal: CurrentPrincipal,
     student: Annotated[StudentId | None, Query()] = None,
 ) -> ProblemPublic:
     who = student_of(principal, student)
+    await run_in_threadpool(require_open, services, principal, problem_id, who, now_of(request))
     try:
         view = await run_in_threadpool(services.catalog.student_view, problem_id, who)
     except LookupError:
@@ -95,13 +104,22 @@ async def submit(
     problem_id: ProblemIdPath,
     part_id: PartIdPath,
     body: Annotated[SubmissionIn, Body(openapi_examples=examples.SUBMISSION)],
+    request: Request,
     services: ServicesDep,
     principal: CurrentPrincipal,
 ) -> SubmissionResult:
+    """Graded and filed; for a student of a course, only within an assignment that accepts answers
+    now (409 after a closed assignment's due date), with the assignment's attempts per part."""
     who = student_of(principal, body.student)
+    opened = await run_in_threadpool(require_open, services, principal, problem_id, who, now_of(request))
+    if not opened.accepting:
+        raise Conflict(opened.why)
     record = await run_in_threadpool(services.catalog.get, problem_id)
     _require_part(services, record, part_id)
-    return await submit_answer(services, record, part_id, who, body.answer, principal.grading_share)
+    limit = None if opened.assignment is None else opened.assignment.spec.max_attempts
+    return await submit_answer(
+        services, record, part_id, who, body.answer, principal.grading_share, max_attempts=limit
+    )
 
 
 @router.post(
@@ -114,10 +132,12 @@ async def preview(
     part_id: PartIdPath,
     body: Annotated[PreviewIn, Body(openapi_examples=examples.PREVIEW)],
     services: ServicesDep,
-    principal: CurrentPrincipal,
+    request: Request,
+    principal: PreviewPrincipal,
 ) -> PreviewPublic:
     """How the answer would be read (for a live preview while typing); nothing is graded or stored."""
     who = student_of(principal, None)
+    await run_in_threadpool(require_open, services, principal, problem_id, who, now_of(request))
     record = await run_in_threadpool(services.catalog.get, problem_id)
     _require_part(services, record, part_id)
     job = await run_in_threadpool(services.catalog.job, record, part_id, who, body.answer)
@@ -127,6 +147,47 @@ async def preview(
         raise stored_problem_fault(error, {"problem": record.id, "part": part_id, "student": who}) from error
     mathml = str(tex_to_mathml(result.read_as.latex, display=True)) if result.read_as else None
     return PreviewPublic(read_as=result.read_as, error=result.error, mathml=mathml)
+
+
+def visible_problems(services: Services, principal: Principal, now: datetime) -> list[ProblemRecord]:
+    records = services.catalog.list()
+    if principal.student is not None:
+        allowed = access.assigned_problems(services.stores, principal.student, now)
+        return records if allowed is None else [r for r in records if r.id in allowed]
+    colleagues = access.colleagues(services.stores, principal)
+    shared = services.stores.courses.shared_problems()
+    return [r for r in records if access.may_use_problem(r, principal, colleagues, shared)]
+
+
+def require_open(
+    services: Services, principal: Principal, problem_id: str, who: str, now: datetime
+) -> access.Opening:
+    """The problem as `who` may reach it: NotFound when it is outside their assignments, when an
+    instructor names a student of a course they do not teach, or an upload not theirs to use."""
+    missing = NotFound(f"There is no problem {problem_id!r}.")
+    if principal.student is None:
+        if who != principal.own_identity and not access.may_reach_student(services.stores, principal, who):
+            raise NotFound(f"There is no student {who!r} in your courses.")
+        if who == principal.own_identity:
+            try:
+                record = services.catalog.get(problem_id)
+            except ProblemNotFound:
+                raise missing from None
+            colleagues = access.colleagues(services.stores, principal)
+            if not access.may_use_problem(
+                record, principal, colleagues, services.stores.courses.shared_problems()
+            ):
+                raise missing
+            return access.Opening(None, None, True, None)
+    found = access.opening(services.stores, who, problem_id, now)
+    if found is None:
+        raise missing
+    return found
+
+
+def now_of(request: Request) -> datetime:
+    clock: datetime = request.app.state.lti.clock()
+    return clock
 
 
 def _require_part(services: Services, record: ProblemRecord, part_id: str) -> None:

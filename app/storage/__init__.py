@@ -5,6 +5,7 @@ protocols.py   one Protocol per store (keys, problems, submissions, compiled pro
 sql.py         their SQLAlchemy implementation over the `app.db` repositories (SQLite, PostgreSQL);
                sql_lti.py for the launch stores
 student_data.py one student's data across the stores, to export or erase (SQL and in-memory)
+sql_courses.py / memory_courses.py   courses, rosters, sign-in, assignments (app.courses.records)
 memory.py      in-memory fakes that keep the same contract (tests/storage runs it against all three);
                memory_lti.py for the launch stores
 
@@ -28,10 +29,12 @@ from app.storage.memory import (
     MemoryToolKeys,
     grade_queue,
 )
+from app.storage.memory_courses import MemoryCourseStore, assignment_grade_queue
 from app.storage.memory_lti import MemoryLaunchStore, MemoryLtiSessionStore, MemoryPlatformStore
 from app.storage.protocols import (
     ApiKeyStore,
     CompiledCache,
+    CourseStore,
     Filed,
     LaunchStore,
     LtiSessionStore,
@@ -51,6 +54,8 @@ from app.storage.sql import (
     SqlSubmissionStore,
     SqlToolKeys,
 )
+from app.storage.sql_assignment_grades import queue_assignment_grades
+from app.storage.sql_courses import SqlCourseStore
 from app.storage.sql_lti import SqlLaunchStore, SqlLtiSessionStore, SqlPlatformStore
 from app.storage.sql_outbox import queue_grade
 from app.storage.student_data import MemoryStudentData, SqlStudentData, StudentDataStore
@@ -58,6 +63,7 @@ from app.storage.student_data import MemoryStudentData, SqlStudentData, StudentD
 __all__ = [
     "ApiKeyStore",
     "CompiledCache",
+    "CourseStore",
     "Filed",
     "LaunchStore",
     "LtiSessionStore",
@@ -87,6 +93,7 @@ class Stores:
     lti_sessions: LtiSessionStore
     student_data: StudentDataStore
     ping: Callable[[], bool] = field(default=lambda: True)
+    courses: CourseStore = field(default_factory=MemoryCourseStore)
 
 
 def sql_stores(database: Database, *, clock: Clock = utc_now) -> Stores:
@@ -95,7 +102,7 @@ def sql_stores(database: Database, *, clock: Clock = utc_now) -> Stores:
     return Stores(
         keys=SqlApiKeyStore(database, clock),
         problems=SqlProblemStore(database, clock),
-        submissions=SqlSubmissionStore(database, [queue_grade], clock),
+        submissions=SqlSubmissionStore(database, [queue_grade, queue_assignment_grades], clock),
         compiled=SqlCompiledCache(database),
         outbox=SqlScoreOutbox(database),
         tool_keys=SqlToolKeys(database, clock),
@@ -104,6 +111,7 @@ def sql_stores(database: Database, *, clock: Clock = utc_now) -> Stores:
         lti_sessions=SqlLtiSessionStore(database),
         student_data=SqlStudentData(database),
         ping=database.ping,
+        courses=SqlCourseStore(database, clock),
     )
 
 
@@ -115,6 +123,8 @@ def memory_stores(*, clock: Clock = utc_now) -> Stores:
     submissions = MemorySubmissionStore(problems, hooks, clock=clock)
     hooks.append(grade_queue(outbox, problems, submissions.all))
     platforms, lti_sessions, keys = MemoryPlatformStore(), MemoryLtiSessionStore(), MemoryApiKeyStore(clock)
+    courses = MemoryCourseStore(clock)
+    hooks.append(assignment_grade_queue(outbox, problems, courses, submissions.all))
     return Stores(
         keys=keys,
         problems=problems,
@@ -126,4 +136,5 @@ def memory_stores(*, clock: Clock = utc_now) -> Stores:
         launches=MemoryLaunchStore(),
         lti_sessions=lti_sessions,
         student_data=MemoryStudentData(submissions, outbox, lti_sessions, platforms, keys),
+        courses=courses,
     )

@@ -12,6 +12,17 @@ from dataclasses import dataclass
 from datetime import datetime
 from typing import Any, Protocol
 
+from app.courses.records import (
+    AssignmentRecord,
+    AssignmentSpec,
+    CourseRecord,
+    CourseSession,
+    EnrolmentRecord,
+    RosterImport,
+    RosterRow,
+    StaffRecord,
+    StaffRole,
+)
 from app.db.class_results import PartResults
 from app.db.records import ApiKeyRecord, CreatedKey, Page, ProblemRecord, Role, SubmissionRecord
 from app.lti.outbox import ClaimedScore, DeliveryProblem, Outcome
@@ -296,3 +307,111 @@ class LtiSessionStore(Protocol):
     def get(self, id_hash: str) -> SessionRecord | None:
         """As saved, expired or not (the caller judges)."""
         ...
+
+
+class CourseStore(Protocol):
+    """Courses, their staff and rosters, students' sign-in links and sessions, assignments and
+    extensions, and the uploads shared to the bank (records in `app.courses.records`)."""
+
+    def create_course(
+        self,
+        title: str,
+        *,
+        owner: str,
+        owner_name: str = "",
+        timezone: str = "UTC",
+        lti_context: tuple[int, str] | None = None,
+    ) -> CourseRecord:
+        """A new course taught by `owner` (its first instructor); with `lti_context` (platform id,
+        context id) the LMS context's course: the known one when it exists."""
+        ...
+
+    def get_course(self, course_id: int) -> CourseRecord:
+        """Raises CourseNotFound."""
+        ...
+
+    def course_for_context(self, platform_id: int, context_id: str) -> CourseRecord | None: ...
+
+    def course_by_join_code(self, code: str) -> CourseRecord | None: ...
+
+    def set_join_code(self, course_id: int, code: str | None) -> CourseRecord:
+        """Raises JoinCodeTaken when another course uses it."""
+        ...
+
+    def courses_taught(self, member: str) -> list[tuple[CourseRecord, StaffRole]]:
+        """By course id."""
+        ...
+
+    def courses_enrolled(self, student: str) -> list[CourseRecord]:
+        """By course id."""
+        ...
+
+    def add_staff(self, course_id: int, member: str, role: StaffRole, name: str = "") -> StaffRecord:
+        """Adds, or changes the role of, a member of staff."""
+        ...
+
+    def remove_staff(self, course_id: int, member: str) -> None: ...
+
+    def staff(self, course_id: int) -> list[StaffRecord]:
+        """By member."""
+        ...
+
+    def import_roster(self, course_id: int, rows: Sequence[RosterRow]) -> RosterImport:
+        """Each row by its roster id: a new student, or the known one with this name and email (never
+        a second enrolment). Atomic: all rows or none."""
+        ...
+
+    def enrol(self, course_id: int, student: str, name: str = "", email: str = "") -> EnrolmentRecord:
+        """Enrol an identity (a join code, an LMS launch); again keeps the first enrolment."""
+        ...
+
+    def roster(self, course_id: int) -> list[EnrolmentRecord]:
+        """By name, then identity."""
+        ...
+
+    def enrolment(self, course_id: int, student: str) -> EnrolmentRecord | None: ...
+
+    def issue_sign_in(self, course_id: int, student: str, token_hash: str, expires_at: datetime) -> None:
+        """A new personal link for an enrolled student; their older unused links stop working.
+        Raises NotFound when the student is not enrolled."""
+        ...
+
+    def redeem_sign_in(self, token_hash: str, now: datetime) -> tuple[int, str] | None:
+        """(course id, student) of a live, unused link, spent now: of concurrent redeemers one wins."""
+        ...
+
+    def save_session(self, id_hash: str, session: CourseSession, now: datetime) -> None:
+        """Store a new session (dropping those expired before `now`)."""
+        ...
+
+    def get_session(self, id_hash: str) -> CourseSession | None:
+        """As saved, expired or not (the caller judges)."""
+        ...
+
+    def create_assignment(self, course_id: int, spec: AssignmentSpec) -> AssignmentRecord: ...
+
+    def update_assignment(self, assignment_id: int, spec: AssignmentSpec) -> AssignmentRecord: ...
+
+    def delete_assignment(self, assignment_id: int) -> None:
+        """With its extensions. Raises AssignmentNotFound."""
+        ...
+
+    def get_assignment(self, assignment_id: int) -> AssignmentRecord:
+        """Raises AssignmentNotFound."""
+        ...
+
+    def assignments(self, course_id: int) -> list[AssignmentRecord]:
+        """By due date, then id."""
+        ...
+
+    def set_extension(self, assignment_id: int, student: str, due_at: datetime | None) -> None:
+        """A student's own due date for an assignment; None removes it."""
+        ...
+
+    def extensions(self, assignment_id: int) -> dict[str, datetime]: ...
+
+    def share_problem(self, problem_id: str, shared: bool) -> None:
+        """Share an upload to the bank (every instructor may use it), or take it back."""
+        ...
+
+    def shared_problems(self) -> set[str]: ...

@@ -15,10 +15,11 @@ from fastapi import APIRouter, Request
 from fastapi.responses import HTMLResponse, Response
 from starlette.concurrency import run_in_threadpool
 
+from app.courses import access
 from app.instructor.described import describe
 from app.lti.context import LtiContextDep
 from app.web.layout import page, templates
-from app.web.solution_access import solution_release
+from app.web.solution_access import Within, solution_release
 from app.web.student_page import (
     _FRAGMENT_HEADERS,
     _PROBLEM_ID,
@@ -45,7 +46,13 @@ def solution_context(request: Request, problem_id: str, student: str) -> dict[st
     catalog = services.catalog
     record = catalog.get(problem_id)
     doc = catalog.document(record)
-    release = solution_release(doc, loaded.work)
+    context = request.app.state.lti
+    now = context.clock()
+    opened = access.opening(context.stores, student, problem_id, now)
+    within = None
+    if opened is not None and opened.assignment is not None and opened.due is not None:
+        within = Within(opened.assignment, opened.due, now)
+    release = solution_release(doc, loaded.work, within)
     values: dict[str, Any] = {"problem_id": problem_id, "doc": doc, "release": release, "student": student}
     if not release.released:
         return values

@@ -23,9 +23,11 @@ from fastapi.responses import HTMLResponse, Response
 from starlette.concurrency import run_in_threadpool
 
 from app.auth import bearer_token
+from app.courses import access
 from app.lti.context import LtiContext, LtiContextDep
 from app.lti.platforms import platform_origins
 from app.lti.sessions import current_session
+from app.web.course_pages import assignment_banner
 from app.web.layout import page, templates
 from app.web.student_work import ProblemWork, load_work
 from physics.mathinput.render import latex_name
@@ -142,17 +144,22 @@ class Loaded:
     view: Mapping[str, Any]
     work: ProblemWork
     figure: str | None
+    assignment: Mapping[str, Any] | None = None  # the assignment it is answered in (a course's student)
 
 
 def _load(context: LtiContext, problem_id: str, student: str) -> Loaded | None:
     if context.student_view is None or not _PROBLEM_ID.match(problem_id):
+        return None
+    # A course's student sees only the problems of their open assignments (app.courses.access).
+    if access.opening(context.stores, student, problem_id, context.clock()) is None:
         return None
     try:
         view = context.student_view(problem_id, student)
     except LookupError:
         return None
     work = load_work(context.stores.submissions, problem_id, student, view.get("parts", []))
-    return Loaded(view, work, _figure(context, problem_id, student))
+    banner = assignment_banner(context, student, problem_id)
+    return Loaded(view, work, _figure(context, problem_id, student), banner)
 
 
 def _content_context(loaded: Loaded, problem_id: str, student: str) -> dict[str, Any]:
@@ -163,6 +170,7 @@ def _content_context(loaded: Loaded, problem_id: str, student: str) -> dict[str,
         "work": loaded.work,
         "figure": loaded.figure,
         "student": student,
+        "assignment": loaded.assignment,
     }
 
 
@@ -255,8 +263,11 @@ def _problem_list(request: Request, student: str) -> list[dict[str, Any]]:
     if services is None:
         return []
     context: LtiContext = request.app.state.lti
+    allowed = access.assigned_problems(context.stores, student, context.clock())
     rows = []
     for record in services.catalog.list():
+        if allowed is not None and record.id not in allowed:
+            continue
         document = services.catalog.document(record)
         parts = [
             {"id": part.id, "max_attempts": part.max_attempts or document.max_attempts}
@@ -264,7 +275,7 @@ def _problem_list(request: Request, student: str) -> list[dict[str, Any]]:
         ]
         work = load_work(context.stores.submissions, record.id, student, parts)
         rows.append({"id": record.id, "title": document.title, "topics": document.topics, "work": work})
-    return rows
+    return sorted(rows, key=lambda row: (str(row["title"]).casefold(), row["id"]))
 
 
 @router.get("/problems", include_in_schema=False)

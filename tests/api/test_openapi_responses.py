@@ -7,6 +7,7 @@ from __future__ import annotations
 import re
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
+from datetime import timedelta
 from typing import Any
 
 import httpx
@@ -17,6 +18,7 @@ from fastapi.testclient import TestClient
 from sqlalchemy.exc import OperationalError
 
 from app.auth import Role
+from app.courses.records import AssignmentSpec, RosterRow, StaffRole
 from app.db import problems as problem_repository
 from app.db.database import Database
 from app.db.types import utc_now
@@ -33,6 +35,24 @@ from tests.lti.fake_lms import register_fake_lms
 pytestmark = pytest.mark.slow
 CHECK = {"kind": "numeric", "answer": "4.58 m/s^2", "expected": 4.58, "units": "m/s^2"}
 OWNED, LIMITED = "oa-owned", "oa-limited"
+STUDENT = "course:1:s001"
+ROSTER_CSV = "id,name,email\ns001,Ada,ada@x.org\ns002,Alan,alan@x.org\n"
+STAFF = {"member": "key:98", "role": "ta"}
+ASSIGNMENT = {
+    "title": "HW2",
+    "problems": ["yo-yo"],
+    "opens_at": "2026-01-01T09:00:00+01:00",
+    "due_at": "2026-01-08T09:00:00+01:00",
+    "late": {"kind": "penalty", "per_day": 0.1, "limit": 0.5},
+}
+EXTENSION = {"due_at": "2099-01-01T00:00:00Z"}
+COURSE_BODIES: dict[tuple[str, str], Any] = {
+    ("put", "/v1/courses/{course_id}/staff"): STAFF,
+    ("post", "/v1/courses/{course_id}/assignments"): ASSIGNMENT,
+    ("put", "/v1/assignments/{assignment_id}"): ASSIGNMENT,
+    ("put", "/v1/assignments/{assignment_id}/extensions/{student}"): EXTENSION,
+    ("put", "/v1/problems/{problem_id}/shared"): {"shared": True},
+}
 
 
 def atwood(problem_id: str, **changes: Any) -> dict[str, Any]:
@@ -70,6 +90,7 @@ def api(db: Database, grading_pool: Any) -> Iterator[Api]:
         name="Prof",
         now=utc_now(),
     )
+    _seed_course(db, instructor.id)
     with db.session() as session:
         for problem_id, limit in ((OWNED, None), (LIMITED, 1)):
             document = atwood(problem_id, max_attempts=limit)
@@ -81,6 +102,20 @@ def api(db: Database, grading_pool: Any) -> Iterator[Api]:
             {"Authorization": f"Bearer {instructor_key}"},
             _headers(settings, "student", "ada"),
             {"Cookie": f"{SESSION_COOKIE}={session_id}", CSRF_HEADER: record.csrf_token},
+        )
+
+
+def _seed_course(db: Database, instructor_id: int) -> None:
+    """Course 1, taught by the fixture's instructor (with a TA, key:99), its roster (student STUDENT)
+    and assignments 1 and 2 on yo-yo."""
+    courses = sql_stores(db).courses
+    course = courses.create_course("Mechanics", owner=f"key:{instructor_id}")
+    courses.add_staff(course.id, "key:99", StaffRole.TA)
+    courses.import_roster(course.id, [RosterRow("s001", "Ada", "ada@x.org")])
+    now = utc_now()
+    for title in ("HW1", "HW1b"):  # 1 is deleted among the cases; 2 keeps its extensions' cases apart
+        courses.create_assignment(
+            course.id, AssignmentSpec(title, ("yo-yo",), now - timedelta(days=1), now + timedelta(days=6))
         )
 
 
@@ -118,6 +153,56 @@ CALLS: dict[tuple[str, str], tuple[int, Call]] = {
         200,
         lambda api, h: api.client.get("/v1/problems/yo-yo/solution", headers=h),
     ),
+    ("post", "/v1/courses"): (201, _json("POST", "/v1/courses", {"title": "Optics"})),
+    ("get", "/v1/courses"): (200, lambda api, h: api.client.get("/v1/courses", headers=h)),
+    ("get", "/v1/courses/{course_id}"): (200, lambda api, h: api.client.get("/v1/courses/1", headers=h)),
+    ("get", "/v1/courses/{course_id}/staff"): (200, lambda api, h: api.client.get("/v1/courses/1/staff", headers=h)),
+    ("put", "/v1/courses/{course_id}/staff"): (200, _json("PUT", "/v1/courses/1/staff", STAFF)),
+    ("delete", "/v1/courses/{course_id}/staff/{member}"): (
+        204,
+        lambda api, h: api.client.delete("/v1/courses/1/staff/key:99", headers=h),
+    ),
+    ("get", "/v1/courses/{course_id}/roster"): (200, lambda api, h: api.client.get("/v1/courses/1/roster", headers=h)),
+    ("post", "/v1/courses/{course_id}/roster"): (
+        200,
+        lambda api, h: api.client.post(
+            "/v1/courses/1/roster", content=ROSTER_CSV, headers={**h, "Content-Type": "text/csv"}
+        ),
+    ),
+    ("post", "/v1/courses/{course_id}/sign-in-links"): (200, _json("POST", "/v1/courses/1/sign-in-links", {})),
+    ("post", "/v1/courses/{course_id}/join-code"): (200, _json("POST", "/v1/courses/1/join-code", {})),
+    ("post", "/v1/courses/{course_id}/assignments"): (201, _json("POST", "/v1/courses/1/assignments", ASSIGNMENT)),
+    ("get", "/v1/courses/{course_id}/assignments"): (
+        200,
+        lambda api, h: api.client.get("/v1/courses/1/assignments", headers=h),
+    ),
+    ("get", "/v1/assignments/{assignment_id}"): (200, lambda api, h: api.client.get("/v1/assignments/1", headers=h)),
+    ("put", "/v1/assignments/{assignment_id}"): (200, _json("PUT", "/v1/assignments/1", ASSIGNMENT)),
+    ("delete", "/v1/assignments/{assignment_id}"): (
+        204,
+        lambda api, h: api.client.delete("/v1/assignments/1", headers=h),
+    ),
+    ("get", "/v1/assignments/{assignment_id}/extensions"): (
+        200,
+        lambda api, h: api.client.get("/v1/assignments/2/extensions", headers=h),
+    ),
+    ("put", "/v1/assignments/{assignment_id}/extensions/{student}"): (
+        200,
+        _json("PUT", f"/v1/assignments/2/extensions/{STUDENT}", EXTENSION),
+    ),
+    ("delete", "/v1/assignments/{assignment_id}/extensions/{student}"): (
+        204,
+        lambda api, h: api.client.delete(f"/v1/assignments/2/extensions/{STUDENT}", headers=h),
+    ),
+    ("get", "/v1/courses/{course_id}/gradebook"): (
+        200,
+        lambda api, h: api.client.get("/v1/courses/1/gradebook", headers=h),
+    ),
+    ("get", "/v1/courses/{course_id}/gradebook.csv"): (
+        200,
+        lambda api, h: api.client.get("/v1/courses/1/gradebook.csv", headers=h),
+    ),
+    ("put", "/v1/problems/{problem_id}/shared"): (200, _json("PUT", f"/v1/problems/{OWNED}/shared", {"shared": True})),
     ("get", "/v1/lti/delivery-problems"): (
         200,
         lambda api, h: api.client.get("/v1/lti/delivery-problems", headers=h),
@@ -154,11 +239,24 @@ def forbidden(api: Api, method: str, path: str) -> httpx.Response:
 
 def not_found(api: Api, method: str, path: str) -> httpx.Response:
     url = path.replace("{problem_id}", "no-such-problem").replace("{part_id}", "a")
+    url = url.replace("{course_id}", "999").replace("{assignment_id}", "999").replace("{student}", STUDENT)
+    url = url.replace("{member}", "key:99")
+    if path == "/v1/submissions":  # a student of a course the caller does not teach
+        return api.client.get("/v1/submissions", params={"student": STUDENT}, headers=api.key())
+    if (method, path) == ("post", "/v1/courses/{course_id}/roster"):
+        headers = {**api.instructor, "Content-Type": "text/csv"}
+        return api.client.post(url, content=ROSTER_CSV, headers=headers)
+    if path.startswith(("/v1/courses", "/v1/assignments")) or path.endswith("/shared"):
+        body = COURSE_BODIES.get((method, path), {})
+        return api.client.request(method.upper(), url, json=body, headers=api.instructor)
     body = {"answer": "g"} if method == "post" else atwood("no-such-problem") if method == "put" else None
     return api.client.request(method.upper(), url, json=body, headers=api.instructor)
 
 
 def conflict(api: Api, method: str, path: str) -> httpx.Response:
+    if method == "delete" and path == "/v1/courses/{course_id}/staff/{member}":  # the last instructor
+        instructor = api.client.get("/v1/courses/1/staff", headers=api.instructor).json()[0]["member"]
+        return api.client.delete(f"/v1/courses/1/staff/{instructor}", headers=api.instructor)
     if method == "post" and path == "/v1/problems":
         return api.client.post("/v1/problems", json=atwood(OWNED), headers=api.instructor)
     url = f"/v1/problems/{LIMITED}/parts/acceleration/submissions"
@@ -168,7 +266,7 @@ def conflict(api: Api, method: str, path: str) -> httpx.Response:
 
 
 def too_large(api: Api, method: str, path: str) -> httpx.Response:
-    url = path.replace("{problem_id}", OWNED).replace("{part_id}", "acceleration")
+    url = path.replace("{problem_id}", OWNED).replace("{part_id}", "acceleration").replace("{course_id}", "1")
     body = b" " * (api.settings.max_body_bytes + 1)
     headers = {**api.instructor, "Content-Type": "application/json"}
     return api.client.request(method.upper(), url, content=body, headers=headers)
@@ -185,6 +283,7 @@ def malformed(api: Api, method: str, path: str) -> httpx.Response:
         url = path.replace("{problem_id}", OWNED if method == "put" else "yo-yo").replace(
             "{part_id}", "acceleration"
         )
+        url = url.replace("{course_id}", "1").replace("{assignment_id}", "1").replace("{student}", STUDENT)
         headers = {**api.instructor, "Content-Type": "application/json"}
         return api.client.request(method.upper(), url, content=b'{"answer": ', headers=headers)
     if path == "/v1/submissions":
@@ -200,14 +299,17 @@ def malformed(api: Api, method: str, path: str) -> httpx.Response:
 
 def rate_limited(api: Api, method: str, path: str) -> httpx.Response:
     services = api.services
-    saved = services.key_limiter
+    saved = services.key_limiter, services.preview_limiter
     services.key_limiter = MemoryRateLimiter(1)
+    services.preview_limiter = MemoryRateLimiter(1)  # previews have a budget of their own
     try:
         headers = api.key()
         assert api.client.get("/v1/problems", headers=headers).status_code == 200  # the budget: spent
+        if path.endswith("/preview"):
+            assert CALLS[(method, path)][1](api, headers).status_code == 200  # the preview budget: spent
         return CALLS[(method, path)][1](api, headers)
     finally:
-        services.key_limiter = saved
+        services.key_limiter, services.preview_limiter = saved
 
 
 def unavailable(api: Api, method: str, path: str) -> httpx.Response:
@@ -261,6 +363,9 @@ def schema_error(
         return f"answered {response.status_code}: {response.text[:200]}"
     documented_response = spec["paths"][path][method]["responses"][str(status)]
     content = documented_response.get("content", {}).get("application/json")
+    media = response.headers.get("content-type", "").split(";")[0]
+    if content is None and media in documented_response.get("content", {}):
+        return None  # a documented body that is not JSON (a CSV export)
     if content is None:
         return None if not response.content else f"documents no body but got {response.text[:100]}"
     schema = {**content["schema"], "components": spec["components"]}

@@ -95,6 +95,10 @@ class NextLaunch:
     deep_linking: bool = False
     accept_types: set[str] | None = None  # deep linking: what the platform takes (default: every type)
     accept_multiple: bool = True
+    # The LMS course launched from (the LTI context claim) and custom parameters that replace
+    # `problem`'s (e.g. a deep-linked assignment's {"assignment": "3"}).
+    context: str | None = None
+    custom: dict[str, str] | None = None
 
 
 @dataclass
@@ -152,8 +156,12 @@ class FakeLms:
             launch = MessageLaunch(DictRequest({"get_data": dict(request.query_params)}), self.config())
             launch.set_user_data(spec.user, spec.roles, full_name=f"User {spec.user}")
             launch.set_resource_link_claim("link-1", title="Problem")
-            if spec.problem is not None:
+            if spec.custom is not None:
+                launch.set_custom_parameters_claim(dict(spec.custom))
+            elif spec.problem is not None:
                 launch.set_custom_parameters_claim({"problem": spec.problem})
+            if spec.context is not None:
+                launch.set_launch_context_claim(spec.context, context_title=f"Physics ({spec.context})")
             if spec.lineitem is not None:
                 launch.set_ags(lineitems_url=f"{ISSUER}/lineitems", lineitem_url=spec.lineitem)
             if spec.deep_linking:

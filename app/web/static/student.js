@@ -29,7 +29,7 @@
     return fetch(url, { method: "POST", headers: headers(true), body: JSON.stringify(body), credentials: "same-origin" })
       .then(function (response) {
         return response.json().catch(function () { return {}; }).then(function (data) {
-          return { status: response.status, data: data };
+          return { status: response.status, data: data, wait: response.headers.get("Retry-After") };
         });
       });
   }
@@ -45,13 +45,20 @@
     });
   }
 
+  // A 429 says how long to wait (its Retry-After), and never signs anyone out.
+  function waitText(seconds) {
+    var n = parseInt(seconds || "", 10);
+    if (!(n > 0)) { return "Too many requests at once; wait a moment and try again. Your work is kept."; }
+    return "Too many requests at once; try again in " + n + " second" + (n === 1 ? "" : "s") + ". Your work is kept.";
+  }
+
   function errorText(r) {
     if (r.status === 401) {
       return keyMode
         ? "Your key is no longer accepted; reload the page and enter it again."
         : "Your session has ended; open this activity again from your course.";
     }
-    if (r.status === 429) { return "Too many answers at once; wait a few seconds and try again."; }
+    if (r.status === 429) { return waitText(r.wait); }
     return (r.data && r.data.error && r.data.error.message) || "Something went wrong; try again.";
   }
 
@@ -200,9 +207,14 @@
     var message = document.getElementById("key-error");
     return fetch(contentUrl(), { headers: { "Authorization": "Bearer " + k }, credentials: "omit" })
       .then(function (response) {
+        if (response.status === 429) {  // the key is fine: keep it, say how long to wait
+          message.textContent = waitText(response.headers.get("Retry-After"));
+          return;
+        }
+        if (response.status === 404) { message.textContent = "There is no such problem."; return; }
         if (response.status !== 200) {
-          window.sessionStorage.removeItem(KEY_STORE);
-          message.textContent = response.status === 404 ? "There is no such problem." : "This key was not accepted.";
+          if (response.status === 401) { window.sessionStorage.removeItem(KEY_STORE); }
+          message.textContent = response.status === 401 ? "This key was not accepted." : "Something went wrong; try again.";
           return;
         }
         return response.text().then(function (html) {

@@ -1,7 +1,7 @@
 """Erasing one student's data: submissions stay append-only except for a student being erased.
 
-Revision ID: 0005_erasure
-Revises: 0004_compiled_problems
+Revision ID: 0006_erasure
+Revises: 0005_courses
 Create Date: 2026-11-28
 """
 
@@ -12,8 +12,8 @@ from collections.abc import Sequence
 import sqlalchemy as sa
 from alembic import op
 
-revision: str = "0005_erasure"
-down_revision: str | None = "0004_compiled_problems"
+revision: str = "0006_erasure"
+down_revision: str | None = "0005_courses"
 branch_labels: str | Sequence[str] | None = None
 depends_on: str | Sequence[str] | None = None
 

@@ -1,0 +1,140 @@
+"""Who may see what, in one place.
+
+- A course is seen only by its staff (instructors and TAs); to anyone else it does not exist (404).
+- A student enrolled in any course sees only the problems of their courses' open assignments; a
+  student in no course (an API key, or an LMS link to one problem) keeps the per-problem access they
+  had before courses.
+- An instructor never reaches a student enrolled only in courses they do not teach.
+- An upload belongs to its author's courses: its author and their co-staff use it, every instructor
+  once it is shared to the bank; built-in problems are everyone's.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from datetime import datetime
+
+from app.auth import Principal
+from app.courses.policy import accepting, due_for
+from app.courses.records import AssignmentRecord, CourseNotFound, CourseRecord, StaffRole
+from app.db.records import ProblemRecord
+from app.storage import Stores
+
+
+def course_role(stores: Stores, principal: Principal, course_id: int) -> StaffRole | None:
+    member = principal.member
+    if member is None or not principal.is_instructor:
+        return None
+    return next(
+        (role for course, role in stores.courses.courses_taught(member) if course.id == course_id), None
+    )
+
+
+def require_staff(
+    stores: Stores, principal: Principal, course_id: int, *, instructor: bool = False
+) -> CourseRecord:
+    """The course when the caller teaches it (as an instructor when `instructor`), else CourseNotFound."""
+    role = course_role(stores, principal, course_id)
+    if role is None or (instructor and role is not StaffRole.INSTRUCTOR):
+        raise CourseNotFound(course_id)
+    return stores.courses.get_course(course_id)
+
+
+def taught_courses(stores: Stores, principal: Principal) -> list[tuple[CourseRecord, StaffRole]]:
+    member = principal.member
+    return [] if member is None or not principal.is_instructor else stores.courses.courses_taught(member)
+
+
+def student_assignments(stores: Stores, student: str) -> list[tuple[CourseRecord, AssignmentRecord]]:
+    return [
+        (c, a) for c in stores.courses.courses_enrolled(student) for a in stores.courses.assignments(c.id)
+    ]
+
+
+def assigned_problems(stores: Stores, student: str, now: datetime) -> set[str] | None:
+    """The problems a student may open: those of their courses' open assignments; None (no limit)
+    for a student in no course."""
+    courses = stores.courses.courses_enrolled(student)
+    if not courses:
+        return None
+    return {
+        problem
+        for course in courses
+        for assignment in stores.courses.assignments(course.id)
+        if assignment.spec.opens_at <= now
+        for problem in assignment.problems
+    }
+
+
+def may_open_problem(stores: Stores, principal: Principal, problem_id: str, now: datetime) -> bool:
+    """A student's own view of a problem (instructors decide through `may_use_problem`)."""
+    if principal.student is None:
+        return True
+    allowed = assigned_problems(stores, principal.student, now)
+    return allowed is None or problem_id in allowed
+
+
+def may_reach_student(stores: Stores, principal: Principal, student: str) -> bool:
+    """An instructor's key naming a student: fine for a student in no course, else only for one
+    enrolled in a course the caller teaches."""
+    courses = stores.courses.courses_enrolled(student)
+    if not courses:
+        return True
+    taught = {course.id for course, _ in taught_courses(stores, principal)}
+    return any(course.id in taught for course in courses)
+
+
+def colleagues(stores: Stores, principal: Principal) -> set[int]:
+    """Key ids of the caller and of every API-key colleague on the staff of a course they teach."""
+    ids = {int(principal.key_id)} if principal.api_key and principal.key_id.isdigit() else set()
+    for course, _ in taught_courses(stores, principal):
+        for member in stores.courses.staff(course.id):
+            if member.member.startswith("key:") and member.member[4:].isdigit():
+                ids.add(int(member.member[4:]))
+    return ids
+
+
+def may_use_problem(
+    record: ProblemRecord, principal: Principal, colleague_ids: set[int], shared: set[str]
+) -> bool:
+    """Whether an instructor may list, assign, or read the solution of this problem."""
+    return record.builtin or record.id in shared or record.owner_key_id in colleague_ids
+
+
+@dataclass(frozen=True)
+class Opening:
+    """Whether a student's answer to a problem counts now, and under which assignment."""
+
+    assignment: AssignmentRecord | None  # None: the student is in no course (no assignment rules)
+    course: CourseRecord | None
+    accepting: bool
+    due: datetime | None
+    why: str = ""
+
+
+def opening(stores: Stores, student: str, problem_id: str, now: datetime) -> Opening | None:
+    """None when the problem is not in any of the student's open assignments (it does not exist for
+    them); else the assignment that takes the answer: the first accepting one by due date, or the
+    latest due when none accepts."""
+    courses = stores.courses.courses_enrolled(student)
+    if not courses:
+        return Opening(None, None, True, None)
+    found: list[tuple[CourseRecord, AssignmentRecord, datetime]] = []
+    for course in courses:
+        for assignment in stores.courses.assignments(course.id):
+            if problem_id in assignment.problems and assignment.spec.opens_at <= now:
+                extension = stores.courses.extensions(assignment.id).get(student)
+                found.append((course, assignment, due_for(assignment, extension)))
+    if not found:
+        return None
+    for course, assignment, due in found:
+        if accepting(assignment, due, now):
+            return Opening(assignment, course, True, due)
+    course, assignment, due = found[-1]
+    return Opening(
+        assignment,
+        course,
+        False,
+        due,
+        f"{assignment.title!r} closed at its due date; answers are no longer accepted.",
+    )

@@ -1,0 +1,102 @@
+"""Due dates, late penalties, a student's status on an assignment and when its solutions open.
+
+Pure functions of the records and the clock: the gradebook, the pages and the submission gate all
+ask here, so a late submission is judged the same way everywhere.
+"""
+
+from __future__ import annotations
+
+import math
+from datetime import datetime, timedelta
+from enum import StrEnum
+from zoneinfo import ZoneInfo, ZoneInfoNotFoundError
+
+from app.courses.records import AssignmentRecord, LateKind, LatePolicy, SolutionRelease
+
+DAY = timedelta(days=1)
+
+
+class Status(StrEnum):
+    NOT_OPEN = "not open"
+    NOT_STARTED = "not started"
+    IN_PROGRESS = "in progress"
+    DONE = "done"
+    LATE = "late"
+    CLOSED = "closed"
+
+
+def due_for(assignment: AssignmentRecord, extension: datetime | None) -> datetime:
+    """The student's due date: their extension when they have one (it may only move it later)."""
+    due = assignment.spec.due_at
+    return due if extension is None or extension < due else extension
+
+
+def days_late(submitted_at: datetime, due: datetime) -> int:
+    """Whole days started after the due date: a minute late is one day."""
+    if submitted_at <= due:
+        return 0
+    return math.ceil((submitted_at - due) / DAY)
+
+
+def late_factor(policy: LatePolicy, submitted_at: datetime, due: datetime) -> float | None:
+    """What a submission's score is multiplied by; None when it is not accepted (closed and late)."""
+    late = days_late(submitted_at, due)
+    if late == 0:
+        return 1.0
+    if policy.kind is LateKind.CLOSED:
+        return None
+    return 1.0 - min(policy.limit, policy.per_day * late)
+
+
+def accepting(assignment: AssignmentRecord, due: datetime, now: datetime) -> bool:
+    """Whether a submission now counts: open, and before the due date or with a late penalty."""
+    if now < assignment.spec.opens_at:
+        return False
+    return now <= due or assignment.spec.late.kind is LateKind.PENALTY
+
+
+def status(
+    assignment: AssignmentRecord, due: datetime, now: datetime, *, started: bool, done: bool
+) -> Status:
+    if now < assignment.spec.opens_at:
+        return Status.NOT_OPEN
+    if done:
+        return Status.DONE
+    if now > due:
+        return Status.LATE if assignment.spec.late.kind is LateKind.PENALTY else Status.CLOSED
+    return Status.IN_PROGRESS if started else Status.NOT_STARTED
+
+
+def late_policy_text(policy: LatePolicy) -> str:
+    """Said to students beside the due date."""
+    if policy.kind is LateKind.CLOSED:
+        return "No submissions are accepted after the due date."
+    per_day = f"{policy.per_day * 100:g} %"
+    limit = f"{policy.limit * 100:g} %"
+    return f"Late work loses {per_day} of its score for each day (or part of a day) late, at most {limit}."
+
+
+def solutions_released(
+    assignment: AssignmentRecord, due: datetime, now: datetime, *, all_parts_done: bool
+) -> tuple[bool, str]:
+    """Whether a student may see the worked solutions of this assignment's problems, and why."""
+    release = assignment.spec.solutions
+    if release is SolutionRelease.NEVER:
+        return False, "Your instructor does not release worked solutions for this assignment."
+    if release is SolutionRelease.AFTER_DUE:
+        if now > due:
+            return True, "The assignment is past its due date, so its worked solutions are open."
+        return False, f"The worked solution opens after the due date ({due:%Y-%m-%d %H:%M} UTC)."
+    if all_parts_done:
+        return True, "Every part is done: answered correctly or out of attempts."
+    return False, "The worked solution opens once every part is done, answered correctly or out of attempts."
+
+
+def shown(moment: datetime, timezone: str) -> str:
+    """A date as the course reads it: in the course's zone, with the zone's abbreviation."""
+    try:
+        zone = ZoneInfo(timezone)
+    except (ZoneInfoNotFoundError, ValueError):
+        zone = ZoneInfo("UTC")
+    local = moment.astimezone(zone)
+    return f"{local:%a %d %b %Y, %H:%M} {local.tzname()}"

@@ -1,0 +1,88 @@
+"""Students without an LMS: a personal sign-in link (a single-use token) opens a session for the
+course, held in an HttpOnly, SameSite=Lax cookie, so every tab of the browser is signed in and no
+page asks for an API key. The session reads as a launched student's (`SessionRecord`), so the API
+and the student pages accept it exactly as they accept an LMS launch, CSRF token included."""
+
+from __future__ import annotations
+
+import secrets
+from datetime import datetime, timedelta
+
+from app.auth import Role
+from app.courses.records import CourseSession
+from app.lti.sessions import SessionRecord, token_hash
+from app.storage.protocols import CourseStore
+
+COOKIE = "physcheck_course"
+SESSION_LIFETIME = timedelta(days=14)
+LINK_LIFETIME = timedelta(days=30)
+PREVIEW_LIFETIME = timedelta(hours=8)
+SIGN_IN_PATH = "/s/"  # followed by the token
+COURSE_PLATFORM = 0  # no LMS: what a course session's SessionRecord names as its platform
+
+
+def issue_link(courses: CourseStore, course_id: int, student: str, now: datetime) -> str:
+    """A new personal link's token (shown once; only its hash is kept); older unused links die."""
+    token = secrets.token_urlsafe(24)
+    courses.issue_sign_in(course_id, student, token_hash(token), now + LINK_LIFETIME)
+    return token
+
+
+def sign_in(courses: CourseStore, token: str, now: datetime) -> tuple[str, CourseSession] | None:
+    """Spend the link's token and open a session: (cookie value, session), or None if the link is
+    unknown, spent, replaced or expired."""
+    if not token or len(token) > 100:
+        return None
+    redeemed = courses.redeem_sign_in(token_hash(token), now)
+    if redeemed is None:
+        return None
+    course_id, student = redeemed
+    enrolment = courses.enrolment(course_id, student)
+    session = CourseSession(
+        course_id=course_id,
+        student=student,
+        name=enrolment.name if enrolment is not None else "",
+        csrf_token=secrets.token_urlsafe(32),
+        expires_at=now + SESSION_LIFETIME,
+    )
+    cookie = secrets.token_urlsafe(32)
+    courses.save_session(token_hash(cookie), session, now)
+    return cookie, session
+
+
+def open_preview(courses: CourseStore, key_id: str, name: str, now: datetime) -> str:
+    """ "View as a student" for an instructor key: a student's session under the instructor's preview
+    identity (`preview:<key id>`, filed apart from the class as the instructor's previews always are)."""
+    cookie = secrets.token_urlsafe(32)
+    session = CourseSession(
+        None, f"preview:{key_id}", name, secrets.token_urlsafe(32), now + PREVIEW_LIFETIME
+    )
+    courses.save_session(token_hash(cookie), session, now)
+    return cookie
+
+
+def find(courses: CourseStore, cookie: str, now: datetime) -> tuple[str, SessionRecord] | None:
+    """(id hash, the session as a launched student's) for a live course session cookie."""
+    if not cookie or len(cookie) > 100:
+        return None
+    id_hash = token_hash(cookie)
+    session = courses.get_session(id_hash)
+    if session is None or session.expires_at <= now:
+        return None
+    return id_hash, SessionRecord(
+        platform_id=COURSE_PLATFORM,
+        sub=session.student,
+        student=session.student,
+        role=Role.STUDENT,
+        name=session.name,
+        csrf_token=session.csrf_token,
+        expires_at=session.expires_at,
+    )
+
+
+JOIN_PATH = "/join/"
+_JOIN_ALPHABET = "ABCDEFGHJKLMNPQRSTUVWXYZ23456789"  # no 0/O or 1/I to misread
+
+
+def new_join_code() -> str:
+    return "".join(secrets.choice(_JOIN_ALPHABET) for _ in range(8))

@@ -1,0 +1,489 @@
+"""The instructor's course pages, scoped to the courses the visitor teaches (a key session or an LMS
+instructor's launch alike: `access.require_staff`).
+
+    GET|POST  /instructor/courses                        my courses; make one
+    GET       /instructor/courses/{c}                    roster, sign-in links, assignments
+    POST      /instructor/courses/{c}/roster             import a roster CSV (pasted or a file)
+    POST      /instructor/courses/{c}/links              new personal sign-in links (shown once)
+    GET|POST  /instructor/courses/{c}/assignments/new    the assignment builder
+    GET|POST  /instructor/assignments/{a}/edit           the same, for an assignment
+    GET       /instructor/courses/{c}/gradebook          students x assignments, a student's parts
+    POST      /instructor/courses/{c}/extensions         a student's own due date
+    POST      /instructor/problems/{id}/as-student       view the student's page in one's own session
+"""
+
+from __future__ import annotations
+
+import re
+from datetime import datetime
+from typing import Any
+from zoneinfo import ZoneInfo
+
+from fastapi import APIRouter, Request
+from fastapi.responses import RedirectResponse, Response
+from starlette.concurrency import run_in_threadpool
+from starlette.datastructures import UploadFile
+
+from app.courses import access, gradebook, service
+from app.courses import sessions as course_sessions
+from app.courses.policy import late_policy_text, shown
+from app.courses.records import (
+    AssignmentNotFound,
+    AssignmentRecord,
+    AssignmentSpec,
+    CourseNotFound,
+    CourseRecord,
+    LateKind,
+    LatePolicy,
+    SolutionRelease,
+)
+from app.courses.roster_csv import parse_roster
+from app.deps import ServicesDep
+from app.instructor import session as auth
+from app.instructor.router import PageError, Visitor, _page
+from app.services import Services
+
+router = APIRouter(prefix="/instructor", include_in_schema=False)
+MAX_ROSTER_BYTES = 1_000_000
+_PROBLEM_ID = re.compile(r"^[A-Za-z0-9][A-Za-z0-9._-]{0,99}$")
+_LOCAL = "%Y-%m-%dT%H:%M"  # what <input type="datetime-local"> sends and shows
+
+
+def _course(
+    services: Services, who: auth.Visitor, course_id: int, *, instructor: bool = False
+) -> CourseRecord:
+    try:
+        return access.require_staff(services.stores, who.principal, course_id, instructor=instructor)
+    except CourseNotFound:
+        raise PageError(404, "No such course", f"There is no course {course_id} of yours.") from None
+
+
+def _assignment(
+    services: Services, who: auth.Visitor, assignment_id: int
+) -> tuple[CourseRecord, AssignmentRecord]:
+    try:
+        record = services.stores.courses.get_assignment(assignment_id)
+    except AssignmentNotFound:
+        raise PageError(
+            404, "No such assignment", f"There is no assignment {assignment_id} of yours."
+        ) from None
+    return _course(services, who, record.course_id, instructor=True), record
+
+
+def _local(moment: datetime, timezone: str) -> str:
+    return moment.astimezone(ZoneInfo(timezone)).strftime(_LOCAL)
+
+
+def _parse_local(text: str, timezone: str) -> datetime | None:
+    try:
+        return datetime.strptime(text.strip(), _LOCAL).replace(tzinfo=ZoneInfo(timezone))
+    except ValueError:
+        return None
+
+
+# ---- my courses ------------------------------------------------------------------------------------
+
+
+@router.get("/courses")
+async def courses(request: Request, services: ServicesDep, who: Visitor) -> Response:
+    rows = await run_in_threadpool(access.taught_courses, services.stores, who.principal)
+    return await _page(request, services, who, "instructor/courses.html", {"title": "Courses", "rows": rows})
+
+
+@router.post("/courses")
+async def create_course(request: Request, services: ServicesDep, who: Visitor) -> Response:
+    await auth.require_csrf(request, services, who)
+    form = await request.form()
+    title = str(form.get("title") or "").strip()[:200]
+    timezone = str(form.get("timezone") or "UTC").strip()
+    try:
+        ZoneInfo(timezone)
+    except (ValueError, KeyError):
+        timezone = "UTC"
+    if not title:
+        raise PageError(422, "A course needs a title", "Give the course a title.")
+    member = who.principal.member
+    if member is None:
+        raise PageError(403, "Not an instructor", "This session cannot teach a course.")
+    course = await run_in_threadpool(
+        lambda: services.stores.courses.create_course(
+            title, owner=member, owner_name=who.principal.name, timezone=timezone
+        )
+    )
+    return RedirectResponse(f"/instructor/courses/{course.id}", status_code=303)
+
+
+# ---- one course: roster, links, assignments --------------------------------------------------------
+
+
+def _course_context(services: Services, course: CourseRecord) -> dict[str, Any]:
+    assignments = services.stores.courses.assignments(course.id)
+    return {
+        "course": course,
+        "roster": services.stores.courses.roster(course.id),
+        "staff": services.stores.courses.staff(course.id),
+        "assignments": [
+            {
+                "record": a,
+                "opens": shown(a.spec.opens_at, course.timezone),
+                "due": shown(a.spec.due_at, course.timezone),
+                "late": late_policy_text(a.spec.late),
+                "problems": len(a.problems),
+            }
+            for a in assignments
+        ],
+    }
+
+
+@router.get("/courses/{course_id}")
+async def course_page(course_id: int, request: Request, services: ServicesDep, who: Visitor) -> Response:
+    def load() -> dict[str, Any]:
+        return _course_context(services, _course(services, who, course_id))
+
+    values = await run_in_threadpool(load)
+    return await _page(
+        request, services, who, "instructor/course.html", {"title": values["course"].title, **values}
+    )
+
+
+@router.post("/courses/{course_id}/roster")
+async def import_roster(course_id: int, request: Request, services: ServicesDep, who: Visitor) -> Response:
+    await auth.require_csrf(request, services, who)
+    form = await request.form()
+    text = str(form.get("roster") or "")
+    upload = form.get("file")
+    if isinstance(upload, UploadFile) and upload.filename:
+        text = (await upload.read(MAX_ROSTER_BYTES + 1)).decode("utf-8", errors="replace")
+    rows, problems = parse_roster(text)
+
+    def save() -> dict[str, Any]:
+        course = _course(services, who, course_id, instructor=True)
+        values = _course_context(services, course)
+        if problems or not rows:
+            values["roster_problems"] = problems or []
+            values["roster_text"] = text
+            values["roster_empty"] = not problems
+            return values
+        done = services.stores.courses.import_roster(course_id, rows)
+        values = _course_context(services, course)
+        values["imported"] = done
+        return values
+
+    values = await run_in_threadpool(save)
+    status = 422 if values.get("roster_problems") or values.get("roster_empty") else 200
+    return await _page(
+        request,
+        services,
+        who,
+        "instructor/course.html",
+        {"title": values["course"].title, **values},
+        status=status,
+    )
+
+
+@router.post("/courses/{course_id}/links")
+async def sign_in_links(course_id: int, request: Request, services: ServicesDep, who: Visitor) -> Response:
+    """New personal links for everyone on the roster, or for one student: shown once, on this page."""
+    await auth.require_csrf(request, services, who)
+    form = await request.form()
+    only = str(form.get("student") or "")
+    now = request.app.state.lti.clock()
+    base = str(request.base_url).rstrip("/")
+
+    def issue() -> dict[str, Any]:
+        course = _course(services, who, course_id)
+        roster = services.stores.courses.roster(course_id)
+        chosen = [e for e in roster if not only or e.student == only]
+        links = [
+            {
+                "enrolment": e,
+                "url": base
+                + course_sessions.SIGN_IN_PATH
+                + course_sessions.issue_link(services.stores.courses, course_id, e.student, now),
+            }
+            for e in chosen
+        ]
+        return {
+            "course": course,
+            "links": links,
+            "expires": shown(now + course_sessions.LINK_LIFETIME, course.timezone),
+        }
+
+    values = await run_in_threadpool(issue)
+    return await _page(request, services, who, "instructor/links.html", {"title": "Sign-in links", **values})
+
+
+# ---- the assignment builder ---------------------------------------------------------------------
+
+
+def _builder_context(
+    services: Services,
+    who: auth.Visitor,
+    course: CourseRecord,
+    record: AssignmentRecord | None,
+    query: str,
+    chosen: list[str] | None = None,
+) -> dict[str, Any]:
+    colleagues = access.colleagues(services.stores, who.principal)
+    shared = services.stores.courses.shared_problems()
+    picked = list(record.problems) if chosen is None and record is not None else list(chosen or [])
+    bank = []
+    needle = query.casefold().strip()
+    for problem in services.catalog.list():
+        if not access.may_use_problem(problem, who.principal, colleagues, shared):
+            continue
+        doc = services.catalog.document(problem)
+        haystack = " ".join([doc.title, problem.id, *doc.topics]).casefold()
+        if needle and needle not in haystack and problem.id not in picked:
+            continue
+        bank.append({"id": problem.id, "title": doc.title, "topics": doc.topics, "parts": len(doc.parts)})
+    bank.sort(
+        key=lambda row: (
+            picked.index(row["id"]) if row["id"] in picked else len(picked),
+            str(row["title"]).casefold(),
+        )
+    )
+    spec = record.spec if record is not None else None
+    return {
+        "course": course,
+        "record": record,
+        "query": query,
+        "bank": bank,
+        "picked": picked,
+        "spec": spec,
+        "opens": _local(spec.opens_at, course.timezone) if spec else "",
+        "due": _local(spec.due_at, course.timezone) if spec else "",
+    }
+
+
+@router.get("/courses/{course_id}/assignments/new")
+async def new_assignment(
+    course_id: int, request: Request, services: ServicesDep, who: Visitor, q: str = ""
+) -> Response:
+    def load() -> dict[str, Any]:
+        course = _course(services, who, course_id, instructor=True)
+        return _builder_context(services, who, course, None, q[:100])
+
+    values = await run_in_threadpool(load)
+    return await _page(
+        request, services, who, "instructor/assignment.html", {"title": "New assignment", **values}
+    )
+
+
+@router.get("/assignments/{assignment_id}/edit")
+async def edit_assignment(
+    assignment_id: int, request: Request, services: ServicesDep, who: Visitor, q: str = ""
+) -> Response:
+    def load() -> dict[str, Any]:
+        course, record = _assignment(services, who, assignment_id)
+        return _builder_context(services, who, course, record, q[:100])
+
+    values = await run_in_threadpool(load)
+    return await _page(
+        request,
+        services,
+        who,
+        "instructor/assignment.html",
+        {"title": f"Edit {values['record'].title}", **values},
+    )
+
+
+def _read_builder(form: Any, course: CourseRecord) -> tuple[AssignmentSpec | None, list[str], list[str]]:
+    """(the spec or None, the problems picked in order, what is wrong) from the builder's form."""
+    errors = []
+    orders = []
+    for index, problem_id in enumerate(form.getlist("problem")):
+        raw = str(form.get(f"order-{problem_id}") or "")
+        orders.append((int(raw) if raw.isdigit() else 1000 + index, index, str(problem_id)))
+    picked = [problem_id for _, _, problem_id in sorted(orders)]
+    title = str(form.get("title") or "").strip()[:200]
+    opens = _parse_local(str(form.get("opens_at") or ""), course.timezone)
+    due = _parse_local(str(form.get("due_at") or ""), course.timezone)
+    if not title:
+        errors.append("Give the assignment a title.")
+    if not picked:
+        errors.append("Pick at least one problem.")
+    if opens is None or due is None:
+        errors.append("Set both the opening and the due date.")
+    elif due < opens:
+        errors.append("The due date is before the opening date.")
+    kind = (
+        LateKind(str(form.get("late") or "closed"))
+        if form.get("late") in ("closed", "penalty")
+        else LateKind.CLOSED
+    )
+    try:
+        per_day = float(str(form.get("per_day") or "0")) / 100
+        limit = float(str(form.get("limit") or "100")) / 100
+        late = LatePolicy(kind, per_day, limit)
+    except ValueError:
+        errors.append("The late penalty is a percentage from 0 to 100.")
+        late = LatePolicy()
+    attempts_text = str(form.get("max_attempts") or "").strip()
+    max_attempts = int(attempts_text) if attempts_text.isdigit() and int(attempts_text) > 0 else None
+    if attempts_text and max_attempts is None:
+        errors.append("Attempts per part is a whole number of at least 1, or empty for each problem's own.")
+    release = str(form.get("solutions") or "after_due")
+    solutions = (
+        SolutionRelease(release)
+        if release in {r.value for r in SolutionRelease}
+        else SolutionRelease.AFTER_DUE
+    )
+    if errors or opens is None or due is None:
+        return None, picked, errors
+    return AssignmentSpec(title, tuple(picked), opens, due, late, max_attempts, solutions), picked, errors
+
+
+async def _save_builder(
+    request: Request, services: Services, who: auth.Visitor, course_id: int | None, assignment_id: int | None
+) -> Response:
+    await auth.require_csrf(request, services, who)
+    form = await request.form()
+
+    def save() -> dict[str, Any] | int:
+        if assignment_id is not None:
+            course, record = _assignment(services, who, assignment_id)
+        else:
+            assert course_id is not None
+            course, record = _course(services, who, course_id, instructor=True), None
+        spec, picked, errors = _read_builder(form, course)
+        colleagues = access.colleagues(services.stores, who.principal)
+        shared = services.stores.courses.shared_problems()
+        for problem_id in picked:
+            try:
+                usable = access.may_use_problem(
+                    services.catalog.get(problem_id), who.principal, colleagues, shared
+                )
+            except LookupError:
+                usable = False
+            if not usable:
+                errors.append(f"There is no problem {problem_id!r} of yours.")
+        if spec is None or errors:
+            values = _builder_context(services, who, course, record, "", picked)
+            return {**values, "errors": errors, "form_title": str(form.get("title") or "")}
+        if record is None:
+            return services.stores.courses.create_assignment(course.id, spec).course_id
+        return services.stores.courses.update_assignment(record.id, spec).course_id
+
+    outcome = await run_in_threadpool(save)
+    if isinstance(outcome, int):
+        return RedirectResponse(f"/instructor/courses/{outcome}", status_code=303)
+    return await _page(
+        request, services, who, "instructor/assignment.html", {"title": "Assignment", **outcome}, status=422
+    )
+
+
+@router.post("/courses/{course_id}/assignments/new")
+async def create_assignment(
+    course_id: int, request: Request, services: ServicesDep, who: Visitor
+) -> Response:
+    return await _save_builder(request, services, who, course_id, None)
+
+
+@router.post("/assignments/{assignment_id}/edit")
+async def update_assignment(
+    assignment_id: int, request: Request, services: ServicesDep, who: Visitor
+) -> Response:
+    return await _save_builder(request, services, who, None, assignment_id)
+
+
+# ---- the gradebook ---------------------------------------------------------------------------------
+
+
+@router.get("/courses/{course_id}/gradebook")
+async def gradebook_page(
+    course_id: int, request: Request, services: ServicesDep, who: Visitor, student: str = ""
+) -> Response:
+    now = request.app.state.lti.clock()
+
+    def load() -> dict[str, Any]:
+        course = _course(services, who, course_id)
+        book = service.course_gradebook(services.stores, services.catalog, course, now)
+        return {"course": course, "book": book, "student": student, "shown": shown}
+
+    values = await run_in_threadpool(load)
+    return await _page(
+        request,
+        services,
+        who,
+        "instructor/gradebook.html",
+        {"title": f"Gradebook: {values['course'].title}", **values},
+    )
+
+
+@router.get("/courses/{course_id}/gradebook.csv")
+async def gradebook_csv(course_id: int, request: Request, services: ServicesDep, who: Visitor) -> Response:
+    now = request.app.state.lti.clock()
+
+    def load() -> str:
+        course = _course(services, who, course_id)
+        return gradebook.to_csv(service.course_gradebook(services.stores, services.catalog, course, now))
+
+    text = await run_in_threadpool(load)
+    return Response(
+        text,
+        media_type="text/csv; charset=utf-8",
+        headers={"Content-Disposition": f'attachment; filename="gradebook-course-{course_id}.csv"'},
+    )
+
+
+@router.post("/courses/{course_id}/extensions")
+async def extension(course_id: int, request: Request, services: ServicesDep, who: Visitor) -> Response:
+    await auth.require_csrf(request, services, who)
+    form = await request.form()
+    student = str(form.get("student") or "")
+    assignment_text = str(form.get("assignment") or "")
+
+    def save() -> None:
+        course = _course(services, who, course_id)
+        if services.stores.courses.enrolment(course_id, student) is None or not assignment_text.isdigit():
+            raise PageError(
+                422, "No such student or assignment", "Pick a student and an assignment of this course."
+            )
+        try:
+            record = services.stores.courses.get_assignment(int(assignment_text))
+        except AssignmentNotFound:
+            record = None
+        if record is None or record.course_id != course_id:
+            raise PageError(422, "No such assignment", "Pick an assignment of this course.")
+        due = _parse_local(str(form.get("due_at") or ""), course.timezone)
+        services.stores.courses.set_extension(record.id, student, due)
+        service.resend_total(
+            services.stores, services.catalog, record, student, request.app.state.lti.clock()
+        )
+
+    await run_in_threadpool(save)
+    return RedirectResponse(f"/instructor/courses/{course_id}/gradebook", status_code=303)
+
+
+# ---- view as a student -----------------------------------------------------------------------------
+
+
+@router.post("/problems/{problem_id}/as-student")
+async def view_as_student(problem_id: str, request: Request, services: ServicesDep, who: Visitor) -> Response:
+    """The student's page of a problem in the instructor's own session: a key's visitor gets a
+    student session under their preview identity (their tries filed apart, as always); an LMS
+    instructor's launch session already previews."""
+    await auth.require_csrf(request, services, who)
+    if not _PROBLEM_ID.match(problem_id):
+        raise PageError(404, "No such problem", f"There is no problem {problem_id!r}.")
+    response = RedirectResponse(f"/p/{problem_id}", status_code=303)
+    if who.principal.api_key:
+        now = request.app.state.lti.clock()
+        cookie = await run_in_threadpool(
+            course_sessions.open_preview,
+            services.stores.courses,
+            who.principal.key_id,
+            who.principal.name,
+            now,
+        )
+        response.set_cookie(
+            course_sessions.COOKIE,
+            cookie,
+            max_age=int(course_sessions.PREVIEW_LIFETIME.total_seconds()),
+            path="/",
+            httponly=True,
+            samesite="lax",
+            secure=request.url.scheme == "https",
+        )
+    return response

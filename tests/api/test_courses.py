@@ -1,0 +1,334 @@
+"""Courses over the API: rosters, personal sign-in links, assignments with due dates and late
+policies, extensions and the gradebook; and the access rules: no instructor reaches another course's
+students, no student a problem outside their assignments."""
+
+from __future__ import annotations
+
+import csv
+import io
+import re
+from datetime import UTC, datetime, timedelta
+
+import pytest
+from fastapi.testclient import TestClient
+
+from tests.api.conftest import key_headers
+
+ROSTER = "id,name,email\ns001,Ada Lovelace,ada@uni.example\ns002,Alan Turing,alan@uni.example\ns003,Emmy Noether,\n"
+RIGHT = ("skier-friction", "friction_coefficient", "tan(alpha)")
+WRONG = "sin(alpha)"
+
+
+def _iso(moment: datetime) -> str:
+    return moment.isoformat()
+
+
+def _course(client: TestClient, headers: dict[str, str], title: str = "Mechanics") -> int:
+    made = client.post("/v1/courses", json={"title": title, "timezone": "Europe/Paris"}, headers=headers)
+    assert made.status_code == 201, made.text
+    return int(made.json()["id"])
+
+
+def _roster(client: TestClient, headers: dict[str, str], course: int, text: str = ROSTER) -> dict:
+    response = client.post(
+        f"/v1/courses/{course}/roster", content=text, headers={**headers, "Content-Type": "text/csv"}
+    )
+    assert response.status_code == 200, response.text
+    return response.json()
+
+
+def _assignment(client, headers, course, *, problems=("skier-friction", "yo-yo"), **changes) -> dict:
+    now = datetime.now(UTC)
+    body = {
+        "title": "Homework 1",
+        "problems": list(problems),
+        "opens_at": _iso(now - timedelta(days=1)),
+        "due_at": _iso(now + timedelta(days=6)),
+    } | changes
+    response = client.post(f"/v1/courses/{course}/assignments", json=body, headers=headers)
+    assert response.status_code == 201, response.text
+    return response.json()
+
+
+def _links(client, headers, course) -> dict[str, str]:
+    response = client.post(f"/v1/courses/{course}/sign-in-links", json={}, headers=headers)
+    assert response.status_code == 200, response.text
+    return {link["student"]: link["url"] for link in response.json()}
+
+
+def _signed_in(client: TestClient, url: str) -> tuple[TestClient, dict[str, str]]:
+    """A new browser following a personal link: its client (with the cookie) and the CSRF header."""
+    browser = TestClient(client.app)
+    path = url.removeprefix("http://testserver")
+    assert browser.get(path).status_code == 200  # the page only offers a button: nothing spent
+    signed = browser.post(path, follow_redirects=False)
+    assert signed.status_code == 303 and signed.headers["location"] == "/courses"
+    cookie = signed.headers["set-cookie"]
+    assert "HttpOnly" in cookie and "SameSite=lax" in cookie
+    page = browser.get("/p/skier-friction")
+    token = re.search(r'name="csrf-token" content="([^"]+)"', page.text)
+    return browser, {"X-CSRF-Token": token.group(1) if token else ""}
+
+
+@pytest.fixture
+def teacher(client):
+    return key_headers(client, "instructor", "Prof A")
+
+
+@pytest.fixture
+def other_teacher(client):
+    return key_headers(client, "instructor", "Prof B")
+
+
+def test_reimporting_a_roster_updates_names_and_never_duplicates(client, teacher):
+    course = _course(client, teacher)
+    assert _roster(client, teacher, course) == {"added": 3, "updated": 0, "unchanged": 0}
+    again = _roster(
+        client, teacher, course, "s001,Ada King,ada@uni.example\ns004,Lise Meitner,lise@uni.example\n"
+    )
+    assert again == {"added": 1, "updated": 1, "unchanged": 0}
+    names = [s["name"] for s in client.get(f"/v1/courses/{course}/roster", headers=teacher).json()]
+    assert names == ["Ada King", "Alan Turing", "Emmy Noether", "Lise Meitner"]
+
+
+def test_a_roster_with_bad_lines_imports_nothing_and_names_each_line(client, teacher):
+    course = _course(client, teacher)
+    response = client.post(
+        f"/v1/courses/{course}/roster",
+        content="s001,Ada,ada@x\ns 2,Bob,\ns3,,\n",
+        headers={**teacher, "Content-Type": "text/csv"},
+    )
+    assert response.status_code == 422
+    assert [d["path"] for d in response.json()["error"]["details"]] == ["line 2", "line 3"]
+    assert client.get(f"/v1/courses/{course}/roster", headers=teacher).json() == []
+
+
+def test_a_personal_link_signs_in_once_and_the_session_works_without_a_key(client, teacher):
+    course = _course(client, teacher)
+    _roster(client, teacher, course)
+    _assignment(client, teacher, course)
+    links = _links(client, teacher, course)
+    url = links[f"course:{course}:s001"]
+    browser, csrf = _signed_in(client, url)
+    assert [c["id"] for c in browser.get("/v1/courses").json()] == [course]
+    assert browser.get("/courses").status_code == 200
+    # A second browser with the same link is refused, and the first stays signed in.
+    other = TestClient(client.app)
+    assert other.post(url.removeprefix("http://testserver"), follow_redirects=False).status_code == 400
+    assert other.get("/v1/courses").status_code == 401
+    problem, part, answer = RIGHT
+    filed = browser.post(
+        f"/v1/problems/{problem}/parts/{part}/submissions", json={"answer": answer}, headers=csrf
+    )
+    assert filed.status_code == 201, filed.text
+    # Without the page's CSRF token a state change is refused.
+    assert (
+        browser.post(f"/v1/problems/{problem}/parts/{part}/submissions", json={"answer": answer}).status_code
+        == 401
+    )
+
+
+def test_a_new_link_replaces_the_unused_one(client, teacher):
+    course = _course(client, teacher)
+    _roster(client, teacher, course)
+    first = _links(client, teacher, course)[f"course:{course}:s002"]
+    second = _links(client, teacher, course)[f"course:{course}:s002"]
+    browser = TestClient(client.app)
+    assert browser.post(first.removeprefix("http://testserver"), follow_redirects=False).status_code == 400
+    assert browser.post(second.removeprefix("http://testserver"), follow_redirects=False).status_code == 303
+
+
+def test_a_student_sees_only_the_problems_of_their_open_assignments(client, teacher):
+    course = _course(client, teacher)
+    _roster(client, teacher, course)
+    _assignment(client, teacher, course, problems=["skier-friction"])
+    later = datetime.now(UTC) + timedelta(days=3)
+    _assignment(
+        client,
+        teacher,
+        course,
+        problems=["yo-yo"],
+        opens_at=_iso(later),
+        due_at=_iso(later + timedelta(days=7)),
+    )
+    browser, csrf = _signed_in(client, _links(client, teacher, course)[f"course:{course}:s001"])
+    assert [p["id"] for p in browser.get("/v1/problems").json()] == ["skier-friction"]
+    for hidden in ("yo-yo", "moving-wedge"):
+        assert browser.get(f"/v1/problems/{hidden}").status_code == 404
+        assert browser.get(f"/p/{hidden}").status_code == 404
+        assert browser.get(f"/p/{hidden}/solution").status_code == 404
+        submitted = browser.post(
+            f"/v1/problems/{hidden}/parts/acceleration/submissions", json={"answer": "g"}, headers=csrf
+        )
+        assert submitted.status_code == 404
+        previewed = browser.post(
+            f"/v1/problems/{hidden}/parts/acceleration/preview", json={"answer": "g"}, headers=csrf
+        )
+        assert previewed.status_code == 404
+    assert browser.get("/p/skier-friction").status_code == 200
+    listed = browser.get("/problems").text
+    assert "skier-friction" in listed and "/p/yo-yo" not in listed
+
+
+def test_no_instructor_reaches_another_courses_students(client, teacher, other_teacher):
+    course = _course(client, teacher)
+    _roster(client, teacher, course)
+    _assignment(client, teacher, course)
+    student = f"course:{course}:s001"
+    for path in (
+        f"/v1/courses/{course}",
+        f"/v1/courses/{course}/roster",
+        f"/v1/courses/{course}/assignments",
+        f"/v1/courses/{course}/gradebook",
+        f"/v1/courses/{course}/gradebook.csv",
+        f"/v1/problems/yo-yo?student={student}",
+        f"/v1/submissions?student={student}",
+    ):
+        assert client.get(path, headers=other_teacher).status_code == 404, path
+    assert (
+        client.post(f"/v1/courses/{course}/sign-in-links", json={}, headers=other_teacher).status_code == 404
+    )
+    on_behalf = {"answer": "g", "student": student}
+    assert (
+        client.post(
+            "/v1/problems/yo-yo/parts/acceleration/submissions", json=on_behalf, headers=other_teacher
+        ).status_code
+        == 404
+    )
+    assert client.get("/v1/courses", headers=other_teacher).json() == []
+    # The course's own instructor files for the student, and the other never sees it in a listing.
+    assert (
+        client.post(
+            "/v1/problems/skier-friction/parts/friction_coefficient/submissions",
+            json={"answer": WRONG, "student": student},
+            headers=teacher,
+        ).status_code
+        == 201
+    )
+    assert [i["student"] for i in client.get("/v1/submissions", headers=teacher).json()["items"]] == [student]
+    assert client.get("/v1/submissions", headers=other_teacher).json()["items"] == []
+
+
+def test_a_ta_reads_the_gradebook_but_does_not_change_the_course(client, teacher):
+    course = _course(client, teacher)
+    ta = key_headers(client, "instructor", "Tess")
+    ta_id = client.app.state.services.stores.keys.list()[-1].id
+    assert (
+        client.put(
+            f"/v1/courses/{course}/staff", json={"member": f"key:{ta_id}", "role": "ta"}, headers=teacher
+        ).status_code
+        == 200
+    )
+    assert client.get(f"/v1/courses/{course}/gradebook", headers=ta).status_code == 200
+    assert (
+        client.post(
+            f"/v1/courses/{course}/roster", content=ROSTER, headers={**ta, "Content-Type": "text/csv"}
+        ).status_code
+        == 404
+    )
+    assert client.delete(f"/v1/courses/{course}/staff/key:{ta_id}", headers=teacher).status_code == 204
+    assert client.get(f"/v1/courses/{course}/gradebook", headers=ta).status_code == 404
+
+
+def test_late_work_loses_its_penalty_an_extension_lifts_it_and_the_csv_agrees(client, teacher):
+    course = _course(client, teacher)
+    _roster(client, teacher, course)
+    now = datetime.now(UTC)
+    homework = _assignment(
+        client,
+        teacher,
+        course,
+        problems=["skier-friction"],
+        opens_at=_iso(now - timedelta(days=5)),
+        due_at=_iso(now - timedelta(hours=30)),  # two days started late
+        late={"kind": "penalty", "per_day": 0.1, "limit": 0.5},
+    )
+    links = _links(client, teacher, course)
+    problem, part, answer = RIGHT
+    for roster_id in ("s001", "s002"):
+        browser, csrf = _signed_in(client, links[f"course:{course}:{roster_id}"])
+        path = f"/v1/problems/{problem}/parts/{part}/submissions"
+        assert browser.post(path, json={"answer": answer}, headers=csrf).status_code == 201
+    book = client.get(f"/v1/courses/{course}/gradebook", headers=teacher).json()
+    cells = {row["student"]["roster_id"]: row["assignments"][0] for row in book["students"]}
+    assert cells["s001"]["score"] == pytest.approx(0.8) and cells["s001"]["late"]
+    assert cells["s003"]["score"] == 0 and cells["s003"]["status"] == "late"
+    extended = client.put(
+        f"/v1/assignments/{homework['id']}/extensions/course:{course}:s002",
+        json={"due_at": _iso(now + timedelta(days=1))},
+        headers=teacher,
+    )
+    assert extended.status_code == 200
+    book = client.get(f"/v1/courses/{course}/gradebook", headers=teacher).json()
+    cells = {row["student"]["roster_id"]: row["assignments"][0] for row in book["students"]}
+    assert cells["s002"]["score"] == 1.0 and not cells["s002"]["late"] and cells["s002"]["extended"]
+    assert cells["s001"]["score"] == pytest.approx(0.8)
+    exported = client.get(f"/v1/courses/{course}/gradebook.csv", headers=teacher)
+    assert exported.headers["content-type"].startswith("text/csv")
+    rows = {r[0]: r for r in csv.reader(io.StringIO(exported.text))}
+    assert rows["Student ID"][3] == "Homework 1 (out of 4)" or rows["Student ID"][3].startswith(
+        "Homework 1 (out of"
+    )
+    assert float(rows["s001"][3]) == pytest.approx(0.8) and "late penalty" in rows["s001"][-1]
+    assert float(rows["s002"][3]) == 1.0 and "extended" in rows["s002"][-1]
+    assert float(rows["s003"][3]) == 0.0
+
+
+def test_a_closed_assignment_refuses_answers_after_its_due_date(client, teacher):
+    course = _course(client, teacher)
+    _roster(client, teacher, course)
+    now = datetime.now(UTC)
+    _assignment(
+        client,
+        teacher,
+        course,
+        problems=["skier-friction"],
+        opens_at=_iso(now - timedelta(days=5)),
+        due_at=_iso(now - timedelta(minutes=1)),
+    )
+    browser, csrf = _signed_in(client, _links(client, teacher, course)[f"course:{course}:s001"])
+    problem, part, answer = RIGHT
+    refused = browser.post(
+        f"/v1/problems/{problem}/parts/{part}/submissions", json={"answer": answer}, headers=csrf
+    )
+    assert refused.status_code == 409 and "closed" in refused.json()["error"]["message"]
+    standing = browser.get(f"/v1/courses/{course}/assignments").json()
+    assert standing[0]["status"] == "closed"
+
+
+def test_an_assignments_attempts_per_part_override_the_problems(client, teacher):
+    course = _course(client, teacher)
+    _roster(client, teacher, course)
+    _assignment(client, teacher, course, problems=["skier-friction"], max_attempts=1)
+    browser, csrf = _signed_in(client, _links(client, teacher, course)[f"course:{course}:s001"])
+    problem, part, _ = RIGHT
+    path = f"/v1/problems/{problem}/parts/{part}/submissions"
+    assert browser.post(path, json={"answer": WRONG}, headers=csrf).status_code == 201
+    assert browser.post(path, json={"answer": WRONG}, headers=csrf).status_code == 409
+
+
+def test_an_instructor_assigns_only_problems_that_are_theirs_to_use(client, teacher, other_teacher):
+    course = _course(client, teacher)
+    response = client.post(
+        f"/v1/courses/{course}/assignments",
+        json={
+            "title": "HW",
+            "problems": ["no-such-problem", "yo-yo"],
+            "opens_at": "2026-01-01T00:00:00+01:00",
+            "due_at": "2026-01-08T00:00:00+01:00",
+        },
+        headers=teacher,
+    )
+    assert response.status_code == 422
+    assert [d["path"] for d in response.json()["error"]["details"]] == ["problems.0"]
+    naive = client.post(
+        f"/v1/courses/{course}/assignments",
+        json={
+            "title": "HW",
+            "problems": ["yo-yo"],
+            "opens_at": "2026-01-01T00:00:00",
+            "due_at": "2026-01-08T00:00:00",
+        },
+        headers=teacher,
+    )
+    assert naive.status_code == 422  # a date without its zone is ambiguous

@@ -1,0 +1,170 @@
+"""Late penalties, statuses and the gradebook, computed from submissions as they were filed."""
+
+from __future__ import annotations
+
+import csv
+import io
+import uuid
+from datetime import UTC, datetime, timedelta
+
+import pytest
+
+from app.courses import gradebook
+from app.courses.gradebook import PartSpec
+from app.courses.policy import Status, days_late, late_factor, shown, solutions_released
+from app.courses.records import (
+    AssignmentRecord,
+    AssignmentSpec,
+    EnrolmentRecord,
+    LateKind,
+    LatePolicy,
+    SolutionRelease,
+)
+from app.db.records import SubmissionRecord
+from physics.verdict import Outcome, Reason
+
+DUE = datetime(2026, 3, 2, 23, 59, tzinfo=UTC)
+PENALTY = LatePolicy(LateKind.PENALTY, 0.1, 0.3)
+PARTS = [PartSpec("yo-yo", "acceleration", None), PartSpec("yo-yo", "tension", 2)]
+
+
+def _assignment(late: LatePolicy = PENALTY, **changes) -> AssignmentRecord:
+    spec = AssignmentSpec(
+        **{
+            "title": "HW1",
+            "problems": ("yo-yo",),
+            "opens_at": DUE - timedelta(days=7),
+            "due_at": DUE,
+            "late": late,
+            "solutions": SolutionRelease.AFTER_DUE,
+        }
+        | changes
+    )
+    return AssignmentRecord(1, 1, spec, DUE - timedelta(days=8))
+
+
+def _sub(part: str, outcome: Outcome, at: datetime, student: str = "s1") -> SubmissionRecord:
+    return SubmissionRecord(
+        id=uuid.uuid4(),
+        problem_id="yo-yo",
+        problem_version=1,
+        part_id=part,
+        student=student,
+        answer="x",
+        verdict=outcome,
+        score=1.0 if outcome is Outcome.CORRECT else 0.0,
+        reason=Reason.EQUIVALENT if outcome is Outcome.CORRECT else Reason.WRONG_VALUE,
+        feedback="",
+        read_as=None,
+        attempt=None if outcome is Outcome.INVALID else 1,
+        created_at=at,
+    )
+
+
+@pytest.mark.parametrize(
+    ("after_due", "days", "penalty_factor", "closed_factor"),
+    [
+        (timedelta(0), 0, 1.0, 1.0),
+        (timedelta(seconds=-1), 0, 1.0, 1.0),
+        (timedelta(minutes=1), 1, 0.9, None),
+        (timedelta(days=1), 1, 0.9, None),
+        (timedelta(days=1, seconds=1), 2, 0.8, None),
+        (timedelta(days=10), 10, 0.7, None),  # the limit: never more than 30 % off
+    ],
+)
+def test_a_late_day_is_any_part_of_a_day_and_the_penalty_stops_at_its_limit(
+    after_due, days, penalty_factor, closed_factor
+):
+    assert days_late(DUE + after_due, DUE) == days
+    assert late_factor(PENALTY, DUE + after_due, DUE) == pytest.approx(penalty_factor)
+    assert late_factor(LatePolicy(), DUE + after_due, DUE) == closed_factor
+
+
+def test_a_late_right_answer_counts_with_its_penalty_and_is_marked():
+    subs = [_sub("acceleration", Outcome.CORRECT, DUE + timedelta(hours=30))]
+    cell = gradebook.assignment_cell(_assignment(), PARTS, subs, "s1", None, DUE + timedelta(days=3))
+    assert cell.score == pytest.approx(0.8) and cell.maximum == 2
+    assert cell.late and cell.parts[0].late
+    assert cell.status is Status.LATE
+
+
+def test_an_on_time_right_answer_beats_a_later_penalised_one():
+    subs = [
+        _sub("acceleration", Outcome.CORRECT, DUE - timedelta(hours=1)),
+        _sub("acceleration", Outcome.CORRECT, DUE + timedelta(hours=1)),
+    ]
+    cell = gradebook.assignment_cell(_assignment(), PARTS, subs, "s1", None, DUE)
+    assert cell.score == 1.0 and not cell.late
+
+
+def test_an_extension_lifts_the_penalty_for_that_student_only():
+    late = DUE + timedelta(hours=30)
+    subs = [_sub("acceleration", Outcome.CORRECT, late)]
+    extended = gradebook.assignment_cell(_assignment(), PARTS, subs, "s1", DUE + timedelta(days=2), late)
+    assert extended.score == 1.0 and not extended.late and extended.extended
+    assert extended.status is Status.IN_PROGRESS
+
+
+def test_under_a_closed_policy_late_work_does_not_count():
+    subs = [_sub("acceleration", Outcome.CORRECT, DUE + timedelta(minutes=5))]
+    cell = gradebook.assignment_cell(
+        _assignment(LatePolicy()), PARTS, subs, "s1", None, DUE + timedelta(days=1)
+    )
+    assert cell.score == 0.0 and cell.status is Status.CLOSED
+
+
+@pytest.mark.parametrize(
+    ("subs", "now", "expected"),
+    [
+        ([], DUE - timedelta(days=8), Status.NOT_OPEN),
+        ([], DUE - timedelta(days=1), Status.NOT_STARTED),
+        ([("acceleration", Outcome.INVALID)], DUE - timedelta(days=1), Status.IN_PROGRESS),
+        ([("acceleration", Outcome.CORRECT)], DUE - timedelta(days=1), Status.IN_PROGRESS),
+        (
+            [
+                ("acceleration", Outcome.CORRECT),
+                ("tension", Outcome.INCORRECT),
+                ("tension", Outcome.INCORRECT),
+            ],
+            DUE - timedelta(days=1),
+            Status.DONE,  # tension is out of its 2 attempts
+        ),
+        ([], DUE + timedelta(days=1), Status.LATE),
+    ],
+)
+def test_status_of_a_student_on_an_assignment(subs, now, expected):
+    filed = [_sub(part, outcome, DUE - timedelta(days=2)) for part, outcome in subs]
+    assert gradebook.assignment_cell(_assignment(), PARTS, filed, "s1", None, now).status is expected
+
+
+def test_the_csv_has_a_row_per_student_numbers_for_scores_and_inert_text():
+    students = [
+        EnrolmentRecord(1, "course:1:s1", "s1", "Ada", "ada@x", DUE),
+        EnrolmentRecord(1, "course:1:s2", "s2", "=HYPERLINK(1)", "", DUE),
+    ]
+    subs = {"course:1:s1": [_sub("acceleration", Outcome.CORRECT, DUE + timedelta(hours=2), "course:1:s1")]}
+    book = gradebook.build(students, [_assignment()], {1: PARTS}, subs, {}, DUE + timedelta(days=1))
+    rows = list(csv.reader(io.StringIO(gradebook.to_csv(book))))
+    assert rows[0] == ["Student ID", "Name", "Email", "HW1 (out of 2)", "Total (out of 2)", "Notes"]
+    assert rows[1] == ["s1", "Ada", "ada@x", "0.9", "0.9", "HW1: late penalty applied"]
+    assert rows[2][1] == "'=HYPERLINK(1)" and rows[2][3] == "0.0"
+
+
+@pytest.mark.parametrize(
+    ("release", "now", "done", "released"),
+    [
+        (SolutionRelease.NEVER, DUE + timedelta(days=30), True, False),
+        (SolutionRelease.AFTER_DUE, DUE - timedelta(minutes=1), True, False),
+        (SolutionRelease.AFTER_DUE, DUE + timedelta(minutes=1), False, True),
+        (SolutionRelease.AFTER_LAST_ATTEMPT, DUE - timedelta(days=1), False, False),
+        (SolutionRelease.AFTER_LAST_ATTEMPT, DUE - timedelta(days=1), True, True),
+    ],
+)
+def test_solutions_open_by_the_assignments_release_policy(release, now, done, released):
+    assignment = _assignment(solutions=release)
+    assert solutions_released(assignment, DUE, now, all_parts_done=done)[0] is released
+
+
+def test_dates_are_shown_in_the_courses_zone():
+    assert shown(DUE, "America/New_York") == "Mon 02 Mar 2026, 18:59 EST"
+    assert shown(DUE, "Not/AZone").endswith("UTC")

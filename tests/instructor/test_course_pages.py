@@ -1,0 +1,135 @@
+"""The instructor's course pages: make a course, import a roster, make sign-in links, build an
+assignment, read the gradebook; and another instructor sees none of it."""
+
+from __future__ import annotations
+
+import re
+
+from fastapi.testclient import TestClient
+
+from app.storage import Stores
+from tests.instructor.conftest import csrf_of, new_key, sign_in
+
+ROSTER = "id,name,email\ns001,Ada Lovelace,ada@uni.example\ns002,Alan Turing,alan@uni.example\n"
+
+
+def _make_course(client: TestClient) -> int:
+    form = client.get("/instructor/courses")
+    assert form.status_code == 200
+    made = client.post(
+        "/instructor/courses",
+        data={"csrf": csrf_of(form.text), "title": "Mechanics", "timezone": "Europe/Paris"},
+    )
+    assert made.status_code == 303
+    return int(made.headers["location"].rsplit("/", 1)[1])
+
+
+def test_a_course_is_made_its_roster_imported_twice_without_duplicates(signed_in: TestClient, stores: Stores):
+    course = _make_course(signed_in)
+    page = signed_in.get(f"/instructor/courses/{course}")
+    for _ in range(2):
+        done = signed_in.post(
+            f"/instructor/courses/{course}/roster", data={"csrf": csrf_of(page.text), "roster": ROSTER}
+        )
+        assert done.status_code == 200
+    assert "0 added, 0 updated, 2 unchanged" in done.text
+    assert [e.name for e in stores.courses.roster(course)] == ["Ada Lovelace", "Alan Turing"]
+    bad = signed_in.post(
+        f"/instructor/courses/{course}/roster", data={"csrf": csrf_of(page.text), "roster": "x y,,\n"}
+    )
+    assert bad.status_code == 422 and "Line 1" in bad.text
+
+
+def test_sign_in_links_are_shown_once_and_sign_a_student_in(signed_in: TestClient, stores: Stores):
+    course = _make_course(signed_in)
+    page = signed_in.get(f"/instructor/courses/{course}")
+    signed_in.post(
+        f"/instructor/courses/{course}/roster", data={"csrf": csrf_of(page.text), "roster": ROSTER}
+    )
+    links = signed_in.post(f"/instructor/courses/{course}/links", data={"csrf": csrf_of(page.text)})
+    urls = re.findall(r'<code class="sign-in-link">http://testserver(/s/[^<]+)</code>', links.text)
+    assert len(urls) == 2
+    student = TestClient(signed_in.app, follow_redirects=False)
+    assert student.post(urls[0]).status_code == 303
+    assert "Your courses" in student.get("/courses").text
+
+
+def test_the_assignment_builder_saves_problems_in_the_chosen_order_and_dates_in_the_course_zone(
+    signed_in: TestClient, stores: Stores
+):
+    course = _make_course(signed_in)
+    form = signed_in.get(f"/instructor/courses/{course}/assignments/new", params={"q": "yo"})
+    assert form.status_code == 200 and "yo-yo" in form.text
+    saved = signed_in.post(
+        f"/instructor/courses/{course}/assignments/new",
+        data={
+            "csrf": csrf_of(form.text),
+            "problem": ["yo-yo"],
+            "order-yo-yo": "1",
+            "title": "Homework 1",
+            "opens_at": "2026-03-01T09:00",
+            "due_at": "2026-03-08T23:59",
+            "late": "penalty",
+            "per_day": "10",
+            "limit": "50",
+            "max_attempts": "3",
+            "solutions": "after_due",
+        },
+    )
+    assert saved.status_code == 303, saved.text
+    [made] = stores.courses.assignments(course)
+    assert made.problems == ("yo-yo",) and made.spec.max_attempts == 3
+    assert made.spec.due_at.isoformat() == "2026-03-08T22:59:00+00:00"  # 23:59 in Paris (CET)
+    assert made.spec.late.per_day == 0.1
+    edit = signed_in.get(f"/instructor/assignments/{made.id}/edit")
+    assert 'value="2026-03-08T23:59"' in edit.text
+    refused = signed_in.post(
+        f"/instructor/courses/{course}/assignments/new",
+        data={"csrf": csrf_of(form.text), "title": "", "opens_at": "", "due_at": ""},
+    )
+    assert refused.status_code == 422 and "Pick at least one problem" in refused.text
+
+
+def test_the_gradebook_page_links_its_csv_and_another_instructor_sees_nothing(
+    signed_in: TestClient, stores: Stores, client: TestClient
+):
+    course = _make_course(signed_in)
+    page = signed_in.get(f"/instructor/courses/{course}")
+    signed_in.post(
+        f"/instructor/courses/{course}/roster", data={"csrf": csrf_of(page.text), "roster": ROSTER}
+    )
+    book = signed_in.get(f"/instructor/courses/{course}/gradebook")
+    assert book.status_code == 200 and f"/instructor/courses/{course}/gradebook.csv" in book.text
+    assert "Ada Lovelace" in book.text
+    exported = signed_in.get(f"/instructor/courses/{course}/gradebook.csv")
+    assert exported.headers["content-type"].startswith("text/csv") and "Alan Turing" in exported.text
+    other = TestClient(signed_in.app, follow_redirects=False)
+    assert sign_in(other, new_key(stores, "instructor", "Prof B")).status_code == 303  # type: ignore[attr-defined]
+    for path in ("", "/gradebook", "/gradebook.csv", "/assignments/new"):
+        response = other.get(f"/instructor/courses/{course}{path}")
+        assert response.status_code == 404, path
+        assert "Ada Lovelace" not in response.text
+    assert "Mechanics" not in other.get("/instructor/courses").text
+
+
+def test_view_as_a_student_opens_the_student_page_in_the_instructors_session(
+    signed_in: TestClient, stores: Stores
+):
+    problem = signed_in.get("/instructor/problems/yo-yo")
+    assert "View as a student" in problem.text
+    opened = signed_in.post("/instructor/problems/yo-yo/as-student", data={"csrf": csrf_of(problem.text)})
+    assert opened.status_code == 303 and opened.headers["location"] == "/p/yo-yo"
+    page = signed_in.get("/p/yo-yo")
+    assert page.status_code == 200 and 'data-mode="session"' in page.text  # no key asked for
+    token = re.search(r'name="csrf-token" content="([^"]+)"', page.text)
+    assert token is not None
+    filed = signed_in.post(
+        "/v1/problems/yo-yo/parts/acceleration/submissions",
+        json={"answer": "g"},
+        headers={"X-CSRF-Token": token.group(1)},
+    )
+    assert filed.status_code == 201
+    key_id = stores.keys.list()[0].id
+    assert [s.student for s in stores.submissions.page().items] == [f"preview:{key_id}"]  # filed apart
+    forged = signed_in.post("/instructor/problems/yo-yo/as-student", data={"csrf": "nope"})
+    assert forged.status_code == 403
