@@ -11,7 +11,7 @@ from __future__ import annotations
 from datetime import datetime
 from typing import Annotated
 
-from fastapi import APIRouter, Body, Request
+from fastapi import APIRouter, Body, Path, Request
 from fastapi.responses import Response
 from starlette.concurrency import run_in_threadpool
 
@@ -35,6 +35,7 @@ from app.db.errors import ProblemNotFound
 from app.deps import CurrentPrincipal, Instructor, ServicesDep
 from app.errors import AppError, Conflict, NotFound
 from app.openapi import AUTHENTICATED, errors
+from app.schemas import examples
 from app.schemas.courses import (
     AssignmentIn,
     AssignmentOut,
@@ -59,6 +60,10 @@ from app.schemas.courses import (
 from app.services import Services
 
 router = APIRouter(tags=["courses"], responses=AUTHENTICATED)
+CourseIdPath = Annotated[int, Path(openapi_examples=examples.COURSE_ID)]
+AssignmentIdPath = Annotated[int, Path(openapi_examples=examples.ASSIGNMENT_ID)]
+StudentPath = Annotated[str, Path(openapi_examples=examples.ROSTERED_STUDENT)]
+SharedProblemPath = Annotated[str, Path(openapi_examples=examples.UPLOADED_PROBLEM_ID)]
 CSV_MEDIA = "text/csv"
 
 
@@ -110,7 +115,7 @@ def student_out(enrolment: EnrolmentRecord) -> StudentOut:
 
 
 def _staff(
-    services: Services, principal: Principal, course_id: int, *, instructor: bool = False
+    services: Services, principal: Principal, course_id: CourseIdPath, *, instructor: bool = False
 ) -> CourseRecord:
     return access.require_staff(services.stores, principal, course_id, instructor=instructor)
 
@@ -119,7 +124,11 @@ def _staff(
 
 
 @router.post("/v1/courses", status_code=201, response_model=CourseOut, responses=errors(403, 422))
-async def create_course(body: CourseIn, services: ServicesDep, principal: Instructor) -> CourseOut:
+async def create_course(
+    body: Annotated[CourseIn, Body(openapi_examples=examples.COURSE)],
+    services: ServicesDep,
+    principal: Instructor,
+) -> CourseOut:
     """A new course, taught by the caller."""
     member = principal.member
     assert member is not None  # every instructor has one
@@ -148,7 +157,9 @@ async def list_courses(services: ServicesDep, principal: CurrentPrincipal) -> li
 
 
 @router.get("/v1/courses/{course_id}", response_model=CourseOut, responses=errors(404, 422))
-async def get_course(course_id: int, services: ServicesDep, principal: CurrentPrincipal) -> CourseOut:
+async def get_course(
+    course_id: CourseIdPath, services: ServicesDep, principal: CurrentPrincipal
+) -> CourseOut:
     def load() -> CourseOut:
         if principal.student is not None:
             if services.stores.courses.enrolment(course_id, principal.student) is None:
@@ -163,7 +174,7 @@ async def get_course(course_id: int, services: ServicesDep, principal: CurrentPr
 
 
 @router.get("/v1/courses/{course_id}/staff", response_model=list[StaffOut], responses=errors(403, 404, 422))
-async def list_staff(course_id: int, services: ServicesDep, principal: Instructor) -> list[StaffOut]:
+async def list_staff(course_id: CourseIdPath, services: ServicesDep, principal: Instructor) -> list[StaffOut]:
     def load() -> list[StaffOut]:
         _staff(services, principal, course_id)
         return [
@@ -175,7 +186,12 @@ async def list_staff(course_id: int, services: ServicesDep, principal: Instructo
 
 
 @router.put("/v1/courses/{course_id}/staff", response_model=StaffOut, responses=errors(403, 404, 422))
-async def add_staff(course_id: int, body: StaffIn, services: ServicesDep, principal: Instructor) -> StaffOut:
+async def add_staff(
+    course_id: CourseIdPath,
+    body: Annotated[StaffIn, Body(openapi_examples=examples.STAFF)],
+    services: ServicesDep,
+    principal: Instructor,
+) -> StaffOut:
     """Add a co-instructor or TA (or change their role) by their key id or LMS identity."""
 
     def save() -> StaffOut:
@@ -189,7 +205,9 @@ async def add_staff(course_id: int, body: StaffIn, services: ServicesDep, princi
 @router.delete(
     "/v1/courses/{course_id}/staff/{member}", status_code=204, responses=errors(403, 404, 409, 422)
 )
-async def remove_staff(course_id: int, member: str, services: ServicesDep, principal: Instructor) -> Response:
+async def remove_staff(
+    course_id: CourseIdPath, member: str, services: ServicesDep, principal: Instructor
+) -> Response:
     def remove() -> None:
         _staff(services, principal, course_id, instructor=True)
         staff = services.stores.courses.staff(course_id)
@@ -208,7 +226,7 @@ async def remove_staff(course_id: int, member: str, services: ServicesDep, princ
 @router.get(
     "/v1/courses/{course_id}/roster", response_model=list[StudentOut], responses=errors(403, 404, 422)
 )
-async def roster(course_id: int, services: ServicesDep, principal: Instructor) -> list[StudentOut]:
+async def roster(course_id: CourseIdPath, services: ServicesDep, principal: Instructor) -> list[StudentOut]:
     def load() -> list[StudentOut]:
         _staff(services, principal, course_id)
         return [student_out(e) for e in services.stores.courses.roster(course_id)]
@@ -226,14 +244,14 @@ async def roster(course_id: int, services: ServicesDep, principal: Instructor) -
             "content": {
                 CSV_MEDIA: {
                     "schema": {"type": "string"},
-                    "example": "id,name,email\ns001,Ada Lovelace,ada@uni.example\n",
+                    "examples": {"roster": {"summary": "Two students", "value": examples.ROSTER_CSV}},
                 }
             },
         }
     },
 )
 async def import_roster(
-    course_id: int, request: Request, services: ServicesDep, principal: Instructor
+    course_id: CourseIdPath, request: Request, services: ServicesDep, principal: Instructor
 ) -> RosterImportOut:
     """A roster CSV (`id,name,email`, header optional): new students are added, known ids updated,
     never duplicated; nothing is imported if any line is wrong (422 lists every one)."""
@@ -261,9 +279,10 @@ async def import_roster(
     "/v1/courses/{course_id}/sign-in-links",
     response_model=list[SignInLinkOut],
     responses=errors(403, 404, 422),
+    openapi_extra=examples.json_body(examples.SIGN_IN_LINKS),
 )
 async def sign_in_links(
-    course_id: int,
+    course_id: CourseIdPath,
     request: Request,
     services: ServicesDep,
     principal: Instructor,
@@ -297,9 +316,14 @@ async def sign_in_links(
     return await run_in_threadpool(issue)
 
 
-@router.post("/v1/courses/{course_id}/join-code", response_model=JoinCodeOut, responses=errors(403, 404, 422))
+@router.post(
+    "/v1/courses/{course_id}/join-code",
+    response_model=JoinCodeOut,
+    responses=errors(403, 404, 422),
+    openapi_extra=examples.json_body(examples.JOIN_CODE),
+)
 async def new_join_code(
-    course_id: int,
+    course_id: CourseIdPath,
     request: Request,
     services: ServicesDep,
     principal: Instructor,
@@ -361,7 +385,10 @@ def _points(services: Services, record: AssignmentRecord) -> int:
     responses=errors(403, 404, 422),
 )
 async def create_assignment(
-    course_id: int, body: AssignmentIn, services: ServicesDep, principal: Instructor
+    course_id: CourseIdPath,
+    body: Annotated[AssignmentIn, Body(openapi_examples=examples.ASSIGNMENT)],
+    services: ServicesDep,
+    principal: Instructor,
 ) -> AssignmentOut:
     def save() -> AssignmentOut:
         _staff(services, principal, course_id, instructor=True)
@@ -378,7 +405,7 @@ async def create_assignment(
     responses=errors(404, 422),
 )
 async def list_assignments(
-    course_id: int, request: Request, services: ServicesDep, principal: CurrentPrincipal
+    course_id: CourseIdPath, request: Request, services: ServicesDep, principal: CurrentPrincipal
 ) -> list[AssignmentOut] | list[StudentStanding]:
     """Staff get every assignment; an enrolled student their standing on each (status, score, their
     own due date)."""
@@ -419,7 +446,7 @@ def standing(record: AssignmentRecord, cell: AssignmentCell) -> StudentStanding:
 
 
 def _assignment_as_staff(
-    services: Services, principal: Principal, assignment_id: int, *, instructor: bool = False
+    services: Services, principal: Principal, assignment_id: AssignmentIdPath, *, instructor: bool = False
 ) -> AssignmentRecord:
     record = services.stores.courses.get_assignment(assignment_id)
     _staff(services, principal, record.course_id, instructor=instructor)
@@ -427,7 +454,9 @@ def _assignment_as_staff(
 
 
 @router.get("/v1/assignments/{assignment_id}", response_model=AssignmentOut, responses=errors(403, 404, 422))
-async def get_assignment(assignment_id: int, services: ServicesDep, principal: Instructor) -> AssignmentOut:
+async def get_assignment(
+    assignment_id: AssignmentIdPath, services: ServicesDep, principal: Instructor
+) -> AssignmentOut:
     def load() -> AssignmentOut:
         record = _assignment_as_staff(services, principal, assignment_id)
         return assignment_out(record, _points(services, record))
@@ -437,7 +466,10 @@ async def get_assignment(assignment_id: int, services: ServicesDep, principal: I
 
 @router.put("/v1/assignments/{assignment_id}", response_model=AssignmentOut, responses=errors(403, 404, 422))
 async def update_assignment(
-    assignment_id: int, body: AssignmentIn, services: ServicesDep, principal: Instructor
+    assignment_id: AssignmentIdPath,
+    body: Annotated[AssignmentIn, Body(openapi_examples=examples.ASSIGNMENT)],
+    services: ServicesDep,
+    principal: Instructor,
 ) -> AssignmentOut:
     def save() -> AssignmentOut:
         _assignment_as_staff(services, principal, assignment_id, instructor=True)
@@ -449,7 +481,9 @@ async def update_assignment(
 
 
 @router.delete("/v1/assignments/{assignment_id}", status_code=204, responses=errors(403, 404, 422))
-async def delete_assignment(assignment_id: int, services: ServicesDep, principal: Instructor) -> Response:
+async def delete_assignment(
+    assignment_id: AssignmentIdPath, services: ServicesDep, principal: Instructor
+) -> Response:
     """The assignment goes; its students' submissions stay (the log is append-only)."""
 
     def remove() -> None:
@@ -466,7 +500,7 @@ async def delete_assignment(assignment_id: int, services: ServicesDep, principal
     responses=errors(403, 404, 422),
 )
 async def list_extensions(
-    assignment_id: int, services: ServicesDep, principal: Instructor
+    assignment_id: AssignmentIdPath, services: ServicesDep, principal: Instructor
 ) -> list[ExtensionOut]:
     def load() -> list[ExtensionOut]:
         _assignment_as_staff(services, principal, assignment_id)
@@ -482,9 +516,9 @@ async def list_extensions(
     responses=errors(403, 404, 422),
 )
 async def set_extension(
-    assignment_id: int,
-    student: str,
-    body: ExtensionIn,
+    assignment_id: AssignmentIdPath,
+    student: StudentPath,
+    body: Annotated[ExtensionIn, Body(openapi_examples=examples.EXTENSION)],
     request: Request,
     services: ServicesDep,
     principal: Instructor,
@@ -508,7 +542,11 @@ async def set_extension(
     "/v1/assignments/{assignment_id}/extensions/{student}", status_code=204, responses=errors(403, 404, 422)
 )
 async def remove_extension(
-    assignment_id: int, student: str, request: Request, services: ServicesDep, principal: Instructor
+    assignment_id: AssignmentIdPath,
+    student: str,
+    request: Request,
+    services: ServicesDep,
+    principal: Instructor,
 ) -> Response:
     now = now_of(request)
 
@@ -564,7 +602,7 @@ def gradebook_out(course: CourseRecord, book: Gradebook) -> GradebookOut:
 
 @router.get("/v1/courses/{course_id}/gradebook", response_model=GradebookOut, responses=errors(403, 404, 422))
 async def get_gradebook(
-    course_id: int, request: Request, services: ServicesDep, principal: Instructor
+    course_id: CourseIdPath, request: Request, services: ServicesDep, principal: Instructor
 ) -> GradebookOut:
     """Students x assignments: best scores with late penalties applied (and marked), per part on
     each cell, extensions shown."""
@@ -586,7 +624,7 @@ async def get_gradebook(
     },
 )
 async def gradebook_csv(
-    course_id: int, request: Request, services: ServicesDep, principal: Instructor
+    course_id: CourseIdPath, request: Request, services: ServicesDep, principal: Instructor
 ) -> Response:
     """The gradebook as CSV: Student ID, Name, Email, one column per assignment (points), Total, Notes."""
     now = now_of(request)
@@ -610,7 +648,10 @@ async def gradebook_csv(
 
 @router.put("/v1/problems/{problem_id}/shared", response_model=ShareIn, responses=errors(403, 404, 422))
 async def share_problem(
-    problem_id: str, body: ShareIn, services: ServicesDep, principal: Instructor
+    problem_id: SharedProblemPath,
+    body: Annotated[ShareIn, Body(openapi_examples=examples.SHARE)],
+    services: ServicesDep,
+    principal: Instructor,
 ) -> ShareIn:
     """Share one's upload to the bank (every instructor may then assign it), or take it back."""
 

@@ -131,3 +131,64 @@ UPLOAD_YAML: Examples = {
         "value": yaml.safe_dump(_ATWOOD, sort_keys=False, allow_unicode=True),
     }
 }
+
+
+# ---- courses (app/routers/courses.py): ids as a fresh service gives them to the examples above ------
+
+COURSE: Examples = {
+    "course": {
+        "summary": "A course, its dates shown in the school's zone",
+        "value": {"title": "Mechanics 101", "timezone": "Europe/Paris"},
+    }
+}
+COURSE_ID = {"first": {"summary": "The first course made", "value": 1}}
+ASSIGNMENT_ID = {"first": {"summary": "The first assignment made", "value": 1}}
+ROSTER_CSV = "id,name,email\ns001,Ada Lovelace,ada@uni.example\ns002,Émilie du Châtelet,emilie@uni.example\n"
+ROSTERED_STUDENT = {
+    "rostered": {
+        "summary": "A student imported with the roster, as their work is filed",
+        "value": "course:1:s001",
+    }
+}
+STAFF: Examples = {
+    "ta": {
+        "summary": "A teaching assistant, by their instructor key's id",
+        "value": {"member": "key:1", "role": "ta", "name": "Sam (TA)"},
+    }
+}
+SIGN_IN_LINKS: Examples = {
+    "everyone": {"summary": "A link for every student on the roster", "value": {}},
+    "some": {
+        "summary": "New links for two students",
+        "value": {"students": ["course:1:s001", "course:1:s002"]},
+    },
+}
+JOIN_CODE: Examples = {"on": {"summary": "A new join code", "value": {"enabled": True}}}
+ASSIGNMENT: Examples = {
+    "homework": {
+        "summary": "Two problems due in a week, 10 % off per late day up to half",
+        "value": {
+            "title": "Homework 1: Atwood machines",
+            "problems": ["atwood", "atwood-massive-pulley"],
+            "opens_at": "2026-09-01T08:00:00+02:00",
+            "due_at": "2026-09-08T23:59:00+02:00",
+            "late": {"kind": "penalty", "per_day": 0.1, "limit": 0.5},
+            "max_attempts": 5,
+            "solutions": "after_due",
+        },
+    }
+}
+EXTENSION: Examples = {
+    "week": {"summary": "A week more for one student", "value": {"due_at": "2026-09-15T23:59:00+02:00"}}
+}
+
+
+def json_body(named: Examples) -> dict[str, Any]:
+    """A route's `openapi_extra` giving its JSON body these examples (FastAPI leaves out the examples
+    of a body parameter declared with `embed=True`)."""
+    return {"requestBody": {"content": {"application/json": {"examples": named}}}}
+
+
+SHARE: Examples = {
+    "share": {"summary": "Share the upload with every instructor's bank", "value": {"shared": True}}
+}

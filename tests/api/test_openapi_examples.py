@@ -67,7 +67,7 @@ def _url(path: str, operation: dict[str, Any]) -> str:
         if parameter["in"] == "path":
             examples = parameter.get("examples")
             assert examples, f"path parameter {parameter['name']} of {path} has no example"
-            path = path.replace("{" + parameter["name"] + "}", next(iter(examples.values()))["value"])
+            path = path.replace("{" + parameter["name"] + "}", str(next(iter(examples.values()))["value"]))
     return path
 
 

@@ -2,9 +2,6 @@
 
 from __future__ import annotations
 
-import io
-import json
-import logging
 import math
 
 import pytest
@@ -196,27 +193,6 @@ def test_submissions_page_through_with_a_cursor(client, student_headers):
         if cursor is None:
             break
     assert seen == ["0", "1", "2"]
-
-
-def test_logged_answers_are_truncated_and_escaped(client, student_headers):
-    from app.logs import JsonLogFormatter
-
-    stream = io.StringIO()
-    handler = logging.StreamHandler(stream)
-    handler.setFormatter(JsonLogFormatter())
-    logger = logging.getLogger("physcheck")
-    logger.addHandler(handler)
-    try:
-        forged = 'x\n{"level": "CRITICAL", "message": "forged"}' + "y" * 500
-        submit(client, student_headers, "wedge_acceleration", forged)
-    finally:
-        logger.removeHandler(handler)
-    lines = stream.getvalue().splitlines()
-    graded = [json.loads(line) for line in lines if '"graded"' in line]
-    assert len(graded) == 1
-    assert graded[0]["answer"].startswith('x\n{"level"') and len(graded[0]["answer"]) <= 121
-    assert not any("forged" in line and '"level": "CRITICAL"' in line.split('"answer"')[0] for line in lines)
-    assert student_headers["Authorization"].split()[1] not in stream.getvalue()
 
 
 @pytest.mark.parametrize(

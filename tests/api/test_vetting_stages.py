@@ -18,6 +18,7 @@ def _details(response: Any) -> dict[str, str]:
 def _with_underivable_quantity(doc: dict[str, Any]) -> dict[str, Any]:
     """An Atwood machine has no equilibrium: no method derives an oscillation frequency."""
     doc["model"]["quantities"]["wobble"] = {"angular_frequency": "s"}
+    doc["model"]["unused"] = ["wobble"]  # derived on purpose, so only its derivation can fault it
     return doc
 
 
