@@ -67,8 +67,9 @@ class Settings(BaseSettings):
     bank_dir: Path | None = None
     # Compile every problem at start-up (seconds of sympy) before /ready says yes; off for quick dev runs.
     warm_up: bool = True
-    # Problems a start derives side by side when nothing of theirs is stored yet (a first start, new
-    # code), each in a process of its own: about a minute for the bank on one core.
+    # Worker processes that derive what is not stored yet (a first start, new code), side by side, each
+    # under the upload limits (time and memory): about a minute for the bank on one core. The server
+    # process itself never derives; an upload is stored with what its vetting derived.
     derive_jobs: int = Field(default_factory=cores, ge=1)
     log_level: str = "INFO"
 

@@ -17,6 +17,7 @@ from app.catalog import Catalog
 from app.db import keys as key_repository
 from app.db.database import Database
 from app.db.migrate import migrate
+from app.derivation import DerivationPool
 from app.settings import Settings
 from app.storage import ApiKeyStore, Stores, sql_stores
 
@@ -91,10 +92,15 @@ class Storage:
             self.database.dispose()
 
 
+def deriver(settings: Settings) -> DerivationPool:
+    """Derivations (what is not stored yet) in `derive_jobs` workers, under an upload's limits."""
+    return DerivationPool(settings.derive_jobs, settings.upload_timeout_seconds, settings.check_memory_mb)
+
+
 def open_storage(settings: Settings) -> Storage:
     database = open_database(settings)
     stores = sql_stores(database)
-    catalog = Catalog(stores, settings.secret, settings.bank_dir, derive_jobs=settings.derive_jobs)
+    catalog = Catalog(stores, settings.secret, settings.bank_dir, deriver=deriver(settings))
     catalog.sync_builtin()
     return Storage(database=database, stores=stores, keys=DatabaseKeyStore(stores.keys), catalog=catalog)
 

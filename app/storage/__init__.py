@@ -31,6 +31,7 @@ from app.storage.memory_lti import MemoryLaunchStore, MemoryLtiSessionStore, Mem
 from app.storage.protocols import (
     ApiKeyStore,
     CompiledCache,
+    CompiledEntry,
     Filed,
     LaunchStore,
     LtiSessionStore,
@@ -56,6 +57,7 @@ from app.storage.sql_outbox import queue_grade
 __all__ = [
     "ApiKeyStore",
     "CompiledCache",
+    "CompiledEntry",
     "Filed",
     "LaunchStore",
     "LtiSessionStore",
@@ -104,7 +106,8 @@ def sql_stores(database: Database, *, clock: Clock = utc_now) -> Stores:
 
 def memory_stores(*, clock: Clock = utc_now) -> Stores:
     """Fresh fakes; a graded submission of a launched student queues its score, as with SQL."""
-    problems = MemoryProblemStore(clock)
+    compiled = MemoryCompiledCache()
+    problems = MemoryProblemStore(clock, compiled)
     outbox = MemoryScoreOutbox()
     hooks: list[MemoryFilingHook] = []
     submissions = MemorySubmissionStore(problems, hooks, clock=clock)
@@ -113,7 +116,7 @@ def memory_stores(*, clock: Clock = utc_now) -> Stores:
         keys=MemoryApiKeyStore(clock),
         problems=problems,
         submissions=submissions,
-        compiled=MemoryCompiledCache(),
+        compiled=compiled,
         outbox=outbox,
         tool_keys=MemoryToolKeys(),
         platforms=MemoryPlatformStore(),
