@@ -152,10 +152,6 @@ class CompiledStore:
     def save(self, record: ProblemRecord, payload: bytes) -> None:
         self._put(self.key(record), payload, f"the compilation of {record.id!r}")
 
-    def is_stored(self, record: ProblemRecord) -> bool:
-        """Whether the version's compilation is in the database (and verifies) under the running code."""
-        return bool(self._store.sealed([record]))
-
     def entry(self, document: Mapping[str, Any], payload: bytes) -> CompiledEntry:
         """A vetted upload's compilation, sealed, to be stored with its version (in one transaction)."""
         key = self._key(document_hash(document))
