@@ -244,7 +244,11 @@ class Catalog:
                 self._sealed.update(sealed)
             cold = [record for record in records if self._store.key(record) not in sealed]
             if cold:
-                log.info("deriving %s not stored yet, in worker processes", counted(len(cold), "problem"))
+                log.info(
+                    "deriving %s not stored yet, %d at a time in worker processes",
+                    counted(len(cold), "problem"),
+                    min(self._deriver.workers, len(cold)),
+                )
                 started = time.monotonic()
                 failed = self._derive_all(cold)
                 if not self._closing.is_set():

@@ -102,6 +102,10 @@ class DerivationPool:
         self._closed = False
         self._pending: dict[str, Future[bytes]] = {}  # by document hash: one derivation per document
 
+    @property
+    def workers(self) -> int:
+        return self._workers
+
     def submit(self, document: Mapping[str, Any]) -> Future[bytes]:
         """The document's payload, derived in a worker (or remembered). The future raises
         DerivationFailed (the document's doing, or its time limit), or PoolError / PoolUnavailable
@@ -158,9 +162,9 @@ class DerivationPool:
             )
             try:
                 pool.start()
-            except BaseException:
+            except Exception as error:  # closed meanwhile, or the fork server failed: not the document's
                 self._pool = None  # the next derivation tries again
-                raise
+                raise PoolUnavailable(f"the derivation workers did not start: {error!r}") from error
             if self._closed:  # closed while it started
                 pool.close()
                 raise PoolUnavailable("the derivation pool is closed")

@@ -72,6 +72,9 @@ class Settings(BaseSettings):
     # process itself never derives; an upload is stored with what its vetting derived.
     derive_jobs: int = Field(default_factory=cores, ge=1)
     log_level: str = "INFO"
+    # On SIGTERM, requests in progress get this long to finish (below `docker stop`'s 10 s); then they are
+    # cancelled and every worker process is killed, so that the server has exited before a SIGKILL.
+    shutdown_timeout_seconds: int = Field(default=8, ge=1)
 
     @model_validator(mode="after")
     def no_public_secret_in_production(self) -> Settings:
