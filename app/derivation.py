@@ -22,7 +22,6 @@ from collections.abc import Mapping
 from concurrent.futures import Future
 from typing import Any
 
-from app.db.problems import document_hash
 from app.grading import forkserver
 from app.grading.processes import PoolUnavailable, WorkerPool
 from app.grading.worker import limit_memory
@@ -110,6 +109,9 @@ class DerivationPool:
         """The document's payload, derived in a worker (or remembered). The future raises
         DerivationFailed (the document's doing, or its time limit), or PoolError / PoolUnavailable
         when no worker could run it (a fault or a shutdown: not the document's doing)."""
+        # Here, not at the top: the workers import this module for their task, and need no SQLAlchemy.
+        from app.db.problems import document_hash
+
         key = document_hash(document)
         with _remembered_lock:
             payload = _remembered.get(key)

@@ -5,6 +5,9 @@ shown on every page; the workers, forked from the fork server, are untouched by 
 
 from __future__ import annotations
 
+import subprocess
+import sys
+
 import pytest
 from fastapi.testclient import TestClient
 
@@ -116,3 +119,15 @@ def test_the_api_stores_each_version_with_its_compilation(
         assert services.catalog.is_stored(record)
         assert services.catalog.compiled(record).version == version
     assert sent_to_workers == [] and derivations_here == []
+
+
+def test_the_vetting_worker_imports_no_page_code():
+    """What the pages show of an upload is built where pages are: the worker's module needs none of it."""
+    code = (
+        "import sys, app.authoring; "
+        "print(sorted(m for m in sys.modules if m.startswith(('app.instructor', 'app.web'))))"
+    )
+    done = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, timeout=120, check=True
+    )
+    assert done.stdout.strip() == "[]"

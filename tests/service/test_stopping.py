@@ -103,11 +103,12 @@ def test_a_server_waiting_for_its_database_obeys_sigterm_and_ctrl_c(tmp_path: Pa
     assert "stopped while waiting for the database" in log.read_text()
 
 
-def test_a_normal_shutdown_logs_no_worker_fault(tmp_path: Path):
+@pytest.mark.parametrize("sig", [signal.SIGTERM, signal.SIGINT], ids=["SIGTERM", "Ctrl-C"])
+def test_a_normal_shutdown_logs_no_worker_fault(tmp_path: Path, sig: signal.Signals):
     log = tmp_path / "server.log"
     server = LiveServer(f"sqlite:///{tmp_path / 'db.sqlite'}", log, warm_up="false").start()
     try:
-        left = stopped(server, signal.SIGTERM, whole_group=True)  # systemd's way: the whole group
+        left = stopped(server, sig, whole_group=True)  # systemd's way, and a terminal's: the whole group
     finally:
         server.kill()
     assert left == []
