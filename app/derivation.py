@@ -38,7 +38,11 @@ REMEMBERED = 256
 
 
 class DerivationFailed(Exception):
-    """The document did not derive (its traceback's text, or why the worker stopped); not retried."""
+    """The document did not derive (its traceback's text, or why the worker stopped)."""
+
+
+class DerivationTimedOut(DerivationFailed):
+    """Killed at the time limit: perhaps only because the machine was busy, so tried again when asked."""
 
 
 def pack(compiled: CompiledProblem) -> bytes:
@@ -100,6 +104,9 @@ class DerivationPool:
         self._pool: WorkerPool | None = None
         self._closed = False
         self._pending: dict[str, Future[bytes]] = {}  # by document hash: one derivation per document
+        # Documents that failed (but for a timeout), by hash: the same code fails them again, so each
+        # request for one is answered at once rather than holding a worker for as long again.
+        self._failed: OrderedDict[str, DerivationFailed] = OrderedDict()
 
     @property
     def workers(self) -> int:
@@ -123,6 +130,11 @@ class DerivationPool:
             pending = self._pending.get(key)
             if pending is not None:
                 return pending
+            failed = self._failed.get(key)
+            if failed is not None:
+                refused: Future[bytes] = Future()
+                refused.set_exception(failed)
+                return refused
             future = self._schedule(dict(document))
             self._pending[key] = future
         future.add_done_callback(lambda finished: self._settled(key, finished))
@@ -138,7 +150,7 @@ class DerivationPool:
         def relay(finished: Future[Any]) -> None:
             error = finished.exception()
             if isinstance(error, TimeoutError):
-                outer.set_exception(DerivationFailed(f"deriving took longer than {self._timeout:.0f} s"))
+                outer.set_exception(DerivationTimedOut(f"deriving took longer than {self._timeout:.0f} s"))
             elif error is not None:
                 outer.set_exception(error)
             else:
@@ -173,9 +185,14 @@ class DerivationPool:
         return self._pool
 
     def _settled(self, key: str, future: Future[bytes]) -> None:
+        error = future.exception()
         with self._lock:
             self._pending.pop(key, None)
-        if not future.cancelled() and future.exception() is None:
+            if isinstance(error, DerivationFailed) and not isinstance(error, DerivationTimedOut):
+                self._failed[key] = error
+                while len(self._failed) > REMEMBERED:
+                    self._failed.popitem(last=False)
+        if error is None:
             _remember(key, future.result())
 
     def close(self) -> None:
