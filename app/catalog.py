@@ -268,13 +268,15 @@ class Catalog:
         returns the ids of those that failed."""
         failed: set[str] = set()
         pending: dict[Future[bytes], ProblemRecord] = {}
-        for record in records:
+        for index, record in enumerate(records):
             try:
                 pending[self._deriver.submit(record.document)] = record
-            except PoolError:  # closing, or no worker could start: the first request tries again
+            except PoolError as error:  # closing, or no worker could start: the first request tries again
+                left = records[index:]
                 if not self._closing.is_set():
-                    log.exception("could not derive problem %r version %d", record.id, record.version)
-                failed.add(record.id)
+                    log.error("could not derive %s: %s", counted(len(left), "problem"), error)
+                failed.update(skipped.id for skipped in left)
+                break
         while pending and not self._closing.is_set():
             done, _ = wait(pending, timeout=0.5, return_when=FIRST_COMPLETED)
             for future in done:
