@@ -107,16 +107,18 @@ def _bank_verify(args: argparse.Namespace, settings: Settings) -> int:
 
 
 def _problems_import(args: argparse.Namespace, settings: Settings) -> int:
+    from app.catalog import CompiledStore
     from app.startup import open_database
-    from app.storage.sql import SqlProblemStore
+    from app.storage.sql import SqlCompiledCache, SqlProblemStore
     from app.transfer import import_problem
     from problems.errors import ProblemInvalid
 
     database = open_database(settings)
     try:
+        seal = CompiledStore(SqlCompiledCache(database), settings.secret).entry
         for path in args.files:
             try:
-                record = import_problem(SqlProblemStore(database), Path(path))
+                record = import_problem(SqlProblemStore(database), Path(path), seal)
             except ProblemInvalid as error:
                 print(f"{path}: {counted(len(error.errors), 'error')}", file=sys.stderr)
                 for where, message in error.errors:

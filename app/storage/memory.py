@@ -168,14 +168,19 @@ class MemoryProblemStore:
                 and (owner_key_id is None or problem.owner_key_id == owner_key_id)
             ]
 
-    def save_builtin(self, problem_id: str, document: Mapping[str, Any]) -> ProblemRecord:
+    def save_builtin(
+        self, problem_id: str, document: Mapping[str, Any], *, compiled: CompiledEntry | None = None
+    ) -> ProblemRecord:
         with self._lock:
             problem = self._problems.get(problem_id)
-            if problem is None:
-                return self._insert(problem_id, document, owner_key_id=None)
-            if problem.owner_key_id is not None:
+            if problem is not None and problem.owner_key_id is not None:
                 raise ProblemExists(problem_id)
-            return self._append(problem, document)
+            if problem is None:
+                record = self._insert(problem_id, document, owner_key_id=None)
+            else:
+                record = self._append(problem, document)
+            self._keep(compiled)
+            return record
 
     def create(
         self,

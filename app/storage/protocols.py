@@ -70,7 +70,9 @@ class ProblemStore(Protocol):
         """The latest version of each problem, by id."""
         ...
 
-    def save_builtin(self, problem_id: str, document: Mapping[str, Any]) -> ProblemRecord:
+    def save_builtin(
+        self, problem_id: str, document: Mapping[str, Any], *, compiled: CompiledEntry | None = None
+    ) -> ProblemRecord:
         """Idempotent: an unchanged document keeps its version. ProblemExists if an instructor owns the id."""
         ...
 

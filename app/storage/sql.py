@@ -75,9 +75,13 @@ class SqlProblemStore:
                 session, include_retired=include_retired, owner_key_id=owner_key_id
             )
 
-    def save_builtin(self, problem_id: str, document: Mapping[str, Any]) -> ProblemRecord:
+    def save_builtin(
+        self, problem_id: str, document: Mapping[str, Any], *, compiled: CompiledEntry | None = None
+    ) -> ProblemRecord:
         with self._database.session() as session:
-            return problem_repository.save_builtin(session, problem_id, document, clock=self._clock)
+            record = problem_repository.save_builtin(session, problem_id, document, clock=self._clock)
+            _keep(session, compiled)
+            return record
 
     def create(
         self,

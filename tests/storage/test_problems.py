@@ -134,9 +134,15 @@ def test_a_version_is_stored_with_its_compilation_and_a_refused_one_stores_neith
     assert stores.problems.add_version("mine", V2, compiled=second).version == 2
     assert stores.compiled.get(second.key) == (b"compiled v2", "m2" * 32)
 
+    builtin = CompiledEntry("k4" * 32, b"compiled bank", "m4" * 32)
+    stores.problems.save_builtin("yo-yo", V1, compiled=builtin)
+    assert stores.compiled.get(builtin.key) == (b"compiled bank", "m4" * 32)
+
     taken = CompiledEntry("k3" * 32, b"never stored", "m3" * 32)
     with pytest.raises(ProblemExists):
         stores.problems.create("mine", V1, owner_key_id=owner, compiled=taken)
+    with pytest.raises(ProblemExists):
+        stores.problems.save_builtin("mine", V1, compiled=taken)
     stores.problems.retire("mine")
     with pytest.raises(ProblemNotFound):
         stores.problems.add_version("mine", V1, compiled=taken)
