@@ -13,7 +13,6 @@ other code, one whose row went. An upload arrives compiled by its vetting worker
 from __future__ import annotations
 
 import dataclasses
-import logging
 import pickle
 import threading
 import traceback
@@ -27,8 +26,6 @@ from app.grading.processes import PoolUnavailable, WorkerPool
 from app.grading.worker import limit_memory
 from problems.compiled import CompiledProblem, compile_problem
 from problems.loader import parse_problem
-
-log = logging.getLogger("physcheck.derivation")
 
 # A derivation leaves sympy's caches behind: a fresh worker from the clean fork server after this many.
 DERIVATIONS_PER_WORKER = 20
