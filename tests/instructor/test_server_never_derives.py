@@ -59,8 +59,9 @@ def sent_to_workers(monkeypatch: pytest.MonkeyPatch) -> list[str]:
 
 
 def test_an_upload_is_previewed_stored_graded_and_shown_without_deriving_in_the_server(
-    signed_in: TestClient, derivations_here: list[str], sent_to_workers: list[str]
+    derivations_here: list[str], sent_to_workers: list[str], signed_in: TestClient
 ):
+    """The patch is in place before the app starts: storing the bank derives nothing either."""
     token = csrf_of(signed_in.get("/instructor/problems/new").text)
     preview = signed_in.post(
         "/instructor/problems/new", data={"csrf": token, "source": upload_text(), "action": "preview"}
@@ -107,7 +108,7 @@ def instructor(client: TestClient) -> dict[str, str]:
 
 
 def test_the_api_stores_each_version_with_its_compilation(
-    client: TestClient, derivations_here: list[str], sent_to_workers: list[str]
+    derivations_here: list[str], sent_to_workers: list[str], client: TestClient
 ):
     headers = {**instructor(client), "content-type": "application/yaml"}
     assert client.post("/v1/problems", content=upload_text(), headers=headers).status_code == 201
