@@ -9,6 +9,7 @@ import os
 import signal
 import sqlite3
 import subprocess
+import sys
 import time
 from pathlib import Path
 
@@ -126,3 +127,49 @@ def test_a_normal_shutdown_logs_no_worker_fault(tmp_path: Path, sig: signal.Sign
     assert left == []
     text = log.read_text()
     assert not [line for line in text.splitlines() if any(word in line for word in FAULT_LINES)], text
+
+
+# A server (this script) with one worker in the middle of an hour-long job, which prints the worker's pid.
+LONG_JOB = """
+import sys
+import time
+
+from app.grading.forkserver import context
+from app.grading.processes import WorkerPool
+
+
+def main():
+    pool = WorkerPool("long-jobs", context(), workers=1, max_tasks=10, tasks=(time.sleep,))
+    pool.start()
+    pool.schedule(time.sleep, (3600,), 3600)
+    print(*(worker.process.pid for worker in pool._live), flush=True)
+    time.sleep(3600)
+
+
+if __name__ == "__main__":
+    main()
+"""
+
+
+def test_a_server_killed_outright_leaves_no_worker_behind_even_mid_job(tmp_path: Path):
+    script = tmp_path / "server.py"
+    script.write_text(LONG_JOB)
+    server = subprocess.Popen(
+        [sys.executable, str(script)], stdout=subprocess.PIPE, text=True, start_new_session=True
+    )
+    try:
+        assert server.stdout is not None
+        workers = [int(pid) for pid in server.stdout.readline().split()]
+        assert workers and all(pid in group(server.pid) for pid in workers)
+        server.kill()  # SIGKILL: no shutdown runs
+        server.wait(timeout=DEADLINE)
+        deadline = time.monotonic() + DEADLINE
+        while (left := group(server.pid)) and time.monotonic() < deadline:
+            time.sleep(0.2)
+    finally:
+        with contextlib.suppress(ProcessLookupError):
+            os.killpg(server.pid, signal.SIGKILL)
+        server.wait(timeout=DEADLINE)
+        if server.stdout is not None:
+            server.stdout.close()
+    assert left == [], f"still running after the server was killed: {left}"
