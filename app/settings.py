@@ -46,11 +46,13 @@ class Settings(BaseSettings):
     # at 500, workers under load were replaced every second or two and stalled checks for 100+ ms.
     worker_max_tasks: int = Field(default=10_000, ge=1)
 
-    # Above the answer limit on purpose: an over-long answer gets an `invalid` verdict, not a 413.
+    # Deriving and self-testing one upload in the vetting worker; also one problem's derivation in a
+    # derivation worker (what is not stored yet), killed past it.
     upload_timeout_seconds: float = Field(default=120.0, gt=0)
     # Uploads waiting for the one vetting worker before 503 + Retry-After (one per instructor key at most).
     upload_queue_size: int = Field(default=4, ge=0)
 
+    # Above the answer limit on purpose: an over-long answer gets an `invalid` verdict, not a 413.
     max_body_bytes: int = Field(default=2 * 1024 * 1024, ge=1024)
     max_answer_chars: int = Field(default=2000, ge=10)
 
