@@ -1,7 +1,9 @@
 """Vetting an instructor's upload: validate, derive and self-test it in a killable worker process.
 
 An upload is untrusted text whose model the engine must derive (sympy-heavy), so it never runs in the
-server process: one worker, a generous but hard time limit, the same memory limit as grading.
+server process: one worker, a generous but hard time limit, the same memory limit as grading. The
+worker sends back the document, its compiled problem and the findings, nothing else: what the pages
+show of it (the instructor's description, texts that will not render, the figure) is built there.
 """
 
 from __future__ import annotations
@@ -14,20 +16,15 @@ from concurrent.futures import TimeoutError as FutureTimeout
 from dataclasses import dataclass, field, replace
 from typing import Any, Literal
 
+from app.derivation import pack
 from app.errors import Busy, Unavailable
 from app.grading import forkserver
 from app.grading.processes import PoolUnavailable, WorkerDied, WorkerPool
 from app.grading.worker import limit_memory
-from app.instructor.described import Described, describe
-from app.web.document_text import render_problems
-from physics.figures import model_figure
 from problems.compiled import compile_problem
 from problems.locate import locate
-from problems.modelinfo import load_doc_model
-from problems.schema import ProblemDocument
 from problems.shape import shape_errors
-from problems.symbols import symbol_table
-from problems.variants import fixed_variant, si_values
+from problems.texts import readable_texts
 from problems.vetting import vet_document
 
 log = logging.getLogger("physcheck.authoring")
@@ -40,29 +37,27 @@ VETTINGS_PER_WORKER = 50
 
 @dataclass(frozen=True)
 class Vetted:
-    """The outcome of vetting: a clean document (JSON-ready) or every error found, with paths; for the
-    instructor pages, what the engine derived (a preview), texts that will not render cleanly (saved
-    all the same), and the line each path is on."""
+    """The outcome of vetting: a clean document (JSON-ready) with its compiled problem, packed as the
+    store keeps it (`app.derivation.pack`: the upload is stored with it and never derived again), or
+    every error found with its path; and the line each path is on (the errors', and every text's that
+    people read, for the pages' notes on texts that will not render cleanly)."""
 
     document: dict[str, Any] | None
     errors: list[tuple[str, str]] = field(default_factory=list)
-    described: Described | None = None
-    warnings: list[tuple[str, str]] = field(default_factory=list)
+    compiled: bytes | None = None
     lines: dict[str, int] = field(default_factory=dict)
-    figure: str | None = None  # SVG drawn from the model at the givens' midpoints
 
 
 def vet(source: bytes, fmt: Literal["json", "yaml"]) -> Vetted:
-    """Every fault of an upload with its path, and the line each is on."""
+    """Every fault of an upload with its path, or its compiled problem; and the line each path is on."""
     too_large = shape_errors(source, fmt)  # the pool checked already; the command line's import did not
     if too_large:
         return Vetted(None, too_large)
     try:
-        vetted = _vet(source, fmt)
+        vetted, paths = _vet(source, fmt)
     except MemoryError:
         # The worker's RLIMIT_AS is the size limit of one upload's derivation, as for answers.
         return Vetted(None, [("model", "deriving and self-testing ran out of memory")])
-    paths = [path for path, _ in (*vetted.errors, *vetted.warnings)]
     if not paths:
         return vetted
     try:
@@ -72,30 +67,16 @@ def vet(source: bytes, fmt: Literal["json", "yaml"]) -> Vetted:
     return replace(vetted, lines=locate(text, paths))
 
 
-def _vet(source: bytes, fmt: Literal["json", "yaml"]) -> Vetted:
-    """Every stage that can run (shape, meaning, derivation, self-test), every error at once."""
+def _vet(source: bytes, fmt: Literal["json", "yaml"]) -> tuple[Vetted, list[str]]:
+    """Every stage that can run (shape, meaning, derivation, self-test), every error at once; and the
+    paths to locate in the text."""
     vetting = vet_document(source, fmt, UPLOAD_SELFTEST_VARIANTS)
     doc = vetting.document
     if doc is None:
-        return Vetted(None, vetting.errors)
-    # Midpoint values of every given: the numbers a preview shows before any student has a variant.
-    described = describe(compile_problem(doc), fixed_variant(doc, {}))
-    return Vetted(
-        doc.model_dump(mode="json"), described=described, warnings=render_problems(doc), figure=_figure(doc)
-    )
-
-
-def _figure(doc: ProblemDocument) -> str | None:
-    """The figure a student would see (at the midpoint values), or None: it only illustrates."""
-    if doc.model is None:
-        return None
-    try:
-        table = symbol_table(doc)
-        values = si_values(doc, fixed_variant(doc, {}), table)
-        model = load_doc_model(doc, table)
-        return model_figure(model, {s.name: float(v) for s, v in values.items()}, title=doc.title)
-    except Exception:  # a model the figures cannot draw yet still makes a good problem
-        return None
+        return Vetted(None, vetting.errors), [path for path, _ in vetting.errors]
+    # Compiled (and cached) by the vetting's derivation stage: prepared and packed, it is what is stored.
+    compiled = pack(compile_problem(doc).prepare())
+    return Vetted(doc.model_dump(mode="json"), compiled=compiled), [path for path, _ in readable_texts(doc)]
 
 
 class AuthoringPool:

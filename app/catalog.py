@@ -4,35 +4,37 @@ A compiled problem (derivations, prepared references, sample points) is persiste
 keyed by the version's content hash and the engine's digest (`problems.fingerprint`: what the code does,
 not its docstrings), so a restarted or new instance loads it in milliseconds instead of deriving the
 bank again for minutes, and only a changed version (or a change to what the code does) is compiled again.
+
+This process never derives: an upload arrives compiled by its vetting worker and is stored so with its
+version; whatever is not stored is derived by `app.derivation`'s worker processes, under their limits.
 """
 
 from __future__ import annotations
 
-import dataclasses
 import hashlib
 import hmac
 import logging
-import pickle
 import threading
 import time
-import traceback
 from collections import OrderedDict
-from collections.abc import Callable
-from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
+from collections.abc import Callable, Mapping
+from concurrent.futures import FIRST_COMPLETED, Future, wait
 from pathlib import Path
 from typing import Any, TypeVar
 
 from app.db.errors import ProblemExists, ProblemNotFound
 from app.db.problems import document_hash
 from app.db.records import ProblemRecord
-from app.grading import forkserver
-from app.storage import CompiledCache, Stores
+from app.derivation import DerivationFailed, DerivationPool, unpack
+from app.errors import GraderFault, Unavailable
+from app.grading.processes import PoolError
+from app.storage import CompiledCache, CompiledEntry, Stores
 from physics.checking import CheckJob
 from physics.engine.model import Model
 from physics.figures import model_figure
 from physics.figures.free_body import free_body_figure
 from physics.wording import counted
-from problems.compiled import CompiledProblem, compile_problem, document_digest
+from problems.compiled import CompiledProblem, document_digest
 from problems.errors import ProblemInvalid
 from problems.fingerprint import engine_digest, source_digest
 from problems.loader import BANK_DIR, load_bank, parse_problem
@@ -97,7 +99,10 @@ class CompiledStore:
         self._engine_lock = threading.Lock()
 
     def key(self, record: ProblemRecord) -> str:
-        return hashlib.sha256(f"{record.document_hash}:{self.engine()}".encode()).hexdigest()
+        return self._key(record.document_hash)
+
+    def _key(self, document_hash: str) -> str:
+        return hashlib.sha256(f"{document_hash}:{self.engine()}".encode()).hexdigest()
 
     def engine(self) -> str:
         """The engine's digest, remembered in the store under the digest of its files: computing it
@@ -142,37 +147,21 @@ class CompiledStore:
     @staticmethod
     def open(record: ProblemRecord, payload: bytes) -> CompiledProblem | None:
         """A verified payload unpickled (sympy trees: tens of milliseconds for a large problem)."""
-        compiled = pickle.loads(payload)  # noqa: S301 - sealed by this service (class docstring)
-        if not isinstance(compiled, CompiledProblem):
-            return None
-        # The same document may be stored as several versions: the content is shared, not the number.
-        return dataclasses.replace(compiled, version=record.version)
-
-    @staticmethod
-    def payload(compiled: CompiledProblem) -> bytes:
-        return pickle.dumps(compiled, protocol=pickle.HIGHEST_PROTOCOL)
+        return unpack(payload, record.version)
 
     def save(self, record: ProblemRecord, payload: bytes) -> None:
         self._put(self.key(record), payload, f"the compilation of {record.id!r}")
+
+    def entry(self, document: Mapping[str, Any], payload: bytes) -> CompiledEntry:
+        """A vetted upload's compilation, sealed, to be stored with its version (in one transaction)."""
+        key = self._key(document_hash(document))
+        return CompiledEntry(key, payload, self._mac(key, payload))
 
     def _put(self, key: str, payload: bytes, what: str) -> None:
         try:
             self._cache.put(key, payload, self._mac(key, payload))
         except Exception as error:  # a cache: another instance may have written it meanwhile
             log.warning("could not store %s: %s", what, error)
-
-
-def derived_payload(doc: ProblemDocument, version: int) -> bytes:
-    """A problem compiled and prepared, as the store keeps it: what a warm-up's derivation process
-    sends back (the warm-up stores these bytes and opens them later, as a restart does).
-
-    A failure comes back as a RuntimeError with the traceback's text: the bank's own errors take
-    arguments that pickle's rebuilding of an exception does not pass, and one that cannot be rebuilt
-    in the server breaks the whole process pool."""
-    try:
-        return CompiledStore.payload(compile_problem(doc, version).prepare())
-    except Exception:
-        raise RuntimeError(traceback.format_exc()) from None
 
 
 class Catalog:
@@ -183,10 +172,10 @@ class Catalog:
         bank_dir: Path | None = None,
         documents_cached: int = 256,
         compiled_cached: int = 256,
-        derive_jobs: int = 1,
+        deriver: DerivationPool | None = None,
     ):
-        """`derive_jobs`: problems a warm-up derives side by side, each in a process of its own (1: one
-        after another, in the warm-up's thread)."""
+        """`deriver`: the worker processes that derive what is not stored (this process never does);
+        the catalog closes it. By default one worker under the default limits."""
         self._problems = stores.problems
         self._bank_dir = bank_dir
         self._secret = secret
@@ -201,7 +190,7 @@ class Catalog:
         self._closing = threading.Event()
         self._compiling: dict[tuple[str, int, str], threading.Lock] = {}
         self._sealed: dict[str, bytes] = {}  # verified stored compilations not opened yet, by store key
-        self._derive_jobs = derive_jobs
+        self._deriver = deriver or DerivationPool()
 
     def sync_builtin(self) -> list[ProblemRecord]:
         """Store the built-in bank: unchanged files keep their version, edited ones get a new one.
@@ -243,9 +232,9 @@ class Catalog:
         """Make every live problem ready to grade, then set `warm` (the instance is ready).
 
         A problem whose compilation is stored (and verifies) counts at once: one query finds them all,
-        and they are opened after `warm` is set (or by the first request that needs one). Only the others
-        are compiled (derivations take seconds) before `warm` is set, `derive_jobs` at a time. One that
-        fails is logged once and left to the first request that needs it.
+        and they are opened after `warm` is set (or by the first request that needs one). The others are
+        derived in the deriver's worker processes (seconds each), stored, and left sealed, before `warm`
+        is set. One that fails is logged once and left to the first request that needs it.
         """
         failed: set[str] = set()  # not derived again (nor logged again) by the opening below
         try:
@@ -254,20 +243,18 @@ class Catalog:
             with self._lock:
                 self._sealed.update(sealed)
             cold = [record for record in records if self._store.key(record) not in sealed]
-            jobs = min(self._derive_jobs, len(cold))
             if cold:
-                log.info("deriving %s not stored yet, %d at a time", counted(len(cold), "problem"), jobs)
-            started = time.monotonic()
-            if jobs > 1:
-                failed = self._derive_side_by_side(cold, jobs)
-            else:
-                for record in cold:
-                    if self._closing.is_set():
-                        return
-                    if not self._compile_logged(record):
-                        failed.add(record.id)
-            if cold and not self._closing.is_set():
-                log.info("derived %s in %.1f s", counted(len(cold), "problem"), time.monotonic() - started)
+                log.info(
+                    "deriving %s not stored yet, %d at a time in worker processes",
+                    counted(len(cold), "problem"),
+                    min(self._deriver.workers, len(cold)),
+                )
+                started = time.monotonic()
+                failed = self._derive_all(cold)
+                if not self._closing.is_set():
+                    log.info(
+                        "derived %s in %.1f s", counted(len(cold), "problem"), time.monotonic() - started
+                    )
         finally:
             self.warm.set()
         for record in records:  # opened now rather than by a student's first request
@@ -276,40 +263,44 @@ class Catalog:
             if record.id not in failed:
                 self._compile_logged(record)
 
-    def _derive_side_by_side(self, records: list[ProblemRecord], jobs: int) -> set[str]:
-        """Each record derived in a process from the fork server, stored, and left sealed for the
-        opening after `warm` (the server's GIL would serialise derivations in threads); returns the
-        ids of those that failed."""
+    def _derive_all(self, records: list[ProblemRecord]) -> set[str]:
+        """Each record derived by the deriver, stored, and left sealed for the opening after `warm`;
+        returns the ids of those that failed."""
         failed: set[str] = set()
-        pool = ProcessPoolExecutor(jobs, mp_context=forkserver.context())
-        try:
-            pending: dict[Future[bytes], ProblemRecord] = {
-                pool.submit(derived_payload, self.document(record), record.version): record
-                for record in records
-            }
-            while pending and not self._closing.is_set():
-                done, _ = wait(pending, timeout=0.5, return_when=FIRST_COMPLETED)
-                for future in done:
-                    record = pending.pop(future)
-                    try:
-                        payload = future.result()
-                    except Exception:  # one broken problem must not keep the others cold
-                        log.exception("could not compile problem %r version %d", record.id, record.version)
-                        failed.add(record.id)
-                        continue
-                    self._stored(lambda: self._store.save(record, payload))  # noqa: B023 - called at once
-                    with self._lock:
-                        self._sealed[self._store.key(record)] = payload
-        finally:
-            # Closing: derivations not started are dropped; one running ends in seconds.
-            pool.shutdown(wait=not self._closing.is_set(), cancel_futures=True)
+        pending: dict[Future[bytes], ProblemRecord] = {}
+        for index, record in enumerate(records):
+            try:
+                pending[self._deriver.submit(record.document)] = record
+            except PoolError as error:  # closing, or no worker could start: the first request tries again
+                left = records[index:]
+                if not self._closing.is_set():
+                    log.error("could not derive %s: %s", counted(len(left), "problem"), error)
+                failed.update(skipped.id for skipped in left)
+                break
+        while pending and not self._closing.is_set():
+            done, _ = wait(pending, timeout=0.5, return_when=FIRST_COMPLETED)
+            for future in done:
+                record = pending.pop(future)
+                try:
+                    payload = future.result()
+                except Exception as error:  # one broken problem must not keep the others cold
+                    if not self._closing.is_set():
+                        log.error(
+                            "could not compile problem %r version %d: %s", record.id, record.version, error
+                        )
+                    failed.add(record.id)
+                    continue
+                self._stored(lambda: self._store.save(record, payload))  # noqa: B023 - called at once
+                with self._lock:
+                    self._sealed[self._store.key(record)] = payload
         return failed
 
     def _compile_logged(self, record: ProblemRecord) -> bool:
         try:
             self.compiled(record)
         except Exception:  # one broken problem must not keep the others cold
-            log.exception("could not compile problem %r version %d", record.id, record.version)
+            if not self._closing.is_set():
+                log.exception("could not compile problem %r version %d", record.id, record.version)
             return False
         return True
 
@@ -317,8 +308,17 @@ class Catalog:
         """Stop a warm-up still running (it would otherwise compile on after the app has shut down);
         returns once no thread uses the database any more."""
         self._closing.set()
+        self._deriver.close()  # its workers killed: a shutdown mid-derivation leaves no process behind
         with self._store_lock:
             pass
+
+    def is_stored(self, record: ProblemRecord) -> bool:
+        """Whether the version's compilation is in the database (and verifies) under the running code."""
+        return bool(self._store.sealed([record]))
+
+    def entry(self, document: Mapping[str, Any], payload: bytes) -> CompiledEntry:
+        """A vetted upload's compilation (a vetting worker's bytes), sealed to be stored with it."""
+        return self._store.entry(document, payload)
 
     def get(self, problem_id: str, version: int | None = None) -> ProblemRecord:
         return self._problems.get(problem_id, version)
@@ -361,10 +361,7 @@ class Catalog:
                 if found is None:
                     found = self._stored(lambda: self._store.load(record))
                 if found is None:
-                    # compile_problem's process-wide cache: several apps in one process (tests, a fresh
-                    # database) share what is a pure function of the document, its version and the code.
-                    found = compile_problem(self.document(record), record.version).prepare()
-                    self._stored(lambda: self._store.save(record, CompiledStore.payload(found)))
+                    found = self._derived(record)
                 with self._lock:
                     self._compiled[key] = found
                     while len(self._compiled) > self._compiled_limit:
@@ -373,6 +370,27 @@ class Catalog:
         finally:
             with self._lock:  # later callers find the cache warm; no lock kept per version
                 self._compiling.pop(key, None)
+
+    def _derived(self, record: ProblemRecord) -> CompiledProblem:
+        """Derived in a worker process, stored, opened. 503 when no worker can derive it now (a fault, a
+        shutdown), 500 when it does not derive: it was vetted, so the code changed under it."""
+        try:
+            payload = self._deriver.submit(record.document).result()
+        except PoolError as error:
+            log.error("could not derive problem %r version %d: %r", record.id, record.version, error)
+            raise Unavailable(
+                "The problem is being prepared after a fault; try again in a moment.", retry_after=2
+            ) from error
+        except DerivationFailed as error:
+            log.error("could not derive problem %r version %d: %s", record.id, record.version, error)
+            raise GraderFault(
+                "This problem could not be prepared for grading; it has been logged. Nothing was recorded."
+            ) from error
+        self._stored(lambda: self._store.save(record, payload))
+        found = self._store.open(record, payload)
+        if found is None:
+            raise GraderFault("This problem could not be prepared for grading; it has been logged.")
+        return found
 
     def _opened(self, record: ProblemRecord) -> CompiledProblem | None:
         """A payload found sealed at warm-up, unpickled now (each is opened once)."""
@@ -439,9 +457,15 @@ class Catalog:
         except ProblemNotFound:
             return None
         doc = self.document(record)
-        if doc.model is None:
-            return None
-        table = symbol_table(doc)
-        values = si_values(doc, self.variant(record, student), table)
-        model = load_doc_model(doc, table)
-        return model, {s.name: float(v) for s, v in values.items()}, doc.title
+        return model_and_values(doc, self.variant(record, student))
+
+
+def model_and_values(doc: ProblemDocument, variant: Variant) -> tuple[Model, dict[str, float], str] | None:
+    """The document's model as loaded (not derived: figures need its bodies and loads) with a
+    variant's values in SI, and the title; None for a problem with no model."""
+    if doc.model is None:
+        return None
+    table = symbol_table(doc)
+    values = si_values(doc, variant, table)
+    model = load_doc_model(doc, table)
+    return model, {s.name: float(v) for s, v in values.items()}, doc.title

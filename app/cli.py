@@ -3,9 +3,11 @@
 from __future__ import annotations
 
 import argparse
+import signal
 import sys
-from collections.abc import Callable, Sequence
-from contextlib import nullcontext
+import threading
+from collections.abc import Callable, Iterator, Sequence
+from contextlib import contextmanager, nullcontext
 from pathlib import Path
 
 from app.settings import Settings, get_settings
@@ -22,15 +24,48 @@ def _serve(args: argparse.Namespace, settings: Settings) -> int:
 
     from app.heap import freeze_long_lived
     from app.main import create_app
+    from app.startup import Stopped, open_storage_when_reachable
 
     backend = settings.database_url.split(":", 1)[0]
     print(
         f"physcheck: serving http://{args.host}:{args.port} ({backend}; API docs at /docs)", file=sys.stderr
     )
-    app = create_app(settings)
+    # Storage is opened before uvicorn takes the signals: while it waits for a database that does not
+    # answer, SIGTERM and Ctrl-C stop it here (uvicorn would only note them until its start-up ends).
+    stopping = threading.Event()
+    with _stop_on_signals(stopping):
+        try:
+            storage = open_storage_when_reachable(settings, stopping)
+        except Stopped as stopped:
+            print(f"physcheck: {stopped}", file=sys.stderr)
+            return 0
+    if stopping.is_set():  # a signal after the database answered, before uvicorn listens
+        storage.close()
+        return 0
+    app = create_app(settings, open_storage=lambda _: storage)
     freeze_long_lived()  # the modules and the app: what this process holds until it exits
-    uvicorn.run(app, host=args.host, port=args.port, log_config=None, proxy_headers=True)
+    uvicorn.run(
+        app,
+        host=args.host,
+        port=args.port,
+        log_config=None,
+        proxy_headers=True,
+        timeout_graceful_shutdown=settings.shutdown_timeout_seconds,
+    )
     return 0
+
+
+@contextmanager
+def _stop_on_signals(stopping: threading.Event) -> Iterator[None]:
+    """SIGTERM and SIGINT set `stopping` (instead of killing the process or raising KeyboardInterrupt
+    mid-query), then the previous handlers are back."""
+    handled = (signal.SIGTERM, signal.SIGINT)
+    previous = {sig: signal.signal(sig, lambda *_: stopping.set()) for sig in handled}
+    try:
+        yield
+    finally:
+        for sig, handler in previous.items():
+            signal.signal(sig, handler)
 
 
 def _keys_create(args: argparse.Namespace, settings: Settings) -> int:
@@ -72,16 +107,18 @@ def _bank_verify(args: argparse.Namespace, settings: Settings) -> int:
 
 
 def _problems_import(args: argparse.Namespace, settings: Settings) -> int:
+    from app.catalog import CompiledStore
     from app.startup import open_database
-    from app.storage.sql import SqlProblemStore
+    from app.storage.sql import SqlCompiledCache, SqlProblemStore
     from app.transfer import import_problem
     from problems.errors import ProblemInvalid
 
     database = open_database(settings)
     try:
+        seal = CompiledStore(SqlCompiledCache(database), settings.secret).entry
         for path in args.files:
             try:
-                record = import_problem(SqlProblemStore(database), Path(path))
+                record = import_problem(SqlProblemStore(database), Path(path), seal)
             except ProblemInvalid as error:
                 print(f"{path}: {counted(len(error.errors), 'error')}", file=sys.stderr)
                 for where, message in error.errors:

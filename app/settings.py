@@ -49,11 +49,13 @@ class Settings(BaseSettings):
     # at 500, workers under load were replaced every second or two and stalled checks for 100+ ms.
     worker_max_tasks: int = Field(default=10_000, ge=1)
 
-    # Above the answer limit on purpose: an over-long answer gets an `invalid` verdict, not a 413.
+    # Deriving and self-testing one upload in the vetting worker; also one problem's derivation in a
+    # derivation worker (what is not stored yet), killed past it.
     upload_timeout_seconds: float = Field(default=120.0, gt=0)
     # Uploads waiting for the one vetting worker before 503 + Retry-After (one per instructor key at most).
     upload_queue_size: int = Field(default=4, ge=0)
 
+    # Above the answer limit on purpose: an over-long answer gets an `invalid` verdict, not a 413.
     max_body_bytes: int = Field(default=2 * 1024 * 1024, ge=1024)
     max_answer_chars: int = Field(default=2000, ge=10)
 
@@ -75,13 +77,17 @@ class Settings(BaseSettings):
     bank_dir: Path | None = None
     # Compile every problem at start-up (seconds of sympy) before /ready says yes; off for quick dev runs.
     warm_up: bool = True
-    # Problems a start derives side by side when nothing of theirs is stored yet (a first start, new
-    # code), each in a process of its own: about a minute for the bank on one core.
+    # Worker processes that derive what is not stored yet (a first start, new code), side by side, each
+    # under the upload limits (time and memory): about a minute for the bank on one core. The server
+    # process itself never derives; an upload is stored with what its vetting derived.
     derive_jobs: int = Field(default_factory=cores, ge=1)
     log_level: str = "INFO"
     # Students' answers are personal data: the log names the submission (problem, part, student,
     # verdict) but not what was typed, unless an operator turns this on (to debug a reading, say).
     log_answers: bool = False
+    # On SIGTERM, requests in progress get this long to finish (below `docker stop`'s 10 s); then they are
+    # cancelled and every worker process is killed, so that the server has exited before a SIGKILL.
+    shutdown_timeout_seconds: int = Field(default=8, ge=1)
 
     @model_validator(mode="after")
     def no_public_secret_in_production(self) -> Settings:

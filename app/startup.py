@@ -17,6 +17,7 @@ from app.catalog import Catalog
 from app.db import keys as key_repository
 from app.db.database import Database
 from app.db.migrate import migrate
+from app.derivation import DerivationPool
 from app.settings import Settings
 from app.storage import ApiKeyStore, Stores, sql_stores
 
@@ -91,20 +92,31 @@ class Storage:
             self.database.dispose()
 
 
+def deriver(settings: Settings) -> DerivationPool:
+    """Derivations (what is not stored yet) in `derive_jobs` workers, under an upload's limits."""
+    return DerivationPool(settings.derive_jobs, settings.upload_timeout_seconds, settings.check_memory_mb)
+
+
 def open_storage(settings: Settings) -> Storage:
     database = open_database(settings)
     stores = sql_stores(database)
-    catalog = Catalog(stores, settings.secret, settings.bank_dir, derive_jobs=settings.derive_jobs)
+    catalog = Catalog(stores, settings.secret, settings.bank_dir, deriver=deriver(settings))
     catalog.sync_builtin()
     return Storage(database=database, stores=stores, keys=DatabaseKeyStore(stores.keys), catalog=catalog)
 
 
-def open_storage_when_reachable(settings: Settings, sleep: Callable[[float], None] = time.sleep) -> Storage:
+class Stopped(Exception):
+    """Asked to stop (SIGTERM, Ctrl-C) before the database answered."""
+
+
+def open_storage_when_reachable(settings: Settings, stopping: threading.Event | None = None) -> Storage:
     """`open_storage`, waiting for a database that is down (a server started during an outage, or
-    before its database) instead of exiting: one log line per try, retrying at growing intervals."""
+    before its database) instead of exiting: one log line per try, retrying at growing intervals.
+    Raises Stopped once `stopping` is set (checked between tries, and it cuts a wait short)."""
     where = make_url(settings.database_url).render_as_string(hide_password=True)
+    stopping = stopping or threading.Event()
     delay = 1.0
-    while True:
+    while not stopping.is_set():
         try:
             return open_storage(settings)
         except (OperationalError, InterfaceError) as error:
@@ -115,5 +127,6 @@ def open_storage_when_reachable(settings: Settings, sleep: Callable[[float], Non
                 reason[0],
                 delay,
             )
-            sleep(delay)
+            stopping.wait(delay)
             delay = min(delay * 2, STARTUP_RETRY_MAX_SECONDS)
+    raise Stopped(f"stopped while waiting for the database at {where}")

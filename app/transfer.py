@@ -4,8 +4,9 @@ from __future__ import annotations
 
 import json
 import sys
+from collections.abc import Callable
 from pathlib import Path
-from typing import TextIO
+from typing import Any, TextIO
 
 import yaml
 from tqdm import tqdm
@@ -13,7 +14,7 @@ from tqdm import tqdm
 from app.authoring import vet
 from app.db.records import ProblemRecord
 from app.spreadsheet import SafeWriter
-from app.storage import ProblemStore, SubmissionStore
+from app.storage import CompiledEntry, ProblemStore, SubmissionStore
 from problems.errors import ProblemInvalid
 
 SUBMISSION_COLUMNS = (
@@ -33,16 +34,21 @@ SUBMISSION_COLUMNS = (
 EXPORT_PAGE = 1000
 
 
-def import_problem(problems: ProblemStore, path: Path) -> ProblemRecord:
-    """Vet and store a problem file: a new problem, or a new version of one the CLI or bank owns.
+def import_problem(
+    problems: ProblemStore, path: Path, seal: Callable[[dict[str, Any], bytes], CompiledEntry] | None = None
+) -> ProblemRecord:
+    """Vet and store a problem file: a new problem, or a new version of one the CLI or bank owns; with
+    `seal` (the server's `Catalog.entry`), stored with the compiled problem the vetting derived, so
+    that no server derives it again.
 
     Raises ProblemInvalid with every fault found.
     """
     vetted = vet(path.read_bytes(), "json" if path.suffix.lower() == ".json" else "yaml")
     if vetted.document is None:
         raise ProblemInvalid(vetted.errors)
+    compiled = None if seal is None or vetted.compiled is None else seal(vetted.document, vetted.compiled)
     # Stored like the built-in bank (no owner key): unchanged files keep their version.
-    return problems.save_builtin(vetted.document["id"], vetted.document)
+    return problems.save_builtin(vetted.document["id"], vetted.document, compiled=compiled)
 
 
 def export_problem(problems: ProblemStore, problem_id: str, fmt: str, out: TextIO) -> None:

@@ -28,6 +28,7 @@ import contextlib
 import logging
 import os
 import pickle
+import select
 import selectors
 import signal
 import threading
@@ -99,12 +100,16 @@ def serve(
     initializer: Callable[..., object] | None,
     initargs: Sequence[object],
     tasks: Sequence[Callable[..., object]],
+    server: int | None = None,
 ) -> None:
-    """A worker's whole life: run each job read from `conn` and answer on it, until it is closed.
-    `tasks` are only unpickled, and so imported, before the worker says it is ready: a job's time limit
-    must not pay for importing its function's module (a test's task may import half the app)."""
+    """A worker's whole life: run each job read from `conn` and answer on it, until it is closed, or
+    until the `server` process ends. `tasks` are only unpickled, and so imported, before the worker says
+    it is ready: a job's time limit must not pay for importing its function's module (a test's task may
+    import half the app)."""
     del tasks
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C is the server's; the server stops its workers
+    if server is not None:
+        _exit_with(server)
     if initializer is not None:
         initializer(*initargs)
     fd = conn.fileno()
@@ -120,6 +125,24 @@ def serve(
         except Exception as error:
             reply = pickle.dumps((False, PoolError(f"the answer could not be pickled: {error!r}")))
         _send(fd, _framed(reply))
+
+
+def _exit_with(server: int) -> None:
+    """End this worker as soon as the server process ends, even in the middle of a job: a server killed
+    outright (SIGKILL, the OOM killer) cannot kill its workers, a job (an upload's vetting, a derivation)
+    may run for minutes, and each worker left keeps the fork server alive too."""
+    try:
+        handle = os.pidfd_open(server)
+    except ProcessLookupError:  # gone already
+        os._exit(1)
+    except (AttributeError, OSError):  # no pidfd here: the worker ends at its next read instead
+        return
+
+    def watch() -> None:
+        select.select([handle], [], [])  # readable once the process has exited
+        os._exit(1)
+
+    threading.Thread(target=watch, name="exit-with-server", daemon=True).start()
 
 
 @dataclass(eq=False)
@@ -435,7 +458,7 @@ class WorkerPool:
         ours, theirs = self._context.Pipe()
         process = self._context.Process(
             target=serve,
-            args=(theirs, self._initializer, self._initargs, self._tasks),
+            args=(theirs, self._initializer, self._initargs, self._tasks, os.getpid()),
             name=f"{self._name}-worker",
             daemon=True,
         )

@@ -40,6 +40,7 @@ from app.errors import AppError, Busy
 from app.instructor import session as auth
 from app.instructor.described import Described, MistakeInfo, describe
 from app.instructor.plots import Bar, bar_chart
+from app.instructor.preview import preview as preview_of
 from app.lti.platforms import platform_origins
 from app.routers.authoring import store_new_problem, store_new_version
 from app.services import Services
@@ -447,25 +448,26 @@ async def _vet_and_maybe_save_form(
             status=422,
         )
     if action != "save":
+        preview = await run_in_threadpool(preview_of, vetted.document, vetted.compiled)
         return await _edit_page(
             request,
             services,
             who,
             problem_id=problem_id,
             source=source,
-            described=vetted.described,
+            described=preview.described,
             document=vetted.document,
-            figure=vetted.figure,
+            figure=preview.figure,
             warnings=[
                 {"path": path, "message": message, "line": vetted.lines.get(path)}
-                for path, message in vetted.warnings
+                for path, message in preview.warnings
             ],
         )
     try:
         if problem_id is None:
-            record = await store_new_problem(services, who.principal, vetted.document)
+            record = await store_new_problem(services, who.principal, vetted)
         else:
-            record = await store_new_version(services, who.principal, problem_id, vetted.document)
+            record = await store_new_version(services, who.principal, problem_id, vetted)
     except ProblemExists:
         errors = [{"path": "id", "message": "this id is already taken; choose another", "line": None}]
         return await _edit_page(

@@ -2,12 +2,14 @@
 
 from __future__ import annotations
 
+import functools
 from typing import Annotated, Any, Literal
 
 from fastapi import APIRouter, Path, Request, Response
 from starlette.concurrency import run_in_threadpool
 
 from app.auth import Principal
+from app.authoring import Vetted
 from app.courses import access
 from app.db.records import ProblemRecord
 from app.deps import Instructor, Problems, ServicesDep
@@ -25,6 +27,7 @@ from app.schemas.problems import (
     StepPublic,
 )
 from app.services import Services
+from app.storage import CompiledEntry
 from physics.engine.notation import fill_bodies
 from problems.compiled import CompiledProblem
 from problems.errors import ProblemInvalid
@@ -63,11 +66,11 @@ def _format(request: Request) -> Literal["json", "yaml"]:
     raise UnsupportedMediaType(f"Send the problem as application/json or application/yaml, not {media}.")
 
 
-async def _vetted_document(request: Request, services: Services, principal: Principal) -> dict[str, Any]:
+async def _vetted(request: Request, services: Services, principal: Principal) -> Vetted:
     vetted = await services.authoring.vet(await request.body(), _format(request), principal.key_id)
     if vetted.document is None:
         raise ProblemInvalid(vetted.errors)
-    return vetted.document
+    return vetted
 
 
 def _key_id(principal: Principal) -> int:
@@ -94,18 +97,29 @@ def _owned(services: Services, problem_id: str, principal: Principal) -> Problem
     responses=errors(409, 413, 415, 422),
 )
 async def upload(request: Request, services: ServicesDep, principal: Instructor) -> ProblemCreated:
-    document = await _vetted_document(request, services, principal)
-    record = await store_new_problem(services, principal, document)
+    record = await store_new_problem(services, principal, await _vetted(request, services, principal))
     return ProblemCreated(id=record.id, version=record.version)
 
 
-async def store_new_problem(
-    services: Services, principal: Principal, document: dict[str, Any]
-) -> ProblemRecord:
-    """Store a vetted document as a new problem owned by the caller's key (the API and the pages)."""
+def _compiled_entry(services: Services, vetted: Vetted) -> CompiledEntry | None:
+    """The vetting worker's compilation, sealed to be stored with the version (never derived again)."""
+    assert vetted.document is not None
+    if vetted.compiled is None:
+        return None
+    return services.catalog.entry(vetted.document, vetted.compiled)
+
+
+async def store_new_problem(services: Services, principal: Principal, vetted: Vetted) -> ProblemRecord:
+    """Store a vetted document, with its compiled problem, as a new problem owned by the caller's key
+    (the API and the pages)."""
     owner = _key_id(principal)
+    document = vetted.document
+    assert document is not None
+    compiled = await run_in_threadpool(_compiled_entry, services, vetted)
     return await run_in_threadpool(
-        services.stores.problems.create, document["id"], document, owner_key_id=owner
+        functools.partial(
+            services.stores.problems.create, document["id"], document, owner_key_id=owner, compiled=compiled
+        )
     )
 
 
@@ -122,22 +136,28 @@ async def new_version(
     principal: Instructor,
 ) -> ProblemCreated:
     await run_in_threadpool(_owned, services, problem_id, principal)
-    document = await _vetted_document(request, services, principal)
-    record = await store_new_version(services, principal, problem_id, document)
+    vetted = await _vetted(request, services, principal)
+    record = await store_new_version(services, principal, problem_id, vetted)
     return ProblemCreated(id=record.id, version=record.version)
 
 
 async def store_new_version(
-    services: Services, principal: Principal, problem_id: str, document: dict[str, Any]
+    services: Services, principal: Principal, problem_id: str, vetted: Vetted
 ) -> ProblemRecord:
-    """Store a vetted document as the next version of the caller's own problem (the API and the pages)."""
+    """Store a vetted document, with its compiled problem, as the next version of the caller's own
+    problem (the API and the pages)."""
     await run_in_threadpool(_owned, services, problem_id, principal)
+    document = vetted.document
+    assert document is not None
     if document["id"] != problem_id:
         raise IdMismatch(
             f"The document's id {document['id']!r} is not {problem_id!r}.",
             [{"path": "id", "message": f"must be {problem_id!r}"}],
         )
-    return await run_in_threadpool(services.stores.problems.add_version, problem_id, document)
+    compiled = await run_in_threadpool(_compiled_entry, services, vetted)
+    return await run_in_threadpool(
+        functools.partial(services.stores.problems.add_version, problem_id, document, compiled=compiled)
+    )
 
 
 @router.delete("/v1/problems/{problem_id}", status_code=204, responses=errors(404, 422))

@@ -34,6 +34,7 @@ from app.storage.memory_lti import MemoryLaunchStore, MemoryLtiSessionStore, Mem
 from app.storage.protocols import (
     ApiKeyStore,
     CompiledCache,
+    CompiledEntry,
     CourseStore,
     Filed,
     LaunchStore,
@@ -63,6 +64,7 @@ from app.storage.student_data import MemoryStudentData, SqlStudentData, StudentD
 __all__ = [
     "ApiKeyStore",
     "CompiledCache",
+    "CompiledEntry",
     "CourseStore",
     "Filed",
     "LaunchStore",
@@ -117,7 +119,8 @@ def sql_stores(database: Database, *, clock: Clock = utc_now) -> Stores:
 
 def memory_stores(*, clock: Clock = utc_now) -> Stores:
     """Fresh fakes; a graded submission of a launched student queues its score, as with SQL."""
-    problems = MemoryProblemStore(clock)
+    compiled = MemoryCompiledCache()
+    problems = MemoryProblemStore(clock, compiled)
     outbox = MemoryScoreOutbox()
     hooks: list[MemoryFilingHook] = []
     submissions = MemorySubmissionStore(problems, hooks, clock=clock)
@@ -129,7 +132,7 @@ def memory_stores(*, clock: Clock = utc_now) -> Stores:
         keys=keys,
         problems=problems,
         submissions=submissions,
-        compiled=MemoryCompiledCache(),
+        compiled=compiled,
         outbox=outbox,
         tool_keys=MemoryToolKeys(),
         platforms=platforms,

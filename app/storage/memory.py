@@ -41,7 +41,7 @@ from app.lti import outbox
 from app.lti.grades import score_of
 from app.lti.outbox import ClaimedScore, DeliveryProblem, Outcome
 from app.lti.platforms import PlatformRecord
-from app.storage.protocols import DEFAULT_PAGE_LIMIT, MAX_PAGE_LIMIT, Filed, QueuedScore
+from app.storage.protocols import DEFAULT_PAGE_LIMIT, MAX_PAGE_LIMIT, CompiledEntry, Filed, QueuedScore
 from physics.verdict import Outcome as Verdicts
 from physics.verdict import Verdict
 
@@ -144,8 +144,9 @@ class _Problem:
 
 
 class MemoryProblemStore:
-    def __init__(self, clock: Clock = utc_now) -> None:
+    def __init__(self, clock: Clock = utc_now, compiled: MemoryCompiledCache | None = None) -> None:
         self._clock = clock
+        self._compiled = compiled or MemoryCompiledCache()  # where a version's compilation goes
         self._problems: dict[str, _Problem] = {}
         self._lock = threading.Lock()
 
@@ -167,27 +168,49 @@ class MemoryProblemStore:
                 and (owner_key_id is None or problem.owner_key_id == owner_key_id)
             ]
 
-    def save_builtin(self, problem_id: str, document: Mapping[str, Any]) -> ProblemRecord:
+    def save_builtin(
+        self, problem_id: str, document: Mapping[str, Any], *, compiled: CompiledEntry | None = None
+    ) -> ProblemRecord:
         with self._lock:
             problem = self._problems.get(problem_id)
-            if problem is None:
-                return self._insert(problem_id, document, owner_key_id=None)
-            if problem.owner_key_id is not None:
+            if problem is not None and problem.owner_key_id is not None:
                 raise ProblemExists(problem_id)
-            return self._append(problem, document)
+            if problem is None:
+                record = self._insert(problem_id, document, owner_key_id=None)
+            else:
+                record = self._append(problem, document)
+            self._keep(compiled)
+            return record
 
-    def create(self, problem_id: str, document: Mapping[str, Any], *, owner_key_id: int) -> ProblemRecord:
+    def create(
+        self,
+        problem_id: str,
+        document: Mapping[str, Any],
+        *,
+        owner_key_id: int,
+        compiled: CompiledEntry | None = None,
+    ) -> ProblemRecord:
         with self._lock:
             if problem_id in self._problems:
                 raise ProblemExists(problem_id)
-            return self._insert(problem_id, document, owner_key_id=owner_key_id)
+            record = self._insert(problem_id, document, owner_key_id=owner_key_id)
+            self._keep(compiled)
+            return record
 
-    def add_version(self, problem_id: str, document: Mapping[str, Any]) -> ProblemRecord:
+    def add_version(
+        self, problem_id: str, document: Mapping[str, Any], *, compiled: CompiledEntry | None = None
+    ) -> ProblemRecord:
         with self._lock:
             problem = self._problems.get(problem_id)
             if problem is None or problem.retired_at is not None:
                 raise ProblemNotFound(problem_id)
-            return self._append(problem, document)
+            record = self._append(problem, document)
+            self._keep(compiled)
+            return record
+
+    def _keep(self, compiled: CompiledEntry | None) -> None:
+        if compiled is not None:
+            self._compiled.put(compiled.key, compiled.payload, compiled.mac)
 
     def retire(self, problem_id: str) -> ProblemRecord:
         with self._lock:

@@ -58,8 +58,18 @@ class ApiKeyStore(Protocol):
         ...
 
 
+@dataclass(frozen=True)
+class CompiledEntry:
+    """A compilation sealed by the catalog, stored with the version it compiles (`CompiledCache`'s row)."""
+
+    key: str
+    payload: bytes
+    mac: str
+
+
 class ProblemStore(Protocol):
-    """Problems and their versions: every version kept forever, ids never reused."""
+    """Problems and their versions: every version kept forever, ids never reused. A version may be
+    stored with its compilation (an upload's, from its vetting), in the same transaction."""
 
     def get(
         self, problem_id: str, version: int | None = None, *, include_retired: bool = False
@@ -71,15 +81,26 @@ class ProblemStore(Protocol):
         """The latest version of each problem, by id."""
         ...
 
-    def save_builtin(self, problem_id: str, document: Mapping[str, Any]) -> ProblemRecord:
+    def save_builtin(
+        self, problem_id: str, document: Mapping[str, Any], *, compiled: CompiledEntry | None = None
+    ) -> ProblemRecord:
         """Idempotent: an unchanged document keeps its version. ProblemExists if an instructor owns the id."""
         ...
 
-    def create(self, problem_id: str, document: Mapping[str, Any], *, owner_key_id: int) -> ProblemRecord:
-        """Version 1 of a new problem; ProblemExists if the id was ever used."""
+    def create(
+        self,
+        problem_id: str,
+        document: Mapping[str, Any],
+        *,
+        owner_key_id: int,
+        compiled: CompiledEntry | None = None,
+    ) -> ProblemRecord:
+        """Version 1 of a new problem; ProblemExists if the id was ever used (and nothing stored)."""
         ...
 
-    def add_version(self, problem_id: str, document: Mapping[str, Any]) -> ProblemRecord:
+    def add_version(
+        self, problem_id: str, document: Mapping[str, Any], *, compiled: CompiledEntry | None = None
+    ) -> ProblemRecord:
         """The next version (the latest document again changes nothing); ProblemNotFound if retired."""
         ...
 

@@ -24,7 +24,7 @@ from app.lti.outbox import ClaimedScore, DeliveryProblem, Outcome
 from app.lti.platforms import PlatformRecord
 from app.storage import sql_outbox as outbox
 from app.storage import sql_tool_keys as tool_keys
-from app.storage.protocols import DEFAULT_PAGE_LIMIT, Filed, QueuedScore
+from app.storage.protocols import DEFAULT_PAGE_LIMIT, CompiledEntry, Filed, QueuedScore
 from physics.verdict import Verdict
 
 Clock = Callable[[], datetime]
@@ -75,23 +75,46 @@ class SqlProblemStore:
                 session, include_retired=include_retired, owner_key_id=owner_key_id
             )
 
-    def save_builtin(self, problem_id: str, document: Mapping[str, Any]) -> ProblemRecord:
+    def save_builtin(
+        self, problem_id: str, document: Mapping[str, Any], *, compiled: CompiledEntry | None = None
+    ) -> ProblemRecord:
         with self._database.session() as session:
-            return problem_repository.save_builtin(session, problem_id, document, clock=self._clock)
+            record = problem_repository.save_builtin(session, problem_id, document, clock=self._clock)
+            _keep(session, compiled)
+            return record
 
-    def create(self, problem_id: str, document: Mapping[str, Any], *, owner_key_id: int) -> ProblemRecord:
+    def create(
+        self,
+        problem_id: str,
+        document: Mapping[str, Any],
+        *,
+        owner_key_id: int,
+        compiled: CompiledEntry | None = None,
+    ) -> ProblemRecord:
         with self._database.session() as session:
-            return problem_repository.create_problem(
+            record = problem_repository.create_problem(
                 session, problem_id, document, owner_key_id=owner_key_id, clock=self._clock
             )
+            _keep(session, compiled)
+            return record
 
-    def add_version(self, problem_id: str, document: Mapping[str, Any]) -> ProblemRecord:
+    def add_version(
+        self, problem_id: str, document: Mapping[str, Any], *, compiled: CompiledEntry | None = None
+    ) -> ProblemRecord:
         with self._database.session() as session:
-            return problem_repository.add_version(session, problem_id, document, clock=self._clock)
+            record = problem_repository.add_version(session, problem_id, document, clock=self._clock)
+            _keep(session, compiled)
+            return record
 
     def retire(self, problem_id: str) -> ProblemRecord:
         with self._database.session() as session:
             return problem_repository.retire_problem(session, problem_id, clock=self._clock)
+
+
+def _keep(session: Session, compiled: CompiledEntry | None) -> None:
+    """A version's compilation, in the version's own transaction."""
+    if compiled is not None:
+        compiled_repository.put_compiled(session, compiled.key, compiled.payload, compiled.mac)
 
 
 class SqlSubmissionStore:

@@ -6,7 +6,6 @@ from __future__ import annotations
 import logging
 import shutil
 import threading
-import time
 from pathlib import Path
 
 import pytest
@@ -16,6 +15,7 @@ from sqlalchemy import select
 from app import catalog as catalog_module
 from app.catalog import Catalog
 from app.db.models import CompiledProblemRow
+from app.derivation import DerivationPool, forget_derived
 from app.storage import sql_stores
 from physics.checking import check_answer
 from physics.verdict import Outcome
@@ -24,33 +24,46 @@ BANK = Path(__file__).resolve().parents[2] / "problems" / "bank"
 SECRET = "secret-for-the-test"
 
 
-def test_concurrent_first_requests_compile_a_problem_once(db, monkeypatch):
+@pytest.fixture
+def compilations(monkeypatch) -> list[str]:
+    """The ids of the problems the catalog has derived (rather than loaded), in order; none is
+    remembered from earlier tests."""
+    forget_derived()
+    compiled: list[str] = []
+    real = DerivationPool.submit
+
+    def counting(self, document):
+        compiled.append(document["id"])
+        return real(self, document)
+
+    monkeypatch.setattr(DerivationPool, "submit", counting)
+    yield compiled
+    forget_derived()
+
+
+_started: list[Catalog] = []
+
+
+@pytest.fixture(autouse=True)
+def _close_catalogs():
+    """Every catalog a test starts is closed after it: its derivation workers killed."""
+    yield
+    while _started:
+        _started.pop().close()
+
+
+def test_concurrent_first_requests_derive_a_problem_once(db, compilations):
     catalog = Catalog(sql_stores(db), "secret-for-the-test")
+    _started.append(catalog)
     catalog.sync_builtin()
     record = catalog.get("atwood")
-    running, most = [0], [0]
-    guard = threading.Lock()
-    real = catalog_module.compile_problem
-
-    def slow_compile(doc, version):
-        with guard:
-            running[0] += 1
-            most[0] = max(most[0], running[0])
-        time.sleep(0.2)
-        try:
-            return real(doc, version)
-        finally:
-            with guard:
-                running[0] -= 1
-
-    monkeypatch.setattr(catalog_module, "compile_problem", slow_compile)
     results = []
     threads = [threading.Thread(target=lambda: results.append(catalog.compiled(record))) for _ in range(4)]
     for thread in threads:
         thread.start()
     for thread in threads:
         thread.join()
-    assert most[0] == 1
+    assert compilations == ["atwood"]
     assert len(results) == 4 and len({id(r) for r in results}) == 1
 
 
@@ -63,23 +76,10 @@ def small_bank(tmp_path: Path) -> Path:
     return tmp_path
 
 
-@pytest.fixture
-def compilations(monkeypatch) -> list[str]:
-    """The ids of the problems the catalog compiles (rather than loads), in order."""
-    compiled: list[str] = []
-    real = catalog_module.compile_problem
-
-    def counting(doc, version):
-        compiled.append(doc.id)
-        return real(doc, version)
-
-    monkeypatch.setattr(catalog_module, "compile_problem", counting)
-    return compiled
-
-
 def start(db, bank: Path, secret: str = SECRET) -> Catalog:
     """What an instance does at start: store the bank, then compile or load every problem."""
     catalog = Catalog(sql_stores(db), secret, bank)
+    _started.append(catalog)
     catalog.sync_builtin()
     catalog.warm_up()
     return catalog
@@ -101,6 +101,7 @@ def test_a_restart_loads_the_compiled_bank_instead_of_compiling_it(db, small_ban
 def test_a_restart_is_warm_before_it_opens_any_stored_compilation(db, small_bank, monkeypatch):
     start(db, small_bank)
     restarted = Catalog(sql_stores(db), SECRET, small_bank)
+    _started.append(restarted)
     restarted.sync_builtin()
     warm_when_opened: list[bool] = []
     real_open = catalog_module.CompiledStore.open
@@ -174,18 +175,23 @@ def test_an_edited_bank_document_has_its_meaning_checked_again(db, small_bank):
         Catalog(sql_stores(db), SECRET, small_bank).sync_builtin()
 
 
-def test_a_first_start_derives_side_by_side_in_other_processes_and_a_restart_loads_it(
-    db, small_bank, compilations
+def test_a_first_start_derives_side_by_side_in_worker_processes_and_a_restart_loads_it(
+    db, small_bank, compilations, monkeypatch
 ):
-    first = Catalog(sql_stores(db), SECRET, small_bank, derive_jobs=2)
+    def in_this_process(*args):
+        raise AssertionError("derived in the server process")
+
+    monkeypatch.setattr("problems.compiled.build_problem", in_this_process)
+    first = Catalog(sql_stores(db), SECRET, small_bank, deriver=DerivationPool(workers=2))
+    _started.append(first)
     first.sync_builtin()
     first.warm_up()
-    assert compilations == []  # derived in processes of their own, not in this one
+    assert sorted(compilations) == ["atwood", "incline-pulley"]  # in workers (this process cannot)
     assert grades_its_reference(first)
     with db.session() as session:
         assert len(session.scalars(select(CompiledProblemRow)).all()) >= 2
     restarted = start(db, small_bank)
-    assert compilations == []  # stored by the first start: nothing derived again
+    assert sorted(compilations) == ["atwood", "incline-pulley"]  # stored by the first start
     assert grades_its_reference(restarted)
 
 
@@ -197,10 +203,12 @@ def test_a_problem_that_fails_to_derive_side_by_side_is_logged_and_the_others_ar
     broken["id"] = "broken-atwood"
     broken["parts"][0]["answer"] = "(m2 - m1)*g/(m1 + m2) + zeta"  # zeta: declared nowhere
     stores.problems.save_builtin("broken-atwood", broken)
-    catalog = Catalog(stores, SECRET, small_bank, derive_jobs=2)
+    catalog = Catalog(stores, SECRET, small_bank, deriver=DerivationPool(workers=2))
+    _started.append(catalog)
     catalog.sync_builtin()
     with caplog.at_level(logging.ERROR, logger="physcheck.catalog"):
         catalog.warm_up()
     assert catalog.warm.is_set()
-    assert [r.getMessage() for r in caplog.records] == ["could not compile problem 'broken-atwood' version 1"]
+    [logged] = [r.getMessage() for r in caplog.records]
+    assert logged.startswith("could not compile problem 'broken-atwood' version 1: ") and "zeta" in logged
     assert grades_its_reference(catalog)

@@ -11,11 +11,13 @@ import pytest
 import yaml
 from sqlalchemy import select
 
+from app.catalog import Catalog
 from app.cli import main
 from app.db import keys as key_repository
 from app.db.database import Database
 from app.db.models import ApiKey
 from app.settings import get_settings
+from app.storage import sql_stores
 
 BANK = Path(__file__).resolve().parents[2] / "problems" / "bank"
 
@@ -76,6 +78,16 @@ def test_problems_import_then_export_round_trips(database_env, tmp_path, capsys)
     assert main(["problems", "export", "cli-atwood"]) == 0
     exported = yaml.safe_load(capsys.readouterr().out)
     assert (exported["id"], exported["title"]) == ("cli-atwood", "Renamed")
+
+
+def test_an_imported_problem_is_stored_with_its_compilation(database_env, tmp_path, capsys):
+    assert main(["problems", "import", str(_atwood_file(tmp_path))]) == 0
+    database = Database(database_env)
+    try:
+        catalog = Catalog(sql_stores(database), get_settings().secret)
+        assert catalog.is_stored(catalog.get("cli-atwood"))  # a server opens it: nothing to derive
+    finally:
+        database.dispose()
 
 
 def test_problems_import_lists_every_error_and_fails(database_env, tmp_path, capsys):

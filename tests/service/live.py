@@ -39,7 +39,8 @@ class LiveServer:
         self.process: subprocess.Popen[bytes] | None = None
         self._log: IO[bytes] | None = None
 
-    def start(self, timeout: float = 120) -> LiveServer:
+    def start_in_background(self) -> LiveServer:
+        """Start the process and return at once (not waiting for it to be ready)."""
         self._log = self._log_path.open("ab")
         self.process = subprocess.Popen(
             [str(PHYSCHECK), "serve", "--port", str(self.port)],
@@ -48,6 +49,11 @@ class LiveServer:
             stderr=subprocess.STDOUT,
             start_new_session=True,
         )
+        return self
+
+    def start(self, timeout: float = 120) -> LiveServer:
+        self.start_in_background()
+        assert self.process is not None
         deadline = time.monotonic() + timeout
         while time.monotonic() < deadline:
             if self.process.poll() is not None:

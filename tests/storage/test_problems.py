@@ -6,7 +6,7 @@ import pytest
 
 from app.db.errors import ProblemExists, ProblemNotFound, ProblemVersionNotFound
 from app.db.records import Role
-from app.storage import Stores
+from app.storage import CompiledEntry, Stores
 from tests.storage.helpers import in_parallel
 
 V1 = {"id": "yo-yo", "title": "Yo-yo", "parts": [{"id": "acceleration"}]}
@@ -123,3 +123,27 @@ def test_parallel_new_versions_each_get_their_own_number(stores: Stores) -> None
     stores.problems.create("mine", V1, owner_key_id=_instructor(stores))
     numbers = in_parallel(5, lambda i: stores.problems.add_version("mine", {**V2, "revision": i}).version)
     assert sorted(numbers) == [2, 3, 4, 5, 6]
+
+
+def test_a_version_is_stored_with_its_compilation_and_a_refused_one_stores_neither(stores: Stores) -> None:
+    owner = _instructor(stores)
+    first = CompiledEntry("k1" * 32, b"compiled v1", "m1" * 32)
+    stores.problems.create("mine", V1, owner_key_id=owner, compiled=first)
+    assert stores.compiled.get(first.key) == (b"compiled v1", "m1" * 32)
+    second = CompiledEntry("k2" * 32, b"compiled v2", "m2" * 32)
+    assert stores.problems.add_version("mine", V2, compiled=second).version == 2
+    assert stores.compiled.get(second.key) == (b"compiled v2", "m2" * 32)
+
+    builtin = CompiledEntry("k4" * 32, b"compiled bank", "m4" * 32)
+    stores.problems.save_builtin("yo-yo", V1, compiled=builtin)
+    assert stores.compiled.get(builtin.key) == (b"compiled bank", "m4" * 32)
+
+    taken = CompiledEntry("k3" * 32, b"never stored", "m3" * 32)
+    with pytest.raises(ProblemExists):
+        stores.problems.create("mine", V1, owner_key_id=owner, compiled=taken)
+    with pytest.raises(ProblemExists):
+        stores.problems.save_builtin("mine", V1, compiled=taken)
+    stores.problems.retire("mine")
+    with pytest.raises(ProblemNotFound):
+        stores.problems.add_version("mine", V1, compiled=taken)
+    assert stores.compiled.get(taken.key) is None
