@@ -27,6 +27,7 @@ from problems.schema import ProblemDocument, SymbolDecl, format_path
 from problems.selftest import verify_problem
 from problems.semantics import semantic_errors
 from problems.symbols import symbol_spec, symbol_table
+from problems.usage import is_usage_fault
 
 NOT_DERIVED = "not derived: {why}; fix those first"
 NOT_SELF_TESTED = "not self-tested: {why}; the self-test runs once the document has no other errors"
@@ -56,6 +57,13 @@ class _Errors:
 
     def has(self, prefix: str) -> bool:
         return any(path == prefix or path.startswith((f"{prefix}.", f"{prefix}[")) for path, _ in self.items)
+
+    def model_broken(self) -> bool:
+        """A fault that keeps the model from loading (not one of which quantities the parts ask for)."""
+        return any(
+            (path == "model" or path.startswith(("model.", "model["))) and not is_usage_fault(message)
+            for path, message in self.items
+        )
 
     def __bool__(self) -> bool:
         return bool(self.items)
@@ -122,7 +130,7 @@ def _derivation(doc: ProblemDocument, errors: _Errors) -> list[ErrorItem]:
         return []
     if errors.has("symbols"):
         return [("model", NOT_DERIVED.format(why="the symbols have errors"))]
-    if errors.has("model"):
+    if errors.model_broken():
         return []  # it did not load: its faults are listed already
     return _attempt(lambda: derive_doc(doc, symbol_table(doc)))
 
