@@ -145,12 +145,16 @@ def _model_alone(data: Mapping[str, Any], errors: _Errors) -> list[ErrorItem]:
         return [("model", NOT_DERIVED.format(why="the symbols or the model section have errors"))]
     table: dict[str, sympy.Symbol] = {}
     dimensions = {}
+    ranges = {}
     try:
         for name, raw in declared.items():
             spec = symbol_spec(str(name), SymbolDecl.model_validate(raw))
             table[str(name)] = make_symbol(spec)
             if spec.dimension is not None:
                 dimensions[str(name)] = spec.dimension
+            if spec.has_range:
+                low, high = spec.low, spec.high
+                ranges[str(name)] = (-sympy.oo if low is None else low, sympy.oo if high is None else high)
     except (ValidationError, SpecError, AnswerError):
         return [("model", NOT_DERIVED.format(why="the symbols have errors"))]
-    return _attempt(lambda: derive(load_model(model, table, dimensions)))
+    return _attempt(lambda: derive(load_model(model, table, dimensions, ranges)))
