@@ -55,6 +55,8 @@ def usage_errors(doc: ProblemDocument, model: ModelQuantities) -> list[ErrorItem
                     f"the derivation; make the names match",
                 )
             )
+    if any(isinstance(p, SymbolicPart) and p.quantity and p.quantity not in model.names for p in doc.parts):
+        return errors  # a part names a quantity the model lacks: that fault (listing them all) comes first
     for name in unasked:
         if name not in model.unused:
             errors.append(
