@@ -17,6 +17,12 @@ from problems.modelinfo import ModelQuantities
 from problems.schema import ProblemDocument, format_path
 
 NEAR = 0.8  # difflib's ratio: one slip in a name of eight letters or more, or two in ten
+UNASKED = "no part asks for the quantity"
+
+
+def is_usage_fault(message: str) -> bool:
+    """A fault of which quantities parts ask for: the model still loads and derives."""
+    return message.startswith(UNASKED)
 
 
 def usage_errors(doc: ProblemDocument, model: ModelQuantities) -> list[ErrorItem]:
@@ -49,12 +55,14 @@ def usage_errors(doc: ProblemDocument, model: ModelQuantities) -> list[ErrorItem
                     f"the derivation; make the names match",
                 )
             )
+    if any(isinstance(p, SymbolicPart) and p.quantity and p.quantity not in model.names for p in doc.parts):
+        return errors  # a part names a quantity the model lacks: that fault (listing them all) comes first
     for name in unasked:
         if name not in model.unused:
             errors.append(
                 (
                     format_path(("model", "quantities", name)),
-                    f"no part asks for the quantity {name!r}: ask for it in a part (its id, `quantity:` or "
+                    f"{UNASKED} {name!r}: ask for it in a part (its id, `quantity:` or "
                     "`of:`), remove it, or list it under the model's `unused:` if it is derived on purpose",
                 )
             )

@@ -27,6 +27,7 @@ from problems.schema import ProblemDocument, SymbolDecl, format_path
 from problems.selftest import verify_problem
 from problems.semantics import semantic_errors
 from problems.symbols import symbol_spec, symbol_table
+from problems.usage import is_usage_fault
 
 NOT_DERIVED = "not derived: {why}; fix those first"
 NOT_SELF_TESTED = "not self-tested: {why}; the self-test runs once the document has no other errors"
@@ -56,6 +57,13 @@ class _Errors:
 
     def has(self, prefix: str) -> bool:
         return any(path == prefix or path.startswith((f"{prefix}.", f"{prefix}[")) for path, _ in self.items)
+
+    def model_broken(self) -> bool:
+        """A fault that keeps the model from loading (not one of which quantities the parts ask for)."""
+        return any(
+            (path == "model" or path.startswith(("model.", "model["))) and not is_usage_fault(message)
+            for path, message in self.items
+        )
 
     def __bool__(self) -> bool:
         return bool(self.items)
@@ -122,7 +130,7 @@ def _derivation(doc: ProblemDocument, errors: _Errors) -> list[ErrorItem]:
         return []
     if errors.has("symbols"):
         return [("model", NOT_DERIVED.format(why="the symbols have errors"))]
-    if errors.has("model"):
+    if errors.model_broken():
         return []  # it did not load: its faults are listed already
     return _attempt(lambda: derive_doc(doc, symbol_table(doc)))
 
@@ -137,12 +145,16 @@ def _model_alone(data: Mapping[str, Any], errors: _Errors) -> list[ErrorItem]:
         return [("model", NOT_DERIVED.format(why="the symbols or the model section have errors"))]
     table: dict[str, sympy.Symbol] = {}
     dimensions = {}
+    ranges = {}
     try:
         for name, raw in declared.items():
             spec = symbol_spec(str(name), SymbolDecl.model_validate(raw))
             table[str(name)] = make_symbol(spec)
             if spec.dimension is not None:
                 dimensions[str(name)] = spec.dimension
+            if spec.has_range:
+                low, high = spec.low, spec.high
+                ranges[str(name)] = (-sympy.oo if low is None else low, sympy.oo if high is None else high)
     except (ValidationError, SpecError, AnswerError):
         return [("model", NOT_DERIVED.format(why="the symbols have errors"))]
-    return _attempt(lambda: derive(load_model(model, table, dimensions)))
+    return _attempt(lambda: derive(load_model(model, table, dimensions, ranges)))

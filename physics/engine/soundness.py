@@ -21,6 +21,8 @@ from physics.symbolic.dimensional import DimensionMismatch, UnknownDimension, ex
 
 # what a quantity of that dimension is, to say so in a refusal
 _MAGNITUDES = {LENGTH: "a length", TIME: "a time", LENGTH / TIME: "a speed", TIME**-1: "a frequency"}
+# magnitudes by their kind; a range and a slip distance are displacements, signed by the axis
+_NEVER_NEGATIVE = MAGNITUDE_KINDS - {QuantityKind.RANGE, QuantityKind.SLIP_DISTANCE}
 
 
 def check_gravity(model: Model) -> None:
@@ -73,7 +75,7 @@ def check_magnitudes(model: Model, quantities: Mapping[str, sympy.Expr]) -> None
 
 def _magnitude(quantity: Quantity, value: sympy.Expr, dims: Mapping[sympy.Symbol, Dimension]) -> str | None:
     """What makes the quantity a magnitude ("a length"), or None when it may be signed."""
-    if quantity.kind in MAGNITUDE_KINDS:
+    if quantity.kind in _NEVER_NEGATIVE:
         words = quantity.kind.value.replace("_", " ")
         return f"{'an' if words[0] in 'aeiou' else 'a'} {words}, never negative"
     if quantity.kind is not QuantityKind.EXPRESSION or not dims:

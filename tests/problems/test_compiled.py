@@ -247,6 +247,7 @@ def test_a_part_with_only_a_typed_answer_is_labelled_not_derived() -> None:
     for part in data["parts"]:  # type: ignore[union-attr]
         if part.get("of") == "tension":
             part["of"] = "string_tension"
+    data["model"]["unused"] = ["tension"]  # type: ignore[index]  # derived, no part asks for it: on purpose
     compiled = compile_problem(parse_problem(data), 1)
     assert "string_tension" in compiled.not_derived
     assert "acceleration" not in compiled.not_derived

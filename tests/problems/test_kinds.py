@@ -55,9 +55,7 @@ def test_a_choice_part_compiles_to_a_question_graded_by_letter_or_text() -> None
 
 
 def test_a_choice_preview_names_the_choice_without_grading_it() -> None:
-    question = compile_problem(parse_problem(spring_with_choice()), use_model=False).question(
-        "friction_direction"
-    )
+    question = compile_problem(parse_problem(spring_with_choice()), use_model=False).question("friction_direction")
     read = question.read("b", None)  # type: ignore[arg-type]
     assert read.read_as is not None and read.read_as.text == "B" and read.error is None
     assert question.read("Z", None).error is not None  # type: ignore[arg-type]
