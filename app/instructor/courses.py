@@ -154,6 +154,7 @@ async def import_roster(course_id: int, request: Request, services: ServicesDep,
     upload = form.get("file")
     if isinstance(upload, UploadFile) and upload.filename:
         text = (await upload.read(MAX_ROSTER_BYTES + 1)).decode("utf-8", errors="replace")
+    await form.close()  # an empty file field is still a temporary file
     rows, problems = parse_roster(text)
 
     def save() -> dict[str, Any]:
