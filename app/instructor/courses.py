@@ -5,6 +5,7 @@ instructor's launch alike: `access.require_staff`).
     GET       /instructor/courses/{c}                    roster, sign-in links, assignments
     POST      /instructor/courses/{c}/roster             import a roster CSV (pasted or a file)
     POST      /instructor/courses/{c}/links              new personal sign-in links (shown once)
+    POST      /instructor/courses/{c}/join-code          a new join code, or none
     GET|POST  /instructor/courses/{c}/assignments/new    the assignment builder
     GET|POST  /instructor/assignments/{a}/edit           the same, for an assignment
     GET       /instructor/courses/{c}/gradebook          students x assignments, a student's parts
@@ -488,3 +489,18 @@ async def view_as_student(problem_id: str, request: Request, services: ServicesD
             secure=request.url.scheme == "https",
         )
     return response
+
+
+@router.post("/courses/{course_id}/join-code")
+async def join_code(course_id: int, request: Request, services: ServicesDep, who: Visitor) -> Response:
+    """A fresh join code for the course, or none (`enabled=0`)."""
+    await auth.require_csrf(request, services, who)
+    form = await request.form()
+    enabled = str(form.get("enabled") or "1") != "0"
+
+    def save() -> None:
+        _course(services, who, course_id, instructor=True)
+        services.stores.courses.set_join_code(course_id, course_sessions.new_join_code() if enabled else None)
+
+    await run_in_threadpool(save)
+    return RedirectResponse(f"/instructor/courses/{course_id}#join", status_code=303)

@@ -2,6 +2,7 @@
 
     GET  /s/{token}       "Sign in to <course>" (a button: mail scanners that fetch links spend nothing)
     POST /s/{token}       spends the link, sets the course session cookie, goes to /courses
+    GET|POST /join/{code} a course's join code: name and email, then signed in as its new student
     GET  /courses         my courses, each with its assignments: due date, status and score
     GET  /courses/{c}/assignments/{a}   the assignment: its problems, due date, late policy, score
 
@@ -58,8 +59,12 @@ async def sign_in(token: str, request: Request, context: LtiContextDep) -> Respo
             {"title": "Sign in", "token": token, "spent": True},
             status=400,
         )
-    cookie, _ = opened
     response = RedirectResponse("/courses", status_code=303)
+    _course_cookie(response, request, opened[0])
+    return response
+
+
+def _course_cookie(response: Response, request: Request, cookie: str) -> None:
     response.set_cookie(
         course_sessions.COOKIE,
         cookie,
@@ -69,6 +74,34 @@ async def sign_in(token: str, request: Request, context: LtiContextDep) -> Respo
         samesite="lax",
         secure=request.url.scheme == "https",
     )
+
+
+@router.get("/join/{code}")
+async def join_page(code: str, request: Request, context: LtiContextDep) -> HTMLResponse:
+    course = await run_in_threadpool(context.stores.courses.course_by_join_code, code[:32])
+    if course is None:
+        return page(request, "courses/join.html", {"title": "Join a course", "unknown": True}, status=404)
+    return page(
+        request, "courses/join.html", {"title": f"Join {course.title}", "course": course, "code": code}
+    )
+
+
+@router.post("/join/{code}")
+async def join(code: str, request: Request, context: LtiContextDep) -> Response:
+    form = await request.form(max_files=0, max_fields=10)
+    name = str(form.get("name") or "").strip()[:200]
+    email = str(form.get("email") or "").strip()[:254]
+    if not name:
+        course = await run_in_threadpool(context.stores.courses.course_by_join_code, code[:32])
+        values = {"title": "Join a course", "course": course, "code": code, "error": "Give your name."}
+        return page(request, "courses/join.html", values, status=422)
+    opened = await run_in_threadpool(
+        course_sessions.join, context.stores.courses, code, name, email, context.clock()
+    )
+    if opened is None:
+        return page(request, "courses/join.html", {"title": "Join a course", "unknown": True}, status=404)
+    response = RedirectResponse("/courses", status_code=303)
+    _course_cookie(response, request, opened[0])
     return response
 
 

@@ -332,3 +332,23 @@ def test_an_instructor_assigns_only_problems_that_are_theirs_to_use(client, teac
         headers=teacher,
     )
     assert naive.status_code == 422  # a date without its zone is ambiguous
+
+
+def test_a_join_code_enrols_a_new_student_and_signs_them_in(client, teacher):
+    course = _course(client, teacher)
+    _assignment(client, teacher, course, problems=["skier-friction"])
+    made = client.post(f"/v1/courses/{course}/join-code", json={}, headers=teacher).json()
+    code = made["join_code"]
+    assert made["url"].endswith(f"/join/{code}")
+    browser = TestClient(client.app)
+    assert "Join Mechanics" in browser.get(f"/join/{code}").text
+    assert browser.post(f"/join/{code}", data={"name": ""}, follow_redirects=False).status_code == 422
+    joined = browser.post(
+        f"/join/{code}", data={"name": "Lise", "email": "lise@x.org"}, follow_redirects=False
+    )
+    assert joined.status_code == 303 and joined.headers["location"] == "/courses"
+    assert [p["id"] for p in browser.get("/v1/problems").json()] == ["skier-friction"]
+    assert [s["name"] for s in client.get(f"/v1/courses/{course}/roster", headers=teacher).json()] == ["Lise"]
+    client.post(f"/v1/courses/{course}/join-code", json={"enabled": False}, headers=teacher)
+    late = TestClient(client.app)
+    assert late.post(f"/join/{code}", data={"name": "Otto"}, follow_redirects=False).status_code == 404

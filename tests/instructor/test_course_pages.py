@@ -133,3 +133,19 @@ def test_view_as_a_student_opens_the_student_page_in_the_instructors_session(
     assert [s.student for s in stores.submissions.page().items] == [f"preview:{key_id}"]  # filed apart
     forged = signed_in.post("/instructor/problems/yo-yo/as-student", data={"csrf": "nope"})
     assert forged.status_code == 403
+
+
+def test_the_course_page_makes_and_turns_off_a_join_code(signed_in: TestClient, stores: Stores):
+    course = _make_course(signed_in)
+    page = signed_in.get(f"/instructor/courses/{course}")
+    assert "No join code" in page.text
+    made = signed_in.post(
+        f"/instructor/courses/{course}/join-code", data={"csrf": csrf_of(page.text), "enabled": "1"}
+    )
+    assert made.status_code == 303
+    code = stores.courses.get_course(course).join_code
+    assert code and f"/join/{code}" in signed_in.get(f"/instructor/courses/{course}").text
+    signed_in.post(
+        f"/instructor/courses/{course}/join-code", data={"csrf": csrf_of(page.text), "enabled": "0"}
+    )
+    assert stores.courses.get_course(course).join_code is None
