@@ -149,3 +149,35 @@ def test_the_course_page_makes_and_turns_off_a_join_code(signed_in: TestClient, 
         f"/instructor/courses/{course}/join-code", data={"csrf": csrf_of(page.text), "enabled": "0"}
     )
     assert stores.courses.get_course(course).join_code is None
+
+
+def test_an_assignments_results_count_the_courses_students_only(signed_in: TestClient, stores: Stores):
+    from datetime import UTC, datetime, timedelta
+
+    from app.courses.records import AssignmentSpec, RosterRow
+    from tests.db.helpers import CORRECT
+
+    course = _make_course(signed_in)
+    stores.courses.import_roster(course, [RosterRow("s1", "Ada", ""), RosterRow("s2", "Alan", "")])
+    now = datetime.now(UTC)
+    made = stores.courses.create_assignment(
+        course, AssignmentSpec("HW", ("yo-yo",), now - timedelta(days=1), now + timedelta(days=1))
+    )
+    version = stores.problems.get("yo-yo").version
+    for student in (f"course:{course}:s1", "someone-outside"):
+        stores.submissions.file(
+            problem_id="yo-yo",
+            problem_version=version,
+            part_id="acceleration",
+            student=student,
+            answer="g",
+            verdict=CORRECT,
+            max_attempts=None,
+        )
+    page = signed_in.get(f"/instructor/assignments/{made.id}/results")
+    assert page.status_code == 200
+    row = re.search(r"<td>yo-yo</td><td>acceleration</td><td>(\d+)</td><td>(\d+)</td>", page.text)
+    assert row and row.groups() == ("1", "1")
+    other = TestClient(signed_in.app, follow_redirects=False)
+    sign_in(other, new_key(stores, "instructor", "Prof B"))
+    assert other.get(f"/instructor/assignments/{made.id}/results").status_code == 404

@@ -77,7 +77,7 @@ def _build(page: Any, title: str, problems: list[str], opens: datetime, due: dat
         page.get_by_label("Penalty per day late (%)").fill("10")
         page.get_by_label("At most (%)").fill("50")
     page.get_by_role("button", name="Save the assignment").click()
-    expect(page.get_by_role("cell", name=title)).to_be_visible()
+    expect(page.get_by_role("cell", name=title, exact=True)).to_be_visible()
 
 
 def _sign_in_student(browse: Callable[..., Any], url: str, width: int) -> Any:
@@ -187,6 +187,15 @@ def test_a_course_runs_from_roster_to_gradebook(live_server: LiveServer, browse:
     teacher.get_by_role("link", name="Student 01").click()
     expect(teacher.locator("#parts")).to_contain_text("friction_coefficient")
 
+    teacher.get_by_role("link", name="Mechanics 101").click()
+    teacher.get_by_role("link", name=re.compile(r"^Results\W+Homework 2")).click()
+    friction = teacher.get_by_role("row", name=re.compile(r"skier-friction friction_coefficient "))
+    expect(friction.locator("td").nth(2)).to_have_text("2")  # tried
+    expect(friction.locator("td").nth(3)).to_have_text("2")  # correct
+    expect(friction.locator("td").nth(4)).to_have_text("1")  # late (the other had an extension)
+    check_page(teacher, "course-results-desktop")
+    teacher.go_back()
+    teacher.go_back()
     phone_teacher = browse(teacher.url, width=WIDTHS["phone"], cookies=teacher.context.cookies())
     check_page(phone_teacher, "course-gradebook-phone")
     builder = browse(
