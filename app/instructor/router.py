@@ -162,6 +162,18 @@ def _record(services: Services, problem_id: str) -> ProblemRecord:
         raise PageError(404, "No such problem", f"There is no problem {problem_id!r}.") from None
 
 
+def _usable_record(services: Services, who: auth.Visitor, problem_id: str) -> ProblemRecord:
+    """The problem if the visitor may use it: built-in, shared to the bank, or an upload of their
+    courses' staff; to anyone else an upload does not exist."""
+    record = _record(services, problem_id)
+    colleagues = access.colleagues(services.stores, who.principal)
+    if not access.may_use_problem(
+        record, who.principal, colleagues, services.stores.courses.shared_problems()
+    ):
+        raise PageError(404, "No such problem", f"There is no problem {problem_id!r}.")
+    return record
+
+
 def _safe_next(target: str | None) -> str:
     if target and target.startswith("/instructor") and "//" not in target and "\\" not in target:
         return target
@@ -505,7 +517,7 @@ async def problem(
     student: Annotated[str | None, Query(max_length=200)] = None,
     saved: Annotated[int | None, Query()] = None,
 ) -> Response:
-    record = await run_in_threadpool(_record, services, problem_id)
+    record = await run_in_threadpool(_usable_record, services, who, problem_id)
     student = (student or "").strip() or None
     if student is not None and student != who.principal.own_identity:
         _need_key(who)
@@ -565,7 +577,7 @@ async def solution(
     student: Annotated[str | None, Query(max_length=200)] = None,
 ) -> Response:
     """The worked solution as a hand-out (print stylesheet), with one student's values or one's own."""
-    record = await run_in_threadpool(_record, services, problem_id)
+    record = await run_in_threadpool(_usable_record, services, who, problem_id)
     student = (student or "").strip() or None
     if student is not None and student != who.principal.own_identity:
         _need_key(who)
@@ -621,7 +633,7 @@ def _percent(part: results_repository.PartResults) -> str:
 @router.get("/problems/{problem_id}/results")
 async def results(problem_id: str, request: Request, services: ServicesDep, who: Visitor) -> Response:
     _need_key(who)
-    record = await run_in_threadpool(_record, services, problem_id)
+    record = await run_in_threadpool(_usable_record, services, who, problem_id)
 
     def load() -> dict[str, Any]:
         doc = services.catalog.document(record)

@@ -7,6 +7,7 @@ import re
 
 from fastapi.testclient import TestClient
 
+from app.courses.records import StaffRole
 from app.storage import Stores
 from tests.instructor.conftest import csrf_of, new_key, sign_in
 
@@ -181,3 +182,31 @@ def test_an_assignments_results_count_the_courses_students_only(signed_in: TestC
     other = TestClient(signed_in.app, follow_redirects=False)
     sign_in(other, new_key(stores, "instructor", "Prof B"))
     assert other.get(f"/instructor/assignments/{made.id}/results").status_code == 404
+
+
+def test_an_upload_is_seen_by_its_authors_courses_and_by_all_once_shared(
+    signed_in: TestClient, stores: Stores
+):
+    author = stores.keys.list()[0]
+    document = {**stores.problems.get("yo-yo").document, "id": "my-yo-yo", "title": "My yo-yo"}
+    stores.problems.create("my-yo-yo", document, owner_key_id=author.id)
+    other = TestClient(signed_in.app, follow_redirects=False)
+    colleague_key = new_key(stores, "instructor", "Prof C")
+    sign_in(other, new_key(stores, "instructor", "Prof B"))
+    paths = [
+        "/instructor/problems/my-yo-yo",
+        "/instructor/problems/my-yo-yo/solution",
+        "/instructor/problems/my-yo-yo/results",
+    ]
+    assert all(signed_in.get(path).status_code == 200 for path in paths)
+    assert all(other.get(path).status_code == 404 for path in paths)
+    assert "My yo-yo" not in other.get("/instructor/problems").text
+    # A colleague on the author's course staff uses it; after sharing, everyone does.
+    course = _make_course(signed_in)
+    colleague_id = next(k.id for k in stores.keys.list() if k.name == "Prof C")
+    stores.courses.add_staff(course, f"key:{colleague_id}", StaffRole.TA)
+    colleague = TestClient(signed_in.app, follow_redirects=False)
+    sign_in(colleague, colleague_key)
+    assert colleague.get("/instructor/problems/my-yo-yo").status_code == 200
+    stores.courses.share_problem("my-yo-yo", True)
+    assert other.get("/instructor/problems/my-yo-yo").status_code == 200
