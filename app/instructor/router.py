@@ -20,7 +20,8 @@ from __future__ import annotations
 import io
 import logging
 import re
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
+from dataclasses import replace
 from typing import Annotated, Any, Literal
 from urllib.parse import urlencode
 
@@ -172,6 +173,21 @@ def _usable_record(services: Services, who: auth.Visitor, problem_id: str) -> Pr
     ):
         raise PageError(404, "No such problem", f"There is no problem {problem_id!r}.")
     return record
+
+
+def _reachable(services: Services, who: auth.Visitor) -> Callable[[str], bool]:
+    """Whether the visitor may see a student's work (a student of their courses, or in no course);
+    remembered per student for one page."""
+    known: dict[str, bool] = {}
+
+    def reach(student: str) -> bool:
+        if student not in known:
+            known[student] = student == who.principal.own_identity or access.may_reach_student(
+                services.stores, who.principal, student
+            )
+        return known[student]
+
+    return reach
 
 
 def _safe_next(target: str | None) -> str:
@@ -724,9 +740,14 @@ async def submissions(
     problem, student = _filters(problem, student)
 
     def load() -> tuple[Any, list[str]]:
+        reach = _reachable(services, who)
+        if student is not None and not reach(student):
+            raise PageError(404, "No such student", f"There is no student {student!r} in your courses.")
         found = services.stores.submissions.page(
             problem_id=problem, student=student, limit=PAGE_SIZE, cursor=cursor or None
         )
+        # Students of courses the visitor does not teach are left out (a page may come back shorter).
+        found = replace(found, items=[item for item in found.items if reach(item.student)])
         return found, [record.id for record in services.catalog.list()]
 
     try:
@@ -764,8 +785,11 @@ async def submissions_csv(
     _need_key(who)
     problem, student = _filters(problem, student)
     out = io.StringIO()
+    reach = _reachable(services, who)
     await run_in_threadpool(
-        lambda: export_submissions(services.stores.submissions, problem, out, student=student, progress=False)
+        lambda: export_submissions(
+            services.stores.submissions, problem, out, student=student, progress=False, include=reach
+        )
     )
     name = "submissions" + (f"-{problem}" if problem and _ID.match(problem) else "") + ".csv"
     return Response(

@@ -210,3 +210,31 @@ def test_an_upload_is_seen_by_its_authors_courses_and_by_all_once_shared(
     assert colleague.get("/instructor/problems/my-yo-yo").status_code == 200
     stores.courses.share_problem("my-yo-yo", True)
     assert other.get("/instructor/problems/my-yo-yo").status_code == 200
+
+
+def test_the_submissions_page_and_csv_show_only_the_visitors_students(signed_in: TestClient, stores: Stores):
+    from app.courses.records import RosterRow
+    from tests.db.helpers import CORRECT
+
+    course = _make_course(signed_in)
+    stores.courses.import_roster(course, [RosterRow("s1", "Ada", "")])
+    version = stores.problems.get("yo-yo").version
+    for student in (f"course:{course}:s1", "keyed-student"):
+        stores.submissions.file(
+            problem_id="yo-yo",
+            problem_version=version,
+            part_id="acceleration",
+            student=student,
+            answer="g",
+            verdict=CORRECT,
+            max_attempts=None,
+        )
+    own = signed_in.get("/instructor/submissions")
+    assert f"course:{course}:s1" in own.text and "keyed-student" in own.text
+    other = TestClient(signed_in.app, follow_redirects=False)
+    sign_in(other, new_key(stores, "instructor", "Prof B"))
+    listed = other.get("/instructor/submissions")
+    assert f"course:{course}:s1" not in listed.text and "keyed-student" in listed.text
+    exported = other.get("/instructor/submissions.csv")
+    assert f"course:{course}:s1" not in exported.text and "keyed-student" in exported.text
+    assert other.get("/instructor/submissions", params={"student": f"course:{course}:s1"}).status_code == 404
