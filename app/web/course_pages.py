@@ -49,8 +49,22 @@ async def sign_in_page(token: str, request: Request) -> HTMLResponse:
     return page(request, "courses/sign_in.html", {"title": "Sign in", "token": token})
 
 
+def _cross_site(request: Request) -> bool:
+    """A form posted from another site (login CSRF: signing a victim in as someone else's student)."""
+    origin = request.headers.get("origin")
+    if origin is None or origin == "null":
+        return origin == "null"
+    return origin.rstrip("/") != str(request.base_url).rstrip("/")
+
+
+def _refused_cross_site(request: Request) -> HTMLResponse:
+    return page(request, "courses/signed_out.html", {"title": "Sign in", "cross_site": True}, status=403)
+
+
 @router.post("/s/{token}")
 async def sign_in(token: str, request: Request, context: LtiContextDep) -> Response:
+    if _cross_site(request):
+        return _refused_cross_site(request)
     opened = await run_in_threadpool(course_sessions.sign_in, context.stores.courses, token, context.clock())
     if opened is None:
         return page(
@@ -88,6 +102,8 @@ async def join_page(code: str, request: Request, context: LtiContextDep) -> HTML
 
 @router.post("/join/{code}")
 async def join(code: str, request: Request, context: LtiContextDep) -> Response:
+    if _cross_site(request):
+        return _refused_cross_site(request)
     form = await request.form(max_files=0, max_fields=10)
     name = str(form.get("name") or "").strip()[:200]
     email = str(form.get("email") or "").strip()[:254]

@@ -352,3 +352,14 @@ def test_a_join_code_enrols_a_new_student_and_signs_them_in(client, teacher):
     client.post(f"/v1/courses/{course}/join-code", json={"enabled": False}, headers=teacher)
     late = TestClient(client.app)
     assert late.post(f"/join/{code}", data={"name": "Otto"}, follow_redirects=False).status_code == 404
+
+
+def test_a_sign_in_posted_from_another_site_is_refused_and_the_link_kept(client, teacher):
+    course = _course(client, teacher)
+    _roster(client, teacher, course)
+    path = _links(client, teacher, course)[f"course:{course}:s001"].removeprefix("http://testserver")
+    browser = TestClient(client.app)
+    forged = browser.post(path, headers={"Origin": "https://evil.example"}, follow_redirects=False)
+    assert forged.status_code == 403 and "physcheck_course" not in forged.headers.get("set-cookie", "")
+    same_site = browser.post(path, headers={"Origin": "http://testserver"}, follow_redirects=False)
+    assert same_site.status_code == 303  # the link was not spent by the refused post
