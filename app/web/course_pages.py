@@ -54,7 +54,11 @@ def _cross_site(request: Request) -> bool:
     origin = request.headers.get("origin")
     if origin is None or origin == "null":
         return origin == "null"
-    return origin.rstrip("/") != str(request.base_url).rstrip("/")
+    ours = {str(request.base_url).rstrip("/")}
+    context = getattr(request.app.state, "lti", None)
+    if context is not None:
+        ours.add(context.origin)  # the configured public address (behind a proxy that rewrites Host)
+    return origin.rstrip("/") not in ours
 
 
 def _refused_cross_site(request: Request) -> HTMLResponse:
