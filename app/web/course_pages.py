@@ -50,10 +50,15 @@ async def sign_in_page(token: str, request: Request) -> HTMLResponse:
 
 
 def _cross_site(request: Request) -> bool:
-    """A form posted from another site (login CSRF: signing a victim in as someone else's student)."""
+    """A form posted from another site (login CSRF: signing a victim in as someone else's student).
+    Browsers say where a request comes from in Sec-Fetch-Site; without it, a real Origin is compared
+    (our pages send no Referer, so a same-site form may carry `Origin: null`)."""
+    fetch_site = request.headers.get("sec-fetch-site")
+    if fetch_site is not None:
+        return fetch_site not in ("same-origin", "none")
     origin = request.headers.get("origin")
     if origin is None or origin == "null":
-        return origin == "null"
+        return False
     ours = {str(request.base_url).rstrip("/")}
     context = getattr(request.app.state, "lti", None)
     if context is not None:
