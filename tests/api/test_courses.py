@@ -166,8 +166,9 @@ def test_a_student_sees_only_the_problems_of_their_open_assignments(client, teac
         )
         assert previewed.status_code == 404
     assert browser.get("/p/skier-friction").status_code == 200
-    listed = browser.get("/problems").text
-    assert "skier-friction" in listed and "/p/yo-yo" not in listed
+    home = browser.get("/problems", follow_redirects=False)  # the bank is not a course student's home
+    assert home.status_code == 303 and home.headers["location"] == "/courses"
+    assert "/p/yo-yo" not in browser.get("/problems/content", headers=csrf).text
 
 
 def test_no_instructor_reaches_another_courses_students(client, teacher, other_teacher):
