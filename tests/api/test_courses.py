@@ -367,3 +367,39 @@ def test_a_sign_in_posted_from_another_site_is_refused_and_the_link_kept(client,
         path, headers={"Sec-Fetch-Site": "same-origin", "Origin": "null"}, follow_redirects=False
     )
     assert same_site.status_code == 303  # the link was not spent by the refused post
+
+
+@pytest.mark.parametrize(
+    ("solutions", "due_in", "released"),
+    [
+        ("never", -timedelta(days=1), False),
+        ("after_due", timedelta(days=1), False),
+        ("after_due", -timedelta(days=1), True),
+    ],
+)
+def test_worked_solutions_open_by_the_assignments_release_policy(
+    client, teacher, solutions, due_in, released
+):
+    course = _course(client, teacher)
+    _roster(client, teacher, course)
+    now = datetime.now(UTC)
+    _assignment(
+        client,
+        teacher,
+        course,
+        problems=["skier-friction"],
+        solutions=solutions,
+        opens_at=_iso(now - timedelta(days=3)),
+        due_at=_iso(now + due_in),
+    )
+    browser, _ = _signed_in(client, _links(client, teacher, course)[f"course:{course}:s001"])
+    page = browser.get("/p/skier-friction/solution")
+    assert page.status_code == 200
+    said = {
+        "never": "does not release worked solutions for this assignment",
+        "after_due": "opens after the due date",
+    }
+    if released:
+        assert "Not released yet" not in page.text and "Solutions, method by method" in page.text
+    else:
+        assert "Not released yet" in page.text and said[solutions] in page.text
