@@ -57,6 +57,7 @@ def assigned_problems(stores: Stores, student: str, now: datetime) -> set[str] |
     courses = stores.courses.courses_enrolled(student)
     if not courses:
         return None
+    # (A problem launched by its own LMS link is opened too, `opening` says; lists show assignments'.)
     return {
         problem
         for course in courses
@@ -126,7 +127,8 @@ def opening(stores: Stores, student: str, problem_id: str, now: datetime) -> Ope
                 extension = stores.courses.extensions(assignment.id).get(student)
                 found.append((course, assignment, due_for(assignment, extension)))
     if not found:
-        return None
+        # A problem the student was launched into by its own LMS link (graded there) stays theirs.
+        return Opening(None, None, True, None) if stores.outbox.launched(student, problem_id) else None
     for course, assignment, due in found:
         if accepting(assignment, due, now):
             return Opening(assignment, course, True, due)

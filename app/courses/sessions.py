@@ -9,7 +9,7 @@ import secrets
 from datetime import datetime, timedelta
 
 from app.auth import Role
-from app.courses.records import CourseSession
+from app.courses.records import CourseSession, roster_identity
 from app.lti.sessions import SessionRecord, token_hash
 from app.storage.protocols import CourseStore
 
@@ -86,3 +86,21 @@ _JOIN_ALPHABET = "ABCDEFGHJKLMNPQRSTUVWXYZ23456789"  # no 0/O or 1/I to misread
 
 def new_join_code() -> str:
     return "".join(secrets.choice(_JOIN_ALPHABET) for _ in range(8))
+
+
+def join(
+    courses: CourseStore, code: str, name: str, email: str, now: datetime
+) -> tuple[str, CourseSession] | None:
+    """Enrol a new student by the course's join code and sign them in: (cookie value, session), or
+    None for an unknown code. Each join is a new student of the course (their own identity)."""
+    if not code or len(code) > 32:
+        return None
+    course = courses.course_by_join_code(code)
+    if course is None:
+        return None
+    student = roster_identity(course.id, "join-" + secrets.token_hex(6))
+    courses.enrol(course.id, student, name, email)
+    session = CourseSession(course.id, student, name, secrets.token_urlsafe(32), now + SESSION_LIFETIME)
+    cookie = secrets.token_urlsafe(32)
+    courses.save_session(token_hash(cookie), session, now)
+    return cookie, session

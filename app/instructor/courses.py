@@ -5,9 +5,11 @@ instructor's launch alike: `access.require_staff`).
     GET       /instructor/courses/{c}                    roster, sign-in links, assignments
     POST      /instructor/courses/{c}/roster             import a roster CSV (pasted or a file)
     POST      /instructor/courses/{c}/links              new personal sign-in links (shown once)
+    POST      /instructor/courses/{c}/join-code          a new join code, or none
     GET|POST  /instructor/courses/{c}/assignments/new    the assignment builder
     GET|POST  /instructor/assignments/{a}/edit           the same, for an assignment
     GET       /instructor/courses/{c}/gradebook          students x assignments, a student's parts
+    GET       /instructor/assignments/{a}/results        how the course did on each part
     POST      /instructor/courses/{c}/extensions         a student's own due date
     POST      /instructor/problems/{id}/as-student       view the student's page in one's own session
 """
@@ -154,6 +156,7 @@ async def import_roster(course_id: int, request: Request, services: ServicesDep,
     upload = form.get("file")
     if isinstance(upload, UploadFile) and upload.filename:
         text = (await upload.read(MAX_ROSTER_BYTES + 1)).decode("utf-8", errors="replace")
+    await form.close()  # an empty file field is still a temporary file
     rows, problems = parse_roster(text)
 
     def save() -> dict[str, Any]:
@@ -487,3 +490,72 @@ async def view_as_student(problem_id: str, request: Request, services: ServicesD
             secure=request.url.scheme == "https",
         )
     return response
+
+
+@router.post("/courses/{course_id}/join-code")
+async def join_code(course_id: int, request: Request, services: ServicesDep, who: Visitor) -> Response:
+    """A fresh join code for the course, or none (`enabled=0`)."""
+    await auth.require_csrf(request, services, who)
+    form = await request.form()
+    enabled = str(form.get("enabled") or "1") != "0"
+
+    def save() -> None:
+        _course(services, who, course_id, instructor=True)
+        services.stores.courses.set_join_code(course_id, course_sessions.new_join_code() if enabled else None)
+
+    await run_in_threadpool(save)
+    return RedirectResponse(f"/instructor/courses/{course_id}#join", status_code=303)
+
+
+@router.get("/assignments/{assignment_id}/results")
+async def assignment_results(
+    assignment_id: int, request: Request, services: ServicesDep, who: Visitor
+) -> Response:
+    """How the course's students did on each part of an assignment (from the gradebook: only this
+    course's students, late penalties applied to the scores)."""
+    now = request.app.state.lti.clock()
+
+    def load() -> dict[str, Any]:
+        try:
+            record = services.stores.courses.get_assignment(assignment_id)
+        except AssignmentNotFound:
+            raise PageError(
+                404, "No such assignment", f"There is no assignment {assignment_id} of yours."
+            ) from None
+        course = _course(services, who, record.course_id)
+        book = service.course_gradebook(services.stores, services.catalog, course, now)
+        cells = [book.cell(e.student, record.id) for e in book.students]
+        rows = []
+        for index, part in enumerate(service.assignment_parts(services.catalog, record)):
+            done = [c.parts[index] for c in cells if index < len(c.parts)]
+            tried = [p for p in done if p.attempts]
+            rows.append(
+                {
+                    "problem": part.problem_id,
+                    "part": part.part_id,
+                    "tried": len(tried),
+                    "correct": sum(p.solved for p in tried),
+                    "late": sum(p.late for p in tried),
+                    "mean": sum(p.score for p in done) / len(done) if done else 0.0,
+                    "attempts": sum(p.attempts for p in tried) / len(tried) if tried else 0.0,
+                }
+            )
+        statuses: dict[str, int] = {}
+        for cell in cells:
+            statuses[cell.status.value] = statuses.get(cell.status.value, 0) + 1
+        return {
+            "course": course,
+            "record": record,
+            "rows": rows,
+            "students": len(cells),
+            "statuses": statuses,
+        }
+
+    values = await run_in_threadpool(load)
+    return await _page(
+        request,
+        services,
+        who,
+        "instructor/assignment_results.html",
+        {"title": f"Results: {values['record'].title}", **values},
+    )

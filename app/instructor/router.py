@@ -20,7 +20,8 @@ from __future__ import annotations
 import io
 import logging
 import re
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
+from dataclasses import replace
 from typing import Annotated, Any, Literal
 from urllib.parse import urlencode
 
@@ -161,6 +162,33 @@ def _record(services: Services, problem_id: str) -> ProblemRecord:
         return services.catalog.get(problem_id)
     except StoredProblemNotFound:
         raise PageError(404, "No such problem", f"There is no problem {problem_id!r}.") from None
+
+
+def _usable_record(services: Services, who: auth.Visitor, problem_id: str) -> ProblemRecord:
+    """The problem if the visitor may use it: built-in, shared to the bank, or an upload of their
+    courses' staff; to anyone else an upload does not exist."""
+    record = _record(services, problem_id)
+    colleagues = access.colleagues(services.stores, who.principal)
+    if not access.may_use_problem(
+        record, who.principal, colleagues, services.stores.courses.shared_problems()
+    ):
+        raise PageError(404, "No such problem", f"There is no problem {problem_id!r}.")
+    return record
+
+
+def _reachable(services: Services, who: auth.Visitor) -> Callable[[str], bool]:
+    """Whether the visitor may see a student's work (a student of their courses, or in no course);
+    remembered per student for one page."""
+    known: dict[str, bool] = {}
+
+    def reach(student: str) -> bool:
+        if student not in known:
+            known[student] = student == who.principal.own_identity or access.may_reach_student(
+                services.stores, who.principal, student
+            )
+        return known[student]
+
+    return reach
 
 
 def _safe_next(target: str | None) -> str:
@@ -520,7 +548,7 @@ async def problem(
     student: Annotated[str | None, Query(max_length=200)] = None,
     saved: Annotated[int | None, Query()] = None,
 ) -> Response:
-    record = await run_in_threadpool(_record, services, problem_id)
+    record = await run_in_threadpool(_usable_record, services, who, problem_id)
     student = (student or "").strip() or None
     if student is not None and student != who.principal.own_identity:
         _need_key(who)
@@ -580,7 +608,7 @@ async def solution(
     student: Annotated[str | None, Query(max_length=200)] = None,
 ) -> Response:
     """The worked solution as a hand-out (print stylesheet), with one student's values or one's own."""
-    record = await run_in_threadpool(_record, services, problem_id)
+    record = await run_in_threadpool(_usable_record, services, who, problem_id)
     student = (student or "").strip() or None
     if student is not None and student != who.principal.own_identity:
         _need_key(who)
@@ -636,7 +664,7 @@ def _percent(part: results_repository.PartResults) -> str:
 @router.get("/problems/{problem_id}/results")
 async def results(problem_id: str, request: Request, services: ServicesDep, who: Visitor) -> Response:
     _need_key(who)
-    record = await run_in_threadpool(_record, services, problem_id)
+    record = await run_in_threadpool(_usable_record, services, who, problem_id)
 
     def load() -> dict[str, Any]:
         doc = services.catalog.document(record)
@@ -727,9 +755,14 @@ async def submissions(
     problem, student = _filters(problem, student)
 
     def load() -> tuple[Any, list[str]]:
+        reach = _reachable(services, who)
+        if student is not None and not reach(student):
+            raise PageError(404, "No such student", f"There is no student {student!r} in your courses.")
         found = services.stores.submissions.page(
             problem_id=problem, student=student, limit=PAGE_SIZE, cursor=cursor or None
         )
+        # Students of courses the visitor does not teach are left out (a page may come back shorter).
+        found = replace(found, items=[item for item in found.items if reach(item.student)])
         return found, [record.id for record in services.catalog.list()]
 
     try:
@@ -767,8 +800,11 @@ async def submissions_csv(
     _need_key(who)
     problem, student = _filters(problem, student)
     out = io.StringIO()
+    reach = _reachable(services, who)
     await run_in_threadpool(
-        lambda: export_submissions(services.stores.submissions, problem, out, student=student, progress=False)
+        lambda: export_submissions(
+            services.stores.submissions, problem, out, student=student, progress=False, include=reach
+        )
     )
     name = "submissions" + (f"-{problem}" if problem and _ID.match(problem) else "") + ".csv"
     return Response(

@@ -212,6 +212,10 @@ class ScoreOutbox(Protocol):
         every score waiting for it."""
         ...
 
+    def launched(self, student: str, problem_id: str) -> bool:
+        """Whether the student was launched into the problem from an LMS link with a grade target."""
+        ...
+
     def delivery_problems(self, *, limit: int = 200) -> list[DeliveryProblem]:
         """Scores failed, still being retried, or superseded after failed tries, newest first."""
         ...

@@ -7,7 +7,7 @@ from collections.abc import Callable, Collection, Mapping, Sequence
 from datetime import datetime
 from typing import Any
 
-from sqlalchemy import select
+from sqlalchemy import exists, select
 from sqlalchemy.orm import Session
 
 from app.db import class_results as results_repository
@@ -218,6 +218,13 @@ class SqlScoreOutbox:
 
     def finish(self, score: ClaimedScore, outcome: Outcome, now: datetime) -> None:
         outbox.finish(self._database, score, outcome, now)
+
+    def launched(self, student: str, problem_id: str) -> bool:
+        query = select(
+            exists().where(LtiGradeTarget.student == student, LtiGradeTarget.problem_id == problem_id)
+        )
+        with self._database.session(read_only=True) as session:
+            return bool(session.scalar(query))
 
     def delivery_problems(self, *, limit: int = 200) -> list[DeliveryProblem]:
         with self._database.session(read_only=True) as session:

@@ -2,6 +2,7 @@
 
     GET  /s/{token}       "Sign in to <course>" (a button: mail scanners that fetch links spend nothing)
     POST /s/{token}       spends the link, sets the course session cookie, goes to /courses
+    GET|POST /join/{code} a course's join code: name and email, then signed in as its new student
     GET  /courses         my courses, each with its assignments: due date, status and score
     GET  /courses/{c}/assignments/{a}   the assignment: its problems, due date, late policy, score
 
@@ -48,8 +49,31 @@ async def sign_in_page(token: str, request: Request) -> HTMLResponse:
     return page(request, "courses/sign_in.html", {"title": "Sign in", "token": token})
 
 
+def _cross_site(request: Request) -> bool:
+    """A form posted from another site (login CSRF: signing a victim in as someone else's student).
+    Browsers say where a request comes from in Sec-Fetch-Site; without it, a real Origin is compared
+    (our pages send no Referer, so a same-site form may carry `Origin: null`)."""
+    fetch_site = request.headers.get("sec-fetch-site")
+    if fetch_site is not None:
+        return fetch_site not in ("same-origin", "none")
+    origin = request.headers.get("origin")
+    if origin is None or origin == "null":
+        return False
+    ours = {str(request.base_url).rstrip("/")}
+    context = getattr(request.app.state, "lti", None)
+    if context is not None:
+        ours.add(context.origin)  # the configured public address (behind a proxy that rewrites Host)
+    return origin.rstrip("/") not in ours
+
+
+def _refused_cross_site(request: Request) -> HTMLResponse:
+    return page(request, "courses/signed_out.html", {"title": "Sign in", "cross_site": True}, status=403)
+
+
 @router.post("/s/{token}")
 async def sign_in(token: str, request: Request, context: LtiContextDep) -> Response:
+    if _cross_site(request):
+        return _refused_cross_site(request)
     opened = await run_in_threadpool(course_sessions.sign_in, context.stores.courses, token, context.clock())
     if opened is None:
         return page(
@@ -58,8 +82,12 @@ async def sign_in(token: str, request: Request, context: LtiContextDep) -> Respo
             {"title": "Sign in", "token": token, "spent": True},
             status=400,
         )
-    cookie, _ = opened
     response = RedirectResponse("/courses", status_code=303)
+    _course_cookie(response, request, opened[0])
+    return response
+
+
+def _course_cookie(response: Response, request: Request, cookie: str) -> None:
     response.set_cookie(
         course_sessions.COOKIE,
         cookie,
@@ -69,6 +97,36 @@ async def sign_in(token: str, request: Request, context: LtiContextDep) -> Respo
         samesite="lax",
         secure=request.url.scheme == "https",
     )
+
+
+@router.get("/join/{code}")
+async def join_page(code: str, request: Request, context: LtiContextDep) -> HTMLResponse:
+    course = await run_in_threadpool(context.stores.courses.course_by_join_code, code[:32])
+    if course is None:
+        return page(request, "courses/join.html", {"title": "Join a course", "unknown": True}, status=404)
+    return page(
+        request, "courses/join.html", {"title": f"Join {course.title}", "course": course, "code": code}
+    )
+
+
+@router.post("/join/{code}")
+async def join(code: str, request: Request, context: LtiContextDep) -> Response:
+    if _cross_site(request):
+        return _refused_cross_site(request)
+    form = await request.form(max_files=0, max_fields=10)
+    name = str(form.get("name") or "").strip()[:200]
+    email = str(form.get("email") or "").strip()[:254]
+    if not name:
+        course = await run_in_threadpool(context.stores.courses.course_by_join_code, code[:32])
+        values = {"title": "Join a course", "course": course, "code": code, "error": "Give your name."}
+        return page(request, "courses/join.html", values, status=422)
+    opened = await run_in_threadpool(
+        course_sessions.join, context.stores.courses, code, name, email, context.clock()
+    )
+    if opened is None:
+        return page(request, "courses/join.html", {"title": "Join a course", "unknown": True}, status=404)
+    response = RedirectResponse("/courses", status_code=303)
+    _course_cookie(response, request, opened[0])
     return response
 
 

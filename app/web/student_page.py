@@ -19,7 +19,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from fastapi import APIRouter, Request
-from fastapi.responses import HTMLResponse, Response
+from fastapi.responses import HTMLResponse, RedirectResponse, Response
 from starlette.concurrency import run_in_threadpool
 
 from app.auth import bearer_token
@@ -283,6 +283,10 @@ async def problems_page(request: Request, context: LtiContextDep) -> Response:
     ancestors = await _ancestors(context)
     caller = await _caller(request, context, allow_key=False)
     values: dict[str, Any] = {"title": "Your problems", "scripts": [SCRIPT], "mode": "key"}
+    if caller is not None:
+        enrolled = await run_in_threadpool(context.stores.courses.courses_enrolled, caller.student)
+        if enrolled:
+            return RedirectResponse("/courses", status_code=303)  # a course's student: their assignments
     if caller is not None:
         rows = await run_in_threadpool(_problem_list, request, caller.student)
         values.update(mode="session", problems=rows, student=caller.student)

@@ -166,8 +166,9 @@ def test_a_student_sees_only_the_problems_of_their_open_assignments(client, teac
         )
         assert previewed.status_code == 404
     assert browser.get("/p/skier-friction").status_code == 200
-    listed = browser.get("/problems").text
-    assert "skier-friction" in listed and "/p/yo-yo" not in listed
+    home = browser.get("/problems", follow_redirects=False)  # the bank is not a course student's home
+    assert home.status_code == 303 and home.headers["location"] == "/courses"
+    assert "/p/yo-yo" not in browser.get("/problems/content", headers=csrf).text
 
 
 def test_no_instructor_reaches_another_courses_students(client, teacher, other_teacher):
@@ -332,3 +333,73 @@ def test_an_instructor_assigns_only_problems_that_are_theirs_to_use(client, teac
         headers=teacher,
     )
     assert naive.status_code == 422  # a date without its zone is ambiguous
+
+
+def test_a_join_code_enrols_a_new_student_and_signs_them_in(client, teacher):
+    course = _course(client, teacher)
+    _assignment(client, teacher, course, problems=["skier-friction"])
+    made = client.post(f"/v1/courses/{course}/join-code", json={}, headers=teacher).json()
+    code = made["join_code"]
+    assert made["url"].endswith(f"/join/{code}")
+    browser = TestClient(client.app)
+    assert "Join Mechanics" in browser.get(f"/join/{code}").text
+    assert browser.post(f"/join/{code}", data={"name": ""}, follow_redirects=False).status_code == 422
+    joined = browser.post(
+        f"/join/{code}", data={"name": "Lise", "email": "lise@x.org"}, follow_redirects=False
+    )
+    assert joined.status_code == 303 and joined.headers["location"] == "/courses"
+    assert [p["id"] for p in browser.get("/v1/problems").json()] == ["skier-friction"]
+    assert [s["name"] for s in client.get(f"/v1/courses/{course}/roster", headers=teacher).json()] == ["Lise"]
+    client.post(f"/v1/courses/{course}/join-code", json={"enabled": False}, headers=teacher)
+    late = TestClient(client.app)
+    assert late.post(f"/join/{code}", data={"name": "Otto"}, follow_redirects=False).status_code == 404
+
+
+def test_a_sign_in_posted_from_another_site_is_refused_and_the_link_kept(client, teacher):
+    course = _course(client, teacher)
+    _roster(client, teacher, course)
+    path = _links(client, teacher, course)[f"course:{course}:s001"].removeprefix("http://testserver")
+    browser = TestClient(client.app)
+    for headers in ({"Origin": "https://evil.example"}, {"Sec-Fetch-Site": "cross-site", "Origin": "null"}):
+        forged = browser.post(path, headers=headers, follow_redirects=False)
+        assert forged.status_code == 403 and "physcheck_course" not in forged.headers.get("set-cookie", "")
+    same_site = browser.post(
+        path, headers={"Sec-Fetch-Site": "same-origin", "Origin": "null"}, follow_redirects=False
+    )
+    assert same_site.status_code == 303  # the link was not spent by the refused post
+
+
+@pytest.mark.parametrize(
+    ("solutions", "due_in", "released"),
+    [
+        ("never", -timedelta(days=1), False),
+        ("after_due", timedelta(days=1), False),
+        ("after_due", -timedelta(days=1), True),
+    ],
+)
+def test_worked_solutions_open_by_the_assignments_release_policy(
+    client, teacher, solutions, due_in, released
+):
+    course = _course(client, teacher)
+    _roster(client, teacher, course)
+    now = datetime.now(UTC)
+    _assignment(
+        client,
+        teacher,
+        course,
+        problems=["skier-friction"],
+        solutions=solutions,
+        opens_at=_iso(now - timedelta(days=3)),
+        due_at=_iso(now + due_in),
+    )
+    browser, _ = _signed_in(client, _links(client, teacher, course)[f"course:{course}:s001"])
+    page = browser.get("/p/skier-friction/solution")
+    assert page.status_code == 200
+    said = {
+        "never": "does not release worked solutions for this assignment",
+        "after_due": "opens after the due date",
+    }
+    if released:
+        assert "Not released yet" not in page.text and "Solutions, method by method" in page.text
+    else:
+        assert "Not released yet" in page.text and said[solutions] in page.text

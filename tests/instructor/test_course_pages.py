@@ -7,6 +7,7 @@ import re
 
 from fastapi.testclient import TestClient
 
+from app.courses.records import StaffRole
 from app.storage import Stores
 from tests.instructor.conftest import csrf_of, new_key, sign_in
 
@@ -133,3 +134,107 @@ def test_view_as_a_student_opens_the_student_page_in_the_instructors_session(
     assert [s.student for s in stores.submissions.page().items] == [f"preview:{key_id}"]  # filed apart
     forged = signed_in.post("/instructor/problems/yo-yo/as-student", data={"csrf": "nope"})
     assert forged.status_code == 403
+
+
+def test_the_course_page_makes_and_turns_off_a_join_code(signed_in: TestClient, stores: Stores):
+    course = _make_course(signed_in)
+    page = signed_in.get(f"/instructor/courses/{course}")
+    assert "No join code" in page.text
+    made = signed_in.post(
+        f"/instructor/courses/{course}/join-code", data={"csrf": csrf_of(page.text), "enabled": "1"}
+    )
+    assert made.status_code == 303
+    code = stores.courses.get_course(course).join_code
+    assert code and f"/join/{code}" in signed_in.get(f"/instructor/courses/{course}").text
+    signed_in.post(
+        f"/instructor/courses/{course}/join-code", data={"csrf": csrf_of(page.text), "enabled": "0"}
+    )
+    assert stores.courses.get_course(course).join_code is None
+
+
+def test_an_assignments_results_count_the_courses_students_only(signed_in: TestClient, stores: Stores):
+    from datetime import UTC, datetime, timedelta
+
+    from app.courses.records import AssignmentSpec, RosterRow
+    from tests.db.helpers import CORRECT
+
+    course = _make_course(signed_in)
+    stores.courses.import_roster(course, [RosterRow("s1", "Ada", ""), RosterRow("s2", "Alan", "")])
+    now = datetime.now(UTC)
+    made = stores.courses.create_assignment(
+        course, AssignmentSpec("HW", ("yo-yo",), now - timedelta(days=1), now + timedelta(days=1))
+    )
+    version = stores.problems.get("yo-yo").version
+    for student in (f"course:{course}:s1", "someone-outside"):
+        stores.submissions.file(
+            problem_id="yo-yo",
+            problem_version=version,
+            part_id="acceleration",
+            student=student,
+            answer="g",
+            verdict=CORRECT,
+            max_attempts=None,
+        )
+    page = signed_in.get(f"/instructor/assignments/{made.id}/results")
+    assert page.status_code == 200
+    row = re.search(r"<td>yo-yo</td><td>acceleration</td><td>(\d+)</td><td>(\d+)</td>", page.text)
+    assert row and row.groups() == ("1", "1")
+    other = TestClient(signed_in.app, follow_redirects=False)
+    sign_in(other, new_key(stores, "instructor", "Prof B"))
+    assert other.get(f"/instructor/assignments/{made.id}/results").status_code == 404
+
+
+def test_an_upload_is_seen_by_its_authors_courses_and_by_all_once_shared(
+    signed_in: TestClient, stores: Stores
+):
+    author = stores.keys.list()[0]
+    document = {**stores.problems.get("yo-yo").document, "id": "my-yo-yo", "title": "My yo-yo"}
+    stores.problems.create("my-yo-yo", document, owner_key_id=author.id)
+    other = TestClient(signed_in.app, follow_redirects=False)
+    colleague_key = new_key(stores, "instructor", "Prof C")
+    sign_in(other, new_key(stores, "instructor", "Prof B"))
+    paths = [
+        "/instructor/problems/my-yo-yo",
+        "/instructor/problems/my-yo-yo/solution",
+        "/instructor/problems/my-yo-yo/results",
+    ]
+    assert all(signed_in.get(path).status_code == 200 for path in paths)
+    assert all(other.get(path).status_code == 404 for path in paths)
+    assert "My yo-yo" not in other.get("/instructor/problems").text
+    # A colleague on the author's course staff uses it; after sharing, everyone does.
+    course = _make_course(signed_in)
+    colleague_id = next(k.id for k in stores.keys.list() if k.name == "Prof C")
+    stores.courses.add_staff(course, f"key:{colleague_id}", StaffRole.TA)
+    colleague = TestClient(signed_in.app, follow_redirects=False)
+    sign_in(colleague, colleague_key)
+    assert colleague.get("/instructor/problems/my-yo-yo").status_code == 200
+    stores.courses.share_problem("my-yo-yo", True)
+    assert other.get("/instructor/problems/my-yo-yo").status_code == 200
+
+
+def test_the_submissions_page_and_csv_show_only_the_visitors_students(signed_in: TestClient, stores: Stores):
+    from app.courses.records import RosterRow
+    from tests.db.helpers import CORRECT
+
+    course = _make_course(signed_in)
+    stores.courses.import_roster(course, [RosterRow("s1", "Ada", "")])
+    version = stores.problems.get("yo-yo").version
+    for student in (f"course:{course}:s1", "keyed-student"):
+        stores.submissions.file(
+            problem_id="yo-yo",
+            problem_version=version,
+            part_id="acceleration",
+            student=student,
+            answer="g",
+            verdict=CORRECT,
+            max_attempts=None,
+        )
+    own = signed_in.get("/instructor/submissions")
+    assert f"course:{course}:s1" in own.text and "keyed-student" in own.text
+    other = TestClient(signed_in.app, follow_redirects=False)
+    sign_in(other, new_key(stores, "instructor", "Prof B"))
+    listed = other.get("/instructor/submissions")
+    assert f"course:{course}:s1" not in listed.text and "keyed-student" in listed.text
+    exported = other.get("/instructor/submissions.csv")
+    assert f"course:{course}:s1" not in exported.text and "keyed-student" in exported.text
+    assert other.get("/instructor/submissions", params={"student": f"course:{course}:s1"}).status_code == 404

@@ -74,3 +74,19 @@ def test_a_problem_outside_the_assignment_queues_nothing_for_it(stores: Stores):
     submit(stores, problem="other", verdict=CORRECT)
     submit(stores, problem="p1", verdict=CORRECT, student="someone-else")
     assert stores.outbox.scores() == []
+
+
+def test_a_problem_launched_by_its_own_link_stays_open_to_an_enrolled_student(stores: Stores):
+    from app.courses.access import opening
+
+    _launched_assignment(stores, due_in=timedelta(days=1), problems=("p1",))
+    store_problem(stores, "linked")
+    assert not stores.outbox.launched("s1", "linked")
+    assert opening(stores, "s1", "linked", NOW) is None  # enrolled: outside the assignment, not theirs
+    platform = stores.platforms.list()[0]
+    stores.outbox.add_target(
+        platform, student="s1", problem_id="linked", lineitem_url="https://lms.example/li/9", sub="u1"
+    )
+    assert stores.outbox.launched("s1", "linked")
+    found = opening(stores, "s1", "linked", NOW)
+    assert found is not None and found.accepting and found.assignment is None

@@ -1,0 +1,209 @@
+"""A course run in Chromium as people would: an instructor signs in, makes a course, imports a roster
+of 30, builds two assignments of three problems (one due two hours ago, with a late penalty), makes the
+sign-in links; students sign in by their links (a phone and a desktop, several tabs, no key asked),
+see only their assignments, and answer; a late answer loses its penalty, an extension lifts it for
+one student; the gradebook page and its CSV agree with the submissions. axe-core on every page,
+screenshots at 1280 and 390 px in artifacts/course-*.png. (The LMS side, deep linking an assignment
+and its scores sent once each, runs against the test platform in tests/lti/test_assignment_links.py.)
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import re
+import shutil
+from collections.abc import Callable, Iterator
+from datetime import UTC, datetime, timedelta
+from typing import Any
+
+import pytest
+
+from app.grading.pool import GradingPool
+from app.main import create_app
+from app.settings import Settings
+from problems.loader import BANK_DIR
+from tests.bank import bank_documents
+from tests.browser import FIRST_USE_MS, WIDTHS, LiveServer, check_page, serve
+
+pytestmark = [pytest.mark.browser, pytest.mark.slow]
+HOMEWORK_1 = ["atwood", "projectile", "simple-pendulum"]
+HOMEWORK_2 = ["skier-friction", "yo-yo", "mass-spring"]  # due two hours ago: one day late, 10 % off
+BANK = bank_documents()
+ROSTER = "id,name,email\n" + "".join(f"s{n:03d},Student {n:02d},s{n:03d}@uni.example\n" for n in range(1, 31))
+UNASSIGNED = "moving-wedge"  # in the bank, in no assignment
+RIGHT = "tan(alpha)"  # skier-friction's friction_coefficient: coasting at constant speed
+
+
+@pytest.fixture(scope="module")
+def live_server(
+    tmp_path_factory: pytest.TempPathFactory, page_grading_pool: GradingPool
+) -> Iterator[LiveServer]:
+    """The real app on SQLite with a bank of the six problems the course uses."""
+    bank = tmp_path_factory.mktemp("course-bank")
+    for problem_id in [*HOMEWORK_1, *HOMEWORK_2, UNASSIGNED]:
+        shutil.copytree(BANK_DIR / problem_id, bank / problem_id)
+    folder = tmp_path_factory.mktemp("course-live")
+    settings = Settings(
+        database_url=f"sqlite:///{folder / 'physcheck.db'}",
+        secret="course-page-secret-0123456789",
+        check_workers=1,
+        bank_dir=bank,
+        warm_up=False,  # a problem compiles when first answered (only skier-friction here)
+    )
+    app = create_app(settings, pool=page_grading_pool)
+    for url in serve(app):
+        yield LiveServer(url, app)
+
+
+def _local(moment: datetime) -> str:
+    return moment.strftime("%Y-%m-%dT%H:%M")
+
+
+def _build(page: Any, title: str, problems: list[str], opens: datetime, due: datetime, late: bool) -> None:
+    from playwright.sync_api import expect
+
+    page.get_by_role("link", name="New assignment").click()
+    expect(page.get_by_role("heading", level=1)).to_have_text("New assignment")
+    for position, problem_id in enumerate(problems, start=1):
+        name = BANK[problem_id].title
+        page.get_by_label(name, exact=True).check()
+        page.get_by_label(f"Order of {name}", exact=True).fill(str(position))
+    page.get_by_label("Title", exact=True).fill(title)
+    page.get_by_label(re.compile(r"^Opens")).fill(_local(opens))
+    page.get_by_label(re.compile(r"^Due")).fill(_local(due))
+    if late:
+        page.get_by_label("Late work").select_option("penalty")
+        page.get_by_label("Penalty per day late (%)").fill("10")
+        page.get_by_label("At most (%)").fill("50")
+    page.get_by_role("button", name="Save the assignment").click()
+    expect(page.get_by_role("cell", name=title, exact=True)).to_be_visible()
+
+
+def _sign_in_student(browse: Callable[..., Any], url: str, width: int) -> Any:
+    from playwright.sync_api import expect
+
+    page = browse(url, width=width)
+    page.get_by_role("button", name="Sign in").click()
+    expect(page.get_by_role("heading", level=1)).to_have_text("Your courses")
+    return page
+
+
+def _answer(page: Any, problem_title: str) -> None:
+    from playwright.sync_api import expect
+
+    page.get_by_role("link", name=problem_title).click()
+    expect(page.get_by_role("heading", level=1)).to_have_text(problem_title)
+    expect(page.locator(".assignment-banner")).to_contain_text("Homework 2")
+    expect(page.locator(".assignment-banner")).to_contain_text("Late work loses 10 %")
+    box = page.locator("#part-friction_coefficient input[name=answer]")
+    box.press_sequentially(RIGHT)
+    box.press("Enter")
+    expect(page.locator("#part-friction_coefficient .verdict")).to_have_text(
+        re.compile(r"^Correct\."), timeout=FIRST_USE_MS
+    )
+
+
+def test_a_course_runs_from_roster_to_gradebook(live_server: LiveServer, browse: Callable[..., Any]) -> None:
+    from playwright.sync_api import expect
+
+    now = datetime.now(UTC)
+    # The instructor: sign in, a course, its roster, two assignments, the students' links.
+    teacher = browse(f"{live_server.url}/instructor/sign-in", width=WIDTHS["desktop"])
+    teacher.get_by_label("Instructor API key").fill(live_server.key("instructor", "Prof Noether"))
+    teacher.get_by_role("button", name="Sign in").click()
+    teacher.get_by_role("link", name="Courses").click()
+    teacher.get_by_label("Title", exact=True).fill("Mechanics 101")
+    teacher.get_by_role("button", name="Create the course").click()
+    expect(teacher.get_by_role("heading", level=1)).to_have_text("Mechanics 101")
+    teacher.get_by_label("Paste a roster CSV: id, name, email").fill(ROSTER)
+    teacher.get_by_role("button", name="Import the roster").click()
+    expect(teacher.get_by_role("status")).to_contain_text("30 added, 0 updated")
+    teacher.get_by_label("Paste a roster CSV: id, name, email").fill(ROSTER)  # again: no duplicates
+    teacher.get_by_role("button", name="Import the roster").click()
+    expect(teacher.get_by_role("status")).to_contain_text("0 added, 0 updated, 30 unchanged")
+    expect(teacher.get_by_role("heading", name="Roster (30)")).to_be_visible()
+    _build(teacher, "Homework 1", HOMEWORK_1, now - timedelta(days=1), now + timedelta(days=6), late=False)
+    teacher.get_by_role("link", name="New assignment").click()
+    check_page(teacher, "course-builder-desktop")
+    teacher.go_back()
+    _build(teacher, "Homework 2", HOMEWORK_2, now - timedelta(days=5), now - timedelta(hours=2), late=True)
+    check_page(teacher, "course-desktop")
+    teacher.get_by_role("button", name="Make sign-in links for everyone").click()
+    links = teacher.locator("code.sign-in-link").all_inner_texts()
+    assert len(links) == 30
+    check_page(teacher, "course-links-desktop")
+
+    # Student 1 on a phone: signed in by the link, two tabs, only their assignments.
+    phone = _sign_in_student(browse, links[0], WIDTHS["phone"])
+    expect(phone.locator(".assignment-list > li")).to_have_count(2)
+    expect(phone.locator(".assignment-list")).to_contain_text("Late")
+    check_page(phone, "course-home-phone")
+    second_tab = phone.context.new_page()
+    second_tab.goto(f"{live_server.url}/courses")
+    expect(second_tab.get_by_role("heading", level=1)).to_have_text("Your courses")  # no key, no link again
+    phone.get_by_role("link", name="Homework 2").click()
+    expect(phone.locator(".problem-list > li")).to_have_count(3)
+    expect(phone.locator(".problem-list h2").first).to_have_text(BANK["skier-friction"].title)
+    check_page(phone, "course-assignment-phone")
+    _answer(phone, BANK["skier-friction"].title)
+    check_page(phone, "course-problem-phone")
+    outside = second_tab.goto(f"{live_server.url}/p/{UNASSIGNED}")
+    assert outside is not None and outside.status == 404  # not in their assignments
+    reused = browse(links[0], width=WIDTHS["desktop"])  # the link was spent
+    reused.get_by_role("button", name="Sign in").click()
+    expect(reused.get_by_role("alert")).to_contain_text("already been used")
+
+    # Student 2 at a desktop, late too; then an extension lifts their penalty.
+    desk = _sign_in_student(browse, links[1], WIDTHS["desktop"])
+    desk.get_by_role("link", name="Homework 2").click()
+    _answer(desk, BANK["skier-friction"].title)
+
+    teacher.goto(f"{live_server.url}/instructor/courses")
+    teacher.get_by_role("link", name=re.compile(r"^Gradebook\W+Mechanics 101")).click()
+    teacher.get_by_label("Student", exact=True).select_option(label="Student 02")
+    teacher.get_by_label("Assignment").select_option(label="Homework 2")
+    teacher.get_by_label(re.compile(r"^New due date")).fill(_local(now + timedelta(days=2)))
+    teacher.get_by_role("button", name="Set the extension").click()
+    rows = teacher.locator("table.gradebook tbody tr")
+    expect(rows).to_have_count(30)
+    # Columns by due date: Homework 2 (due yesterday) first.
+    expect(teacher.locator("table.gradebook thead th").nth(1)).to_contain_text("Homework 2")
+    first, second = rows.nth(0), rows.nth(1)
+    expect(first.locator("td").nth(0)).to_contain_text("0.9")
+    expect(first.locator("td").nth(0)).to_contain_text("late")
+    expect(second.locator("td").nth(0)).to_contain_text("1")
+    expect(second.locator("td").nth(0)).to_contain_text("ext.")
+    expect(rows.nth(2).locator("td").nth(0)).to_have_text(re.compile(r"^\s*0\b"))
+    check_page(teacher, "course-gradebook-desktop")
+    exported = teacher.context.request.get(teacher.url.split("?")[0] + ".csv")
+    table = {row[0]: row for row in csv.reader(io.StringIO(exported.text()))}
+    assert table["Student ID"][3].startswith("Homework 2 (out of ")
+    assert table["Student ID"][4].startswith("Homework 1 (out of ")
+    assert float(table["s001"][3]) == pytest.approx(0.9) and "late penalty" in table["s001"][-1]
+    assert float(table["s002"][3]) == 1.0 and "extended" in table["s002"][-1]
+    assert all(float(table[f"s{n:03d}"][3]) == 0.0 for n in range(3, 31))
+    assert all(float(table[f"s{n:03d}"][4]) == 0.0 for n in range(1, 31))
+    teacher.get_by_role("link", name="Student 01").click()
+    expect(teacher.locator("#parts")).to_contain_text("friction_coefficient")
+
+    teacher.get_by_role("link", name="Mechanics 101").click()
+    teacher.get_by_role("link", name=re.compile(r"^Results\W+Homework 2")).click()
+    friction = teacher.get_by_role("row", name=re.compile(r"skier-friction friction_coefficient "))
+    expect(friction.locator("td").nth(2)).to_have_text("2")  # tried
+    expect(friction.locator("td").nth(3)).to_have_text("2")  # correct
+    expect(friction.locator("td").nth(4)).to_have_text("1")  # late (the other had an extension)
+    check_page(teacher, "course-results-desktop")
+    teacher.go_back()
+    teacher.go_back()
+    phone_teacher = browse(teacher.url, width=WIDTHS["phone"], cookies=teacher.context.cookies())
+    check_page(phone_teacher, "course-gradebook-phone")
+    builder = browse(
+        f"{live_server.url}/instructor/courses", width=WIDTHS["phone"], cookies=teacher.context.cookies()
+    )
+    builder.get_by_role("link", name="Mechanics 101", exact=True).click()
+    builder.get_by_role("link", name="New assignment").click()
+    check_page(builder, "course-builder-phone")
+    home = browse(f"{live_server.url}/courses", width=WIDTHS["desktop"], cookies=desk.context.cookies())
+    expect(home.locator(".assignment-list")).to_contain_text("your extension")
+    check_page(home, "course-home-desktop")
