@@ -177,8 +177,11 @@ def adhoc_question(
     table = {name: make_symbol(spec) for name, spec in specs.items()}
     made = _unknown_symbols([name for name, _ in unknowns], table, ("unknowns",))
     declared = tuple(Unknown(name, made[name], meaning) for name, meaning in unknowns)
-    question, _ = _build(expected, declared, table, specs, mistakes, ())
-    # the body's reference is `expected`, not a part's `equation`
+    try:
+        question, _ = _build(expected, declared, table, specs, mistakes, ())
+    except SpecError as error:  # the body's reference is `expected`, a part's `equation`
+        path = tuple("expected" if step == "equation" else step for step in error.path)
+        raise SpecError(error.message, path) from None
     return question.prepare()
 
 
