@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import dataclasses
 import hashlib
+import json
 import pickle
 from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
@@ -421,7 +422,27 @@ class EnergyKind:
 
 
 def coordinate_rows(doc: ProblemDocument) -> list[dict[str, str]]:
-    """The model's coordinates as a student types them, with their velocities and what each measures."""
+    """The model's coordinates as a student types them, with their velocities and what each measures
+    (loading a model is ~10 ms: kept per model and symbols, as every student view of a part asks)."""
+    key = json.dumps(
+        [doc.model, {n: d.model_dump(mode="json") for n, d in doc.symbols.items()}], sort_keys=True
+    )
+    return [dict(row) for row in _coordinate_rows(key, doc)]
+
+
+_ROWS: dict[str, tuple[dict[str, str], ...]] = {}
+
+
+def _coordinate_rows(key: str, doc: ProblemDocument) -> tuple[dict[str, str], ...]:
+    found = _ROWS.get(key)
+    if found is None:
+        found = _ROWS[key] = tuple(_rows(doc))
+        while len(_ROWS) > 256:
+            _ROWS.pop(next(iter(_ROWS)))
+    return found
+
+
+def _rows(doc: ProblemDocument) -> list[dict[str, str]]:
     from problems.modelinfo import load_doc_model
     from problems.symbols import symbol_table
 
