@@ -14,6 +14,7 @@ from pydantic import Field
 
 from problems.kinds.base import AnswerKind, CompiledPart
 from problems.kinds.choice import CHOICE, ChoiceCheckIn, ChoicePart, CompiledChoicePart
+from problems.kinds.data import DATA, CompiledDataPart, DataCheckIn, DataPart
 from problems.kinds.equation import EQUATION, CompiledEquationPart, EquationCheckIn, EquationPart
 from problems.kinds.lagrangian import (
     KINETIC_ENERGY,
@@ -38,6 +39,7 @@ AnyPart = (
     | KineticEnergyPart
     | PotentialEnergyPart
     | EquationPart
+    | DataPart
 )
 Part = Annotated[AnyPart, Field(discriminator="kind")]
 CheckIn = Annotated[
@@ -47,7 +49,8 @@ CheckIn = Annotated[
     | LagrangianCheckIn
     | KineticEnergyCheckIn
     | PotentialEnergyCheckIn
-    | EquationCheckIn,
+    | EquationCheckIn
+    | DataCheckIn,
     Field(discriminator="kind"),
 ]
 # matched exhaustively
@@ -57,6 +60,7 @@ AnyCompiledPart = (
     | CompiledChoicePart
     | CompiledEnergyPart
     | CompiledEquationPart
+    | CompiledDataPart
 )
 
 _REGISTERED: tuple[AnswerKind[Any, Any], ...] = (
@@ -67,6 +71,7 @@ _REGISTERED: tuple[AnswerKind[Any, Any], ...] = (
     KINETIC_ENERGY,
     POTENTIAL_ENERGY,
     EQUATION,
+    DATA,
 )
 KINDS: dict[str, AnswerKind[Any, Any]] = {kind.name: kind for kind in _REGISTERED}
 

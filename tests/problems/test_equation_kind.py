@@ -205,3 +205,12 @@ def test_the_wedge_part_refuses_the_fixed_incline_law_with_the_authors_words() -
     other = run_job(part.job("N - m g cos θ = m A sin θ"))  # true: the block across the incline
     assert "not the one asked" in other.feedback
     assert run_job(part.job("m a + m A cos θ = m g sin θ")).outcome is Outcome.CORRECT
+
+
+def test_an_asked_equation_without_an_unknown_is_refused_at_expected() -> None:
+    from physics.errors import SpecError
+
+    body = {**EQUATIONS["normal"], "expected": "m*g = 2*m*g/2"}
+    with pytest.raises(SpecError) as caught:
+        TypeAdapter(CheckIn).validate_python({"kind": "equation", "answer": "N = 0", **body}).job().question()
+    assert caught.value.path[:1] == ("expected",)

@@ -37,6 +37,7 @@ def test_every_kind_the_schema_admits_is_registered_and_compiles_to_its_own_part
             "kinetic_energy",
             "potential_energy",
             "equation",
+            "data",
         }
     )
     # one compiled part per kind module (the three energy kinds share theirs)

@@ -144,6 +144,10 @@ def _build(
 ) -> tuple[EquationQuestion, int]:
     names = {**table, **{u.name: u.symbol for u in unknowns}}
     lhs, rhs = _read(equation, names, (*path, "equation"))
+    if not (lhs - rhs).has(*(u.symbol for u in unknowns)):
+        raise SpecError(
+            "the equation uses none of the unknowns: name them under unknowns", (*path, "equation")
+        )
     authored = tuple(
         WrongEquation(_difference(text, names, (*path, "mistakes", j, "answer")), feedback)
         for j, (text, feedback) in enumerate(mistakes)
