@@ -16,6 +16,7 @@ from problems.kinds.base import AnswerKind, CompiledPart
 from problems.kinds.choice import CHOICE, ChoiceCheckIn, ChoicePart, CompiledChoicePart
 from problems.kinds.data import DATA, CompiledDataPart, DataCheckIn, DataPart
 from problems.kinds.equation import EQUATION, CompiledEquationPart, EquationCheckIn, EquationPart
+from problems.kinds.free_body import FREE_BODY, CompiledFreeBodyPart, FreeBodyCheckIn, FreeBodyPart
 from problems.kinds.lagrangian import (
     KINETIC_ENERGY,
     LAGRANGIAN,
@@ -40,6 +41,7 @@ AnyPart = (
     | PotentialEnergyPart
     | EquationPart
     | DataPart
+    | FreeBodyPart
 )
 Part = Annotated[AnyPart, Field(discriminator="kind")]
 CheckIn = Annotated[
@@ -50,7 +52,8 @@ CheckIn = Annotated[
     | KineticEnergyCheckIn
     | PotentialEnergyCheckIn
     | EquationCheckIn
-    | DataCheckIn,
+    | DataCheckIn
+    | FreeBodyCheckIn,
     Field(discriminator="kind"),
 ]
 # matched exhaustively
@@ -61,6 +64,7 @@ AnyCompiledPart = (
     | CompiledEnergyPart
     | CompiledEquationPart
     | CompiledDataPart
+    | CompiledFreeBodyPart
 )
 
 _REGISTERED: tuple[AnswerKind[Any, Any], ...] = (
@@ -72,6 +76,7 @@ _REGISTERED: tuple[AnswerKind[Any, Any], ...] = (
     POTENTIAL_ENERGY,
     EQUATION,
     DATA,
+    FREE_BODY,
 )
 KINDS: dict[str, AnswerKind[Any, Any]] = {kind.name: kind for kind in _REGISTERED}
 

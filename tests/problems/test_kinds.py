@@ -38,6 +38,7 @@ def test_every_kind_the_schema_admits_is_registered_and_compiles_to_its_own_part
             "potential_energy",
             "equation",
             "data",
+            "free_body",
         }
     )
     # one compiled part per kind module (the three energy kinds share theirs)

@@ -115,7 +115,7 @@ SHAPE_CASES = [
     pytest.param(
         _set("parts.0.kind", "essay"),
         {
-            "parts[0].kind": "kind must be 'symbolic', 'numeric', 'choice', 'lagrangian', 'kinetic_energy', 'potential_energy', 'equation' or 'data'"
+            "parts[0].kind": "kind must be 'symbolic', 'numeric', 'choice', 'lagrangian', 'kinetic_energy', 'potential_energy', 'equation', 'data' or 'free_body'"
         },
         id="bad-kind",
     ),
