@@ -41,7 +41,7 @@ from problems.loader import BANK_DIR, load_bank, parse_problem
 from problems.modelinfo import load_doc_model
 from problems.schema import ProblemDocument
 from problems.semantics import semantic_errors
-from problems.student import student_view
+from problems.student import needs_compiled, student_view
 from problems.symbols import symbol_table
 from problems.variants import Variant, draw_variant, si_values
 
@@ -429,7 +429,9 @@ class Catalog:
             record = self.get(problem_id)
         except ProblemNotFound:
             raise LookupError(problem_id) from None
-        view = student_view(self.document(record), self.variant(record, student))
+        document = self.document(record)
+        compiled = self.compiled(record) if needs_compiled(document) else None
+        view = student_view(document, self.variant(record, student), compiled)
         return {**view, "version": record.version, "student": student}
 
     def variant(self, record: ProblemRecord, student: str) -> Variant:

@@ -30,7 +30,7 @@ from problems.fields import (
     Text,
     ToleranceDecl,
 )
-from problems.kinds import KINDS, ChoicePart, NumericPart, Part, SymbolicPart
+from problems.kinds import KINDS, AnyPart, ChoicePart, NumericPart, Part, SymbolicPart
 
 __all__ = [
     "DEFAULT_SIGFIGS",
@@ -70,7 +70,7 @@ class ProblemDocument(Strict):
     # Validated by the engine (`physics.engine.load_model`), not here.
     model: dict[str, Any] | None = None
 
-    def part(self, part_id: str) -> SymbolicPart | NumericPart | ChoicePart:
+    def part(self, part_id: str) -> AnyPart:
         for part in self.parts:
             if part.id == part_id:
                 return part

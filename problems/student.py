@@ -4,11 +4,14 @@ its kind shows it; never a reference."""
 from __future__ import annotations
 
 from decimal import Decimal
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from problems.kinds import kind_of
 from problems.schema import ProblemDocument
 from problems.variants import Variant, fill_statement, format_quantity
+
+if TYPE_CHECKING:
+    from problems.compiled import CompiledProblem
 
 
 def _json_number(value: Decimal) -> int | float:
@@ -17,11 +20,20 @@ def _json_number(value: Decimal) -> int | float:
     )
 
 
-def student_view(problem: ProblemDocument, variant: Variant) -> dict[str, Any]:
-    """What one student may see: statement with their values, givens, parts; never a reference."""
+def needs_compiled(problem: ProblemDocument) -> bool:
+    """Whether a part's student view needs the compiled problem (a lab's data is each student's own)."""
+    return any(getattr(kind_of(part), "per_student_view", False) for part in problem.parts)
+
+
+def student_view(
+    problem: ProblemDocument, variant: Variant, compiled: CompiledProblem | None = None
+) -> dict[str, Any]:
+    """What one student may see: statement with their values, givens, parts; never a reference.
+    `compiled` adds what a compiled part shows of this student's own (`shown(variant)`: lab data)."""
     parts: list[dict[str, Any]] = []
     for part in problem.parts:
         limit = part.max_attempts if part.max_attempts is not None else problem.max_attempts
+        shown = getattr(compiled.parts.get(part.id), "shown", None) if compiled is not None else None
         parts.append(
             {
                 "id": part.id,
@@ -29,6 +41,7 @@ def student_view(problem: ProblemDocument, variant: Variant) -> dict[str, Any]:
                 "prompt": part.prompt,
                 "max_attempts": limit,
                 **kind_of(part).student_view(part, problem),
+                **(shown(variant) if shown is not None else {}),
             }
         )
     return {

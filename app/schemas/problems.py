@@ -41,6 +41,10 @@ class ChoicePublic(BaseModel):
 
 
 class PartPublic(BaseModel):
+    # A kind's own fields pass through as its student view gives them (a Lagrangian part's
+    # `coordinates`, an equation's `unknowns` and `asks`, a lab's `data`: README, "The API").
+    model_config = ConfigDict(extra="allow")
+
     id: str
     kind: str
     prompt: str

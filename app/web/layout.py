@@ -22,11 +22,13 @@ from markupsafe import Markup
 
 from app.web.rendering import render_inline, render_markdown, tex_to_mathml
 from physics.mathinput.render import in_student_style
+from problems import kinds as answer_kinds
 
 HERE = Path(__file__).resolve().parent
 STATIC_PATH = "/static"
 
-templates = Jinja2Templates(directory=HERE / "templates")
+# Each answer kind's own templates (`<kind>/student.html`, `<kind>/described.html`) live beside its module.
+templates = Jinja2Templates(directory=[HERE / "templates", Path(answer_kinds.__file__).resolve().parent])
 templates.env.filters["markdown"] = render_markdown
 templates.env.filters["inline"] = render_inline
 templates.env.filters["tex"] = tex_to_mathml

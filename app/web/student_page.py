@@ -115,6 +115,7 @@ def _parts(view: Mapping[str, Any]) -> list[dict[str, Any]]:
         units = part.get("units")
         parts.append(
             {
+                **part,  # the kind's own fields, as its template (`<kind>/student.html`) reads them
                 "index": index,
                 "id": str(part.get("id", "")),
                 "kind": part.get("kind"),

@@ -67,10 +67,11 @@ def _is_word_char(ch: str) -> bool:
 class LatexReader:
     """The LaTeX of one text: the tokenizer hands it every backslash and brace, and `^\\circ`."""
 
-    def __init__(self, chars: list[str], units_in_fonts: bool = False) -> None:
+    def __init__(self, chars: list[str], units_in_fonts: bool = False, velocities: bool = False) -> None:
         self._chars = chars
         self._n = len(chars)
         self._units_in_fonts = units_in_fonts
+        self._velocities = velocities  # `\dot{x}` is the word x_dot (velocities.py)
         self._frames: list[_Frame] = []
         # Only in a text written in LaTeX is `~` a space and `{}` nothing (`~x` stays refused).
         self.active = "\\" in chars
@@ -159,7 +160,38 @@ class LatexReader:
             return [Token(Kind.POSTFIX, "%", i, end)], end
         if name == "degree":
             return [Token(Kind.POSTFIX, "°", i, end)], end
+        if name == "dot" and self._velocities:
+            return self._dotted(i, end)
         raise self._unknown(i, name)
+
+    def _dotted(self, i: int, end: int) -> tuple[list[Token], int]:
+        """`\\dot{x}`, `\\dot x`, `\\dot{\\theta}`: the velocity's word `x_dot`, `theta_dot`."""
+        j = self._skip_spaces(end)
+        braced = j < self._n and self._chars[j] == "{"
+        k = self._skip_spaces(j + 1) if braced else j
+        single = self._single(k)
+        if single is None or single[0].kind is not Kind.WORD:
+            raise ParseError("\\dot needs a coordinate, as in \\dot{x} or \\dot{\\theta}.", i)
+        word, after = single[0].text, single[1]
+        if braced:
+            while after < self._n and _is_word_char(self._chars[after]):  # \dot{phi2}
+                word += self._chars[after]
+                after += 1
+            after = self._skip_spaces(after)
+            if after >= self._n or self._chars[after] != "}":
+                raise ParseError("\\dot{…} holds one coordinate, as in \\dot{x}.", i)
+            after += 1
+        text = word + "_dot"
+        return [
+            SpelledWord(
+                Kind.WORD,
+                text,
+                i,
+                after,
+                char_positions=(i,) * len(text) + (after,),
+                unsplittable=((0, len(text)),),
+            )
+        ], after
 
     def degree_end(self, i: int) -> int | None:
         """The end of `\\circ` or `{\\circ}` after the `^` ending at i (`30^\\circ` is 30°), or None."""

@@ -93,19 +93,24 @@ def parse_math(
     limits: InputLimits = DEFAULT_LIMITS,
     choices: Mapping[int, int] | None = None,
     powers_outside: bool = False,
+    velocities: bool = False,
 ) -> ParsedMath:
     """Read `text` using only the declared `names` (spelling -> Symbol to use).
 
     `choices` reads each ambiguous grouping (by the position of its `/` or `^`) one way: 0 as (a/b)·c
     or e^(−ω)·t, 1 as a/(b·c) or e^(−ωt); without a choice it is refused (AmbiguousGrouping). A bare function argument with a
     power (`sin θ^2`) reads as sin(θ²) and `read_as.note` says so; `powers_outside` reads it as
-    (sin θ)², the other reading, for comparison.
+    (sin θ)², the other reading, for comparison. `velocities`: `x'`, `ẋ`, `\\dot{x}` and `dx/dt` are read
+    as the name `x_dot` (a coordinate's velocity, which `names` then declares).
 
     Raises ParseError, AmbiguousInput, UnknownSymbol, UnknownFunction or TooLarge, each with a 0-based
     `position` into `text`; sizes are checked before any value is computed.
     """
     return build_reading(
-        read_tree(text, names, limits=limits, choices=choices, powers_outside=powers_outside), limits
+        read_tree(
+            text, names, limits=limits, choices=choices, powers_outside=powers_outside, velocities=velocities
+        ),
+        limits,
     )
 
 
@@ -116,10 +121,11 @@ def read_tree(
     limits: InputLimits = DEFAULT_LIMITS,
     choices: Mapping[int, int] | None = None,
     powers_outside: bool = False,
+    velocities: bool = False,
 ) -> TreeReading:
     """`parse_math` up to the parse tree: raises what it raises before building, never a refusal of the
     builder's (`build_reading` makes those)."""
-    tree, powered, table = _tree(text, names, limits, choices, powers_outside)
+    tree, powered, table = _tree(text, names, limits, choices, powers_outside, velocities)
     try:
         read_as = ReadAs(render_text(tree), render_latex(tree), reading_note(powered))
     except RecursionError:
@@ -133,11 +139,15 @@ def build_reading(reading: TreeReading, limits: InputLimits = DEFAULT_LIMITS) ->
 
 
 def parse_expression(
-    text: str, names: Mapping[str, sympy.Symbol], *, limits: InputLimits = DEFAULT_LIMITS
+    text: str,
+    names: Mapping[str, sympy.Symbol],
+    *,
+    limits: InputLimits = DEFAULT_LIMITS,
+    velocities: bool = False,
 ) -> sympy.Expr:
     """`parse_math(...).expr`, without rendering how the text reads (a sixth of the work): for texts
     whose reading is never shown, such as a reference answer. Raises what parse_math raises."""
-    tree, _, table = _tree(text, names, limits, None, False)
+    tree, _, table = _tree(text, names, limits, None, False, velocities)
     return _built(tree, table.symbols, limits)
 
 
@@ -147,9 +157,10 @@ def _tree(
     limits: InputLimits,
     choices: Mapping[int, int] | None,
     powers_outside: bool,
+    velocities: bool = False,
 ) -> tuple[Node, tuple[PoweredArgument, ...], NameTable]:
     table = _name_table(tuple(names.items()))
-    tokens = tokenize(text, limits)
+    tokens = tokenize(text, limits, velocities=velocities)
     _refuse_exponent_letter_clash(text, tokens, table)
     tokens = resolve_words(tokens, table)
     try:

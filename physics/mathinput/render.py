@@ -112,6 +112,8 @@ def _is_neg(node: Node) -> bool:
 
 @lru_cache(maxsize=1024)  # a few declared names, met in every answer
 def latex_name(name: str) -> str:
+    if name.endswith("_dot") and len(name) > len("_dot"):  # a coordinate's velocity (velocities.py)
+        return rf"\dot{{{latex_name(name[: -len('_dot')])}}}"
     if "_" in name and not name.startswith("_"):
         base, sub = name.split("_", 1)
     elif match := _TRAILING_DIGITS.match(name):

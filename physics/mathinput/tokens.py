@@ -14,6 +14,7 @@ from physics.errors import ParseError, TooLarge
 from physics.mathinput.latex import LatexReader
 from physics.mathinput.limits import InputLimits
 from physics.mathinput.tokentypes import Kind, Token
+from physics.mathinput.velocities import PRIMES, derivatives_read, dotted_word, is_word_mark, needs_spelling
 from physics.mathinput.vocabulary import (
     CHARACTER_VARIANTS,
     CLOSERS,
@@ -33,11 +34,15 @@ _MAX_SCI_EXPONENT_DIGITS = 6
 _WORD_MARKS = frozenset("0123456789_")
 
 
-def tokenize(text: str, limits: InputLimits, *, units_in_fonts: bool = False) -> list[Token]:
+def tokenize(
+    text: str, limits: InputLimits, *, units_in_fonts: bool = False, velocities: bool = False
+) -> list[Token]:
     """Split `text` into tokens ending with an END token; raise ParseError/TooLarge with a position.
 
     `units_in_fonts`: a numeric answer's `\\mathrm{…}` or `\\text{…}` holds its units, and is one WORD as
     typed (`\\mathrm{m/s^2}`); elsewhere it may hold only a name, which is the word.
+    `velocities`: a coordinate's velocity written `x'`, `ẋ`, `\\dot{x}` or `dx/dt` is the word `x_dot`
+    (`velocities.py`).
     """
     if len(text) > limits.max_length:
         raise TooLarge(
@@ -46,7 +51,7 @@ def tokenize(text: str, limits: InputLimits, *, units_in_fonts: bool = False) ->
         )
     # Every variant is a non-ASCII character: plain ASCII text has none to replace.
     chars = list(text) if text.isascii() else [CHARACTER_VARIANTS.get(ch, ch) for ch in text]
-    latex = LatexReader(chars, units_in_fonts)
+    latex = LatexReader(chars, units_in_fonts, velocities)
     tokens: list[Token] = []
     n = len(chars)
     max_tokens = limits.max_tokens
@@ -65,11 +70,17 @@ def tokenize(text: str, limits: InputLimits, *, units_in_fonts: bool = False) ->
             token, i = _read_number(chars, i, space, limits)
         elif ch.isalpha():  # a word starts with a letter
             i += 1
-            while i < n and ((c := chars[i]).isalpha() or c in _WORD_MARKS):
+            while i < n and (
+                (c := chars[i]).isalpha() or c in _WORD_MARKS or (velocities and is_word_mark(c))
+            ):
+                i += 1
+            if velocities and i < n and chars[i] in PRIMES:
                 i += 1
             if chars[i - 1] == "_" and i < n and chars[i] in "{\\":  # v_{0}, v_\theta
                 token, i = latex.subscripted_word(start, i)
                 token = replace(token, space_before=space)
+            elif velocities and needs_spelling(chars, start, i):
+                token = dotted_word(chars, start, i, space)
             else:
                 token = Token(Kind.WORD, "".join(chars[start:i]), start, i, space)
         elif ch == "*" and i + 1 < n and chars[i + 1] == "*":
@@ -134,7 +145,7 @@ def tokenize(text: str, limits: InputLimits, *, units_in_fonts: bool = False) ->
         space = False
     latex.finish()
     tokens.append(Token(Kind.END, "", n, n, space))
-    return tokens
+    return derivatives_read(tokens) if velocities else tokens
 
 
 def _vulgar_fraction(ch: str, i: int, space: bool) -> list[Token]:

@@ -6,10 +6,17 @@ An answer kind is one module (`problems/kinds/<kind>.py`) that, for one `kind:` 
   compile   the part as the grader needs it: a `CompiledPart`, whose `job` crosses into a worker
   student   what a student sees of it (never a reference)
   selftest  the cases the bank self-test grades it by
+  describe  what an instructor reads of it (`PartInfo`): its reference, mistakes, limits
   check     its `POST /v1/check` body (`<Kind>CheckIn`): a one-part problem given in the request, built
             from the same declarations, whose `job` compiles it by the kind's own compile (its one part
             `ADHOC_PART`, no document) and grades it as a part of the kind is graded
 and is registered by its `kind` in `problems.kinds.KINDS`, which `problems.kinds.kind_of` matches.
+
+A kind owns its presentation too: its directory (`problems/kinds/<kind>/`) holds, beside the module,
+  student.html    what the student page shows above the answer box (the student view's fields as `part`)
+  described.html  what the instructor page and the worked solution show of the reference (`PartInfo` as
+                  `part`; `view` is "facts" for the instructor's list, "answer" for the solution's line)
+which the web pages include by the part's kind: no page branches on a kind.
 """
 
 from __future__ import annotations
@@ -27,6 +34,7 @@ from physics.verdict import Verdict
 from problems.errors import ErrorItem, format_path
 
 if TYPE_CHECKING:
+    from problems.compiled import CompiledProblem
     from problems.modelinfo import Derived
     from problems.schema import ProblemDocument
     from problems.variants import Variant
@@ -109,6 +117,40 @@ def explain(text: str, verdict: Verdict) -> str:
     return f"{text!r} was {verdict.outcome.value} ({verdict.reason.value}): {verdict.feedback}"
 
 
+@dataclass(frozen=True)
+class MistakeInfo:
+    latex: str
+    text: str  # the same, as plain text (chart labels)
+    feedback: str
+    by_author: bool  # written in the problem (else found by the engine)
+
+
+@dataclass(frozen=True)
+class LimitInfo:
+    where: str  # TeX, e.g. "k = 0"
+    description: str
+
+
+@dataclass(frozen=True)
+class PartInfo:
+    """A part as an instructor reads it (the kind's `described.html` shows it)."""
+
+    id: str
+    kind: str
+    prompt: str
+    latex: str  # the reference (for a numeric part, the expression it is evaluated from)
+    units: str | None = None
+    tolerance: str | None = None  # numeric parts: "within 1 %", …
+    expected: str | None = (
+        None  # numeric parts, for the variant described: "4.580 m/s²" (to the part's sigfigs)
+    )
+    expected_full: str | None = None  # …and the 12 significant figures it is checked against
+    mistakes: tuple[MistakeInfo, ...] = ()
+    limits: tuple[LimitInfo, ...] = ()
+    error: str | None = None  # the numeric reference could not be evaluated for this variant
+    facts: tuple[tuple[str, str], ...] = ()  # further (label, TeX) lines a kind shows (a new kind's own)
+
+
 class CompiledPart(Protocol):
     """A part ready to grade: no YAML left, picklable (compiled problems are persisted)."""
 
@@ -173,4 +215,10 @@ class AnswerKind(Protocol[P_contra, C]):
 
     def texts(self, part: P_contra, path: str) -> Iterator[tuple[str, str]]:
         """(path, text) of what people read in the part beyond its prompt (feedback, descriptions)."""
+        ...
+
+    def describe(
+        self, part: C, info: PartInfo, compiled: CompiledProblem, variant: Variant | None
+    ) -> PartInfo:
+        """What an instructor reads of the compiled part: `info` (its id, kind and prompt) completed."""
         ...

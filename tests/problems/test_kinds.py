@@ -26,8 +26,23 @@ def _kinds_of(annotated: object) -> set[str]:
 
 
 def test_every_kind_the_schema_admits_is_registered_and_compiles_to_its_own_part() -> None:
-    assert _kinds_of(Part) == set(KINDS) == {"symbolic", "numeric", "choice"}
-    assert len(typing.get_args(AnyCompiledPart)) == len(KINDS)
+    assert (
+        _kinds_of(Part)
+        == set(KINDS)
+        == {
+            "symbolic",
+            "numeric",
+            "choice",
+            "lagrangian",
+            "kinetic_energy",
+            "potential_energy",
+            "equation",
+            "data",
+            "free_body",
+        }
+    )
+    # one compiled part per kind module (the three energy kinds share theirs)
+    assert len(typing.get_args(AnyCompiledPart)) == len({type(kind) for kind in KINDS.values()})
 
 
 def test_every_registered_kind_can_be_checked_ad_hoc() -> None:
@@ -55,7 +70,9 @@ def test_a_choice_part_compiles_to_a_question_graded_by_letter_or_text() -> None
 
 
 def test_a_choice_preview_names_the_choice_without_grading_it() -> None:
-    question = compile_problem(parse_problem(spring_with_choice()), use_model=False).question("friction_direction")
+    question = compile_problem(parse_problem(spring_with_choice()), use_model=False).question(
+        "friction_direction"
+    )
     read = question.read("b", None)  # type: ignore[arg-type]
     assert read.read_as is not None and read.read_as.text == "B" and read.error is None
     assert question.read("Z", None).error is not None  # type: ignore[arg-type]

@@ -114,7 +114,9 @@ SHAPE_CASES = [
     pytest.param(_set("id", "Not A Slug"), {"id": None}, id="bad-slug"),
     pytest.param(
         _set("parts.0.kind", "essay"),
-        {"parts[0].kind": "kind must be 'symbolic', 'numeric' or 'choice'"},
+        {
+            "parts[0].kind": "kind must be 'symbolic', 'numeric', 'choice', 'lagrangian', 'kinetic_energy', 'potential_energy', 'equation', 'data' or 'free_body'"
+        },
         id="bad-kind",
     ),
     pytest.param(_delete("parts.1.units"), {"parts[1].units": "required"}, id="numeric-without-units"),

@@ -116,6 +116,68 @@
 
   var WORDS = { correct: "Correct.", incorrect: "Not correct.", invalid: "Could not read this answer." };
 
+  // A free-body part: palette buttons add a force (a list row with a direction field, the diagram a
+  // screen reader reads), arrows drawn from the body's centre; every change writes the answer box as
+  // text ("weight 270; normal 110"), which is also what a student may type.
+  var SVG = "http://www.w3.org/2000/svg";
+  var DEFAULT_ANGLE = { weight: 270, normal: 90, tension: 90, friction: 0, spring: 180, applied: 0, motion: 0 };
+
+  function wireForces(editor, input, changed) {
+    var list = editor.querySelector(".drawn-forces");
+    var arrows = editor.querySelector(".arrows");
+    function write() {
+      var rows = list.querySelectorAll("li");
+      var parts = [];
+      arrows.textContent = "";
+      for (var i = 0; i < rows.length; i++) {
+        var kind = rows[i].getAttribute("data-kind");
+        var angle = Number(rows[i].querySelector("input").value) || 0;
+        parts.push(kind + " " + angle);
+        var rad = angle * Math.PI / 180;
+        var line = document.createElementNS(SVG, "line");
+        line.setAttribute("x1", "0"); line.setAttribute("y1", "0");
+        line.setAttribute("x2", String(Math.round(90 * Math.cos(rad))));
+        line.setAttribute("y2", String(Math.round(-90 * Math.sin(rad))));
+        line.setAttribute("stroke", "currentColor"); line.setAttribute("stroke-width", "3");
+        arrows.appendChild(line);
+        var label = document.createElementNS(SVG, "text");
+        label.setAttribute("x", String(Math.round(100 * Math.cos(rad))));
+        label.setAttribute("y", String(Math.round(-100 * Math.sin(rad))));
+        label.setAttribute("font-size", "11"); label.setAttribute("text-anchor", "middle");
+        label.textContent = kind;
+        arrows.appendChild(label);
+      }
+      input.value = parts.join("; ");
+      changed();
+    }
+    function add(kind, angle) {
+      var row = document.createElement("li");
+      row.setAttribute("data-kind", kind);
+      var id = "force-" + Math.random().toString(36).slice(2);
+      var name = document.createElement("label");
+      name.setAttribute("for", id);
+      name.textContent = kind + ", direction (degrees) ";
+      var field = document.createElement("input");
+      field.type = "number"; field.id = id; field.min = "0"; field.max = "359"; field.step = "1";
+      field.value = String(angle);
+      field.addEventListener("input", write);
+      var remove = document.createElement("button");
+      remove.type = "button"; remove.textContent = "Remove " + kind;
+      remove.addEventListener("click", function () { row.remove(); write(); });
+      row.appendChild(name); row.appendChild(field); row.appendChild(remove);
+      list.appendChild(row);
+      write();
+      field.focus();
+    }
+    var buttons = editor.querySelectorAll(".add-force");
+    for (var b = 0; b < buttons.length; b++) {
+      buttons[b].addEventListener("click", function () {
+        var kind = this.getAttribute("data-kind");
+        add(kind, DEFAULT_ANGLE[kind] || 0);
+      });
+    }
+  }
+
   function wire(form) {
     var part = form.getAttribute("data-part");
     var base = "/v1/problems/" + encodeURIComponent(problemId) + "/parts/" + encodeURIComponent(part);
@@ -146,6 +208,8 @@
     for (var c = 0; c < choices.length; c++) {
       choices[c].addEventListener("change", function () { input.value = this.value; askPreview(); });
     }
+    var editor = form.closest(".part").querySelector(".free-body-editor");
+    if (editor) { wireForces(editor, input, askPreview); }
 
     function refresh(lead) {
       return getHtml("/p/" + encodeURIComponent(problemId) + "/parts/" + encodeURIComponent(part) + "/work")

@@ -3,6 +3,7 @@ the engine derives (or the author types), weighed against known mistakes and lim
 
 from __future__ import annotations
 
+import dataclasses
 import hashlib
 import pickle
 from collections.abc import Callable, Iterator, Mapping, Sequence
@@ -24,8 +25,9 @@ from physics.checking import (
     read_relation,
     symbol_spec,
 )
-from physics.errors import SpecError
-from physics.mathinput import InputLimits
+from physics.errors import PhyscheckError, SpecError
+from physics.mathinput import InputLimits, parse_math
+from physics.mathinput.render import in_student_style
 from physics.pickling import pickled_by_fields
 from physics.symbolic import (
     KnownMistake,
@@ -55,7 +57,10 @@ from problems.kinds.base import (
     ADHOC_PART,
     CheckResult,
     CompileContext,
+    LimitInfo,
     MeaningContext,
+    MistakeInfo,
+    PartInfo,
     Path,
     Reference,
     explain,
@@ -64,6 +69,7 @@ from problems.modelinfo import missing_quantity
 from problems.symbols import read_bound
 
 if TYPE_CHECKING:
+    from problems.compiled import CompiledProblem
     from problems.schema import ProblemDocument
     from problems.variants import Variant
 
@@ -321,8 +327,51 @@ class SymbolicKind:
         for n, limit in enumerate(part.limits):
             yield f"{path}.limits[{n}].description", limit.description
 
+    def describe(
+        self, part: CompiledSymbolicPart, info: PartInfo, compiled: CompiledProblem, variant: Variant | None
+    ) -> PartInfo:
+        written = getattr(compiled.document.part(part.id), "mistakes", ())
+        return dataclasses.replace(
+            info,
+            latex=sympy.latex(part.expected),
+            mistakes=tuple(
+                described_mistake(m.expr, m.feedback, written, i, compiled.table)
+                for i, m in enumerate(part.context.mistakes)
+            ),
+            limits=tuple(
+                LimitInfo(limit_where(case.substitutions), case.description) for case in part.context.limits
+            ),
+        )
+
 
 SYMBOLIC = SymbolicKind()
+
+
+def described_mistake(
+    expr: sympy.Expr,
+    feedback: str,
+    written: Sequence[Any],
+    index: int,
+    table: Mapping[str, sympy.Symbol],
+) -> MistakeInfo:
+    """A known mistake as the author typed it (`r0/2^(1/6)`, read by our own reader and typeset from its
+    parse tree), or for one the engine found (after the author's), as sympy writes it."""
+    authored = len(written)
+    if index < authored:
+        try:
+            read = parse_math(str(written[index].answer), table).read_as
+            return MistakeInfo(read.latex, in_student_style(read.text), feedback, True)
+        except PhyscheckError:
+            pass
+    return MistakeInfo(sympy.latex(expr), typed_text(expr), feedback, index < authored)
+
+
+def limit_where(substitutions: Mapping[sympy.Symbol, sympy.Expr]) -> str:
+    terms = []
+    for symbol, value in substitutions.items():
+        arrow = r"\to" if value in (sympy.oo, -sympy.oo) or value == 0 else "="
+        terms.append(f"{sympy.latex(symbol)} {arrow} {sympy.latex(value)}")
+    return ",\\ ".join(terms)
 
 
 # ---- compiling ----------------------------------------------------------------------------------

@@ -4,6 +4,7 @@ per student from an expression (a symbolic part or a model quantity) at their gi
 
 from __future__ import annotations
 
+import dataclasses
 from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from decimal import Decimal
@@ -47,16 +48,19 @@ from problems.kinds.base import (
     CheckResult,
     CompileContext,
     MeaningContext,
+    PartInfo,
     Path,
     Reference,
     explain,
 )
-from problems.variants import evaluate_reference, format_number, si_values, unit_scale
+from problems.variants import evaluate_reference, format_number, format_quantity, si_values, unit_scale
 
 if TYPE_CHECKING:
+    from problems.compiled import CompiledProblem
     from problems.schema import ProblemDocument
     from problems.variants import Variant
 
+SHOWN_FIGURES = 4  # an expected value an instructor reads, to the part's sigfigs or to these
 OFF_BY = Decimal("1.10")  # a value this far off must be rejected
 _LEFT_OUT_WHEN_ABSENT = frozenset({"of", "value", "angular_units"})
 
@@ -351,8 +355,49 @@ class NumericKind:
     def texts(self, part: NumericPart, path: str) -> Iterator[tuple[str, str]]:
         return iter(())
 
+    def describe(
+        self, part: CompiledNumericPart, info: PartInfo, compiled: CompiledProblem, variant: Variant | None
+    ) -> PartInfo:
+        expected, full, error = _shown_value(part, variant)
+        tolerance = part.tolerance
+        return dataclasses.replace(
+            info,
+            latex=part.solution().latex,
+            units=part.units,
+            tolerance=tolerance_text(tolerance.rel, tolerance.abs, tolerance.sigfigs, part.units),
+            expected=expected,
+            expected_full=full,
+            error=error,
+        )
+
 
 NUMERIC = NumericKind()
+
+
+def tolerance_text(rel: Decimal | None, abs_: Decimal | None, sigfigs: int | None, units: str) -> str:
+    said = []
+    if rel is not None:
+        said.append(f"within {format_number((rel * 100).normalize())} %")
+    if abs_ is not None:
+        unit = "" if units == "1" else f" {units}"
+        said.append(f"within ± {format_number(abs_)}{unit}")
+    if sigfigs is not None:
+        said.append(f"exactly {sigfigs} significant figures")
+    return " and ".join(said)
+
+
+def _shown_value(
+    part: CompiledNumericPart, variant: Variant | None
+) -> tuple[str | None, str | None, str | None]:
+    if variant is None and not isinstance(part.value, Decimal):  # evaluated per student: whose?
+        return None, None, None
+    try:
+        value = part.reference(variant)
+    except SpecError as error:
+        return None, None, error.message
+    # A part graded to n significant figures shows the value an answer must equal, by the same rule.
+    shown = format_quantity(round_sigfigs(value, part.tolerance.sigfigs or SHOWN_FIGURES), part.units)
+    return shown, format_quantity(value, part.units), None
 
 
 def _evaluated(part: NumericPart, of: str, path: Path, context: CompileContext) -> tuple[Evaluated, bool]:

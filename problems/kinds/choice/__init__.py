@@ -3,6 +3,7 @@ conserved) answered by the letter of one of the stated choices; exactly one is r
 
 from __future__ import annotations
 
+import dataclasses
 from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Annotated, Any, Literal
@@ -20,12 +21,15 @@ from problems.kinds.base import (
     CheckResult,
     CompileContext,
     MeaningContext,
+    MistakeInfo,
+    PartInfo,
     Path,
     Reference,
     explain,
 )
 
 if TYPE_CHECKING:
+    from problems.compiled import CompiledProblem
     from problems.schema import ProblemDocument
     from problems.variants import Variant
 
@@ -158,6 +162,20 @@ class ChoiceKind:
             yield f"{path}.choices[{j}].text", choice.text
             if choice.feedback is not None:
                 yield f"{path}.choices[{j}].feedback", choice.feedback
+
+    def describe(
+        self, part: CompiledChoicePart, info: PartInfo, compiled: CompiledProblem, variant: Variant | None
+    ) -> PartInfo:
+        return dataclasses.replace(
+            info,
+            latex=part.solution().latex,
+            expected=part.solution().text,
+            mistakes=tuple(
+                MistakeInfo(rf"\text{{{label(j)}}}", label(j), choice.feedback, True)
+                for j, choice in enumerate(part.multiple.choices)
+                if choice.feedback is not None
+            ),
+        )
 
 
 CHOICE = ChoiceKind()

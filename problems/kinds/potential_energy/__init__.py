@@ -1,0 +1,1 @@
+"""Templates only (`student.html`, `described.html`): the kind is `problems.kinds.lagrangian`."""
