@@ -11,7 +11,7 @@ from __future__ import annotations
 from difflib import get_close_matches
 
 from problems.errors import ErrorItem
-from problems.kinds.numeric import NumericPart
+from problems.kinds import kind_of
 from problems.kinds.symbolic import SymbolicPart
 from problems.modelinfo import ModelQuantities
 from problems.schema import ProblemDocument, format_path
@@ -27,12 +27,9 @@ def is_usage_fault(message: str) -> bool:
 
 def usage_errors(doc: ProblemDocument, model: ModelQuantities) -> list[ErrorItem]:
     """The unasked quantities not listed `unused`, and the parts whose ids nearly name one."""
-    asked = set()
-    for part in doc.parts:
-        if isinstance(part, SymbolicPart) and part.quantity_name in model.names:
-            asked.add(part.quantity_name)
-        elif isinstance(part, NumericPart) and part.of in model.names:
-            asked.add(part.of)
+    asked = {
+        name for part in doc.parts for name in kind_of(part).asked_quantities(part) if name in model.names
+    }
     used = set(asked)
     pending = list(asked)
     while pending:  # an expression asked for uses its quantities

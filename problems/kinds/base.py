@@ -197,6 +197,10 @@ class AnswerKind(Protocol[P_contra, C]):
         """Answered by an expression that a numeric part's `of` may name."""
         ...
 
+    def asked_quantities(self, part: P_contra) -> frozenset[str]:
+        """The model quantities the part asks for or uses (a model quantity no part uses is a fault)."""
+        ...
+
     def check_meaning(self, part: P_contra, path: Path, context: MeaningContext) -> None:
         """Report every fault of a well-shaped part into `context.out`."""
         ...

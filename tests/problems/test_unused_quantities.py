@@ -69,3 +69,24 @@ def test_an_unused_entry_must_name_a_quantity() -> None:
 def test_a_quantity_an_asked_expression_uses_is_asked() -> None:
     quantities = 'tension: {force: string}\n    acceleration: {expression: "(m2*g - tension)/m2"}'
     assert parse_problem(ATWOOD.replace("QUANTITIES", quantities).replace("    answer: (m2 - m1)*g/m2\n", ""))
+
+
+EQUATION_PART = """
+  - id: newton_m2
+    kind: equation
+    prompt: Write Newton's second law for $m_2$, positive downward.
+    asks: Newton's second law for m2
+    unknowns:
+      a: {meaning: "the acceleration of $m_2$, downward", quantity: acceleration}
+      T: {meaning: "the tension in the string", quantity: tension}
+    equation: m2*a = m2*g - T
+"""
+
+
+def test_an_equation_part_asks_for_the_quantities_its_unknowns_take() -> None:
+    """The tension is used by the equation part alone: no `unused:` is needed for it."""
+    quantities = "acceleration: {acceleration: s}\n    tension: {force: string}"
+    text = ATWOOD.replace("QUANTITIES", quantities).replace("model:\n", EQUATION_PART.lstrip("\n") + "model:\n", 1)
+    text = text.replace("answer: (m2 - m1)*g/m2", "answer: (m2 - m1)*g/(m1 + m2)")
+    doc = parse_problem(text)
+    assert [p.id for p in doc.parts] == ["acceleration", "newton_m2"]

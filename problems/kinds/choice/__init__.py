@@ -89,6 +89,9 @@ class CompiledChoicePart:
 
 
 class ChoiceKind:
+    def asked_quantities(self, part: ChoicePart) -> frozenset[str]:
+        return frozenset()
+
     name = "choice"
     expression_answer = False
 

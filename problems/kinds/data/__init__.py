@@ -271,6 +271,9 @@ def _spec(value: float, within: float, units: str) -> NumericSpec:
 
 
 class DataKind:
+    def asked_quantities(self, part: DataPart) -> frozenset[str]:
+        return frozenset({part.measure})
+
     name = "data"
     expression_answer = False
     per_student_view = True  # its student view needs the compiled part: each student's own data

@@ -237,6 +237,9 @@ def _holds(question: EquationQuestion) -> bool | None:
 
 
 class EquationKind:
+    def asked_quantities(self, part: EquationPart) -> frozenset[str]:
+        return frozenset(u.quantity for u in part.unknowns.values() if u.quantity is not None)
+
     name = "equation"
     expression_answer = False
 

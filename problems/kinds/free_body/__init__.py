@@ -119,6 +119,9 @@ def _unit(doc: Any, name: str) -> float:
 
 
 class FreeBodyKind:
+    def asked_quantities(self, part: FreeBodyPart) -> frozenset[str]:
+        return frozenset()  # the forces on a body come from the model's loads, not its quantities
+
     name = "free_body"
     expression_answer = False
 

@@ -282,6 +282,9 @@ class CompiledEnergyPart:
 
 
 class EnergyKind:
+    def asked_quantities(self, part: _EnergyPartBase) -> frozenset[str]:
+        return frozenset()  # the energies come from the model's bodies, not its quantities
+
     expression_answer = False
 
     def __init__(self, asked: Asked) -> None:

@@ -259,6 +259,9 @@ class CompiledNumericPart:
 
 
 class NumericKind:
+    def asked_quantities(self, part: NumericPart) -> frozenset[str]:
+        return frozenset() if part.of is None else frozenset({part.of})
+
     name = "numeric"
     expression_answer = False
 

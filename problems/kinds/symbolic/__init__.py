@@ -214,6 +214,9 @@ class CompiledSymbolicPart:
 
 
 class SymbolicKind:
+    def asked_quantities(self, part: SymbolicPart) -> frozenset[str]:
+        return frozenset({part.quantity_name})
+
     name = "symbolic"
     expression_answer = True
 
