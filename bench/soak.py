@@ -25,6 +25,7 @@ import asyncio
 import contextlib
 import os
 import random
+import shutil
 import signal
 import socket
 import sqlite3
@@ -273,6 +274,7 @@ def main() -> None:
     parser.add_argument("--fault-every", type=float, default=15, help="seconds between faults")
     parser.add_argument("--fault-seconds", type=float, default=8, help="how long a database fault lasts")
     parser.add_argument("--hung", type=float, default=30, help="seconds without an answer that count as hung")
+    parser.add_argument("--server-log", type=Path, help="keep the server's log here")
     args = parser.parse_args()
     with tempfile.TemporaryDirectory(prefix="physcheck-soak-") as workdir:
         soak = Soak(args, Path(workdir))
@@ -282,6 +284,8 @@ def main() -> None:
             stored = soak.stored(key)
         finally:
             soak.stop()
+            if args.server_log is not None:
+                shutil.copyfile(Path(workdir) / "server.log", args.server_log)
         fivexx = {status: n for status, n in soak.statuses.items() if status.startswith("5")}
         print(f"duration {args.duration:.0f} s, {args.concurrency} clients, database {args.database}")
         print(f"requests: {sum(soak.statuses.values())}")

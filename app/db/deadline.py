@@ -38,21 +38,17 @@ class ConnectionDeadlines:
 
     def install(self, engine: Engine) -> None:
         def watch_connection(conn: Any, *_: Any) -> None:
-            self.watch(conn.connection.dbapi_connection)
+            self.watch(_dbapi_connection(conn))
 
         def release_connection(conn: Any, *_: Any) -> None:
-            self.release(conn.connection.dbapi_connection)
-
-        def release_on_error(context: Any) -> None:
-            connection = getattr(context, "connection", None)
-            if connection is not None and connection.connection.dbapi_connection is not None:
-                self.release(connection.connection.dbapi_connection)
+            self.release(_dbapi_connection(conn))
 
         event.listen(engine, "before_cursor_execute", watch_connection)
         event.listen(engine, "after_cursor_execute", release_connection)
         event.listen(engine, "commit", watch_connection)  # released at check-in, right after
         event.listen(engine, "rollback", watch_connection)
-        event.listen(engine, "handle_error", release_on_error)
+        # A statement that failed stays watched until the next one, the rollback or the check-in,
+        # which come at once: nothing that runs while SQLAlchemy handles an error may raise here.
         event.listen(engine.pool, "reset", lambda dbapi_connection, *_: self.watch(dbapi_connection))
         for ending in ("checkin", "close", "invalidate", "detach"):
             event.listen(engine.pool, ending, lambda dbapi_connection, *_: self.release(dbapi_connection))
@@ -69,6 +65,7 @@ class ConnectionDeadlines:
         dialect.do_ping = watched_ping  # type: ignore[method-assign]
 
     def watch(self, dbapi_connection: Any) -> None:
+        """Cut `dbapi_connection` if it is still watched `seconds` from now."""
         if dbapi_connection is None:
             return
         with self._lock:
@@ -105,3 +102,14 @@ class ConnectionDeadlines:
             dup.shutdown(socket.SHUT_RDWR)
         self.cut += 1
         log.warning("the database did not answer within %g s; its connection was cut", self.seconds)
+
+
+def _dbapi_connection(conn: Any) -> Any:
+    """The driver's connection under a SQLAlchemy Connection, or None once it was invalidated or
+    closed (a rollback after a disconnect fires its event first: asking then would raise)."""
+    if conn.closed or conn.invalidated:
+        return None
+    try:
+        return conn.connection.dbapi_connection
+    except Exception:
+        return None
