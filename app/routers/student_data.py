@@ -1,11 +1,13 @@
 """A student's personal data, for the requests schools receive: export it all, or erase it all.
 
     GET    /v1/student-data?student=S   every submission, attempt count, LMS grade target (with the
-                                        scores queued for it), LMS session and API key of S, as JSON
+                                        scores queued for it), LMS session, API key, enrolment and
+                                        extension of S, as JSON
     DELETE /v1/student-data?student=S   erase all of it at once (keys are revoked and their names
                                         removed); the counts of what was deleted
 
 Instructor API keys only (they act for students); an LMS session acts only for itself, so it may not.
+A student enrolled in courses is reached only by an instructor of one of them (404 for the others).
 """
 
 from __future__ import annotations
@@ -18,14 +20,16 @@ from pydantic import BaseModel
 from starlette.concurrency import run_in_threadpool
 
 from app.auth import Principal
+from app.courses import access
 from app.deps import Instructor, ServicesDep
-from app.errors import Forbidden
+from app.errors import Forbidden, NotFound
 from app.openapi import AUTHENTICATED, errors
 from app.routers.submissions import public
 from app.schemas.problems import StudentId, SubmissionPublic
+from app.services import Services
 from app.storage.student_data import StudentData
 
-router = APIRouter(tags=["students"], responses=AUTHENTICATED | errors(403, 422))
+router = APIRouter(tags=["students"], responses=AUTHENTICATED | errors(403, 404, 422))
 
 StudentQuery = Annotated[
     StudentId,
@@ -72,6 +76,19 @@ class StudentKeyPublic(BaseModel):
     revoked_at: datetime | None
 
 
+class EnrolmentPublic(BaseModel):
+    course_id: int
+    roster_id: str | None
+    name: str
+    email: str
+    enrolled_at: datetime
+
+
+class ExtensionPublic(BaseModel):
+    assignment_id: int
+    due_at: datetime
+
+
 class StudentDataPublic(BaseModel):
     student: str
     submissions: list[SubmissionPublic]
@@ -79,6 +96,8 @@ class StudentDataPublic(BaseModel):
     grade_targets: list[GradeTargetPublic]
     lti_sessions: list[LtiSessionPublic]
     keys: list[StudentKeyPublic]
+    enrolments: list[EnrolmentPublic] = []
+    extensions: list[ExtensionPublic] = []
 
 
 class ErasedCounts(BaseModel):
@@ -88,6 +107,9 @@ class ErasedCounts(BaseModel):
     scores: int
     lti_sessions: int
     keys: int
+    enrolments: int = 0
+    course_sessions: int = 0
+    extensions: int = 0
 
 
 class StudentErased(BaseModel):
@@ -95,9 +117,11 @@ class StudentErased(BaseModel):
     erased: ErasedCounts
 
 
-def _for_students(principal: Principal) -> None:
+def _for_students(services: Services, principal: Principal, student: str) -> None:
     if not principal.acts_for_students:
         raise Forbidden("A session opened from an LMS acts only for itself; use an instructor API key.")
+    if not access.may_reach_student(services.stores, principal, student):
+        raise NotFound(f"There is no student {student!r} in your courses.")
 
 
 @router.get("/v1/student-data", response_model=StudentDataPublic)
@@ -105,7 +129,7 @@ async def export_student(
     student: StudentQuery, services: ServicesDep, principal: Instructor
 ) -> StudentDataPublic:
     """Everything stored about one student (empty lists for a student with nothing stored)."""
-    _for_students(principal)
+    await run_in_threadpool(_for_students, services, principal, student)
     data = await run_in_threadpool(services.stores.student_data.export, student)
     return _public(data)
 
@@ -114,7 +138,7 @@ async def export_student(
 async def erase_student(student: StudentQuery, services: ServicesDep, principal: Instructor) -> StudentErased:
     """Erase everything stored about one student, at once; the counts of what was deleted. Scores not
     yet sent to an LMS are not sent. The student may start afresh (no attempts used)."""
-    _for_students(principal)
+    await run_in_threadpool(_for_students, services, principal, student)
     erased = await run_in_threadpool(services.stores.student_data.erase, student)
     return StudentErased(
         student=student,
@@ -125,6 +149,9 @@ async def erase_student(student: StudentQuery, services: ServicesDep, principal:
             scores=erased.scores,
             lti_sessions=erased.lti_sessions,
             keys=erased.keys,
+            enrolments=erased.enrolments,
+            course_sessions=erased.course_sessions,
+            extensions=erased.extensions,
         ),
     )
 
@@ -160,4 +187,15 @@ def _public(data: StudentData) -> StudentDataPublic:
             StudentKeyPublic(id=k.id, name=k.name, created_at=k.created_at, revoked_at=k.revoked_at)
             for k in data.keys
         ],
+        enrolments=[
+            EnrolmentPublic(
+                course_id=e.course_id,
+                roster_id=e.roster_id,
+                name=e.name,
+                email=e.email,
+                enrolled_at=e.enrolled_at,
+            )
+            for e in data.enrolments
+        ],
+        extensions=[ExtensionPublic(assignment_id=x.assignment_id, due_at=x.due_at) for x in data.extensions],
     )

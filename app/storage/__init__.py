@@ -138,6 +138,6 @@ def memory_stores(*, clock: Clock = utc_now) -> Stores:
         platforms=platforms,
         launches=MemoryLaunchStore(),
         lti_sessions=lti_sessions,
-        student_data=MemoryStudentData(submissions, outbox, lti_sessions, platforms, keys),
+        student_data=MemoryStudentData(submissions, outbox, lti_sessions, platforms, keys, courses),
         courses=courses,
     )

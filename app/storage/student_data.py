@@ -1,6 +1,7 @@
 """One student's personal data, as a school's export or erasure request needs it: every submission,
 the attempts counted, where their scores go in an LMS (grade targets) and the scores queued there,
-the sessions LMS launches opened for them, and their API keys. A protocol with its SQL and in-memory
+the sessions LMS launches opened for them, their API keys, and their courses' records (enrolments with
+the roster's name and email, personal sign-in links, sessions those opened, extensions). A protocol with its SQL and in-memory
 implementations.
 
 Erasure is the one exception to "submissions are append-only": the database lets a DELETE through only
@@ -9,12 +10,13 @@ for a student named in `student_erasures`, a row that exists only inside the era
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from datetime import datetime
 from typing import Protocol
 
 from sqlalchemy import delete, func, select, update
 
+from app.courses.models import CourseSessionRow, Enrolment, Extension, SignInToken
 from app.db import keys as key_repository
 from app.db.database import Database
 from app.db.models import ApiKey, AttemptCounter, StudentErasure, Submission
@@ -23,6 +25,7 @@ from app.db.submissions import _record as submission_record
 from app.db.types import utc_now
 from app.lti.models import LtiGradeTarget, LtiPlatform, LtiScoreOutbox, LtiSession
 from app.storage.memory import MemoryApiKeyStore, MemoryScoreOutbox, MemorySubmissionStore
+from app.storage.memory_courses import MemoryCourseStore
 from app.storage.memory_lti import MemoryLtiSessionStore, MemoryPlatformStore
 
 
@@ -72,6 +75,21 @@ class StudentKey:
 
 
 @dataclass(frozen=True)
+class CourseEnrolment:
+    course_id: int
+    roster_id: str | None
+    name: str
+    email: str
+    enrolled_at: datetime
+
+
+@dataclass(frozen=True)
+class StudentExtension:
+    assignment_id: int
+    due_at: datetime
+
+
+@dataclass(frozen=True)
 class StudentData:
     student: str
     submissions: list[SubmissionRecord]
@@ -79,6 +97,8 @@ class StudentData:
     grade_targets: list[GradeTarget]
     lti_sessions: list[LaunchSession]
     keys: list[StudentKey]
+    enrolments: list[CourseEnrolment] = field(default_factory=list)
+    extensions: list[StudentExtension] = field(default_factory=list)
 
 
 @dataclass(frozen=True)
@@ -91,6 +111,9 @@ class Erased:
     scores: int
     lti_sessions: int
     keys: int  # revoked and their names removed (kept as rows: key ids are never reused)
+    enrolments: int = 0
+    course_sessions: int = 0  # sessions opened by sign-in links, and the links themselves
+    extensions: int = 0
 
 
 class StudentDataStore(Protocol):
@@ -159,7 +182,19 @@ class SqlStudentData:
                     select(ApiKey).where(ApiKey.student == student).order_by(ApiKey.id)
                 )
             ]
-        return StudentData(student, submissions, attempts, targets, sessions, keys)
+            enrolments = [
+                CourseEnrolment(row.course_id, row.roster_id, row.name, row.email, row.created_at)
+                for row in session.scalars(
+                    select(Enrolment).where(Enrolment.student == student).order_by(Enrolment.course_id)
+                )
+            ]
+            extensions = [
+                StudentExtension(row.assignment_id, row.due_at)
+                for row in session.scalars(
+                    select(Extension).where(Extension.student == student).order_by(Extension.assignment_id)
+                )
+            ]
+        return StudentData(student, submissions, attempts, targets, sessions, keys, enrolments, extensions)
 
     def erase(self, student: str) -> Erased:
         with self._database.session() as session:
@@ -189,6 +224,12 @@ class SqlStudentData:
                         .values(name=None, revoked_at=func.coalesce(ApiKey.revoked_at, utc_now()))
                     )
                 ),
+                extensions=_deleted(session.execute(delete(Extension).where(Extension.student == student))),
+                course_sessions=_deleted(
+                    session.execute(delete(CourseSessionRow).where(CourseSessionRow.student == student))
+                )
+                + _deleted(session.execute(delete(SignInToken).where(SignInToken.student == student))),
+                enrolments=_deleted(session.execute(delete(Enrolment).where(Enrolment.student == student))),
             )
             session.execute(delete(StudentErasure).where(StudentErasure.student == student))
         key_repository.revocations += 1  # caches of authenticated keys drop at once
@@ -209,9 +250,10 @@ class MemoryStudentData:
         sessions: MemoryLtiSessionStore,
         platforms: MemoryPlatformStore,
         keys: MemoryApiKeyStore,
+        courses: MemoryCourseStore,
     ) -> None:
         self._submissions, self._outbox, self._sessions = submissions, outbox, sessions
-        self._platforms, self._keys = platforms, keys
+        self._platforms, self._keys, self._courses = platforms, keys, courses
 
     def export(self, student: str) -> StudentData:
         with self._submissions._lock, self._outbox._lock, self._sessions._lock:
@@ -251,7 +293,21 @@ class MemoryStudentData:
             for r in self._keys.list()
             if r.student == student
         ]
-        return StudentData(student, list(submissions), attempts, targets, sessions, keys)
+        courses = self._courses
+        with courses._lock:
+            enrolments = [
+                CourseEnrolment(e.course_id, e.roster_id, e.name, e.email, e.created_at)
+                for (_, who), e in sorted(courses._enrolments.items())
+                if who == student
+            ]
+            extensions = [
+                StudentExtension(assignment, due)
+                for (assignment, who), due in sorted(courses._extensions.items())
+                if who == student
+            ]
+        return StudentData(
+            student, list(submissions), attempts, targets, sessions, keys, enrolments, extensions
+        )
 
     def erase(self, student: str) -> Erased:
         with self._submissions._lock, self._outbox._lock, self._sessions._lock:
@@ -272,7 +328,26 @@ class MemoryStudentData:
             subs._rows, subs._used = kept_rows, used
             self._outbox._targets, self._outbox._rows = targets, scores
             self._sessions._sessions = sessions
-        return erased
+        return replace(erased, **self._forget_courses(student))
+
+    def _forget_courses(self, student: str) -> dict[str, int]:
+        courses = self._courses
+        with courses._lock:
+            enrolments = {k: e for k, e in courses._enrolments.items() if k[1] != student}
+            extensions = {k: d for k, d in courses._extensions.items() if k[1] != student}
+            tokens = {k: t for k, t in courses._tokens.items() if t[1] != student}
+            sessions = {k: c for k, c in courses._sessions.items() if c.student != student}
+            counts = {
+                "enrolments": len(courses._enrolments) - len(enrolments),
+                "extensions": len(courses._extensions) - len(extensions),
+                "course_sessions": len(courses._sessions)
+                - len(sessions)
+                + len(courses._tokens)
+                - len(tokens),
+            }
+            courses._enrolments, courses._extensions = enrolments, extensions
+            courses._tokens, courses._sessions = tokens, sessions
+        return counts
 
     def _forget_keys(self, student: str) -> int:
         """Revoke the student's keys and remove their names; how many."""

@@ -184,8 +184,10 @@ def test_no_instructor_reaches_another_courses_students(client, teacher, other_t
         f"/v1/courses/{course}/gradebook.csv",
         f"/v1/problems/yo-yo?student={student}",
         f"/v1/submissions?student={student}",
+        f"/v1/student-data?student={student}",
     ):
         assert client.get(path, headers=other_teacher).status_code == 404, path
+    assert client.delete(f"/v1/student-data?student={student}", headers=other_teacher).status_code == 404
     assert (
         client.post(f"/v1/courses/{course}/sign-in-links", json={}, headers=other_teacher).status_code == 404
     )
@@ -208,6 +210,12 @@ def test_no_instructor_reaches_another_courses_students(client, teacher, other_t
     )
     assert [i["student"] for i in client.get("/v1/submissions", headers=teacher).json()["items"]] == [student]
     assert client.get("/v1/submissions", headers=other_teacher).json()["items"] == []
+    # The course's instructor exports the student's roster entry with their work, and erases it all.
+    exported = client.get(f"/v1/student-data?student={student}", headers=teacher).json()
+    assert [e["course_id"] for e in exported["enrolments"]] == [course] and len(exported["submissions"]) == 1
+    erased = client.delete(f"/v1/student-data?student={student}", headers=teacher).json()["erased"]
+    assert (erased["submissions"], erased["enrolments"]) == (1, 1)
+    assert student not in [s["student"] for s in client.get(f"/v1/courses/{course}/roster", headers=teacher).json()]
 
 
 def test_a_ta_reads_the_gradebook_but_does_not_change_the_course(client, teacher):

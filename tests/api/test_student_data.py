@@ -51,6 +51,9 @@ def test_an_instructor_erases_one_students_data_and_no_one_elses(
             "scores": 0,
             "lti_sessions": 0,
             "keys": 1,
+            "enrolments": 0,
+            "course_sessions": 0,
+            "extensions": 0,
         },
     }
     listed = client.get("/v1/submissions", params={"student": "eve"}, headers=instructor_headers).json()

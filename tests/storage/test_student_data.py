@@ -13,6 +13,8 @@ from sqlalchemy.exc import DatabaseError
 from app.auth import Role
 from app.db.database import Database
 from app.db.models import Submission
+from app.courses import sessions as course_sessions
+from app.courses.records import AssignmentSpec
 from app.db.types import utc_now
 from app.lti.platforms import add_platform
 from app.lti.sessions import SessionRecord
@@ -43,6 +45,19 @@ def _two_students(stores: Stores) -> None:
         )
         stores.lti_sessions.save(f"session-{sub}", record, now)
         stores.keys.create(Role.STUDENT, name=f"Key of {sub}", student=student)
+    # both on a course's roster, each with a personal sign-in link, a session and an extension
+    course = stores.courses.create_course("Mechanics", owner="key:1", owner_name="Prof", timezone="UTC")
+    assignment = stores.courses.create_assignment(
+        course.id, AssignmentSpec("Homework 1", (PROBLEM,), now, now + timedelta(days=7))
+    )
+    for student in (ERASED, KEPT):
+        sub = student.rsplit(":", 1)[1]
+        stores.courses.enrol(course.id, student, f"Name of {sub}", f"{sub}@uni.example")
+        course_sessions.sign_in(
+            stores.courses, course_sessions.issue_link(stores.courses, course.id, student, now), now
+        )
+        course_sessions.issue_link(stores.courses, course.id, student, now)
+        stores.courses.set_extension(assignment.id, student, now + timedelta(days=9))
 
 
 def test_export_holds_everything_of_one_student_and_nothing_of_others(stores: Stores):
@@ -59,6 +74,9 @@ def test_export_holds_everything_of_one_student_and_nothing_of_others(stores: St
     assert (session.issuer, session.sub, session.name) == (ISSUER, "erased", "Name of erased")
     [key] = data.keys
     assert (key.name, key.revoked_at) == ("Key of erased", None)
+    [enrolment] = data.enrolments
+    assert (enrolment.name, enrolment.email) == ("Name of erased", "erased@uni.example")
+    assert len(data.extensions) == 1
 
 
 def test_an_unknown_student_exports_empty(stores: Stores):
@@ -79,7 +97,15 @@ def test_erase_removes_one_students_data_and_keeps_the_others(stores: Stores):
     scores_before = len(stores.outbox.scores())
     erased = stores.student_data.erase(ERASED)
     assert erased == Erased(
-        submissions=2, attempt_counters=1, grade_targets=1, scores=erased.scores, lti_sessions=1, keys=1
+        submissions=2,
+        attempt_counters=1,
+        grade_targets=1,
+        scores=erased.scores,
+        lti_sessions=1,
+        keys=1,
+        enrolments=1,
+        course_sessions=3,  # the session a link opened, that spent link, and a newer one not yet used
+        extensions=1,
     )
     assert erased.scores >= 1 and len(stores.outbox.scores()) == scores_before - erased.scores
     after = stores.student_data.export(ERASED)
@@ -87,6 +113,8 @@ def test_erase_removes_one_students_data_and_keeps_the_others(stores: Stores):
     assert stores.submissions.page(student=ERASED).items == []
     assert stores.submissions.attempts_used(PROBLEM, PART, ERASED) == 0
     assert stores.lti_sessions.get("session-erased") is None
+    assert (after.enrolments, after.extensions) == ([], [])
+    assert stores.courses.courses_enrolled(ERASED) == []
     [key] = after.keys  # kept as a row, revoked and nameless
     assert key.name is None and key.revoked_at is not None
     assert [k.revoked for k in stores.keys.list() if k.student == ERASED] == [True]
