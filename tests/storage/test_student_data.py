@@ -11,10 +11,10 @@ from sqlalchemy import delete, update
 from sqlalchemy.exc import DatabaseError
 
 from app.auth import Role
-from app.db.database import Database
-from app.db.models import Submission
 from app.courses import sessions as course_sessions
 from app.courses.records import AssignmentSpec
+from app.db.database import Database
+from app.db.models import Submission
 from app.db.types import utc_now
 from app.lti.platforms import add_platform
 from app.lti.sessions import SessionRecord
