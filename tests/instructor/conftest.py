@@ -102,20 +102,26 @@ def signed_in(client: TestClient, instructor_key: str) -> TestClient:
     return client
 
 
-@pytest.fixture(scope="module")
-def live_server(page_grading_pool: GradingPool, yo_yo_only: Path) -> Iterator[LiveServer]:
-    """tests/browser.py's live server on the in-memory stores, with the yo-yo alone for a bank: these
-    pages need one problem, and compiling the whole bank first would take minutes of the run."""
+def serve_bank(pool: GradingPool, bank_dir: Path, ready_within: float = 120) -> Iterator[LiveServer]:
+    """tests/browser.py's live server on the in-memory stores with `bank_dir` for a bank, once it is
+    ready (its problems compiled)."""
     settings = Settings(
         database_url="sqlite://",  # never opened: the app runs on the in-memory stores
         secret="page-test-secret-0123456789",
         check_workers=1,
-        bank_dir=yo_yo_only,
+        bank_dir=bank_dir,
     )
-    app = make_app(settings, page_grading_pool)
+    app = make_app(settings, pool)
     for url in serve(app):
-        deadline = time.monotonic() + 120
+        deadline = time.monotonic() + ready_within
         while httpx.get(f"{url}/ready").status_code != 200:
-            assert time.monotonic() < deadline, "the yo-yo did not compile"
+            assert time.monotonic() < deadline, f"the bank in {bank_dir} did not compile"
             time.sleep(0.2)
         yield LiveServer(url, app)
+
+
+@pytest.fixture(scope="module")
+def live_server(page_grading_pool: GradingPool, yo_yo_only: Path) -> Iterator[LiveServer]:
+    """The yo-yo alone for a bank: these pages need one problem, and compiling the whole bank first
+    would take minutes of the run."""
+    yield from serve_bank(page_grading_pool, yo_yo_only)

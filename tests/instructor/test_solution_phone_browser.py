@@ -5,19 +5,16 @@ inside its own box."""
 from __future__ import annotations
 
 import shutil
-import time
 from collections.abc import Callable, Iterator
 from pathlib import Path
 from typing import Any
 
-import httpx
 import pytest
 
 from app.grading.pool import GradingPool
-from app.settings import Settings
 from problems.loader import BANK_DIR
-from tests.browser import WIDTHS, LiveServer, artifacts_dir, check_page, serve
-from tests.instructor.conftest import make_app
+from tests.browser import WIDTHS, LiveServer, artifacts_dir, check_page
+from tests.instructor.conftest import serve_bank
 from tests.instructor.test_pages_browser import signed_in_page
 
 pytestmark = [pytest.mark.browser, pytest.mark.slow]
@@ -49,19 +46,7 @@ def live_server(
     bank: Path = tmp_path_factory.mktemp("bank")
     for problem in PROBLEMS:
         shutil.copytree(BANK_DIR / problem, bank / problem)
-    settings = Settings(
-        database_url="sqlite://",  # never opened: the app runs on the in-memory stores
-        secret="page-test-secret-0123456789",
-        check_workers=1,
-        bank_dir=bank,
-    )
-    app = make_app(settings, page_grading_pool)
-    for url in serve(app):
-        deadline = time.monotonic() + 180
-        while httpx.get(f"{url}/ready").status_code != 200:
-            assert time.monotonic() < deadline, "the bank did not compile"
-            time.sleep(0.2)
-        yield LiveServer(url, app)
+    yield from serve_bank(page_grading_pool, bank, ready_within=180)
 
 
 @pytest.mark.parametrize("problem", PROBLEMS)
