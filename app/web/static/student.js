@@ -118,14 +118,34 @@
 
   // A free-body part: palette buttons add a force (a list row with a direction field, the diagram a
   // screen reader reads), arrows drawn from the body's centre; every change writes the answer box as
-  // text ("weight 270; normal 110"), which is also what a student may type.
+  // text ("weight 270; normal 110"), which is also what a student may type. An arrow can also be
+  // dragged (mouse, pen or touch, through Pointer Events): its head, or anywhere round the body, turns
+  // it to point at the pointer in 5° steps; the field and the answer follow, the keyboard path is the
+  // same field.
   var SVG = "http://www.w3.org/2000/svg";
   var DEFAULT_ANGLE = { weight: 270, normal: 90, tension: 90, friction: 0, spring: 180, applied: 0, motion: 0 };
+  var ARROW = 80;       // arrow length, in the canvas's units (its viewBox is 220 across)
+  var HIT = 22;         // the head's hit radius: 44 units, 44 CSS px at the canvas's own size
+  var SNAP = 5;         // degrees
+  var DEAD = 6;         // nearer the centre than this, the pointer has no direction
+
+  function svgEl(name, attrs) {
+    var el = document.createElementNS(SVG, name);
+    for (var a in attrs) { el.setAttribute(a, String(attrs[a])); }
+    return el;
+  }
+
+  function gap(a, b) { return Math.abs(((a - b + 540) % 360) - 180); }
 
   function wireForces(editor, input, changed) {
     var list = editor.querySelector(".drawn-forces");
+    var canvas = editor.querySelector(".force-canvas");
     var arrows = editor.querySelector(".arrows");
-    function write() {
+    var dragging = null;  // { field, start, pointer } while a pointer turns an arrow
+
+    function fields() { return list.querySelectorAll("li input"); }
+
+    function draw() {
       var rows = list.querySelectorAll("li");
       var parts = [];
       arrows.textContent = "";
@@ -134,22 +154,78 @@
         var angle = Number(rows[i].querySelector("input").value) || 0;
         parts.push(kind + " " + angle);
         var rad = angle * Math.PI / 180;
-        var line = document.createElementNS(SVG, "line");
-        line.setAttribute("x1", "0"); line.setAttribute("y1", "0");
-        line.setAttribute("x2", String(Math.round(90 * Math.cos(rad))));
-        line.setAttribute("y2", String(Math.round(-90 * Math.sin(rad))));
-        line.setAttribute("stroke", "currentColor"); line.setAttribute("stroke-width", "3");
-        arrows.appendChild(line);
-        var label = document.createElementNS(SVG, "text");
-        label.setAttribute("x", String(Math.round(100 * Math.cos(rad))));
-        label.setAttribute("y", String(Math.round(-100 * Math.sin(rad))));
-        label.setAttribute("font-size", "11"); label.setAttribute("text-anchor", "middle");
+        var cos = Math.cos(rad), sin = -Math.sin(rad);
+        var tipX = Math.round(ARROW * cos), tipY = Math.round(ARROW * sin);
+        var group = svgEl("g", { "class": "force" + (dragging && dragging.index === i ? " dragging" : ""), "data-index": i });
+        group.appendChild(svgEl("line", { x1: 0, y1: 0, x2: Math.round((ARROW - 10) * cos), y2: Math.round((ARROW - 10) * sin),
+          stroke: "currentColor", "stroke-width": 3 }));
+        // The head: a ring that says "grab here" under a filled triangle, and a touch-sized clear hit area.
+        group.appendChild(svgEl("circle", { "class": "handle", cx: tipX, cy: tipY, r: 9 }));
+        var side = 6;
+        var baseX = (ARROW - 12) * cos, baseY = (ARROW - 12) * sin;
+        group.appendChild(svgEl("polygon", { "class": "head", fill: "currentColor", points: [
+          tipX + "," + tipY,
+          Math.round(baseX - side * sin) + "," + Math.round(baseY + side * cos),
+          Math.round(baseX + side * sin) + "," + Math.round(baseY - side * cos)].join(" ") }));
+        group.appendChild(svgEl("circle", { "class": "hit", cx: tipX, cy: tipY, r: HIT, fill: "transparent" }));
+        // The name beyond the head, kept inside the canvas (about 6 units a letter); beside a level arrow it
+        // goes under the head rather than over it.
+        var room = 108 - 3 * kind.length;
+        var labelX = Math.max(-room, Math.min(room, Math.round(100 * cos)));
+        var labelY = Math.abs(cos) > 0.7 ? tipY + 24 : Math.round(100 * sin) + 4;
+        var label = svgEl("text", { x: labelX, y: labelY, "font-size": 11, "text-anchor": "middle" });
         label.textContent = kind;
-        arrows.appendChild(label);
+        group.appendChild(label);
+        arrows.appendChild(group);
       }
       input.value = parts.join("; ");
-      changed();
     }
+    function write() { draw(); changed(); }
+
+    // The angle from the body's centre to the pointer, snapped; null at the very centre.
+    function pointedAngle(event) {
+      var point = canvas.createSVGPoint();
+      point.x = event.clientX; point.y = event.clientY;
+      var local = point.matrixTransform(canvas.getScreenCTM().inverse());
+      if (Math.hypot(local.x, local.y) < DEAD) { return null; }
+      var degrees = Math.atan2(-local.y, local.x) * 180 / Math.PI;
+      return ((Math.round(degrees / SNAP) * SNAP) % 360 + 360) % 360;
+    }
+
+    canvas.addEventListener("pointerdown", function (event) {
+      var all = fields();
+      if (!all.length || input.disabled || all[0].disabled || event.button > 0) { return; }
+      var angle = pointedAngle(event);
+      if (angle === null) { return; }
+      var grabbed = event.target.closest && event.target.closest("g.force");
+      var index = grabbed ? Number(grabbed.getAttribute("data-index")) : 0;
+      if (!grabbed) {  // pressed near the body, not on a head: turn the arrow nearest that way
+        for (var i = 1; i < all.length; i++) {
+          if (gap(Number(all[i].value) || 0, angle) < gap(Number(all[index].value) || 0, angle)) { index = i; }
+        }
+      }
+      event.preventDefault();
+      canvas.setPointerCapture(event.pointerId);
+      dragging = { index: index, field: all[index], start: all[index].value, pointer: event.pointerId };
+      dragging.field.value = String(angle);
+      draw();
+    });
+    canvas.addEventListener("pointermove", function (event) {
+      if (!dragging || event.pointerId !== dragging.pointer) { return; }
+      var angle = pointedAngle(event);
+      if (angle === null || String(angle) === dragging.field.value) { return; }
+      dragging.field.value = String(angle);
+      draw();
+    });
+    function finish(event, keep) {
+      if (!dragging || event.pointerId !== dragging.pointer) { return; }
+      if (!keep) { dragging.field.value = dragging.start; }  // the browser took the gesture: undo
+      dragging = null;
+      write();
+    }
+    canvas.addEventListener("pointerup", function (event) { finish(event, true); });
+    canvas.addEventListener("pointercancel", function (event) { finish(event, false); });
+
     function add(kind, angle) {
       var row = document.createElement("li");
       row.setAttribute("data-kind", kind);
