@@ -243,6 +243,8 @@ def not_found(api: Api, method: str, path: str) -> httpx.Response:
     url = url.replace("{member}", "key:99")
     if path == "/v1/submissions":  # a student of a course the caller does not teach
         return api.client.get("/v1/submissions", params={"student": STUDENT}, headers=api.key())
+    if path == "/v1/student-data":  # the same, for their personal data
+        return api.client.request(method.upper(), path, params={"student": STUDENT}, headers=api.key())
     if (method, path) == ("post", "/v1/courses/{course_id}/roster"):
         headers = {**api.instructor, "Content-Type": "text/csv"}
         return api.client.post(url, content=ROSTER_CSV, headers=headers)
