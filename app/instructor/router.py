@@ -40,6 +40,7 @@ from app.deps import ServicesDep, budget_wait
 from app.errors import AppError, Busy
 from app.instructor import session as auth
 from app.instructor.described import Described, MistakeInfo, describe
+from app.instructor.findings import Finding, class_findings
 from app.instructor.plots import Bar, bar_chart
 from app.instructor.preview import preview as preview_of
 from app.lti.platforms import platform_origins
@@ -50,6 +51,8 @@ from app.web.layout import page
 from app.web.rendering import render_inline, tex_to_mathml
 from physics.mathinput.render import in_student_style
 from physics.wording import counted
+from problems.kinds import kind_of
+from problems.kinds.base import ReportsFindings
 from problems.loader import MAX_DOCUMENT_BYTES, parse_problem
 from problems.variants import fill_statement, fixed_variant
 from problems.vetting import stage_not_run
@@ -656,6 +659,22 @@ def _mistake_bar(mistakes: Mapping[str, MistakeInfo], feedback: str, submissions
     return Bar(spoken, submissions, counted(submissions, "answer"), shown)
 
 
+def _findings_chart(chart: str, title: str, findings: list[Finding], tried: int) -> Any:
+    return bar_chart(
+        chart,
+        title,
+        [
+            Bar(
+                f.text.replace("$", ""),
+                f.students,
+                f"{f.students} of {counted(tried, 'student')}",
+                render_inline(f.text),
+            )
+            for f in findings
+        ],
+    )
+
+
 def _percent(part: results_repository.PartResults) -> str:
     share = part.percent_correct
     return "–" if share is None else f"{share:.0f} %"
@@ -691,6 +710,8 @@ async def results(problem_id: str, request: Request, services: ServicesDep, who:
     sections = []
     for index, part in enumerate(data["parts"]):
         chart = f"part-{index}"
+        kind = kind_of(data["doc"].parts[index])
+        findings = class_findings(kind, part) if isinstance(kind, ReportsFindings) else None
         sections.append(
             {
                 "index": index,
@@ -716,6 +737,15 @@ async def results(problem_id: str, request: Request, services: ServicesDep, who:
                     f"{chart}-mistakes",
                     f"Part {index + 1}: wrong answers by known mistake",
                     [_mistake_bar(mistakes, c.key, c.submissions) for c in part.mistakes],
+                ),
+                "findings": findings,
+                "findings_chart": None
+                if findings is None
+                else _findings_chart(
+                    f"{chart}-findings",
+                    f"Part {index + 1}: what the class's wrong answers miss, by students",
+                    findings,
+                    part.tried,
                 ),
             }
         )
