@@ -20,7 +20,7 @@ from problems.compiled import CompiledProblem, compile_problem
 from problems.loader import BANK_DIR
 from problems.variants import draw_variant
 from tests.bank import bank_documents
-from tests.instructor.conftest import stores_of
+from tests.instructor.conftest import new_key, stores_of
 
 PROBLEM = "moving-wedge-lagrangian"
 RIGHT_NORMAL = "{normal}"  # the block's normal force, perpendicular to its own incline: 90° - θ
@@ -81,7 +81,8 @@ def settings(settings: Settings, wedge_only: Path) -> Settings:
 
 
 @pytest.fixture
-def results_html(signed_in: TestClient, settings: Settings) -> str:
+def filed(signed_in: TestClient, settings: Settings) -> TestClient:
+    """The signed-in client, its app holding SUBMISSIONS each graded for its student."""
     doc, compiled = bank_documents()[PROBLEM], _compiled()
     stores = stores_of(signed_in)
     for student, part, typed in SUBMISSIONS:
@@ -96,7 +97,12 @@ def results_html(signed_in: TestClient, settings: Settings) -> str:
             verdict=run_job(compiled.part(part).job(answer, variant)),
             max_attempts=None,
         )
-    response = signed_in.get(f"/instructor/problems/{PROBLEM}/results")
+    return signed_in
+
+
+@pytest.fixture
+def results_html(filed: TestClient) -> str:
+    response = filed.get(f"/instructor/problems/{PROBLEM}/results")
     assert response.status_code == 200
     return response.text
 
@@ -123,6 +129,40 @@ def test_class_results_count_each_finding_by_the_students_told_it(
         numbers for cell, *numbers in _finding_rows(_part(results_html, index)) if re.search(finding, cell)
     ]
     assert counts == [[students, tried, submissions]]
+
+
+@pytest.mark.parametrize(("index", "finding", "students", "tried", "submissions"), FINDINGS)
+def test_the_results_api_counts_each_finding_as_the_page_does(
+    filed: TestClient,
+    instructor_key: str,
+    index: int,
+    finding: str,
+    students: int,
+    tried: int,
+    submissions: int,
+):
+    response = filed.get(
+        f"/v1/problems/{PROBLEM}/results", headers={"Authorization": f"Bearer {instructor_key}"}
+    )
+    assert response.status_code == 200
+    part = response.json()["parts"][index]
+    assert part["tried"] == tried
+    counts = [(f["students"], f["submissions"]) for f in part["findings"] if re.search(finding, f["finding"])]
+    assert counts == [(students, submissions)]
+
+
+def test_the_results_api_gives_no_findings_for_other_kinds_and_refuses_students(
+    filed: TestClient, instructor_key: str
+):
+    student = new_key(stores_of(filed), "student", "Ada", "ada")
+    refused = filed.get(f"/v1/problems/{PROBLEM}/results", headers={"Authorization": f"Bearer {student}"})
+    assert refused.status_code == 403
+    parts = filed.get(
+        f"/v1/problems/{PROBLEM}/results", headers={"Authorization": f"Bearer {instructor_key}"}
+    )
+    equation = parts.json()["parts"][3]
+    assert (equation["kind"], equation["findings"], equation["tried"]) == ("equation", None, 1)
+    assert [m["students"] for m in equation["mistakes"]] == [1]
 
 
 def test_findings_are_charted_most_students_first_and_only_for_kinds_that_name_them(results_html: str):
