@@ -8,6 +8,7 @@ from collections import Counter, defaultdict
 from dataclasses import dataclass
 
 from app.db.class_results import PartResults
+from problems.kinds import AnyPart, kind_of
 from problems.kinds.base import ReportsFindings
 
 
@@ -28,3 +29,9 @@ def class_findings(kind: ReportsFindings, part: PartResults) -> list[Finding]:
             submissions[finding] += told.submissions
     found = [Finding(text, len(who), submissions[text]) for text, who in students.items()]
     return sorted(found, key=lambda f: (-f.students, -f.submissions, f.text))
+
+
+def part_findings(part: AnyPart, results: PartResults) -> list[Finding] | None:
+    """`class_findings` for a part whose kind names findings, else None (nothing to count)."""
+    kind = kind_of(part)
+    return class_findings(kind, results) if isinstance(kind, ReportsFindings) else None

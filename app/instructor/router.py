@@ -40,7 +40,7 @@ from app.deps import ServicesDep, budget_wait
 from app.errors import AppError, Busy
 from app.instructor import session as auth
 from app.instructor.described import Described, MistakeInfo, describe
-from app.instructor.findings import Finding, class_findings
+from app.instructor.findings import Finding, part_findings
 from app.instructor.plots import Bar, bar_chart
 from app.instructor.preview import preview as preview_of
 from app.lti.platforms import platform_origins
@@ -51,8 +51,6 @@ from app.web.layout import page
 from app.web.rendering import render_inline, tex_to_mathml
 from physics.mathinput.render import in_student_style
 from physics.wording import counted
-from problems.kinds import kind_of
-from problems.kinds.base import ReportsFindings
 from problems.loader import MAX_DOCUMENT_BYTES, parse_problem
 from problems.variants import fill_statement, fixed_variant
 from problems.vetting import stage_not_run
@@ -710,8 +708,7 @@ async def results(problem_id: str, request: Request, services: ServicesDep, who:
     sections = []
     for index, part in enumerate(data["parts"]):
         chart = f"part-{index}"
-        kind = kind_of(data["doc"].parts[index])
-        findings = class_findings(kind, part) if isinstance(kind, ReportsFindings) else None
+        findings = part_findings(data["doc"].parts[index], part)
         sections.append(
             {
                 "index": index,

@@ -14,7 +14,7 @@ from app.courses import access
 from app.db.records import ProblemRecord
 from app.deps import Instructor, Problems, ServicesDep
 from app.errors import AppError, Forbidden, NotFound
-from app.instructor.findings import class_findings
+from app.instructor.findings import part_findings
 from app.instructor.worked import body_words
 from app.lti.outbox import DeliveryProblem
 from app.openapi import AUTHENTICATED, errors
@@ -36,8 +36,6 @@ from app.storage import CompiledEntry
 from physics.engine.notation import fill_bodies
 from problems.compiled import CompiledProblem
 from problems.errors import ProblemInvalid
-from problems.kinds import kind_of
-from problems.kinds.base import ReportsFindings
 
 # Every route here is for instructors: a student key is 403.
 router = APIRouter(tags=["authoring"], responses=AUTHENTICATED | errors(403))
@@ -199,8 +197,7 @@ async def results(problem_id: str, services: ServicesDep, principal: Instructor)
         found = services.stores.submissions.class_results(problem_id, [p.id for p in doc.parts])
         parts = []
         for part, counted in zip(doc.parts, found, strict=True):
-            kind = kind_of(part)
-            findings = class_findings(kind, counted) if isinstance(kind, ReportsFindings) else None
+            findings = part_findings(part, counted)
             parts.append(
                 PartResultsPublic(
                     part=part.id,
