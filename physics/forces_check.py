@@ -153,6 +153,17 @@ class ForcesQuestion:
             return Preview(None, InputProblem(error.message, error.position))
 
 
+# Each finding of `ForcesQuestion.judge` is one sentence that starts with a capital and has no full stop
+# before its end, so a stored feedback splits back into its findings (`findings_of`).
+_SENTENCE_END = re.compile(r"(?<=\.)\s+(?=[A-Z])")
+
+
+def findings_of(feedback: str) -> tuple[str, ...]:
+    """The findings in the feedback of an incorrect free-body answer, one per force (missing, pointing
+    the wrong way, extra), as the class results count them."""
+    return tuple(piece for piece in _SENTENCE_END.split(feedback.strip()) if piece)
+
+
 def kind_of_label(label: str, first: bool, gravity: bool) -> str:
     """The palette's kind of one of the model's drawn forces, from its label (mg, N₁, T, f, Fₖ, F)."""
     if first and gravity:

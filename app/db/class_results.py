@@ -39,6 +39,15 @@ class WrongAnswer:
 
 
 @dataclass(frozen=True)
+class StudentFeedback:
+    """What one student was told for their incorrect answers (the same words, however many times)."""
+
+    student: str
+    feedback: str
+    submissions: int
+
+
+@dataclass(frozen=True)
 class PartResults:
     part_id: str
     tried: int = 0  # students with any submission, readable or not
@@ -51,6 +60,8 @@ class PartResults:
     mistakes: Sequence[Count] = ()  # known_mistake submissions by the mistake's feedback
     wrong_answers: Sequence[WrongAnswer] = ()  # the most common incorrect answers
     previews: int = 0  # instructors' own submissions, not counted above
+    # incorrect submissions by student and feedback, which a kind reads its findings from
+    wrong_feedback: Sequence[StudentFeedback] = ()
 
     @property
     def percent_correct(self) -> float | None:
@@ -129,6 +140,11 @@ def class_results(session: Session, problem_id: str, part_ids: Sequence[str]) ->
         .where(of_problem, students, Submission.verdict == "incorrect")
         .group_by(Submission.part_id, shown, Submission.reason)
     ).all()
+    told = session.execute(
+        select(Submission.part_id, Submission.student, Submission.feedback, func.count())
+        .where(of_problem, students, Submission.verdict == "incorrect")
+        .group_by(Submission.part_id, Submission.student, Submission.feedback)
+    ).all()
     previews = session.execute(
         select(Submission.part_id, func.count()).where(of_problem, ~students).group_by(Submission.part_id)
     ).all()
@@ -145,6 +161,9 @@ def class_results(session: Session, problem_id: str, part_ids: Sequence[str]) ->
     for part_id, answer, reason, n, s, latex in wrong:
         answers[part_id].append(WrongAnswer(answer, latex or None, reason, int(n), int(s)))
     preview_counts = {part_id: int(n) for part_id, n in previews}
+    feedback: dict[str, list[StudentFeedback]] = defaultdict(list)
+    for part_id, student, said, n in told:
+        feedback[part_id].append(StudentFeedback(student, said, int(n)))
 
     results = []
     for part_id in part_ids:
@@ -162,6 +181,7 @@ def class_results(session: Session, problem_id: str, part_ids: Sequence[str]) ->
                 mistakes=mistakes.get(part_id, []),
                 wrong_answers=common[:WRONG_ANSWERS_SHOWN],
                 previews=preview_counts.get(part_id, 0),
+                wrong_feedback=feedback.get(part_id, []),
             )
         )
     return results

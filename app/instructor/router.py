@@ -40,6 +40,7 @@ from app.deps import ServicesDep, budget_wait
 from app.errors import AppError, Busy
 from app.instructor import session as auth
 from app.instructor.described import Described, MistakeInfo, describe
+from app.instructor.findings import Finding, part_findings
 from app.instructor.plots import Bar, bar_chart
 from app.instructor.preview import preview as preview_of
 from app.lti.platforms import platform_origins
@@ -656,6 +657,22 @@ def _mistake_bar(mistakes: Mapping[str, MistakeInfo], feedback: str, submissions
     return Bar(spoken, submissions, counted(submissions, "answer"), shown)
 
 
+def _findings_chart(chart: str, title: str, findings: list[Finding], tried: int) -> Any:
+    return bar_chart(
+        chart,
+        title,
+        [
+            Bar(
+                f.text.replace("$", ""),
+                f.students,
+                f"{f.students} of {counted(tried, 'student')}",
+                render_inline(f.text),
+            )
+            for f in findings
+        ],
+    )
+
+
 def _percent(part: results_repository.PartResults) -> str:
     share = part.percent_correct
     return "–" if share is None else f"{share:.0f} %"
@@ -691,6 +708,7 @@ async def results(problem_id: str, request: Request, services: ServicesDep, who:
     sections = []
     for index, part in enumerate(data["parts"]):
         chart = f"part-{index}"
+        findings = part_findings(data["doc"].parts[index], part)
         sections.append(
             {
                 "index": index,
@@ -716,6 +734,15 @@ async def results(problem_id: str, request: Request, services: ServicesDep, who:
                     f"{chart}-mistakes",
                     f"Part {index + 1}: wrong answers by known mistake",
                     [_mistake_bar(mistakes, c.key, c.submissions) for c in part.mistakes],
+                ),
+                "findings": findings,
+                "findings_chart": None
+                if findings is None
+                else _findings_chart(
+                    f"{chart}-findings",
+                    f"Part {index + 1}: what the class's wrong answers miss, by students",
+                    findings,
+                    part.tried,
                 ),
             }
         )

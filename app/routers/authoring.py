@@ -14,14 +14,19 @@ from app.courses import access
 from app.db.records import ProblemRecord
 from app.deps import Instructor, Problems, ServicesDep
 from app.errors import AppError, Forbidden, NotFound
+from app.instructor.findings import part_findings
 from app.instructor.worked import body_words
 from app.lti.outbox import DeliveryProblem
 from app.openapi import AUTHENTICATED, errors
 from app.schemas import examples
 from app.schemas.problems import (
+    CountPublic,
+    FindingPublic,
     MethodPublic,
+    PartResultsPublic,
     ProblemCreated,
     ReferencePublic,
+    ResultsPublic,
     SimulationPublic,
     SolutionPublic,
     StepPublic,
@@ -177,6 +182,43 @@ async def solution(problem_id: str, services: ServicesDep, principal: Instructor
         raise NotFound(f"There is no problem {problem_id!r}.")
     compiled = await run_in_threadpool(services.catalog.compiled, record)
     return solution_of(compiled)
+
+
+@router.get("/v1/problems/{problem_id}/results", response_model=ResultsPublic, responses=errors(404, 422))
+async def results(problem_id: str, services: ServicesDep, principal: Instructor) -> ResultsPublic:
+    """The class results page's numbers, per part: with, for a free-body or an energy part, what the
+    wrong answers miss (a force left out, a kinetic term) by how many students were told it."""
+    record = await run_in_threadpool(services.catalog.get, problem_id)
+    if not await run_in_threadpool(usable, services, principal, record):
+        raise NotFound(f"There is no problem {problem_id!r}.")
+
+    def load() -> ResultsPublic:
+        doc = services.catalog.document(record)
+        found = services.stores.submissions.class_results(problem_id, [p.id for p in doc.parts])
+        parts = []
+        for part, counted in zip(doc.parts, found, strict=True):
+            findings = part_findings(part, counted)
+            parts.append(
+                PartResultsPublic(
+                    part=part.id,
+                    kind=part.kind,
+                    tried=counted.tried,
+                    correct=counted.correct,
+                    graded=counted.graded,
+                    previews=counted.previews,
+                    wrong_reasons=[CountPublic(**vars(c)) for c in counted.wrong_reasons],
+                    mistakes=[CountPublic(**vars(c)) for c in counted.mistakes],
+                    findings=None
+                    if findings is None
+                    else [
+                        FindingPublic(finding=f.text, students=f.students, submissions=f.submissions)
+                        for f in findings
+                    ],
+                )
+            )
+        return ResultsPublic(id=problem_id, parts=parts)
+
+    return await run_in_threadpool(load)
 
 
 def usable(services: Services, principal: Principal, record: ProblemRecord) -> bool:

@@ -161,3 +161,36 @@ class SolutionPublic(BaseModel):
     methods_agree: bool
     # checks of the model itself beside method agreement (energy bookkeeping, limiting cases, dimensions)
     checks: dict[str, str] = {}
+
+
+class CountPublic(BaseModel):
+    key: str  # a reason (`sign_error`) or a known mistake's feedback
+    submissions: int
+    students: int
+
+
+class FindingPublic(BaseModel):
+    finding: str  # as the students were told it, e.g. "A normal force (N₁) is missing."
+    students: int  # students told it at least once
+    submissions: int
+
+
+class PartResultsPublic(BaseModel):
+    part: str
+    kind: str
+    tried: int  # students with any submission
+    correct: int  # students with a correct one
+    graded: int  # graded submissions
+    previews: int  # instructors' own tries, counted nowhere else
+    wrong_reasons: list[CountPublic]
+    mistakes: list[CountPublic]
+    # for kinds whose feedback names findings (free_body, lagrangian, kinetic_energy, potential_energy),
+    # the most students first; null for the others
+    findings: list[FindingPublic] | None
+
+
+class ResultsPublic(BaseModel):
+    """Instructor-only: how the class did on each part of a problem (students' work on every version)."""
+
+    id: str
+    parts: list[PartResultsPublic]

@@ -23,7 +23,14 @@ from typing import Any
 from joserfc.jwk import RSAKey
 
 from app.db import keys as key_format
-from app.db.class_results import PREVIEW_PREFIX, WRONG_ANSWERS_SHOWN, Count, PartResults, WrongAnswer
+from app.db.class_results import (
+    PREVIEW_PREFIX,
+    WRONG_ANSWERS_SHOWN,
+    Count,
+    PartResults,
+    StudentFeedback,
+    WrongAnswer,
+)
 from app.db.cursor import Position, decode_cursor, encode_cursor
 from app.db.errors import (
     AttemptsExhausted,
@@ -346,6 +353,7 @@ def results_of(rows: Iterable[SubmissionRecord], part_ids: Sequence[str]) -> lis
     groups: dict[tuple[str, str, str], list[SubmissionRecord]] = defaultdict(list)
     wrong: dict[tuple[str, str, str], list[SubmissionRecord]] = defaultdict(list)
     previews: Counter[str] = Counter()
+    told: dict[str, Counter[tuple[str, str]]] = defaultdict(Counter)
     for row in rows:
         part = row.part_id
         if row.student.startswith(PREVIEW_PREFIX):
@@ -365,6 +373,7 @@ def results_of(rows: Iterable[SubmissionRecord], part_ids: Sequence[str]) -> lis
         if row.verdict is Verdicts.INCORRECT:
             shown = row.read_as.text if row.read_as is not None else row.answer
             wrong[(part, shown, row.reason.value)].append(row)
+            told[part][(row.student, row.feedback)] += 1
 
     def counts(kind: str) -> dict[str, list[Count]]:
         found: dict[str, list[Count]] = defaultdict(list)
@@ -400,6 +409,7 @@ def results_of(rows: Iterable[SubmissionRecord], part_ids: Sequence[str]) -> lis
                 :WRONG_ANSWERS_SHOWN
             ],
             previews=previews.get(part, 0),
+            wrong_feedback=[StudentFeedback(s, f, n) for (s, f), n in told.get(part, Counter()).items()],
         )
         for part in part_ids
     ]

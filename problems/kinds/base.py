@@ -7,6 +7,8 @@ An answer kind is one module (`problems/kinds/<kind>.py`) that, for one `kind:` 
   student   what a student sees of it (never a reference)
   selftest  the cases the bank self-test grades it by
   describe  what an instructor reads of it (`PartInfo`): its reference, mistakes, limits
+  findings  (optional, `ReportsFindings`) what an incorrect answer's stored feedback says is wrong, one
+            item per finding, for the class results to count ("the normal force is missing")
   check     its `POST /v1/check` body (`<Kind>CheckIn`): a one-part problem given in the request, built
             from the same declarations, whose `job` compiles it by the kind's own compile (its one part
             `ADHOC_PART`, no document) and grades it as a part of the kind is graded
@@ -23,7 +25,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any, Protocol, TypeVar
+from typing import TYPE_CHECKING, Any, Protocol, TypeVar, runtime_checkable
 
 import sympy
 
@@ -182,6 +184,15 @@ class CompiledPart(Protocol):
     def job(self, answer: str, variant: Variant | None = None) -> CheckJob:
         """A picklable check job for a worker process."""
         ...
+
+
+@runtime_checkable
+class ReportsFindings(Protocol):
+    """A kind whose incorrect answers' feedback names findings a class results page counts across students
+    (a force left out, a kinetic term missing): read back from the stored feedback, so that submissions
+    filed before need nothing more."""
+
+    def findings(self, feedback: str) -> tuple[str, ...]: ...
 
 
 class AnswerKind(Protocol[P_contra, C]):

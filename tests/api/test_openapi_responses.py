@@ -153,6 +153,10 @@ CALLS: dict[tuple[str, str], tuple[int, Call]] = {
         200,
         lambda api, h: api.client.get("/v1/problems/yo-yo/solution", headers=h),
     ),
+    ("get", "/v1/problems/{problem_id}/results"): (
+        200,
+        lambda api, h: api.client.get("/v1/problems/yo-yo/results", headers=h),
+    ),
     ("post", "/v1/courses"): (201, _json("POST", "/v1/courses", {"title": "Optics"})),
     ("get", "/v1/courses"): (200, lambda api, h: api.client.get("/v1/courses", headers=h)),
     ("get", "/v1/courses/{course_id}"): (200, lambda api, h: api.client.get("/v1/courses/1", headers=h)),

@@ -81,6 +81,17 @@ def test_wrong_answers_are_grouped_by_reason_by_known_mistake_and_by_reading(sto
     ]
 
 
+def test_incorrect_feedback_is_kept_per_student_for_kinds_to_read_findings_from(stores: Stores) -> None:
+    part = results(stores, [PART])[PART]
+    told = sorted((t.student, t.feedback, t.submissions) for t in part.wrong_feedback)
+    assert told == [
+        ("ada", "Check the sign.", 1),
+        ("bob", "Not free fall.", 2),  # typed twice, told alike: one row of two
+        ("cy", "Half of it.", 1),
+        ("cy", "Not an acceleration.", 1),
+    ]  # neither the unreadable answers nor the instructors' tries
+
+
 def test_parts_come_in_the_order_asked_and_an_untried_part_is_all_zero(stores: Stores) -> None:
     found = stores.submissions.class_results(PROBLEM, [OTHER_PART, "normal_force", PART])
     assert [r.part_id for r in found] == [OTHER_PART, "normal_force", PART]

@@ -20,6 +20,7 @@ from physics.forces_check import (
     ExpectedForce,
     ForcesQuestion,
     direction_angle,
+    findings_of,
     kind_of_label,
 )
 from physics.verdict import Outcome
@@ -124,6 +125,10 @@ class FreeBodyKind:
 
     name = "free_body"
     expression_answer = False
+
+    def findings(self, feedback: str) -> tuple[str, ...]:
+        """One per force drawn wrong: missing, pointing the wrong way, or not there at all."""
+        return findings_of(feedback)
 
     def check_meaning(self, part: FreeBodyPart, path: Path, context: MeaningContext) -> None:
         if context.quantities is None:

@@ -291,6 +291,10 @@ class EnergyKind:
         self.asked = asked
         self.name = asked.value
 
+    def findings(self, feedback: str) -> tuple[str, ...]:
+        """An incorrect energy says one thing: the term missing, the sign, the equation that fails."""
+        return (feedback.strip(),) if feedback.strip() else ()
+
     def check_meaning(self, part: EnergyPart, path: Path, context: MeaningContext) -> None:
         if context.quantities is None:
             context.out.add(
