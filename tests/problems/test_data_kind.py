@@ -17,6 +17,7 @@ from app.web.student_page import _parts
 from physics.fitting import fit_parameter, measurements
 from physics.verdict import Outcome, Reason
 from problems.compiled import compile_problem
+from problems.kinds.data import measured_text
 from problems.student import student_view
 from problems.variants import draw_variant
 from tests.bank import bank_documents
@@ -112,7 +113,7 @@ def test_the_student_sees_their_own_table_plot_and_csv() -> None:
     part = next(p for p in _parts(view) if p["id"] == "g_fit")
     html = templates.env.get_template("data/student.html").render(part=part)
     measured = compiled.part("g_fit").lab(variant).measured
-    assert all(str(value) in html for value in measured)
+    assert all(f"<td>{measured_text(value)}</td>" in html for value in measured)
     assert "<svg" in html and html.count("<circle") == len(measured) and "text/csv" in html
     assert str(compiled.part("g_fit").lab(variant).fit.value)[:5] not in html  # never the fit itself
 
@@ -140,3 +141,11 @@ def test_an_ad_hoc_lab_check_grades_against_the_fit_of_the_data_sent() -> None:
     ):
         verdict = run_job(TypeAdapter(CheckIn).validate_python({**body, "answer": answer}).job())
         assert verdict.outcome is outcome, verdict
+
+
+@pytest.mark.parametrize(
+    ("value", "shown"),
+    [(1.6, "1.60"), (0.844, "0.844"), (5.0, "5.00"), (12.3, "12.3"), (123.0, "123"), (0.0501, "0.0501")],
+)
+def test_a_measurement_is_shown_to_three_significant_figures_with_its_zeros(value: float, shown: str) -> None:
+    assert measured_text(value) == shown

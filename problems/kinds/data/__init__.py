@@ -233,7 +233,23 @@ class CompiledDataPart:
     def shown(self, variant: Variant) -> dict[str, Any]:
         """The student's own data, for their view: rows, CSV and the plot (server-drawn SVG's points)."""
         lab = self.lab(variant)
-        return {"data": {"settings": list(lab.settings), "measured": list(lab.measured), **_plot(lab)}}
+        return {
+            "data": {
+                "settings": list(lab.settings),
+                "measured": list(lab.measured),
+                # as the table and the CSV file show them
+                "rows": [
+                    (f"{x:g}", measured_text(y)) for x, y in zip(lab.settings, lab.measured, strict=True)
+                ],
+                **_plot(lab),
+            }
+        }
+
+
+def measured_text(value: float) -> str:
+    """A measurement as the lab notebook writes it: three significant figures, trailing zeros kept
+    (1.60, not 1.6: the precision is part of the datum)."""
+    return f"{value:#.3g}".rstrip(".")
 
 
 PLOT_WIDTH, PLOT_HEIGHT, MARGIN = 320, 200, 40
