@@ -127,7 +127,7 @@ def load_model(
     which choose the root a `solve` keeps."""
     expanded = expand_elements(data, symbols)  # composable elements -> the low-level sections
     try:
-        model = _load_low_level(expanded.data, symbols)
+        model = dataclasses.replace(_load_low_level(expanded.data, symbols), elements=expanded.elements)
         if ranges:
             bounds = tuple((symbols[n], low, high) for n, (low, high) in ranges.items() if n in symbols)
             model = dataclasses.replace(model, symbol_ranges=bounds)
