@@ -1,5 +1,5 @@
 """The picture of a hand-written low-level model, recognised from its constraints, potentials and
-sections (a model written with elements is drawn from them: elements_scene.py)."""
+sections (a model written with elements is drawn from them: scene.py)."""
 
 from __future__ import annotations
 
