@@ -10,6 +10,7 @@ from collections.abc import Callable
 
 import pytest
 import sympy
+import yaml
 
 from physics.engine import load_model
 from physics.figures import model_figure
@@ -19,6 +20,8 @@ from problems.modelinfo import load_doc_model
 from problems.symbols import symbol_table
 from problems.variants import draw_variant, si_values
 from tests.bank import bank_documents
+from tests.engine.conftest import BANK as BANK_DIR
+from tests.engine.conftest import LOWLEVEL
 
 SVG = "{http://www.w3.org/2000/svg}"
 BANK = bank_documents()
@@ -208,3 +211,14 @@ def test_a_bug_in_a_drawer_surfaces_instead_of_falling_back(monkeypatch: pytest.
     model = load_model(_incline_model("theta"), positive("m", "g", "theta"))
     with pytest.raises(KeyError):
         compose(model, {})
+
+
+@pytest.mark.parametrize("problem", sorted(p.stem for p in LOWLEVEL.glob("*.yaml")))
+def test_a_hand_written_model_is_recognised_as_the_picture_its_elements_draw(problem: str) -> None:
+    table = positive(*yaml.safe_load((BANK_DIR / problem / "problem.yaml").read_text())["symbols"])
+    by_hand = load_model(yaml.safe_load((LOWLEVEL / f"{problem}.yaml").read_text()), table)
+    written = load_model(yaml.safe_load((BANK_DIR / problem / "model.yaml").read_text()), table)
+    recognised, drawn = compose(by_hand, {}), compose(written, {})
+    assert (recognised.drawn_from, drawn.drawn_from) == ("low-level model", "elements")
+    assert recognised.canvas.elements == drawn.canvas.elements
+    assert recognised.said == drawn.said
