@@ -187,6 +187,13 @@ def test_a_wedge_is_drawn_as_a_slope_carrying_the_block() -> None:
     assert _slope_with_block_on_it(root, 0.6)
 
 
+def test_a_collision_with_a_block_on_an_incline_draws_the_incline_that_pushes_on_it() -> None:
+    doc = BANK["cart-hits-block-on-incline"]
+    root = ET.fromstring(model_figure(load_doc_model(doc, symbol_table(doc)), {"theta": 0.5}, title="c"))
+    assert _slope_with_block_on_it(root, 0.5)
+    assert "resting at the foot of a fixed incline at angle θ" in root.findtext(f"{SVG}desc", "")
+
+
 def _incline_model(angle: str) -> dict[str, object]:
     return {
         "gravity": "g",
