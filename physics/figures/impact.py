@@ -1,5 +1,6 @@
 """An impact: two bodies about to meet (or to be pushed apart), their velocities before labelled, a
-fixed floor or wall hatched where the body meets it."""
+fixed floor or wall hatched where the body meets it, or the incline (an element) at whose foot the
+body that is hit rests."""
 
 from __future__ import annotations
 
