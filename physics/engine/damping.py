@@ -24,6 +24,7 @@ from physics.engine import tidy
 from physics.engine.mechanics import time_derivative
 from physics.engine.model import ForceKind, Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
+from physics.engine.quantity_table import derives
 from physics.errors import DerivationError
 
 if TYPE_CHECKING:
@@ -292,3 +293,14 @@ def undamped_checks(
             f"tends to the undamped model's angular frequency {typed_text(expected)}"
         )
     return checks
+
+
+@derives(*KINDS)
+def derived(method: Method, quantity: Quantity) -> sympy.Expr:
+    """About the stable equilibrium all the methods share; a method that cannot see the drag says so."""
+    from physics.engine.method import NotApplicable, stable_equilibrium
+
+    try:
+        return answer(method, quantity, stable_equilibrium(method.model))
+    except NotThisWay as why:
+        raise NotApplicable(str(why)) from None
