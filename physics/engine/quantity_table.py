@@ -29,6 +29,7 @@ OWNERS = (
     "physics.engine.basic_quantities",
     "physics.engine.collision",
     "physics.engine.damping",
+    "physics.engine.extremum",
     "physics.engine.impact",
     "physics.engine.mode_shapes",
     "physics.engine.orbits",
