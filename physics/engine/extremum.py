@@ -41,31 +41,30 @@ def extremum(method: Method, quantity: Quantity) -> sympy.Expr:
     inner, parameter = quantity.inner, quantity.parameter
     assert inner is not None and parameter is not None
     model, name, largest = method.model, quantity.name, quantity.kind is QuantityKind.MAXIMIZE
-    value = method.answer(inner)
+    value = _without_abs(method.answer(inner), model)
     if not value.has(parameter):
         raise DerivationError(
             f"{name}: {inner.name} = {typed_text(value)} does not depend on {parameter}", quantity=name
         )
     slope = tidy.simplify(sympy.diff(value, parameter))
     found = sympy.solve(slope, parameter)
-    roots = admissible(found, parameter, model)
-    if len(roots) != 1:
+    bend = sympy.diff(value, parameter, 2)
+    # the stationary values the parameter's sign and range allow, and of those the maxima (minima)
+    stationary = [
+        (root, tidy.simplify(bend.subs(parameter, root))) for root in admissible(found, parameter, model)
+    ]
+    extreme = [(root, c) for root, c in stationary if _of_sign(-c if largest else c, model)]
+    if len(extreme) != 1:
         raise DerivationError(
-            f"{name}: expected one stationary value of {parameter} in its declared sign and range, found "
-            f"{typed_text(roots)} among the roots {typed_text(found)} of d{inner.name}/d{parameter} = 0 "
-            "(declare the range of the symbol)",
+            f"{name}: expected one {'maximum' if largest else 'minimum'} of {inner.name} in {parameter}'s declared "
+            f"sign and range, found {typed_text([r for r, _ in extreme])} among the stationary values "
+            f"{typed_text([r for r, _ in stationary])} (second derivatives {typed_text([c for _, c in stationary])}; "
+            f"all the roots of d{inner.name}/d{parameter} = 0: {typed_text(found)})",
             quantity=name,
         )
-    root = tidy.simplify(roots[0])
-    curvature = tidy.simplify(sympy.diff(value, parameter, 2).subs(parameter, root))
-    if not _of_sign(-curvature if largest else curvature, model):
-        raise DerivationError(
-            f"{name}: at {parameter} = {typed_text(root)} {inner.name} is not a "
-            f"{'maximum' if largest else 'minimum'}: its second derivative {typed_text(curvature)} is not "
-            f"{'negative' if largest else 'positive'} on the whole domain",
-            quantity=name,
-        )
-    _check_range(value, parameter, root, largest, model, name)
+    ((root, curvature),) = extreme
+    root = _simplest(tidy.simplify(root), model)
+    _check_range(value, parameter, root, largest, model, (name, inner.name))
     symbol = method.tex(parameter)
     method.step(
         f"{'Largest' if largest else 'Smallest'} {inner.name}: its derivative in ${symbol}$ vanishes",
@@ -75,6 +74,39 @@ def extremum(method: Method, quantity: Quantity) -> sympy.Expr:
         + (r" < 0" if largest else r" > 0"),
     )
     return root
+
+
+def _without_abs(expr: sympy.Expr, model: Model) -> sympy.Expr:
+    """|e| replaced by e or -e where e keeps one sign at the domain's points: a derivative of |e| cannot
+    be solved (an energy's sqrt(v^2) leaves |sin(alpha)| in a range)."""
+    for term in expr.atoms(sympy.Abs):
+        (argument,) = term.args
+        values = [_number(argument.subs(point)) for point in domain_points(model, POINTS, seed=37)]
+        if all(v > 0 for v in values):
+            expr = expr.subs(term, argument)
+        elif all(v < 0 for v in values):
+            expr = expr.subs(term, -argument)
+    return tidy.simplify(expr)
+
+
+def _simplest(root: sympy.Expr, model: Model) -> sympy.Expr:
+    """An angle root in its simplest equal form: solve writes tan(a) = mu as 2*atan((sqrt(mu^2 + 1) - 1)/mu),
+    which is atan(mu) on the domain (checked at its points: the inverse functions' branches differ)."""
+    if not root.has(sympy.atan, sympy.asin, sympy.acos):
+        return root
+    candidates = [
+        inverse(tidy.simplify(sympy.expand_trig(function(root))))
+        for function, inverse in ((sympy.tan, sympy.atan), (sympy.sin, sympy.asin), (sympy.cos, sympy.acos))
+    ]
+    equal = [
+        c
+        for c in candidates
+        if all(
+            abs(_number(c.subs(point)) - _number(root.subs(point))) < _ROUNDING
+            for point in domain_points(model, POINTS, seed=41)
+        )
+    ]
+    return min([root, *equal], key=sympy.count_ops)
 
 
 def _of_sign(expr: sympy.Expr, model: Model) -> bool:
@@ -88,15 +120,22 @@ def _of_sign(expr: sympy.Expr, model: Model) -> bool:
 
 
 def _check_range(
-    value: sympy.Expr, parameter: sympy.Symbol, root: sympy.Expr, largest: bool, model: Model, name: str
+    value: sympy.Expr,
+    parameter: sympy.Symbol,
+    root: sympy.Expr,
+    largest: bool,
+    model: Model,
+    names: tuple[str, str],
 ) -> None:
     """No value of the parameter across its declared range (where the domain holds) beats the root's."""
     bounds = declared_range(parameter, model)
     if bounds is None or not all(math.isfinite(b) for b in bounds):
         return
     low, high = bounds
+    name, inner = names
     sign = 1.0 if largest else -1.0
-    for point in domain_points(model, POINTS, seed=31):
+    for sampled in domain_points(model, POINTS, seed=31):
+        point = {s: v for s, v in sampled.items() if s != parameter}
         best = sign * _number(value.subs(point).subs(parameter, root.subs(point)))
         for k in range(SWEEP):
             at = {**point, parameter: sympy.Float(low + (high - low) * k / (SWEEP - 1))}
@@ -107,7 +146,7 @@ def _check_range(
                 raise DerivationError(
                     f"{name}: {parameter} = {typed_text(root)} is a local "
                     f"{'maximum' if largest else 'minimum'} only: at {parameter} = {float(at[parameter]):.4g} "
-                    f"the quantity is {'larger' if largest else 'smaller'} ({sign * there:.6g} against "
+                    f"{inner} is {'larger' if largest else 'smaller'} ({sign * there:.6g} against "
                     f"{sign * best:.6g}, at "
                     + ", ".join(f"{s}={float(v):.4g}" for s, v in point.items() if s != parameter)
                     + ")",
