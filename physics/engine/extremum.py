@@ -41,10 +41,11 @@ def extremum(method: Method, quantity: Quantity) -> sympy.Expr:
     inner, parameter = quantity.inner, quantity.parameter
     assert inner is not None and parameter is not None
     model, name, largest = method.model, quantity.name, quantity.kind is QuantityKind.MAXIMIZE
+    what = described(inner)
     value = _without_abs(method.answer(inner), model)
     if not value.has(parameter):
         raise DerivationError(
-            f"{name}: {inner.name} = {typed_text(value)} does not depend on {parameter}", quantity=name
+            f"{name}: {what} = {typed_text(value)} does not depend on {parameter}", quantity=name
         )
     slope = tidy.simplify(sympy.diff(value, parameter))
     found = sympy.solve(slope, parameter)
@@ -56,24 +57,30 @@ def extremum(method: Method, quantity: Quantity) -> sympy.Expr:
     extreme = [(root, c) for root, c in stationary if _of_sign(-c if largest else c, model)]
     if len(extreme) != 1:
         raise DerivationError(
-            f"{name}: expected one {'maximum' if largest else 'minimum'} of {inner.name} in {parameter}'s declared "
+            f"{name}: expected one {'maximum' if largest else 'minimum'} of {what} in {parameter}'s declared "
             f"sign and range, found {typed_text([r for r, _ in extreme])} among the stationary values "
             f"{typed_text([r for r, _ in stationary])} (second derivatives {typed_text([c for _, c in stationary])}; "
-            f"all the roots of d{inner.name}/d{parameter} = 0: {typed_text(found)})",
+            f"all the roots of the derivative in {parameter}: {typed_text(found)})",
             quantity=name,
         )
     ((root, curvature),) = extreme
     root = _simplest(tidy.simplify(root), model)
-    _check_range(value, parameter, root, largest, model, (name, inner.name))
+    _check_range(value, parameter, root, largest, model, (name, what))
     symbol = method.tex(parameter)
     method.step(
-        f"{'Largest' if largest else 'Smallest'} {inner.name}: its derivative in ${symbol}$ vanishes",
+        f"{'Largest' if largest else 'Smallest'} {what}: its derivative in ${symbol}$ vanishes",
         rf"\frac{{\partial}}{{\partial {symbol}}}\left({method.tex(value)}\right) = {method.tex(slope)} = 0"
         rf"\Rightarrow {symbol} = {method.tex(root)},\ \frac{{\partial^2}}{{\partial {symbol}^2}} = "
         + method.tex(curvature)
         + (r" < 0" if largest else r" > 0"),
     )
     return root
+
+
+def described(quantity: Quantity) -> str:
+    """ "the acceleration of x", for messages and titles."""
+    words = quantity.kind.value.replace("_", " ")
+    return f"the {words} of {quantity.target}" if quantity.target else f"the {words}"
 
 
 def _without_abs(expr: sympy.Expr, model: Model) -> sympy.Expr:
