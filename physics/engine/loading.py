@@ -19,6 +19,7 @@ from physics.engine.elements import expand_elements
 from physics.engine.model import (
     AXES,
     EFFECTIVE_KINDS,
+    EXTREMUM_KINDS,
     IMPACT_KINDS,
     SLIP_KINDS,
     STEADY_KINDS,
@@ -77,6 +78,7 @@ _QUANTITY_TARGET = {
     QuantityKind.SLIP_END_VELOCITY: "coordinate",
     QuantityKind.DAMPED_FREQUENCY: "coordinate",
     QuantityKind.DECAY_TIME: "coordinate",
+    QuantityKind.UNDAMPED_FREQUENCY: "coordinate",
     **dict.fromkeys(STEADY_KINDS | EFFECTIVE_KINDS, "coordinate"),
 }
 _SLIPPING_KEYS = {"friction", "normal", "coefficient"}
@@ -879,6 +881,7 @@ def _quantity(
     allowed = (
         {kind.value}
         | ({"zero"} if kind is QuantityKind.SOLVE else set())
+        | ({"of"} if kind in EXTREMUM_KINDS else set())
         | (_SLIPPING_KEYS if kind is QuantityKind.SLIPPING else set())
     )
     _check_keys(spec, allowed, allowed, path, errors)
@@ -912,14 +915,15 @@ def _quantity(
         return Quantity(name, kind, str(target))
     if kind is QuantityKind.SLIPPING:
         return _slipping_quantity(name, spec, path, symbols, constraints, errors)
-    if kind is QuantityKind.SOLVE:
+    if kind is QuantityKind.SOLVE or kind in EXTREMUM_KINDS:  # a parameter's value, set by an inner quantity
         if target not in symbols:
             errors.add(f"unknown symbol {target!r}", where)
             return None
+        inner_key = "zero" if kind is QuantityKind.SOLVE else "of"
         inner = _quantity(
-            f"{name}.zero",
-            spec.get("zero"),
-            (*path, "zero"),
+            f"{name}.{inner_key}",
+            spec.get(inner_key),
+            (*path, inner_key),
             symbols,
             coordinates,
             constraints,

@@ -177,6 +177,7 @@ class QuantityKind(StrEnum):
     SLIPPING = "slipping"  # the parameter value at which a holding contact's |f| reaches mu_s N
     DAMPED_FREQUENCY = "damped_frequency"  # of an underdamped oscillation about the equilibrium
     DECAY_TIME = "decay_time"  # the amplitude's e-folding time of that oscillation
+    UNDAMPED_FREQUENCY = "undamped_frequency"  # of that oscillation with the damping left out: sqrt(k/m)
     MODE_SHAPE = "mode_shape"  # amplitude ratio of two coordinates in the n-th normal mode
     # steady circular motion: the angle coordinate turns uniformly, the others stay at the state (orbits.py)
     CIRCULAR_SPEED = "circular_speed"
@@ -186,6 +187,9 @@ class QuantityKind(StrEnum):
     # with the cyclic coordinates' momenta held at their state values (the effective potential)
     CIRCULAR_RADIUS = "circular_radius"
     EPICYCLIC_FREQUENCY = "epicyclic_frequency"
+    # the value of a parameter at which another quantity is largest or smallest (extremum.py)
+    MAXIMIZE = "maximize"
+    MINIMIZE = "minimize"
 
 
 REACH_KINDS = frozenset({QuantityKind.SPEED, QuantityKind.VELOCITY})
@@ -199,6 +203,7 @@ SLIP_KINDS = frozenset({QuantityKind.SLIP_TIME, QuantityKind.SLIP_DISTANCE, Quan
 STEADY_KINDS = frozenset(
     {QuantityKind.CIRCULAR_SPEED, QuantityKind.REVOLUTION_PERIOD, QuantityKind.CIRCULAR_ENERGY}
 )
+EXTREMUM_KINDS = frozenset({QuantityKind.MAXIMIZE, QuantityKind.MINIMIZE})
 EFFECTIVE_KINDS = frozenset({QuantityKind.CIRCULAR_RADIUS, QuantityKind.EPICYCLIC_FREQUENCY})
 ORBIT_KINDS = STEADY_KINDS | EFFECTIVE_KINDS | {QuantityKind.MECHANICAL_ENERGY}
 # Times, lengths, speeds and frequencies: where the answer is positive, a negative value is no slip
@@ -209,6 +214,7 @@ MAGNITUDE_KINDS = frozenset(
         QuantityKind.PERIOD,
         QuantityKind.NORMAL_FREQUENCY,
         QuantityKind.DAMPED_FREQUENCY,
+        QuantityKind.UNDAMPED_FREQUENCY,
         QuantityKind.DECAY_TIME,
         QuantityKind.PROJECTILE_SPEED,
         QuantityKind.SPEED,
@@ -231,8 +237,8 @@ class Quantity:
     name: str
     kind: QuantityKind
     target: str = ""  # coordinate or constraint name
-    parameter: sympy.Symbol | None = None  # for SOLVE
-    inner: Quantity | None = None  # for SOLVE: the quantity set to zero
+    parameter: sympy.Symbol | None = None  # for SOLVE, MAXIMIZE, MINIMIZE
+    inner: Quantity | None = None  # for SOLVE: the quantity set to zero; MAXIMIZE, MINIMIZE: made extreme
     # for EXPRESSION: the formula, and the stand-in symbol of each earlier quantity it uses
     expression: sympy.Expr | None = None
     uses: tuple[tuple[sympy.Symbol, str], ...] = ()

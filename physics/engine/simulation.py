@@ -18,7 +18,7 @@ import mpmath
 import sympy
 
 from physics.answer_text import typed_text
-from physics.engine import impact_simulation, slipping
+from physics.engine import extremum, impact_simulation, slipping
 from physics.engine.collision import merged
 from physics.engine.contact_friction import slip_velocity
 from physics.engine.lagrange import LagrangeMethod
@@ -26,6 +26,7 @@ from physics.engine.mechanics import Mechanics
 from physics.engine.method import stable_equilibrium
 from physics.engine.model import (
     AXES,
+    EXTREMUM_KINDS,
     IMPACT_KINDS,
     ORBIT_KINDS,
     SLIP_KINDS,
@@ -220,7 +221,7 @@ class Simulator:
     def check(
         self, quantity: Quantity, reference: sympy.Expr, points: Sequence[Point]
     ) -> SimulationCheck | None:
-        measure = self._reach if _reaches(quantity) else self._measures().get(quantity.kind)
+        measure = self.measure_for(quantity)
         if quantity.after:
             measure = self._after_impact
         if measure is None:
@@ -241,6 +242,10 @@ class Simulator:
                     quantity=quantity.name,
                 )
         return SimulationCheck(compared, worst, len(points))
+
+    def measure_for(self, quantity: Quantity) -> Measure | None:
+        """How the simulation measures this quantity (None: it does not)."""
+        return self._reach if _reaches(quantity) else self._measures().get(quantity.kind)
 
     def _measures(self) -> dict[QuantityKind, Measure]:
         from physics.engine import oscillation_measures  # it integrates with this module's tools
@@ -263,6 +268,7 @@ class Simulator:
             **dict.fromkeys(ORBIT_KINDS, self._orbit),
             **dict.fromkeys(SLIP_KINDS, partial(slipping.measure_sliding, self)),
             QuantityKind.SLIPPING: partial(slipping.measure_slipping, self),
+            **dict.fromkeys(EXTREMUM_KINDS, partial(extremum.measure, self)),
         }
 
     @cached_property
