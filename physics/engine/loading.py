@@ -11,7 +11,7 @@ from typing import Any, TypeVar
 import sympy
 
 from physics.dimensions import Dimension
-from physics.engine import forcing, mode_shapes, reach_loading
+from physics.engine import forcing, mode_shapes, reach_loading, scenarios
 from physics.engine.dimensional import check_dimensions
 from physics.engine.distances import with_distance_sides
 from physics.engine.elements import expand_elements
@@ -124,7 +124,22 @@ def load_model(
 
     With the symbols' `dimensions` (name -> Dimension), every position, energy, mass, ... is also
     checked for dimensional consistency. `ranges`: the symbol table's own ranges (name -> (low, high)),
-    which choose the root a `solve` keeps."""
+    which choose the root a `solve` keeps. `scenarios` are loaded each as a model of its own
+    (scenarios.py)."""
+    base, overrides = scenarios.split(data)
+    model = _load_model(base, symbols, dimensions, ranges)
+    if not overrides:
+        return model
+    again = partial(_load_model, symbols=symbols, dimensions=dimensions, ranges=ranges)
+    return dataclasses.replace(model, scenarios=scenarios.load(base, overrides, again))
+
+
+def _load_model(
+    data: Mapping[str, Any],
+    symbols: Mapping[str, sympy.Symbol],
+    dimensions: Mapping[str, Dimension] | None,
+    ranges: Mapping[str, tuple[sympy.Expr, sympy.Expr]] | None,
+) -> Model:
     expanded = expand_elements(data, symbols)  # composable elements -> the low-level sections
     try:
         model = _load_low_level(expanded.data, symbols)

@@ -288,6 +288,8 @@ class Model:
     symbol_ranges: tuple[
         tuple[sympy.Symbol, sympy.Expr, sympy.Expr], ...
     ] = ()  # quantities the author derives on purpose without a part asking for them
+    # other configurations of the same system, each a whole model with its own quantities (scenarios.py)
+    scenarios: tuple[tuple[str, Model], ...] = ()
 
     def body(self, name: str) -> Body:
         return next(b for b in self.bodies if b.name == name)
