@@ -8,7 +8,7 @@ from functools import lru_cache
 import sympy
 
 from physics.answer_text import typed_text
-from physics.engine import scenarios, tidy
+from physics.engine import evaluated_at, scenarios, tidy
 from physics.engine.checks import physical_checks
 from physics.engine.conservation import ConservationMethod
 from physics.engine.contacts import check_contact_signs
@@ -293,8 +293,9 @@ def _simulate(
     findings: list[tuple[tuple[str | int, ...], str]] = []
     for quantity in model.quantities:
         path: tuple[str | int, ...] = ("quantities", quantity.name)
+        measured, at = evaluated_at.simulated(quantity, points, quantities)
         try:
-            check = simulator.check(quantity, quantities[quantity.name], points)
+            check = simulator.check(measured, quantities[quantity.name], at)
         except DerivationError as error:
             findings.append((path, error.message))
             continue

@@ -11,7 +11,7 @@ from typing import Any, TypeVar
 import sympy
 
 from physics.dimensions import Dimension
-from physics.engine import forcing, mode_shapes, reach_loading, scenarios
+from physics.engine import evaluated_at, forcing, mode_shapes, reach_loading, scenarios
 from physics.engine.dimensional import check_dimensions
 from physics.engine.distances import with_distance_sides
 from physics.engine.elements import expand_elements
@@ -771,17 +771,19 @@ def _quantities(
             others = {n: s for n, s in stand_ins.items() if n != name}
             result += _expression_quantity(str(name), entry, symbols, others, errors)
             continue
+        entry, at_values = evaluated_at.split(str(name), entry, symbols, list(map(str, entries)), errors.add)
         quantity = _quantity(
             str(name), entry, ("quantities", str(name)), symbols, coordinates, constraints, collision, errors
         )
         if quantity is not None:
-            result.append(quantity)
+            result.append(dataclasses.replace(quantity, uses=at_values))
     _check_cycles(result, errors)
     return tuple(result)
 
 
 def _check_cycles(quantities: list[Quantity], errors: _Collector) -> None:
-    """Expressions that use each other in a circle define nothing."""
+    """Expressions (or quantities evaluated `with` each other's values) that use each other in a circle
+    define nothing."""
     uses = {q.name: [name for _, name in q.uses] for q in quantities}
     reported: set[str] = set()
 

@@ -10,7 +10,17 @@ from functools import cached_property, lru_cache
 import sympy
 
 from physics.answer_text import typed_text
-from physics.engine import damping, impact, mode_shapes, modes, slipping, tidy, trajectory, work_energy
+from physics.engine import (
+    damping,
+    evaluated_at,
+    impact,
+    mode_shapes,
+    modes,
+    slipping,
+    tidy,
+    trajectory,
+    work_energy,
+)
 from physics.engine.mechanics import Mechanics
 from physics.engine.model import (
     IMPACT_KINDS,
@@ -162,6 +172,8 @@ class Method(ABC):
 
     def answer(self, quantity: Quantity) -> sympy.Expr:
         kind = quantity.kind
+        if evaluated_at.applies(quantity):  # with a symbol at another quantity's value
+            return evaluated_at.answer(self, quantity)
         if quantity.after:  # in the motion that starts just after the impact
             return self.after_impact(quantity)
         if quantity.at:  # where the motion from the state arrives: speed, velocity, force, acceleration
