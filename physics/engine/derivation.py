@@ -8,7 +8,7 @@ from functools import lru_cache
 import sympy
 
 from physics.answer_text import typed_text
-from physics.engine import evaluated_at, scenarios, tidy
+from physics.engine import bounces, evaluated_at, scenarios, tidy
 from physics.engine.checks import physical_checks
 from physics.engine.conservation import ConservationMethod
 from physics.engine.contacts import check_contact_signs
@@ -293,7 +293,7 @@ def _simulate(
     findings: list[tuple[tuple[str | int, ...], str]] = []
     for quantity in model.quantities:
         path: tuple[str | int, ...] = ("quantities", quantity.name)
-        measured, at = evaluated_at.simulated(quantity, points, quantities)
+        measured, at = evaluated_at.simulated(quantity, bounces.counted(quantity, points), quantities)
         try:
             check = simulator.check(measured, quantities[quantity.name], at)
         except DerivationError as error:

@@ -11,7 +11,7 @@ from typing import Any, TypeVar
 import sympy
 
 from physics.dimensions import Dimension
-from physics.engine import evaluated_at, forcing, mode_shapes, reach_loading, scenarios
+from physics.engine import bounces, evaluated_at, forcing, mode_shapes, reach_loading, scenarios
 from physics.engine.dimensional import check_dimensions
 from physics.engine.distances import with_distance_sides
 from physics.engine.elements import expand_elements
@@ -196,6 +196,7 @@ def _load_low_level(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]
     impact = _impact(data.get("impact"), symbols, bodies, quantities, errors)
     frame = _frame(data.get("frame"), symbols, bodies, errors)
     reach_loading.check_targets(quantities, bodies, state, coordinates, errors.add)
+    bounces.check(quantities, impact, errors.add)
     _check_slip_quantities(quantities, frictions, errors)
     named = [*coord_names, *(c.name for c in constraints), *(b.name for b in bodies)]
     notation = errors.attempt(partial(read_notation, data.get("notation"), named)) or ()

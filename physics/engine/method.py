@@ -11,6 +11,7 @@ import sympy
 
 from physics.answer_text import typed_text
 from physics.engine import (
+    bounces,
     damping,
     evaluated_at,
     impact,
@@ -127,6 +128,8 @@ class Method(ABC):
         for title, latex in steps:
             self.step(title, latex)
         rates = impact.coordinate_rates(self.model, after)
+        if quantity.bounces is not None:  # bounced again and again off the fixed partner
+            rates = bounces.velocities_after(self, quantity, rates)
         self.step(
             "The motion after the impact starts with these velocities",
             r",\ ".join(
@@ -139,7 +142,7 @@ class Method(ABC):
         }
         bounced = dataclasses.replace(self.model, state=tuple(state.items()), impact=None)
         solver = type(self)(bounced, Mechanics(bounced))
-        result = solver.answer(dataclasses.replace(quantity, after=""))
+        result = solver.answer(dataclasses.replace(quantity, after="", bounces=None))
         for step in solver.steps:
             self.step(f"{step.title} (after the impact)", step.latex)
         return result

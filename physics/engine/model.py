@@ -245,6 +245,9 @@ class Quantity:
     coefficient: sympy.Expr | None = None
     ratio: tuple[str, ...] = ()  # for MODE_SHAPE: (numerator, denominator) coordinates; target = mode
     after: str = ""  # "impact": taken in the motion that starts just after the model's impact
+    bounces: sympy.Expr | None = (
+        None  # with `after`: after this many bounces off the fixed partner (bounces.py)
+    )
 
 
 @dataclass(frozen=True)
