@@ -10,8 +10,9 @@ from typing import Any, TypeVar
 
 import sympy
 
+from physics.answer_text import typed_text
 from physics.dimensions import Dimension
-from physics.engine import bounces, evaluated_at, forcing, mode_shapes, reach_loading, scenarios
+from physics.engine import bounces, evaluated_at, forcing, mode_shapes, reach_loading, scenarios, sticking
 from physics.engine.dimensional import check_dimensions
 from physics.engine.distances import with_distance_sides
 from physics.engine.elements import expand_elements
@@ -145,7 +146,11 @@ def _load_model(
         model = _load_low_level(expanded.data, symbols)
         if ranges:
             bounds = tuple((symbols[n], low, high) for n, (low, high) in ranges.items() if n in symbols)
-            model = dataclasses.replace(model, symbol_ranges=bounds)
+            # A symbol's own range is its domain too: sampling outside it checks physics nobody posed
+            # (a restitution of 1.02). domain.ranges, when it narrows the symbol further, wins.
+            ranged = {symbol for symbol, _, _ in model.ranges}
+            finite = tuple(b for b in bounds if b[0] not in ranged and all(x.is_finite for x in b[1:]))
+            model = dataclasses.replace(model, symbol_ranges=bounds, ranges=model.ranges + finite)
         faults = check_dimensions(model, dimensions) if dimensions else []
         if faults:
             raise SpecErrors(faults)
@@ -193,7 +198,9 @@ def _load_low_level(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]
     forces = _forces(data.get("forces"), symbols, {"t": time, **coord_scope, **velocities}, bodies, errors)
     limits = _stated_limits(data.get("limits"), symbols, {q.name for q in quantities}, errors)
     unused = _unused(data.get("unused"), {q.name for q in quantities}, errors)
-    impact = _impact(data.get("impact"), symbols, bodies, quantities, errors)
+    impact = _impact(
+        data.get("impact"), symbols, bodies, quantities, errors, (coordinates, state, constraints)
+    )
     frame = _frame(data.get("frame"), symbols, bodies, errors)
     reach_loading.check_targets(quantities, bodies, state, coordinates, errors.add)
     bounces.check(quantities, impact, errors.add)
@@ -586,6 +593,9 @@ def _impact(
     bodies: tuple[Body, ...],
     quantities: tuple[Quantity, ...],
     errors: _Collector,
+    motion: tuple[
+        tuple[Coordinate, ...], tuple[tuple[sympy.Symbol, sympy.Expr], ...], tuple[Constraint, ...]
+    ],
 ) -> Impact | None:
     asked = [q for q in quantities if q.kind in IMPACT_KINDS]
     if value is None:
@@ -599,7 +609,7 @@ def _impact(
         return None
     path: Path = ("impact",)
     spec = _mapping(value, path, errors)
-    _check_keys(spec, {"bodies", "normal", "restitution", "release"}, {"bodies"}, path, errors)
+    _check_keys(spec, {"bodies", "normal", "restitution", "release", "stick"}, {"bodies"}, path, errors)
     entries = spec.get("bodies")
     known = {b.name: b for b in bodies}
     if not isinstance(entries, list) or len(entries) != 2:
@@ -638,10 +648,24 @@ def _impact(
         errors.add(
             "two different bodies: [first, second], the normal pointing from the first", (*path, "bodies")
         )
-    if ("restitution" in spec) == ("release" in spec):
-        errors.add("give exactly one of restitution (a collision) and release (an explosion)", path)
+    stick = spec.get("stick", False)
+    if not isinstance(stick, bool):
+        errors.add("stick is true (the bodies move on together) or false", (*path, "stick"))
+        stick = False
+    if stick and {"restitution", "release", "normal"} & set(spec):
+        errors.add(
+            "bodies that stick together need no restitution, release or normal: their impulse is along "
+            "their relative velocity, and they part at none",
+            (*path, "stick"),
+        )
+    elif not stick and ("restitution" in spec) == ("release" in spec):
+        errors.add(
+            "give exactly one of restitution (a collision) and release (an explosion), or stick: true",
+            path,
+        )
     if fixed is not None and "release" in spec:
         errors.add("an explosion parts two bodies: a fixed partner cannot take a share", (*path, "release"))
+    restitution_stuck: sympy.Expr | None = None
     restitution = (
         errors.read(spec["restitution"], symbols, (*path, "restitution")) if "restitution" in spec else None
     )
@@ -651,6 +675,33 @@ def _impact(
         if "normal" in spec
         else (("x", sympy.Integer(1)),)
     )
+    if "normal" not in spec and len(names) + (fixed is not None) == 2 and all(n in known for n in names):
+        coordinates, state, constraints = motion
+        partner = known[names[1]] if len(names) > 1 else None
+        relative = sticking.relative_velocity(known[names[0]], partner, coordinates, dict(state))
+        if flip:  # the partner is first in the author's order; the approach is the same line
+            relative = {a: -v for a, v in relative.items()}
+        if stick:
+            holding = [c for n in names for c in sticking.held(n, constraints)]
+            found = sticking.stuck_normal(relative)
+            if holding:
+                errors.add(
+                    f"sticking is modelled for free bodies; {', '.join(holding)} also pushes during the "
+                    "impact: give the contact's normal and restitution: 0",
+                    (*path, "stick"),
+                )
+            elif found is None:
+                errors.add("the bodies do not move towards each other at the state", (*path, "stick"))
+            else:
+                normal, restitution_stuck = found, sympy.Integer(0)
+        elif sticking.across_x(relative):
+            errors.add(
+                "the bodies approach across the plane (relative velocity "
+                + ", ".join(f"{a}: {typed_text(v)}" for a, v in relative.items())
+                + "): give the contact's normal (the line of centres, from the first body), or stick: true "
+                "for bodies that move on together",
+                path,
+            )
     if flip:  # written from the fixed partner to the body: kept from the moving body to the partner
         normal = tuple((axis, -component) for axis, component in normal)
     for q in asked:
@@ -664,6 +715,7 @@ def _impact(
             errors.add(f"{q.target!r} moves in the plane: ask for the final_speed", where)
     if len(names) + (fixed is not None) != 2 or not all(n in known for n in names):
         return None
+    restitution = restitution if restitution_stuck is None else restitution_stuck
     if restitution is None and release is None:
         return None
     return Impact(tuple(names), normal, restitution, release, fixed)
