@@ -12,7 +12,7 @@ from functools import cached_property
 import sympy
 
 from physics.answer_text import typed_text
-from physics.engine import tidy
+from physics.engine import modes, tidy
 from physics.engine.mechanics import solve_linear, time_derivative
 from physics.engine.method import Method, NotApplicable
 from physics.engine.results import StepKind
@@ -168,7 +168,10 @@ class LagrangeMethod(Method):
         at = {q: equilibrium, **{c: 0 for c in mech.q if c != q}}
         stiffness = sympy.hessian(mech.potential, mech.q).subs(at)
         mass = mech.mass_matrix.subs(at)
-        omega2 = _single_nonzero_eigenvalue(mass.inv() * stiffness)
+        block = modes.coupled([mass, stiffness], list(mech.q).index(q))  # other, uncoupled systems apart
+        omega2 = _single_nonzero_eigenvalue(
+            mass.extract(block, block).inv() * stiffness.extract(block, block)
+        )
         self.step(
             "Small oscillations: the mass matrix $\\mathbf{M}$ and stiffness matrix $\\mathbf{K}$",
             r"\mathbf{M}\ddot{\mathbf{q}} + \mathbf{K}\mathbf{q} = 0,\ \mathbf{M} = "

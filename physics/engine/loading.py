@@ -12,7 +12,7 @@ import sympy
 
 from physics.answer_text import typed_text
 from physics.dimensions import Dimension
-from physics.engine import forcing, mode_shapes, reach_loading, sticking
+from physics.engine import bounces, evaluated_at, forcing, mode_shapes, reach_loading, scenarios, sticking
 from physics.engine.dimensional import check_dimensions
 from physics.engine.distances import with_distance_sides
 from physics.engine.elements import expand_elements
@@ -127,7 +127,22 @@ def load_model(
 
     With the symbols' `dimensions` (name -> Dimension), every position, energy, mass, ... is also
     checked for dimensional consistency. `ranges`: the symbol table's own ranges (name -> (low, high)),
-    which choose the root a `solve` keeps."""
+    which choose the root a `solve` keeps. `scenarios` are loaded each as a model of its own
+    (scenarios.py)."""
+    base, overrides = scenarios.split(data)
+    model = _load_model(base, symbols, dimensions, ranges)
+    if not overrides:
+        return model
+    again = partial(_load_model, symbols=symbols, dimensions=dimensions, ranges=ranges)
+    return dataclasses.replace(model, scenarios=scenarios.load(base, overrides, again))
+
+
+def _load_model(
+    data: Mapping[str, Any],
+    symbols: Mapping[str, sympy.Symbol],
+    dimensions: Mapping[str, Dimension] | None,
+    ranges: Mapping[str, tuple[sympy.Expr, sympy.Expr]] | None,
+) -> Model:
     expanded = expand_elements(data, symbols)  # composable elements -> the low-level sections
     try:
         model = _load_low_level(expanded.data, symbols)
@@ -190,6 +205,7 @@ def _load_low_level(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]
     )
     frame = _frame(data.get("frame"), symbols, bodies, errors)
     reach_loading.check_targets(quantities, bodies, state, coordinates, errors.add)
+    bounces.check(quantities, impact, errors.add)
     _check_slip_quantities(quantities, frictions, errors)
     named = [*coord_names, *(c.name for c in constraints), *(b.name for b in bodies)]
     notation = errors.attempt(partial(read_notation, data.get("notation"), named)) or ()
@@ -810,17 +826,19 @@ def _quantities(
             others = {n: s for n, s in stand_ins.items() if n != name}
             result += _expression_quantity(str(name), entry, symbols, others, errors)
             continue
+        entry, at_values = evaluated_at.split(str(name), entry, symbols, list(map(str, entries)), errors.add)
         quantity = _quantity(
             str(name), entry, ("quantities", str(name)), symbols, coordinates, constraints, collision, errors
         )
         if quantity is not None:
-            result.append(quantity)
+            result.append(dataclasses.replace(quantity, uses=at_values))
     _check_cycles(result, errors)
     return tuple(result)
 
 
 def _check_cycles(quantities: list[Quantity], errors: _Collector) -> None:
-    """Expressions that use each other in a circle define nothing."""
+    """Expressions (or quantities evaluated `with` each other's values) that use each other in a circle
+    define nothing."""
     uses = {q.name: [name for _, name in q.uses] for q in quantities}
     reported: set[str] = set()
 

@@ -10,7 +10,7 @@ from functools import cached_property, lru_cache
 import sympy
 
 from physics.answer_text import typed_text
-from physics.engine import impact, modes, quantity_table, tidy, work_energy
+from physics.engine import bounces, evaluated_at, impact, modes, quantity_table, tidy, work_energy
 from physics.engine.mechanics import Mechanics
 from physics.engine.model import Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
@@ -109,6 +109,8 @@ class Method(ABC):
         for title, latex in steps:
             self.step(title, latex)
         rates = impact.coordinate_rates(self.model, after)
+        if quantity.bounces is not None:  # bounced again and again off the fixed partner
+            rates = bounces.velocities_after(self, quantity, rates)
         self.step(
             "The motion after the impact starts with these velocities",
             r",\ ".join(
@@ -121,7 +123,7 @@ class Method(ABC):
         }
         bounced = dataclasses.replace(self.model, state=tuple(state.items()), impact=None)
         solver = type(self)(bounced, Mechanics(bounced))
-        result = solver.answer(dataclasses.replace(quantity, after=""))
+        result = solver.answer(dataclasses.replace(quantity, after="", bounces=None))
         for step in solver.steps:
             self.step(f"{step.title} (after the impact)", step.latex)
         return result
@@ -154,6 +156,8 @@ class Method(ABC):
 
     def answer(self, quantity: Quantity) -> sympy.Expr:
         """The quantity by this method: its kind's handler in the quantity table (quantity_table.py)."""
+        if evaluated_at.applies(quantity):  # a modifier: with a symbol at another quantity's value
+            return evaluated_at.answer(self, quantity)
         if quantity.after:  # a modifier: in the motion that starts just after the impact
             return self.after_impact(quantity)
         if quantity.at:  # a modifier: where the motion from the state arrives (speed, force, ...)

@@ -251,6 +251,9 @@ class Quantity:
     coefficient: sympy.Expr | None = None
     ratio: tuple[str, ...] = ()  # for MODE_SHAPE: (numerator, denominator) coordinates; target = mode
     after: str = ""  # "impact": taken in the motion that starts just after the model's impact
+    bounces: sympy.Expr | None = (
+        None  # with `after`: after this many bounces off the fixed partner (bounces.py)
+    )
 
 
 @dataclass(frozen=True)
@@ -294,6 +297,8 @@ class Model:
     symbol_ranges: tuple[
         tuple[sympy.Symbol, sympy.Expr, sympy.Expr], ...
     ] = ()  # quantities the author derives on purpose without a part asking for them
+    # other configurations of the same system, each a whole model with its own quantities (scenarios.py)
+    scenarios: tuple[tuple[str, Model], ...] = ()
 
     def body(self, name: str) -> Body:
         return next(b for b in self.bodies if b.name == name)

@@ -294,9 +294,14 @@ class Simulator:
     def _after_impact(self, quantity: Quantity, point: Point, expected: float) -> Measured:
         """The motion after the impact, started with the velocities the integrated contact left (never
         the derived ones), measured as any motion from a state is."""
-        key = tuple(sorted((s.name, v) for s, v in point.items()))
+        count = 1 if quantity.bounces is None else round(_evaluate(quantity.bounces, point))
+        key = (*sorted((s.name, v) for s, v in point.items()), ("bounces", count))
         if key not in self._bounced:
             rates = self._impact.rates(point)
+            if count != 1:
+                from physics.engine import bounce_simulation  # it builds on this module
+
+                rates = bounce_simulation.velocities_after(self, quantity.name, count, point)
             state = {
                 **dict(self.model.state),
                 **{
@@ -306,12 +311,13 @@ class Simulator:
             bounced = dataclasses.replace(self.model, state=tuple(state.items()), impact=None)
             self._bounced[key] = Simulator(bounced, self.equilibrium_of)
         simulator = self._bounced[key]
-        inner = dataclasses.replace(quantity, after="")
+        inner = dataclasses.replace(quantity, after="", bounces=None)
         measure = simulator._reach if _reaches(inner) else simulator._measures().get(inner.kind)
         if measure is None:
             raise DerivationError(f"{quantity.name}: no simulation of this quantity after an impact")
         what, measured, error = measure(inner, point, expected)
-        return f"{what}, after an integrated contact", measured, error
+        contacts = "an integrated contact" if count == 1 else f"{count} integrated bounces"
+        return f"{what}, after {contacts}", measured, error
 
     def energy_balance(self, points: Sequence[Point]) -> SimulationCheck | None:
         """Integrate the motion from the model's state and keep the books: the change of T + V must equal
