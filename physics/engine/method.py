@@ -24,6 +24,7 @@ from physics.engine.model import (
 from physics.engine.proof import domain_points
 from physics.engine.results import MethodReport, Step, StepKind
 from physics.engine.roots import admissible, declared_range
+from physics.engine.settle import settle
 from physics.errors import DerivationError
 
 
@@ -323,7 +324,9 @@ class Method(ABC):
         return f"along ${axis}$"
 
     def at_state(self, expr: sympy.Expr) -> sympy.Expr:
-        return tidy.simplify(expr.subs(dict(self.model.state)))
+        value = tidy.simplify(expr.subs(dict(self.model.state)))
+        settled = settle(value, self.model)  # |R - r| where R > r is declared
+        return value if settled == value else tidy.simplify(settled)
 
 
 def _declared(symbol: sympy.Symbol, model: Model) -> str:
