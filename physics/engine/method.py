@@ -24,7 +24,7 @@ from physics.engine.model import (
 from physics.engine.proof import domain_points
 from physics.engine.results import MethodReport, Step, StepKind
 from physics.engine.roots import admissible, declared_range
-from physics.engine.settle import settle
+from physics.engine.settle import plain_angle, settle
 from physics.errors import DerivationError
 
 
@@ -250,6 +250,7 @@ class Method(ABC):
                 f"the roots {typed_text(roots)} of Q = {typed_text(force)}",
                 quantity=coordinate,
             )
+        stable[0] = plain_angle(tidy.simplify(stable[0]), self.model)  # not sympy's half-angle form
         generalized, at = self.mech.notation.letters.generalized, rf"{self.tex(q)}_{{\mathrm{{eq}}}}"
         self.step(
             f"Equilibrium of {self.named(coordinate)}: the generalized force vanishes, and pulls back",

@@ -100,3 +100,21 @@ def _finite(low: float, high: float) -> tuple[float, float]:
     if high == float("inf"):
         high = low + 10.0
     return low, high
+
+
+def plain_angle(root: sympy.Expr, model: Model) -> sympy.Expr:
+    """An angle sympy writes as 2 atan(half-angle form) is atan(tan(root)) when it lies in (-pi/2, pi/2):
+    taken when it is simpler and equal at domain points."""
+    if not root.has(sympy.atan):
+        return root
+    candidate = sympy.atan(tidy.simplify(sympy.expand_trig(sympy.tan(root))))
+    if sympy.count_ops(candidate) >= sympy.count_ops(root):
+        return root
+    try:
+        same = all(
+            abs(complex(sympy.N((candidate - root).subs(point), 20))) < 1e-12
+            for point in domain_points(model, 6, seed=13)
+        )
+    except (TypeError, ValueError):
+        return root
+    return candidate if same else root

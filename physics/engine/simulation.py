@@ -35,6 +35,7 @@ from physics.engine.model import (
     QuantityKind,
 )
 from physics.engine.results import SimulationCheck
+from physics.engine.supports import driven
 from physics.errors import DerivationError
 
 TOLERANCE = 1e-3
@@ -112,6 +113,20 @@ class Dynamics:
             )
         ]
         self._dissipative = _compile([*args, *lam], self.mech.generalized(dissipative))
+        # a support moving as prescribed: its constraints do work, lambda grad(g) . v = -lambda dg/dt,
+        # and the kinetic energy has terms in the support's velocity beside q' M q' / 2
+        self.driven = driven(model)
+        if self.driven:
+            assert model.time is not None
+            place = {d.symbol: d.mapping for d in self.mech.dofs}
+            work = -sympy.Add(
+                *(
+                    m * sympy.diff(c.gap, model.time).subs(place)
+                    for m, c in zip(lam, model.constraints, strict=True)
+                )
+            )
+            self._support_power = _compile([*args, *lam], [work])
+            self._kinetic = _compile(args, [self.mech.kinetic])
 
     def uses(self, symbol: sympy.Symbol) -> bool:
         """Whether the equations of motion or the start depend on the symbol."""
@@ -132,6 +147,8 @@ class Dynamics:
     def values(self, point: Point) -> Vector:
         """The parameters' values at the point (the time, when not a parameter, from the state)."""
         start = dict(self.model.state).get(self.model.time) if self.model.time is not None else None
+        if start is None and self.model.time is not None and self.model.time not in point:
+            start = sympy.Integer(0)  # a support moving as prescribed, from t = 0 unless the state says
         return [point[p] if p in point or start is None else _evaluate(start, point) for p in self.params]
 
     def initial(self, q: Vector, qd: Vector, params: Vector) -> Vector:
@@ -167,7 +184,8 @@ class Dynamics:
     def power(self, q: Vector, qd: Vector, params: Vector, multipliers: Vector) -> float:
         """Power of the non-conservative forces: Q_nc . q'."""
         forces = self._nonconservative(*q, *qd, *params, *multipliers)
-        return sum(f * v for f, v in zip(forces, qd, strict=True))
+        support = self._support_power(*q, *qd, *params, *multipliers)[0] if self.driven else 0.0
+        return support + sum(f * v for f, v in zip(forces, qd, strict=True))
 
     def dissipation(self, q: Vector, qd: Vector, params: Vector, multipliers: Vector) -> float:
         """Power of kinetic friction and drag alone (never positive in a consistent model)."""
@@ -175,6 +193,8 @@ class Dynamics:
         return sum(f * v for f, v in zip(forces, qd, strict=True))
 
     def energy(self, q: Vector, qd: Vector, params: Vector) -> float:
+        if self.driven:
+            return self._kinetic(*q, *qd, *params)[0] + self.potential(q, params)
         matrix = self.mass(q, params)
         kinetic = 0.5 * sum(qd[i] * matrix[i][j] * qd[j] for i in range(self.n) for j in range(self.n))
         return kinetic + self.potential(q, params)
@@ -377,8 +397,15 @@ class Simulator:
                 break  # it stopped and turned back: kinetic friction as modelled ends there
             states.append(after)
         start, end = states[0], states[-1]
-        change = dyn.energy(end[:n], end[n : 2 * n], params) - dyn.energy(start[:n], start[n : 2 * n], params)
-        kinetic = max(dyn.energy(y[:n], y[n : 2 * n], params) - dyn.potential(y[:n], params) for y in states)
+        # each state's energy at its own time (a support moving as prescribed)
+        change = dyn.energy(end[:n], end[n : 2 * n], dyn.at(params, end, 2 * n + 2)) - dyn.energy(
+            start[:n], start[n : 2 * n], params
+        )
+        kinetic = max(
+            dyn.energy(y[:n], y[n : 2 * n], now) - dyn.potential(y[:n], now)
+            for y in states
+            for now in [dyn.at(params, y, 2 * n + 2)]
+        )
         return change, end[2 * n], abs(kinetic), end[2 * n + 1]
 
     @cached_property
@@ -681,8 +708,11 @@ class Simulator:
         estimate = 2 * math.pi * math.sqrt(inertia / stiffness)
         per_period = 400
         start = shifted(1e-4 * (abs(q0) or 1.0))
-        states = rk4(
-            dyn.derivative(params), start + [0.0] * dyn.n, estimate / per_period, int(3.3 * per_period)
+        states = rk4(  # with a support moving as prescribed, its clock too
+            dyn.derivative(params),
+            dyn.initial(start, [0.0] * dyn.n, params),
+            estimate / per_period,
+            int(3.3 * per_period),
         )
         values = [s[i] - q0 for s in states]
         crossings = [
