@@ -25,12 +25,18 @@ from physics.engine.proof import domain_points
 from physics.engine.results import MethodReport, Step, StepKind
 from physics.engine.roots import admissible, declared_range
 from physics.engine.settle import plain_angle, settle
+from physics.engine.supports import driven
 from physics.errors import DerivationError
 
 
 @lru_cache(maxsize=32)
 def stable_equilibrium(model: Model) -> dict[sympy.Symbol, sympy.Expr]:
     """The stable equilibrium of all the coordinates (shared by the methods: it is where they linearize)."""
+    if driven(model):  # grad V = 0 is no rest relative to a moving support
+        raise NotApplicable(
+            "normal modes and damped oscillations are worked about a fixed support only (this one moves as "
+            "prescribed): ask for angular_frequency of one coordinate"
+        )
     return modes.equilibrium_point(model, Mechanics(model))
 
 

@@ -155,6 +155,14 @@ class Dynamics:
         """The integrated state: positions, velocities and, with a force in the time, the time."""
         return [*q, *qd, *([params[self.clock]] if self.clock is not None else [])]
 
+    def later(self, params: Vector, dt: float) -> Vector:
+        """The parameters dt later (the clock moved on, when there is one)."""
+        if self.clock is None:
+            return params
+        now = list(params)
+        now[self.clock] += dt
+        return now
+
     def at(self, params: Vector, y: Vector, index: int) -> Vector:
         """The parameters at the integrated state y, whose time (if any) is at y[index]."""
         if self.clock is None:
@@ -490,7 +498,10 @@ class Simulator:
         dyn = self.dynamics
         params = dyn.values(point)
         trajectory = self._trajectory_around(point, h)
-        before, now, after = (dyn.positions(q, params) for q in trajectory)
+        # each position at its own time: a support moving as prescribed carries the bodies with it
+        before, now, after = (
+            dyn.positions(q, dyn.later(params, dt)) for q, dt in zip(trajectory, (-h, 0.0, h), strict=True)
+        )
         accel = [(a - 2 * b + c) / h**2 for a, b, c in zip(before, now, after, strict=True)]
         grads, base, per_lambda, masses = self._force_parts(trajectory[1], point, self._start(point)[1])
         k = len(grads)
@@ -753,9 +764,13 @@ class Simulator:
         start = (q, [0.0] * dyn.n)
         h = self._step_for(point, start)
         before, now, after = (
-            dyn.positions(x, params) for x in self._trajectory_around(point, h, start=start)
+            dyn.positions(x, dyn.later(params, dt))
+            for x, dt in zip(self._trajectory_around(point, h, start=start), (-h, 0.0, h), strict=True)
         )
         accel = [(a - 2 * b + c) / h**2 for a, b, c in zip(before, now, after, strict=True)]
+        if dyn.driven:  # relative to the support: less the acceleration the bodies have held at q
+            held = [dyn.positions(q, dyn.later(params, dt)) for dt in (-h, 0.0, h)]
+            accel = [x - (a - 2 * b + c) / h**2 for x, a, b, c in zip(accel, *held, strict=True)]
         masses = self._force_parts(q, point)[3]
         step = 1e-6 * max(abs(q[i]), 1.0)
         up = dyn.positions([v + (step if j == i else 0.0) for j, v in enumerate(q)], params)
