@@ -179,7 +179,9 @@ def _load_low_level(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]
     coordinates = _coordinates(data.get("coordinates"), symbols, coordinate_ranges, errors)
     coord_names = {c.name: c.symbol for c in coordinates}
     coord_scope = {**symbols, **coord_names}
-    bodies = _bodies(data.get("bodies"), symbols, coord_scope, errors)
+    time = forcing.time_symbol(symbols)
+    # a support moving as prescribed: positions (and gaps) may use the time (supports.py)
+    bodies = _bodies(data.get("bodies"), symbols, {"t": time, **coord_scope}, errors)
     cartesian = tuple(
         (name, sympy.Symbol(name, real=True)) for body in bodies for name in body.cartesian_names()
     )
@@ -189,11 +191,10 @@ def _load_low_level(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]
     gravity = None
     if data.get("gravity") is not None:
         gravity = errors.read(data["gravity"], symbols, ("gravity",))
-    constraints = _constraints(data.get("constraints"), {**symbols, **dict(cartesian)}, errors)
+    constraints = _constraints(data.get("constraints"), {"t": time, **symbols, **dict(cartesian)}, errors)
     frictions = _frictions(data.get("friction"), symbols, bodies, constraints, coordinates, errors)
     potentials = _potentials(data.get("potentials"), symbols, bodies, errors)
     collision = _collision(data.get("collision"), symbols, bodies, coordinates, errors)
-    time = forcing.time_symbol(symbols)
     state = _state(data.get("state"), symbols, coordinates, errors, time)
     quantities = _quantities(data.get("quantities"), symbols, coordinates, constraints, collision, errors)
     velocities = {f"{c.name}_dot": c.velocity for c in coordinates}

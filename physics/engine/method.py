@@ -16,12 +16,19 @@ from physics.engine.model import Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
 from physics.engine.results import MethodReport, Step, StepKind
 from physics.engine.roots import admissible, declared_range
+from physics.engine.settle import plain_angle, settle
+from physics.engine.supports import driven
 from physics.errors import DerivationError
 
 
 @lru_cache(maxsize=32)
 def stable_equilibrium(model: Model) -> dict[sympy.Symbol, sympy.Expr]:
     """The stable equilibrium of all the coordinates (shared by the methods: it is where they linearize)."""
+    if driven(model):  # grad V = 0 is no rest relative to a moving support
+        raise NotApplicable(
+            "normal modes and damped oscillations are worked about a fixed support only (this one moves as "
+            "prescribed): ask for angular_frequency of one coordinate"
+        )
     return modes.equilibrium_point(model, Mechanics(model))
 
 
@@ -191,6 +198,7 @@ class Method(ABC):
                 f"the roots {typed_text(roots)} of Q = {typed_text(force)}",
                 quantity=coordinate,
             )
+        stable[0] = plain_angle(tidy.simplify(stable[0]), self.model)  # not sympy's half-angle form
         generalized, at = self.mech.notation.letters.generalized, rf"{self.tex(q)}_{{\mathrm{{eq}}}}"
         self.step(
             f"Equilibrium of {self.named(coordinate)}: the generalized force vanishes, and pulls back",
@@ -265,7 +273,9 @@ class Method(ABC):
         return f"along ${axis}$"
 
     def at_state(self, expr: sympy.Expr) -> sympy.Expr:
-        return tidy.simplify(expr.subs(dict(self.model.state)))
+        value = tidy.simplify(expr.subs(dict(self.model.state)))
+        settled = settle(value, self.model)  # |R - r| where R > r is declared
+        return value if settled == value else tidy.simplify(settled)
 
 
 def _declared(symbol: sympy.Symbol, model: Model) -> str:
