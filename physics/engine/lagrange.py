@@ -35,7 +35,7 @@ class LagrangeMethod(Method):
         letters = mech.notation.letters
         self.step("The Lagrangian", f"{letters.lagrangian} = {letters.kinetic} - {letters.potential}")
         lam = mech.multipliers
-        friction = [f + a for f, a in zip(mech.friction_forces(lam), mech.applied_forces(False), strict=True)]
+        friction = mech.load_forces(False, lam)
         equations = []
         for c in model.coordinates:
             generalized = sympy.Add(

@@ -9,12 +9,20 @@ gap as "how far from violating the constraint" makes lambda the magnitude (norma
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 from enum import StrEnum
 
 import sympy
 
 from physics.dimensions import Dimension
+from physics.engine.loads import Load, Traits
+from physics.engine.loads.applied import AppliedForce, ForceKind
+from physics.engine.loads.friction import Friction
+from physics.engine.loads.gravity import Gravity
+from physics.engine.loads.pair import PairPotential
+
+__all__ = ["AppliedForce", "ForceKind", "Friction", "PairPotential"]  # re-exported: they are loads
 
 AXES = ("x", "y")
 ZERO = sympy.Integer(0)
@@ -57,54 +65,6 @@ class Constraint:
     name: str
     gap: sympy.Expr  # in the bodies' Cartesian symbols
     kind: ConstraintKind
-
-
-@dataclass(frozen=True)
-class Friction:
-    """Kinetic friction mu*lambda at a constraint, opposing the slip, which is towards increasing
-    `sliding` coordinate. On a rigid body it acts at the `contact` point (relative to the body's centre)
-    and so has a torque; with `against`, the surface is that moving body, which feels the reaction."""
-
-    constraint: str
-    body: str
-    coefficient: sympy.Expr
-    sliding: str
-    contact: tuple[tuple[str, sympy.Expr], ...] = ()  # (axis, offset from the centre); () at the centre
-    against: str | None = None
-
-
-@dataclass(frozen=True)
-class PairPotential:
-    """A potential energy U(d) of the distance d between two bodies, or a body and a fixed anchor."""
-
-    name: str
-    bodies: tuple[str, ...]
-    anchor: tuple[tuple[str, sympy.Expr], ...]
-    energy: sympy.Expr
-    distance: sympy.Symbol
-    # On one shared axis the length is |b - a|; +1/-1 says which sign b - a keeps on the model's domain,
-    # 0 that the energy is even in the distance (the sign does not matter). Set by `load_model`.
-    side: int = 1
-
-
-class ForceKind(StrEnum):
-    APPLIED = "force"  # given components, constant or in the coordinates and their velocities
-    LINEAR_DRAG = "drag"  # -b v (viscous damping)
-    QUADRATIC_DRAG = "quadratic_drag"  # -c |v| v (air drag)
-
-
-@dataclass(frozen=True)
-class AppliedForce:
-    """A force on a body (at its centre): given components, or drag opposing its velocity."""
-
-    body: str
-    kind: ForceKind
-    components: tuple[tuple[str, sympy.Expr], ...] = ()  # for APPLIED: (axis, expression)
-    coefficient: sympy.Expr = ZERO  # for drag
-
-    def constant(self, moving: set[sympy.Symbol]) -> bool:
-        """A given force that depends on no coordinate or velocity: it has a potential, -F . r."""
-        return self.kind is ForceKind.APPLIED and not any(e.free_symbols & moving for _, e in self.components)
 
 
 @dataclass(frozen=True)
@@ -304,10 +264,24 @@ class Model:
         return moving | ({self.time} if self.time is not None else set())
 
     @property
-    def dissipative_forces(self) -> tuple[AppliedForce, ...]:
-        """Forces without a potential: drag, and given forces that depend on coordinates or velocities."""
-        moving = self.moving_symbols
-        return tuple(f for f in self.forces if not f.constant(moving))
+    def loads(self) -> tuple[Load, ...]:
+        """Every load on the bodies, whichever section gave it: what the methods consume (loads/)."""
+        gravity = (Gravity(self.gravity),) if self.gravity is not None else ()
+        return (*gravity, *self.potentials, *self.forces, *self.frictions)
+
+    def loads_where(self, which: Callable[[Traits], bool]) -> tuple[Load, ...]:
+        """The loads whose traits `which` selects (e.g. those that work through a constraint force)."""
+        return tuple(load for load in self.loads if which(load.traits(self)))
+
+    @property
+    def nonconservative_loads(self) -> tuple[Load, ...]:
+        """Loads without a potential: friction, drag, forces in the coordinates, velocities or time."""
+        return self.loads_where(lambda traits: not traits.conservative)
+
+    @property
+    def contact_loads(self) -> tuple[Load, ...]:
+        """Loads whose size is a constraint's force (kinetic friction, mu N): they do work through it."""
+        return self.loads_where(lambda traits: bool(traits.constraints))
 
     def quantity(self, name: str) -> Quantity:
         return next(q for q in self.quantities if q.name == name)

@@ -100,17 +100,9 @@ class Dynamics:
         # generalized non-conservative forces (kinetic friction), given the multipliers: their power
         # is what the mechanical energy may change by
         lam = list(self.mech.multipliers)
-        forces = [
-            f + a
-            for f, a in zip(self.mech.friction_forces(lam), self.mech.applied_forces(False), strict=True)
-        ]
+        forces = self.mech.load_forces(False, lam)
         self._nonconservative = _compile([*args, *lam], self.mech.generalized(forces))
-        dissipative = [
-            f + a
-            for f, a in zip(
-                self.mech.friction_forces(lam), self.mech.applied_forces(False, True), strict=True
-            )
-        ]
+        dissipative = self.mech.load_forces(False, lam, lambda traits: traits.dissipates)
         self._dissipative = _compile([*args, *lam], self.mech.generalized(dissipative))
 
     def uses(self, symbol: sympy.Symbol) -> bool:
@@ -492,14 +484,16 @@ class Simulator:
         position = [*mech.q, *mech.qd, *dyn.params]
         place = {d.symbol: d.mapping for d in mech.dofs}
         grads = [g.subs(place) for k in range(len(self.model.constraints)) for g in mech.gap_gradient(k)]
+        # the loads whose size is a constraint force (kinetic friction) are linear in it: per unit force
+        free = [sympy.Integer(0) for _ in self.model.constraints]
         base = [
             (-sympy.diff(mech.cartesian_potential, d.symbol)).subs(place) + applied
-            for d, applied in zip(mech.dofs, mech.applied_forces(False), strict=True)
+            for d, applied in zip(mech.dofs, mech.load_forces(False, free), strict=True)
         ]
         units = []
         for k in range(len(self.model.constraints)):
             unit = [sympy.Integer(1 if j == k else 0) for j in range(len(self.model.constraints))]
-            units += mech.friction_forces(unit)
+            units += mech.load_forces(False, unit, lambda traits: bool(traits.constraints))
         masses = [d.inertia for d in mech.dofs]
         return tuple(_compile(position, exprs) for exprs in (grads, base, units, masses))
 
