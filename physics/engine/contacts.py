@@ -62,7 +62,7 @@ def _holds(
 ) -> bool:
     """True when the force keeps its sign; DerivationError at `path` when it is wrong somewhere; False when
     its sign could not be found."""
-    loads = [s for f in model.forces for _, c in f.components for s in sorted(c.free_symbols, key=str)]
+    loads = [s for f in model.force_entries for e in f.expressions() for s in sorted(e.free_symbols, key=str)]
     found = sign_on_domain(force, model)
     if found.sign is Sign.POSITIVE:
         return True

@@ -17,7 +17,7 @@ from sympy.polys.matrices.exceptions import DMNonInvertibleMatrixError
 
 from physics.engine import tidy as tidy_up
 from physics.engine.loads import Traits, View
-from physics.engine.model import Model
+from physics.engine.model import Model, PairPotential
 from physics.engine.notation import Notation, notation_of
 from physics.errors import DerivationError
 
@@ -189,6 +189,10 @@ class Mechanics:
 
     def _potential(self, place: Mapping[str, sympy.Expr]) -> sympy.Expr:
         return sympy.Add(*(load.potential(self, place) for load in self.model.loads))
+
+    def distance(self, pair: PairPotential, place: Mapping[str, sympy.Expr]) -> sympy.Expr:
+        """The length between a pair potential's bodies (or body and anchor) at `place`."""
+        return pair.length(self.model, place)
 
 
 def solve_linear(

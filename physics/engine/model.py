@@ -16,7 +16,7 @@ from enum import StrEnum
 import sympy
 
 from physics.dimensions import Dimension
-from physics.engine.loads import Load, Traits
+from physics.engine.loads import ForceEntryLoad, Load, Traits
 from physics.engine.loads.applied import AppliedForce, ForceKind
 from physics.engine.loads.friction import Friction
 from physics.engine.loads.gravity import Gravity
@@ -234,7 +234,8 @@ class Model:
     parameters: tuple[sympy.Symbol, ...]  # the problem's symbols, in table order
     cartesian: tuple[tuple[str, sympy.Symbol], ...]  # Cartesian symbol names of every body
     limits: tuple[StatedLimit, ...] = ()
-    forces: tuple[AppliedForce, ...] = ()
+    # the `forces:` section's entries, of any kind (loads/entries.py); `forces` are its given forces and drag
+    force_entries: tuple[ForceEntryLoad, ...] = ()
     dimensions_checked: bool = False
     impact: Impact | None = None  # every term was found dimensionally consistent when loaded
     frame: Frame | None = None  # declared (`frame:`) or implied by an element (a wedge, a rotating frame)
@@ -267,7 +268,12 @@ class Model:
     def loads(self) -> tuple[Load, ...]:
         """Every load on the bodies, whichever section gave it: what the methods consume (loads/)."""
         gravity = (Gravity(self.gravity),) if self.gravity is not None else ()
-        return (*gravity, *self.potentials, *self.forces, *self.frictions)
+        return (*gravity, *self.potentials, *self.force_entries, *self.frictions)
+
+    @property
+    def forces(self) -> tuple[AppliedForce, ...]:
+        """The given forces and drag of the `forces:` section (what its figures draw)."""
+        return tuple(f for f in self.force_entries if isinstance(f, AppliedForce))
 
     def loads_where(self, which: Callable[[Traits], bool]) -> tuple[Load, ...]:
         """The loads whose traits `which` selects (e.g. those that work through a constraint force)."""

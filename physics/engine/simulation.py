@@ -114,12 +114,9 @@ class Dynamics:
 
     @cached_property
     def _gaps(self) -> list[sympy.Expr]:
-        forces = [c for f in self.model.forces for _, c in f.components] + [
-            f.coefficient for f in self.model.forces
+        return [c.gap for c in self.model.constraints] + [
+            e for load in self.model.loads for e in load.expressions()
         ]
-        return (
-            [c.gap for c in self.model.constraints] + forces + [f.coefficient for f in self.model.frictions]
-        )
 
     def values(self, point: Point) -> Vector:
         """The parameters' values at the point (the time, when not a parameter, from the state)."""

@@ -11,21 +11,25 @@ the model a load came from. A load gives
 - its `traits`: whether it keeps the mechanical energy, dissipates it, needs a constraint's force
   (kinetic friction is mu N), is viscous drag (-b v), and which bodies it acts on.
 
-A new kind of load is one module: a class with these three methods (and `expressions`), and, for an
-entry of the model's `forces:` section, a reader registered in `physics.engine.loads.registry`.
+A new kind of load is one module: a class with these methods and, for an entry of the model's `forces:`
+section (`{body: wheel, torque: tau}`), a `read` function registered under its key in
+`physics.engine.loads.entries` (`torque.py` is the example).
 """
 
 from __future__ import annotations
 
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Protocol
+from typing import TYPE_CHECKING, Any, Protocol
 
 import sympy
 
+from physics.dimensions import Dimension
+from physics.engine.text import Path
+
 if TYPE_CHECKING:
     from physics.engine.mechanics import Mechanics
-    from physics.engine.model import Model
+    from physics.engine.model import Body, Model
 
 
 @dataclass(frozen=True)
@@ -67,6 +71,35 @@ class Load(Protocol):
     def expressions(self) -> tuple[sympy.Expr, ...]:
         """Every expression it holds: which parameters (and the time) it depends on."""
         ...
+
+
+class ForceEntryLoad(Load, Protocol):
+    """A load given as an entry of the `forces:` section: it also says what dimension each of its
+    expressions has (checked when the problem declares its symbols' dimensions)."""
+
+    def dimensions(self, path: Path) -> list[tuple[Path, sympy.Expr, Dimension]]:
+        """(path of the expression inside the model section, expression, expected dimension)."""
+        ...
+
+
+@dataclass(frozen=True)
+class Entry:
+    """What the reader of a `forces:` entry kind is handed: the entry's body, the value under its kind's
+    key and that value's path, and the loader's ways to read expressions and report faults."""
+
+    body: Body
+    value: Any
+    path: Path
+    expression: Callable[[Any, Path], sympy.Expr | None]  # in the parameters, coordinates, q_dot and t
+    parameter: Callable[[Any, Path], sympy.Expr | None]  # in the parameters alone (a coefficient)
+    axes: Callable[[Any, Path], tuple[tuple[str, sympy.Expr], ...]]  # {x: ..., y: ...} as `expression`
+    error: Callable[[str, Path], None]
+
+
+MASS = Dimension({"mass": 1})
+LENGTH = Dimension({"length": 1})
+TIME = Dimension({"time": 1})
+FORCE = MASS * LENGTH / TIME**2
 
 
 def nothing(mech: Mechanics) -> list[sympy.Expr]:

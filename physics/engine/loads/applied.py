@@ -10,7 +10,9 @@ from typing import TYPE_CHECKING
 
 import sympy
 
-from physics.engine.loads import Traits, View, nothing, on_body
+from physics.dimensions import Dimension
+from physics.engine.loads import FORCE, LENGTH, MASS, TIME, Entry, Traits, View, nothing, on_body
+from physics.engine.text import Path
 
 if TYPE_CHECKING:
     from physics.engine.mechanics import Mechanics
@@ -73,3 +75,19 @@ class AppliedForce:
 
     def expressions(self) -> tuple[sympy.Expr, ...]:
         return (*(c for _, c in self.components), self.coefficient)
+
+    def dimensions(self, path: Path) -> list[tuple[Path, sympy.Expr, Dimension]]:
+        if self.kind is ForceKind.APPLIED:
+            return [((*path, self.kind.value, axis), c, FORCE) for axis, c in self.components]
+        per = TIME if self.kind is ForceKind.LINEAR_DRAG else LENGTH
+        return [((*path, self.kind.value), self.coefficient, MASS / per)]
+
+
+def read(key: str, entry: Entry) -> AppliedForce | None:
+    """`{body: b, force: {x: ..., y: ...}}`, `{body: b, drag: b}` or `{body: b, quadratic_drag: c}`."""
+    kind = ForceKind(key)
+    if kind is ForceKind.APPLIED:
+        components = entry.axes(entry.value, entry.path)
+        return AppliedForce(entry.body.name, kind, components=components) if components else None
+    coefficient = entry.parameter(entry.value, entry.path)
+    return AppliedForce(entry.body.name, kind, coefficient=coefficient) if coefficient is not None else None
