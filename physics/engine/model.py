@@ -53,6 +53,15 @@ class Body:
         return names + ((f"phi_{self.name}",) if self.angle is not None else ())
 
 
+class Action(StrEnum):
+    """How a constraint's force acts: the methods solve every held constraint as bilateral; a unilateral
+    one's force must then keep its sign (contacts.py), an impulsive one acts for an instant (impact.py)."""
+
+    BILATERAL = "bilateral"  # either sign: an axle, a rolling grip, a bead on a wire
+    UNILATERAL = "unilateral"  # one sign: a surface only pushes, a string only pulls
+    IMPULSIVE = "impulsive"  # an impulse at one instant: two bodies meeting
+
+
 class ConstraintKind(StrEnum):
     SURFACE = "surface"
     STRING = "string"
@@ -65,6 +74,11 @@ class Constraint:
     name: str
     gap: sympy.Expr  # in the bodies' Cartesian symbols
     kind: ConstraintKind
+
+    @property
+    def action(self) -> Action:
+        unilateral = self.kind in (ConstraintKind.SURFACE, ConstraintKind.STRING)
+        return Action.UNILATERAL if unilateral else Action.BILATERAL
 
 
 @dataclass(frozen=True)
@@ -105,6 +119,7 @@ class Impact:
     restitution: sympy.Expr | None
     release: sympy.Expr | None
     fixed: str | None = None
+    action = Action.IMPULSIVE
 
 
 class QuantityKind(StrEnum):
@@ -258,6 +273,12 @@ class Model:
 
     def constraint(self, name: str) -> Constraint:
         return next(c for c in self.constraints if c.name == name)
+
+    def acting(self, action: Action) -> tuple[Constraint | Impact, ...]:
+        """The constraints that act so, the impact among them: one list for every kind of constraint."""
+        held: tuple[Constraint | Impact, ...] = self.constraints
+        every = (*held, self.impact) if self.impact is not None else held
+        return tuple(c for c in every if c.action is action)
 
     @property
     def moving_symbols(self) -> set[sympy.Symbol]:
