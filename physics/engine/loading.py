@@ -16,6 +16,7 @@ from physics.engine import bounces, evaluated_at, forcing, mode_shapes, reach_lo
 from physics.engine.dimensional import check_dimensions
 from physics.engine.distances import with_distance_sides
 from physics.engine.elements import expand_elements
+from physics.engine.loads import ForceEntryLoad, entries
 from physics.engine.model import (
     AXES,
     EFFECTIVE_KINDS,
@@ -23,13 +24,11 @@ from physics.engine.model import (
     IMPACT_KINDS,
     SLIP_KINDS,
     STEADY_KINDS,
-    AppliedForce,
     Body,
     Collision,
     Constraint,
     ConstraintKind,
     Coordinate,
-    ForceKind,
     Frame,
     Friction,
     Impact,
@@ -228,7 +227,7 @@ def _load_low_level(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]
         parameters=tuple(symbols.values()),
         cartesian=cartesian,
         limits=limits,
-        forces=forces,
+        force_entries=forces,
         impact=impact,
         frame=frame,
         notation=notation,
@@ -280,10 +279,11 @@ def _forces(
     scope: Mapping[str, sympy.Symbol],
     bodies: tuple[Body, ...],
     errors: _Collector,
-) -> tuple[AppliedForce, ...]:
-    result: list[AppliedForce] = []
-    names = {b.name for b in bodies}
-    kinds = [k.value for k in ForceKind]
+) -> tuple[ForceEntryLoad, ...]:
+    """Each entry names its body and one kind of load by its key, read by that load's module."""
+    result: list[ForceEntryLoad] = []
+    by_name = {b.name: b for b in bodies}
+    kinds = list(entries.READERS)
     for index, entry in enumerate(_sequence(value, ("forces",), errors)):
         path: Path = ("forces", index)
         spec = _mapping(entry, path, errors)
@@ -292,19 +292,23 @@ def _forces(
         if len(given) != 1:
             errors.add(f"give exactly one of {kinds}", path)
             continue
-        body = spec.get("body")
-        if body not in names:
-            errors.add(f"unknown body {body!r}", (*path, "body"))
+        body = by_name.get(spec.get("body"))  # type: ignore[arg-type]
+        if body is None:
+            errors.add(f"unknown body {spec.get('body')!r}", (*path, "body"))
             continue
-        kind = ForceKind(given[0])
-        if kind is ForceKind.APPLIED:
-            components = _axes(spec[kind.value], scope, (*path, kind.value), errors)
-            if components:
-                result.append(AppliedForce(str(body), kind, components=components))
-            continue
-        coefficient = errors.read(spec[kind.value], symbols, (*path, kind.value))
-        if coefficient is not None:
-            result.append(AppliedForce(str(body), kind, coefficient=coefficient))
+        key = given[0]
+        read = entries.Entry(
+            body,
+            spec[key],
+            (*path, key),
+            expression=lambda text, where: errors.read(text, scope, where),
+            parameter=lambda text, where: errors.read(text, symbols, where),
+            axes=lambda text, where: _axes(text, scope, where, errors),
+            error=errors.add,
+        )
+        load = entries.READERS[key](key, read)
+        if load is not None:
+            result.append(load)
     return tuple(result)
 
 

@@ -142,7 +142,7 @@ class Method(ABC):
     @cached_property
     def mode_frequencies(self) -> list[sympy.Expr]:
         """Squared normal-mode frequencies, lowest first."""
-        if self.model.frictions or self.model.dissipative_forces:
+        if self.model.nonconservative_loads:
             raise NotApplicable("normal modes are for undamped systems")
         point = stable_equilibrium(self.model)
         mass, stiffness = self.mode_matrices(point)

@@ -102,17 +102,9 @@ class Dynamics:
         # generalized non-conservative forces (kinetic friction), given the multipliers: their power
         # is what the mechanical energy may change by
         lam = list(self.mech.multipliers)
-        forces = [
-            f + a
-            for f, a in zip(self.mech.friction_forces(lam), self.mech.applied_forces(False), strict=True)
-        ]
+        forces = self.mech.load_forces(False, lam)
         self._nonconservative = _compile([*args, *lam], self.mech.generalized(forces))
-        dissipative = [
-            f + a
-            for f, a in zip(
-                self.mech.friction_forces(lam), self.mech.applied_forces(False, True), strict=True
-            )
-        ]
+        dissipative = self.mech.load_forces(False, lam, lambda traits: traits.dissipates)
         self._dissipative = _compile([*args, *lam], self.mech.generalized(dissipative))
         # a support moving as prescribed: its constraints do work, lambda grad(g) . v = -lambda dg/dt,
         # and the kinetic energy has terms in the support's velocity beside q' M q' / 2
@@ -138,12 +130,9 @@ class Dynamics:
 
     @cached_property
     def _gaps(self) -> list[sympy.Expr]:
-        forces = [c for f in self.model.forces for _, c in f.components] + [
-            f.coefficient for f in self.model.forces
+        return [c.gap for c in self.model.constraints] + [
+            e for load in self.model.loads for e in load.expressions()
         ]
-        return (
-            [c.gap for c in self.model.constraints] + forces + [f.coefficient for f in self.model.frictions]
-        )
 
     def values(self, point: Point) -> Vector:
         """The parameters' values at the point (the time, when not a parameter, from the state)."""
@@ -542,14 +531,16 @@ class Simulator:
         position = [*mech.q, *mech.qd, *dyn.params]
         place = {d.symbol: d.mapping for d in mech.dofs}
         grads = [g.subs(place) for k in range(len(self.model.constraints)) for g in mech.gap_gradient(k)]
+        # the loads whose size is a constraint force (kinetic friction) are linear in it: per unit force
+        free = [sympy.Integer(0) for _ in self.model.constraints]
         base = [
             (-sympy.diff(mech.cartesian_potential, d.symbol)).subs(place) + applied
-            for d, applied in zip(mech.dofs, mech.applied_forces(False), strict=True)
+            for d, applied in zip(mech.dofs, mech.load_forces(False, free), strict=True)
         ]
         units = []
         for k in range(len(self.model.constraints)):
             unit = [sympy.Integer(1 if j == k else 0) for j in range(len(self.model.constraints))]
-            units += mech.friction_forces(unit)
+            units += mech.load_forces(False, unit, lambda traits: bool(traits.constraints))
         masses = [d.inertia for d in mech.dofs]
         return tuple(_compile(position, exprs) for exprs in (grads, base, units, masses))
 
