@@ -144,7 +144,7 @@ def _load_model(
 ) -> Model:
     expanded = expand_elements(data, symbols)  # composable elements -> the low-level sections
     try:
-        model = _load_low_level(expanded.data, symbols)
+        model = dataclasses.replace(_load_low_level(expanded.data, symbols), elements=expanded.elements)
         if ranges:
             bounds = tuple((symbols[n], low, high) for n, (low, high) in ranges.items() if n in symbols)
             # A symbol's own range is its domain too: sampling outside it checks physics nobody posed

@@ -9,9 +9,10 @@ gap as "how far from violating the constraint" makes lambda the magnitude (norma
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from dataclasses import dataclass
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
 from enum import StrEnum
+from typing import Any
 
 import sympy
 
@@ -242,6 +243,20 @@ class StatedLimit:
 
 
 @dataclass(frozen=True)
+class AuthoredElement:
+    """An element as the author wrote it under `elements:` (its fields as read), with the names of what
+    it generated: figures draw the picture the author described from these, not from the low-level model."""
+
+    kind: str
+    name: str
+    fields: Mapping[str, Any] = field(compare=False)  # YAML data, not hashable
+    bodies: tuple[str, ...] = ()
+    constraints: tuple[str, ...] = ()
+    potentials: tuple[str, ...] = ()  # PairPotential names
+    coordinates: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True)
 class Model:
     coordinates: tuple[Coordinate, ...]
     bodies: tuple[Body, ...]
@@ -275,6 +290,9 @@ class Model:
     ] = ()  # quantities the author derives on purpose without a part asking for them
     # other configurations of the same system, each a whole model with its own quantities (scenarios.py)
     scenarios: tuple[tuple[str, Model], ...] = ()
+
+    # the elements the author wrote, in the order they were expanded (empty for a low-level model)
+    elements: tuple[AuthoredElement, ...] = ()
 
     def body(self, name: str) -> Body:
         return next(b for b in self.bodies if b.name == name)
