@@ -238,6 +238,48 @@ def test_a_pulley_whose_ends_do_not_keep_the_string_length_is_refused() -> None:
     assert "string's length" in _errors(model, "m")["elements.string.ends"]
 
 
+def test_a_movable_pulley_halves_its_bodys_motion_and_doubles_the_pull_on_it() -> None:
+    """A block on a table, its string over the edge and under a movable pulley carrying m2: the 2:1
+    ratio of the accelerations, and twice the tension holding the pulley (m2 g - 2T = m2 a/2)."""
+    model = {
+        "coordinates": ["s"],
+        "bodies": {
+            "m1": {"mass": "m1", "position": {"x": "s"}},
+            "m2": {"mass": "m2", "position": {"y": "-s/2"}},
+        },
+        "gravity": "g",
+        "elements": {
+            "string": {
+                "kind": "pulley",
+                "ends": [{"body": "m1", "pulls": "right"}, {"under": "m2", "pulls": "up"}],
+            }
+        },
+        "quantities": {"a": {"acceleration": "s"}, "T": {"force": "string"}},
+    }
+    m1, m2, g = positive("m1", "m2", "g").values()
+    found = _derived(model, "m1", "m2", "g")
+    assert sympy.simplify(found["a"] - 2 * m2 * g / (4 * m1 + m2)) == 0
+    assert sympy.simplify(m2 * g - 2 * found["T"] - m2 * found["a"] / 2) == 0
+
+
+@pytest.mark.parametrize(
+    ("end", "says"),
+    [
+        ({"under": "m2", "pulls": "up"}, "a movable pulley moves half as far"),  # m2 written as a free end
+        ({"under": "m2", "body": "m2", "pulls": "up"}, "either the body at this end or"),
+    ],
+)
+def test_a_movable_pulley_stated_wrongly_is_refused_saying_why(end: dict[str, str], says: str) -> None:
+    model = {
+        "coordinates": ["s"],
+        "bodies": {"m1": {"mass": "m", "position": {"y": "-s"}}, "m2": {"mass": "m", "position": {"y": "s"}}},
+        "elements": {"string": {"kind": "pulley", "ends": [{"body": "m1", "pulls": "up"}, end]}},
+        "quantities": {},
+    }
+    errors = _errors(model, "m")
+    assert any(says in message for message in errors.values()), errors
+
+
 def test_a_pull_direction_that_is_not_a_unit_vector_is_refused() -> None:
     model = {
         "coordinates": ["s"],
