@@ -52,8 +52,6 @@ EXPECTED = {
     "falling-drag": ({"pebble", "ball", "m", "bv", "cv²", "v"}, "pebble moving down at v, with drag bv"),
     "movable-pulley": ({"m₁", "m₂"}, "under a light movable pulley carrying m₂"),
     "pendulum-in-truck": ({"m", "L", "A"}, "A truck accelerates at A"),
-    "conical-pendulum-rate": ({"m", "L", "Ω"}, "sweeping out a cone"),
-    "collision-scenarios": ({"m₁", "m₂", "u"}, "elastic collision"),
 }
 
 
