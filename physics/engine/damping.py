@@ -22,7 +22,7 @@ import sympy
 from physics.answer_text import typed_text
 from physics.engine import tidy
 from physics.engine.mechanics import time_derivative
-from physics.engine.model import ForceKind, Model, Quantity, QuantityKind
+from physics.engine.model import AppliedForce, ForceKind, Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
 from physics.engine.quantity_table import derives
 from physics.errors import DerivationError
@@ -315,7 +315,8 @@ def without_drag(model: Model, name: str) -> Model:
         raise DerivationError(
             f"{name}: the model has no drag to leave out: ask for its angular_frequency", quantity=name
         )
-    return dataclasses.replace(model, forces=tuple(f for f in model.forces if f.kind not in drag))
+    kept = tuple(f for f in model.force_entries if not (isinstance(f, AppliedForce) and f.kind in drag))
+    return dataclasses.replace(model, force_entries=kept)
 
 
 @derives(QuantityKind.UNDAMPED_FREQUENCY)
