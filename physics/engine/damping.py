@@ -22,7 +22,7 @@ import sympy
 from physics.answer_text import typed_text
 from physics.engine import tidy
 from physics.engine.mechanics import time_derivative
-from physics.engine.model import ForceKind, Model, Quantity, QuantityKind
+from physics.engine.model import Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
 from physics.errors import DerivationError
 
@@ -242,12 +242,9 @@ RATE_FOR_TIME = "That is the decay rate 1/tau; the decay time is its inverse."
 
 
 def drag_coefficients(model: Model) -> list[sympy.Symbol]:
-    """The symbols that are linear drag coefficients (b of `drag: b`)."""
-    return [
-        f.coefficient
-        for f in model.forces
-        if f.kind is ForceKind.LINEAR_DRAG and isinstance(f.coefficient, sympy.Symbol)
-    ]
+    """The symbols that are viscous loads' coefficients (b of `drag: b`)."""
+    viscous = model.loads_where(lambda traits: traits.viscous)
+    return [e for load in viscous for e in load.expressions() if isinstance(e, sympy.Symbol)]
 
 
 def mistakes(model: Model, quantity: Quantity, reference: sympy.Expr) -> list[tuple[sympy.Expr, str]]:
