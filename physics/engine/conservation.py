@@ -13,15 +13,27 @@ import sympy
 from physics.engine import collision, tidy
 from physics.engine.mechanics import Mechanics, solve_linear, time_derivative
 from physics.engine.method import Method, NotApplicable
-from physics.engine.model import QuantityKind
+from physics.engine.model import Quantity, QuantityKind
 from physics.engine.results import StepKind
+from physics.engine.supports import NOT_CONSERVED, driven
 
 
 class ConservationMethod(Method):
     name = "conservation"
     title = "Conservation of momentum and energy"
 
+    def answer(self, quantity: Quantity) -> sympy.Expr:
+        if driven(self.model):  # the ground's frame: the moving support's work is no potential
+            raise NotApplicable(NOT_CONSERVED)
+        return super().answer(quantity)
+
     def derive(self) -> None:
+        if driven(self.model):
+            energy = self.mech.notation.letters.energy
+            self.step(
+                "Not conservative in the ground's frame: the support moving as prescribed does work",
+                rf"\frac{{\mathrm{{d}}{energy}}}{{\mathrm{{d}}t}} \neq 0",
+            )
         if self.model.contact_loads:
             energy = self.mech.notation.letters.energy
             self.step(

@@ -21,9 +21,11 @@ import sympy
 
 from physics.answer_text import typed_text
 from physics.engine import tidy
+from physics.engine.loads import Traits
 from physics.engine.mechanics import time_derivative
 from physics.engine.model import Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
+from physics.engine.quantity_table import derives
 from physics.errors import DerivationError
 
 if TYPE_CHECKING:
@@ -291,3 +293,49 @@ def undamped_checks(
             f"tends to the undamped model's angular frequency {typed_text(expected)}"
         )
     return checks
+
+
+@derives(*KINDS)
+def derived(method: Method, quantity: Quantity) -> sympy.Expr:
+    """About the stable equilibrium all the methods share; a method that cannot see the drag says so."""
+    from physics.engine.method import NotApplicable, stable_equilibrium
+
+    try:
+        return answer(method, quantity, stable_equilibrium(method.model))
+    except NotThisWay as why:
+        raise NotApplicable(str(why)) from None
+
+
+def without_drag(model: Model, name: str) -> Model:
+    """The model with its drag left out (the undamped oscillator a damped one is compared with)."""
+    if not model.loads_where(_drag):
+        raise DerivationError(
+            f"{name}: the model has no drag to leave out: ask for its angular_frequency", quantity=name
+        )
+    kept = tuple(f for f in model.force_entries if not _drag(f.traits(model)))
+    return dataclasses.replace(model, force_entries=kept)
+
+
+def _drag(traits: Traits) -> bool:
+    """A load that dissipates of itself, not through a contact's force (kinetic friction)."""
+    return traits.dissipates and not traits.constraints
+
+
+@derives(QuantityKind.UNDAMPED_FREQUENCY)
+def undamped_frequency(method: Method, quantity: Quantity) -> sympy.Expr:
+    """sqrt(k/m): this method's angular frequency of small oscillations of the model without its drag."""
+    from physics.engine.mechanics import Mechanics
+
+    why = refusal(method.model)
+    if why is not None:
+        raise DerivationError(f"{quantity.name}: {why}", quantity=quantity.name)
+    free = without_drag(method.model, quantity.name)
+    solver = type(method)(free, Mechanics(free))
+    omega = solver.frequency(quantity.target, solver.equilibrium(quantity.target))
+    for step in solver.steps:
+        method.step(f"{step.title} (the damping left out)", step.latex)
+    method.step(
+        f"Undamped angular frequency of {method.named(quantity.target)}: the damping left out",
+        r"\omega_0 = " + method.tex(omega),
+    )
+    return omega

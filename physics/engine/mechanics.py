@@ -36,8 +36,9 @@ class CartesianDof:
 
 
 def time_derivative(expr: sympy.Expr, model: Model) -> sympy.Expr:
-    """d/dt of an expression in the coordinates and their velocities."""
-    result = sympy.Integer(0)
+    """d/dt of an expression in the coordinates, their velocities and the time (a support moving as
+    prescribed puts the time in the positions: supports.py)."""
+    result = sympy.diff(expr, model.time) if model.time is not None else sympy.Integer(0)
     for c in model.coordinates:
         result += sympy.diff(expr, c.symbol) * c.velocity + sympy.diff(expr, c.velocity) * c.acceleration
     return result

@@ -9,9 +9,10 @@ gap as "how far from violating the constraint" makes lambda the magnitude (norma
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from dataclasses import dataclass
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
 from enum import StrEnum
+from typing import Any
 
 import sympy
 
@@ -152,6 +153,7 @@ class QuantityKind(StrEnum):
     SLIPPING = "slipping"  # the parameter value at which a holding contact's |f| reaches mu_s N
     DAMPED_FREQUENCY = "damped_frequency"  # of an underdamped oscillation about the equilibrium
     DECAY_TIME = "decay_time"  # the amplitude's e-folding time of that oscillation
+    UNDAMPED_FREQUENCY = "undamped_frequency"  # of that oscillation with the damping left out: sqrt(k/m)
     MODE_SHAPE = "mode_shape"  # amplitude ratio of two coordinates in the n-th normal mode
     # steady circular motion: the angle coordinate turns uniformly, the others stay at the state (orbits.py)
     CIRCULAR_SPEED = "circular_speed"
@@ -161,6 +163,9 @@ class QuantityKind(StrEnum):
     # with the cyclic coordinates' momenta held at their state values (the effective potential)
     CIRCULAR_RADIUS = "circular_radius"
     EPICYCLIC_FREQUENCY = "epicyclic_frequency"
+    # the value of a parameter at which another quantity is largest or smallest (extremum.py)
+    MAXIMIZE = "maximize"
+    MINIMIZE = "minimize"
 
 
 REACH_KINDS = frozenset({QuantityKind.SPEED, QuantityKind.VELOCITY})
@@ -174,6 +179,7 @@ SLIP_KINDS = frozenset({QuantityKind.SLIP_TIME, QuantityKind.SLIP_DISTANCE, Quan
 STEADY_KINDS = frozenset(
     {QuantityKind.CIRCULAR_SPEED, QuantityKind.REVOLUTION_PERIOD, QuantityKind.CIRCULAR_ENERGY}
 )
+EXTREMUM_KINDS = frozenset({QuantityKind.MAXIMIZE, QuantityKind.MINIMIZE})
 EFFECTIVE_KINDS = frozenset({QuantityKind.CIRCULAR_RADIUS, QuantityKind.EPICYCLIC_FREQUENCY})
 ORBIT_KINDS = STEADY_KINDS | EFFECTIVE_KINDS | {QuantityKind.MECHANICAL_ENERGY}
 # Times, lengths, speeds and frequencies: where the answer is positive, a negative value is no slip
@@ -184,6 +190,7 @@ MAGNITUDE_KINDS = frozenset(
         QuantityKind.PERIOD,
         QuantityKind.NORMAL_FREQUENCY,
         QuantityKind.DAMPED_FREQUENCY,
+        QuantityKind.UNDAMPED_FREQUENCY,
         QuantityKind.DECAY_TIME,
         QuantityKind.PROJECTILE_SPEED,
         QuantityKind.SPEED,
@@ -206,8 +213,8 @@ class Quantity:
     name: str
     kind: QuantityKind
     target: str = ""  # coordinate or constraint name
-    parameter: sympy.Symbol | None = None  # for SOLVE
-    inner: Quantity | None = None  # for SOLVE: the quantity set to zero
+    parameter: sympy.Symbol | None = None  # for SOLVE, MAXIMIZE, MINIMIZE
+    inner: Quantity | None = None  # for SOLVE: the quantity set to zero; MAXIMIZE, MINIMIZE: made extreme
     # for EXPRESSION: the formula, and the stand-in symbol of each earlier quantity it uses
     expression: sympy.Expr | None = None
     uses: tuple[tuple[sympy.Symbol, str], ...] = ()
@@ -220,6 +227,9 @@ class Quantity:
     coefficient: sympy.Expr | None = None
     ratio: tuple[str, ...] = ()  # for MODE_SHAPE: (numerator, denominator) coordinates; target = mode
     after: str = ""  # "impact": taken in the motion that starts just after the model's impact
+    bounces: sympy.Expr | None = (
+        None  # with `after`: after this many bounces off the fixed partner (bounces.py)
+    )
 
 
 @dataclass(frozen=True)
@@ -230,6 +240,20 @@ class StatedLimit:
     where: tuple[tuple[sympy.Symbol, sympy.Expr], ...]
     expect: tuple[tuple[str, sympy.Expr], ...]
     description: str
+
+
+@dataclass(frozen=True)
+class AuthoredElement:
+    """An element as the author wrote it under `elements:` (its fields as read), with the names of what
+    it generated: figures draw the picture the author described from these, not from the low-level model."""
+
+    kind: str
+    name: str
+    fields: Mapping[str, Any] = field(compare=False)  # YAML data, not hashable
+    bodies: tuple[str, ...] = ()
+    constraints: tuple[str, ...] = ()
+    potentials: tuple[str, ...] = ()  # PairPotential names
+    coordinates: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -264,6 +288,11 @@ class Model:
     symbol_ranges: tuple[
         tuple[sympy.Symbol, sympy.Expr, sympy.Expr], ...
     ] = ()  # quantities the author derives on purpose without a part asking for them
+    # other configurations of the same system, each a whole model with its own quantities (scenarios.py)
+    scenarios: tuple[tuple[str, Model], ...] = ()
+
+    # the elements the author wrote, in the order they were expanded (empty for a low-level model)
+    elements: tuple[AuthoredElement, ...] = ()
 
     def body(self, name: str) -> Body:
         return next(b for b in self.bodies if b.name == name)

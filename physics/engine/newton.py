@@ -19,6 +19,7 @@ from physics.engine.mechanics import solve_linear, time_derivative
 from physics.engine.method import Method, NotApplicable
 from physics.engine.model import QuantityKind
 from physics.engine.results import StepKind
+from physics.engine.supports import driven
 
 
 class NewtonMethod(Method):
@@ -98,6 +99,10 @@ class NewtonMethod(Method):
                     for b in mech.dofs
                 )
             )
+            if model.time is not None and model.time in c.gap.free_symbols:  # a support moving as prescribed
+                t = model.time
+                second += 2 * sympy.Add(*(sympy.diff(c.gap, a.symbol, t) * a.velocity for a in mech.dofs))
+                second += sympy.diff(c.gap, t, 2)
             self.step(
                 f"The same constraint for the accelerations ({self.mech.notation.conditions[c.name]}), "
                 "differentiated twice in time",
@@ -149,6 +154,11 @@ class NewtonMethod(Method):
 
     def potential_force(self, coordinate: str) -> sympy.Expr:
         """Virtual work of the Cartesian forces of the potentials: Q = sum F_i dx_i/dq."""
+        if driven(self.model):
+            raise NotApplicable(
+                "at rest relative to a moving support the bodies still accelerate with it: the forces "
+                "alone do not balance (d'Alembert's inertial forces do)"
+            )
         mech = self.mech
         q = self.model.coordinate(coordinate).symbol
         place = mech.cartesian_state()

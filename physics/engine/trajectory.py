@@ -21,8 +21,9 @@ import sympy
 from physics.answer_text import typed_text
 from physics.engine import tidy
 from physics.engine.mechanics import time_derivative
-from physics.engine.model import Model, Quantity, QuantityKind
+from physics.engine.model import TRAJECTORY_KINDS, Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
+from physics.engine.quantity_table import derives
 from physics.errors import DerivationError
 
 if TYPE_CHECKING:
@@ -61,6 +62,7 @@ def launch(model: Model, quantity: Quantity) -> Launch:
     )
 
 
+@derives(*TRAJECTORY_KINDS)
 def answer(method: Method, quantity: Quantity) -> sympy.Expr:
     return ROUTES.get(method.name, by_kinematics)(method, quantity)
 

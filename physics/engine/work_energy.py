@@ -29,8 +29,9 @@ import sympy
 from physics.answer_text import typed_text
 from physics.engine import impact, tidy
 from physics.engine.mechanics import Mechanics, solve_linear
-from physics.engine.model import Coordinate, Model, Quantity, QuantityKind
+from physics.engine.model import REACH_KINDS, Coordinate, Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
+from physics.engine.quantity_table import derives
 from physics.errors import DerivationError
 
 if TYPE_CHECKING:
@@ -127,6 +128,7 @@ def _direction(model: Model, start: sympy.Expr, end: sympy.Expr, name: str) -> i
     )
 
 
+@derives(*REACH_KINDS)  # always with `at` (reach_loading.py): Method.answer comes here for it
 def answer(method: Method, quantity: Quantity) -> sympy.Expr:
     """The quantity where the motion arrives, by this method's own route to the velocity there."""
     model = method.model
