@@ -266,9 +266,23 @@ def check_consistency(model: Model, mech: Mechanics) -> None:
     if free != len(mech.q):
         raise DerivationError(
             f"the constraints leave {counted(free, 'degree of freedom', 'degrees of freedom')} but the model has "
-            f"{counted(len(mech.q), 'coordinate')}",
+            f"{counted(len(mech.q), 'coordinate')}{_unheld(model, mech) if free > len(mech.q) else ''}",
             path=("coordinates",),
         )
+
+
+def _unheld(model: Model, mech: Mechanics) -> str:
+    """The Cartesian components no constraint involves, those the coordinates do not move first: a body
+    placed at `x: 1` beside a pulley is free along x (nothing holds it there), which is easy to miss."""
+    unheld = [d for d in mech.dofs if not any(c.gap.has(d.symbol) for c in model.constraints)]
+    still = [d for d in unheld if not d.mapping.free_symbols & set(mech.q)]
+    listed = ", ".join(f"{d.name} = {typed_text(d.mapping)}" for d in still or unheld)
+    if still:
+        return (
+            f": no constraint holds {listed}, which no coordinate moves (leave that component out of the "
+            "body's position, or add the constraint that holds it there)"
+        )
+    return f": no constraint involves {listed}" if listed else ""
 
 
 def _check_free_symbols(model: Model, quantity: Quantity, method: Method, value: sympy.Expr) -> None:

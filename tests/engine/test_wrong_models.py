@@ -34,7 +34,17 @@ def test_missing_constraint_leaves_too_many_degrees_of_freedom() -> None:
     model = _load(
         "atwood", lambda d: d.update(constraints={}, quantities={"acceleration": {"acceleration": "s"}})
     )
-    with pytest.raises(DerivationError, match=r"2 degrees of freedom but the model has 1 coordinate$"):
+    with pytest.raises(
+        DerivationError,
+        match=r"2 degrees of freedom but the model has 1 coordinate: no constraint involves y_m1 = s, y_m2 = -s$",
+    ):
+        uncached(model)
+
+
+def test_a_component_placed_but_held_by_nothing_is_named() -> None:
+    """A hanging mass given `x: 1` beside the pulley is free along x: the refusal names that component."""
+    model = _load("atwood", lambda d: d["bodies"]["m2"]["position"].update(x=1))
+    with pytest.raises(DerivationError, match=r"no constraint holds x_m2 = 1, which no coordinate moves"):
         uncached(model)
 
 
