@@ -158,7 +158,7 @@ def _derive(model: Model) -> Derivation:
     check_magnitudes(model, quantities)
     lagrange = methods[0]
     contact_signs = check_contact_signs(model, lagrange, quantities)
-    simulator = Simulator(model, lagrange.equilibrium)  # one compiled motion for the measures and the checks
+    simulator = Simulator(model, lagrange.equilibrium, quantities)  # one compiled motion for every measure
     simulation = _simulate(model, quantities, simulator)
     variants: dict[Model, Method] = {model: lagrange}
 

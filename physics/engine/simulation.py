@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from functools import cached_property, partial
 from typing import TYPE_CHECKING, Any
@@ -18,7 +18,7 @@ import mpmath
 import sympy
 
 from physics.answer_text import typed_text
-from physics.engine import extremum, impact_simulation, slipping, vanishing_frequency
+from physics.engine import expression_simulation, extremum, impact_simulation, slipping, vanishing_frequency
 from physics.engine.collision import merged
 from physics.engine.contact_friction import slip_velocity
 from physics.engine.lagrange import LagrangeMethod
@@ -230,6 +230,8 @@ class Simulator:
 
     model: Model
     equilibrium_of: Callable[[str], sympy.Expr]
+    # the derived value of each quantity (what an expression's inputs are measured near)
+    references: Mapping[str, sympy.Expr] = dataclasses.field(default_factory=dict)
 
     @cached_property
     def dynamics(self) -> Dynamics:
@@ -240,7 +242,7 @@ class Simulator:
     ) -> SimulationCheck | None:
         measure = self.measure_for(quantity)
         if quantity.after:
-            measure = self._after_impact
+            measure = self.after_impact
         if measure is None:
             return None
         worst = 0.0
@@ -262,6 +264,8 @@ class Simulator:
 
     def measure_for(self, quantity: Quantity) -> Measure | None:
         """How the simulation measures this quantity (None: it does not)."""
+        if quantity.kind is QuantityKind.EXPRESSION:
+            return expression_simulation.measure_of(self, quantity)
         return self._reach if _reaches(quantity) else self._measures().get(quantity.kind)
 
     def _measures(self) -> dict[QuantityKind, Measure]:
@@ -309,7 +313,7 @@ class Simulator:
     def _bounced(self) -> dict[tuple[tuple[str, float], ...], Simulator]:
         return {}
 
-    def _after_impact(self, quantity: Quantity, point: Point, expected: float) -> Measured:
+    def after_impact(self, quantity: Quantity, point: Point, expected: float) -> Measured:
         """The motion after the impact, started with the velocities the integrated contact left (never
         the derived ones), measured as any motion from a state is."""
         count = 1 if quantity.bounces is None else round(_evaluate(quantity.bounces, point))

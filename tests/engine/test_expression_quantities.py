@@ -6,6 +6,7 @@ import copy
 
 import pytest
 import sympy
+import yaml
 
 from physics.engine import derivation, load_model
 from physics.errors import SpecErrors
@@ -18,6 +19,7 @@ def test_a_formula_of_earlier_quantities_is_derived_by_each_method() -> None:
     data = copy.deepcopy(model_data("atwood"))
     data["quantities"]["net_force_on_m1"] = {"expression": "tension - m1*g"}
     data["quantities"]["time_to_fall_1m"] = {"expression": "sqrt(2/acceleration)"}
+    data["domain"] = {"positive": ["m2 - m1"]}  # m2 falls: the time is real, and simulated
     result = uncached(load_model(data, symbols("atwood")))
     m1, m2, g = (symbols("atwood")[n] for n in ("m1", "m2", "g"))
     acceleration = (m2 - m1) * g / (m1 + m2)
@@ -64,3 +66,48 @@ def test_formulas_that_use_each_other_in_a_circle_are_refused() -> None:
     (error,) = caught.value.errors
     assert error.path == ("quantities", "a", "expression")
     assert "a circle: a -> b -> a" in error.message
+
+
+# (bank problem, added expressions, the one that must be simulated, the inputs its check names)
+SIMULATED_FORMULAS = [
+    pytest.param("atwood", {"net": {"expression": "tension - m1*g"}}, "net", "tension", id="of-a-force"),
+    pytest.param(
+        "atwood",
+        {"half": {"expression": "net/2"}, "net": {"expression": "tension - m1*g"}},
+        "half",
+        "net",
+        id="of-an-expression",
+    ),
+]
+
+
+@pytest.mark.parametrize(("problem", "added", "name", "inputs"), SIMULATED_FORMULAS)
+def test_a_formula_is_simulated_on_its_inputs_measured_values(
+    problem: str, added: dict[str, object], name: str, inputs: str
+) -> None:
+    data = copy.deepcopy(model_data(problem))
+    data["quantities"].update(added)
+    result = uncached(load_model(data, symbols(problem)))
+    check = result.simulation[name]
+    assert f"of the measured {inputs}" in check.compared
+    assert check.max_relative_error < 1e-4
+
+
+CARTS = """
+coordinates: [x1, x2]
+bodies:
+  cart1: {mass: m1, position: {x: x1}}
+  cart2: {mass: m2, position: {x: x2}}
+state: {x1_dot: u}
+impact: {bodies: [cart1, cart2], restitution: 1}
+quantities:
+  v2: {final_velocity: cart2}
+  energy2: {expression: "m2*v2^2/2"}
+"""
+
+
+def test_a_formula_of_an_impacts_velocity_is_simulated_through_the_integrated_contact() -> None:
+    table = {n: sympy.Symbol(n, positive=True) for n in ("m1", "m2", "u")}
+    result = uncached(load_model(yaml.safe_load(CARTS), table))
+    assert "of the measured v2" in result.simulation["energy2"].compared
+    assert result.simulation["energy2"].max_relative_error < 1e-4
