@@ -10,18 +10,25 @@ from functools import cached_property, lru_cache
 import sympy
 
 from physics.answer_text import typed_text
-from physics.engine import impact, modes, quantity_table, tidy, work_energy
+from physics.engine import bounces, evaluated_at, impact, modes, quantity_table, tidy, work_energy
 from physics.engine.mechanics import Mechanics
 from physics.engine.model import Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
 from physics.engine.results import MethodReport, Step, StepKind
 from physics.engine.roots import admissible, declared_range
+from physics.engine.settle import plain_angle, settle
+from physics.engine.supports import driven
 from physics.errors import DerivationError
 
 
 @lru_cache(maxsize=32)
 def stable_equilibrium(model: Model) -> dict[sympy.Symbol, sympy.Expr]:
     """The stable equilibrium of all the coordinates (shared by the methods: it is where they linearize)."""
+    if driven(model):  # grad V = 0 is no rest relative to a moving support
+        raise NotApplicable(
+            "normal modes and damped oscillations are worked about a fixed support only (this one moves as "
+            "prescribed): ask for angular_frequency of one coordinate"
+        )
     return modes.equilibrium_point(model, Mechanics(model))
 
 
@@ -109,6 +116,8 @@ class Method(ABC):
         for title, latex in steps:
             self.step(title, latex)
         rates = impact.coordinate_rates(self.model, after)
+        if quantity.bounces is not None:  # bounced again and again off the fixed partner
+            rates = bounces.velocities_after(self, quantity, rates)
         self.step(
             "The motion after the impact starts with these velocities",
             r",\ ".join(
@@ -121,7 +130,7 @@ class Method(ABC):
         }
         bounced = dataclasses.replace(self.model, state=tuple(state.items()), impact=None)
         solver = type(self)(bounced, Mechanics(bounced))
-        result = solver.answer(dataclasses.replace(quantity, after=""))
+        result = solver.answer(dataclasses.replace(quantity, after="", bounces=None))
         for step in solver.steps:
             self.step(f"{step.title} (after the impact)", step.latex)
         return result
@@ -133,7 +142,7 @@ class Method(ABC):
     @cached_property
     def mode_frequencies(self) -> list[sympy.Expr]:
         """Squared normal-mode frequencies, lowest first."""
-        if self.model.frictions or self.model.dissipative_forces:
+        if self.model.nonconservative_loads:
             raise NotApplicable("normal modes are for undamped systems")
         point = stable_equilibrium(self.model)
         mass, stiffness = self.mode_matrices(point)
@@ -154,6 +163,8 @@ class Method(ABC):
 
     def answer(self, quantity: Quantity) -> sympy.Expr:
         """The quantity by this method: its kind's handler in the quantity table (quantity_table.py)."""
+        if evaluated_at.applies(quantity):  # a modifier: with a symbol at another quantity's value
+            return evaluated_at.answer(self, quantity)
         if quantity.after:  # a modifier: in the motion that starts just after the impact
             return self.after_impact(quantity)
         if quantity.at:  # a modifier: where the motion from the state arrives (speed, force, ...)
@@ -187,6 +198,7 @@ class Method(ABC):
                 f"the roots {typed_text(roots)} of Q = {typed_text(force)}",
                 quantity=coordinate,
             )
+        stable[0] = plain_angle(tidy.simplify(stable[0]), self.model)  # not sympy's half-angle form
         generalized, at = self.mech.notation.letters.generalized, rf"{self.tex(q)}_{{\mathrm{{eq}}}}"
         self.step(
             f"Equilibrium of {self.named(coordinate)}: the generalized force vanishes, and pulls back",
@@ -261,7 +273,9 @@ class Method(ABC):
         return f"along ${axis}$"
 
     def at_state(self, expr: sympy.Expr) -> sympy.Expr:
-        return tidy.simplify(expr.subs(dict(self.model.state)))
+        value = tidy.simplify(expr.subs(dict(self.model.state)))
+        settled = settle(value, self.model)  # |R - r| where R > r is declared
+        return value if settled == value else tidy.simplify(settled)
 
 
 def _declared(symbol: sympy.Symbol, model: Model) -> str:

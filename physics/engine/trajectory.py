@@ -190,7 +190,7 @@ def by_energy(method: Method, quantity: Quantity) -> sympy.Expr:
 
     model, mech = method.model, method.mech
     body = model.body(quantity.target)
-    if any(f.body == body.name for f in model.dissipative_forces):
+    if model.loads_where(lambda traits: not traits.conservative and body.name in traits.bodies):
         raise NotApplicable(
             f"drag or a force that depends on the motion acts on {body.name}: energy is not conserved"
         )
