@@ -22,6 +22,7 @@ from physics.engine.model import Model, Quantity
 from physics.engine.newton import NewtonMethod
 from physics.engine.proof import clear_domain_points, domain_points, prove_equal
 from physics.engine.results import Derivation, KnownMistake, LimitCase, MethodReport, SimulationCheck
+from physics.engine.settle import settle
 from physics.engine.simulation import Simulator
 from physics.engine.soundness import check_gravity, check_magnitudes
 from physics.errors import DerivationError, PhyscheckError
@@ -144,7 +145,7 @@ def _derive(model: Model) -> Derivation:
             found = "; ".join(f"{name} gives {typed_text(value)}" for name, value in derived.items())
             findings.append((path, f"{error.message} (all methods: {found})"))
             continue
-        quantities[quantity.name] = _simplest(list(derived.values()))
+        quantities[quantity.name] = _simplest([settle(v, model) for v in derived.values()])
         agreement[quantity.name] = tuple(names)
         proofs[quantity.name] = "; ".join(how)
     if findings:
@@ -239,6 +240,8 @@ def check_consistency(model: Model, mech: Mechanics) -> None:
     place = {d.symbol: d.mapping for d in mech.dofs}
     for constraint in model.constraints:
         residue = tidy.simplify(constraint.gap.subs(place))
+        if residue != 0:  # |R - r| where R > r is declared, atan(tan(theta)) with theta in range
+            residue = tidy.simplify(settle(residue, model))
         if residue != 0:
             raise DerivationError(
                 f"constraint {constraint.name!r}: the positions in terms of the coordinates violate it "

@@ -16,19 +16,19 @@ from physics.engine import bounces, evaluated_at, forcing, mode_shapes, reach_lo
 from physics.engine.dimensional import check_dimensions
 from physics.engine.distances import with_distance_sides
 from physics.engine.elements import expand_elements
+from physics.engine.loads import ForceEntryLoad, entries
 from physics.engine.model import (
     AXES,
     EFFECTIVE_KINDS,
+    EXTREMUM_KINDS,
     IMPACT_KINDS,
     SLIP_KINDS,
     STEADY_KINDS,
-    AppliedForce,
     Body,
     Collision,
     Constraint,
     ConstraintKind,
     Coordinate,
-    ForceKind,
     Frame,
     Friction,
     Impact,
@@ -77,6 +77,7 @@ _QUANTITY_TARGET = {
     QuantityKind.SLIP_END_VELOCITY: "coordinate",
     QuantityKind.DAMPED_FREQUENCY: "coordinate",
     QuantityKind.DECAY_TIME: "coordinate",
+    QuantityKind.UNDAMPED_FREQUENCY: "coordinate",
     **dict.fromkeys(STEADY_KINDS | EFFECTIVE_KINDS, "coordinate"),
 }
 _SLIPPING_KEYS = {"friction", "normal", "coefficient"}
@@ -143,7 +144,7 @@ def _load_model(
 ) -> Model:
     expanded = expand_elements(data, symbols)  # composable elements -> the low-level sections
     try:
-        model = _load_low_level(expanded.data, symbols)
+        model = dataclasses.replace(_load_low_level(expanded.data, symbols), elements=expanded.elements)
         if ranges:
             bounds = tuple((symbols[n], low, high) for n, (low, high) in ranges.items() if n in symbols)
             # A symbol's own range is its domain too: sampling outside it checks physics nobody posed
@@ -177,7 +178,9 @@ def _load_low_level(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]
     coordinates = _coordinates(data.get("coordinates"), symbols, coordinate_ranges, errors)
     coord_names = {c.name: c.symbol for c in coordinates}
     coord_scope = {**symbols, **coord_names}
-    bodies = _bodies(data.get("bodies"), symbols, coord_scope, errors)
+    time = forcing.time_symbol(symbols)
+    # a support moving as prescribed: positions (and gaps) may use the time (supports.py)
+    bodies = _bodies(data.get("bodies"), symbols, {"t": time, **coord_scope}, errors)
     cartesian = tuple(
         (name, sympy.Symbol(name, real=True)) for body in bodies for name in body.cartesian_names()
     )
@@ -187,11 +190,10 @@ def _load_low_level(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]
     gravity = None
     if data.get("gravity") is not None:
         gravity = errors.read(data["gravity"], symbols, ("gravity",))
-    constraints = _constraints(data.get("constraints"), {**symbols, **dict(cartesian)}, errors)
+    constraints = _constraints(data.get("constraints"), {"t": time, **symbols, **dict(cartesian)}, errors)
     frictions = _frictions(data.get("friction"), symbols, bodies, constraints, coordinates, errors)
     potentials = _potentials(data.get("potentials"), symbols, bodies, errors)
     collision = _collision(data.get("collision"), symbols, bodies, coordinates, errors)
-    time = forcing.time_symbol(symbols)
     state = _state(data.get("state"), symbols, coordinates, errors, time)
     quantities = _quantities(data.get("quantities"), symbols, coordinates, constraints, collision, errors)
     velocities = {f"{c.name}_dot": c.velocity for c in coordinates}
@@ -225,7 +227,7 @@ def _load_low_level(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]
         parameters=tuple(symbols.values()),
         cartesian=cartesian,
         limits=limits,
-        forces=forces,
+        force_entries=forces,
         impact=impact,
         frame=frame,
         notation=notation,
@@ -277,10 +279,11 @@ def _forces(
     scope: Mapping[str, sympy.Symbol],
     bodies: tuple[Body, ...],
     errors: _Collector,
-) -> tuple[AppliedForce, ...]:
-    result: list[AppliedForce] = []
-    names = {b.name for b in bodies}
-    kinds = [k.value for k in ForceKind]
+) -> tuple[ForceEntryLoad, ...]:
+    """Each entry names its body and one kind of load by its key, read by that load's module."""
+    result: list[ForceEntryLoad] = []
+    by_name = {b.name: b for b in bodies}
+    kinds = list(entries.READERS)
     for index, entry in enumerate(_sequence(value, ("forces",), errors)):
         path: Path = ("forces", index)
         spec = _mapping(entry, path, errors)
@@ -289,19 +292,23 @@ def _forces(
         if len(given) != 1:
             errors.add(f"give exactly one of {kinds}", path)
             continue
-        body = spec.get("body")
-        if body not in names:
-            errors.add(f"unknown body {body!r}", (*path, "body"))
+        body = by_name.get(spec.get("body"))  # type: ignore[arg-type]
+        if body is None:
+            errors.add(f"unknown body {spec.get('body')!r}", (*path, "body"))
             continue
-        kind = ForceKind(given[0])
-        if kind is ForceKind.APPLIED:
-            components = _axes(spec[kind.value], scope, (*path, kind.value), errors)
-            if components:
-                result.append(AppliedForce(str(body), kind, components=components))
-            continue
-        coefficient = errors.read(spec[kind.value], symbols, (*path, kind.value))
-        if coefficient is not None:
-            result.append(AppliedForce(str(body), kind, coefficient=coefficient))
+        key = given[0]
+        read = entries.Entry(
+            body,
+            spec[key],
+            (*path, key),
+            expression=lambda text, where: errors.read(text, scope, where),
+            parameter=lambda text, where: errors.read(text, symbols, where),
+            axes=lambda text, where: _axes(text, scope, where, errors),
+            error=errors.add,
+        )
+        load = entries.READERS[key](key, read)
+        if load is not None:
+            result.append(load)
     return tuple(result)
 
 
@@ -897,6 +904,7 @@ def _quantity(
     allowed = (
         {kind.value}
         | ({"zero"} if kind is QuantityKind.SOLVE else set())
+        | ({"of"} if kind in EXTREMUM_KINDS else set())
         | (_SLIPPING_KEYS if kind is QuantityKind.SLIPPING else set())
     )
     _check_keys(spec, allowed, allowed, path, errors)
@@ -930,14 +938,15 @@ def _quantity(
         return Quantity(name, kind, str(target))
     if kind is QuantityKind.SLIPPING:
         return _slipping_quantity(name, spec, path, symbols, constraints, errors)
-    if kind is QuantityKind.SOLVE:
+    if kind is QuantityKind.SOLVE or kind in EXTREMUM_KINDS:  # a parameter's value, set by an inner quantity
         if target not in symbols:
             errors.add(f"unknown symbol {target!r}", where)
             return None
+        inner_key = "zero" if kind is QuantityKind.SOLVE else "of"
         inner = _quantity(
-            f"{name}.zero",
-            spec.get("zero"),
-            (*path, "zero"),
+            f"{name}.{inner_key}",
+            spec.get(inner_key),
+            (*path, inner_key),
             symbols,
             coordinates,
             constraints,
