@@ -139,20 +139,39 @@ def _back_at_constant_acceleration(method: Method, leaving: list[sympy.Expr]) ->
 
 
 def _back_by_energy(method: Method, leaving: list[sympy.Expr]) -> list[sympy.Expr]:
-    """Conservation: back at the same place with the same energy, so the same speed, turned back (one
-    coordinate: its velocity reverses)."""
-    model = method.model
-    if len(model.coordinates) != 1:
-        raise DerivationError("the energy alone gives the return to the contact for one coordinate only")
-    (c,) = model.coordinates
-    (row,) = _contact_row(model)
-    force = -sympy.diff(method.mech.potential, c.symbol).subs(dict(model.state))
-    _pulled_back(model, tidy.simplify(row * force), "bounces")
+    """Conservation: the momentum of every coordinate the contact does not move (cyclic, with a constant
+    mass matrix) is conserved, so its velocity is unchanged; back at the same place with the same
+    energy, the one coordinate along the normal has the same speed, turned back."""
+    model, mech = method.model, method.mech
+    row = _contact_row(model)
+    along = [i for i, a in enumerate(row) if a != 0]
+    mass = mech.mass_matrix
+    moving = {c.symbol for c in model.coordinates} | {c.velocity for c in model.coordinates}
+    others = [i for i in range(len(row)) if i not in along]
+    if (
+        len(along) != 1
+        or mass.free_symbols & moving
+        or not mass.is_diagonal()
+        or any(mech.potential.has(model.coordinates[i].symbol) for i in others)
+    ):
+        raise DerivationError(
+            "the energy gives the return to the contact when one coordinate moves along the normal and the "
+            "others are free (cyclic, with a constant mass matrix)"
+        )
+    (k,) = along
+    normal = model.coordinates[k]
+    force = -sympy.diff(mech.potential, normal.symbol).subs(dict(model.state))
+    _pulled_back(model, tidy.simplify(row[k] * force), "bounces")
+    kept = [model.coordinates[i] for i in others]
     method.step(
-        "Between bounces the energy is conserved: back at the contact at the same speed, moving the other way",
-        method.tex(c.velocity) + r"\to " + method.tex(-c.velocity),
+        "Between bounces the energy is conserved: back at the contact at the same speed along the normal, "
+        "moving the other way" + (", the free coordinates' momenta unchanged" if kept else ""),
+        method.tex(normal.velocity)
+        + r"\to "
+        + method.tex(-normal.velocity)
+        + "".join(r",\ " + method.tex(c.velocity) + r"\to " + method.tex(c.velocity) for c in kept),
     )
-    return [-leaving[0]]
+    return [-w if i == k else w for i, w in enumerate(leaving)]
 
 
 _RETURNS: dict[str, Callable[[Method, list[sympy.Expr]], list[sympy.Expr]]] = {
