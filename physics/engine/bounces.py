@@ -46,12 +46,16 @@ def check(quantities: Sequence[Quantity], model_impact: Impact | None, report: R
 def velocities_after(method: Method, quantity: Quantity, first: list[sympy.Expr]) -> list[sympy.Expr]:
     """The coordinates' velocities just after bounce number `quantity.bounces`, from those after the
     first, by one cycle (back to the contact, then the impact) worked with this method's own laws."""
+    from physics.engine.method import NotApplicable  # here: method builds on this module
+
     back = _RETURNS.get(method.name)
     work = impact.METHODS.get(method.name)
-    assert quantity.bounces is not None and back is not None and work is not None  # after_impact checked
+    if back is None or work is None:
+        raise NotApplicable(f"{method.title} does not follow a body back to the contact")
+    assert quantity.bounces is not None
     model = method.model
     free = [sympy.Dummy(f"w_{c.name}", real=True) for c in model.coordinates]
-    arriving = back(method, free)
+    arriving = back(method, free, quantity.name)
     positions = [(s, v) for s, v in model.state if s not in {c.velocity for c in model.coordinates}]
     trial = dataclasses.replace(
         model,
@@ -104,7 +108,7 @@ def _pulled_back(model: Model, rate: sympy.Expr, name: str) -> None:
             negative = False
     if not negative:
         raise DerivationError(
-            f"after the bounce nothing brings the body back to the contact (the separation's acceleration is "
+            f"{name}: after the bounce nothing brings the body back to the contact (the separation's acceleration is "
             f"{typed_text(rate)}): it bounces once",
             quantity=name,
         )
@@ -115,7 +119,7 @@ def _as_velocities(model: Model, leaving: list[sympy.Expr], expr: sympy.Expr) ->
     return expr.xreplace({w: c.velocity for w, c in zip(leaving, model.coordinates, strict=True)})
 
 
-def _back_at_constant_acceleration(method: Method, leaving: list[sympy.Expr]) -> list[sympy.Expr]:
+def _back_at_constant_acceleration(method: Method, leaving: list[sympy.Expr], name: str) -> list[sympy.Expr]:
     """Newton: the body's own constant accelerations A bring the separation a . q back to zero."""
     model = method.model
     moving = {c.symbol for c in model.coordinates} | {c.velocity for c in model.coordinates}
@@ -127,7 +131,7 @@ def _back_at_constant_acceleration(method: Method, leaving: list[sympy.Expr]) ->
         )
     row = _contact_row(model)
     towards = tidy.simplify(sum((r * a for r, a in zip(row, accelerations, strict=True)), sympy.Integer(0)))
-    _pulled_back(model, towards, "bounces")
+    _pulled_back(model, towards, name)
     parting = sum((r * w for r, w in zip(row, leaving, strict=True)), sympy.Integer(0))
     time = -2 * parting / towards
     arriving = [w + a * time for w, a in zip(leaving, accelerations, strict=True)]
@@ -138,7 +142,7 @@ def _back_at_constant_acceleration(method: Method, leaving: list[sympy.Expr]) ->
     return arriving
 
 
-def _back_by_energy(method: Method, leaving: list[sympy.Expr]) -> list[sympy.Expr]:
+def _back_by_energy(method: Method, leaving: list[sympy.Expr], name: str) -> list[sympy.Expr]:
     """Conservation: the momentum of every coordinate the contact does not move (cyclic, with a constant
     mass matrix) is conserved, so its velocity is unchanged; back at the same place with the same
     energy, the one coordinate along the normal has the same speed, turned back."""
@@ -161,7 +165,7 @@ def _back_by_energy(method: Method, leaving: list[sympy.Expr]) -> list[sympy.Exp
     (k,) = along
     normal = model.coordinates[k]
     force = -sympy.diff(mech.potential, normal.symbol).subs(dict(model.state))
-    _pulled_back(model, tidy.simplify(row[k] * force), "bounces")
+    _pulled_back(model, tidy.simplify(row[k] * force), name)
     kept = [model.coordinates[i] for i in others]
     method.step(
         "Between bounces the energy is conserved: back at the contact at the same speed along the normal, "
@@ -174,7 +178,7 @@ def _back_by_energy(method: Method, leaving: list[sympy.Expr]) -> list[sympy.Exp
     return [-w if i == k else w for i, w in enumerate(leaving)]
 
 
-_RETURNS: dict[str, Callable[[Method, list[sympy.Expr]], list[sympy.Expr]]] = {
+_RETURNS: dict[str, Callable[[Method, list[sympy.Expr], str], list[sympy.Expr]]] = {
     "newton": _back_at_constant_acceleration,
     "conservation": _back_by_energy,
 }
