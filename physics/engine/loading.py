@@ -78,6 +78,7 @@ _QUANTITY_TARGET = {
     QuantityKind.DAMPED_FREQUENCY: "coordinate",
     QuantityKind.DECAY_TIME: "coordinate",
     QuantityKind.UNDAMPED_FREQUENCY: "coordinate",
+    QuantityKind.TURNING_POINT: "coordinate",
     **dict.fromkeys(STEADY_KINDS | EFFECTIVE_KINDS, "coordinate"),
 }
 _SLIPPING_KEYS = {"friction", "normal", "coefficient"}

@@ -153,6 +153,7 @@ class QuantityKind(StrEnum):
     SLIPPING = "slipping"  # the parameter value at which a holding contact's |f| reaches mu_s N
     DAMPED_FREQUENCY = "damped_frequency"  # of an underdamped oscillation about the equilibrium
     DECAY_TIME = "decay_time"  # the amplitude's e-folding time of that oscillation
+    TURNING_POINT = "turning_point"  # where the coordinate first stops, moving from the state
     UNDAMPED_FREQUENCY = "undamped_frequency"  # of that oscillation with the damping left out: sqrt(k/m)
     MODE_SHAPE = "mode_shape"  # amplitude ratio of two coordinates in the n-th normal mode
     # steady circular motion: the angle coordinate turns uniformly, the others stay at the state (orbits.py)

@@ -128,6 +128,31 @@ class ReachMeasure:
         qd[i] = sign * PUSH * distance / scale
         return scale
 
+    # --- where the coordinate turns ----------------------------------------------------------------
+
+    def turning(self, quantity: Quantity, point: Point, expected: float) -> Measured:
+        """Integrate until the coordinate's rate changes sign; the derived value sets only the time scale."""
+        sim = self.simulator
+        dyn = sim.dynamics
+        i = [c.name for c in sim.model.coordinates].index(quantity.target)
+        q, qd = sim._start(point)
+        params = dyn.values(point)
+        acceleration = dyn.unknowns(q, qd, params)[i]
+        heading = math.copysign(1.0, qd[i] if qd[i] else acceleration)
+        distance = abs(expected - q[i]) or 1.0
+        scales = [distance / abs(qd[i])] if qd[i] else []
+        scales += [math.sqrt(2 * distance / abs(acceleration))] if acceleration else []
+        if not scales:
+            raise DerivationError(
+                f"{quantity.name}: at rest where nothing pulls, the coordinate does not move"
+            )
+
+        def reversed_rate(y: Vector) -> float:
+            return -heading * y[dyn.n + i]
+
+        _, y = self._integrate(q + qd, min(scales), point, reversed_rate, lambda y: False, quantity.name)
+        return f"where the integrated motion of {quantity.target} stops and turns back", y[i], None
+
     # --- a body in flight --------------------------------------------------------------------------
 
     def _flight(self, quantity: Quantity, point: Point) -> Measured:

@@ -277,6 +277,7 @@ class Simulator:
             QuantityKind.POTENTIAL_FORCE: self._potential_force,
             QuantityKind.SOLVE: self._solve,
             QuantityKind.TERMINAL_VELOCITY: self._terminal_velocity,
+            QuantityKind.TURNING_POINT: self._reach.turning,
             QuantityKind.NORMAL_FREQUENCY: self._normal_frequency,
             **oscillation_measures.measures(self),
             QuantityKind.PROJECTILE_SPEED: self._collision,
