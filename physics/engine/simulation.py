@@ -18,7 +18,7 @@ import mpmath
 import sympy
 
 from physics.answer_text import typed_text
-from physics.engine import extremum, impact_simulation, slipping
+from physics.engine import extremum, impact_simulation, slipping, vanishing_frequency
 from physics.engine.collision import merged
 from physics.engine.contact_friction import slip_velocity
 from physics.engine.lagrange import LagrangeMethod
@@ -647,6 +647,16 @@ class Simulator:
         measure = self._reach if _reaches(inner) else self._measures().get(inner.kind)
         if measure is None or inner.kind is QuantityKind.SOLVE:
             raise DerivationError(f"{quantity.name}: no simulation for this kind of condition")
+        if inner.kind in vanishing_frequency.KINDS and not inner.at:
+            crossing = vanishing_frequency.measured_zero(
+                lambda value: measure(inner, {**point, parameter: value}, 0.0)[1], expected, quantity.name
+            )
+            return (
+                f"where the integrated {inner.kind.value.replace('_', ' ')}, squared and measured on runs that "
+                "swing, extrapolates to zero",
+                crossing,
+                None,
+            )
         step = THRESHOLD_STEP * max(abs(expected), 1e-12)
         below, above = expected - step, expected + step
         try:
