@@ -21,7 +21,7 @@ import sympy
 
 from physics.answer_text import typed_text
 from physics.engine import impact, tidy
-from physics.engine.model import Impact, Model, Quantity
+from physics.engine.model import Impact, Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
 from physics.errors import DerivationError
 
@@ -29,6 +29,8 @@ if TYPE_CHECKING:
     from physics.engine.method import Method
 
 Report = Callable[[str, tuple[str | int, ...]], None]
+# a body's velocity or speed just after the n-th bounce: `{final_speed: ball, bounces: n}`
+FINAL_KINDS = frozenset({QuantityKind.FINAL_SPEED, QuantityKind.FINAL_VELOCITY})
 
 
 def check(quantities: Sequence[Quantity], model_impact: Impact | None, report: Report) -> None:
@@ -91,6 +93,21 @@ def velocities_after(method: Method, quantity: Quantity, first: list[sympy.Expr]
         ),
     )
     return result
+
+
+def final(method: Method, quantity: Quantity, worked: impact.Worked) -> sympy.Expr:
+    """A body's velocity or speed just after the n-th bounce, from this method's worked first impact."""
+    steps, before, after = worked
+    for title, latex in steps:
+        method.step(title, latex)
+    model = method.model
+    rates = velocities_after(method, quantity, impact.coordinate_rates(model, after))
+    found = impact.contact(model)
+    cartesian = [
+        sympy.Add(*(found.jacobian[i, j] * r for j, r in enumerate(rates)))
+        for i in range(len(found.mech.dofs))
+    ]
+    return impact.answer(((), before, impact.by_body(found.mech, cartesian)), model, quantity, method.step)
 
 
 def _contact_row(model: Model) -> list[sympy.Expr]:
