@@ -98,15 +98,44 @@ def draw_atwood(figure: Figure, model: Model, left: Body, right: Body, wheel: Bo
     )
 
 
+def draw_movable_pulley(figure: Figure, model: Model, hanging: Body, carried: Body) -> None:
+    """One body hangs on one side of a fixed pulley; on the other the string runs down under a light
+    movable pulley carrying the other body, and up to the ceiling."""
+    canvas = figure.canvas
+    canvas.ground((-1.5, 1.6), (2.8, 1.6), below=False)
+    canvas.line((0.0, 1.6), (0.0, 0.0), width=0.08)
+    canvas.circle((0.0, 0.0), 1.0, fill="#ffffff")
+    canvas.circle((0.0, 0.0), 0.08, fill="#1b1b1b")
+    hanging_block(figure, (-1.0, 0.0), hanging, model, FILLS[0])
+    lower, radius = (1.6, -2.5), 0.6
+    canvas.line((1.0, 0.0), (1.0, lower[1]), width=0.04)
+    canvas.line((lower[0] + radius, lower[1]), (lower[0] + radius, 1.6), width=0.04)
+    hanging_block(figure, lower, carried, model, FILLS[1])
+    canvas.circle(lower, radius, fill="#ffffff")
+    canvas.circle(lower, 0.06, fill="#1b1b1b")
+    figure.say(
+        f"{body_label(hanging, model)} hangs from a string over a fixed pulley; on the other side the string "
+        f"runs down under a light movable pulley carrying {body_label(carried, model)} and up to the ceiling."
+    )
+
+
 def from_elements(
     figure: Figure, model: Model, values: Values, elements: tuple[AuthoredElement, ...]
 ) -> bool:
-    """One pulley element whose two ends hang (an Atwood machine, with the pulley's wheel drawn when it
-    has inertia); False for other strings (those over a slope's edge are drawn with the slope)."""
+    """One pulley element whose ends hang: an Atwood machine (with the pulley's wheel drawn when it has
+    inertia), or one end running under a movable pulley that carries a body. False for other strings
+    (those over a slope's edge are drawn with the slope)."""
     pulleys = of_kind(elements, "pulley")
     if len(pulleys) != 1 or any(end.get("pulls") != "up" for end in pulleys[0].fields["ends"]):
         return False
-    left, right = (model.body(str(end["body"])) for end in pulleys[0].fields["ends"])
+    ends = pulleys[0].fields["ends"]
+    free = [model.body(str(end["body"])) for end in ends if "body" in end]
+    carried = [model.body(str(end["under"])) for end in ends if "under" in end]
+    if len(free) == 1 and len(carried) == 1:
+        draw_movable_pulley(figure, model, free[0], carried[0])
+        return True
+    if len(free) != 2:
+        return False
     wheel = model.body(pulleys[0].bodies[0]) if pulleys[0].bodies else None
-    draw_atwood(figure, model, left, right, wheel)
+    draw_atwood(figure, model, free[0], free[1], wheel)
     return True
