@@ -241,6 +241,10 @@ class Simulator:
         measure = self.measure_for(quantity)
         if quantity.after:
             measure = self._after_impact
+        elif quantity.bounces is not None:  # just after the n-th bounce
+            from physics.engine import bounce_simulation  # it builds on this module
+
+            measure = partial(bounce_simulation.measure_final, self)
         if measure is None:
             return None
         worst = 0.0
