@@ -34,7 +34,7 @@ class ConservationMethod(Method):
                 "Not conservative in the ground's frame: the support moving as prescribed does work",
                 rf"\frac{{\mathrm{{d}}{energy}}}{{\mathrm{{d}}t}} \neq 0",
             )
-        if self.model.frictions:
+        if self.model.contact_loads:
             energy = self.mech.notation.letters.energy
             self.step(
                 "Not conservative: kinetic friction turns mechanical energy into heat",
@@ -44,9 +44,9 @@ class ConservationMethod(Method):
     @cached_property
     def reduced(self) -> tuple[dict[sympy.Symbol, sympy.Expr], sympy.Expr, list[sympy.Symbol]]:
         """(cyclic velocities in terms of the others, reduced kinetic energy, remaining coordinates)."""
-        if self.model.frictions:
+        if self.model.contact_loads:
             raise NotApplicable("energy is not conserved with kinetic friction")
-        if self.model.dissipative_forces:
+        if self.model.nonconservative_loads:
             raise NotApplicable(
                 "energy is not conserved with drag or forces that depend on the motion or the time"
             )

@@ -27,7 +27,7 @@ class DAlembertMethod(Method):
     title = "d'Alembert's principle (virtual work of the applied and inertial forces)"
 
     def derive(self) -> None:
-        if self.model.frictions:
+        if self.model.contact_loads:
             return
         self.step(
             "Virtual displacements the constraints allow",
@@ -39,13 +39,13 @@ class DAlembertMethod(Method):
     def equations(self) -> list[sympy.Expr]:
         """One equation per coordinate: the coefficient of its delta q in the virtual work."""
         mech, model = self.mech, self.model
-        if model.frictions:
+        if model.contact_loads:
             raise NotApplicable(
                 "kinetic friction does work through a normal force, a constraint force that d'Alembert's "
                 "principle leaves out"
             )
         place = mech.cartesian_state()
-        applied = mech.applied_forces(False)
+        applied = mech.load_forces(False, mech.multipliers)
         effective = []
         for d, given in zip(mech.dofs, applied, strict=True):
             force = (-sympy.diff(mech.cartesian_potential, d.symbol)).subs(place) + given

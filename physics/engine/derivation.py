@@ -2,12 +2,13 @@
 
 from __future__ import annotations
 
+import dataclasses
 from functools import lru_cache
 
 import sympy
 
 from physics.answer_text import typed_text
-from physics.engine import tidy
+from physics.engine import bounces, evaluated_at, scenarios, tidy
 from physics.engine.checks import physical_checks
 from physics.engine.conservation import ConservationMethod
 from physics.engine.contacts import check_contact_signs
@@ -38,7 +39,30 @@ def _methods() -> tuple[type[Method], ...]:
 
 def derive(model: Model) -> Derivation:
     """Derive every quantity of the model; DerivationError if fewer than two methods reach one, if they
-    disagree, or if the simulation disagrees. Cached per model (models are immutable and hashable)."""
+    disagree, or if the simulation disagrees. Cached per model (models are immutable and hashable).
+    Each of the model's scenarios is derived as a model of its own (scenarios.py)."""
+    if not model.scenarios:
+        return _derive_one(model)
+    base = _derive_one(dataclasses.replace(model, scenarios=()))
+    derived: list[tuple[str, Derivation]] = []
+    failed: list[DerivationError] = []
+    for name, own in model.scenarios:
+        try:
+            derived.append((name, _derive_one(own)))
+        except DerivationError as error:
+            failed.append(scenarios.relocated(error, name))
+    if failed:
+        findings = [item for error in failed for item in error.items()]
+        raise DerivationError(
+            "; ".join(m for _, m in findings),
+            quantity=failed[0].quantity,
+            path=findings[0][0],
+            findings=findings,
+        )
+    return scenarios.combined(base, derived)
+
+
+def _derive_one(model: Model) -> Derivation:
     try:
         return _derive(model)
     except PhyscheckError:
@@ -281,8 +305,9 @@ def _simulate(
     findings: list[tuple[tuple[str | int, ...], str]] = []
     for quantity in model.quantities:
         path: tuple[str | int, ...] = ("quantities", quantity.name)
+        measured, at = evaluated_at.simulated(quantity, bounces.counted(quantity, points), quantities)
         try:
-            check = simulator.check(quantity, quantities[quantity.name], points)
+            check = simulator.check(measured, quantities[quantity.name], at)
         except DerivationError as error:
             findings.append((path, error.message))
             continue

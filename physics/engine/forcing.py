@@ -42,7 +42,7 @@ def time_symbol(symbols: Mapping[str, sympy.Symbol]) -> sympy.Symbol:
 def with_time(model: Model, time: sympy.Symbol) -> Model:
     """The model with its `time` set when a given force depends on it; SpecErrors for what it then
     cannot ask, and for a time in the state that no force uses."""
-    used = any(time in e.free_symbols for f in model.forces for _, e in f.components)
+    used = any(time in e.free_symbols for f in model.force_entries for e in f.expressions())
     if not used:
         if uses_time(model, time):  # a support moving as prescribed: the methods decide what is steady
             return dataclasses.replace(model, time=time)

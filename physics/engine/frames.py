@@ -105,7 +105,7 @@ class FramesMethod(Method):
         mech, frame = self.mech, self.frame
         cartesian = {d.name: d.symbol for d in mech.dofs}
         potential = mech.cartesian_potential - sympy.Add(
-            *(p.energy.subs(p.distance, mech.distance(p, cartesian)) for p in self.centrifugal_potentials)
+            *(p.potential(mech, cartesian) for p in self.centrifugal_potentials)
         )
         result = []
         for d in mech.dofs:
@@ -119,13 +119,10 @@ class FramesMethod(Method):
     def forces(self) -> list[sympy.Expr]:
         """The static forces, friction and given forces, and the translational force -m A."""
         mech = self.mech
-        friction = mech.friction_forces(mech.multipliers)
-        applied = mech.applied_forces(False)
+        loads = mech.load_forces(False, mech.multipliers)
         result = []
-        for f, static, rubbing, given in zip(
-            self.frame_dofs, self.static_forces, friction, applied, strict=True
-        ):
-            force = static + rubbing + given
+        for f, static, given in zip(self.frame_dofs, self.static_forces, loads, strict=True):
+            force = static + given
             if f.carrier is not None:
                 force -= f.dof.inertia * f.carrier.acceleration
             result.append(force)

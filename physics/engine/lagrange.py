@@ -12,7 +12,7 @@ from functools import cached_property
 import sympy
 
 from physics.answer_text import typed_text
-from physics.engine import tidy
+from physics.engine import modes, tidy
 from physics.engine.mechanics import solve_linear, time_derivative
 from physics.engine.method import Method, NotApplicable
 from physics.engine.results import StepKind
@@ -36,7 +36,7 @@ class LagrangeMethod(Method):
         letters = mech.notation.letters
         self.step("The Lagrangian", f"{letters.lagrangian} = {letters.kinetic} - {letters.potential}")
         lam = mech.multipliers
-        friction = [f + a for f, a in zip(mech.friction_forces(lam), mech.applied_forces(False), strict=True)]
+        friction = mech.load_forces(False, lam)
         equations = []
         for c in model.coordinates:
             generalized = sympy.Add(
@@ -143,7 +143,7 @@ class LagrangeMethod(Method):
         acceleration, which must not depend on the time for the system to rest relative to it."""
         mech = self.mech
         rest = {**dict.fromkeys(mech.qd, 0), **dict.fromkeys(mech.qdd, 0)}
-        if self.model.frictions:
+        if self.model.contact_loads:
             raise NotApplicable("kinetic friction on a moving support is not treated at rest")
         equations = [tidy.simplify(e.subs(rest)) for e in self.system[0][: len(mech.q)]]
         if any(self.model.time in e.free_symbols for e in equations):
@@ -194,7 +194,10 @@ class LagrangeMethod(Method):
         else:
             stiffness = sympy.hessian(mech.potential, mech.q).subs(at)
             mass = mech.mass_matrix.subs(at)
-        omega2 = _single_nonzero_eigenvalue(mass.inv() * stiffness)
+        block = modes.coupled([mass, stiffness], list(mech.q).index(q))  # other, uncoupled systems apart
+        omega2 = _single_nonzero_eigenvalue(
+            mass.extract(block, block).inv() * stiffness.extract(block, block)
+        )
         self.step(
             "Small oscillations: the mass matrix $\\mathbf{M}$ and stiffness matrix $\\mathbf{K}$",
             r"\mathbf{M}\ddot{\mathbf{q}} + \mathbf{K}\mathbf{q} = 0,\ \mathbf{M} = "

@@ -184,8 +184,8 @@ def _drive_symbols(model: Model) -> set[sympy.Symbol]:
         return set()
     at = dict(model.state).get(model.time, model.time)
     found: set[sympy.Symbol] = {model.time}
-    for force in model.forces:
-        for _, component in force.components:
+    for force in model.force_entries:
+        for component in force.expressions():
             for atom in component.atoms(sympy.sin, sympy.cos, sympy.tan):
                 if atom.has(model.time):
                     found |= atom.args[0].subs(model.time, at).free_symbols | atom.args[0].free_symbols

@@ -67,14 +67,13 @@ class NewtonMethod(Method):
 
     @cached_property
     def applied_forces(self) -> list[sympy.Expr]:
-        """Gravity and potentials as -grad V in Cartesian coordinates, plus kinetic friction; a turning
+        """The loads: -grad V in Cartesian coordinates plus the forces without a potential; a turning
         frame's centrifugal potential stands for the centripetal acceleration (moved to the left side)."""
         mech = self.mech
-        friction = mech.friction_forces(mech.multipliers)
-        applied = mech.applied_forces(True)
+        loads = mech.load_forces(True, mech.multipliers)
         return [
-            -sympy.diff(mech.cartesian_potential, d.symbol) + f + a + d.inertia * c
-            for d, f, a, c in zip(mech.dofs, friction, applied, self.centripetal, strict=True)
+            -sympy.diff(mech.cartesian_potential, d.symbol) + f + d.inertia * c
+            for d, f, c in zip(mech.dofs, loads, self.centripetal, strict=True)
         ]
 
     @cached_property

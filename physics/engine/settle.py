@@ -43,7 +43,7 @@ def settle(expr: sympy.Expr, model: Model) -> sympy.Expr:
     return settled
 
 
-def _unsigned(absolute: sympy.Abs, model: Model) -> sympy.Expr:
+def _unsigned(absolute: sympy.Expr, model: Model) -> sympy.Expr:
     argument = absolute.args[0]
     sign = _sign(argument, model)
     return absolute if sign == 0 else sign * argument
@@ -51,7 +51,7 @@ def _unsigned(absolute: sympy.Abs, model: Model) -> sympy.Expr:
 
 def _inverted(call: sympy.Expr, own: type, low: sympy.Expr, high: sympy.Expr, model: Model) -> sympy.Expr:
     inner = tidy.simplify(call.args[0])
-    if not isinstance(inner, own):
+    if inner.func is not own:
         return call
     angle = inner.args[0]
     if _sign(angle - low, model) == 1 and _sign(high - angle, model) == 1:

@@ -18,7 +18,7 @@ import mpmath
 import sympy
 
 from physics.answer_text import typed_text
-from physics.engine import impact_simulation, slipping
+from physics.engine import extremum, impact_simulation, slipping
 from physics.engine.collision import merged
 from physics.engine.contact_friction import slip_velocity
 from physics.engine.lagrange import LagrangeMethod
@@ -26,6 +26,7 @@ from physics.engine.mechanics import Mechanics
 from physics.engine.method import stable_equilibrium
 from physics.engine.model import (
     AXES,
+    EXTREMUM_KINDS,
     IMPACT_KINDS,
     ORBIT_KINDS,
     SLIP_KINDS,
@@ -101,17 +102,9 @@ class Dynamics:
         # generalized non-conservative forces (kinetic friction), given the multipliers: their power
         # is what the mechanical energy may change by
         lam = list(self.mech.multipliers)
-        forces = [
-            f + a
-            for f, a in zip(self.mech.friction_forces(lam), self.mech.applied_forces(False), strict=True)
-        ]
+        forces = self.mech.load_forces(False, lam)
         self._nonconservative = _compile([*args, *lam], self.mech.generalized(forces))
-        dissipative = [
-            f + a
-            for f, a in zip(
-                self.mech.friction_forces(lam), self.mech.applied_forces(False, True), strict=True
-            )
-        ]
+        dissipative = self.mech.load_forces(False, lam, lambda traits: traits.dissipates)
         self._dissipative = _compile([*args, *lam], self.mech.generalized(dissipative))
         # a support moving as prescribed: its constraints do work, lambda grad(g) . v = -lambda dg/dt,
         # and the kinetic energy has terms in the support's velocity beside q' M q' / 2
@@ -137,12 +130,9 @@ class Dynamics:
 
     @cached_property
     def _gaps(self) -> list[sympy.Expr]:
-        forces = [c for f in self.model.forces for _, c in f.components] + [
-            f.coefficient for f in self.model.forces
+        return [c.gap for c in self.model.constraints] + [
+            e for load in self.model.loads for e in load.expressions()
         ]
-        return (
-            [c.gap for c in self.model.constraints] + forces + [f.coefficient for f in self.model.frictions]
-        )
 
     def values(self, point: Point) -> Vector:
         """The parameters' values at the point (the time, when not a parameter, from the state)."""
@@ -248,7 +238,7 @@ class Simulator:
     def check(
         self, quantity: Quantity, reference: sympy.Expr, points: Sequence[Point]
     ) -> SimulationCheck | None:
-        measure = self._reach if _reaches(quantity) else self._measures().get(quantity.kind)
+        measure = self.measure_for(quantity)
         if quantity.after:
             measure = self._after_impact
         if measure is None:
@@ -269,6 +259,10 @@ class Simulator:
                     quantity=quantity.name,
                 )
         return SimulationCheck(compared, worst, len(points))
+
+    def measure_for(self, quantity: Quantity) -> Measure | None:
+        """How the simulation measures this quantity (None: it does not)."""
+        return self._reach if _reaches(quantity) else self._measures().get(quantity.kind)
 
     def _measures(self) -> dict[QuantityKind, Measure]:
         from physics.engine import oscillation_measures  # it integrates with this module's tools
@@ -291,6 +285,7 @@ class Simulator:
             **dict.fromkeys(ORBIT_KINDS, self._orbit),
             **dict.fromkeys(SLIP_KINDS, partial(slipping.measure_sliding, self)),
             QuantityKind.SLIPPING: partial(slipping.measure_slipping, self),
+            **dict.fromkeys(EXTREMUM_KINDS, partial(extremum.measure, self)),
         }
 
     @cached_property
@@ -316,9 +311,14 @@ class Simulator:
     def _after_impact(self, quantity: Quantity, point: Point, expected: float) -> Measured:
         """The motion after the impact, started with the velocities the integrated contact left (never
         the derived ones), measured as any motion from a state is."""
-        key = tuple(sorted((s.name, v) for s, v in point.items()))
+        count = 1 if quantity.bounces is None else round(_evaluate(quantity.bounces, point))
+        key = (*sorted((s.name, v) for s, v in point.items()), ("bounces", count))
         if key not in self._bounced:
             rates = self._impact.rates(point)
+            if count != 1:
+                from physics.engine import bounce_simulation  # it builds on this module
+
+                rates = bounce_simulation.velocities_after(self, quantity.name, count, point)
             state = {
                 **dict(self.model.state),
                 **{
@@ -328,12 +328,13 @@ class Simulator:
             bounced = dataclasses.replace(self.model, state=tuple(state.items()), impact=None)
             self._bounced[key] = Simulator(bounced, self.equilibrium_of)
         simulator = self._bounced[key]
-        inner = dataclasses.replace(quantity, after="")
+        inner = dataclasses.replace(quantity, after="", bounces=None)
         measure = simulator._reach if _reaches(inner) else simulator._measures().get(inner.kind)
         if measure is None:
             raise DerivationError(f"{quantity.name}: no simulation of this quantity after an impact")
         what, measured, error = measure(inner, point, expected)
-        return f"{what}, after an integrated contact", measured, error
+        contacts = "an integrated contact" if count == 1 else f"{count} integrated bounces"
+        return f"{what}, after {contacts}", measured, error
 
     def energy_balance(self, points: Sequence[Point]) -> SimulationCheck | None:
         """Integrate the motion from the model's state and keep the books: the change of T + V must equal
@@ -530,14 +531,16 @@ class Simulator:
         position = [*mech.q, *mech.qd, *dyn.params]
         place = {d.symbol: d.mapping for d in mech.dofs}
         grads = [g.subs(place) for k in range(len(self.model.constraints)) for g in mech.gap_gradient(k)]
+        # the loads whose size is a constraint force (kinetic friction) are linear in it: per unit force
+        free = [sympy.Integer(0) for _ in self.model.constraints]
         base = [
             (-sympy.diff(mech.cartesian_potential, d.symbol)).subs(place) + applied
-            for d, applied in zip(mech.dofs, mech.applied_forces(False), strict=True)
+            for d, applied in zip(mech.dofs, mech.load_forces(False, free), strict=True)
         ]
         units = []
         for k in range(len(self.model.constraints)):
             unit = [sympy.Integer(1 if j == k else 0) for j in range(len(self.model.constraints))]
-            units += mech.friction_forces(unit)
+            units += mech.load_forces(False, unit, lambda traits: bool(traits.constraints))
         masses = [d.inertia for d in mech.dofs]
         return tuple(_compile(position, exprs) for exprs in (grads, base, units, masses))
 

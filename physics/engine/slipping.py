@@ -26,8 +26,9 @@ from physics.answer_text import typed_text
 from physics.engine import tidy
 from physics.engine.contact_friction import only_friction, slip_velocity
 from physics.engine.mechanics import Mechanics, time_derivative
-from physics.engine.model import Model, Quantity, QuantityKind
+from physics.engine.model import SLIP_KINDS, Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
+from physics.engine.quantity_table import derives
 from physics.engine.settle import plain_angle
 from physics.errors import DerivationError
 
@@ -207,3 +208,7 @@ def measure_slipping(simulator: Simulator, quantity: Quantity, point: Point, exp
         ratio,
         abs(ratio - mu) / mu,
     )
+
+
+derives(*SLIP_KINDS)(sliding_phase)
+derives(QuantityKind.SLIPPING)(slipping_limit)

@@ -31,8 +31,35 @@ def test_bank_model_written_with_elements_is_the_hand_written_model(problem: str
     names = yaml.safe_load((BANK / problem / "problem.yaml").read_text())["symbols"]
     table = {n: sympy.Symbol(n, positive=True) for n in names}
     written = load_model(yaml.safe_load((BANK / problem / "model.yaml").read_text()), table)
-    # the notation names things for worked solutions; it is not part of the physics
-    assert replace(written, notation=()) == replace(load_model(data, table), notation=())
+    # the notation names things for worked solutions, the element records draw figures: not physics
+    assert replace(written, notation=(), elements=()) == replace(load_model(data, table), notation=())
+
+
+def test_the_model_keeps_each_element_as_written_with_what_it_generated() -> None:
+    model = {
+        "bodies": {"m2": {"mass": "m2", "position": {"y": "s*cos(theta)"}}},
+        "potentials": [{"bodies": ["m2"], "anchor": {"y": 0}, "distance": "d", "energy": "k*d^2/2"}],
+        "gravity": "g",
+        "quantities": {"acceleration": {"acceleration": "s"}},
+        "elements": {
+            "string": {
+                "kind": "pulley",
+                "ends": [{"body": "m1", "pulls": "left"}, {"body": "m2", "pulls": "up"}],
+            },
+            "ramp": {"kind": "incline", "body": "m1", "mass": "m1", "angle": "theta", "coordinate": "s"},
+            "spring": {"kind": "spring", "between": ["m1", {"x": 0}], "stiffness": "k"},
+        },
+    }
+    loaded = load_model(model, positive("m1", "m2", "theta", "g", "k"))
+    ramp, string, spring = loaded.elements  # a pulley after the body it pulls on
+    assert (ramp.kind, ramp.name, ramp.fields["angle"]) == ("incline", "ramp", "theta")
+    assert (ramp.bodies, ramp.constraints, ramp.coordinates) == (("m1",), ("ramp",), ("s",))
+    assert (string.kind, string.bodies, string.constraints) == ("pulley", (), ("string",))
+    assert string.fields["ends"][0] == {"body": "m1", "pulls": "left"}
+    assert spring.potentials == ("potential1",)  # after the hand-written one
+    assert [p.name for p in loaded.potentials] == ["potential0", "potential1"]
+    by_hand = {key: model[key] for key in ("bodies", "gravity", "quantities")} | {"coordinates": ["s"]}
+    assert load_model(by_hand, positive("m2", "g", "theta")).elements == ()
 
 
 def _derived(model: dict[str, Any], *names: str) -> dict[str, sympy.Expr]:

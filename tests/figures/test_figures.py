@@ -34,6 +34,8 @@ EXPECTED = {
     "double-incline": ({"m₁", "m₂", "α", "β"}, "pulley"),
     "yo-yo": ({"m", "r"}, "axle"),
     "cart-collision": ({"m₁", "m₂", "u₁", "u₂"}, "collision"),
+    "collision-scenarios": ({"m₁", "m₂", "u"}, "collision"),
+    "conical-pendulum-rate": ({"m", "L"}, "sweeping out a cone"),
     "glancing-pucks": ({"m", "u", "φ"}, "elastic collision"),
     "bouncing-ball": ({"m"}, "the fixed floor"),
     "cart-hits-block-on-incline": ({"m₁", "m₂", "u"}, "elastic collision"),
