@@ -1,5 +1,5 @@
 """Strings over fixed pulleys: an Atwood machine (with a massive pulley, or a second light pulley
-carrying two bodies) and a string from a body on a slope or table over its edge to a hanging body."""
+carrying two bodies, or a string under a light movable pulley) and a string from a body on a slope or table over its edge to a hanging body."""
 
 from __future__ import annotations
 
@@ -70,6 +70,26 @@ def draw_double_atwood(figure: Figure, model: Model, hanging: list[Body]) -> Non
     )
 
 
+def draw_movable_pulley(figure: Figure, model: Model, single: Body, carried: Body) -> None:
+    """One body on one side of a fixed pulley; on the other the string runs down under a light movable
+    pulley, which carries the other body, and up to the ceiling."""
+    canvas = figure.canvas
+    canvas.ground((-1.5, 1.6), (2.8, 1.6), below=False)
+    canvas.line((0.0, 1.6), (0.0, 0.0), width=0.08)
+    canvas.circle((0.0, 0.0), 1.0, fill="#ffffff")
+    hanging_block(figure, (-1.0, 0.0), single, model, FILLS[0])
+    lower, radius = (1.6, -2.0), 0.6
+    canvas.line((1.0, 0.0), (1.0, lower[1]), width=0.04)
+    canvas.line((lower[0] + radius, lower[1]), (lower[0] + radius, 1.6), width=0.04)
+    hanging_block(figure, lower, carried, model, FILLS[1])
+    canvas.circle(lower, radius, fill="#ffffff")
+    canvas.circle(lower, 0.06, fill="#1b1b1b")
+    figure.say(
+        f"{body_label(single, model)} hangs on one side of a fixed pulley; on the other the string runs down "
+        f"under a light movable pulley carrying {body_label(carried, model)}, and up to the ceiling."
+    )
+
+
 def draw_atwood(figure: Figure, model: Model, left: Body, right: Body, wheel: Body | None = None) -> None:
     canvas = figure.canvas
     radius = 1.0
@@ -106,6 +126,13 @@ def from_elements(
     pulleys = of_kind(elements, "pulley")
     if len(pulleys) != 1 or any(end.get("pulls") != "up" for end in pulleys[0].fields["ends"]):
         return False
+    ends = pulleys[0].fields["ends"]
+    if any("under" in end for end in ends):  # one end runs on under a movable pulley to the ceiling
+        single, carried = sorted(ends, key=lambda end: "under" in end)
+        if "under" in single:
+            return False
+        draw_movable_pulley(figure, model, model.body(str(single["body"])), model.body(str(carried["under"])))
+        return True
     left, right = (model.body(str(end["body"])) for end in pulleys[0].fields["ends"])
     wheel = model.body(pulleys[0].bodies[0]) if pulleys[0].bodies else None
     draw_atwood(figure, model, left, right, wheel)
