@@ -158,10 +158,13 @@ def draw_pendulum(
         canvas.text(raised, name)
     else:  # a name does not fit inside the body: beside it, away from the string
         canvas.text((raised[0] + size / 2 + 0.15, raised[1]), name, size=0.36, anchor="start")
+    # a pivot moving as prescribed (its position in the time) is drawn where it starts, at t = 0
+    moving = model.time is not None and model.time in string.gap.free_symbols
+    gap = string.gap.subs(model.time, 0) if moving else string.gap
     length_symbols = (
         [length_symbol]
         if length_symbol is not None
-        else sorted((s for s in string.gap.free_symbols if s in set(model.parameters)), key=lambda s: s.name)
+        else sorted((s for s in gap.free_symbols if s in set(model.parameters)), key=lambda s: s.name)
     )
     if length_symbols:
         canvas.text(
@@ -193,7 +196,8 @@ def draw_pendulum(
             f"{at}, the {support} sweeping out a cone about the vertical (dashed) through that point"
         )
     else:
-        said = f"A {noun} {name} hangs from a fixed point on {held}"
+        point = "a point that moves as the problem says" if moving else "a fixed point"
+        said = f"A {noun} {name} hangs from {point} on {held}"
     if collision is not None:
         canvas.polygon(square(lowest, size), fill="none")
         bullet = (-3.2, -length)
