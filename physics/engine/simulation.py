@@ -665,6 +665,8 @@ class Simulator:
                 crossing,
                 None,
             )
+        if inner.kind in (QuantityKind.SPEED, QuantityKind.VELOCITY) and inner.at:
+            return self._least_to_reach(quantity, inner, parameter, point, expected, measure)
         step = THRESHOLD_STEP * max(abs(expected), 1e-12)
         below, above = expected - step, expected + step
         try:
@@ -686,6 +688,39 @@ class Simulator:
             "just above",
             crossing,
             None,
+        )
+
+    def _least_to_reach(
+        self,
+        quantity: Quantity,
+        inner: Quantity,
+        parameter: sympy.Symbol,
+        point: Point,
+        expected: float,
+        measure: Measure,
+    ) -> Measured:
+        """A speed vanishing where the motion gets to: the least launch that gets there. Below it the motion
+        turns back first, so there is no speed to measure; the runs just either side of the derived value
+        must be one that turns back and one that gets there, which brackets the threshold."""
+        step = THRESHOLD_STEP / 4 * max(abs(expected), 1e-12)
+        gets_there = []
+        for value in (expected - step, expected + step):
+            try:
+                measure(inner, {**point, parameter: value}, 0.0)
+                gets_there.append(True)
+            except DerivationError:
+                gets_there.append(False)
+        if gets_there[0] == gets_there[1]:
+            ((coordinate, end),) = inner.at
+            raise DerivationError(
+                f"{quantity.name}: the integrated motion {'gets' if gets_there[0] else 'does not get'} to "
+                f"{coordinate} = {typed_text(end)} on both sides of {parameter} = {expected:.6g}",
+                quantity=quantity.name,
+            )
+        return (
+            "between runs just below and just above, of which one turns back before it gets there",
+            expected,
+            step / max(abs(expected), 1e-12),
         )
 
     def _either_side(

@@ -83,3 +83,45 @@ quantities:
     G, M, radius = symbols["G"], symbols["M"], symbols["R"]
     assert sympy.simplify(result.quantities["escape"] - sympy.sqrt(2 * G * M / radius)) == 0
     assert "changes sign" in result.simulation["escape"].compared
+
+
+OVER_THE_TOP = """
+# a ball on a light rigid rod of length R, pivoted at its other end, launched at v0 from the bottom
+coordinates: [theta]
+bodies:
+  ball: {mass: m, position: {x: "R*sin(theta)", y: "-R*cos(theta)"}}
+gravity: g
+constraints:
+  rod: {kind: other, gap: "R - sqrt(x_ball^2 + y_ball^2)"}
+state: {theta: 0, theta_dot: v0/R}
+domain:
+  positive: ["v0^2 - 4*g*R"]
+quantities:
+  least: {solve: v0, zero: {velocity: theta, at: {theta: pi}}}
+"""
+V0 = sympy.Symbol("v0", positive=True)
+
+
+# (the value the derivation is forced to give, what the simulation must then say)
+LEAST_LAUNCHES = [
+    pytest.param(None, None, id="right"),
+    pytest.param(2.1 * sympy.sqrt(g * R), "gets to theta = pi on both sides", id="too-fast"),
+    pytest.param(1.9 * sympy.sqrt(g * R), "does not get to theta = pi on both sides", id="too-slow"),
+]
+
+
+@pytest.mark.parametrize(("forced", "refusal"), LEAST_LAUNCHES)
+def test_the_least_launch_to_get_somewhere_is_bracketed_by_runs_that_turn_back_and_arrive(
+    monkeypatch: pytest.MonkeyPatch, forced: sympy.Expr | None, refusal: str | None
+) -> None:
+    """A speed vanishing at `at` has no speed to measure below the threshold: the run just below must
+    turn back, the run just above get there."""
+    model = load_model(yaml.safe_load(OVER_THE_TOP), {**SYMBOLS, "v0": V0})
+    if forced is None:
+        result = uncached(model)
+        assert sympy.simplify(result.quantities["least"] - 2 * sympy.sqrt(g * R)) == 0
+        assert "turns back" in result.simulation["least"].compared
+        return
+    monkeypatch.setattr(derivation, "_simplest", lambda forms: forced)
+    with pytest.raises(derivation.DerivationError, match=refusal):
+        uncached(model)
