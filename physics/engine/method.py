@@ -200,6 +200,7 @@ class Method(ABC):
                 f"the roots {typed_text(roots)} of Q = {typed_text(force)}",
                 quantity=coordinate,
             )
+        _check_in_range(stable[0], coordinate, self.model, self.title)
         stable[0] = plain_angle(tidy.simplify(stable[0]), self.model)  # not sympy's half-angle form
         generalized, at = self.mech.notation.letters.generalized, rf"{self.tex(q)}_{{\mathrm{{eq}}}}"
         self.step(
@@ -318,6 +319,32 @@ def _in_range(value: sympy.Expr, coordinate: str, model: Model) -> bool:
         )
     except (TypeError, ValueError):
         return False
+
+
+def _check_in_range(value: sympy.Expr, coordinate: str, model: Model, title: str) -> None:
+    """The one stable equilibrium must lie in the coordinate's declared range wherever the domain goes: a
+    block hanging under a ceiling spring, its coordinate declared above it, would otherwise be derived as
+    resting on a spring that stands on the floor, below the floor where m g > k L0."""
+    bounds = [(low, high) for name, low, high in model.coordinate_ranges if name == coordinate]
+    if not bounds or value.free_symbols - set(model.parameters):
+        return
+    low, high = bounds[0]
+    for point in domain_points(model, 12, seed=5):
+        try:
+            at, lowest, highest = (float(e.subs(point)) for e in (value, low, high))
+        except (TypeError, ValueError):
+            return
+        slack = 1e-9 * max(1.0, abs(at))
+        if not lowest - slack <= at <= highest + slack:
+            raise DerivationError(
+                f"{title}: the stable equilibrium {coordinate} = {typed_text(value)} lies outside {coordinate}'s "
+                f"declared range [{typed_text(low)}, {typed_text(high)}] at "
+                + ", ".join(f"{s}={v:.4g}" for s, v in point.items())
+                + f" ({coordinate} = {at:.4g}): the body rests on the other side there (a spring's or a "
+                "surface's). Check the side the range declares, or keep the domain where it holds "
+                "(domain.positive)",
+                quantity=coordinate,
+            )
 
 
 def _negative_on_domain(expr: sympy.Expr, model: Model) -> bool:

@@ -66,6 +66,7 @@ DIMENSIONS = {
     "g": "m/s^2",
     "F": "N",
     "k": "N/m",
+    "L0": "m",
     "alpha": "1",
 }
 
@@ -152,3 +153,42 @@ def test_a_surface_force_asked_where_the_body_has_already_left_is_refused() -> N
     m, r, g, h = sympy.symbols("m R g h", positive=True)
     found = _derive(LOOP_TOP.replace("DOMAIN", '"2*h - 5*R"'), "m R g h")["top"]
     assert sympy.simplify(found - m * g * (2 * h / r - 5)) == 0
+
+
+SPRING_SIDE = """
+# a block on a spring whose foot is at y = 0; the range says which side of it the block is
+coordinates: [y]
+bodies:
+  block: {mass: m, position: {y: y}}
+elements:
+  spring: {kind: spring, between: [block, {y: 0}], stiffness: k, length: L0}
+gravity: g
+domain:
+  ranges: {y: RANGE}
+  positive: [POSITIVE]
+quantities:
+  rest: {equilibrium: y}
+"""
+
+
+_m, _k, _L0, _g = (sympy.Symbol(n, positive=True) for n in ("m", "k", "L0", "g"))
+# (the block's declared side, the domain's condition, the rest position or None where it is refused)
+SPRING_SIDES = [
+    pytest.param('["0", "oo"]', '"k*L0 - m*g"', _L0 - _g * _m / _k, id="standing-spring"),
+    pytest.param('["-oo", "0"]', '"k"', -_L0 - _g * _m / _k, id="hanging-from-a-ceiling"),
+    pytest.param('["0", "oo"]', '"k"', None, id="ceiling-spring-declared-above"),
+]
+
+
+@pytest.mark.parametrize(("side", "positive", "rest"), SPRING_SIDES)
+def test_a_rest_position_outside_the_coordinates_declared_range_is_refused(
+    side: str, positive: str, rest: sympy.Expr | None
+) -> None:
+    text = SPRING_SIDE.replace("RANGE", side).replace("POSITIVE", positive)
+    if rest is not None:
+        found = _derive(text, "m k L0 g")
+        assert sympy.simplify(found["rest"] - rest) == 0
+        return
+    error = _refusal(text, "m k L0 g")
+    assert "the stable equilibrium y = L0 - g*m/k lies outside y's declared range [0, oo]" in error.message
+    assert "the body rests on the other side there" in error.message
