@@ -21,12 +21,14 @@ if TYPE_CHECKING:
 
 def measure_of(simulator: Simulator, quantity: Quantity) -> Measure | None:
     """How the simulation measures a quantity an expression uses (None: it does not)."""
-    if quantity.bounces is not None or quantity.name not in simulator.references:
+    if quantity.bounces is not None:
         return None
-    if quantity.kind is QuantityKind.EXPRESSION:
+    if quantity.kind is QuantityKind.EXPRESSION:  # its inputs, measured (an extremum's `of:` has no name)
         if not all(measure_of(simulator, simulator.model.quantity(name)) for _, name in quantity.uses):
             return None
         return lambda q, point, expected: measure(simulator, q, point, expected)
+    if quantity.name not in simulator.references:
+        return None
     if quantity.after:
         return simulator.after_impact
     return simulator.measure_for(quantity)

@@ -835,7 +835,15 @@ def _quantities(
             continue
         entry, at_values = evaluated_at.split(str(name), entry, symbols, list(map(str, entries)), errors.add)
         quantity = _quantity(
-            str(name), entry, ("quantities", str(name)), symbols, coordinates, constraints, collision, errors
+            str(name),
+            entry,
+            ("quantities", str(name)),
+            symbols,
+            coordinates,
+            constraints,
+            collision,
+            errors,
+            {n: s for n, s in stand_ins.items() if n != name},
         )
         if quantity is not None:
             result.append(dataclasses.replace(quantity, uses=at_values))
@@ -892,7 +900,10 @@ def _quantity(
     constraints: tuple[Constraint, ...],
     collision: Collision | None,
     errors: _Collector,
+    others: Mapping[str, sympy.Symbol] | None = None,
 ) -> Quantity | None:
+    """One quantity's entry; `others` are the model's other quantities, which a `solve`'s `zero:` or an
+    extremum's `of:` may name instead of writing its quantity in place."""
     spec = _mapping(entry, path, errors)
     kinds = [k for k in spec if k in set(QuantityKind)]
     if len(kinds) != 1:
@@ -947,6 +958,26 @@ def _quantity(
             errors.add(f"unknown symbol {target!r}", where)
             return None
         inner_key = "zero" if kind is QuantityKind.SOLVE else "of"
+        named = spec.get(inner_key)
+        if isinstance(named, str):  # another quantity of the model, by its name (an expression, say)
+            stand_in = (others or {}).get(named)
+            if stand_in is None:
+                errors.add(
+                    f"unknown quantity {named!r}: name another quantity of the model, one of "
+                    f"{sorted(others or {})}, or write the quantity in place",
+                    (*path, inner_key),
+                )
+                return None
+            inner_quantity = Quantity(
+                f"{name}.{inner_key}", QuantityKind.EXPRESSION, expression=stand_in, uses=((stand_in, named),)
+            )
+            return Quantity(name, kind, parameter=symbols[target], inner=inner_quantity)
+        if isinstance(named, Mapping) and "expression" in named:
+            errors.add(
+                f"write the expression as a quantity of its own and name it here (`{inner_key}: <its name>`)",
+                (*path, inner_key),
+            )
+            return None
         inner = _quantity(
             f"{name}.{inner_key}",
             spec.get(inner_key),

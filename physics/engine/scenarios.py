@@ -19,7 +19,7 @@ from __future__ import annotations
 from collections.abc import Callable, Mapping
 from typing import Any
 
-from physics.engine.model import Model
+from physics.engine.model import Model, Quantity
 from physics.engine.results import Derivation, MethodReport, Step
 from physics.errors import DerivationError, SpecError, SpecErrors
 
@@ -108,11 +108,18 @@ def quantity_path(name: str) -> tuple[str, ...]:
 
 def quantity_names(model: Model) -> dict[str, tuple[str, ...]]:
     """Every quantity the model derives, by its name in the derivation, with the names it uses."""
-    names = {q.name: tuple(n for _, n in q.uses) for q in model.quantities}
+    names = {q.name: _used(q) for q in model.quantities}
     for scenario, own in model.scenarios:
         for q in own.quantities:
-            names[qualified(scenario, q.name)] = tuple(qualified(scenario, n) for _, n in q.uses)
+            names[qualified(scenario, q.name)] = tuple(qualified(scenario, n) for n in _used(q))
     return names
+
+
+def _used(quantity: Quantity) -> tuple[str, ...]:
+    """The other quantities this one uses: its own `uses`, and those its inner quantity names (a `solve`'s
+    `zero:` or an extremum's `of:` may name another quantity)."""
+    inner = quantity.inner.uses if quantity.inner is not None else ()
+    return tuple(n for _, n in (*quantity.uses, *inner))
 
 
 def unused(model: Model) -> tuple[str, ...]:

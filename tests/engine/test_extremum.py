@@ -11,7 +11,7 @@ import sympy
 import yaml
 
 from physics.engine import derivation, load_model
-from physics.errors import DerivationError
+from physics.errors import DerivationError, SpecErrors
 
 uncached = derivation._derive.__wrapped__
 SYMBOLS = {
@@ -119,3 +119,40 @@ def test_an_unknown_symbol_to_vary_is_a_spec_error() -> None:
     data["quantities"]["best"]["maximize"] = "beta"
     with pytest.raises(Exception, match="unknown symbol 'beta'"):
         load_model(data, SYMBOLS)
+
+
+CARTS = """
+coordinates: [x1, x2]
+bodies:
+  cart1: {mass: m1, position: {x: x1}}
+  cart2: {mass: m2, position: {x: x2}}
+state: {x1_dot: u}
+impact: {bodies: [cart1, cart2], restitution: 1}
+quantities:
+  v2: {final_velocity: cart2}
+  energy2: {expression: "m2*v2^2/2"}
+  best: {maximize: m2, of: OF}
+"""
+CART_SYMBOLS = {n: sympy.Symbol(n, positive=True) for n in ("m1", "m2", "u")}
+
+
+def test_an_extremum_of_another_quantity_named_is_derived_and_simulated() -> None:
+    """`of: energy2`: the target mass that takes the most energy in an elastic collision is the moving one."""
+    result = uncached(load_model(yaml.safe_load(CARTS.replace("OF", "energy2")), CART_SYMBOLS))
+    assert result.quantities["best"] == CART_SYMBOLS["m1"]
+    assert len(result.agreement["best"]) >= 2
+    assert "vertex of the parabola" in result.simulation["best"].compared
+
+
+@pytest.mark.parametrize(
+    ("of", "refusal"),
+    [
+        pytest.param("energy3", "unknown quantity 'energy3'", id="unknown-name"),
+        pytest.param(
+            '{expression: "m2*v2^2/2"}', "write the expression as a quantity of its own", id="in-place"
+        ),
+    ],
+)
+def test_an_extremum_of_a_quantity_not_of_the_model_is_a_spec_error(of: str, refusal: str) -> None:
+    with pytest.raises(SpecErrors, match=refusal):
+        load_model(yaml.safe_load(CARTS.replace("OF", of)), CART_SYMBOLS)
