@@ -113,8 +113,52 @@ def by_conservation(model: Model, kind: QuantityKind, steps: list[tuple[str, str
     velocities = solve_linear(equations, list(mech.qd), "momentum across the collision")
     kinetic = tidy.simplify(mech.kinetic.subs(at).subs(velocities))
     rise = tidy.simplify(mech.potential.subs(reaches) - mech.potential.subs(at))
-    steps.append(("Energy conserved after the collision", sympy.latex(sympy.Eq(kinetic, rise))))
-    return _finish(kinetic, rise, model, kind, steps)
+    work = _nonconservative_work(after, mech, at, reaches, steps)
+    title = (
+        "Energy conserved after the collision"
+        if work == 0
+        else "Energy after the collision, less friction's work"
+    )
+    steps.append((title, sympy.latex(sympy.Eq(kinetic, tidy.simplify(rise - work)))))
+    return _finish(kinetic, tidy.simplify(rise - work), model, kind, steps)
+
+
+def _nonconservative_work(
+    after: Model,
+    mech: Mechanics,
+    at: dict[sympy.Symbol, sympy.Expr],
+    reaches: dict[sympy.Symbol, sympy.Expr],
+    steps: list[tuple[str, str]],
+) -> sympy.Expr:
+    """The work of kinetic friction (and forces in the coordinates) from the impact to where the merged
+    body stops: a bullet in a block that skids on a rough floor. The normal forces come from Newton's law
+    across each surface; on a curve they change with the speed, and the work needs the motion itself."""
+    if not after.nonconservative_loads:
+        return sympy.Integer(0)
+    from physics.engine.newton import NewtonMethod  # it builds on the methods, which load this module
+
+    if len(mech.q) != 1:
+        raise DerivationError("the work of friction after a collision is done for one coordinate only")
+    multipliers: list[sympy.Expr] = list(mech.multipliers)
+    if after.contact_loads:
+        free = dataclasses.replace(after, state=())
+        across = NewtonMethod(free, Mechanics(free)).solution
+        multipliers = [across[lam] for lam in mech.multipliers]
+    (q,), (qd,) = mech.q, mech.qd
+    generalized = tidy.simplify(mech.generalized(mech.load_forces(False, multipliers))[0])
+    if generalized.has(qd):
+        raise DerivationError(
+            f"the force along {q} after the collision ({typed_text(generalized)}) depends on the speed: "
+            "its work needs the motion itself"
+        )
+    work = tidy.simplify(sympy.integrate(generalized, (q, at[q], reaches[q])))
+    steps.append(
+        (
+            "Work of friction and the other non-conservative forces until it stops",
+            rf"W = \int Q_{{\mathrm{{nc}}}}\,d{sympy.latex(q)} = " + sympy.latex(work),
+        )
+    )
+    return work
 
 
 def by_newton(model: Model, kind: QuantityKind, steps: list[tuple[str, str]]) -> sympy.Expr:
@@ -151,7 +195,10 @@ def by_newton(model: Model, kind: QuantityKind, steps: list[tuple[str, str]]) ->
             for d in mech.dofs
         )
     )
-    work = tidy.simplify(sympy.integrate(force, (q, at[q], reaches[q])))
+    work = tidy.simplify(
+        sympy.integrate(force, (q, at[q], reaches[q]))
+        + _nonconservative_work(after, mech, at, reaches, steps)
+    )
     steps.append(
         (
             "Work-energy theorem up to the turning point",

@@ -402,7 +402,8 @@ class Simulator:
         for _ in range(ENERGY_STEPS):
             after = rk4(f, states[-1], h, 1)[-1]
             backwards = [k for k, u in enumerate(slips(*after[: 2 * n], *params)) if u < 0]
-            if backwards and all(initial[k] <= 0 for k in backwards):
+            # (a collision's state is before the blow: the slide it starts goes the projectile's way)
+            if backwards and all(initial[k] <= 0 for k in backwards) and self.model.collision is None:
                 name = self.model.frictions[backwards[0]].sliding
                 raise DerivationError(
                     f"released from the model's state, the body slides towards decreasing {name}, against the "
@@ -888,7 +889,7 @@ class Simulator:
         speed = expected if quantity.kind is QuantityKind.PROJECTILE_SPEED else 1.0
         direction = [_evaluate(dict(hit.direction).get(axis, sympy.Integer(0)), point) for axis in AXES]
         norm = math.hypot(*direction)
-        tau = 1e-4
+        tau = 1e-6  # short beside every other time: friction or a spring acting meanwhile takes no part
         drag = mass / tau
         # the projectile's weight, while it is being stopped: the merged body carries it from then on
         weight = [0.0, -_evaluate(self.model.gravity, point) if self.model.gravity is not None else 0.0]
