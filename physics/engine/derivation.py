@@ -248,9 +248,18 @@ def check_consistency(model: Model, mech: Mechanics) -> None:
         if residue != 0:  # |R - r| where R > r is declared, atan(tan(theta)) with theta in range
             residue = tidy.simplify(settle(residue, model))
         if residue != 0:
+            moving = (
+                model.time is not None and model.time in residue.free_symbols - constraint.gap.free_symbols
+            )
             raise DerivationError(
                 f"constraint {constraint.name!r}: the positions in terms of the coordinates violate it "
-                f"(gap = {typed_text(residue)} instead of 0)",
+                f"(gap = {typed_text(residue)} instead of 0)"
+                + (
+                    "; the positions move with the time t but the gap does not: write it relative to the "
+                    "moving support"
+                    if moving
+                    else ""
+                ),
                 path=("constraints", constraint.name),
             )
     if not model.constraints:
