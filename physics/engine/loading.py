@@ -43,6 +43,7 @@ from physics.engine.notation import read_notation
 from physics.engine.text import Path, read_expr
 from physics.errors import SpecError, SpecErrors
 
+_TIME = re.compile(r"(?<![A-Za-z0-9_])t(?![A-Za-z0-9_])")
 _NAME = re.compile(r"^[A-Za-z][A-Za-z0-9]*$")
 _SECTIONS = frozenset(
     {
@@ -442,6 +443,15 @@ def _bodies(
     return tuple(result)
 
 
+def _moving_anchor(value: Any, symbols: Mapping[str, sympy.Symbol]) -> bool:
+    """An anchor written in the time `t` (not a symbol of the table): a support meant to move."""
+    return (
+        "t" not in symbols
+        and isinstance(value, Mapping)
+        and any(isinstance(text, str) and _TIME.search(text) for text in value.values())
+    )
+
+
 def _axes(
     value: Any, scope: Mapping[str, sympy.Symbol], path: Path, errors: _Collector
 ) -> tuple[tuple[str, sympy.Expr], ...]:
@@ -553,7 +563,14 @@ def _potentials(
             if member not in names:
                 errors.add(f"unknown body {member!r}", (*path, "bodies", position))
         anchor: tuple[tuple[str, sympy.Expr], ...] = ()
-        if len(members) == 1:
+        if len(members) == 1 and _moving_anchor(spec.get("anchor"), symbols):
+            errors.add(
+                "a fixed point cannot move with the time t: for a support that moves as prescribed, make it "
+                "a body whose position uses t, held there by a constraint (`gap: y_cab - A*t^2/2`), and join "
+                "the spring or potential to that body",
+                (*path, "anchor"),
+            )
+        elif len(members) == 1:
             anchor = _axes(spec.get("anchor"), symbols, (*path, "anchor"), errors)
         elif "anchor" in spec:
             errors.add("an anchor is only for a potential on one body", (*path, "anchor"))

@@ -161,8 +161,21 @@ def test_energy_conservation_says_it_does_not_apply_in_the_ground_frame() -> Non
             SHAKEN.replace('positive: ["g - a*w^2"]', "positive: []"),
             "the string would push where",
         ),
+        (  # a spring's fixed end written in the time: a fixed point cannot move
+            """
+coordinates: [e]
+bodies:
+  block: {mass: m, position: {y: "A*t^2/2 - e"}}
+elements:
+  spring: {kind: spring, between: [block, {y: "A*t^2/2"}], stiffness: m}
+gravity: g
+quantities:
+  rest: {equilibrium: e}
+""",
+            "a fixed point cannot move with the time t: for a support that moves as prescribed, make it a body",
+        ),
     ],
-    ids=["gap does not move", "no steady rest", "unused time", "string goes slack"],
+    ids=["gap does not move", "no steady rest", "unused time", "string goes slack", "moving anchor"],
 )
 def test_a_moving_support_stated_wrongly_is_refused_naming_the_cause(text: str, says: str) -> None:
     with pytest.raises((DerivationError, SpecErrors)) as caught:
