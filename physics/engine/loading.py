@@ -25,7 +25,8 @@ from physics.engine import (
 from physics.engine.dimensional import check_dimensions
 from physics.engine.distances import with_distance_sides
 from physics.engine.elements import expand_elements
-from physics.engine.loads import ForceEntryLoad, entries
+from physics.engine.loads import ForceEntryLoad
+from physics.engine.loads import entries as force_kinds
 from physics.engine.model import (
     AXES,
     EFFECTIVE_KINDS,
@@ -297,7 +298,7 @@ def _forces(
     """Each entry names its body and one kind of load by its key, read by that load's module."""
     result: list[ForceEntryLoad] = []
     by_name = {b.name: b for b in bodies}
-    kinds = list(entries.READERS)
+    kinds = list(force_kinds.READERS)
     for index, entry in enumerate(_sequence(value, ("forces",), errors)):
         path: Path = ("forces", index)
         spec = _mapping(entry, path, errors)
@@ -311,7 +312,7 @@ def _forces(
             errors.add(f"unknown body {spec.get('body')!r}", (*path, "body"))
             continue
         key = given[0]
-        read = entries.Entry(
+        read = force_kinds.Entry(
             body,
             spec[key],
             (*path, key),
@@ -320,7 +321,7 @@ def _forces(
             axes=lambda text, where: _axes(text, scope, where, errors),
             error=errors.add,
         )
-        load = entries.READERS[key](key, read)
+        load = force_kinds.READERS[key](key, read)
         if load is not None:
             result.append(load)
     return tuple(result)

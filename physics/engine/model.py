@@ -1,4 +1,8 @@
-"""A mechanical model as data: coordinates, bodies, constraints, forces, events and asked quantities.
+"""A mechanical model as data: coordinates, bodies, loads, constraints, events and asked quantities.
+
+The loads (gravity, pair potentials, the `forces:` entries, kinetic friction) are one list, `loads`,
+which every method consumes through the protocol of `physics.engine.loads`; each constraint says how
+it acts (`Action`: bilateral, unilateral, impulsive).
 
 Two descriptions of the same system live side by side on purpose: each body's position (and angle)
 in terms of the generalized coordinates, used by the Lagrangian methods, and the constraints written
