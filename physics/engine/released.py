@@ -123,11 +123,13 @@ def check_freed(model: Model, mech: Mechanics) -> None:
             continue
         words = _WORDS[constraint.kind]
         bodies = sorted({d.body for d in mech.dofs if d.symbol in constraint.gap.free_symbols})
+        element = next((e for e in model.elements if constraint.name in e.constraints), None)
+        instead = f" in place of the {element.kind} element" if element is not None else ""
         raise DerivationError(
             f"constraint {constraint.name!r} is released ({words.lets_go}), but the coordinates build it in: "
             f"its gap is {typed_text(gap)} wherever they are, so its bodies cannot part. Give "
             f"{_listed(bodies)} coordinates of their own (in which {words.thing} can open) and state "
-            f"{words.thing} under `constraints:` by its gap",
+            f"{words.thing} under `constraints:` by its gap{instead}",
             path=(KEY, index),
         )
 

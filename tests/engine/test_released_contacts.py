@@ -183,7 +183,8 @@ def test_a_scenario_releases_the_contact_the_model_holds() -> None:
             ATWOOD_ONE_COORDINATE,
             ATWOOD,
             "the coordinates build it in: its gap is 0 wherever they are, so its bodies cannot part. Give m1 "
-            "and m2 coordinates of their own",
+            "and m2 coordinates of their own (in which the string can open) and state the string under "
+            "`constraints:` by its gap in place of the pulley element",
             id="one-coordinate-for-both-masses",
         ),
         pytest.param(
