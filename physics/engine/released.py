@@ -49,9 +49,15 @@ class _Words:
 
 
 _WORDS = {
-    ConstraintKind.STRING: _Words("the string", "goes slack", "tension", "the string is taut", "it pulls"),
+    ConstraintKind.STRING: _Words(
+        "the string", "it goes slack", "tension", "the string is taut", "it pulls, it does not go slack"
+    ),
     ConstraintKind.SURFACE: _Words(
-        "the surface", "the body leaves it", "normal force", "the surface pushes", "the body stays on it"
+        "the surface",
+        "the body leaves it",
+        "normal force",
+        "the surface pushes",
+        "the body stays on it, it does not leave it",
     ),
 }
 
@@ -138,54 +144,51 @@ def check_released(model: Model, free: Method) -> dict[str, str]:
     """Each released contact lets go at the state: a check's name -> what was shown; DerivationError at
     `released.<index>` where it would hold (its force, held, positive somewhere) or its gap would close.
     `free` is a method of the released model, for its accelerations."""
-    shown: list[str] = []
-    for index, constraint in enumerate(model.released):
-        words = _WORDS[constraint.kind]
-        path = (KEY, index)
-        gap, rate, growth = _gap_at_state(model, constraint, free)
-        if gap is not None and gap != 0 and sign_on_domain(gap, model).sign is Sign.POSITIVE:
-            shown.append(f"{constraint.name} is open at the state (gap {typed_text(gap)})")
-            continue
-        if gap is not None and sign_on_domain(gap, model).sign in (Sign.NEGATIVE, Sign.MIXED):
-            raise DerivationError(
-                f"constraint {constraint.name!r} is released, but its gap {typed_text(gap)} is negative at "
-                "the state: the bodies would overlap (a string longer than it is)",
-                path=path,
-            )
-        opening = sign_on_domain(rate, model).sign if rate is not None else Sign.UNKNOWN
-        if rate is not None and rate != 0 and opening is Sign.POSITIVE:
-            shown.append(f"{constraint.name} opens at the rate {typed_text(rate)}")
-            continue
-        if opening in (Sign.NEGATIVE, Sign.MIXED):
-            raise DerivationError(
-                f"constraint {constraint.name!r} is released, but its gap closes at the rate "
-                f"{typed_text(rate)}: the bodies move into the contact, which then acts",
-                path=path,
-            )
-        force = _held_force(model, constraint)
-        if force is not None:
-            _refuse_if_held(model, constraint, force, path)
-        if growth is None:
-            if force is None:
-                shown.append(f"{constraint.name}: its letting go could not be decided")
-            else:
-                shown.append(
-                    f"{constraint.name}: held, its {words.force} {typed_text(force)} would be negative"
-                )
-            continue
-        if growth == 0 or sign_on_domain(growth, model).sign is not Sign.POSITIVE:
-            raise DerivationError(
-                f"constraint {constraint.name!r} is released ({words.lets_go}), but its gap does not grow: "
-                f"its second derivative in the free motion is {typed_text(growth)}, not positive on the "
-                "whole domain, so the bodies do not part there. Keep the domain where they do "
-                "(domain.positive), or hold the contact",
-                path=path,
-            )
-        held = "" if force is None else f"held, its {words.force} {typed_text(force)} would be negative; "
-        shown.append(f"{constraint.name}: {held}free, its gap grows as {typed_text(growth)} > 0")
-    if not shown:
-        return {}
-    return {"released contacts": "; ".join(shown)}
+    shown = [_lets_go(model, constraint, free, (KEY, i)) for i, constraint in enumerate(model.released)]
+    return {"released contacts": "; ".join(shown)} if shown else {}
+
+
+def _lets_go(model: Model, constraint: Constraint, free: Method, path: Path) -> str:
+    """What shows that the contact lets go at the state; DerivationError where it does not."""
+    words = _WORDS[constraint.kind]
+    name = constraint.name
+    gap, rate, growth = _gap_at_state(model, constraint, free)
+    gap_sign = sign_on_domain(gap, model).sign if gap is not None else Sign.UNKNOWN
+    if gap_sign is Sign.POSITIVE and gap != 0:
+        return f"{name} is open at the state (gap {typed_text(gap)})"
+    if gap_sign in (Sign.NEGATIVE, Sign.MIXED):
+        raise DerivationError(
+            f"constraint {name!r} is released, but its gap {typed_text(gap)} is negative at the state: the "
+            "bodies would overlap (a string longer than it is)",
+            path=path,
+        )
+    opening = sign_on_domain(rate, model).sign if rate is not None else Sign.UNKNOWN
+    if opening is Sign.POSITIVE and rate != 0:
+        return f"{name} opens at the rate {typed_text(rate)}"
+    if opening in (Sign.NEGATIVE, Sign.MIXED):
+        raise DerivationError(
+            f"constraint {name!r} is released, but its gap closes at the rate {typed_text(rate)}: the "
+            "bodies move into the contact, which then acts",
+            path=path,
+        )
+    # touching, and not moving apart: it lets go only if, held, it would have to pull (or push)
+    force = _held_force(model, constraint)
+    if force is not None:
+        _refuse_if_held(model, constraint, force, path)
+    held = "" if force is None else f"held, its {words.force} {typed_text(force)} would be negative"
+    if growth is None:
+        return f"{name}: {held or 'its letting go could not be decided'}"
+    if growth == 0 and force is not None and force == 0:  # at the threshold itself (the top of the dome)
+        return f"{name}: lets go at its threshold (held, its {words.force} would be 0)"
+    if growth == 0 or sign_on_domain(growth, model).sign is not Sign.POSITIVE:
+        raise DerivationError(
+            f"constraint {name!r} is released ({words.lets_go}), but its gap does not grow: its second "
+            f"derivative in the free motion is {typed_text(growth)}, not positive on the whole domain, so "
+            "the bodies do not part there. Keep the domain where they do (domain.positive), or hold the "
+            "contact",
+            path=path,
+        )
+    return f"{name}: {held + '; ' if held else ''}free, its gap grows as {typed_text(growth)} > 0"
 
 
 def _gap_at_state(
@@ -237,16 +240,19 @@ def _refuse_if_held(model: Model, constraint: Constraint, force: sympy.Expr, pat
         return
     words = _WORDS[constraint.kind]
     loads = [s for f in model.force_entries for e in f.expressions() for s in sorted(e.free_symbols, key=str)]
-    if found.sign is Sign.NEGATIVE:  # the factor that decides shows once the domain's own bounds are off
-        condition = where_negative(-force, dataclasses.replace(model, positive=()), loads)
+    # the factor that decides shows once the domain's own bounds are off
+    unbounded = dataclasses.replace(model, positive=())
+    if found.sign is Sign.NEGATIVE and sign_on_domain(-force, unbounded).sign is Sign.NEGATIVE:
+        where = "on the whole domain"  # whatever the symbols: no condition to say
+    elif found.sign is Sign.NEGATIVE:
+        condition = where_negative(-force, unbounded, loads)
         where = f"wherever {condition}, which is the whole domain" if condition else "on the whole domain"
     else:
         condition = where_negative(-force, model, loads)
         where = f"where {condition}" if condition else f"at {point_text(found.negative_at or {})}"
     raise DerivationError(
-        f"constraint {constraint.name!r} is released, but {words.holds} {where}: {words.then}, "
-        f"it does not {'go slack' if constraint.kind is ConstraintKind.STRING else 'leave it'} (held, its "
-        f"{words.force} {typed_text(force)} is positive there). Keep the domain where it "
+        f"constraint {constraint.name!r} is released, but {words.holds} {where}: {words.then} (held, its "
+        f"{words.force} {typed_text(force)} is positive there). Keep the domain where "
         f"{words.lets_go} (domain.positive), or hold it",
         path=path,
     )

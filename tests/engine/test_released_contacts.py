@@ -100,6 +100,20 @@ scenarios:
     quantities:
       rise: {acceleration: y}
 """
+# a particle on a dome of radius R, at the angle and speed where the dome's push has fallen to zero
+DOME = """
+coordinates: [x, y]
+bodies:
+  p: {mass: m, position: {x: x, y: y}}
+gravity: g
+constraints:
+  dome: {kind: surface, gap: "sqrt(x_p^2 + y_p^2) - R"}
+released: [dome]
+state: {x: "sqrt(5)*R/3", y: "2*R/3", x_dot: "2*SPEED/3", y_dot: "-sqrt(5)*SPEED/3"}
+quantities:
+  ax: {acceleration: x}
+  ay: {acceleration: y}
+"""
 ATWOOD = "m1 m2 g F"
 CRATE = "m g F alpha"
 BALL = "m g v h"
@@ -130,6 +144,12 @@ def _derived(text: str, names: str) -> dict[str, sympy.Expr]:
         ),
         pytest.param(
             BALL_ON_FLOOR.replace("HEIGHT", "h").replace("RATE", "-v"), BALL, {"ay": "-g"}, id="ball-above-it"
+        ),
+        pytest.param(
+            DOME.replace("SPEED", "sqrt(2*g*R/3)"),
+            "m g R",
+            {"ax": "0", "ay": "-g"},
+            id="dome-left-at-its-threshold",
         ),
     ],
 )
@@ -178,6 +198,13 @@ def test_a_scenario_releases_the_contact_the_model_holds() -> None:
             CRATE,
             "the surface pushes wherever",
             id="crate-too-heavy-to-lift",
+        ),
+        pytest.param(
+            DOME.replace("SPEED", "sqrt(g*R/3)"),
+            "m g R",
+            "the surface pushes on the whole domain: the body stays on it, it does not leave it (held, its "
+            "normal force g*m/3 is positive there)",
+            id="dome-too-slow-to-leave",
         ),
         pytest.param(
             ATWOOD_ONE_COORDINATE,
