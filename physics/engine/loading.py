@@ -922,7 +922,8 @@ def _quantity(
         | ({"of"} if kind in EXTREMUM_KINDS else set())
         | (_SLIPPING_KEYS if kind is QuantityKind.SLIPPING else set())
     )
-    _check_keys(spec, allowed, allowed, path, errors)
+    optional = {"bounces"} if kind in bounces.FINAL_KINDS else set()
+    _check_keys(spec, allowed | optional, allowed, path, errors)
     target = spec[kind.value]
     where: Path = (*path, kind.value)
     if kind is QuantityKind.REVOLUTION_PERIOD and target == "frame":  # the rotating frame's turn
@@ -943,7 +944,8 @@ def _quantity(
             return None
         return Quantity(name, kind, "state")
     if kind in IMPACT_KINDS:  # checked against the impact section by `_impact`
-        return Quantity(name, kind, str(target))
+        count = errors.read(spec["bounces"], symbols, (*path, "bounces")) if "bounces" in spec else None
+        return Quantity(name, kind, str(target), bounces=count)
     if kind is QuantityKind.MODE_SHAPE:
         return errors.attempt(lambda: mode_shapes.read(name, target, where, coordinates))
     if kind is QuantityKind.NORMAL_FREQUENCY:

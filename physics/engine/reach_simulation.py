@@ -70,7 +70,7 @@ class ReachMeasure:
             return y[dyn.n + i] * sign < 0 and abs(y[i] - q[i]) > 1e-9 * max(distance, 1.0)
 
         events: list[tuple[float, Vector]] = []
-        y, elapsed = q + qd, 0.0
+        y, elapsed = dyn.initial(q, qd, params), 0.0  # with a clock when a support moves as prescribed
         for target in targets:
 
             def passed(state: Vector, at: float = target) -> float:
@@ -86,18 +86,20 @@ class ReachMeasure:
         dyn = sim.dynamics
         ((name, _),) = quantity.at
         n = dyn.n
+        now = dyn.at(dyn.values(point), y, 2 * n)  # the parameters at the time the motion arrives
+        y = y[: 2 * n]
         names = [c.name for c in sim.model.coordinates]
         if quantity.kind is QuantityKind.VELOCITY:
             j = names.index(quantity.target)
             return f"velocity of {quantity.target} when the integrated motion reaches {name}", y[n + j], None
         if quantity.kind is QuantityKind.SPEED:
-            velocity = self._velocity(quantity.target)(*y, *dyn.values(point))
+            velocity = self._velocity(quantity.target)(*y, *now)
             return (
                 f"speed of {quantity.target} when the integrated motion reaches {name}",
                 math.hypot(*velocity),
                 None,
             )
-        unknowns = dyn.unknowns(y[:n], y[n:], dyn.values(point))
+        unknowns = dyn.unknowns(y[:n], y[n:], now)
         if quantity.kind is QuantityKind.ACCELERATION:
             return (
                 f"acceleration of {quantity.target} from the equations of motion where the integration arrives "

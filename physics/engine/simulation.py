@@ -241,6 +241,10 @@ class Simulator:
         measure = self.measure_for(quantity)
         if quantity.after:
             measure = self._after_impact
+        elif quantity.bounces is not None:  # just after the n-th bounce
+            from physics.engine import bounce_simulation  # it builds on this module
+
+            measure = partial(bounce_simulation.measure_final, self)
         if measure is None:
             return None
         worst = 0.0
@@ -459,7 +463,7 @@ class Simulator:
         """With a force in the time, halve the step until the acceleration's own second difference in
         time (the system held still) is negligible: a fast driving force needs a short step."""
         dyn = self.dynamics
-        if dyn.clock is None:
+        if dyn.clock is None or dyn.n == 0:  # nothing moves but as prescribed: no step to resolve
             return step
         params = dyn.values(point)
         now = params[dyn.clock]

@@ -35,3 +35,25 @@ def uses_time(model: Model, time: sympy.Symbol) -> bool:
     exprs += [b.angle for b in model.bodies if b.angle is not None]
     exprs += [c.gap for c in model.constraints]
     return any(time in e.free_symbols for e in exprs)
+
+
+def translation(model: Model) -> dict[str, sympy.Expr] | None:
+    """The support's displacement since t = 0 on each axis, R(t), when every body's position is its own
+    relative to the support plus R(t), the same for every body (a truck carrying a pendulum), and no angle
+    moves with the time; None otherwise (or when nothing moves)."""
+    time = model.time
+    if time is None or not driven(model):
+        return None
+    if any(b.angle is not None and time in b.angle.free_symbols for b in model.bodies):
+        return None
+    coordinates = {c.symbol for c in model.coordinates}
+    shifts: dict[str, sympy.Expr] = {}
+    for body in model.bodies:
+        for axis, expr in body.position:
+            shift = sympy.expand(expr - expr.subs(time, 0))
+            if (
+                shift.free_symbols & coordinates
+                or sympy.simplify(shifts.setdefault(axis, shift) - shift) != 0
+            ):
+                return None
+    return {axis: shift for axis, shift in shifts.items() if shift.has(time)}

@@ -1,5 +1,5 @@
 """Strings over fixed pulleys: an Atwood machine (with a massive pulley, or a second light pulley
-carrying two bodies) and a string from a body on a slope or table over its edge to a hanging body."""
+carrying two bodies, or a string under a light movable pulley) and a string from a body on a slope or table over its edge to a hanging body."""
 
 from __future__ import annotations
 
@@ -70,6 +70,26 @@ def draw_double_atwood(figure: Figure, model: Model, hanging: list[Body]) -> Non
     )
 
 
+def draw_movable_pulley(figure: Figure, model: Model, single: Body, carried: Body) -> None:
+    """One body on one side of a fixed pulley; on the other the string runs down under a light movable
+    pulley, which carries the other body, and up to the ceiling."""
+    canvas = figure.canvas
+    canvas.ground((-1.5, 1.6), (2.8, 1.6), below=False)
+    canvas.line((0.0, 1.6), (0.0, 0.0), width=0.08)
+    canvas.circle((0.0, 0.0), 1.0, fill="#ffffff")
+    hanging_block(figure, (-1.0, 0.0), single, model, FILLS[0])
+    lower, radius = (1.6, -2.0), 0.6
+    canvas.line((1.0, 0.0), (1.0, lower[1]), width=0.04)
+    canvas.line((lower[0] + radius, lower[1]), (lower[0] + radius, 1.6), width=0.04)
+    hanging_block(figure, lower, carried, model, FILLS[1])
+    canvas.circle(lower, radius, fill="#ffffff")
+    canvas.circle(lower, 0.06, fill="#1b1b1b")
+    figure.say(
+        f"{body_label(single, model)} hangs on one side of a fixed pulley; on the other the string runs down "
+        f"under a light movable pulley carrying {body_label(carried, model)}, and up to the ceiling."
+    )
+
+
 def draw_atwood(figure: Figure, model: Model, left: Body, right: Body, wheel: Body | None = None) -> None:
     canvas = figure.canvas
     radius = 1.0
@@ -95,27 +115,6 @@ def draw_atwood(figure: Figure, model: Model, left: Body, right: Body, wheel: Bo
         canvas.text((x, -depth), body_label(body, model))
     figure.say(
         f"{body_label(left, model)} and {body_label(right, model)} hang on either side of a pulley, joined by a string."
-    )
-
-
-def draw_movable_pulley(figure: Figure, model: Model, hanging: Body, carried: Body) -> None:
-    """One body hangs on one side of a fixed pulley; on the other the string runs down under a light
-    movable pulley carrying the other body, and up to the ceiling."""
-    canvas = figure.canvas
-    canvas.ground((-1.5, 1.6), (2.8, 1.6), below=False)
-    canvas.line((0.0, 1.6), (0.0, 0.0), width=0.08)
-    canvas.circle((0.0, 0.0), 1.0, fill="#ffffff")
-    canvas.circle((0.0, 0.0), 0.08, fill="#1b1b1b")
-    hanging_block(figure, (-1.0, 0.0), hanging, model, FILLS[0])
-    lower, radius = (1.6, -2.5), 0.6
-    canvas.line((1.0, 0.0), (1.0, lower[1]), width=0.04)
-    canvas.line((lower[0] + radius, lower[1]), (lower[0] + radius, 1.6), width=0.04)
-    hanging_block(figure, lower, carried, model, FILLS[1])
-    canvas.circle(lower, radius, fill="#ffffff")
-    canvas.circle(lower, 0.06, fill="#1b1b1b")
-    figure.say(
-        f"{body_label(hanging, model)} hangs from a string over a fixed pulley; on the other side the string "
-        f"runs down under a light movable pulley carrying {body_label(carried, model)} and up to the ceiling."
     )
 
 

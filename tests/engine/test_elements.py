@@ -262,6 +262,26 @@ def test_a_movable_pulley_halves_its_bodys_motion_and_doubles_the_pull_on_it() -
     assert sympy.simplify(m2 * g - 2 * found["T"] - m2 * found["a"] / 2) == 0
 
 
+def test_the_movable_pulley_bank_model_is_the_string_whose_slack_counts_the_pulley_twice() -> None:
+    by_hand = yaml.safe_load(
+        """
+        coordinates: [d]
+        bodies:
+          m1: {mass: m1, position: {y: "-2*d"}}
+          m2: {mass: m2, position: {y: d}}
+        gravity: g
+        constraints:
+          string: {kind: string, gap: "y_m1 + 2*y_m2"}
+        quantities:
+          acceleration: {acceleration: d}
+          tension: {force: string}
+        """
+    )
+    table = positive("m1", "m2", "g")
+    written = load_model(yaml.safe_load((BANK / "movable-pulley" / "model.yaml").read_text()), table)
+    assert replace(written, notation=(), elements=()) == replace(load_model(by_hand, table), notation=())
+
+
 @pytest.mark.parametrize(
     ("end", "says"),
     [
