@@ -268,3 +268,17 @@ def test_a_release_that_does_not_read_is_refused_when_loaded(
     with pytest.raises(SpecErrors) as caught:
         load_model(data, _symbols(f"{CRATE} mu"))
     assert [e.path for e in caught.value.errors if says in e.message] == [path]
+
+
+def test_a_pulley_element_released_with_its_ends_apart_asks_for_the_string_as_a_constraint() -> None:
+    data = yaml.safe_load(ATWOOD_ONE_COORDINATE)
+    data["coordinates"] = ["y1", "y2"]
+    data["bodies"] = {
+        "m1": {"mass": "m1", "position": {"y": "y1"}},
+        "m2": {"mass": "m2", "position": {"y": "y2"}},
+    }
+    with pytest.raises(SpecErrors) as caught:
+        load_model(data, _symbols(ATWOOD))
+    [error] = caught.value.errors
+    assert error.path == ("elements", "string", "ends")
+    assert "a string released to go slack is stated under `constraints:` by its gap" in error.message
