@@ -203,6 +203,10 @@ def _gap_at_state(
     try:
         accelerations = {c.acceleration: free.acceleration(c.name) for c in model.coordinates}
     except (NotApplicable, DerivationError):
+        accelerations = {}  # the growth is then left open: the held force decides
+    except PhyscheckError:
+        raise
+    except Exception:  # sympy's failures on an uploaded model: the growth left open too
         accelerations = {}
     state = dict(model.state)
 
@@ -226,9 +230,7 @@ def _held_force(model: Model, constraint: Constraint) -> sympy.Expr | None:
     )
     try:
         force = NewtonMethod(held, Mechanics(held)).force(constraint.name)
-    except PhyscheckError:
-        return None
-    except Exception:  # sympy's failures on an uploaded model: the gap's growth still decides
+    except Exception:  # the equations not determined, or sympy's failures: the gap's growth still decides
         return None
     return None if force.free_symbols - set(model.parameters) else force
 
