@@ -7,7 +7,8 @@
 
 A released constraint is kept out of `Model.constraints`, so every method (Newton, Lagrange, energy,
 d'Alembert, the simulation) derives the motion without it; it lives on in `Model.released`, its gap
-still saying when the bodies would touch. Releasing it must be the physics, not a way round a refusal:
+checked where the motion lets go and wherever a quantity is taken `at` (not negative there: the bodies
+do not pass through it). Releasing it must be the physics, not a way round a refusal:
 
 - the coordinates must let its gap change (`check_freed`): coordinates that build the constraint in
   (both masses on one `s`) give the freed bodies no way to move apart;
@@ -145,7 +146,30 @@ def check_released(model: Model, free: Method) -> dict[str, str]:
     `released.<index>` where it would hold (its force, held, positive somewhere) or its gap would close.
     `free` is a method of the released model, for its accelerations."""
     shown = [_lets_go(model, constraint, free, (KEY, i)) for i, constraint in enumerate(model.released)]
+    for constraint in model.released:
+        _check_stays_open(model, constraint)
     return {"released contacts": "; ".join(shown)} if shown else {}
+
+
+def _check_stays_open(model: Model, constraint: Constraint) -> None:
+    """Where a quantity is taken `at` a place, a released contact's gap must not be negative there: the
+    motion would have carried the bodies through it (a ball asked about below the floor it left)."""
+    place = {d.symbol: d.mapping for d in Mechanics(model).dofs}
+    state = dict(model.state)
+    for quantity in model.quantities:
+        if not quantity.at:
+            continue
+        there = {model.coordinate(name).symbol: value for name, value in quantity.at}
+        gap = tidy.simplify(constraint.gap.subs(place).subs(there).subs(state))
+        if gap.free_symbols - set(model.parameters):
+            continue
+        if sign_on_domain(gap, model).sign in (Sign.NEGATIVE, Sign.MIXED):
+            raise DerivationError(
+                f"{quantity.name}: the released constraint {constraint.name!r} has the gap {typed_text(gap)} "
+                "there, negative: the bodies would have passed through the contact to get there",
+                quantity=quantity.name,
+                path=("quantities", quantity.name, "at"),
+            )
 
 
 def _lets_go(model: Model, constraint: Constraint, free: Method, path: Path) -> str:

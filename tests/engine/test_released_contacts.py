@@ -48,6 +48,20 @@ quantities:
   ax: {acceleration: x}
   ay: {acceleration: y}
 """
+BALL_THROWN_UP = """
+coordinates: [x, y]
+bodies:
+  ball: {mass: m, position: {x: x, y: y}}
+gravity: g
+constraints:
+  floor: {kind: surface, gap: y_ball}
+released: [floor]
+state: {x: 0, y: 0, y_dot: v}
+domain:
+  positive: ["v^2 - 2*g*h"]
+quantities:
+  there: {velocity: y, at: {y: WHERE}}
+"""
 BALL_ON_FLOOR = """
 coordinates: [x, y]
 bodies:
@@ -144,6 +158,12 @@ def _derived(text: str, names: str) -> dict[str, sympy.Expr]:
         ),
         pytest.param(
             BALL_ON_FLOOR.replace("HEIGHT", "h").replace("RATE", "-v"), BALL, {"ay": "-g"}, id="ball-above-it"
+        ),
+        pytest.param(
+            BALL_THROWN_UP.replace("WHERE", "h"),
+            BALL,
+            {"there": "sqrt(v^2 - 2*g*h)"},
+            id="ball-speed-above-it",
         ),
         pytest.param(
             DOME.replace("SPEED", "sqrt(2*g*R/3)"),
@@ -282,3 +302,10 @@ def test_a_pulley_element_released_with_its_ends_apart_asks_for_the_string_as_a_
     [error] = caught.value.errors
     assert error.path == ("elements", "string", "ends")
     assert "a string released to go slack is stated under `constraints:` by its gap" in error.message
+
+
+def test_a_quantity_taken_beyond_a_released_contact_is_refused_there() -> None:
+    with pytest.raises(DerivationError) as caught:
+        _derived(BALL_THROWN_UP.replace("WHERE", '"-h"'), BALL)
+    assert caught.value.path == ("quantities", "there", "at")
+    assert "the released constraint 'floor' has the gap -h there, negative" in caught.value.message
