@@ -155,6 +155,8 @@ def _load_model(
     ranges: Mapping[str, tuple[sympy.Expr, sympy.Expr]] | None,
 ) -> Model:
     expanded = expand_elements(data, symbols)  # composable elements -> the low-level sections
+    if isinstance(data, Mapping):
+        released.check_elements(data.get(released.KEY), expanded.elements)
     try:
         model = dataclasses.replace(_load_low_level(expanded.data, symbols), elements=expanded.elements)
         if ranges:

@@ -31,11 +31,11 @@ from physics.answer_text import typed_text
 from physics.engine import tidy
 from physics.engine.mechanics import Mechanics, time_derivative
 from physics.engine.method import Method, NotApplicable
-from physics.engine.model import Constraint, ConstraintKind, Friction, Model, Quantity
+from physics.engine.model import AuthoredElement, Constraint, ConstraintKind, Friction, Model, Quantity
 from physics.engine.newton import NewtonMethod
 from physics.engine.signs import Sign, point_text, sign_on_domain, where_negative
 from physics.engine.text import Path
-from physics.errors import DerivationError, PhyscheckError
+from physics.errors import DerivationError, PhyscheckError, SpecError, SpecErrors
 
 KEY = "released"
 
@@ -91,6 +91,26 @@ def read(
     return tuple(c for c in constraints if c.name not in names), tuple(by_name[n] for n in names)
 
 
+def check_elements(value: Any, elements: Sequence[AuthoredElement]) -> None:
+    """An element builds its constraints into its coordinates (a pulley's one `s`, a block's distance
+    along its surface): one of them released is refused at `released`, asking for it by hand."""
+    if not isinstance(value, list):
+        return
+    faults = [
+        SpecError(
+            f"constraint {name!r} comes from the {element.kind} element {element.name!r}, whose coordinates "
+            "keep it shut: state it under `constraints:` by its gap, its bodies on coordinates of their own "
+            "(positions in them, in which it can open), in place of the element",
+            (KEY, index),
+        )
+        for index, name in enumerate(value)
+        for element in elements
+        if name in element.constraints
+    ]
+    if faults:
+        raise SpecErrors(faults)
+
+
 def check_uses(
     released: Sequence[Constraint],
     frictions: Sequence[Friction],
@@ -130,13 +150,11 @@ def check_freed(model: Model, mech: Mechanics) -> None:
             continue
         words = _WORDS[constraint.kind]
         bodies = sorted({d.body for d in mech.dofs if d.symbol in constraint.gap.free_symbols})
-        element = next((e for e in model.elements if constraint.name in e.constraints), None)
-        instead = f" in place of the {element.kind} element" if element is not None else ""
         raise DerivationError(
             f"constraint {constraint.name!r} is released ({words.lets_go}), but the coordinates build it in: "
             f"its gap is {typed_text(gap)} wherever they are, so its bodies cannot part. Give "
             f"{_listed(bodies)} coordinates of their own (in which {words.thing} can open) and state "
-            f"{words.thing} under `constraints:` by its gap{instead}",
+            f"{words.thing} under `constraints:` by its gap",
             path=(KEY, index),
         )
 

@@ -82,8 +82,7 @@ bodies:
 gravity: g
 forces:
   - {body: m2, force: {y: F}}
-elements:
-  string: {kind: pulley, ends: [{body: m1, pulls: up}, {body: m2, pulls: up}]}
+STRING
 released: [string]
 domain:
   positive: ["F - 2*m2*g"]
@@ -128,6 +127,8 @@ quantities:
   ax: {acceleration: x}
   ay: {acceleration: y}
 """
+BY_HAND = 'constraints:\n  string: {kind: string, gap: "y_m1 + y_m2"}'
+PULLEY = "elements:\n  string: {kind: pulley, ends: [{body: m1, pulls: up}, {body: m2, pulls: up}]}"
 ATWOOD = "m1 m2 g F"
 CRATE = "m g F alpha"
 BALL = "m g v h"
@@ -227,11 +228,11 @@ def test_a_scenario_releases_the_contact_the_model_holds() -> None:
             id="dome-too-slow-to-leave",
         ),
         pytest.param(
-            ATWOOD_ONE_COORDINATE,
+            ATWOOD_ONE_COORDINATE.replace("STRING", BY_HAND),
             ATWOOD,
             "the coordinates build it in: its gap is 0 wherever they are, so its bodies cannot part. Give m1 "
             "and m2 coordinates of their own (in which the string can open) and state the string under "
-            "`constraints:` by its gap in place of the pulley element",
+            "`constraints:` by its gap",
             id="one-coordinate-for-both-masses",
         ),
         pytest.param(
@@ -290,8 +291,30 @@ def test_a_release_that_does_not_read_is_refused_when_loaded(
     assert [e.path for e in caught.value.errors if says in e.message] == [path]
 
 
+@pytest.mark.parametrize(
+    ("text", "names", "element"),
+    [
+        pytest.param(ATWOOD_ONE_COORDINATE.replace("STRING", PULLEY), ATWOOD, "pulley", id="a-pulley"),
+        pytest.param(
+            "gravity: g\nelements:\n  floor: {kind: surface, body: block, mass: m, coordinate: x, friction: 0}\n"
+            "released: [floor]\nquantities:\n  a: {acceleration: x}\n",
+            "m g",
+            "surface",
+            id="a-block-on-a-surface",
+        ),
+    ],
+)
+def test_an_elements_constraint_released_is_asked_for_by_hand(text: str, names: str, element: str) -> None:
+    with pytest.raises(SpecErrors) as caught:
+        load_model(yaml.safe_load(text), _symbols(names))
+    [error] = caught.value.errors
+    assert error.path == ("released", 0)
+    assert f"comes from the {element} element" in error.message
+    assert "state it under `constraints:` by its gap, its bodies on coordinates of their own" in error.message
+
+
 def test_a_pulley_element_released_with_its_ends_apart_asks_for_the_string_as_a_constraint() -> None:
-    data = yaml.safe_load(ATWOOD_ONE_COORDINATE)
+    data = yaml.safe_load(ATWOOD_ONE_COORDINATE.replace("STRING", PULLEY))
     data["coordinates"] = ["y1", "y2"]
     data["bodies"] = {
         "m1": {"mass": "m1", "position": {"y": "y1"}},
