@@ -77,7 +77,7 @@ def _holds(
             f"constraint {name!r}: {wrong}{there} {where}: {then}{' before it gets there' if there else ''} "
             f"(its {named} {typed_text(force)} "
             f"must not be negative). Keep the domain where it holds (domain.positive), or model the "
-            "motion without it",
+            f"motion without it{'' if there else f' (`released: [{name}]`, its bodies free to part)'}",
             path=path,
         )
     return False

@@ -9,7 +9,7 @@ from functools import lru_cache
 import sympy
 
 from physics.answer_text import typed_text
-from physics.engine import bounces, evaluated_at, scenarios, tidy
+from physics.engine import bounces, evaluated_at, released, scenarios, tidy
 from physics.engine.checks import physical_checks
 from physics.engine.conservation import ConservationMethod
 from physics.engine.contacts import check_contact_signs
@@ -81,6 +81,7 @@ def _derive_model(model: Model) -> Derivation:
     clear_domain_points()  # shared within this derivation only, so vetting times stay honest
     tidy.forget()
     mech = Mechanics(model)
+    released.check_freed(model, mech)  # before the count of freedoms, which it explains
     check_consistency(model, mech)
     check_gravity(model)
     methods = [cls(model, mech) for cls in _methods()]
@@ -163,6 +164,7 @@ def _derive_model(model: Model) -> Derivation:
     check_magnitudes(model, quantities)
     lagrange = methods[0]
     contact_signs = check_contact_signs(model, lagrange, quantities)
+    contact_signs |= released.check_released(model, lagrange)
     simulator = Simulator(model, lagrange.equilibrium, quantities)  # one compiled motion for every measure
     simulation = _simulate(model, quantities, simulator)
     variants: dict[Model, Method] = {model: lagrange}

@@ -88,7 +88,7 @@ def _physics(model: Model, dims: Dims) -> list[Check]:
             checks.append((("bodies", body.name, "inertia"), body.inertia, INERTIA))
     if model.gravity is not None:
         checks.append((("gravity",), model.gravity, ACCELERATION))
-    for constraint in model.constraints:
+    for constraint in (*model.constraints, *model.released):
         checks.append((("constraints", constraint.name, "gap"), constraint.gap, None))
     for index, friction in enumerate(model.frictions):
         checks.append((("friction", index, "coefficient"), friction.coefficient, DIMENSIONLESS))

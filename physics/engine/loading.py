@@ -12,7 +12,16 @@ import sympy
 
 from physics.answer_text import typed_text
 from physics.dimensions import Dimension
-from physics.engine import bounces, evaluated_at, forcing, mode_shapes, reach_loading, scenarios, sticking
+from physics.engine import (
+    bounces,
+    evaluated_at,
+    forcing,
+    mode_shapes,
+    reach_loading,
+    released,
+    scenarios,
+    sticking,
+)
 from physics.engine.dimensional import check_dimensions
 from physics.engine.distances import with_distance_sides
 from physics.engine.elements import expand_elements
@@ -63,6 +72,7 @@ _SECTIONS = frozenset(
         "frame",
         "notation",
         "unused",
+        released.KEY,
     }
 )
 _QUANTITY_TARGET = {
@@ -146,6 +156,8 @@ def _load_model(
     ranges: Mapping[str, tuple[sympy.Expr, sympy.Expr]] | None,
 ) -> Model:
     expanded = expand_elements(data, symbols)  # composable elements -> the low-level sections
+    if isinstance(data, Mapping):
+        released.check_elements(data.get(released.KEY), expanded.elements)
     try:
         model = dataclasses.replace(_load_low_level(expanded.data, symbols), elements=expanded.elements)
         if ranges:
@@ -193,12 +205,14 @@ def _load_low_level(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]
     gravity = None
     if data.get("gravity") is not None:
         gravity = errors.read(data["gravity"], symbols, ("gravity",))
-    constraints = _constraints(data.get("constraints"), {"t": time, **symbols, **dict(cartesian)}, errors)
-    frictions = _frictions(data.get("friction"), symbols, bodies, constraints, coordinates, errors)
+    declared = _constraints(data.get("constraints"), {"t": time, **symbols, **dict(cartesian)}, errors)
+    constraints, let_go = released.read(data.get(released.KEY), declared, errors.add)
+    frictions = _frictions(data.get("friction"), symbols, bodies, declared, coordinates, errors)
     potentials = _potentials(data.get("potentials"), symbols, bodies, errors)
     collision = _collision(data.get("collision"), symbols, bodies, coordinates, errors)
     state = _state(data.get("state"), symbols, coordinates, errors, time)
-    quantities = _quantities(data.get("quantities"), symbols, coordinates, constraints, collision, errors)
+    quantities = _quantities(data.get("quantities"), symbols, coordinates, declared, collision, errors)
+    released.check_uses(let_go, frictions, quantities, errors.add)
     velocities = {f"{c.name}_dot": c.velocity for c in coordinates}
     forces = _forces(data.get("forces"), symbols, {"t": time, **coord_scope, **velocities}, bodies, errors)
     limits = _stated_limits(data.get("limits"), symbols, {q.name for q in quantities}, errors)
@@ -210,7 +224,7 @@ def _load_low_level(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]
     reach_loading.check_targets(quantities, bodies, state, coordinates, errors.add)
     bounces.check(quantities, impact, errors.add)
     _check_slip_quantities(quantities, frictions, errors)
-    named = [*coord_names, *(c.name for c in constraints), *(b.name for b in bodies)]
+    named = [*coord_names, *(c.name for c in declared), *(b.name for b in bodies)]
     notation = errors.attempt(partial(read_notation, data.get("notation"), named)) or ()
     if errors.errors:
         raise SpecErrors(errors.errors)
@@ -235,6 +249,7 @@ def _load_low_level(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]
         frame=frame,
         notation=notation,
         unused=unused,
+        released=let_go,
     )
     return with_distance_sides(forcing.with_time(model, time))
 

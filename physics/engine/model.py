@@ -295,6 +295,8 @@ class Model:
     ] = ()  # quantities the author derives on purpose without a part asking for them
     # other configurations of the same system, each a whole model with its own quantities (scenarios.py)
     scenarios: tuple[tuple[str, Model], ...] = ()
+    # strings gone slack, surfaces left: declared, they act in no method (released.py)
+    released: tuple[Constraint, ...] = ()
 
     # the elements the author wrote, in the order they were expanded (empty for a low-level model)
     elements: tuple[AuthoredElement, ...] = ()

@@ -46,7 +46,8 @@ def draw_recognised(figure: Figure, model: Model, values: Values) -> None:
     if (leaning := leaning_of(model)) is not None:
         draw_ladder(figure, model, leaning, values)
         return
-    strings = [c for c in model.constraints if c.kind is ConstraintKind.STRING]
+    # a string gone slack (released) is drawn where it hung when it let go
+    strings = [c for c in (*model.constraints, *model.released) if c.kind is ConstraintKind.STRING]
     pendulum = [c for c in strings if not is_linear(c.gap, model)]
     if (chain := pendulum_chain_of(model, pendulum)) is not None:
         draw_pendulum_chain(figure, model, chain)
@@ -115,6 +116,8 @@ def draw_recognised(figure: Figure, model: Model, values: Values) -> None:
             return
         if len(hanging) == 2:
             draw_atwood(figure, model, hanging[0], hanging[1], wheels[0] if wheels else None)
+            if any(c.kind is ConstraintKind.STRING for c in model.released):
+                figure.say("The string goes slack.")
             return
         if len(hanging) == 3:
             draw_double_atwood(figure, model, hanging)

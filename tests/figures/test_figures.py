@@ -18,6 +18,7 @@ BANK = bank_documents()
 # What each figure must show: labels of bodies, angles and lengths, and words of its description.
 EXPECTED = {
     "atwood": ({"m₁", "m₂"}, "pulley"),
+    "atwood-slack": ({"m₁", "m₂"}, "The string goes slack"),
     "ballistic-pendulum": ({"M", "m", "θ", "L"}, "bullet"),
     "incline-pulley": ({"m₁", "m₂", "θ"}, "pulley"),
     "lennard-jones": ({"m", "r"}, "apart"),

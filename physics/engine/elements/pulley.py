@@ -91,6 +91,14 @@ def expand(name: str, spec: Mapping[str, Any], builder: Builder, path: Path) -> 
         lengths.append(length)
     constant = sympy.simplify(-(lengths[0] + lengths[1]))
     if constant.free_symbols - set(builder.symbols.values()):
+        released = builder.data.get("released")
+        if isinstance(released, list) and name in released:  # released.py: a slack string's ends part
+            fields.error(
+                "a pulley element keeps its string's length; a string released to go slack is stated under "
+                "`constraints:` by its gap (its slack), each body on a coordinate of its own",
+                "ends",
+            )
+            return
         movable = any(isinstance(end, Mapping) and "under" in end for end in ends)
         fields.error(
             f"the ends' positions change the string's length by {typed_text(constant)}; "
