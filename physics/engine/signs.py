@@ -83,7 +83,8 @@ def where_negative(expr: sympy.Expr, model: Model, prefer: Sequence[sympy.Symbol
             continue
         if found.sign is Sign.NEGATIVE:
             flip = not flip
-            negative.append(factor)
+            if not factor.is_number:  # a factor -1 says nothing of where: "-1 < 0" is no condition
+                negative.append(factor)
             continue
         changing.append(factor)
     if not changing and len(negative) == 1:  # negative on the whole domain: the factor that makes it so

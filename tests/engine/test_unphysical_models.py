@@ -68,6 +68,7 @@ DIMENSIONS = {
     "k": "N/m",
     "L0": "m",
     "alpha": "1",
+    "v": "m/s",
 }
 
 
@@ -192,3 +193,25 @@ def test_a_rest_position_outside_the_coordinates_declared_range_is_refused(
     error = _refusal(text, "m k L0 g")
     assert "the stable equilibrium y = L0 - g*m/k lies outside y's declared range [0, oo]" in error.message
     assert "the body rests on the other side there" in error.message
+
+
+CREST = """
+# a car cresting a circular hill of radius R at speed v, faster than the hill can hold it
+coordinates: [theta]
+bodies:
+  car: {mass: m, position: {x: "R*sin(theta)", y: "R*cos(theta)"}}
+gravity: g
+constraints:
+  hill: {kind: surface, gap: "sqrt(x_car^2 + y_car^2) - R"}
+state: {theta: 0, theta_dot: v/R}
+domain:
+  positive: ["v^2 - g*R"]
+quantities:
+  normal: {force: hill}
+"""
+
+
+def test_a_surface_pulling_on_the_whole_domain_says_so_without_a_constant_for_a_condition() -> None:
+    error = _refusal(CREST, "m g R v")
+    assert "the surface would pull on the whole domain" in error.message
+    assert "-1 < 0" not in error.message
