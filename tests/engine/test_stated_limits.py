@@ -48,3 +48,21 @@ def test_friction_to_zero_is_checked_against_the_frictionless_model() -> None:
     checks = bank_derivation("skier-friction").checks
     assert "limit acceleration (no friction)" in checks
     assert "energy balance" in checks
+
+
+# (an expression written with the friction's own coefficient, what it tends to with no friction)
+FORMULAS_WITH_THE_COEFFICIENT = [
+    pytest.param("-mu*normal*4", "0", id="friction's work"),
+    pytest.param("normal*(1 + mu)", "g*m*cos(alpha)", id="normal plus friction"),
+]
+
+
+@pytest.mark.parametrize(("formula", "limit"), FORMULAS_WITH_THE_COEFFICIENT)
+def test_a_formula_in_the_friction_coefficient_tends_to_its_own_value_with_no_friction(
+    formula: str, limit: str
+) -> None:
+    """The frictionless model keeps the author's formula: the coefficient in it goes to zero too."""
+    data = copy.deepcopy(model_data("skier-friction"))
+    data["quantities"] = {"normal": {"force": "slope"}, "formula": {"expression": formula}}
+    result = uncached(load_model(data, symbols("skier-friction")))
+    assert f"tends to the frictionless model's {limit}" == result.checks["limit formula (no friction)"]
