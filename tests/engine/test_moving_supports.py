@@ -16,9 +16,9 @@ from physics.engine import Model, derivation, load_model
 from physics.errors import DerivationError, SpecErrors
 
 uncached = derivation._derive.__wrapped__
-NAMES = ("m", "L", "A", "g", "a", "w")
+NAMES = ("m", "M", "L", "A", "g", "a", "w")
 SYMBOLS = {name: sympy.Symbol(name, positive=True) for name in NAMES}
-m, L, A, g, a, w = (SYMBOLS[n] for n in NAMES)
+m, M, L, A, g, a, w = (SYMBOLS[n] for n in NAMES)
 
 TRUCK = """
 elements:
@@ -46,6 +46,22 @@ state: {theta: 0}
 quantities:
   swing: {acceleration: theta}
   tension: {force: string}
+"""
+# the truck a body of its own, its motion prescribed by a constraint whose force is the push it needs
+DRIVEN_TRUCK = """
+bodies:
+  truck: {mass: M, position: {x: "A*t^2/2"}}
+elements:
+  bob: {kind: pendulum, mass: m, length: L, coordinate: theta, pivot: truck}
+gravity: g
+constraints:
+  drive: {kind: other, gap: "x_truck - A*t^2/2"}
+domain:
+  ranges: {theta: ["-pi/2", "pi/2"]}
+state: {theta: "-atan(A/g)"}
+quantities:
+  push: {force: drive}
+  omega: {angular_frequency: theta}
 """
 SWINGING_THROUGH = """
 elements:
@@ -79,8 +95,8 @@ def _same(first: sympy.Expr, second: sympy.Expr) -> bool:
     if sympy.simplify(first - second) == 0:
         return True
     points = [
-        {m: 1.3, L: 0.7, A: 2.1, g: 9.8, a: 0.1, w: 3.0},
-        {m: 0.4, L: 2.2, A: 0.3, g: 1.5, a: 0.2, w: 1.1},
+        {m: 1.3, M: 2.0, L: 0.7, A: 2.1, g: 9.8, a: 0.1, w: 3.0},
+        {m: 0.4, M: 0.9, L: 2.2, A: 0.3, g: 1.5, a: 0.2, w: 1.1},
     ]
     return all(abs(complex((first - second).subs(point).evalf())) < 1e-12 for point in points)
 
@@ -119,8 +135,19 @@ def _same(first: sympy.Expr, second: sympy.Expr) -> bool:
             {"rate": -sqrt(2 * (sqrt(g**2 + A**2) - g) / L)},
             {"rate": {"lagrange", "newton", "dalembert", "frames"}},
         ),
+        (
+            DRIVEN_TRUCK,
+            {"push": (M + m) * A, "omega": (g**2 + A**2) ** sympy.Rational(1, 4) / sqrt(L)},
+            {"push": {"lagrange", "newton", "frames"}, "omega": {"lagrange", "dalembert", "frames"}},
+        ),
     ],
-    ids=["truck equilibrium", "truck from rest", "pivot shaken vertically", "through the equilibrium"],
+    ids=[
+        "truck equilibrium",
+        "truck from rest",
+        "pivot shaken vertically",
+        "through the equilibrium",
+        "truck a body",
+    ],
 )
 def test_a_support_moving_as_prescribed_is_derived_by_several_methods_and_simulated(
     text: str, expected: dict[str, sympy.Expr], methods: dict[str, set[str]]
