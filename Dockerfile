@@ -14,6 +14,9 @@ COPY app ./app
 COPY physics ./physics
 COPY problems ./problems
 RUN pip install --no-deps . && rm -rf build *.egg-info
+# The derived bank travels with the image: a first start loads it (checked against the code's digest)
+# instead of deriving the bank for a minute or more before /ready.
+RUN physcheck bank build
 
 RUN useradd --create-home --uid 10001 physcheck && mkdir /data && chown physcheck /data
 USER physcheck

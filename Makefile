@@ -3,7 +3,7 @@ PYTHON ?= python3
 VENV := .venv
 BIN := $(VENV)/bin
 
-.PHONY: serve test lint lock
+.PHONY: serve test lint lock bank
 
 $(BIN)/physcheck: requirements-dev.lock pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -14,6 +14,11 @@ $(BIN)/physcheck: requirements-dev.lock pyproject.toml
 
 serve: $(BIN)/physcheck
 	$(BIN)/physcheck serve
+
+# The derived bank shipped with the program (app/data/bank.compiled): a first start loads it instead of
+# deriving the bank. Build it before a package (`pip wheel .`) so that the package carries it.
+bank: $(BIN)/physcheck
+	$(BIN)/physcheck bank build
 
 lint: $(BIN)/physcheck
 	$(BIN)/ruff check .

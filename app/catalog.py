@@ -28,6 +28,7 @@ from app.db.records import ProblemRecord
 from app.derivation import DerivationFailed, DerivationPool, unpack
 from app.errors import GraderFault, Unavailable
 from app.grading.processes import PoolError
+from app.shipped_bank import ShippedBank, load_shipped
 from app.storage import CompiledCache, CompiledEntry, Stores
 from physics.checking import CheckJob
 from physics.engine.model import Model
@@ -109,16 +110,42 @@ class CompiledStore:
         parses every engine module (half a CPU-second), which a restart of unchanged code skips."""
         with self._engine_lock:
             if self._engine is None:
-                # Hashed as compiled entries' keys are (the column holds 64 characters), from another
-                # kind of text: "engine:" and a digest, theirs a document hash, ":" and a digest.
-                key = hashlib.sha256(f"engine:{source_digest()}".encode()).hexdigest()
-                found = self._cache.get(key)
-                if found is not None and self._verifies(key, *found):
-                    self._engine = found[0].decode()
-                else:
+                self._engine = self._stored_engine()
+                if self._engine is None:
                     self._engine = engine_digest()
-                    self._put(key, self._engine.encode(), "the engine digest")
+                    self._put(self._engine_key(), self._engine.encode(), "the engine digest")
             return self._engine
+
+    def engine_is_stored(self) -> bool:
+        """Whether the running code's engine digest is known without parsing it (not a first start)."""
+        with self._engine_lock:
+            if self._engine is None:
+                self._engine = self._stored_engine()
+            return self._engine is not None
+
+    def adopt_engine(self, source: str, engine: str) -> bool:
+        """Take `engine` as the engine digest when `source` is the digest of the running code's files
+        (the same bytes and libraries: the same syntax trees), sparing a first start the parse."""
+        if source != source_digest():
+            return False
+        with self._engine_lock:
+            if self._engine is None:
+                self._engine = engine
+                self._put(self._engine_key(), engine.encode(), "the engine digest")
+            return self._engine == engine
+
+    @staticmethod
+    def _engine_key() -> str:
+        # Hashed as compiled entries' keys are (the column holds 64 characters), from another kind of
+        # text: "engine:" and a digest, theirs a document hash, ":" and a digest.
+        return hashlib.sha256(f"engine:{source_digest()}".encode()).hexdigest()
+
+    def _stored_engine(self) -> str | None:
+        key = self._engine_key()
+        found = self._cache.get(key)
+        if found is not None and self._verifies(key, *found):
+            return found[0].decode()
+        return None
 
     def _mac(self, key: str, payload: bytes) -> str:
         return hmac.new(self._mac_key, key.encode() + b"\0" + payload, hashlib.sha256).hexdigest()
@@ -173,9 +200,11 @@ class Catalog:
         documents_cached: int = 256,
         compiled_cached: int = 256,
         deriver: DerivationPool | None = None,
+        shipped: Path | None = None,
     ):
         """`deriver`: the worker processes that derive what is not stored (this process never does);
-        the catalog closes it. By default one worker under the default limits."""
+        the catalog closes it. By default one worker under the default limits. `shipped`: the derived
+        bank that came with the program (`app.shipped_bank`), used for what is not stored yet."""
         self._problems = stores.problems
         self._bank_dir = bank_dir
         self._secret = secret
@@ -191,6 +220,7 @@ class Catalog:
         self._compiling: dict[tuple[str, int, str], threading.Lock] = {}
         self._sealed: dict[str, bytes] = {}  # verified stored compilations not opened yet, by store key
         self._deriver = deriver or DerivationPool()
+        self._shipped = shipped
 
     def sync_builtin(self) -> list[ProblemRecord]:
         """Store the built-in bank: unchanged files keep their version, edited ones get a new one.
@@ -234,15 +264,25 @@ class Catalog:
         A problem whose compilation is stored (and verifies) counts at once: one query finds them all,
         and they are opened after `warm` is set (or by the first request that needs one). The others are
         derived in the deriver's worker processes (seconds each), stored, and left sealed, before `warm`
-        is set. One that fails is logged once and left to the first request that needs it.
+        is set. One that fails is logged once and left to the first request that needs it. What the
+        shipped bank holds under the running engine is stored from it instead of derived.
         """
         failed: set[str] = set()  # not derived again (nor logged again) by the opening below
         try:
+            shipped: ShippedBank | None = None
+            read = False  # the shipped bank's file (read once at most, and only when something is cold)
+            if self._shipped is not None and not self._stored(self._store.engine_is_stored):
+                # A first start (or new code): the shipped bank's file digest may spare parsing the engine.
+                shipped, read = load_shipped(self._shipped), True
+                if shipped is not None:
+                    self._stored(lambda: self._store.adopt_engine(shipped.source, shipped.engine))
             records = self.list()
             sealed = self._stored(lambda: self._store.sealed(records)) or {}
             with self._lock:
                 self._sealed.update(sealed)
             cold = [record for record in records if self._store.key(record) not in sealed]
+            if cold and self._shipped is not None:
+                cold = self._from_shipped(cold, shipped if read else load_shipped(self._shipped))
             if cold:
                 log.info(
                     "deriving %s not stored yet, %d at a time in worker processes",
@@ -263,10 +303,32 @@ class Catalog:
             if record.id not in failed:
                 self._compile_logged(record)
 
+    def _from_shipped(self, cold: list[ProblemRecord], shipped: ShippedBank | None) -> list[ProblemRecord]:
+        """Store what the shipped bank holds of `cold` under the running engine, sealed like a
+        derivation; returns the records it does not hold."""
+        if shipped is None:
+            return cold
+        if shipped.engine != self._store.engine():
+            log.info("the shipped bank was derived by other code; deriving what is not stored")
+            return cold
+        left = []
+        for record in cold:
+            payload = shipped.payloads.get(record.document_hash)
+            if payload is None:
+                left.append(record)
+                continue
+            self._stored(lambda: self._store.save(record, payload))  # noqa: B023 - called at once
+            with self._lock:
+                self._sealed[self._store.key(record)] = payload
+        if len(left) < len(cold):
+            log.info("loaded %s from the shipped bank", counted(len(cold) - len(left), "problem"))
+        return left
+
     def _derive_all(self, records: list[ProblemRecord]) -> set[str]:
         """Each record derived by the deriver, stored, and left sealed for the opening after `warm`;
         returns the ids of those that failed."""
         failed: set[str] = set()
+        derived = 0
         pending: dict[Future[bytes], ProblemRecord] = {}
         for index, record in enumerate(records):
             try:
@@ -293,6 +355,8 @@ class Catalog:
                 self._stored(lambda: self._store.save(record, payload))  # noqa: B023 - called at once
                 with self._lock:
                     self._sealed[self._store.key(record)] = payload
+                derived += 1
+                log.info("derived %r (%d of %d)", record.id, derived, len(records))
         return failed
 
     def _compile_logged(self, record: ProblemRecord) -> bool:

@@ -106,6 +106,22 @@ def _bank_verify(args: argparse.Namespace, settings: Settings) -> int:
     )
 
 
+def _bank_build(args: argparse.Namespace, settings: Settings) -> int:
+    from app.shipped_bank import SHIPPED_BANK, build_bank
+
+    output = Path(args.output) if args.output else SHIPPED_BANK
+    faults = build_bank(
+        output, settings.bank_dir, args.jobs or settings.derive_jobs, settings.check_memory_mb
+    )
+    for fault in faults:
+        print(fault, file=sys.stderr)
+    if faults:
+        print(f"{counted(len(faults), 'problem')} did not derive; nothing written", file=sys.stderr)
+        return 1
+    print(f"wrote {output}")
+    return 0
+
+
 def _problems_import(args: argparse.Namespace, settings: Settings) -> int:
     from app.catalog import CompiledStore
     from app.startup import open_database
@@ -193,6 +209,14 @@ def build_parser() -> argparse.ArgumentParser:
         "--jobs", type=int, default=None, help="problems derived at once (default: one per core)"
     )
     verify.set_defaults(handler=_bank_verify)
+    build = bank.add_parser(
+        "build", help="derive the bank into the file shipped with the program (a first start loads it)"
+    )
+    build.add_argument("--output", default=None, help="file to write (default: the package's own)")
+    build.add_argument(
+        "--jobs", type=int, default=None, help="problems derived at once (default: one per core)"
+    )
+    build.set_defaults(handler=_bank_build)
 
     problems = commands.add_parser("problems", help="problem files").add_subparsers(
         dest="problems_command", required=True

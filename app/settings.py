@@ -75,6 +75,9 @@ class Settings(BaseSettings):
     lti_max_token_age_seconds: int = Field(default=3600, ge=60)
 
     bank_dir: Path | None = None
+    # Use the derived bank built with the program (`physcheck bank build`, app/shipped_bank.py) for
+    # what is not stored yet: a first start then loads the bank instead of deriving it.
+    shipped_bank: bool = True
     # Compile every problem at start-up (seconds of sympy) before /ready says yes; off for quick dev runs.
     warm_up: bool = True
     # Worker processes that derive what is not stored yet (a first start, new code), side by side, each

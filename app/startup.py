@@ -19,6 +19,7 @@ from app.db.database import Database
 from app.db.migrate import migrate
 from app.derivation import DerivationPool
 from app.settings import Settings
+from app.shipped_bank import SHIPPED_BANK
 from app.storage import ApiKeyStore, Stores, sql_stores
 
 log = logging.getLogger("physcheck.startup")
@@ -100,7 +101,13 @@ def deriver(settings: Settings) -> DerivationPool:
 def open_storage(settings: Settings) -> Storage:
     database = open_database(settings)
     stores = sql_stores(database)
-    catalog = Catalog(stores, settings.secret, settings.bank_dir, deriver=deriver(settings))
+    catalog = Catalog(
+        stores,
+        settings.secret,
+        settings.bank_dir,
+        deriver=deriver(settings),
+        shipped=SHIPPED_BANK if settings.shipped_bank else None,
+    )
     catalog.sync_builtin()
     return Storage(database=database, stores=stores, keys=DatabaseKeyStore(stores.keys), catalog=catalog)
 

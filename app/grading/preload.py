@@ -8,6 +8,9 @@ from __future__ import annotations
 
 import signal
 
+# sympy imports this on the first comparison of two expressions (a range's bounds), not at import.
+import sympy.assumptions.wrapper  # noqa: F401
+
 from app.grading.worker import grade, warm_up_jobs
 from app.heap import freeze_long_lived
 

@@ -35,9 +35,17 @@ ROUND_TRIP_JOBS: tuple[CheckJob, ...] = (
 
 
 def warm_up_jobs() -> tuple[CheckJob, ...]:
-    """A job of each kind, touching every lazily built table (parser, unit registry, sampler): the fork
-    server runs them once, so that every worker forks with them built."""
-    return (*ROUND_TRIP_JOBS, NumericJob("4.58 km/h", NumericSpec(expected=Decimal("1.27"), units="m/s")))
+    """A job of each kind, touching every lazily built table (parser, unit registry, sampler) and every
+    module sympy imports on first use: the fork server runs them once, so that every worker forks with
+    them built. A wrong answer to a sum builds a sympy sum (`Add.flatten` imports sympy.tensor and
+    sympy.combinatorics, a quarter of a CPU-second, on its first call) and runs the diagnoses."""
+    angle = SymbolDecl("alpha", "1", range=("0", "pi/2"))
+    incline = (SymbolDecl("g", "m/s^2"), SymbolDecl("mu", "1"), angle)
+    return (
+        *ROUND_TRIP_JOBS,
+        NumericJob("4.58 km/h", NumericSpec(expected=Decimal("1.27"), units="m/s")),
+        SymbolicJob("g(sin α - μ cos α)*3/4", "(g*(sin(alpha) + mu*cos(alpha)))*3/4", incline),
+    )
 
 
 @dataclass(frozen=True)

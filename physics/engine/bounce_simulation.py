@@ -12,7 +12,8 @@ import sympy
 
 from physics.engine.impact import contact
 from physics.engine.impact_simulation import ImpactMeasure
-from physics.engine.simulation import Point, Simulator, Vector, _evaluate
+from physics.engine.model import Quantity, QuantityKind
+from physics.engine.simulation import Measured, Point, Simulator, Vector, _evaluate
 from physics.errors import DerivationError
 
 
@@ -53,3 +54,21 @@ def velocities_after(simulator: Simulator, name: str, count: int, point: Point) 
         if not all(math.isfinite(v) for v in rates):
             raise DerivationError(f"{name}: the integrated bounce failed")
     return rates
+
+
+def measure_final(simulator: Simulator, quantity: Quantity, point: Point, expected: float) -> Measured:
+    """A body's velocity or speed just after the n-th integrated bounce."""
+    model = simulator.model
+    count = round(_evaluate(quantity.bounces, point)) if quantity.bounces is not None else 1
+    rates = velocities_after(simulator, quantity.name, count, point)
+    found = contact(model)
+    velocity = [
+        sum(_evaluate(found.jacobian[i, j], point) * r for j, r in enumerate(rates))
+        for i, d in enumerate(found.mech.dofs)
+        if d.body == quantity.target and not d.name.startswith("phi_")
+    ]
+    what = f"after {count} integrated bounces"
+    if quantity.kind is QuantityKind.FINAL_SPEED:
+        return f"speed {what}", math.hypot(*velocity), None
+    (component,) = velocity
+    return f"velocity {what}", component, None

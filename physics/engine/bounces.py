@@ -21,7 +21,7 @@ import sympy
 
 from physics.answer_text import typed_text
 from physics.engine import impact, tidy
-from physics.engine.model import Impact, Model, Quantity
+from physics.engine.model import Impact, Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
 from physics.errors import DerivationError
 
@@ -29,6 +29,8 @@ if TYPE_CHECKING:
     from physics.engine.method import Method
 
 Report = Callable[[str, tuple[str | int, ...]], None]
+# a body's velocity or speed just after the n-th bounce: `{final_speed: ball, bounces: n}`
+FINAL_KINDS = frozenset({QuantityKind.FINAL_SPEED, QuantityKind.FINAL_VELOCITY})
 
 
 def check(quantities: Sequence[Quantity], model_impact: Impact | None, report: Report) -> None:
@@ -46,12 +48,16 @@ def check(quantities: Sequence[Quantity], model_impact: Impact | None, report: R
 def velocities_after(method: Method, quantity: Quantity, first: list[sympy.Expr]) -> list[sympy.Expr]:
     """The coordinates' velocities just after bounce number `quantity.bounces`, from those after the
     first, by one cycle (back to the contact, then the impact) worked with this method's own laws."""
+    from physics.engine.method import NotApplicable  # here: method builds on this module
+
     back = _RETURNS.get(method.name)
     work = impact.METHODS.get(method.name)
-    assert quantity.bounces is not None and back is not None and work is not None  # after_impact checked
+    if back is None or work is None:
+        raise NotApplicable(f"{method.title} does not follow a body back to the contact")
+    assert quantity.bounces is not None
     model = method.model
     free = [sympy.Dummy(f"w_{c.name}", real=True) for c in model.coordinates]
-    arriving = back(method, free)
+    arriving = back(method, free, quantity.name)
     positions = [(s, v) for s, v in model.state if s not in {c.velocity for c in model.coordinates}]
     trial = dataclasses.replace(
         model,
@@ -89,6 +95,21 @@ def velocities_after(method: Method, quantity: Quantity, first: list[sympy.Expr]
     return result
 
 
+def final(method: Method, quantity: Quantity, worked: impact.Worked) -> sympy.Expr:
+    """A body's velocity or speed just after the n-th bounce, from this method's worked first impact."""
+    steps, before, after = worked
+    for title, latex in steps:
+        method.step(title, latex)
+    model = method.model
+    rates = velocities_after(method, quantity, impact.coordinate_rates(model, after))
+    found = impact.contact(model)
+    cartesian = [
+        sympy.Add(*(found.jacobian[i, j] * r for j, r in enumerate(rates)))
+        for i in range(len(found.mech.dofs))
+    ]
+    return impact.answer(((), before, impact.by_body(found.mech, cartesian)), model, quantity, method.step)
+
+
 def _contact_row(model: Model) -> list[sympy.Expr]:
     """a: the normal separation's rate is a . q' (at the state, where the contact is)."""
     return impact.contact(model).generalized
@@ -104,7 +125,7 @@ def _pulled_back(model: Model, rate: sympy.Expr, name: str) -> None:
             negative = False
     if not negative:
         raise DerivationError(
-            f"after the bounce nothing brings the body back to the contact (the separation's acceleration is "
+            f"{name}: after the bounce nothing brings the body back to the contact (the separation's acceleration is "
             f"{typed_text(rate)}): it bounces once",
             quantity=name,
         )
@@ -115,7 +136,7 @@ def _as_velocities(model: Model, leaving: list[sympy.Expr], expr: sympy.Expr) ->
     return expr.xreplace({w: c.velocity for w, c in zip(leaving, model.coordinates, strict=True)})
 
 
-def _back_at_constant_acceleration(method: Method, leaving: list[sympy.Expr]) -> list[sympy.Expr]:
+def _back_at_constant_acceleration(method: Method, leaving: list[sympy.Expr], name: str) -> list[sympy.Expr]:
     """Newton: the body's own constant accelerations A bring the separation a . q back to zero."""
     model = method.model
     moving = {c.symbol for c in model.coordinates} | {c.velocity for c in model.coordinates}
@@ -127,7 +148,7 @@ def _back_at_constant_acceleration(method: Method, leaving: list[sympy.Expr]) ->
         )
     row = _contact_row(model)
     towards = tidy.simplify(sum((r * a for r, a in zip(row, accelerations, strict=True)), sympy.Integer(0)))
-    _pulled_back(model, towards, "bounces")
+    _pulled_back(model, towards, name)
     parting = sum((r * w for r, w in zip(row, leaving, strict=True)), sympy.Integer(0))
     time = -2 * parting / towards
     arriving = [w + a * time for w, a in zip(leaving, accelerations, strict=True)]
@@ -138,24 +159,43 @@ def _back_at_constant_acceleration(method: Method, leaving: list[sympy.Expr]) ->
     return arriving
 
 
-def _back_by_energy(method: Method, leaving: list[sympy.Expr]) -> list[sympy.Expr]:
-    """Conservation: back at the same place with the same energy, so the same speed, turned back (one
-    coordinate: its velocity reverses)."""
-    model = method.model
-    if len(model.coordinates) != 1:
-        raise DerivationError("the energy alone gives the return to the contact for one coordinate only")
-    (c,) = model.coordinates
-    (row,) = _contact_row(model)
-    force = -sympy.diff(method.mech.potential, c.symbol).subs(dict(model.state))
-    _pulled_back(model, tidy.simplify(row * force), "bounces")
+def _back_by_energy(method: Method, leaving: list[sympy.Expr], name: str) -> list[sympy.Expr]:
+    """Conservation: the momentum of every coordinate the contact does not move (cyclic, with a constant
+    mass matrix) is conserved, so its velocity is unchanged; back at the same place with the same
+    energy, the one coordinate along the normal has the same speed, turned back."""
+    model, mech = method.model, method.mech
+    row = _contact_row(model)
+    along = [i for i, a in enumerate(row) if a != 0]
+    mass = mech.mass_matrix
+    moving = {c.symbol for c in model.coordinates} | {c.velocity for c in model.coordinates}
+    others = [i for i in range(len(row)) if i not in along]
+    if (
+        len(along) != 1
+        or mass.free_symbols & moving
+        or not mass.is_diagonal()
+        or any(mech.potential.has(model.coordinates[i].symbol) for i in others)
+    ):
+        raise DerivationError(
+            "the energy gives the return to the contact when one coordinate moves along the normal and the "
+            "others are free (cyclic, with a constant mass matrix)"
+        )
+    (k,) = along
+    normal = model.coordinates[k]
+    force = -sympy.diff(mech.potential, normal.symbol).subs(dict(model.state))
+    _pulled_back(model, tidy.simplify(row[k] * force), name)
+    kept = [model.coordinates[i] for i in others]
     method.step(
-        "Between bounces the energy is conserved: back at the contact at the same speed, moving the other way",
-        method.tex(c.velocity) + r"\to " + method.tex(-c.velocity),
+        "Between bounces the energy is conserved: back at the contact at the same speed along the normal, "
+        "moving the other way" + (", the free coordinates' momenta unchanged" if kept else ""),
+        method.tex(normal.velocity)
+        + r"\to "
+        + method.tex(-normal.velocity)
+        + "".join(r",\ " + method.tex(c.velocity) + r"\to " + method.tex(c.velocity) for c in kept),
     )
-    return [-leaving[0]]
+    return [-w if i == k else w for i, w in enumerate(leaving)]
 
 
-_RETURNS: dict[str, Callable[[Method, list[sympy.Expr]], list[sympy.Expr]]] = {
+_RETURNS: dict[str, Callable[[Method, list[sympy.Expr], str], list[sympy.Expr]]] = {
     "newton": _back_at_constant_acceleration,
     "conservation": _back_by_energy,
 }

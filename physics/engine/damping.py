@@ -21,8 +21,9 @@ import sympy
 
 from physics.answer_text import typed_text
 from physics.engine import tidy
+from physics.engine.loads import Traits
 from physics.engine.mechanics import time_derivative
-from physics.engine.model import AppliedForce, ForceKind, Model, Quantity, QuantityKind
+from physics.engine.model import Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
 from physics.engine.quantity_table import derives
 from physics.errors import DerivationError
@@ -243,12 +244,9 @@ RATE_FOR_TIME = "That is the decay rate 1/tau; the decay time is its inverse."
 
 
 def drag_coefficients(model: Model) -> list[sympy.Symbol]:
-    """The symbols that are linear drag coefficients (b of `drag: b`)."""
-    return [
-        f.coefficient
-        for f in model.forces
-        if f.kind is ForceKind.LINEAR_DRAG and isinstance(f.coefficient, sympy.Symbol)
-    ]
+    """The symbols that are viscous loads' coefficients (b of `drag: b`)."""
+    viscous = model.loads_where(lambda traits: traits.viscous)
+    return [e for load in viscous for e in load.expressions() if isinstance(e, sympy.Symbol)]
 
 
 def mistakes(model: Model, quantity: Quantity, reference: sympy.Expr) -> list[tuple[sympy.Expr, str]]:
@@ -310,13 +308,17 @@ def derived(method: Method, quantity: Quantity) -> sympy.Expr:
 
 def without_drag(model: Model, name: str) -> Model:
     """The model with its drag left out (the undamped oscillator a damped one is compared with)."""
-    drag = (ForceKind.LINEAR_DRAG, ForceKind.QUADRATIC_DRAG)
-    if not any(f.kind in drag for f in model.forces):
+    if not model.loads_where(_drag):
         raise DerivationError(
             f"{name}: the model has no drag to leave out: ask for its angular_frequency", quantity=name
         )
-    kept = tuple(f for f in model.force_entries if not (isinstance(f, AppliedForce) and f.kind in drag))
+    kept = tuple(f for f in model.force_entries if not _drag(f.traits(model)))
     return dataclasses.replace(model, force_entries=kept)
+
+
+def _drag(traits: Traits) -> bool:
+    """A load that dissipates of itself, not through a contact's force (kinetic friction)."""
+    return traits.dissipates and not traits.constraints
 
 
 @derives(QuantityKind.UNDAMPED_FREQUENCY)

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import dataclasses
+from collections.abc import Callable
 from functools import lru_cache
 
 import sympy
@@ -41,14 +42,28 @@ def derive(model: Model) -> Derivation:
     """Derive every quantity of the model; DerivationError if fewer than two methods reach one, if they
     disagree, or if the simulation disagrees. Cached per model (models are immutable and hashable).
     Each of the model's scenarios is derived as a model of its own (scenarios.py)."""
+    return _failing_plainly(_derive, model)
+
+
+def _failing_plainly(step: Callable[[Model], Derivation], model: Model) -> Derivation:
+    try:
+        return step(model)
+    except PhyscheckError:
+        raise
+    except Exception as error:  # whatever sympy raises on an uploaded model is the model's failure to derive
+        raise DerivationError(f"the derivation failed: {type(error).__name__}: {error}") from error
+
+
+@lru_cache(maxsize=64)
+def _derive(model: Model) -> Derivation:
     if not model.scenarios:
-        return _derive_one(model)
-    base = _derive_one(dataclasses.replace(model, scenarios=()))
+        return _derive_model(model)
+    base = _failing_plainly(_derive_model, dataclasses.replace(model, scenarios=()))
     derived: list[tuple[str, Derivation]] = []
     failed: list[DerivationError] = []
     for name, own in model.scenarios:
         try:
-            derived.append((name, _derive_one(own)))
+            derived.append((name, _failing_plainly(_derive_model, own)))
         except DerivationError as error:
             failed.append(scenarios.relocated(error, name))
     if failed:
@@ -62,17 +77,7 @@ def derive(model: Model) -> Derivation:
     return scenarios.combined(base, derived)
 
 
-def _derive_one(model: Model) -> Derivation:
-    try:
-        return _derive(model)
-    except PhyscheckError:
-        raise
-    except Exception as error:  # whatever sympy raises on an uploaded model is the model's failure to derive
-        raise DerivationError(f"the derivation failed: {type(error).__name__}: {error}") from error
-
-
-@lru_cache(maxsize=64)
-def _derive(model: Model) -> Derivation:
+def _derive_model(model: Model) -> Derivation:
     clear_domain_points()  # shared within this derivation only, so vetting times stay honest
     tidy.forget()
     mech = Mechanics(model)

@@ -33,6 +33,8 @@ POINTS = 8  # domain points at which the curvature's sign and the sweep across t
 SWEEP = 41  # parameter values across its declared range
 SPREAD = 0.01  # the simulated runs take the parameter at (1 ± SPREAD) times the derived value
 _ROUNDING = 1e-9
+# quantities that are themselves a parameter's value: their simulations start from the derived value
+PARAMETER_VALUED = EXTREMUM_KINDS | {QuantityKind.SOLVE, QuantityKind.SLIPPING}
 
 
 @derives(*EXTREMUM_KINDS)
@@ -174,7 +176,7 @@ def measure(simulator: Simulator, quantity: Quantity, point: Point, expected: fl
     inner, parameter = quantity.inner, quantity.parameter
     assert inner is not None and parameter is not None
     measure_inner = simulator.measure_for(inner)
-    if measure_inner is None:
+    if measure_inner is None or inner.kind in PARAMETER_VALUED:  # those measures steer by the value
         raise DerivationError(f"{quantity.name}: no simulation measures {inner.name}", quantity=quantity.name)
     step = SPREAD * (abs(expected) or 1.0)
     below, at, above = (

@@ -31,6 +31,7 @@ STEADY = frozenset(
         QuantityKind.TERMINAL_VELOCITY,
         QuantityKind.DAMPED_FREQUENCY,
         QuantityKind.DECAY_TIME,
+        QuantityKind.UNDAMPED_FREQUENCY,
     }
 )
 

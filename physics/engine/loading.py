@@ -16,7 +16,8 @@ from physics.engine import bounces, evaluated_at, forcing, mode_shapes, reach_lo
 from physics.engine.dimensional import check_dimensions
 from physics.engine.distances import with_distance_sides
 from physics.engine.elements import expand_elements
-from physics.engine.loads import ForceEntryLoad, entries
+from physics.engine.loads import ForceEntryLoad
+from physics.engine.loads import entries as force_kinds
 from physics.engine.model import (
     AXES,
     EFFECTIVE_KINDS,
@@ -78,6 +79,7 @@ _QUANTITY_TARGET = {
     QuantityKind.DAMPED_FREQUENCY: "coordinate",
     QuantityKind.DECAY_TIME: "coordinate",
     QuantityKind.UNDAMPED_FREQUENCY: "coordinate",
+    QuantityKind.TURNING_POINT: "coordinate",
     **dict.fromkeys(STEADY_KINDS | EFFECTIVE_KINDS, "coordinate"),
 }
 _SLIPPING_KEYS = {"friction", "normal", "coefficient"}
@@ -283,7 +285,7 @@ def _forces(
     """Each entry names its body and one kind of load by its key, read by that load's module."""
     result: list[ForceEntryLoad] = []
     by_name = {b.name: b for b in bodies}
-    kinds = list(entries.READERS)
+    kinds = list(force_kinds.READERS)
     for index, entry in enumerate(_sequence(value, ("forces",), errors)):
         path: Path = ("forces", index)
         spec = _mapping(entry, path, errors)
@@ -297,7 +299,7 @@ def _forces(
             errors.add(f"unknown body {spec.get('body')!r}", (*path, "body"))
             continue
         key = given[0]
-        read = entries.Entry(
+        read = force_kinds.Entry(
             body,
             spec[key],
             (*path, key),
@@ -306,7 +308,7 @@ def _forces(
             axes=lambda text, where: _axes(text, scope, where, errors),
             error=errors.add,
         )
-        load = entries.READERS[key](key, read)
+        load = force_kinds.READERS[key](key, read)
         if load is not None:
             result.append(load)
     return tuple(result)
@@ -907,7 +909,8 @@ def _quantity(
         | ({"of"} if kind in EXTREMUM_KINDS else set())
         | (_SLIPPING_KEYS if kind is QuantityKind.SLIPPING else set())
     )
-    _check_keys(spec, allowed, allowed, path, errors)
+    optional = {"bounces"} if kind in bounces.FINAL_KINDS else set()
+    _check_keys(spec, allowed | optional, allowed, path, errors)
     target = spec[kind.value]
     where: Path = (*path, kind.value)
     if kind is QuantityKind.REVOLUTION_PERIOD and target == "frame":  # the rotating frame's turn
@@ -928,7 +931,8 @@ def _quantity(
             return None
         return Quantity(name, kind, "state")
     if kind in IMPACT_KINDS:  # checked against the impact section by `_impact`
-        return Quantity(name, kind, str(target))
+        count = errors.read(spec["bounces"], symbols, (*path, "bounces")) if "bounces" in spec else None
+        return Quantity(name, kind, str(target), bounces=count)
     if kind is QuantityKind.MODE_SHAPE:
         return errors.attempt(lambda: mode_shapes.read(name, target, where, coordinates))
     if kind is QuantityKind.NORMAL_FREQUENCY:

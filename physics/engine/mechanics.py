@@ -145,19 +145,6 @@ class Mechanics:
         gap = self.model.constraints[index].gap
         return [sympy.diff(gap, d.symbol) for d in self.dofs]
 
-    def sliding_direction(self, body: str, coordinate: str) -> list[sympy.Expr]:
-        """Unit vector (over the Cartesian dofs) along which `body` slides as `coordinate` increases."""
-        q = self.model.coordinate(coordinate).symbol
-        tangent = [
-            sympy.diff(d.mapping, q) if d.body == body and not d.name.startswith("phi_") else sympy.Integer(0)
-            for d in self.dofs
-        ]
-        norm = sympy.sqrt(sympy.Add(*(t**2 for t in tangent)))
-        norm = tidy_up.simplify(norm)
-        if norm == 0:
-            raise DerivationError(f"body {body!r} does not move with coordinate {coordinate!r}")
-        return [tidy_up.simplify(t / norm) for t in tangent]
-
     def load_forces(
         self,
         cartesian: bool,

@@ -103,6 +103,8 @@ class Method(ABC):
             raise NotApplicable(f"{self.title} does not treat impacts")
         if self._impact is None:
             self._impact = work(self.model)
+        if quantity.bounces is not None:  # just after the n-th bounce off the fixed partner
+            return bounces.final(self, quantity, self._impact)
         return impact.answer(self._impact, self.model, quantity, self.step)
 
     def after_impact(self, quantity: Quantity) -> sympy.Expr:

@@ -297,6 +297,8 @@ def _distinct(
         seen = values(expr)
         if seen is None or answer is None or all(abs(v) < 1e-12 for v in seen) or same(seen, answer):
             continue
+        if any(abs(v.imag) > 1e-12 * max(1.0, abs(v)) for v in seen) and not any(a.imag for a in answer):
+            continue  # not real where the answer is: (-e)^n for a count of bounces n, no answer to type
         if any(same(seen, other) for _, other in kept):
             continue
         kept.append((KnownMistake(expr, feedback), seen))

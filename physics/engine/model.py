@@ -1,4 +1,8 @@
-"""A mechanical model as data: coordinates, bodies, constraints, forces, events and asked quantities.
+"""A mechanical model as data: coordinates, bodies, loads, constraints, events and asked quantities.
+
+The loads (gravity, pair potentials, the `forces:` entries, kinetic friction) are one list, `loads`,
+which every method consumes through the protocol of `physics.engine.loads`; each constraint says how
+it acts (`Action`: bilateral, unilateral, impulsive).
 
 Two descriptions of the same system live side by side on purpose: each body's position (and angle)
 in terms of the generalized coordinates, used by the Lagrangian methods, and the constraints written
@@ -153,6 +157,7 @@ class QuantityKind(StrEnum):
     SLIPPING = "slipping"  # the parameter value at which a holding contact's |f| reaches mu_s N
     DAMPED_FREQUENCY = "damped_frequency"  # of an underdamped oscillation about the equilibrium
     DECAY_TIME = "decay_time"  # the amplitude's e-folding time of that oscillation
+    TURNING_POINT = "turning_point"  # where the coordinate first stops, moving from the state
     UNDAMPED_FREQUENCY = "undamped_frequency"  # of that oscillation with the damping left out: sqrt(k/m)
     MODE_SHAPE = "mode_shape"  # amplitude ratio of two coordinates in the n-th normal mode
     # steady circular motion: the angle coordinate turns uniformly, the others stay at the state (orbits.py)

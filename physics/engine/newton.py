@@ -13,7 +13,7 @@ from functools import cached_property
 import sympy
 
 from physics.answer_text import typed_text
-from physics.engine import collision, tidy
+from physics.engine import collision, modes, tidy
 from physics.engine.frames import centripetal_accelerations
 from physics.engine.mechanics import solve_linear, time_derivative
 from physics.engine.method import Method, NotApplicable
@@ -187,7 +187,9 @@ class NewtonMethod(Method):
         symbols = [d.symbol for d in mech.dofs]
         stiffness = sympy.hessian(mech.cartesian_potential, symbols).subs(point)
         mass = sympy.diag(*[d.inertia for d in mech.dofs])
-        values = [tidy.simplify(v) for v in (mass.inv() * stiffness).eigenvals()]
+        moved = [i for i, d in enumerate(mech.dofs) if sympy.diff(d.mapping, q) != 0]
+        block = sorted({j for i in moved for j in modes.coupled([stiffness], i)})  # other systems apart
+        values = [tidy.simplify(v) for v in (mass.inv() * stiffness).extract(block, block).eigenvals()]
         nonzero = [v for v in values if v != 0]
         if len(nonzero) != 1:
             raise NotApplicable(f"expected one oscillating mode, found eigenvalues {typed_text(values)}")

@@ -35,6 +35,7 @@ OWNERS = (
     "physics.engine.orbits",
     "physics.engine.slipping",
     "physics.engine.trajectory",
+    "physics.engine.turning",
     "physics.engine.work_energy",
 )
 

@@ -100,6 +100,12 @@ def qualified(scenario: str, quantity: str) -> str:
     return f"{scenario}.{quantity}"
 
 
+def quantity_path(name: str) -> tuple[str, ...]:
+    """Where a quantity named in the derivation is written in the model: a scenario's under its own."""
+    scenario, dot, own = name.partition(".")
+    return (KEY, scenario, "quantities", own) if dot else ("quantities", name)
+
+
 def quantity_names(model: Model) -> dict[str, tuple[str, ...]]:
     """Every quantity the model derives, by its name in the derivation, with the names it uses."""
     names = {q.name: tuple(n for _, n in q.uses) for q in model.quantities}

@@ -18,7 +18,7 @@ import mpmath
 import sympy
 
 from physics.answer_text import typed_text
-from physics.engine import extremum, impact_simulation, slipping
+from physics.engine import extremum, impact_simulation, slipping, vanishing_frequency
 from physics.engine.collision import merged
 from physics.engine.contact_friction import slip_velocity
 from physics.engine.lagrange import LagrangeMethod
@@ -241,6 +241,10 @@ class Simulator:
         measure = self.measure_for(quantity)
         if quantity.after:
             measure = self._after_impact
+        elif quantity.bounces is not None:  # just after the n-th bounce
+            from physics.engine import bounce_simulation  # it builds on this module
+
+            measure = partial(bounce_simulation.measure_final, self)
         if measure is None:
             return None
         worst = 0.0
@@ -277,6 +281,7 @@ class Simulator:
             QuantityKind.POTENTIAL_FORCE: self._potential_force,
             QuantityKind.SOLVE: self._solve,
             QuantityKind.TERMINAL_VELOCITY: self._terminal_velocity,
+            QuantityKind.TURNING_POINT: self._reach.turning,
             QuantityKind.NORMAL_FREQUENCY: self._normal_frequency,
             **oscillation_measures.measures(self),
             QuantityKind.PROJECTILE_SPEED: self._collision,
@@ -458,7 +463,7 @@ class Simulator:
         """With a force in the time, halve the step until the acceleration's own second difference in
         time (the system held still) is negligible: a fast driving force needs a short step."""
         dyn = self.dynamics
-        if dyn.clock is None:
+        if dyn.clock is None or dyn.n == 0:  # nothing moves but as prescribed: no step to resolve
             return step
         params = dyn.values(point)
         now = params[dyn.clock]
@@ -646,6 +651,16 @@ class Simulator:
         measure = self._reach if _reaches(inner) else self._measures().get(inner.kind)
         if measure is None or inner.kind is QuantityKind.SOLVE:
             raise DerivationError(f"{quantity.name}: no simulation for this kind of condition")
+        if inner.kind in vanishing_frequency.KINDS and not inner.at:
+            crossing = vanishing_frequency.measured_zero(
+                lambda value: measure(inner, {**point, parameter: value}, 0.0)[1], expected, quantity.name
+            )
+            return (
+                f"where the integrated {inner.kind.value.replace('_', ' ')}, squared and measured on runs that "
+                "swing, extrapolates to zero",
+                crossing,
+                None,
+            )
         step = THRESHOLD_STEP * max(abs(expected), 1e-12)
         below, above = expected - step, expected + step
         try:

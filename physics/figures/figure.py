@@ -1,6 +1,7 @@
 """What every figure shares: the Figure being drawn, the numbers it is drawn at (Values), and how
-symbols and bodies are labelled. A parameter that does not evaluate to a real number at those values is
-the one expected reason a figure cannot be drawn (NotNumeric); every other failure is a bug."""
+symbols and bodies are labelled. The expected reasons a figure cannot be drawn are NotDrawable: a
+parameter without a real number at those values (NotNumeric), a path none of whose points has one.
+Every other failure is a bug."""
 
 from __future__ import annotations
 
@@ -42,14 +43,8 @@ GREEK = [
 
 
 _SUBSCRIPT = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
-
-
 BLOCK = 1.0  # side of a block, in figure units
-
-
 SLOPE = 7.0  # length of an incline's surface
-
-
 # Angles are drawn at their values within this range; outside it the figure says it is not to scale.
 READABLE_ANGLES = (math.radians(5), math.radians(75))
 

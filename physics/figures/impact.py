@@ -1,5 +1,6 @@
 """An impact: two bodies about to meet (or to be pushed apart), their velocities before labelled, a
-fixed floor or wall hatched where the body meets it."""
+fixed floor or wall hatched where the body meets it, or the incline (an element) at whose foot the
+body that is hit rests."""
 
 from __future__ import annotations
 
@@ -8,9 +9,10 @@ import math
 import sympy
 
 from physics.engine.impact import velocities_before
-from physics.engine.model import Model
+from physics.engine.model import AuthoredElement, Model
 from physics.figures.figure import BLOCK, Figure, Values, body_label, symbol_label
-from physics.figures.shapes import square
+from physics.figures.geometry import element_body, linear_surface, of_kind, written_symbol
+from physics.figures.shapes import angle_mark, draw_block, square
 from physics.figures.svg import FILLS
 
 
@@ -19,6 +21,9 @@ def draw_impact(figure: Figure, model: Model, values: Values) -> None:
     labelled; in the plane, the impact's normal dashed through the second body."""
     hit = model.impact
     assert hit is not None
+    if (ramp := _incline_at_foot(model)) is not None:
+        _draw_hit_at_incline_foot(figure, model, values, ramp)
+        return
     canvas = figure.canvas
     plane = any(len(model.body(name).position) > 1 for name in hit.bodies)
     gap = 3.0 if hit.restitution is not None else 1.2
@@ -89,4 +94,55 @@ def _draw_fixed_partner(figure: Figure, model: Model, values: Values) -> None:
     along = (-ny, nx)  # hatched on the +normal side, the solid one
     figure.canvas.ground(
         (contact[0] - along[0], contact[1] - along[1]), (contact[0] + along[0], contact[1] + along[1])
+    )
+
+
+def _incline_at_foot(model: Model) -> AuthoredElement | None:
+    """The incline element (rising towards +x, fixed) whose body the other body of a collision hits
+    moving along +x: the block is drawn at the incline's foot, which pushes on it during the impact."""
+    hit = model.impact
+    assert hit is not None
+    if hit.fixed is not None or hit.restitution is None or len(hit.bodies) != 2:
+        return None
+    ramps = [
+        element
+        for element in of_kind(model.elements, "incline")
+        if element.fields.get("direction") == "up" and "wedge" not in element.fields
+    ]
+    return next((r for r in ramps if element_body(model, r).name == hit.bodies[1]), None)
+
+
+def _draw_hit_at_incline_foot(figure: Figure, model: Model, values: Values, ramp: AuthoredElement) -> None:
+    """The first body on a level track moving towards the second, which rests at the foot of the incline."""
+    hit = model.impact
+    assert hit is not None
+    canvas = figure.canvas
+    mover, block = (model.body(name) for name in hit.bodies)
+    symbol = written_symbol(model, ramp.fields.get("angle"))
+    surface = linear_surface(model.constraint(ramp.name), block, model, values)
+    if surface is None:  # an incline's clearance always has a normal
+        raise AssertionError(f"{ramp.name}: the contact has no normal")
+    across, up = surface.normal
+    slope = figure.readable_angle(math.atan2(-across, up), symbol)
+    foot, length = (2.5, 0.0), 4.5
+    top = (foot[0] + length * math.cos(slope), length * math.sin(slope))
+    canvas.polygon([foot, top, (top[0], 0.0)], fill="#eeeeee")
+    canvas.ground((-1.2, 0.0), (top[0], 0.0))
+    angle_mark(figure, foot, 0.0, slope, symbol)
+    tangent = (math.cos(slope), math.sin(slope))
+    draw_block(
+        figure, (foot[0] + tangent[0] * 0.6, tangent[1] * 0.6), tangent, body_label(block, model), FILLS[1]
+    )
+    draw_block(figure, (0.0, 0.0), (1.0, 0.0), body_label(mover, model), FILLS[0])
+    velocity = velocities_before(model)[mover.name].get("x", sympy.Integer(0))
+    speed = symbol_label(velocity.name) if isinstance(velocity, sympy.Symbol) else ""
+    canvas.arrow((-0.55, BLOCK + 0.4), (0.75, BLOCK + 0.4), width=0.04)
+    canvas.text((0.1, BLOCK + 0.75), speed, size=0.36)
+    kind = "a collision" if hit.restitution != 1 else "an elastic collision"
+    names = f"{body_label(mover, model)} and {body_label(block, model)}"
+    figure.say(
+        f"{names} about to meet in {kind}: {body_label(mover, model)} moving at {speed or 'its speed'} "
+        f"along a level track, {body_label(block, model)} resting at the foot of a fixed incline"
+        + (f" at angle {symbol_label(symbol.name)}" if symbol is not None else "")
+        + ", which pushes on it during the impact."
     )

@@ -72,9 +72,11 @@ def _surface(model: Model, values: Values, element: AuthoredElement) -> Surface:
 
 def _over_edge(model: Model, pulley: AuthoredElement, on_slope: set[str]) -> tuple[Body, Body] | None:
     """(the body on the slope, the one hanging) at the pulley's ends, if that is what it joins."""
+    if "inertia" in pulley.fields or any("body" not in end for end in pulley.fields["ends"]):
+        return None  # a massive pulley, or a movable one
     ends = [str(end["body"]) for end in pulley.fields["ends"]]
     hanging = [name for name in ends if name not in on_slope]
-    if len(hanging) != 1 or "inertia" in pulley.fields:
+    if len(hanging) != 1:
         return None
     return model.body(next(name for name in ends if name in on_slope)), model.body(hanging[0])
 

@@ -11,7 +11,7 @@ import sympy
 from physics.engine.model import AuthoredElement, Body, Constraint, Model
 from physics.figures.chain import draw_pendulum_chain
 from physics.figures.figure import BLOCK, Figure, NotNumeric, Values, body_label, symbol_label
-from physics.figures.geometry import element_body, of_kind
+from physics.figures.geometry import element_body, of_kind, written_symbol
 from physics.figures.path import draw_path
 from physics.figures.shapes import angle_mark, square
 from physics.figures.svg import FILLS, Point
@@ -34,7 +34,8 @@ def _cart(figure: Figure, pivot: Point, label: str) -> None:
     for dx in (-0.7, 0.7):
         canvas.circle((centre[0] + dx, top - height - 0.25), 0.25, fill="#ffffff")
     canvas.ground((centre[0] - 3.0, top - height - 0.5), (centre[0] + 3.0, top - height - 0.5))
-    canvas.text((centre[0], top - height / 2), label)
+    if label:
+        canvas.text((centre[0], top - height / 2), label)
 
 
 # What a pendulum's swinging body is called when the model's name for it says so; otherwise a bob.
@@ -96,7 +97,12 @@ def draw_pendulum(
     string: Constraint,
     values: Values,
     pivot_body: Body | None = None,
+    *,
+    length_symbol: sympy.Symbol | None = None,
+    truck: sympy.Expr | None = None,
 ) -> None:
+    """`length_symbol`: the string's length as the author named it (else the first symbol of its gap);
+    `truck`: the acceleration of a truck the pivot is fixed in (the pivot's prescribed motion)."""
     canvas = figure.canvas
     length = 4.0
     collision = model.collision
@@ -116,10 +122,16 @@ def draw_pendulum(
     whirled = rate is None and math.cos(angle) < 0
     figure.placed.update(_swung_to(model, body, angle, values))
     pivot = (0.0, 0.0)
-    if pivot_body is None:
-        canvas.ground((-1.5, 0.0), (1.5, 0.0), below=False)
-    else:
+    if pivot_body is not None:
         _cart(figure, pivot, body_label(pivot_body, model))
+    elif truck is not None:
+        _cart(figure, pivot, "")
+        canvas.arrow((-0.7, -5.45), (0.7, -5.45), width=0.05)
+        canvas.text(
+            (1.0, -5.45), symbol_label(truck.name) if isinstance(truck, sympy.Symbol) else "a", anchor="start"
+        )
+    else:
+        canvas.ground((-1.5, 0.0), (1.5, 0.0), below=False)
     canvas.line(pivot, (0.0, -length - 0.3), dashed=True, width=0.03)
     raised = (length * math.sin(angle), -length * math.cos(angle))
     lowest = (0.0, -length)
@@ -149,7 +161,11 @@ def draw_pendulum(
     # a pivot moving as prescribed (its position in the time) is drawn where it starts, at t = 0
     moving = model.time is not None and model.time in string.gap.free_symbols
     gap = string.gap.subs(model.time, 0) if moving else string.gap
-    length_symbols = sorted((s for s in gap.free_symbols if s in set(model.parameters)), key=lambda s: s.name)
+    length_symbols = (
+        [length_symbol]
+        if length_symbol is not None
+        else sorted((s for s in gap.free_symbols if s in set(model.parameters)), key=lambda s: s.name)
+    )
     if length_symbols:
         canvas.text(
             (raised[0] / 2 + 0.35, raised[1] / 2 + 0.1), symbol_label(length_symbols[0].name), anchor="start"
@@ -161,6 +177,12 @@ def draw_pendulum(
         said = (
             f"A cart {body_label(pivot_body, model)} rolls on a horizontal floor; "
             f"a {noun} {name} hangs from it on {held}"
+        )
+    elif truck is not None:
+        rate = f" at {symbol_label(truck.name)}" if isinstance(truck, sympy.Symbol) else ""
+        said = (
+            f"A truck accelerates{rate} along a level road (the arrow); a {noun} {name} hangs from its roof "
+            f"on {held}"
         )
     elif whirled:
         said = (
@@ -218,7 +240,19 @@ def from_elements(
         return True
     pivot = pendulum.fields.get("pivot")
     carrier = model.body(pivot) if isinstance(pivot, str) else None
-    draw_pendulum(figure, model, body, model.constraint(pendulum.constraints[0]), values, carrier)
+    truck = None
+    if model.time is not None and carrier is None:  # a pivot moving as the author prescribed
+        truck = sympy.diff(dict(body.position).get("x", sympy.Integer(0)), model.time, 2)
+    draw_pendulum(
+        figure,
+        model,
+        body,
+        model.constraint(pendulum.constraints[0]),
+        values,
+        carrier,
+        length_symbol=written_symbol(model, pendulum.fields.get("length")),
+        truck=truck if truck != 0 else None,
+    )
     return True
 
 

@@ -121,19 +121,20 @@ def draw_atwood(figure: Figure, model: Model, left: Body, right: Body, wheel: Bo
 def from_elements(
     figure: Figure, model: Model, values: Values, elements: tuple[AuthoredElement, ...]
 ) -> bool:
-    """One pulley element whose two ends hang (an Atwood machine, with the pulley's wheel drawn when it
-    has inertia); False for other strings (those over a slope's edge are drawn with the slope)."""
+    """One pulley element whose ends hang: an Atwood machine (with the pulley's wheel drawn when it has
+    inertia), or one end running under a movable pulley that carries a body. False for other strings
+    (those over a slope's edge are drawn with the slope)."""
     pulleys = of_kind(elements, "pulley")
     if len(pulleys) != 1 or any(end.get("pulls") != "up" for end in pulleys[0].fields["ends"]):
         return False
     ends = pulleys[0].fields["ends"]
-    if any("under" in end for end in ends):  # one end runs on under a movable pulley to the ceiling
-        single, carried = sorted(ends, key=lambda end: "under" in end)
-        if "under" in single:
-            return False
-        draw_movable_pulley(figure, model, model.body(str(single["body"])), model.body(str(carried["under"])))
+    free = [model.body(str(end["body"])) for end in ends if "body" in end]
+    carried = [model.body(str(end["under"])) for end in ends if "under" in end]
+    if len(free) == 1 and len(carried) == 1:
+        draw_movable_pulley(figure, model, free[0], carried[0])
         return True
-    left, right = (model.body(str(end["body"])) for end in pulleys[0].fields["ends"])
+    if len(free) != 2:
+        return False
     wheel = model.body(pulleys[0].bodies[0]) if pulleys[0].bodies else None
-    draw_atwood(figure, model, left, right, wheel)
+    draw_atwood(figure, model, free[0], free[1], wheel)
     return True

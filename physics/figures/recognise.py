@@ -3,7 +3,9 @@ sections (a model written with elements is drawn from them: scene.py)."""
 
 from __future__ import annotations
 
-from physics.engine.model import ConstraintKind, ForceKind, Model
+import sympy
+
+from physics.engine.model import Body, Constraint, ConstraintKind, ForceKind, Model
 from physics.figures.attraction import draw_central, draw_pair
 from physics.figures.chain import draw_pendulum_chain, pendulum_chain_of
 from physics.figures.falling import draw_falling, falling_of
@@ -21,7 +23,12 @@ from physics.figures.loads import given_forces
 from physics.figures.path import draw_path, draw_row
 from physics.figures.pendulum import draw_pendulum
 from physics.figures.projectile import draw_projectile, launch_of
-from physics.figures.pulleys import draw_atwood, draw_double_atwood, draw_pulley_to_hanging
+from physics.figures.pulleys import (
+    draw_atwood,
+    draw_double_atwood,
+    draw_movable_pulley,
+    draw_pulley_to_hanging,
+)
 from physics.figures.slope import draw_incline
 from physics.figures.spring_block import draw_slope_spring, draw_spring, draw_two_blocks_spring
 from physics.figures.springs import draw_spring_line, spring_line_of
@@ -101,6 +108,11 @@ def draw_recognised(figure: Figure, model: Model, values: Values) -> None:
         every = list({b.name: b for c in strings for b in bodies_in(c.gap, model)}.values())
         hanging = [b for b in every if b.angle is None]
         wheels = [b for b in every if b.angle is not None]
+        carried = [b for b in hanging if _loops_under(b, strings[0], model)]
+        if len(strings) == 1 and len(hanging) == 2 and len(carried) == 1:
+            free = next(b for b in hanging if b is not carried[0])
+            draw_movable_pulley(figure, model, free, carried[0])
+            return
         if len(hanging) == 2:
             draw_atwood(figure, model, hanging[0], hanging[1], wheels[0] if wheels else None)
             return
@@ -161,3 +173,10 @@ def draw_recognised(figure: Figure, model: Model, values: Values) -> None:
         return
     figure.fallback = "no picture recognised in the hand-written model"
     draw_row(figure, model)
+
+
+def _loops_under(body: Body, string: Constraint, model: Model) -> bool:
+    """Does the string run under a movable pulley the body carries (its height counts twice in the
+    string's length, as both sides of the loop shorten)?"""
+    height = model.cartesian_symbol(f"y_{body.name}") if f"y_{body.name}" in dict(model.cartesian) else None
+    return height is not None and abs(sympy.diff(string.gap, height)) == 2

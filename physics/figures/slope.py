@@ -15,6 +15,9 @@ from physics.figures.geometry import Surface
 from physics.figures.shapes import angle_mark, circle_body, draw_block
 from physics.figures.svg import FILLS, Point
 
+_CIRCLE = 0.55  # radius of a round body on a slope
+_PUSH = 1.5  # length of a push's arrow
+
 
 @dataclass
 class Slope:
@@ -121,12 +124,6 @@ class _Taken:
         length = dx * dx + dy * dy
         t = 0.0 if length == 0 else min(1.0, max(0.0, ((spot[0] - ax) * dx + (spot[1] - ay) * dy) / length))
         return math.hypot(spot[0] - ax - t * dx, spot[1] - ay - t * dy) < self.reach + margin
-
-
-_CIRCLE = 0.55  # radius of a round body on a slope
-
-
-_PUSH = 1.5  # length of a push's arrow
 
 
 def _on_drawn_slope(direction: Point, surface: Surface, tangent: Point) -> Point:

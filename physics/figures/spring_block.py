@@ -64,19 +64,12 @@ def draw_spring(
     *,
     vertical: bool = False,
     damping: sympy.Expr | None = None,
+    drop: sympy.Expr | None = None,
 ) -> None:
+    """`drop`: the height a block on a vertical spring falls from onto it (drawn that far above it)."""
     canvas = figure.canvas
     if vertical:
-        canvas.ground((-1.5, 0.0), (1.5, 0.0))
-        canvas.spring((0.0, 0.0), (0.0, 3.5))
-        centre = draw_block(figure, (0.0, 3.5), (1.0, 0.0), body_label(body, model), FILLS[0])
-        if spring_symbol is not None:
-            canvas.text((0.65, 1.75), symbol_label(spring_symbol.name), anchor="start")
-        figure.say(
-            f"A block {body_label(body, model)} rests on a vertical spring"
-            + (f" {symbol_label(spring_symbol.name)}" if spring_symbol is not None else "")
-            + " standing on the floor."
-        )
+        _vertical_spring(figure, model, body, spring_symbol, drop)
         return
     if damping is not None:  # a dashpot above the spring, both from the wall to a taller block
         size = 2 * BLOCK
@@ -127,6 +120,49 @@ def draw_spring(
     )
 
 
+def _vertical_spring(
+    figure: Figure, model: Model, body: Body, spring_symbol: sympy.Symbol | None, drop: sympy.Expr | None
+) -> None:
+    canvas = figure.canvas
+    top = 3.5  # the spring's top
+    base = top + (1.6 if drop is not None else 0.0)  # the block's bottom
+    canvas.ground((-1.5, 0.0), (1.5, 0.0))
+    canvas.spring((0.0, 0.0), (0.0, top))
+    draw_block(figure, (0.0, base), (1.0, 0.0), body_label(body, model), FILLS[0])
+    spring = f" {symbol_label(spring_symbol.name)}" if spring_symbol is not None else ""
+    if spring_symbol is not None:
+        canvas.text((0.65, top / 2), symbol_label(spring_symbol.name), anchor="start")
+    if drop is None:
+        figure.say(
+            f"A block {body_label(body, model)} rests on a vertical spring{spring} standing on the floor."
+        )
+        return
+    canvas.line((-0.7, top), (0.7, top), dashed=True, width=0.03)  # where the block lands
+    canvas.arrow((-1.1, (top + base) / 2), (-1.1, base), width=0.03)
+    canvas.arrow((-1.1, (top + base) / 2), (-1.1, top), width=0.03)
+    height = symbol_label(drop.name) if isinstance(drop, sympy.Symbol) else ""
+    if height:
+        canvas.text((-1.35, (top + base) / 2), height, anchor="end")
+    figure.say(
+        f"A block {body_label(body, model)} falls from rest{f' from a height {height}' if height else ''} "
+        f"onto a vertical spring{spring} standing on the floor; it is drawn where it is released."
+    )
+
+
+def _drop(model: Model, body: Body, values: Values) -> sympy.Expr | None:
+    """How far a body on a vertical spring fell from rest onto it: v^2 / 2g of its speed downwards in
+    the model's state (where it lands), if it is moving down there."""
+    state = dict(model.state)
+    height = dict(body.position).get("y", sympy.Integer(0))
+    moving = [c for c in model.coordinates if height.has(c.symbol) and state.get(c.velocity, 0) != 0]
+    if model.gravity is None or len(moving) != 1:
+        return None
+    rate = sympy.diff(height, moving[0].symbol) * state[moving[0].velocity]
+    if values.number(rate) >= 0:
+        return None
+    return sympy.simplify(rate**2 / (2 * model.gravity))
+
+
 def from_elements(
     figure: Figure, model: Model, values: Values, elements: tuple[AuthoredElement, ...]
 ) -> bool:
@@ -151,5 +187,6 @@ def from_elements(
         (f.coefficient for f in model.forces if f.body == body.name and f.kind is ForceKind.LINEAR_DRAG), None
     )
     vertical = [axis for axis, _ in body.position] == ["y"]
-    draw_spring(figure, model, body, stiffness, vertical=vertical, damping=damping)
+    drop = _drop(model, body, values) if vertical else None
+    draw_spring(figure, model, body, stiffness, vertical=vertical, damping=damping, drop=drop)
     return True

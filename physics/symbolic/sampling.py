@@ -12,6 +12,7 @@ give them to within 2^-36 (PRECISE_RELATIVE); the reference computes the rest wh
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import hashlib
 import math
@@ -77,20 +78,23 @@ def seed_for(*parts: object) -> int:
 
 
 def domain_seed(context: SymbolicContext, constraints: Sequence[sympy.Basic]) -> int:
-    """The seed of a domain: its symbols' specs and its constraints (printed by sympy: computed once
-    per domain, it would be a tenth of preparing a reference)."""
-    return _domain_seed(
-        tuple(sorted(context.symbols.items(), key=lambda item: item[0].name)), tuple(constraints)
-    )
+    """The seed of a domain: its symbols' specs in the order of their names, but not the names
+    themselves (a domain renamed, `m` -> `m_2`, is drawn as the same points: `_first_batch`), and its
+    constraints (printed by sympy: computed once per domain, it would be a tenth of preparing a
+    reference)."""
+    return _domain_seed(_shape(context), tuple(constraints))
+
+
+def _shape(context: SymbolicContext) -> tuple[SymbolSpec, ...]:
+    """The domain's symbols' specs without their names, in the order of the names (`sample_domain`'s
+    order of the columns)."""
+    ordered = sorted(context.symbols.items(), key=lambda item: item[0].name)
+    return tuple(dataclasses.replace(spec, name="") for _, spec in ordered)
 
 
 @functools.lru_cache(maxsize=256)
-def _domain_seed(
-    symbols: tuple[tuple[sympy.Symbol, SymbolSpec], ...], constraints: tuple[sympy.Basic, ...]
-) -> int:
-    return seed_for(
-        sorted((s.name, repr(spec)) for s, spec in symbols), [sympy.srepr(c) for c in constraints]
-    )
+def _domain_seed(shape: tuple[SymbolSpec, ...], constraints: tuple[sympy.Basic, ...]) -> int:
+    return seed_for([repr(spec) for spec in shape], [sympy.srepr(c) for c in constraints])
 
 
 def _float(value: float, prec: int) -> Mpf:
@@ -215,6 +219,10 @@ class _Batch:
 
 _BATCH_CACHE_SIZE = 256
 _first_batches: OrderedDict[tuple[Any, ...], _Batch] = OrderedDict()
+# The same batches by the domain's shape (`_shape`: the specs without the names), for a domain without
+# constraints: one under new names (`m_2` for `m`, a course's own names) is drawn as the same points, so
+# a new domain of a known shape costs no draw. Columns in the order of the names.
+_first_draws: OrderedDict[tuple[Any, ...], _Batch] = OrderedDict()
 _first_batches_lock = threading.Lock()
 
 
@@ -247,7 +255,20 @@ def _first_batch(
         found = _first_batches.get(key)
         if found is not None:
             _first_batches.move_to_end(key)
-        return found
+            return found
+        drawn = None if constraints else _first_draws.get((_shape(context), size, seed, prec))
+    if drawn is None:
+        return None
+    # The same points under this domain's names: the n-th column is the n-th name's in both.
+    renamed = dict(zip(drawn.columns, sorted(context.symbols, key=lambda s: s.name), strict=True))
+    batch = _Batch(
+        {renamed[s]: column for s, column in drawn.columns.items()},
+        drawn.allowed,
+        {renamed[s]: floats for s, floats in drawn.floats.items()},
+        drawn.rng_state,
+    )
+    _remember_first_batch(context, constraints, size, seed, prec, batch)
+    return batch
 
 
 def _remember_first_batch(
@@ -263,6 +284,10 @@ def _remember_first_batch(
         _first_batches[key] = batch
         while len(_first_batches) > _BATCH_CACHE_SIZE:
             _first_batches.popitem(last=False)
+        if not constraints:
+            _first_draws[(_shape(context), size, seed, prec)] = batch
+            while len(_first_draws) > _BATCH_CACHE_SIZE:
+                _first_draws.popitem(last=False)
 
 
 def _batch_key(

@@ -47,6 +47,27 @@ def test_the_height_after_the_nth_bounce_and_the_time_to_the_next() -> None:
         assert "integrated bounces" in derived.simulation[name].compared
 
 
+def test_a_ball_bouncing_along_the_floor_keeps_its_horizontal_velocity_between_bounces() -> None:
+    data = ball(hop={"range": "ball", "after": "impact", "bounces": "n"})
+    data["coordinates"] = ["x", "y"]
+    data["bodies"]["ball"]["position"] = {"x": "x", "y": "y"}
+    data["state"] = {"x": 0, "y": 0, "x_dot": "u", "y_dot": "-sqrt(2*g*h)"}
+    derived = derive(load_model(data, SYMBOLS))
+    assert sympy.simplify(derived.quantities["hop"] - 2 * e**n * u * sympy.sqrt(2 * h / g)) == 0
+    assert set(derived.agreement["hop"]) == {"newton", "conservation"}
+
+
+def test_the_velocity_just_after_the_nth_bounce_is_derived_and_measured_after_n_bounces() -> None:
+    derived = derive(load_model(ball(nth={"final_velocity": "ball", "bounces": "n"}), SYMBOLS))
+    assert sympy.simplify(derived.quantities["nth"] - e**n * sympy.sqrt(2 * g * h)) == 0
+    assert "integrated bounces" in derived.simulation["nth"].compared
+
+
+def test_the_energy_lost_takes_no_count_of_bounces() -> None:
+    with pytest.raises(SpecErrors, match="unknown key 'bounces'"):
+        load_model(ball(lost={"kinetic_energy_lost": "impact", "bounces": "n"}), SYMBOLS)
+
+
 def test_a_number_of_bounces_may_be_a_number() -> None:
     derived = derive(load_model(ball(third={"max_height": "ball", "after": "impact", "bounces": 3}), SYMBOLS))
     assert sympy.simplify(derived.quantities["third"] - e**6 * h) == 0

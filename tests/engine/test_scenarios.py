@@ -138,3 +138,19 @@ def test_two_uncoupled_pendulums_each_have_their_own_period() -> None:
     assert sympy.simplify(derived.quantities["simple"] - sympy.sqrt(g / L)) == 0
     assert sympy.simplify(derived.quantities["rod"] - sympy.sqrt(3 * g / (2 * L))) == 0
     assert {"lagrange", "conservation"} <= set(derived.agreement["rod"])
+
+
+def test_two_uncoupled_springs_each_have_their_own_frequency_by_newton_too() -> None:
+    data = {
+        "coordinates": ["x1", "x2"],
+        "bodies": {"a": {"mass": "m", "position": {"x": "x1"}}, "b": {"mass": "M", "position": {"x": "x2"}}},
+        "potentials": [
+            {"bodies": ["a"], "anchor": {"x": 0}, "distance": "d", "energy": "m*g*d^2/(2*L)"},
+            {"bodies": ["b"], "anchor": {"x": 0}, "distance": "e", "energy": "M*g*e^2/L"},
+        ],
+        "quantities": {"first": {"angular_frequency": "x1"}, "second": {"angular_frequency": "x2"}},
+    }
+    derived = derive(load_model(data, SYMBOLS))
+    assert sympy.simplify(derived.quantities["first"] - sympy.sqrt(g / L)) == 0
+    assert sympy.simplify(derived.quantities["second"] - sympy.sqrt(2 * g / L)) == 0
+    assert "newton" in derived.agreement["second"]

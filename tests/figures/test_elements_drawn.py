@@ -152,8 +152,13 @@ def _spring_to_block(root: ET.Element) -> bool:
 
 
 def _turning_axis(root: ET.Element) -> bool:
-    """The vertical axis the frame turns about, dashed."""
-    return any(_near(a[0], b[0]) and not _near(a[1], b[1]) for a, b in _lines(root, dashed=True))
+    """The vertical axis the frame turns about, dashed, with the arc of the turning drawn across it."""
+    arcs = [path.get("d", "").split() for path in root.iter(f"{SVG}path")]
+    middles = [(float(d[1]) + float(d[-2])) / 2 for d in arcs if len(d) == 11 and d[0] == "M" and d[3] == "A"]
+    return any(
+        _near(a[0], b[0]) and not _near(a[1], b[1]) and any(_near(middle, a[0]) for middle in middles)
+        for a, b in _lines(root, dashed=True)
+    )
 
 
 # element kind: (a bank problem led by it, the values it is drawn at, what its figure must show)
@@ -185,6 +190,13 @@ def test_a_wedge_is_drawn_as_a_slope_carrying_the_block() -> None:
     doc = BANK["moving-wedge"]
     root = ET.fromstring(model_figure(load_doc_model(doc, symbol_table(doc)), {"theta": 0.6}, title="w"))
     assert _slope_with_block_on_it(root, 0.6)
+
+
+def test_a_collision_with_a_block_on_an_incline_draws_the_incline_that_pushes_on_it() -> None:
+    doc = BANK["cart-hits-block-on-incline"]
+    root = ET.fromstring(model_figure(load_doc_model(doc, symbol_table(doc)), {"theta": 0.5}, title="c"))
+    assert _slope_with_block_on_it(root, 0.5)
+    assert "resting at the foot of a fixed incline at angle θ" in root.findtext(f"{SVG}desc", "")
 
 
 def _incline_model(angle: str) -> dict[str, object]:

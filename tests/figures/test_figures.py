@@ -52,6 +52,9 @@ EXPECTED = {
         "bob2 hangs from bob1 on a light rod of length L",
     ),
     "falling-drag": ({"pebble", "ball", "m", "bv", "cv²", "v"}, "pebble moving down at v, with drag bv"),
+    "movable-pulley": ({"m₁", "m₂"}, "under a light movable pulley carrying m₂"),
+    "spring-drop": ({"m", "k", "h"}, "falls from rest from a height h onto a vertical spring k"),
+    "pendulum-in-truck": ({"m", "L", "A"}, "A truck accelerates at A"),
 }
 
 

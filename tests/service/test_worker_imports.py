@@ -57,3 +57,46 @@ def test_workers_grade_with_the_servers_code_when_started_beside_another_copy(tm
     )
     assert done.returncode == 0, done.stderr
     assert done.stdout.strip().splitlines()[-1] == "Correct."
+
+
+FIRST_CHECKS = textwrap.dedent(
+    """
+    import sys
+
+    import app.grading.preload  # what the fork server runs before forking any worker
+    from app.grading.worker import grade
+    from physics.checking import SymbolDecl
+    from problems.kinds.symbolic import SymbolicJob
+
+    before = set(sys.modules)
+    angle = SymbolDecl("theta", "1", range=("0", "pi/2"))
+    wedge = (SymbolDecl("m", "kg"), SymbolDecl("M", "kg"), SymbolDecl("g", "m/s^2"), angle)
+    rolling = (SymbolDecl("g", "m/s^2"), SymbolDecl("r", "m"), SymbolDecl("k", "m"))
+    for answer, expected, symbols in [
+        ("2g/3", "g*r**2/(r**2 + k**2)", rolling),
+        ("g r^2/(r^2 + k^2)", "g/(1 + k**2/r**2)", rolling),
+        ("M m g cos θ/(M + m sin^2 θ)", "M*m*g*sin(theta)/(M + m*sin(theta)**2)", wedge),
+        ("sqrt(2 g M (1 - cos θ))", "2*sqrt(g*M)*sin(theta/2)", wedge),
+    ]:
+        grade(SymbolicJob(answer, expected, symbols))
+    print(" ".join(sorted(name for name in set(sys.modules) - before if name.startswith("sympy"))))
+    """
+)
+
+
+def test_a_fresh_workers_first_checks_import_nothing_of_sympy(tmp_path: Path) -> None:
+    """sympy imports modules on first use (its first sum imports sympy.tensor and sympy.combinatorics,
+    a quarter of a CPU-second): the fork server's warm-up has imported them, so no worker's first
+    student waits for them, nor any worker's after its replacement."""
+    script = tmp_path / "first_checks.py"
+    script.write_text(FIRST_CHECKS)
+    done = subprocess.run(
+        [sys.executable, "-P", str(script)],
+        cwd=ROOT,
+        capture_output=True,
+        text=True,
+        timeout=120,
+        check=False,
+    )
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.strip() == ""

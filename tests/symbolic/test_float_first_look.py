@@ -6,11 +6,12 @@ import math
 import random
 
 import numpy as np
+import pytest
 import sympy
 
 from physics.dimensions import DIMENSIONLESS
 from physics.symbolic import SymbolicContext, SymbolSpec, make_symbol
-from physics.symbolic.floats import AGREE, agrees, in_range
+from physics.symbolic.floats import AGREE, agrees, float_sample, in_range
 from physics.verdict import Reason
 from tests.symbolic.support import context, g, judge, m
 
@@ -70,3 +71,21 @@ def test_the_range_and_agreement_tests_decide_every_edge_as_their_numpy_formulas
             assert in_range(answer) == _numpy_in_range(answer), answer
             assert in_range(np.stack([answer, target])) == _numpy_in_range(np.stack([answer, target]))
             assert agrees(answer, target, scale) == _numpy_agrees(answer, target, scale), (answer, target)
+
+
+MEDIAN_CASES = {
+    "odd": [3.0, -1.0, 2.0],
+    "even": [4.0, 1.0, -3.0, 2.0],
+    "undefined points left out": [math.nan, 2.0, -math.inf, 5.0, 1.0],
+    "zeros": [0.0, 0.0, 7.0],
+    "none finite": [math.nan, math.inf],
+    "far apart": [1e-300, 1e300, 3.5e-12, 2.0**-1074],
+}
+
+
+@pytest.mark.parametrize("values", MEDIAN_CASES.values(), ids=list(MEDIAN_CASES))
+def test_a_samples_scale_is_numpys_median_of_its_finite_magnitudes(values):
+    floats = np.array(values)
+    magnitudes = np.abs(floats[np.isfinite(floats)])
+    expected = float(np.median(magnitudes)) if magnitudes.size else 1.0
+    assert float_sample({}, floats).scale == (expected if expected > 0 else 1.0)

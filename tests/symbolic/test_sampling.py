@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import pytest
@@ -9,7 +10,7 @@ import sympy
 from mpmath import libmp
 
 from physics.errors import SpecError
-from physics.symbolic import SymbolicContext, SymbolSpec, make_symbol, prepare_reference
+from physics.symbolic import SymbolicContext, SymbolSpec, make_symbol, prepare_reference, sampling
 from physics.symbolic.bounded import BoundedEvaluator
 from tests.symbolic.support import ACCELERATION, FORCE, M, context, g, m, mu, pi, sin, sqrt, tan, theta
 
@@ -99,6 +100,43 @@ def test_a_new_reference_over_a_known_domain_bounds_only_its_new_subtrees(
     monkeypatch.undo()
     afresh = BoundedEvaluator(second.sample.float_columns, second.sample.size)(scaled)
     assert afresh.values.tolist() == second.floats.values.tolist()
+
+
+def test_a_domain_under_new_names_is_drawn_as_the_same_points_without_drawing_again(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """The points depend on the symbols' specs, not their names: `m_7` in kg is sampled as `m` was."""
+    wedge = m * g * sin(theta) / (M + m * sin(theta) ** 2)
+    first = prepare_reference(wedge, context(wedge))
+    renamed_specs = {
+        s: dataclasses.replace(spec, name=f"{s.name}_7") for s, spec in context(wedge).symbols.items()
+    }
+    renamed = {s: make_symbol(spec) for s, spec in renamed_specs.items()}
+    monkeypatch.setattr(sampling, "_draw", lambda *args: pytest.fail("a known shape was drawn again"))
+    second = prepare_reference(
+        wedge.xreplace(renamed), SymbolicContext({renamed[s]: spec for s, spec in renamed_specs.items()})
+    )
+    for symbol, column in first.sample.columns.items():
+        assert second.sample.columns[renamed[symbol]] == column
+    assert second.values == first.values
+
+
+def test_a_constrained_domain_under_new_names_is_drawn_anew() -> None:
+    friction = mu * tan(theta) < 1
+    expr = g * sin(theta) * mu
+    first = prepare_reference(expr, context(expr, constraints=(friction,)))
+    specs = context(expr).symbols
+    renamed = {s: make_symbol(dataclasses.replace(spec, name=f"{s.name}_8")) for s, spec in specs.items()}
+    constrained = SymbolicContext(
+        {renamed[s]: dataclasses.replace(spec, name=f"{s.name}_8") for s, spec in specs.items()},
+        constraints=(friction.xreplace(renamed),),
+    )
+    second = prepare_reference(expr.xreplace(renamed), constrained)
+    for mu_value, theta_value in zip(
+        values(second, renamed[mu]), values(second, renamed[theta]), strict=True
+    ):
+        assert mu_value * math.tan(theta_value) < 1
+    assert values(second, renamed[mu]) != values(first, mu)  # constraints are named: not shared
 
 
 SPEC_ERRORS = [

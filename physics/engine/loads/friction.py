@@ -15,7 +15,9 @@ from typing import TYPE_CHECKING
 
 import sympy
 
+from physics.engine import tidy
 from physics.engine.loads import Traits, View
+from physics.errors import DerivationError
 
 if TYPE_CHECKING:
     from physics.engine.mechanics import Mechanics
@@ -52,7 +54,7 @@ class Friction:
 
     def of_magnitude(self, mech: Mechanics, magnitude: sympy.Expr) -> list[sympy.Expr]:
         """The friction of this magnitude on every Cartesian dof (forces on x, y; its torque on phi)."""
-        direction = mech.sliding_direction(self.body, self.sliding)
+        direction = _sliding_direction(mech, self.body, self.sliding)
         loads = [-magnitude * u for u in direction]
         index = {d.name: i for i, d in enumerate(mech.dofs)}
         force = {
@@ -69,3 +71,16 @@ class Friction:
                 if name in index:
                     loads[index[name]] -= component
         return loads
+
+
+def _sliding_direction(mech: Mechanics, body: str, coordinate: str) -> list[sympy.Expr]:
+    """Unit vector (over the Cartesian dofs) along which `body` slides as `coordinate` increases."""
+    q = mech.model.coordinate(coordinate).symbol
+    tangent = [
+        sympy.diff(d.mapping, q) if d.body == body and not d.name.startswith("phi_") else sympy.Integer(0)
+        for d in mech.dofs
+    ]
+    norm = tidy.simplify(sympy.sqrt(sympy.Add(*(t**2 for t in tangent))))
+    if norm == 0:
+        raise DerivationError(f"body {body!r} does not move with coordinate {coordinate!r}")
+    return [tidy.simplify(t / norm) for t in tangent]

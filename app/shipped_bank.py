@@ -1,0 +1,145 @@
+"""The derived bank that travels with the program: a first start loads it instead of deriving the bank.
+
+`physcheck bank build` derives every problem of the built-in bank (in derivation workers, as a start
+would) and writes the packed compilations to one file beside the code (`SHIPPED_BANK`, package data:
+built with the package and in the Docker image, never committed). The file names the engine digest it
+was derived under and the digest of the engine's files (`problems.fingerprint`), and each payload's
+SHA-256:
+
+    physcheck shipped bank 1\\n
+    {"engine": ..., "source": ..., "entries": [{"document": hash, "sha256": ..., "bytes": n}, ...]}\\n
+    payload bytes, in the order of the entries
+
+At start the catalog uses an entry only for a stored document of the same hash, under the same engine
+digest, and only when its bytes hash to the digest the manifest gives: a stale file (other code) is
+ignored and the bank derived in workers; a damaged one (truncated, flipped bits, not this format) is
+refused whole, before any of it is unpickled. The file is trusted as the code beside it is (whoever can
+replace it can replace the code): the digests catch damage, not an attacker. What it provides is then
+stored sealed under the server's secret like any derivation (`app.catalog.CompiledStore`).
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import logging
+from collections.abc import Mapping
+from concurrent.futures import Future, as_completed
+from dataclasses import dataclass
+from pathlib import Path
+
+log = logging.getLogger("physcheck.catalog")
+
+SHIPPED_BANK = Path(__file__).resolve().parent / "data" / "bank.compiled"
+_MAGIC = b"physcheck shipped bank 1\n"
+
+
+class DamagedBank(Exception):
+    """The file is not a whole shipped bank in this format."""
+
+
+@dataclass(frozen=True)
+class ShippedBank:
+    engine: str  # the engine digest the payloads were derived under
+    source: str  # the digest of the engine's files then (equal files: the same engine digest)
+    payloads: Mapping[str, bytes]  # by document hash, each matching its manifest digest
+
+
+def write_bank(path: Path, engine: str, source: str, payloads: Mapping[str, bytes]) -> None:
+    """Write the file whole, then move it into place (a reader never sees half of one)."""
+    ordered = sorted(payloads.items())
+    manifest = {
+        "engine": engine,
+        "source": source,
+        "entries": [
+            {"document": key, "sha256": hashlib.sha256(payload).hexdigest(), "bytes": len(payload)}
+            for key, payload in ordered
+        ],
+    }
+    path.parent.mkdir(parents=True, exist_ok=True)
+    partial = path.with_name(path.name + ".partial")
+    with partial.open("wb") as out:
+        out.write(_MAGIC)
+        out.write(json.dumps(manifest, sort_keys=True).encode() + b"\n")
+        for _, payload in ordered:
+            out.write(payload)
+    partial.replace(path)
+
+
+def read_bank(path: Path) -> ShippedBank | None:
+    """The shipped bank, every payload checked against its digest; None when there is no file.
+    Raises DamagedBank when the file is anything but a whole bank in this format."""
+    try:
+        data = path.read_bytes()
+    except FileNotFoundError:
+        return None
+    if not data.startswith(_MAGIC):
+        raise DamagedBank("it does not start as a shipped bank")
+    end = data.find(b"\n", len(_MAGIC))
+    if end < 0:
+        raise DamagedBank("its manifest has no end")
+    try:
+        manifest = json.loads(data[len(_MAGIC) : end])
+        engine, source, entries = manifest["engine"], manifest["source"], manifest["entries"]
+        listed = [(str(e["document"]), str(e["sha256"]), int(e["bytes"])) for e in entries]
+    except (ValueError, TypeError, KeyError) as error:
+        raise DamagedBank(f"its manifest does not read: {error!r}") from None
+    if not isinstance(engine, str) or not isinstance(source, str):
+        raise DamagedBank("its manifest names no engine")
+    payloads: dict[str, bytes] = {}
+    position = end + 1
+    for document, digest, size in listed:
+        payload = data[position : position + size]
+        if size < 0 or len(payload) != size or hashlib.sha256(payload).hexdigest() != digest:
+            raise DamagedBank(f"the compilation of document {document[:12]} does not match its digest")
+        payloads[document] = payload
+        position += size
+    if position != len(data):
+        raise DamagedBank("it holds more than its manifest lists")
+    return ShippedBank(engine, source, payloads)
+
+
+def load_shipped(path: Path | None) -> ShippedBank | None:
+    """`read_bank`, with a damaged file logged and refused (the bank is then derived in workers)."""
+    if path is None:
+        return None
+    try:
+        return read_bank(path)
+    except (DamagedBank, OSError) as error:
+        log.error("refusing the shipped bank %s: %s; deriving the bank instead", path, error)
+        return None
+
+
+# A build derives on whatever machine builds the image: a busy one may take minutes for a large problem.
+BUILD_TIMEOUT_SECONDS = 900.0
+
+
+def build_bank(
+    path: Path, bank_dir: Path | None = None, jobs: int = 1, memory_mb: int = 2048, echo: bool = True
+) -> list[str]:
+    """Derive every problem of the bank in `jobs` derivation workers (as a first start would) and write
+    the shipped bank to `path`; returns the faults (nothing is written unless every problem derived)."""
+    from app.db.problems import document_hash
+    from app.derivation import DerivationFailed, DerivationPool
+    from problems.fingerprint import engine_digest, source_digest
+    from problems.loader import load_bank
+
+    documents = [doc.model_dump(mode="json") for doc in load_bank(bank_dir)]
+    pool = DerivationPool(jobs, BUILD_TIMEOUT_SECONDS, memory_mb)
+    payloads: dict[str, bytes] = {}
+    faults: list[str] = []
+    try:
+        pending: dict[Future[bytes], dict[str, object]] = {pool.submit(doc): doc for doc in documents}
+        for done, future in enumerate(as_completed(pending), start=1):
+            document = pending[future]
+            try:
+                payloads[document_hash(document)] = future.result()
+            except DerivationFailed as error:
+                faults.append(f"{document['id']}: {error}")
+            if echo:
+                print(f"derived {document['id']} ({done} of {len(documents)})", flush=True)
+    finally:
+        pool.close()
+    if not faults:
+        write_bank(path, engine_digest(), source_digest(), payloads)
+    return faults

@@ -1,0 +1,175 @@
+"""The derived bank travels with the program: a first start loads it and derives nothing; a bank derived
+by other code is ignored and the bank derived in workers; a damaged file is refused before any of it is
+unpickled."""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import logging
+import shutil
+from collections.abc import Callable
+from pathlib import Path
+
+import pytest
+
+from app import catalog as catalog_module
+from app.catalog import Catalog
+from app.derivation import DerivationPool, forget_derived
+from app.shipped_bank import DamagedBank, build_bank, read_bank, write_bank
+from app.storage import sql_stores
+from physics.checking import check_answer
+from physics.verdict import Outcome
+
+BANK = Path(__file__).resolve().parents[2] / "problems" / "bank"
+SECRET = "secret-for-the-test"
+
+
+@pytest.fixture(scope="module")
+def small_bank(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """Two bank problems with their hand-typed answers only (no model: quick to derive)."""
+    root = tmp_path_factory.mktemp("bank")
+    for problem_id in ("atwood", "incline-pulley"):
+        (root / problem_id).mkdir()
+        shutil.copy(BANK / problem_id / "problem.yaml", root / problem_id / "problem.yaml")
+    return root
+
+
+@pytest.fixture(scope="module")
+def shipped(small_bank: Path, tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """The small bank built as `physcheck bank build` builds it, in derivation workers."""
+    path = tmp_path_factory.mktemp("shipped") / "bank.compiled"
+    assert build_bank(path, small_bank, jobs=2, echo=False) == []
+    forget_derived()  # what the build derived is not remembered for the starts below
+    return path
+
+
+@pytest.fixture
+def derivations(monkeypatch: pytest.MonkeyPatch) -> list[str]:
+    """The ids of the documents a start sent to a derivation worker."""
+    forget_derived()
+    sent: list[str] = []
+    real = DerivationPool.submit
+
+    def counting(self, document):
+        sent.append(document["id"])
+        return real(self, document)
+
+    monkeypatch.setattr(DerivationPool, "submit", counting)
+    yield sent
+    forget_derived()
+
+
+_started: list[Catalog] = []
+
+
+@pytest.fixture(autouse=True)
+def _close_catalogs():
+    yield
+    while _started:
+        _started.pop().close()
+
+
+def first_start(db, bank: Path, shipped: Path) -> Catalog:
+    """What an instance does at its first start on an empty database, with a shipped bank."""
+    catalog = Catalog(sql_stores(db), SECRET, bank, deriver=DerivationPool(workers=2), shipped=shipped)
+    _started.append(catalog)
+    catalog.sync_builtin()
+    catalog.warm_up()
+    return catalog
+
+
+def grades_its_reference(catalog: Catalog) -> bool:
+    question = catalog.compiled(catalog.get("incline-pulley")).question("acceleration")
+    return check_answer("(m2 - m1 sin(theta)) g/(m1 + m2)", question).outcome is Outcome.CORRECT
+
+
+def test_a_first_start_with_the_shipped_bank_derives_nothing(
+    db, small_bank, shipped, derivations, monkeypatch
+):
+    def parse_the_engine() -> str:
+        raise AssertionError("the engine's digest was computed: the shipped bank's file digest names it")
+
+    monkeypatch.setattr(catalog_module, "engine_digest", parse_the_engine)
+    catalog = first_start(db, small_bank, shipped)
+    assert derivations == []
+    assert grades_its_reference(catalog)
+    assert catalog.is_stored(catalog.get("atwood"))  # stored sealed: a restart needs no file
+
+
+def test_a_restart_after_a_first_start_from_the_shipped_bank_needs_no_file(
+    db, small_bank, shipped, derivations
+):
+    first_start(db, small_bank, shipped)
+    restarted = first_start(db, small_bank, shipped.with_name("gone.compiled"))
+    assert derivations == []
+    assert grades_its_reference(restarted)
+
+
+def test_a_shipped_bank_derived_by_other_code_is_ignored_and_the_bank_derived_in_workers(
+    db, small_bank, shipped, derivations, tmp_path, caplog
+):
+    bank = read_bank(shipped)
+    assert bank is not None
+    stale = tmp_path / "stale.compiled"
+    write_bank(stale, "the engine of another version", "its files", bank.payloads)
+    with caplog.at_level(logging.INFO, logger="physcheck.catalog"):
+        catalog = first_start(db, small_bank, stale)
+    assert sorted(derivations) == ["atwood", "incline-pulley"]
+    assert grades_its_reference(catalog)
+    logged = [record.getMessage() for record in caplog.records]
+    assert "the shipped bank was derived by other code; deriving what is not stored" in logged
+    progress = [line for line in logged if line.startswith("derived '")]  # in the order they finished
+    assert sorted(line.split()[1] for line in progress) == ["'atwood'", "'incline-pulley'"]
+    assert [line.split(" (")[1] for line in progress] == ["1 of 2)", "2 of 2)"]
+
+
+def _flip_a_payload_bit(data: bytes) -> bytes:
+    return data[:-10] + bytes([data[-10] ^ 1]) + data[-9:]
+
+
+def _rewritten_digest(data: bytes) -> bytes:
+    """A manifest whose first digest is another payload's: each entry must match its own bytes."""
+    head, manifest, payloads = data.split(b"\n", 2)
+    listed = json.loads(manifest)
+    listed["entries"][0]["sha256"] = hashlib.sha256(b"another payload").hexdigest()
+    return head + b"\n" + json.dumps(listed).encode() + b"\n" + payloads
+
+
+DAMAGE: dict[str, Callable[[bytes], bytes]] = {
+    "truncated": lambda data: data[: len(data) // 2],
+    "a flipped bit in a payload": _flip_a_payload_bit,
+    "a digest that is not its payload's": _rewritten_digest,
+    "bytes past the last payload": lambda data: data + b"\x80\x04K\x01.",
+    "not a shipped bank": lambda data: b"\x80\x04\x95" + data,
+    "a manifest cut short": lambda data: data[: data.index(b"\n") + 20],
+    "empty": lambda data: b"",
+}
+
+
+@pytest.mark.parametrize("damage", DAMAGE, ids=list(DAMAGE))
+def test_a_damaged_shipped_bank_is_refused_before_any_of_it_is_unpickled(
+    shipped, tmp_path, damage, monkeypatch
+):
+    damaged = tmp_path / "damaged.compiled"
+    damaged.write_bytes(DAMAGE[damage](shipped.read_bytes()))
+
+    def unpickled(*args, **kwargs):
+        raise AssertionError("a payload of a damaged bank was unpickled")
+
+    monkeypatch.setattr("pickle.loads", unpickled)
+    with pytest.raises(DamagedBank):
+        read_bank(damaged)
+
+
+def test_a_first_start_with_a_damaged_shipped_bank_logs_it_and_derives_the_bank(
+    db, small_bank, shipped, derivations, tmp_path, caplog
+):
+    damaged = tmp_path / "damaged.compiled"
+    damaged.write_bytes(_flip_a_payload_bit(shipped.read_bytes()))
+    with caplog.at_level(logging.ERROR, logger="physcheck.catalog"):
+        catalog = first_start(db, small_bank, damaged)
+    assert sorted(derivations) == ["atwood", "incline-pulley"]
+    assert grades_its_reference(catalog)
+    [refused] = [record.getMessage() for record in caplog.records]
+    assert refused.startswith(f"refusing the shipped bank {damaged}: ")
