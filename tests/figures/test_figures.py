@@ -28,8 +28,6 @@ EXPECTED = {
     "spring-incline": ({"m", "k", "θ"}, "spring"),
     "table-two-pulleys": ({"M", "m₁", "m₂", "μ"}, "edge"),
     "double-atwood": ({"m₁", "m₂", "m₃"}, "light pulley"),
-    "movable-pulley": ({"m₁", "m₂"}, "under a light movable pulley"),
-    "pendulum-in-truck": ({"m", "L"}, "a point that moves"),
     "pendulum-on-cart": ({"M", "m", "L"}, "cart"),
     "bead-rotating-hoop": ({"m", "ω"}, "axis"),
     "orbit-effective-potential": ({"m", "M", "r"}, "centre"),
