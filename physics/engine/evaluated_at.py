@@ -88,7 +88,8 @@ def answer(method: Method, quantity: Quantity) -> sympy.Expr:
         values[symbol] = method.answer(used)
     result = tidy.simplify(free.subs(values))
     method.step(
-        "Evaluated at the value found for " + ", ".join(f"${sympy.latex(s)}$" for s in values),
+        f"The {quantity.kind.value.replace('_', ' ')}{_of(method, quantity.target)} at the value found for "
+        + ", ".join(f"${sympy.latex(s)}$" for s in values),
         method.tex(free)
         + r"\Big|_{"
         + r",\ ".join(method.tex(sympy.Eq(s, v)) for s, v in values.items())
@@ -96,6 +97,16 @@ def answer(method: Method, quantity: Quantity) -> sympy.Expr:
         + method.tex(result),
     )
     return result
+
+
+def _of(method: Method, target: str) -> str:
+    """What the quantity is of, as the worked solution names it: ` ($T$)`, ` ($X$)` or ` of «ball»`."""
+    model = method.model
+    if any(c.name == target for c in model.constraints):
+        return f" ({method.force_named(target)})"
+    if any(c.name == target for c in model.coordinates):
+        return f" ({method.named(target)})"
+    return f" of «{target}»" if any(b.name == target for b in model.bodies) else ""
 
 
 def simulated(

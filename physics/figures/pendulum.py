@@ -225,6 +225,9 @@ def from_elements(
     pendulums = of_kind(elements, "pendulum")
     if len(pendulums) > 1:
         chain = _hung_in_order(pendulums)
+        if chain is None and all(not isinstance(p.fields.get("pivot"), str) for p in pendulums):
+            _side_by_side(figure, model, values, pendulums)
+            return True
         if chain is None or any("inertia" in p.fields for p in chain):
             return False
         draw_pendulum_chain(
@@ -254,6 +257,29 @@ def from_elements(
         truck=truck if truck != 0 else None,
     )
     return True
+
+
+def _side_by_side(figure: Figure, model: Model, values: Values, pendulums: list[AuthoredElement]) -> None:
+    """Pendulums on fixed points of their own, none hanging from another: each drawn alone, in a row."""
+    for pendulum in pendulums:
+        alone = Figure()
+        body = element_body(model, pendulum)
+        string = model.constraint(pendulum.constraints[0])
+        if "inertia" in pendulum.fields:  # a rigid body: a rod hanging from its pivot
+            canvas = alone.canvas
+            canvas.ground((-0.8, 0.0), (0.8, 0.0), below=False)
+            canvas.line((0.0, 0.0), (0.0, -3.0), width=0.35, color="#8aa9cf")
+            canvas.circle((0.0, 0.0), 0.1, fill="#1b1b1b")
+            canvas.text((0.5, -1.5), body_label(body, model), anchor="start")
+            alone.say(f"A rigid body {body_label(body, model)} hangs from a fixed pivot.")
+        else:
+            length = written_symbol(model, pendulum.fields.get("length"))
+            draw_pendulum(alone, model, body, string, values, length_symbol=length)
+        figure.canvas.place(alone.canvas, gap=1.5)
+        figure.said.extend(alone.said)
+        figure.placed.update(alone.placed)
+        figure.unscaled.extend(alone.unscaled)
+    figure.say("They hang apart and do not touch.")
 
 
 def _hung_in_order(pendulums: list[AuthoredElement]) -> list[AuthoredElement] | None:
