@@ -54,9 +54,24 @@ def _inverted(call: sympy.Expr, own: type, low: sympy.Expr, high: sympy.Expr, mo
     if inner.func is not own:
         return call
     angle = inner.args[0]
+    declared = _declared_range(angle, model)
+    if declared is not None:  # a coordinate or symbol with a range: its bounds decide, not samples
+        inside = bool((declared[0] - low).is_nonnegative and (high - declared[1]).is_nonnegative)
+        return angle if inside else call
     if _sign(angle - low, model) == 1 and _sign(high - angle, model) == 1:
         return angle
     return call
+
+
+def _declared_range(angle: sympy.Expr, model: Model) -> tuple[sympy.Expr, sympy.Expr] | None:
+    names = {c.symbol: c.name for c in model.coordinates}
+    for name, low, high in model.coordinate_ranges:
+        if names.get(angle) == name:
+            return low, high
+    for symbol, low, high in model.ranges:
+        if symbol == angle:
+            return low, high
+    return None
 
 
 def _sign(expr: sympy.Expr, model: Model) -> int:

@@ -76,3 +76,10 @@ def test_an_undeclared_side_of_r_minus_big_r_is_refused_at_the_constraint_saying
         uncached(_model(BALL_IN_BOWL.replace('positive: ["R - r"]', "positive: []")))
     assert "gap = R - r - abs(R - r) instead of 0" in str(caught.value)
     assert caught.value.path == ("constraints", "bowl")
+
+
+def test_an_angle_whose_declared_range_reaches_past_the_principal_range_keeps_its_inverse() -> None:
+    model = _model(BALL_IN_BOWL.replace('theta: ["-pi/2", "pi/2"]', 'theta: ["0", "3"]'))
+    theta = model.coordinate("theta").symbol
+    assert settle(sympy.atan(sympy.tan(theta)), model) == sympy.atan(sympy.tan(theta))
+    assert settle(sympy.acos(sympy.cos(theta)), model) == theta  # (0, 3) lies inside acos's [0, pi]

@@ -300,6 +300,25 @@ def test_a_movable_pulley_stated_wrongly_is_refused_saying_why(end: dict[str, st
     assert any(says in message for message in errors.values()), errors
 
 
+def test_ends_that_keep_the_length_with_one_counted_twice_are_told_about_the_movable_pulley() -> None:
+    model = {
+        "coordinates": ["s"],
+        "bodies": {
+            "m1": {"mass": "m", "position": {"y": "-s"}},
+            "m2": {"mass": "m", "position": {"y": "s/2"}},
+        },
+        "elements": {
+            "string": {
+                "kind": "pulley",
+                "ends": [{"body": "m1", "pulls": "up"}, {"body": "m2", "pulls": "up"}],
+            }
+        },
+        "quantities": {},
+    }
+    said = _errors(model, "m")["elements.string.ends"]
+    assert "if the string runs under a movable pulley that m2 carries, write that end {under: m2" in said
+
+
 def test_a_pull_direction_that_is_not_a_unit_vector_is_refused() -> None:
     model = {
         "coordinates": ["s"],

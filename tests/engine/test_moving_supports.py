@@ -10,15 +10,15 @@ from __future__ import annotations
 import pytest
 import sympy
 import yaml
-from sympy import atan, sin, sqrt
+from sympy import atan, cos, sin, sqrt, tan
 
 from physics.engine import Model, derivation, load_model
 from physics.errors import DerivationError, SpecErrors
 
 uncached = derivation._derive.__wrapped__
-NAMES = ("m", "L", "A", "g", "a", "w")
+NAMES = ("m", "M", "L", "A", "g", "a", "w", "alpha")
 SYMBOLS = {name: sympy.Symbol(name, positive=True) for name in NAMES}
-m, L, A, g, a, w = (SYMBOLS[n] for n in NAMES)
+m, M, L, A, g, a, w, alpha = (SYMBOLS[n] for n in NAMES)
 
 TRUCK = """
 elements:
@@ -46,6 +46,45 @@ state: {theta: 0}
 quantities:
   swing: {acceleration: theta}
   tension: {force: string}
+"""
+# the truck a body of its own, its motion prescribed by a constraint whose force is the push it needs
+DRIVEN_TRUCK = """
+bodies:
+  truck: {mass: M, position: {x: "A*t^2/2"}}
+elements:
+  bob: {kind: pendulum, mass: m, length: L, coordinate: theta, pivot: truck}
+gravity: g
+constraints:
+  drive: {kind: other, gap: "x_truck - A*t^2/2"}
+domain:
+  ranges: {theta: ["-pi/2", "pi/2"]}
+state: {theta: "-atan(A/g)"}
+quantities:
+  push: {force: drive}
+  omega: {angular_frequency: theta}
+"""
+# an accelerometer: the truck's acceleration that holds the string at alpha behind the vertical
+ACCELEROMETER = """
+elements:
+  bob: {kind: pendulum, mass: m, length: L, coordinate: theta, pivot: {x: "A*t^2/2", y: 0}}
+gravity: g
+domain:
+  ranges: {theta: ["-pi/2", "pi/2"], alpha: ["0", "pi/2"]}
+state: {theta: "-alpha"}
+quantities:
+  truck_acceleration: {solve: A, zero: {acceleration: theta}}
+"""
+# an incline pushed along at A (its foot at x = A t^2/2): the block slides, and A = g tan(alpha) holds it
+PUSHED_INCLINE = """
+elements:
+  ramp: {kind: incline, body: block, mass: m, angle: alpha, coordinate: s, at: {x: "A*t^2/2", y: 0}}
+gravity: g
+domain:
+  ranges: {alpha: ["0", "pi/2"]}
+quantities:
+  slide: {acceleration: s}
+  normal: {force: ramp}
+  hold: {solve: A, zero: {acceleration: s}}
 """
 SWINGING_THROUGH = """
 elements:
@@ -79,8 +118,8 @@ def _same(first: sympy.Expr, second: sympy.Expr) -> bool:
     if sympy.simplify(first - second) == 0:
         return True
     points = [
-        {m: 1.3, L: 0.7, A: 2.1, g: 9.8, a: 0.1, w: 3.0},
-        {m: 0.4, L: 2.2, A: 0.3, g: 1.5, a: 0.2, w: 1.1},
+        {m: 1.3, M: 2.0, L: 0.7, A: 2.1, g: 9.8, a: 0.1, w: 3.0, alpha: 0.4},
+        {m: 0.4, M: 0.9, L: 2.2, A: 0.3, g: 1.5, a: 0.2, w: 1.1, alpha: 1.1},
     ]
     return all(abs(complex((first - second).subs(point).evalf())) < 1e-12 for point in points)
 
@@ -119,8 +158,39 @@ def _same(first: sympy.Expr, second: sympy.Expr) -> bool:
             {"rate": -sqrt(2 * (sqrt(g**2 + A**2) - g) / L)},
             {"rate": {"lagrange", "newton", "dalembert", "frames"}},
         ),
+        (
+            DRIVEN_TRUCK,
+            {"push": (M + m) * A, "omega": (g**2 + A**2) ** sympy.Rational(1, 4) / sqrt(L)},
+            {"push": {"lagrange", "newton", "frames"}, "omega": {"lagrange", "dalembert", "frames"}},
+        ),
+        (
+            ACCELEROMETER,
+            {"truck_acceleration": g * tan(alpha)},
+            {"truck_acceleration": {"lagrange", "newton", "dalembert", "frames"}},
+        ),
+        (
+            PUSHED_INCLINE,
+            {
+                "slide": g * sin(alpha) - A * cos(alpha),
+                "normal": m * (g * cos(alpha) + A * sin(alpha)),
+                "hold": g * tan(alpha),
+            },
+            {
+                "slide": {"lagrange", "newton", "dalembert", "frames"},
+                "normal": {"lagrange", "newton", "frames"},
+                "hold": {"lagrange", "newton", "dalembert", "frames"},
+            },
+        ),
     ],
-    ids=["truck equilibrium", "truck from rest", "pivot shaken vertically", "through the equilibrium"],
+    ids=[
+        "truck equilibrium",
+        "truck from rest",
+        "pivot shaken vertically",
+        "through the equilibrium",
+        "truck a body",
+        "accelerometer",
+        "incline pushed",
+    ],
 )
 def test_a_support_moving_as_prescribed_is_derived_by_several_methods_and_simulated(
     text: str, expected: dict[str, sympy.Expr], methods: dict[str, set[str]]

@@ -90,7 +90,8 @@ def expand(name: str, spec: Mapping[str, Any], builder: Builder, path: Path) -> 
             return
         lengths.append(length)
     constant = sympy.simplify(-(lengths[0] + lengths[1]))
-    if constant.free_symbols - set(builder.symbols.values()):
+    parameters = set(builder.symbols.values())
+    if constant.free_symbols - parameters:
         released = builder.data.get("released")
         if isinstance(released, list) and name in released:  # released.py: a slack string's ends part
             fields.error(
@@ -100,11 +101,20 @@ def expand(name: str, spec: Mapping[str, Any], builder: Builder, path: Path) -> 
             )
             return
         movable = any(isinstance(end, Mapping) and "under" in end for end in ends)
+        # an end that keeps the length when counted twice: the string loops under a pulley it carries
+        looped = [
+            end["body"]
+            for end, own, other in ((ends[0], lengths[0], lengths[1]), (ends[1], lengths[1], lengths[0]))
+            if not movable and not sympy.simplify(2 * own + other).free_symbols - parameters
+        ]
         fields.error(
             f"the ends' positions change the string's length by {typed_text(constant)}; "
             + (
                 "a movable pulley moves half as far as the string's free end (both its sides shorten)"
                 if movable
+                else f"if the string runs under a movable pulley that {looped[0]} carries, write that end "
+                f"{{under: {looped[0]}, pulls: ...}}"
+                if looped
                 else "make them move together"
             ),
             "ends",
