@@ -82,6 +82,12 @@ def _finish(
         return fraction
     found = sympy.solve(kinetic_after - rise, SPEED)
     roots = admissible(found, SPEED, model)
+    if not roots and tidy.simplify(rise).is_nonpositive:
+        raise DerivationError(
+            f"the merged body cannot come to rest at {typed_text(dict(hit.reaches))}: its kinetic energy just "
+            f"after the blow would have to be {typed_text(tidy.simplify(rise))}, which is not positive (is "
+            "`reaches` on the side the projectile drives it?)"
+        )
     if len(roots) != 1:
         raise DerivationError(f"expected one positive projectile speed, found {typed_text(found)}")
     steps.append(("Projectile speed", sympy.latex(sympy.Eq(SPEED, roots[0]))))

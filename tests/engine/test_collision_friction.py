@@ -47,3 +47,9 @@ def test_the_bullets_speed_counts_the_work_of_friction_after_the_blow(
     assert sympy.simplify(result.quantities["lost"] - lost) == 0
     assert set(result.agreement["speed"]) >= {"newton", "conservation"}
     assert result.simulation["speed"].max_relative_error < 1e-3
+
+
+def test_a_stop_behind_the_blow_is_refused_saying_the_energy_would_be_negative() -> None:
+    text = SKID.replace("ANGLE", "0").replace("reaches: {x: d}", "reaches: {x: -d}")
+    with pytest.raises(derivation.DerivationError, match=r"cannot come to rest at \{x: -d\}.*not positive"):
+        uncached(load_model(yaml.safe_load(text), TABLE))
