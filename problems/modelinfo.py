@@ -14,6 +14,8 @@ from typing import TYPE_CHECKING, Any
 import sympy
 
 from physics.engine import derive, load_model
+from physics.engine.scenarios import quantity_names
+from physics.engine.scenarios import unused as unused_quantities
 from physics.errors import SpecError, SpecErrors
 from physics.symbolic import KnownMistake, LimitCase
 from problems.symbols import symbol_specs, symbol_table
@@ -87,10 +89,11 @@ class ModelQuantities:
 def model_quantities(doc: ProblemDocument) -> ModelQuantities:
     """What the model defines (cheap: loads, does not derive)."""
     model = load_doc_model(doc, symbol_table(doc))
+    names = quantity_names(model)  # a scenario's as `<scenario>.<name>`
     return ModelQuantities(
-        frozenset(q.name for q in model.quantities),
-        {q.name: frozenset(name for _, name in q.uses) for q in model.quantities if q.uses},
-        frozenset(model.unused),
+        frozenset(names),
+        {name: frozenset(uses) for name, uses in names.items() if uses},
+        frozenset(unused_quantities(model)),
     )
 
 

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from difflib import get_close_matches
 
+from physics.engine.scenarios import quantity_path
 from problems.errors import ErrorItem
 from problems.kinds import kind_of
 from problems.kinds.symbolic import SymbolicPart
@@ -58,7 +59,7 @@ def usage_errors(doc: ProblemDocument, model: ModelQuantities) -> list[ErrorItem
         if name not in model.unused:
             errors.append(
                 (
-                    format_path(("model", "quantities", name)),
+                    format_path(("model", *quantity_path(name))),
                     f"{UNASKED} {name!r}: ask for it in a part (its id, `quantity:` or "
                     "`of:`), remove it, or list it under the model's `unused:` if it is derived on purpose",
                 )

@@ -10,15 +10,20 @@ forces along the path.
 from __future__ import annotations
 
 import dataclasses
+from typing import TYPE_CHECKING
 
 import sympy
 
 from physics.answer_text import typed_text
 from physics.engine import tidy
 from physics.engine.mechanics import Mechanics, solve_linear
-from physics.engine.model import Model, QuantityKind
+from physics.engine.model import Model, Quantity, QuantityKind
+from physics.engine.quantity_table import derives
 from physics.engine.roots import admissible
 from physics.errors import DerivationError
+
+if TYPE_CHECKING:
+    from physics.engine.method import Method
 
 SPEED = sympy.Symbol("v", positive=True)
 
@@ -154,3 +159,9 @@ def by_newton(model: Model, kind: QuantityKind, steps: list[tuple[str, str]]) ->
         )
     )
     return _finish(kinetic, -work, model, kind, steps)
+
+
+@derives(QuantityKind.PROJECTILE_SPEED, QuantityKind.ENERGY_FRACTION_LOST)
+def derived(method: Method, quantity: Quantity) -> sympy.Expr:
+    """Each method works the collision its own way (`collision` of Newton and of conservation)."""
+    return method.collision(quantity.kind)

@@ -13,16 +13,28 @@ import sympy
 from physics.engine import collision, tidy
 from physics.engine.mechanics import Mechanics, solve_linear, time_derivative
 from physics.engine.method import Method, NotApplicable
-from physics.engine.model import QuantityKind
+from physics.engine.model import Quantity, QuantityKind
 from physics.engine.results import StepKind
+from physics.engine.supports import NOT_CONSERVED, driven
 
 
 class ConservationMethod(Method):
     name = "conservation"
     title = "Conservation of momentum and energy"
 
+    def answer(self, quantity: Quantity) -> sympy.Expr:
+        if driven(self.model):  # the ground's frame: the moving support's work is no potential
+            raise NotApplicable(NOT_CONSERVED)
+        return super().answer(quantity)
+
     def derive(self) -> None:
-        if self.model.frictions:
+        if driven(self.model):
+            energy = self.mech.notation.letters.energy
+            self.step(
+                "Not conservative in the ground's frame: the support moving as prescribed does work",
+                rf"\frac{{\mathrm{{d}}{energy}}}{{\mathrm{{d}}t}} \neq 0",
+            )
+        if self.model.contact_loads:
             energy = self.mech.notation.letters.energy
             self.step(
                 "Not conservative: kinetic friction turns mechanical energy into heat",
@@ -32,9 +44,9 @@ class ConservationMethod(Method):
     @cached_property
     def reduced(self) -> tuple[dict[sympy.Symbol, sympy.Expr], sympy.Expr, list[sympy.Symbol]]:
         """(cyclic velocities in terms of the others, reduced kinetic energy, remaining coordinates)."""
-        if self.model.frictions:
+        if self.model.contact_loads:
             raise NotApplicable("energy is not conserved with kinetic friction")
-        if self.model.dissipative_forces:
+        if self.model.nonconservative_loads:
             raise NotApplicable(
                 "energy is not conserved with drag or forces that depend on the motion or the time"
             )

@@ -16,11 +16,11 @@ import sympy
 
 from physics.answer_text import typed_text
 from physics.engine.method import Method
-from physics.engine.model import ConstraintKind, Model, QuantityKind
+from physics.engine.model import Action, Constraint, ConstraintKind, Model, QuantityKind
 from physics.engine.signs import Sign, point_text, sign_on_domain, where_negative
 from physics.errors import DerivationError, PhyscheckError
 
-# kind -> (the force's name, what it would do with the wrong sign, what then happens)
+# a unilateral kind -> (the force's name, what it would do with the wrong sign, what then happens)
 _UNILATERAL = {
     ConstraintKind.STRING: ("tension", "the string would push", "it goes slack"),
     ConstraintKind.SURFACE: ("normal force", "the surface would pull", "the body leaves it"),
@@ -34,20 +34,20 @@ def check_contact_signs(
     wherever an asked force is taken (`at`): a check's name -> what was shown; DerivationError at
     `constraints.<name>` (or the asked force's quantity) where it does not."""
     shown: list[str] = []
+    unilateral = {c.name: c.kind for c in model.acting(Action.UNILATERAL) if isinstance(c, Constraint)}
     for constraint in model.constraints:
-        if constraint.kind not in _UNILATERAL:
+        if constraint.name not in unilateral:
             continue
         force = _force(method, constraint.name)
         if force is None:  # this method cannot give it here: left unchecked
             continue
         if _holds(model, constraint.kind, constraint.name, force, ("constraints", constraint.name), ""):
             shown.append(constraint.name)
-    kinds = {c.name: c.kind for c in model.constraints}
     for quantity in model.quantities:
         if quantity.kind is not QuantityKind.FORCE or not quantity.at or quantities is None:
             continue
-        kind = kinds.get(quantity.target)
-        if kind in _UNILATERAL:
+        kind = unilateral.get(quantity.target)
+        if kind is not None:
             ((coordinate, value),) = quantity.at
             there = f" at {coordinate} = {typed_text(value)}"
             path = ("quantities", quantity.name)
@@ -62,7 +62,7 @@ def _holds(
 ) -> bool:
     """True when the force keeps its sign; DerivationError at `path` when it is wrong somewhere; False when
     its sign could not be found."""
-    loads = [s for f in model.forces for _, c in f.components for s in sorted(c.free_symbols, key=str)]
+    loads = [s for f in model.force_entries for e in f.expressions() for s in sorted(e.free_symbols, key=str)]
     found = sign_on_domain(force, model)
     if found.sign is Sign.POSITIVE:
         return True

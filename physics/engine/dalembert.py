@@ -19,6 +19,7 @@ from physics.engine.mechanics import solve_linear, time_derivative
 from physics.engine.method import Method, NotApplicable
 from physics.engine.oscillation import frequency_from_accelerations
 from physics.engine.results import StepKind
+from physics.engine.supports import NOT_STEADY
 
 
 class DAlembertMethod(Method):
@@ -26,7 +27,7 @@ class DAlembertMethod(Method):
     title = "d'Alembert's principle (virtual work of the applied and inertial forces)"
 
     def derive(self) -> None:
-        if self.model.frictions:
+        if self.model.contact_loads:
             return
         self.step(
             "Virtual displacements the constraints allow",
@@ -38,13 +39,13 @@ class DAlembertMethod(Method):
     def equations(self) -> list[sympy.Expr]:
         """One equation per coordinate: the coefficient of its delta q in the virtual work."""
         mech, model = self.mech, self.model
-        if model.frictions:
+        if model.contact_loads:
             raise NotApplicable(
                 "kinetic friction does work through a normal force, a constraint force that d'Alembert's "
                 "principle leaves out"
             )
         place = mech.cartesian_state()
-        applied = mech.applied_forces(False)
+        applied = mech.load_forces(False, mech.multipliers)
         effective = []
         for d, given in zip(mech.dofs, applied, strict=True):
             force = (-sympy.diff(mech.cartesian_potential, d.symbol)).subs(place) + given
@@ -91,18 +92,26 @@ class DAlembertMethod(Method):
         raise NotApplicable("constraint forces do no virtual work and drop out of d'Alembert's principle")
 
     def potential_force(self, coordinate: str) -> sympy.Expr:
-        """At rest the inertial forces vanish: the virtual work of the applied forces along the coordinate."""
-        mech = self.mech
-        q = self.model.coordinate(coordinate).symbol
+        """At rest the inertial forces vanish, but for a support's prescribed acceleration: the virtual work
+        of the applied forces along the coordinate, and of -m times that acceleration."""
+        mech, model = self.mech, self.model
+        q = model.coordinate(coordinate).symbol
         place = mech.cartesian_state()
+        rest = {**dict.fromkeys(mech.qd, 0), **dict.fromkeys(mech.qdd, 0)}
         force = tidy.simplify(
             sympy.Add(
                 *(
-                    (-sympy.diff(mech.cartesian_potential, d.symbol)).subs(place) * sympy.diff(d.mapping, q)
+                    (
+                        (-sympy.diff(mech.cartesian_potential, d.symbol)).subs(place)
+                        - d.inertia * time_derivative(time_derivative(d.mapping, model), model).subs(rest)
+                    )
+                    * sympy.diff(d.mapping, q)
                     for d in mech.dofs
                 )
             )
         )
+        if model.time is not None and model.time in force.free_symbols:
+            raise NotApplicable(NOT_STEADY)
         self.step(
             f"Virtual work at rest along {self.named(coordinate)}",
             rf"{self.mech.notation.letters.generalized}_{{{self.tex(q)}}} = \sum_i \mathbf{{F}}_i\cdot\frac{{\partial \mathbf{{r}}_i}}{{\partial "
@@ -112,4 +121,9 @@ class DAlembertMethod(Method):
 
     def frequency(self, coordinate: str, equilibrium: sympy.Expr) -> sympy.Expr:
         rest = dict.fromkeys(self.mech.qd, sympy.Integer(0))
-        return frequency_from_accelerations(self, coordinate, equilibrium, self._solve(rest))
+        accelerations = self._solve(rest)
+        if self.model.time is not None and any(
+            self.model.time in a.free_symbols for a in accelerations.values()
+        ):
+            raise NotApplicable(NOT_STEADY)
+        return frequency_from_accelerations(self, coordinate, equilibrium, accelerations)

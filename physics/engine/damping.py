@@ -21,9 +21,11 @@ import sympy
 
 from physics.answer_text import typed_text
 from physics.engine import tidy
+from physics.engine.loads import Traits
 from physics.engine.mechanics import time_derivative
-from physics.engine.model import ForceKind, Model, Quantity, QuantityKind
+from physics.engine.model import Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
+from physics.engine.quantity_table import derives
 from physics.errors import DerivationError
 
 if TYPE_CHECKING:
@@ -43,9 +45,9 @@ class NotThisWay(Exception):
 
 def refusal(model: Model) -> str | None:
     """Why a damped frequency or decay time cannot be asked of this model at all (None: it can)."""
-    if model.frictions:
+    if model.contact_loads:
         return "kinetic friction does not decay exponentially: damped oscillations need viscous damping"
-    if any(f.kind is ForceKind.QUADRATIC_DRAG for f in model.forces):
+    if model.loads_where(lambda traits: traits.dissipates and not traits.viscous):
         return "quadratic drag is not linear in the velocity: its oscillations do not decay exponentially"
     if model.time is not None:
         return "a force that depends on the time drives the oscillation: its free decay is not defined"
@@ -159,7 +161,7 @@ def by_lagrange(method: Method, point: Point) -> Matrices:
     """Lagrange's equations with the generalized forces of drag and of forces given in the velocities."""
     mech, model = method.mech, method.model
     lagrangian = mech.kinetic - mech.potential
-    forces = mech.generalized(mech.applied_forces(False))
+    forces = mech.generalized(mech.load_forces(False, mech.multipliers))
     equations = [
         time_derivative(sympy.diff(lagrangian, c.velocity), model) - sympy.diff(lagrangian, c.symbol) - force
         for c, force in zip(model.coordinates, forces, strict=True)
@@ -178,7 +180,7 @@ def by_newton(method: Method, point: Point) -> Matrices:
     if model.constraints:
         raise NotThisWay("Cartesian damped oscillations are done here only without constraints")
     place = mech.cartesian_state()
-    applied = mech.applied_forces(True)
+    applied = mech.load_forces(True, mech.multipliers)
     equations = [
         d.inertia * time_derivative(time_derivative(d.mapping, model), model)
         - (-sympy.diff(mech.cartesian_potential, d.symbol) + force).subs(place)
@@ -199,10 +201,10 @@ def by_newton(method: Method, point: Point) -> Matrices:
 def by_energy(method: Method, point: Point) -> Matrices:
     """d(T + V)/dt = P: T and V to second order about the equilibrium, P the power of linear drag."""
     mech, model = method.mech, method.model
-    if any(f.kind is not ForceKind.LINEAR_DRAG for f in model.dissipative_forces):
+    if model.loads_where(lambda traits: not traits.conservative and not traits.viscous):
         raise NotThisWay("the energy balance is done here with linear drag only")
     velocities = list(mech.qd)
-    drag = mech.applied_forces(False, True)
+    drag = mech.load_forces(False, mech.multipliers, lambda traits: traits.dissipates)
     power = sympy.Add(*(f * time_derivative(d.mapping, model) for f, d in zip(drag, mech.dofs, strict=True)))
     rest = _at_rest(model, point)
     mass = sympy.hessian(mech.kinetic, velocities).subs(rest).applyfunc(tidy.simplify)
@@ -242,12 +244,9 @@ RATE_FOR_TIME = "That is the decay rate 1/tau; the decay time is its inverse."
 
 
 def drag_coefficients(model: Model) -> list[sympy.Symbol]:
-    """The symbols that are linear drag coefficients (b of `drag: b`)."""
-    return [
-        f.coefficient
-        for f in model.forces
-        if f.kind is ForceKind.LINEAR_DRAG and isinstance(f.coefficient, sympy.Symbol)
-    ]
+    """The symbols that are viscous loads' coefficients (b of `drag: b`)."""
+    viscous = model.loads_where(lambda traits: traits.viscous)
+    return [e for load in viscous for e in load.expressions() if isinstance(e, sympy.Symbol)]
 
 
 def mistakes(model: Model, quantity: Quantity, reference: sympy.Expr) -> list[tuple[sympy.Expr, str]]:
@@ -279,7 +278,9 @@ def undamped_checks(
     for quantity in model.quantities:
         if quantity.kind is not QuantityKind.DAMPED_FREQUENCY or not drag:
             continue
-        free = dataclasses.replace(model, forces=tuple(f for f in model.forces if f.coefficient not in drag))
+        free = dataclasses.replace(
+            model, force_entries=tuple(f for f in model.force_entries if not set(f.expressions()) & set(drag))
+        )
         expected = undamped_frequency(free, quantity.target)
         found = tidy.simplify(quantities[quantity.name].subs(dict.fromkeys(drag, 0)))
         if tidy.simplify(found - expected) != 0:
@@ -292,3 +293,49 @@ def undamped_checks(
             f"tends to the undamped model's angular frequency {typed_text(expected)}"
         )
     return checks
+
+
+@derives(*KINDS)
+def derived(method: Method, quantity: Quantity) -> sympy.Expr:
+    """About the stable equilibrium all the methods share; a method that cannot see the drag says so."""
+    from physics.engine.method import NotApplicable, stable_equilibrium
+
+    try:
+        return answer(method, quantity, stable_equilibrium(method.model))
+    except NotThisWay as why:
+        raise NotApplicable(str(why)) from None
+
+
+def without_drag(model: Model, name: str) -> Model:
+    """The model with its drag left out (the undamped oscillator a damped one is compared with)."""
+    if not model.loads_where(_drag):
+        raise DerivationError(
+            f"{name}: the model has no drag to leave out: ask for its angular_frequency", quantity=name
+        )
+    kept = tuple(f for f in model.force_entries if not _drag(f.traits(model)))
+    return dataclasses.replace(model, force_entries=kept)
+
+
+def _drag(traits: Traits) -> bool:
+    """A load that dissipates of itself, not through a contact's force (kinetic friction)."""
+    return traits.dissipates and not traits.constraints
+
+
+@derives(QuantityKind.UNDAMPED_FREQUENCY)
+def undamped_frequency(method: Method, quantity: Quantity) -> sympy.Expr:
+    """sqrt(k/m): this method's angular frequency of small oscillations of the model without its drag."""
+    from physics.engine.mechanics import Mechanics
+
+    why = refusal(method.model)
+    if why is not None:
+        raise DerivationError(f"{quantity.name}: {why}", quantity=quantity.name)
+    free = without_drag(method.model, quantity.name)
+    solver = type(method)(free, Mechanics(free))
+    omega = solver.frequency(quantity.target, solver.equilibrium(quantity.target))
+    for step in solver.steps:
+        method.step(f"{step.title} (the damping left out)", step.latex)
+    method.step(
+        f"Undamped angular frequency of {method.named(quantity.target)}: the damping left out",
+        r"\omega_0 = " + method.tex(omega),
+    )
+    return omega

@@ -2,12 +2,14 @@
 
 from __future__ import annotations
 
+import dataclasses
+from collections.abc import Callable
 from functools import lru_cache
 
 import sympy
 
 from physics.answer_text import typed_text
-from physics.engine import tidy
+from physics.engine import bounces, evaluated_at, scenarios, tidy
 from physics.engine.checks import physical_checks
 from physics.engine.conservation import ConservationMethod
 from physics.engine.contacts import check_contact_signs
@@ -21,6 +23,7 @@ from physics.engine.model import Model, Quantity
 from physics.engine.newton import NewtonMethod
 from physics.engine.proof import clear_domain_points, domain_points, prove_equal
 from physics.engine.results import Derivation, KnownMistake, LimitCase, MethodReport, SimulationCheck
+from physics.engine.settle import settle
 from physics.engine.simulation import Simulator
 from physics.engine.soundness import check_gravity, check_magnitudes
 from physics.errors import DerivationError, PhyscheckError
@@ -37,9 +40,14 @@ def _methods() -> tuple[type[Method], ...]:
 
 def derive(model: Model) -> Derivation:
     """Derive every quantity of the model; DerivationError if fewer than two methods reach one, if they
-    disagree, or if the simulation disagrees. Cached per model (models are immutable and hashable)."""
+    disagree, or if the simulation disagrees. Cached per model (models are immutable and hashable).
+    Each of the model's scenarios is derived as a model of its own (scenarios.py)."""
+    return _failing_plainly(_derive, model)
+
+
+def _failing_plainly(step: Callable[[Model], Derivation], model: Model) -> Derivation:
     try:
-        return _derive(model)
+        return step(model)
     except PhyscheckError:
         raise
     except Exception as error:  # whatever sympy raises on an uploaded model is the model's failure to derive
@@ -48,6 +56,28 @@ def derive(model: Model) -> Derivation:
 
 @lru_cache(maxsize=64)
 def _derive(model: Model) -> Derivation:
+    if not model.scenarios:
+        return _derive_model(model)
+    base = _failing_plainly(_derive_model, dataclasses.replace(model, scenarios=()))
+    derived: list[tuple[str, Derivation]] = []
+    failed: list[DerivationError] = []
+    for name, own in model.scenarios:
+        try:
+            derived.append((name, _failing_plainly(_derive_model, own)))
+        except DerivationError as error:
+            failed.append(scenarios.relocated(error, name))
+    if failed:
+        findings = [item for error in failed for item in error.items()]
+        raise DerivationError(
+            "; ".join(m for _, m in findings),
+            quantity=failed[0].quantity,
+            path=findings[0][0],
+            findings=findings,
+        )
+    return scenarios.combined(base, derived)
+
+
+def _derive_model(model: Model) -> Derivation:
     clear_domain_points()  # shared within this derivation only, so vetting times stay honest
     tidy.forget()
     mech = Mechanics(model)
@@ -120,7 +150,7 @@ def _derive(model: Model) -> Derivation:
             found = "; ".join(f"{name} gives {typed_text(value)}" for name, value in derived.items())
             findings.append((path, f"{error.message} (all methods: {found})"))
             continue
-        quantities[quantity.name] = _simplest(list(derived.values()))
+        quantities[quantity.name] = _simplest([settle(v, model) for v in derived.values()])
         agreement[quantity.name] = tuple(names)
         proofs[quantity.name] = "; ".join(how)
     if findings:
@@ -215,10 +245,21 @@ def check_consistency(model: Model, mech: Mechanics) -> None:
     place = {d.symbol: d.mapping for d in mech.dofs}
     for constraint in model.constraints:
         residue = tidy.simplify(constraint.gap.subs(place))
+        if residue != 0:  # |R - r| where R > r is declared, atan(tan(theta)) with theta in range
+            residue = tidy.simplify(settle(residue, model))
         if residue != 0:
+            moving = (
+                model.time is not None and model.time in residue.free_symbols - constraint.gap.free_symbols
+            )
             raise DerivationError(
                 f"constraint {constraint.name!r}: the positions in terms of the coordinates violate it "
-                f"(gap = {typed_text(residue)} instead of 0)",
+                f"(gap = {typed_text(residue)} instead of 0)"
+                + (
+                    "; the positions move with the time t but the gap does not: write it relative to the "
+                    "moving support"
+                    if moving
+                    else ""
+                ),
                 path=("constraints", constraint.name),
             )
     if not model.constraints:
@@ -269,8 +310,9 @@ def _simulate(
     findings: list[tuple[tuple[str | int, ...], str]] = []
     for quantity in model.quantities:
         path: tuple[str | int, ...] = ("quantities", quantity.name)
+        measured, at = evaluated_at.simulated(quantity, bounces.counted(quantity, points), quantities)
         try:
-            check = simulator.check(quantity, quantities[quantity.name], points)
+            check = simulator.check(measured, quantities[quantity.name], at)
         except DerivationError as error:
             findings.append((path, error.message))
             continue

@@ -15,7 +15,7 @@ import sympy
 
 from physics.answer_text import typed_text
 from physics.dimensions import DIMENSIONLESS, Dimension, describe
-from physics.engine.model import ForceKind, Model
+from physics.engine.model import Model
 from physics.engine.text import Path
 from physics.errors import SpecError
 from physics.symbolic.dimensional import DimensionMismatch, UnknownDimension, expression_dimension
@@ -104,13 +104,8 @@ def _physics(model: Model, dims: Dims) -> list[Check]:
             own = dims.get(symbol) if symbol in dims else _velocity_dim(model, symbol, dims)
             own = TIME if symbol == model.time else own
             checks.append((("state", names[symbol]), value, own))
-    for index, force in enumerate(model.forces):
-        if force.kind is ForceKind.APPLIED:
-            for axis, component in force.components:
-                checks.append((("forces", index, "force", axis), component, FORCE))
-        else:
-            per = TIME if force.kind is ForceKind.LINEAR_DRAG else LENGTH
-            checks.append((("forces", index, force.kind.value), force.coefficient, MASS / per))
+    for index, force in enumerate(model.force_entries):
+        checks += force.dimensions(("forces", index))
     if model.collision is not None:
         checks.append((("collision", "mass"), model.collision.projectile_mass, MASS))
     if model.impact is not None:

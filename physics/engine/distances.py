@@ -70,6 +70,8 @@ def _side(separation: sympy.Expr, model: Model) -> int | None:
     names = {c.symbol: c.name for c in model.coordinates}
     ranges = {name: (low, high) for name, low, high in model.coordinate_ranges}
     moving = [names[s] for s in separation.free_symbols if s in names]
+    if (bounded := _side_from_bounds(separation, model, ranges)) is not None:
+        return bounded
     if any(name not in ranges or not all(b.is_finite for b in ranges[name]) for name in moving):
         return None
     rng = random.Random(5)  # noqa: S311 - reproducible sampling, not security
@@ -85,6 +87,33 @@ def _side(separation: sympy.Expr, model: Model) -> int | None:
     except (DerivationError, TypeError, ValueError):
         return None
     return (1 if signs == {True} else -1) if len(signs) == 1 else None
+
+
+def _side_from_bounds(
+    separation: sympy.Expr, model: Model, ranges: dict[str, tuple[sympy.Expr, sympy.Expr]]
+) -> int | None:
+    """The sign proved from the coordinates' declared bounds alone (a spring's foot at -L0 with y >= -L0
+    gives L0 + y >= 0, also on a range open above): each coordinate is its bound plus or minus a
+    nonnegative amount, and sympy's assumptions must settle the sign for every such amount."""
+    moved = [c for c in model.coordinates if c.symbol in separation.free_symbols]
+    if not moved or any(c.name not in ranges for c in moved):
+        return None
+    for end in (0, 1):  # from the lower bounds up, then from the upper bounds down
+        if not all(ranges[c.name][end].is_finite for c in moved):
+            continue
+        shifted = separation.subs(
+            {
+                c.symbol: ranges[c.name][end]
+                + (1 - 2 * end) * sympy.Symbol(f"shift_{c.name}", nonnegative=True)
+                for c in moved
+            }
+        )
+        shifted = tidy.simplify(shifted)
+        if shifted.is_nonnegative:
+            return 1
+        if shifted.is_nonpositive:
+            return -1
+    return None
 
 
 def _undecided(model: Model, pair: PairPotential, separation: sympy.Expr) -> str:

@@ -16,6 +16,7 @@ from collections.abc import Mapping
 import sympy
 
 from physics.engine.model import Model, QuantityKind
+from physics.engine.supports import uses_time
 from physics.errors import SpecError, SpecErrors
 
 NAME = "t"
@@ -30,6 +31,7 @@ STEADY = frozenset(
         QuantityKind.TERMINAL_VELOCITY,
         QuantityKind.DAMPED_FREQUENCY,
         QuantityKind.DECAY_TIME,
+        QuantityKind.UNDAMPED_FREQUENCY,
     }
 )
 
@@ -41,10 +43,12 @@ def time_symbol(symbols: Mapping[str, sympy.Symbol]) -> sympy.Symbol:
 def with_time(model: Model, time: sympy.Symbol) -> Model:
     """The model with its `time` set when a given force depends on it; SpecErrors for what it then
     cannot ask, and for a time in the state that no force uses."""
-    used = any(time in e.free_symbols for f in model.forces for _, e in f.components)
+    used = any(time in e.free_symbols for f in model.force_entries for e in f.expressions())
     if not used:
+        if uses_time(model, time):  # a support moving as prescribed: the methods decide what is steady
+            return dataclasses.replace(model, time=time)
         if time in dict(model.state) and time not in model.parameters:
-            raise SpecErrors([SpecError("no force depends on the time t", ("state", NAME))])
+            raise SpecErrors([SpecError("no force or position depends on the time t", ("state", NAME))])
         return model
     faults = [
         SpecError(

@@ -21,10 +21,11 @@ import sympy
 from physics.engine import tidy
 from physics.engine.mechanics import CartesianDof, Mechanics, solve_linear, time_derivative
 from physics.engine.method import Method, NotApplicable
-from physics.engine.model import Frame, Model, PairPotential
+from physics.engine.model import ZERO, Frame, Model, PairPotential
 from physics.engine.notation import split_subscript
 from physics.engine.oscillation import frequency_from_accelerations
 from physics.engine.results import StepKind
+from physics.engine.supports import NOT_STEADY, translation
 
 
 @dataclass(frozen=True)
@@ -37,6 +38,7 @@ class FrameDof:
     acceleration: sympy.Symbol
     mapping: sympy.Expr  # in the generalized coordinates
     carrier: CartesianDof | None  # the frame body's dof on the same axis, for a relative one
+    shift: sympy.Expr = ZERO  # a prescribed support's displacement R(t) on that axis
 
 
 class FramesMethod(Method):
@@ -44,8 +46,16 @@ class FramesMethod(Method):
     title = "Newton's laws in the moving frame, with fictitious forces"
 
     @cached_property
+    def support(self) -> dict[str, sympy.Expr] | None:
+        """A support moving as prescribed, without a frame of the model's own: its displacement R(t) per
+        axis, the frame that moves with it (supports.py)."""
+        return translation(self.model) if self.model.frame is None else None
+
+    @cached_property
     def frame(self) -> Frame:
         frame = self.model.frame
+        if frame is None and self.support:
+            return Frame()  # translating with the support: each body feels -m R''(t)
         if frame is None:
             raise NotApplicable(
                 "the model has no accelerating or rotating frame (a wedge, a rotating element, or `frame:`)"
@@ -56,7 +66,7 @@ class FramesMethod(Method):
     def latex_names(self) -> dict[sympy.Symbol, str]:
         names = dict(self.mech.latex_names)
         for f in self.frame_dofs:
-            if f.carrier is not None:  # x' of the block: its x relative to the frame's body
+            if f.carrier is not None or f.shift != 0:  # x' of the block: its x relative to the frame
                 base, sub = split_subscript(self.mech.notation.cartesian[f.dof.name].tex)
                 primed = f"{base}'" + (f"_{{{sub}}}" if sub else "")
                 names[f.symbol] = primed
@@ -65,7 +75,7 @@ class FramesMethod(Method):
         return names
 
     def tex(self, expr: sympy.Basic) -> str:
-        names = self.latex_names if self.model.frame is not None else self.mech.latex_names
+        names = self.latex_names if self.model.frame is not None or self.support else self.mech.latex_names
         self._printed |= expr.free_symbols
         return str(sympy.latex(expr, symbol_names=names))
 
@@ -78,7 +88,8 @@ class FramesMethod(Method):
         for d in self.mech.dofs:
             axis = d.name.split("_", 1)[0]
             carrier = carriers.get(axis) if d.body != self.frame.body and axis != "phi" else None
-            if carrier is None:
+            shift = (self.support or {}).get(axis, sympy.Integer(0))
+            if carrier is None and shift == 0:
                 result.append(FrameDof(d, d.symbol, d.velocity, d.acceleration, d.mapping, None))
                 continue
             relative = f"{d.name}_rel"
@@ -88,8 +99,9 @@ class FramesMethod(Method):
                     sympy.Symbol(relative, real=True),
                     sympy.Symbol(f"v_{relative}", real=True),
                     sympy.Symbol(f"a_{relative}", real=True),
-                    d.mapping - carrier.mapping,
+                    d.mapping - (carrier.mapping if carrier is not None else shift),
                     carrier,
+                    shift,
                 )
             )
         return tuple(result)
@@ -105,7 +117,7 @@ class FramesMethod(Method):
         mech, frame = self.mech, self.frame
         cartesian = {d.name: d.symbol for d in mech.dofs}
         potential = mech.cartesian_potential - sympy.Add(
-            *(p.energy.subs(p.distance, mech.distance(p, cartesian)) for p in self.centrifugal_potentials)
+            *(p.potential(mech, cartesian) for p in self.centrifugal_potentials)
         )
         result = []
         for d in mech.dofs:
@@ -119,23 +131,32 @@ class FramesMethod(Method):
     def forces(self) -> list[sympy.Expr]:
         """The static forces, friction and given forces, and the translational force -m A."""
         mech = self.mech
-        friction = mech.friction_forces(mech.multipliers)
-        applied = mech.applied_forces(False)
+        loads = mech.load_forces(False, mech.multipliers)
         result = []
-        for f, static, rubbing, given in zip(
-            self.frame_dofs, self.static_forces, friction, applied, strict=True
-        ):
-            force = static + rubbing + given
+        for f, static, given in zip(self.frame_dofs, self.static_forces, loads, strict=True):
+            force = static + given
             if f.carrier is not None:
                 force -= f.dof.inertia * f.carrier.acceleration
+            elif f.shift != 0:  # the support's prescribed acceleration
+                assert self.model.time is not None
+                force -= f.dof.inertia * sympy.diff(f.shift, self.model.time, 2)
             result.append(force)
         return result
 
     def derive(self) -> None:
-        if self.model.frame is None:
+        if self.model.frame is None and not self.support:
             return
         frame = self.frame
-        if frame.body is not None:
+        if self.support:
+            assert self.model.time is not None
+            moved = {axis: sympy.diff(shift, self.model.time, 2) for axis, shift in self.support.items()}
+            self.step(
+                "The frame moving with the support: positions $\\mathbf{r}'$ relative to it; each body feels "
+                "the translational fictitious force $-m\\mathbf{A}$, $\\mathbf{A}$ the support's acceleration",
+                r"\mathbf{r}' = \mathbf{r} - \mathbf{R}(t),\quad \mathbf{F}_{\mathrm{trans}} = -m\,\mathbf{A},\ "
+                + r",\ ".join(rf"A_{axis} = {self.tex(a)}" for axis, a in moved.items()),
+            )
+        elif frame.body is not None:
             self.step(
                 f"The frame moving with «{frame.body}»: positions $\\mathbf{{r}}'$ relative to it; each other "
                 "body feels the translational fictitious force $-m\\mathbf{A}$, $\\mathbf{A}$ the frame's "
@@ -185,7 +206,11 @@ class FramesMethod(Method):
     def _relative(self, expr: sympy.Expr) -> sympy.Expr:
         """An expression in the bodies' Cartesian symbols rewritten in the frame's."""
         return expr.subs(
-            {f.dof.symbol: f.symbol + f.carrier.symbol for f in self.frame_dofs if f.carrier is not None}
+            {
+                f.dof.symbol: f.symbol + (f.carrier.symbol if f.carrier is not None else f.shift)
+                for f in self.frame_dofs
+                if f.carrier is not None or f.shift != 0
+            }
         )
 
     @cached_property
@@ -198,6 +223,10 @@ class FramesMethod(Method):
         ]
         for c in model.constraints:
             gap = self._relative(c.gap)
+            if model.time is not None and model.time in gap.free_symbols:
+                gap = tidy.simplify(gap)
+            if model.time is not None and model.time in gap.free_symbols:
+                raise NotApplicable(f"the constraint {c.name!r} moves relative to the support's frame")
             second = sympy.Add(*(sympy.diff(gap, f.symbol) * f.acceleration for f in self.frame_dofs))
             second += sympy.Add(
                 *(
@@ -279,20 +308,28 @@ class FramesMethod(Method):
         return value
 
     def potential_force(self, coordinate: str) -> sympy.Expr:
-        """At rest in a turning frame: gravity, potentials and the centrifugal force along the coordinate."""
-        if self.frame.rate is None:
+        """At rest in a turning frame: gravity, potentials and the centrifugal force along the coordinate;
+        in a support's frame, gravity, potentials and -m A."""
+        if self.frame.rate is None and not self.support:
             raise NotApplicable(
                 "in a frame moving with a body the fictitious force -m A depends on the motion: no static force"
             )
         q = self.model.coordinate(coordinate).symbol
         place = {d.symbol: d.mapping for d in self.mech.dofs}
+        time = self.model.time
         force = sympy.Add(
             *(
-                static.subs(place) * sympy.diff(f.mapping, q)
+                (
+                    static.subs(place)
+                    - (f.dof.inertia * sympy.diff(f.shift, time, 2) if time is not None else 0)
+                )
+                * sympy.diff(f.mapping, q)
                 for f, static in zip(self.frame_dofs, self.static_forces, strict=True)
             )
         )
         force = tidy.simplify(force)
+        if time is not None and time in force.free_symbols:
+            raise NotApplicable(NOT_STEADY)
         self.step(
             f"Forces along {self.named(coordinate)} at rest in the frame (gravity, centrifugal)",
             rf"{self.mech.notation.letters.generalized}_{{{self.tex(q)}}} = \sum_i \mathbf{{F}}_i\cdot\frac{{\partial \mathbf{{r}}'_i}}{{\partial "
@@ -302,10 +339,13 @@ class FramesMethod(Method):
 
     def frequency(self, coordinate: str, equilibrium: sympy.Expr) -> sympy.Expr:
         """Newton's law in the frame at rest at q: q'' = f(q), linearized about the equilibrium."""
-        if self.frame.rate is None:
+        if self.frame.rate is None and not self.support:
             raise NotApplicable("small oscillations are worked here in a turning frame only")
         rest = dict.fromkeys(self.mech.qd, sympy.Integer(0))
         accelerations = self._coordinate_accelerations(self._solve(rest), rest)
+        time = self.model.time
+        if time is not None and any(time in a.free_symbols for a in accelerations.values()):
+            raise NotApplicable(NOT_STEADY)
         return frequency_from_accelerations(self, coordinate, equilibrium, accelerations)
 
 

@@ -17,15 +17,20 @@ from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import sympy
 
 from physics.answer_text import typed_text
 from physics.engine import tidy
 from physics.engine.mechanics import Mechanics, solve_linear
-from physics.engine.model import AXES, Model, Quantity, QuantityKind
+from physics.engine.model import AXES, IMPACT_KINDS, Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
+from physics.engine.quantity_table import derives
 from physics.errors import DerivationError
+
+if TYPE_CHECKING:
+    from physics.engine.method import Method
 
 Step = Callable[[str, str], None]
 Velocities = dict[str, dict[str, sympy.Expr]]  # body -> axis (x, y, phi) -> velocity component
@@ -340,3 +345,8 @@ METHODS: dict[str, Callable[[Model], Worked]] = {
     "conservation": by_conservation,
     "newton": by_impulse,
 }
+
+
+@derives(*IMPACT_KINDS)
+def derived(method: Method, quantity: Quantity) -> sympy.Expr:
+    return method.impact(quantity)

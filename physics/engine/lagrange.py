@@ -12,10 +12,11 @@ from functools import cached_property
 import sympy
 
 from physics.answer_text import typed_text
-from physics.engine import tidy
+from physics.engine import modes, tidy
 from physics.engine.mechanics import solve_linear, time_derivative
 from physics.engine.method import Method, NotApplicable
 from physics.engine.results import StepKind
+from physics.engine.supports import NOT_STEADY, driven
 
 
 class LagrangeMethod(Method):
@@ -35,7 +36,7 @@ class LagrangeMethod(Method):
         letters = mech.notation.letters
         self.step("The Lagrangian", f"{letters.lagrangian} = {letters.kinetic} - {letters.potential}")
         lam = mech.multipliers
-        friction = [f + a for f, a in zip(mech.friction_forces(lam), mech.applied_forces(False), strict=True)]
+        friction = mech.load_forces(False, lam)
         equations = []
         for c in model.coordinates:
             generalized = sympy.Add(
@@ -137,9 +138,30 @@ class LagrangeMethod(Method):
         index = [c.name for c in self.model.constraints].index(constraint)
         return self.at_state(self.solution[self.mech.multipliers[index]])
 
+    def _at_rest(self) -> list[sympy.Expr]:
+        """Lagrange's equations at rest (q' = q'' = 0): with a support moving as prescribed they keep its
+        acceleration, which must not depend on the time for the system to rest relative to it."""
+        mech = self.mech
+        rest = {**dict.fromkeys(mech.qd, 0), **dict.fromkeys(mech.qdd, 0)}
+        if self.model.contact_loads:
+            raise NotApplicable("kinetic friction on a moving support is not treated at rest")
+        equations = [tidy.simplify(e.subs(rest)) for e in self.system[0][: len(mech.q)]]
+        if any(self.model.time in e.free_symbols for e in equations):
+            raise NotApplicable(NOT_STEADY)
+        return equations
+
     def potential_force(self, coordinate: str) -> sympy.Expr:
         q = self.model.coordinate(coordinate).symbol
         letters = self.mech.notation.letters
+        if driven(self.model):
+            index = list(self.mech.q).index(q)
+            force = tidy.simplify(-self._at_rest()[index])
+            self.step(
+                f"Generalized force on {self.named(coordinate)} at rest relative to the moving support "
+                "(Lagrange's equation with the velocities and accelerations of the coordinates zero)",
+                rf"{letters.generalized}_{{{self.tex(q)}}} = " + self.tex(force),
+            )
+            return force
         force = tidy.simplify(-sympy.diff(self.mech.potential, q))
         self.step(
             f"Generalized force on {self.named(coordinate)}",
@@ -166,9 +188,16 @@ class LagrangeMethod(Method):
         mech = self.mech
         q = self.model.coordinate(coordinate).symbol
         at = {q: equilibrium, **{c: 0 for c in mech.q if c != q}}
-        stiffness = sympy.hessian(mech.potential, mech.q).subs(at)
-        mass = mech.mass_matrix.subs(at)
-        omega2 = _single_nonzero_eigenvalue(mass.inv() * stiffness)
+        if driven(self.model):  # Lagrange's equations linearized about the rest relative to the support
+            self._at_rest()
+            mass, stiffness = self.mode_matrices(at)
+        else:
+            stiffness = sympy.hessian(mech.potential, mech.q).subs(at)
+            mass = mech.mass_matrix.subs(at)
+        block = modes.coupled([mass, stiffness], list(mech.q).index(q))  # other, uncoupled systems apart
+        omega2 = _single_nonzero_eigenvalue(
+            mass.extract(block, block).inv() * stiffness.extract(block, block)
+        )
         self.step(
             "Small oscillations: the mass matrix $\\mathbf{M}$ and stiffness matrix $\\mathbf{K}$",
             r"\mathbf{M}\ddot{\mathbf{q}} + \mathbf{K}\mathbf{q} = 0,\ \mathbf{M} = "

@@ -10,24 +10,26 @@ from typing import Any, TypeVar
 
 import sympy
 
+from physics.answer_text import typed_text
 from physics.dimensions import Dimension
-from physics.engine import forcing, mode_shapes, reach_loading
+from physics.engine import bounces, evaluated_at, forcing, mode_shapes, reach_loading, scenarios, sticking
 from physics.engine.dimensional import check_dimensions
 from physics.engine.distances import with_distance_sides
 from physics.engine.elements import expand_elements
+from physics.engine.loads import ForceEntryLoad
+from physics.engine.loads import entries as force_kinds
 from physics.engine.model import (
     AXES,
     EFFECTIVE_KINDS,
+    EXTREMUM_KINDS,
     IMPACT_KINDS,
     SLIP_KINDS,
     STEADY_KINDS,
-    AppliedForce,
     Body,
     Collision,
     Constraint,
     ConstraintKind,
     Coordinate,
-    ForceKind,
     Frame,
     Friction,
     Impact,
@@ -76,6 +78,8 @@ _QUANTITY_TARGET = {
     QuantityKind.SLIP_END_VELOCITY: "coordinate",
     QuantityKind.DAMPED_FREQUENCY: "coordinate",
     QuantityKind.DECAY_TIME: "coordinate",
+    QuantityKind.UNDAMPED_FREQUENCY: "coordinate",
+    QuantityKind.TURNING_POINT: "coordinate",
     **dict.fromkeys(STEADY_KINDS | EFFECTIVE_KINDS, "coordinate"),
 }
 _SLIPPING_KEYS = {"friction", "normal", "coefficient"}
@@ -124,13 +128,32 @@ def load_model(
 
     With the symbols' `dimensions` (name -> Dimension), every position, energy, mass, ... is also
     checked for dimensional consistency. `ranges`: the symbol table's own ranges (name -> (low, high)),
-    which choose the root a `solve` keeps."""
+    which choose the root a `solve` keeps. `scenarios` are loaded each as a model of its own
+    (scenarios.py)."""
+    base, overrides = scenarios.split(data)
+    model = _load_model(base, symbols, dimensions, ranges)
+    if not overrides:
+        return model
+    again = partial(_load_model, symbols=symbols, dimensions=dimensions, ranges=ranges)
+    return dataclasses.replace(model, scenarios=scenarios.load(base, overrides, again))
+
+
+def _load_model(
+    data: Mapping[str, Any],
+    symbols: Mapping[str, sympy.Symbol],
+    dimensions: Mapping[str, Dimension] | None,
+    ranges: Mapping[str, tuple[sympy.Expr, sympy.Expr]] | None,
+) -> Model:
     expanded = expand_elements(data, symbols)  # composable elements -> the low-level sections
     try:
-        model = _load_low_level(expanded.data, symbols)
+        model = dataclasses.replace(_load_low_level(expanded.data, symbols), elements=expanded.elements)
         if ranges:
             bounds = tuple((symbols[n], low, high) for n, (low, high) in ranges.items() if n in symbols)
-            model = dataclasses.replace(model, symbol_ranges=bounds)
+            # A symbol's own range is its domain too: sampling outside it checks physics nobody posed
+            # (a restitution of 1.02). domain.ranges, when it narrows the symbol further, wins.
+            ranged = {symbol for symbol, _, _ in model.ranges}
+            finite = tuple(b for b in bounds if b[0] not in ranged and all(x.is_finite for x in b[1:]))
+            model = dataclasses.replace(model, symbol_ranges=bounds, ranges=model.ranges + finite)
         faults = check_dimensions(model, dimensions) if dimensions else []
         if faults:
             raise SpecErrors(faults)
@@ -157,7 +180,9 @@ def _load_low_level(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]
     coordinates = _coordinates(data.get("coordinates"), symbols, coordinate_ranges, errors)
     coord_names = {c.name: c.symbol for c in coordinates}
     coord_scope = {**symbols, **coord_names}
-    bodies = _bodies(data.get("bodies"), symbols, coord_scope, errors)
+    time = forcing.time_symbol(symbols)
+    # a support moving as prescribed: positions (and gaps) may use the time (supports.py)
+    bodies = _bodies(data.get("bodies"), symbols, {"t": time, **coord_scope}, errors)
     cartesian = tuple(
         (name, sympy.Symbol(name, real=True)) for body in bodies for name in body.cartesian_names()
     )
@@ -167,20 +192,22 @@ def _load_low_level(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]
     gravity = None
     if data.get("gravity") is not None:
         gravity = errors.read(data["gravity"], symbols, ("gravity",))
-    constraints = _constraints(data.get("constraints"), {**symbols, **dict(cartesian)}, errors)
+    constraints = _constraints(data.get("constraints"), {"t": time, **symbols, **dict(cartesian)}, errors)
     frictions = _frictions(data.get("friction"), symbols, bodies, constraints, coordinates, errors)
     potentials = _potentials(data.get("potentials"), symbols, bodies, errors)
     collision = _collision(data.get("collision"), symbols, bodies, coordinates, errors)
-    time = forcing.time_symbol(symbols)
     state = _state(data.get("state"), symbols, coordinates, errors, time)
     quantities = _quantities(data.get("quantities"), symbols, coordinates, constraints, collision, errors)
     velocities = {f"{c.name}_dot": c.velocity for c in coordinates}
     forces = _forces(data.get("forces"), symbols, {"t": time, **coord_scope, **velocities}, bodies, errors)
     limits = _stated_limits(data.get("limits"), symbols, {q.name for q in quantities}, errors)
     unused = _unused(data.get("unused"), {q.name for q in quantities}, errors)
-    impact = _impact(data.get("impact"), symbols, bodies, quantities, errors)
+    impact = _impact(
+        data.get("impact"), symbols, bodies, quantities, errors, (coordinates, state, constraints)
+    )
     frame = _frame(data.get("frame"), symbols, bodies, errors)
     reach_loading.check_targets(quantities, bodies, state, coordinates, errors.add)
+    bounces.check(quantities, impact, errors.add)
     _check_slip_quantities(quantities, frictions, errors)
     named = [*coord_names, *(c.name for c in constraints), *(b.name for b in bodies)]
     notation = errors.attempt(partial(read_notation, data.get("notation"), named)) or ()
@@ -202,7 +229,7 @@ def _load_low_level(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]
         parameters=tuple(symbols.values()),
         cartesian=cartesian,
         limits=limits,
-        forces=forces,
+        force_entries=forces,
         impact=impact,
         frame=frame,
         notation=notation,
@@ -254,10 +281,11 @@ def _forces(
     scope: Mapping[str, sympy.Symbol],
     bodies: tuple[Body, ...],
     errors: _Collector,
-) -> tuple[AppliedForce, ...]:
-    result: list[AppliedForce] = []
-    names = {b.name for b in bodies}
-    kinds = [k.value for k in ForceKind]
+) -> tuple[ForceEntryLoad, ...]:
+    """Each entry names its body and one kind of load by its key, read by that load's module."""
+    result: list[ForceEntryLoad] = []
+    by_name = {b.name: b for b in bodies}
+    kinds = list(force_kinds.READERS)
     for index, entry in enumerate(_sequence(value, ("forces",), errors)):
         path: Path = ("forces", index)
         spec = _mapping(entry, path, errors)
@@ -266,19 +294,23 @@ def _forces(
         if len(given) != 1:
             errors.add(f"give exactly one of {kinds}", path)
             continue
-        body = spec.get("body")
-        if body not in names:
-            errors.add(f"unknown body {body!r}", (*path, "body"))
+        body = by_name.get(spec.get("body"))  # type: ignore[arg-type]
+        if body is None:
+            errors.add(f"unknown body {spec.get('body')!r}", (*path, "body"))
             continue
-        kind = ForceKind(given[0])
-        if kind is ForceKind.APPLIED:
-            components = _axes(spec[kind.value], scope, (*path, kind.value), errors)
-            if components:
-                result.append(AppliedForce(str(body), kind, components=components))
-            continue
-        coefficient = errors.read(spec[kind.value], symbols, (*path, kind.value))
-        if coefficient is not None:
-            result.append(AppliedForce(str(body), kind, coefficient=coefficient))
+        key = given[0]
+        read = force_kinds.Entry(
+            body,
+            spec[key],
+            (*path, key),
+            expression=lambda text, where: errors.read(text, scope, where),
+            parameter=lambda text, where: errors.read(text, symbols, where),
+            axes=lambda text, where: _axes(text, scope, where, errors),
+            error=errors.add,
+        )
+        load = force_kinds.READERS[key](key, read)
+        if load is not None:
+            result.append(load)
     return tuple(result)
 
 
@@ -570,6 +602,9 @@ def _impact(
     bodies: tuple[Body, ...],
     quantities: tuple[Quantity, ...],
     errors: _Collector,
+    motion: tuple[
+        tuple[Coordinate, ...], tuple[tuple[sympy.Symbol, sympy.Expr], ...], tuple[Constraint, ...]
+    ],
 ) -> Impact | None:
     asked = [q for q in quantities if q.kind in IMPACT_KINDS]
     if value is None:
@@ -583,7 +618,7 @@ def _impact(
         return None
     path: Path = ("impact",)
     spec = _mapping(value, path, errors)
-    _check_keys(spec, {"bodies", "normal", "restitution", "release"}, {"bodies"}, path, errors)
+    _check_keys(spec, {"bodies", "normal", "restitution", "release", "stick"}, {"bodies"}, path, errors)
     entries = spec.get("bodies")
     known = {b.name: b for b in bodies}
     if not isinstance(entries, list) or len(entries) != 2:
@@ -622,10 +657,24 @@ def _impact(
         errors.add(
             "two different bodies: [first, second], the normal pointing from the first", (*path, "bodies")
         )
-    if ("restitution" in spec) == ("release" in spec):
-        errors.add("give exactly one of restitution (a collision) and release (an explosion)", path)
+    stick = spec.get("stick", False)
+    if not isinstance(stick, bool):
+        errors.add("stick is true (the bodies move on together) or false", (*path, "stick"))
+        stick = False
+    if stick and {"restitution", "release", "normal"} & set(spec):
+        errors.add(
+            "bodies that stick together need no restitution, release or normal: their impulse is along "
+            "their relative velocity, and they part at none",
+            (*path, "stick"),
+        )
+    elif not stick and ("restitution" in spec) == ("release" in spec):
+        errors.add(
+            "give exactly one of restitution (a collision) and release (an explosion), or stick: true",
+            path,
+        )
     if fixed is not None and "release" in spec:
         errors.add("an explosion parts two bodies: a fixed partner cannot take a share", (*path, "release"))
+    restitution_stuck: sympy.Expr | None = None
     restitution = (
         errors.read(spec["restitution"], symbols, (*path, "restitution")) if "restitution" in spec else None
     )
@@ -635,6 +684,33 @@ def _impact(
         if "normal" in spec
         else (("x", sympy.Integer(1)),)
     )
+    if "normal" not in spec and len(names) + (fixed is not None) == 2 and all(n in known for n in names):
+        coordinates, state, constraints = motion
+        partner = known[names[1]] if len(names) > 1 else None
+        relative = sticking.relative_velocity(known[names[0]], partner, coordinates, dict(state))
+        if flip:  # the partner is first in the author's order; the approach is the same line
+            relative = {a: -v for a, v in relative.items()}
+        if stick:
+            holding = [c for n in names for c in sticking.held(n, constraints)]
+            found = sticking.stuck_normal(relative)
+            if holding:
+                errors.add(
+                    f"sticking is modelled for free bodies; {', '.join(holding)} also pushes during the "
+                    "impact: give the contact's normal and restitution: 0",
+                    (*path, "stick"),
+                )
+            elif found is None:
+                errors.add("the bodies do not move towards each other at the state", (*path, "stick"))
+            else:
+                normal, restitution_stuck = found, sympy.Integer(0)
+        elif sticking.across_x(relative):
+            errors.add(
+                "the bodies approach across the plane (relative velocity "
+                + ", ".join(f"{a}: {typed_text(v)}" for a, v in relative.items())
+                + "): give the contact's normal (the line of centres, from the first body), or stick: true "
+                "for bodies that move on together",
+                path,
+            )
     if flip:  # written from the fixed partner to the body: kept from the moving body to the partner
         normal = tuple((axis, -component) for axis, component in normal)
     for q in asked:
@@ -648,6 +724,7 @@ def _impact(
             errors.add(f"{q.target!r} moves in the plane: ask for the final_speed", where)
     if len(names) + (fixed is not None) != 2 or not all(n in known for n in names):
         return None
+    restitution = restitution if restitution_stuck is None else restitution_stuck
     if restitution is None and release is None:
         return None
     return Impact(tuple(names), normal, restitution, release, fixed)
@@ -756,17 +833,19 @@ def _quantities(
             others = {n: s for n, s in stand_ins.items() if n != name}
             result += _expression_quantity(str(name), entry, symbols, others, errors)
             continue
+        entry, at_values = evaluated_at.split(str(name), entry, symbols, list(map(str, entries)), errors.add)
         quantity = _quantity(
             str(name), entry, ("quantities", str(name)), symbols, coordinates, constraints, collision, errors
         )
         if quantity is not None:
-            result.append(quantity)
+            result.append(dataclasses.replace(quantity, uses=at_values))
     _check_cycles(result, errors)
     return tuple(result)
 
 
 def _check_cycles(quantities: list[Quantity], errors: _Collector) -> None:
-    """Expressions that use each other in a circle define nothing."""
+    """Expressions (or quantities evaluated `with` each other's values) that use each other in a circle
+    define nothing."""
     uses = {q.name: [name for _, name in q.uses] for q in quantities}
     reported: set[str] = set()
 
@@ -827,9 +906,11 @@ def _quantity(
     allowed = (
         {kind.value}
         | ({"zero"} if kind is QuantityKind.SOLVE else set())
+        | ({"of"} if kind in EXTREMUM_KINDS else set())
         | (_SLIPPING_KEYS if kind is QuantityKind.SLIPPING else set())
     )
-    _check_keys(spec, allowed, allowed, path, errors)
+    optional = {"bounces"} if kind in bounces.FINAL_KINDS else set()
+    _check_keys(spec, allowed | optional, allowed, path, errors)
     target = spec[kind.value]
     where: Path = (*path, kind.value)
     if kind is QuantityKind.REVOLUTION_PERIOD and target == "frame":  # the rotating frame's turn
@@ -850,7 +931,8 @@ def _quantity(
             return None
         return Quantity(name, kind, "state")
     if kind in IMPACT_KINDS:  # checked against the impact section by `_impact`
-        return Quantity(name, kind, str(target))
+        count = errors.read(spec["bounces"], symbols, (*path, "bounces")) if "bounces" in spec else None
+        return Quantity(name, kind, str(target), bounces=count)
     if kind is QuantityKind.MODE_SHAPE:
         return errors.attempt(lambda: mode_shapes.read(name, target, where, coordinates))
     if kind is QuantityKind.NORMAL_FREQUENCY:
@@ -860,14 +942,15 @@ def _quantity(
         return Quantity(name, kind, str(target))
     if kind is QuantityKind.SLIPPING:
         return _slipping_quantity(name, spec, path, symbols, constraints, errors)
-    if kind is QuantityKind.SOLVE:
+    if kind is QuantityKind.SOLVE or kind in EXTREMUM_KINDS:  # a parameter's value, set by an inner quantity
         if target not in symbols:
             errors.add(f"unknown symbol {target!r}", where)
             return None
+        inner_key = "zero" if kind is QuantityKind.SOLVE else "of"
         inner = _quantity(
-            f"{name}.zero",
-            spec.get("zero"),
-            (*path, "zero"),
+            f"{name}.{inner_key}",
+            spec.get(inner_key),
+            (*path, inner_key),
             symbols,
             coordinates,
             constraints,

@@ -16,8 +16,8 @@ from sympy.polys.matrices import DomainMatrix
 from sympy.polys.matrices.exceptions import DMNonInvertibleMatrixError
 
 from physics.engine import tidy as tidy_up
-from physics.engine.contact_friction import friction_load
-from physics.engine.model import Body, ForceKind, Model, PairPotential
+from physics.engine.loads import Traits, View
+from physics.engine.model import Model, PairPotential
 from physics.engine.notation import Notation, notation_of
 from physics.errors import DerivationError
 
@@ -36,8 +36,9 @@ class CartesianDof:
 
 
 def time_derivative(expr: sympy.Expr, model: Model) -> sympy.Expr:
-    """d/dt of an expression in the coordinates and their velocities."""
-    result = sympy.Integer(0)
+    """d/dt of an expression in the coordinates, their velocities and the time (a support moving as
+    prescribed puts the time in the positions: supports.py)."""
+    result = sympy.diff(expr, model.time) if model.time is not None else sympy.Integer(0)
     for c in model.coordinates:
         result += sympy.diff(expr, c.symbol) * c.velocity + sympy.diff(expr, c.velocity) * c.acceleration
     return result
@@ -116,7 +117,7 @@ class Mechanics:
 
     @cached_property
     def potential(self) -> sympy.Expr:
-        """V in the generalized coordinates: gravity plus the pair potentials at the mapped distance."""
+        """V in the generalized coordinates: the loads' potential energies at the mapped positions."""
         by_name = {d.name: d.mapping for d in self.dofs}
         return self._potential(by_name)
 
@@ -144,56 +145,26 @@ class Mechanics:
         gap = self.model.constraints[index].gap
         return [sympy.diff(gap, d.symbol) for d in self.dofs]
 
-    def sliding_direction(self, body: str, coordinate: str) -> list[sympy.Expr]:
-        """Unit vector (over the Cartesian dofs) along which `body` slides as `coordinate` increases."""
-        q = self.model.coordinate(coordinate).symbol
-        tangent = [
-            sympy.diff(d.mapping, q) if d.body == body and not d.name.startswith("phi_") else sympy.Integer(0)
-            for d in self.dofs
-        ]
-        norm = sympy.sqrt(sympy.Add(*(t**2 for t in tangent)))
-        norm = tidy_up.simplify(norm)
-        if norm == 0:
-            raise DerivationError(f"body {body!r} does not move with coordinate {coordinate!r}")
-        return [tidy_up.simplify(t / norm) for t in tangent]
-
-    def friction_forces(self, multipliers: Sequence[sympy.Expr]) -> list[sympy.Expr]:
-        """Kinetic friction on each Cartesian dof: -mu * lambda along the sliding direction (at a rigid
-        body's contact point, with its torque; on a moving surface, with its reaction)."""
+    def load_forces(
+        self,
+        cartesian: bool,
+        multipliers: Sequence[sympy.Expr],
+        which: Callable[[Traits], bool] = lambda traits: True,
+    ) -> list[sympy.Expr]:
+        """The loads' forces on each Cartesian dof beyond their potentials (kinetic friction at the given
+        constraint forces, drag, forces in the coordinates, velocities or time), of the loads `which`
+        selects by their traits. Velocities are the Cartesian velocity symbols (`cartesian`, Newton's
+        view) or the time derivatives of the positions in the coordinates (Lagrange's)."""
+        view = View(cartesian, multipliers)
         total = [sympy.Integer(0) for _ in self.dofs]
-        names = [c.name for c in self.model.constraints]
-        for friction in self.model.frictions:
-            normal = multipliers[names.index(friction.constraint)]
-            load = friction_load(self, friction, friction.coefficient * normal)
-            total = [t + f for t, f in zip(total, load, strict=True)]
+        for load in self.model.loads:
+            if which(load.traits(self.model)):
+                total = [t + f for t, f in zip(total, load.force(self, view), strict=True)]
         return total
 
-    def applied_forces(self, cartesian: bool, drag_only: bool = False) -> list[sympy.Expr]:
-        """Forces without a potential on each Cartesian dof (given forces in the coordinates, drag).
-        Drag reads the body's velocity as the Cartesian velocity symbols (`cartesian`, Newton's view)
-        or as the time derivative of its position in the coordinates (Lagrange's)."""
-        total = [sympy.Integer(0) for _ in self.dofs]
-        for force in self.model.dissipative_forces:
-            if drag_only and force.kind is ForceKind.APPLIED:
-                continue
-            own = [
-                i for i, d in enumerate(self.dofs) if d.body == force.body and not d.name.startswith("phi_")
-            ]
-            if force.kind is ForceKind.APPLIED:
-                given = dict(force.components)
-                for i in own:
-                    total[i] += given.get(self.dofs[i].name.split("_", 1)[0], sympy.Integer(0))
-                continue
-            velocity = {
-                i: self.dofs[i].velocity if cartesian else time_derivative(self.dofs[i].mapping, self.model)
-                for i in own
-            }
-            factor = force.coefficient
-            if force.kind is ForceKind.QUADRATIC_DRAG:
-                factor = factor * sympy.sqrt(sympy.Add(*(v**2 for v in velocity.values())))
-            for i, v in velocity.items():
-                total[i] -= factor * v
-        return total
+    def velocity_of(self, dof: CartesianDof) -> sympy.Expr:
+        """A Cartesian dof's velocity in the coordinates and their velocities."""
+        return time_derivative(dof.mapping, self.model)
 
     def generalized(self, forces: Sequence[sympy.Expr]) -> list[sympy.Expr]:
         """Generalized forces Q_j = sum_i F_i dx_i/dq_j of forces on the Cartesian dofs."""
@@ -205,41 +176,11 @@ class Mechanics:
     # --- shared ------------------------------------------------------------------------------
 
     def _potential(self, place: Mapping[str, sympy.Expr]) -> sympy.Expr:
-        total = sympy.Integer(0)
-        if self.model.gravity is not None:
-            for body in self.model.bodies:
-                if f"y_{body.name}" in place:
-                    total += body.mass * self.model.gravity * place[f"y_{body.name}"]
-        for pair in self.model.potentials:
-            total += pair.energy.subs(pair.distance, self.distance(pair, place))
-        moving = self.model.moving_symbols
-        for force in self.model.forces:
-            if force.constant(moving):  # a constant force F has the potential -F . r
-                for axis, component in force.components:
-                    if f"{axis}_{force.body}" in place:
-                        total -= component * place[f"{axis}_{force.body}"]
-        return total
+        return sympy.Add(*(load.potential(self, place) for load in self.model.loads))
 
     def distance(self, pair: PairPotential, place: Mapping[str, sympy.Expr]) -> sympy.Expr:
-        """The length between the pair's bodies (or body and anchor): Euclidean on several axes; on one
-        axis |b - a| with its sign resolved when the model was loaded (`PairPotential.side`)."""
-        first = self.model.body(pair.bodies[0])
-        if len(pair.bodies) == 2:
-            second: Body | None = self.model.body(pair.bodies[1])
-            axes = [a for a, _ in first.position if any(b == a for b, _ in second.position)] if second else []
-            ends = [(place[f"{a}_{first.name}"], place[f"{a}_{pair.bodies[1]}"]) for a in axes]
-        else:
-            anchor = dict(pair.anchor)
-            axes = [a for a, _ in first.position if a in anchor]
-            ends = [(anchor[a], place[f"{a}_{first.name}"]) for a in axes]
-        if not ends:
-            raise DerivationError(f"the bodies of {pair.bodies} share no axis")
-        if len(ends) == 1:
-            return (pair.side or 1) * (ends[0][1] - ends[0][0])
-        squared = sympy.Add(*((b - a) ** 2 for a, b in ends))
-        if squared.has(sympy.sin, sympy.cos):  # polar positions: r^2 cos^2 + r^2 sin^2 is r^2
-            squared = sympy.trigsimp(squared)
-        return sympy.sqrt(squared)
+        """The length between a pair potential's bodies (or body and anchor) at `place`."""
+        return pair.length(self.model, place)
 
 
 def solve_linear(

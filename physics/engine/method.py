@@ -10,26 +10,25 @@ from functools import cached_property, lru_cache
 import sympy
 
 from physics.answer_text import typed_text
-from physics.engine import damping, impact, mode_shapes, modes, slipping, tidy, trajectory, work_energy
+from physics.engine import bounces, evaluated_at, impact, modes, quantity_table, tidy, work_energy
 from physics.engine.mechanics import Mechanics
-from physics.engine.model import (
-    IMPACT_KINDS,
-    ORBIT_KINDS,
-    SLIP_KINDS,
-    TRAJECTORY_KINDS,
-    Model,
-    Quantity,
-    QuantityKind,
-)
+from physics.engine.model import Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
 from physics.engine.results import MethodReport, Step, StepKind
 from physics.engine.roots import admissible, declared_range
+from physics.engine.settle import plain_angle, settle
+from physics.engine.supports import driven
 from physics.errors import DerivationError
 
 
 @lru_cache(maxsize=32)
 def stable_equilibrium(model: Model) -> dict[sympy.Symbol, sympy.Expr]:
     """The stable equilibrium of all the coordinates (shared by the methods: it is where they linearize)."""
+    if driven(model):  # grad V = 0 is no rest relative to a moving support
+        raise NotApplicable(
+            "normal modes and damped oscillations are worked about a fixed support only (this one moves as "
+            "prescribed): ask for angular_frequency of one coordinate"
+        )
     return modes.equilibrium_point(model, Mechanics(model))
 
 
@@ -104,6 +103,8 @@ class Method(ABC):
             raise NotApplicable(f"{self.title} does not treat impacts")
         if self._impact is None:
             self._impact = work(self.model)
+        if quantity.bounces is not None:  # just after the n-th bounce off the fixed partner
+            return bounces.final(self, quantity, self._impact)
         return impact.answer(self._impact, self.model, quantity, self.step)
 
     def after_impact(self, quantity: Quantity) -> sympy.Expr:
@@ -117,6 +118,8 @@ class Method(ABC):
         for title, latex in steps:
             self.step(title, latex)
         rates = impact.coordinate_rates(self.model, after)
+        if quantity.bounces is not None:  # bounced again and again off the fixed partner
+            rates = bounces.velocities_after(self, quantity, rates)
         self.step(
             "The motion after the impact starts with these velocities",
             r",\ ".join(
@@ -129,7 +132,7 @@ class Method(ABC):
         }
         bounced = dataclasses.replace(self.model, state=tuple(state.items()), impact=None)
         solver = type(self)(bounced, Mechanics(bounced))
-        result = solver.answer(dataclasses.replace(quantity, after=""))
+        result = solver.answer(dataclasses.replace(quantity, after="", bounces=None))
         for step in solver.steps:
             self.step(f"{step.title} (after the impact)", step.latex)
         return result
@@ -141,7 +144,7 @@ class Method(ABC):
     @cached_property
     def mode_frequencies(self) -> list[sympy.Expr]:
         """Squared normal-mode frequencies, lowest first."""
-        if self.model.frictions or self.model.dissipative_forces:
+        if self.model.nonconservative_loads:
             raise NotApplicable("normal modes are for undamped systems")
         point = stable_equilibrium(self.model)
         mass, stiffness = self.mode_matrices(point)
@@ -161,66 +164,14 @@ class Method(ABC):
     # --- quantities -------------------------------------------------------------------------------
 
     def answer(self, quantity: Quantity) -> sympy.Expr:
-        kind = quantity.kind
-        if quantity.after:  # in the motion that starts just after the impact
+        """The quantity by this method: its kind's handler in the quantity table (quantity_table.py)."""
+        if evaluated_at.applies(quantity):  # a modifier: with a symbol at another quantity's value
+            return evaluated_at.answer(self, quantity)
+        if quantity.after:  # a modifier: in the motion that starts just after the impact
             return self.after_impact(quantity)
-        if quantity.at:  # where the motion from the state arrives: speed, velocity, force, acceleration
+        if quantity.at:  # a modifier: where the motion from the state arrives (speed, force, ...)
             return work_energy.answer(self, quantity)
-        if kind in TRAJECTORY_KINDS:
-            return trajectory.answer(self, quantity)
-        if kind is QuantityKind.ACCELERATION:
-            return self.acceleration(quantity.target)
-        if kind is QuantityKind.FORCE:
-            return self.force(quantity.target)
-        if kind is QuantityKind.POTENTIAL_FORCE:
-            return self.potential_force(quantity.target)
-        if kind is QuantityKind.EQUILIBRIUM:
-            return self.equilibrium(quantity.target)
-        if kind is QuantityKind.STIFFNESS:
-            q = self.model.coordinate(quantity.target).symbol
-            q0 = self.equilibrium(quantity.target)
-            stiffness = tidy.simplify(-sympy.diff(self.potential_force(quantity.target), q).subs(q, q0))
-            generalized = self.mech.notation.letters.generalized
-            self.step(
-                f"Stiffness at the equilibrium of {self.named(quantity.target)}",
-                rf"-\left.\frac{{\partial {generalized}_{{{self.tex(q)}}}}}{{\partial {self.tex(q)}}}"
-                rf"\right|_{{{self.tex(q)}_{{\mathrm{{eq}}}}}} = " + self.tex(stiffness),
-            )
-            return stiffness
-        if kind is QuantityKind.ANGULAR_FREQUENCY:
-            return self.frequency(quantity.target, self.equilibrium(quantity.target))
-        if kind is QuantityKind.PERIOD:
-            omega = self.frequency(quantity.target, self.equilibrium(quantity.target))
-            return tidy.simplify(2 * sympy.pi / omega)
-        if kind is QuantityKind.EXPRESSION:
-            assert quantity.expression is not None
-            values = {symbol: self.answer(self.model.quantity(name)) for symbol, name in quantity.uses}
-            return tidy.simplify(quantity.expression.subs(values))
-        if kind is QuantityKind.NORMAL_FREQUENCY:
-            return modes.pick(self.mode_frequencies, int(quantity.target))
-        if kind is QuantityKind.TERMINAL_VELOCITY:
-            return self.terminal_velocity(quantity.target)
-        if kind in IMPACT_KINDS:
-            return self.impact(quantity)
-        if kind in SLIP_KINDS:
-            return slipping.sliding_phase(self, quantity)
-        if kind is QuantityKind.SLIPPING:
-            return slipping.slipping_limit(self, quantity)
-        if kind in damping.KINDS:
-            try:
-                return damping.answer(self, quantity, stable_equilibrium(self.model))
-            except damping.NotThisWay as why:
-                raise NotApplicable(str(why)) from None
-        if kind is QuantityKind.MODE_SHAPE:
-            return mode_shapes.answer(self, quantity, stable_equilibrium(self.model))
-        if kind in ORBIT_KINDS:
-            from physics.engine import orbits  # here: orbits builds on Method
-
-            return orbits.answer(self, quantity)
-        if kind is QuantityKind.SOLVE:
-            assert quantity.inner is not None and quantity.parameter is not None
-            return self.solve_for(quantity.parameter, self.answer(quantity.inner), quantity.name)
-        return self.collision(kind)
+        return quantity_table.handler(quantity)(self, quantity)
 
     def equilibrium(self, coordinate: str) -> sympy.Expr:
         """The stable root of the generalized force Q(q) = 0: Q'(q0) < 0 on the whole domain."""
@@ -249,6 +200,7 @@ class Method(ABC):
                 f"the roots {typed_text(roots)} of Q = {typed_text(force)}",
                 quantity=coordinate,
             )
+        stable[0] = plain_angle(tidy.simplify(stable[0]), self.model)  # not sympy's half-angle form
         generalized, at = self.mech.notation.letters.generalized, rf"{self.tex(q)}_{{\mathrm{{eq}}}}"
         self.step(
             f"Equilibrium of {self.named(coordinate)}: the generalized force vanishes, and pulls back",
@@ -323,7 +275,9 @@ class Method(ABC):
         return f"along ${axis}$"
 
     def at_state(self, expr: sympy.Expr) -> sympy.Expr:
-        return tidy.simplify(expr.subs(dict(self.model.state)))
+        value = tidy.simplify(expr.subs(dict(self.model.state)))
+        settled = settle(value, self.model)  # |R - r| where R > r is declared
+        return value if settled == value else tidy.simplify(settled)
 
 
 def _declared(symbol: sympy.Symbol, model: Model) -> str:

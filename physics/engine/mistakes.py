@@ -184,8 +184,8 @@ def _drive_symbols(model: Model) -> set[sympy.Symbol]:
         return set()
     at = dict(model.state).get(model.time, model.time)
     found: set[sympy.Symbol] = {model.time}
-    for force in model.forces:
-        for _, component in force.components:
+    for force in model.force_entries:
+        for component in force.expressions():
             for atom in component.atoms(sympy.sin, sympy.cos, sympy.tan):
                 if atom.has(model.time):
                     found |= atom.args[0].subs(model.time, at).free_symbols | atom.args[0].free_symbols
@@ -297,6 +297,8 @@ def _distinct(
         seen = values(expr)
         if seen is None or answer is None or all(abs(v) < 1e-12 for v in seen) or same(seen, answer):
             continue
+        if any(abs(v.imag) > 1e-12 * max(1.0, abs(v)) for v in seen) and not any(a.imag for a in answer):
+            continue  # not real where the answer is: (-e)^n for a count of bounces n, no answer to type
         if any(same(seen, other) for _, other in kept):
             continue
         kept.append((KnownMistake(expr, feedback), seen))

@@ -17,6 +17,7 @@ from physics.engine import tidy
 from physics.engine.mechanics import solve_linear
 from physics.engine.model import Coordinate, Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
+from physics.engine.quantity_table import derives
 from physics.engine.text import Path
 from physics.errors import DerivationError, SpecError, SpecErrors
 
@@ -121,3 +122,10 @@ def _vanishes(matrix: sympy.Matrix, vector: sympy.Matrix, points: list[dict[symp
             if abs(sum(a * b for a, b in zip(row, v, strict=True))) > 1e-12 * max(scale, 1e-300):
                 return False
     return True
+
+
+@derives(QuantityKind.MODE_SHAPE)
+def derived(method: Method, quantity: Quantity) -> sympy.Expr:
+    from physics.engine.method import stable_equilibrium
+
+    return answer(method, quantity, stable_equilibrium(method.model))

@@ -1,4 +1,8 @@
-"""A mechanical model as data: coordinates, bodies, constraints, forces, events and asked quantities.
+"""A mechanical model as data: coordinates, bodies, loads, constraints, events and asked quantities.
+
+The loads (gravity, pair potentials, the `forces:` entries, kinetic friction) are one list, `loads`,
+which every method consumes through the protocol of `physics.engine.loads`; each constraint says how
+it acts (`Action`: bilateral, unilateral, impulsive).
 
 Two descriptions of the same system live side by side on purpose: each body's position (and angle)
 in terms of the generalized coordinates, used by the Lagrangian methods, and the constraints written
@@ -9,12 +13,21 @@ gap as "how far from violating the constraint" makes lambda the magnitude (norma
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
 from enum import StrEnum
+from typing import Any
 
 import sympy
 
 from physics.dimensions import Dimension
+from physics.engine.loads import ForceEntryLoad, Load, Traits
+from physics.engine.loads.applied import AppliedForce, ForceKind
+from physics.engine.loads.friction import Friction
+from physics.engine.loads.gravity import Gravity
+from physics.engine.loads.pair import PairPotential
+
+__all__ = ["AppliedForce", "ForceKind", "Friction", "PairPotential"]  # re-exported: they are loads
 
 AXES = ("x", "y")
 ZERO = sympy.Integer(0)
@@ -45,6 +58,15 @@ class Body:
         return names + ((f"phi_{self.name}",) if self.angle is not None else ())
 
 
+class Action(StrEnum):
+    """How a constraint's force acts: the methods solve every held constraint as bilateral; a unilateral
+    one's force must then keep its sign (contacts.py), an impulsive one acts for an instant (impact.py)."""
+
+    BILATERAL = "bilateral"  # either sign: an axle, a rolling grip, a bead on a wire
+    UNILATERAL = "unilateral"  # one sign: a surface only pushes, a string only pulls
+    IMPULSIVE = "impulsive"  # an impulse at one instant: two bodies meeting
+
+
 class ConstraintKind(StrEnum):
     SURFACE = "surface"
     STRING = "string"
@@ -58,53 +80,10 @@ class Constraint:
     gap: sympy.Expr  # in the bodies' Cartesian symbols
     kind: ConstraintKind
 
-
-@dataclass(frozen=True)
-class Friction:
-    """Kinetic friction mu*lambda at a constraint, opposing the slip, which is towards increasing
-    `sliding` coordinate. On a rigid body it acts at the `contact` point (relative to the body's centre)
-    and so has a torque; with `against`, the surface is that moving body, which feels the reaction."""
-
-    constraint: str
-    body: str
-    coefficient: sympy.Expr
-    sliding: str
-    contact: tuple[tuple[str, sympy.Expr], ...] = ()  # (axis, offset from the centre); () at the centre
-    against: str | None = None
-
-
-@dataclass(frozen=True)
-class PairPotential:
-    """A potential energy U(d) of the distance d between two bodies, or a body and a fixed anchor."""
-
-    name: str
-    bodies: tuple[str, ...]
-    anchor: tuple[tuple[str, sympy.Expr], ...]
-    energy: sympy.Expr
-    distance: sympy.Symbol
-    # On one shared axis the length is |b - a|; +1/-1 says which sign b - a keeps on the model's domain,
-    # 0 that the energy is even in the distance (the sign does not matter). Set by `load_model`.
-    side: int = 1
-
-
-class ForceKind(StrEnum):
-    APPLIED = "force"  # given components, constant or in the coordinates and their velocities
-    LINEAR_DRAG = "drag"  # -b v (viscous damping)
-    QUADRATIC_DRAG = "quadratic_drag"  # -c |v| v (air drag)
-
-
-@dataclass(frozen=True)
-class AppliedForce:
-    """A force on a body (at its centre): given components, or drag opposing its velocity."""
-
-    body: str
-    kind: ForceKind
-    components: tuple[tuple[str, sympy.Expr], ...] = ()  # for APPLIED: (axis, expression)
-    coefficient: sympy.Expr = ZERO  # for drag
-
-    def constant(self, moving: set[sympy.Symbol]) -> bool:
-        """A given force that depends on no coordinate or velocity: it has a potential, -F . r."""
-        return self.kind is ForceKind.APPLIED and not any(e.free_symbols & moving for _, e in self.components)
+    @property
+    def action(self) -> Action:
+        unilateral = self.kind in (ConstraintKind.SURFACE, ConstraintKind.STRING)
+        return Action.UNILATERAL if unilateral else Action.BILATERAL
 
 
 @dataclass(frozen=True)
@@ -145,6 +124,7 @@ class Impact:
     restitution: sympy.Expr | None
     release: sympy.Expr | None
     fixed: str | None = None
+    action = Action.IMPULSIVE
 
 
 class QuantityKind(StrEnum):
@@ -177,6 +157,8 @@ class QuantityKind(StrEnum):
     SLIPPING = "slipping"  # the parameter value at which a holding contact's |f| reaches mu_s N
     DAMPED_FREQUENCY = "damped_frequency"  # of an underdamped oscillation about the equilibrium
     DECAY_TIME = "decay_time"  # the amplitude's e-folding time of that oscillation
+    TURNING_POINT = "turning_point"  # where the coordinate first stops, moving from the state
+    UNDAMPED_FREQUENCY = "undamped_frequency"  # of that oscillation with the damping left out: sqrt(k/m)
     MODE_SHAPE = "mode_shape"  # amplitude ratio of two coordinates in the n-th normal mode
     # steady circular motion: the angle coordinate turns uniformly, the others stay at the state (orbits.py)
     CIRCULAR_SPEED = "circular_speed"
@@ -186,6 +168,9 @@ class QuantityKind(StrEnum):
     # with the cyclic coordinates' momenta held at their state values (the effective potential)
     CIRCULAR_RADIUS = "circular_radius"
     EPICYCLIC_FREQUENCY = "epicyclic_frequency"
+    # the value of a parameter at which another quantity is largest or smallest (extremum.py)
+    MAXIMIZE = "maximize"
+    MINIMIZE = "minimize"
 
 
 REACH_KINDS = frozenset({QuantityKind.SPEED, QuantityKind.VELOCITY})
@@ -199,6 +184,7 @@ SLIP_KINDS = frozenset({QuantityKind.SLIP_TIME, QuantityKind.SLIP_DISTANCE, Quan
 STEADY_KINDS = frozenset(
     {QuantityKind.CIRCULAR_SPEED, QuantityKind.REVOLUTION_PERIOD, QuantityKind.CIRCULAR_ENERGY}
 )
+EXTREMUM_KINDS = frozenset({QuantityKind.MAXIMIZE, QuantityKind.MINIMIZE})
 EFFECTIVE_KINDS = frozenset({QuantityKind.CIRCULAR_RADIUS, QuantityKind.EPICYCLIC_FREQUENCY})
 ORBIT_KINDS = STEADY_KINDS | EFFECTIVE_KINDS | {QuantityKind.MECHANICAL_ENERGY}
 # Times, lengths, speeds and frequencies: where the answer is positive, a negative value is no slip
@@ -209,6 +195,7 @@ MAGNITUDE_KINDS = frozenset(
         QuantityKind.PERIOD,
         QuantityKind.NORMAL_FREQUENCY,
         QuantityKind.DAMPED_FREQUENCY,
+        QuantityKind.UNDAMPED_FREQUENCY,
         QuantityKind.DECAY_TIME,
         QuantityKind.PROJECTILE_SPEED,
         QuantityKind.SPEED,
@@ -231,8 +218,8 @@ class Quantity:
     name: str
     kind: QuantityKind
     target: str = ""  # coordinate or constraint name
-    parameter: sympy.Symbol | None = None  # for SOLVE
-    inner: Quantity | None = None  # for SOLVE: the quantity set to zero
+    parameter: sympy.Symbol | None = None  # for SOLVE, MAXIMIZE, MINIMIZE
+    inner: Quantity | None = None  # for SOLVE: the quantity set to zero; MAXIMIZE, MINIMIZE: made extreme
     # for EXPRESSION: the formula, and the stand-in symbol of each earlier quantity it uses
     expression: sympy.Expr | None = None
     uses: tuple[tuple[sympy.Symbol, str], ...] = ()
@@ -245,6 +232,9 @@ class Quantity:
     coefficient: sympy.Expr | None = None
     ratio: tuple[str, ...] = ()  # for MODE_SHAPE: (numerator, denominator) coordinates; target = mode
     after: str = ""  # "impact": taken in the motion that starts just after the model's impact
+    bounces: sympy.Expr | None = (
+        None  # with `after`: after this many bounces off the fixed partner (bounces.py)
+    )
 
 
 @dataclass(frozen=True)
@@ -255,6 +245,20 @@ class StatedLimit:
     where: tuple[tuple[sympy.Symbol, sympy.Expr], ...]
     expect: tuple[tuple[str, sympy.Expr], ...]
     description: str
+
+
+@dataclass(frozen=True)
+class AuthoredElement:
+    """An element as the author wrote it under `elements:` (its fields as read), with the names of what
+    it generated: figures draw the picture the author described from these, not from the low-level model."""
+
+    kind: str
+    name: str
+    fields: Mapping[str, Any] = field(compare=False)  # YAML data, not hashable
+    bodies: tuple[str, ...] = ()
+    constraints: tuple[str, ...] = ()
+    potentials: tuple[str, ...] = ()  # PairPotential names
+    coordinates: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -274,7 +278,8 @@ class Model:
     parameters: tuple[sympy.Symbol, ...]  # the problem's symbols, in table order
     cartesian: tuple[tuple[str, sympy.Symbol], ...]  # Cartesian symbol names of every body
     limits: tuple[StatedLimit, ...] = ()
-    forces: tuple[AppliedForce, ...] = ()
+    # the `forces:` section's entries, of any kind (loads/entries.py); `forces` are its given forces and drag
+    force_entries: tuple[ForceEntryLoad, ...] = ()
     dimensions_checked: bool = False
     impact: Impact | None = None  # every term was found dimensionally consistent when loaded
     frame: Frame | None = None  # declared (`frame:`) or implied by an element (a wedge, a rotating frame)
@@ -288,6 +293,11 @@ class Model:
     symbol_ranges: tuple[
         tuple[sympy.Symbol, sympy.Expr, sympy.Expr], ...
     ] = ()  # quantities the author derives on purpose without a part asking for them
+    # other configurations of the same system, each a whole model with its own quantities (scenarios.py)
+    scenarios: tuple[tuple[str, Model], ...] = ()
+
+    # the elements the author wrote, in the order they were expanded (empty for a low-level model)
+    elements: tuple[AuthoredElement, ...] = ()
 
     def body(self, name: str) -> Body:
         return next(b for b in self.bodies if b.name == name)
@@ -298,16 +308,41 @@ class Model:
     def constraint(self, name: str) -> Constraint:
         return next(c for c in self.constraints if c.name == name)
 
+    def acting(self, action: Action) -> tuple[Constraint | Impact, ...]:
+        """The constraints that act so, the impact among them: one list for every kind of constraint."""
+        held: tuple[Constraint | Impact, ...] = self.constraints
+        every = (*held, self.impact) if self.impact is not None else held
+        return tuple(c for c in every if c.action is action)
+
     @property
     def moving_symbols(self) -> set[sympy.Symbol]:
         moving = {c.symbol for c in self.coordinates} | {c.velocity for c in self.coordinates}
         return moving | ({self.time} if self.time is not None else set())
 
     @property
-    def dissipative_forces(self) -> tuple[AppliedForce, ...]:
-        """Forces without a potential: drag, and given forces that depend on coordinates or velocities."""
-        moving = self.moving_symbols
-        return tuple(f for f in self.forces if not f.constant(moving))
+    def loads(self) -> tuple[Load, ...]:
+        """Every load on the bodies, whichever section gave it: what the methods consume (loads/)."""
+        gravity = (Gravity(self.gravity),) if self.gravity is not None else ()
+        return (*gravity, *self.potentials, *self.force_entries, *self.frictions)
+
+    @property
+    def forces(self) -> tuple[AppliedForce, ...]:
+        """The given forces and drag of the `forces:` section (what its figures draw)."""
+        return tuple(f for f in self.force_entries if isinstance(f, AppliedForce))
+
+    def loads_where(self, which: Callable[[Traits], bool]) -> tuple[Load, ...]:
+        """The loads whose traits `which` selects (e.g. those that work through a constraint force)."""
+        return tuple(load for load in self.loads if which(load.traits(self)))
+
+    @property
+    def nonconservative_loads(self) -> tuple[Load, ...]:
+        """Loads without a potential: friction, drag, forces in the coordinates, velocities or time."""
+        return self.loads_where(lambda traits: not traits.conservative)
+
+    @property
+    def contact_loads(self) -> tuple[Load, ...]:
+        """Loads whose size is a constraint's force (kinetic friction, mu N): they do work through it."""
+        return self.loads_where(lambda traits: bool(traits.constraints))
 
     def quantity(self, name: str) -> Quantity:
         return next(q for q in self.quantities if q.name == name)

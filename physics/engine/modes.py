@@ -24,6 +24,21 @@ from physics.errors import DerivationError
 ORDER_POINTS = 6
 
 
+def coupled(matrices: Sequence[sympy.Matrix], index: int) -> list[int]:
+    """The coordinates that move with coordinate `index`: linked to it, directly or through others, by a
+    non-zero off-diagonal entry of any of the matrices. Two pendulums side by side are two blocks, each
+    with its own frequency."""
+    block, pending = {index}, [index]
+    while pending:
+        i = pending.pop()
+        for matrix in matrices:
+            for j in range(matrix.shape[0]):
+                if j not in block and (tidy.simplify(matrix[i, j]) != 0 or tidy.simplify(matrix[j, i]) != 0):
+                    block.add(j)
+                    pending.append(j)
+    return sorted(block)
+
+
 def equilibrium_point(model: Model, mech: Mechanics) -> dict[sympy.Symbol, sympy.Expr]:
     """The stable equilibrium of all coordinates together."""
     potential = mech.potential

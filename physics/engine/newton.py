@@ -13,12 +13,13 @@ from functools import cached_property
 import sympy
 
 from physics.answer_text import typed_text
-from physics.engine import collision, tidy
+from physics.engine import collision, modes, tidy
 from physics.engine.frames import centripetal_accelerations
 from physics.engine.mechanics import solve_linear, time_derivative
 from physics.engine.method import Method, NotApplicable
 from physics.engine.model import QuantityKind
 from physics.engine.results import StepKind
+from physics.engine.supports import driven
 
 
 class NewtonMethod(Method):
@@ -66,14 +67,13 @@ class NewtonMethod(Method):
 
     @cached_property
     def applied_forces(self) -> list[sympy.Expr]:
-        """Gravity and potentials as -grad V in Cartesian coordinates, plus kinetic friction; a turning
+        """The loads: -grad V in Cartesian coordinates plus the forces without a potential; a turning
         frame's centrifugal potential stands for the centripetal acceleration (moved to the left side)."""
         mech = self.mech
-        friction = mech.friction_forces(mech.multipliers)
-        applied = mech.applied_forces(True)
+        loads = mech.load_forces(True, mech.multipliers)
         return [
-            -sympy.diff(mech.cartesian_potential, d.symbol) + f + a + d.inertia * c
-            for d, f, a, c in zip(mech.dofs, friction, applied, self.centripetal, strict=True)
+            -sympy.diff(mech.cartesian_potential, d.symbol) + f + d.inertia * c
+            for d, f, c in zip(mech.dofs, loads, self.centripetal, strict=True)
         ]
 
     @cached_property
@@ -99,6 +99,10 @@ class NewtonMethod(Method):
                     for b in mech.dofs
                 )
             )
+            if model.time is not None and model.time in c.gap.free_symbols:  # a support moving as prescribed
+                t = model.time
+                second += 2 * sympy.Add(*(sympy.diff(c.gap, a.symbol, t) * a.velocity for a in mech.dofs))
+                second += sympy.diff(c.gap, t, 2)
             self.step(
                 f"The same constraint for the accelerations ({self.mech.notation.conditions[c.name]}), "
                 "differentiated twice in time",
@@ -150,6 +154,11 @@ class NewtonMethod(Method):
 
     def potential_force(self, coordinate: str) -> sympy.Expr:
         """Virtual work of the Cartesian forces of the potentials: Q = sum F_i dx_i/dq."""
+        if driven(self.model):
+            raise NotApplicable(
+                "at rest relative to a moving support the bodies still accelerate with it: the forces "
+                "alone do not balance (d'Alembert's inertial forces do)"
+            )
         mech = self.mech
         q = self.model.coordinate(coordinate).symbol
         place = mech.cartesian_state()
@@ -178,7 +187,9 @@ class NewtonMethod(Method):
         symbols = [d.symbol for d in mech.dofs]
         stiffness = sympy.hessian(mech.cartesian_potential, symbols).subs(point)
         mass = sympy.diag(*[d.inertia for d in mech.dofs])
-        values = [tidy.simplify(v) for v in (mass.inv() * stiffness).eigenvals()]
+        moved = [i for i, d in enumerate(mech.dofs) if sympy.diff(d.mapping, q) != 0]
+        block = sorted({j for i in moved for j in modes.coupled([stiffness], i)})  # other systems apart
+        values = [tidy.simplify(v) for v in (mass.inv() * stiffness).extract(block, block).eigenvals()]
         nonzero = [v for v in values if v != 0]
         if len(nonzero) != 1:
             raise NotApplicable(f"expected one oscillating mode, found eigenvalues {typed_text(values)}")

@@ -31,9 +31,10 @@ from physics.engine import tidy
 from physics.engine.conservation import ConservationMethod, cyclic_indices
 from physics.engine.mechanics import Mechanics, solve_linear, time_derivative
 from physics.engine.method import Method, NotApplicable
-from physics.engine.model import EFFECTIVE_KINDS, Model, Quantity, QuantityKind
+from physics.engine.model import EFFECTIVE_KINDS, ORBIT_KINDS, Model, Quantity, QuantityKind
 from physics.engine.newton import NewtonMethod
 from physics.engine.proof import domain_points
+from physics.engine.quantity_table import derives
 from physics.errors import DerivationError
 
 FRAME = "frame"  # `revolution_period: frame`: one turn of the model's rotating frame
@@ -49,6 +50,7 @@ KINETIC_ONLY = "That is the kinetic energy only: the total mechanical energy add
 POTENTIAL_ONLY = "That is the potential energy only: the total mechanical energy adds the kinetic energy."
 
 
+@derives(*ORBIT_KINDS)
 def answer(method: Method, quantity: Quantity) -> sympy.Expr:
     """The orbit quantity as `method` derives it."""
     kind = quantity.kind

@@ -10,7 +10,7 @@ from __future__ import annotations
 import sympy
 
 from physics.answer_text import typed_text
-from physics.engine import tidy
+from physics.engine import modes, tidy
 from physics.engine.method import Method, NotApplicable
 
 
@@ -23,7 +23,8 @@ def frequency_from_accelerations(
     q = method.model.coordinate(coordinate).symbol
     at = {q: equilibrium, **{c: 0 for c in mech.q if c != q}}
     stiffness = sympy.Matrix([[-sympy.diff(accelerations[a], c) for c in mech.q] for a in mech.qdd]).subs(at)
-    values = [tidy.simplify(v) for v in stiffness.eigenvals()]
+    block = modes.coupled([stiffness], list(mech.q).index(q))  # other, uncoupled systems apart
+    values = [tidy.simplify(v) for v in stiffness.extract(block, block).eigenvals()]
     nonzero = [v for v in values if v != 0]
     if len(nonzero) != 1:
         raise NotApplicable(f"expected one oscillating mode, found {typed_text(values)}")

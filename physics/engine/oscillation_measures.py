@@ -36,6 +36,7 @@ def measures(simulator: Simulator) -> dict[QuantityKind, Callable[[Quantity, Poi
     return {
         QuantityKind.DAMPED_FREQUENCY: partial(damped_frequency, simulator),
         QuantityKind.DECAY_TIME: partial(decay_time, simulator),
+        QuantityKind.UNDAMPED_FREQUENCY: partial(undamped_frequency, simulator),
         QuantityKind.MODE_SHAPE: partial(mode_shape, simulator),
     }
 
@@ -52,6 +53,16 @@ def damped_frequency(simulator: Simulator, quantity: Quantity, point: Point, exp
 def decay_time(simulator: Simulator, quantity: Quantity, point: Point, expected: float) -> Measured:
     _, rate = _damped_motion(simulator, quantity.target, point)
     return "e-folding time of the extrema of the integrated damped motion", 1 / rate, None
+
+
+def undamped_frequency(simulator: Simulator, quantity: Quantity, point: Point, expected: float) -> Measured:
+    """omega_0^2 = omega_d^2 + 1/tau^2 for linear damping: both read off the same integrated damped motion."""
+    period, rate = _damped_motion(simulator, quantity.target, point)
+    return (
+        "sqrt((2 pi / period)^2 + (1 / decay time)^2) of the integrated damped motion",
+        math.hypot(2 * math.pi / period, rate),
+        None,
+    )
 
 
 def _damped_motion(simulator: Simulator, coordinate: str, point: Point) -> tuple[float, float]:

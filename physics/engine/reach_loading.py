@@ -6,6 +6,7 @@
     normal_bottom: {force: track, at: {theta: 0}}       # the constraint force there, with that velocity
     flight: {time_of_flight: ball, level: "-h"}         # until the body's y is -h (default: launch height)
     rebound: {max_height: ball, after: impact}          # in the motion just after the model's impact
+    later: {max_height: ball, after: impact, bounces: n}   # after the n-th bounce off a fixed floor
 """
 
 from __future__ import annotations
@@ -51,6 +52,7 @@ def load_quantity(
     (`check_targets`), once the bodies are known."""
     allowed = (
         {kind.value, "after"}
+        | ({"bounces"} if "after" in spec else set())
         | ({"at"} if kind in AT_KINDS else set())
         | ({"level"} if kind in LEVEL_KINDS else set())
     )
@@ -95,9 +97,16 @@ def load_quantity(
             "`after: impact` takes the quantity in the motion just after the model's impact", (*path, "after")
         )
         faults += 1
+    bounces = None
+    if "bounces" in spec:
+        try:
+            bounces = read_expr(spec["bounces"], symbols, (*path, "bounces"))
+        except SpecError as error:
+            report(error.message, error.path)
+            faults += 1
     if faults:
         return None
-    return Quantity(name, kind, str(target), at=at, level=level, after=str(after))
+    return Quantity(name, kind, str(target), at=at, level=level, after=str(after), bounces=bounces)
 
 
 def _read_at(

@@ -19,6 +19,7 @@ STEPS_PER_SCALE = 400  # RK4 steps per time scale of the motion: errors far belo
 MAX_SCALES = 200
 BISECTIONS = 60
 PUSH = 1e-4  # a vanishing push off an unstable equilibrium, as a share of the motion's speed
+EQUILIBRIUM_ROUNDING = 1e-9  # an acceleration this small against its growth over the distance is none
 
 
 @dataclass
@@ -60,15 +61,16 @@ class ReachMeasure:
         acceleration = dyn.unknowns(q, qd, params)[i]
         distance = abs(targets[-1] - q[i])
         scales = [distance / abs(qd[i])] if qd[i] else []
-        scales += [math.sqrt(2 * distance / abs(acceleration))] if acceleration else []
-        if not scales:  # at rest where nothing pulls: released from the top with a vanishing push?
+        if not scales and self._balanced(q, qd, i, sign, distance, params, acceleration):
+            # at rest where nothing pulls (sin(pi) leaves rounding): from the top with a vanishing push
             scales = [self._push(q, qd, i, sign, distance, params, quantity.name)]
+        scales += [math.sqrt(2 * distance / abs(acceleration))] if acceleration else []
 
         def turned(y: Vector) -> bool:
             return y[dyn.n + i] * sign < 0 and abs(y[i] - q[i]) > 1e-9 * max(distance, 1.0)
 
         events: list[tuple[float, Vector]] = []
-        y, elapsed = q + qd, 0.0
+        y, elapsed = dyn.initial(q, qd, params), 0.0  # with a clock when a support moves as prescribed
         for target in targets:
 
             def passed(state: Vector, at: float = target) -> float:
@@ -84,18 +86,20 @@ class ReachMeasure:
         dyn = sim.dynamics
         ((name, _),) = quantity.at
         n = dyn.n
+        now = dyn.at(dyn.values(point), y, 2 * n)  # the parameters at the time the motion arrives
+        y = y[: 2 * n]
         names = [c.name for c in sim.model.coordinates]
         if quantity.kind is QuantityKind.VELOCITY:
             j = names.index(quantity.target)
             return f"velocity of {quantity.target} when the integrated motion reaches {name}", y[n + j], None
         if quantity.kind is QuantityKind.SPEED:
-            velocity = self._velocity(quantity.target)(*y, *dyn.values(point))
+            velocity = self._velocity(quantity.target)(*y, *now)
             return (
                 f"speed of {quantity.target} when the integrated motion reaches {name}",
                 math.hypot(*velocity),
                 None,
             )
-        unknowns = dyn.unknowns(y[:n], y[n:], dyn.values(point))
+        unknowns = dyn.unknowns(y[:n], y[n:], now)
         if quantity.kind is QuantityKind.ACCELERATION:
             return (
                 f"acceleration of {quantity.target} from the equations of motion where the integration arrives "
@@ -110,6 +114,19 @@ class ReachMeasure:
             None,
         )
 
+    def _balanced(
+        self, q: Vector, qd: Vector, i: int, sign: float, distance: float, params: Vector, acceleration: float
+    ) -> bool:
+        """At rest on an equilibrium: the acceleration there is rounding next to how it grows away from it
+        (a rod balanced upright at phi = pi, where sin(pi) is 1.2e-16, not 0)."""
+        if not acceleration:
+            return True
+        h = 1e-6 * max(distance, 1e-12)
+        moved = list(q)
+        moved[i] += sign * h
+        growth = abs(self.simulator.dynamics.unknowns(moved, qd, params)[i] - acceleration) / h * distance
+        return abs(acceleration) <= EQUILIBRIUM_ROUNDING * growth
+
     def _push(
         self, q: Vector, qd: Vector, i: int, sign: float, distance: float, params: Vector, name: str
     ) -> float:
@@ -121,12 +138,37 @@ class ReachMeasure:
         h = 1e-6 * max(distance, 1e-12)
         moved = list(q)
         moved[i] += sign * h
-        slope = dyn.unknowns(moved, qd, params)[i] * sign / h
+        slope = (dyn.unknowns(moved, qd, params)[i] - dyn.unknowns(q, qd, params)[i]) * sign / h
         if not slope > 0:
             raise DerivationError(f"{name}: released at rest at the state, the coordinate does not move")
         scale = 1 / math.sqrt(slope)
         qd[i] = sign * PUSH * distance / scale
         return scale
+
+    # --- where the coordinate turns ----------------------------------------------------------------
+
+    def turning(self, quantity: Quantity, point: Point, expected: float) -> Measured:
+        """Integrate until the coordinate's rate changes sign; the derived value sets only the time scale."""
+        sim = self.simulator
+        dyn = sim.dynamics
+        i = [c.name for c in sim.model.coordinates].index(quantity.target)
+        q, qd = sim._start(point)
+        params = dyn.values(point)
+        acceleration = dyn.unknowns(q, qd, params)[i]
+        heading = math.copysign(1.0, qd[i] if qd[i] else acceleration)
+        distance = abs(expected - q[i]) or 1.0
+        scales = [distance / abs(qd[i])] if qd[i] else []
+        scales += [math.sqrt(2 * distance / abs(acceleration))] if acceleration else []
+        if not scales:
+            raise DerivationError(
+                f"{quantity.name}: at rest where nothing pulls, the coordinate does not move"
+            )
+
+        def reversed_rate(y: Vector) -> float:
+            return -heading * y[dyn.n + i]
+
+        _, y = self._integrate(q + qd, min(scales), point, reversed_rate, lambda y: False, quantity.name)
+        return f"where the integrated motion of {quantity.target} stops and turns back", y[i], None
 
     # --- a body in flight --------------------------------------------------------------------------
 

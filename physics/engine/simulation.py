@@ -18,7 +18,7 @@ import mpmath
 import sympy
 
 from physics.answer_text import typed_text
-from physics.engine import impact_simulation, slipping
+from physics.engine import extremum, impact_simulation, slipping, vanishing_frequency
 from physics.engine.collision import merged
 from physics.engine.contact_friction import slip_velocity
 from physics.engine.lagrange import LagrangeMethod
@@ -26,6 +26,7 @@ from physics.engine.mechanics import Mechanics
 from physics.engine.method import stable_equilibrium
 from physics.engine.model import (
     AXES,
+    EXTREMUM_KINDS,
     IMPACT_KINDS,
     ORBIT_KINDS,
     SLIP_KINDS,
@@ -35,6 +36,7 @@ from physics.engine.model import (
     QuantityKind,
 )
 from physics.engine.results import SimulationCheck
+from physics.engine.supports import driven
 from physics.errors import DerivationError
 
 TOLERANCE = 1e-3
@@ -100,18 +102,24 @@ class Dynamics:
         # generalized non-conservative forces (kinetic friction), given the multipliers: their power
         # is what the mechanical energy may change by
         lam = list(self.mech.multipliers)
-        forces = [
-            f + a
-            for f, a in zip(self.mech.friction_forces(lam), self.mech.applied_forces(False), strict=True)
-        ]
+        forces = self.mech.load_forces(False, lam)
         self._nonconservative = _compile([*args, *lam], self.mech.generalized(forces))
-        dissipative = [
-            f + a
-            for f, a in zip(
-                self.mech.friction_forces(lam), self.mech.applied_forces(False, True), strict=True
-            )
-        ]
+        dissipative = self.mech.load_forces(False, lam, lambda traits: traits.dissipates)
         self._dissipative = _compile([*args, *lam], self.mech.generalized(dissipative))
+        # a support moving as prescribed: its constraints do work, lambda grad(g) . v = -lambda dg/dt,
+        # and the kinetic energy has terms in the support's velocity beside q' M q' / 2
+        self.driven = driven(model)
+        if self.driven:
+            assert model.time is not None
+            place = {d.symbol: d.mapping for d in self.mech.dofs}
+            work = -sympy.Add(
+                *(
+                    m * sympy.diff(c.gap, model.time).subs(place)
+                    for m, c in zip(lam, model.constraints, strict=True)
+                )
+            )
+            self._support_power = _compile([*args, *lam], [work])
+            self._kinetic = _compile(args, [self.mech.kinetic])
 
     def uses(self, symbol: sympy.Symbol) -> bool:
         """Whether the equations of motion or the start depend on the symbol."""
@@ -122,21 +130,28 @@ class Dynamics:
 
     @cached_property
     def _gaps(self) -> list[sympy.Expr]:
-        forces = [c for f in self.model.forces for _, c in f.components] + [
-            f.coefficient for f in self.model.forces
+        return [c.gap for c in self.model.constraints] + [
+            e for load in self.model.loads for e in load.expressions()
         ]
-        return (
-            [c.gap for c in self.model.constraints] + forces + [f.coefficient for f in self.model.frictions]
-        )
 
     def values(self, point: Point) -> Vector:
         """The parameters' values at the point (the time, when not a parameter, from the state)."""
         start = dict(self.model.state).get(self.model.time) if self.model.time is not None else None
+        if start is None and self.model.time is not None and self.model.time not in point:
+            start = sympy.Integer(0)  # a support moving as prescribed, from t = 0 unless the state says
         return [point[p] if p in point or start is None else _evaluate(start, point) for p in self.params]
 
     def initial(self, q: Vector, qd: Vector, params: Vector) -> Vector:
         """The integrated state: positions, velocities and, with a force in the time, the time."""
         return [*q, *qd, *([params[self.clock]] if self.clock is not None else [])]
+
+    def later(self, params: Vector, dt: float) -> Vector:
+        """The parameters dt later (the clock moved on, when there is one)."""
+        if self.clock is None:
+            return params
+        now = list(params)
+        now[self.clock] += dt
+        return now
 
     def at(self, params: Vector, y: Vector, index: int) -> Vector:
         """The parameters at the integrated state y, whose time (if any) is at y[index]."""
@@ -167,7 +182,8 @@ class Dynamics:
     def power(self, q: Vector, qd: Vector, params: Vector, multipliers: Vector) -> float:
         """Power of the non-conservative forces: Q_nc . q'."""
         forces = self._nonconservative(*q, *qd, *params, *multipliers)
-        return sum(f * v for f, v in zip(forces, qd, strict=True))
+        support = self._support_power(*q, *qd, *params, *multipliers)[0] if self.driven else 0.0
+        return support + sum(f * v for f, v in zip(forces, qd, strict=True))
 
     def dissipation(self, q: Vector, qd: Vector, params: Vector, multipliers: Vector) -> float:
         """Power of kinetic friction and drag alone (never positive in a consistent model)."""
@@ -175,6 +191,8 @@ class Dynamics:
         return sum(f * v for f, v in zip(forces, qd, strict=True))
 
     def energy(self, q: Vector, qd: Vector, params: Vector) -> float:
+        if self.driven:
+            return self._kinetic(*q, *qd, *params)[0] + self.potential(q, params)
         matrix = self.mass(q, params)
         kinetic = 0.5 * sum(qd[i] * matrix[i][j] * qd[j] for i in range(self.n) for j in range(self.n))
         return kinetic + self.potential(q, params)
@@ -220,9 +238,13 @@ class Simulator:
     def check(
         self, quantity: Quantity, reference: sympy.Expr, points: Sequence[Point]
     ) -> SimulationCheck | None:
-        measure = self._reach if _reaches(quantity) else self._measures().get(quantity.kind)
+        measure = self.measure_for(quantity)
         if quantity.after:
             measure = self._after_impact
+        elif quantity.bounces is not None:  # just after the n-th bounce
+            from physics.engine import bounce_simulation  # it builds on this module
+
+            measure = partial(bounce_simulation.measure_final, self)
         if measure is None:
             return None
         worst = 0.0
@@ -242,6 +264,10 @@ class Simulator:
                 )
         return SimulationCheck(compared, worst, len(points))
 
+    def measure_for(self, quantity: Quantity) -> Measure | None:
+        """How the simulation measures this quantity (None: it does not)."""
+        return self._reach if _reaches(quantity) else self._measures().get(quantity.kind)
+
     def _measures(self) -> dict[QuantityKind, Measure]:
         from physics.engine import oscillation_measures  # it integrates with this module's tools
 
@@ -255,6 +281,7 @@ class Simulator:
             QuantityKind.POTENTIAL_FORCE: self._potential_force,
             QuantityKind.SOLVE: self._solve,
             QuantityKind.TERMINAL_VELOCITY: self._terminal_velocity,
+            QuantityKind.TURNING_POINT: self._reach.turning,
             QuantityKind.NORMAL_FREQUENCY: self._normal_frequency,
             **oscillation_measures.measures(self),
             QuantityKind.PROJECTILE_SPEED: self._collision,
@@ -263,6 +290,7 @@ class Simulator:
             **dict.fromkeys(ORBIT_KINDS, self._orbit),
             **dict.fromkeys(SLIP_KINDS, partial(slipping.measure_sliding, self)),
             QuantityKind.SLIPPING: partial(slipping.measure_slipping, self),
+            **dict.fromkeys(EXTREMUM_KINDS, partial(extremum.measure, self)),
         }
 
     @cached_property
@@ -288,9 +316,14 @@ class Simulator:
     def _after_impact(self, quantity: Quantity, point: Point, expected: float) -> Measured:
         """The motion after the impact, started with the velocities the integrated contact left (never
         the derived ones), measured as any motion from a state is."""
-        key = tuple(sorted((s.name, v) for s, v in point.items()))
+        count = 1 if quantity.bounces is None else round(_evaluate(quantity.bounces, point))
+        key = (*sorted((s.name, v) for s, v in point.items()), ("bounces", count))
         if key not in self._bounced:
             rates = self._impact.rates(point)
+            if count != 1:
+                from physics.engine import bounce_simulation  # it builds on this module
+
+                rates = bounce_simulation.velocities_after(self, quantity.name, count, point)
             state = {
                 **dict(self.model.state),
                 **{
@@ -300,12 +333,13 @@ class Simulator:
             bounced = dataclasses.replace(self.model, state=tuple(state.items()), impact=None)
             self._bounced[key] = Simulator(bounced, self.equilibrium_of)
         simulator = self._bounced[key]
-        inner = dataclasses.replace(quantity, after="")
+        inner = dataclasses.replace(quantity, after="", bounces=None)
         measure = simulator._reach if _reaches(inner) else simulator._measures().get(inner.kind)
         if measure is None:
             raise DerivationError(f"{quantity.name}: no simulation of this quantity after an impact")
         what, measured, error = measure(inner, point, expected)
-        return f"{what}, after an integrated contact", measured, error
+        contacts = "an integrated contact" if count == 1 else f"{count} integrated bounces"
+        return f"{what}, after {contacts}", measured, error
 
     def energy_balance(self, points: Sequence[Point]) -> SimulationCheck | None:
         """Integrate the motion from the model's state and keep the books: the change of T + V must equal
@@ -377,8 +411,15 @@ class Simulator:
                 break  # it stopped and turned back: kinetic friction as modelled ends there
             states.append(after)
         start, end = states[0], states[-1]
-        change = dyn.energy(end[:n], end[n : 2 * n], params) - dyn.energy(start[:n], start[n : 2 * n], params)
-        kinetic = max(dyn.energy(y[:n], y[n : 2 * n], params) - dyn.potential(y[:n], params) for y in states)
+        # each state's energy at its own time (a support moving as prescribed)
+        change = dyn.energy(end[:n], end[n : 2 * n], dyn.at(params, end, 2 * n + 2)) - dyn.energy(
+            start[:n], start[n : 2 * n], params
+        )
+        kinetic = max(
+            dyn.energy(y[:n], y[n : 2 * n], now) - dyn.potential(y[:n], now)
+            for y in states
+            for now in [dyn.at(params, y, 2 * n + 2)]
+        )
         return change, end[2 * n], abs(kinetic), end[2 * n + 1]
 
     @cached_property
@@ -422,7 +463,7 @@ class Simulator:
         """With a force in the time, halve the step until the acceleration's own second difference in
         time (the system held still) is negligible: a fast driving force needs a short step."""
         dyn = self.dynamics
-        if dyn.clock is None:
+        if dyn.clock is None or dyn.n == 0:  # nothing moves but as prescribed: no step to resolve
             return step
         params = dyn.values(point)
         now = params[dyn.clock]
@@ -463,7 +504,10 @@ class Simulator:
         dyn = self.dynamics
         params = dyn.values(point)
         trajectory = self._trajectory_around(point, h)
-        before, now, after = (dyn.positions(q, params) for q in trajectory)
+        # each position at its own time: a support moving as prescribed carries the bodies with it
+        before, now, after = (
+            dyn.positions(q, dyn.later(params, dt)) for q, dt in zip(trajectory, (-h, 0.0, h), strict=True)
+        )
         accel = [(a - 2 * b + c) / h**2 for a, b, c in zip(before, now, after, strict=True)]
         grads, base, per_lambda, masses = self._force_parts(trajectory[1], point, self._start(point)[1])
         k = len(grads)
@@ -492,14 +536,16 @@ class Simulator:
         position = [*mech.q, *mech.qd, *dyn.params]
         place = {d.symbol: d.mapping for d in mech.dofs}
         grads = [g.subs(place) for k in range(len(self.model.constraints)) for g in mech.gap_gradient(k)]
+        # the loads whose size is a constraint force (kinetic friction) are linear in it: per unit force
+        free = [sympy.Integer(0) for _ in self.model.constraints]
         base = [
             (-sympy.diff(mech.cartesian_potential, d.symbol)).subs(place) + applied
-            for d, applied in zip(mech.dofs, mech.applied_forces(False), strict=True)
+            for d, applied in zip(mech.dofs, mech.load_forces(False, free), strict=True)
         ]
         units = []
         for k in range(len(self.model.constraints)):
             unit = [sympy.Integer(1 if j == k else 0) for j in range(len(self.model.constraints))]
-            units += mech.friction_forces(unit)
+            units += mech.load_forces(False, unit, lambda traits: bool(traits.constraints))
         masses = [d.inertia for d in mech.dofs]
         return tuple(_compile(position, exprs) for exprs in (grads, base, units, masses))
 
@@ -605,6 +651,16 @@ class Simulator:
         measure = self._reach if _reaches(inner) else self._measures().get(inner.kind)
         if measure is None or inner.kind is QuantityKind.SOLVE:
             raise DerivationError(f"{quantity.name}: no simulation for this kind of condition")
+        if inner.kind in vanishing_frequency.KINDS and not inner.at:
+            crossing = vanishing_frequency.measured_zero(
+                lambda value: measure(inner, {**point, parameter: value}, 0.0)[1], expected, quantity.name
+            )
+            return (
+                f"where the integrated {inner.kind.value.replace('_', ' ')}, squared and measured on runs that "
+                "swing, extrapolates to zero",
+                crossing,
+                None,
+            )
         step = THRESHOLD_STEP * max(abs(expected), 1e-12)
         below, above = expected - step, expected + step
         try:
@@ -681,8 +737,11 @@ class Simulator:
         estimate = 2 * math.pi * math.sqrt(inertia / stiffness)
         per_period = 400
         start = shifted(1e-4 * (abs(q0) or 1.0))
-        states = rk4(
-            dyn.derivative(params), start + [0.0] * dyn.n, estimate / per_period, int(3.3 * per_period)
+        states = rk4(  # with a support moving as prescribed, its clock too
+            dyn.derivative(params),
+            dyn.initial(start, [0.0] * dyn.n, params),
+            estimate / per_period,
+            int(3.3 * per_period),
         )
         values = [s[i] - q0 for s in states]
         crossings = [
@@ -723,9 +782,13 @@ class Simulator:
         start = (q, [0.0] * dyn.n)
         h = self._step_for(point, start)
         before, now, after = (
-            dyn.positions(x, params) for x in self._trajectory_around(point, h, start=start)
+            dyn.positions(x, dyn.later(params, dt))
+            for x, dt in zip(self._trajectory_around(point, h, start=start), (-h, 0.0, h), strict=True)
         )
         accel = [(a - 2 * b + c) / h**2 for a, b, c in zip(before, now, after, strict=True)]
+        if dyn.driven:  # relative to the support: less the acceleration the bodies have held at q
+            held = [dyn.positions(q, dyn.later(params, dt)) for dt in (-h, 0.0, h)]
+            accel = [x - (a - 2 * b + c) / h**2 for x, a, b, c in zip(accel, *held, strict=True)]
         masses = self._force_parts(q, point)[3]
         step = 1e-6 * max(abs(q[i]), 1.0)
         up = dyn.positions([v + (step if j == i else 0.0) for j, v in enumerate(q)], params)

@@ -26,8 +26,10 @@ from physics.answer_text import typed_text
 from physics.engine import tidy
 from physics.engine.contact_friction import only_friction, slip_velocity
 from physics.engine.mechanics import Mechanics, time_derivative
-from physics.engine.model import Model, Quantity, QuantityKind
+from physics.engine.model import SLIP_KINDS, Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
+from physics.engine.quantity_table import derives
+from physics.engine.settle import plain_angle
 from physics.errors import DerivationError
 
 if TYPE_CHECKING:
@@ -112,7 +114,7 @@ def slipping_limit(method: Method, quantity: Quantity) -> sympy.Expr:
             if root.is_real is not False and not (parameter.is_positive and root.is_positive is False):
                 roots.append(tidy.simplify(root))
     roots = list(dict.fromkeys(roots))
-    inside = [_tidy(r, method.model) for r in roots if _in_parameter_range(r, parameter, method.model)]
+    inside = [plain_angle(r, method.model) for r in roots if _in_parameter_range(r, parameter, method.model)]
     if len(inside) != 1:
         raise DerivationError(
             f"{method.title}: {quantity.name}: expected one value of {parameter} in its declared range at "
@@ -125,24 +127,6 @@ def slipping_limit(method: Method, quantity: Quantity) -> sympy.Expr:
         rf"\Rightarrow {method.tex(parameter)} = {method.tex(inside[0])}",
     )
     return inside[0]
-
-
-def _tidy(root: sympy.Expr, model: Model) -> sympy.Expr:
-    """An angle sympy writes as 2 atan(half-angle form) is atan(tan(root)) when it lies in (-pi/2, pi/2):
-    taken when it is simpler and equal at domain points."""
-    if not root.has(sympy.atan):
-        return root
-    candidate = sympy.atan(tidy.simplify(sympy.expand_trig(sympy.tan(root))))
-    if sympy.count_ops(candidate) >= sympy.count_ops(root):
-        return root
-    try:
-        same = all(
-            abs(complex(sympy.N((candidate - root).subs(point), 20))) < 1e-12
-            for point in domain_points(model, 6, seed=13)
-        )
-    except (TypeError, ValueError):
-        return root
-    return candidate if same else root
 
 
 def _in_parameter_range(value: sympy.Expr, parameter: sympy.Symbol, model: Model) -> bool:
@@ -224,3 +208,7 @@ def measure_slipping(simulator: Simulator, quantity: Quantity, point: Point, exp
         ratio,
         abs(ratio - mu) / mu,
     )
+
+
+derives(*SLIP_KINDS)(sliding_phase)
+derives(QuantityKind.SLIPPING)(slipping_limit)

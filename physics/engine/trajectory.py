@@ -21,8 +21,9 @@ import sympy
 from physics.answer_text import typed_text
 from physics.engine import tidy
 from physics.engine.mechanics import time_derivative
-from physics.engine.model import Model, Quantity, QuantityKind
+from physics.engine.model import TRAJECTORY_KINDS, Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
+from physics.engine.quantity_table import derives
 from physics.errors import DerivationError
 
 if TYPE_CHECKING:
@@ -61,6 +62,7 @@ def launch(model: Model, quantity: Quantity) -> Launch:
     )
 
 
+@derives(*TRAJECTORY_KINDS)
 def answer(method: Method, quantity: Quantity) -> sympy.Expr:
     return ROUTES.get(method.name, by_kinematics)(method, quantity)
 
@@ -188,7 +190,7 @@ def by_energy(method: Method, quantity: Quantity) -> sympy.Expr:
 
     model, mech = method.model, method.mech
     body = model.body(quantity.target)
-    if any(f.body == body.name for f in model.dissipative_forces):
+    if model.loads_where(lambda traits: not traits.conservative and body.name in traits.bodies):
         raise NotApplicable(
             f"drag or a force that depends on the motion acts on {body.name}: energy is not conserved"
         )

@@ -29,8 +29,9 @@ import sympy
 from physics.answer_text import typed_text
 from physics.engine import impact, tidy
 from physics.engine.mechanics import Mechanics, solve_linear
-from physics.engine.model import Coordinate, Model, Quantity, QuantityKind
+from physics.engine.model import REACH_KINDS, Coordinate, Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
+from physics.engine.quantity_table import derives
 from physics.errors import DerivationError
 
 if TYPE_CHECKING:
@@ -72,7 +73,7 @@ def _held(method: Method, c: Coordinate, quantity: Quantity) -> dict[sympy.Symbo
 
     model, mech = method.model, method.mech
     where = ("quantities", quantity.name, "at")
-    if model.frictions or model.dissipative_forces:
+    if model.nonconservative_loads:
         raise DerivationError(
             f"{quantity.name}: with several coordinates the state where {c.name} arrives is fixed by conserved "
             "momenta, which friction, drag and forces in the time do not keep: declare a model with "
@@ -127,6 +128,7 @@ def _direction(model: Model, start: sympy.Expr, end: sympy.Expr, name: str) -> i
     )
 
 
+@derives(*REACH_KINDS)  # always with `at` (reach_loading.py): Method.answer comes here for it
 def answer(method: Method, quantity: Quantity) -> sympy.Expr:
     """The quantity where the motion arrives, by this method's own route to the velocity there."""
     model = method.model
@@ -177,9 +179,9 @@ def by_energy(method: Method, trip: Journey) -> sympy.Expr:
     model, mech, c = method.model, method.mech, trip.coordinate
     q, qd = c.symbol, c.velocity
     work = sympy.Integer(0)
-    if model.frictions or model.dissipative_forces:
+    if model.nonconservative_loads:
         multipliers: list[sympy.Expr] = list(mech.multipliers)
-        if model.frictions:
+        if model.contact_loads:
             _straight_surfaces(model, mech, c)
             free = dataclasses.replace(model, state=())
             across = NewtonMethod(free, Mechanics(free)).solution  # Newton's law as a step of this method
@@ -190,9 +192,7 @@ def by_energy(method: Method, trip: Journey) -> sympy.Expr:
                     method.tex(sympy.Eq(lam, v)) for lam, v in zip(mech.multipliers, multipliers, strict=True)
                 ),
             )
-        forces = [
-            f + a for f, a in zip(mech.friction_forces(multipliers), mech.applied_forces(False), strict=True)
-        ]
+        forces = mech.load_forces(False, multipliers)
         generalized = tidy.simplify(mech.generalized(forces)[0])
         if generalized.has(qd):
             raise NotApplicable(
@@ -235,8 +235,8 @@ def _straight_surfaces(model: Model, mech: Mechanics, c: Coordinate) -> None:
     from physics.engine.method import NotApplicable
 
     place = {d.symbol: d.mapping for d in mech.dofs}
-    for friction in model.frictions:
-        gap = model.constraint(friction.constraint).gap
+    for name in dict.fromkeys(k for load in model.contact_loads for k in load.traits(model).constraints):
+        gap = model.constraint(name).gap
         curvature = sympy.Add(
             *(
                 sympy.diff(gap, a.symbol, b.symbol).subs(place)
@@ -248,7 +248,7 @@ def _straight_surfaces(model: Model, mech: Mechanics, c: Coordinate) -> None:
         )
         if tidy.simplify(curvature) != 0:
             raise NotApplicable(
-                f"the surface {friction.constraint!r} curves along the path, so its normal force, and "
+                f"the surface {name!r} curves along the path, so its normal force, and "
                 "friction's work, depends on the speed along the way: the work needs the motion itself"
             )
 

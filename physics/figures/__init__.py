@@ -6,6 +6,12 @@
 
 `model` is the engine's loaded `Model`; values are SI (angles in radians) by symbol name, and missing
 ones take typical values. The SVG has role="img", a <title> and a <desc> saying what is drawn.
+
+The scene (scene.py) is drawn from the elements the author wrote: `DRAWERS` maps each element kind to
+its picture family's `from_elements` (incline.py: inclines, wedges, floors and rolling bodies with the
+springs and pulleys on them; pulleys.py; pendulum.py; spring_block.py; turning.py), an impact section
+to impact.py, and a hand-written low-level model to recognise.py. A new element kind is one drawer
+there. Shared parts: figure.py (Figure, Values, labels), geometry.py (reading the model), shapes.py.
 """
 
 from __future__ import annotations
@@ -14,8 +20,9 @@ from collections.abc import Mapping
 from html import escape
 
 from physics.engine.model import Model
+from physics.figures.figure import symbol_label
 from physics.figures.free_body import Force, body_forces, free_body_figure
-from physics.figures.scene import compose, symbol_label
+from physics.figures.scene import compose
 
 __all__ = ["Force", "body_forces", "free_body_figure", "model_figure", "symbol_label"]
 

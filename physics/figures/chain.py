@@ -9,7 +9,8 @@ import math
 import sympy
 
 from physics.engine.model import Body, Constraint, Model
-from physics.figures.scene import Figure, _bodies_in, body_label, symbol_label
+from physics.figures.figure import Figure, body_label, symbol_label
+from physics.figures.geometry import bodies_in
 from physics.figures.svg import FILLS, Point
 
 ROD = 3.0
@@ -22,7 +23,7 @@ def pendulum_chain_of(model: Model, strings: list[Constraint]) -> list[tuple[Bod
     nothing else holds them."""
     if len(strings) < 2 or len(model.constraints) != len(strings) or model.potentials or model.forces:
         return None
-    joined = {string.name: _bodies_in(string.gap, model) for string in strings}
+    joined = {string.name: bodies_in(string.gap, model) for string in strings}
     top = [s for s in strings if len(joined[s.name]) == 1]
     if len(top) != 1:
         return None

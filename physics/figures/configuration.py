@@ -11,7 +11,8 @@ from collections.abc import Mapping
 import sympy
 
 from physics.engine.model import Model
-from physics.figures.scene import Values, compose
+from physics.figures.figure import Values
+from physics.figures.scene import compose
 
 
 def drawn_configuration(model: Model, given: Mapping[str, float]) -> dict[sympy.Symbol, float]:

@@ -7,8 +7,8 @@ from __future__ import annotations
 import sympy
 
 from physics.engine.model import Body, ForceKind, Model
+from physics.figures.figure import Figure, Values, body_label, symbol_label
 from physics.figures.loads import applied_forces
-from physics.figures.scene import Figure, Values, body_label, symbol_label
 from physics.figures.svg import FILLS
 
 RADIUS = 0.45

@@ -25,9 +25,10 @@ import sympy
 from physics.engine.model import Constraint, ConstraintKind, Model
 from physics.engine.notation import notation_of, split_subscript
 from physics.figures.configuration import drawn_configuration
+from physics.figures.figure import BLOCK, Values, body_label, symbol_label
+from physics.figures.geometry import is_linear
 from physics.figures.held import held_forces
 from physics.figures.loads import applied_forces, potential_forces
-from physics.figures.scene import BLOCK, Values, _is_linear, body_label, symbol_label
 from physics.figures.svg import FILLS, Canvas
 
 _LABELS = {ConstraintKind.SURFACE: "N", ConstraintKind.STRING: "T", ConstraintKind.ROLLING: "f"}
@@ -183,7 +184,7 @@ def _contacts(
         # A body the model moves along one axis only (a cart) would feel only that component of a
         # pull along the line to another body (a pendulum's rod): it feels the whole of the other
         # body's, reversed. A string over a pulley (a linear gap) pulls each body its own way.
-        joined = None in (x, y) and not _is_linear(constraint.gap, model)
+        joined = None in (x, y) and not is_linear(constraint.gap, model)
         partner = _partner(model, body_name, constraint) if joined else None
         try:
             if partner is None:

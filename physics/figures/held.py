@@ -17,8 +17,8 @@ import math
 import sympy
 
 from physics.engine.model import Constraint, ConstraintKind, Model
+from physics.figures.figure import Values
 from physics.figures.loads import applied_forces, potential_forces
-from physics.figures.scene import Values
 
 Direction = tuple[float, float]
 Source = tuple[str, str | int]  # as free_body.py names a contact: ("constraint", its name)

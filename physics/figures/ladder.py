@@ -9,7 +9,9 @@ from dataclasses import dataclass
 import sympy
 
 from physics.engine.model import Body, Constraint, ConstraintKind, Model, QuantityKind
-from physics.figures.scene import Figure, Values, _angle_mark, _angle_symbol, body_label, symbol_label
+from physics.figures.figure import Figure, Values, body_label, symbol_label
+from physics.figures.geometry import angle_symbol_of
+from physics.figures.shapes import angle_mark
 from physics.figures.svg import FILLS
 
 LENGTH = 6.0  # the ladder's drawn length
@@ -46,7 +48,7 @@ def draw_ladder(figure: Figure, model: Model, leaning: Leaning, values: Values) 
     canvas = figure.canvas
     body, side = leaning.body, leaning.side
     assert body.angle is not None
-    symbol = _angle_symbol(body.angle, values)
+    symbol = angle_symbol_of(body.angle, values)
     angle = values.number(body.angle) if not body.angle.free_symbols - set(values.subs) else math.radians(60)
     angle = figure.readable_angle(angle, symbol, low=math.radians(15))
     foot = (side * LENGTH * math.cos(angle), 0.0)
@@ -80,7 +82,7 @@ def draw_ladder(figure: Figure, model: Model, leaning: Leaning, values: Values) 
             foot[1] + along[1] * LENGTH * 0.7 + out[1] * 0.5,
         )
         canvas.text(spot, symbol_label(lengths[0].name))
-    _angle_mark(figure, foot, math.pi / 2 + side * math.pi / 2, math.atan2(along[1], along[0]), symbol)
+    angle_mark(figure, foot, math.pi / 2 + side * math.pi / 2, math.atan2(along[1], along[0]), symbol)
     coefficients = [
         q.coefficient
         for q in model.quantities

@@ -18,7 +18,8 @@ import sympy
 
 from physics.engine.mechanics import Mechanics
 from physics.engine.model import AppliedForce, ForceKind, Model, PairPotential
-from physics.figures.scene import Values, spring_sign, stiffness_symbols, symbol_label
+from physics.figures.figure import Values, symbol_label
+from physics.figures.geometry import spring_sign, stiffness_symbols
 
 Direction = tuple[float, float]
 _SUBSCRIPTS = dict(zip("0123456789aehijklmnoprstuvx", "₀₁₂₃₄₅₆₇₈₉ₐₑₕᵢⱼₖₗₘₙₒₚᵣₛₜᵤᵥₓ", strict=True))

@@ -9,7 +9,9 @@ from dataclasses import dataclass
 import sympy
 
 from physics.engine.model import Body, Model, QuantityKind
-from physics.figures.scene import Figure, Values, _angle_mark, _angle_symbol, body_label, symbol_label
+from physics.figures.figure import Figure, Values, body_label, symbol_label
+from physics.figures.geometry import angle_symbol_of
+from physics.figures.shapes import angle_mark
 from physics.figures.svg import FILLS
 
 SPAN = 7.0  # the larger of the drawn range and height, in figure units
@@ -96,8 +98,8 @@ def draw_projectile(figure: Figure, model: Model, launch: Launch, values: Values
     if speed:
         side = (-math.sin(angle), math.cos(angle))
         canvas.text((tip[0] + 0.45 * side[0] + 0.2, tip[1] + 0.45 * side[1]), symbol_label(speed[0].name))
-    symbol = _angle_symbol(launch.vx + launch.vy, values)
-    _angle_mark(figure, start, 0.0, angle, symbol)
+    symbol = angle_symbol_of(launch.vx + launch.vy, values)
+    angle_mark(figure, start, 0.0, angle, symbol)
     canvas.circle(start, 0.25, fill=FILLS[0])
     label = body_label(launch.body, model)
     canvas.text((start[0] - 0.5, start[1] + 0.45), label, anchor="end")

@@ -15,16 +15,9 @@ from typing import TypeAlias
 import sympy
 
 from physics.engine.model import Model, PairPotential
-from physics.figures.scene import (
-    BLOCK,
-    Figure,
-    Values,
-    _block,
-    body_label,
-    spring_sign,
-    stiffness_symbols,
-    symbol_label,
-)
+from physics.figures.figure import BLOCK, Figure, Values, body_label, symbol_label
+from physics.figures.geometry import spring_sign, stiffness_symbols
+from physics.figures.shapes import draw_block
 from physics.figures.svg import FILLS, Point
 
 SPRING = 3.0  # a spring's drawn length
@@ -114,7 +107,7 @@ def draw_spring_line(figure: Figure, model: Model, line: SpringLine) -> None:
             body = model.body(node)
             fill = FILLS[sum(isinstance(n, str) for n in line.nodes[:index]) % len(FILLS)]
             base = at(s, 0.0) if upright else at(s + BLOCK / 2, 0.0)
-            _block(figure, base, (1.0, 0.0), body_label(body, model), fill)
+            draw_block(figure, base, (1.0, 0.0), body_label(body, model), fill)
             coordinate = dict(body.position)[line.axis]
             if isinstance(coordinate, sympy.Symbol):  # which way the coordinate grows, beside the block
                 tail, head = at(s + BLOCK / 2 - 0.5, -1.1), at(s + BLOCK / 2 + 0.9, -1.1)

@@ -134,6 +134,15 @@ class Canvas:
             f'stroke-width="0.02"/>'
         )
 
+    def place(self, other: Canvas, gap: float = 1.0) -> None:
+        """Draw `other` to the right of what is here, `gap` apart (independent systems side by side)."""
+        if not other.xs:
+            return
+        shift = (max(self.xs) + gap - min(other.xs)) if self.xs else 0.0
+        self.xs.extend(x + shift for x in other.xs)
+        self.ys.extend(other.ys)
+        self.elements.append(f'<g transform="translate({shift:.3f} 0)">{"".join(other.elements)}</g>')
+
     def ground(self, a: Point, b: Point, *, below: bool = True) -> None:
         """A fixed surface from `a` to `b`, hatched on its solid side (below, or above for a ceiling)."""
         self.line(a, b, width=0.07)

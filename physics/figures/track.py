@@ -10,7 +10,8 @@ from dataclasses import dataclass
 import sympy
 
 from physics.engine.model import Body, Constraint, ConstraintKind, Model
-from physics.figures.scene import Figure, Values, _is_linear, body_label, symbol_label
+from physics.figures.figure import Figure, Values, body_label, symbol_label
+from physics.figures.geometry import is_linear
 from physics.figures.svg import FILLS, Point
 
 SPAN = 5.0  # the track's larger extent, in figure units
@@ -30,7 +31,7 @@ def track_of(model: Model) -> Track | None:
         return None
     coordinate = model.coordinates[0]
     surfaces = [
-        c for c in model.constraints if c.kind is ConstraintKind.SURFACE and not _is_linear(c.gap, model)
+        c for c in model.constraints if c.kind is ConstraintKind.SURFACE and not is_linear(c.gap, model)
     ]
     start = dict(model.state).get(coordinate.symbol)
     ends = [dict(q.at)[coordinate.name] for q in model.quantities if coordinate.name in dict(q.at)]

@@ -117,3 +117,33 @@ def test_a_refusal_says_each_reason_once_naming_the_methods_that_gave_it(
     assert said is not None, message
     assert {"lagrange", "newton", "conservation"} <= set(re.split(r", | and ", said.group(1)))
     assert "omega_d: omega_d" not in message and "stopped: omega_d:" not in message
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize(
+    ("model", "coordinate", "undamped"),
+    [(damped_spring(), "x", sympy.sqrt(k / m)), (damped_pendulum(), "theta", sympy.sqrt(g / L))],
+    ids=["spring", "pendulum"],
+)
+def test_the_undamped_frequency_of_a_damped_model_leaves_the_drag_out(
+    model: dict[str, Any], coordinate: str, undamped: sympy.Expr
+) -> None:
+    model["quantities"] = {
+        "omega_0": {"undamped_frequency": coordinate},
+        "omega_d": {"damped_frequency": coordinate},
+    }
+    result = uncached(load_model(model, SYMBOLS))
+    assert sympy.simplify(result.quantities["omega_0"] - undamped) == 0
+    assert len(result.agreement["omega_0"]) >= 2
+    # measured on the damped motion itself: omega_0^2 = omega_d^2 + 1/tau^2
+    assert "decay time" in result.simulation["omega_0"].compared
+    assert result.simulation["omega_0"].max_relative_error < 1e-3
+    assert sympy.simplify(result.quantities["omega_0"] - result.quantities["omega_d"]) != 0
+
+
+def test_the_undamped_frequency_of_a_model_without_drag_is_refused_naming_angular_frequency() -> None:
+    model = damped_spring()
+    model["forces"] = []
+    model["quantities"] = {"omega_0": {"undamped_frequency": "x"}}
+    with pytest.raises(DerivationError, match="no drag to leave out: ask for its angular_frequency"):
+        uncached(load_model(model, SYMBOLS))

@@ -46,6 +46,8 @@ def test_a_spring_whose_side_is_not_declared_is_refused_with_the_reason() -> Non
         pytest.param("y", "y", {"y": ["-oo", "0"]}, -(L0 + m * g / k), id="below-the-anchor"),
         pytest.param("-s", "s", {"s": ["0", "oo"]}, L0 + m * g / k, id="length-down-from-the-anchor"),
         pytest.param("y", "y", {"y": ["0", "oo"]}, L0 - m * g / k, id="standing-on-the-spring"),
+        # the foot at -L0 and the block above it: y >= -L0 settles |L0 + y| on a range open above
+        pytest.param("y + L0", "y", {"y": ["-L0", "oo"]}, -m * g / k, id="foot-below-the-origin"),
     ],
 )
 def test_a_declared_side_gives_the_extension_m_g_over_k(

@@ -31,8 +31,35 @@ def test_bank_model_written_with_elements_is_the_hand_written_model(problem: str
     names = yaml.safe_load((BANK / problem / "problem.yaml").read_text())["symbols"]
     table = {n: sympy.Symbol(n, positive=True) for n in names}
     written = load_model(yaml.safe_load((BANK / problem / "model.yaml").read_text()), table)
-    # the notation names things for worked solutions; it is not part of the physics
-    assert replace(written, notation=()) == replace(load_model(data, table), notation=())
+    # the notation names things for worked solutions, the element records draw figures: not physics
+    assert replace(written, notation=(), elements=()) == replace(load_model(data, table), notation=())
+
+
+def test_the_model_keeps_each_element_as_written_with_what_it_generated() -> None:
+    model = {
+        "bodies": {"m2": {"mass": "m2", "position": {"y": "s*cos(theta)"}}},
+        "potentials": [{"bodies": ["m2"], "anchor": {"y": 0}, "distance": "d", "energy": "k*d^2/2"}],
+        "gravity": "g",
+        "quantities": {"acceleration": {"acceleration": "s"}},
+        "elements": {
+            "string": {
+                "kind": "pulley",
+                "ends": [{"body": "m1", "pulls": "left"}, {"body": "m2", "pulls": "up"}],
+            },
+            "ramp": {"kind": "incline", "body": "m1", "mass": "m1", "angle": "theta", "coordinate": "s"},
+            "spring": {"kind": "spring", "between": ["m1", {"x": 0}], "stiffness": "k"},
+        },
+    }
+    loaded = load_model(model, positive("m1", "m2", "theta", "g", "k"))
+    ramp, string, spring = loaded.elements  # a pulley after the body it pulls on
+    assert (ramp.kind, ramp.name, ramp.fields["angle"]) == ("incline", "ramp", "theta")
+    assert (ramp.bodies, ramp.constraints, ramp.coordinates) == (("m1",), ("ramp",), ("s",))
+    assert (string.kind, string.bodies, string.constraints) == ("pulley", (), ("string",))
+    assert string.fields["ends"][0] == {"body": "m1", "pulls": "left"}
+    assert spring.potentials == ("potential1",)  # after the hand-written one
+    assert [p.name for p in loaded.potentials] == ["potential0", "potential1"]
+    by_hand = {key: model[key] for key in ("bodies", "gravity", "quantities")} | {"coordinates": ["s"]}
+    assert load_model(by_hand, positive("m2", "g", "theta")).elements == ()
 
 
 def _derived(model: dict[str, Any], *names: str) -> dict[str, sympy.Expr]:
@@ -209,6 +236,68 @@ def test_a_pulley_whose_ends_do_not_keep_the_string_length_is_refused() -> None:
         "quantities": {},
     }
     assert "string's length" in _errors(model, "m")["elements.string.ends"]
+
+
+def test_a_movable_pulley_halves_its_bodys_motion_and_doubles_the_pull_on_it() -> None:
+    """A block on a table, its string over the edge and under a movable pulley carrying m2: the 2:1
+    ratio of the accelerations, and twice the tension holding the pulley (m2 g - 2T = m2 a/2)."""
+    model = {
+        "coordinates": ["s"],
+        "bodies": {
+            "m1": {"mass": "m1", "position": {"x": "s"}},
+            "m2": {"mass": "m2", "position": {"y": "-s/2"}},
+        },
+        "gravity": "g",
+        "elements": {
+            "string": {
+                "kind": "pulley",
+                "ends": [{"body": "m1", "pulls": "right"}, {"under": "m2", "pulls": "up"}],
+            }
+        },
+        "quantities": {"a": {"acceleration": "s"}, "T": {"force": "string"}},
+    }
+    m1, m2, g = positive("m1", "m2", "g").values()
+    found = _derived(model, "m1", "m2", "g")
+    assert sympy.simplify(found["a"] - 2 * m2 * g / (4 * m1 + m2)) == 0
+    assert sympy.simplify(m2 * g - 2 * found["T"] - m2 * found["a"] / 2) == 0
+
+
+def test_the_movable_pulley_bank_model_is_the_string_whose_slack_counts_the_pulley_twice() -> None:
+    by_hand = yaml.safe_load(
+        """
+        coordinates: [d]
+        bodies:
+          m1: {mass: m1, position: {y: "-2*d"}}
+          m2: {mass: m2, position: {y: d}}
+        gravity: g
+        constraints:
+          string: {kind: string, gap: "y_m1 + 2*y_m2"}
+        quantities:
+          acceleration: {acceleration: d}
+          tension: {force: string}
+        """
+    )
+    table = positive("m1", "m2", "g")
+    written = load_model(yaml.safe_load((BANK / "movable-pulley" / "model.yaml").read_text()), table)
+    assert replace(written, notation=(), elements=()) == replace(load_model(by_hand, table), notation=())
+
+
+@pytest.mark.parametrize(
+    ("end", "says"),
+    [
+        ({"under": "m2", "pulls": "up"}, "a movable pulley moves half as far"),  # m2 written as a free end
+        ({"under": "m2", "body": "m2", "pulls": "up"}, "either the body at this end or"),
+    ],
+)
+def test_a_movable_pulley_stated_wrongly_is_refused_saying_why(end: dict[str, str], says: str) -> None:
+    model = {
+        "coordinates": ["s"],
+        "bodies": {"m1": {"mass": "m", "position": {"y": "-s"}}, "m2": {"mass": "m", "position": {"y": "s"}}},
+        "elements": {"string": {"kind": "pulley", "ends": [{"body": "m1", "pulls": "up"}, end]}},
+        "quantities": {},
+    }
+    errors = _errors(model, "m")
+    assert any(says in message for message in errors.values()), errors
 
 
 def test_a_pull_direction_that_is_not_a_unit_vector_is_refused() -> None:

@@ -34,6 +34,8 @@ EXPECTED = {
     "double-incline": ({"m₁", "m₂", "α", "β"}, "pulley"),
     "yo-yo": ({"m", "r"}, "axle"),
     "cart-collision": ({"m₁", "m₂", "u₁", "u₂"}, "collision"),
+    "collision-scenarios": ({"m₁", "m₂", "u"}, "collision"),
+    "conical-pendulum-rate": ({"m", "L"}, "sweeping out a cone"),
     "glancing-pucks": ({"m", "u", "φ"}, "elastic collision"),
     "bouncing-ball": ({"m"}, "the fixed floor"),
     "cart-hits-block-on-incline": ({"m₁", "m₂", "u"}, "elastic collision"),
@@ -48,6 +50,9 @@ EXPECTED = {
         "bob2 hangs from bob1 on a light rod of length L",
     ),
     "falling-drag": ({"pebble", "ball", "m", "bv", "cv²", "v"}, "pebble moving down at v, with drag bv"),
+    "movable-pulley": ({"m₁", "m₂"}, "under a light movable pulley carrying m₂"),
+    "spring-drop": ({"m", "k", "h"}, "falls from rest from a height h onto a vertical spring k"),
+    "pendulum-in-truck": ({"m", "L", "A"}, "A truck accelerates at A"),
 }
 
 

@@ -13,7 +13,7 @@ import sympy
 from physics.engine import Model
 from physics.figures import body_forces, free_body_figure
 from physics.figures.configuration import drawn_configuration
-from physics.figures.scene import Values
+from physics.figures.figure import Values
 from problems.symbols import symbol_table
 from problems.variants import draw_variant, si_values
 from tests.figures.test_free_body import BANK, bank_model

@@ -11,7 +11,8 @@ import pytest
 
 from physics.engine.model import Model
 from physics.figures import body_forces, free_body_figure, model_figure
-from physics.figures.scene import Values, spring_sign
+from physics.figures.figure import Values
+from physics.figures.geometry import spring_sign
 from problems.loader import parse_problem
 from problems.modelinfo import load_doc_model
 from problems.symbols import symbol_table

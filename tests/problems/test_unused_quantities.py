@@ -86,7 +86,40 @@ EQUATION_PART = """
 def test_an_equation_part_asks_for_the_quantities_its_unknowns_take() -> None:
     """The tension is used by the equation part alone: no `unused:` is needed for it."""
     quantities = "acceleration: {acceleration: s}\n    tension: {force: string}"
-    text = ATWOOD.replace("QUANTITIES", quantities).replace("model:\n", EQUATION_PART.lstrip("\n") + "model:\n", 1)
+    text = ATWOOD.replace("QUANTITIES", quantities).replace(
+        "model:\n", EQUATION_PART.lstrip("\n") + "model:\n", 1
+    )
     text = text.replace("answer: (m2 - m1)*g/m2", "answer: (m2 - m1)*g/(m1 + m2)")
     doc = parse_problem(text)
     assert [p.id for p in doc.parts] == ["acceleration", "newton_m2"]
+
+
+SCENARIO = """  scenarios:
+    heavier:
+      bodies: {m2: {mass: 2*m2}}
+      quantities:
+        acceleration: {acceleration: s}
+"""
+ASKS_SCENARIO = """  - id: heavier_acceleration
+    kind: symbolic
+    quantity: heavier.acceleration
+    prompt: Find it again with twice the mass on the right.
+model:
+"""
+
+
+def test_a_scenario_quantity_no_part_asks_for_is_refused_at_the_scenario() -> None:
+    errors = dict(_errors("acceleration: {acceleration: s}", SCENARIO))
+    assert (
+        "no part asks for the quantity 'heavier.acceleration'"
+        in errors["model.scenarios.heavier.quantities.acceleration"]
+    )
+
+
+def test_a_part_asks_for_a_scenario_quantity_by_its_scenario_and_name() -> None:
+    text = (ATWOOD.replace("QUANTITIES", "acceleration: {acceleration: s}") + SCENARIO).replace(
+        "model:\n", ASKS_SCENARIO, 1
+    )
+    text = text.replace("answer: (m2 - m1)*g/m2", "answer: (m2 - m1)*g/(m1 + m2)")
+    doc = parse_problem(text)
+    assert [p.id for p in doc.parts] == ["acceleration", "heavier_acceleration"]

@@ -21,6 +21,7 @@ import sympy
 
 from physics.engine.elements import incline, pendulum, pulley, rolling, rotating, spring, surface
 from physics.engine.elements.base import NAME, Builder
+from physics.engine.model import AuthoredElement
 from physics.engine.text import Path
 from physics.errors import SpecError, SpecErrors
 
@@ -36,6 +37,7 @@ class Expanded:
 
     data: Mapping[str, Any]
     origins: Mapping[tuple[str, str | int], Path] = field(default_factory=dict)
+    elements: tuple[AuthoredElement, ...] = ()  # what the author wrote, for the figures
 
     def relocate(self, errors: SpecErrors) -> SpecErrors:
         """The same faults, those inside generated entries moved to the element that generated them."""
@@ -101,7 +103,8 @@ def expand_elements(data: Any, symbols: Mapping[str, sympy.Symbol]) -> Expanded:
         raise SpecErrors([SpecError("expected a mapping of element names to elements", ("elements",))])
     if len(elements) > MAX_ELEMENTS:
         raise SpecErrors([SpecError(f"at most {MAX_ELEMENTS} entries", ("elements",))])
-    for name, spec in _in_dependency_order(elements, builder.data.get("bodies")):
+    ordered = _in_dependency_order(elements, builder.data.get("bodies"))
+    for name, spec in ordered:
         path: Path = ("elements", str(name))
         if not isinstance(name, str) or not NAME.match(name):
             builder.errors.append(SpecError("an element's name is a plain name (letters and digits)", path))
@@ -118,4 +121,31 @@ def expand_elements(data: Any, symbols: Mapping[str, sympy.Symbol]) -> Expanded:
         KINDS[str(kind)](name, spec, builder, path)
     if builder.errors:
         raise SpecErrors(builder.errors)
-    return Expanded(builder.data, dict(builder.origins))
+    return Expanded(builder.data, dict(builder.origins), _authored(ordered, builder))
+
+
+def _authored(written: list[tuple[Any, Any]], builder: Builder) -> tuple[AuthoredElement, ...]:
+    """Each element as written, with the names of the bodies, constraints, potentials and coordinates
+    its expansion generated (read back from the origins the Builder kept)."""
+    made: dict[str, dict[str, list[str]]] = {name: {} for name, _ in written}
+    coordinates = builder.data.get("coordinates") or []
+    for (section, key), path in builder.origins.items():
+        if len(path) < 2 or path[1] not in made:
+            continue
+        if section == "coordinates" and isinstance(key, int):
+            key = coordinates[key]
+        elif section == "potentials":
+            key = f"potential{key}"  # the name load_model gives the potential at that index
+        made[str(path[1])].setdefault(section, []).append(str(key))
+    return tuple(
+        AuthoredElement(
+            kind=str(spec["kind"]),
+            name=name,
+            fields=dict(spec),
+            bodies=tuple(made[name].get("bodies", ())),
+            constraints=tuple(made[name].get("constraints", ())),
+            potentials=tuple(made[name].get("potentials", ())),
+            coordinates=tuple(made[name].get("coordinates", ())),
+        )
+        for name, spec in written
+    )

@@ -3,10 +3,14 @@
     string: {kind: pulley, ends: [{body: m1, pulls: up}, {body: m2, pulls: up}]}
       pulls: up | down | left | right | {x: ..., y: ...}   the unit direction in which the string pulls
                                that body (towards the pulley), constant while it moves
+      {under: m2, pulls: up}   instead of an end on a body: the string runs on under a light movable
+                               pulley carried by m2 to a fixed point, so both its sides pull m2
       inertia: I, radius: R, mass: M, at: {x: 0, y: 0}, body: wheel
                                a pulley with inertia I turning without slipping on the string
 
-Massless: one constraint `string` whose force is the tension. With inertia the two sides have different
+Massless: one constraint `string` whose force is the tension. Under a movable pulley the string's two
+sides both pull its body, so that body's displacement counts twice in the string's length (it moves
+half as far as a free end would) and it feels twice the tension. With inertia the two sides have different
 tensions, `string1` (first end) and `string2` (second end); the pulley is a body held by its axle
 (`stringAxleX`, `stringAxleY`: the axle's force on the pulley) and turns counterclockwise as the string
 pays out on the first end's side (the left side, for strings hanging down from it).
@@ -46,8 +50,16 @@ def expand(name: str, spec: Mapping[str, Any], builder: Builder, path: Path) -> 
         if not isinstance(end, Mapping):
             builder.errors.append(SpecError("expected {body: ..., pulls: ...}", where))
             return
-        parts = Fields(end, where, builder, {"body", "pulls"}, {"body", "pulls"})
-        body = parts.name("body")
+        parts = Fields(end, where, builder, {"body", "pulls", "under"}, {"pulls"})
+        under = "under" in end
+        if under == ("body" in end):
+            parts.error("either the body at this end or the body whose movable pulley it runs under", "body")
+            return
+        if under and massive:
+            parts.error("a movable pulley is light here: give the pulley no inertia", "under")
+            return
+        body = parts.name("under" if under else "body")
+        sides = 2 if under else 1  # both sides of a movable pulley's loop pull its body
         direction = _direction(end.get("pulls"), parts)
         position = builder.position(body)
         if position is None:
@@ -68,19 +80,25 @@ def expand(name: str, spec: Mapping[str, Any], builder: Builder, path: Path) -> 
                 for symbol, (axis, _, _) in zip(cartesian, axes, strict=True)
             ]
         slack.append(
-            " + ".join(_scaled(c, symbol) for symbol, (_, c, _) in zip(cartesian, axes, strict=True))
+            " + ".join(_scaled(c, symbol, sides) for symbol, (_, c, _) in zip(cartesian, axes, strict=True))
         )
         length = builder.expr(
-            " + ".join(_scaled(c, f"({wrap(position[axis])} - {wrap(at[i])})") for axis, c, i in axes), where
+            " + ".join(_scaled(c, f"({wrap(position[axis])} - {wrap(at[i])})", sides) for axis, c, i in axes),
+            where,
         )
         if length is None:
             return
         lengths.append(length)
     constant = sympy.simplify(-(lengths[0] + lengths[1]))
     if constant.free_symbols - set(builder.symbols.values()):
+        movable = any(isinstance(end, Mapping) and "under" in end for end in ends)
         fields.error(
-            f"the ends' positions change the string's length by {typed_text(-constant)}; "
-            "make them move together",
+            f"the ends' positions change the string's length by {typed_text(constant)}; "
+            + (
+                "a movable pulley moves half as far as the string's free end (both its sides shorten)"
+                if movable
+                else "make them move together"
+            ),
             "ends",
         )
         return
@@ -123,10 +141,9 @@ def _direction(value: Any, fields: Fields) -> tuple[str, str] | None:
     return None
 
 
-def _scaled(component: str, symbol: str) -> str:
-    """`component * symbol`, written plainly for the unit components of up, down, left and right."""
-    if component == "1":
-        return symbol
-    if component == "-1":
-        return f"-{symbol}"
-    return f"{wrap(component)}*{symbol}"
+def _scaled(component: str, symbol: str, sides: int = 1) -> str:
+    """`sides * component * symbol`, written plainly for the unit components of up, down, left and right."""
+    if component in ("1", "-1"):
+        sign = "-" if component == "-1" else ""
+        return f"{sign}{symbol}" if sides == 1 else f"{sign}{sides}*{symbol}"
+    return f"{wrap(component) if sides == 1 else f'{sides}*{wrap(component)}'}*{symbol}"

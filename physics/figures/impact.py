@@ -1,0 +1,148 @@
+"""An impact: two bodies about to meet (or to be pushed apart), their velocities before labelled, a
+fixed floor or wall hatched where the body meets it, or the incline (an element) at whose foot the
+body that is hit rests."""
+
+from __future__ import annotations
+
+import math
+
+import sympy
+
+from physics.engine.impact import velocities_before
+from physics.engine.model import AuthoredElement, Model
+from physics.figures.figure import BLOCK, Figure, Values, body_label, symbol_label
+from physics.figures.geometry import element_body, linear_surface, of_kind, written_symbol
+from physics.figures.shapes import angle_mark, draw_block, square
+from physics.figures.svg import FILLS
+
+
+def draw_impact(figure: Figure, model: Model, values: Values) -> None:
+    """Two bodies about to meet (or, for an explosion, about to part), each with its velocity before
+    labelled; in the plane, the impact's normal dashed through the second body."""
+    hit = model.impact
+    assert hit is not None
+    if (ramp := _incline_at_foot(model)) is not None:
+        _draw_hit_at_incline_foot(figure, model, values, ramp)
+        return
+    canvas = figure.canvas
+    plane = any(len(model.body(name).position) > 1 for name in hit.bodies)
+    gap = 3.0 if hit.restitution is not None else 1.2
+    before = velocities_before(model)
+    speeds: list[str] = []
+    for index, name in enumerate(hit.bodies):
+        body = model.body(name)
+        centre = (index * gap, 0.0)
+        if plane:
+            canvas.circle(centre, BLOCK / 2, fill=FILLS[index])
+        else:
+            canvas.polygon(square(centre, BLOCK), fill=FILLS[index])
+        label = body_label(body, model)
+        if plane and label == body.name:  # equal masses: the mass inside, the name beneath
+            canvas.text(centre, symbol_label(body.mass.name) if isinstance(body.mass, sympy.Symbol) else "")
+            canvas.text((centre[0], -0.9), label, size=0.32)
+        else:
+            canvas.text(centre, label)
+        velocity = before[name].get("x", sympy.Integer(0))
+        if velocity != 0:
+            canvas.arrow((centre[0], 0.85), (centre[0] + 1.1, 0.85), width=0.04)
+            label = symbol_label(velocity.name) if isinstance(velocity, sympy.Symbol) else ""
+            canvas.text((centre[0] + 0.55, 1.2), label, size=0.36)
+            speeds.append(f"{body_label(body, model)} moving at {label or 'its speed'}")
+    if hit.fixed is not None:
+        _draw_fixed_partner(figure, model, values)
+    elif plane:
+        n = dict(hit.normal)
+        nx, ny = (values.number(n.get(a, sympy.Integer(0))) for a in ("x", "y"))
+        norm = math.hypot(nx, ny) or 1.0
+        edge = BLOCK / 2  # from the puck's rim, clear of its label
+        canvas.line(
+            (gap + edge * nx / norm, edge * ny / norm),
+            (gap + 1.8 * nx / norm, 1.8 * ny / norm),
+            dashed=True,
+            width=0.03,
+        )
+        canvas.line((gap + edge, 0.0), (gap + 1.8, 0.0), dashed=True, width=0.02)
+        angles = sorted(set().union(*(e.free_symbols for _, e in hit.normal)), key=str)
+        if angles:
+            middle = math.atan2(ny, nx) / 2
+            canvas.text(
+                (gap + 1.25 * math.cos(middle), 1.25 * math.sin(middle)),
+                symbol_label(angles[0].name),
+                size=0.36,
+            )
+    else:
+        canvas.line((-BLOCK, -BLOCK / 2), (gap + BLOCK, -BLOCK / 2), width=0.05)
+    names = " and ".join(body_label(model.body(name), model) for name in hit.bodies)
+    if hit.fixed is not None:
+        names += f" and the fixed {hit.fixed}"
+    if hit.release is not None:
+        figure.say(f"{names} together, about to be pushed apart by an explosion.")
+    else:
+        kind = "a collision" if hit.restitution != 1 else "an elastic collision"
+        figure.say(f"{names} about to meet in {kind}" + (": " + ", ".join(speeds) if speeds else "") + ".")
+
+
+def _draw_fixed_partner(figure: Figure, model: Model, values: Values) -> None:
+    """The floor or wall the body hits: a hatched surface across the normal, where the body meets it."""
+    hit = model.impact
+    assert hit is not None
+    n = dict(hit.normal)
+    nx, ny = (values.number(n.get(a, sympy.Integer(0))) for a in ("x", "y"))
+    norm = math.hypot(nx, ny) or 1.0
+    nx, ny = nx / norm, ny / norm
+    contact = (BLOCK / 2 * nx, BLOCK / 2 * ny)
+    along = (-ny, nx)  # hatched on the +normal side, the solid one
+    figure.canvas.ground(
+        (contact[0] - along[0], contact[1] - along[1]), (contact[0] + along[0], contact[1] + along[1])
+    )
+
+
+def _incline_at_foot(model: Model) -> AuthoredElement | None:
+    """The incline element (rising towards +x, fixed) whose body the other body of a collision hits
+    moving along +x: the block is drawn at the incline's foot, which pushes on it during the impact."""
+    hit = model.impact
+    assert hit is not None
+    if hit.fixed is not None or hit.restitution is None or len(hit.bodies) != 2:
+        return None
+    ramps = [
+        element
+        for element in of_kind(model.elements, "incline")
+        if element.fields.get("direction") == "up" and "wedge" not in element.fields
+    ]
+    return next((r for r in ramps if element_body(model, r).name == hit.bodies[1]), None)
+
+
+def _draw_hit_at_incline_foot(figure: Figure, model: Model, values: Values, ramp: AuthoredElement) -> None:
+    """The first body on a level track moving towards the second, which rests at the foot of the incline."""
+    hit = model.impact
+    assert hit is not None
+    canvas = figure.canvas
+    mover, block = (model.body(name) for name in hit.bodies)
+    symbol = written_symbol(model, ramp.fields.get("angle"))
+    surface = linear_surface(model.constraint(ramp.name), block, model, values)
+    if surface is None:  # an incline's clearance always has a normal
+        raise AssertionError(f"{ramp.name}: the contact has no normal")
+    across, up = surface.normal
+    slope = figure.readable_angle(math.atan2(-across, up), symbol)
+    foot, length = (2.5, 0.0), 4.5
+    top = (foot[0] + length * math.cos(slope), length * math.sin(slope))
+    canvas.polygon([foot, top, (top[0], 0.0)], fill="#eeeeee")
+    canvas.ground((-1.2, 0.0), (top[0], 0.0))
+    angle_mark(figure, foot, 0.0, slope, symbol)
+    tangent = (math.cos(slope), math.sin(slope))
+    draw_block(
+        figure, (foot[0] + tangent[0] * 0.6, tangent[1] * 0.6), tangent, body_label(block, model), FILLS[1]
+    )
+    draw_block(figure, (0.0, 0.0), (1.0, 0.0), body_label(mover, model), FILLS[0])
+    velocity = velocities_before(model)[mover.name].get("x", sympy.Integer(0))
+    speed = symbol_label(velocity.name) if isinstance(velocity, sympy.Symbol) else ""
+    canvas.arrow((-0.55, BLOCK + 0.4), (0.75, BLOCK + 0.4), width=0.04)
+    canvas.text((0.1, BLOCK + 0.75), speed, size=0.36)
+    kind = "a collision" if hit.restitution != 1 else "an elastic collision"
+    names = f"{body_label(mover, model)} and {body_label(block, model)}"
+    figure.say(
+        f"{names} about to meet in {kind}: {body_label(mover, model)} moving at {speed or 'its speed'} "
+        f"along a level track, {body_label(block, model)} resting at the foot of a fixed incline"
+        + (f" at angle {symbol_label(symbol.name)}" if symbol is not None else "")
+        + ", which pushes on it during the impact."
+    )
