@@ -3,9 +3,13 @@
     .venv/bin/python bench/ready_time.py [--cold-runs 2] [--warm-runs 5] [--directory DIR]
 
 Starts its own servers (bench/load.py's OwnServer: a free 127.0.0.1 port, its own process group, a
-SQLite database in a temporary directory). Each cold start is on a fresh database: it derives the whole
-bank and persists it. The warm starts are restarts on the last cold start's database, which load the
-compiled bank instead. Printed: every time with the median of each, in wall seconds and in CPU seconds
+SQLite database in a temporary directory). Each cold start is on a fresh database: it stores the bank
+from the shipped bank (`physcheck bank build`, app/shipped_bank.py) when one was built for this code,
+else (or with `--derive`) derives the whole bank in worker processes, and persists it. The warm starts
+are restarts on the last cold start's database, which load the compiled bank instead. Python compiles
+every module it imports that has no bytecode yet: with PYTHONDONTWRITEBYTECODE set (this machine's
+environment) a checkout never keeps any, so time a checkout after `python -m compileall -q app physics
+problems`, as a package install (pip, the Docker image) leaves it. Printed: every time with the median of each, in wall seconds and in CPU seconds
 (all the server's processes up to the 200: the server, the workers' fork server, the workers and a
 cold start's derivation processes; on a
 loaded machine wall time is mostly waiting for a core, CPU time is not). /ready is polled every 20 ms.
@@ -86,6 +90,7 @@ def main() -> None:
     parser.add_argument("--cold-runs", type=int, default=2)
     parser.add_argument("--warm-runs", type=int, default=5)
     parser.add_argument("--directory", type=Path, help="keep the database here (reused when present)")
+    parser.add_argument("--derive", action="store_true", help="cold starts derive the bank (no shipped bank)")
     args = parser.parse_args()
     with contextlib.ExitStack() as stack:
         if args.directory is None:
@@ -99,8 +104,11 @@ def main() -> None:
             for run in range(args.cold_runs):
                 last = run == args.cold_runs - 1
                 directory = root if last else Path(tempfile.mkdtemp(prefix="physcheck-cold-"))
+                server = OwnServer(directory, check_workers=None)
+                if args.derive:
+                    server.env["PHYSCHECK_SHIPPED_BANK"] = "false"
                 try:
-                    cold.append(time_to_ready(OwnServer(directory, check_workers=None)))
+                    cold.append(time_to_ready(server))
                 finally:
                     if not last:
                         shutil.rmtree(directory)
