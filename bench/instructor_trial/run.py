@@ -1,6 +1,6 @@
 """Trial as a new instructor: vet each problem file; per symbolic part: derived?, agreeing methods, simulated?
 
-Usage: .venv/bin/python trial2/run.py trial2 [name-filter]   (from the worktree's root)
+Usage: .venv/bin/python bench/instructor_trial/run.py bench/instructor_trial [name-filter]   (from the project root)
 """
 
 import pathlib
