@@ -16,7 +16,7 @@ m, k, g, L0 = (SYMBOLS[n] for n in NAMES)
 
 
 def hanging_spring(
-    position: str, coordinate: str, ranges: dict[str, list[str]] | None = None
+    position: str, coordinate: str, ranges: dict[str, list[str]] | None = None, positive: tuple[str, ...] = ()
 ) -> dict[str, Any]:
     """A mass on a vertical spring of natural length L0 hung from an anchor at the origin."""
     data: dict[str, Any] = {
@@ -28,6 +28,8 @@ def hanging_spring(
     }
     if ranges is not None:
         data["domain"] = {"ranges": ranges}
+    if positive:  # the spring stiff enough that the rest stays inside the declared range
+        data.setdefault("domain", {})["positive"] = list(positive)
     return data
 
 
@@ -41,19 +43,23 @@ def test_a_spring_whose_side_is_not_declared_is_refused_with_the_reason() -> Non
 
 
 @pytest.mark.parametrize(
-    ("position", "coordinate", "ranges", "rest"),
+    ("position", "coordinate", "ranges", "positive", "rest"),
     [
-        pytest.param("y", "y", {"y": ["-oo", "0"]}, -(L0 + m * g / k), id="below-the-anchor"),
-        pytest.param("-s", "s", {"s": ["0", "oo"]}, L0 + m * g / k, id="length-down-from-the-anchor"),
-        pytest.param("y", "y", {"y": ["0", "oo"]}, L0 - m * g / k, id="standing-on-the-spring"),
+        pytest.param("y", "y", {"y": ["-oo", "0"]}, (), -(L0 + m * g / k), id="below-the-anchor"),
+        pytest.param("-s", "s", {"s": ["0", "oo"]}, (), L0 + m * g / k, id="length-down-from-the-anchor"),
+        pytest.param(
+            "y", "y", {"y": ["0", "oo"]}, ("k*L0 - m*g",), L0 - m * g / k, id="standing-on-the-spring"
+        ),
         # the foot at -L0 and the block above it: y >= -L0 settles |L0 + y| on a range open above
-        pytest.param("y + L0", "y", {"y": ["-L0", "oo"]}, -m * g / k, id="foot-below-the-origin"),
+        pytest.param(
+            "y + L0", "y", {"y": ["-L0", "oo"]}, ("k*L0 - m*g",), -m * g / k, id="foot-below-the-origin"
+        ),
     ],
 )
 def test_a_declared_side_gives_the_extension_m_g_over_k(
-    position: str, coordinate: str, ranges: dict[str, list[str]], rest: sympy.Expr
+    position: str, coordinate: str, ranges: dict[str, list[str]], positive: tuple[str, ...], rest: sympy.Expr
 ) -> None:
-    result = derive(load_model(hanging_spring(position, coordinate, ranges), SYMBOLS))
+    result = derive(load_model(hanging_spring(position, coordinate, ranges, positive), SYMBOLS))
     assert sympy.simplify(result.quantities["rest"] - rest) == 0
     assert sympy.simplify(result.quantities["omega"] - sympy.sqrt(k / m)) == 0
     assert set(result.simulation) == {"rest", "omega"}
@@ -72,8 +78,15 @@ def test_a_range_that_straddles_the_anchor_does_not_fix_the_side() -> None:
     assert caught.value.errors[0].path == ("potentials", 0, "distance")
 
 
+def test_a_rest_outside_the_declared_range_is_refused() -> None:
+    # standing on the spring where m g > k L0: the rest L0 - m g/k would be below its foot
+    with pytest.raises(DerivationError, match="outside y's declared range"):
+        derive(load_model(hanging_spring("y", "y", {"y": ["0", "oo"]}), SYMBOLS))
+
+
 def test_a_bounded_range_on_one_side_fixes_it() -> None:
-    result = derive(load_model(hanging_spring("y", "y", {"y": ["-10*L0", "-L0/100"]}), SYMBOLS))
+    bounded = hanging_spring("y", "y", {"y": ["-10*L0", "-L0/100"]}, ("9*k*L0 - m*g",))
+    result = derive(load_model(bounded, SYMBOLS))
     assert sympy.simplify(result.quantities["rest"] + L0 + m * g / k) == 0
 
 
