@@ -55,7 +55,10 @@ class Physcheck(FastAPI):
 
     def __init__(self, *, max_body_bytes: int, **kwargs: Any):
         self.max_body_bytes = max_body_bytes
-        super().__init__(**kwargs)
+        # FastAPI's own OpenTelemetry bridge asks, on every request, whether a provider was configured
+        # (reading the environment each time): none ever is here, and it cost a check 3 % of the
+        # server's CPU. Our log (app/logs.py) is the service's record of requests.
+        super().__init__(telemetry={"tracing": False, "metrics": False, "logs": False}, **kwargs)
 
     def build_middleware_stack(self) -> ASGIApp:
         inner = super().build_middleware_stack()

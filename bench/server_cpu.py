@@ -23,6 +23,7 @@ from ready_time import TICKS
 from targets import (
     WARM_UP_FIRST,
     distinct_checks,
+    identical_check,
     new_reference_checks,
     renamed_checks,
     same_checks,
@@ -31,14 +32,15 @@ from targets import (
 
 MAKERS = {
     "distinct": distinct_checks,
+    "identical": lambda first=0: identical_check(),  # the verdict cache: the server alone
     "same": same_checks,
     "new": new_reference_checks,
     "renamed": renamed_checks,
 }
 
 
-def group_processes(group: int) -> dict[int, tuple[int, float]]:
-    """pid -> (parent pid, CPU seconds so far) of every live process of the group."""
+def group_processes(group: int) -> dict[int, tuple[int, float, float]]:
+    """pid -> (parent pid, user and system CPU seconds so far) of every live process of the group."""
     found = {}
     for entry in Path("/proc").iterdir():
         if not entry.name.isdigit():
@@ -46,7 +48,7 @@ def group_processes(group: int) -> dict[int, tuple[int, float]]:
         with contextlib.suppress(OSError):
             fields = (entry / "stat").read_text().rsplit(")", 1)[1].split()
             if int(fields[2]) == group:
-                found[int(entry.name)] = (int(fields[1]), (int(fields[11]) + int(fields[12])) / TICKS)
+                found[int(entry.name)] = (int(fields[1]), int(fields[11]) / TICKS, int(fields[12]) / TICKS)
     return found
 
 
@@ -83,7 +85,7 @@ def main() -> None:
             spies = []
             if args.py_spy is not None:
                 args.py_spy.mkdir(parents=True, exist_ok=True)
-                worker = next(p for p, (parent, _) in before.items() if role(parent, p, pid) == "workers")
+                worker = next(p for p, (parent, *_) in before.items() if role(parent, p, pid) == "workers")
                 for who, target in (("server", pid), ("worker", worker)):
                     out = args.py_spy / f"{args.phase}-{who}.txt"
                     spies.append(
@@ -111,12 +113,19 @@ def main() -> None:
                 spy.wait()
         finally:
             server.stop()
-    spent: dict[str, float] = {}
-    for p, (parent, cpu) in after.items():
+    # The kernel's share (system time: sockets, pipes, waking processes) apart from the program's own.
+    spent: dict[str, tuple[float, float]] = {}
+    for p, (parent, user, system) in after.items():
         name = role(parent, p, pid)
-        spent[name] = spent.get(name, 0.0) + cpu - before.get(p, (parent, 0.0))[1]
-    for name, seconds in sorted(spent.items()):
-        print(f"{name:<12}{seconds / result.requests * 1e3:8.3f} ms CPU per request")
+        _, user_before, system_before = before.get(p, (parent, 0.0, 0.0))
+        so_far = spent.get(name, (0.0, 0.0))
+        spent[name] = (so_far[0] + user - user_before, so_far[1] + system - system_before)
+    for name, (user, system) in sorted(spent.items()):
+        per = 1e3 / result.requests
+        print(
+            f"{name:<12}{(user + system) * per:8.3f} ms CPU per request "
+            f"(user {user * per:.3f}, system {system * per:.3f})"
+        )
     sys.stdout.flush()
 
 
