@@ -28,7 +28,7 @@ from app.db.records import ProblemRecord
 from app.derivation import DerivationFailed, DerivationPool, unpack
 from app.errors import GraderFault, Unavailable
 from app.grading.processes import PoolError
-from app.shipped_bank import ShippedBank, load_shipped
+from app.shipped_bank import ShippedBank, load_shipped, vouched_documents
 from app.storage import CompiledCache, CompiledEntry, Stores
 from physics.checking import CheckJob
 from physics.engine.model import Model
@@ -226,21 +226,22 @@ class Catalog:
         """Store the built-in bank: unchanged files keep their version, edited ones get a new one.
 
         Only a new or edited document has its meaning checked (a restart reads the bank's shape only:
-        the stored version was checked when it was stored).
+        the stored version was checked when it was stored), unless the shipped bank built from this
+        code holds it (checked when the bank was built).
         """
         listed = {record.id: record for record in self.list()}
         documents = _bank_documents(self._bank_dir)
+        hashes = {doc.id: document_hash(doc.model_dump(mode="json")) for doc in documents}
         unchanged = {
             doc.id
             for doc in documents
-            if doc.id in listed
-            and listed[doc.id].builtin
-            and listed[doc.id].document_hash == document_hash(doc.model_dump(mode="json"))
+            if doc.id in listed and listed[doc.id].builtin and listed[doc.id].document_hash == hashes[doc.id]
         }
+        vouched = vouched_documents(self._shipped, source_digest())
         faults = [
             (f"{doc.id}:{path}", message)
             for doc in documents
-            if doc.id not in unchanged
+            if doc.id not in unchanged and hashes[doc.id] not in vouched
             for path, message in _meaning_faults(doc)
         ]
         if faults:

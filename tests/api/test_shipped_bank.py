@@ -45,6 +45,22 @@ def shipped(small_bank: Path, tmp_path_factory: pytest.TempPathFactory) -> Path:
 
 
 @pytest.fixture
+def meanings_checked(monkeypatch: pytest.MonkeyPatch) -> list[str]:
+    """The ids of the documents a start checked the meaning of (each model loaded, every expression
+    read): none remembered from an earlier start in this process."""
+    monkeypatch.setattr(catalog_module, "_MEANING_CHECKED", set())
+    checked: list[str] = []
+    real = catalog_module.semantic_errors
+
+    def counting(doc):
+        checked.append(doc.id)
+        return real(doc)
+
+    monkeypatch.setattr(catalog_module, "semantic_errors", counting)
+    return checked
+
+
+@pytest.fixture
 def derivations(monkeypatch: pytest.MonkeyPatch) -> list[str]:
     """The ids of the documents a start sent to a derivation worker."""
     forget_derived()
@@ -122,6 +138,28 @@ def test_a_shipped_bank_derived_by_other_code_is_ignored_and_the_bank_derived_in
     progress = [line for line in logged if line.startswith("derived '")]  # in the order they finished
     assert sorted(line.split()[1] for line in progress) == ["'atwood'", "'incline-pulley'"]
     assert [line.split(" (")[1] for line in progress] == ["1 of 2)", "2 of 2)"]
+
+
+def test_a_first_start_does_not_check_again_the_meaning_the_shipped_bank_was_built_with(
+    db, small_bank, shipped, meanings_checked
+):
+    first_start(db, small_bank, shipped)
+    assert meanings_checked == []
+
+
+@pytest.mark.parametrize("file", ["from other code", "damaged", "absent"])
+def test_a_first_start_checks_the_meaning_of_what_no_shipped_bank_of_this_code_vouches_for(
+    db, small_bank, shipped, meanings_checked, tmp_path, file
+):
+    other = tmp_path / "other.compiled"
+    if file == "from other code":
+        bank = read_bank(shipped)
+        assert bank is not None
+        write_bank(other, bank.engine, "the files of another version", bank.payloads)
+    elif file == "damaged":
+        other.write_bytes(b"\x80\x04\x95" + shipped.read_bytes())
+    first_start(db, small_bank, other)
+    assert sorted(meanings_checked) == ["atwood", "incline-pulley"]
 
 
 def _flip_a_payload_bit(data: bytes) -> bytes:
