@@ -12,7 +12,6 @@ give them to within 2^-36 (PRECISE_RELATIVE); the reference computes the rest wh
 
 from __future__ import annotations
 
-import dataclasses
 import functools
 import hashlib
 import math
@@ -88,8 +87,7 @@ def domain_seed(context: SymbolicContext, constraints: Sequence[sympy.Basic]) ->
 def _shape(context: SymbolicContext) -> tuple[SymbolSpec, ...]:
     """The domain's symbols' specs without their names, in the order of the names (`sample_domain`'s
     order of the columns)."""
-    ordered = sorted(context.symbols.items(), key=lambda item: item[0].name)
-    return tuple(dataclasses.replace(spec, name="") for _, spec in ordered)
+    return context.shape
 
 
 @functools.lru_cache(maxsize=256)
@@ -402,4 +400,37 @@ def sample_domain(
             np.concatenate(values) if ok else None for values, ok in zip(kept_values, precise, strict=True)
         ),
         tuple(None if ok else evaluate(expr) for expr, ok in zip(required, precise, strict=True)),
+    )
+
+
+def whole_first_batch(
+    context: SymbolicContext,
+    size: int,
+    seed: int,
+    prec: int,
+    values: Callable[[Mapping[sympy.Symbol, Floats], int], Floats | None],
+) -> DomainSample | None:
+    """The sample `sample_domain` draws for a domain without constraints when the one required
+    expression is defined at every point of the first batch, and `values` (of the batch's points in
+    float64, and their number) gives it there in float64 to within PRECISE_RELATIVE; None when `values`
+    cannot vouch for that (sample_domain then decides).
+
+    `values` vouches for a reference not yet built by sympy (physics.symbolic.tree_reference): the
+    points are those sample_domain keeps, the first batch drawn and remembered as it draws it."""
+    symbols = tuple(sorted(context.symbols, key=lambda s: s.name))
+    batch = _first_batch(context, (), size, seed, prec)
+    if batch is None:
+        axes = [axis_for(context.symbols[s], prec) for s in symbols]
+        batch = _draw(symbols, axes, (), random.Random(seed), size, prec)  # noqa: S311 - as sample_domain
+        _remember_first_batch(context, (), size, seed, prec, batch)
+    found = values(batch.floats, size)
+    if found is None:
+        return None
+    return DomainSample(
+        symbols,
+        {s: list(batch.columns[s]) for s in symbols},
+        size,
+        {s: batch.floats[s].copy() for s in symbols},
+        (found,),
+        (None,),
     )
