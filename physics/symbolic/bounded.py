@@ -263,9 +263,20 @@ class BoundedTree:
     The same rules, step by step as the text is written; a subtraction is the sum of a negation, a
     division the product of a reciprocal (its error bound that of b^-1)."""
 
-    def __init__(self, columns: Mapping[str, Floats], size: int) -> None:
+    def __init__(
+        self,
+        columns: Mapping[str, Floats],
+        size: int,
+        key: Callable[[Node], int],
+        known: dict[int, Bounded],
+    ) -> None:
         self._columns = columns  # by the name in the tree
         self._size = size
+        # Subtrees by their structure (`key`, equal for equal subtrees over the same symbols), filled as
+        # they are evaluated: pass one per set of columns to share it (a new reference over a known
+        # domain is mostly made of subtrees an earlier one had).
+        self._key = key
+        self._known = known
 
     def __call__(self, node: Node) -> Bounded:
         """Raises Unsupported for a node float64 does not stand in for here (log10, a postfix, an
@@ -279,6 +290,15 @@ class BoundedTree:
         return Bounded(np.full(self._size, value), np.full(self._size, _U * abs(value) + _TINY))
 
     def _value(self, node: Node) -> Bounded:
+        if isinstance(node, Name | Num | Const | Group):
+            return self._evaluate(node)
+        key = self._key(node)
+        found = self._known.get(key)
+        if found is None:
+            found = self._known[key] = self._evaluate(node)
+        return found
+
+    def _evaluate(self, node: Node) -> Bounded:
         if isinstance(node, Name):
             values = self._columns[node.name]
             return Bounded(values, 2 * _U * np.abs(values) + _TINY)

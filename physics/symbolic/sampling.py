@@ -213,6 +213,8 @@ class _Batch:
     # Subtrees of the references over this domain, bounded in float64 at these points: a new reference
     # over a known domain is mostly made of subtrees an earlier one had (sin θ, M + m sin²θ).
     bounded: dict[sympy.Basic, Bounded] = field(default_factory=dict, compare=False)
+    # The same of references' parse trees, by their structure (physics.symbolic.tree_reference).
+    tree_bounded: dict[int, Bounded] = field(default_factory=dict, compare=False)
 
 
 _BATCH_CACHE_SIZE = 256
@@ -408,12 +410,13 @@ def whole_first_batch(
     size: int,
     seed: int,
     prec: int,
-    values: Callable[[Mapping[sympy.Symbol, Floats], int], Floats | None],
+    values: Callable[[Mapping[sympy.Symbol, Floats], int, dict[int, Bounded]], Floats | None],
 ) -> DomainSample | None:
     """The sample `sample_domain` draws for a domain without constraints when the one required
     expression is defined at every point of the first batch, and `values` (of the batch's points in
-    float64, and their number) gives it there in float64 to within PRECISE_RELATIVE; None when `values`
-    cannot vouch for that (sample_domain then decides).
+    float64, their number, and the bounded values of parse trees' subtrees there, to fill and start
+    from) gives it there in float64 to within PRECISE_RELATIVE; None when `values` cannot vouch for
+    that (sample_domain then decides).
 
     `values` vouches for a reference not yet built by sympy (physics.symbolic.tree_reference): the
     points are those sample_domain keeps, the first batch drawn and remembered as it draws it."""
@@ -423,7 +426,9 @@ def whole_first_batch(
         axes = [axis_for(context.symbols[s], prec) for s in symbols]
         batch = _draw(symbols, axes, (), random.Random(seed), size, prec)  # noqa: S311 - as sample_domain
         _remember_first_batch(context, (), size, seed, prec, batch)
-    found = values(batch.floats, size)
+    if len(batch.tree_bounded) > _BOUNDED_KEPT:
+        batch.tree_bounded.clear()
+    found = values(batch.floats, size, batch.tree_bounded)
     if found is None:
         return None
     return DomainSample(

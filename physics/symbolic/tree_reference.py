@@ -35,9 +35,9 @@ import sympy
 from physics.dimensions import DIMENSIONLESS, Dimension
 from physics.errors import AnswerError, SpecError
 from physics.mathinput import InputLimits
-from physics.mathinput.reader import TreeReading, build_reading, read_tree
+from physics.mathinput.reader import build_tree, parse_tree
 from physics.mathinput.tree import Call, Const, Group, Name, Neg, Node, Num, Power, Product, Sum
-from physics.symbolic.bounded import BoundedTree, Unsupported, constant_exponent
+from physics.symbolic.bounded import Bounded, BoundedTree, Unsupported, constant_exponent
 from physics.symbolic.compare import PREC, PRECISE_PREC
 from physics.symbolic.domain import SymbolicContext
 from physics.symbolic.floats import Floats
@@ -62,7 +62,8 @@ _VARIES = 2.0**-30
 class _TreeSource:
     """The reference's parse tree: its values at the reference's points, and sympy's tree on demand."""
 
-    reading: TreeReading
+    tree: Node
+    names: Mapping[str, sympy.Symbol]  # what each name in the tree stands for
     symbols: Mapping[str, sympy.Symbol]  # the names the tree uses
     keys: _Keys
     context: SymbolicContext
@@ -73,7 +74,7 @@ class _TreeSource:
         return bool(self.symbols)
 
     def build(self) -> sympy.Expr:
-        return _reference_side(build_reading(self.reading, self.limits).expr, self.context, ("expected",))
+        return _reference_side(build_tree(self.tree, self.names, self.limits), self.context, ("expected",))
 
     def precise_values(self, reference: PreparedReference) -> Column | None:
         points = min(PRECISE_POINTS, reference.sample.size)
@@ -89,38 +90,52 @@ class _TreeSource:
         self, columns: Mapping[sympy.Symbol, Column], size: int, prec: int, grid: tuple[object, object]
     ) -> Column | None:
         try:
-            found = _TreeValues(columns, size, self.symbols, prec, self.keys, grid).value(self.reading.tree)
+            found = _TreeValues(columns, size, self.symbols, prec, self.keys, grid).value(self.tree)
         except (_Declined, ArithmeticError, ValueError):
             return None
         return list(found)
 
 
-def prepared_from_text(
-    text: str, names: Mapping[str, sympy.Symbol], context: SymbolicContext, limits: InputLimits
-) -> PreparedReference | None:
-    """The reference `text` (over `names`, the context's symbols, without constraints, mistakes or
-    limiting cases) prepared from its parse tree; None where the module's conditions do not all hold
-    (then `prepare_reference` of its sympy tree prepares it, or says why it cannot)."""
+@dataclass(frozen=True)
+class TreeDomain:
+    """What the references over one set of declared symbols share, found once for the set."""
+
+    names: Mapping[str, sympy.Symbol]  # what a reference or an answer may use
+    context: SymbolicContext  # over those symbols, without constraints, mistakes or limiting cases
+    dims: Mapping[sympy.Symbol, Dimension]
+    seed: int
+
+
+def tree_domain(names: Mapping[str, sympy.Symbol], context: SymbolicContext) -> TreeDomain:
+    return TreeDomain(names, context, _declared_dimensions(context), domain_seed(context, ()))
+
+
+def prepared_from_text(text: str, domain: TreeDomain, limits: InputLimits) -> PreparedReference | None:
+    """The reference `text` over the domain prepared from its parse tree; None where the module's
+    conditions do not all hold (then `prepare_reference` of its sympy tree prepares it, or says why it
+    cannot)."""
+    context, dims = domain.context, domain.dims
     if context.constraints or context.mistakes or context.limits:
         return None
     try:
-        reading = read_tree(text, names, limits=limits)
+        tree, names = parse_tree(text, domain.names, limits=limits)
         shape = _Shape(limits.max_exponent)
-        shape.check(reading.tree)
+        shape.check(tree)
     except (AnswerError, _Declined, RecursionError):
         return None
-    symbols = {name: reading.symbols[name] for name in shape.names}
-    dims = _declared_dimensions(context)
+    symbols = {name: names[name] for name in shape.names}
     try:
-        dimension = _dimension(reading.tree, symbols, dims)
+        dimension = _dimension(tree, symbols, dims)
     except _Declined:
         return None
     if context.expected_dimension is not None and dimension != context.expected_dimension:
         return None
 
-    def values(columns: Mapping[sympy.Symbol, Floats], size: int) -> Floats | None:
+    keys = _Keys(symbols)
+
+    def values(columns: Mapping[sympy.Symbol, Floats], size: int, known: dict[int, Bounded]) -> Floats | None:
         try:
-            found = BoundedTree({name: columns[s] for name, s in symbols.items()}, size)(reading.tree)
+            found = BoundedTree({name: columns[s] for name, s in symbols.items()}, size, keys.of, known)(tree)
         except Unsupported:
             return None
         if not found.precise(PRECISE_RELATIVE).all():
@@ -130,7 +145,7 @@ def prepared_from_text(
         return found.values
 
     try:
-        sample = whole_first_batch(context, SAMPLE_SIZE, domain_seed(context, ()), PREC, values)
+        sample = whole_first_batch(context, SAMPLE_SIZE, domain.seed, PREC, values)
     except SpecError:
         return None
     if sample is None:
@@ -144,7 +159,7 @@ def prepared_from_text(
         dims=dims,
         mistake_exprs=(),
         limit_cases=(),
-        source=_TreeSource(reading, symbols, _Keys(symbols), context, limits),
+        source=_TreeSource(tree, names, symbols, keys, context, limits),
     )
 
 

@@ -39,7 +39,7 @@ from physics.symbolic import (
     make_symbol,
     prepare_reference,
 )
-from physics.symbolic.tree_reference import prepared_from_text
+from physics.symbolic.tree_reference import TreeDomain, prepared_from_text, tree_domain
 from physics.verdict import Outcome, Preview, Reason, Verdict
 from problems.fields import (
     MAX_ITEMS,
@@ -158,16 +158,23 @@ def adhoc_tree_question(expected: str, symbols: tuple[SymbolDecl, ...]) -> Adhoc
     """An ad-hoc check without constraints or mistakes with its reference prepared from its parse tree,
     where that gives what compiling and preparing it would (physics.symbolic.tree_reference); else None,
     and `adhoc_part` compiles it (or says what is wrong with it). Cached as adhoc_part is."""
+    domain = _adhoc_domain(symbols)
+    prepared = None if domain is None else prepared_from_text(expected, domain, DEFAULT_LIMITS)
+    if domain is None or prepared is None:
+        return None
+    return AdhocTreeQuestion(expected, symbols, SymbolicQuestion(domain.names, prepared))
+
+
+@lru_cache(maxsize=256)
+def _adhoc_domain(symbols: tuple[SymbolDecl, ...]) -> TreeDomain | None:
+    """The declared symbols as adhoc_part reads them, once per set (a course's references share theirs);
+    None where adhoc_part says what is wrong with them."""
     try:
         specs = {decl.name: symbol_spec(decl) for decl in symbols}
         table = {name: make_symbol(spec) for name, spec in specs.items()}
     except PhyscheckError:
         return None
-    context = SymbolicContext(symbols={table[name]: spec for name, spec in specs.items()})
-    prepared = prepared_from_text(expected, table, context, DEFAULT_LIMITS)
-    if prepared is None:
-        return None
-    return AdhocTreeQuestion(expected, symbols, SymbolicQuestion(table, prepared))
+    return tree_domain(table, SymbolicContext(symbols={table[name]: spec for name, spec in specs.items()}))
 
 
 @lru_cache(maxsize=256)
