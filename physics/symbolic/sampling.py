@@ -405,27 +405,33 @@ def sample_domain(
     )
 
 
-def whole_first_batch(
-    context: SymbolicContext,
-    size: int,
-    seed: int,
-    prec: int,
-    values: Callable[[Mapping[sympy.Symbol, Floats], int, dict[int, Bounded]], Floats | None],
-) -> DomainSample | None:
-    """The sample `sample_domain` draws for a domain without constraints when the one required
-    expression is defined at every point of the first batch, and `values` (of the batch's points in
-    float64, their number, and the bounded values of parse trees' subtrees there, to fill and start
-    from) gives it there in float64 to within PRECISE_RELATIVE; None when `values` cannot vouch for
-    that (sample_domain then decides).
-
-    `values` vouches for a reference not yet built by sympy (physics.symbolic.tree_reference): the
-    points are those sample_domain keeps, the first batch drawn and remembered as it draws it."""
-    symbols = tuple(sorted(context.symbols, key=lambda s: s.name))
+def first_batch(context: SymbolicContext, size: int, seed: int, prec: int) -> _Batch:
+    """The first batch `sample_domain` draws for a domain without constraints, drawn (and remembered)
+    as it draws it."""
     batch = _first_batch(context, (), size, seed, prec)
     if batch is None:
+        symbols = tuple(sorted(context.symbols, key=lambda s: s.name))
         axes = [axis_for(context.symbols[s], prec) for s in symbols]
         batch = _draw(symbols, axes, (), random.Random(seed), size, prec)  # noqa: S311 - as sample_domain
         _remember_first_batch(context, (), size, seed, prec, batch)
+    return batch
+
+
+def whole_batch_sample(
+    batch: _Batch,
+    symbols: tuple[sympy.Symbol, ...],
+    size: int,
+    values: Callable[[Mapping[sympy.Symbol, Floats], int, dict[int, Bounded]], Floats | None],
+) -> DomainSample | None:
+    """The sample `sample_domain` draws for a domain without constraints whose `first_batch` this is,
+    when the one required expression is defined at every point of the batch and `values` (of the
+    batch's points in float64, their number, and the bounded values of parse trees' subtrees there, to
+    fill and start from) gives it there in float64 to within PRECISE_RELATIVE; None when `values`
+    cannot vouch for that (sample_domain then decides).
+
+    `values` vouches for a reference not yet built by sympy (physics.symbolic.tree_reference): the
+    points are those sample_domain keeps of its first batch, all of them. `symbols`: the domain's, in
+    the order of their names."""
     if len(batch.tree_bounded) > _BOUNDED_KEPT:
         batch.tree_bounded.clear()
     found = values(batch.floats, size, batch.tree_bounded)

@@ -26,8 +26,9 @@ rounding of a tolerance, as in quick.py.
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from fractions import Fraction
+from functools import cached_property
 
 import numpy as np
 import sympy
@@ -51,11 +52,18 @@ from physics.symbolic.reference import (
     _reference_side,
     _typical_scale,
 )
-from physics.symbolic.sampling import PRECISE_RELATIVE, domain_seed, whole_first_batch
+from physics.symbolic.sampling import (
+    PRECISE_RELATIVE,
+    _Batch,
+    domain_seed,
+    first_batch,
+    whole_batch_sample,
+)
 
 # A reference that names a symbol varies over the sample by more than this (relatively): its float64
 # values are within 2^-36 of the exact ones, so a wider spread is a real one.
 _VARIES = 2.0**-30
+_DIMENSIONS_KEPT = 1024  # subtrees' dimensions per domain
 
 
 @dataclass(frozen=True)
@@ -103,11 +111,20 @@ class TreeDomain:
     names: Mapping[str, sympy.Symbol]  # what a reference or an answer may use
     context: SymbolicContext  # over those symbols, without constraints, mistakes or limiting cases
     dims: Mapping[sympy.Symbol, Dimension]
-    seed: int
+    # Subtrees' dimensions by their structure (quick._Keys), as the references' trees share them.
+    dimensions: dict[int, Dimension] = field(default_factory=dict, compare=False)
+
+    @cached_property
+    def sample_batch(self) -> tuple[tuple[sympy.Symbol, ...], _Batch]:
+        """The domain's symbols in the order of their names, and the first batch of its points (SpecError
+        where its ranges hold none)."""
+        seed = domain_seed(self.context, ())
+        symbols = tuple(sorted(self.context.symbols, key=lambda s: s.name))
+        return symbols, first_batch(self.context, SAMPLE_SIZE, seed, PREC)
 
 
 def tree_domain(names: Mapping[str, sympy.Symbol], context: SymbolicContext) -> TreeDomain:
-    return TreeDomain(names, context, _declared_dimensions(context), domain_seed(context, ()))
+    return TreeDomain(names, context, _declared_dimensions(context))
 
 
 def prepared_from_text(text: str, domain: TreeDomain, limits: InputLimits) -> PreparedReference | None:
@@ -124,14 +141,13 @@ def prepared_from_text(text: str, domain: TreeDomain, limits: InputLimits) -> Pr
     except (AnswerError, _Declined, RecursionError):
         return None
     symbols = {name: names[name] for name in shape.names}
+    keys = _Keys(symbols)
     try:
-        dimension = _dimension(tree, symbols, dims)
+        dimension = _Dimensions(symbols, dims, keys, domain.dimensions)(tree)
     except _Declined:
         return None
     if context.expected_dimension is not None and dimension != context.expected_dimension:
         return None
-
-    keys = _Keys(symbols)
 
     def values(columns: Mapping[sympy.Symbol, Floats], size: int, known: dict[int, Bounded]) -> Floats | None:
         try:
@@ -145,9 +161,10 @@ def prepared_from_text(text: str, domain: TreeDomain, limits: InputLimits) -> Pr
         return found.values
 
     try:
-        sample = whole_first_batch(context, SAMPLE_SIZE, domain.seed, PREC, values)
+        symbols_in_order, batch = domain.sample_batch
     except SpecError:
         return None
+    sample = whole_batch_sample(batch, symbols_in_order, SAMPLE_SIZE, values)
     if sample is None:
         return None
     return PreparedReference(
@@ -163,56 +180,72 @@ def prepared_from_text(text: str, domain: TreeDomain, limits: InputLimits) -> Pr
     )
 
 
-def _dimension(
-    node: Node, symbols: Mapping[str, sympy.Symbol], dims: Mapping[sympy.Symbol, Dimension]
-) -> Dimension:
-    """The tree's dimension where it is consistent and every name's is declared; else _Declined."""
-    if isinstance(node, Name):
-        found = dims.get(symbols[node.name])
+class _Dimensions:
+    """The tree's dimension where it is consistent and every name's is declared; else _Declined.
+    Subtrees' dimensions are kept by their structure in `known` (one per domain: the same names)."""
+
+    def __init__(
+        self,
+        symbols: Mapping[str, sympy.Symbol],
+        dims: Mapping[sympy.Symbol, Dimension],
+        keys: _Keys,
+        known: dict[int, Dimension],
+    ) -> None:
+        self._symbols = symbols
+        self._dims = dims
+        self._keys = keys
+        self._known = known
+
+    def __call__(self, node: Node) -> Dimension:
+        if isinstance(node, Name | Num | Const | Group):
+            return self._dimension(node)
+        key = self._keys.of(node)
+        found = self._known.get(key)
         if found is None:
-            raise _Declined
+            if len(self._known) >= _DIMENSIONS_KEPT:
+                self._known.clear()
+            found = self._known[key] = self._dimension(node)
         return found
-    if isinstance(node, Num | Const):
-        return DIMENSIONLESS
-    if isinstance(node, Group):
-        return _dimension(node.inner, symbols, dims)
-    if isinstance(node, Neg):
-        return _dimension(node.operand, symbols, dims)
-    if isinstance(node, Sum):
-        first = _dimension(node.first, symbols, dims)
-        if any(_dimension(term, symbols, dims) != first for _, term in node.rest):
+
+    def _dimension(self, node: Node) -> Dimension:
+        if isinstance(node, Name):
+            found = self._dims.get(self._symbols[node.name])
+            if found is None:
+                raise _Declined
+            return found
+        if isinstance(node, Num | Const):
+            return DIMENSIONLESS
+        if isinstance(node, Group):
+            return self(node.inner)
+        if isinstance(node, Neg):
+            return self(node.operand)
+        if isinstance(node, Sum):
+            first = self(node.first)
+            if any(self(term) != first for _, term in node.rest):
+                raise _Declined
+            return first
+        if isinstance(node, Product):
+            result = self(node.first)
+            for operator, factor in node.rest:
+                other = self(factor)
+                result = result * other if operator == "*" else result / other
+            return result
+        if isinstance(node, Power):
+            if isinstance(node.base, Const) and node.base.which == "e":
+                return self._dimensionless(node.exponent)
+            exponent = constant_exponent(node.exponent)
+            if exponent is None:
+                raise _Declined
+            return self(node.base) ** exponent
+        if isinstance(node, Call):
+            if node.func == "abs":
+                return self(node.arg)
+            if node.func == "sqrt":
+                return self(node.arg) ** Fraction(1, 2)
+            return self._dimensionless(node.arg)
+        raise _Declined
+
+    def _dimensionless(self, node: Node) -> Dimension:
+        if not self(node).is_dimensionless:
             raise _Declined
-        return first
-    if isinstance(node, Product):
-        result = _dimension(node.first, symbols, dims)
-        for operator, factor in node.rest:
-            other = _dimension(factor, symbols, dims)
-            result = result * other if operator == "*" else result / other
-        return result
-    if isinstance(node, Power):
-        if isinstance(node.base, Const) and node.base.which == "e":
-            return _dimensionless(node.exponent, symbols, dims)
-        exponent = _exponent(node.exponent)
-        return _dimension(node.base, symbols, dims) ** exponent
-    if isinstance(node, Call):
-        if node.func == "abs":
-            return _dimension(node.arg, symbols, dims)
-        if node.func == "sqrt":
-            return _dimension(node.arg, symbols, dims) ** Fraction(1, 2)
-        return _dimensionless(node.arg, symbols, dims)
-    raise _Declined
-
-
-def _dimensionless(
-    node: Node, symbols: Mapping[str, sympy.Symbol], dims: Mapping[sympy.Symbol, Dimension]
-) -> Dimension:
-    if not _dimension(node, symbols, dims).is_dimensionless:
-        raise _Declined
-    return DIMENSIONLESS
-
-
-def _exponent(node: Node) -> Fraction:
-    found = constant_exponent(node)
-    if found is None:
-        raise _Declined
-    return found
+        return DIMENSIONLESS
