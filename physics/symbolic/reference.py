@@ -232,7 +232,7 @@ class PreparedReference:
         """The sample and the reference's values in float64, for the first look at an answer."""
         known = self.sample.required_floats[0]
         if known is not None:
-            return float_sample(self.sample.float_columns, known)
+            return float_sample(self.sample.float_columns, known, False, self.sample.float_columns_in_range)
         return float_sample(self.sample.float_columns, *rounded(self.values))
 
     @cached_property

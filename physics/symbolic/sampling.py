@@ -29,7 +29,7 @@ from mpmath import libmp
 from physics.errors import SpecError
 from physics.symbolic.bounded import Bounded, BoundedEvaluator, Unsupported
 from physics.symbolic.domain import SymbolicContext, SymbolSpec, symbol_assumptions
-from physics.symbolic.floats import Floats
+from physics.symbolic.floats import Floats, in_range
 from physics.symbolic.numeric import (
     RND,
     Column,
@@ -65,6 +65,8 @@ class DomainSample:
     # within PRECISE_RELATIVE of multiprecision (else None), in multiprecision otherwise (else None).
     required_floats: tuple[Floats | None, ...] = field(default=(), compare=False)
     required: tuple[Column | None, ...] = ()
+    # Whether every float column is floats.in_range, when known (points shared by many references).
+    float_columns_in_range: bool | None = field(default=None, compare=False)
 
     def point(self, index: int) -> dict[sympy.Symbol, Mpf]:
         return {s: self.columns[s][index] for s in self.symbols}  # type: ignore[misc]
@@ -215,6 +217,11 @@ class _Batch:
     bounded: dict[sympy.Basic, Bounded] = field(default_factory=dict, compare=False)
     # The same of references' parse trees, by their structure (physics.symbolic.tree_reference).
     tree_bounded: dict[int, Bounded] = field(default_factory=dict, compare=False)
+
+    @functools.cached_property
+    def floats_in_range(self) -> bool:
+        """Every point in float64 floats.in_range (asked of each reference prepared over them)."""
+        return all(in_range(column) for column in self.floats.values())
 
 
 _BATCH_CACHE_SIZE = 256
@@ -444,4 +451,5 @@ def whole_batch_sample(
         {s: batch.floats[s].copy() for s in symbols},
         (found,),
         (None,),
+        batch.floats_in_range,
     )

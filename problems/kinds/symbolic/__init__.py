@@ -150,7 +150,7 @@ class AdhocTreeQuestion:
         return self.question.grade(answer, limits)
 
     def read(self, answer: str, limits: InputLimits) -> Preview:
-        return adhoc_part(self.expected, self.symbols).compiled.read(answer, limits)
+        return adhoc_part(self.expected, self.symbols, (), ()).compiled.read(answer, limits)
 
 
 @lru_cache(maxsize=256)
