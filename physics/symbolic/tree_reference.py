@@ -228,7 +228,8 @@ class _Dimensions:
             result = self(node.first)
             for operator, factor in node.rest:
                 other = self(factor)
-                result = result * other if operator == "*" else result / other
+                if not other.is_dimensionless:  # most factors are pure numbers: nothing to combine
+                    result = result * other if operator == "*" else result / other
             return result
         if isinstance(node, Power):
             if isinstance(node.base, Const) and node.base.which == "e":
