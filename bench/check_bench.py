@@ -20,7 +20,7 @@ from sympy.parsing.sympy_parser import parse_expr, standard_transformations
 
 from physics.checking import SymbolDecl, run_job
 from physics.symbolic.judge import REMEMBERED
-from problems.kinds.symbolic import SymbolicJob, adhoc_part
+from problems.kinds.symbolic import SymbolicJob, adhoc_part, adhoc_tree_question
 
 ANGLE = SymbolDecl("theta", "1", range=("0", "pi/2"))
 KG = "kg"
@@ -91,6 +91,7 @@ def physcheck_check(answer: str, expected: str, symbols: tuple[SymbolDecl, ...])
 def physcheck_new_reference(answer: str, expected: str, symbols: tuple[SymbolDecl, ...]) -> bool:
     """The same, with the reference read and prepared again for every check (a reference never seen)."""
     adhoc_part.cache_clear()
+    adhoc_tree_question.cache_clear()
     return physcheck_check(answer, expected, symbols)
 
 

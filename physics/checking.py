@@ -278,9 +278,7 @@ def symbol_spec(decl: SymbolDecl) -> SymbolSpec:
         dimension = unit_dimension(decl.dimension, ("symbols", decl.name, "dimension"))
     low = high = None
     if decl.range is not None:
-        low, high = (
-            read_expression(text, {}, ("symbols", decl.name, "range", i)) for i, text in enumerate(decl.range)
-        )
+        low, high = (_read_bound(decl.name, i, text) for i, text in enumerate(decl.range))
     return SymbolSpec(
         name=decl.name,
         dimension=dimension,
@@ -291,6 +289,21 @@ def symbol_spec(decl: SymbolDecl) -> SymbolSpec:
         low=low,
         high=high,
     )
+
+
+def _read_bound(name: str, index: int, text: str) -> sympy.Expr:
+    found = _range_bound(text)
+    return read_expression(text, {}, ("symbols", name, "range", index)) if found is None else found
+
+
+@lru_cache(maxsize=256)
+def _range_bound(text: str) -> sympy.Expr | None:
+    """A range bound's text read (`pi/2`, `oo`), once per text: the same bounds come under every name (a
+    renamed domain's `theta_2`); None where it is unreadable (read again with its path, to say so)."""
+    try:
+        return read_expression(text, {}, ())
+    except SpecError:
+        return None
 
 
 _INFINITY_WORDS = {"oo": sympy.oo, "inf": sympy.oo, "infinity": sympy.oo, "∞": sympy.oo, "-oo": -sympy.oo}

@@ -8,7 +8,7 @@ or a glued run is accepted only when it reads exactly one way.
 from __future__ import annotations
 
 import re
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from typing import Literal
 
@@ -53,7 +53,7 @@ def _greek_swapped(name: str) -> str | None:
     """`theta_0` -> `θ_0` and `θ0` -> `theta0`: the same name in the other script."""
     if name and name[0] in GREEK_NAMES:
         return GREEK_NAMES[name[0]] + name[1:]
-    for greek, letter in GREEK_LETTERS.items():
+    for greek, letter in _GREEK_BY_INITIAL.get(name[:1], ()):
         if name.startswith(greek):
             rest = name[len(greek) :]
             if not rest or rest[0] == "_" or rest[0].isdigit():
@@ -72,6 +72,25 @@ def _subscript_aliases(name: str) -> list[str]:
     return aliases
 
 
+# GREEK_LETTERS' items by the initial of the name, in their order: a name is compared only with those.
+_GREEK_BY_INITIAL: dict[str, list[tuple[str, str]]] = {}
+for _greek, _letter in GREEK_LETTERS.items():
+    _GREEK_BY_INITIAL.setdefault(_greek[:1], []).append((_greek, _letter))
+_ALL_FUNCTIONS = dict(FUNCTIONS)
+# The constants' and functions' pieces, as every table has them unless a declared name takes the spelling.
+_BASE_CONSTANTS = {**{s: "pi" for s in PI_SPELLINGS}, EULER_SPELLING: "e"}
+_BASE_PIECES: dict[str, tuple[tuple[PartKind, str], ...]] = {}
+for _spelling, _const in _BASE_CONSTANTS.items():
+    _BASE_PIECES[_spelling] = (*_BASE_PIECES.get(_spelling, ()), ("const", _const))
+for _typed, _canon in FUNCTIONS.items():
+    _BASE_PIECES[_typed] = (*_BASE_PIECES.get(_typed, ()), ("func", _canon))
+_BASE_LONGEST = max(len(p) for p in _BASE_PIECES)
+# The letters that stand for each name (`ħ` for `hbar`).
+_LETTERS_OF: dict[str, list[str]] = {}
+for _letter, _named in LETTER_NAMES.items():
+    _LETTERS_OF.setdefault(_named, []).append(_letter)
+
+
 class NameTable:
     """The names one parse may use: the declared ones plus constants and functions."""
 
@@ -85,24 +104,36 @@ class NameTable:
             swapped = _greek_swapped(name)
             if swapped is not None:
                 spellings.append(swapped)
-            spellings.extend(letter for letter, named in LETTER_NAMES.items() if named == name)
+            spellings.extend(_LETTERS_OF.get(name, ()))
             for spelling in spellings:
                 self._exact.setdefault(spelling, name)
             for spelling in spellings + [a for s in spellings for a in _subscript_aliases(s)]:
                 entry = pieces.setdefault(spelling, [])
                 if ("name", name) not in entry:
                     entry.append(("name", name))
-        self.euler_available = EULER_SPELLING not in self._exact
-        self._constants = {s: "pi" for s in PI_SPELLINGS if s not in self._exact}
-        if self.euler_available:
-            self._constants[EULER_SPELLING] = "e"
-        self._functions = {typed: canon for typed, canon in FUNCTIONS.items() if typed not in self._exact}
-        for spelling, const in self._constants.items():
-            pieces.setdefault(spelling, []).append(("const", const))
-        for typed, canon in self._functions.items():
-            pieces.setdefault(typed, []).append(("func", canon))
-        self._pieces = pieces
-        self._longest_piece = max((len(p) for p in pieces), default=1)
+        exact = self._exact
+        self.euler_available = EULER_SPELLING not in exact
+        self._constants = {s: c for s, c in _BASE_CONSTANTS.items() if s not in exact}
+        # Shared by the tables whose names take no function's spelling (the usual case): only read.
+        self._functions = (
+            _ALL_FUNCTIONS
+            if exact.keys().isdisjoint(_ALL_FUNCTIONS)
+            else {typed: canon for typed, canon in FUNCTIONS.items() if typed not in exact}
+        )
+        # The constants' and functions' pieces but those a declared name takes; a declared name's pieces
+        # first, then the constant's or function's of the same spelling.
+        merged: dict[str, Sequence[tuple[PartKind, str]]] = dict(_BASE_PIECES)
+        longest = _BASE_LONGEST
+        if not exact.keys().isdisjoint(_BASE_PIECES):
+            for spelling in exact:
+                merged.pop(spelling, None)
+            longest = max((len(p) for p in merged), default=1)
+        for spelling, entries in pieces.items():
+            found = merged.get(spelling)
+            merged[spelling] = entries if found is None else (*entries, *found)
+            longest = max(longest, len(spelling))
+        self._pieces = merged
+        self._longest_piece = longest
         self._resolved: dict[str, Resolution] = {}
 
     def is_declared(self, word: str) -> bool:

@@ -151,6 +151,22 @@ def parse_expression(
     return _built(tree, table.symbols, limits)
 
 
+def parse_tree(
+    text: str, names: Mapping[str, sympy.Symbol], *, limits: InputLimits = DEFAULT_LIMITS
+) -> tuple[Node, Mapping[str, sympy.Symbol]]:
+    """`parse_expression` up to the parse tree, with what each name in it stands for: for a reference
+    valued from its tree before sympy builds it (`build_tree`), whose reading is never shown."""
+    tree, _, table = _tree(text, names, limits, None, False)
+    return tree, table.symbols
+
+
+def build_tree(
+    tree: Node, symbols: Mapping[str, sympy.Symbol], limits: InputLimits = DEFAULT_LIMITS
+) -> sympy.Expr:
+    """sympy's expression of a tree from `parse_tree`: `parse_expression` of the text it was read from."""
+    return _built(tree, symbols, limits)
+
+
 def _tree(
     text: str,
     names: Mapping[str, sympy.Symbol],

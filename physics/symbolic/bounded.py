@@ -20,11 +20,14 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
+from fractions import Fraction
 
 import numpy as np
 import numpy.typing as npt
 import sympy
 
+from physics.mathinput.build import FUNCTIONS
+from physics.mathinput.tree import Call, Const, Group, Name, Neg, Node, Num, Power, Product, Sum
 from physics.symbolic.floats import Floats
 
 Mask = npt.NDArray[np.bool_]
@@ -252,3 +255,122 @@ def _real_power(base: Bounded, exponent: Bounded) -> Bounded:
     spread = np.abs(exponent.values) * log_error + exponent.errors * (log_base + log_error)
     errors = (np.expm1(spread) + 8 * _U) * np.abs(values) + _TINY
     return Bounded(values, _unless(spread <= _SMALL, errors))
+
+
+class BoundedTree:
+    """`BoundedEvaluator` over a parse tree (physics.mathinput.tree) instead of sympy's: a reference
+    read from text is vouched for at the sample points before sympy builds it (tree_reference.py).
+    The same rules, step by step as the text is written; a subtraction is the sum of a negation, a
+    division the product of a reciprocal (its error bound that of b^-1)."""
+
+    def __init__(
+        self,
+        columns: Mapping[str, Floats],
+        size: int,
+        key: Callable[[Node], int],
+        known: dict[int, Bounded],
+    ) -> None:
+        self._columns = columns  # by the name in the tree
+        self._size = size
+        # Subtrees by their structure (`key`, equal for equal subtrees over the same symbols), filled as
+        # they are evaluated: pass one per set of columns to share it (a new reference over a known
+        # domain is mostly made of subtrees an earlier one had).
+        self._key = key
+        self._known = known
+
+    def __call__(self, node: Node) -> Bounded:
+        """Raises Unsupported for a node float64 does not stand in for here (log10, a postfix, an
+        exponent that is not a whole or half number)."""
+        with np.errstate(all="ignore"):
+            return self._value(node)
+
+    def _constant(self, value: float) -> Bounded:
+        if not math.isfinite(value):
+            raise Unsupported
+        return Bounded(np.full(self._size, value), np.full(self._size, _U * abs(value) + _TINY))
+
+    def _value(self, node: Node) -> Bounded:
+        if isinstance(node, Name | Num | Const | Group):
+            return self._evaluate(node)
+        key = self._key(node)
+        found = self._known.get(key)
+        if found is None:
+            found = self._known[key] = self._evaluate(node)
+        return found
+
+    def _evaluate(self, node: Node) -> Bounded:
+        if isinstance(node, Name):
+            values = self._columns[node.name]
+            return Bounded(values, 2 * _U * np.abs(values) + _TINY)
+        if isinstance(node, Num):
+            try:
+                return self._constant(float(node.value))
+            except OverflowError:
+                raise Unsupported from None
+        if isinstance(node, Const):
+            return self._constant(math.pi if node.which == "pi" else math.e)
+        if isinstance(node, Group):
+            return self._value(node.inner)
+        if isinstance(node, Neg):
+            inner = self._value(node.operand)
+            return Bounded(-inner.values, inner.errors)
+        if isinstance(node, Sum):
+            terms = [self._value(node.first)]
+            for sign, term in node.rest:
+                found = self._value(term)
+                terms.append(found if sign == "+" else Bounded(-found.values, found.errors))
+            return _add(terms)
+        if isinstance(node, Product):
+            product = self._value(node.first)
+            for operator, factor in node.rest:
+                found = self._value(factor)
+                product = _multiply(product, found if operator == "*" else _integer_power(found, -1))
+            return product
+        if isinstance(node, Power):
+            return self._power(node)
+        if isinstance(node, Call):
+            argument = self._value(node.arg)
+            if node.func == "sqrt":
+                return _root(argument, inverse=False)
+            rule = _RULES.get(_TREE_FUNCTIONS.get(node.func, type(None)))
+            if rule is None:
+                raise Unsupported
+            return _apply(rule, argument)
+        raise Unsupported  # a postfix
+
+    def _power(self, node: Power) -> Bounded:
+        if isinstance(node.base, Const) and node.base.which == "e":
+            return _apply(_RULES[sympy.exp], self._value(node.exponent))
+        exponent = constant_exponent(node.exponent)
+        if exponent is None or exponent.denominator > 2 or abs(exponent.numerator) > _MAX_POWER:
+            raise Unsupported
+        base = self._value(node.base)
+        if exponent.denominator == 2:
+            base = _root(base, inverse=False)
+        return _integer_power(base, exponent.numerator)
+
+
+# The functions of the tree (by their canonical names) that _RULES knows.
+_TREE_FUNCTIONS: dict[str, type] = {
+    name: made for name, made in FUNCTIONS.items() if isinstance(made, type) and made in _RULES
+}
+
+
+def constant_exponent(node: Node) -> Fraction | None:
+    """An exponent as an exact constant (`2`, `-1/2`, `(3/2)`), else None."""
+    if isinstance(node, Num):
+        return node.value
+    if isinstance(node, Group):
+        return constant_exponent(node.inner)
+    if isinstance(node, Neg):
+        inner = constant_exponent(node.operand)
+        return None if inner is None else -inner
+    if isinstance(node, Product):
+        value = constant_exponent(node.first)
+        for operator, factor in node.rest:
+            other = constant_exponent(factor)
+            if value is None or other is None or (operator == "/" and other == 0):
+                return None
+            value = value * other if operator == "*" else value / other
+        return value
+    return None

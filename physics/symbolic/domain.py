@@ -56,6 +56,13 @@ class SymbolicContext:
     def __post_init__(self) -> None:
         object.__setattr__(self, "by_name", {symbol.name: symbol for symbol in self.symbols})
 
+    @functools.cached_property
+    def shape(self) -> tuple[SymbolSpec, ...]:
+        """The symbols' specs without their names, in the order of the names: what the domain's sample
+        points depend on (physics.symbolic.sampling), asked three times per new reference."""
+        ordered = sorted(self.symbols.items(), key=lambda item: item[0].name)
+        return tuple(SymbolSpec(**{**vars(spec), "name": ""}) for _, spec in ordered)
+
 
 def _bound_sign(bound: sympy.Expr | None, path: tuple[str | int, ...]) -> int | None:
     """-1, 0 or 1 for a finite bound's sign; None for an absent or infinite bound or an unknown sign."""

@@ -61,9 +61,15 @@ def rounded(values: Column) -> tuple[Floats, bool]:
 
 
 def float_sample(
-    columns: Mapping[sympy.Symbol, Floats], floats: Floats, underflow: bool = False
+    columns: Mapping[sympy.Symbol, Floats],
+    floats: Floats,
+    underflow: bool = False,
+    columns_in_range: bool | None = None,
 ) -> FloatSample:
-    usable = not underflow and in_range(floats) and all(in_range(column) for column in columns.values())
+    """`columns_in_range`: whether every column is `in_range`, when known (else found here)."""
+    if columns_in_range is None:
+        columns_in_range = all(in_range(column) for column in columns.values())
+    usable = not underflow and in_range(floats) and columns_in_range
     scale = _median_magnitude(floats)
     return FloatSample(columns, floats, scale if scale > 0 else 1.0, usable)
 

@@ -208,9 +208,7 @@ def diagnose(answer: sympy.Expr, values: Column, reference: PreparedReference, u
     if agreement(values, negated(reference.values), reference.scale).agrees:
         return Judgement(False, Reason.SIGN_ERROR, SIGN_FEEDBACK)
     # Between two plain numbers every ratio is constant: the reason would say nothing.
-    ratio = (
-        constant_ratio(values, reference.values, reference.scale) if reference.expected.free_symbols else None
-    )
+    ratio = constant_ratio(values, reference.values, reference.scale) if reference.has_symbols else None
     if ratio is not None and not close(libmp.mpf_abs(ratio), ONE, ONE, 40) and ratio != libmp.fzero:
         return Judgement(False, Reason.CONSTANT_FACTOR, FACTOR_FEEDBACK)
     sentences = [WRONG_VALUE_FEEDBACK]
@@ -293,32 +291,35 @@ def judged_in_floats(
     return None
 
 
-def _at_points(
-    answer_at: AnswerAt, reference: PreparedReference, indexes: tuple[int, ...], *targets: sympy.Expr
-) -> list[Column]:
-    """The answer and reference-side `targets` in multiprecision (PREC) at a few sample points."""
-    mine = answer_at(indexes)
-    if not targets:
-        return [mine]
-    evaluate = reference.point_evaluator(indexes, targets)
-    return [mine, *(evaluate(target) for target in targets)]
+def _expression_at(reference: PreparedReference, target: sympy.Expr) -> AnswerAt:
+    """A reference-side expression (a known mistake) in multiprecision at sample points."""
+    return lambda indexes: reference.point_evaluator(indexes, (target,))(target)
+
+
+def _negation_at(reference: PreparedReference) -> AnswerAt:
+    """The reference's negation in multiprecision at sample points: for a reference read from its parse
+    tree, its values there negated (exactly), so sympy need not build it to look for a sign error."""
+    if reference.source is None:
+        return _expression_at(reference, -reference.expected)
+    return lambda indexes: [None if v is None else libmp.mpf_neg(v) for v in reference.values_at(indexes)]
 
 
 def _same_as(
     answer_at: AnswerAt,
     values: Floats,
-    target: sympy.Expr,
+    target_at: AnswerAt,
     targets: Floats | None,
     reference: PreparedReference,
 ) -> bool | None:
-    """Would multiprecision find the answer equal to `target` at every sample point? Decided from
-    float64 and confirmed in multiprecision: equal at the check points, or different at a point where
-    float64 sees a clear difference; None when float64 cannot tell."""
+    """Would multiprecision find the answer equal to a reference-side target (`target_at` its values at
+    sample points, `targets` in float64) at every sample point? Decided from float64 and confirmed in
+    multiprecision: equal at the check points, or different at a point where float64 sees a clear
+    difference; None when float64 cannot tell."""
     if targets is None:
         return None
     scale = reference.floats.scale
     if agrees(values, targets, scale):
-        mine, theirs = _at_points(answer_at, reference, _CHECK_POINTS, target)
+        mine, theirs = answer_at(_CHECK_POINTS), target_at(_CHECK_POINTS)
         same = all(
             a is not None and b is not None and close(a, b, reference.scale, TOLERANCE_BITS)
             for a, b in zip(mine, theirs, strict=True)
@@ -326,7 +327,8 @@ def _same_as(
         return True if same else None
     suspects = np.flatnonzero(differs(values, targets, scale))
     if suspects.size:
-        (a,), (b,) = _at_points(answer_at, reference, (int(suspects[0]),), target)
+        index = (int(suspects[0]),)
+        (a,), (b,) = answer_at(index), target_at(index)
         if a is not None and b is not None and not close(a, b, reference.scale, TOLERANCE_BITS):
             return False
     return None
@@ -351,7 +353,7 @@ def _constant_factor(answer_at: AnswerAt, values: Floats, reference: PreparedRef
         indexes = (0, far)
     else:
         return None
-    (mine,) = _at_points(answer_at, reference, indexes)
+    mine = answer_at(indexes)
     theirs = reference.values_at(indexes)
     if any(v is None for v in (*mine, *theirs)):
         return None
@@ -380,7 +382,7 @@ def _diagnose_in_floats(
     if not np.isfinite(values).all():
         return None  # undefined somewhere: the full path says so in the feedback
     for (expr, feedback), targets in zip(reference.mistake_exprs, reference.float_mistakes, strict=True):
-        same = _same_as(answer_at, values, expr, targets, reference)
+        same = _same_as(answer_at, values, _expression_at(reference, expr), targets, reference)
         if same is None:
             return None
         if same:
@@ -389,12 +391,12 @@ def _diagnose_in_floats(
     if dimension is not None:
         return Judgement(False, Reason.WRONG_DIMENSION, dimension)
     floats = reference.floats
-    same = _same_as(answer_at, values, -reference.expected, -floats.values, reference)
+    same = _same_as(answer_at, values, _negation_at(reference), -floats.values, reference)
     if same is None:
         return None
     if same:
         return Judgement(False, Reason.SIGN_ERROR, SIGN_FEEDBACK)
-    if reference.expected.free_symbols:
+    if reference.has_symbols:
         factor = _constant_factor(answer_at, values, reference)
         if factor is None:
             return None

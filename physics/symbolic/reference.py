@@ -9,11 +9,11 @@ needs them: most checks are decided from float64 and a few multiprecision points
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from decimal import Decimal
 from fractions import Fraction
 from functools import cached_property
-from typing import Any
+from typing import Any, Protocol
 
 import numpy as np
 import sympy
@@ -65,9 +65,29 @@ class PreparedMistake:
     values: Column
 
 
+class ReferenceSource(Protocol):
+    """A reference sympy has not built yet, valued from its parse tree (physics.symbolic.tree_reference):
+    built only when a check needs sympy's tree."""
+
+    @property
+    def has_symbols(self) -> bool: ...
+
+    def build(self) -> sympy.Expr:
+        """sympy's tree of the reference, as compiling it would have read it."""
+        ...
+
+    def precise_values(self, reference: PreparedReference) -> Column | None:
+        """`precise_values` from the tree; None where the tree cannot give them."""
+        ...
+
+    def values_at(self, reference: PreparedReference, indexes: tuple[int, ...]) -> Column | None:
+        """`values_at` from the tree; None where the tree cannot give them."""
+        ...
+
+
 @dataclass(frozen=True)
 class PreparedReference:
-    expected: sympy.Expr
+    built: sympy.Expr | None  # the reference as sympy's tree; None until `expected` builds it (`source`)
     context: SymbolicContext
     sample: DomainSample
     scale: Mpf  # typical |reference|: the absolute floor of comparisons
@@ -75,6 +95,22 @@ class PreparedReference:
     dims: Mapping[sympy.Symbol, Dimension]  # the symbols whose dimension is declared
     mistake_exprs: tuple[tuple[sympy.Expr, str], ...]  # (expression, feedback), over the context's symbols
     limit_cases: tuple[LimitCase, ...]
+    source: ReferenceSource | None = field(default=None, compare=False)
+
+    @cached_property
+    def expected(self) -> sympy.Expr:
+        """The reference as sympy's tree (built on first use for a reference read from its parse tree)."""
+        if self.built is not None:
+            return self.built
+        assert self.source is not None
+        return self.source.build()
+
+    @cached_property
+    def has_symbols(self) -> bool:
+        """Whether the reference depends on a symbol (between plain numbers every ratio is constant)."""
+        if self.source is not None:
+            return self.source.has_symbols
+        return bool(self.expected.free_symbols)
 
     @cached_property
     def values(self) -> Column:
@@ -92,8 +128,10 @@ class PreparedReference:
         known = self._point_values
         missing = tuple(i for i in indexes if i not in known)
         if missing:
-            columns = {s: [self.sample.columns[s][i] for i in missing] for s in self.sample.symbols}
-            found = Evaluator(columns, len(missing), PREC)(self.expected)
+            found = None if self.source is None else self.source.values_at(self, missing)
+            if found is None:
+                columns = {s: [self.sample.columns[s][i] for i in missing] for s in self.sample.symbols}
+                found = Evaluator(columns, len(missing), PREC)(self.expected)
             known.update(zip(missing, found, strict=True))
         return [known[i] for i in indexes]
 
@@ -142,12 +180,16 @@ class PreparedReference:
         return object()
 
     def __getstate__(self) -> dict[str, object]:
-        # Pickled with a compiled part: not what is kept for answers (rebuilt on first use).
-        return {
+        # Pickled with a compiled part: not what is kept for answers (rebuilt on first use), nor the
+        # parse tree of a reference read from text (built by sympy now).
+        state = {
             name: value
             for name, value in self.__dict__.items()
             if name not in ("_grids", "_judgements", "token")
         }
+        if self.source is not None:
+            state.update(built=self.expected, source=None, has_symbols=self.has_symbols)
+        return state
 
     @cached_property
     def precise_columns(self) -> Mapping[sympy.Symbol, Column]:
@@ -163,8 +205,10 @@ class PreparedReference:
 
     @cached_property
     def precise_values(self) -> Column:
-        """...and the reference there at PRECISE_PREC."""
-        return self._precise_subtrees[self.expected]
+        """...and the reference there at PRECISE_PREC (or more, from the parse tree of a reference read
+        from text)."""
+        found = None if self.source is None else self.source.precise_values(self)
+        return self._precise_subtrees[self.expected] if found is None else found
 
     def precise_evaluator(self) -> Evaluator:
         """An evaluator at the precise points that starts from the reference's subtrees (an answer
@@ -188,7 +232,7 @@ class PreparedReference:
         """The sample and the reference's values in float64, for the first look at an answer."""
         known = self.sample.required_floats[0]
         if known is not None:
-            return float_sample(self.sample.float_columns, known)
+            return float_sample(self.sample.float_columns, known, False, self.sample.float_columns_in_range)
         return float_sample(self.sample.float_columns, *rounded(self.values))
 
     @cached_property
@@ -311,7 +355,7 @@ def prepare_reference(expected: sympy.Expr, context: SymbolicContext) -> Prepare
     )
     limits = tuple(_renamed_limit(case, context, index) for index, case in enumerate(context.limits))
     return PreparedReference(
-        expected=reference,
+        built=reference,
         context=context,
         sample=sample,
         scale=_typical_scale(sample),

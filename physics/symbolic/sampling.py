@@ -12,7 +12,6 @@ give them to within 2^-36 (PRECISE_RELATIVE); the reference computes the rest wh
 
 from __future__ import annotations
 
-import dataclasses
 import functools
 import hashlib
 import math
@@ -30,7 +29,7 @@ from mpmath import libmp
 from physics.errors import SpecError
 from physics.symbolic.bounded import Bounded, BoundedEvaluator, Unsupported
 from physics.symbolic.domain import SymbolicContext, SymbolSpec, symbol_assumptions
-from physics.symbolic.floats import Floats
+from physics.symbolic.floats import Floats, in_range
 from physics.symbolic.numeric import (
     RND,
     Column,
@@ -66,6 +65,8 @@ class DomainSample:
     # within PRECISE_RELATIVE of multiprecision (else None), in multiprecision otherwise (else None).
     required_floats: tuple[Floats | None, ...] = field(default=(), compare=False)
     required: tuple[Column | None, ...] = ()
+    # Whether every float column is floats.in_range, when known (points shared by many references).
+    float_columns_in_range: bool | None = field(default=None, compare=False)
 
     def point(self, index: int) -> dict[sympy.Symbol, Mpf]:
         return {s: self.columns[s][index] for s in self.symbols}  # type: ignore[misc]
@@ -88,8 +89,7 @@ def domain_seed(context: SymbolicContext, constraints: Sequence[sympy.Basic]) ->
 def _shape(context: SymbolicContext) -> tuple[SymbolSpec, ...]:
     """The domain's symbols' specs without their names, in the order of the names (`sample_domain`'s
     order of the columns)."""
-    ordered = sorted(context.symbols.items(), key=lambda item: item[0].name)
-    return tuple(dataclasses.replace(spec, name="") for _, spec in ordered)
+    return context.shape
 
 
 @functools.lru_cache(maxsize=256)
@@ -215,6 +215,13 @@ class _Batch:
     # Subtrees of the references over this domain, bounded in float64 at these points: a new reference
     # over a known domain is mostly made of subtrees an earlier one had (sin θ, M + m sin²θ).
     bounded: dict[sympy.Basic, Bounded] = field(default_factory=dict, compare=False)
+    # The same of references' parse trees, by their structure (physics.symbolic.tree_reference).
+    tree_bounded: dict[int, Bounded] = field(default_factory=dict, compare=False)
+
+    @functools.cached_property
+    def floats_in_range(self) -> bool:
+        """Every point in float64 floats.in_range (asked of each reference prepared over them)."""
+        return all(in_range(column) for column in self.floats.values())
 
 
 _BATCH_CACHE_SIZE = 256
@@ -402,4 +409,47 @@ def sample_domain(
             np.concatenate(values) if ok else None for values, ok in zip(kept_values, precise, strict=True)
         ),
         tuple(None if ok else evaluate(expr) for expr, ok in zip(required, precise, strict=True)),
+    )
+
+
+def first_batch(context: SymbolicContext, size: int, seed: int, prec: int) -> _Batch:
+    """The first batch `sample_domain` draws for a domain without constraints, drawn (and remembered)
+    as it draws it."""
+    batch = _first_batch(context, (), size, seed, prec)
+    if batch is None:
+        symbols = tuple(sorted(context.symbols, key=lambda s: s.name))
+        axes = [axis_for(context.symbols[s], prec) for s in symbols]
+        batch = _draw(symbols, axes, (), random.Random(seed), size, prec)  # noqa: S311 - as sample_domain
+        _remember_first_batch(context, (), size, seed, prec, batch)
+    return batch
+
+
+def whole_batch_sample(
+    batch: _Batch,
+    symbols: tuple[sympy.Symbol, ...],
+    size: int,
+    values: Callable[[Mapping[sympy.Symbol, Floats], int, dict[int, Bounded]], Floats | None],
+) -> DomainSample | None:
+    """The sample `sample_domain` draws for a domain without constraints whose `first_batch` this is,
+    when the one required expression is defined at every point of the batch and `values` (of the
+    batch's points in float64, their number, and the bounded values of parse trees' subtrees there, to
+    fill and start from) gives it there in float64 to within PRECISE_RELATIVE; None when `values`
+    cannot vouch for that (sample_domain then decides).
+
+    `values` vouches for a reference not yet built by sympy (physics.symbolic.tree_reference): the
+    points are those sample_domain keeps of its first batch, all of them. `symbols`: the domain's, in
+    the order of their names."""
+    if len(batch.tree_bounded) > _BOUNDED_KEPT:
+        batch.tree_bounded.clear()
+    found = values(batch.floats, size, batch.tree_bounded)
+    if found is None:
+        return None
+    return DomainSample(
+        symbols,
+        {s: list(batch.columns[s]) for s in symbols},
+        size,
+        {s: batch.floats[s].copy() for s in symbols},
+        (found,),
+        (None,),
+        batch.floats_in_range,
     )

@@ -18,6 +18,7 @@ from physics.answer_text import student_text, typed_text
 from physics.checking import (
     CompiledQuestion,
     PartJob,
+    Question,
     SymbolDecl,
     SymbolicQuestion,
     check_answer,
@@ -27,6 +28,7 @@ from physics.checking import (
 )
 from physics.errors import PhyscheckError, SpecError
 from physics.mathinput import InputLimits, parse_math
+from physics.mathinput.limits import DEFAULT_LIMITS
 from physics.mathinput.render import in_student_style
 from physics.pickling import pickled_by_fields
 from physics.symbolic import (
@@ -37,7 +39,8 @@ from physics.symbolic import (
     make_symbol,
     prepare_reference,
 )
-from physics.verdict import Outcome, Reason, Verdict
+from physics.symbolic.tree_reference import TreeDomain, prepared_from_text, tree_domain
+from physics.verdict import Outcome, Preview, Reason, Verdict
 from problems.fields import (
     MAX_ITEMS,
     PART_ID,
@@ -126,8 +129,52 @@ class SymbolicJob:
     mistakes: tuple[tuple[str, str], ...] = ()  # (expression text, feedback)
     limits_config: InputLimits = field(default_factory=InputLimits)
 
-    def question(self) -> CompiledQuestion:
+    def question(self) -> Question:
+        if not self.constraints and not self.mistakes:
+            found = adhoc_tree_question(self.expected, self.symbols)
+            if found is not None:
+                return found
         return adhoc_part(self.expected, self.symbols, self.constraints, self.mistakes).compiled
+
+
+@dataclass(frozen=True)
+class AdhocTreeQuestion:
+    """An ad-hoc check whose reference was prepared from its parse tree (tree_reference.py): graded
+    against it, read as the compiled part reads (which needs only the reference's dimension)."""
+
+    expected: str
+    symbols: tuple[SymbolDecl, ...]
+    question: SymbolicQuestion  # as CompiledQuestion's
+
+    def grade(self, answer: str, limits: InputLimits) -> Verdict:
+        return self.question.grade(answer, limits)
+
+    def read(self, answer: str, limits: InputLimits) -> Preview:
+        return adhoc_part(self.expected, self.symbols, (), ()).compiled.read(answer, limits)
+
+
+@lru_cache(maxsize=256)
+def adhoc_tree_question(expected: str, symbols: tuple[SymbolDecl, ...]) -> AdhocTreeQuestion | None:
+    """An ad-hoc check without constraints or mistakes with its reference prepared from its parse tree,
+    where that gives what compiling and preparing it would (physics.symbolic.tree_reference); else None,
+    and `adhoc_part` compiles it (or says what is wrong with it). Cached as adhoc_part is."""
+    domain = _adhoc_domain(symbols)
+    prepared = None if domain is None else prepared_from_text(expected, domain, DEFAULT_LIMITS)
+    if domain is None or prepared is None:
+        return None
+    return AdhocTreeQuestion(expected, symbols, SymbolicQuestion(domain.names, prepared))
+
+
+@lru_cache(maxsize=256)
+def _adhoc_domain(symbols: tuple[SymbolDecl, ...]) -> TreeDomain | None:
+    """The declared symbols as adhoc_part reads them, once per set (a course's references share theirs);
+    None where adhoc_part says what is wrong with them."""
+    try:
+        specs = {decl.name: symbol_spec(decl) for decl in symbols}
+        table = {name: make_symbol(spec) for name, spec in specs.items()}
+    except PhyscheckError:
+        return None
+    return tree_domain(table, SymbolicContext(symbols={table[name]: spec for name, spec in specs.items()}))
 
 
 @lru_cache(maxsize=256)
