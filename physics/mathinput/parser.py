@@ -150,20 +150,19 @@ class Parser:
             return Neg(operand) if tok.text == "-" else operand
         return self._power()
 
-    def _starts_factor(self, tok: Token) -> bool:
-        return tok.kind in _FACTOR_STARTS or (tok.kind is Kind.BAR and self._abs_depth == 0)
-
     def _product(self) -> Node:
         first = self._power()
         items: list[_Item] = []
+        tokens = self._tokens
         while True:
-            tok = self._tokens[self._i]
-            if tok.kind is Kind.OP and tok.text in "*/":
-                self._advance()
+            tok = tokens[self._i]
+            kind = tok.kind
+            if kind is Kind.OP and tok.text in "*/":
+                self._i += 1
                 items.append(_Item("*" if tok.text == "*" else "/", self._signed(), tok, False))
-            elif self._starts_factor(tok):
-                prev = self._prev
-                if tok.kind is Kind.NUM and prev is not None and prev.kind is Kind.NUM:
+            elif kind in _FACTOR_STARTS or (kind is Kind.BAR and self._abs_depth == 0):
+                prev = tokens[self._i - 1]  # the factor before this one
+                if kind is Kind.NUM and prev.kind is Kind.NUM:
                     raise ParseError(
                         f'Two numbers side by side ("{self._source[prev.pos : tok.end]}"): remove the '
                         "space if it is one number, or write * between them.",
@@ -228,7 +227,26 @@ class Parser:
         return first, items
 
     def _power(self) -> Node:
-        return self._raised(self._postfixed())
+        # A name or a number (most factors) made here, and the powers and postfixes looked for only
+        # where a token can start one: a factor is then one call deep, not four.
+        tok = self._tokens[self._i]
+        kind = tok.kind
+        if kind is Kind.NAME:
+            self._i += 1
+            node: Node = Name(tok.text)
+        elif kind is Kind.NUM:
+            self._i += 1
+            assert tok.value is not None
+            node = Num(tok.text, tok.value, tok.is_integer_literal)
+        else:
+            node = self._atom()
+        after = self._tokens[self._i].kind
+        if after is Kind.POSTFIX:
+            node = self._postfixes(node)
+            after = self._tokens[self._i].kind
+        if after is Kind.OP or after is Kind.SUP:
+            return self._raised(node)
+        return node
 
     def _raised(self, node: Node) -> Node:
         """`node` with the powers written after it (`^2`, `**2`, `²`)."""
@@ -336,7 +354,9 @@ class Parser:
         return self._power()
 
     def _postfixed(self) -> Node:
-        node = self._atom()
+        return self._postfixes(self._atom())
+
+    def _postfixes(self, node: Node) -> Node:
         while self._tokens[self._i].kind is Kind.POSTFIX:
             tok = self._advance()
             node = Postfix(_POSTFIX_KINDS[tok.text], node, tok.pos)

@@ -14,7 +14,7 @@ from physics.mathinput.limits import DEFAULT_LIMITS, InputLimits
 from physics.mathinput.names import NameTable
 from physics.mathinput.parser import Parser
 from physics.mathinput.powered import PoweredArgument, reading_note
-from physics.mathinput.render import render_latex, render_text
+from physics.mathinput.render import render_both
 from physics.mathinput.tokens import Kind, Token, tokenize
 from physics.mathinput.tree import Node
 from physics.mathinput.words import resolve_words
@@ -127,7 +127,8 @@ def read_tree(
     builder's (`build_reading` makes those)."""
     tree, powered, table = _tree(text, names, limits, choices, powers_outside, velocities)
     try:
-        read_as = ReadAs(render_text(tree), render_latex(tree), reading_note(powered))
+        text, latex = render_both(tree)
+        read_as = ReadAs(text, latex, reading_note(powered))
     except RecursionError:
         raise _too_deep() from None
     return TreeReading(tree, read_as, powered, table.symbols)
