@@ -41,10 +41,11 @@ def _has_undefined(expr: sympy.Basic) -> bool:
 def _refuse_exponent_letter_clash(text: str, tokens: list[Token], table: NameTable) -> None:
     """`2E-3` where `E` is a declared symbol: 2×10⁻³ or 2·E − 3? Refused with both readings."""
     for token in tokens:
-        if token.kind is not Kind.NUM:
+        # A number's text has an `e` only when it was typed with a power of ten (`2E-3` reads 2e-3).
+        if token.kind is not Kind.NUM or "e" not in token.text:
             continue
         typed = text[token.pos : token.end]
-        if "e" not in typed and "E" not in typed:  # most numbers: no letter to look for
+        if "e" not in typed and "E" not in typed:  # typed in another script (fullwidth)
             continue
         letter = next(c for c in typed if c in "eE")
         if not table.is_declared(letter):
