@@ -159,7 +159,10 @@ class Parser:
             kind = tok.kind
             if kind is Kind.OP and tok.text in "*/":
                 self._i += 1
-                items.append(_Item("*" if tok.text == "*" else "/", self._signed(), tok, False))
+                after = tokens[self._i]
+                signed = after.kind is Kind.OP and after.text in "+-"
+                factor = self._signed() if signed else self._power()
+                items.append(_Item("*" if tok.text == "*" else "/", factor, tok, False))
             elif kind in _FACTOR_STARTS or (kind is Kind.BAR and self._abs_depth == 0):
                 prev = tokens[self._i - 1]  # the factor before this one
                 if kind is Kind.NUM and prev.kind is Kind.NUM:
@@ -173,9 +176,10 @@ class Parser:
                 break
         if not items:
             return first
-        first, items = self._settle_ambiguous_divisions(first, items)
-        if not items:
-            return first
+        if any(item.op == "/" for item in items):  # only a division can be ambiguous
+            first, items = self._settle_ambiguous_divisions(first, items)
+            if not items:
+                return first
         return Product(first, tuple((item.op, item.node) for item in items))
 
     def _settle_ambiguous_divisions(self, first: Node, items: list[_Item]) -> tuple[Node, list[_Item]]:
@@ -240,11 +244,11 @@ class Parser:
             node = Num(tok.text, tok.value, tok.is_integer_literal)
         else:
             node = self._atom()
-        after = self._tokens[self._i].kind
-        if after is Kind.POSTFIX:
+        after = self._tokens[self._i]
+        if after.kind is Kind.POSTFIX:
             node = self._postfixes(node)
-            after = self._tokens[self._i].kind
-        if after is Kind.OP or after is Kind.SUP:
+            after = self._tokens[self._i]
+        if (after.kind is Kind.OP and after.text == "^") or after.kind is Kind.SUP:
             return self._raised(node)
         return node
 
