@@ -76,7 +76,6 @@ EXTRA_BITS = 2 * MAGNITUDE_BITS
 _NUMBER_SYMBOLS = {"pi": sympy.pi, "e": sympy.E}
 # Grids of the subtree memory, beside tuples of sample indexes (and what is kept of a subtree there).
 _FLOATS, _PRECISE, _DIMENSIONS = "float64", "precise", "dimensions"
-_LEAVES = (Num, Name, Const)
 
 
 class _Declined(Exception):
@@ -420,8 +419,9 @@ class _FloatTree:
         # One rule per node type, found by the type (an answer has dozens of nodes; a chain of
         # isinstance tests per node was a tenth of a check).
         kind = type(node)
-        if kind in _LEAVES:
-            return _FLOAT_RULES[kind](self, node)
+        if kind is Name:
+            return self._columns[node.name]  # type: ignore[union-attr]
+        # A number's values too are kept: the same few numbers recur in every answer.
         key = (*self._grid, self._keys[id(node)])
         found = _SUBTREES.get(key)
         if found is None:
@@ -430,9 +430,6 @@ class _FloatTree:
 
     def _num(self, node: Num) -> Floats:
         return np.full(self._size, float(node.value))
-
-    def _name(self, node: Name) -> Floats:
-        return self._columns[node.name]
 
     def _const(self, node: Const) -> Floats:
         return np.full(self._size, float(_NUMBER_SYMBOLS[node.which]))
@@ -474,7 +471,6 @@ class _FloatTree:
 
 _FLOAT_RULES: dict[type, Callable[[_FloatTree, Any], Floats]] = {
     Num: _FloatTree._num,
-    Name: _FloatTree._name,
     Const: _FloatTree._const,
     Group: _FloatTree._group,
     Neg: _FloatTree._neg,
@@ -513,8 +509,6 @@ class _TreeValues:
             kind = type(node)
         if kind is Name:
             return self._columns[node.name]  # type: ignore[union-attr]
-        if kind is Num or kind is Const:
-            return _checked(_VALUE_RULES[kind](self, node))
         key = (*self._grid, self._keys[id(node)])
         found = _SUBTREES.get(key)
         if found is None:
