@@ -164,7 +164,7 @@ class _Dimensions:
         if kind is Num or kind is Const:
             return DIMENSIONLESS
         key = (*self._grid, self._keys[id(node)])
-        known = _SUBTREES.get(key)
+        known = _recalled(key)
         if known is None:
             known = _remember(key, self._composite(node))
         return known  # type: ignore[no-any-return]
@@ -387,7 +387,8 @@ _LEAF = (1.0, 1)  # a name's, a number's or a constant's degree and weight
 # Subtrees' values at a reference's points, by (reference, grid, subtree): many answers to a reference
 # share subtrees (`sin θ`, `M + m sin^2 θ`, a whole answer times a factor), and a subtree's values depend
 # only on its structure, the points and the precision, so a value found here is the very one a new
-# evaluation would compute. Bounded, and cleared when full.
+# evaluation would compute. Bounded: when full, the half used longest ago is forgotten (clearing it all
+# made every reference's shared subtrees, its costliest, be computed again).
 _SUBTREES: dict[tuple[object, object, int], Any] = {}
 SUBTREES_KEPT = 16384
 # Structural keys of subtrees, interned as numbers that are never given out again (so a memory entry
@@ -397,9 +398,18 @@ STRUCTURES_KEPT = 65536
 _numbers = itertools.count()
 
 
+def _recalled(key: tuple[object, object, int]) -> Any:
+    """The values kept for `key` (None if none), now the most recently used."""
+    found = _SUBTREES.pop(key, None)
+    if found is not None:
+        _SUBTREES[key] = found  # to the end: a dict keeps its keys in the order they were set
+    return found
+
+
 def _remember(key: tuple[object, object, int], values: Any) -> Any:
     if len(_SUBTREES) >= SUBTREES_KEPT:
-        _SUBTREES.clear()
+        for oldest in list(itertools.islice(_SUBTREES, max(1, SUBTREES_KEPT // 2))):
+            del _SUBTREES[oldest]
     _SUBTREES[key] = values
     return values
 
@@ -423,7 +433,7 @@ class _FloatTree:
             return self._columns[node.name]  # type: ignore[union-attr]
         # A number's values too are kept: the same few numbers recur in every answer.
         key = (*self._grid, self._keys[id(node)])
-        found = _SUBTREES.get(key)
+        found = _recalled(key)
         if found is None:
             found = _remember(key, _FLOAT_RULES[kind](self, node))
         return found  # type: ignore[no-any-return]
@@ -509,8 +519,12 @@ class _TreeValues:
             kind = type(node)
         if kind is Name:
             return self._columns[node.name]  # type: ignore[union-attr]
+        if kind is Num or kind is Const:
+            # Made anew: kept like a subtree's, a number's values made this walk measure 2.5 times slower
+            # (mpmath normalizing the sums over them), for a reason not found.
+            return _checked(_VALUE_RULES[kind](self, node))
         key = (*self._grid, self._keys[id(node)])
-        found = _SUBTREES.get(key)
+        found = _recalled(key)
         if found is None:
             found = _remember(key, _checked(_VALUE_RULES[kind](self, node)))
         return found  # type: ignore[no-any-return]
