@@ -67,7 +67,7 @@ def _is_word_char(ch: str) -> bool:
 class LatexReader:
     """The LaTeX of one text: the tokenizer hands it every backslash and brace, and `^\\circ`."""
 
-    def __init__(self, chars: str, units_in_fonts: bool = False, velocities: bool = False) -> None:
+    def __init__(self, chars: list[str], units_in_fonts: bool = False, velocities: bool = False) -> None:
         self._chars = chars
         self._n = len(chars)
         self._units_in_fonts = units_in_fonts

@@ -7,7 +7,6 @@ and braces go to `latex.LatexReader`, which makes of pasted LaTeX the tokens of 
 
 from __future__ import annotations
 
-import re
 from dataclasses import replace
 from fractions import Fraction
 
@@ -33,24 +32,6 @@ _MAX_SCI_EXPONENT_DIGITS = 6
 
 # What may follow the first letter of a word, besides letters.
 _WORD_MARKS = frozenset("0123456789_")
-# Most of a word in one match: ASCII and Greek letters and the marks (all of them letters or marks as the
-# loop that finishes the word reads them), rather than a character at a time.
-_WORD_RUN = re.compile(r"[A-Za-z0-9_\u0391-\u03a1\u03a3-\u03a9\u03b1-\u03c9]*")
-_NUMBER = re.compile(r"([0-9]*)(?:\.([0-9]*))?")
-_SCI_EXPONENT = re.compile(r"[eE]([+-]?)([0-9]+)")
-# The characters that are a token of their own (besides `*`, `^` and `|`, which have more to them).
-_SINGLE = {
-    **dict.fromkeys("+-/", Kind.OP),
-    **dict.fromkeys(OPENERS, Kind.LPAREN),
-    **dict.fromkeys(CLOSERS, Kind.RPAREN),
-    **dict.fromkeys("!%°", Kind.POSTFIX),
-    "√": Kind.SQRT,
-}
-# Braces are LaTeX's (`latex.LatexReader`), never a bracket of their own.
-for _brace in "{}":
-    del _SINGLE[_brace]
-# Every character variant is one character for one, so positions in the text stay exact.
-_VARIANTS = str.maketrans(dict(CHARACTER_VARIANTS))
 
 
 def tokenize(
@@ -69,65 +50,54 @@ def tokenize(
             limits.max_length,
         )
     # Every variant is a non-ASCII character: plain ASCII text has none to replace.
-    line = text if text.isascii() else text.translate(_VARIANTS)
-    latex = LatexReader(line, units_in_fonts, velocities)
+    chars = list(text) if text.isascii() else [CHARACTER_VARIANTS.get(ch, ch) for ch in text]
+    latex = LatexReader(chars, units_in_fonts, velocities)
     tokens: list[Token] = []
-    n = len(line)
+    n = len(chars)
     max_tokens = limits.max_tokens
     i = 0
     space = False
     while i < n:
-        ch = line[i]
-        if ch == " " or ch.isspace() or (ch == "~" and latex.active):  # `~`: LaTeX's unbreakable space
+        ch = chars[i]
+        if ch.isspace() or (ch == "~" and latex.active):  # `~`: LaTeX's unbreakable space
             space = True
             i += 1
             continue
         if len(tokens) >= max_tokens:
             raise TooLarge(f"The answer has too many parts (at most {max_tokens} tokens).", i)
         start = i
-        single = _SINGLE.get(ch)
-        if single is not None:
-            i += 1
-            token = Token(single, ch, start, i, space)
-        elif ch == "*":
-            if i + 1 < n and line[i + 1] == "*":
-                i += 2
-                token = Token(Kind.OP, "^", start, i, space)
-            else:
-                i += 1
-                token = Token(Kind.OP, ch, start, i, space)
-        elif ch == "^":
-            # `30^\circ` (only in LaTeX: a text without a backslash has no `\circ`)
-            degree_end = latex.degree_end(i + 1) if latex.active else None
-            if degree_end is not None:
-                token = Token(Kind.POSTFIX, "°", start, degree_end, space)
-                i = degree_end
-            else:
-                i += 1
-                token = Token(Kind.OP, ch, start, i, space)
-        elif (ch.isdigit() and ch.isascii()) or (ch == "." and i + 1 < n and line[i + 1].isdigit()):
-            token, i = _read_number(line, i, space, limits)
+        if (ch.isdigit() and ch.isascii()) or (ch == "." and i + 1 < n and chars[i + 1].isdigit()):
+            token, i = _read_number(chars, i, space, limits)
         elif ch.isalpha():  # a word starts with a letter
-            i = _WORD_RUN.match(line, i + 1).end()  # type: ignore[union-attr]  # `*` always matches
+            i += 1
             while i < n and (
-                (c := line[i]).isalpha() or c in _WORD_MARKS or (velocities and is_word_mark(c))
+                (c := chars[i]).isalpha() or c in _WORD_MARKS or (velocities and is_word_mark(c))
             ):
                 i += 1
-            if velocities and i < n and line[i] in PRIMES:
+            if velocities and i < n and chars[i] in PRIMES:
                 i += 1
-            if line[i - 1] == "_" and i < n and line[i] in "{\\":  # v_{0}, v_\theta
+            if chars[i - 1] == "_" and i < n and chars[i] in "{\\":  # v_{0}, v_\theta
                 token, i = latex.subscripted_word(start, i)
                 token = replace(token, space_before=space)
-            elif velocities and needs_spelling(line, start, i):
-                token = dotted_word(line, start, i, space)
+            elif velocities and needs_spelling(chars, start, i):
+                token = dotted_word(chars, start, i, space)
             else:
-                token = Token(Kind.WORD, line[start:i], start, i, space)
+                token = Token(Kind.WORD, "".join(chars[start:i]), start, i, space)
+        elif ch == "*" and i + 1 < n and chars[i + 1] == "*":
+            i += 2
+            token = Token(Kind.OP, "^", start, i, space)
+        elif ch == "^" and (degree_end := latex.degree_end(i + 1)) is not None:  # 30^\circ
+            token = Token(Kind.POSTFIX, "°", start, degree_end, space)
+            i = degree_end
+        elif ch in "+-*/^":
+            i += 1
+            token = Token(Kind.OP, ch, start, i, space)
         elif ch in "\\{}":
             if ch == "\\":
                 emitted, i = latex.command(i)
                 # As in LaTeX, the spaces that end a control word are no gap: `\cos\omega t` shows ωt.
-                if emitted and line[i - 1].isalpha():
-                    while i < n and line[i].isspace():
+                if emitted and chars[i - 1].isalpha():
+                    while i < n and chars[i].isspace():
                         i += 1
             else:
                 emitted, i = (latex.open_brace if ch == "{" else latex.close_brace)(i)
@@ -139,11 +109,23 @@ def tokenize(
                 raise TooLarge(f"The answer has too many parts (at most {max_tokens} tokens).", start)
             space = False
             continue
+        elif ch in OPENERS:
+            i += 1
+            token = Token(Kind.LPAREN, ch, start, i, space)
+        elif ch in CLOSERS:
+            i += 1
+            token = Token(Kind.RPAREN, ch, start, i, space)
         elif ch == "|":
             i += 1
             token = Token(Kind.BAR, ch, start, i, space)
+        elif ch in "!%°":
+            i += 1
+            token = Token(Kind.POSTFIX, ch, start, i, space)
+        elif ch == "√":
+            i += 1
+            token = Token(Kind.SQRT, ch, start, i, space)
         elif ch in SUPERSCRIPT_DIGITS or ch in SUPERSCRIPT_SIGNS:
-            token, i = _read_superscript(line, i, space)
+            token, i = _read_superscript(chars, i, space)
         elif ch in VULGAR_FRACTIONS:
             if tokens and tokens[-1].kind is Kind.NUM and not space:
                 raise ParseError(
@@ -178,28 +160,42 @@ def _vulgar_fraction(ch: str, i: int, space: bool) -> list[Token]:
     ]
 
 
-def _read_number(line: str, i: int, space: bool, limits: InputLimits) -> tuple[Token, int]:
-    n = len(line)
+def _read_number(chars: list[str], i: int, space: bool, limits: InputLimits) -> tuple[Token, int]:
+    n = len(chars)
     start = i
-    found = _NUMBER.match(line, i)
-    assert found is not None  # `*` always matches
-    whole, fraction = found.group(1), found.group(2) or ""
-    i = found.end()
-    if i + 1 < n and line[i] == "," and line[i + 1].isdigit():
+    while i < n and chars[i].isascii() and chars[i].isdigit():
+        i += 1
+    whole = "".join(chars[start:i])
+    fraction = ""
+    if i < n and chars[i] == ".":
+        i += 1
+        frac_start = i
+        while i < n and chars[i].isascii() and chars[i].isdigit():
+            i += 1
+        fraction = "".join(chars[frac_start:i])
+    if i + 1 < n and chars[i] == "," and chars[i + 1].isdigit():
         raise ParseError("Use a decimal point, not a comma, inside a number (write 4.58, not 4,58).", i)
     digits = len(whole) + len(fraction)
     if digits > limits.max_number_digits:
         raise TooLarge(f"A number has too many digits (at most {limits.max_number_digits}).", start)
     shift = 0
     literal = (whole or "0") + ("." + fraction if fraction else "")
-    power = _SCI_EXPONENT.match(line, i)  # without digits after it, the e is a name (2e is 2 times e)
-    if power is not None:
-        sign, exp_digits = power.groups()
-        if len(exp_digits) > _MAX_SCI_EXPONENT_DIGITS or int(exp_digits) > limits.max_sci_exponent:
-            raise TooLarge(f"A power of ten is too large (at most 10^{limits.max_sci_exponent}).", start)
-        shift = int(exp_digits) * (-1 if sign == "-" else 1)
-        literal += "e" + ("-" if sign == "-" else "") + exp_digits.lstrip("0").rjust(1, "0")
-        i = power.end()
+    if i < n and chars[i] in "eE":
+        j = i + 1
+        sign = ""
+        if j < n and chars[j] in "+-":
+            sign = chars[j]
+            j += 1
+        exp_start = j
+        while j < n and chars[j].isascii() and chars[j].isdigit():
+            j += 1
+        if j > exp_start:  # otherwise the e is a name (2e is 2 times e)
+            exp_digits = "".join(chars[exp_start:j])
+            if len(exp_digits) > _MAX_SCI_EXPONENT_DIGITS or int(exp_digits) > limits.max_sci_exponent:
+                raise TooLarge(f"A power of ten is too large (at most 10^{limits.max_sci_exponent}).", start)
+            shift = int(exp_digits) * (-1 if sign == "-" else 1)
+            literal += "e" + ("-" if sign == "-" else "") + exp_digits.lstrip("0").rjust(1, "0")
+            i = j
     # Fraction(n) for a whole number: the value Fraction(n, 1) is, without its gcd.
     value = (
         Fraction(int(whole + fraction or "0"), 10 ** len(fraction))
@@ -211,7 +207,7 @@ def _read_number(line: str, i: int, space: bool, limits: InputLimits) -> tuple[T
     return Token(Kind.NUM, literal, start, i, space, value), i
 
 
-def _read_superscript(chars: str, i: int, space: bool) -> tuple[Token, int]:
+def _read_superscript(chars: list[str], i: int, space: bool) -> tuple[Token, int]:
     n = len(chars)
     start = i
     sign = 1
