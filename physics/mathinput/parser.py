@@ -150,20 +150,22 @@ class Parser:
             return Neg(operand) if tok.text == "-" else operand
         return self._power()
 
-    def _starts_factor(self, tok: Token) -> bool:
-        return tok.kind in _FACTOR_STARTS or (tok.kind is Kind.BAR and self._abs_depth == 0)
-
     def _product(self) -> Node:
         first = self._power()
         items: list[_Item] = []
+        tokens = self._tokens
         while True:
-            tok = self._tokens[self._i]
-            if tok.kind is Kind.OP and tok.text in "*/":
-                self._advance()
-                items.append(_Item("*" if tok.text == "*" else "/", self._signed(), tok, False))
-            elif self._starts_factor(tok):
-                prev = self._prev
-                if tok.kind is Kind.NUM and prev is not None and prev.kind is Kind.NUM:
+            tok = tokens[self._i]
+            kind = tok.kind
+            if kind is Kind.OP and tok.text in "*/":
+                self._i += 1
+                after = tokens[self._i]
+                signed = after.kind is Kind.OP and after.text in "+-"
+                factor = self._signed() if signed else self._power()
+                items.append(_Item("*" if tok.text == "*" else "/", factor, tok, False))
+            elif kind in _FACTOR_STARTS or (kind is Kind.BAR and self._abs_depth == 0):
+                prev = tokens[self._i - 1]  # the factor before this one
+                if kind is Kind.NUM and prev.kind is Kind.NUM:
                     raise ParseError(
                         f'Two numbers side by side ("{self._source[prev.pos : tok.end]}"): remove the '
                         "space if it is one number, or write * between them.",
@@ -174,9 +176,10 @@ class Parser:
                 break
         if not items:
             return first
-        first, items = self._settle_ambiguous_divisions(first, items)
-        if not items:
-            return first
+        if any(item.op == "/" for item in items):  # only a division can be ambiguous
+            first, items = self._settle_ambiguous_divisions(first, items)
+            if not items:
+                return first
         return Product(first, tuple((item.op, item.node) for item in items))
 
     def _settle_ambiguous_divisions(self, first: Node, items: list[_Item]) -> tuple[Node, list[_Item]]:
@@ -228,7 +231,26 @@ class Parser:
         return first, items
 
     def _power(self) -> Node:
-        return self._raised(self._postfixed())
+        # A name or a number (most factors) made here, and the powers and postfixes looked for only
+        # where a token can start one: a factor is then one call deep, not four.
+        tok = self._tokens[self._i]
+        kind = tok.kind
+        if kind is Kind.NAME:
+            self._i += 1
+            node: Node = Name(tok.text)
+        elif kind is Kind.NUM:
+            self._i += 1
+            assert tok.value is not None
+            node = Num(tok.text, tok.value, tok.is_integer_literal)
+        else:
+            node = self._atom()
+        after = self._tokens[self._i]
+        if after.kind is Kind.POSTFIX:
+            node = self._postfixes(node)
+            after = self._tokens[self._i]
+        if (after.kind is Kind.OP and after.text == "^") or after.kind is Kind.SUP:
+            return self._raised(node)
+        return node
 
     def _raised(self, node: Node) -> Node:
         """`node` with the powers written after it (`^2`, `**2`, `²`)."""
@@ -336,7 +358,9 @@ class Parser:
         return self._power()
 
     def _postfixed(self) -> Node:
-        node = self._atom()
+        return self._postfixes(self._atom())
+
+    def _postfixes(self, node: Node) -> Node:
         while self._tokens[self._i].kind is Kind.POSTFIX:
             tok = self._advance()
             node = Postfix(_POSTFIX_KINDS[tok.text], node, tok.pos)

@@ -14,7 +14,7 @@ from physics.mathinput.limits import DEFAULT_LIMITS, InputLimits
 from physics.mathinput.names import NameTable
 from physics.mathinput.parser import Parser
 from physics.mathinput.powered import PoweredArgument, reading_note
-from physics.mathinput.render import render_latex, render_text
+from physics.mathinput.render import render_both
 from physics.mathinput.tokens import Kind, Token, tokenize
 from physics.mathinput.tree import Node
 from physics.mathinput.words import resolve_words
@@ -41,10 +41,11 @@ def _has_undefined(expr: sympy.Basic) -> bool:
 def _refuse_exponent_letter_clash(text: str, tokens: list[Token], table: NameTable) -> None:
     """`2E-3` where `E` is a declared symbol: 2×10⁻³ or 2·E − 3? Refused with both readings."""
     for token in tokens:
-        if token.kind is not Kind.NUM:
+        # A number's text has an `e` only when it was typed with a power of ten (`2E-3` reads 2e-3).
+        if token.kind is not Kind.NUM or "e" not in token.text:
             continue
         typed = text[token.pos : token.end]
-        if "e" not in typed and "E" not in typed:  # most numbers: no letter to look for
+        if "e" not in typed and "E" not in typed:  # typed in another script (fullwidth)
             continue
         letter = next(c for c in typed if c in "eE")
         if not table.is_declared(letter):
@@ -127,7 +128,8 @@ def read_tree(
     builder's (`build_reading` makes those)."""
     tree, powered, table = _tree(text, names, limits, choices, powers_outside, velocities)
     try:
-        read_as = ReadAs(render_text(tree), render_latex(tree), reading_note(powered))
+        text, latex = render_both(tree)
+        read_as = ReadAs(text, latex, reading_note(powered))
     except RecursionError:
         raise _too_deep() from None
     return TreeReading(tree, read_as, powered, table.symbols)

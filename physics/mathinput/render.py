@@ -19,6 +19,7 @@ from physics.mathinput.tree import (
     Neg,
     Node,
     Num,
+    Postfix,
     Power,
     Product,
     Sum,
@@ -43,7 +44,7 @@ STUDENT_STYLE = TextStyle(power="^", times="·")
 
 
 def render_text(node: Node, style: TextStyle = CONTRACT_STYLE) -> str:
-    return _text(node, style)[0]
+    return _pieces(node, style)[0]
 
 
 def in_student_style(text: str) -> str:
@@ -54,60 +55,121 @@ def in_student_style(text: str) -> str:
 
 
 def render_latex(node: Node) -> str:
-    return _latex(node)[0]
+    return _pieces(node, CONTRACT_STYLE)[2]
 
 
-def _wrap(piece: tuple[str, int], needs: bool) -> str:
-    return f"({piece[0]})" if needs else piece[0]
+def render_both(node: Node) -> tuple[str, str]:
+    """`render_text(node)` and `render_latex(node)`, in one walk of the tree."""
+    text, _, latex, _ = _pieces(node, CONTRACT_STYLE)
+    return text, latex
 
 
-def _text(node: Node, style: TextStyle) -> tuple[str, int]:
-    if isinstance(node, Group):
-        return _text(node.inner, style)
-    if isinstance(node, Num):
-        return node.literal, _ATOM
-    if isinstance(node, Name):
-        return node.name, _ATOM
-    if isinstance(node, Const):
-        return node.which, _ATOM
-    if isinstance(node, Neg):
-        operand = _text(node.operand, style)
-        return "-" + _wrap(operand, operand[1] < _PRODUCT or _is_neg(node.operand)), _PRODUCT
-    if isinstance(node, Sum):
-        parts = [_text(node.first, style)[0]]
-        for sign, term in node.rest:
-            piece = _text(term, style)
-            needs = _is_neg(term) or (sign == "-" and piece[1] < _PRODUCT)
-            parts.append(f" {sign} {_wrap(piece, needs)}")
-        return "".join(parts), _SUM
-    if isinstance(node, Product):
-        first = _text(node.first, style)
-        out = _wrap(first, first[1] < _PRODUCT)
-        for operator, factor in node.rest:
-            piece = _text(factor, style)
-            if operator == "*":
-                out += style.times + _wrap(piece, piece[1] < _PRODUCT or _is_neg(factor))
-            else:
-                out += "/" + _wrap(piece, piece[1] <= _PRODUCT)
-        return out, _PRODUCT
-    if isinstance(node, Power):
-        base = _text(node.base, style)
-        exponent = _text(node.exponent, style)
-        return (
-            _wrap(base, base[1] < _ATOM) + style.power + _wrap(exponent, exponent[1] < _POWER),
-            _POWER,
-        )
-    if isinstance(node, Call):
-        return f"{node.func}({_text(node.arg, style)[0]})", _ATOM
-    operand = _text(node.operand, style)
-    if node.kind == "factorial":
-        return f"factorial({operand[0]})", _ATOM
-    suffix = "/100" if node.kind == "percent" else f"{style.times}pi/180"
-    return _wrap(operand, operand[1] < _PRODUCT) + suffix, _PRODUCT
+# A node's text and its LaTeX, each with the binding strength of what it is: one walk makes both.
+_Pieces = tuple[str, int, str, int]
+
+
+def _wrap(piece: str, needs: bool) -> str:
+    return f"({piece})" if needs else piece
+
+
+def _paren(piece: str, needs: bool) -> str:
+    return rf"\left({piece}\right)" if needs else piece
 
 
 def _is_neg(node: Node) -> bool:
     return isinstance(ungroup(node), Neg)
+
+
+def _pieces(node: Node, style: TextStyle) -> _Pieces:
+    # By the type, the commonest first (a chain of isinstance tests per node cost as much as the rest).
+    kind = type(node)
+    while kind is Group:
+        node = node.inner  # type: ignore[union-attr]
+        kind = type(node)
+    if kind is Name:
+        return node.name, _ATOM, latex_name(node.name), _ATOM  # type: ignore[union-attr]
+    if kind is Num:
+        return (node.literal, _ATOM, *_latex_number(node.literal))  # type: ignore[union-attr]
+    if kind is Product:
+        return _product(node, style)  # type: ignore[arg-type]
+    if kind is Power:
+        return _power(node, style)  # type: ignore[arg-type]
+    if kind is Sum:
+        return _sum(node, style)  # type: ignore[arg-type]
+    if kind is Call:
+        func = node.func  # type: ignore[union-attr]
+        arg = _pieces(node.arg, style)  # type: ignore[union-attr]
+        return f"{func}({arg[0]})", _ATOM, _latex_call(func, arg, None), _ATOM
+    if kind is Neg:
+        text, text_binding, latex, latex_binding = _pieces(node.operand, style)  # type: ignore[union-attr]
+        neg = _is_neg(node.operand)  # type: ignore[union-attr]
+        return (
+            "-" + _wrap(text, text_binding < _PRODUCT or neg),
+            _PRODUCT,
+            "-" + _paren(latex, latex_binding < _PRODUCT or neg),
+            _PRODUCT,
+        )
+    if kind is Const:
+        return node.which, _ATOM, (r"\pi" if node.which == "pi" else "e"), _ATOM  # type: ignore[union-attr]
+    assert isinstance(node, Postfix)
+    text, text_binding, latex, latex_binding = _pieces(node.operand, style)
+    if node.kind == "factorial":
+        return f"factorial({text})", _ATOM, _paren(latex, latex_binding < _ATOM) + "!", _ATOM
+    suffix = "/100" if node.kind == "percent" else f"{style.times}pi/180"
+    text = _wrap(text, text_binding < _PRODUCT) + suffix
+    if node.kind == "percent":
+        return text, _PRODUCT, _paren(latex, latex_binding < _PRODUCT) + r"\%", _PRODUCT
+    return text, _PRODUCT, _paren(latex, latex_binding < _ATOM) + r"^{\circ}", _POWER
+
+
+def _sum(node: Sum, style: TextStyle) -> _Pieces:
+    first = _pieces(node.first, style)
+    texts, latexes = [first[0]], [first[2]]
+    for sign, term in node.rest:
+        text, text_binding, latex, latex_binding = _pieces(term, style)
+        neg = _is_neg(term)
+        texts.append(f" {sign} {_wrap(text, neg or (sign == '-' and text_binding < _PRODUCT))}")
+        latexes.append(f" {sign} {_paren(latex, neg or (sign == '-' and latex_binding < _PRODUCT))}")
+    return "".join(texts), _SUM, "".join(latexes), _SUM
+
+
+def _product(node: Product, style: TextStyle) -> _Pieces:
+    text, text_binding, latex, latex_binding = _pieces(node.first, style)
+    out = _wrap(text, text_binding < _PRODUCT)
+    bare = latex  # the LaTeX numerator without brackets while it is a single factor
+    tex = _paren(latex, latex_binding < _PRODUCT)
+    for operator, factor in node.rest:
+        text, text_binding, latex, latex_binding = _pieces(factor, style)
+        if operator == "/":
+            out += "/" + _wrap(text, text_binding <= _PRODUCT)
+            tex = rf"\frac{{{bare}}}{{{latex}}}"
+        else:
+            neg = _is_neg(factor)
+            out += style.times + _wrap(text, text_binding < _PRODUCT or neg)
+            latex = _paren(latex, latex_binding < _PRODUCT or neg)
+            tex += (r" \cdot " if latex[:1].isdigit() else " ") + latex
+        bare = tex
+    return out, _PRODUCT, tex, _PRODUCT
+
+
+def _power(node: Power, style: TextStyle) -> _Pieces:
+    exponent = _pieces(node.exponent, style)
+    base = ungroup(node.base)
+    # \sin^{2} x, but never \sin^{-1} x: that is how arcsin is written.
+    if (
+        isinstance(base, Call)
+        and base.func in LATEX_FUNCTIONS
+        and base.func != "log10"
+        and isinstance(ungroup(node.exponent), Num)
+    ):
+        arg = _pieces(base.arg, style)
+        text, binding = f"{base.func}({arg[0]})", _ATOM
+        latex = _latex_call(base.func, arg, exponent[2])
+    else:
+        text, binding, base_latex, base_latex_binding = _pieces(node.base, style)
+        latex = _paren(base_latex, base_latex_binding < _ATOM) + f"^{{{exponent[2]}}}"
+    text = _wrap(text, binding < _ATOM) + style.power + _wrap(exponent[0], exponent[1] < _POWER)
+    return text, _POWER, latex, _POWER
 
 
 @lru_cache(maxsize=1024)  # a few declared names, met in every answer
@@ -136,10 +198,6 @@ def _latex_word(word: str) -> str:
     return r"\mathrm{" + word + "}"
 
 
-def _paren(piece: tuple[str, int], needs: bool) -> str:
-    return rf"\left({piece[0]}\right)" if needs else piece[0]
-
-
 def _latex_number(literal: str) -> tuple[str, int]:
     if "e" in literal:
         mantissa, exponent = literal.split("e")
@@ -147,68 +205,8 @@ def _latex_number(literal: str) -> tuple[str, int]:
     return literal, _ATOM
 
 
-def _latex(node: Node) -> tuple[str, int]:
-    if isinstance(node, Group):
-        return _latex(node.inner)
-    if isinstance(node, Num):
-        return _latex_number(node.literal)
-    if isinstance(node, Name):
-        return latex_name(node.name), _ATOM
-    if isinstance(node, Const):
-        return (r"\pi" if node.which == "pi" else "e"), _ATOM
-    if isinstance(node, Neg):
-        operand = _latex(node.operand)
-        return "-" + _paren(operand, operand[1] < _PRODUCT or _is_neg(node.operand)), _PRODUCT
-    if isinstance(node, Sum):
-        parts = [_latex(node.first)[0]]
-        for sign, term in node.rest:
-            piece = _latex(term)
-            parts.append(f" {sign} {_paren(piece, _is_neg(term) or (sign == '-' and piece[1] < _PRODUCT))}")
-        return "".join(parts), _SUM
-    if isinstance(node, Product):
-        return _latex_product(node), _PRODUCT
-    if isinstance(node, Power):
-        return _latex_power(node), _POWER
-    if isinstance(node, Call):
-        return _latex_call(node.func, node.arg, None), _ATOM
-    operand = _latex(node.operand)
-    if node.kind == "factorial":
-        return _paren(operand, operand[1] < _ATOM) + "!", _ATOM
-    if node.kind == "percent":
-        return _paren(operand, operand[1] < _PRODUCT) + r"\%", _PRODUCT
-    return _paren(operand, operand[1] < _ATOM) + r"^{\circ}", _POWER
-
-
-def _latex_product(node: Product) -> str:
-    first = _latex(node.first)
-    bare = first[0]  # the numerator without brackets while it is a single factor
-    out = _paren(first, first[1] < _PRODUCT)
-    for operator, factor in node.rest:
-        piece = _latex(factor)
-        if operator == "/":
-            out = rf"\frac{{{bare}}}{{{piece[0]}}}"
-            bare = out
-            continue
-        text = _paren(piece, piece[1] < _PRODUCT or _is_neg(factor))
-        separator = r" \cdot " if text[:1].isdigit() else " "
-        out = out + separator + text
-        bare = out
-    return out
-
-
-def _latex_power(node: Power) -> str:
-    base = ungroup(node.base)
-    exponent = _latex(node.exponent)[0]
-    # \sin^{2} x, but never \sin^{-1} x: that is how arcsin is written.
-    positive = isinstance(ungroup(node.exponent), Num)
-    if isinstance(base, Call) and base.func in LATEX_FUNCTIONS and base.func != "log10" and positive:
-        return _latex_call(base.func, base.arg, exponent)
-    piece = _latex(node.base)
-    return _paren(piece, piece[1] < _ATOM) + f"^{{{exponent}}}"
-
-
-def _latex_call(func: str, arg: Node, power: str | None) -> str:
-    inner = _latex(arg)[0]
+def _latex_call(func: str, arg: _Pieces, power: str | None) -> str:
+    inner = arg[2]
     if func == "sqrt":
         body = rf"\sqrt{{{inner}}}"
     elif func == "exp":
@@ -216,8 +214,7 @@ def _latex_call(func: str, arg: Node, power: str | None) -> str:
     elif func == "abs":
         body = rf"\left|{inner}\right|"
     elif func == "factorial":
-        piece = _latex(arg)
-        body = _paren(piece, piece[1] < _ATOM) + "!"
+        body = _paren(inner, arg[3] < _ATOM) + "!"
     else:
         name = LATEX_FUNCTIONS[func]
         head = f"{name}^{{{power}}}" if power is not None else name

@@ -56,21 +56,20 @@ def resolve_words(tokens: list[Token], table: NameTable) -> list[Token]:
                 tok.pos,
             )
         readings = table.resolve(word).readings
+        spelled = isinstance(tok, SpelledWord)
         if isinstance(tok, SpelledWord):
             readings = tuple(r for r in readings if _keeps_whole(r, tok))
         if len(readings) == 1:
-            for k, part in enumerate(readings[0]):
-                out.append(
-                    Token(
-                        _PART_KINDS[part.kind],
-                        part.canonical,
-                        tok.position_in_text(part.start),
-                        tok.position_in_text(part.end),
-                        tok.space_before if k == 0 else False,
-                    )
-                )
+            space = tok.space_before
+            for part in readings[0]:
+                if spelled:
+                    start, end = tok.position_in_text(part.start), tok.position_in_text(part.end)
+                else:  # typed as it is read: each character where it stands
+                    start, end = tok.pos + part.start, tok.pos + part.end
+                out.append(Token(_PART_KINDS[part.kind], part.canonical, start, end, space))
+                space = False
             continue
-        if not readings and not isinstance(tok, SpelledWord):
+        if not readings and not spelled:
             split = _function_number_split(word, table)
             if split is not None:  # `sin2θ`: sin, 2, θ, which the parser reads as sin(2θ)
                 out.extend(_split_tokens(split, tok))

@@ -287,7 +287,9 @@ def test_a_point_where_the_answer_is_undefined_leaves_the_other_points_their_val
     assert min(first, second) < middle < max(first, second)
     reading = read_tree(f"m g log(θ - {middle})", asked.names)
     symbols = {name: reading.symbols[name] for name in ("m", "g", "theta")}
-    keys = quick_module._Keys(symbols)
+    shape = quick_module._Shape(100, reading.symbols)
+    shape.check(reading.tree)
+    keys = shape.keys
     together = quick_module._TreeAtPoints(reading.tree, symbols, asked.reference, keys)((0, 1))
     alone = [
         quick_module._TreeAtPoints(reading.tree, symbols, asked.reference, keys)((i,))[0] for i in (0, 1)
