@@ -25,7 +25,7 @@ rounding of a tolerance, as in quick.py.
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from fractions import Fraction
 from functools import cached_property
@@ -43,7 +43,7 @@ from physics.symbolic.compare import PREC, PRECISE_PREC
 from physics.symbolic.domain import SymbolicContext
 from physics.symbolic.floats import Floats
 from physics.symbolic.numeric import Column
-from physics.symbolic.quick import _PRECISE, EXTRA_BITS, _Declined, _Keys, _Shape, _TreeValues
+from physics.symbolic.quick import _PRECISE, EXTRA_BITS, _Declined, _Shape, _TreeValues
 from physics.symbolic.reference import (
     PRECISE_POINTS,
     SAMPLE_SIZE,
@@ -73,7 +73,7 @@ class _TreeSource:
     tree: Node
     names: Mapping[str, sympy.Symbol]  # what each name in the tree stands for
     symbols: Mapping[str, sympy.Symbol]  # the names the tree uses
-    keys: _Keys
+    keys: Mapping[int, int]  # each node's structural key, by its id (quick._Shape's)
     context: SymbolicContext
     limits: InputLimits
 
@@ -111,7 +111,7 @@ class TreeDomain:
     names: Mapping[str, sympy.Symbol]  # what a reference or an answer may use
     context: SymbolicContext  # over those symbols, without constraints, mistakes or limiting cases
     dims: Mapping[sympy.Symbol, Dimension]
-    # Subtrees' dimensions by their structure (quick._Keys), as the references' trees share them.
+    # Subtrees' dimensions by their structural key (quick._Shape's), as the references' trees share them.
     dimensions: dict[int, Dimension] = field(default_factory=dict, compare=False)
 
     @cached_property
@@ -136,12 +136,12 @@ def prepared_from_text(text: str, domain: TreeDomain, limits: InputLimits) -> Pr
         return None
     try:
         tree, names = parse_tree(text, domain.names, limits=limits)
-        shape = _Shape(limits.max_exponent)
+        shape = _Shape(limits.max_exponent, names)
         shape.check(tree)
     except (AnswerError, _Declined, RecursionError):
         return None
     symbols = {name: names[name] for name in shape.names}
-    keys = _Keys(symbols)
+    keys = shape.keys
     try:
         dimension = _Dimensions(symbols, dims, keys, domain.dimensions)(tree)
     except _Declined:
@@ -151,7 +151,9 @@ def prepared_from_text(text: str, domain: TreeDomain, limits: InputLimits) -> Pr
 
     def values(columns: Mapping[sympy.Symbol, Floats], size: int, known: dict[int, Bounded]) -> Floats | None:
         try:
-            found = BoundedTree({name: columns[s] for name, s in symbols.items()}, size, keys.of, known)(tree)
+            found = BoundedTree(
+                {name: columns[s] for name, s in symbols.items()}, size, _key_of(keys), known
+            )(tree)
         except Unsupported:
             return None
         if not found.precise(PRECISE_RELATIVE).all():
@@ -180,6 +182,10 @@ def prepared_from_text(text: str, domain: TreeDomain, limits: InputLimits) -> Pr
     )
 
 
+def _key_of(keys: Mapping[int, int]) -> Callable[[Node], int]:
+    return lambda node: keys[id(node)]
+
+
 class _Dimensions:
     """The tree's dimension where it is consistent and every name's is declared; else _Declined.
     Subtrees' dimensions are kept by their structure in `known` (one per domain: the same names)."""
@@ -188,7 +194,7 @@ class _Dimensions:
         self,
         symbols: Mapping[str, sympy.Symbol],
         dims: Mapping[sympy.Symbol, Dimension],
-        keys: _Keys,
+        keys: Mapping[int, int],
         known: dict[int, Dimension],
     ) -> None:
         self._symbols = symbols
@@ -199,7 +205,7 @@ class _Dimensions:
     def __call__(self, node: Node) -> Dimension:
         if isinstance(node, Name | Num | Const | Group):
             return self._dimension(node)
-        key = self._keys.of(node)
+        key = self._keys[id(node)]
         found = self._known.get(key)
         if found is None:
             if len(self._known) >= _DIMENSIONS_KEPT:
