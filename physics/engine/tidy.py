@@ -5,15 +5,25 @@ again when read at the state (already substituted), again when the simplest of t
 chosen; each method simplifies the same generalized force, the same stability slope. `sympy.simplify`
 is most of a derivation's time and sympy does not cache it, so it is cached here: the same expression
 in, the same result out, only computed once.
+
+Inside `simplify`, most of the time is trigsimp's rewriting of each subexpression (sympy's `_futrig`,
+applied bottom up), and different expressions share most of their subexpressions (sin(theta)**2 +
+cos(theta)**2 in every denominator of an incline's solution): three calls in four meet a subexpression
+already rewritten in this derivation. `_futrig` is a function of its argument alone, so it is
+remembered too, which leaves every result as it was.
 """
 
 from __future__ import annotations
+
+import importlib
+from collections.abc import Callable
 
 import sympy
 
 MAX_REMEMBERED = 4096  # a bound, should a caller outside `derive` never clear it
 
 _remembered: dict[sympy.Basic, sympy.Expr] = {}
+_rewritten: dict[sympy.Basic, sympy.Basic] = {}
 
 
 def simplify(expr: sympy.Expr) -> sympy.Expr:
@@ -32,3 +42,25 @@ def simplify(expr: sympy.Expr) -> sympy.Expr:
 def forget() -> None:
     """Start afresh: each derivation pays for its own simplifications, so vetting times stay honest."""
     _remembered.clear()
+    _rewritten.clear()
+
+
+def _remembering(rewrite: Callable[[sympy.Basic], sympy.Basic]) -> Callable[[sympy.Basic], sympy.Basic]:
+    def remembered(expr: sympy.Basic) -> sympy.Basic:
+        found = _rewritten.get(expr)
+        if found is None:
+            found = rewrite(expr)
+            if len(_rewritten) >= 4 * MAX_REMEMBERED:  # subexpressions: many more than whole ones
+                _rewritten.clear()
+            _rewritten[expr] = found
+        return found
+
+    remembered.__wrapped__ = rewrite  # type: ignore[attr-defined]
+    return remembered
+
+
+# sympy's `trigsimp` module (the package's name `sympy.simplify.trigsimp` is the function); `futrig` looks
+# `_futrig` up there at each call. Guarded so that a second import of this module wraps it only once.
+_trigsimp_module = importlib.import_module("sympy.simplify.trigsimp")
+if not hasattr(_trigsimp_module._futrig, "__wrapped__"):
+    _trigsimp_module._futrig = _remembering(_trigsimp_module._futrig)  # type: ignore[attr-defined]

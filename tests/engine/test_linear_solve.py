@@ -66,3 +66,16 @@ def test_simplify_is_remembered_until_forgotten() -> None:
     tidy.forget()
     assert tidy._remembered == {}
     assert tidy.simplify(sympy.Matrix([[expr]])) == sympy.Matrix([[m + 1]])  # a mutable matrix passes through
+
+
+def test_trigsimp_rewrites_each_subexpression_once_per_derivation_with_sympys_result() -> None:
+    tidy.forget()
+    shared = sin(th) ** 2 + cos(th) ** 2
+    first = sympy.trigsimp(m * shared / (m + shared))
+    assert first == m / (m + 1)
+    assert shared in tidy._rewritten
+    unremembered = tidy._trigsimp_module._futrig.__wrapped__
+    for expr, rewritten in tidy._rewritten.items():
+        assert unremembered(expr) == rewritten
+    tidy.forget()
+    assert tidy._rewritten == {}
