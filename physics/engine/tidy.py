@@ -24,6 +24,7 @@ MAX_REMEMBERED = 4096  # a bound, should a caller outside `derive` never clear i
 
 _remembered: dict[sympy.Basic, sympy.Expr] = {}
 _rewritten: dict[sympy.Basic, sympy.Basic] = {}
+_solved: dict[tuple[sympy.Basic, sympy.Symbol], list[sympy.Expr]] = {}
 
 
 def simplify(expr: sympy.Expr) -> sympy.Expr:
@@ -39,10 +40,24 @@ def simplify(expr: sympy.Expr) -> sympy.Expr:
     return found
 
 
+def solve(expr: sympy.Expr, symbol: sympy.Symbol) -> list[sympy.Expr]:
+    """`sympy.solve(expr, symbol)`, from memory when this derivation has solved it already: each method
+    finds the same equilibrium among the roots of the same generalized force."""
+    key = (expr, symbol)
+    found = _solved.get(key)
+    if found is None:
+        found = sympy.solve(expr, symbol)
+        if len(_solved) >= MAX_REMEMBERED:
+            _solved.clear()
+        _solved[key] = found
+    return list(found)  # the caller's own list
+
+
 def forget() -> None:
     """Start afresh: each derivation pays for its own simplifications, so vetting times stay honest."""
     _remembered.clear()
     _rewritten.clear()
+    _solved.clear()
 
 
 def _remembering(rewrite: Callable[[sympy.Basic], sympy.Basic]) -> Callable[[sympy.Basic], sympy.Basic]:

@@ -79,3 +79,13 @@ def test_trigsimp_rewrites_each_subexpression_once_per_derivation_with_sympys_re
         assert unremembered(expr) == rewritten
     tidy.forget()
     assert tidy._rewritten == {}
+
+
+def test_solve_is_remembered_until_forgotten_and_hands_out_its_own_list() -> None:
+    tidy.forget()
+    first = tidy.solve(m * a**2 - g, a)
+    assert sorted(first, key=str) == sorted(sympy.solve(m * a**2 - g, a), key=str)
+    first.clear()
+    assert len(tidy.solve(m * a**2 - g, a)) == 2  # the caller's list is its own
+    tidy.forget()
+    assert tidy._solved == {}
