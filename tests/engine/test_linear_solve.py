@@ -2,12 +2,16 @@
 
 from __future__ import annotations
 
+import random
+import struct
+
 import pytest
 import sympy
 from sympy import cos, sin
 
 from physics.engine import tidy
 from physics.engine.mechanics import solve_linear
+from physics.engine.simulation import eliminated, solve_numeric
 from physics.errors import DerivationError
 
 m, g, L, th = sympy.symbols("m g L theta", positive=True)
@@ -89,3 +93,26 @@ def test_solve_is_remembered_until_forgotten_and_hands_out_its_own_list() -> Non
     assert len(tidy.solve(m * a**2 - g, a)) == 2  # the caller's list is its own
     tidy.forget()
     assert tidy._solved == {}
+
+
+def _bits(solve, matrix: list[list[float]], rhs: list[float]) -> list[bytes] | str:
+    try:
+        return [struct.pack("d", v) for v in solve([list(row) for row in matrix], list(rhs))]
+    except DerivationError as error:
+        return error.message
+
+
+@pytest.mark.parametrize("unknowns", [1, 2])
+def test_one_or_two_unknowns_are_solved_numerically_to_the_last_bit_as_by_the_general_elimination(
+    unknowns: int,
+) -> None:
+    rng = random.Random(unknowns)
+    special = [0.0, -0.0, 1.0, -2.0, 1e-301, float("inf"), float("nan")]  # zeros' signs, a singular pivot
+
+    def entry() -> float:
+        return rng.uniform(-3, 3) if rng.random() < 0.6 else rng.choice(special)
+
+    for _ in range(3000):
+        matrix = [[entry() for _ in range(unknowns)] for _ in range(unknowns)]
+        rhs = [entry() for _ in range(unknowns)]
+        assert _bits(solve_numeric, matrix, rhs) == _bits(eliminated, matrix, rhs)
