@@ -10,7 +10,8 @@ Inside `simplify`, most of the time is trigsimp's rewriting of each subexpressio
 applied bottom up), and different expressions share most of their subexpressions (sin(theta)**2 +
 cos(theta)**2 in every denominator of an incline's solution): three calls in four meet a subexpression
 already rewritten in this derivation. `_futrig` is a function of its argument alone, so it is
-remembered too, which leaves every result as it was.
+remembered too, which leaves every result as it was; so is `factor` as trigsimp calls it (on one
+argument), which the rewriting of new subexpressions applies again to the old ones inside them.
 """
 
 from __future__ import annotations
@@ -23,7 +24,8 @@ import sympy
 MAX_REMEMBERED = 4096  # a bound, should a caller outside `derive` never clear it
 
 _remembered: dict[sympy.Basic, sympy.Expr] = {}
-_rewritten: dict[sympy.Basic, sympy.Basic] = {}
+_rewritten: dict[sympy.Basic, sympy.Basic] = {}  # by sympy's _futrig
+_factored: dict[sympy.Basic, sympy.Basic] = {}  # by sympy's factor inside trigsimp
 _solved: dict[tuple[sympy.Basic, sympy.Symbol], list[sympy.Expr]] = {}
 
 
@@ -57,17 +59,24 @@ def forget() -> None:
     """Start afresh: each derivation pays for its own simplifications, so vetting times stay honest."""
     _remembered.clear()
     _rewritten.clear()
+    _factored.clear()
     _solved.clear()
 
 
-def _remembering(rewrite: Callable[[sympy.Basic], sympy.Basic]) -> Callable[[sympy.Basic], sympy.Basic]:
-    def remembered(expr: sympy.Basic) -> sympy.Basic:
-        found = _rewritten.get(expr)
+def _remembering(
+    rewrite: Callable[..., sympy.Basic], memory: dict[sympy.Basic, sympy.Basic]
+) -> Callable[..., sympy.Basic]:
+    """rewrite(expr), from memory when this derivation has rewritten expr already (other calls as they are)."""
+
+    def remembered(expr: sympy.Basic, *args: object, **options: object) -> sympy.Basic:
+        if args or options or not isinstance(expr, sympy.Basic):
+            return rewrite(expr, *args, **options)
+        found = memory.get(expr)
         if found is None:
             found = rewrite(expr)
-            if len(_rewritten) >= 4 * MAX_REMEMBERED:  # subexpressions: many more than whole ones
-                _rewritten.clear()
-            _rewritten[expr] = found
+            if len(memory) >= 4 * MAX_REMEMBERED:  # subexpressions: many more than whole ones
+                memory.clear()
+            memory[expr] = found
         return found
 
     remembered.__wrapped__ = rewrite  # type: ignore[attr-defined]
@@ -75,7 +84,8 @@ def _remembering(rewrite: Callable[[sympy.Basic], sympy.Basic]) -> Callable[[sym
 
 
 # sympy's `trigsimp` module (the package's name `sympy.simplify.trigsimp` is the function); `futrig` looks
-# `_futrig` up there at each call. Guarded so that a second import of this module wraps it only once.
+# `_futrig` and `factor` up there at each call. Guarded so that a second import wraps them only once.
 _trigsimp_module = importlib.import_module("sympy.simplify.trigsimp")
 if not hasattr(_trigsimp_module._futrig, "__wrapped__"):
-    _trigsimp_module._futrig = _remembering(_trigsimp_module._futrig)  # type: ignore[attr-defined]
+    _trigsimp_module._futrig = _remembering(_trigsimp_module._futrig, _rewritten)  # type: ignore[attr-defined]
+    _trigsimp_module.factor = _remembering(_trigsimp_module.factor, _factored)  # type: ignore[attr-defined]

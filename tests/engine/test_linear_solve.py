@@ -81,8 +81,11 @@ def test_trigsimp_rewrites_each_subexpression_once_per_derivation_with_sympys_re
     unremembered = tidy._trigsimp_module._futrig.__wrapped__
     for expr, rewritten in tidy._rewritten.items():
         assert unremembered(expr) == rewritten
+    assert tidy._factored
+    for expr, factored in tidy._factored.items():
+        assert sympy.factor(expr) == factored
     tidy.forget()
-    assert tidy._rewritten == {}
+    assert tidy._rewritten == tidy._factored == {}
 
 
 def test_solve_is_remembered_until_forgotten_and_hands_out_its_own_list() -> None:
