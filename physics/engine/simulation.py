@@ -113,10 +113,12 @@ def eliminated(matrix: list[list[float]], rhs: Vector) -> Vector:
 class Dynamics:
     """The model's equations of motion, compiled for numerical integration."""
 
-    def __init__(self, model: Model) -> None:
+    def __init__(self, model: Model, lagrange: LagrangeMethod | None = None) -> None:
+        """`lagrange`: the model's own method whose equations the derivation has already formed, if any."""
         self.model = model
-        self.mech = Mechanics(model)
-        equations, unknowns = LagrangeMethod(model, self.mech).system
+        lagrange = lagrange or LagrangeMethod(model, Mechanics(model))
+        self.mech = lagrange.mech
+        equations, unknowns = lagrange.system
         matrix, rhs = sympy.linear_eq_to_matrix(equations, unknowns)
         self.n = len(self.mech.q)
         self.size = len(unknowns)
@@ -267,10 +269,12 @@ class Simulator:
     equilibrium_of: Callable[[str], sympy.Expr]
     # the derived value of each quantity (what an expression's inputs are measured near)
     references: Mapping[str, sympy.Expr] = dataclasses.field(default_factory=dict)
+    # the derivation's Lagrange method of this same model: its equations and energies, formed once
+    lagrange: LagrangeMethod | None = None
 
     @cached_property
     def dynamics(self) -> Dynamics:
-        return Dynamics(self.model)
+        return Dynamics(self.model, self.lagrange)
 
     def check(
         self, quantity: Quantity, reference: sympy.Expr, points: Sequence[Point]
