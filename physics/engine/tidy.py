@@ -1,4 +1,4 @@
-"""`simplify`, remembered within one derivation.
+"""`simplify` and `solve`, remembered within one derivation.
 
 The methods meet the same expressions again and again: Lagrange's solution is simplified when solved,
 again when read at the state (already substituted), again when the simplest of the methods' answers is
