@@ -80,7 +80,7 @@ def _finish(
             ("Fraction of the kinetic energy lost", r"\frac{K_0 - K_1}{K_0} = " + sympy.latex(fraction))
         )
         return fraction
-    found = sympy.solve(kinetic_after - rise, SPEED)
+    found = tidy.solve(kinetic_after - rise, SPEED)
     roots = admissible(found, SPEED, model)
     if not roots and tidy.simplify(rise).is_nonpositive:
         raise DerivationError(

@@ -163,9 +163,11 @@ def _derive_model(model: Model) -> Derivation:
         )
     check_magnitudes(model, quantities)
     lagrange = methods[0]
+    assert isinstance(lagrange, LagrangeMethod)  # the first of _methods()
     contact_signs = check_contact_signs(model, lagrange, quantities)
     contact_signs |= released.check_released(model, lagrange)
-    simulator = Simulator(model, lagrange.equilibrium, quantities)  # one compiled motion for every measure
+    # one compiled motion for every measure, from the equations Lagrange's method has formed
+    simulator = Simulator(model, lagrange.equilibrium, quantities, lagrange)
     simulation = _simulate(model, quantities, simulator)
     variants: dict[Model, Method] = {model: lagrange}
 

@@ -50,7 +50,7 @@ def extremum(method: Method, quantity: Quantity) -> sympy.Expr:
             f"{name}: {what} = {typed_text(value)} does not depend on {parameter}", quantity=name
         )
     slope = tidy.simplify(sympy.diff(value, parameter))
-    found = sympy.solve(slope, parameter)
+    found = tidy.solve(slope, parameter)
     bend = sympy.diff(value, parameter, 2)
     # the stationary values the parameter's sign and range allow, and of those the maxima (minima)
     stationary = [

@@ -224,7 +224,7 @@ class Method(ABC):
         acceleration = type(self)(free, Mechanics(free)).acceleration(coordinate)
         if not acceleration.has(c.velocity):
             raise NotApplicable(f"the acceleration of {coordinate} does not depend on its velocity")
-        roots = [r for r in sympy.solve(acceleration, c.velocity) if r.is_real is not False and r != 0]
+        roots = [r for r in tidy.solve(acceleration, c.velocity) if r.is_real is not False and r != 0]
         slope = sympy.diff(acceleration, c.velocity)
         stable = [
             r for r in roots if _negative_on_domain(tidy.simplify(slope.subs(c.velocity, r)), self.model)
@@ -241,7 +241,7 @@ class Method(ABC):
         return tidy.simplify(stable[0])
 
     def solve_for(self, parameter: sympy.Symbol, expr: sympy.Expr, name: str) -> sympy.Expr:
-        found = sympy.solve(expr, parameter)
+        found = tidy.solve(expr, parameter)
         roots = admissible(found, parameter, self.model)
         if len(roots) != 1:
             raise DerivationError(
@@ -293,7 +293,7 @@ def _declared(symbol: sympy.Symbol, model: Model) -> str:
 def _real_roots(expr: sympy.Expr, q: sympy.Symbol) -> list[sympy.Expr]:
     """Real roots of expr = 0 in q that respect q's sign. `solve` under q's assumptions can return
     fewer roots than exist, so an unrestricted real stand-in is tried when it finds none."""
-    roots = sympy.solve(expr, q)
+    roots = tidy.solve(expr, q)
     if not roots:
         free = sympy.Dummy("q", real=True)
         roots = sympy.solve(expr.subs(q, free), free)

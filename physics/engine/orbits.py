@@ -170,7 +170,7 @@ def _steady_rate(method: Method, target: str) -> tuple[sympy.Expr, Method]:
     if not moving:
         raise DerivationError(f"every rate of {target} keeps the other coordinates still", quantity=target)
     first, acceleration = moving[0]
-    roots = [r for r in sympy.solve(acceleration, RATE) if r.is_real is not False]
+    roots = [r for r in tidy.solve(acceleration, RATE) if r.is_real is not False]
     if len(roots) != 1 or not _positive_on_domain(roots[0], model):
         raise DerivationError(
             f"no steady rotation of {target}: {first.name}'' = {typed_text(acceleration)} has no single positive root in "
@@ -220,7 +220,7 @@ def frame_rate(method: Method) -> sympy.Expr:
         )
     (symbol,) = own
     first, acceleration = moving[0]
-    roots = [r for r in sympy.solve(acceleration, symbol) if _positive_on_domain(r, model)]
+    roots = [r for r in tidy.solve(acceleration, symbol) if _positive_on_domain(r, model)]
     if len(roots) != 1:
         raise DerivationError(
             f"no single rate {symbol} > 0 holds {first.name} at rest in the frame ({first.name}'' = {typed_text(acceleration)})",
@@ -318,7 +318,7 @@ def _circular_orbit(method: Method, target: str) -> tuple[sympy.Expr, sympy.Expr
     radial = tidy.simplify(solver.acceleration(target))
     for step in solver.steps:
         method.step(step.title, step.latex)
-    roots = sympy.solve(radial, r)
+    roots = tidy.solve(radial, r)
     slope = sympy.diff(radial, r)
     stable = [
         root

@@ -43,6 +43,8 @@ TOLERANCE = 1e-3
 ENERGY_TOLERANCE = 1e-6  # RK4 keeps the books far better than this over a short motion
 ENERGY_STEPS = 100
 THRESHOLD_STEP = 1e-3  # runs at the derived threshold ± this fraction of it
+SMALLEST_PIVOT = 1e-300  # a pivot this small: the equations of motion do not determine the accelerations
+_SINGULAR = "the equations of motion are singular in the simulation"
 if TYPE_CHECKING:
     from physics.engine.reach_simulation import ReachMeasure
 
@@ -57,31 +59,66 @@ def _compile(args: Sequence[sympy.Symbol], exprs: Sequence[sympy.Expr]) -> Calla
 
 
 def solve_numeric(matrix: list[list[float]], rhs: Vector) -> Vector:
-    """Gaussian elimination with partial pivoting (the systems here are a handful of unknowns)."""
+    """Gaussian elimination with partial pivoting (the systems here are a handful of unknowns).
+
+    It runs at every step of every integration, so one and two unknowns (most systems) are written out,
+    doing the very operations of the general elimination in its order: the same floats to the last bit."""
     n = len(rhs)
-    a = [[*row, rhs[i]] for i, row in enumerate(matrix)]
+    if n == 1:
+        head = matrix[0][0]
+        if abs(head) < SMALLEST_PIVOT:
+            raise DerivationError(_SINGULAR)
+        return [(rhs[0] - 0) / head]
+    if n == 2:
+        (a, b), (c, d) = matrix
+        e, f = rhs
+        if abs(c) > abs(a):  # the pivot: the first row of the largest size
+            a, b, e, c, d, f = c, d, f, a, b, e
+        if abs(a) < SMALLEST_PIVOT:
+            raise DerivationError(_SINGULAR)
+        factor = c / a
+        d, f = d - factor * b, f - factor * e
+        if abs(d) < SMALLEST_PIVOT:
+            raise DerivationError(_SINGULAR)
+        second = (f - 0) / d
+        return [(e - (0 + b * second)) / a, second]  # 0 + ...: `sum` of one term, as below
+    return eliminated(matrix, rhs)
+
+
+def eliminated(matrix: list[list[float]], rhs: Vector) -> Vector:
+    """`solve_numeric` for any number of unknowns."""
+    n = len(rhs)
+    rows = [[*row, rhs[i]] for i, row in enumerate(matrix)]
     for col in range(n):
-        pivot = max(range(col, n), key=lambda r: abs(a[r][col]))
-        if abs(a[pivot][col]) < 1e-300:
-            raise DerivationError("the equations of motion are singular in the simulation")
-        a[col], a[pivot] = a[pivot], a[col]
+        pivot, largest = col, abs(rows[col][col])
         for r in range(col + 1, n):
-            factor = a[r][col] / a[col][col]
-            for c in range(col, n + 1):
-                a[r][c] -= factor * a[col][c]
+            size = abs(rows[r][col])
+            if size > largest:
+                pivot, largest = r, size
+        if largest < SMALLEST_PIVOT:
+            raise DerivationError(_SINGULAR)
+        rows[col], rows[pivot] = rows[pivot], rows[col]
+        top = rows[col]
+        head = top[col]
+        for row in rows[col + 1 :]:
+            factor = row[col] / head
+            row[col:] = [x - factor * y for x, y in zip(row[col:], top[col:], strict=True)]
     x = [0.0] * n
     for r in range(n - 1, -1, -1):
-        x[r] = (a[r][n] - sum(a[r][c] * x[c] for c in range(r + 1, n))) / a[r][r]
+        row = rows[r]
+        x[r] = (row[n] - sum(row[c] * x[c] for c in range(r + 1, n))) / row[r]
     return x
 
 
 class Dynamics:
     """The model's equations of motion, compiled for numerical integration."""
 
-    def __init__(self, model: Model) -> None:
+    def __init__(self, model: Model, lagrange: LagrangeMethod | None = None) -> None:
+        """`lagrange`: the model's own method whose equations the derivation has already formed, if any."""
         self.model = model
-        self.mech = Mechanics(model)
-        equations, unknowns = LagrangeMethod(model, self.mech).system
+        lagrange = lagrange or LagrangeMethod(model, Mechanics(model))
+        self.mech = lagrange.mech
+        equations, unknowns = lagrange.system
         matrix, rhs = sympy.linear_eq_to_matrix(equations, unknowns)
         self.n = len(self.mech.q)
         self.size = len(unknowns)
@@ -232,10 +269,12 @@ class Simulator:
     equilibrium_of: Callable[[str], sympy.Expr]
     # the derived value of each quantity (what an expression's inputs are measured near)
     references: Mapping[str, sympy.Expr] = dataclasses.field(default_factory=dict)
+    # the derivation's Lagrange method of this same model: its equations and energies, formed once
+    lagrange: LagrangeMethod | None = None
 
     @cached_property
     def dynamics(self) -> Dynamics:
-        return Dynamics(self.model)
+        return Dynamics(self.model, self.lagrange)
 
     def check(
         self, quantity: Quantity, reference: sympy.Expr, points: Sequence[Point]

@@ -110,7 +110,7 @@ def slipping_limit(method: Method, quantity: Quantity) -> sympy.Expr:
     friction, normal = method.force(friction_name), method.force(normal_name)
     roots: list[sympy.Expr] = []
     for sign in (1, -1):
-        for root in sympy.solve(tidy.simplify(friction - sign * mu * normal), parameter):
+        for root in tidy.solve(tidy.simplify(friction - sign * mu * normal), parameter):
             if root.is_real is not False and not (parameter.is_positive and root.is_positive is False):
                 roots.append(tidy.simplify(root))
     roots = list(dict.fromkeys(roots))

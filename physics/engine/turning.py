@@ -41,7 +41,7 @@ def turning_point(method: Method, quantity: Quantity) -> sympy.Expr:
     end = c.symbol  # the rate's square where the coordinate has got to, as a function of it
     trip = work_energy.Journey(c, start, end, velocity, heading)
     square = work_energy.ROUTES.get(method.name, work_energy.by_integration)(method, trip)
-    roots = [tidy.simplify(r) for r in sympy.solve(square, end)]
+    roots = [tidy.simplify(r) for r in tidy.solve(square, end)]
     first = _first_ahead(model, roots, start, heading, quantity.name)
     method.step(
         f"{method.named(c.name)} turns where its rate vanishes, first along the way it moves",

@@ -7,12 +7,14 @@ integrates with the clock and keeps the books with the moving constraint's work.
 
 from __future__ import annotations
 
+from functools import cache
+
 import pytest
 import sympy
 import yaml
 from sympy import atan, cos, sin, sqrt, tan
 
-from physics.engine import Model, derivation, load_model
+from physics.engine import Derivation, Model, derivation, load_model
 from physics.errors import DerivationError, SpecErrors
 
 uncached = derivation._derive.__wrapped__
@@ -113,6 +115,12 @@ def _model(text: str) -> Model:
     return load_model(yaml.safe_load(text), SYMBOLS)
 
 
+@cache
+def _derived(text: str) -> Derivation:
+    """Derived once in a test process: the truck's derivation is read by two tests."""
+    return uncached(_model(text))
+
+
 def _same(first: sympy.Expr, second: sympy.Expr) -> bool:
     """Equal: simplified, else at a few points where every symbol is positive and g > a w^2."""
     if sympy.simplify(first - second) == 0:
@@ -195,7 +203,7 @@ def _same(first: sympy.Expr, second: sympy.Expr) -> bool:
 def test_a_support_moving_as_prescribed_is_derived_by_several_methods_and_simulated(
     text: str, expected: dict[str, sympy.Expr], methods: dict[str, set[str]]
 ) -> None:
-    result = uncached(_model(text))
+    result = _derived(text)
     for name, value in expected.items():
         assert _same(result.quantities[name], value), (name, result.quantities[name])
         assert methods[name] <= set(result.agreement[name])
@@ -204,7 +212,7 @@ def test_a_support_moving_as_prescribed_is_derived_by_several_methods_and_simula
 
 
 def test_energy_conservation_says_it_does_not_apply_in_the_ground_frame() -> None:
-    result = uncached(_model(TRUCK))
+    result = _derived(TRUCK)
     [conservation] = [r for r in result.methods if r.name == "conservation"]
     assert not conservation.results
     assert all("energy is not conserved in the ground's frame" in note for note in conservation.notes)
