@@ -45,6 +45,7 @@ from physics.mathinput.build import FUNCTIONS
 from physics.mathinput.reader import TreeReading
 from physics.mathinput.tree import Call, Const, Group, Name, Neg, Node, Num, Power, Product, Sum
 from physics.symbolic import floats, numeric
+from physics.symbolic.bounded import constant_exponent
 from physics.symbolic.compare import PREC, PRECISE_PREC, PRECISE_TOLERANCE_BITS, close
 from physics.symbolic.floats import Floats
 from physics.symbolic.judge import dimension_difference, judged_in_floats
@@ -188,7 +189,7 @@ class _Dimensions:
         if isinstance(node, Power):
             if _is_e(node.base):
                 return self._dimensionless(node.exponent)
-            exponent = _exponent(node.exponent)
+            exponent = constant_exponent(node.exponent)
             assert exponent is not None  # admitted
             return self.of(node.base) ** exponent
         assert isinstance(node, Call)  # admitted
@@ -243,26 +244,6 @@ class _TreeAtPoints:
         return _TreeValues(points, len(indexes), self._symbols, PREC + EXTRA_BITS, self._keys, grid).value(
             self._tree
         )
-
-
-def _exponent(node: Node) -> Fraction | None:
-    """The exponent as an exact constant when it is one (`2`, `-1/2`, `(3/2)`), else None."""
-    if isinstance(node, Num):
-        return node.value
-    if isinstance(node, Group):
-        return _exponent(node.inner)
-    if isinstance(node, Neg):
-        inner = _exponent(node.operand)
-        return None if inner is None else -inner
-    if isinstance(node, Product):
-        value = _exponent(node.first)
-        for operator, factor in node.rest:
-            other = _exponent(factor)
-            if value is None or other is None or (operator == "/" and other == 0):
-                return None
-            value = value * other if operator == "*" else value / other
-        return value
-    return None
 
 
 def _is_e(node: Node) -> bool:
@@ -364,7 +345,7 @@ class _Shape:
         if _is_e(node.base):
             weight = self._argument(node.exponent, times, in_root)[1]
             return (1.0, 2 + weight), ("e", keys[id(node.exponent)])
-        exponent = _exponent(node.exponent)
+        exponent = constant_exponent(node.exponent)
         if exponent is None or exponent.denominator > 2:
             raise _Declined
         self._nodes += 1  # the exponent, a constant bounded by the degree
@@ -465,7 +446,7 @@ class _FloatTree:
     def _power(self, node: Power) -> Floats:
         if _is_e(node.base):
             return np.exp(self.value(node.exponent))
-        exponent = _exponent(node.exponent)
+        exponent = constant_exponent(node.exponent)
         assert exponent is not None  # admitted
         powered: Floats = np.power(self.value(node.base), float(exponent))
         return powered
@@ -567,7 +548,7 @@ class _TreeValues:
         prec = self._prec
         if _is_e(node.base):
             return [_unary(sympy.exp, x, prec) for x in self.value(node.exponent)]
-        exponent = _exponent(node.exponent)
+        exponent = constant_exponent(node.exponent)
         assert exponent is not None  # admitted
         return [_power(b, exponent, prec) for b in self.value(node.base)]
 
