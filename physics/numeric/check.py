@@ -165,7 +165,7 @@ def check_numeric(answer: str, spec: NumericSpec) -> Verdict:
     cycles = None
     if answer_units is not None and target is not None:
         expected_as_written = target.convert(expected, answer_units)
-        cycles = _cycles(answer_units, target) if spec.angular_units == "strict" else None
+        cycles = _cycles(answer_units, target, strict=spec.angular_units == "strict")
         if cycles is not None:
             expected_as_written /= cycles
     comparison = _Comparison(expected, expected_as_written, answer_units, target, spec.tolerance, cycles)
@@ -195,18 +195,30 @@ def _cycles_or_radians(answer: ParsedUnits | None, target: ParsedUnits | None) -
     return ""
 
 
-def _cycles(answer: ParsedUnits, target: ParsedUnits) -> Fraction | None:
-    """Under `angular_units: strict`, a hertz is a cycle per second, 2π rad/s: the factor that takes the
-    answer's hertz to the target's angle units (or its angle units to the target's hertz), else None.
-    Only where one side counts cycles and the other angles: Hz against 1/s or Bq is the same s⁻¹."""
+def _cycles(answer: ParsedUnits, target: ParsedUnits, *, strict: bool) -> Fraction | None:
+    """The factor that takes the answer's hertz to the target's angle units (or its angle units to the
+    target's hertz), a hertz being a cycle per second; else None. Only where one side counts cycles and
+    the other angles (Hz against 1/s or Bq is the same s⁻¹); against radians or degrees only under
+    `angular_units: strict` (by default Hz and rad/s are both s⁻¹), but against turns always: 60 rpm is
+    1 Hz to every reader, and pint's 2π rad/min to anything else."""
     answer_angle = any(atom.angle for atom, _ in answer.factors)
     target_angle = any(atom.angle for atom, _ in target.factors)
     power = _hertz(answer) - _hertz(target)
     if answer_angle == target_angle or power == 0:
         return None
+    if not strict and not _counts_turns(answer if answer_angle else target):
+        return None
     turn = lookup("rev")
     assert turn is not None
     return turn.scale**power  # pint's 2π, to 50 digits
+
+
+# The angle units that count whole turns, as a hertz counts cycles.
+_TURNS = frozenset({"turn", "revolutions_per_minute", "revolutions_per_second"})
+
+
+def _counts_turns(units: ParsedUnits) -> bool:
+    return all(atom.name in _TURNS for atom, _ in units.factors if atom.angle)
 
 
 def _hertz(units: ParsedUnits) -> int:

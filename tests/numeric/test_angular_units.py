@@ -1,6 +1,6 @@
 """Hz for an angular frequency: correct by default (Hz and rad/s are both s⁻¹), said once and plainly; a
 part with `angular_units: strict` counts a hertz as a cycle, 2π rad/s, and grades Hz for ω as the 2π
-mistake."""
+mistake. Against turns (rev/s, rpm) a hertz is a cycle in either mode."""
 
 from __future__ import annotations
 
@@ -37,6 +37,13 @@ GRADED = [
     ("4.58 rad/s", _frequency(), NO, Reason.CONSTANT_FACTOR, F_SAYS),
     ("4.58 rad/s", _omega(), OK, Reason.EQUIVALENT, ""),
     ("4.58 1/s", _omega(), OK, Reason.EQUIVALENT, ""),
+    # a turn is a cycle whatever the mode: 43.7 rpm is 0.729 Hz, not 2π times it
+    ("43.7 rpm", _frequency(), OK, Reason.EQUIVALENT, ""),
+    ("0.729 rev/s", _frequency(), OK, Reason.EQUIVALENT, ""),
+    ("275 rpm", _frequency(), NO, Reason.CONSTANT_FACTOR, ""),  # 2π times too many turns
+    ("0.729 Hz", NumericSpec(D("43.7"), "rpm"), OK, Reason.EQUIVALENT, ""),
+    ("0.000729 kHz", NumericSpec(D("43.7"), "rpm"), OK, Reason.EQUIVALENT, ""),
+    ("4.58 Hz", NumericSpec(D("43.7"), "rpm"), NO, Reason.CONSTANT_FACTOR, ""),  # ω in Hz for a rate
     # strict: a hertz is a cycle per second, 2π rad/s
     ("4.58 Hz", _omega(**STRICT), NO, Reason.CONSTANT_FACTOR, OMEGA_SAYS),  # the 2π mistake
     ("0.00458 kHz", _omega(**STRICT), NO, Reason.CONSTANT_FACTOR, OMEGA_SAYS),
