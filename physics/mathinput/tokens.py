@@ -18,6 +18,7 @@ from physics.mathinput.velocities import PRIMES, derivatives_read, dotted_word, 
 from physics.mathinput.vocabulary import (
     CHARACTER_VARIANTS,
     CLOSERS,
+    FUNCTIONS,
     OPENERS,
     SUPERSCRIPT_DIGITS,
     SUPERSCRIPT_SIGNS,
@@ -136,7 +137,7 @@ def tokenize(
             space = False
             continue
         elif ch == ",":
-            raise ParseError("Commas are not used in answers; write a product with * or a space.", i)
+            raise ParseError(_comma_message(tokens), i)
         elif ch in "=≈":  # `a = g sin θ`, `≈ 2g`, as written on paper
             raise ParseError(f"Give the expression alone, without '{ch}' (nor the name before it).", i)
         else:
@@ -146,6 +147,35 @@ def tokenize(
     latex.finish()
     tokens.append(Token(Kind.END, "", n, n, space))
     return derivatives_read(tokens) if velocities else tokens
+
+
+# Two-argument functions students know from programming or calculators, and how the answer writes them.
+_TWO_ARGUMENTS = {"atan2": "the angle as atan(y/x)", "arctan2": "the angle as atan(y/x)"}
+
+
+def _comma_message(before: list[Token]) -> str:
+    """Why a comma cannot be read, by where it stands: in a function's brackets (`atan2(y, x)`), in
+    plain brackets (a pair), or between two expressions."""
+    depth = 0
+    for at in range(len(before) - 1, -1, -1):
+        kind = before[at].kind
+        if kind is Kind.RPAREN:
+            depth += 1
+        elif kind is Kind.LPAREN:
+            if depth:
+                depth -= 1
+                continue
+            name = before[at - 1].text if at and before[at - 1].kind is Kind.WORD else None
+            if name is None:
+                return "Commas are not used in answers: give one expression, not a pair or a list."
+            if name in FUNCTIONS:
+                return f"Commas are not used in answers: {name}(…) takes one argument."
+            written = _TWO_ARGUMENTS.get(name.lower())
+            instead = f"; write {written}" if written else ""
+            return (
+                f"Commas are not used in answers: a function of several arguments cannot be written{instead}."
+            )
+    return "Commas are not used in answers: give one expression (a product is written with * or a space)."
 
 
 def _vulgar_fraction(ch: str, i: int, space: bool) -> list[Token]:

@@ -31,7 +31,12 @@ PARSE_ERRORS = [
     ("x # y", 2, "Unexpected character '#'"),
     ("x; y", 1, "Unexpected character ';'"),
     ("4,58", 1, "decimal point"),
-    ("x, y", 1, "Commas"),
+    ("x, y", 1, "Commas are not used in answers: give one expression"),
+    ("(x, y)", 2, "not a pair or a list"),
+    ("atan2(y, x)", 7, "a function of several arguments cannot be written; write the angle as atan(y/x)."),
+    ("2 max(x, (y + 1), y)", 7, "a function of several arguments cannot be written."),
+    ("sin(x, y)", 5, "sin(…) takes one argument."),
+    ("sin(x) (y, x)", 9, "not a pair or a list"),
     ("x = y", 2, "Give the expression alone, without '='"),
     ("≈ 2 x", 0, "without '≈'"),
     # LaTeX is read (test_latex.py); a command it does not know is refused at its backslash
