@@ -29,10 +29,12 @@ def draw_impact(figure: Figure, model: Model, values: Values) -> None:
     gap = 3.0 if hit.restitution is not None else 1.2
     before = velocities_before(model)
     speeds: list[str] = []
+    # A body against a fixed floor or wall is drawn round, a ball, as are pucks in the plane.
+    round_ = plane or hit.fixed is not None
     for index, name in enumerate(hit.bodies):
         body = model.body(name)
         centre = (index * gap, 0.0)
-        if plane:
+        if round_:
             canvas.circle(centre, BLOCK / 2, fill=FILLS[index])
         else:
             canvas.polygon(square(centre, BLOCK), fill=FILLS[index])
@@ -43,11 +45,22 @@ def draw_impact(figure: Figure, model: Model, values: Values) -> None:
         else:
             canvas.text(centre, label)
         velocity = before[name].get("x", sympy.Integer(0))
+        falling = before[name].get("y", sympy.Integer(0)) if velocity == 0 else sympy.Integer(0)
         if velocity != 0:
             canvas.arrow((centre[0], 0.85), (centre[0] + 1.1, 0.85), width=0.04)
             label = symbol_label(velocity.name) if isinstance(velocity, sympy.Symbol) else ""
             canvas.text((centre[0] + 0.55, 1.2), label, size=0.36)
             speeds.append(f"{body_label(body, model)} moving at {label or 'its speed'}")
+        elif falling != 0:  # up or down the page, beside the body (a ball dropped on the floor)
+            way = 1.0 if values.number(falling) > 0 else -1.0
+            canvas.arrow(
+                (centre[0] + 0.85, 0.25 - 0.5 * way), (centre[0] + 0.85, 0.25 + 0.5 * way), width=0.04
+            )
+            label = symbol_label(falling.name) if isinstance(falling, sympy.Symbol) else ""
+            if label:
+                canvas.text((centre[0] + 1.25, 0.0), label, size=0.36)
+            moving = "up" if way > 0 else "down"
+            speeds.append(f"{body_label(body, model)} moving {moving}" + (f" at {label}" if label else ""))
     if hit.fixed is not None:
         _draw_fixed_partner(figure, model, values)
     elif plane:

@@ -44,3 +44,49 @@ def test_an_explosion_figure_says_the_fragments_are_pushed_apart() -> None:
     root = _figure({"release": "Q"}, {})
     assert {"m₁", "m₂"} <= _texts(root)
     assert "explosion" in root.findtext(f"{SVG}desc", "")
+
+
+def _dropped(state_speed: str) -> ET.Element:
+    symbols = {n: sympy.Symbol(n, positive=True) for n in ("m", "g", "h", "e")}
+    model = load_model(
+        {
+            "coordinates": ["y"],
+            "bodies": {"ball": {"mass": "m", "position": {"y": "y"}}},
+            "gravity": "g",
+            "state": {"y": 0, "y_dot": state_speed},
+            "impact": {"bodies": ["ball", {"fixed": "floor"}], "normal": {"y": -1}, "restitution": "e"},
+            "quantities": {"v": {"final_speed": "ball"}},
+        },
+        symbols,
+    )
+    return ET.fromstring(model_figure(model, {}, title="bounce"))
+
+
+def _arrow_heights(root: ET.Element) -> list[tuple[float, float]]:
+    """(start, end) heights of each arrow's shaft (a line ending at a head's tip), in SVG coordinates,
+    which grow downwards."""
+    tips = {e.get("points", "").split()[0] for e in root.iter(f"{SVG}polygon")}
+    return [
+        (float(e.get("y1", "0")), float(e.get("y2", "0")))
+        for e in root.iter(f"{SVG}line")
+        if f"{e.get('x2')},{e.get('y2')}" in tips
+    ]
+
+
+def _squares(root: ET.Element) -> int:
+    return sum(len(e.get("points", "").split()) == 4 for e in root.iter(f"{SVG}polygon"))
+
+
+def test_a_ball_dropped_on_the_floor_is_drawn_round_with_its_fall_pointing_down() -> None:
+    root = _dropped("-sqrt(2*g*h)")
+    assert len(list(root.iter(f"{SVG}circle"))) == 1 and not _squares(root)
+    heights = _arrow_heights(root)
+    assert len(heights) == 1 and heights[0][1] > heights[0][0]  # towards the floor
+    assert "moving down" in root.findtext(f"{SVG}desc", "")
+
+
+def test_a_ball_thrown_up_into_a_ceiling_points_up() -> None:
+    root = _dropped("sqrt(2*g*h)")
+    heights = _arrow_heights(root)
+    assert len(heights) == 1 and heights[0][1] < heights[0][0]
+    assert "moving up" in root.findtext(f"{SVG}desc", "")
