@@ -19,6 +19,7 @@ from physics.figures.loads import given_forces
 from physics.figures.pulleys import draw_pulley_to_hanging
 from physics.figures.slope import draw_incline
 from physics.figures.spring_block import draw_slope_spring
+from physics.figures.turning import draw_curve_axis
 from physics.figures.wedge import draw_double_incline, draw_wedge
 
 LINES = ("incline", "surface", "rolling")  # the kinds that put a body on a straight surface
@@ -57,6 +58,11 @@ def from_elements(
     for index, ends in enumerate(over_edge):
         left = slope.upper is None and len(over_edge) == 2 and index == 0
         draw_pulley_to_hanging(figure, model, slope, *ends, left=left)
+    for frame in of_kind(elements, "rotating"):
+        turning = [str(name) for name in frame.fields["bodies"]]
+        if len(turning) == 1 and turning[0] in on_slope:
+            line = next(e for e in lines if element_body(model, e).name == turning[0])
+            draw_curve_axis(figure, model, values, slope, frame, line.fields.get("at"))
     return True
 
 

@@ -38,7 +38,11 @@ EXPECTED = {
     "collision-scenarios": ({"m₁", "m₂", "u"}, "collision"),
     "conical-pendulum-rate": ({"m", "L"}, "sweeping out a cone"),
     "glancing-pucks": ({"m", "u", "φ"}, "elastic collision"),
-    "bouncing-ball": ({"m"}, "the fixed floor"),
+    "bouncing-ball": ({"m"}, "the fixed floor about to meet in a collision: m moving down"),
+    "banked-curve": (
+        {"m", "θ", "R"},
+        "goes round a curve about the vertical axis drawn dashed, a distance R",
+    ),
     "cart-hits-block-on-incline": ({"m₁", "m₂", "u"}, "elastic collision"),
     "projectile": ({"m", "v₀", "α"}, "launched from the ground"),
     "ladder-slipping": ({"m", "L", "θ"}, "leans against a vertical wall"),
