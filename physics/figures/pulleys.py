@@ -12,9 +12,17 @@ from physics.figures.svg import FILLS
 
 
 def draw_pulley_to_hanging(
-    figure: Figure, model: Model, slope: Slope, on_slope: Body, hanging: Body, *, left: bool = False
+    figure: Figure,
+    model: Model,
+    slope: Slope,
+    on_slope: Body,
+    hanging: Body,
+    *,
+    left: bool = False,
+    movable: bool = False,
 ) -> None:
-    """A pulley at the slope's upper end (or a table's edge); the string runs along it, then down."""
+    """A pulley at the slope's upper end (or a table's edge); the string runs along it, then down to the
+    hanging body, or (`movable`) down under a light movable pulley that carries it and up to a support."""
     radius = 0.4
     canvas = figure.canvas
     tx, ty = slope.tangent
@@ -33,6 +41,16 @@ def draw_pulley_to_hanging(
     canvas.circle(centre, radius, fill="#ffffff")
     canvas.circle(centre, 0.06, fill="#1b1b1b")
     side = radius if tx >= 0 else -radius
+    edge = "top" if slope.upper is not None else "edge"
+    if movable:
+        _under_movable_pulley(
+            figure, model, (centre[0] + side, centre[1]), 1.0 if side > 0 else -1.0, hanging
+        )
+        figure.say(
+            f"A string from {body_label(on_slope, model)} runs over a pulley at the {edge}, down under a "
+            f"light movable pulley carrying {body_label(hanging, model)}, and up to a fixed support."
+        )
+        return
     drop = (centre[0] + side, centre[1] - 3.0)
     canvas.line((centre[0] + side, centre[1]), (drop[0], drop[1] + BLOCK / 2), width=0.04)
     canvas.polygon(
@@ -46,9 +64,27 @@ def draw_pulley_to_hanging(
     )
     canvas.text(drop, body_label(hanging, model))
     figure.say(
-        f"A string from {body_label(on_slope, model)} runs over a pulley at the "
-        f"{'top' if slope.upper is not None else 'edge'} to {body_label(hanging, model)}, which hangs."
+        f"A string from {body_label(on_slope, model)} runs over a pulley at the {edge} to "
+        f"{body_label(hanging, model)}, which hangs."
     )
+
+
+def _under_movable_pulley(
+    figure: Figure, model: Model, start: tuple[float, float], way: float, carried: Body
+) -> None:
+    """From `start` (where the string leaves the fixed pulley) down under a movable pulley, `way` to the
+    right (1) or left (-1), and up to a support level with the start; the pulley carries `carried`."""
+    canvas = figure.canvas
+    radius = 0.4
+    lower = (start[0] + way * radius, start[1] - 2.2)
+    far = lower[0] + way * radius
+    support = start[1] + 0.6
+    canvas.line(start, (start[0], lower[1]), width=0.04)
+    canvas.line((far, lower[1]), (far, support), width=0.04)
+    canvas.ground((far - 0.5, support), (far + 0.5, support), below=False)
+    hanging_block(figure, lower, carried, model, FILLS[1])
+    canvas.circle(lower, radius, fill="#ffffff")
+    canvas.circle(lower, 0.06, fill="#1b1b1b")
 
 
 def draw_double_atwood(figure: Figure, model: Model, hanging: list[Body]) -> None:
