@@ -89,6 +89,7 @@ def create_app(
             max_answer_chars=settings.max_answer_chars,
             per_owner=settings.student_checks_in_flight,
             log_answers=settings.log_answers,
+            lanes=settings.check_lanes,
         )
         # The workers' fork server imports the checker while this process opens storage: side by side.
         try:

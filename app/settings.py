@@ -19,10 +19,9 @@ def cores() -> int:
 
 
 def default_check_workers() -> int:
-    """Two more grading workers than cores: the server shares the cores with its workers, and a worker
-    that has answered waits for the server to hand it the next check; with only one per core, a core
-    then stood idle under load (2 cores: 2 workers served 10-20 % fewer checks a second than 3-5 did,
-    bench/targets.py). A worker at rest holds about 20 MB of its own; the rest is shared."""
+    """Two more grading workers than cores: one lane per core (`check_lanes`) and two at rest, which
+    stand in for lanes stuck on slow answers (a hostile answer holds its worker until the time limit).
+    A worker at rest holds about 20 MB of its own; the rest is shared."""
     return cores() + 2
 
 
@@ -42,6 +41,9 @@ class Settings(BaseSettings):
     check_timeout_seconds: float = Field(default=2.0, gt=0)
     check_memory_mb: int = Field(default=1024, ge=128)
     check_workers: int = Field(default_factory=default_check_workers, ge=1)
+    # Workers that take the next check while grading one, so that they start it at once instead of
+    # sleeping until the server hands it over (app/grading/processes.py); 0: each takes one at a time.
+    check_lanes: int = Field(default_factory=cores, ge=0)
     check_queue_size: int = Field(default=64, ge=1)
     # Checks one student (or LMS session) may have running at once; instructor API keys are not limited.
     student_checks_in_flight: int = Field(default=2, ge=1)

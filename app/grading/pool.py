@@ -43,6 +43,7 @@ class GradingPool:
         preview_task: Callable[[CheckJob], Preview | SpecProblem | GraderCrash] = read_only,
         verdicts_cached: int = 4096,
         log_answers: bool = False,
+        lanes: int = 0,
     ):
         self._log_answers = log_answers
         self._task = task
@@ -59,6 +60,7 @@ class GradingPool:
         self._timeout = timeout
         self._memory_mb = memory_mb
         self._max_tasks = max_tasks
+        self._lanes = min(lanes, workers)
         self._capacity = workers + queue_size
         self._in_flight = 0
         self._pool: WorkerPool | None = None
@@ -88,6 +90,7 @@ class GradingPool:
             initializer=limit_memory,
             initargs=(self._memory_mb,),
             tasks=(self._task, self._preview_task),
+            lanes=self._lanes,
         )
 
     def _warm(self, pool: WorkerPool) -> None:

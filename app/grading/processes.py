@@ -1,7 +1,7 @@
 """Killable worker processes, each behind its own pipe, and one supervisor thread for them all.
 
-A caller's thread pickles a job and writes it straight to an idle worker's pipe (or queues it when none
-is idle) and gets a `concurrent.futures.Future` (`schedule`), or awaits the answer on its own event loop
+A caller's thread pickles a job and writes it straight to an idle worker's pipe, or to a busy lane's
+(`lanes`: one job waiting in its pipe behind the running one), or queues it, and gets a `concurrent.futures.Future` (`schedule`), or awaits the answer on its own event loop
 (`run`, which spares the server a thread-safe future and its chaining per check). The supervisor thread
 waits on every worker's pipe, with the nearest deadline as its timeout: it resolves futures, hands
 queued jobs to freed workers, kills a worker whose job overran (`TimeoutError`), notices one that died
@@ -17,8 +17,8 @@ A worker's messages: an empty one when it is ready for jobs (so a job's time lim
 worker can start it, not while it is still starting); then the pool sends `pickle((function, args))`
 and the worker answers with `pickle((True, result))` or `pickle((False, exception))`, until its pipe
 closes, when it exits. Each is framed by its length and written in one `write`, so that one `read`
-usually takes it whole (a pipe holds one message at a time): a system call fewer each way than
-`Connection.recv_bytes`.
+usually takes it whole (one read may hold two: a lane's two answers, its two jobs): a system call fewer
+each way than `Connection.recv_bytes`.
 """
 
 from __future__ import annotations
@@ -37,7 +37,7 @@ from collections import deque
 from collections.abc import Callable, Sequence
 from concurrent.futures import Future, InvalidStateError
 from concurrent.futures import TimeoutError as FutureTimeout
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from multiprocessing.connection import Connection
 from multiprocessing.context import ForkServerContext
 from multiprocessing.process import BaseProcess
@@ -51,6 +51,13 @@ CLOSE_SECONDS = 10.0
 # The supervisor wakes at least this often, so that a job sent while it sleeps needs no wake-up write
 # unless its deadline is nearer (with the service's 2 s limit, never).
 IDLE_WAKE_SECONDS = 1.0
+# A lane (a worker that takes a second job) holds one job more in its pipe, so that it starts it the
+# moment it answers the one before, with its caches warm, instead of sleeping until the supervisor hands
+# it one; with one lane per core and the other workers asleep, grading under load cost a tenth less CPU
+# (bench/server_cpu.py). A job waiting behind one that has run this long goes back to the queue for
+# another worker (the copy left in the pipe is answered to nobody), and the stuck lane's place is taken
+# by a worker that was asleep, so a slow answer delays no other check by more than this.
+WAITING_BEHIND_SECONDS = 0.05
 
 
 class PoolError(Exception):
@@ -84,15 +91,41 @@ def _send(fd: int, message: bytes) -> None:
         view = view[os.write(fd, view) :]
 
 
-def _receive(fd: int) -> bytes | None:
-    """The next message's payload, or None when the other end closed (before or during it)."""
-    data = b""
-    while len(data) < _HEADER or len(data) < _HEADER + int.from_bytes(data[:_HEADER], "big"):
-        more = os.read(fd, _CHUNK)
-        if not more:
+class _Messages:
+    """The framed messages read from a pipe: one read may hold more than one (a worker may have its
+    next job in its pipe, and answer two jobs before the supervisor reads)."""
+
+    def __init__(self, fd: int):
+        self.fd = fd
+        self._data = b""
+
+    def next(self) -> bytes | None:
+        """The next message's payload (reading until it is whole), or None when the other end closed."""
+        while not (end := self._end()):
+            more = os.read(self.fd, _CHUNK)
+            if not more:
+                return None
+            self._data += more
+        message, self._data = self._data[_HEADER:end], self._data[end:]
+        return message
+
+    def arrived(self) -> list[bytes] | None:
+        """Every message the next read completes (the pipe is readable), or None when it closed."""
+        first = self.next()
+        if first is None:
             return None
-        data += more
-    return data[_HEADER:]
+        messages = [first]
+        while end := self._end():
+            messages.append(self._data[_HEADER:end])
+            self._data = self._data[end:]
+        return messages
+
+    def _end(self) -> int:
+        data = self._data
+        if len(data) < _HEADER:
+            return 0
+        end = _HEADER + int.from_bytes(data[:_HEADER], "big")
+        return end if len(data) >= end else 0
 
 
 def serve(
@@ -114,7 +147,8 @@ def serve(
         initializer(*initargs)
     fd = conn.fileno()
     _send(fd, _framed(b""))  # ready
-    while (message := _receive(fd)) is not None:
+    jobs = _Messages(fd)
+    while (message := jobs.next()) is not None:
         try:
             function, args = pickle.loads(message)  # noqa: S301 (from the server, over our own pipe)
             outcome: tuple[bool, object] = (True, function(*args))
@@ -148,19 +182,27 @@ def _exit_with(server: int) -> None:
 @dataclass(eq=False)
 class _Job:
     message: bytes
-    future: Future[Any] | asyncio.Future[Any]
+    future: Future[Any] | asyncio.Future[Any] | None  # None: a copy handed to another worker instead
     timeout: float
-    deadline: float = float("inf")
+    deadline: float = float("inf")  # set when its worker starts it
     running: bool = False
+
+    @property
+    def started(self) -> float:
+        return self.deadline - self.timeout
 
 
 @dataclass(eq=False)
 class _Worker:
     process: BaseProcess
     conn: Connection
-    job: _Job | None = None  # after its removal, the job it died running (failed when it is reaped)
+    answers: _Messages
+    # Sent to it, in order: the first is running, the next waits in its pipe. After its removal, the
+    # job it died running (failed when it is reaped).
+    jobs: deque[_Job] = field(default_factory=deque)
     done: int = 0
     ready: bool = False  # it said so: it takes jobs from now on
+    broken: bool = False  # a write to its pipe failed: it died, and takes no job until it is removed
 
 
 # What the supervisor's selector watches: a live worker's pipe, a gone worker's sentinel, the wake pipe.
@@ -179,7 +221,10 @@ class WorkerPool:
         initializer: Callable[..., object] | None = None,
         initargs: Sequence[object] = (),
         tasks: Sequence[Callable[..., object]] = (),
+        lanes: int = 0,
     ):
+        """`lanes`: how many workers take a second job while running one (0: none, every worker takes
+        one job at a time); the other workers take jobs only while a lane is stuck on one."""
         self._name = name
         self._context = context
         self._wanted = workers
@@ -187,9 +232,9 @@ class WorkerPool:
         self._initializer = initializer
         self._initargs = tuple(initargs)
         self._tasks = tuple(tasks)
+        self._lanes = lanes
         self._lock = threading.Lock()
         self._live: list[_Worker] = []
-        self._idle: list[_Worker] = []
         self._gone: list[_Worker] = []  # removed, until the fork server reports their exit
         self._queue: deque[_Job] = deque()
         self._down = True  # no worker, and none could be started: refuse rather than queue
@@ -210,10 +255,9 @@ class WorkerPool:
             for _ in range(self._wanted):
                 self._add(self._spawn())
             for worker in self._live:
-                if not worker.conn.poll(START_SECONDS) or _receive(worker.conn.fileno()) is None:
+                if not worker.conn.poll(START_SECONDS) or worker.answers.next() is None:
                     raise PoolUnavailable(f"a {self._name} worker did not start")
                 worker.ready = True
-                self._idle.append(worker)
         except BaseException:
             self.close()
             raise
@@ -267,9 +311,9 @@ class WorkerPool:
         if supervisor is not None:
             supervisor.join(CLOSE_SECONDS)
         with self._lock:
-            live, self._live, self._idle = self._live, [], []
+            live, self._live = self._live, []
             workers, self._gone = live + self._gone, []
-            jobs = [worker.job for worker in workers if worker.job is not None] + list(self._queue)
+            jobs = [job for worker in workers for job in worker.jobs] + list(self._queue)
             self._queue.clear()
         for worker in live:
             worker.process.kill()
@@ -279,32 +323,57 @@ class WorkerPool:
             with contextlib.suppress(ValueError):  # still running after all: the OS will see to it
                 worker.process.close()
         for job in jobs:
-            _settle(job.future, PoolUnavailable(f"the {self._name} pool was closed"))
+            if job.future is not None:
+                _settle(job.future, PoolUnavailable(f"the {self._name} pool was closed"))
         if supervisor is None:
             self._release()  # else the supervisor releases them on its way out
 
     # Below: the supervisor thread's, but for `_dispatch` and `_wake`, which callers run too.
 
     def _dispatch(self) -> None:
-        """Hand queued jobs to idle workers (the lock held)."""
-        while self._idle and self._queue:
+        """Hand queued jobs to the workers that take them now (the lock held)."""
+        now = time.monotonic()
+        while self._queue:
+            worker = self._taker(now)
+            if worker is None:
+                return
             job = self._queue.popleft()
+            assert job.future is not None
             if not job.running:
                 if not _running(job.future):
                     continue  # cancelled while queued
                 job.running = True
-            worker = self._idle.pop()
-            job.deadline = time.monotonic() + job.timeout
             try:
                 _send(worker.conn.fileno(), job.message)
             except OSError:
-                # It died while idle; its end of the pipe tells the supervisor. The job goes to the next.
+                # It died; its end of the pipe tells the supervisor. The job goes to the next.
+                worker.broken = True
                 self._queue.appendleft(job)
                 continue
-            worker.job = job
-            if job.deadline < self._wake_at:
-                self._wake_at = job.deadline
-                self._wake()
+            worker.jobs.append(job)
+            if len(worker.jobs) == 1:
+                job.deadline = now + job.timeout
+                if job.deadline < self._wake_at:
+                    self._wake_at = job.deadline
+                    self._wake()
+
+    def _taker(self, now: float) -> _Worker | None:
+        """The worker that takes the next job: an idle one; else, with lanes, the lane whose running job
+        started earliest takes one more, to start when it answers. The lanes are the first `lanes` ready
+        workers not stuck on a job (running longer than WAITING_BEHIND_SECONDS): the others stay asleep
+        until a lane is stuck, then stand in for it."""
+        lanes: list[_Worker] = []
+        for worker in self._live:
+            stuck = worker.jobs and worker.jobs[0].started <= now - WAITING_BEHIND_SECONDS
+            if worker.ready and not worker.broken and not stuck:
+                lanes.append(worker)
+        if self._lanes:
+            lanes = lanes[: self._lanes]
+        idle = next((worker for worker in lanes if not worker.jobs), None)
+        if idle is not None or not self._lanes:
+            return idle
+        second = [w for w in lanes if len(w.jobs) == 1 and w.done + 2 < self._max_tasks]
+        return min(second, key=lambda w: w.jobs[0].started, default=None)
 
     def _wake(self) -> None:
         with contextlib.suppress(OSError):  # full: a wake-up is already pending
@@ -328,7 +397,7 @@ class WorkerPool:
             self._wake_at = self._next_wake()
             timeout = max(0.0, self._wake_at - time.monotonic())
         events = self._selector.select(timeout)
-        answers: list[tuple[_Worker, bytes | None]] = []
+        answers: list[tuple[_Worker, list[bytes] | None]] = []
         gone: list[_Worker] = []
         for key, _ in events:
             kind, worker = key.data
@@ -337,7 +406,7 @@ class WorkerPool:
                     os.read(self._wake_r, 4096)
             elif kind == _PIPE:
                 try:
-                    answers.append((worker, _receive(worker.conn.fileno())))
+                    answers.append((worker, worker.answers.arrived()))
                 except OSError:
                     answers.append((worker, None))
             else:
@@ -346,11 +415,12 @@ class WorkerPool:
         with self._lock:
             if self._closed:
                 return
-            for worker, answer in answers:
-                if answer is None:
+            for worker, arrived in answers:
+                if arrived is None:
                     self._lost(worker, settled)
                 else:
-                    self._answered(worker, answer, settled)
+                    for answer in arrived:
+                        self._answered(worker, answer, settled)
             self._expire(time.monotonic(), settled)
             for worker in gone:
                 self._reap(worker, settled)
@@ -362,30 +432,37 @@ class WorkerPool:
             _settle(future, outcome)
 
     def _next_wake(self) -> float:
-        wake = time.monotonic() + IDLE_WAKE_SECONDS
+        now = time.monotonic()
+        wake = now + IDLE_WAKE_SECONDS
         for worker in self._live:
-            if worker.job is not None:
-                wake = min(wake, worker.job.deadline)
+            if worker.jobs:
+                # Also soon enough to find a job sent meanwhile waiting behind this one too long: so
+                # that sending one never costs a wake-up.
+                wake = min(wake, worker.jobs[0].deadline, now + WAITING_BEHIND_SECONDS)
+            if len(worker.jobs) > 1:
+                wake = min(wake, worker.jobs[0].started + WAITING_BEHIND_SECONDS)
         if len(self._live) < self._wanted:
             wake = min(wake, self._retry_at)
         return wake
 
     def _answered(self, worker: _Worker, answer: bytes, settled: _Settled) -> None:
-        job, worker.job = worker.job, None
-        if job is None:  # a new worker, ready
+        if not worker.jobs:  # a new worker, ready
             worker.ready = True
-            self._idle.append(worker)
             return
-        settled.append((job.future, answer))
+        job = worker.jobs.popleft()
+        if job.future is not None:
+            settled.append((job.future, answer))
         worker.done += 1
-        if worker.done >= self._max_tasks:
+        if worker.jobs:  # it has started the next one
+            worker.jobs[0].deadline = time.monotonic() + worker.jobs[0].timeout
+        elif worker.done >= self._max_tasks:
             # Memory hygiene: a fresh worker forks from the clean fork server; this one exits on EOF.
             self._remove(worker)
-        else:
-            self._idle.append(worker)
 
     def _lost(self, worker: _Worker, settled: _Settled) -> None:
-        """Its pipe closed: it died. Its job fails once its death is reaped, with the exit code."""
+        """Its pipe closed: it died. Its job fails once its death is reaped, with the exit code; the
+        one waiting behind it goes to another worker."""
+        self._requeue_waiting(worker)
         if not worker.ready:
             # Its start failed (its initializer, say): starting the next at once could loop for ever.
             log.error("a new %s worker died as it started; retrying in %g s", self._name, RETRY_SECONDS)
@@ -397,18 +474,31 @@ class WorkerPool:
             self._fall_down(settled)
 
     def _expire(self, now: float, settled: _Settled) -> None:
-        for worker in [w for w in self._live if w.job is not None and w.job.deadline <= now]:
-            assert worker.job is not None
-            settled.append((worker.job.future, FutureTimeout()))
-            worker.job = None
+        for worker in [w for w in self._live if w.jobs and w.jobs[0].deadline <= now]:
+            self._requeue_waiting(worker)
+            job = worker.jobs.popleft()
+            if job.future is not None:
+                settled.append((job.future, FutureTimeout()))
             worker.process.kill()
             self._remove(worker)
+        for worker in self._live:
+            if len(worker.jobs) > 1 and worker.jobs[0].started + WAITING_BEHIND_SECONDS <= now:
+                self._requeue_waiting(worker)
+
+    def _requeue_waiting(self, worker: _Worker) -> None:
+        """The jobs waiting in `worker`'s pipe go back to the front of the queue; the copies it still
+        holds are answered to nobody."""
+        waiting = [job for job in list(worker.jobs)[1:] if job.future is not None]
+        for job in reversed(waiting):
+            self._queue.appendleft(job)
+        running = worker.jobs.popleft() if worker.jobs else None
+        worker.jobs = deque(_Job(job.message, None, job.timeout) for job in worker.jobs)
+        if running is not None:
+            worker.jobs.appendleft(running)
 
     def _remove(self, worker: _Worker) -> None:
         """Out of the pool: its pipe closed, its sentinel watched until its exit is known."""
         self._live.remove(worker)
-        if worker in self._idle:
-            self._idle.remove(worker)
         self._selector.unregister(worker.conn)
         worker.conn.close()
         self._gone.append(worker)
@@ -418,8 +508,8 @@ class WorkerPool:
         self._gone.remove(worker)
         self._selector.unregister(worker.process.sentinel)
         worker.process.join(0)  # the sentinel is ready: this reads the exit code, never waits
-        if worker.job is not None:
-            settled.append((worker.job.future, WorkerDied(worker.process.exitcode)))
+        if worker.jobs and worker.jobs[0].future is not None:
+            settled.append((worker.jobs[0].future, WorkerDied(worker.process.exitcode)))
         worker.process.close()
 
     def _fall_down(self, settled: _Settled) -> None:
@@ -427,7 +517,9 @@ class WorkerPool:
         waiting for as long as the fork server takes to come back."""
         self._down = True
         settled += [
-            (job.future, PoolUnavailable(f"the {self._name} pool lost its workers")) for job in self._queue
+            (job.future, PoolUnavailable(f"the {self._name} pool lost its workers"))
+            for job in self._queue
+            if job.future is not None  # always: only a copy left in a pipe has none
         ]
         self._queue.clear()
 
@@ -469,7 +561,7 @@ class WorkerPool:
             raise
         finally:
             theirs.close()  # the worker's end: only the worker may hold it, or its death shows no EOF
-        return _Worker(process, ours)
+        return _Worker(process, ours, _Messages(ours.fileno()))
 
     def _add(self, worker: _Worker) -> None:
         """In the pool, though idle only once it says it is ready (jobs meanwhile wait in the queue)."""

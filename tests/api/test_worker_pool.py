@@ -19,8 +19,8 @@ DEADLINE = 60  # only so that a broken pool fails the test instead of hanging it
 
 
 @contextmanager
-def started(workers: int = 1, max_tasks: int = 100) -> Iterator[WorkerPool]:
-    pool = WorkerPool("test", forkserver.context(), workers=workers, max_tasks=max_tasks)
+def started(workers: int = 1, max_tasks: int = 100, lanes: int = 0) -> Iterator[WorkerPool]:
+    pool = WorkerPool("test", forkserver.context(), workers=workers, max_tasks=max_tasks, lanes=lanes)
     pool.start()
     try:
         yield pool
@@ -75,8 +75,9 @@ def test_a_worker_killed_mid_job_fails_that_job_and_is_replaced():
         assert pid(pool) != victim
 
 
-def test_more_jobs_than_workers_are_queued_and_all_answered():
-    with started(workers=2) as pool:
+@pytest.mark.parametrize("lanes", [0, 1, 2])
+def test_more_jobs_than_workers_are_queued_and_all_answered(lanes: int):
+    with started(workers=2, lanes=lanes) as pool:
         futures = [pool.schedule(pow, (n, 2), DEADLINE) for n in range(20)]
         assert [future.result(DEADLINE) for future in futures] == [n * n for n in range(20)]
 
@@ -138,3 +139,42 @@ def test_a_job_whose_caller_went_away_leaves_the_pool_answering():
         queued = [pool.schedule(pow, (n, 3), DEADLINE) for n in range(3)]
         assert [future.result(DEADLINE) for future in queued] == [0, 1, 8]
         assert pid(pool) == worker  # answered, not killed: the job ran out its 0.3 s
+
+
+def test_a_lane_answers_each_of_the_jobs_sent_into_its_pipe_in_turn():
+    # One lane, no other worker: every job after the first waits in its pipe or the queue, and a read
+    # may hold two answers.
+    with started(workers=1, lanes=1) as pool:
+        futures = [pool.schedule(pow, (n, 3), DEADLINE) for n in range(200)]
+        assert [future.result(DEADLINE) for future in futures] == [n**3 for n in range(200)]
+
+
+def test_a_job_waiting_behind_a_slow_one_is_answered_by_a_worker_at_rest():
+    with started(workers=2, lanes=1) as pool:
+        lane = pid(pool)
+        slow = pool.schedule(time.sleep, (DEADLINE / 4,), DEADLINE)
+        behind = pool.schedule(os.getpid, (), DEADLINE)  # into the lane's pipe, behind the slow job
+        answered_by = behind.result(DEADLINE / 8)
+        assert not slow.done()
+        assert answered_by != lane
+
+
+def test_a_job_waiting_behind_an_overrun_is_answered_after_it_and_not_lost():
+    with started(workers=1, lanes=1) as pool:
+        overrunner = pid(pool)
+        overrun = pool.schedule(time.sleep, (DEADLINE,), 0.5)
+        behind = pool.schedule(os.getpid, (), DEADLINE)
+        with pytest.raises(FutureTimeout):
+            overrun.result(DEADLINE)
+        assert behind.result(DEADLINE) != overrunner  # by the worker that replaced it
+
+
+def test_a_lanes_death_sends_the_job_waiting_behind_to_another_worker():
+    with started(workers=2, lanes=1) as pool:
+        victim = pid(pool)
+        running = pool.schedule(time.sleep, (DEADLINE,), DEADLINE)
+        behind = pool.schedule(os.getpid, (), DEADLINE)
+        os.kill(victim, signal.SIGKILL)
+        with pytest.raises(WorkerDied):
+            running.result(DEADLINE)
+        assert behind.result(DEADLINE) != victim
