@@ -1,7 +1,8 @@
 """Killable worker processes, each behind its own pipe, and one supervisor thread for them all.
 
 A caller's thread pickles a job and writes it straight to an idle worker's pipe, or to a busy lane's
-(`lanes`: one job waiting in its pipe behind the running one), or queues it, and gets a `concurrent.futures.Future` (`schedule`), or awaits the answer on its own event loop
+(`lanes`: one job waiting in its pipe behind the running one), or queues it, and gets a
+`concurrent.futures.Future` (`schedule`), or awaits the answer on its own event loop
 (`run`, which spares the server a thread-safe future and its chaining per check). The supervisor thread
 waits on every worker's pipe, with the nearest deadline as its timeout: it resolves futures, hands
 queued jobs to freed workers, kills a worker whose job overran (`TimeoutError`), notices one that died
