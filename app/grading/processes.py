@@ -437,9 +437,11 @@ class WorkerPool:
         wake = now + IDLE_WAKE_SECONDS
         for worker in self._live:
             if worker.jobs:
-                # Also soon enough to find a job sent meanwhile waiting behind this one too long: so
-                # that sending one never costs a wake-up.
-                wake = min(wake, worker.jobs[0].deadline, now + WAITING_BEHIND_SECONDS)
+                wake = min(wake, worker.jobs[0].deadline)
+            if worker.jobs and self._lanes:
+                # Soon enough to find a lane stuck, or a job sent meanwhile waiting behind one too long,
+                # without a wake-up written for every job sent.
+                wake = min(wake, now + WAITING_BEHIND_SECONDS)
             if len(worker.jobs) > 1:
                 wake = min(wake, worker.jobs[0].started + WAITING_BEHIND_SECONDS)
         if len(self._live) < self._wanted:
