@@ -65,6 +65,7 @@ class NumericAnswer:
 
 
 _RECIPROCAL = re.compile(r"1\s*/")  # `4.9e12 1/s` is a number and a unit, not two numbers
+_UNCERTAINTY = re.compile(r"±|\+\s*/\s*[-−]|\+[-−](?=\s*[\d.])")
 _STARTS_LITERAL = re.compile(r"\s*[-−+]?\s*\.?[0-9]")
 _NOT_ARITHMETIC = re.compile(r"[\s\d.,*·⋅]*")  # after a literal: more digits or a times sign only
 
@@ -165,6 +166,13 @@ def read_numeric_answer(
     if len(text) > MAX_ANSWER_LENGTH:
         raise TooLarge(f"An answer may be at most {MAX_ANSWER_LENGTH} characters", MAX_ANSWER_LENGTH)
     text = fullwidth_as_ascii(text)
+    uncertainty = _UNCERTAINTY.search(text)
+    if uncertainty is not None:  # a lab result as written in a report: `(4.58 ± 0.05) m/s^2`
+        raise ParseError(
+            f"Give one value, without its uncertainty ({uncertainty.group().strip()} …): only the value "
+            "is graded here",
+            uncertainty.start(),
+        )
     # Imported here: arithmetic pulls in the math reader and sympy, which plain literals never need.
     from physics.numeric.arithmetic import number_part_end, read_arithmetic_answer
 

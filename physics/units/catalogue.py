@@ -140,6 +140,10 @@ CATALOGUE: tuple[CatalogueEntry, ...] = (
     CatalogueEntry("rem", True, si=False),
     CatalogueEntry("ampere_hour", True, si=False),  # Ah, mAh: a battery's charge
     CatalogueEntry("speed_of_light", False, symbol="c", si=False, in_products=False),  # 0.8 c, MeV/c^2
+    # An acceleration in gees (`3.2 g0`, and `3.2 g` where an acceleration is expected, MEANINGS).
+    CatalogueEntry(
+        "standard_gravity", False, symbol="g0", latex="g_{0}", si=False, skip_spellings=("gravity",)
+    ),
 )
 
 # Common spellings that are not pint's, each read as the unit expression it stands for. They win over
@@ -166,8 +170,18 @@ MEANINGS: dict[str, tuple[str, ...]] = {
     "oz": ("oz", "floz", "ozf"),  # mass, volume (a fluid ounce) or force
     "Gal": ("Gal", "gal"),  # the galileo (cm/s²), or the gallon in capitals
     "mil": ("mil", "thou"),  # the angular mil, or a thousandth of an inch
-    "c": ("c", "C"),  # the speed of light, or the coulomb in lower case
+    "c": ("c", "C", "°C"),  # the speed of light, or the coulomb or degrees Celsius in lower case
+    "g": ("g", "g0"),  # the gram, or an acceleration in gees (`0.47 g`)
+    "C": ("C", "°C"),  # the coulomb, or degrees Celsius as typed without the degree sign (`27 C`)
+    "F": ("F", "°F"),  # the farad, or degrees Fahrenheit (`80 F`)
 }
+
+# Spellings that end in digits, which the lexer would otherwise read as a power (`g0` as g^0).
+SPELLINGS_WITH_DIGITS = frozenset({"g0", "g_0"})
+
+# Spellings of MEANINGS whose first meaning is what nearly everyone means: where no meaning has the
+# expected dimension, the answer is graded in that one (a wrong dimension) instead of refused.
+FIRST_WHERE_NONE_FITS = frozenset({"g", "C", "F"})
 
 # The decimal SI prefixes, by pint name. Binary prefixes, and the 2022 ones (ronto r, quecto q,
 # ronna R, quetta Q), are left out: no homework uses them, and they would make glued names such as

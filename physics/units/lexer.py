@@ -14,7 +14,7 @@ from dataclasses import dataclass, replace
 from enum import Enum
 
 from physics.errors import AnswerError, ParseError
-from physics.units.catalogue import ALIASES
+from physics.units.catalogue import ALIASES, SPELLINGS_WITH_DIGITS
 from physics.units.latex import plain_units
 
 
@@ -155,7 +155,17 @@ def _tokenize(text: str) -> list[Token]:
                 _raise_by(tokens, leading)
                 leading = None
                 continue
-            # `m/s2`, `cm3`: a power typed without its ^, as students write it (and as `s-2` is read)
+            # `m/s2`, `cm3`: a power typed without its ^, as students write it (and as `s-2` is read),
+            # unless the digits belong to the unit's spelling (`g0`, `g_0`: standard gravity)
+            digits_end = i
+            while digits_end < n and text[digits_end] in "0123456789":
+                digits_end += 1
+            if digits_end > i and text[start:digits_end] in SPELLINGS_WITH_DIGITS:
+                tokens.append(Token(Kind.NAME, text[start:digits_end], start))
+                i = digits_end
+                _raise_by(tokens, leading)
+                leading = None
+                continue
             glued_power = i < n and text[i] in "0123456789"
             power_end = _glued_negative_power(text, i)
             if power_end is not None and text[start:power_end].replace("−", "-") in ALIASES:

@@ -25,7 +25,7 @@ from functools import lru_cache
 
 from physics.dimensions import Dimension, describe
 from physics.errors import AmbiguousInput, ParseError, TooLarge, UnknownUnit
-from physics.units.catalogue import ALIASES, MEANINGS
+from physics.units.catalogue import ALIASES, FIRST_WHERE_NONE_FITS, MEANINGS
 from physics.units.lexer import Kind, Token, tokenize
 from physics.units.parsed import ParsedUnits
 from physics.units.registry import UnitAtom, case_variant, lookup, lookup_piece, pint_unit, suggestion
@@ -350,7 +350,7 @@ def _read(text: str, expected: Dimension | None) -> UnitReading:
             return UnitReading(
                 fits[0], f"Read {typed} as {fits[0].text}: the only reading that is {describe(expected)}"
             )
-    if safe:
+    if all(readings.safe or token.text in FIRST_WHERE_NONE_FITS for token, readings in open_names):
         return UnitReading(literal)  # graded: the dimension is wrong
     token, readings = next((t, r) for t, r in open_names if not r.safe)
     shown = [option.text for option in readings.options]

@@ -175,6 +175,11 @@ WORDING = [
     ("4,58 m/s^2", ACCEL, "decimal point"),
     ("a = 4.58 m/s^2", ACCEL, "Give the value alone, without a name and '='"),
     ("≈ 4.58 m/s^2", ACCEL, "Give the value without '≈'"),
+    ("4.58 ± 0.05 m/s^2", ACCEL, "Give one value, without its uncertainty (± …)"),
+    ("(4.58 ± 0.05) m/s^2", ACCEL, "without its uncertainty (± …)"),
+    ("4.58 +/- 0.05 m/s^2", ACCEL, "without its uncertainty (+/- …)"),
+    ("4.58+-0.05 m/s^2", ACCEL, "without its uncertainty (+- …)"),
+    ("4.58 m/s^2 ± 1%", ACCEL, "without its uncertainty (± …)"),
 ]
 
 
@@ -193,6 +198,7 @@ POSITIONS = [
     ("4,58 m/s^2", 1),
     ("12 500 m/s^2", 3),
     ("a = 4.58 m/s^2", 2),  # the '='
+    ("(4.58 ± 0.05) m/s^2", 6),  # the uncertainty's sign
 ]
 
 

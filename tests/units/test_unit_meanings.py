@@ -1,7 +1,8 @@
-"""A unit spelling with several meanings (`lb`, `oz`, `Gal`, `mil`, `c`) is settled by the dimension the
-answer must have, as the glued names `Kg` and `ms^-1` are; where no dimension settles it, it is refused
-with every meaning and no attempt is used. An author's units, where no dimension is expected, take
-pint's meaning."""
+"""A unit spelling with several meanings (`lb`, `oz`, `Gal`, `mil`, `c`, `g`, `C`, `F`) is settled by the
+dimension the answer must have, as the glued names `Kg` and `ms^-1` are; where no dimension settles it,
+it is refused with every meaning and no attempt is used, except the gram, the coulomb and the farad,
+which nearly everyone means by `g`, `C` and `F`: an answer no meaning of which fits is graded in them.
+An author's units, where no dimension is expected, take pint's meaning."""
 
 from __future__ import annotations
 
@@ -50,6 +51,21 @@ SETTLED = [
     ("8 oz", "N", "2.2241", "8 ozf", "Read oz as ozf: the only reading that is a force"),
     ("0.8 c", "m/s", "2.3983e8", "0.8 c", None),
     ("5 c", "C", "5", "5 C", "Read c as C: the only reading that is an electric charge"),
+    # An acceleration in gees, as students say it; the gram wherever a mass is meant.
+    ("0.467 g", "m/s^2", "4.5807", "0.467 g0", "Read g as g0: the only reading that is an acceleration"),
+    ("0.467 g0", "m/s^2", "4.5807", "0.467 g0", None),
+    ("0.467 g_0", "m/s^2", "4.5807", "0.467 g0", None),
+    ("0.467 g_n", "m/s^2", "4.5807", "0.467 g0", None),
+    ("500 g", "kg", "0.5", "500 g", None),
+    ("1 g/cm^3", "kg/m^3", "1000", "1 g/cm^3", None),
+    # Degrees typed without the degree sign, where a temperature is expected.
+    ("27 C", "K", "300.15", "27 °C", "Read C as °C: the only reading that is a temperature"),
+    ("27 c", "K", "300.15", "27 °C", "Read c as °C: the only reading that is a temperature"),
+    ("80.6 F", "°C", "27", "80.6 °F", "Read F as °F: the only reading that is a temperature"),
+    ("5 C", "C", "5", "5 C", None),
+    ("2 F", "F", "2", "2 F", None),
+    ("4.2 J/C", "J/K", "4.2", "4.2 J/°C", "Read J/C as J/°C: the only reading that is a heat capacity"),
+    ("4.2 J/C", "V", "4.2", "4.2 J/C", None),
 ]
 
 
@@ -93,6 +109,27 @@ def test_a_spelling_no_meaning_of_which_fits_is_refused_with_every_meaning(
         assert meaning in verdict.feedback
 
 
+GRADED_AS_FIRST = [
+    # (answer, spec units, the dimension named): no meaning fits, and the first is what nearly everyone
+    # means, so the answer is graded (a wrong dimension, an attempt used) rather than refused
+    ("5 g", "J", "a mass"),
+    ("5 C", "J", "an electric charge"),
+    ("5 F", "C", "a capacitance"),
+]
+
+
+@pytest.mark.parametrize(
+    ("answer", "units", "named"), GRADED_AS_FIRST, ids=[c[0] + " for " + c[1] for c in GRADED_AS_FIRST]
+)
+def test_a_gram_coulomb_or_farad_that_fits_nothing_is_graded_as_typed(
+    answer: str, units: str, named: str
+) -> None:
+    verdict = check_numeric(answer, NumericSpec(D(1), units))
+    assert verdict.outcome is Outcome.INCORRECT
+    assert verdict.reason is Reason.WRONG_DIMENSION
+    assert f"units of {named}" in verdict.feedback
+
+
 def test_the_refusal_carries_the_readings() -> None:
     with pytest.raises(AmbiguousInput) as refused:
         read_units("lb", SPEED)
@@ -101,7 +138,17 @@ def test_the_refusal_carries_the_readings() -> None:
 
 @pytest.mark.parametrize(
     ("units", "dimension"),
-    [("lb", MASS), ("lbs", MASS), ("oz", MASS), ("Gal", ACCELERATION), ("mil", ONE), ("c", SPEED)],
+    [
+        ("lb", MASS),
+        ("lbs", MASS),
+        ("oz", MASS),
+        ("Gal", ACCELERATION),
+        ("mil", ONE),
+        ("c", SPEED),
+        ("g", MASS),
+        ("C", CHARGE),
+        ("g0", ACCELERATION),
+    ],
 )
 def test_without_an_expected_dimension_a_spelling_means_what_pint_defines(
     units: str, dimension: Dimension
