@@ -39,8 +39,10 @@ MAKERS = {
 }
 
 
-def group_processes(group: int) -> dict[int, tuple[int, float, float]]:
-    """pid -> (parent pid, user and system CPU seconds so far) of every live process of the group."""
+def group_processes(group: int) -> dict[int, tuple[int, float, float, float]]:
+    """pid -> (parent pid, user and system CPU seconds so far, CPU seconds of its children that have
+    exited and been waited for) of every live process of the group: the fork server's children are
+    workers, so the workers replaced during a phase (every `worker_max_tasks` jobs) count there."""
     found = {}
     for entry in Path("/proc").iterdir():
         if not entry.name.isdigit():
@@ -48,7 +50,8 @@ def group_processes(group: int) -> dict[int, tuple[int, float, float]]:
         with contextlib.suppress(OSError):
             fields = (entry / "stat").read_text().rsplit(")", 1)[1].split()
             if int(fields[2]) == group:
-                found[int(entry.name)] = (int(fields[1]), int(fields[11]) / TICKS, int(fields[12]) / TICKS)
+                user, system, children_user, children_system = (int(f) / TICKS for f in fields[11:15])
+                found[int(entry.name)] = (int(fields[1]), user, system, children_user + children_system)
     return found
 
 
@@ -115,11 +118,14 @@ def main() -> None:
             server.stop()
     # The kernel's share (system time: sockets, pipes, waking processes) apart from the program's own.
     spent: dict[str, tuple[float, float]] = {}
-    for p, (parent, user, system) in after.items():
+    for p, (parent, user, system, children) in after.items():
         name = role(parent, p, pid)
-        _, user_before, system_before = before.get(p, (parent, 0.0, 0.0))
+        _, user_before, system_before, children_before = before.get(p, (parent, 0.0, 0.0, 0.0))
         so_far = spent.get(name, (0.0, 0.0))
         spent[name] = (so_far[0] + user - user_before, so_far[1] + system - system_before)
+        if name == "fork server":  # workers that exited during the phase (user and system together)
+            gone = spent.get("workers", (0.0, 0.0))
+            spent["workers"] = (gone[0] + children - children_before, gone[1])
     for name, (user, system) in sorted(spent.items()):
         per = 1e3 / result.requests
         print(
