@@ -94,7 +94,8 @@ def resolve_words(tokens: list[Token], table: NameTable) -> list[Token]:
         constants = "the constants pi and e" if table.euler_available else "the constant pi"
         raise UnknownSymbol(
             f'Unknown symbol "{word}". Symbols you can use: {listed} (and {constants}).'
-            + _greek_stand_in_hint(word, allowed),
+            + _greek_stand_in_hint(word, allowed)
+            + _letter_o_hint(word, allowed),
             tok.pos,
             word,
             allowed,
@@ -152,6 +153,14 @@ def _split_tokens(pieces: list[Part | tuple[str, int, int]], tok: Token) -> list
 
 # Latin letters students type for a Greek one that looks alike: `wt` for ωt, `u` for μ.
 _STAND_INS = {"w": ("omega", "ω"), "u": ("mu", "μ")}
+
+
+def _letter_o_hint(word: str, declared: Sequence[str]) -> str:
+    """A sentence for `vo` typed with the letter o where `v_0` is declared (an initial value), or ""."""
+    base = word[:-1].rstrip("_")
+    if len(word) > 1 and word[-1] in "oO" and f"{base}_0" in declared:
+        return f" If {word} is {base} with a zero, type {base}0 or {base}_0 (a zero, not the letter o)."
+    return ""
 
 
 def _greek_stand_in_hint(word: str, declared: Sequence[str]) -> str:

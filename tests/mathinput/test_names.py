@@ -162,6 +162,28 @@ def test_a_latin_stand_in_for_a_declared_greek_letter_is_pointed_out(typed, decl
         assert hint in caught.value.message
 
 
+LETTER_O_FOR_ZERO = [
+    # (typed, declared, a sentence the refusal must hold, or None: no hint)
+    ("vo t", ("v_0", "t"), "If vo is v with a zero, type v0 or v_0 (a zero, not the letter o)."),
+    ("v_o t", ("v_0", "t"), "If v_o is v with a zero, type v0 or v_0"),
+    ("xO + v_0 t", ("x_0", "v_0", "t"), "If xO is x with a zero, type x0 or x_0"),
+    ("vo t", ("v", "t"), None),  # no v_0 to mean
+    ("go t", ("v_0", "g", "t"), None),
+]
+
+
+@pytest.mark.parametrize(
+    ("typed", "declared", "hint"), LETTER_O_FOR_ZERO, ids=[f"{g[0]}-{g[1]}" for g in LETTER_O_FOR_ZERO]
+)
+def test_a_letter_o_typed_for_a_declared_zero_subscript_is_pointed_out(typed, declared, hint):
+    with pytest.raises(UnknownSymbol) as caught:
+        read(typed, *declared)
+    if hint is None:
+        assert "with a zero" not in caught.value.message
+    else:
+        assert hint in caught.value.message
+
+
 UNKNOWN_FUNCTIONS = [
     ("f(x)", "f", 0),
     ("2 + g(x)", "g", 4),
