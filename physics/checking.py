@@ -38,10 +38,12 @@ from physics.symbolic import (
     prepare_reference,
 )
 from physics.symbolic.dimensional import DimensionMismatch, UnknownDimension, expression_dimension
+from physics.symbolic.judge import FACTOR_FEEDBACK
+from physics.symbolic.pi_decimals import pi_decimal_hint
 from physics.symbolic.quick import judged
 from physics.symbolic.reading import read_symbolic_answer
 from physics.units import unit_dimension
-from physics.verdict import InputProblem, Preview, Verdict
+from physics.verdict import InputProblem, Outcome, Preview, Reason, Verdict
 
 
 @pickled_by_fields
@@ -92,6 +94,17 @@ class SymbolicQuestion:
     reference: PreparedReference
 
     def grade(self, answer: str, limits: InputLimits) -> Verdict:
+        verdict = self._graded(answer, limits)
+        if verdict.reason is not Reason.CONSTANT_FACTOR or verdict.read_as is None:
+            return verdict
+        hint = pi_decimal_hint(
+            verdict.read_as.text, lambda text: self._graded(text, limits).outcome is Outcome.CORRECT
+        )
+        if hint is None:
+            return verdict
+        return dataclasses.replace(verdict, feedback=verdict.feedback.replace(FACTOR_FEEDBACK, hint))
+
+    def _graded(self, answer: str, limits: InputLimits) -> Verdict:
         reference = self.reference
         dimensions = {symbol.name: dim for symbol, dim in reference.dims.items()}
         try:
