@@ -23,6 +23,7 @@ def _serve(args: argparse.Namespace, settings: Settings) -> int:
     import uvicorn
 
     from app.heap import freeze_long_lived
+    from app.http_protocol import HttpProtocol
     from app.main import create_app
     from app.startup import Stopped, open_storage_when_reachable
 
@@ -46,6 +47,7 @@ def _serve(args: argparse.Namespace, settings: Settings) -> int:
     freeze_long_lived()  # the modules and the app: what this process holds until it exits
     uvicorn.run(
         app,
+        http=HttpProtocol,
         host=args.host,
         port=args.port,
         log_config=None,

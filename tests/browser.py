@@ -29,6 +29,7 @@ from fastapi import FastAPI
 
 from app.db.records import Role
 from app.grading.pool import GradingPool
+from app.http_protocol import HttpProtocol
 from app.main import create_app
 from app.settings import Settings
 from app.storage import Stores
@@ -78,9 +79,11 @@ class LiveServer:
 
 
 def serve(app: FastAPI) -> Iterator[str]:
-    """`app` in a uvicorn thread (its lifespan runs); yields its base URL."""
+    """`app` in a uvicorn thread (its lifespan runs), with `physcheck serve`'s HTTP protocol; yields its
+    base URL."""
     port = free_port()
-    server = uvicorn.Server(uvicorn.Config(app, host="127.0.0.1", port=port, log_level="warning"))
+    config = uvicorn.Config(app, host="127.0.0.1", port=port, log_level="warning", http=HttpProtocol)
+    server = uvicorn.Server(config)
     thread = threading.Thread(target=server.run, name="uvicorn", daemon=True)
     thread.start()
     deadline = time.monotonic() + 60
