@@ -140,46 +140,32 @@ def test_unknown_symbol_is_refused_listing_the_allowed_names(typed, declared, sy
         assert name in caught.value.message
 
 
-GREEK_STAND_INS = [
-    # (typed, declared, a sentence the refusal must hold, or None: no hint)
-    ("wt", ("omega", "t"), "If w stands for ω, type omega or ω."),
-    ("A cos(w0 t)", ("A", "omega_0", "t"), "If w stands for ω, type omega or ω."),
-    ("u g", ("mu", "g"), "If u stands for μ, type mu or μ."),
-    ("wt", ("w", "omega", "x"), None),  # w is declared: the unknown word is something else
-    ("wt", ("theta", "t"), None),  # no omega to mean
+# A slip for a declared name, pointed out after the list of names: a Latin stand-in for a Greek letter,
+# the letter o typed for a zero subscript. Each hint's start, which must be absent where it has no case.
+STAND_IN, LETTER_O = "stands for", "with a zero"
+SLIP_HINTS = [
+    # (typed, declared, which hint, the sentence the refusal must hold, or None: no such hint)
+    ("wt", ("omega", "t"), STAND_IN, "If w stands for ω, type omega or ω."),
+    ("A cos(w0 t)", ("A", "omega_0", "t"), STAND_IN, "If w stands for ω, type omega or ω."),
+    ("u g", ("mu", "g"), STAND_IN, "If u stands for μ, type mu or μ."),
+    ("wt", ("w", "omega", "x"), STAND_IN, None),  # w is declared: the unknown word is something else
+    ("wt", ("theta", "t"), STAND_IN, None),  # no omega to mean
+    ("vo t", ("v_0", "t"), LETTER_O, "If vo is v with a zero, type v0 or v_0 (a zero, not the letter o)."),
+    ("v_o t", ("v_0", "t"), LETTER_O, "If v_o is v with a zero, type v0 or v_0"),
+    ("xO + v_0 t", ("x_0", "v_0", "t"), LETTER_O, "If xO is x with a zero, type x0 or x_0"),
+    ("vo t", ("v", "t"), LETTER_O, None),  # no v_0 to mean
+    ("go t", ("v_0", "g", "t"), LETTER_O, None),
 ]
 
 
 @pytest.mark.parametrize(
-    ("typed", "declared", "hint"), GREEK_STAND_INS, ids=[f"{g[0]}-{g[1]}" for g in GREEK_STAND_INS]
+    ("typed", "declared", "which", "hint"), SLIP_HINTS, ids=[f"{g[0]}-{g[1]}" for g in SLIP_HINTS]
 )
-def test_a_latin_stand_in_for_a_declared_greek_letter_is_pointed_out(typed, declared, hint):
+def test_a_likely_slip_for_a_declared_name_is_pointed_out(typed, declared, which, hint):
     with pytest.raises(UnknownSymbol) as caught:
         read(typed, *declared)
     if hint is None:
-        assert "stands for" not in caught.value.message
-    else:
-        assert hint in caught.value.message
-
-
-LETTER_O_FOR_ZERO = [
-    # (typed, declared, a sentence the refusal must hold, or None: no hint)
-    ("vo t", ("v_0", "t"), "If vo is v with a zero, type v0 or v_0 (a zero, not the letter o)."),
-    ("v_o t", ("v_0", "t"), "If v_o is v with a zero, type v0 or v_0"),
-    ("xO + v_0 t", ("x_0", "v_0", "t"), "If xO is x with a zero, type x0 or x_0"),
-    ("vo t", ("v", "t"), None),  # no v_0 to mean
-    ("go t", ("v_0", "g", "t"), None),
-]
-
-
-@pytest.mark.parametrize(
-    ("typed", "declared", "hint"), LETTER_O_FOR_ZERO, ids=[f"{g[0]}-{g[1]}" for g in LETTER_O_FOR_ZERO]
-)
-def test_a_letter_o_typed_for_a_declared_zero_subscript_is_pointed_out(typed, declared, hint):
-    with pytest.raises(UnknownSymbol) as caught:
-        read(typed, *declared)
-    if hint is None:
-        assert "with a zero" not in caught.value.message
+        assert which not in caught.value.message
     else:
         assert hint in caught.value.message
 
