@@ -39,9 +39,9 @@ from physics.symbolic import (
 )
 from physics.symbolic.dimensional import DimensionMismatch, UnknownDimension, expression_dimension
 from physics.symbolic.judge import FACTOR_FEEDBACK
-from physics.symbolic.pi_decimals import pi_decimal_hint
 from physics.symbolic.quick import judged
 from physics.symbolic.reading import read_symbolic_answer
+from physics.symbolic.typed_values import typed_value_hint, with_units_hint
 from physics.units import unit_dimension
 from physics.verdict import InputProblem, Outcome, Preview, Reason, Verdict
 
@@ -95,14 +95,19 @@ class SymbolicQuestion:
 
     def grade(self, answer: str, limits: InputLimits) -> Verdict:
         verdict = self._graded(answer, limits)
-        if verdict.reason is not Reason.CONSTANT_FACTOR or verdict.read_as is None:
+        if verdict.outcome is not Outcome.INCORRECT or verdict.read_as is None:
             return verdict
-        hint = pi_decimal_hint(
-            verdict.read_as.text, lambda text: self._graded(text, limits).outcome is Outcome.CORRECT
+        hint = typed_value_hint(
+            verdict.read_as.text,
+            verdict.reason,
+            self.names,
+            lambda text: self._graded(text, limits).outcome is Outcome.CORRECT,
         )
         if hint is None:
             return verdict
-        return dataclasses.replace(verdict, feedback=verdict.feedback.replace(FACTOR_FEEDBACK, hint))
+        if verdict.reason is Reason.CONSTANT_FACTOR:  # the hint says which factor: in place of the guess
+            return dataclasses.replace(verdict, feedback=verdict.feedback.replace(FACTOR_FEEDBACK, hint))
+        return dataclasses.replace(verdict, feedback=f"{verdict.feedback} {hint}")
 
     def _graded(self, answer: str, limits: InputLimits) -> Verdict:
         reference = self.reference
@@ -112,7 +117,7 @@ class SymbolicQuestion:
         except AmbiguousGrouping:
             reading = None  # settled by dimension, where it can be, as the answer is read in full below
         except AnswerError as error:
-            return Verdict.invalid(error)
+            return Verdict.invalid(with_units_hint(error, answer, self.reference.dimension))
         # Judged on the parse tree where it is enough, most answers skip building sympy's (quick.py); a
         # wrong one with a bare powered argument is built, to tell whether the other reading is right.
         if reading is not None:
@@ -126,7 +131,7 @@ class SymbolicQuestion:
                 parsed = build_reading(reading, limits)
             judgement = judge_symbolic(parsed.expr, reference)
         except AnswerError as error:
-            return Verdict.invalid(error)
+            return Verdict.invalid(with_units_hint(error, answer, self.reference.dimension))
         lead = parsed.read_as.note  # how the answer was read (chosen by dimension, `sin θ^2`): said first
         if not judgement.correct and self._other_reading_is_right(answer, limits, parsed):
             # In place of the note on `sin θ^2`: it was read as sin(θ²), and (sin θ)² would be right.

@@ -1,0 +1,85 @@
+"""Values typed where a symbol is meant: a decimal for π (`2*3.14*sqrt(L/g)`, off by a constant factor)
+or for g (`9.8 m sin θ`, a wrong dimension), and units after a symbolic answer (`m g sin θ N`).
+
+The answer is graded as typed: a decimal is exactly the number it shows, and units are no symbols. But
+where the symbol in the value's place would make it right, the feedback says so, instead of leaving
+the student to guess what "off by a constant factor" or "the dimension of a mass" points at.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from collections.abc import Callable, Mapping
+
+from physics.dimensions import Dimension
+from physics.errors import AnswerError, UnknownSymbol
+from physics.units import read_units
+from physics.verdict import Reason
+
+_DECIMAL = re.compile(r"(?<![\w.])(\d+\.\d+)(?![\w.])")
+_PI_MULTIPLES = ((1, 4), (1, 2), (1, 1), (2, 1), (3, 1), (4, 1))  # π/4, π/2, π, 2π, 3π, 4π
+_MIN_DIGITS = 3  # 3.14, 6.28, 1.57: a decimal of fewer significant digits is not meant as π
+_CLOSE = 2e-3  # 3.14 is 5e-4 from π
+_GRAVITY = (9.78, 9.832)  # g at the equator to g at the poles, in m/s^2: 9.8, 9.81, 9.807
+
+
+def _as_pi(decimal: str) -> tuple[str, str] | None:
+    """The multiple of π that `decimal` rounds, as text the reader takes (`(2*pi/1)`) and as shown
+    (`2π`), or None."""
+    if len(decimal.replace(".", "").lstrip("0")) < _MIN_DIGITS:
+        return None
+    value = float(decimal)
+    for top, bottom in _PI_MULTIPLES:
+        if abs(value / (math.pi * top / bottom) - 1) < _CLOSE:
+            shown = ("" if top == 1 else str(top)) + "π" + ("" if bottom == 1 else f"/{bottom}")
+            return f"({top}*pi/{bottom})", shown
+    return None
+
+
+def _as_g(decimal: str) -> tuple[str, str] | None:
+    return ("g", "g") if _GRAVITY[0] <= float(decimal) <= _GRAVITY[1] else None
+
+
+def typed_value_hint(
+    read_as_text: str, reason: Reason, names: Mapping[str, object], right_with: Callable[[str], bool]
+) -> str | None:
+    """Feedback for a wrong answer whose decimals stand for π (off by a constant factor) or for a
+    declared g (a wrong dimension): when the answer with the symbols in their place is right
+    (`right_with` grades a text), what to write instead; else None."""
+    if reason is Reason.CONSTANT_FACTOR:
+        symbol_for = _as_pi
+        advice = "a decimal is taken as exactly the number it shows, so write pi (or π) where you mean π"
+    elif reason is Reason.WRONG_DIMENSION and "g" in names:
+        symbol_for = _as_g
+        advice = "write the symbol g, not its value"
+    else:
+        return None
+    found = [(match, symbol_for(match.group(1))) for match in _DECIMAL.finditer(read_as_text)]
+    swaps = [(match, symbol) for match, symbol in found if symbol is not None]
+    if not swaps:
+        return None
+    text = read_as_text
+    for match, (typed, _) in reversed(swaps):
+        text = text[: match.start()] + typed + text[match.end() :]
+    if not right_with(text):
+        return None
+    said = ", ".join(dict.fromkeys(f"{shown} for {match.group(1)}" for match, (_, shown) in swaps))
+    return f"Your answer would be right with {said}: {advice}."
+
+
+def with_units_hint(error: AnswerError, answer: str, expected: Dimension | None) -> AnswerError:
+    """An unknown symbol where the rest of the answer reads as units of the expected dimension
+    (`m g sin θ N`, `… kg m/s^2` for a force): the refusal says that a symbolic answer is written
+    without units. (`… T` for a force is not taken for the tesla: a T may be a tension.)"""
+    if not isinstance(error, UnknownSymbol) or error.position is None or expected is None:
+        return error
+    units = answer[error.position :].strip()
+    try:
+        dimension = read_units(units).units.dimension
+    except AnswerError:
+        return error
+    if dimension != expected:
+        return error
+    error.message += f" A symbolic answer is written without units: leave out {units}."
+    return error

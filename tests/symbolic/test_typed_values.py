@@ -1,0 +1,85 @@
+"""Values typed where a symbol is meant are graded as typed, and the feedback says which symbol would
+make the answer right: a decimal for π (off by a constant factor), 9.8 for a declared g (a wrong
+dimension). Units after a symbolic answer, of the dimension the answer must have, are refused with
+the advice to leave them out."""
+
+from __future__ import annotations
+
+import pytest
+
+from physics.checking import SymbolDecl, run_job
+from physics.symbolic.judge import FACTOR_FEEDBACK
+from physics.verdict import Outcome, Reason
+from problems.kinds.symbolic import SymbolicJob
+
+PENDULUM = (SymbolDecl("L", "m"), SymbolDecl("g", "m/s^2"))
+PERIOD = "2*pi*sqrt(L/g)"
+SLOPE = (SymbolDecl("m", "kg"), SymbolDecl("g", "m/s^2"), SymbolDecl("theta", "1", range=("0", "pi/2")))
+WEIGHT_ALONG = "m*g*sin(theta)"
+
+HINTED = [
+    # (answer, reference, symbols, reason, the hint's swaps, or None: no hint)
+    ("2*3.14*sqrt(L/g)", PERIOD, PENDULUM, Reason.CONSTANT_FACTOR, "π for 3.14"),
+    ("2·3.1416·√(L/g)", PERIOD, PENDULUM, Reason.CONSTANT_FACTOR, "π for 3.1416"),
+    ("6.28 sqrt(L/g)", PERIOD, PENDULUM, Reason.CONSTANT_FACTOR, "2π for 6.28"),
+    ("4*1.571*sqrt(L/g)", PERIOD, PENDULUM, Reason.CONSTANT_FACTOR, "π/2 for 1.571"),
+    ("3.14 sqrt(L/g)", PERIOD, PENDULUM, Reason.CONSTANT_FACTOR, None),  # the 2 is missing too
+    ("2*3.1*sqrt(L/g)", PERIOD, PENDULUM, Reason.CONSTANT_FACTOR, None),  # too few digits for π
+    ("6 sqrt(L/g)", PERIOD, PENDULUM, Reason.CONSTANT_FACTOR, None),
+    ("9.8 m sin θ", WEIGHT_ALONG, SLOPE, Reason.WRONG_DIMENSION, "g for 9.8"),
+    ("9.81*m*sin(theta)", WEIGHT_ALONG, SLOPE, Reason.WRONG_DIMENSION, "g for 9.81"),
+    ("2π sqrt(L/9.8)", PERIOD, PENDULUM, Reason.WRONG_DIMENSION, "g for 9.8"),
+    ("2*9.8 m sin θ", WEIGHT_ALONG, SLOPE, Reason.WRONG_DIMENSION, None),  # wrong with g too
+    ("9.8 sin θ", WEIGHT_ALONG, SLOPE, Reason.WRONG_DIMENSION, None),
+]
+
+
+@pytest.mark.parametrize(
+    ("answer", "reference", "symbols", "reason", "swaps"), HINTED, ids=[c[0] for c in HINTED]
+)
+def test_a_value_typed_for_a_symbol_is_named_when_the_symbol_would_make_it_right(
+    answer: str, reference: str, symbols: tuple[SymbolDecl, ...], reason: Reason, swaps: str | None
+) -> None:
+    verdict = run_job(SymbolicJob(answer, reference, symbols))
+    assert verdict.outcome is Outcome.INCORRECT  # graded as typed: a decimal is exact
+    assert verdict.reason is reason
+    hint = f"Your answer would be right with {swaps}: "
+    if swaps is None:
+        assert "would be right with" not in verdict.feedback
+        if reason is Reason.CONSTANT_FACTOR:
+            assert verdict.feedback == FACTOR_FEEDBACK
+    elif reason is Reason.CONSTANT_FACTOR:
+        assert verdict.feedback.startswith(hint)  # in place of the bare "off by a constant factor"
+        assert "write pi (or π)" in verdict.feedback
+    else:
+        assert verdict.feedback.startswith("Your expression has the dimension of")  # then the hint
+        assert hint in verdict.feedback and "write the symbol g, not its value" in verdict.feedback
+
+
+def test_the_symbols_themselves_are_correct() -> None:
+    assert run_job(SymbolicJob("2π√(L/g)", PERIOD, PENDULUM)).outcome is Outcome.CORRECT
+    assert run_job(SymbolicJob("m g sin θ", WEIGHT_ALONG, SLOPE)).outcome is Outcome.CORRECT
+
+
+UNITS = [
+    # (answer, the units the refusal says to leave out, or None: no such advice)
+    ("m g sin θ N", "N"),
+    ("m*g*sin(theta) newtons", "newtons"),
+    ("m g sin θ kg m/s^2", "kg m/s^2"),
+    ("m g sin θ T", None),  # a tesla is no force: a T may be a tension
+    ("m g sin θ J", None),  # an energy
+]
+
+
+@pytest.mark.parametrize(("answer", "units"), UNITS, ids=[c[0] for c in UNITS])
+def test_units_after_a_symbolic_answer_are_refused_with_the_advice_to_leave_them_out(
+    answer: str, units: str | None
+) -> None:
+    verdict = run_job(SymbolicJob(answer, WEIGHT_ALONG, SLOPE))
+    assert verdict.outcome is Outcome.INVALID  # no attempt used
+    assert verdict.reason is Reason.UNKNOWN_SYMBOL
+    advice = "A symbolic answer is written without units: leave out"
+    if units is None:
+        assert advice not in verdict.feedback
+    else:
+        assert f"{advice} {units}." in verdict.feedback
