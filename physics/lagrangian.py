@@ -16,14 +16,17 @@ from __future__ import annotations
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from enum import StrEnum
+from fractions import Fraction
 from functools import cached_property
 
 import sympy
 
+from physics.dimensions import DIMENSIONLESS, Dimension
 from physics.errors import AnswerError
 from physics.mathinput import InputLimits, parse_math
 from physics.proportional import Sample, factor_text, matched
 from physics.symbolic import SymbolicContext
+from physics.symbolic.dimensional import DimensionMismatch, UnknownDimension, expression_dimension
 from physics.symbolic.floats import Floats
 from physics.verdict import InputProblem, Judgement, Preview, Reason, Verdict
 
@@ -97,6 +100,68 @@ def state_symbols(coordinates: Sequence[Coordinate]) -> tuple[sympy.Symbol, ...]
     return tuple(s for c in coordinates for s in (c.symbol, c.velocity, c.acceleration))
 
 
+ENERGY = Dimension({"mass": 1, "length": 2, "time": -2})
+_TIME = Dimension({"time": 1})
+# Functions whose argument is a pure number: a coordinate inside one (cos θ) is an angle or a ratio.
+_PURE_ARGUMENT = (sympy.sin, sympy.cos, sympy.tan, sympy.cot, sympy.sec, sympy.csc, sympy.exp, sympy.log)
+
+
+def state_dimensions(
+    expected: sympy.Expr, coordinates: Sequence[Coordinate], known: Mapping[sympy.Symbol, Dimension]
+) -> dict[sympy.Symbol, Dimension] | None:
+    """The dimensions of the parameters (`known`), and of each coordinate and its velocity as the model's
+    energy `expected` implies them (a term ½ (M+m) Ẋ² makes X a length; a coordinate inside cos is a
+    pure number); None where a coordinate's cannot be told."""
+    found = dict(known)
+    pending = list(coordinates)
+    terms = sympy.Add.make_args(sympy.expand(expected))
+    while pending:
+        solved = next(
+            ((c, d) for c in pending for t in terms if (d := _coordinate_dimension(t, c, found)) is not None),
+            None,
+        )
+        if solved is None:
+            return None
+        coordinate, dimension = solved
+        found[coordinate.symbol] = dimension
+        found[coordinate.velocity] = dimension / _TIME
+        pending.remove(coordinate)
+    try:  # what the model's energy itself must satisfy, or no answer is held to it
+        consistent = expression_dimension(expected, found) == ENERGY
+    except (UnknownDimension, DimensionMismatch):
+        consistent = False
+    return found if consistent else None
+
+
+def _coordinate_dimension(
+    term: sympy.Expr, coordinate: Coordinate, found: Mapping[sympy.Symbol, Dimension]
+) -> Dimension | None:
+    """What `coordinate`'s dimension must be for `term` to be an energy, if the term tells."""
+    power = 0  # of the coordinate and its velocity together, as factors
+    rate = 0  # of the velocity: each brings 1/time
+    rest = sympy.Integer(1)
+    inside = False  # the coordinate inside a function, whose argument is a pure number
+    for factor, exponent in term.as_powers_dict().items():
+        if factor in (coordinate.symbol, coordinate.velocity) and exponent.is_Integer:
+            power += int(exponent)
+            rate += int(exponent) if factor == coordinate.velocity else 0
+        elif factor.has(coordinate.symbol, coordinate.velocity):
+            if not isinstance(factor, _PURE_ARGUMENT):  # √(x² + L²), |x|: the term does not tell
+                return None
+            inside = True
+        else:
+            rest *= factor**exponent
+    try:
+        others = expression_dimension(rest, found)
+    except (UnknownDimension, DimensionMismatch):
+        return None
+    if inside and power == 0:
+        return DIMENSIONLESS
+    if power == 0:
+        return None
+    return (ENERGY / others * _TIME**rate) ** Fraction(1, power)
+
+
 def velocity_names(coordinates: Sequence[Coordinate]) -> dict[str, sympy.Symbol]:
     """What a student may type for the coordinates and their velocities."""
     names: dict[str, sympy.Symbol] = {}
@@ -128,6 +193,9 @@ class EnergyQuestion:
     expected: sympy.Expr  # T − V, T or V
     context: SymbolicContext  # the parameters' and the state's domain
     alternatives: tuple[Alternative, ...] = ()
+    # Every parameter's, coordinate's and velocity's dimension, where all are known: a wrong answer whose
+    # terms differ in dimension is told so.
+    dimensions: Mapping[sympy.Symbol, Dimension] | None = None
 
     @property
     def _lagrangian(self) -> bool:
@@ -167,6 +235,20 @@ class EnergyQuestion:
         m = matched(found.base, target.base, found.rolled, target.rolled, fixed=fixed)
         return m.proportional, m.factor
 
+    def _mixed_dimensions(self, expr: sympy.Expr) -> str | None:
+        """Why a wrong answer is no energy at all, where its terms have different dimensions (`g s sin θ`
+        beside `½ m ṡ²`: a mass left out); None where they agree or cannot be told. (A right answer may
+        be scaled, `L/m`, or hold a constant, as the equations of motion allow: this explains only.)"""
+        if self.dimensions is None:
+            return None
+        try:
+            expression_dimension(expr, self.dimensions)
+        except DimensionMismatch as mismatch:
+            return f"Your {ASKED_WORDS[self.asked]} {mismatch.message}: each of its terms must be an energy."
+        except UnknownDimension:
+            return None
+        return None
+
     def judge(self, expr: sympy.Expr) -> Judgement:
         found = self._values(expr)
         words = ASKED_WORDS[self.asked]
@@ -196,6 +278,9 @@ class EnergyQuestion:
                     f"Your {words} is {factor_text(factor)} times the model's: check its factors"
                     + (" (½ m v², ½ I ω²)." if self.asked is Asked.KINETIC else "."),
                 )
+        mixed = self._mixed_dimensions(expr)
+        if mixed is not None:
+            return Judgement(False, Reason.WRONG_DIMENSION, mixed)
         return Judgement(False, Reason.WRONG_VALUE, self._what_differs(found))
 
     def _what_differs(self, found: _Values) -> str:

@@ -369,3 +369,64 @@ def test_a_bank_part_names_the_kinetic_term_left_out(
     compiled = _yoyo()
     verdict = run_job(compiled.part(part).job(answer))
     assert verdict.reason is reason and said in verdict.feedback, verdict
+
+
+MIXED_DIMENSIONS = [
+    # (kind, system, a wrong answer whose terms differ in dimension, what the feedback says)
+    ("lagrangian", "spring", "1/2 m x'^2 - 1/2 k x^2 + m g", "adds an energy to a force"),  # x left out
+    ("lagrangian", "cart", "(M+m)/2*X'^2 + m L X' φ' cos φ + m L^2/2*φ'^2 + g L cos φ", "an energy"),
+    ("lagrangian", "yoyo", "1/2 m d' + m q^2/(2 r^2)*d'^2 + m g d", "a momentum"),  # a square left out
+    ("kinetic_energy", "cart", "(M+m)/2*X'^2 + m L X' φ' cos φ + m/2*φ'^2", "a spring constant to an energy"),
+    ("potential_energy", "spring", "k/2*x^2 - g x", "a quantity in m²/s² to an energy"),  # m left out
+]
+
+
+@pytest.mark.parametrize(
+    ("kind", "system", "answer", "said"), MIXED_DIMENSIONS, ids=[f"{c[0]}-{c[2]}" for c in MIXED_DIMENSIONS]
+)
+def test_a_wrong_answer_whose_terms_differ_in_dimension_is_told_so(
+    kind: str, system: str, answer: str, said: str
+) -> None:
+    verdict = check(kind, system, answer)
+    assert verdict.outcome is Outcome.INCORRECT
+    assert verdict.reason is Reason.WRONG_DIMENSION
+    assert said in verdict.feedback and "each of its terms must be an energy" in verdict.feedback
+
+
+@pytest.mark.parametrize(
+    ("system", "answer"),
+    [
+        ("spring", "1/2 x'^2 - k/(2 m)*x^2 + g x"),  # L/m: the same equations of motion
+        ("spring", "1/2 m x'^2 - 1/2 k x^2 + m g x + 4"),  # a constant, as a level of V
+    ],
+)
+def test_a_right_lagrangian_is_not_held_to_its_dimension(system: str, answer: str) -> None:
+    assert check("lagrangian", system, answer).outcome is Outcome.CORRECT
+
+
+def test_the_coordinates_dimensions_follow_from_the_models_energy() -> None:
+    import sympy
+
+    from physics.dimensions import DIMENSIONLESS, Dimension
+    from physics.lagrangian import Coordinate, state_dimensions
+
+    def coordinate(name: str) -> Coordinate:
+        return Coordinate(name, *(sympy.Symbol(name + end, real=True) for end in ("", "_dot", "_ddot")))
+
+    x, phi = coordinate("x"), coordinate("phi")
+    m, k, length, g = sympy.symbols("m k L g", positive=True)
+    known = {
+        m: Dimension({"mass": 1}),
+        k: Dimension({"mass": 1, "time": -2}),
+        length: Dimension({"length": 1}),
+        g: Dimension({"length": 1, "time": -2}),
+    }
+    pendulum = m * length**2 * phi.velocity**2 / 2 + m * g * length * sympy.cos(phi.symbol)
+    found = state_dimensions(pendulum, [phi], known)
+    assert found is not None and found[phi.symbol] == DIMENSIONLESS
+    assert found[phi.velocity] == Dimension({"time": -1})
+    spring = m * x.velocity**2 / 2 - k * (sympy.sqrt(x.symbol**2 + length**2) - length) ** 2 / 2
+    found = state_dimensions(spring, [x], known)
+    assert found is not None and found[x.symbol] == Dimension({"length": 1})
+    # a coordinate seen only under a root tells nothing: no dimension, and no answer held to one
+    assert state_dimensions(-k * length * sympy.sqrt(x.symbol**2 + length**2), [x], known) is None

@@ -27,6 +27,7 @@ from physics.lagrangian import (
     dotted_latex,
     euler_lagrange,
     standard_alternatives,
+    state_dimensions,
     velocity_names,
 )
 from physics.mathinput import InputLimits, parse_expression
@@ -237,7 +238,11 @@ def _question(
         constraints=constraints,
     )
     alternatives = authored + standard_alternatives(asked, kinetic, potential, coordinates, terms)
-    return EnergyQuestion(asked, dict(names), coordinates, expected, context, alternatives)
+    known = {table[name]: spec.dimension for name, spec in specs.items() if name in table and spec.dimension}
+    dimensions = (
+        state_dimensions(kinetic - potential, coordinates, known) if len(known) == len(table) else None
+    )
+    return EnergyQuestion(asked, dict(names), coordinates, expected, context, alternatives, dimensions)
 
 
 @dataclass(frozen=True)
