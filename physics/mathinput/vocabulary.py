@@ -8,7 +8,7 @@ from __future__ import annotations
 from types import MappingProxyType
 from typing import Final
 
-from physics.characters import FULLWIDTH
+from physics.characters import DEGREE_LOOKALIKES, FULLWIDTH
 
 GREEK_LETTERS: Final = MappingProxyType(
     {
@@ -32,13 +32,14 @@ LATIN_LOOKING_CAPITALS: Final = frozenset(
 # Characters read as another one; every mapping is one character to one, so positions stay exact.
 CHARACTER_VARIANTS: Final = MappingProxyType(
     {
-        "ϑ": "θ", "ϕ": "φ", "ϵ": "ε", "ϱ": "ρ", "ς": "σ", "µ": "μ", "º": "°",
+        "ϑ": "θ", "ϕ": "φ", "ϵ": "ε", "ϱ": "ρ", "ς": "σ", "µ": "μ",
         "−": "-", "–": "-", "‐": "-", "‑": "-", "﹣": "-",
         "×": "*", "·": "*", "⋅": "*", "∙": "*", "÷": "/", "⁄": "/", "∕": "/",  # fraction and division slashes
         # Subscript digits, as in v₀, ε₀, r₁: the same names as v0 (an alias of v_0), ε0, r1.
         "₀": "0", "₁": "1", "₂": "2", "₃": "3", "₄": "4", "₅": "5", "₆": "6", "₇": "7", "₈": "8", "₉": "9",
         "ℏ": "ħ",  # the Planck constant sign, as the letter ħ
         **FULLWIDTH,  # from East Asian input methods
+        **DEGREE_LOOKALIKES,  # 30º, 30˚
     }
 )  # fmt: skip
 

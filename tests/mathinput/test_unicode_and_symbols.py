@@ -24,6 +24,8 @@ TEXTBOOK = [
     ("⅓ x", ("x",), sym("x") / 3),
     ("x^½", ("x",), sympy.sqrt(sym("x"))),
     ("ħ/2", ("hbar",), sym("hbar") / 2),
+    ("sin(30º) x", ("x",), sympy.sin(sympy.pi / 6) * sym("x")),  # º for °: option-0 on a Mac keyboard
+    ("sin(30˚) x", ("x",), sympy.sin(sympy.pi / 6) * sym("x")),  # the ring above
     ("ℏ ω", ("hbar", "omega"), sym("hbar") * sym("omega")),
     ("hbar ω", ("hbar", "omega"), sym("hbar") * sym("omega")),
     ("（m+M）g", ("m", "M", "g"), (sym("m") + sym("M")) * sym("g")),

@@ -65,6 +65,9 @@ VERDICTS = [
     ("pure", "0.45", PURE, OK, Reason.EQUIVALENT),
     ("degrees-for-radians", "28.65°", ANGLE, OK, Reason.EQUIVALENT),
     ("deg-for-radians", "28.65 deg", ANGLE, OK, Reason.EQUIVALENT),
+    ("ordinal-sign-for-degrees", "28.65º", ANGLE, OK, Reason.EQUIVALENT),  # º: option-0 on a Mac
+    ("ring-above-for-degrees", "28.65˚", ANGLE, OK, Reason.EQUIVALENT),
+    ("ordinal-sign-celsius", "25 ºC", KELVIN, OK, Reason.EQUIVALENT),
     ("rev-for-radians", "0.0796 rev", ANGLE, OK, Reason.EQUIVALENT),
     ("celsius-for-kelvin", "25 °C", KELVIN, OK, Reason.EQUIVALENT),
     ("kelvin", "298.15 K", KELVIN, OK, Reason.EQUIVALENT),
