@@ -1,5 +1,6 @@
-"""Values typed where a symbol is meant: a decimal for π (`2*3.14*sqrt(L/g)`, off by a constant factor)
-or for g (`9.8 m sin θ`, a wrong dimension), and units after a symbolic answer (`m g sin θ N`).
+"""Values typed where a symbol is meant: a decimal for π (`2*3.14*sqrt(L/g)`, off by a constant factor),
+for e (`v0*2.718^(-b t/m)`, a wrong value) or for g (`9.8 m sin θ`, a wrong dimension), and units after
+a symbolic answer (`m g sin θ N`).
 
 The answer is graded as typed: a decimal is exactly the number it shows, and units are no symbols. But
 where the symbol in the value's place would make it right, the feedback says so, instead of leaving
@@ -37,6 +38,11 @@ def _as_pi(decimal: str) -> tuple[str, str] | None:
     return None
 
 
+def _as_e(decimal: str) -> tuple[str, str] | None:
+    digits = len(decimal.replace(".", "").lstrip("0"))
+    return ("e", "e") if digits >= _MIN_DIGITS and abs(float(decimal) / math.e - 1) < _CLOSE else None
+
+
 def _as_g(decimal: str) -> tuple[str, str] | None:
     return ("g", "g") if _GRAVITY[0] <= float(decimal) <= _GRAVITY[1] else None
 
@@ -53,6 +59,11 @@ def typed_value_hint(
     elif reason is Reason.WRONG_DIMENSION and "g" in names:
         symbol_for = _as_g
         advice = "write the symbol g, not its value"
+    elif reason is Reason.WRONG_VALUE and "e" not in names:
+        symbol_for = _as_e
+        advice = (
+            "a decimal is taken as exactly the number it shows, so write e^(…) or exp(…) where you mean e"
+        )
     else:
         return None
     found = [(match, symbol_for(match.group(1))) for match in _DECIMAL.finditer(read_as_text)]

@@ -1,6 +1,6 @@
 """Values typed where a symbol is meant are graded as typed, and the feedback says which symbol would
-make the answer right: a decimal for π (off by a constant factor), 9.8 for a declared g (a wrong
-dimension). Units after a symbolic answer, of the dimension the answer must have, are refused with
+make the answer right: a decimal for π (off by a constant factor), for e (a wrong value), 9.8 for a
+declared g (a wrong dimension). Units after a symbolic answer, of the dimension the answer must have, are refused with
 the advice to leave them out."""
 
 from __future__ import annotations
@@ -16,6 +16,8 @@ PENDULUM = (SymbolDecl("L", "m"), SymbolDecl("g", "m/s^2"))
 PERIOD = "2*pi*sqrt(L/g)"
 SLOPE = (SymbolDecl("m", "kg"), SymbolDecl("g", "m/s^2"), SymbolDecl("theta", "1", range=("0", "pi/2")))
 WEIGHT_ALONG = "m*g*sin(theta)"
+DRAG = (SymbolDecl("v0", "m/s"), SymbolDecl("b", "kg/s"), SymbolDecl("t", "s"), SymbolDecl("m", "kg"))
+SLOWING = "v0*exp(-b*t/m)"
 
 HINTED = [
     # (answer, reference, symbols, reason, the hint's swaps, or None: no hint)
@@ -31,7 +33,15 @@ HINTED = [
     ("2π sqrt(L/9.8)", PERIOD, PENDULUM, Reason.WRONG_DIMENSION, "g for 9.8"),
     ("2*9.8 m sin θ", WEIGHT_ALONG, SLOPE, Reason.WRONG_DIMENSION, None),  # wrong with g too
     ("9.8 sin θ", WEIGHT_ALONG, SLOPE, Reason.WRONG_DIMENSION, None),
+    ("v0 * 2.718^(-b t/m)", SLOWING, DRAG, Reason.WRONG_VALUE, "e for 2.718"),
+    ("v0 2.72^(-b t/m)", SLOWING, DRAG, Reason.WRONG_VALUE, "e for 2.72"),
+    ("v0 2.7^(-b t/m)", SLOWING, DRAG, Reason.WRONG_VALUE, None),  # too few digits for e
+    ("v0 2.718^(-2 b t/m)", SLOWING, DRAG, Reason.WRONG_VALUE, None),  # wrong with e too
 ]
+ADVICE = {
+    Reason.WRONG_DIMENSION: ("Your expression has the dimension of", "write the symbol g, not its value"),
+    Reason.WRONG_VALUE: ("Your answer is not equivalent", "write e^(…) or exp(…) where you mean e"),
+}
 
 
 @pytest.mark.parametrize(
@@ -52,8 +62,9 @@ def test_a_value_typed_for_a_symbol_is_named_when_the_symbol_would_make_it_right
         assert verdict.feedback.startswith(hint)  # in place of the bare "off by a constant factor"
         assert "write pi (or π)" in verdict.feedback
     else:
-        assert verdict.feedback.startswith("Your expression has the dimension of")  # then the hint
-        assert hint in verdict.feedback and "write the symbol g, not its value" in verdict.feedback
+        start, advice = ADVICE[reason]
+        assert verdict.feedback.startswith(start)  # then the hint
+        assert hint in verdict.feedback and advice in verdict.feedback
 
 
 def test_the_symbols_themselves_are_correct() -> None:
