@@ -80,6 +80,20 @@ SLIPS: tuple[Slip, ...] = (
         "units of time or speed.",
         exact=False,
     ),
+    Slip(  # the number right in metres, written in feet (or the other way): the foot, the inch, the
+        # pound, the mile and the pound-force to their SI units
+        _both_ways(
+            Fraction("0.3048"),
+            Fraction("0.0254"),
+            Fraction("0.45359237"),
+            Fraction("1.609344"),
+            Fraction("4.4482216152605"),
+        ),
+        Reason.CONSTANT_FACTOR,
+        "Your number would be right in other units than the ones you wrote (it is off by a factor such as "
+        "0.3048 m per ft or 0.4536 kg per lb): check your units.",
+        exact=False,
+    ),
 )
 
 WRONG_VALUE = Judgement(
