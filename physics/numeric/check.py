@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import dataclasses
+import re
 from dataclasses import dataclass
 from fractions import Fraction
 from functools import cached_property
@@ -21,7 +22,7 @@ from physics.numeric.tolerance import (
 )
 from physics.units import ParsedUnits, parse_units
 from physics.units.registry import lookup, suggestion
-from physics.verdict import Judgement, Reason, Verdict
+from physics.verdict import Judgement, Outcome, Reason, Verdict
 
 CORRECT = Judgement(True, Reason.EQUIVALENT, "Correct.")
 
@@ -140,11 +141,34 @@ def _wrong_dimension(read: NumericAnswer, answer_units: ParsedUnits, target: Par
     )
 
 
+# A trigonometric function of a bare whole or decimal number: `sin(28)`, `cos 60`, radians as typed.
+_TRIG_OF_A_NUMBER = re.compile(r"\b(sin|cos|tan)(\s*\(\s*|\s+)(\d+(?:\.\d+)?)(?![\d.°])")
+
+
 def check_numeric(answer: str, spec: NumericSpec) -> Verdict:
-    """Check a numeric answer (`4.58 m/s^2`) against `spec`: invalid, or graded with a reason.
+    """Check a numeric answer (`4.58 m/s^2`) against `spec`: invalid, or graded with a reason; a wrong
+    one whose angles, read in degrees, would make it right says so (`9.8*sin(28) m/s^2`: radians).
 
     Raises SpecError only for a spec that cannot be used; anything about the answer is a verdict.
     """
+    verdict = _checked(answer, spec)
+    if verdict.outcome is not Outcome.INCORRECT or verdict.reason is Reason.WRONG_DIMENSION:
+        return verdict
+    first = _TRIG_OF_A_NUMBER.search(answer)
+    if first is None:
+        return verdict
+    in_degrees = _TRIG_OF_A_NUMBER.sub(lambda m: f"{m.group(1)}{m.group(2)}{m.group(3)}°", answer)
+    if _checked(in_degrees, spec).outcome is not Outcome.CORRECT:
+        return verdict
+    example = f"{first.group(1)}({first.group(3)}°)"
+    return dataclasses.replace(
+        verdict,
+        feedback=f"{verdict.feedback} It would be right with its angles in degrees: a number in sin, cos or "
+        f"tan is in radians unless it has a degree sign, as in {example}.",
+    )
+
+
+def _checked(answer: str, spec: NumericSpec) -> Verdict:
     target = spec.target_units()
     try:
         read = read_numeric_answer(

@@ -182,6 +182,8 @@ WORDING = [
     ("15.03 m/s^2", NumericSpec(D("15.03"), "ft/s^2"), "0.3048 m per ft"),
     ("2.08 lb", NumericSpec(D("2.08"), "kg"), "0.4536 kg per lb"),
     ("100 lbf", NumericSpec(D("100"), "N"), "would be right in other units"),
+    ("9.8*sin(28) m/s^2", NumericSpec(D("4.6007"), "m/s^2"), "right with its angles in degrees"),
+    ("9.8 cos 62 m/s^2", NumericSpec(D("4.6007"), "m/s^2"), "unless it has a degree sign, as in cos(62°)."),
     ("4.58 ± 0.05 m/s^2", ACCEL, "Give one value, without its uncertainty (± …)"),
     ("(4.58 ± 0.05) m/s^2", ACCEL, "without its uncertainty (± …)"),
     ("4.58 +/- 0.05 m/s^2", ACCEL, "without its uncertainty (+/- …)"),
@@ -193,6 +195,13 @@ WORDING = [
 @pytest.mark.parametrize(("answer", "spec", "words"), WORDING, ids=[c[0] for c in WORDING])
 def test_feedback_wording(answer: str, spec: NumericSpec, words: str) -> None:
     assert words in check_numeric(answer, spec).feedback
+
+
+@pytest.mark.parametrize("answer", ["9.8*sin(30) m/s^2", "9.8*sin(28°)*2 m/s^2", "9.2 m/s^2"])
+def test_degrees_are_suggested_only_where_they_make_the_answer_right(answer: str) -> None:
+    verdict = check_numeric(answer, NumericSpec(D("4.6007"), "m/s^2"))
+    assert verdict.outcome is NO
+    assert "degrees" not in verdict.feedback
 
 
 POSITIONS = [
