@@ -246,7 +246,7 @@ class EnergyQuestion:
         except DimensionMismatch as mismatch:
             return f"Your {ASKED_WORDS[self.asked]} {mismatch.message}: each of its terms must be an energy."
         except UnknownDimension:
-            return None
+            pass
         return None
 
     def judge(self, expr: sympy.Expr) -> Judgement:
