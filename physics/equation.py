@@ -17,6 +17,7 @@ from functools import cached_property
 import numpy as np
 import sympy
 
+from physics import typeset
 from physics.errors import AnswerError, ParseError
 from physics.mathinput import InputLimits, parse_math
 from physics.proportional import Sample, close, factor_text, matched
@@ -131,7 +132,7 @@ def _swapped(expr: sympy.Expr) -> sympy.Expr:
 def _named(term: sympy.Expr, unknowns: tuple[Unknown, ...]) -> str:
     """`$\\mu N$` (the normal force …)."""
     said = [u.meaning for u in unknowns if term.has(u.symbol) and u.meaning]
-    tex = sympy.latex(-term if term.could_extract_minus_sign() else term)
+    tex = typeset.latex(-term if term.could_extract_minus_sign() else term)
     return f"${tex}$" + (f" ({'; '.join(said)})" if said else "")
 
 

@@ -21,6 +21,7 @@ from functools import cached_property
 
 import sympy
 
+from physics import typeset
 from physics.dimensions import DIMENSIONLESS, Dimension
 from physics.errors import AnswerError
 from physics.mathinput import InputLimits, parse_math
@@ -60,7 +61,7 @@ class Coordinate:
 
     def named(self) -> str:
         """`X` (the wedge's position …), for feedback."""
-        return f"${sympy.latex(self.symbol)}$" + (f" ({self.words})" if self.words else "")
+        return f"${typeset.latex(self.symbol)}$" + (f" ({self.words})" if self.words else "")
 
 
 @dataclass(frozen=True)
@@ -173,8 +174,8 @@ def velocity_names(coordinates: Sequence[Coordinate]) -> dict[str, sympy.Symbol]
 
 def dotted_latex(expr: sympy.Expr, coordinates: Sequence[Coordinate]) -> str:
     """TeX with each velocity written with its dot."""
-    names = {c.velocity: rf"\dot{{{sympy.latex(c.symbol)}}}" for c in coordinates}
-    return str(sympy.latex(expr, symbol_names=names))
+    names = {c.velocity: rf"\dot{{{typeset.latex(c.symbol)}}}" for c in coordinates}
+    return str(typeset.latex(expr, symbol_names=names))
 
 
 @dataclass(frozen=True)
@@ -317,8 +318,8 @@ class EnergyQuestion:
                 )
             return f"Lagrange's equation for {which} from your Lagrangian is not the model's."
         n = len(coordinates)
-        names = [f"${sympy.latex(c.symbol)}$" for c in coordinates] + [
-            rf"$\dot{{{sympy.latex(c.symbol)}}}$" for c in coordinates
+        names = [f"${typeset.latex(c.symbol)}$" for c in coordinates] + [
+            rf"$\dot{{{typeset.latex(c.symbol)}}}$" for c in coordinates
         ]
         differ = ", ".join(names[k] for k in failing if k < 2 * n) or "the coordinates"
         return f"Your {ASKED_WORDS[self.asked]} depends on {differ} differently from the model's."
@@ -377,10 +378,10 @@ def standard_alternatives(
                 found.append(
                     Alternative(
                         base - term + kept,
-                        f"The kinetic energy of {words} uses $\\dot{{{sympy.latex(alone.symbol)}}}$ alone: "
+                        f"The kinetic energy of {words} uses $\\dot{{{typeset.latex(alone.symbol)}}}$ alone: "
                         "its velocity depends on "
                         + " and ".join(
-                            f"$\\dot{{{sympy.latex(c.symbol)}}}$" for c in moving if c is not alone
+                            f"$\\dot{{{typeset.latex(c.symbol)}}}$" for c in moving if c is not alone
                         )
                         + " too (add the velocities as vectors, then square).",
                     )

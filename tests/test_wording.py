@@ -1,7 +1,7 @@
 import pytest
 
 from physics.errors import SpecError, SpecErrors
-from physics.wording import counted
+from physics.wording import counted, the_counted
 
 
 @pytest.mark.parametrize(
@@ -22,3 +22,10 @@ def test_counted_agrees_the_noun_with_the_count(count, noun, plural, expected):
 def test_spec_errors_count_their_errors_in_words(count, head):
     errors = SpecErrors([SpecError(f"fault {i}", ("model",)) for i in range(count)])
     assert str(errors).startswith(head + "\n")
+
+
+@pytest.mark.parametrize(
+    ("count", "noun", "expected"), [(1, "equation", "the equation"), (2, "equation", "the 2 equations")]
+)
+def test_the_counted_leaves_out_a_count_of_one(count, noun, expected):
+    assert the_counted(count, noun) == expected

@@ -20,6 +20,7 @@ from decimal import Decimal
 
 import sympy
 
+from physics import typeset
 from physics.engine.notation import Notation, fill_bodies
 from physics.engine.results import Derivation, MethodReport, StepKind
 from physics.errors import PhyscheckError
@@ -161,7 +162,7 @@ def _weights(
     doc: ProblemDocument, masses: Mapping[str, str], fill: Mapping[str, str], gravity: str
 ) -> list[Term]:
     return [
-        Term(f"{sympy.latex(sympy.Symbol(mass))} {gravity}", f"the weight of {fill[body]}, downwards")
+        Term(f"{typeset.latex(sympy.Symbol(mass))} {gravity}", f"the weight of {fill[body]}, downwards")
         for body, mass in masses.items()
     ]
 
@@ -229,7 +230,7 @@ def _checks(
         found.append(
             CheckInfo(
                 spec.id,
-                sympy.latex(result),
+                typeset.latex(result),
                 format_quantity(_round(mine), part.units),
                 format_quantity(_round(expected), part.units),
                 agrees,

@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING
 
 import sympy
 
+from physics import typeset
 from physics.answer_text import typed_text
 from physics.engine import tidy
 from physics.engine.mechanics import Mechanics, solve_linear
@@ -77,7 +78,7 @@ def _finish(
     if kind is QuantityKind.ENERGY_FRACTION_LOST:
         fraction = tidy.simplify((before - kinetic_after) / before)
         steps.append(
-            ("Fraction of the kinetic energy lost", r"\frac{K_0 - K_1}{K_0} = " + sympy.latex(fraction))
+            ("Fraction of the kinetic energy lost", r"\frac{K_0 - K_1}{K_0} = " + typeset.latex(fraction))
         )
         return fraction
     found = tidy.solve(kinetic_after - rise, SPEED)
@@ -90,7 +91,7 @@ def _finish(
         )
     if len(roots) != 1:
         raise DerivationError(f"expected one positive projectile speed, found {typed_text(found)}")
-    steps.append(("Projectile speed", sympy.latex(sympy.Eq(SPEED, roots[0]))))
+    steps.append(("Projectile speed", typeset.latex(sympy.Eq(SPEED, roots[0]))))
     return tidy.simplify(roots[0])
 
 
@@ -113,7 +114,7 @@ def by_conservation(model: Model, kind: QuantityKind, steps: list[tuple[str, str
     steps.append(
         (
             "Generalized momentum across the impulse",
-            r",\ ".join(sympy.latex(sympy.Eq(e + b, b)) for e, b in zip(equations, brought, strict=True)),
+            r",\ ".join(typeset.latex(sympy.Eq(e + b, b)) for e, b in zip(equations, brought, strict=True)),
         )
     )
     velocities = solve_linear(equations, list(mech.qd), "momentum across the collision")
@@ -125,7 +126,7 @@ def by_conservation(model: Model, kind: QuantityKind, steps: list[tuple[str, str
         if work == 0
         else "Energy after the collision, less friction's work"
     )
-    steps.append((title, sympy.latex(sympy.Eq(kinetic, tidy.simplify(rise - work)))))
+    steps.append((title, typeset.latex(sympy.Eq(kinetic, tidy.simplify(rise - work)))))
     return _finish(kinetic, tidy.simplify(rise - work), model, kind, steps)
 
 
@@ -161,7 +162,7 @@ def _nonconservative_work(
     steps.append(
         (
             "Work of friction and the other non-conservative forces until it stops",
-            rf"W = \int Q_{{\mathrm{{nc}}}}\,d{sympy.latex(q)} = " + sympy.latex(work),
+            rf"W = \int Q_{{\mathrm{{nc}}}}\,d{typeset.latex(q)} = " + typeset.latex(work),
         )
     )
     return work
@@ -184,7 +185,7 @@ def by_newton(model: Model, kind: QuantityKind, steps: list[tuple[str, str]]) ->
     steps.append(
         (
             "Impulse balance, constraint impulses unknown",
-            r",\ ".join(sympy.latex(sympy.Eq(e, 0)) for e in equations),
+            r",\ ".join(typeset.latex(sympy.Eq(e, 0)) for e in equations),
         )
     )
     solution = solve_linear(equations, velocity + impulses, "impulse balance")
@@ -208,7 +209,7 @@ def by_newton(model: Model, kind: QuantityKind, steps: list[tuple[str, str]]) ->
     steps.append(
         (
             "Work-energy theorem up to the turning point",
-            rf"0 - K_1 = \int Q\,d{sympy.latex(q)} = " + sympy.latex(work),
+            rf"0 - K_1 = \int Q\,d{typeset.latex(q)} = " + typeset.latex(work),
         )
     )
     return _finish(kinetic, -work, model, kind, steps)

@@ -20,6 +20,7 @@ from physics.engine.method import Method, NotApplicable
 from physics.engine.oscillation import frequency_from_accelerations
 from physics.engine.results import StepKind
 from physics.engine.supports import NOT_STEADY
+from physics.wording import the_counted
 
 
 class DAlembertMethod(Method):
@@ -75,7 +76,7 @@ class DAlembertMethod(Method):
     def solution(self) -> dict[sympy.Symbol, sympy.Expr]:
         solution = self._solve(dict(self.model.state))
         self.step(
-            f"Solve the {len(self.equations)} equations for the {len(self.mech.qdd)} accelerations",
+            f"Solve {the_counted(len(self.equations), 'equation')} for {the_counted(len(self.mech.qdd), 'acceleration')}",
             r"\text{each coordinate's acceleration follows}",
             StepKind.SOLVE,
             list(self.mech.qdd),

@@ -19,6 +19,7 @@ from typing import TYPE_CHECKING, Any
 
 import sympy
 
+from physics import typeset
 from physics.answer_text import typed_text
 from physics.engine import tidy
 from physics.engine.model import Quantity, QuantityKind
@@ -89,7 +90,7 @@ def answer(method: Method, quantity: Quantity) -> sympy.Expr:
     result = tidy.simplify(free.subs(values))
     method.step(
         f"The {quantity.kind.value.replace('_', ' ')}{_of(method, quantity.target)} at the value found for "
-        + ", ".join(f"${sympy.latex(s)}$" for s in values),
+        + ", ".join(f"${typeset.latex(s)}$" for s in values),
         method.tex(free)
         + r"\Big|_{"
         + r",\ ".join(method.tex(sympy.Eq(s, v)) for s, v in values.items())

@@ -18,6 +18,7 @@ from functools import cached_property
 
 import sympy
 
+from physics import typeset
 from physics.engine import tidy
 from physics.engine.mechanics import CartesianDof, Mechanics, solve_linear, time_derivative
 from physics.engine.method import Method, NotApplicable
@@ -26,6 +27,7 @@ from physics.engine.notation import split_subscript
 from physics.engine.oscillation import frequency_from_accelerations
 from physics.engine.results import StepKind
 from physics.engine.supports import NOT_STEADY, translation
+from physics.wording import the_counted
 
 
 @dataclass(frozen=True)
@@ -77,7 +79,7 @@ class FramesMethod(Method):
     def tex(self, expr: sympy.Basic) -> str:
         names = self.latex_names if self.model.frame is not None or self.support else self.mech.latex_names
         self._printed |= expr.free_symbols
-        return str(sympy.latex(expr, symbol_names=names))
+        return str(typeset.latex(expr, symbol_names=names))
 
     @cached_property
     def frame_dofs(self) -> tuple[FrameDof, ...]:
@@ -260,7 +262,7 @@ class FramesMethod(Method):
         solution = self._solve(dict(self.model.state))
         equations, unknowns = self.equations
         self.step(
-            f"Solve the {len(equations)} equations for the {len(unknowns)} unknowns: the accelerations in the "
+            f"Solve {the_counted(len(equations), 'equation')} for {the_counted(len(unknowns), 'unknown')}: the accelerations in the "
             "frame and the constraint forces",
             r"\text{then the coordinates' accelerations follow from those in the frame}",
             StepKind.SOLVE,

@@ -21,6 +21,7 @@ from typing import TYPE_CHECKING
 
 import sympy
 
+from physics import typeset
 from physics.answer_text import typed_text
 from physics.engine import tidy
 from physics.engine.mechanics import Mechanics, solve_linear
@@ -171,7 +172,7 @@ def by_conservation(model: Model) -> Worked:
         "Momentum conserved in every direction the contact's impulse has no part in "
         "(the constraints' impulses included: they do no work on the coordinates); the normal "
         "separation's rate after is w",
-        r",\ ".join(sympy.latex(sympy.Eq(e, 0)) for e in equations),
+        r",\ ".join(typeset.latex(sympy.Eq(e, 0)) for e in equations),
     )
     approach = -(a.T * before)[0]
     in_w = sympy.Matrix([solved[v] for v in after])
@@ -182,12 +183,12 @@ def by_conservation(model: Model) -> Worked:
         w = _parting_root(model, sympy.solve(balance, parting), -approach, "normal velocity")
         step(
             "Kinetic energy balance" + (" (elastic)" if elastic else " (energy released)"),
-            sympy.latex(sympy.Eq(balance, 0)) + r"\Rightarrow w = " + sympy.latex(w),
+            typeset.latex(sympy.Eq(balance, 0)) + r"\Rightarrow w = " + typeset.latex(w),
         )
     else:
         assert hit.restitution is not None
         w = hit.restitution * approach
-        step("Newton's restitution law", r"w = e\,(u_1 - u_2)\cdot n = " + sympy.latex(w))
+        step("Newton's restitution law", r"w = e\,(u_1 - u_2)\cdot n = " + typeset.latex(w))
     rates = [_tidy(v.subs(parting, w)) for v in in_w]
     cartesian = [
         _tidy(sympy.Add(*(found.jacobian[i, j] * r for j, r in enumerate(rates))))
@@ -223,7 +224,7 @@ def by_impulse(model: Model) -> Worked:
     step(
         "Impulse-momentum law for each body, normal impulse J"
         + (", and each constraint's impulse, the constraint holding after" if held else ""),
-        r",\ ".join(sympy.latex(sympy.Eq(e, 0)) for e in [*laws, *holding]),
+        r",\ ".join(typeset.latex(sympy.Eq(e, 0)) for e in [*laws, *holding]),
     )
     rate_after = sympy.Add(*(c * v for c, v in zip(found.normal_row, in_j, strict=True)))
     rate_before = sympy.Add(*(c * v for c, v in zip(found.normal_row, found.before, strict=True)))
@@ -235,9 +236,9 @@ def by_impulse(model: Model) -> Worked:
         step(
             "Work of the impulse equals the energy released",
             r"J\,\frac{(u_2 + v_2 - u_1 - v_1)\cdot n}{2} = "
-            + sympy.latex(hit.release)
+            + typeset.latex(hit.release)
             + r"\Rightarrow J = "
-            + sympy.latex(j),
+            + typeset.latex(j),
         )
     else:
         assert hit.restitution is not None
@@ -246,7 +247,7 @@ def by_impulse(model: Model) -> Worked:
         j = (1 + hit.restitution) * compression
         step(
             "Poisson: the compression impulse stops the approach; restitution returns e times it",
-            r"J_c = " + sympy.latex(compression) + r",\ J = (1 + e) J_c = " + sympy.latex(j),
+            r"J_c = " + typeset.latex(compression) + r",\ J = (1 + e) J_c = " + typeset.latex(j),
         )
     final = [_tidy(v.subs(impulse, j)) for v in in_j]
     return tuple(steps), by_body(mech, found.before), by_body(mech, final)
@@ -293,15 +294,15 @@ def _quantity(
 ) -> sympy.Expr:
     if quantity.kind is QuantityKind.KINETIC_ENERGY_LOST:
         lost = sympy.factor(tidy.simplify(kinetic(model, before) - kinetic(model, after)))
-        step("Kinetic energy lost", r"K_0 - K_1 = " + sympy.latex(lost))
+        step("Kinetic energy lost", r"K_0 - K_1 = " + typeset.latex(lost))
         return lost
     velocity = {a: v for a, v in after[quantity.target].items() if a != "phi"}
     if quantity.kind is QuantityKind.FINAL_SPEED:
         speed = _signs_by_domain(model, sympy.sqrt(sympy.factor(sympy.expand(_dot(velocity, velocity)))))
-        step(f"Speed of «{quantity.target}» after", sympy.latex(speed))
+        step(f"Speed of «{quantity.target}» after", typeset.latex(speed))
         return speed
     (component,) = velocity.values()
-    step(f"Velocity of «{quantity.target}» after", sympy.latex(component))
+    step(f"Velocity of «{quantity.target}» after", typeset.latex(component))
     return sympy.factor(component)
 
 

@@ -17,6 +17,7 @@ from physics.engine.mechanics import solve_linear, time_derivative
 from physics.engine.method import Method, NotApplicable
 from physics.engine.results import StepKind
 from physics.engine.supports import NOT_STEADY, driven
+from physics.wording import the_counted
 
 
 class LagrangeMethod(Method):
@@ -124,7 +125,7 @@ class LagrangeMethod(Method):
         state = dict(self.model.state)
         solution = solve_linear([e.subs(state) for e in equations], unknowns, self.title)
         self.step(
-            f"Solved: {len(equations)} equations for the {len(unknowns)} unknowns",
+            f"Solved: {the_counted(len(equations), 'equation')} for {the_counted(len(unknowns), 'unknown')}",
             r",\quad ".join(self.tex(sympy.Eq(k, v)) for k, v in solution.items()),
             StepKind.SOLVE,
             unknowns,

@@ -9,6 +9,7 @@ from functools import cached_property, lru_cache
 
 import sympy
 
+from physics import typeset
 from physics.answer_text import typed_text
 from physics.engine import bounces, evaluated_at, impact, modes, quantity_table, tidy, work_energy
 from physics.engine.mechanics import Mechanics
@@ -59,7 +60,7 @@ class Method(ABC):
 
     def tex(self, expr: sympy.Basic) -> str:
         self._printed |= expr.free_symbols
-        return str(sympy.latex(expr, symbol_names=self.mech.latex_names))
+        return str(typeset.latex(expr, symbol_names=self.mech.latex_names))
 
     def step(
         self, title: str, latex: str, kind: StepKind = StepKind.WORK, unknowns: Sequence[sympy.Basic] = ()
@@ -250,7 +251,7 @@ class Method(ABC):
                 quantity=name,
             )
         self.step(
-            f"Solve for ${sympy.latex(parameter)}$",
+            f"Solve for ${typeset.latex(parameter)}$",
             self.tex(sympy.Eq(expr, 0)) + r"\Rightarrow " + self.tex(sympy.Eq(parameter, roots[0])),
         )
         return tidy.simplify(roots[0])

@@ -20,6 +20,7 @@ from physics.engine.method import Method, NotApplicable
 from physics.engine.model import QuantityKind
 from physics.engine.results import StepKind
 from physics.engine.supports import driven
+from physics.wording import the_counted
 
 
 class NewtonMethod(Method):
@@ -116,7 +117,7 @@ class NewtonMethod(Method):
         unknowns = [d.acceleration for d in mech.dofs] + list(mech.multipliers)
         solution = solve_linear(equations, unknowns, self.title)
         self.step(
-            f"Solved: {len(equations)} equations for the {len(unknowns)} unknowns, the accelerations and the "
+            f"Solved: {the_counted(len(equations), 'equation')} for {the_counted(len(unknowns), 'unknown')}, the accelerations and the "
             "constraint forces",
             r",\quad ".join(self.tex(sympy.Eq(k, v)) for k, v in solution.items()),
             StepKind.SOLVE,

@@ -29,6 +29,7 @@ from typing import Any
 
 import sympy
 
+from physics import typeset
 from physics.engine.model import Body, Constraint, ConstraintKind, Model
 from physics.errors import SpecError
 from physics.mathinput.render import latex_name
@@ -209,7 +210,7 @@ def constraint_bodies(constraint: Constraint, model: Model) -> list[str]:
 def notation_of(model: Model) -> Notation:
     """Every name a worked solution of `model` uses (cached: models are immutable)."""
     author = {key: (symbol, says) for key, symbol, says in model.notation}
-    problem = {str(p): sympy.latex(p) for p in model.parameters}
+    problem = {str(p): typeset.latex(p) for p in model.parameters}
     taken: set[str] = set(problem.values()) | RESERVED
 
     coordinates: dict[str, Name] = {}
@@ -232,7 +233,7 @@ def notation_of(model: Model) -> Notation:
     cartesian = _cartesian(model, taken, coordinates)
     letters = _letters(taken | {n.tex for n in forces.values()} | {n.tex for n in frictions})
     masses = {b.name: str(b.mass) for b in model.bodies if isinstance(b.mass, sympy.Symbol)}
-    gravity = "" if model.gravity is None else str(sympy.latex(model.gravity))
+    gravity = "" if model.gravity is None else str(typeset.latex(model.gravity))
     return Notation(coordinates, forces, conditions, frictions, bodies, cartesian, letters, masses, gravity)
 
 
@@ -449,7 +450,7 @@ def _frictions(model: Model, forces: Mapping[str, Name], taken: set[str]) -> tup
 
 
 def latex_coefficient(expr: sympy.Expr) -> str:
-    return str(sympy.latex(expr))
+    return str(typeset.latex(expr))
 
 
 def _cartesian(model: Model, taken: set[str], coordinates: Mapping[str, Name]) -> dict[str, Name]:
@@ -521,7 +522,7 @@ def audit(model: Model, notation: Notation, methods: Iterable[Any]) -> list[str]
     for key, name in notation.forces.items():
         if name.source is Source.GENERATED or not name.words.strip():
             faults.append(f"the force of constraint {key!r} has no physical name ({name.tex})")
-    problem = {str(p): sympy.latex(p) for p in model.parameters}
+    problem = {str(p): typeset.latex(p) for p in model.parameters}
     written: dict[str, str] = {}
     mine = [
         *((f"coordinate {k}", n) for k, n in notation.coordinates.items()),

@@ -26,6 +26,7 @@ from typing import TYPE_CHECKING
 
 import sympy
 
+from physics import typeset
 from physics.answer_text import typed_text
 from physics.engine import impact, tidy
 from physics.engine.mechanics import Mechanics, solve_linear
@@ -288,7 +289,7 @@ def by_integration(method: Method, trip: Journey) -> sympy.Expr:
         + method.tex(2 * constant + 2 * quadratic * w),
     )
     method.step(
-        f"Integrated from {method.named(c.name)} $= {sympy.latex(trip.start)}$ to ${sympy.latex(trip.end)}$",
+        f"Integrated from {method.named(c.name)} $= {typeset.latex(trip.start)}$ to ${typeset.latex(trip.end)}$",
         method.tex(sympy.Eq(w, square)),
     )
     return square

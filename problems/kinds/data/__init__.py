@@ -15,6 +15,7 @@ from typing import TYPE_CHECKING, Annotated, Any, Literal
 import sympy
 from pydantic import Field
 
+from physics import typeset
 from physics.checking import QuestionJob, read_expression
 from physics.errors import SpecError
 from physics.fitting import Fit, fit_parameter, measurements, proportional_fit
@@ -171,7 +172,7 @@ class CompiledDataPart:
     def solution(self) -> Reference:
         return Reference(
             f"least-squares fit of {sympy.sstr(self.parameter)}",
-            rf"\hat{{{sympy.latex(self.parameter)}}} = \text{{least-squares fit of }} {sympy.latex(self.quantity)}",
+            rf"\hat{{{typeset.latex(self.parameter)}}} = \text{{least-squares fit of }} {typeset.latex(self.quantity)}",
             self.units,
         )
 
@@ -210,8 +211,8 @@ class CompiledDataPart:
                 wrong.append(
                     Mistaken(
                         _spec(slope, WITHIN * lab.fit.standard_error, self.units),
-                        f"That is the slope of the measurements against ${sympy.latex(self.vary)}$ itself (in "
-                        f"{unit_name}): they are proportional to ${sympy.latex(sympy.diff(self.quantity, self.parameter))}$, "
+                        f"That is the slope of the measurements against ${typeset.latex(self.vary)}$ itself (in "
+                        f"{unit_name}): they are proportional to ${typeset.latex(sympy.diff(self.quantity, self.parameter))}$, "
                         "so fit them against that.",
                     )
                 )
@@ -220,7 +221,7 @@ class CompiledDataPart:
                 Mistaken(
                     _spec(lab.fit.value * float(factor), WITHIN * lab.fit.standard_error, self.units),
                     f"That is {said} the value your data give: check the factor relating the slope to "
-                    f"${sympy.latex(self.parameter)}$.",
+                    f"${typeset.latex(self.parameter)}$.",
                 )
             )
         return DataQuestion(
@@ -395,14 +396,14 @@ class DataKind:
             full = f"accepted within {WITHIN} standard errors"
         return dataclasses.replace(
             info,
-            latex=sympy.latex(part.quantity),
+            latex=typeset.latex(part.quantity),
             units=part.units,
             expected=expected,
             expected_full=full,
             facts=(
                 (
                     "Each student's data",
-                    f"{sympy.latex(part.vary)} = "
+                    f"{typeset.latex(part.vary)} = "
                     + ", ".join(format_number(Decimal(str(x))) for x in part.settings),
                 ),
             ),

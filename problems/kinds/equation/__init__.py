@@ -17,6 +17,7 @@ import numpy as np
 import sympy
 from pydantic import Field
 
+from physics import typeset
 from physics.checking import PartJob, SymbolDecl, symbol_spec
 from physics.equation import EquationQuestion, Unknown, WrongEquation, read_equation, standard_wrong
 from physics.errors import AnswerError, SpecError
@@ -206,7 +207,8 @@ class CompiledEquationPart:
     def solution(self) -> Reference:
         q = self.prepared
         return Reference(
-            f"{sympy.sstr(q.lhs)} = {sympy.sstr(q.rhs)}", sympy.latex(sympy.Eq(q.lhs, q.rhs, evaluate=False))
+            f"{sympy.sstr(q.lhs)} = {sympy.sstr(q.rhs)}",
+            typeset.latex(sympy.Eq(q.lhs, q.rhs, evaluate=False)),
         )
 
     def question(self, variant: Variant | None = None) -> EquationQuestion:
@@ -341,7 +343,7 @@ class EquationKind:
     ) -> PartInfo:
         question = part.prepared
         facts = tuple(
-            (f"{u.name}: {u.meaning}", sympy.latex(u.symbol) + " = " + sympy.latex(u.value))
+            (f"{u.name}: {u.meaning}", typeset.latex(u.symbol) + " = " + typeset.latex(u.value))
             for u in question.unknowns
             if u.value is not None
         )
@@ -351,7 +353,7 @@ class EquationKind:
             facts=facts,
             mistakes=tuple(
                 MistakeInfo(
-                    sympy.latex(sympy.Eq(w.difference, 0)),
+                    typeset.latex(sympy.Eq(w.difference, 0)),
                     f"{sympy.sstr(w.difference)} = 0",
                     w.feedback,
                     i < part.authored,

@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING, Annotated, Any, Literal
 import sympy
 from pydantic import Field, model_validator
 
+from physics import typeset
 from physics.checking import PartJob, SymbolDecl, symbol_spec
 from physics.errors import AnswerError, PhyscheckError, SpecError
 from physics.lagrangian import (
@@ -408,16 +409,16 @@ class EnergyKind:
         coordinates = question.coordinates
         facts: list[tuple[str, str]] = []
         if self.asked is Asked.LAGRANGIAN:
-            accelerations = {c.acceleration: rf"\ddot{{{sympy.latex(c.symbol)}}}" for c in coordinates}
+            accelerations = {c.acceleration: rf"\ddot{{{typeset.latex(c.symbol)}}}" for c in coordinates}
             facts.append(("Kinetic energy", "T = " + dotted_latex(part.kinetic, coordinates)))
             facts.append(("Potential energy", "V = " + dotted_latex(part.potential, coordinates)))
             for c, equation in zip(coordinates, euler_lagrange(question.expected, coordinates), strict=True):
                 tidy = sympy.collect(sympy.expand(equation), [a.acceleration for a in coordinates])
-                names = {c2.velocity: rf"\dot{{{sympy.latex(c2.symbol)}}}" for c2 in coordinates}
+                names = {c2.velocity: rf"\dot{{{typeset.latex(c2.symbol)}}}" for c2 in coordinates}
                 facts.append(
                     (
                         f"Lagrange's equation for {c.name}",
-                        sympy.latex(sympy.Eq(tidy, 0), symbol_names={**names, **accelerations}),
+                        typeset.latex(sympy.Eq(tidy, 0), symbol_names={**names, **accelerations}),
                     )
                 )
         return dataclasses.replace(

@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING, Annotated, Any, Literal
 import sympy
 from pydantic import Field
 
+from physics import typeset
 from physics.answer_text import student_text, typed_text
 from physics.checking import (
     CompiledQuestion,
@@ -239,7 +240,7 @@ class CompiledSymbolicPart:
         self.prepared.reference.complete()  # sample points, values, mistakes and limits
 
     def solution(self) -> Reference:
-        return Reference(sympy.sstr(self.expected), sympy.latex(self.expected))
+        return Reference(sympy.sstr(self.expected), typeset.latex(self.expected))
 
     def question(self, variant: Variant | None = None) -> SymbolicQuestion:
         return self.prepared
@@ -383,7 +384,7 @@ class SymbolicKind:
         written = getattr(compiled.document.part(part.id), "mistakes", ())
         return dataclasses.replace(
             info,
-            latex=sympy.latex(part.expected),
+            latex=typeset.latex(part.expected),
             mistakes=tuple(
                 described_mistake(m.expr, m.feedback, written, i, compiled.table)
                 for i, m in enumerate(part.context.mistakes)
@@ -413,14 +414,14 @@ def described_mistake(
             return MistakeInfo(read.latex, in_student_style(read.text), feedback, True)
         except PhyscheckError:
             pass
-    return MistakeInfo(sympy.latex(expr), typed_text(expr), feedback, index < authored)
+    return MistakeInfo(typeset.latex(expr), typed_text(expr), feedback, index < authored)
 
 
 def limit_where(substitutions: Mapping[sympy.Symbol, sympy.Expr]) -> str:
     terms = []
     for symbol, value in substitutions.items():
         arrow = r"\to" if value in (sympy.oo, -sympy.oo) or value == 0 else "="
-        terms.append(f"{sympy.latex(symbol)} {arrow} {sympy.latex(value)}")
+        terms.append(f"{typeset.latex(symbol)} {arrow} {typeset.latex(value)}")
     return ",\\ ".join(terms)
 
 

@@ -1,0 +1,66 @@
+"""Worked solutions write products as a physics text does (m g sin θ, m ÿ), not in sympy's alphabetical
+order (g m sin θ, ÿ m); only the printing changes."""
+
+from __future__ import annotations
+
+import pytest
+import sympy
+
+from physics.engine import derive, load_model
+from physics.typeset import latex
+
+m, M, g, s, theta, N, mu, X, k, x, v, h, r, omega, T = sympy.symbols(
+    "m M g s theta N_1 mu X k x v h r omega T", positive=True
+)
+SIN, COS = sympy.sin(theta), sympy.cos(theta)
+ACCELERATION = sympy.Symbol("a_block")  # sorts before m, as the engine's accelerations do
+WRITTEN = {ACCELERATION: r"\ddot{x}_{\mathrm{block}}"}
+
+
+@pytest.mark.parametrize(
+    ("expr", "written"),
+    [
+        (-g * m * s * SIN, r"- m g s \sin{\left(\theta \right)}"),
+        (
+            M * g * m * COS / (M + m * SIN**2),
+            r"\frac{M m g \cos{\left(\theta \right)}}{M + m \sin^{2}{\left(\theta \right)}}",
+        ),
+        (mu * m * g * COS, r"\mu m g \cos{\left(\theta \right)}"),
+        (X * (M + m) + m * s * COS, r"\left(M + m\right) X + m s \cos{\left(\theta \right)}"),
+        (
+            sympy.Eq(ACCELERATION * m, N * SIN),
+            r"m \ddot{x}_{\mathrm{block}} = N_{1} \sin{\left(\theta \right)}",
+        ),
+        (m * omega**2 * r, r"m \omega^{2} r"),
+        (2 * sympy.pi * sympy.sqrt(r / g), r"\frac{2 \pi \sqrt{r}}{\sqrt{g}}"),
+        (m * v * sympy.exp(-k * x), r"m v e^{- k x}"),
+        # already in order, or nothing to order: exactly sympy's
+        (m * v**2 / 2, r"\frac{m v^{2}}{2}"),
+        (-M * g - N * COS + T, r"- M g - N_{1} \cos{\left(\theta \right)} + T"),
+        (-x / 2, r"- \frac{x}{2}"),
+        (-(M + m), r"- M - m"),
+    ],
+)
+def test_products_are_written_in_a_physics_texts_order(expr, written):
+    assert latex(expr, symbol_names=WRITTEN) == written
+
+
+@pytest.mark.parametrize(
+    "expr",
+    [m * v**2 / 2, -x / 2, k * x**2 / 2, N * SIN, sympy.sqrt(2 * g * h)],
+)
+def test_an_expression_already_in_order_prints_as_sympy_prints_it(expr):
+    assert latex(expr) == sympy.latex(expr)
+
+
+def test_a_worked_solution_writes_newtons_law_mass_first():
+    model = {
+        "coordinates": ["y"],
+        "bodies": {"ball": {"mass": "m", "position": {"y": "y"}}},
+        "gravity": "g",
+        "quantities": {"fall": {"acceleration": "y"}},
+    }
+    result = derive(load_model(model, {"m": m, "g": g}))
+    newton = next(report for report in result.methods if report.name == "newton")
+    shown = [step.latex for step in newton.steps]
+    assert r"m \ddot{y}_{\mathrm{ball}} = - m g" in shown, shown
