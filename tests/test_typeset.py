@@ -1,5 +1,5 @@
 """Worked solutions write products as a physics text does (m g sin θ, m ÿ), not in sympy's alphabetical
-order (g m sin θ, ÿ m); only the printing changes."""
+order (g m sin θ, ÿ m), and single angles where simplify chose double ones; only the form changes."""
 
 from __future__ import annotations
 
@@ -7,6 +7,7 @@ import pytest
 import sympy
 
 from physics.engine import derive, load_model
+from physics.engine.tidy import single_angles
 from physics.typeset import latex
 
 m, M, g, s, theta, N, mu, X, k, x, v, h, r, omega, T = sympy.symbols(
@@ -64,3 +65,29 @@ def test_a_worked_solution_writes_newtons_law_mass_first():
     newton = next(report for report in result.methods if report.name == "newton")
     shown = [step.latex for step in newton.steps]
     assert r"m \ddot{y}_{\mathrm{ball}} = - m g" in shown, shown
+
+
+THETA_2 = 2 * theta
+
+
+@pytest.mark.parametrize(
+    ("expr", "written"),
+    [
+        (
+            sympy.Eq(X, m * g * sympy.sin(THETA_2) / (-2 * M + m * sympy.cos(THETA_2) - m)),
+            r"X = - \frac{m g \sin{\left(\theta \right)} \cos{\left(\theta \right)}}{M + m \sin^{2}{\left(\theta \right)}}",
+        ),
+        (
+            M * g * sympy.sin(THETA_2) / (2 * M - m * sympy.cos(THETA_2) + m),
+            r"\frac{M g \sin{\left(\theta \right)} \cos{\left(\theta \right)}}{M + m \sin^{2}{\left(\theta \right)}}",
+        ),
+        (sympy.cos(THETA_2), r"\cos{\left(2 \theta \right)}"),  # 2cos²θ - 1 would be longer
+        (g * SIN, r"g \sin{\left(\theta \right)}"),
+    ],
+)
+def test_worked_solutions_write_single_angles_where_no_longer(expr, written):
+    rewritten = single_angles(expr)
+    assert latex(rewritten) == written
+    sides = zip(rewritten.args, expr.args, strict=True) if isinstance(expr, sympy.Eq) else [(rewritten, expr)]
+    for new, old in sides:
+        assert sympy.simplify(sympy.expand_trig(new - old)) == 0

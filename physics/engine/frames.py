@@ -79,7 +79,7 @@ class FramesMethod(Method):
     def tex(self, expr: sympy.Basic) -> str:
         names = self.latex_names if self.model.frame is not None or self.support else self.mech.latex_names
         self._printed |= expr.free_symbols
-        return str(typeset.latex(expr, symbol_names=names))
+        return str(typeset.latex(tidy.single_angles(expr), symbol_names=names))
 
     @cached_property
     def frame_dofs(self) -> tuple[FrameDof, ...]:

@@ -60,7 +60,7 @@ class Method(ABC):
 
     def tex(self, expr: sympy.Basic) -> str:
         self._printed |= expr.free_symbols
-        return str(typeset.latex(expr, symbol_names=self.mech.latex_names))
+        return str(typeset.latex(tidy.single_angles(expr), symbol_names=self.mech.latex_names))
 
     def step(
         self, title: str, latex: str, kind: StepKind = StepKind.WORK, unknowns: Sequence[sympy.Basic] = ()

@@ -89,3 +89,35 @@ _trigsimp_module = importlib.import_module("sympy.simplify.trigsimp")
 if not hasattr(_trigsimp_module._futrig, "__wrapped__"):
     _trigsimp_module._futrig = _remembering(_trigsimp_module._futrig, _rewritten)  # type: ignore[attr-defined]
     _trigsimp_module.factor = _remembering(_trigsimp_module.factor, _factored)  # type: ignore[attr-defined]
+
+
+def single_angles(expr: sympy.Basic) -> sympy.Basic:
+    """`expr` as a worked solution writes it. Where `simplify` chose double angles (m g sin 2θ/(m cos 2θ
+    - 2M - m)), the same function in sin θ and cos θ when that is no longer, as textbooks write it
+    (-m g sin θ cos θ/(M + m sin²θ)); each side of an equation alike. Only the written form changes."""
+    if isinstance(expr, sympy.core.relational.Relational):
+        return expr.func(*(single_angles(side) for side in expr.args), evaluate=False)
+    if not isinstance(expr, sympy.Expr) or not _double_angles(expr):
+        return expr
+    expanded = sympy.expand_trig(expr)
+    angles = {f.args[0] for f in expanded.atoms(sympy.sin, sympy.cos)}
+    rewrites: list[dict[sympy.Basic, sympy.Basic]] = [{}]
+    for angle in angles:
+        rewrites += [
+            {sympy.cos(angle) ** 2: 1 - sympy.sin(angle) ** 2},
+            {sympy.sin(angle) ** 2: 1 - sympy.cos(angle) ** 2},
+        ]
+    candidates = [sympy.factor(sympy.cancel(expanded.subs(rewrite))) for rewrite in rewrites]
+    limit = sympy.count_ops(expr)
+    fitting = [c for c in candidates if not _double_angles(c) and sympy.count_ops(c) <= limit]
+    # The fewest operations, then the fewest minus signs: M + m sin²θ rather than -M + m cos²θ - m.
+    return min(fitting, key=lambda c: (sympy.count_ops(c), str(c).count("-")), default=expr)
+
+
+def _double_angles(expr: sympy.Basic) -> bool:
+    """sin or cos of an even multiple of an angle (sin 2θ, cos 4φ)."""
+    for function in expr.atoms(sympy.sin, sympy.cos):
+        factor, _ = function.args[0].as_coeff_Mul()
+        if factor.is_Integer and factor % 2 == 0 and factor != 0:
+            return True
+    return False
