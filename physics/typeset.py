@@ -2,15 +2,17 @@
 
 sympy orders a product's factors alphabetically, so a worked solution read `V = -g m s \\sin θ`,
 `\\ddot{x} m = N \\sin θ` and `M g m \\cos θ`, where every textbook writes `-m g s \\sin θ`, `m \\ddot{x}`,
-`M m g \\cos θ`. `latex` is `sympy.latex` with each product's factors ordered by what they are: numbers,
-then friction coefficients (μ m g), masses (m, M, m_1), sums in brackets ((M + m) \\ddot{X}), g, the
-other quantities, velocities and accelerations (m \\ddot{x}), roots, and functions last (\\sin θ);
-factors of one kind keep sympy's order. Only the printing changes: the expression is the same.
+`M m g \\cos θ`. `latex` is `sympy.latex` with each product's factors ordered by what they are:
+numbers, then friction coefficients (μ m g), masses (m, M, m_1), sums in brackets ((M + m) \\ddot{X}),
+g, the other quantities, velocities and accelerations (m \\ddot{x}), roots, and functions last
+(\\sin θ); factors of one kind keep sympy's order. A sum starts with a term added, as it is written
+(`T - m g`, `(m_2 - m_1 \\sin θ) g`), not `-m g + T`. Only the printing changes, never the expression.
 """
 
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 from typing import Any
 
 import sympy
@@ -38,20 +40,27 @@ class _TextbookLatex(LatexPrinter):  # type: ignore[misc]
         factors = expr.as_ordered_factors()
         ordered = sorted(factors, key=self._rank)
         if ordered == factors:
-            return str(super()._print_Mul(expr))
-        self._settings["order"] = "none"  # sympy keeps an unevaluated product's factors as given
-        try:
-            return str(super()._print_Mul(sympy.Mul(*ordered, evaluate=False)))
-        finally:
-            self._settings["order"] = self._order
+            return str(self._in_order(self._order, super()._print_Mul, expr))
+        return str(self._in_order("none", super()._print_Mul, sympy.Mul(*ordered, evaluate=False)))
 
     def _print_Add(self, expr: Any, order: str | None = None) -> str:
-        inner = self._settings["order"]
-        self._settings["order"] = self._order
+        terms: list[sympy.Expr] = self._in_order(self._order, self._as_ordered_terms, expr, order)
+        # A sum starts with a term added, as it is written: T - m g, (m_2 - m_1 sin θ) g, not -m g + T.
+        leading = next((i for i, term in enumerate(terms) if not term.could_extract_minus_sign()), 0)
+        if not leading:
+            return str(self._in_order(self._order, super()._print_Add, expr, order))
+        terms.insert(0, terms.pop(leading))
+        return str(self._in_order("none", super()._print_Add, sympy.Add(*terms, evaluate=False)))
+
+    def _in_order(self, order: str | None, write: Callable[..., Any], *args: Any) -> Any:
+        """`write(*args)` with the printer's order setting (its `order`: sympy's default is None; "none"
+        keeps an unevaluated sum's or product's arguments as given)."""
+        outer = self._settings["order"]
+        self._settings["order"] = order
         try:
-            return str(super()._print_Add(expr, order))
+            return write(*args)
         finally:
-            self._settings["order"] = inner
+            self._settings["order"] = outer
 
     def _rank(self, factor: sympy.Expr) -> int:
         if not factor.free_symbols:

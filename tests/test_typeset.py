@@ -35,11 +35,15 @@ WRITTEN = {ACCELERATION: r"\ddot{x}_{\mathrm{block}}"}
         (m * omega**2 * r, r"m \omega^{2} r"),
         (2 * sympy.pi * sympy.sqrt(r / g), r"\frac{2 \pi \sqrt{r}}{\sqrt{g}}"),
         (m * v * sympy.exp(-k * x), r"m v e^{- k x}"),
-        # already in order, or nothing to order: exactly sympy's
         (m * v**2 / 2, r"\frac{m v^{2}}{2}"),
-        (-M * g - N * COS + T, r"- M g - N_{1} \cos{\left(\theta \right)} + T"),
+        (-M * g - N * COS + T, r"T - M g - N_{1} \cos{\left(\theta \right)}"),
+        (
+            (sympy.sin(X) - mu * sympy.cos(X)) * g,
+            r"\left(\sin{\left(X \right)} - \mu \cos{\left(X \right)}\right) g",
+        ),
+        (sympy.Eq(ACCELERATION * m, T - m * g), r"m \ddot{x}_{\mathrm{block}} = T - m g"),
         (-x / 2, r"- \frac{x}{2}"),
-        (-(M + m), r"- M - m"),
+        (-(M + m), r"- M - m"),  # nothing added to start with
     ],
 )
 def test_products_are_written_in_a_physics_texts_order(expr, written):
