@@ -6,7 +6,8 @@ sympy orders a product's factors alphabetically, so a worked solution read `V = 
 numbers, then friction coefficients (μ m g), masses (m, M, m_1), sums in brackets ((M + m) \\ddot{X}),
 g, the other quantities, velocities and accelerations (m \\ddot{x}), roots, and functions last
 (\\sin θ); factors of one kind keep sympy's order. A sum starts with a term added, as it is written
-(`T - m g`, `(m_2 - m_1 \\sin θ) g`), not `-m g + T`. Only the printing changes, never the expression.
+(`T - m g`, `(m_2 - m_1 \\sin θ) g`), not `-m g + T`, and a sum of terms all subtracted gives its sign to
+the product (`-(M + m) g`, not `(-M - m) g`). Only the printing changes, never the expression.
 """
 
 from __future__ import annotations
@@ -38,6 +39,12 @@ class _TextbookLatex(LatexPrinter):  # type: ignore[misc]
             positive = -expr
             return f"- ({self._print(positive)})" if positive.is_Add else f"- {self._print(positive)}"
         factors = expr.as_ordered_factors()
+        if any(_all_subtracted(factor) for factor in factors):
+            # (-M - m) g sin²θ is written -(M + m) g sin²θ: the sign out of every sum that is all minus
+            flipped = [-factor if _all_subtracted(factor) else factor for factor in factors]
+            product = sympy.Mul(*flipped, evaluate=False)
+            negative = sum(map(_all_subtracted, factors)) % 2
+            return f"- {self._print_Mul(product)}" if negative else self._print_Mul(product)
         ordered = sorted(factors, key=self._rank)
         if ordered == factors:
             return str(self._in_order(self._order, super()._print_Mul, expr))
@@ -88,6 +95,10 @@ class _TextbookLatex(LatexPrinter):  # type: ignore[misc]
         if name == "g":
             return GRAVITY
         return QUANTITY
+
+
+def _all_subtracted(factor: sympy.Expr) -> bool:
+    return bool(factor.is_Add) and all(term.could_extract_minus_sign() for term in factor.args)
 
 
 def latex(expr: Any, **settings: Any) -> str:

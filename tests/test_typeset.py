@@ -43,6 +43,8 @@ WRITTEN = {ACCELERATION: r"\ddot{x}_{\mathrm{block}}"}
         ),
         (sympy.Eq(ACCELERATION * m, T - m * g), r"m \ddot{x}_{\mathrm{block}} = T - m g"),
         (-x / 2, r"- \frac{x}{2}"),
+        (g * (-M - m) * SIN**2, r"- \left(M + m\right) g \sin^{2}{\left(\theta \right)}"),
+        ((-M - m) * (-g - x), r"\left(M + m\right) \left(g + x\right)"),
         (-(M + m), r"- M - m"),  # nothing added to start with
     ],
 )
