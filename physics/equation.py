@@ -169,9 +169,24 @@ class EquationQuestion:
     def _values(self) -> dict[sympy.Symbol, sympy.Expr]:
         return {u.symbol: u.value for u in self.unknowns if u.value is not None}
 
+    @cached_property
+    def _values_put_in(self) -> tuple[tuple[tuple[Floats, Floats], Unknown], ...]:
+        """The asked equation with one unknown replaced by the value the model gives it (T by m g k²/(k²
+        + r²)), where another unknown is left: a student who solved for it first writes that."""
+        found = []
+        for unknown in self.unknowns:
+            if unknown.value is None or unknown.symbol not in self.difference.free_symbols:
+                continue
+            put_in = self.difference.xreplace({unknown.symbol: unknown.value})
+            if not put_in.free_symbols & {u.symbol for u in self.unknowns}:
+                continue  # nothing asked is left: it would hold for every answer that holds
+            found.append((self._both(put_in), unknown))
+        return tuple(found)
+
     def prepare(self) -> EquationQuestion:
         self._target  # noqa: B018
         self._wrong  # noqa: B018
+        self._values_put_in  # noqa: B018
         return self
 
     def _proportional(
@@ -208,6 +223,15 @@ class EquationQuestion:
         for values, feedback in self._wrong:
             if self._proportional(found, values)[0]:
                 return Judgement(False, Reason.KNOWN_MISTAKE, feedback)
+        for values, unknown in self._values_put_in:
+            if self._proportional(found, values)[0]:
+                said = f" ({unknown.meaning})" if unknown.meaning else ""
+                return Judgement(
+                    False,
+                    Reason.WRONG_VALUE,
+                    f"This is the equation asked with ${typeset.latex(unknown.symbol)}${said} replaced by its "
+                    f"value: write ${typeset.latex(unknown.symbol)}$ itself, as the question asks.",
+                )
         if self._holds(lhs, rhs):
             return Judgement(
                 False,

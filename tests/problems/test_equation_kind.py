@@ -188,6 +188,10 @@ def _compiled(problem: str):
         ("rotation", "m a = m g - T", "holds, but it is not the one asked"),
         ("rotation", "m k^2 a = T r", "angular acceleration is $a/r$"),  # the author's mistake
         ("newton_vertical", "m a = m g + T", "sign"),
+        # solved for the tension first, and its value written in: told to keep the unknown asked for
+        ("newton_vertical", "m a = m g - m g k^2/(k^2 + r^2)", "$T$ (the tension in the string) replaced by"),
+        ("rotation", "m k^2 a/r = m g k^2 r/(k^2 + r^2)", "$T$ (the tension in the string) replaced by"),
+        ("newton_vertical", "m g r^2/(k^2 + r^2) = m g - T", "replaced by its value: write $a$ itself"),
     ],
 )
 def test_a_bank_equation_tells_a_true_equation_that_is_not_the_one_asked(
