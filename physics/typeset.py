@@ -3,11 +3,12 @@
 sympy orders a product's factors alphabetically, so a worked solution read `V = -g m s \\sin θ`,
 `\\ddot{x} m = N \\sin θ` and `M g m \\cos θ`, where every textbook writes `-m g s \\sin θ`, `m \\ddot{x}`,
 `M m g \\cos θ`. `latex` is `sympy.latex` with each product's factors ordered by what they are:
-numbers, then friction coefficients (μ m g), masses (m, M, m_1), sums in brackets ((M + m) \\ddot{X}),
-g, the other quantities, velocities and accelerations (m \\ddot{x}), roots, and functions last
-(\\sin θ); factors of one kind keep sympy's order. A sum starts with a term added, as it is written
-(`T - m g`, `(m_2 - m_1 \\sin θ) g`), not `-m g + T`, and a sum of terms all subtracted gives its sign to
-the product (`-(M + m) g`, not `(-M - m) g`). Only the printing changes, never the expression.
+numbers, then friction coefficients (μ m g), masses (m, M, m_1), g, the other quantities, velocities
+and accelerations (m \\ddot{x}), roots, and functions last (\\sin θ); a sum goes with what it holds
+((M + m) g, U_0 r_0^6 (r_0^6 - r^6), g (\\sin α - μ \\cos α)), and factors of one kind keep sympy's
+order. Square roots are one root where that is exact (√(2 g L), not √2 √g √L). A sum starts with a term
+added (`T - m g`, not `-m g + T`), and a sum of terms all subtracted gives its sign to the product
+(`-(M + m) g`, not `(-M - m) g`). Only the printing changes, never the expression.
 """
 
 from __future__ import annotations
@@ -24,7 +25,7 @@ _COEFFICIENT = re.compile(r"^mu(_?[A-Za-z0-9]+)?$")
 _DOTTED = re.compile(r"\\d?dot\b|_d?dot$")
 
 # Ranks of a factor's kind, in the order they are written.
-NUMBER, CONSTANT, COEFFICIENT, MASS, SUM, GRAVITY, QUANTITY, RATE, ROOT, FUNCTION = range(10)
+NUMBER, CONSTANT, COEFFICIENT, MASS, GRAVITY, QUANTITY, RATE, ROOT, FUNCTION = range(9)
 
 
 class _TextbookLatex(LatexPrinter):  # type: ignore[misc]
@@ -45,7 +46,7 @@ class _TextbookLatex(LatexPrinter):  # type: ignore[misc]
             product = sympy.Mul(*flipped, evaluate=False)
             negative = sum(map(_all_subtracted, factors)) % 2
             return f"- {self._print_Mul(product)}" if negative else self._print_Mul(product)
-        ordered = sorted(factors, key=self._rank)
+        ordered = sorted(_one_root(factors), key=self._place)
         if ordered == factors:
             return str(self._in_order(self._order, super()._print_Mul, expr))
         return str(self._in_order("none", super()._print_Mul, sympy.Mul(*ordered, evaluate=False)))
@@ -69,12 +70,21 @@ class _TextbookLatex(LatexPrinter):  # type: ignore[misc]
         finally:
             self._settings["order"] = outer
 
+    def _place(self, factor: sympy.Expr) -> tuple[int, bool]:
+        """Where a factor goes: by its rank, and a sum after the factors of its rank (m (…), U_0 r_0^6
+        (r_0^6 - r^6))."""
+        base, exponent = factor.as_base_exp()
+        return self._rank(factor), bool(base.is_Add and exponent.is_Integer)
+
     def _rank(self, factor: sympy.Expr) -> int:
         if not factor.free_symbols:
             return NUMBER if factor.is_Number else CONSTANT
         base, exponent = factor.as_base_exp()
         if base.is_Add:
-            return SUM if exponent.is_Integer else ROOT
+            # a sum goes with what it holds: (M + m) with the masses, (1 - cos θ) with the functions
+            if not exponent.is_Integer:
+                return ROOT
+            return max(self._rank(f) for term in base.args for f in sympy.Mul.make_args(term))
         if isinstance(base, sympy.Symbol):
             return self._symbol_rank(base)
         if isinstance(base, sympy.Derivative):
@@ -95,6 +105,17 @@ class _TextbookLatex(LatexPrinter):  # type: ignore[misc]
         if name == "g":
             return GRAVITY
         return QUANTITY
+
+
+def _one_root(factors: list[sympy.Expr]) -> list[sympy.Expr]:
+    """Square roots as one: √2 √g √L √(1 - cos θ) is written √(2 g L (1 - cos θ)). Exact where at most
+    one of the roots' bases may be negative (√a √b = √(a b) when a ≥ 0), so only then."""
+    roots = [f for f in factors if f.is_Pow and f.exp == sympy.S.Half]
+    unsure = [f for f in roots if not f.base.is_nonnegative]
+    if len(roots) < 2 or len(unsure) > 1:
+        return factors
+    merged = sympy.Pow(sympy.Mul(*(f.base for f in roots), evaluate=False), sympy.S.Half, evaluate=False)
+    return [f for f in factors if f not in roots] + [merged]
 
 
 def _all_subtracted(factor: sympy.Expr) -> bool:
