@@ -14,6 +14,7 @@ printable solution and the student's released solution all render it with one te
 from __future__ import annotations
 
 import re
+from collections import Counter
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from decimal import Decimal
@@ -128,10 +129,12 @@ def _split_top_level(tex: str, separators: tuple[str, ...]) -> list[str]:
 
 def body_words(doc: ProblemDocument, notation: Notation, masses: Mapping[str, str]) -> dict[str, str]:
     """Each body's words: the author's, else from its mass symbol's meaning ("mass of the yo-yo" is "the
-    yo-yo"), else the notation's default ("the block")."""
+    yo-yo"), else the notation's default ("the block"). A mass several bodies share names none of them
+    ("mass of each object" is not "the each object")."""
     words = dict(notation.bodies)
+    held = Counter(masses.values())
     for body, mass in masses.items():
-        symbol = doc.symbols.get(mass)
+        symbol = doc.symbols.get(mass) if held[mass] == 1 else None
         match = _MASS_OF.match(symbol.meaning.strip()) if symbol is not None else None
         if match and words.get(body, "").startswith("the ") and not _authored(notation, body):
             words[body] = "the " + match.group(1).rstrip(".")

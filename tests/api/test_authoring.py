@@ -190,3 +190,11 @@ def test_upload_using_abs_is_accepted_and_graded_through_the_worker(
     assert (wrong["verdict"], wrong["reason"]) == ("incorrect", "wrong_value")
     mistake = submit("abs(m1 - m2) g/m2")
     assert (mistake["reason"], mistake["feedback"]) == ("known_mistake", "Accelerate both masses.")
+
+
+def test_solution_names_bodies_that_share_a_mass_by_their_own_names(client, instructor_headers):
+    # rolling-incline: a cylinder, a hoop, a sphere and a point, each of mass m ("mass of each object")
+    solution = client.get("/v1/problems/rolling-incline/solution", headers=instructor_headers).json()
+    titles = [step["title"] for method in solution["methods"] for step in method["steps"]]
+    assert not any("the each object" in title for title in titles), titles
+    assert any("for the hoop" in title for title in titles), titles
