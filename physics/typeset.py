@@ -8,7 +8,8 @@ and accelerations (m \\ddot{x}), roots, and functions last (\\sin θ); a sum goe
 ((M + m) g, U_0 r_0^6 (r_0^6 - r^6), g (\\sin α - μ \\cos α)), and factors of one kind keep sympy's
 order. Square roots are one root where that is exact (√(2 g L), not √2 √g √L). A sum starts with a term
 added (`T - m g`, not `-m g + T`), and a sum of terms all subtracted gives its sign to the product
-(`-(M + m) g`, not `(-M - m) g`). Only the printing changes, never the expression.
+(`-(M + m) g`, not `(-M - m) g`), and a negative product's sign goes into a difference it holds
+(`(M + m) g L (1 - \\cos θ)`, not `-(M + m) g L (\\cos θ - 1)`). Only the printing changes, never the expression.
 """
 
 from __future__ import annotations
@@ -36,20 +37,29 @@ class _TextbookLatex(LatexPrinter):  # type: ignore[misc]
     def _print_Mul(self, expr: Any) -> str:
         if not isinstance(expr, sympy.Mul) or not expr.is_commutative:
             return str(super()._print_Mul(expr))
-        if expr.could_extract_minus_sign():  # written as sympy writes it: "- " and the rest
-            positive = -expr
-            return f"- ({self._print(positive)})" if positive.is_Add else f"- {self._print(positive)}"
-        factors = expr.as_ordered_factors()
-        if any(_all_subtracted(factor) for factor in factors):
-            # (-M - m) g sin²θ is written -(M + m) g sin²θ: the sign out of every sum that is all minus
-            flipped = [-factor if _all_subtracted(factor) else factor for factor in factors]
-            product = sympy.Mul(*flipped, evaluate=False)
-            negative = sum(map(_all_subtracted, factors)) % 2
-            return f"- {self._print_Mul(product)}" if negative else self._print_Mul(product)
-        ordered = sorted(_one_root(factors), key=self._place)
+        negative = bool(expr.could_extract_minus_sign())
+        factors = list((-expr if negative else expr).as_ordered_factors())
+        changed = [*factors]
+        for i, factor in enumerate(changed):
+            if _all_subtracted(factor):  # (-M - m) g is -(M + m) g
+                changed[i], negative = -factor, not negative
+        mixed = [i for i, factor in enumerate(changed) if _mixed(factor)]
+        if negative and mixed:  # -(M + m) g L (cos θ - 1) is (M + m) g L (1 - cos θ)
+            changed[mixed[-1]], negative = -changed[mixed[-1]], False
+        ordered = sorted(_one_root(changed), key=self._place)
         if ordered == factors:
-            return str(self._in_order(self._order, super()._print_Mul, expr))
-        return str(self._in_order("none", super()._print_Mul, sympy.Mul(*ordered, evaluate=False)))
+            positive = sympy.Mul(*factors)
+            written = (
+                self._print(positive)
+                if len(factors) == 1
+                else self._in_order(self._order, super()._print_Mul, positive)
+            )
+        else:
+            # sympy keeps an unevaluated product's factors as given
+            written = self._in_order("none", super()._print_Mul, sympy.Mul(*ordered, evaluate=False))
+        if not negative:
+            return str(written)
+        return rf"- \left({written}\right)" if len(ordered) == 1 and ordered[0].is_Add else f"- {written}"
 
     def _print_Add(self, expr: Any, order: str | None = None) -> str:
         terms: list[sympy.Expr] = self._in_order(self._order, self._as_ordered_terms, expr, order)
@@ -120,6 +130,15 @@ def _one_root(factors: list[sympy.Expr]) -> list[sympy.Expr]:
 
 def _all_subtracted(factor: sympy.Expr) -> bool:
     return bool(factor.is_Add) and all(term.could_extract_minus_sign() for term in factor.args)
+
+
+def _mixed(factor: sympy.Expr) -> bool:
+    """A difference: a sum with terms added and subtracted."""
+    return (
+        bool(factor.is_Add)
+        and any(t.could_extract_minus_sign() for t in factor.args)
+        and not _all_subtracted(factor)
+    )
 
 
 def latex(expr: Any, **settings: Any) -> str:

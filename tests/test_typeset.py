@@ -9,6 +9,8 @@ import sympy
 from physics.engine import derive, load_model
 from physics.engine.tidy import single_angles
 from physics.typeset import latex
+from problems.compiled import compile_problem
+from tests.bank import bank_documents
 
 m, M, g, s, theta, N, mu, X, k, x, v, h, r, omega, T = sympy.symbols(
     "m M g s theta N_1 mu X k x v h r omega T", positive=True
@@ -58,6 +60,8 @@ WRITTEN = {ACCELERATION: r"\ddot{x}_{\mathrm{block}}"}
         (g * (-M - m) * SIN**2, r"- \left(M + m\right) g \sin^{2}{\left(\theta \right)}"),
         ((-M - m) * (-g - x), r"\left(M + m\right) \left(g + x\right)"),
         (-(M + m), r"- M - m"),  # nothing added to start with
+        (-(M + m) * g * h * (COS - 1), r"\left(M + m\right) g h \left(1 - \cos{\left(\theta \right)}\right)"),
+        (-x * (h - 1), r"x \left(1 - h\right)"),
     ],
 )
 def test_products_are_written_in_a_physics_texts_order(expr, written):
@@ -109,3 +113,14 @@ def test_worked_solutions_write_single_angles_where_no_longer(expr, written):
     sides = zip(rewritten.args, expr.args, strict=True) if isinstance(expr, sympy.Eq) else [(rewritten, expr)]
     for new, old in sides:
         assert sympy.simplify(sympy.expand_trig(new - old)) == 0
+
+
+def test_an_impacts_worked_solution_writes_its_own_symbols_as_physics_does():
+    derived = compile_problem(bank_documents()["ballistic-pendulum"]).derived
+    assert derived is not None
+    shown = " ".join(step.latex for method in derived.raw.methods for step in method.steps)
+    assert (
+        r"u_{x,\mathrm{block}}" in shown and r"J_{\mathrm{string}}" in shown
+    )  # were u_{x block}, J_{string}
+    assert r"\dot{\phi}" in shown and "phi_{dot}" not in shown
+    assert r"\sqrt{2 g L \left(1 - \cos{\left(\theta \right)}\right)}" in shown

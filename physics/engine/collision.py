@@ -114,7 +114,10 @@ def by_conservation(model: Model, kind: QuantityKind, steps: list[tuple[str, str
     steps.append(
         (
             "Generalized momentum across the impulse",
-            r",\ ".join(typeset.latex(sympy.Eq(e + b, b)) for e, b in zip(equations, brought, strict=True)),
+            r",\ ".join(
+                typeset.latex(sympy.Eq(e + b, b), symbol_names=mech.latex_names)
+                for e, b in zip(equations, brought, strict=True)
+            ),
         )
     )
     velocities = solve_linear(equations, list(mech.qd), "momentum across the collision")
@@ -126,7 +129,9 @@ def by_conservation(model: Model, kind: QuantityKind, steps: list[tuple[str, str
         if work == 0
         else "Energy after the collision, less friction's work"
     )
-    steps.append((title, typeset.latex(sympy.Eq(kinetic, tidy.simplify(rise - work)))))
+    steps.append(
+        (title, typeset.latex(sympy.Eq(kinetic, tidy.simplify(rise - work)), symbol_names=mech.latex_names))
+    )
     return _finish(kinetic, tidy.simplify(rise - work), model, kind, steps)
 
 
@@ -162,7 +167,8 @@ def _nonconservative_work(
     steps.append(
         (
             "Work of friction and the other non-conservative forces until it stops",
-            rf"W = \int Q_{{\mathrm{{nc}}}}\,d{typeset.latex(q)} = " + typeset.latex(work),
+            rf"W = \int Q_{{\mathrm{{nc}}}}\,d{typeset.latex(q, symbol_names=mech.latex_names)} = "
+            + typeset.latex(work, symbol_names=mech.latex_names),
         )
     )
     return work
@@ -182,10 +188,16 @@ def by_newton(model: Model, kind: QuantityKind, steps: list[tuple[str, str]]) ->
         for i, (d, u, p) in enumerate(zip(mech.dofs, velocity, momentum, strict=True))
     ]
     equations += [sympy.Add(*(g_i * u for g_i, u in zip(g, velocity, strict=True))) for g in gradients]
+    # just after the impact: u_{x,block} for the block's x velocity, J_{string} for the string's impulse
+    names = {
+        **mech.latex_names,
+        **{u: rf"u_{{{_component(d.name)}}}" for u, d in zip(velocity, mech.dofs, strict=True)},
+        **{j: rf"J_{{\mathrm{{{c.name}}}}}" for j, c in zip(impulses, after.constraints, strict=True)},
+    }
     steps.append(
         (
             "Impulse balance, constraint impulses unknown",
-            r",\ ".join(typeset.latex(sympy.Eq(e, 0)) for e in equations),
+            r",\ ".join(typeset.latex(sympy.Eq(e, 0), symbol_names=names) for e in equations),
         )
     )
     solution = solve_linear(equations, velocity + impulses, "impulse balance")
@@ -209,7 +221,8 @@ def by_newton(model: Model, kind: QuantityKind, steps: list[tuple[str, str]]) ->
     steps.append(
         (
             "Work-energy theorem up to the turning point",
-            rf"0 - K_1 = \int Q\,d{typeset.latex(q)} = " + typeset.latex(work),
+            rf"0 - K_1 = \int Q\,d{typeset.latex(q, symbol_names=names)} = "
+            + typeset.latex(work, symbol_names=names),
         )
     )
     return _finish(kinetic, -work, model, kind, steps)
@@ -219,3 +232,10 @@ def by_newton(model: Model, kind: QuantityKind, steps: list[tuple[str, str]]) ->
 def derived(method: Method, quantity: Quantity) -> sympy.Expr:
     """Each method works the collision its own way (`collision` of Newton and of conservation)."""
     return method.collision(quantity.kind)
+
+
+def _component(dof: str) -> str:
+    """A Cartesian degree of freedom's subscript: `x_block` is x,block; `phi_disk` is φ,disk."""
+    axis, _, body = dof.partition("_")
+    written = typeset.latex(sympy.Symbol(axis))
+    return rf"{written},\mathrm{{{body}}}" if body else written
