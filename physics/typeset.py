@@ -142,5 +142,6 @@ def _mixed(factor: sympy.Expr) -> bool:
 
 
 def latex(expr: Any, **settings: Any) -> str:
-    """`sympy.latex(expr, **settings)`, with products in a physics text's order."""
-    return str(_TextbookLatex(settings).doprint(expr))
+    """`sympy.latex(expr, **settings)`, with products in a physics text's order (and arctan, not
+    sympy's \\operatorname{atan})."""
+    return str(_TextbookLatex({"inv_trig_style": "full", **settings}).doprint(expr))

@@ -49,6 +49,7 @@ WRITTEN = {ACCELERATION: r"\ddot{x}_{\mathrm{block}}"}
         (sympy.sqrt(REAL) * sympy.sqrt(OTHER_REAL), r"\sqrt{x} \sqrt{y}"),  # both may be negative
         (2 * sympy.pi * sympy.sqrt(r / g), r"\frac{2 \pi \sqrt{r}}{\sqrt{g}}"),
         (m * v * sympy.exp(-k * x), r"m v e^{- k x}"),
+        (sympy.atan(1 / (2 * mu)), r"\arctan{\left(\frac{1}{2 \mu} \right)}"),
         (m * v**2 / 2, r"\frac{m v^{2}}{2}"),
         (-M * g - N * COS + T, r"T - M g - N_{1} \cos{\left(\theta \right)}"),
         (
