@@ -45,7 +45,8 @@ class _TextbookLatex(LatexPrinter):  # type: ignore[misc]
                 changed[i], negative = -factor, not negative
         mixed = [i for i, factor in enumerate(changed) if _mixed(factor)]
         if negative and mixed:  # -(M + m) g L (cos θ - 1) is (M + m) g L (1 - cos θ)
-            changed[mixed[-1]], negative = -changed[mixed[-1]], False
+            base, exponent = changed[mixed[-1]].as_base_exp()
+            changed[mixed[-1]], negative = sympy.Pow(-base, exponent), False
         ordered = sorted(_one_root(changed), key=self._place)
         if ordered == factors:
             positive = sympy.Mul(*factors)
@@ -133,12 +134,13 @@ def _all_subtracted(factor: sympy.Expr) -> bool:
 
 
 def _mixed(factor: sympy.Expr) -> bool:
-    """A difference: a sum with terms added and subtracted."""
-    return (
-        bool(factor.is_Add)
-        and any(t.could_extract_minus_sign() for t in factor.args)
-        and not _all_subtracted(factor)
-    )
+    """A difference, or an odd power of one (1/(r - R)): a sum with terms added and subtracted, whose
+    sign turns with the factor's."""
+    base, exponent = factor.as_base_exp()
+    if not (exponent.is_Integer and exponent % 2):
+        return False
+    signs = [t.could_extract_minus_sign() for t in base.args] if base.is_Add else []
+    return any(signs) and not all(signs)
 
 
 def latex(expr: Any, **settings: Any) -> str:

@@ -63,6 +63,7 @@ WRITTEN = {ACCELERATION: r"\ddot{x}_{\mathrm{block}}"}
         (-(M + m), r"- M - m"),  # nothing added to start with
         (-(M + m) * g * h * (COS - 1), r"\left(M + m\right) g h \left(1 - \cos{\left(\theta \right)}\right)"),
         (-x * (h - 1), r"x \left(1 - h\right)"),
+        (-5 * g / (7 * (r - h)), r"\frac{5 g}{7 h - 7 r}"),
     ],
 )
 def test_products_are_written_in_a_physics_texts_order(expr, written):
@@ -125,3 +126,16 @@ def test_an_impacts_worked_solution_writes_its_own_symbols_as_physics_does():
     )  # were u_{x block}, J_{string}
     assert r"\dot{\phi}" in shown and "phi_{dot}" not in shown
     assert r"\sqrt{2 g L \left(1 - \cos{\left(\theta \right)}\right)}" in shown
+
+
+def test_small_oscillations_write_the_inertia_as_one_factor():
+    # it was ½ 7mR²/5 - 14mRr/5 + 7mr²/5 θ̇²: a sum multiplied without brackets
+    derived = compile_problem(bank_documents()["bowl-rolling"]).derived
+    assert derived is not None
+    energy = next(
+        step.latex
+        for method in derived.raw.methods
+        for step in method.steps
+        if step.title.startswith("Small oscillations from the energy")
+    )
+    assert r"\tfrac12\, \frac{7 m \left(" in energy and r"- \frac{14 m R r}{5}" not in energy, energy

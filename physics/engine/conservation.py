@@ -144,14 +144,21 @@ class ConservationMethod(Method):
         curvature = sympy.diff(self.mech.potential, c.symbol, 2).subs(c.symbol, equilibrium)
         omega2 = tidy.simplify(curvature / inertia.subs(c.symbol, equilibrium))
         letters, q = self.mech.notation.letters, self.tex(c.symbol)
+        inertia_there = self._factor(sympy.factor(inertia.subs(c.symbol, equilibrium)))
+        curvature_there = self._factor(sympy.factor(curvature))
         self.step(
             "Small oscillations from the energy: its inertia and the curvature of "
             f"${letters.potential}$ at the equilibrium",
-            rf"{letters.energy} \approx \tfrac12\, {self.tex(inertia.subs(c.symbol, equilibrium))}\, "
-            rf"{self.tex(c.velocity)}^2 + \tfrac12\, {self.tex(curvature)}\,({q} - {q}_{{\mathrm{{eq}}}})^2,"
-            r"\ \omega^2 = " + self.tex(omega2),
+            rf"{letters.energy} \approx \tfrac12\, {inertia_there}\, "
+            rf"{self.tex(c.velocity)}^2 + \tfrac12\, {curvature_there}\,({q} - {q}_{{\mathrm{{eq}}}})^2,"
+            r"\ \omega^2 = " + self.tex(sympy.factor(omega2)),
         )
         return tidy.simplify(sympy.sqrt(omega2))
+
+    def _factor(self, expr: sympy.Expr) -> str:
+        """A factor of a product, written: a sum in brackets (½ (a + b) θ̇², not ½ a + b θ̇²)."""
+        written = self.tex(expr)
+        return rf"\left({written}\right)" if expr.is_Add else written
 
     def mode_matrices(self, point: dict[sympy.Symbol, sympy.Expr]) -> tuple[sympy.Matrix, sympy.Matrix]:
         """The energy expanded to second order about the equilibrium: T = q'^T M q'/2, V = q^T K q/2."""

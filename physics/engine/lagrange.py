@@ -202,9 +202,9 @@ class LagrangeMethod(Method):
         self.step(
             "Small oscillations: the mass matrix $\\mathbf{M}$ and stiffness matrix $\\mathbf{K}$",
             r"\mathbf{M}\ddot{\mathbf{q}} + \mathbf{K}\mathbf{q} = 0,\ \mathbf{M} = "
-            + self.tex(mass)
+            + self.tex(mass.applyfunc(sympy.factor))
             + r",\ \mathbf{K} = "
-            + self.tex(tidy.simplify(stiffness))
+            + self.tex(tidy.simplify(stiffness).applyfunc(sympy.factor))
             + r",\ \omega^2 = "
             + self.tex(omega2),
         )
