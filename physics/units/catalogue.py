@@ -142,7 +142,13 @@ CATALOGUE: tuple[CatalogueEntry, ...] = (
     CatalogueEntry("speed_of_light", False, symbol="c", si=False, in_products=False),  # 0.8 c, MeV/c^2
     # An acceleration in gees (`3.2 g0`, and `3.2 g` where an acceleration is expected, MEANINGS).
     CatalogueEntry(
-        "standard_gravity", False, symbol="g0", latex="g_{0}", si=False, skip_spellings=("gravity",)
+        "standard_gravity",
+        False,
+        symbol="g0",
+        latex="g_{0}",
+        si=False,
+        skip_spellings=("gravity",),
+        extra_spellings=("gn", "gee", "gees"),  # gn as g_n is written, without its underscore
     ),
 )
 

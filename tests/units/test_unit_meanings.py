@@ -56,6 +56,8 @@ SETTLED = [
     ("0.467 g0", "m/s^2", "4.5807", "0.467 g0", None),
     ("0.467 g_0", "m/s^2", "4.5807", "0.467 g0", None),
     ("0.467 g_n", "m/s^2", "4.5807", "0.467 g0", None),
+    ("0.467 gn", "m/s^2", "4.5807", "0.467 g0", None),
+    ("0.467 gees", "m/s^2", "4.5807", "0.467 g0", None),
     ("500 g", "kg", "0.5", "500 g", None),
     ("1 g/cm^3", "kg/m^3", "1000", "1 g/cm^3", None),
     # Degrees typed without the degree sign, where a temperature is expected.
