@@ -21,8 +21,8 @@ from typing import Any
 import sympy
 from sympy.printing.latex import LatexPrinter
 
-_MASS = re.compile(r"^[mM](_?[A-Za-z0-9]+)?$")
-_COEFFICIENT = re.compile(r"^mu(_?[A-Za-z0-9]+)?$")
+_MASS = re.compile(r"^[mM](_[A-Za-z0-9]+|[0-9]+)?$")  # m, M, m_1, m1, m_block
+_COEFFICIENT = re.compile(r"^mu(_[A-Za-z0-9]+|[a-z])?$")  # mu, mu_k, mu_s, muk
 _DOTTED = re.compile(r"\\d?dot\b|_d?dot$")
 
 # Ranks of a factor's kind, in the order they are written.
