@@ -10,6 +10,7 @@ equation's own wrong versions: each term left out, each term's sign flipped, sin
 
 from __future__ import annotations
 
+import contextlib
 from collections.abc import Mapping
 from dataclasses import dataclass
 from functools import cached_property
@@ -18,10 +19,12 @@ import numpy as np
 import sympy
 
 from physics import typeset
+from physics.dimensions import Dimension, describe
 from physics.errors import AnswerError, ParseError
 from physics.mathinput import InputLimits, parse_math
 from physics.proportional import Sample, close, factor_text, matched
 from physics.symbolic import SymbolicContext
+from physics.symbolic.dimensional import DimensionMismatch, UnknownDimension, expression_dimension
 from physics.symbolic.floats import Floats
 from physics.verdict import InputProblem, Judgement, Preview, ReadAs, Reason, Verdict
 
@@ -183,10 +186,45 @@ class EquationQuestion:
             found.append((self._both(put_in), unknown))
         return tuple(found)
 
+    @cached_property
+    def _dimensions(self) -> dict[sympy.Symbol, Dimension]:
+        """The problem's symbols' dimensions, and each unknown's where the model gives its value."""
+        found = {symbol: spec.dimension for symbol, spec in self.context.symbols.items() if spec.dimension}
+        for unknown in self.unknowns:
+            # a value without symbols (0 where nothing accelerates) says nothing of its dimension
+            if unknown.value is not None and unknown.value.free_symbols:
+                with contextlib.suppress(DimensionMismatch, UnknownDimension):
+                    found[unknown.symbol] = expression_dimension(unknown.value, found)
+        return found
+
+    def _dimension_fault(self, lhs: sympy.Expr, rhs: sympy.Expr) -> str | None:
+        """Why the equation cannot hold whatever the values: its sides differ in dimension, or one adds
+        unlike quantities (m a = m g - T/m). None where it is consistent, or a name's dimension unknown."""
+        dims = self._dimensions
+        sides = []
+        for side, expr in (("left", lhs), ("right", rhs)):
+            try:
+                sides.append(expression_dimension(expr, dims))
+            except UnknownDimension:
+                return None
+            except DimensionMismatch as mismatch:
+                return (
+                    f"The {side} side of your equation {mismatch.message}: each of its terms must be the "
+                    "same kind of quantity."
+                )
+        left, right = sides
+        if left == right:
+            return None
+        return (
+            f"The two sides of your equation differ in dimension: the left is {describe(left)}, the right "
+            f"{describe(right)}, so it cannot hold."
+        )
+
     def prepare(self) -> EquationQuestion:
         self._target  # noqa: B018
         self._wrong  # noqa: B018
         self._values_put_in  # noqa: B018
+        self._dimensions  # noqa: B018
         return self
 
     def _proportional(
@@ -223,6 +261,9 @@ class EquationQuestion:
         for values, feedback in self._wrong:
             if self._proportional(found, values)[0]:
                 return Judgement(False, Reason.KNOWN_MISTAKE, feedback)
+        fault = self._dimension_fault(lhs, rhs)
+        if fault is not None:
+            return Judgement(False, Reason.WRONG_DIMENSION, fault)
         for values, unknown in self._values_put_in:
             if self._proportional(found, values)[0]:
                 said = f" ({unknown.meaning})" if unknown.meaning else ""

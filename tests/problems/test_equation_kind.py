@@ -192,6 +192,17 @@ def _compiled(problem: str):
         ("newton_vertical", "m a = m g - m g k^2/(k^2 + r^2)", "$T$ (the tension in the string) replaced by"),
         ("rotation", "m k^2 a/r = m g k^2 r/(k^2 + r^2)", "$T$ (the tension in the string) replaced by"),
         ("newton_vertical", "m g r^2/(k^2 + r^2) = m g - T", "replaced by its value: write $a$ itself"),
+        # a side's dimension, from the problem's symbols and the unknowns' values
+        (
+            "newton_vertical",
+            "a = m g - T",
+            "differ in dimension: the left is an acceleration, the right a force",
+        ),
+        (
+            "newton_vertical",
+            "m a = m g - T/m",
+            "The right side of your equation adds an acceleration to a force",
+        ),
     ],
 )
 def test_a_bank_equation_tells_a_true_equation_that_is_not_the_one_asked(
