@@ -54,7 +54,7 @@ def test_guide_shows_every_element_kind_and_quantity_kind() -> None:
 
 # Each example derives its model (a couple of CPU-seconds apiece): a daily sample of them keeps the suite
 # in its time, every example covered within a few days' runs (tests/sampling.py).
-EXAMPLES = sampled([(f"example{i}", block) for i, block in enumerate(MODELS)], 40, "guide-examples")
+EXAMPLES = sampled([(f"example{i}", block) for i, block in enumerate(MODELS)], 24, "guide-examples")
 
 
 @pytest.mark.slow

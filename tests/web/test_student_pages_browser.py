@@ -60,7 +60,7 @@ def open_problem(
     return page
 
 
-@pytest.mark.parametrize("problem_id", sampled(sorted(BANK), 16, "student-page-on-a-phone"))
+@pytest.mark.parametrize("problem_id", sampled(sorted(BANK), 10, "student-page-on-a-phone"))
 def test_a_bank_problems_page_renders_with_its_figure_on_a_phone(
     live_server: LiveServer, browse: Callable[..., Any], problem_id: str
 ) -> None:
