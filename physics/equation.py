@@ -4,8 +4,11 @@ sides is a nonzero multiple of the asked equation's, on the domain, with the unk
 The unknowns are sampled as free values (`physics.proportional`'s state): `m a − m g sin θ + μ N` and
 `2 m g sin θ − 2 μ N − 2 m a` are the same equation, `m a = m g sin θ` is not. Where the model gives
 each unknown's value, an equation that is not the one asked but holds once they are put in is told so
-(a different body or component, a combination of equations); a wrong one is compared with the asked
-equation's own wrong versions: each term left out, each term's sign flipped, sine and cosine swapped.
+(a different body or component, a combination of equations), and so is the asked equation with one
+unknown replaced by its value; a wrong one is compared with the asked equation's own wrong versions:
+each term left out, each term's sign flipped, sine and cosine swapped. An answer that is none of those
+and whose sides or terms differ in dimension is told that before anything else (the unknowns'
+dimensions are those of their values).
 """
 
 from __future__ import annotations
