@@ -178,6 +178,8 @@ MEANINGS: dict[str, tuple[str, ...]] = {
     "mil": ("mil", "thou"),  # the angular mil, or a thousandth of an inch
     "c": ("c", "C", "°C"),  # the speed of light, or the coulomb or degrees Celsius in lower case
     "g": ("g", "g0"),  # the gram, or an acceleration in gees (`0.47 g`)
+    # Gees as `5 gs` (and `5 g's`) are said, or grams; never the gram-second its letters would split into.
+    "gs": ("g0", "g"),
     "C": ("C", "°C"),  # the coulomb, or degrees Celsius as typed without the degree sign (`27 C`)
     "F": ("F", "°F"),  # the farad, or degrees Fahrenheit (`80 F`)
 }
@@ -187,7 +189,7 @@ SPELLINGS_WITH_DIGITS = frozenset({"g0", "g_0"})
 
 # Spellings of MEANINGS whose first meaning is what nearly everyone means: where no meaning has the
 # expected dimension, the answer is graded in that one (a wrong dimension) instead of refused.
-FIRST_WHERE_NONE_FITS = frozenset({"g", "C", "F"})
+FIRST_WHERE_NONE_FITS = frozenset({"g", "gs", "C", "F"})
 
 # The decimal SI prefixes, by pint name. Binary prefixes, and the 2022 ones (ronto r, quecto q,
 # ronna R, quetta Q), are left out: no homework uses them, and they would make glued names such as

@@ -107,6 +107,18 @@ def tokenize(text: str) -> list[Token]:
     return [replace(token, position=where[token.position]) for token in tokens]
 
 
+# A plural written with an apostrophe, as pilots and riders say an acceleration: `5 g's`, `3 G's`.
+_APOSTROPHE_PLURALS = {"g": "gs", "G": "gs"}
+
+
+def _apostrophe_plural_end(text: str, word: str, i: int) -> int | None:
+    """The end of `'s` after a word of _APOSTROPHE_PLURALS ending at i, else None."""
+    if word not in _APOSTROPHE_PLURALS or text[i : i + 2] not in ("'s", "’s"):
+        return None
+    end = i + 2
+    return None if end < len(text) and _is_name_char(text[end]) else end
+
+
 def _after_word(text: str, i: int) -> int:
     """Past the full stop of an abbreviation (`sq.`, `fl.`) and spaces after the word ending at i."""
     if i < len(text) and text[i] == ".":
@@ -147,6 +159,13 @@ def _tokenize(text: str) -> list[Token]:
                 power = _LEADING_POWERS[word.lower()]
                 leading = (power, Token(Kind.POWER, word, start))
                 i = _after_word(text, i)
+                continue
+            plural_end = _apostrophe_plural_end(text, word, i)
+            if plural_end is not None:
+                tokens.append(Token(Kind.NAME, _APOSTROPHE_PLURALS[word], start))
+                i = plural_end
+                _raise_by(tokens, leading)
+                leading = None
                 continue
             fluid_ounce_end = _fluid_ounce_end(text, word, i)
             if fluid_ounce_end is not None:

@@ -58,6 +58,12 @@ SETTLED = [
     ("0.467 g_n", "m/s^2", "4.5807", "0.467 g0", None),
     ("0.467 gn", "m/s^2", "4.5807", "0.467 g0", None),
     ("0.467 gees", "m/s^2", "4.5807", "0.467 g0", None),
+    # `gs` and `g's` as a plural: gees first, grams where a mass is meant; never the gram-second.
+    ("0.467 gs", "m/s^2", "4.5807", "0.467 g0", None),
+    ("0.467 g's", "m/s^2", "4.5807", "0.467 g0", None),
+    ("0.467 G’s", "m/s^2", "4.5807", "0.467 g0", None),
+    ("450 g's", "kg", "0.45", "450 g", "Read g's as g: the only reading that is a mass"),
+    ("450 gs", "kg", "0.45", "450 g", "Read gs as g: the only reading that is a mass"),
     ("500 g", "kg", "0.5", "500 g", None),
     ("1 g/cm^3", "kg/m^3", "1000", "1 g/cm^3", None),
     # Degrees typed without the degree sign, where a temperature is expected.
@@ -115,6 +121,7 @@ GRADED_AS_FIRST = [
     # (answer, spec units, the dimension named): no meaning fits, and the first is what nearly everyone
     # means, so the answer is graded (a wrong dimension, an attempt used) rather than refused
     ("5 g", "J", "a mass"),
+    ("5 gs", "J", "an acceleration"),
     ("5 C", "J", "an electric charge"),
     ("5 F", "C", "a capacitance"),
 ]
@@ -150,6 +157,7 @@ def test_the_refusal_carries_the_readings() -> None:
         ("g", MASS),
         ("C", CHARGE),
         ("g0", ACCELERATION),
+        ("gs", ACCELERATION),
     ],
 )
 def test_without_an_expected_dimension_a_spelling_means_what_pint_defines(
