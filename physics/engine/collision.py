@@ -16,7 +16,7 @@ import sympy
 
 from physics import typeset
 from physics.answer_text import typed_text
-from physics.engine import tidy
+from physics.engine import embedding, tidy
 from physics.engine.mechanics import Mechanics, solve_linear
 from physics.engine.model import Model, Quantity, QuantityKind
 from physics.engine.quantity_table import derives
@@ -30,9 +30,12 @@ SPEED = sympy.Symbol("v", positive=True)
 
 
 def merged(model: Model) -> Model:
-    """The model after the projectile has embedded itself in the target."""
+    """The model after the projectile has embedded itself in the target: in a rigid target's `point`,
+    a particle held there (embedding.py); else part of the target's mass."""
     hit = model.collision
     assert hit is not None
+    if hit.point and model.body(hit.target).angle is not None:
+        return embedding.joined(model)
     bodies = tuple(
         dataclasses.replace(b, mass=b.mass + hit.projectile_mass) if b.name == hit.target else b
         for b in model.bodies
@@ -51,15 +54,25 @@ def event_points(model: Model) -> tuple[dict[sympy.Symbol, sympy.Expr], dict[sym
     return at, reaches
 
 
-def _projectile_momentum(model: Model, mech: Mechanics) -> list[sympy.Expr]:
-    """The projectile's momentum on each Cartesian dof of the target (zero elsewhere)."""
+def _momentum(model: Model) -> dict[str, sympy.Expr]:
+    """The projectile's momentum on each axis."""
     hit = model.collision
     assert hit is not None
     direction = dict(hit.direction)
     norm = sympy.sqrt(sympy.Add(*(v**2 for v in direction.values())))
+    return {axis: hit.projectile_mass * SPEED * value / norm for axis, value in direction.items()}
+
+
+def _projectile_momentum(model: Model, mech: Mechanics) -> list[sympy.Expr]:
+    """The projectile's momentum on each Cartesian dof of the body that carries it after the impact:
+    itself where it sticks in a rigid target's point, else the target (zero elsewhere)."""
+    hit = model.collision
+    assert hit is not None
+    carrier = hit.projectile if any(d.body == hit.projectile for d in mech.dofs) else hit.target
+    momentum = _momentum(model)
     return [
-        hit.projectile_mass * SPEED * direction.get(d.name.split("_", 1)[0], 0) / norm
-        if d.body == hit.target and not d.name.startswith("phi_")
+        momentum.get(d.name.split("_", 1)[0], sympy.Integer(0))
+        if d.body == carrier and not d.name.startswith("phi_")
         else sympy.Integer(0)
         for d in mech.dofs
     ]
@@ -97,12 +110,13 @@ def _finish(
 
 def by_conservation(model: Model, kind: QuantityKind, steps: list[tuple[str, str]]) -> sympy.Expr:
     after = merged(model)
-    mech, before_mech = Mechanics(after), Mechanics(model)
+    mech = Mechanics(after)
     at, reaches = event_points(model)
-    momentum = _projectile_momentum(model, before_mech)
+    momentum, point = _momentum(model), embedding.struck(model)
+    # the projectile's momentum projected on each coordinate's motion of the point it strikes
     brought = [
         sympy.Add(
-            *(p * sympy.diff(d.mapping, q) for p, d in zip(momentum, before_mech.dofs, strict=True))
+            *(p * sympy.diff(point.get(axis, sympy.Integer(0)), q) for axis, p in momentum.items())
         ).subs(at)
         for q in mech.q
     ]
@@ -175,6 +189,8 @@ def _nonconservative_work(
 
 
 def by_newton(model: Model, kind: QuantityKind, steps: list[tuple[str, str]]) -> sympy.Expr:
+    hit = model.collision
+    assert hit is not None
     after = merged(model)
     mech = Mechanics(after)
     at, reaches = event_points(model)
@@ -183,24 +199,29 @@ def by_newton(model: Model, kind: QuantityKind, steps: list[tuple[str, str]]) ->
     impulses = [sympy.Symbol(f"J_{c.name}", real=True) for c in after.constraints]
     velocity = [sympy.Symbol(f"u_{d.name}", real=True) for d in mech.dofs]
     gradients = [[sympy.diff(c.gap, d.symbol).subs(place) for d in mech.dofs] for c in after.constraints]
-    equations = [
+    balances = [
         d.inertia * u - p - sympy.Add(*(j * g[i] for j, g in zip(impulses, gradients, strict=True)))
         for i, (d, u, p) in enumerate(zip(mech.dofs, velocity, momentum, strict=True))
     ]
-    equations += [sympy.Add(*(g_i * u for g_i, u in zip(g, velocity, strict=True))) for g in gradients]
+    allowed = [sympy.Add(*(g_i * u for g_i, u in zip(g, velocity, strict=True))) for g in gradients]
     # just after the impact: u_{x,block} for the block's x velocity, J_{string} for the string's impulse
     names = {
         **mech.latex_names,
         **{u: rf"u_{{{_component(d.name)}}}" for u, d in zip(velocity, mech.dofs, strict=True)},
         **{j: rf"J_{{\mathrm{{{c.name}}}}}" for j, c in zip(impulses, after.constraints, strict=True)},
     }
-    steps.append(
-        (
-            "Impulse balance, constraint impulses unknown",
-            r",\ ".join(typeset.latex(sympy.Eq(e, 0), symbol_names=names) for e in equations),
-        )
-    )
-    solution = solve_linear(equations, velocity + impulses, "impulse balance")
+
+    def listed(equations: list[sympy.Expr]) -> str:
+        return r",\ ".join(typeset.latex(sympy.Eq(e, 0), symbol_names=names) for e in equations)
+
+    # one line per body (a rod struck at its end, and the bullet in it, are two), then the velocities
+    for body in after.bodies:
+        own = [e for e, d in zip(balances, mech.dofs, strict=True) if d.body == body.name]
+        named = f"the {body.name}" if body.name == hit.projectile else f"«{body.name}»"  # not a model body
+        steps.append((f"Impulse balance on {named}, constraint impulses unknown", listed(own)))
+    if allowed:
+        steps.append(("Velocities just after, as the constraints allow", listed(allowed)))
+    solution = solve_linear(balances + allowed, velocity + impulses, "impulse balance")
     kinetic = tidy.simplify(
         sympy.Add(*(d.inertia * solution[u] ** 2 / 2 for d, u in zip(mech.dofs, velocity, strict=True)))
     )

@@ -14,6 +14,7 @@ from physics.answer_text import typed_text
 from physics.dimensions import Dimension
 from physics.engine import (
     bounces,
+    embedding,
     evaluated_at,
     forcing,
     mode_shapes,
@@ -612,7 +613,7 @@ def _collision(
     path: Path = ("collision",)
     spec = _mapping(value, path, errors)
     keys = {"projectile", "mass", "direction", "target", "at", "reaches"}
-    _check_keys(spec, keys, keys, path, errors)
+    _check_keys(spec, keys | {"point"}, keys, path, errors)
     projectile = spec.get("projectile")
     if not isinstance(projectile, str) or not _NAME.match(projectile):
         errors.add("the projectile's name", (*path, "projectile"))
@@ -623,9 +624,22 @@ def _collision(
     direction = _axes(spec.get("direction"), symbols, (*path, "direction"), errors)
     at = _coordinate_values(spec.get("at"), symbols, coordinates, (*path, "at"), errors)
     reaches = _coordinate_values(spec.get("reaches"), symbols, coordinates, (*path, "reaches"), errors)
+    scope = {**symbols, **{c.name: c.symbol for c in coordinates}}
+    point = _axes(spec["point"], scope, (*path, "point"), errors) if "point" in spec else ()
+    if any(b.name == projectile for b in bodies):
+        errors.add(
+            f"{projectile!r} names a body already; the projectile needs a name of its own",
+            (*path, "projectile"),
+        )
     if mass is None or not direction or not isinstance(projectile, str) or not isinstance(target, str):
         return None
-    return Collision(projectile, mass, direction, target, at, reaches)
+    hit = Collision(projectile, mass, direction, target, at, reaches, point)
+    struck = next((b for b in bodies if b.name == target), None)
+    if point and struck is not None:
+        fault = embedding.point_fault(hit, struck, {c.symbol for c in coordinates})
+        if fault is not None:
+            errors.add(fault, (*path, "point"))  # the quantities that use the collision stay found
+    return hit
 
 
 def _impact(

@@ -101,7 +101,9 @@ class Frame:
 @dataclass(frozen=True)
 class Collision:
     """A projectile particle hits `target` (at rest at `at`) along `direction` and sticks; the
-    merged body then moves until the coordinates reach `reaches` with zero velocity."""
+    merged body then moves until the coordinates reach `reaches` with zero velocity. `point`: where on a
+    rigid target it sticks, in the coordinates as a body's position is written (a rod's end); without
+    it, the target's own position (its centre of mass)."""
 
     projectile: str
     projectile_mass: sympy.Expr
@@ -109,6 +111,7 @@ class Collision:
     target: str
     at: tuple[tuple[str, sympy.Expr], ...]
     reaches: tuple[tuple[str, sympy.Expr], ...]
+    point: tuple[tuple[str, sympy.Expr], ...] = ()
 
 
 @dataclass(frozen=True)

@@ -18,7 +18,14 @@ import mpmath
 import sympy
 
 from physics.answer_text import typed_text
-from physics.engine import expression_simulation, extremum, impact_simulation, slipping, vanishing_frequency
+from physics.engine import (
+    embedding,
+    expression_simulation,
+    extremum,
+    impact_simulation,
+    slipping,
+    vanishing_frequency,
+)
 from physics.engine.collision import merged
 from physics.engine.contact_friction import slip_velocity
 from physics.engine.lagrange import LagrangeMethod
@@ -903,12 +910,13 @@ class Simulator:
 
     @cached_property
     def _target_motion(self) -> Callable[..., list[float]]:
-        """d(target position)/dq on each axis (x row, then y row), compiled: the target's velocity is
-        this times q', however its constraints guide it (along an incline, round a pendulum's arc)."""
+        """d(struck point)/dq on each axis (x row, then y row), compiled: the velocity of the point the
+        projectile strikes (the target's position, or a `point` of a rigid target) is this times q',
+        however the constraints guide it (along an incline, round a pendulum's arc)."""
         hit = self.model.collision
         assert hit is not None
         mech = self.dynamics.mech
-        position = dict(self.model.body(hit.target).position)
+        position = embedding.struck(self.model)
         rows = [sympy.diff(position.get(axis, sympy.Integer(0)), q) for axis in AXES for q in mech.q]
         return _compile([*mech.q, *self.dynamics.params], rows)
 

@@ -7,10 +7,11 @@ import math
 
 import sympy
 
-from physics.engine.model import Body, ConstraintKind, Model, PairPotential
+from physics.engine import embedding
+from physics.engine.model import AXES, Body, ConstraintKind, Model, PairPotential
 from physics.figures.figure import BLOCK, Figure, NotDrawable, NotNumeric, Values, body_label, symbol_label
 from physics.figures.geometry import other_symbols
-from physics.figures.shapes import square
+from physics.figures.shapes import draw_bullet, square
 from physics.figures.svg import FILLS
 
 
@@ -53,7 +54,8 @@ def draw_path(
         figure.canvas.line((0.0, 0.0), far, width=0.35, color="#8aa9cf")
         figure.canvas.circle((0.0, 0.0), 0.1, fill="#1b1b1b")
         figure.canvas.text((far[0] + 0.5, far[1]), body_label(body, model), anchor="start")
-        figure.say(f"A rigid body {body_label(body, model)} swings about a fixed pivot at its end.")
+        said = f"A rigid body {body_label(body, model)} swings about a fixed pivot at its end"
+        figure.say(said + _struck(figure, model, body, values, scale) + ".")
         return
     figure.canvas.polyline(points, width=0.07)
     turning = ""
@@ -90,3 +92,21 @@ def draw_row(figure: Figure, model: Model) -> None:
         else:  # a name does not fit inside the block: beneath it
             figure.canvas.text((centre[0], centre[1] - BLOCK / 2 - 0.35), label, size=0.32)
     figure.say("The bodies of the problem: " + ", ".join(body_label(b, model) for b in model.bodies) + ".")
+
+
+def _struck(figure: Figure, model: Model, body: Body, values: Values, scale: float) -> str:
+    """The bullet of a collision with the body, flying at the point it strikes when the body is where
+    it is struck (drawn dashed there); the words for it, or "" when nothing strikes the body."""
+    hit = model.collision
+    if hit is None or hit.target != body.name:
+        return ""
+    coordinate = model.coordinates[0]
+    at = values.number(dict(hit.at).get(coordinate.name, sympy.Integer(0)))
+    point = embedding.struck(model)
+    x, y = (values.number(point.get(a, sympy.Integer(0)), {coordinate.symbol: at}) * scale for a in AXES)
+    heading = 1 if values.number(dict(hit.direction).get("x", sympy.Integer(0))) >= 0 else -1
+    figure.canvas.line((0.0, 0.0), (x, y), dashed=True, width=0.03)
+    draw_bullet(figure, (x - 3.0 * heading, y), heading, hit.projectile_mass, 0.45)
+    mass = hit.projectile_mass
+    named = f" {symbol_label(mass.name)}" if isinstance(mass, sympy.Symbol) else ""
+    return f"; a bullet{named} flies into it horizontally where it hangs (dashed), and sticks"

@@ -13,7 +13,7 @@ from physics.figures.chain import draw_pendulum_chain
 from physics.figures.figure import BLOCK, Figure, NotNumeric, Values, body_label, symbol_label
 from physics.figures.geometry import element_body, of_kind, written_symbol
 from physics.figures.path import draw_path
-from physics.figures.shapes import angle_mark, square
+from physics.figures.shapes import angle_mark, draw_bullet, square
 from physics.figures.svg import FILLS, Point
 
 
@@ -200,16 +200,8 @@ def draw_pendulum(
         said = f"A {noun} {name} hangs from {point} on {held}"
     if collision is not None:
         canvas.polygon(square(lowest, size), fill="none")
-        bullet = (-3.2, -length)
-        canvas.polygon(
-            [(bullet[0] - 0.3, bullet[1] - 0.1), (bullet[0] + 0.2, bullet[1] - 0.1), (bullet[0] + 0.35, bullet[1]),
-             (bullet[0] + 0.2, bullet[1] + 0.1), (bullet[0] - 0.3, bullet[1] + 0.1)],
-            fill="#888888",
-        )  # fmt: skip
-        canvas.arrow((bullet[0] + 0.5, bullet[1]), (bullet[0] + 1.8, bullet[1]))
         mass = collision.projectile_mass
-        if isinstance(mass, sympy.Symbol):
-            canvas.text((bullet[0], bullet[1] - 0.45), symbol_label(mass.name))
+        draw_bullet(figure, (-3.2, -length), 1, mass, -0.45)
         said += "; a bullet" + (f" {symbol_label(mass.name)}" if isinstance(mass, sympy.Symbol) else "")
         said += " flies into it horizontally at its lowest point"
     if angle_symbol is not None:

@@ -94,3 +94,18 @@ def hanging_block(figure: Figure, top: Point, body: Body, model: Model, fill: st
     figure.canvas.line(top, (x, y - depth + BLOCK / 2), width=0.04)
     figure.canvas.polygon(square((x, y - depth), BLOCK), fill=fill)
     figure.canvas.text((x, y - depth), body_label(body, model))
+
+
+def draw_bullet(figure: Figure, at: Point, heading: int, mass: sympy.Expr, label_dy: float) -> None:
+    """A bullet centred at `at` flying along x (`heading` +1 to the right, -1 to the left), its arrow
+    ahead of it, labelled with its mass symbol `label_dy` above (or below) it."""
+    x, y = at
+    h = heading
+    figure.canvas.polygon(
+        [(x - 0.3 * h, y - 0.1), (x + 0.2 * h, y - 0.1), (x + 0.35 * h, y), (x + 0.2 * h, y + 0.1),
+         (x - 0.3 * h, y + 0.1)],
+        fill="#888888",
+    )  # fmt: skip
+    figure.canvas.arrow((x + 0.5 * h, y), (x + 1.8 * h, y) if h > 0 else (x - 1.6, y))
+    if isinstance(mass, sympy.Symbol):
+        figure.canvas.text((x, y + label_dy), symbol_label(mass.name))

@@ -8,7 +8,7 @@ import sympy
 from physics.engine.model import AuthoredElement, Body, ForceKind, Model, PairPotential
 from physics.figures.figure import BLOCK, Figure, Values, body_label, symbol_label
 from physics.figures.geometry import of_kind, stiffness_symbols, written_symbol
-from physics.figures.shapes import draw_block
+from physics.figures.shapes import draw_block, draw_bullet
 from physics.figures.slope import Slope
 from physics.figures.springs import draw_spring_line, spring_line_of
 from physics.figures.svg import FILLS
@@ -97,15 +97,7 @@ def draw_spring(
         canvas.text((centre[0] + 2.0, -0.6), coordinates[0], anchor="start")
     collision = model.collision
     if collision is not None:
-        bullet = (centre[0] + 4.2, centre[1])
-        canvas.polygon(
-            [(bullet[0] + 0.3, bullet[1] - 0.1), (bullet[0] - 0.2, bullet[1] - 0.1), (bullet[0] - 0.35, bullet[1]),
-             (bullet[0] - 0.2, bullet[1] + 0.1), (bullet[0] + 0.3, bullet[1] + 0.1)],
-            fill="#888888",
-        )  # fmt: skip
-        canvas.arrow((bullet[0] - 0.5, bullet[1]), (bullet[0] - 1.6, bullet[1]))
-        if isinstance(collision.projectile_mass, sympy.Symbol):
-            canvas.text((bullet[0], bullet[1] + 0.45), symbol_label(collision.projectile_mass.name))
+        draw_bullet(figure, (centre[0] + 4.2, centre[1]), -1, collision.projectile_mass, 0.45)
         figure.say("A bullet flies into the block along the spring's line and sticks.")
     figure.say(
         f"A block {body_label(body, model)} on a horizontal frictionless floor, tied to a wall by a spring"

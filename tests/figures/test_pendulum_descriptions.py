@@ -27,6 +27,11 @@ DESCRIPTIONS = {
         ("block", "string"),
     ),
     "ballistic-pendulum": ("A block M hangs from a fixed point on a string of length L; a bullet m", ()),
+    "rod-bullet": (
+        "A rigid body M swings about a fixed pivot at its end; a bullet m flies into it horizontally where "
+        "it hangs (dashed), and sticks.",
+        ("block",),
+    ),
     "double-pendulum": ("bob1 hangs from a fixed pivot", ("block",)),
 }
 
