@@ -10,13 +10,16 @@ usual names; `renamed`, new references under names never seen); the bodies are t
 sides grade the very same texts. The two take turns, one round of `--per` checks each, so a loaded
 machine moves both alike. Prints each side's median CPU per check and
 the median of the per-round ratios new/old. A checkout is made with `git archive <commit> | tar -x -C DIR`.
-`--per-body` prints each body's median instead (one checkout: OLD_DIR only).
+`--per-body` prints each body's median instead (one checkout: OLD_DIR only). `--old-env NAME=VALUE`
+(repeatable) sets a variable for the old side only: the same checkout against itself with, say,
+`MPMATH_NOGMPY=1` measures what a library's backend is worth.
 """
 
 from __future__ import annotations
 
 import argparse
 import json
+import os
 import statistics
 import subprocess
 import sys
@@ -105,6 +108,7 @@ def main() -> None:
     parser.add_argument("--rounds", type=int, default=30)
     parser.add_argument("--per", type=int, default=50, help="checks per round")
     parser.add_argument("--per-body", action="store_true")
+    parser.add_argument("--old-env", action="append", default=[], metavar="NAME=VALUE")
     parser.add_argument("--child", type=Path, help=argparse.SUPPRESS)  # the bodies' file
     args = parser.parse_args()
     if args.child:
@@ -119,9 +123,16 @@ def main() -> None:
     source = Path(tempfile.mkstemp(prefix="distinct-cpu-", suffix=".json")[1])
     source.write_text(json.dumps(bodies(args.phase)))
     command = [sys.executable, __file__, "--child", str(source), "--kind", args.kind, "--per", str(args.per)]
+    old_env = {**os.environ, **dict(setting.split("=", 1) for setting in args.old_env)}
     processes = [
-        subprocess.Popen([*command, str(tree)], stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True)
-        for tree in trees
+        subprocess.Popen(
+            [*command, str(tree)],
+            stdin=subprocess.PIPE,
+            stdout=subprocess.PIPE,
+            text=True,
+            env=old_env if side == 0 else None,
+        )
+        for side, tree in enumerate(trees)
     ]
     timings: tuple[list[float], list[float]] = ([], [])
     for round_ in range(args.rounds):
