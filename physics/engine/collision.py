@@ -128,7 +128,7 @@ def by_conservation(model: Model, kind: QuantityKind, steps: list[tuple[str, str
     steps.append(
         (
             "Generalized momentum across the impulse",
-            r",\ ".join(
+            r",\quad ".join(
                 typeset.latex(sympy.Eq(e + b, b), symbol_names=mech.latex_names)
                 for e, b in zip(equations, brought, strict=True)
             ),
@@ -211,8 +211,8 @@ def by_newton(model: Model, kind: QuantityKind, steps: list[tuple[str, str]]) ->
         **{j: rf"J_{{\mathrm{{{c.name}}}}}" for j, c in zip(impulses, after.constraints, strict=True)},
     }
 
-    def listed(equations: list[sympy.Expr]) -> str:
-        return r",\ ".join(typeset.latex(sympy.Eq(e, 0), symbol_names=names) for e in equations)
+    def listed(equations: list[sympy.Expr]) -> str:  # `,\quad`: a worked solution's line each
+        return r",\quad ".join(typeset.latex(sympy.Eq(e, 0), symbol_names=names) for e in equations)
 
     # one line per body (a rod struck at its end, and the bullet in it, are two), then the velocities
     for body in after.bodies:

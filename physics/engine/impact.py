@@ -172,7 +172,7 @@ def by_conservation(model: Model) -> Worked:
         "Momentum conserved in every direction the contact's impulse has no part in "
         "(the constraints' impulses included: they do no work on the coordinates); the normal "
         "separation's rate after is w",
-        r",\ ".join(typeset.latex(sympy.Eq(e, 0)) for e in equations),
+        r",\quad ".join(typeset.latex(sympy.Eq(e, 0)) for e in equations),
     )
     approach = -(a.T * before)[0]
     in_w = sympy.Matrix([solved[v] for v in after])
@@ -224,7 +224,7 @@ def by_impulse(model: Model) -> Worked:
     step(
         "Impulse-momentum law for each body, normal impulse J"
         + (", and each constraint's impulse, the constraint holding after" if held else ""),
-        r",\ ".join(typeset.latex(sympy.Eq(e, 0)) for e in [*laws, *holding]),
+        r",\quad ".join(typeset.latex(sympy.Eq(e, 0)) for e in [*laws, *holding]),
     )
     rate_after = sympy.Add(*(c * v for c, v in zip(found.normal_row, in_j, strict=True)))
     rate_before = sympy.Add(*(c * v for c, v in zip(found.normal_row, found.before, strict=True)))
