@@ -122,7 +122,7 @@ def test_an_impacts_worked_solution_writes_its_own_symbols_as_physics_does():
     assert derived is not None
     shown = " ".join(step.latex for method in derived.raw.methods for step in method.steps)
     assert (
-        r"u_{x,\mathrm{block}}" in shown and r"J_{\mathrm{string}}" in shown
+        r"v'_{x,\mathrm{block}}" in shown and r"J_{\mathrm{string}}" in shown
     )  # were u_{x block}, J_{string}
     assert r"\dot{\phi}" in shown and "phi_{dot}" not in shown
     assert r"\sqrt{2 g L \left(1 - \cos{\left(\theta \right)}\right)}" in shown

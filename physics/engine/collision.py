@@ -60,7 +60,7 @@ def _momentum(model: Model) -> dict[str, sympy.Expr]:
     assert hit is not None
     direction = dict(hit.direction)
     norm = sympy.sqrt(sympy.Add(*(v**2 for v in direction.values())))
-    return {axis: hit.projectile_mass * SPEED * value / norm for axis, value in direction.items()}
+    return {axis: hit.projectile_mass * _speed(model) * value / norm for axis, value in direction.items()}
 
 
 def _projectile_momentum(model: Model, mech: Mechanics) -> list[sympy.Expr]:
@@ -78,22 +78,38 @@ def _projectile_momentum(model: Model, mech: Mechanics) -> list[sympy.Expr]:
     ]
 
 
-def _finish(
-    kinetic_after: sympy.Expr,
-    rise: sympy.Expr,
-    model: Model,
-    kind: QuantityKind,
-    steps: list[tuple[str, str]],
+def _speed(model: Model) -> sympy.Expr:
+    """The projectile's speed: given (`speed`), or the unknown v that `reaches` settles."""
+    assert model.collision is not None
+    return SPEED if model.collision.speed is None else model.collision.speed
+
+
+def _fraction_lost(kinetic_after: sympy.Expr, model: Model, steps: list[tuple[str, str]]) -> sympy.Expr:
+    assert model.collision is not None
+    before = model.collision.projectile_mass * _speed(model) ** 2 / 2
+    fraction = tidy.simplify((before - kinetic_after) / before)
+    steps.append(
+        ("Fraction of the kinetic energy lost", r"\frac{K_0 - K_1}{K_0} = " + typeset.latex(fraction))
+    )
+    return fraction
+
+
+def _velocity_after(
+    rates: dict[sympy.Symbol, sympy.Expr], mech: Mechanics, quantity: Quantity, steps: list[tuple[str, str]]
+) -> sympy.Expr:
+    velocity = mech.model.coordinate(quantity.target).velocity
+    value = tidy.simplify(rates[velocity])
+    steps.append(
+        ("Velocity just after", typeset.latex(sympy.Eq(velocity, value), symbol_names=mech.latex_names))
+    )
+    return value
+
+
+def _projectile_speed(
+    kinetic_after: sympy.Expr, rise: sympy.Expr, model: Model, steps: list[tuple[str, str]]
 ) -> sympy.Expr:
     hit = model.collision
     assert hit is not None
-    before = hit.projectile_mass * SPEED**2 / 2
-    if kind is QuantityKind.ENERGY_FRACTION_LOST:
-        fraction = tidy.simplify((before - kinetic_after) / before)
-        steps.append(
-            ("Fraction of the kinetic energy lost", r"\frac{K_0 - K_1}{K_0} = " + typeset.latex(fraction))
-        )
-        return fraction
     found = tidy.solve(kinetic_after - rise, SPEED)
     roots = admissible(found, SPEED, model)
     if not roots and tidy.simplify(rise).is_nonpositive:
@@ -108,7 +124,7 @@ def _finish(
     return tidy.simplify(roots[0])
 
 
-def by_conservation(model: Model, kind: QuantityKind, steps: list[tuple[str, str]]) -> sympy.Expr:
+def by_conservation(model: Model, quantity: Quantity, steps: list[tuple[str, str]]) -> sympy.Expr:
     after = merged(model)
     mech = Mechanics(after)
     at, reaches = event_points(model)
@@ -135,7 +151,11 @@ def by_conservation(model: Model, kind: QuantityKind, steps: list[tuple[str, str
         )
     )
     velocities = solve_linear(equations, list(mech.qd), "momentum across the collision")
+    if quantity.kind is QuantityKind.VELOCITY_AFTER:
+        return _velocity_after(velocities, mech, quantity, steps)
     kinetic = tidy.simplify(mech.kinetic.subs(at).subs(velocities))
+    if quantity.kind is QuantityKind.ENERGY_FRACTION_LOST:
+        return _fraction_lost(kinetic, model, steps)
     rise = tidy.simplify(mech.potential.subs(reaches) - mech.potential.subs(at))
     work = _nonconservative_work(after, mech, at, reaches, steps)
     title = (
@@ -146,7 +166,7 @@ def by_conservation(model: Model, kind: QuantityKind, steps: list[tuple[str, str
     steps.append(
         (title, typeset.latex(sympy.Eq(kinetic, tidy.simplify(rise - work)), symbol_names=mech.latex_names))
     )
-    return _finish(kinetic, tidy.simplify(rise - work), model, kind, steps)
+    return _projectile_speed(kinetic, tidy.simplify(rise - work), model, steps)
 
 
 def _nonconservative_work(
@@ -188,7 +208,7 @@ def _nonconservative_work(
     return work
 
 
-def by_newton(model: Model, kind: QuantityKind, steps: list[tuple[str, str]]) -> sympy.Expr:
+def by_newton(model: Model, quantity: Quantity, steps: list[tuple[str, str]]) -> sympy.Expr:
     hit = model.collision
     assert hit is not None
     after = merged(model)
@@ -204,10 +224,11 @@ def by_newton(model: Model, kind: QuantityKind, steps: list[tuple[str, str]]) ->
         for i, (d, u, p) in enumerate(zip(mech.dofs, velocity, momentum, strict=True))
     ]
     allowed = [sympy.Add(*(g_i * u for g_i, u in zip(g, velocity, strict=True))) for g in gradients]
-    # just after the impact: u_{x,block} for the block's x velocity, J_{string} for the string's impulse
+    # just after the impact: v'_{x,block} for the block's x velocity (primed as textbooks write a velocity
+    # after; u may be the given speed), J_{string} for the string's impulse
     names = {
         **mech.latex_names,
-        **{u: rf"u_{{{_component(d.name)}}}" for u, d in zip(velocity, mech.dofs, strict=True)},
+        **{u: rf"v'_{{{_component(d.name)}}}" for u, d in zip(velocity, mech.dofs, strict=True)},
         **{j: rf"J_{{\mathrm{{{c.name}}}}}" for j, c in zip(impulses, after.constraints, strict=True)},
     }
 
@@ -222,9 +243,13 @@ def by_newton(model: Model, kind: QuantityKind, steps: list[tuple[str, str]]) ->
     if allowed:
         steps.append(("Velocities just after, as the constraints allow", listed(allowed)))
     solution = solve_linear(balances + allowed, velocity + impulses, "impulse balance")
+    if quantity.kind is QuantityKind.VELOCITY_AFTER:
+        return _velocity_after(_rates(mech, at, [solution[u] for u in velocity]), mech, quantity, steps)
     kinetic = tidy.simplify(
         sympy.Add(*(d.inertia * solution[u] ** 2 / 2 for d, u in zip(mech.dofs, velocity, strict=True)))
     )
+    if quantity.kind is QuantityKind.ENERGY_FRACTION_LOST:
+        return _fraction_lost(kinetic, model, steps)
     if len(mech.q) != 1:
         raise DerivationError("the work integral is done for one coordinate only")
     q = mech.q[0]
@@ -246,13 +271,28 @@ def by_newton(model: Model, kind: QuantityKind, steps: list[tuple[str, str]]) ->
             + typeset.latex(work, symbol_names=names),
         )
     )
-    return _finish(kinetic, -work, model, kind, steps)
+    return _projectile_speed(kinetic, -work, model, steps)
 
 
-@derives(QuantityKind.PROJECTILE_SPEED, QuantityKind.ENERGY_FRACTION_LOST)
+@derives(QuantityKind.PROJECTILE_SPEED, QuantityKind.ENERGY_FRACTION_LOST, QuantityKind.VELOCITY_AFTER)
 def derived(method: Method, quantity: Quantity) -> sympy.Expr:
     """Each method works the collision its own way (`collision` of Newton and of conservation)."""
-    return method.collision(quantity.kind)
+    return method.collision(quantity)
+
+
+def _rates(
+    mech: Mechanics, at: dict[sympy.Symbol, sympy.Expr], cartesian: list[sympy.Expr]
+) -> dict[sympy.Symbol, sympy.Expr]:
+    """The coordinates' velocities that give these Cartesian velocities (the constraints allow them)."""
+    equations = [
+        sympy.Add(*(sympy.diff(d.mapping, q).subs(at) * qd for q, qd in zip(mech.q, mech.qd, strict=True)))
+        - u
+        for d, u in zip(mech.dofs, cartesian, strict=True)
+    ]
+    found = list(sympy.linsolve(equations, list(mech.qd)))
+    if len(found) != 1 or any(value.free_symbols & set(mech.qd) for value in found[0]):
+        raise DerivationError("the velocities just after do not settle the coordinates' rates")
+    return dict(zip(mech.qd, found[0], strict=True))
 
 
 def _component(dof: str) -> str:

@@ -13,7 +13,7 @@ import sympy
 from physics.engine import collision, tidy
 from physics.engine.mechanics import Mechanics, solve_linear, time_derivative
 from physics.engine.method import Method, NotApplicable
-from physics.engine.model import Quantity, QuantityKind
+from physics.engine.model import Quantity
 from physics.engine.results import StepKind
 from physics.engine.supports import NOT_CONSERVED, driven
 
@@ -167,7 +167,7 @@ class ConservationMethod(Method):
         stiffness = sympy.hessian(mech.potential, list(mech.q)).subs(point).applyfunc(tidy.simplify)
         return mass, stiffness
 
-    def collision(self, item: QuantityKind) -> sympy.Expr:
+    def collision(self, item: Quantity) -> sympy.Expr:
         if self.model.collision is None:
             raise NotApplicable("no collision in the model")
         steps: list[tuple[str, str]] = []

@@ -169,14 +169,19 @@ def _derive_model(model: Model) -> Derivation:
     # one compiled motion for every measure, from the equations Lagrange's method has formed
     simulator = Simulator(model, lagrange.equilibrium, quantities, lagrange)
     simulation = _simulate(model, quantities, simulator)
-    variants: dict[Model, Method] = {model: lagrange}
+    variants: dict[tuple[Model, type[Method]], Method] = {(model, LagrangeMethod): lagrange}
 
     def rederive(changed: Model, quantity: Quantity) -> sympy.Expr | None:
-        method = variants.setdefault(changed, LagrangeMethod(changed, Mechanics(changed)))
-        try:
-            return method.answer(quantity)
-        except (NotApplicable, DerivationError):
-            return None
+        # Lagrange's equations, or conservation where they do not apply (a collision)
+        for kind in (LagrangeMethod, ConservationMethod):
+            method = variants.setdefault((changed, kind), kind(changed, Mechanics(changed)))
+            try:
+                return method.answer(quantity)
+            except NotApplicable:
+                continue
+            except DerivationError:
+                return None
+        return None
 
     mistakes: dict[str, tuple[KnownMistake, ...]] = {}
     limits: dict[str, tuple[LimitCase, ...]] = {}

@@ -26,6 +26,7 @@ TIME = Dimension({"time": 1})
 ENERGY = MASS * LENGTH**2 / TIME**2
 FORCE = MASS * LENGTH / TIME**2
 ACCELERATION = LENGTH / TIME**2
+SPEED = LENGTH / TIME
 INERTIA = MASS * LENGTH**2
 MAX_UNKNOWN_COORDINATES = 8  # 2^8 assignments at most, each a handful of cheap checks
 
@@ -108,6 +109,8 @@ def _physics(model: Model, dims: Dims) -> list[Check]:
         checks += force.dimensions(("forces", index))
     if model.collision is not None:
         checks.append((("collision", "mass"), model.collision.projectile_mass, MASS))
+        if model.collision.speed is not None:
+            checks.append((("collision", "speed"), model.collision.speed, SPEED))
     if model.impact is not None:
         for axis, component in model.impact.normal:
             checks.append((("impact", "normal", axis), component, None))

@@ -92,6 +92,7 @@ _QUANTITY_TARGET = {
     QuantityKind.DECAY_TIME: "coordinate",
     QuantityKind.UNDAMPED_FREQUENCY: "coordinate",
     QuantityKind.TURNING_POINT: "coordinate",
+    QuantityKind.VELOCITY_AFTER: "coordinate",
     **dict.fromkeys(STEADY_KINDS | EFFECTIVE_KINDS, "coordinate"),
 }
 _SLIPPING_KEYS = {"friction", "normal", "coefficient"}
@@ -213,6 +214,7 @@ def _load_low_level(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]
     collision = _collision(data.get("collision"), symbols, bodies, coordinates, errors)
     state = _state(data.get("state"), symbols, coordinates, errors, time)
     quantities = _quantities(data.get("quantities"), symbols, coordinates, declared, collision, errors)
+    _check_collision_asks(quantities, collision, errors)
     released.check_uses(let_go, frictions, quantities, errors.add)
     velocities = {f"{c.name}_dot": c.velocity for c in coordinates}
     forces = _forces(data.get("forces"), symbols, {"t": time, **coord_scope, **velocities}, bodies, errors)
@@ -612,8 +614,8 @@ def _collision(
         return None
     path: Path = ("collision",)
     spec = _mapping(value, path, errors)
-    keys = {"projectile", "mass", "direction", "target", "at", "reaches"}
-    _check_keys(spec, keys | {"point"}, keys, path, errors)
+    keys = {"projectile", "mass", "direction", "target", "at"}
+    _check_keys(spec, keys | {"point", "reaches", "speed"}, keys, path, errors)
     projectile = spec.get("projectile")
     if not isinstance(projectile, str) or not _NAME.match(projectile):
         errors.add("the projectile's name", (*path, "projectile"))
@@ -623,7 +625,9 @@ def _collision(
     mass = errors.read(spec.get("mass"), symbols, (*path, "mass"))
     direction = _axes(spec.get("direction"), symbols, (*path, "direction"), errors)
     at = _coordinate_values(spec.get("at"), symbols, coordinates, (*path, "at"), errors)
-    reaches = _coordinate_values(spec.get("reaches"), symbols, coordinates, (*path, "reaches"), errors)
+    reaches: tuple[tuple[str, sympy.Expr], ...] = ()
+    if "reaches" in spec:
+        reaches = _coordinate_values(spec["reaches"], symbols, coordinates, (*path, "reaches"), errors)
     scope = {**symbols, **{c.name: c.symbol for c in coordinates}}
     point = _axes(spec["point"], scope, (*path, "point"), errors) if "point" in spec else ()
     if any(b.name == projectile for b in bodies):
@@ -633,13 +637,33 @@ def _collision(
         )
     if mass is None or not direction or not isinstance(projectile, str) or not isinstance(target, str):
         return None
-    hit = Collision(projectile, mass, direction, target, at, reaches, point)
+    speed = errors.read(spec["speed"], symbols, (*path, "speed")) if "speed" in spec else None
+    if ("speed" in spec) == ("reaches" in spec):
+        errors.add(
+            "give exactly one of reaches (where the merged body stops: the projectile's speed is asked) and "
+            "speed (the projectile's: the velocities just after are asked)",
+            path,
+        )
+    hit = Collision(projectile, mass, direction, target, at, reaches, point, speed)
     struck = next((b for b in bodies if b.name == target), None)
     if point and struck is not None:
         fault = embedding.point_fault(hit, struck, {c.symbol for c in coordinates})
         if fault is not None:
             errors.add(fault, (*path, "point"))  # the quantities that use the collision stay found
     return hit
+
+
+def _check_collision_asks(
+    quantities: tuple[Quantity, ...], collision: Collision | None, errors: _Collector
+) -> None:
+    """A collision's speed is asked where the merged body stops (`reaches`), or given (`speed`) when the
+    velocities just after are asked: never both."""
+    for q in quantities:
+        where: Path = ("quantities", q.name, q.kind.value)
+        if q.kind is QuantityKind.VELOCITY_AFTER and (collision is None or collision.speed is None):
+            errors.add("the velocity just after a collision needs the collision's speed (`speed:`)", where)
+        if q.kind is QuantityKind.PROJECTILE_SPEED and collision is not None and collision.speed is not None:
+            errors.add("the collision gives the projectile's speed; ask it with `reaches:` instead", where)
 
 
 def _impact(

@@ -13,7 +13,7 @@ from physics import typeset
 from physics.answer_text import typed_text
 from physics.engine import bounces, evaluated_at, impact, modes, quantity_table, tidy, work_energy
 from physics.engine.mechanics import Mechanics
-from physics.engine.model import Model, Quantity, QuantityKind
+from physics.engine.model import Model, Quantity
 from physics.engine.proof import domain_points
 from physics.engine.results import MethodReport, Step, StepKind
 from physics.engine.roots import admissible, declared_range
@@ -95,7 +95,7 @@ class Method(ABC):
     def frequency(self, coordinate: str, equilibrium: sympy.Expr) -> sympy.Expr:
         raise NotApplicable(f"{self.title} does not give oscillation frequencies")
 
-    def collision(self, item: QuantityKind) -> sympy.Expr:
+    def collision(self, item: Quantity) -> sympy.Expr:
         raise NotApplicable(f"{self.title} does not treat collisions")
 
     def impact(self, quantity: Quantity) -> sympy.Expr:

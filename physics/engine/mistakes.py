@@ -63,6 +63,11 @@ INELASTIC_ENERGY = (
     "Kinetic energy is not conserved in a perfectly inelastic collision. Use the quantity that "
     "is conserved during the impact, then energy conservation afterwards."
 )
+STRUCK_AT_CENTRE = (
+    "The projectile sticks where it strikes, not at the body's centre of mass: its angular momentum "
+    "about the pivot is its momentum times that point's distance from the pivot, and the body turns "
+    "with its mass there."
+)
 FRACTION_KEPT = (
     "That is the fraction of the kinetic energy that remains after the collision, not the fraction lost."
 )
@@ -119,6 +124,11 @@ def generate_mistakes(
         candidates.append((rederive(flat, quantity), NO_INERTIA))
     if model.collision is not None and quantity.kind is QuantityKind.PROJECTILE_SPEED:
         candidates.append((_energy_conserved_speed(model), INELASTIC_ENERGY))
+    if model.collision is not None and model.collision.point:
+        at_centre = dataclasses.replace(model.collision, point=())
+        candidates.append(
+            (rederive(dataclasses.replace(model, collision=at_centre), quantity), STRUCK_AT_CENTRE)
+        )
     if quantity.kind is QuantityKind.ENERGY_FRACTION_LOST:
         candidates.append((1 - reference, FRACTION_KEPT))
     if quantity.kind in IMPACT_KINDS and model.impact is not None:

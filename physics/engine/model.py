@@ -101,7 +101,8 @@ class Frame:
 @dataclass(frozen=True)
 class Collision:
     """A projectile particle hits `target` (at rest at `at`) along `direction` and sticks; the
-    merged body then moves until the coordinates reach `reaches` with zero velocity. `point`: where on a
+    merged body then moves until the coordinates reach `reaches` with zero velocity (or, with the
+    projectile's `speed` given, the velocities just after are asked). `point`: where on a
     rigid target it sticks, in the coordinates as a body's position is written (a rod's end); without
     it, the target's own position (its centre of mass)."""
 
@@ -112,6 +113,7 @@ class Collision:
     at: tuple[tuple[str, sympy.Expr], ...]
     reaches: tuple[tuple[str, sympy.Expr], ...]
     point: tuple[tuple[str, sympy.Expr], ...] = ()
+    speed: sympy.Expr | None = None  # the projectile's speed, when given (then the motion after is asked)
 
 
 @dataclass(frozen=True)
@@ -141,6 +143,7 @@ class QuantityKind(StrEnum):
     SOLVE = "solve"  # the parameter value that makes another quantity vanish
     PROJECTILE_SPEED = "projectile_speed"
     ENERGY_FRACTION_LOST = "energy_fraction_lost"
+    VELOCITY_AFTER = "velocity_after"  # a coordinate's velocity just after a collision of given speed
     NORMAL_FREQUENCY = (
         "normal_frequency"  # the n-th lowest (1, 2, ...) non-zero normal-mode angular frequency
     )

@@ -17,7 +17,7 @@ from physics.engine import collision, modes, tidy
 from physics.engine.frames import centripetal_accelerations
 from physics.engine.mechanics import solve_linear, time_derivative
 from physics.engine.method import Method, NotApplicable
-from physics.engine.model import QuantityKind
+from physics.engine.model import Quantity
 from physics.engine.results import StepKind
 from physics.engine.supports import driven
 from physics.wording import the_counted
@@ -212,7 +212,7 @@ class NewtonMethod(Method):
         stiffness = sympy.hessian(mech.cartesian_potential, [d.symbol for d in mech.dofs]).subs(place)
         return sympy.diag(*[d.inertia for d in mech.dofs]), stiffness.applyfunc(tidy.simplify)
 
-    def collision(self, item: QuantityKind) -> sympy.Expr:
+    def collision(self, item: Quantity) -> sympy.Expr:
         if self.model.collision is None:
             raise NotApplicable("no collision in the model")
         steps: list[tuple[str, str]] = []

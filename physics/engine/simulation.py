@@ -336,6 +336,7 @@ class Simulator:
             **oscillation_measures.measures(self),
             QuantityKind.PROJECTILE_SPEED: self._collision,
             QuantityKind.ENERGY_FRACTION_LOST: self._collision,
+            QuantityKind.VELOCITY_AFTER: self._collision,
             **dict.fromkeys(IMPACT_KINDS, self._impact),
             **dict.fromkeys(ORBIT_KINDS, self._orbit),
             **dict.fromkeys(SLIP_KINDS, partial(slipping.measure_sliding, self)),
@@ -933,7 +934,13 @@ class Simulator:
         at = dict(hit.at)
         q0 = [_evaluate(at.get(name, sympy.Integer(0)), point) for name in names]
         mass = _evaluate(hit.projectile_mass, point)
-        speed = expected if quantity.kind is QuantityKind.PROJECTILE_SPEED else 1.0
+        speed = (
+            expected
+            if quantity.kind is QuantityKind.PROJECTILE_SPEED
+            else 1.0
+            if hit.speed is None
+            else _evaluate(hit.speed, point)
+        )
         direction = [_evaluate(dict(hit.direction).get(axis, sympy.Integer(0)), point) for axis in AXES]
         norm = math.hypot(*direction)
         tau = 1e-6  # short beside every other time: friction or a spring acting meanwhile takes no part
@@ -966,6 +973,9 @@ class Simulator:
         lost = (initial - kinetic - gained) / initial
         if quantity.kind is QuantityKind.ENERGY_FRACTION_LOST:
             return "kinetic energy lost in an integrated stiff inelastic coupling", lost, None
+        if quantity.kind is QuantityKind.VELOCITY_AFTER:
+            measured = qd1[names.index(quantity.target)]
+            return "velocity at the end of an integrated stiff inelastic coupling", measured, None
         ((name, target_text),) = hit.reaches
         i = names.index(name)
         target = _evaluate(target_text, point)

@@ -127,3 +127,80 @@ def test_a_projectile_named_as_a_body_is_refused() -> None:
     text = BLOCK.replace("PROJECTILE", "block").replace("  point: POINT\n", "")
     with pytest.raises(SpecErrors, match="'block' names a body already"):
         load_model(yaml.safe_load(text), TABLE)
+
+
+u, k = sympy.Symbol("u", positive=True), sympy.Symbol("k", positive=True)
+GIVEN = {**TABLE, "u": u, "k": k}
+BLOCK_ON_SPRING = """
+coordinates: [x]
+bodies:
+  block: {mass: M, position: {x: x}}
+elements:
+  spring: {kind: spring, between: [block, {x: 0}], stiffness: k}
+collision: {projectile: bullet, mass: m, direction: {x: 1}, target: block, at: {x: 0}, speed: u}
+quantities:
+  after: {velocity_after: x}
+"""
+ROD_GIVEN = (
+    ROD.replace("POINT", 'point: {x: "L*sin(phi)", y: "-L*cos(phi)"}')
+    .replace("reaches: {phi: theta}", "speed: u")
+    .replace("speed: {projectile_speed: bullet}", "after: {velocity_after: phi}")
+)
+BLOCK_GIVEN = (
+    BLOCK.replace("PROJECTILE", "bullet")
+    .replace("  point: POINT\n", "")
+    .replace("reaches: {phi: theta}", "speed: u")
+    .replace("speed: {projectile_speed: bullet}", "after: {velocity_after: phi}")
+)
+
+
+@pytest.mark.parametrize(
+    ("text", "after"),
+    [
+        pytest.param(BLOCK_ON_SPRING, m * u / (M + m), id="block-on-a-spring"),
+        pytest.param(BLOCK_GIVEN, m * u / ((M + m) * L), id="block-on-a-string"),
+        pytest.param(ROD_GIVEN, 3 * m * u / ((M + 3 * m) * L), id="rod-struck-at-its-end"),
+    ],
+)
+def test_with_the_speed_given_the_velocity_just_after_the_blow_is_derived(
+    text: str, after: sympy.Expr
+) -> None:
+    result = uncached(load_model(yaml.safe_load(text), GIVEN))
+    assert sympy.simplify(result.quantities["after"] - after) == 0
+    assert set(result.agreement["after"]) >= {"newton", "conservation"}
+    assert result.simulation["after"].max_relative_error < 1e-3
+
+
+def test_a_rod_struck_at_its_end_has_the_centre_of_mass_slip_among_its_mistakes() -> None:
+    result = uncached(load_model(yaml.safe_load(ROD_GIVEN), GIVEN))
+    at_centre = 6 * m * u / ((4 * M + 3 * m) * L)  # the bullet's mass and moment taken at L/2
+    slips = {
+        str(sympy.simplify(mistake.expr - at_centre)): mistake.feedback
+        for mistake in result.mistakes["after"]
+    }
+    assert "sticks where it strikes" in slips["0"]
+
+
+@pytest.mark.parametrize(
+    ("change", "message"),
+    [
+        pytest.param(("speed: u", "speed: u, reaches: {x: 1}"), "give exactly one of reaches", id="both"),
+        pytest.param((", speed: u", ""), "give exactly one of reaches", id="neither"),
+        pytest.param(
+            ("after: {velocity_after: x}", "after: {projectile_speed: bullet}"),
+            "the collision gives the projectile's speed",
+            id="speed-asked-and-given",
+        ),
+    ],
+)
+def test_a_collision_gives_the_speed_or_asks_it_never_both(change: tuple[str, str], message: str) -> None:
+    with pytest.raises(SpecErrors, match=message):
+        load_model(yaml.safe_load(BLOCK_ON_SPRING.replace(*change)), GIVEN)
+
+
+def test_the_velocity_after_needs_the_speed() -> None:
+    text = ROD.replace("POINT", "").replace(
+        "speed: {projectile_speed: bullet}", "after: {velocity_after: phi}"
+    )
+    with pytest.raises(SpecErrors, match=r"needs the collision's speed \(`speed:`\)"):
+        load_model(yaml.safe_load(text), TABLE)
