@@ -864,6 +864,14 @@ def _domain(
             continue
         if name in coordinates:
             coordinate_ranges[str(name)] = (low, high)
+        elif low.free_symbols or high.free_symbols:  # sampled first, each symbol on its own
+            kept = [f"{name} - {typed_text(low)}"] if low.free_symbols else []
+            kept += [f"{typed_text(high)} - {name}"] if high.free_symbols else []
+            errors.add(
+                f"a parameter's range is two numbers; to keep {name} within other symbols, write what "
+                f"stays positive (`positive: [{', '.join(kept)}]`)",
+                path,
+            )
         elif low.is_finite and high.is_finite:
             ranges.append((symbols[name], low, high))
         else:

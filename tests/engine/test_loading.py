@@ -69,6 +69,11 @@ BROKEN = [
         id="range-of-unknown-symbol",
     ),
     pytest.param(
+        lambda d: d["domain"]["ranges"].update(m=["0", "M"]),
+        ("domain", "ranges", "m"),
+        id="range-bounded-by-another-symbol",  # was a TypeError in sampling: `positive: [M - m]` says it
+    ),
+    pytest.param(
         lambda d: d.update(
             friction=[{"constraint": "incline", "body": "block", "coefficient": "nu", "sliding": "s"}]
         ),

@@ -129,8 +129,25 @@ def test_a_projectile_named_as_a_body_is_refused() -> None:
         load_model(yaml.safe_load(text), TABLE)
 
 
-u, k = sympy.Symbol("u", positive=True), sympy.Symbol("k", positive=True)
-GIVEN = {**TABLE, "u": u, "k": k}
+u, k, R, h = (sympy.Symbol(n, positive=True) for n in ("u", "k", "R", "h"))
+GIVEN = {**TABLE, "u": u, "k": k, "R": R, "h": h}
+# A cylinder rolling on a level floor (its angle -x/R), struck at height h above its centre.
+CYLINDER = """
+elements:
+  cylinder: {kind: rolling, mass: M, radius: R, inertia: "M*R^2/2", coordinate: x}
+collision:
+  projectile: bullet
+  mass: m
+  direction: {x: 1}
+  target: cylinder
+  point: {x: "x + h*sin(x/R)", y: "h*cos(x/R)"}
+  at: {x: 0}
+  speed: u
+domain:
+  positive: [R - h]
+quantities:
+  after: {velocity_after: x}
+"""
 BLOCK_ON_SPRING = """
 coordinates: [x]
 bodies:
@@ -160,6 +177,11 @@ BLOCK_GIVEN = (
         pytest.param(BLOCK_ON_SPRING, m * u / (M + m), id="block-on-a-spring"),
         pytest.param(BLOCK_GIVEN, m * u / ((M + m) * L), id="block-on-a-string"),
         pytest.param(ROD_GIVEN, 3 * m * u / ((M + 3 * m) * L), id="rod-struck-at-its-end"),
+        pytest.param(  # angular momentum about the contact point, which the floor's impulses pass through
+            CYLINDER,
+            2 * R * m * u * (R + h) / (3 * M * R**2 + 2 * m * (R + h) ** 2),
+            id="rolling-cylinder-struck-above-its-centre",
+        ),
     ],
 )
 def test_with_the_speed_given_the_velocity_just_after_the_blow_is_derived(
