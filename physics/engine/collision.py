@@ -276,7 +276,10 @@ def by_newton(model: Model, quantity: Quantity, steps: list[tuple[str, str]]) ->
 
 @derives(QuantityKind.PROJECTILE_SPEED, QuantityKind.ENERGY_FRACTION_LOST, QuantityKind.VELOCITY_AFTER)
 def derived(method: Method, quantity: Quantity) -> sympy.Expr:
-    """Each method works the collision its own way (`collision` of Newton and of conservation)."""
+    """Each method works the collision its own way (`collision` of Newton and of conservation); a
+    velocity just after an `impact` (bodies that bounce) is the impact's."""
+    if quantity.kind is QuantityKind.VELOCITY_AFTER and method.model.collision is None:
+        return method.impact(quantity)
     return method.collision(quantity)
 
 

@@ -15,7 +15,7 @@ import sympy
 
 from physics.answer_text import typed_text
 from physics.engine import tidy
-from physics.engine.model import AXES, Body, Collision, Constraint, ConstraintKind, Model
+from physics.engine.model import AXES, Body, Constraint, ConstraintKind, Model
 
 ZERO = sympy.Integer(0)
 
@@ -73,14 +73,18 @@ def joined(model: Model) -> Model:
     )
 
 
-def point_fault(hit: Collision, target: Body, coordinates: set[sympy.Symbol]) -> str | None:
-    """Why `hit.point` cannot be where the projectile sticks, or None."""
-    point = dict(hit.point)
+def point_fault(
+    point: dict[str, sympy.Expr],
+    target: Body,
+    coordinates: set[sympy.Symbol],
+    what: str = "a projectile sticks",
+) -> str | None:
+    """Why `point` cannot be where `target` is struck, or None."""
     if target.angle is None:
         position = dict(target.position)
         if any(tidy.simplify(point.get(a, ZERO) - position.get(a, ZERO)) != 0 for a in AXES):
             return (
-                f"{target.name} is a particle: a projectile sticks where it is; a point away from it "
+                f"{target.name} is a particle: {what} where it is; a point away from it "
                 "needs a rigid body (one with an inertia and an angle)"
             )
         return None

@@ -76,7 +76,7 @@ def contact(model: Model, mech: Mechanics | None = None) -> Contact:
     row = tuple(
         side.get(d.body, 0) * n[d.name.split("_", 1)[0]]
         if not d.name.startswith("phi_")
-        else sympy.Integer(0)
+        else side.get(d.body, 0) * _moment_arm(model, d.body, n, state)
         for d in mech.dofs
     )
     jacobian = sympy.Matrix(
@@ -89,6 +89,20 @@ def contact(model: Model, mech: Mechanics | None = None) -> Contact:
     )
     place = {d.symbol: d.mapping.subs(state) for d in mech.dofs}
     return Contact(mech, row, before, jacobian, place)
+
+
+def _moment_arm(
+    model: Model, body: str, n: dict[str, sympy.Expr], state: dict[sympy.Symbol, sympy.Expr]
+) -> sympy.Expr:
+    """How the body's turning moves its struck point along the normal: (r x n) for r from its centre
+    of mass to the point (`points`), zero where it is struck at its centre."""
+    assert model.impact is not None
+    point = dict(dict(model.impact.points).get(body, ()))
+    if not point:
+        return sympy.Integer(0)
+    position = dict(model.body(body).position)
+    rx, ry = (tidy.simplify((point.get(a, 0) - position.get(a, 0)).subs(state)) for a in AXES)
+    return tidy.simplify(rx * n["y"] - ry * n["x"])
 
 
 def by_body(mech: Mechanics, values: Sequence[sympy.Expr]) -> Velocities:
@@ -296,6 +310,13 @@ def _quantity(
         lost = sympy.factor(tidy.simplify(kinetic(model, before) - kinetic(model, after)))
         step("Kinetic energy lost", r"K_0 - K_1 = " + typeset.latex(lost))
         return lost
+    if quantity.kind is QuantityKind.VELOCITY_AFTER:  # a coordinate's: a struck rod's rate of turning
+        index = [c.name for c in model.coordinates].index(quantity.target)
+        rate = sympy.factor(coordinate_rates(model, after)[index])
+        coordinate = model.coordinates[index]
+        names = contact(model).mech.latex_names  # the coordinate's rate as a worked solution writes it
+        step("Velocity just after", typeset.latex(sympy.Eq(coordinate.velocity, rate), symbol_names=names))
+        return rate
     velocity = {a: v for a, v in after[quantity.target].items() if a != "phi"}
     if quantity.kind is QuantityKind.FINAL_SPEED:
         speed = _signs_by_domain(model, sympy.sqrt(sympy.factor(sympy.expand(_dot(velocity, velocity)))))

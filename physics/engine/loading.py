@@ -214,7 +214,7 @@ def _load_low_level(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]
     collision = _collision(data.get("collision"), symbols, bodies, coordinates, errors)
     state = _state(data.get("state"), symbols, coordinates, errors, time)
     quantities = _quantities(data.get("quantities"), symbols, coordinates, declared, collision, errors)
-    _check_collision_asks(quantities, collision, errors)
+    _check_collision_asks(quantities, collision, data.get("impact") is not None, errors)
     released.check_uses(let_go, frictions, quantities, errors.add)
     velocities = {f"{c.name}_dot": c.velocity for c in coordinates}
     forces = _forces(data.get("forces"), symbols, {"t": time, **coord_scope, **velocities}, bodies, errors)
@@ -647,21 +647,25 @@ def _collision(
     hit = Collision(projectile, mass, direction, target, at, reaches, point, speed)
     struck = next((b for b in bodies if b.name == target), None)
     if point and struck is not None:
-        fault = embedding.point_fault(hit, struck, {c.symbol for c in coordinates})
+        fault = embedding.point_fault(dict(point), struck, {c.symbol for c in coordinates})
         if fault is not None:
             errors.add(fault, (*path, "point"))  # the quantities that use the collision stay found
     return hit
 
 
 def _check_collision_asks(
-    quantities: tuple[Quantity, ...], collision: Collision | None, errors: _Collector
+    quantities: tuple[Quantity, ...], collision: Collision | None, impact: bool, errors: _Collector
 ) -> None:
     """A collision's speed is asked where the merged body stops (`reaches`), or given (`speed`) when the
-    velocities just after are asked: never both."""
+    velocities just after are asked: never both. An impact's velocities just after need nothing more."""
     for q in quantities:
         where: Path = ("quantities", q.name, q.kind.value)
-        if q.kind is QuantityKind.VELOCITY_AFTER and (collision is None or collision.speed is None):
-            errors.add("the velocity just after a collision needs the collision's speed (`speed:`)", where)
+        given = collision is not None and collision.speed is not None
+        if q.kind is QuantityKind.VELOCITY_AFTER and not given and (collision is not None or not impact):
+            errors.add(
+                "the velocity just after a collision needs the collision's speed (`speed:`), or an impact",
+                where,
+            )
         if q.kind is QuantityKind.PROJECTILE_SPEED and collision is not None and collision.speed is not None:
             errors.add("the collision gives the projectile's speed; ask it with `reaches:` instead", where)
 
@@ -688,7 +692,9 @@ def _impact(
         return None
     path: Path = ("impact",)
     spec = _mapping(value, path, errors)
-    _check_keys(spec, {"bodies", "normal", "restitution", "release", "stick"}, {"bodies"}, path, errors)
+    _check_keys(
+        spec, {"bodies", "normal", "restitution", "release", "stick", "points"}, {"bodies"}, path, errors
+    )
     entries = spec.get("bodies")
     known = {b.name: b for b in bodies}
     if not isinstance(entries, list) or len(entries) != 2:
@@ -720,8 +726,8 @@ def _impact(
             continue
         if entry not in known:
             errors.add(f"unknown body {entry!r}", where)
-        elif known[entry].angle is not None:
-            errors.add("an impact is between particles (no angle)", where)
+        elif known[entry].angle is not None and spec.get("stick", False):
+            errors.add("sticking is modelled for particles; a rigid body needs restitution: 0", where)
         names.append(str(entry))
     if len(set(names)) != len(names):
         errors.add(
@@ -783,6 +789,7 @@ def _impact(
             )
     if flip:  # written from the fixed partner to the body: kept from the moving body to the partner
         normal = tuple((axis, -component) for axis, component in normal)
+    points = _impact_points(spec.get("points"), symbols, known, names, motion[0], errors)
     for q in asked:
         where = ("quantities", q.name, q.kind.value)
         if q.kind is QuantityKind.KINETIC_ENERGY_LOST:
@@ -797,7 +804,36 @@ def _impact(
     restitution = restitution if restitution_stuck is None else restitution_stuck
     if restitution is None and release is None:
         return None
-    return Impact(tuple(names), normal, restitution, release, fixed)
+    return Impact(tuple(names), normal, restitution, release, fixed, points)
+
+
+def _impact_points(
+    value: Any,
+    symbols: Mapping[str, sympy.Symbol],
+    known: Mapping[str, Body],
+    names: list[str],
+    coordinates: tuple[Coordinate, ...],
+    errors: _Collector,
+) -> tuple[tuple[str, tuple[tuple[str, sympy.Expr], ...]], ...]:
+    """`points: {rod: {x: ..., y: ...}}`: where each rigid body of the impact is struck."""
+    if value is None:
+        return ()
+    path: Path = ("impact", "points")
+    scope = {**symbols, **{c.name: c.symbol for c in coordinates}}
+    found: list[tuple[str, tuple[tuple[str, sympy.Expr], ...]]] = []
+    for name, entry in _mapping(value, path, errors).items():
+        if name not in names or name not in known:
+            errors.add(f"the impact's moving bodies are {names}, not {name!r}", (*path, str(name)))
+            continue
+        point = _axes(entry, scope, (*path, str(name)), errors)
+        fault = embedding.point_fault(
+            dict(point), known[name], {c.symbol for c in coordinates}, "the contact is"
+        )
+        if fault is not None:
+            errors.add(fault, (*path, str(name)))
+            continue
+        found.append((str(name), point))
+    return tuple(found)
 
 
 def _coordinate_values(

@@ -131,7 +131,9 @@ def generate_mistakes(
         )
     if quantity.kind is QuantityKind.ENERGY_FRACTION_LOST:
         candidates.append((1 - reference, FRACTION_KEPT))
-    if quantity.kind in IMPACT_KINDS and model.impact is not None:
+    if (
+        quantity.kind in IMPACT_KINDS or quantity.kind is QuantityKind.VELOCITY_AFTER
+    ) and model.impact is not None:
         candidates += impact.mistakes(model, reference)
     if quantity.kind in SLIP_KINDS:
         candidates.append((slipping.without_torque(model, quantity, rederive), slipping.NO_TORQUE))

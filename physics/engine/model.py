@@ -129,6 +129,9 @@ class Impact:
     restitution: sympy.Expr | None
     release: sympy.Expr | None
     fixed: str | None = None
+    # where a rigid body is struck (body -> its point's position in the coordinates): the impulse's
+    # moment turns it; without, the contact is at its centre of mass
+    points: tuple[tuple[str, tuple[tuple[str, sympy.Expr], ...]], ...] = ()
     action = Action.IMPULSIVE
 
 

@@ -336,7 +336,7 @@ class Simulator:
             **oscillation_measures.measures(self),
             QuantityKind.PROJECTILE_SPEED: self._collision,
             QuantityKind.ENERGY_FRACTION_LOST: self._collision,
-            QuantityKind.VELOCITY_AFTER: self._collision,
+            QuantityKind.VELOCITY_AFTER: self._velocity_after,
             **dict.fromkeys(IMPACT_KINDS, self._impact),
             **dict.fromkeys(ORBIT_KINDS, self._orbit),
             **dict.fromkeys(SLIP_KINDS, partial(slipping.measure_sliding, self)),
@@ -363,6 +363,13 @@ class Simulator:
     @cached_property
     def _bounced(self) -> dict[tuple[tuple[str, float], ...], Simulator]:
         return {}
+
+    def _velocity_after(self, quantity: Quantity, point: Point, expected: float) -> Measured:
+        """Just after a collision (the projectile coupled) or an impact (the contact let go)."""
+        if self.model.collision is not None:
+            return self._collision(quantity, point, expected)
+        index = [c.name for c in self.model.coordinates].index(quantity.target)
+        return "velocity after an integrated spring-dashpot contact", self._impact.rates(point)[index], None
 
     def after_impact(self, quantity: Quantity, point: Point, expected: float) -> Measured:
         """The motion after the impact, started with the velocities the integrated contact left (never
