@@ -9,7 +9,7 @@ import math
 import sympy
 
 from physics.engine.impact import velocities_before
-from physics.engine.model import AuthoredElement, Model
+from physics.engine.model import AXES, AuthoredElement, Body, Model
 from physics.figures.figure import BLOCK, Figure, Values, body_label, symbol_label
 from physics.figures.geometry import element_body, linear_surface, of_kind, written_symbol
 from physics.figures.shapes import angle_mark, draw_block, square
@@ -31,9 +31,14 @@ def draw_impact(figure: Figure, model: Model, values: Values) -> None:
     speeds: list[str] = []
     # A body against a fixed floor or wall is drawn round, a ball, as are pucks in the plane.
     round_ = plane or hit.fixed is not None
+    rods: list[str] = []
     for index, name in enumerate(hit.bodies):
         body = model.body(name)
         centre = (index * gap, 0.0)
+        if body.angle is not None:  # a rigid body: a rod, struck where the other body meets it
+            _draw_rod(figure, model, body, centre, values)
+            rods.append(body_label(body, model))
+            continue
         if round_:
             canvas.circle(centre, BLOCK / 2, fill=FILLS[index])
         else:
@@ -93,6 +98,36 @@ def draw_impact(figure: Figure, model: Model, values: Values) -> None:
     else:
         kind = "a collision" if hit.restitution != 1 else "an elastic collision"
         figure.say(f"{names} about to meet in {kind}" + (": " + ", ".join(speeds) if speeds else "") + ".")
+    for rod in rods:
+        figure.say(
+            f"{rod} is a rigid body, drawn as a rod, met at the point where the other body reaches it."
+        )
+
+
+def _draw_rod(figure: Figure, model: Model, body: Body, centre: tuple[float, float], values: Values) -> None:
+    """A rod through the meeting point (at the other body's height), reaching towards the body's centre
+    of mass and as far beyond it: a rod struck at its end is drawn from that end."""
+    hit = model.impact
+    assert hit is not None
+    state = dict(model.state)
+    point = dict(dict(hit.points).get(body.name, body.position))
+    position = dict(body.position)
+    offset = [
+        values.number((point.get(a, sympy.Integer(0)) - position.get(a, sympy.Integer(0))).subs(state))
+        for a in AXES
+    ]
+    length = math.hypot(*offset)
+    # from the point through the centre; a rod struck at its centre is drawn upright, centred there
+    direction = (-offset[0] / length, -offset[1] / length) if length > 1e-9 else (0.0, 1.0)
+    half = 1.6
+    start = (
+        centre[0] - direction[0] * (half if length <= 1e-9 else 0.0),
+        -direction[1] * (half if length <= 1e-9 else 0.0),
+    )
+    end = (start[0] + direction[0] * 2 * half, start[1] + direction[1] * 2 * half)
+    figure.canvas.line(start, end, width=0.35, color="#8aa9cf")
+    figure.canvas.circle(centre, 0.08, fill="#1b1b1b")  # where it is met
+    figure.canvas.text((end[0] + 0.45, end[1]), body_label(body, model), anchor="start")
 
 
 def _draw_fixed_partner(figure: Figure, model: Model, values: Values) -> None:

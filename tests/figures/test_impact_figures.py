@@ -90,3 +90,35 @@ def test_a_ball_thrown_up_into_a_ceiling_points_up() -> None:
     heights = _arrow_heights(root)
     assert len(heights) == 1 and heights[0][1] < heights[0][0]
     assert "moving up" in root.findtext(f"{SVG}desc", "")
+
+
+def test_a_rigid_body_in_an_impact_is_drawn_as_a_rod_met_at_its_struck_point() -> None:
+    symbols = {n: sympy.Symbol(n, positive=True) for n in ("m", "M", "L", "u")}
+    model = load_model(
+        {
+            "coordinates": ["s"],
+            "bodies": {"ball": {"mass": "m", "position": {"x": "s"}}},
+            "elements": {
+                "axle": {
+                    "kind": "pendulum",
+                    "body": "rod",
+                    "mass": "M",
+                    "inertia": "M*L^2/12",
+                    "distance": "L/2",
+                    "coordinate": "phi",
+                }
+            },
+            "state": {"s": "0", "phi": "0", "s_dot": "u"},
+            "impact": {
+                "bodies": ["ball", "rod"],
+                "restitution": 1,
+                "points": {"rod": {"x": "L*sin(phi)", "y": "-L*cos(phi)"}},
+            },
+            "quantities": {"spin": {"velocity_after": "phi"}},
+        },
+        symbols,
+    )
+    figure = ET.fromstring(model_figure(model, {}, title="impact"))
+    assert "M is a rigid body, drawn as a rod" in figure.findtext(f"{SVG}desc", "")
+    circles = figure.findall(f".//{SVG}circle")
+    assert len([c for c in circles if float(c.get("r", "0")) > 0.2]) == 1  # the ball only: the rod is no ball
