@@ -20,6 +20,8 @@ EXPECTED = {
     "atwood": ({"m₁", "m₂"}, "pulley"),
     "atwood-slack": ({"m₁", "m₂"}, "The string goes slack"),
     "ballistic-pendulum": ({"M", "m", "θ", "L"}, "bullet"),
+    "rod-bullet": ({"M", "m"}, "a bullet m flies into it"),
+    "ball-hits-rod": ({"M", "m", "u"}, "drawn as a rod"),
     "incline-pulley": ({"m₁", "m₂", "θ"}, "pulley"),
     "lennard-jones": ({"m", "r"}, "apart"),
     "mass-spring": ({"m", "k"}, "spring"),
