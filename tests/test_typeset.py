@@ -139,3 +139,12 @@ def test_small_oscillations_write_the_inertia_as_one_factor():
         if step.title.startswith("Small oscillations from the energy")
     )
     assert r"\tfrac12\, \frac{7 m \left(" in energy and r"- \frac{14 m R r}{5}" not in energy, energy
+
+
+def test_an_impacts_velocities_after_are_primed_and_its_constraint_impulses_named():
+    derived = compile_problem(bank_documents()["ball-hits-rod"]).derived
+    assert derived is not None
+    shown = " ".join(step.latex for method in derived.raw.methods for step in method.steps)
+    assert r"v'_{x,\mathrm{ball}}" in shown and r"\Lambda_{\mathrm{axlePivotX}}" in shown
+    assert r"\dot{\phi}'" in shown
+    assert "after}" not in shown  # were v_{x ball after}, \phi_{after}

@@ -17,7 +17,7 @@ import sympy
 from physics import typeset
 from physics.answer_text import typed_text
 from physics.engine import embedding, tidy
-from physics.engine.mechanics import Mechanics, solve_linear
+from physics.engine.mechanics import Mechanics, cartesian_subscript, solve_linear
 from physics.engine.model import Model, Quantity, QuantityKind
 from physics.engine.quantity_table import derives
 from physics.engine.roots import admissible
@@ -228,7 +228,7 @@ def by_newton(model: Model, quantity: Quantity, steps: list[tuple[str, str]]) ->
     # after; u may be the given speed), J_{string} for the string's impulse
     names = {
         **mech.latex_names,
-        **{u: rf"v'_{{{_component(d.name)}}}" for u, d in zip(velocity, mech.dofs, strict=True)},
+        **{u: rf"v'_{{{cartesian_subscript(d.name)}}}" for u, d in zip(velocity, mech.dofs, strict=True)},
         **{j: rf"J_{{\mathrm{{{c.name}}}}}" for j, c in zip(impulses, after.constraints, strict=True)},
     }
 
@@ -296,10 +296,3 @@ def _rates(
     if len(found) != 1 or any(value.free_symbols & set(mech.qd) for value in found[0]):
         raise DerivationError("the velocities just after do not settle the coordinates' rates")
     return dict(zip(mech.qd, found[0], strict=True))
-
-
-def _component(dof: str) -> str:
-    """A Cartesian degree of freedom's subscript: `x_block` is x,block; `phi_disk` is φ,disk."""
-    axis, _, body = dof.partition("_")
-    written = typeset.latex(sympy.Symbol(axis))
-    return rf"{written},\mathrm{{{body}}}" if body else written

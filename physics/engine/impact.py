@@ -24,7 +24,7 @@ import sympy
 from physics import typeset
 from physics.answer_text import typed_text
 from physics.engine import tidy
-from physics.engine.mechanics import Mechanics, solve_linear
+from physics.engine.mechanics import Mechanics, cartesian_subscript, solve_linear
 from physics.engine.model import AXES, IMPACT_KINDS, Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
 from physics.engine.quantity_table import derives
@@ -179,6 +179,11 @@ def by_conservation(model: Model) -> Worked:
     before = sympy.Matrix([state.get(c.velocity, sympy.Integer(0)) for c in model.coordinates])
     after = sympy.Matrix([sympy.Symbol(f"{c.name}_after", real=True) for c in model.coordinates])
     parting = sympy.Symbol("w", real=True)  # the normal separation's rate after: a . q'
+    # each coordinate's velocity after primed, as textbooks write it: \dot{x}'
+    names = {
+        v: mech.latex_names.get(c.velocity, typeset.latex(c.velocity)) + "'"
+        for v, c in zip(after, model.coordinates, strict=True)
+    }
     conserved = [(u.T * mass * (after - before))[0] for u in sympy.Matrix([list(a)]).nullspace()]
     equations = [*conserved, (a.T * after)[0] - parting]
     solved = solve_linear(equations, list(after), "momentum conservation", tidy=_tidy)
@@ -186,7 +191,7 @@ def by_conservation(model: Model) -> Worked:
         "Momentum conserved in every direction the contact's impulse has no part in "
         "(the constraints' impulses included: they do no work on the coordinates); the normal "
         "separation's rate after is w",
-        r",\quad ".join(typeset.latex(sympy.Eq(e, 0)) for e in equations),
+        r",\quad ".join(typeset.latex(sympy.Eq(e, 0), symbol_names=names) for e in equations),
     )
     approach = -(a.T * before)[0]
     in_w = sympy.Matrix([solved[v] for v in after])
@@ -234,11 +239,16 @@ def by_impulse(model: Model) -> Worked:
     ]
     holding = [sympy.Add(*(g * v for g, v in zip(grad, after, strict=True))) for grad in gradients]
     solved = solve_linear([*laws, *holding], [*after, *held], "the impulse-momentum laws", tidy=_tidy)
+    names = {  # v'_{x,ball} just after; \Lambda_{axle} a constraint's impulse
+        **mech.latex_names,
+        **{v: rf"v'_{{{cartesian_subscript(d.name)}}}" for v, d in zip(after, mech.dofs, strict=True)},
+        **{lam: rf"\Lambda_{{\mathrm{{{c.name}}}}}" for lam, c in zip(held, model.constraints, strict=True)},
+    }
     in_j = [solved[v] for v in after]
     step(
         "Impulse-momentum law for each body, normal impulse J"
         + (", and each constraint's impulse, the constraint holding after" if held else ""),
-        r",\quad ".join(typeset.latex(sympy.Eq(e, 0)) for e in [*laws, *holding]),
+        r",\quad ".join(typeset.latex(sympy.Eq(e, 0), symbol_names=names) for e in [*laws, *holding]),
     )
     rate_after = sympy.Add(*(c * v for c, v in zip(found.normal_row, in_j, strict=True)))
     rate_before = sympy.Add(*(c * v for c, v in zip(found.normal_row, found.before, strict=True)))

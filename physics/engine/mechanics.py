@@ -15,6 +15,7 @@ from sympy.polys.constructor import construct_domain
 from sympy.polys.matrices import DomainMatrix
 from sympy.polys.matrices.exceptions import DMNonInvertibleMatrixError
 
+from physics import typeset
 from physics.engine import tidy as tidy_up
 from physics.engine.loads import Traits, View
 from physics.engine.model import Model, PairPotential
@@ -232,3 +233,11 @@ def _independent_rows(matrix: sympy.Matrix) -> list[int]:
         if matrix.extract(trial, list(range(matrix.shape[1]))).rank(simplify=True) == len(trial):
             chosen.append(row)
     return chosen
+
+
+def cartesian_subscript(dof: str) -> str:
+    """A Cartesian degree of freedom's subscript in a worked solution: `x_block` is x,block; `phi_disk`
+    is φ,disk."""
+    axis, _, body = dof.partition("_")
+    written = typeset.latex(sympy.Symbol(axis))
+    return rf"{written},\mathrm{{{body}}}" if body else written
