@@ -4,7 +4,8 @@ A particle target takes the projectile where it is: the merged body is the parti
 masses. A rigid target (a body with an angle) may be struck away from its centre of mass, at a
 `point` fixed on it (a rod's lower end); the projectile then stays a particle of its own, welded
 to the body there by two bilateral constraints, so that every method sees the embedded mass where
-it is: its moment about the pivot, its weight's lever, and the impulses that hold it.
+it is: its moment about the pivot, its weight's lever, and the impulses that hold it. An impact's
+`points` (a ball bouncing off a rod's end) are checked here the same way (`point_fault`).
 """
 
 from __future__ import annotations
