@@ -8,6 +8,7 @@ import math
 
 import sympy
 
+from physics.engine import tidy
 from physics.engine.impact import velocities_before
 from physics.engine.model import AXES, AuthoredElement, Body, Model
 from physics.figures.figure import BLOCK, Figure, Values, body_label, symbol_label
@@ -31,13 +32,12 @@ def draw_impact(figure: Figure, model: Model, values: Values) -> None:
     speeds: list[str] = []
     # A body against a fixed floor or wall is drawn round, a ball, as are pucks in the plane.
     round_ = plane or hit.fixed is not None
-    rods: list[str] = []
+    rods: list[tuple[str, bool]] = []  # each rigid body's label, and whether it turns about a pivot
     for index, name in enumerate(hit.bodies):
         body = model.body(name)
         centre = (index * gap, 0.0)
         if body.angle is not None:  # a rigid body: a rod, struck where the other body meets it
-            _draw_rod(figure, model, body, centre, values)
-            rods.append(body_label(body, model))
+            rods.append((body_label(body, model), _draw_rod(figure, model, body, centre, values)))
             continue
         if round_:
             canvas.circle(centre, BLOCK / 2, fill=FILLS[index])
@@ -98,15 +98,17 @@ def draw_impact(figure: Figure, model: Model, values: Values) -> None:
     else:
         kind = "a collision" if hit.restitution != 1 else "an elastic collision"
         figure.say(f"{names} about to meet in {kind}" + (": " + ", ".join(speeds) if speeds else "") + ".")
-    for rod in rods:
+    for rod, pivoted in rods:
+        turning = " turning about a fixed pivot" if pivoted else ""
         figure.say(
-            f"{rod} is a rigid body, drawn as a rod, met at the point where the other body reaches it."
+            f"{rod} is a rigid body{turning}, drawn as a rod, met at the point where the other body reaches it."
         )
 
 
-def _draw_rod(figure: Figure, model: Model, body: Body, centre: tuple[float, float], values: Values) -> None:
+def _draw_rod(figure: Figure, model: Model, body: Body, centre: tuple[float, float], values: Values) -> bool:
     """A rod through the meeting point (at the other body's height), reaching towards the body's centre
-    of mass and as far beyond it: a rod struck at its end is drawn from that end."""
+    of mass and as far beyond it: a rod struck at its end is drawn from that end; with its pivot, when it
+    turns about a fixed one (True)."""
     hit = model.impact
     assert hit is not None
     state = dict(model.state)
@@ -127,7 +129,42 @@ def _draw_rod(figure: Figure, model: Model, body: Body, centre: tuple[float, flo
     end = (start[0] + direction[0] * 2 * half, start[1] + direction[1] * 2 * half)
     figure.canvas.line(start, end, width=0.35, color="#8aa9cf")
     figure.canvas.circle(centre, 0.08, fill="#1b1b1b")  # where it is met
-    figure.canvas.text((end[0] + 0.45, end[1]), body_label(body, model), anchor="start")
+    middle = ((start[0] + end[0]) / 2, (start[1] + end[1]) / 2)
+    figure.canvas.text((middle[0] + 0.45, middle[1]), body_label(body, model), anchor="start")
+    pivot = _fixed_pivot(model, body, values)
+    if pivot is not None and length > 1e-9:  # drawn to the rod's scale, from the struck point
+        here = [values.number(point.get(a, sympy.Integer(0)).subs(state)) for a in AXES]
+        scale = half / length
+        at = (centre[0] + (pivot[0] - here[0]) * scale, centre[1] + (pivot[1] - here[1]) * scale)
+        figure.canvas.ground((at[0] - 0.6, at[1]), (at[0] + 0.6, at[1]), below=False)
+        figure.canvas.circle(at, 0.1, fill="#1b1b1b")
+        return True
+    return False
+
+
+def _fixed_pivot(model: Model, body: Body, values: Values) -> tuple[float, float] | None:
+    """The point of a rigid body that stays still as its one coordinate turns it (a pivot), found from
+    its motion: c = p + R(θ) b with dc/dq = 0; None when no such point is fixed."""
+    assert body.angle is not None
+    turning = [c.symbol for c in model.coordinates if body.angle.has(c.symbol)]
+    if len(turning) != 1:
+        return None
+    (q,) = turning
+    rate = sympy.diff(body.angle, q)
+    position = dict(body.position)
+    px, py = (position.get(a, sympy.Integer(0)) for a in AXES)
+    if rate == 0:
+        return None
+    cos, sin = sympy.cos(body.angle), sympy.sin(body.angle)
+    dx, dy = sympy.diff(px, q) / rate, sympy.diff(py, q) / rate
+    vx, vy = cos * dx + sin * dy, -sin * dx + cos * dy  # R(-θ) dp/dθ
+    bx, by = -vy, vx  # the body-frame point that R(θ) turns into -dp/dθ's perpendicular
+    cx = tidy.simplify(px + cos * bx - sin * by)
+    cy = tidy.simplify(py + sin * bx + cos * by)
+    if (cx.free_symbols | cy.free_symbols) & {c.symbol for c in model.coordinates}:
+        return None  # it moves: a free body's centre, a rolling body's contact
+    state = dict(model.state)
+    return values.number(cx.subs(state)), values.number(cy.subs(state))
 
 
 def _draw_fixed_partner(figure: Figure, model: Model, values: Values) -> None:

@@ -119,6 +119,36 @@ def test_a_rigid_body_in_an_impact_is_drawn_as_a_rod_met_at_its_struck_point() -
         symbols,
     )
     figure = ET.fromstring(model_figure(model, {}, title="impact"))
-    assert "M is a rigid body, drawn as a rod" in figure.findtext(f"{SVG}desc", "")
+    assert "M is a rigid body turning about a fixed pivot, drawn as a rod" in figure.findtext(
+        f"{SVG}desc", ""
+    )
     circles = figure.findall(f".//{SVG}circle")
     assert len([c for c in circles if float(c.get("r", "0")) > 0.2]) == 1  # the ball only: the rod is no ball
+
+
+def test_a_free_rod_in_an_impact_has_no_pivot() -> None:
+    symbols = {n: sympy.Symbol(n, positive=True) for n in ("m", "M", "L", "u")}
+    model = load_model(
+        {
+            "coordinates": ["s", "X", "Y", "theta"],
+            "bodies": {
+                "puck": {"mass": "m", "position": {"x": "s"}},
+                "rod": {
+                    "mass": "M",
+                    "inertia": "M*L^2/12",
+                    "position": {"x": "X", "y": "Y"},
+                    "angle": "theta",
+                },
+            },
+            "state": {"s": "0", "X": "0", "Y": "0", "theta": "0", "s_dot": "u"},
+            "impact": {
+                "bodies": ["puck", "rod"],
+                "restitution": 1,
+                "points": {"rod": {"x": "X - L*sin(theta)/2", "y": "Y + L*cos(theta)/2"}},
+            },
+            "quantities": {"spin": {"velocity_after": "theta"}},
+        },
+        symbols,
+    )
+    said = ET.fromstring(model_figure(model, {}, title="impact")).findtext(f"{SVG}desc", "")
+    assert "M is a rigid body, drawn as a rod" in said and "pivot" not in said
