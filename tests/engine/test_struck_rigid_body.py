@@ -46,6 +46,18 @@ quantities:
   drift: {velocity_after: X}
 """
 FREE_IMPULSE = (1 + e) * u * m * M / (4 * m + M)  # the end's effective mass is M/4
+# seen from above: a turntable turning at u (rad/s here) picks up a blob at rest at its rim, radius L
+TURNTABLE = """
+coordinates: [s]
+bodies:
+  blob: {mass: m, position: {x: s}}
+elements:
+  axle: {kind: pendulum, body: table, mass: M, inertia: "M*L^2/2", distance: 0, coordinate: phi}
+state: {s: 0, phi: 0, phi_dot: u, s_dot: 0}
+impact: {bodies: [blob, table], restitution: 0, normal: {x: -1}, points: {table: {x: "L*sin(phi)", y: "-L*cos(phi)"}}}
+quantities:
+  spin: {velocity_after: phi}
+"""
 
 CASES = [
     pytest.param(
@@ -56,6 +68,7 @@ CASES = [
     pytest.param(
         FREE, {"spin": -6 * FREE_IMPULSE / (M * L), "drift": FREE_IMPULSE / M}, id="puck-off-a-free-rods-end"
     ),
+    pytest.param(TURNTABLE, {"spin": M * u / (M + 2 * m)}, id="turntable-picks-up-a-blob-at-its-rim"),
 ]
 
 
