@@ -22,7 +22,7 @@ bank: $(BIN)/physcheck
 
 lint: $(BIN)/physcheck
 	$(BIN)/ruff check .
-	$(BIN)/ruff format --check app physics problems
+	$(BIN)/ruff format --check app physics problems tests bench
 	$(BIN)/mypy
 
 # The bank's per-problem self-test is `physcheck bank verify` (20 variants); pytest's copy of it is left out

@@ -215,7 +215,9 @@ def test_no_instructor_reaches_another_courses_students(client, teacher, other_t
     assert [e["course_id"] for e in exported["enrolments"]] == [course] and len(exported["submissions"]) == 1
     erased = client.delete(f"/v1/student-data?student={student}", headers=teacher).json()["erased"]
     assert (erased["submissions"], erased["enrolments"]) == (1, 1)
-    assert student not in [s["student"] for s in client.get(f"/v1/courses/{course}/roster", headers=teacher).json()]
+    assert student not in [
+        s["student"] for s in client.get(f"/v1/courses/{course}/roster", headers=teacher).json()
+    ]
 
 
 def test_a_ta_reads_the_gradebook_but_does_not_change_the_course(client, teacher):

@@ -47,7 +47,9 @@ def test_an_operator_may_log_answers(settings: Settings, backend: str, grading_p
     assert "zebra" in logged
 
 
-def test_logged_answers_are_truncated_and_escaped(settings: Settings, backend: str, grading_pool: GradingPool):
+def test_logged_answers_are_truncated_and_escaped(
+    settings: Settings, backend: str, grading_pool: GradingPool
+):
     settings = settings.model_copy(update={"log_answers": True})
     forged = 'x\n{"level": "CRITICAL", "message": "forged"}' + "y" * 500
     lines = _submit_and_log(settings, backend, grading_pool, forged).splitlines()

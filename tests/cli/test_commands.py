@@ -176,7 +176,9 @@ def test_bank_verify_side_by_side_reports_every_problem_in_bank_order(tmp_path, 
     for problem in ("mass-spring", "atwood"):
         shutil.copytree(BANK / problem, bank / problem)
     problem = (bank / "atwood" / "problem.yaml").read_text()  # a known mistake that is the right answer
-    (bank / "atwood" / "problem.yaml").write_text(problem.replace("answer: m2*g\n", "answer: 2*m1*m2*g/(m1 + m2)\n"))
+    (bank / "atwood" / "problem.yaml").write_text(
+        problem.replace("answer: m2*g\n", "answer: 2*m1*m2*g/(m1 + m2)\n")
+    )
     monkeypatch.setenv("PHYSCHECK_BANK_DIR", str(bank))
     get_settings.cache_clear()
     try:

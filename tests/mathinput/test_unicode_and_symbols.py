@@ -32,7 +32,11 @@ TEXTBOOK = [
     ("［m+M］g", ("m", "M", "g"), (sym("m") + sym("M")) * sym("g")),
     ("｛m+M｝g", ("m", "M", "g"), (sym("m") + sym("M")) * sym("g")),
     ("２m＊g", ("m", "g"), 2 * sym("m") * sym("g")),
-    ("ｍ ｇ ｓｉｎ（θ）", ("m", "g", "theta"), sym("m") * sym("g") * sympy.sin(sym("theta"))),  # fullwidth letters
+    (
+        "ｍ ｇ ｓｉｎ（θ）",
+        ("m", "g", "theta"),
+        sym("m") * sym("g") * sympy.sin(sym("theta")),
+    ),  # fullwidth letters
     ("cosec(x)", ("x",), sympy.csc(sym("x"))),
     ("cosec x", ("x",), sympy.csc(sym("x"))),
     ("sec(x)", ("x",), sympy.sec(sym("x"))),

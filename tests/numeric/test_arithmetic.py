@@ -149,7 +149,9 @@ def test_hostile_arithmetic_is_refused_by_the_size_limits(answer: str, reason: R
     assert verdict.reason is reason
 
 
-@pytest.mark.parametrize("answer", ["__import__('os') m", "eval(1) m", "2; import os", "lambda: 1", "2 m # x"])
+@pytest.mark.parametrize(
+    "answer", ["__import__('os') m", "eval(1) m", "2; import os", "lambda: 1", "2 m # x"]
+)
 def test_code_in_a_numeric_answer_is_never_run(answer: str) -> None:
     verdict = check_numeric(answer, NumericSpec(D(2), "m"))
     assert verdict.outcome is Outcome.INVALID
