@@ -349,7 +349,9 @@ def _simulate(
         if check is not None:
             result[quantity.name] = check
     if findings:
-        raise DerivationError(
-            "; ".join(m for _, m in findings), quantity=str(findings[0][0][-1]), findings=findings
+        raise DerivationError(  # one fault of the model, found by every quantity, said once
+            "; ".join(dict.fromkeys(m for _, m in findings)),
+            quantity=str(findings[0][0][-1]),
+            findings=findings,
         )
     return result

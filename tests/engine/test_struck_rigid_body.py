@@ -111,3 +111,12 @@ def test_struck_at_its_centre_the_rod_is_struck_where_no_point_is_given() -> Non
 def test_a_struck_point_that_cannot_be_is_refused(change: tuple[str, str], message: str) -> None:
     with pytest.raises(SpecErrors, match=message):
         load_model(yaml.safe_load(HANGING.replace(*change)), TABLE)
+
+
+def test_a_normal_the_bodies_do_not_approach_along_is_refused_and_said_once() -> None:
+    text = TURNTABLE.replace("normal: {x: -1}", "normal: {x: 1}").replace(
+        "spin: {velocity_after: phi}", "spin: {velocity_after: phi}\n  lost: {kinetic_energy_lost: impact}"
+    )
+    with pytest.raises(derivation.DerivationError) as refused:
+        uncached(load_model(yaml.safe_load(text), TABLE))
+    assert str(refused.value).count("do not approach along the normal") == 1
