@@ -17,7 +17,7 @@ import sympy
 from physics import typeset
 from physics.answer_text import typed_text
 from physics.engine import embedding, tidy
-from physics.engine.mechanics import Mechanics, cartesian_subscript, solve_linear
+from physics.engine.mechanics import Mechanics, cartesian_subscript, rates_giving, solve_linear
 from physics.engine.model import Model, Quantity, QuantityKind
 from physics.engine.quantity_table import derives
 from physics.engine.roots import admissible
@@ -244,7 +244,9 @@ def by_newton(model: Model, quantity: Quantity, steps: list[tuple[str, str]]) ->
         steps.append(("Velocities just after, as the constraints allow", listed(allowed)))
     solution = solve_linear(balances + allowed, velocity + impulses, "impulse balance")
     if quantity.kind is QuantityKind.VELOCITY_AFTER:
-        return _velocity_after(_rates(mech, at, [solution[u] for u in velocity]), mech, quantity, steps)
+        jacobian = sympy.Matrix([[sympy.diff(d.mapping, q).subs(at) for q in mech.q] for d in mech.dofs])
+        rates = rates_giving(jacobian, [solution[u] for u in velocity], "the velocities just after")
+        return _velocity_after(dict(zip(mech.qd, rates, strict=True)), mech, quantity, steps)
     kinetic = tidy.simplify(
         sympy.Add(*(d.inertia * solution[u] ** 2 / 2 for d, u in zip(mech.dofs, velocity, strict=True)))
     )
@@ -281,18 +283,3 @@ def derived(method: Method, quantity: Quantity) -> sympy.Expr:
     if quantity.kind is QuantityKind.VELOCITY_AFTER and method.model.collision is None:
         return method.impact(quantity)
     return method.collision(quantity)
-
-
-def _rates(
-    mech: Mechanics, at: dict[sympy.Symbol, sympy.Expr], cartesian: list[sympy.Expr]
-) -> dict[sympy.Symbol, sympy.Expr]:
-    """The coordinates' velocities that give these Cartesian velocities (the constraints allow them)."""
-    equations = [
-        sympy.Add(*(sympy.diff(d.mapping, q).subs(at) * qd for q, qd in zip(mech.q, mech.qd, strict=True)))
-        - u
-        for d, u in zip(mech.dofs, cartesian, strict=True)
-    ]
-    found = list(sympy.linsolve(equations, list(mech.qd)))
-    if len(found) != 1 or any(value.free_symbols & set(mech.qd) for value in found[0]):
-        raise DerivationError("the velocities just after do not settle the coordinates' rates")
-    return dict(zip(mech.qd, found[0], strict=True))

@@ -24,7 +24,7 @@ import sympy
 from physics import typeset
 from physics.answer_text import typed_text
 from physics.engine import tidy
-from physics.engine.mechanics import Mechanics, cartesian_subscript, solve_linear
+from physics.engine.mechanics import Mechanics, cartesian_subscript, rates_giving, solve_linear
 from physics.engine.model import AXES, IMPACT_KINDS, Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
 from physics.engine.quantity_table import derives
@@ -281,14 +281,8 @@ def coordinate_rates(model: Model, after: Velocities) -> list[sympy.Expr]:
     """The coordinates' velocities that give the bodies' velocities `after` (the constraints hold, so
     the Cartesian velocities determine them)."""
     found = contact(model)
-    rates = [sympy.Symbol(f"{c.name}_rate", real=True) for c in model.coordinates]
-    equations = [
-        sympy.Add(*(found.jacobian[i, j] * r for j, r in enumerate(rates)))
-        - after[d.body][d.name.split("_", 1)[0]]
-        for i, d in enumerate(found.mech.dofs)
-    ]
-    solved = solve_linear(equations, rates, "the velocities after the impact", tidy=_tidy)
-    return [solved[r] for r in rates]
+    cartesian = [after[d.body][d.name.split("_", 1)[0]] for d in found.mech.dofs]
+    return rates_giving(found.jacobian, cartesian, "the velocities after the impact", tidy=_tidy)
 
 
 def _recorder(steps: list[tuple[str, str]]) -> Step:
@@ -324,7 +318,7 @@ def _quantity(
         index = [c.name for c in model.coordinates].index(quantity.target)
         rate = sympy.factor(coordinate_rates(model, after)[index])
         coordinate = model.coordinates[index]
-        names = contact(model).mech.latex_names  # the coordinate's rate as a worked solution writes it
+        names = Mechanics(model).latex_names  # the coordinate's rate as a worked solution writes it
         step("Velocity just after", typeset.latex(sympy.Eq(coordinate.velocity, rate), symbol_names=names))
         return rate
     velocity = {a: v for a, v in after[quantity.target].items() if a != "phi"}

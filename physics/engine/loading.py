@@ -661,7 +661,8 @@ def _check_collision_asks(
     for q in quantities:
         where: Path = ("quantities", q.name, q.kind.value)
         given = collision is not None and collision.speed is not None
-        if q.kind is QuantityKind.VELOCITY_AFTER and not given and (collision is not None or not impact):
+        after_impact = collision is None and impact
+        if q.kind is QuantityKind.VELOCITY_AFTER and not (given or after_impact):
             errors.add(
                 "the velocity just after a collision needs the collision's speed (`speed:`), or an impact",
                 where,

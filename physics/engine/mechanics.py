@@ -226,6 +226,23 @@ def solve_square(matrix: sympy.Matrix, rhs: sympy.Matrix) -> list[sympy.Expr]:
     return list(left.lu_solve(right).to_Matrix())
 
 
+def rates_giving(
+    jacobian: sympy.Matrix,
+    cartesian: Sequence[sympy.Expr],
+    what: str,
+    tidy: Callable[[sympy.Expr], sympy.Expr] = tidy_up.simplify,
+) -> list[sympy.Expr]:
+    """The coordinates' velocities that give these Cartesian velocities, `jacobian` being d(dof)/d(q)
+    where they are taken (the constraints hold, so the Cartesian velocities determine them)."""
+    rates = [sympy.Symbol(f"rate_{j}", real=True) for j in range(jacobian.shape[1])]
+    equations = [
+        sympy.Add(*(jacobian[i, j] * r for j, r in enumerate(rates))) - value
+        for i, value in enumerate(cartesian)
+    ]
+    solved = solve_linear(equations, rates, what, tidy=tidy)
+    return [solved[r] for r in rates]
+
+
 def _independent_rows(matrix: sympy.Matrix) -> list[int]:
     chosen: list[int] = []
     for row in range(matrix.shape[0]):
