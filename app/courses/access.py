@@ -11,8 +11,10 @@
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass
 from datetime import datetime
+from typing import Any
 
 from app.auth import Principal
 from app.courses.policy import accepting, due_for
@@ -111,6 +113,15 @@ class Opening:
     accepting: bool
     due: datetime | None
     why: str = ""
+
+    def attempts_in(self, view: Mapping[str, Any]) -> Mapping[str, Any]:
+        """A student's view of the problem with each part's attempts as this assignment allows them
+        (its `max_attempts` is over each problem's own), so that the page and the API tell the
+        student the limit their submissions are held to."""
+        limit = None if self.assignment is None else self.assignment.spec.max_attempts
+        if limit is None:
+            return view
+        return {**view, "parts": [{**part, "max_attempts": limit} for part in view.get("parts", [])]}
 
 
 def opening(stores: Stores, student: str, problem_id: str, now: datetime) -> Opening | None:

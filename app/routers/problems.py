@@ -86,12 +86,12 @@ async def get_problem(
     student: Annotated[StudentId | None, Query()] = None,
 ) -> ProblemPublic:
     who = student_of(principal, student)
-    await run_in_threadpool(require_open, services, principal, problem_id, who, now_of(request))
+    opened = await run_in_threadpool(require_open, services, principal, problem_id, who, now_of(request))
     try:
         view = await run_in_threadpool(services.catalog.student_view, problem_id, who)
     except LookupError:
         raise NotFound(f"There is no problem {problem_id!r}.") from None
-    return ProblemPublic.model_validate(view)
+    return ProblemPublic.model_validate(opened.attempts_in(view))
 
 
 @router.post(

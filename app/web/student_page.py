@@ -152,10 +152,11 @@ def _load(context: LtiContext, problem_id: str, student: str) -> Loaded | None:
     if context.student_view is None or not _PROBLEM_ID.match(problem_id):
         return None
     # A course's student sees only the problems of their open assignments (app.courses.access).
-    if access.opening(context.stores, student, problem_id, context.clock()) is None:
+    opened = access.opening(context.stores, student, problem_id, context.clock())
+    if opened is None:
         return None
     try:
-        view = context.student_view(problem_id, student)
+        view = opened.attempts_in(context.student_view(problem_id, student))
     except LookupError:
         return None
     work = load_work(context.stores.submissions, problem_id, student, view.get("parts", []))

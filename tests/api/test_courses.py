@@ -316,6 +316,11 @@ def test_an_assignments_attempts_per_part_override_the_problems(client, teacher)
     path = f"/v1/problems/{problem}/parts/{part}/submissions"
     assert browser.post(path, json={"answer": WRONG}, headers=csrf).status_code == 201
     assert browser.post(path, json={"answer": WRONG}, headers=csrf).status_code == 409
+    # The student is told the limit they are held to, not the problem's own.
+    view = browser.get(f"/v1/problems/{problem}").json()
+    assert {p["max_attempts"] for p in view["parts"]} == {1}
+    page = browser.get(f"/p/{problem}").text
+    assert "Attempts: 1 of 1 used" in page and "(no limit)" not in page
 
 
 def test_an_instructor_assigns_only_problems_that_are_theirs_to_use(client, teacher, other_teacher):
