@@ -55,9 +55,9 @@ def from_elements(
     slope = draw_incline(figure, model, values, surfaces, touching=_touching(model, on_slope), pushes=pushes)
     for body, potential in held:
         draw_slope_spring(figure, model, slope, body, potential)
-    for index, (on, hanging, movable) in enumerate(over_edge):
+    for index, (on, hanging, movable, wheel) in enumerate(over_edge):
         left = slope.upper is None and len(over_edge) == 2 and index == 0
-        draw_pulley_to_hanging(figure, model, slope, on, hanging, left=left, movable=movable)
+        draw_pulley_to_hanging(figure, model, slope, on, hanging, left=left, movable=movable, wheel=wheel)
     for frame in of_kind(elements, "rotating"):
         turning = [str(name) for name in frame.fields["bodies"]]
         if len(turning) == 1 and turning[0] in on_slope:
@@ -76,17 +76,18 @@ def _surface(model: Model, values: Values, element: AuthoredElement) -> Surface:
     )
 
 
-def _over_edge(model: Model, pulley: AuthoredElement, on_slope: set[str]) -> tuple[Body, Body, bool] | None:
-    """(the body on the slope, the one hanging, whether it hangs from a movable pulley under the string)
-    at the pulley's ends, if that is what it joins."""
-    if "inertia" in pulley.fields:
-        return None  # a massive pulley
+def _over_edge(
+    model: Model, pulley: AuthoredElement, on_slope: set[str]
+) -> tuple[Body, Body, bool, Body | None] | None:
+    """(the body on the slope, the one hanging, whether it hangs from a movable pulley under the string,
+    the pulley's wheel when it has inertia) at the pulley's ends, if that is what it joins."""
+    wheel = model.body(pulley.bodies[0]) if "inertia" in pulley.fields and pulley.bodies else None
     ends = [(str(end.get("body", end.get("under"))), "under" in end) for end in pulley.fields["ends"]]
     hanging = [(name, movable) for name, movable in ends if name not in on_slope]
     if len(hanging) != 1 or len(ends) != 2:
         return None
     on = next((name for name, movable in ends if name in on_slope and not movable), None)
-    return None if on is None else (model.body(on), model.body(hanging[0][0]), hanging[0][1])
+    return None if on is None else (model.body(on), model.body(hanging[0][0]), hanging[0][1], wheel)
 
 
 def _held_along(

@@ -6,7 +6,7 @@ from __future__ import annotations
 from physics.engine.model import AuthoredElement, Body, Model
 from physics.figures.figure import BLOCK, SLOPE, Figure, Values, body_label
 from physics.figures.geometry import of_kind
-from physics.figures.shapes import hanging_block
+from physics.figures.shapes import draw_block, hanging_block
 from physics.figures.slope import Slope
 from physics.figures.svg import FILLS
 
@@ -20,10 +20,12 @@ def draw_pulley_to_hanging(
     *,
     left: bool = False,
     movable: bool = False,
+    wheel: Body | None = None,
 ) -> None:
     """A pulley at the slope's upper end (or a table's edge); the string runs along it, then down to the
-    hanging body, or (`movable`) down under a light movable pulley that carries it and up to a support."""
-    radius = 0.4
+    hanging body, or (`movable`) down under a light movable pulley that carries it and up to a support.
+    `wheel`: the pulley is a body of its own (it has inertia), drawn filled and labelled."""
+    radius = 0.4 if wheel is None else 0.6
     canvas = figure.canvas
     tx, ty = slope.tangent
     table_edge = (0.0, 0.0) if left else (SLOPE * tx, SLOPE * ty)
@@ -38,16 +40,19 @@ def draw_pulley_to_hanging(
     attach = (base[0] + tx * BLOCK / 2 + nx * BLOCK / 2, base[1] + ty * BLOCK / 2 + ny * BLOCK / 2)
     touch = (centre[0] + nx * radius, centre[1] + ny * radius)
     canvas.line(attach, touch, width=0.04)
-    canvas.circle(centre, radius, fill="#ffffff")
+    canvas.circle(centre, radius, fill="#ffffff" if wheel is None else FILLS[2])
     canvas.circle(centre, 0.06, fill="#1b1b1b")
+    if wheel is not None:
+        canvas.text((centre[0], centre[1] - 0.3), body_label(wheel, model), size=0.3)
     side = radius if tx >= 0 else -radius
     edge = "top" if slope.upper is not None else "edge"
+    pulley = "a pulley" if wheel is None else f"a pulley, {body_label(wheel, model)},"
     if movable:
         _under_movable_pulley(
             figure, model, (centre[0] + side, centre[1]), 1.0 if side > 0 else -1.0, hanging
         )
         figure.say(
-            f"A string from {body_label(on_slope, model)} runs over a pulley at the {edge}, down under a "
+            f"A string from {body_label(on_slope, model)} runs over {pulley} at the {edge}, down under a "
             f"light movable pulley carrying {body_label(hanging, model)}, and up to a fixed support."
         )
         return
@@ -64,9 +69,22 @@ def draw_pulley_to_hanging(
     )
     canvas.text(drop, body_label(hanging, model))
     figure.say(
-        f"A string from {body_label(on_slope, model)} runs over a pulley at the {edge} to "
+        f"A string from {body_label(on_slope, model)} runs over {pulley} at the {edge} to "
         f"{body_label(hanging, model)}, which hangs."
     )
+
+
+def draw_table_to_hanging(
+    figure: Figure, model: Model, on_table: Body, hanging: Body, wheel: Body | None, *, left: bool
+) -> None:
+    """A body that slides at one height (a table's top, written by hand without a surface), its string
+    over a pulley at the table's edge, on the `left` or the right, down to a hanging body."""
+    figure.canvas.ground((0.0, 0.0), (SLOPE, 0.0))
+    base = (SLOPE * (0.55 if left else 0.45), 0.0)
+    draw_block(figure, base, (1.0, 0.0), body_label(on_table, model), FILLS[0])
+    figure.say(f"A table with {body_label(on_table, model)} on it.")
+    table = Slope(None, (1.0, 0.0), (0.0, 1.0), {on_table.name: base})
+    draw_pulley_to_hanging(figure, model, table, on_table, hanging, left=left, wheel=wheel)
 
 
 def _under_movable_pulley(

@@ -28,6 +28,7 @@ from physics.figures.pulleys import (
     draw_double_atwood,
     draw_movable_pulley,
     draw_pulley_to_hanging,
+    draw_table_to_hanging,
 )
 from physics.figures.slope import draw_incline
 from physics.figures.spring_block import draw_slope_spring, draw_spring, draw_two_blocks_spring
@@ -114,6 +115,15 @@ def draw_recognised(figure: Figure, model: Model, values: Values) -> None:
             free = next(b for b in hanging if b is not carried[0])
             draw_movable_pulley(figure, model, free, carried[0])
             return
+        level = [b for b in hanging if _height(b, model) is None]
+        if len(hanging) == 2 and len(level) == 1 and len(wheels) <= 1:
+            on_table = level[0]
+            down = next(b for b in hanging if b is not on_table)
+            wheel = wheels[0] if wheels else None
+            draw_table_to_hanging(
+                figure, model, on_table, down, wheel, left=_pulley_left(on_table, down, model, values)
+            )
+            return
         if len(hanging) == 2:
             draw_atwood(figure, model, hanging[0], hanging[1], wheels[0] if wheels else None)
             if any(c.kind is ConstraintKind.STRING for c in model.released):
@@ -176,6 +186,24 @@ def draw_recognised(figure: Figure, model: Model, values: Values) -> None:
         return
     figure.fallback = "no picture recognised in the hand-written model"
     draw_row(figure, model)
+
+
+def _height(body: Body, model: Model) -> sympy.Expr | None:
+    """The body's height where it changes with the coordinates; None when it never does (a body
+    written to slide along a level line, such as a table's top)."""
+    coordinates = {c.symbol for c in model.coordinates}
+    height = dict(body.position).get("y")
+    return None if height is None or not (height.free_symbols & coordinates) else height
+
+
+def _pulley_left(on_table: Body, hanging: Body, model: Model, values: Values) -> bool:
+    """Is the pulley to the left of the level body: does it move left as the hanging body descends?"""
+    x = dict(on_table.position).get("x", sympy.Integer(0))
+    y = _height(hanging, model)
+    assert y is not None
+    return any(
+        values.number(sympy.diff(x, c.symbol) * sympy.diff(y, c.symbol)) > 0 for c in model.coordinates
+    )
 
 
 def _loops_under(body: Body, string: Constraint, model: Model) -> bool:
