@@ -148,3 +148,11 @@ def test_an_impacts_velocities_after_are_primed_and_its_constraint_impulses_name
     assert r"v'_{x,\mathrm{ball}}" in shown and r"\Lambda_{\mathrm{axlePivotX}}" in shown
     assert r"\dot{\phi}'" in shown
     assert "after}" not in shown  # were v_{x ball after}, \phi_{after}
+
+
+def test_a_numeric_parts_expression_is_written_as_its_symbolic_reference_is():
+    # "Evaluated from" printed 2 g m₂/(…) beside part 1's 2 m₂ g/(…): sympy's order, not the text's
+    compiled = compile_problem(bank_documents()["table-pulley-friction"])
+    symbolic, numeric = compiled.part("acceleration"), compiled.part("acceleration_numeric")
+    assert numeric.expression == symbolic.expression
+    assert numeric.solution().latex == symbolic.solution().latex == latex(symbolic.expression)

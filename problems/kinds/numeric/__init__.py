@@ -22,6 +22,7 @@ from pydantic import (
 )
 from pydantic_core import PydanticCustomError
 
+from physics import typeset
 from physics.checking import NumericJob
 from physics.dimensions import DIMENSIONLESS
 from physics.errors import AnswerError, SpecError
@@ -216,7 +217,7 @@ class CompiledNumericPart:
         """The expression the value is evaluated from, or the value stated."""
         if isinstance(self.value, Evaluated):
             expr = self.value.expr
-            return Reference(sympy.sstr(expr), sympy.latex(expr), self.units)
+            return Reference(sympy.sstr(expr), typeset.latex(expr), self.units)
         text = format_number(self.value)
         mantissa, times_ten, power = text.partition(" × 10^")
         latex = rf"{mantissa} \times 10^{{{power}}}" if times_ten else text
