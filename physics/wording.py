@@ -11,3 +11,44 @@ def counted(count: int, noun: str, plural: str | None = None) -> str:
 def the_counted(count: int, noun: str, plural: str | None = None) -> str:
     """`the equation`, `the 2 equations`: a definite count, the number left out where it is one."""
     return f"the {noun}" if count == 1 else f"the {counted(count, noun, plural)}"
+
+
+GREEK = [
+    "alpha",
+    "beta",
+    "gamma",
+    "delta",
+    "epsilon",
+    "zeta",
+    "eta",
+    "theta",
+    "iota",
+    "kappa",
+    "lambda",
+    "mu",
+    "nu",
+    "xi",
+    "omicron",
+    "pi",
+    "rho",
+    "sigma",
+    "tau",
+    "upsilon",
+    "phi",
+    "chi",
+    "psi",
+    "omega",
+]
+_SUBSCRIPT = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+
+
+def symbol_label(name: str) -> str:
+    """`theta` -> θ, `m1` -> m₁, `Omega` -> Ω, `v_0` -> v₀: how the statement typesets the name."""
+    base, _, sub = name.partition("_")
+    digits = ""
+    while base and base[-1].isdigit() and len(base) > 1:
+        digits, base = base[-1] + digits, base[:-1]
+    if base.lower() in GREEK:
+        letter = chr(0x3B1 + GREEK.index(base.lower()) + (base.lower() in GREEK[17:]))
+        base = letter.upper() if base[0].isupper() else letter
+    return base + (digits + sub).translate(_SUBSCRIPT)

@@ -27,6 +27,7 @@ from physics.engine.model import Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
 from physics.engine.quantity_table import derives
 from physics.errors import DerivationError
+from physics.wording import symbol_label
 
 if TYPE_CHECKING:
     from physics.engine.method import Method
@@ -265,7 +266,9 @@ def mistakes(model: Model, quantity: Quantity, reference: sympy.Expr) -> list[tu
 
 
 def limit_cases(model: Model) -> list[tuple[sympy.Symbol, sympy.Expr, str]]:
-    return [(b, sympy.Integer(0), f"no damping ({b} → 0)") for b in drag_coefficients(model)]
+    return [
+        (b, sympy.Integer(0), f"no damping ({symbol_label(str(b))} → 0)") for b in drag_coefficients(model)
+    ]
 
 
 def undamped_checks(

@@ -27,6 +27,7 @@ from physics.engine.model import (
 )
 from physics.engine.proof import domain_points, proven_sign
 from physics.engine.results import KnownMistake, LimitCase
+from physics.wording import symbol_label
 
 Rederive = Callable[[Model, Quantity], sympy.Expr | None]
 
@@ -324,28 +325,34 @@ def generate_limits(model: Model, reference: sympy.Expr) -> tuple[LimitCase, ...
     for body in supports(model):
         mass = model.body(body).mass
         if isinstance(mass, sympy.Symbol):
-            cases.append((mass, sympy.oo, f"the {body} held fixed ({mass} → ∞)"))
+            cases.append((mass, sympy.oo, f"the {body} held fixed ({symbol_label(str(mass))} → ∞)"))
     for symbol, low, _ in model.ranges:
         if low == 0:
-            cases.append((symbol, sympy.Integer(0), f"{symbol} → 0"))
+            cases.append((symbol, sympy.Integer(0), f"{symbol_label(symbol.name)} → 0"))
     for friction in model.frictions:
         if isinstance(friction.coefficient, sympy.Symbol):
             cases.append(
-                (friction.coefficient, sympy.Integer(0), f"no friction ({friction.coefficient} → 0)")
+                (
+                    friction.coefficient,
+                    sympy.Integer(0),
+                    f"no friction ({symbol_label(friction.coefficient.name)} → 0)",
+                )
             )
     cases += damping.limit_cases(model)
     masses = list(dict.fromkeys(b.mass for b in model.bodies if isinstance(b.mass, sympy.Symbol)))
     for mass in masses if len(masses) >= 2 else []:
-        others = [str(other) for other in masses if other != mass]
+        others = [symbol_label(str(other)) for other in masses if other != mass]
         than = others[0] if len(others) == 1 else "the other masses"
-        cases.append((mass, sympy.Integer(0), f"{mass} much lighter than {than}"))
+        cases.append((mass, sympy.Integer(0), f"{symbol_label(str(mass))} much lighter than {than}"))
     placed = set().union(
         *(e.free_symbols for b in model.bodies for _, e in b.position),
         *(b.mass.free_symbols for b in model.bodies),
     )
     for rigid in model.bodies:
         for symbol in rigid.inertia.free_symbols - placed:
-            cases.append((symbol, sympy.Integer(0), f"{symbol} → 0: no rotational inertia"))
+            cases.append(
+                (symbol, sympy.Integer(0), f"{symbol_label(symbol.name)} → 0: no rotational inertia")
+            )
     result: list[LimitCase] = []
     said: set[tuple[sympy.Symbol, sympy.Expr]] = set()
     for symbol, value, description in cases:

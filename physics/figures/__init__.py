@@ -20,9 +20,9 @@ from collections.abc import Mapping
 from html import escape
 
 from physics.engine.model import Model
-from physics.figures.figure import symbol_label
 from physics.figures.free_body import Force, body_forces, free_body_figure
 from physics.figures.scene import compose
+from physics.wording import symbol_label
 
 __all__ = ["Force", "body_forces", "free_body_figure", "model_figure", "symbol_label"]
 

@@ -6,9 +6,10 @@ from __future__ import annotations
 import sympy
 
 from physics.engine.model import Body, Model, PairPotential
-from physics.figures.figure import Figure, body_label, symbol_label
+from physics.figures.figure import Figure, body_label
 from physics.figures.geometry import other_symbols
 from physics.figures.svg import FILLS
+from physics.wording import symbol_label
 
 
 def draw_central(figure: Figure, model: Model, body: Body, potential: PairPotential) -> None:

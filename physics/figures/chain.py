@@ -9,9 +9,10 @@ import math
 import sympy
 
 from physics.engine.model import Body, Constraint, Model
-from physics.figures.figure import Figure, body_label, symbol_label
+from physics.figures.figure import Figure, body_label
 from physics.figures.geometry import bodies_in
 from physics.figures.svg import FILLS, Point
+from physics.wording import symbol_label
 
 ROD = 3.0
 BOB = 0.8

@@ -7,9 +7,10 @@ from __future__ import annotations
 import sympy
 
 from physics.engine.model import Body, ForceKind, Model
-from physics.figures.figure import Figure, Values, body_label, symbol_label
+from physics.figures.figure import Figure, Values, body_label
 from physics.figures.loads import applied_forces
 from physics.figures.svg import FILLS
+from physics.wording import symbol_label
 
 RADIUS = 0.45
 APART = 3.0  # between the bodies' lines

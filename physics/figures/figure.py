@@ -13,52 +13,12 @@ import sympy
 
 from physics.engine.model import Body, Model
 from physics.figures.svg import Canvas
+from physics.wording import symbol_label
 
-GREEK = [
-    "alpha",
-    "beta",
-    "gamma",
-    "delta",
-    "epsilon",
-    "zeta",
-    "eta",
-    "theta",
-    "iota",
-    "kappa",
-    "lambda",
-    "mu",
-    "nu",
-    "xi",
-    "omicron",
-    "pi",
-    "rho",
-    "sigma",
-    "tau",
-    "upsilon",
-    "phi",
-    "chi",
-    "psi",
-    "omega",
-]
-
-
-_SUBSCRIPT = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 BLOCK = 1.0  # side of a block, in figure units
 SLOPE = 7.0  # length of an incline's surface
 # Angles are drawn at their values within this range; outside it the figure says it is not to scale.
 READABLE_ANGLES = (math.radians(5), math.radians(75))
-
-
-def symbol_label(name: str) -> str:
-    """`theta` -> θ, `m1` -> m₁, `Omega` -> Ω, `v_0` -> v₀: how the statement typesets the name."""
-    base, _, sub = name.partition("_")
-    digits = ""
-    while base and base[-1].isdigit() and len(base) > 1:
-        digits, base = base[-1] + digits, base[:-1]
-    if base.lower() in GREEK:
-        letter = chr(0x3B1 + GREEK.index(base.lower()) + (base.lower() in GREEK[17:]))
-        base = letter.upper() if base[0].isupper() else letter
-    return base + (digits + sub).translate(_SUBSCRIPT)
 
 
 class NotDrawable(Exception):

@@ -25,11 +25,12 @@ import sympy
 from physics.engine.model import Constraint, ConstraintKind, Model
 from physics.engine.notation import notation_of, split_subscript
 from physics.figures.configuration import drawn_configuration
-from physics.figures.figure import BLOCK, Values, body_label, symbol_label
+from physics.figures.figure import BLOCK, Values, body_label
 from physics.figures.geometry import is_linear
 from physics.figures.held import held_forces
 from physics.figures.loads import applied_forces, potential_forces
 from physics.figures.svg import FILLS, Canvas
+from physics.wording import symbol_label
 
 _LABELS = {ConstraintKind.SURFACE: "N", ConstraintKind.STRING: "T", ConstraintKind.ROLLING: "f"}
 ARROW = 2.2

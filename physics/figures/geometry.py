@@ -10,8 +10,9 @@ from typing import Any
 import sympy
 
 from physics.engine.model import AuthoredElement, Body, Constraint, Model, PairPotential
-from physics.figures.figure import Values, symbol_label
+from physics.figures.figure import Values
 from physics.figures.svg import Point
+from physics.wording import symbol_label
 
 
 def own_symbols(body: Body, model: Model) -> set[sympy.Symbol]:

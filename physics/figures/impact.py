@@ -11,10 +11,11 @@ import sympy
 from physics.engine import tidy
 from physics.engine.impact import velocities_before
 from physics.engine.model import AXES, AuthoredElement, Body, Model
-from physics.figures.figure import BLOCK, Figure, Values, body_label, symbol_label
+from physics.figures.figure import BLOCK, Figure, Values, body_label
 from physics.figures.geometry import element_body, linear_surface, of_kind, written_symbol
 from physics.figures.shapes import angle_mark, draw_block, square
 from physics.figures.svg import FILLS
+from physics.wording import symbol_label
 
 
 def draw_impact(figure: Figure, model: Model, values: Values) -> None:

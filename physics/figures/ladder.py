@@ -9,10 +9,11 @@ from dataclasses import dataclass
 import sympy
 
 from physics.engine.model import Body, Constraint, ConstraintKind, Model, QuantityKind
-from physics.figures.figure import Figure, Values, body_label, symbol_label
+from physics.figures.figure import Figure, Values, body_label
 from physics.figures.geometry import angle_symbol_of
 from physics.figures.shapes import angle_mark
 from physics.figures.svg import FILLS
+from physics.wording import symbol_label
 
 LENGTH = 6.0  # the ladder's drawn length
 THICK = 0.24  # the rod's drawn width

@@ -18,8 +18,9 @@ import sympy
 
 from physics.engine.mechanics import Mechanics
 from physics.engine.model import AppliedForce, ForceKind, Model, PairPotential
-from physics.figures.figure import Values, symbol_label
+from physics.figures.figure import Values
 from physics.figures.geometry import spring_sign, stiffness_symbols
+from physics.wording import symbol_label
 
 Direction = tuple[float, float]
 _SUBSCRIPTS = dict(zip("0123456789aehijklmnoprstuvx", "₀₁₂₃₄₅₆₇₈₉ₐₑₕᵢⱼₖₗₘₙₒₚᵣₛₜᵤᵥₓ", strict=True))

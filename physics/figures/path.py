@@ -9,10 +9,11 @@ import sympy
 
 from physics.engine import embedding
 from physics.engine.model import AXES, Body, ConstraintKind, Model, PairPotential
-from physics.figures.figure import BLOCK, Figure, NotDrawable, NotNumeric, Values, body_label, symbol_label
+from physics.figures.figure import BLOCK, Figure, NotDrawable, NotNumeric, Values, body_label
 from physics.figures.geometry import other_symbols
 from physics.figures.shapes import draw_bullet, square
 from physics.figures.svg import FILLS
+from physics.wording import symbol_label
 
 
 def draw_path(

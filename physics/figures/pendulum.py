@@ -10,11 +10,12 @@ import sympy
 
 from physics.engine.model import AuthoredElement, Body, Constraint, Model
 from physics.figures.chain import draw_pendulum_chain
-from physics.figures.figure import BLOCK, Figure, NotNumeric, Values, body_label, symbol_label
+from physics.figures.figure import BLOCK, Figure, NotNumeric, Values, body_label
 from physics.figures.geometry import element_body, of_kind, written_symbol
 from physics.figures.path import draw_path
 from physics.figures.shapes import angle_mark, draw_bullet, square
 from physics.figures.svg import FILLS, Point
+from physics.wording import symbol_label
 
 
 def _cart(figure: Figure, pivot: Point, label: str) -> None:

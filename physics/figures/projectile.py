@@ -9,10 +9,11 @@ from dataclasses import dataclass
 import sympy
 
 from physics.engine.model import Body, Model, QuantityKind
-from physics.figures.figure import Figure, Values, body_label, symbol_label
+from physics.figures.figure import Figure, Values, body_label
 from physics.figures.geometry import angle_symbol_of
 from physics.figures.shapes import angle_mark
 from physics.figures.svg import FILLS
+from physics.wording import symbol_label
 
 SPAN = 7.0  # the larger of the drawn range and height, in figure units
 ARROW = 2.4  # the launch velocity's drawn length

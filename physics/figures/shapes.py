@@ -8,8 +8,9 @@ import math
 import sympy
 
 from physics.engine.model import Body, Model
-from physics.figures.figure import BLOCK, Figure, body_label, symbol_label
+from physics.figures.figure import BLOCK, Figure, body_label
 from physics.figures.svg import Point
+from physics.wording import symbol_label
 
 
 def draw_block(

@@ -10,10 +10,11 @@ from dataclasses import dataclass
 import sympy
 
 from physics.engine.model import Body, ForceKind, Model
-from physics.figures.figure import BLOCK, SLOPE, Figure, Values, body_label, symbol_label
+from physics.figures.figure import BLOCK, SLOPE, Figure, Values, body_label
 from physics.figures.geometry import Surface
 from physics.figures.shapes import angle_mark, circle_body, draw_block
 from physics.figures.svg import FILLS, Point
+from physics.wording import symbol_label
 
 _CIRCLE = 0.55  # radius of a round body on a slope
 _PUSH = 1.5  # length of a push's arrow

@@ -6,12 +6,13 @@ from __future__ import annotations
 import sympy
 
 from physics.engine.model import AuthoredElement, Body, ForceKind, Model, PairPotential
-from physics.figures.figure import BLOCK, Figure, Values, body_label, symbol_label
+from physics.figures.figure import BLOCK, Figure, Values, body_label
 from physics.figures.geometry import of_kind, stiffness_symbols, written_symbol
 from physics.figures.shapes import draw_block, draw_bullet
 from physics.figures.slope import Slope
 from physics.figures.springs import draw_spring_line, spring_line_of
 from physics.figures.svg import FILLS
+from physics.wording import symbol_label
 
 
 def draw_slope_spring(

@@ -15,10 +15,11 @@ from typing import TypeAlias
 import sympy
 
 from physics.engine.model import Model, PairPotential
-from physics.figures.figure import BLOCK, Figure, Values, body_label, symbol_label
+from physics.figures.figure import BLOCK, Figure, Values, body_label
 from physics.figures.geometry import spring_sign, stiffness_symbols
 from physics.figures.shapes import draw_block
 from physics.figures.svg import FILLS, Point
+from physics.wording import symbol_label
 
 SPRING = 3.0  # a spring's drawn length
 WALL = 2.0  # a wall's height

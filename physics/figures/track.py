@@ -10,9 +10,10 @@ from dataclasses import dataclass
 import sympy
 
 from physics.engine.model import Body, Constraint, ConstraintKind, Model
-from physics.figures.figure import Figure, Values, body_label, symbol_label
+from physics.figures.figure import Figure, Values, body_label
 from physics.figures.geometry import is_linear
 from physics.figures.svg import FILLS, Point
+from physics.wording import symbol_label
 
 SPAN = 5.0  # the track's larger extent, in figure units
 SIZE = 0.8  # the block's side, about

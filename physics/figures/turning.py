@@ -9,11 +9,12 @@ import math
 import sympy
 
 from physics.engine.model import AuthoredElement, ConstraintKind, Model
-from physics.figures.figure import Figure, Values, body_label, symbol_label
+from physics.figures.figure import Figure, Values, body_label
 from physics.figures.geometry import bodies_in, is_linear, of_kind
 from physics.figures.path import draw_path
 from physics.figures.pendulum import draw_pendulum
 from physics.figures.slope import Slope
+from physics.wording import symbol_label
 
 AXIS_GAP = 1.8  # from the body to the axis drawn beside it: the true radius is far larger
 

@@ -5,11 +5,12 @@ from __future__ import annotations
 import math
 
 from physics.engine.model import Body, Constraint, ConstraintKind, Model
-from physics.figures.figure import Figure, Values, body_label, symbol_label
+from physics.figures.figure import Figure, Values, body_label
 from physics.figures.geometry import Surface, angle_symbol_of, bodies_in, coordinate_label, moving_coordinate
 from physics.figures.shapes import angle_mark, axis_x, draw_block, mark_coordinate
 from physics.figures.slope import drawn_slope
 from physics.figures.svg import FILLS
+from physics.wording import symbol_label
 
 
 def draw_double_incline(figure: Figure, model: Model, surfaces: list[Surface], string: bool) -> None:

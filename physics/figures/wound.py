@@ -4,10 +4,11 @@ its string."""
 from __future__ import annotations
 
 from physics.engine.model import Body, ConstraintKind, Model
-from physics.figures.figure import Figure, Values, body_label, symbol_label
+from physics.figures.figure import Figure, Values, body_label
 from physics.figures.geometry import coordinate_label, moving_coordinate
 from physics.figures.shapes import hanging_block, mark_coordinate
 from physics.figures.svg import FILLS
+from physics.wording import symbol_label
 
 
 def draw_wheel_and_weight(figure: Figure, model: Model, wheel: Body, weight: Body) -> None:

@@ -14,6 +14,7 @@ from physics.engine.mistakes import SWAPPED_TRIG
 from physics.engine.proof import proven_sign
 from physics.engine.results import KnownMistake, LimitCase
 from physics.mathinput import parse_math
+from physics.wording import symbol_label
 from problems.modelinfo import load_doc_model
 from problems.symbols import symbol_table
 from tests.bank import bank_documents
@@ -94,7 +95,7 @@ def test_no_mistake_equals_the_answer() -> None:
             id="heavy-wedge",
         ),
         pytest.param(
-            "moving-wedge", "wedge_acceleration", "theta", 0, "theta", marks=pytest.mark.slow, id="flat-wedge"
+            "moving-wedge", "wedge_acceleration", "theta", 0, "θ → 0", marks=pytest.mark.slow, id="flat-wedge"
         ),
         pytest.param(
             "moving-wedge", "wedge_acceleration", "m", 0, "lighter", marks=pytest.mark.slow, id="light-block"
@@ -200,8 +201,8 @@ def test_a_friction_limit_names_its_coefficient_and_is_listed_once_per_coefficie
         if "friction" in c.description
     ]
     assert len(two) == 2 and len(set(two)) == 2  # mu1 and mu2 each, told apart
-    assert all(
-        next(iter(c.substitutions)).name in c.description
+    assert all(  # as the statement writes it: μ₁, not mu1
+        symbol_label(next(iter(c.substitutions)).name) in c.description
         for c in _bank_limits("blocks-in-contact", "acceleration")
     )
     shared = [c for c in _bank_limits("pushed-blocks", "acceleration") if "friction" in c.description]
@@ -213,7 +214,7 @@ def test_a_light_body_is_compared_with_the_other_body_by_name() -> None:
     cases = {
         next(iter(c.substitutions)): c.description for c in bank_derivation("atwood").limits["acceleration"]
     }
-    assert "than m2" in cases[m1] and "than m1" in cases[m2]
+    assert cases[m1] == "m₁ much lighter than m₂" and cases[m2] == "m₂ much lighter than m₁"
 
 
 def test_a_bare_tangent_is_not_offered_as_a_dropped_projection() -> None:
