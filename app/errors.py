@@ -18,7 +18,7 @@ answer that cannot be read is never an error: it is an `invalid` verdict with st
 from __future__ import annotations
 
 import logging
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from typing import Any
 
 from fastapi import FastAPI, Request
@@ -32,7 +32,7 @@ from app.db import errors as storage
 from physics.errors import DerivationError, SpecError
 from physics.wording import counted
 from problems.errors import ProblemInvalid
-from problems.schema import format_path
+from problems.schema import KIND_MESSAGES, format_path
 
 log = logging.getLogger("physcheck.errors")
 DATABASE_RETRY_AFTER = 5
@@ -145,6 +145,16 @@ def _message(msg: str) -> str:
     return msg.removeprefix("Value error, ")
 
 
+def _detail(error: Mapping[str, Any]) -> dict[str, str]:
+    """A validation error as the API says it; a check's `kind` missing or unknown as an upload's part's
+    is (pydantic's "Unable to extract tag using discriminator" names no field a caller wrote)."""
+    loc = tuple(error.get("loc", ()))
+    kind = KIND_MESSAGES.get(str(error.get("type")))
+    if kind is not None:
+        return {"path": _path((*loc, "kind")), "message": kind}
+    return {"path": _path(loc), "message": _message(error.get("msg", "invalid"))}
+
+
 def _path(loc: Sequence[Any]) -> str:
     parts = [str(p) for p in loc if p not in ("body",)]
     return ".".join(parts)
@@ -198,10 +208,7 @@ def install_error_handlers(app: FastAPI) -> None:
             refused = await refused_caller(request)
             if refused is not None:
                 return refused
-        details = [
-            {"path": _path(e.get("loc", ())), "message": _message(e.get("msg", "invalid"))}
-            for e in error.errors()
-        ]
+        details = [_detail(e) for e in error.errors()]
         return _json(422, "malformed_request", "The request is malformed: see details.", details)
 
     @app.exception_handler(StarletteHTTPException)

@@ -83,13 +83,17 @@ _PART_TAGS = set(KINDS)
 _KIND_NAMES = [f"'{name}'" for name in KINDS]
 _KIND_LIST = f"{', '.join(_KIND_NAMES[:-1])} or {_KIND_NAMES[-1]}"
 
+# A part's or a check's `kind` missing or unknown: said at the path of its `kind`, for uploads and the API.
+KIND_MESSAGES = {
+    "union_tag_invalid": f"kind must be {_KIND_LIST}",
+    "union_tag_not_found": f"kind is required ({_KIND_LIST})",
+}
 # A template is formatted with pydantic's context; a function takes that context where a count
 # decides the wording.
 _MESSAGES: dict[str, str | Callable[[dict[str, Any]], str]] = {
     "missing": "required",
     "extra_forbidden": "unknown field",
-    "union_tag_invalid": f"kind must be {_KIND_LIST}",
-    "union_tag_not_found": f"kind is required ({_KIND_LIST})",
+    **KIND_MESSAGES,
     "string_type": "must be text",
     "bool_type": "must be true or false",
     "bool_parsing": "must be true or false",

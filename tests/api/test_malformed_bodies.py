@@ -75,3 +75,25 @@ def test_caller_is_refused_before_an_unreadable_body_is(
     response = client.post(path, content=body, headers=headers)
     assert response.status_code == 401, response.text
     assert response.json()["error"]["code"] == "unauthenticated"
+
+
+@pytest.mark.parametrize(
+    ("body", "message"),
+    [
+        (
+            {"problem": "atwood", "part": "acceleration", "answer": "g"},
+            "kind is required ('symbolic', 'numeric'",
+        ),
+        ({"kind": "vector", "answer": "g"}, "kind must be 'symbolic', 'numeric'"),
+    ],
+    ids=["no-kind", "unknown-kind"],
+)
+def test_a_check_without_a_known_kind_says_which_kinds_there_are(
+    client: TestClient, student_headers: dict[str, str], body: dict[str, str], message: str
+):
+    # it said "Unable to extract tag using discriminator 'kind'" at the path ""
+    response = client.post("/v1/check", json=body, headers=student_headers)
+    assert response.status_code == 422, response.text
+    assert [(d["path"], d["message"][: len(message)]) for d in response.json()["error"]["details"]] == [
+        ("kind", message)
+    ]
