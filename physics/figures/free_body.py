@@ -47,6 +47,7 @@ class Force:
     # anticlockwise positive), in the model's lengths, and the symbol that writes it (r)
     lever: float = 0.0
     lever_label: str = ""
+    at_rim: bool = False  # a rolling contact: it acts where the body touches the surface
 
 
 def _unit(x: float, y: float) -> tuple[float, float] | None:
@@ -90,7 +91,13 @@ def _contact_forces(model: Model, given: tuple[tuple[str, float], ...]) -> dict[
     )
     return {
         name: tuple(
-            Force(labels[source], direction, *_lever(model, name, source, values, drawn))
+            Force(
+                labels[source],
+                direction,
+                *_lever(model, name, source, values, drawn),
+                at_rim=source[0] == "constraint"
+                and model.constraint(str(source[1])).kind is ConstraintKind.ROLLING,
+            )
             for source, _, direction in found
         )
         for name, found in contacts.items()
@@ -274,15 +281,46 @@ _SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 
 def _drawn_arms(forces: list[Force]) -> list[float]:
     """Each force's lever arm as drawn on a wheel of radius RIGID: the longest at the rim, the others in
-    proportion; a lone lever arm (a string on an axle) at half the radius, inside the body."""
+    proportion; a lone lever arm (a string on an axle) at half the radius, inside the body, unless it is
+    a rolling contact's, which acts at the rim."""
     longest = max((abs(f.lever) for f in forces), default=0.0)
     if longest == 0:
         return [0.0 for _ in forces]
-    alone = sum(1 for f in forces if f.lever) == 1
+    alone = sum(1 for f in forces if f.lever) == 1 and not any(f.at_rim for f in forces if f.lever)
     return [
         0.0 if not f.lever else math.copysign(RIGID * (0.5 if alone else abs(f.lever) / longest), f.lever)
         for f in forces
     ]
+
+
+def _clear_of_labels(
+    at: tuple[float, float], direction: tuple[float, float], labelled: list[tuple[float, float]]
+) -> tuple[float, float]:
+    """`at`, or farther along the force's direction until it is clear of the labels already placed: two
+    arrows close and parallel (a weight and a string on a wheel's axle) would have their labels meet."""
+    for _ in range(4):
+        if all(abs(at[0] - x) > 0.75 or abs(at[1] - y) > 0.5 for x, y in labelled):
+            break
+        at = (at[0] + direction[0] * 0.5, at[1] + direction[1] * 0.5)
+    return at
+
+
+def _arm_label_at(start: tuple[float, float], direction: tuple[float, float]) -> tuple[float, float]:
+    """Beside a lever arm's middle, on the side its force points to: two arms' labels would meet in the
+    corner between them on the other side."""
+    return (start[0] / 2 + direction[0] * 0.3, start[1] / 2 + direction[1] * 0.3)
+
+
+def _clear_of_arms(forces: list[Force], arms: list[float]) -> tuple[float, float]:
+    """Where a wheel's name goes: the quarter of the wheel farthest from its lever arms and their labels."""
+    taken = []
+    for force, arm in zip(forces, arms, strict=True):
+        if arm:
+            dx, dy = force.direction
+            start = (arm * dy, -arm * dx)
+            taken += [(start[0] / 2, start[1] / 2), _arm_label_at(start, force.direction)]
+    quarters = [(RIGID * 0.45 * sx, RIGID * 0.5 * sy) for sx, sy in ((1, -1), (-1, -1), (-1, 1), (1, 1))]
+    return max(quarters, key=lambda q: min(math.dist(q, point) for point in taken))
 
 
 def free_body_figure(model: Model, body_name: str, given: Mapping[str, float], *, title: str) -> str:
@@ -300,23 +338,26 @@ def free_body_figure(model: Model, body_name: str, given: Mapping[str, float], *
     else:
         canvas.polygon([(-half, -half), (half, -half), (half, half), (-half, half)], fill=FILLS[0])
     if body.angle is not None and any(arms):  # the centre is where the lever arms start
-        canvas.text((RIGID * 0.45, -RIGID * 0.5), label, size=0.36)
+        canvas.text(_clear_of_arms(forces, arms), label, size=0.36)
     elif len(label) <= 3:
         canvas.text((0.0, 0.0), label)
     else:  # a body's name does not fit inside it: beside it, clear of the forces along the axes
         canvas.text((half + 0.15, half + 0.3), label, size=0.36, anchor="start")
     said = []
     drawn: list[tuple[float, float]] = []
+    labelled: list[tuple[float, float]] = []  # where the forces' labels are
     for force, arm in zip(forces, arms, strict=True):
         dx, dy = force.direction
         if arm:  # from the point where the lever arm meets the line of action, the arm drawn dashed
             start = (arm * dy, -arm * dx)
             canvas.line((0.0, 0.0), start, width=0.03, dashed=True)
             if force.lever_label:
-                canvas.text((start[0] / 2, start[1] / 2 + 0.2), force.lever_label, size=0.42)
+                canvas.text(_arm_label_at(start, force.direction), force.lever_label, size=0.42)
             tip = (start[0] + dx * ARROW, start[1] + dy * ARROW)
             canvas.arrow(start, tip, width=0.07, color="#a11111")
-            canvas.text((tip[0] + dx * 0.5, tip[1] + dy * 0.5), force.label, size=FORCE_LABEL)
+            at = _clear_of_labels((tip[0] + dx * 0.5, tip[1] + dy * 0.5), force.direction, labelled)
+            canvas.text(at, force.label, size=FORCE_LABEL)
+            labelled.append(at)
             said.append(
                 f"{force.label} at {round(math.degrees(math.atan2(dy, dx)))}° from the +x axis, acting "
                 f"{'left' if start[0] < 0 else 'right' if start[0] > 0 else 'off'} of the centre"
@@ -333,7 +374,9 @@ def free_body_figure(model: Model, body_name: str, given: Mapping[str, float], *
         edge = RIGID if body.angle is not None else half
         canvas.arrow((dx * edge + ox, dy * edge + oy), tip, width=0.07, color="#a11111")
         away = 0.5 + 0.45 * beside  # labels of arrows side by side stagger along them, clear of each other
-        canvas.text((tip[0] + dx * away, tip[1] + dy * away), force.label, size=FORCE_LABEL)
+        at = _clear_of_labels((tip[0] + dx * away, tip[1] + dy * away), force.direction, labelled)
+        canvas.text(at, force.label, size=FORCE_LABEL)
+        labelled.append(at)
         degrees = round(math.degrees(math.atan2(dy, dx)))
         said.append(f"{force.label} at {degrees}° from the +x axis")
     description = f"Forces on {label}: " + ("; ".join(said) if said else "none") + "."

@@ -130,3 +130,37 @@ def test_friction_against_a_moving_surface_is_drawn_on_both_bodies_with_one_labe
     assert len(friction) == 1 and friction[0] in cart
     assert close(block[friction[0]], (-1.0, 0.0))  # the block slides forward on the cart
     assert opposite(block[friction[0]], cart[friction[0]])
+
+
+def _drawn(problem_id: str, body: str) -> ET.Element:
+    doc = BANK[problem_id]
+    return ET.fromstring(free_body_figure(load_doc_model(doc, symbol_table(doc)), body, {}, title="t"))
+
+
+def _texts(root: ET.Element) -> dict[str, tuple[float, float]]:
+    ns = "{http://www.w3.org/2000/svg}"
+    return {
+        "".join(t.itertext()): (float(t.get("x", "0")), float(t.get("y", "0")))
+        for t in root.iter(f"{ns}text")
+    }
+
+
+def _circles(root: ET.Element) -> int:
+    return sum(1 for _ in root.iter("{http://www.w3.org/2000/svg}circle"))
+
+
+def test_a_rolling_contacts_friction_acts_at_the_rim_not_on_an_axle() -> None:
+    # a lone lever arm was drawn at half the radius, inside a circle that reads as an axle
+    root = _drawn("rolling-cylinder-pulled", "cylinder")
+    assert _circles(root) == 1
+    assert "R" in _texts(root)
+
+
+@pytest.mark.parametrize(
+    ("problem_id", "body"), [("flywheel", "wheel"), ("atwood-massive-pulley", "stringWheel")]
+)
+def test_labels_of_close_parallel_forces_and_of_lever_arms_do_not_meet(problem_id: str, body: str) -> None:
+    placed = list(_texts(_drawn(problem_id, body)).values())
+    for i, (x1, y1) in enumerate(placed):
+        for x2, y2 in placed[i + 1 :]:
+            assert abs(x1 - x2) > 0.3 or abs(y1 - y2) > 0.3, placed
