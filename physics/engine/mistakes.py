@@ -27,6 +27,7 @@ from physics.engine.model import (
 )
 from physics.engine.proof import domain_points, proven_sign
 from physics.engine.results import KnownMistake, LimitCase
+from physics.engine.shape_inertia import confused_inertias
 from physics.wording import symbol_label
 
 Rederive = Callable[[Model, Quantity], sympy.Expr | None]
@@ -123,6 +124,7 @@ def generate_mistakes(
             model, bodies=tuple(dataclasses.replace(b, inertia=sympy.Integer(0)) for b in model.bodies)
         )
         candidates.append((rederive(flat, quantity), NO_INERTIA))
+        candidates += [(rederive(other, quantity), said) for other, said in confused_inertias(model)]
     if model.collision is not None and quantity.kind is QuantityKind.PROJECTILE_SPEED:
         candidates.append((_energy_conserved_speed(model), INELASTIC_ENERGY))
     if model.collision is not None and model.collision.point:
