@@ -15,7 +15,7 @@ from fractions import Fraction
 from physics.characters import fullwidth_as_ascii
 from physics.dimensions import Dimension
 from physics.errors import AnswerError, ParseError, TooLarge
-from physics.numeric.literal import NumberLiteral, read_number, units_start
+from physics.numeric.literal import CalculatorExponent, NumberLiteral, read_number, units_start
 from physics.units import ParsedUnits, UnitReading, read_units
 from physics.verdict import ReadAs
 
@@ -179,6 +179,8 @@ def read_numeric_answer(
     try:
         return read_literal_answer(text, expected)
     except _NumberFormError as malformed:
+        if isinstance(malformed.error, CalculatorExponent):  # `3.0 x 10-3`: never the arithmetic 30 − 3
+            raise malformed.error from None
         # No literal starts the answer (`pi/6`, `√2`): only arithmetic can read it. A literal that
         # starts but is malformed (`4.5.8`, `4,58`) keeps its own, specific, message.
         literal_error = malformed.error if _STARTS_LITERAL.match(text) else None

@@ -187,9 +187,35 @@ def _scientific(text: str, i: int) -> tuple[int, int] | None:
                 return None  # `4 × 100`: not a power of ten; the unit reader will refuse it
             found = _power_of_ten(text, after)
             if found is None:
+                _refuse_calculator_exponent(text, after)
                 raise ParseError("Write a power of ten with its exponent, for example 2.5×10^3", after)
             return found
     return None
+
+
+class CalculatorExponent(ParseError):
+    """`3.0 x 10-3`: a calculator's exponent typed after `×10` without its `^`. Read as arithmetic it
+    would be 3.0·10 − 3 = 27, which no one means by it: refused, whatever the arithmetic reader makes of
+    it, saying how to write either reading. (A minus spaced on both sides, `3 × 10 - 3`, is arithmetic.)"""
+
+    def __init__(self, exponent: str, position: int) -> None:
+        super().__init__(
+            f"Did you mean ×10^-{exponent}? Write the power of ten with ^ (…×10^-{exponent}); for a "
+            f"subtraction, put spaces round the minus (10 - {exponent})",
+            position,
+        )
+
+
+def _refuse_calculator_exponent(text: str, after: int) -> None:
+    """CalculatorExponent if a minus and digits follow the `×10` ending at `after`, the minus glued to the
+    10 or to the digits (`10-3`, `10 -3`, `10- 3`); a minus spaced on both sides is a subtraction."""
+    minus = skip_spaces(text, after)
+    if minus == len(text) or text[minus] not in _MINUS_SIGNS:
+        return
+    digits = skip_spaces(text, minus + 1)
+    digits_end = _run(text, digits, _DIGITS)
+    if digits_end > digits and (minus == after or digits == minus + 1):
+        raise CalculatorExponent(text[digits:digits_end], minus)
 
 
 def read_number(text: str, start: int = 0) -> NumberLiteral:

@@ -37,6 +37,7 @@ ARITHMETIC = [
     ("5 sec", "5", "s", "5 s"),  # `sec` with no argument is the second, not the secant
     ("sec(0) m", "1", "m", "sec(0) m"),
     ("2 x 3 m", "6", "m", "2*3 m"),
+    ("3.0 × 10 - 3 s", "27", "s", "3.0*10 - 3 s"),  # spaced round: a subtraction, not ×10^-3
     ("-3/2 N", "-1.5", "N", "-3/2 N"),
     ("50%", "0.5", None, "50%"),
 ]
@@ -114,6 +115,7 @@ BLAME = [
     ("4,58 m/s^2", "m/s^2", Reason.PARSE_ERROR, 1, "decimal point"),
     ("m/s^2", "m/s^2", Reason.PARSE_ERROR, 0, "must start with a number"),
     ("pi", "m/s^2", Reason.MISSING_UNITS, 2, "needs units"),
+    ("4.58 x 10-3 m/s^2", "m/s^2", Reason.PARSE_ERROR, 9, "Did you mean ×10^-3?"),  # not 45.8 − 3
 ]
 
 
