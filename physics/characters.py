@@ -1,10 +1,18 @@
 """Fullwidth forms, as East Asian input methods type them (`４.５８ ｍ／ｓ＾２`), read as the ASCII
-characters they stand for, and the degree sign's look-alikes (`30º`, option-0 on a Mac keyboard) as the
-degree sign. One character for one, so a position in the read text is one in the typed text. Free of
-sympy: the number and unit readers use it as well as the math reader."""
+characters they stand for; the degree sign's look-alikes (`30º`, option-0 on a Mac keyboard) as the
+degree sign; the mathematical italic and bold letters that an equation copied from Word or a PDF is
+made of (`𝑚𝑔ℎ`, `𝜃`) as the plain letters they show. One character for one, so a position in the read
+text is one in the typed text.
+
+Characters that show nothing (a zero-width space from a web page, the direction marks of a right-to-left
+keyboard, a byte-order mark) are taken out, as the student sees the text without them: `Visible` keeps
+where each remaining character was typed. Free of sympy: the number and unit readers use it as well as
+the math reader."""
 
 from __future__ import annotations
 
+import unicodedata
+from dataclasses import dataclass
 from types import MappingProxyType
 from typing import Final
 
@@ -12,11 +20,69 @@ from typing import Final
 FULLWIDTH: Final = MappingProxyType({chr(code + 0xFEE0): chr(code) for code in range(0x21, 0x7F)})
 # The masculine ordinal indicator and the ring above, typed for the degree sign.
 DEGREE_LOOKALIKES: Final = MappingProxyType({"º": "°", "˚": "°"})
-_PLAIN: Final = MappingProxyType({**FULLWIDTH, **DEGREE_LOOKALIKES})
+
+
+def _math_letter(code: int) -> str | None:
+    """The plain letter or digit a mathematical alphanumeric symbol (U+1D400…U+1D7FF) is a style of."""
+    char = chr(code)
+    if unicodedata.category(char)[0] not in "LN":
+        return None
+    plain = unicodedata.normalize("NFKC", char)
+    return plain if len(plain) == 1 else None
+
+
+# 𝑚, 𝒎, 𝐅, 𝜃, 𝟐 as m, m, F, θ, 2; and the two letters Word's equation editor takes from the letterlike
+# block instead: ℎ (its italic h) and ℯ (a script e, Euler's number in some typefaces).
+MATH_LETTERS: Final = MappingProxyType(
+    {
+        **{chr(code): plain for code in range(0x1D400, 0x1D800) if (plain := _math_letter(code))},
+        "ℎ": "h",
+        "ℯ": "e",
+    }
+)
+# What Word's equation editor puts between a function and its argument (function application, in
+# `sin⁡θ`) and between factors (invisible times): a gap, as a space is.
+INVISIBLE_GAPS: Final = MappingProxyType({"\u2061": " ", "\u2062": " "})
+# Dots and stars typed for a product: the bullet operator, the bullet (option-8 on a Mac keyboard), and
+# the asterisk operator (Word's symbol menu), as the middle dot and the asterisk they look like.
+TIMES_LOOKALIKES: Final = MappingProxyType({"∙": "·", "•": "·", "∗": "*"})
+_PLAIN: Final = MappingProxyType(
+    {**FULLWIDTH, **DEGREE_LOOKALIKES, **MATH_LETTERS, **INVISIBLE_GAPS, **TIMES_LOOKALIKES}
+)
+
+# Characters that show nothing and mean nothing in an answer: zero-width space, non-joiner and joiner,
+# word joiner, byte-order mark, soft hyphen, and the direction marks, embeddings and isolates.
+ZERO_WIDTH: Final = frozenset(
+    "\u200b\u200c\u200d\u2060\ufeff\u00ad\u200e\u200f\u061c"
+    + "".join(map(chr, range(0x202A, 0x202F)))
+    + "".join(map(chr, range(0x2066, 0x206A)))
+)
 
 
 def fullwidth_as_ascii(text: str) -> str:
-    """The text with fullwidth forms as ASCII, and the degree sign's look-alikes as the degree sign."""
+    """The text with fullwidth forms as ASCII, the degree sign's and the times signs' look-alikes as
+    those signs, mathematical letters as plain ones, and Word's invisible operators as spaces."""
     if text.isascii():
         return text
     return "".join(_PLAIN.get(ch, ch) for ch in text)
+
+
+@dataclass(frozen=True)
+class Visible:
+    """A text without its zero-width characters, and where each character left was typed."""
+
+    text: str
+    typed_at: tuple[int, ...]
+    typed_length: int
+
+    def typed_position(self, position: int) -> int:
+        """Where the character at `position` of the visible text was typed (its end: the typed end)."""
+        return self.typed_at[position] if position < len(self.typed_at) else self.typed_length
+
+
+def without_zero_width(text: str) -> Visible | None:
+    """The text without its zero-width characters, or None if it has none."""
+    if text.isascii() or ZERO_WIDTH.isdisjoint(text):
+        return None
+    typed_at = tuple(at for at, ch in enumerate(text) if ch not in ZERO_WIDTH)
+    return Visible("".join(text[at] for at in typed_at), typed_at, len(text))

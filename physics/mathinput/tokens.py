@@ -7,13 +7,15 @@ and braces go to `latex.LatexReader`, which makes of pasted LaTeX the tokens of 
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import replace
 from fractions import Fraction
 
-from physics.errors import ParseError, TooLarge
+from physics.characters import without_zero_width
+from physics.errors import AnswerError, ParseError, TooLarge
 from physics.mathinput.latex import LatexReader
 from physics.mathinput.limits import InputLimits
-from physics.mathinput.tokentypes import Kind, Token
+from physics.mathinput.tokentypes import Kind, SpelledWord, Token
 from physics.mathinput.velocities import PRIMES, derivatives_read, dotted_word, is_word_mark, needs_spelling
 from physics.mathinput.vocabulary import (
     CHARACTER_VARIANTS,
@@ -50,6 +52,15 @@ def tokenize(
             f"The answer is too long ({len(text)} characters; at most {limits.max_length}).",
             limits.max_length,
         )
+    visible = without_zero_width(text)
+    if visible is not None:  # read what the student sees; positions stay those of the typed text
+        try:
+            seen = tokenize(visible.text, limits, units_in_fonts=units_in_fonts, velocities=velocities)
+        except AnswerError as error:
+            if error.position is not None:
+                error.position = visible.typed_position(error.position)
+            raise
+        return [_typed_where(token, visible.typed_position) for token in seen]
     # Every variant is a non-ASCII character: plain ASCII text has none to replace.
     chars = list(text) if text.isascii() else [CHARACTER_VARIANTS.get(ch, ch) for ch in text]
     latex = LatexReader(chars, units_in_fonts, velocities)
@@ -147,6 +158,15 @@ def tokenize(
     latex.finish()
     tokens.append(Token(Kind.END, "", n, n, space))
     return derivatives_read(tokens) if velocities else tokens
+
+
+def _typed_where(token: Token, typed_position: Callable[[int], int]) -> Token:
+    """The token with its positions in the typed text (of which it was read without zero-width characters)."""
+    moved = replace(token, pos=typed_position(token.pos), end=typed_position(token.end))
+    if isinstance(moved, SpelledWord):
+        moved.char_positions = tuple(map(typed_position, moved.char_positions))
+        moved.unsplittable = tuple((typed_position(a), typed_position(b)) for a, b in moved.unsplittable)
+    return moved
 
 
 # Two-argument functions students know from programming or calculators, and how the answer writes them.

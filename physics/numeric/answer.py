@@ -9,10 +9,10 @@ because only it shows significant figures. Anything else is read as arithmetic b
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from fractions import Fraction
 
-from physics.characters import fullwidth_as_ascii
+from physics.characters import fullwidth_as_ascii, without_zero_width
 from physics.dimensions import Dimension
 from physics.errors import AnswerError, ParseError, TooLarge
 from physics.numeric.literal import CalculatorExponent, NumberLiteral, read_number, units_start
@@ -165,6 +165,21 @@ def read_numeric_answer(
     """
     if len(text) > MAX_ANSWER_LENGTH:
         raise TooLarge(f"An answer may be at most {MAX_ANSWER_LENGTH} characters", MAX_ANSWER_LENGTH)
+    visible = without_zero_width(text)
+    if visible is not None:  # read what the student sees; positions stay those of the typed text
+        try:
+            answer = read_numeric_answer(visible.text, expected, arithmetic=arithmetic)
+        except AnswerError as error:
+            if error.position is not None:
+                error.position = visible.typed_position(error.position)
+            raise
+        return replace(
+            answer,
+            end=visible.typed_position(answer.end),
+            units_position=None
+            if answer.units_position is None
+            else visible.typed_position(answer.units_position),
+        )
     text = fullwidth_as_ascii(text)
     uncertainty = _UNCERTAINTY.search(text)
     if uncertainty is not None:  # a lab result as written in a report: `(4.58 ± 0.05) m/s^2`

@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 import sympy
 
-from physics.errors import AmbiguousInput, ParseError
+from physics.errors import AmbiguousInput, AnswerError, ParseError
 from physics.mathinput import parse_math
 from tests.mathinput.support import names, same, sym
 
@@ -43,6 +43,23 @@ TEXTBOOK = [
     ("cot(x)", ("x",), sympy.cot(sym("x"))),
     ("Abs(x)", ("x",), sympy.Abs(sym("x"))),
     ("arccosec(x)", ("x",), sympy.acsc(sym("x"))),
+    # An equation copied from Word: mathematical italic letters (ℎ is Word's italic h), and the invisible
+    # function application after sin
+    ("𝑚𝑔ℎ", ("m", "g", "h"), sym("m") * sym("g") * sym("h")),
+    ("𝑚𝑔 sin\u2061𝜃", ("m", "g", "theta"), sym("m") * sym("g") * sympy.sin(sym("theta"))),
+    ("m\u2062g", ("m", "g"), sym("m") * sym("g")),  # invisible times
+    ("𝐅/𝑚", ("F", "m"), sym("F") / sym("m")),  # bold, as a vector is printed
+    ("𝑣₀ ℯ^(−𝑡/𝜏)", ("v_0", "t", "tau"), sym("v_0") * sympy.exp(-sym("t") / sym("tau"))),
+    ("𝟐𝑥", ("x",), 2 * sym("x")),
+    # Characters that show nothing, from a web page or a right-to-left keyboard, are not there
+    ("m g sin\u200bθ", ("m", "g", "theta"), sym("m") * sym("g") * sympy.sin(sym("theta"))),
+    ("\u200fm g\u200e", ("m", "g"), sym("m") * sym("g")),
+    ("\ufeffx", ("x",), sym("x")),
+    ("v\u200b0", ("v", "v0"), sym("v0")),  # as it shows: v0, not v·0
+    ("m\u00adg", ("m", "g"), sym("m") * sym("g")),  # soft hyphen
+    # Product signs that look like the ones read: bullet (option-8 on a Mac), asterisk operator
+    ("m•g", ("m", "g"), sym("m") * sym("g")),
+    ("m ∗ g", ("m", "g"), sym("m") * sym("g")),
     ("2E-3", ("x",), sympy.Rational(2, 1000)),  # E is not a symbol here: scientific notation
     ("2e3", ("E",), sympy.Integer(2000)),  # only the letter typed counts
 ]
@@ -97,3 +114,15 @@ def test_every_character_variant_is_outside_ascii() -> None:
 
     assert [ch for ch in CHARACTER_VARIANTS if ch.isascii()] == []
     assert parse_math("2·x − y", names("x", "y")).read_as.text == "2*x - y"
+
+
+def test_an_error_after_a_zero_width_character_is_placed_where_it_was_typed() -> None:
+    with pytest.raises(ParseError) as caught:
+        parse_math("\u200b\u200bm g ;", names("m", "g"))
+    assert caught.value.position == 6
+
+
+def test_a_word_after_a_zero_width_character_is_placed_where_it_was_typed() -> None:
+    with pytest.raises(AnswerError) as caught:
+        parse_math("m\u200f q", names("m"))
+    assert caught.value.position == 3

@@ -55,6 +55,17 @@ VERDICTS = [
     ("fullwidth-units", "4.58 ｍ／ｓ＾２", ACCEL, OK, Reason.EQUIVALENT),  # East Asian input methods
     ("fullwidth-number", "４．５８ m/s^2", ACCEL, OK, Reason.EQUIVALENT),
     ("fullwidth-brackets", "4.58 ［m/s^2］", ACCEL, OK, Reason.EQUIVALENT),
+    ("math-italic-units", "4.58 𝑚/𝑠^2", ACCEL, OK, Reason.EQUIVALENT),  # copied from Word
+    ("math-bold-digits", "𝟒.𝟓𝟖 m/s^2", ACCEL, OK, Reason.EQUIVALENT),
+    ("invisible-times-units", "4.58 m\u2062s^-2", ACCEL, OK, Reason.EQUIVALENT),
+    ("zero-width-space", "4.58 m/s²\u200b", ACCEL, OK, Reason.EQUIVALENT),  # from a web page
+    ("zero-width-in-number", "4.5\u200b8 m/s^2", ACCEL, OK, Reason.EQUIVALENT),  # shows as 4.58
+    ("right-to-left-mark", "\u200f4.58 m/s^2", ACCEL, OK, Reason.EQUIVALENT),
+    ("byte-order-mark", "\ufeff4.58 m/s^2", ACCEL, OK, Reason.EQUIVALENT),
+    ("bullet-operator-units", "4.58 m∙s^-2", ACCEL, OK, Reason.EQUIVALENT),
+    ("bullet-units", "4.58 m•s^-2", ACCEL, OK, Reason.EQUIVALENT),  # option-8 on a Mac
+    ("bullet-times-ten", "458•10^-2 m/s^2", ACCEL, OK, Reason.EQUIVALENT),
+    ("asterisk-operator", "458 ∗ 10^-2 m/s^2", ACCEL, OK, Reason.EQUIVALENT),
     ("prefixed-units", "4580 mm/s^2", ACCEL, OK, Reason.EQUIVALENT),
     ("scientific", "4.58e0 m/s^2", ACCEL, OK, Reason.EQUIVALENT),
     ("times-ten", "458×10^-2 m/s^2", ACCEL, OK, Reason.EQUIVALENT),
@@ -215,12 +226,15 @@ POSITIONS = [
     ("12 500 m/s^2", 3),
     ("a = 4.58 m/s^2", 2),  # the '='
     ("(4.58 ± 0.05) m/s^2", 6),  # the uncertainty's sign
+    ("\u200b4.58\u200b", 6),  # where typed, zero-width characters and all
+    ("\u200f4.58 m/smoot", 8),
+    ("\u200b0.45 m", 6),  # unexpected units
 ]
 
 
 @pytest.mark.parametrize(("answer", "position"), POSITIONS, ids=[c[0] for c in POSITIONS])
 def test_error_position_points_into_the_answer(answer: str, position: int) -> None:
-    spec = PURE if answer.startswith("0.45") else ACCEL
+    spec = PURE if answer.lstrip("\u200b").startswith("0.45") else ACCEL
     verdict = check_numeric(answer, spec)
     assert verdict.error is not None
     assert verdict.error.position == position
