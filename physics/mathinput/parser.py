@@ -8,13 +8,15 @@ Grammar (loosest first):
     power    := postfixed ("^" exponent | superscript)*            ^ is right-associative
     exponent := ("-" | "+") exponent | power
     postfixed:= atom ("!" | "%" | "°" | deg)*
-    atom     := number | name | constant | function call | "√" argument | bracketed | "|" sum "|"
+    atom     := number | name | constant | function call | ("√" | "∛" | "∜") argument | bracketed
+              | "|" sum "|"
 Recursion is bounded by `max_depth`, so deep nesting is a TooLarge, never a RecursionError.
 """
 
 from __future__ import annotations
 
 from collections.abc import Mapping
+from fractions import Fraction
 from typing import Literal, NoReturn
 
 from physics.errors import AmbiguousGrouping, ParseError, TooLarge
@@ -37,7 +39,7 @@ from physics.mathinput.tree import (
     Sum,
     ungroup,
 )
-from physics.mathinput.vocabulary import INVERSES, OPENERS
+from physics.mathinput.vocabulary import INVERSES, OPENERS, ROOT_SIGNS
 
 _POSTFIX_KINDS: dict[str, PostfixKind] = {"!": "factorial", "%": "percent", "°": "degrees"}
 # A tuple, not a set: membership by identity, without Enum's hash (a Python call) for every token.
@@ -383,7 +385,13 @@ class Parser:
             return self._call(tok)
         if tok.kind is Kind.SQRT:
             self._advance()
-            return Call("sqrt", self._argument(tok, "√", bare_function=False)[0], tok.pos)
+            radicand = self._argument(tok, tok.text, bare_function=False)[0]
+            index = ROOT_SIGNS[tok.text]
+            if index == 2:
+                return Call("sqrt", radicand, tok.pos)
+            # `∛x` is x^(1/3), as `\sqrt[3]{x}` reads
+            reciprocal = Product(Num("1", Fraction(1), True), (("/", Num(str(index), Fraction(index), True)),))
+            return Power(Group(radicand), Group(reciprocal), tok.pos)
         if tok.kind is Kind.LPAREN:
             return Group(self._bracketed())
         if tok.kind is Kind.BAR:

@@ -22,6 +22,7 @@ from physics.mathinput.vocabulary import (
     CLOSERS,
     FUNCTIONS,
     OPENERS,
+    ROOT_SIGNS,
     SUPERSCRIPT_DIGITS,
     SUPERSCRIPT_SIGNS,
     VULGAR_FRACTIONS,
@@ -133,7 +134,7 @@ def tokenize(
         elif ch in "!%°":
             i += 1
             token = Token(Kind.POSTFIX, ch, start, i, space)
-        elif ch == "√":
+        elif ch in ROOT_SIGNS:
             i += 1
             token = Token(Kind.SQRT, ch, start, i, space)
         elif ch in SUPERSCRIPT_DIGITS or ch in SUPERSCRIPT_SIGNS:

@@ -62,6 +62,9 @@ SUPERSCRIPT_DIGITS: Final = MappingProxyType(
 )
 SUPERSCRIPT_SIGNS: Final = MappingProxyType({"⁻": -1, "⁺": 1})
 
+# The root signs, and the index of each: `√x`, `∛x` (x^(1/3)), `∜x` (x^(1/4)).
+ROOT_SIGNS: Final = MappingProxyType({"√": 2, "∛": 3, "∜": 4})
+
 OPENERS: Final = MappingProxyType({"(": ")", "[": "]", "{": "}"})
 CLOSERS: Final = frozenset(OPENERS.values())
 

@@ -57,6 +57,13 @@ TEXTBOOK = [
     ("\ufeffx", ("x",), sym("x")),
     ("v\u200b0", ("v", "v0"), sym("v0")),  # as it shows: v0, not v·0
     ("m\u00adg", ("m", "g"), sym("m") * sym("g")),  # soft hyphen
+    # Cube and fourth roots, with the argument rules of √ (`√2gh`)
+    ("∛x", ("x",), sym("x") ** sympy.Rational(1, 3)),
+    ("∛(x y)", ("x", "y"), (sym("x") * sym("y")) ** sympy.Rational(1, 3)),
+    ("∛xy", ("x", "y"), (sym("x") * sym("y")) ** sympy.Rational(1, 3)),
+    ("∛x y", ("x", "y"), sym("x") ** sympy.Rational(1, 3) * sym("y")),
+    ("∛27 x", ("x",), 3 * sym("x")),
+    ("∜x", ("x",), sym("x") ** sympy.Rational(1, 4)),
     # Product signs that look like the ones read: bullet (option-8 on a Mac), asterisk operator
     ("m•g", ("m", "g"), sym("m") * sym("g")),
     ("m ∗ g", ("m", "g"), sym("m") * sym("g")),
