@@ -390,7 +390,9 @@ class Parser:
             if index == 2:
                 return Call("sqrt", radicand, tok.pos)
             # `∛x` is x^(1/3), as `\sqrt[3]{x}` reads
-            reciprocal = Product(Num("1", Fraction(1), True), (("/", Num(str(index), Fraction(index), True)),))
+            reciprocal = Product(
+                Num("1", Fraction(1), True), (("/", Num(str(index), Fraction(index), True)),)
+            )
             return Power(Group(radicand), Group(reciprocal), tok.pos)
         if tok.kind is Kind.LPAREN:
             return Group(self._bracketed())

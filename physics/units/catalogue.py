@@ -184,6 +184,13 @@ MEANINGS: dict[str, tuple[str, ...]] = {
     "F": ("F", "°F"),  # the farad, or degrees Fahrenheit (`80 F`)
 }
 
+# Spellings that are an angle unit to some students and another to others, refused with both (and never
+# split, nor read by a prefix): `30 Grad` is 30° in German, 30 gradians (0.9° each) in French and Polish
+# use; its letters would otherwise read as a gigaradian (G·rad), and `grad` as a gram-radian.
+TWO_ANGLE_SPELLINGS: dict[str, tuple[str, str]] = dict.fromkeys(
+    ("grad", "Grad", "grads", "Grads"), ("degrees (°)", "gradians (0.9° each)")
+)
+
 # Spellings that end in digits, which the lexer would otherwise read as a power (`g0` as g^0).
 SPELLINGS_WITH_DIGITS = frozenset({"g0", "g_0"})
 

@@ -25,7 +25,7 @@ from functools import lru_cache
 
 from physics.dimensions import Dimension, describe
 from physics.errors import AmbiguousInput, ParseError, TooLarge, UnknownUnit
-from physics.units.catalogue import ALIASES, FIRST_WHERE_NONE_FITS, MEANINGS
+from physics.units.catalogue import ALIASES, FIRST_WHERE_NONE_FITS, MEANINGS, TWO_ANGLE_SPELLINGS
 from physics.units.lexer import Kind, Token, tokenize
 from physics.units.parsed import ParsedUnits
 from physics.units.registry import UnitAtom, case_variant, lookup, lookup_piece, pint_unit, suggestion
@@ -270,6 +270,13 @@ class _Parser:
             power = self.exponent()
         elif self.at(Kind.SUPERSCRIPT):
             power = self._checked_power(self.advance())
+        angles = TWO_ANGLE_SPELLINGS.get(token.text)
+        if angles is not None:
+            raise AmbiguousInput(
+                f"{token.text!r} can mean {angles[0]} or {angles[1]}: for degrees write ° or deg, as in 30°",
+                token.position,
+                angles,
+            )
         readings = _readings(token.text, power < 0)
         if not readings.options:
             hint = suggestion(token.text)

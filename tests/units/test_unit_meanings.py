@@ -117,6 +117,28 @@ def test_a_spelling_no_meaning_of_which_fits_is_refused_with_every_meaning(
         assert meaning in verdict.feedback
 
 
+TWO_ANGLES = [
+    # (answer, spec units): `Grad` is the degree in German and the gradian elsewhere; never read as a
+    # gigaradian (G·rad), a gram-radian (g·rad) or a gram-radian-second, whatever is expected
+    ("30 Grad", "deg"),
+    ("30 grad", "deg"),
+    ("30 grads", "deg"),
+    ("30 Grads", "rad"),
+    ("2 Grad/s", "rad/s"),
+    ("30 grad", "g*rad"),
+]
+
+
+@pytest.mark.parametrize(("answer", "units"), TWO_ANGLES, ids=[c[0] + " for " + c[1] for c in TWO_ANGLES])
+def test_grad_is_refused_as_the_degree_or_the_gradian(answer: str, units: str) -> None:
+    verdict = check_numeric(answer, NumericSpec(D(30), units))
+    assert verdict.outcome is Outcome.INVALID
+    assert verdict.reason is Reason.AMBIGUOUS
+    assert verdict.error is not None and verdict.error.position == answer.index(" ") + 1
+    assert "degrees (°) or gradians" in verdict.feedback
+    assert "write ° or deg" in verdict.feedback
+
+
 GRADED_AS_FIRST = [
     # (answer, spec units, the dimension named): no meaning fits, and the first is what nearly everyone
     # means, so the answer is graded (a wrong dimension, an attempt used) rather than refused
