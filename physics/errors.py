@@ -60,13 +60,23 @@ class AmbiguousGrouping(AmbiguousInput):
     """One operator that groups two ways: `a/b c`, (a/b)·c or a/(b·c), and `e^-ωt`, e^(−ω)·t or
     e^(−ωt). `position` is the operator's (the `/`, the `^`), by which a reader may settle it by
     dimension. `spaced`: a division whose divisor is followed by a space (`a/b c`, not `a/bc`), which
-    spacing reads as (a/b)·c where dimensions cannot decide."""
+    spacing reads as (a/b)·c where dimensions cannot decide. `readings` holds one reading per choice (a
+    division followed by several factors has one for each place its divisor may end: `a/b c d` is
+    (a/b)·c·d, a/(b·c·d) or a/(b·c)·d); `partial`: too many to list, so not all are there, and the
+    grouping cannot be settled by dimension."""
 
     def __init__(
-        self, message: str, position: int | None, readings: Sequence[str], *, spaced: bool = False
+        self,
+        message: str,
+        position: int | None,
+        readings: Sequence[str],
+        *,
+        spaced: bool = False,
+        partial: bool = False,
     ) -> None:
         super().__init__(message, position, readings)
         self.spaced = spaced
+        self.partial = partial
 
 
 class UnknownSymbol(AnswerError):

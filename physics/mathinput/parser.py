@@ -58,6 +58,11 @@ class _Item:
         self.juxtaposed = juxtaposed
 
 
+# A division followed by more factors than this has too many readings to list (each place its divisor
+# may end): it is refused with two, and not settled by dimension.
+_MAX_DIVISOR_READINGS = 4
+
+
 class Parser:
     """`choices` settles ambiguous groupings by the position of their operator: 0 reads `a/b c` as
     (a/b)·c and `e^-ωt` as e^(−ω)·t, 1 as a/(b·c) and e^(−ωt). One without a choice is refused
@@ -206,31 +211,57 @@ class Parser:
             run_end = k + 1
             while run_end < len(items) and items[run_end].juxtaposed:
                 run_end += 1
+            # The divisor may end after any factor of the run: `1/2π √(k/m)` is (1/2)·π·√(k/m) (choice 0),
+            # 1/(2π·√(k/m)) (choice 1), or 1/(2π)·√(k/m) (choice 2: the divisor ends after the run's
+            # first factor; choice 3 after its second, and so on).
+            ends = (k + 1, run_end, *range(k + 2, run_end))
             choice = self._choices.get(item.token.pos)
             if choice == 0:  # (a/b)·c
                 first = Group(Product(first, tuple((i.op, i.node) for i in items[: k + 1])))
                 items = items[k + 1 :]
                 k = run_end - (k + 1)
                 continue
-            if choice == 1:
-                run = [i.node for i in items[k + 1 : run_end]]
+            if choice is not None and 0 < choice < len(ends):
+                divisor_end = ends[choice]
+                run = [i.node for i in items[k + 1 : divisor_end]]
                 grouped = Group(Product(item.node, tuple(("*", n) for n in run)))
-                items = [*items[:k], _Item("/", grouped, item.token, False), *items[run_end:]]
+                items = [*items[:k], _Item("/", grouped, item.token, False), *items[divisor_end:]]
                 k += 1
                 continue
-            numerator = Product(first, tuple((i.op, i.node) for i in items[:k]))
-            run = [i.node for i in items[k + 1 : run_end]]
-            left = render_text(Product(numerator, (("/", item.node),)), STUDENT_STYLE)
-            after = render_text(Product(run[0], tuple(("*", n) for n in run[1:])), STUDENT_STYLE)
-            denominator = render_text(Product(item.node, tuple(("*", n) for n in run)), STUDENT_STYLE)
-            readings = (f"({left})·{after}", f"{render_text(numerator, STUDENT_STYLE)}/({denominator})")
-            raise AmbiguousGrouping(
-                f"Did you mean {readings[0]} or {readings[1]}? Add parentheses.",
-                item.token.pos,
-                readings,
-                spaced=items[k + 1].token.space_before,
-            )
+            raise self._ambiguous_division(first, items, k, ends)
         return first, items
+
+    def _ambiguous_division(
+        self, first: Node, items: list[_Item], k: int, ends: tuple[int, ...]
+    ) -> AmbiguousGrouping:
+        """The refusal of the division at items[k], with a reading for each place its divisor may end
+        (`ends`, by choice); a run too long to list each is refused with two, as `partial`."""
+        item = items[k]
+        numerator = render_text(Product(first, tuple((i.op, i.node) for i in items[:k])), STUDENT_STYLE)
+        partial = len(ends) > _MAX_DIVISOR_READINGS
+        readings: list[str] = []
+        for divisor_end in ends[:2] if partial else ends:
+            divisor = Product(item.node, tuple(("*", i.node) for i in items[k + 1 : divisor_end]))
+            rest = [i.node for i in items[divisor_end : ends[1]]]
+            after = (
+                "·" + render_text(Product(rest[0], tuple(("*", n) for n in rest[1:])), STUDENT_STYLE)
+                if rest
+                else ""
+            )
+            if divisor_end == k + 1:  # (a/b)·c
+                numerator_product = Product(first, tuple((i.op, i.node) for i in items[: k + 1]))
+                readings.append(f"({render_text(numerator_product, STUDENT_STYLE)}){after}")
+            else:
+                readings.append(f"{numerator}/({render_text(divisor, STUDENT_STYLE)}){after}")
+        # Asked in the order the divisor grows: (a/b)·c·d, a/(b·c)·d, a/(b·c·d)
+        asked = [readings[0], *readings[2:], readings[1]]
+        return AmbiguousGrouping(
+            f"Did you mean {', '.join(asked[:-1])} or {asked[-1]}? Add parentheses.",
+            item.token.pos,
+            readings,
+            spaced=items[k + 1].token.space_before,
+            partial=partial,
+        )
 
     def _power(self) -> Node:
         # A name or a number (most factors) made here, and the powers and postfixes looked for only

@@ -14,7 +14,7 @@ student must add parentheses.
 from __future__ import annotations
 
 import dataclasses
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 
 import sympy
 
@@ -45,14 +45,16 @@ def read_symbolic_answer(
     except AmbiguousGrouping as refused:
         if expected is None:
             raise
-        readings = _readings(text, names, limits, {}, refused, powers_outside)
-        fitting = [r for r in readings if _fits(r.expr, dimensions, expected, refused)]
+        chosen_readings = _readings(text, names, limits, {}, refused, powers_outside)
+        fitting_choices = [(c, r) for c, r in chosen_readings if _fits(r.expr, dimensions, expected, refused)]
+        fitting = [r for _, r in fitting_choices]
         if len(fitting) > 1:
             spaced = _spaced_reading(text, names, limits, powers_outside, fitting, expected)
             if spaced is not None:
                 return spaced
             raise AmbiguousGrouping(
-                f"{refused.message} Both readings are {describe(expected)}, so the dimensions cannot decide.",
+                f"{_asked(refused, fitting_choices)} {'Both readings' if len(fitting) == 2 else 'Each of these'} are "
+                f"{describe(expected)}, so the dimensions cannot decide.",
                 refused.position,
                 refused.readings,
             ) from None
@@ -65,6 +67,18 @@ def read_symbolic_answer(
         if chosen.read_as.note is not None:  # how a bare function argument with a power was read
             note = f"{note}. {chosen.read_as.note}"
         return dataclasses.replace(chosen, read_as=dataclasses.replace(chosen.read_as, note=note))
+
+
+def _asked(refused: AmbiguousGrouping, fitting: Sequence[tuple[Mapping[int, int], ParsedMath]]) -> str:
+    """The refusal's question, asking only of the readings that fit where the division had more than
+    two (`1/2π √(k/m)`: not 1/(2π·√(k/m)), which is not a frequency)."""
+    if len(refused.readings) <= 2 or refused.position is None:
+        return refused.message
+    taken = sorted({choices[refused.position] for choices, _ in fitting if refused.position in choices})
+    if len(taken) < 2:
+        return refused.message
+    texts = [refused.readings[choice] for choice in taken]
+    return f"Did you mean {', '.join(texts[:-1])} or {texts[-1]}? Add parentheses."
 
 
 def _spaced_reading(
@@ -113,14 +127,17 @@ def _by_spacing(
         return [(parsed, pairs)]
     except AmbiguousGrouping as grouping:
         position = grouping.position
-        if len(choices) >= MAX_SETTLED or position is None or position in choices:
+        if len(choices) >= MAX_SETTLED or position is None or position in choices or grouping.partial:
             return []
         if grouping.spaced:
             taken = ((grouping.readings[0], grouping.readings[1]),)
             return _by_spacing(text, names, limits, {**choices, position: 0}, pairs + taken, powers_outside)
         return [
-            *_by_spacing(text, names, limits, {**choices, position: 0}, pairs, powers_outside),
-            *_by_spacing(text, names, limits, {**choices, position: 1}, pairs, powers_outside),
+            reading
+            for choice in range(len(grouping.readings))  # a choice for each reading
+            for reading in _by_spacing(
+                text, names, limits, {**choices, position: choice}, pairs, powers_outside
+            )
         ]
 
 
@@ -131,16 +148,27 @@ def _readings(
     choices: dict[int, int],
     refused: AmbiguousGrouping,
     powers_outside: bool,
-) -> list[ParsedMath]:
+) -> list[tuple[dict[int, int], ParsedMath]]:
+    """Every reading, with the choices that make it."""
     try:
-        return [parse_math(text, names, limits=limits, choices=choices, powers_outside=powers_outside)]
+        return [
+            (choices, parse_math(text, names, limits=limits, choices=choices, powers_outside=powers_outside))
+        ]
     except AmbiguousGrouping as another:
-        if len(choices) >= MAX_SETTLED or another.position is None or another.position in choices:
+        if (
+            len(choices) >= MAX_SETTLED
+            or another.position is None
+            or another.position in choices
+            or another.partial
+        ):
             raise refused from None
         position = another.position
         return [
-            *_readings(text, names, limits, {**choices, position: 0}, refused, powers_outside),
-            *_readings(text, names, limits, {**choices, position: 1}, refused, powers_outside),
+            reading
+            for choice in range(len(another.readings))  # a choice for each reading
+            for reading in _readings(
+                text, names, limits, {**choices, position: choice}, refused, powers_outside
+            )
         ]
 
 

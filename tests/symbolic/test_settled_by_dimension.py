@@ -133,6 +133,61 @@ def test_a_grouping_that_dimensions_cannot_settle_is_refused_with_both_readings(
     assert "Did you mean" in verdict.feedback
 
 
+SPRING = (SymbolDecl("k", "N/m"), SymbolDecl("m", "kg"))
+BOX = (SymbolDecl("n", "1"), SymbolDecl("hbar", "J*s"), SymbolDecl("m", "kg"), SymbolDecl("L", "m"))
+FIELD = (SymbolDecl("q", "C"), SymbolDecl("epsilon_0", "C^2/(N*m^2)"), SymbolDecl("r", "m"))
+FREQUENCY = "sqrt(k/m)/(2*pi)"
+
+# The divisor of a division followed by several factors may end after any of them: each place is a
+# reading. `1/2π √(k/m)` is (1/2)·π·√(k/m) or 1/(2π)·√(k/m) (both frequencies) or 1/(2π·√(k/m)); it was
+# read as (1/2)·π·√(k/m), "the only reading that is a frequency", and graded wrong.
+DIVISOR_ENDS_REFUSED = [
+    # (answer, the readings asked about)
+    ("1/2π sqrt(k/m)", ("(1/2)·pi·sqrt(k/m)", "1/(2·pi)·sqrt(k/m)")),
+    ("1/2π√(k/m)", ("(1/2)·pi·sqrt(k/m)", "1/(2·pi)·sqrt(k/m)")),
+    ("1/2π (k/m)^0.5", ("(1/2)·pi·(k/m)^0.5", "1/(2·pi)·(k/m)^0.5")),
+]
+
+
+@pytest.mark.parametrize(("answer", "asked"), DIVISOR_ENDS_REFUSED, ids=[c[0] for c in DIVISOR_ENDS_REFUSED])
+def test_a_divisor_that_may_end_at_several_places_is_refused_with_the_readings_that_fit(
+    answer: str, asked: tuple[str, str]
+) -> None:
+    verdict = run_job(SymbolicJob(answer, FREQUENCY, SPRING))
+    assert verdict.outcome is Outcome.INVALID
+    assert verdict.reason is Reason.AMBIGUOUS
+    assert f"Did you mean {asked[0]} or {asked[1]}? Add parentheses." in verdict.feedback
+    assert "Both readings are an angular frequency" in verdict.feedback
+    assert "1/(2·pi·sqrt(k/m))" not in verdict.feedback  # a time: not asked about
+
+
+DIVISOR_ENDS_SETTLED = [
+    # (answer, reference, symbols, reading): one place for the divisor's end has the dimension
+    ("n^2 π^2 ħ^2/2m L^2", "n^2*pi^2*hbar^2/(2*m*L^2)", BOX, "n**2*pi**2*hbar**2/(2*m*L**2)"),
+    ("n^2 π^2 ħ^2/2 m L^2", "n^2*pi^2*hbar^2/(2*m*L^2)", BOX, "n**2*pi**2*hbar**2/(2*m*L**2)"),
+    ("q/4π ε₀ r²", "q/(4*pi*epsilon_0*r^2)", FIELD, "q/(4*pi*epsilon_0*r**2)"),
+]
+
+
+@pytest.mark.parametrize(
+    ("answer", "reference", "symbols", "reading"),
+    DIVISOR_ENDS_SETTLED,
+    ids=[c[0] for c in DIVISOR_ENDS_SETTLED],
+)
+def test_a_divisor_that_may_end_at_several_places_is_settled_where_one_fits(
+    answer: str, reference: str, symbols: tuple[SymbolDecl, ...], reading: str
+) -> None:
+    verdict = run_job(SymbolicJob(answer, reference, symbols))
+    assert verdict.outcome is Outcome.CORRECT
+    assert verdict.read_as is not None and verdict.read_as.text == reading
+
+
+def test_a_division_followed_by_too_many_factors_is_not_settled_by_dimension() -> None:
+    # Each place the divisor may end is a reading; past a few, they are not all listed, and not settled
+    verdict = run_job(SymbolicJob("1/2π k m m k sqrt(k/m)/(k m)^2", FREQUENCY, SPRING))
+    assert verdict.reason is Reason.AMBIGUOUS
+
+
 def test_several_ambiguous_divisions_are_settled_together() -> None:
     verdict = run_job(SymbolicJob("mv/qB + mv/2qB", "3*m*v/(2*q*B)", CHARGE))
     assert verdict.outcome is Outcome.CORRECT
