@@ -165,6 +165,8 @@ ALIASES: dict[str, str] = {
     "kilohm": "kΩ", "kilohms": "kΩ", "megohm": "MΩ", "megohms": "MΩ", "Cal": "kcal", "Cals": "kcal",
     # `ms-1` is how many textbooks print m·s⁻¹; no one writes a reciprocal millisecond that way.
     "ms-1": "m/s", "ms-2": "m/s^2",
+    # The one-character degree Celsius and Fahrenheit signs, and the degree typed as a letter o
+    "℃": "°C", "℉": "°F", "oC": "°C", "oF": "°F",
 }  # fmt: skip
 
 # Spellings with more than one meaning, each meaning a unit spelling. The first is pint's, taken where no

@@ -5,7 +5,8 @@ form one name (`Nm`), which the parser looks up or splits, so `N m` and `Nm` bot
 A name with a negative integer glued to it is a power, as textbooks print it (`m s-2` is m·s⁻²), and
 `N.m` and `N-m` are N·m. Units said in words read as written: `per` divides (`per second` alone is 1/s),
 `squared` and `cubed` raise the unit before them (`metres per second squared` is m/s²), `sq`, `square`,
-`cu` and `cubic` the unit after them (`sq ft`, `cubic centimetres`); `fl oz` is the fluid ounce.
+`cu` and `cubic` the unit after them (`sq ft`, `cubic centimetres`); `fl oz` is the fluid ounce, and a
+degree word before a temperature scale one unit (`deg C`, `degrees Fahrenheit` are °C, °F).
 """
 
 from __future__ import annotations
@@ -78,8 +79,9 @@ _MAX_INTEGER_DIGITS = 6
 
 
 def _is_name_char(char: str) -> bool:
-    # `°` is not a letter but begins `°C`; `_` appears in pint names such as `electron_volt`.
-    return char.isalpha() or char in "°_"
+    # `°` is not a letter but begins `°C`; `_` appears in pint names such as `electron_volt`; `℃` and
+    # `℉` are one character each for °C and °F (catalogue.ALIASES).
+    return char.isalpha() or char in "°_℃℉"
 
 
 def _glued_negative_power(text: str, i: int) -> int | None:
@@ -138,6 +140,29 @@ def _fluid_ounce_end(text: str, word: str, i: int) -> int | None:
     return None
 
 
+# A temperature said with its degree apart (`deg C`, `degrees Celsius`, `° C`, `deg. F`): one unit, never
+# an angle times a coulomb (or a farad), which converts to nonsense with a temperature's dimension.
+_DEGREE_WORDS = frozenset({"°", "deg", "degs", "degree", "degrees", "Deg", "Degree", "Degrees"})
+_TEMPERATURE_WORDS = {
+    **dict.fromkeys(("C", "c", "Celsius", "celsius", "Centigrade", "centigrade"), "°C"),
+    **dict.fromkeys(("F", "f", "Fahrenheit", "fahrenheit"), "°F"),
+    **dict.fromkeys(("K", "Kelvin", "kelvin"), "K"),
+}
+
+
+def _temperature(text: str, word: str, i: int) -> tuple[str, int] | None:
+    """The temperature unit and its end when a degree word ending at i is followed by a temperature
+    scale (`deg C`), else None."""
+    if word not in _DEGREE_WORDS:
+        return None
+    j = _after_word(text, i)
+    end = j
+    while end < len(text) and _is_name_char(text[end]):
+        end += 1
+    unit = _TEMPERATURE_WORDS.get(text[j:end])
+    return None if unit is None else (unit, end)
+
+
 def _tokenize(text: str) -> list[Token]:
     tokens: list[Token] = []
     i = 0
@@ -164,6 +189,13 @@ def _tokenize(text: str) -> list[Token]:
             if plural_end is not None:
                 tokens.append(Token(Kind.NAME, _APOSTROPHE_PLURALS[word], start))
                 i = plural_end
+                _raise_by(tokens, leading)
+                leading = None
+                continue
+            temperature = _temperature(text, word, i)
+            if temperature is not None:
+                tokens.append(Token(Kind.NAME, temperature[0], start))
+                i = temperature[1]
                 _raise_by(tokens, leading)
                 leading = None
                 continue

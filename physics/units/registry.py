@@ -258,8 +258,11 @@ def pint_unit(name: str) -> UnitAtom | None:
 
 @cache
 def _by_folded_case() -> dict[str, str]:
+    # Where several spellings share their letters, an unprefixed unit first: `ev` suggests eV, not EV
+    # (the exavolt), `pa` Pa, not PA (the petaampere).
+    table = spelling_table()
     index: dict[str, str] = {}
-    for spelling in sorted(spelling_table()):
+    for spelling in sorted(table, key=lambda spelling: (bool(table[spelling].prefix), spelling)):
         index.setdefault(spelling.casefold(), spelling)
     return index
 

@@ -120,10 +120,14 @@ def test_unknown_unit_names_the_unit_and_its_position(text: str, name: str, posi
     assert caught.value.reason == "unknown_unit"
 
 
-def test_unknown_unit_suggests_the_spelling_with_the_right_case() -> None:
+@pytest.mark.parametrize(
+    ("typed", "suggested"),
+    [("KM", "km"), ("ev", "eV"), ("pa", "Pa")],  # not EV, the exavolt, nor PA, the petaampere
+)
+def test_unknown_unit_suggests_the_spelling_with_the_right_case(typed: str, suggested: str) -> None:
     with pytest.raises(UnknownUnit) as caught:
-        parse_units("KM")
-    assert "'km'" in caught.value.message
+        parse_units(typed)
+    assert f"did you mean {suggested!r}?" in caught.value.message
 
 
 def test_glued_name_with_two_splits_is_ambiguous() -> None:

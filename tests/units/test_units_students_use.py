@@ -135,6 +135,22 @@ ANSWERS = [
     ("440 cps", "Hz", "440"),
     ("938.3 MeV/c^2", "kg", "1.6726e-27"),
     ("0.6 c", "m/s", "1.7988e8"),
+    # A temperature with its degree said apart: one unit, never an angle times a coulomb (which had a
+    # temperature's dimension and was graded wrong)
+    ("26.85 deg C", "K", "300"),
+    ("26.85 deg. C", "K", "300"),
+    ("26.85 degrees C", "K", "300"),
+    ("26.85 degree Celsius", "K", "300"),
+    ("26.85 degrees centigrade", "K", "300"),
+    ("26.85 ° C", "K", "300"),
+    ("26.85 Deg c", "K", "300"),
+    ("80.33 deg F", "K", "300"),
+    ("80.33 degrees Fahrenheit", "K", "300"),
+    ("300 degrees K", "K", "300"),
+    ("26.85 ℃", "K", "300"),  # the one-character signs
+    ("80.33 ℉", "K", "300"),
+    ("26.85 oC", "K", "300"),  # the degree typed as a letter o
+    ("4186 J/(kg deg C)", "J/(kg*K)", "4186"),
 ]
 
 
