@@ -539,6 +539,15 @@ class Parser:
                 return node, None
             return _product_of([*factors[:-1], last.base]), last
         if tok.kind is Kind.OP and tok.text in "+-":
+            after = self._tokens[self._i + 1]
+            inverse = INVERSES.get(func_tok.text)
+            if inverse is not None and tok.text == "-" and after.kind is Kind.NUM and after.text == "1":
+                # `tan-1(y/x)`, a calculator's key label for the inverse
+                raise ParseError(
+                    f"Did you mean the inverse, {typed}^-1(…) (also written {inverse}(…))? Write {typed}^-1 "
+                    f"with its ^; for {typed} of a negative number, put it in brackets: {typed}(-x).",
+                    tok.pos,
+                )
             raise ParseError(f"Put the argument of {typed} in brackets, as in {typed}(-x).", tok.pos)
         raise ParseError(f"{typed} needs an argument, as in {typed}(x).", func_tok.pos)
 

@@ -47,6 +47,10 @@ PARSE_ERRORS = [
     ("sin", 0, "sin needs an argument"),
     ("sin^2", 0, "sin needs an argument"),
     ("x + sin -x", 8, "brackets"),
+    # A calculator's key label for the inverse: not tan of minus something
+    ("tan-1(x/y)", 3, "Did you mean the inverse, tan^-1(…) (also written atan(…))?"),
+    ("sin -1 x", 4, "Did you mean the inverse, sin^-1(…)"),
+    ("cos-2(x)", 3, "Put the argument of cos in brackets"),
     ("sin^(2)", 0, "sin needs an argument"),
     ("sin^x", 4, "Write a power of sin as sin^2(x)"),
     ("!x", 0, "Unexpected '!'"),
