@@ -86,3 +86,25 @@ def without_zero_width(text: str) -> Visible | None:
         return None
     typed_at = tuple(at for at, ch in enumerate(text) if ch not in ZERO_WIDTH)
     return Visible("".join(text[at] for at in typed_at), typed_at, len(text))
+
+
+# The delimiters that wrap LaTeX math in a document or a web page: `$…$`, `$$…$$`, `\(…\)`, `\[…\]`.
+_MATH_DELIMITERS: Final = (("$$", "$$"), ("$", "$"), ("\\(", "\\)"), ("\\[", "\\]"))
+
+
+def without_math_delimiters(text: str) -> str:
+    """The text with the delimiters of LaTeX math around all of it (`$\\frac{mg}{k}$`, copied from a
+    document) as spaces, so that positions stay those typed; any other text as it is."""
+    stripped = text.strip()
+    for opening, closing in _MATH_DELIMITERS:
+        inner = stripped[len(opening) : -len(closing)]
+        if (
+            len(stripped) > len(opening) + len(closing)
+            and stripped.startswith(opening)
+            and stripped.endswith(closing)
+            and "$" not in inner
+        ):
+            start = text.index(stripped)
+            end = start + len(stripped)
+            return text[:start] + " " * len(opening) + inner + " " * len(closing) + text[end:]
+    return text

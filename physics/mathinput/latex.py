@@ -31,6 +31,8 @@ from physics.mathinput.vocabulary import (
 )
 
 FrameKind = Literal["group", "argument", "numerator", "denominator", "radicand"]
+# Operator names that a subscript may hold as its word: equation editors turn a typed `max` into `\max`.
+_SUBSCRIPT_OPERATOR_WORDS = frozenset({"max", "min"})
 _MAX_ROOT_INDEX_DIGITS = 3
 _SHOWN_NAME_LENGTH = 24  # of an unknown command quoted back
 _BRACKET_KINDS = {"(": Kind.LPAREN, "[": Kind.LPAREN, "{": Kind.LPAREN, ")": Kind.RPAREN, "]": Kind.RPAREN}
@@ -404,6 +406,8 @@ class LatexReader:
             return word, [j] * len(word), end
         if name in LATEX_TEXT_WRAPPERS:
             return self._braced_name(name, end)
+        if name in _SUBSCRIPT_OPERATOR_WORDS:  # `v_{\max}`: an editor (MathQuill) sets max as an operator
+            return name, list(range(j + 1, end)), end
         raise ParseError(refusal, j)
 
     def _units(self, i: int, name: str, end: int) -> Token:

@@ -11,7 +11,7 @@ from collections.abc import Callable
 from dataclasses import replace
 from fractions import Fraction
 
-from physics.characters import without_zero_width
+from physics.characters import without_math_delimiters, without_zero_width
 from physics.errors import AnswerError, ParseError, TooLarge
 from physics.mathinput.latex import LatexReader
 from physics.mathinput.limits import InputLimits
@@ -53,6 +53,8 @@ def tokenize(
             f"The answer is too long ({len(text)} characters; at most {limits.max_length}).",
             limits.max_length,
         )
+    if "$" in text or "\\(" in text or "\\[" in text:
+        text = without_math_delimiters(text)  # `$\frac{mg}{k}$` copied from a document
     visible = without_zero_width(text)
     if visible is not None:  # read what the student sees; positions stay those of the typed text
         try:
@@ -150,6 +152,10 @@ def tokenize(
             continue
         elif ch == ",":
             raise ParseError(_comma_message(tokens), i)
+        elif ch == "$":  # what is left of LaTeX's math delimiters, when they wrap only part of it
+            raise ParseError(
+                "Leave out the $ signs: type the expression alone (or all of it between two $).", i
+            )
         elif ch in "=≈":  # `a = g sin θ`, `≈ 2g`, as written on paper
             raise ParseError(f"Give the expression alone, without '{ch}' (nor the name before it).", i)
         else:

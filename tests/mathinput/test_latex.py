@@ -109,6 +109,13 @@ READS_AS_PLAIN = [
     (r"v_{\text{max}}", "v_max"),
     (r"v_{\mathrm{max}}", "v_max"),
     (r"v_\mathrm{max}", "v_max"),
+    (r"v_{\max}", "v_max"),  # MathQuill sets a typed max as the operator \max
+    (r"v_\max", "v_max"),
+    # The delimiters of LaTeX math around the whole answer, as copied from a document or a page
+    (r"$\frac{x}{y}$", "x/y"),
+    (r"$$\frac{x}{y}$$", "x/y"),
+    (r"\(\frac{x}{y}\)", "x/y"),
+    (r" \[ x^{2} \] ", "x^2"),
     (r"\mathrm{v_0}", "v_0"),
     (r"\mathrm{v}_{0}", "v_0"),
     (r"\text{m}\text{g}", "m g"),
@@ -162,6 +169,9 @@ LATEX_ERRORS = [
     (r"{x + \frac{y}{M}", 0, "this '{' is never closed"),
     (r"x}", 1, "Unmatched '}'"),
     (r"\circ", 0, r"write degrees as 30^\circ"),
+    (r"$x$ + y", 0, "Leave out the $ signs"),  # delimiters around only part of the answer
+    (r"x^2 $", 4, "Leave out the $ signs"),
+    (r"v_{\sin}", 3, "A subscript holds letters and digits"),
 ]
 
 

@@ -66,6 +66,8 @@ VERDICTS = [
     ("bullet-units", "4.58 m•s^-2", ACCEL, OK, Reason.EQUIVALENT),  # option-8 on a Mac
     ("bullet-times-ten", "458•10^-2 m/s^2", ACCEL, OK, Reason.EQUIVALENT),
     ("asterisk-operator", "458 ∗ 10^-2 m/s^2", ACCEL, OK, Reason.EQUIVALENT),
+    ("latex-dollars", "$4.58\\,\\mathrm{m/s^2}$", ACCEL, OK, Reason.EQUIVALENT),  # copied from a document
+    ("latex-parentheses", "\\(4.58 \\text{ m/s}^2\\)", ACCEL, OK, Reason.EQUIVALENT),
     ("prefixed-units", "4580 mm/s^2", ACCEL, OK, Reason.EQUIVALENT),
     ("scientific", "4.58e0 m/s^2", ACCEL, OK, Reason.EQUIVALENT),
     ("times-ten", "458×10^-2 m/s^2", ACCEL, OK, Reason.EQUIVALENT),
