@@ -48,6 +48,12 @@ class ParseError(AnswerError):
     reason = "parse_error"
 
 
+class LikelySlip(ParseError):
+    """Text a student types for something other than what it literally says (`3.0 x 10-3` for ×10⁻³,
+    `30^0` for 30°), refused asking which was meant: the refusal stands whatever another reader (the
+    arithmetic of a numeric answer) could make of the text."""
+
+
 class AmbiguousInput(AnswerError):
     reason = "ambiguous"
 

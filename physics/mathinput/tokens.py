@@ -12,7 +12,7 @@ from dataclasses import replace
 from fractions import Fraction
 
 from physics.characters import without_math_delimiters, without_zero_width
-from physics.errors import AnswerError, ParseError, TooLarge
+from physics.errors import AnswerError, LikelySlip, ParseError, TooLarge
 from physics.mathinput.latex import LatexReader
 from physics.mathinput.limits import InputLimits
 from physics.mathinput.tokentypes import Kind, SpelledWord, Token
@@ -104,6 +104,14 @@ def tokenize(
         elif ch == "^" and (degree_end := latex.degree_end(i + 1)) is not None:  # 30^\circ
             token = Token(Kind.POSTFIX, "°", start, degree_end, space)
             i = degree_end
+        elif (
+            ch == "^"
+            and tokens
+            and tokens[-1].kind is Kind.NUM
+            and (degree_end := _typed_degree_end(chars, i + 1))
+        ):
+            token = Token(Kind.POSTFIX, "°", start, degree_end, space)  # 30^o, as plain text writes 30°
+            i = degree_end
         elif ch in "+-*/^":
             i += 1
             token = Token(Kind.OP, ch, start, i, space)
@@ -160,6 +168,8 @@ def tokenize(
             raise ParseError(f"Give the expression alone, without '{ch}' (nor the name before it).", i)
         else:
             raise ParseError(f"Unexpected character {text[i]!r}.", i)
+        if token.kind in (Kind.NUM, Kind.SUP) and token.value == 0:
+            _refuse_power_zero_for_degrees(tokens, token)
         tokens.append(token)
         space = False
     latex.finish()
@@ -174,6 +184,38 @@ def _typed_where(token: Token, typed_position: Callable[[int], int]) -> Token:
         moved.char_positions = tuple(map(typed_position, moved.char_positions))
         moved.unsplittable = tuple((typed_position(a), typed_position(b)) for a, b in moved.unsplittable)
     return moved
+
+
+def _typed_degree_end(chars: list[str], i: int) -> int | None:
+    """The end of a degree typed as a power after the `^` ending at i: `o`, `°` or `{o}` (`30^o`), else
+    None. No one raises a number to a letter o."""
+    n = len(chars)
+    braced = i < n and chars[i] == "{"
+    j = i + 1 if braced else i
+    if j >= n or chars[j] not in "o°":
+        return None
+    j += 1
+    if braced:
+        return j + 1 if j < n and chars[j] == "}" else None
+    return None if j < n and (chars[j].isalnum() or chars[j] == "_") else j
+
+
+def _refuse_power_zero_for_degrees(before: list[Token], zero: Token) -> None:
+    """`30^0`, `30⁰`: a degree sign typed as a zero, or the number 1? Refused, with both: no one writes 1
+    so. (10^0 is a power of ten, as in 4.58×10^0.)"""
+    if zero.kind is Kind.SUP:
+        base = before[-1] if before else None
+    else:
+        base = (
+            before[-2] if len(before) >= 2 and before[-1].kind is Kind.OP and before[-1].text == "^" else None
+        )
+    if base is None or base.kind is not Kind.NUM or base.text == "10":
+        return
+    raise LikelySlip(
+        f"Did you mean {base.text}° or {base.text} to the power 0 (which is 1)? For degrees write "
+        f"{base.text}° or {base.text} deg.",
+        zero.pos if zero.kind is Kind.SUP else before[-1].pos,
+    )
 
 
 # Two-argument functions students know from programming or calculators, and how the answer writes them.

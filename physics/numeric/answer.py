@@ -14,8 +14,8 @@ from fractions import Fraction
 
 from physics.characters import fullwidth_as_ascii, without_math_delimiters, without_zero_width
 from physics.dimensions import Dimension
-from physics.errors import AnswerError, ParseError, TooLarge
-from physics.numeric.literal import CalculatorExponent, NumberLiteral, read_number, units_start
+from physics.errors import AnswerError, LikelySlip, ParseError, TooLarge
+from physics.numeric.literal import NumberLiteral, read_number, units_start
 from physics.units import ParsedUnits, UnitReading, read_units
 from physics.verdict import ReadAs
 
@@ -196,7 +196,7 @@ def read_numeric_answer(
     try:
         return read_literal_answer(text, expected)
     except _NumberFormError as malformed:
-        if isinstance(malformed.error, CalculatorExponent):  # `3.0 x 10-3`: never the arithmetic 30 − 3
+        if isinstance(malformed.error, LikelySlip):  # `3.0 x 10-3`: never the arithmetic 30 − 3
             raise malformed.error from None
         # No literal starts the answer (`pi/6`, `√2`): only arithmetic can read it. A literal that
         # starts but is malformed (`4.5.8`, `4,58`) keeps its own, specific, message.
@@ -205,6 +205,8 @@ def read_numeric_answer(
         literal_error = error
     try:
         ends = number_part_end(text)
+    except LikelySlip:  # `9.8 sin(30^0) N`: a degree typed as a power 0, asked about where it stands
+        raise
     except AnswerError as latex_error:  # LaTeX that the math reader refuses, where and why
         raise (literal_error or _no_number_first(text, latex_error)) from None
     if ends is None:

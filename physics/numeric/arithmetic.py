@@ -18,7 +18,7 @@ from fractions import Fraction
 import sympy
 
 from physics.dimensions import Dimension
-from physics.errors import AnswerError, ParseError, TooLarge, UnknownSymbol
+from physics.errors import AnswerError, LikelySlip, ParseError, TooLarge, UnknownSymbol
 from physics.mathinput import InputLimits, parse_math
 from physics.mathinput.tokens import Kind, Token, tokenize
 from physics.mathinput.vocabulary import FUNCTIONS, PI_SPELLINGS
@@ -173,11 +173,12 @@ def _read_quantity(text: str, quantity: _Quantity, expected: Dimension | None) -
 
 def number_part_end(text: str) -> int | None:
     """Where the number part of `text` read as arithmetic ends; None when the math reader cannot
-    tokenize it (then it is not arithmetic at all), but its error for LaTeX that it refuses."""
+    tokenize it (then it is not arithmetic at all), but its error for LaTeX that it refuses, or for a
+    likely slip (`30^0` for 30°)."""
     try:
         return _split(text)[0].number_end
-    except AnswerError:
-        if "\\" in text:
+    except AnswerError as error:
+        if "\\" in text or isinstance(error, LikelySlip):  # `9.8 sin(30^0) N`: asked about where it stands
             raise
         return None
 

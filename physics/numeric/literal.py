@@ -11,7 +11,7 @@ import re
 from dataclasses import dataclass
 from fractions import Fraction
 
-from physics.errors import ParseError, TooLarge
+from physics.errors import LikelySlip, ParseError, TooLarge
 
 MAX_DIGITS = 40
 MAX_EXPONENT = 400
@@ -193,7 +193,7 @@ def _scientific(text: str, i: int) -> tuple[int, int] | None:
     return None
 
 
-class CalculatorExponent(ParseError):
+class CalculatorExponent(LikelySlip):
     """`3.0 x 10-3`: a calculator's exponent typed after `×10` without its `^`. Read as arithmetic it
     would be 3.0·10 − 3 = 27, which no one means by it: refused, whatever the arithmetic reader makes of
     it, saying how to write either reading. (A minus spaced on both sides, `3 × 10 - 3`, is arithmetic.)"""

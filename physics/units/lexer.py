@@ -11,10 +11,11 @@ degree word before a temperature scale one unit (`deg C`, `degrees Fahrenheit` a
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, replace
 from enum import Enum
 
-from physics.errors import AnswerError, ParseError
+from physics.errors import AnswerError, LikelySlip, ParseError
 from physics.units.catalogue import ALIASES, SPELLINGS_WITH_DIGITS
 from physics.units.latex import plain_units
 
@@ -94,9 +95,32 @@ def _glued_negative_power(text: str, i: int) -> int | None:
     return None
 
 
+# A degree sign typed as a power of the number before the units: `30^o`, `30 ^{o}`, `30^°`, `25^oC`.
+_DEGREE_AS_POWER = re.compile(r"\s*\^\s*(?:[o°]|\{\s*[o°]\s*\})(?=[CFK]?(?![\w°]))")
+# A degree sign typed as a zero: `30^0`, `30⁰` (30 to the power 0 is 1, which no one writes so).
+_DEGREE_AS_ZERO = re.compile(r"\s*(?:\^\s*(?:0|\{\s*0\s*\})|⁰)(?![\d.⁰-⁹])")
+
+
+def _degree_sign_typed_as_power(text: str) -> str:
+    """The units with a leading `^o` as the degree sign, padded with spaces so positions stay as typed;
+    ParseError for a leading `^0`, asking whether a degree was meant."""
+    zero = _DEGREE_AS_ZERO.match(text)
+    if zero is not None:
+        raise LikelySlip(
+            "Did you mean degrees? A power 0 makes the number 1: for degrees write ° or deg, as in 30°",
+            zero.start() + len(zero.group()) - len(zero.group().lstrip()),
+        )
+    power = _DEGREE_AS_POWER.match(text)
+    if power is None:
+        return text
+    return " " * (power.end() - 1) + "°" + text[power.end() :]
+
+
 def tokenize(text: str) -> list[Token]:
     """The tokens of a unit string; LaTeX (`\\mathrm{m/s^2}`) is read as the plain units it shows, with
     positions into what was typed."""
+    if "^" in text or "⁰" in text:
+        text = _degree_sign_typed_as_power(text)
     if "\\" not in text and "{" not in text and "}" not in text:
         return _tokenize(text)
     plain, where = plain_units(text)

@@ -64,6 +64,10 @@ TEXTBOOK = [
     ("∛x y", ("x", "y"), sym("x") ** sympy.Rational(1, 3) * sym("y")),
     ("∛27 x", ("x",), 3 * sym("x")),
     ("∜x", ("x",), sym("x") ** sympy.Rational(1, 4)),
+    # A degree sign typed as a power of a letter o, as plain text writes 30°
+    ("sin(30^o) x", ("x",), sympy.sin(sympy.pi / 6) * sym("x")),
+    ("sin(30^{o}) x", ("x",), sympy.sin(sympy.pi / 6) * sym("x")),
+    ("sin 30^° x", ("x",), sympy.sin(sympy.pi / 6) * sym("x")),
     # Product signs that look like the ones read: bullet (option-8 on a Mac), asterisk operator
     ("m•g", ("m", "g"), sym("m") * sym("g")),
     ("m ∗ g", ("m", "g"), sym("m") * sym("g")),
@@ -133,3 +137,16 @@ def test_a_word_after_a_zero_width_character_is_placed_where_it_was_typed() -> N
     with pytest.raises(AnswerError) as caught:
         parse_math("m\u200f q", names("m"))
     assert caught.value.position == 3
+
+
+@pytest.mark.parametrize(("typed", "position"), [("sin(30^0) x", 6), ("sin(30⁰) x", 6), ("2^0 x", 1)])
+def test_a_degree_typed_as_a_power_zero_is_refused_asking_which(typed: str, position: int) -> None:
+    with pytest.raises(ParseError) as caught:
+        parse_math(typed, names("x"))
+    assert caught.value.position == position
+    assert "Did you mean" in caught.value.message and "to the power 0 (which is 1)?" in caught.value.message
+
+
+def test_a_power_zero_of_ten_or_of_a_symbol_is_read() -> None:
+    assert same(parse_math("x 10^0", names("x")).expr, sym("x"))
+    assert same(parse_math("x^0 y", names("x", "y")).expr, sym("y"))

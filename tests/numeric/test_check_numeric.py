@@ -66,6 +66,12 @@ VERDICTS = [
     ("bullet-units", "4.58 m•s^-2", ACCEL, OK, Reason.EQUIVALENT),  # option-8 on a Mac
     ("bullet-times-ten", "458•10^-2 m/s^2", ACCEL, OK, Reason.EQUIVALENT),
     ("asterisk-operator", "458 ∗ 10^-2 m/s^2", ACCEL, OK, Reason.EQUIVALENT),
+    ("degree-as-power-o", "28.65^o", ANGLE, OK, Reason.EQUIVALENT),  # plain text for 28.65°
+    ("degree-as-power-o-braced", "28.65^{o}", ANGLE, OK, Reason.EQUIVALENT),
+    ("degree-as-power-o-celsius", "25^oC", KELVIN, OK, Reason.EQUIVALENT),
+    ("degree-as-power-zero", "28.65^0", ANGLE, BAD, Reason.PARSE_ERROR),  # 28.65° or 1? asked
+    ("degree-as-superscript-zero", "28.65⁰", ANGLE, BAD, Reason.PARSE_ERROR),
+    ("degree-as-power-zero-in-sin", "9.8 sin(30^0) N", NumericSpec(D("4.9"), "N"), BAD, Reason.PARSE_ERROR),
     ("latex-dollars", "$4.58\\,\\mathrm{m/s^2}$", ACCEL, OK, Reason.EQUIVALENT),  # copied from a document
     ("latex-parentheses", "\\(4.58 \\text{ m/s}^2\\)", ACCEL, OK, Reason.EQUIVALENT),
     ("prefixed-units", "4580 mm/s^2", ACCEL, OK, Reason.EQUIVALENT),
