@@ -39,7 +39,7 @@ from physics.mathinput.tree import (
     Sum,
     ungroup,
 )
-from physics.mathinput.vocabulary import INVERSES, OPENERS, ROOT_SIGNS
+from physics.mathinput.vocabulary import INVERSES, OPENERS, ROOT_SIGNS, VULGAR_FRACTIONS
 
 _POSTFIX_KINDS: dict[str, PostfixKind] = {"!": "factorial", "%": "percent", "°": "degrees"}
 # A tuple, not a set: membership by identity, without Enum's hash (a Python call) for every token.
@@ -510,11 +510,13 @@ class Parser:
         plainly √(x²)) whose argument ends with a power, the power to raise the function to instead
         when `powers_outside` (`sin θ^2` as (sin θ)²), else None."""
         tok = self._tokens[self._i]
-        if tok.kind is Kind.LPAREN:
+        # `½` is read as the bracket `(1/2)`, but is typed as a number is: `sin ½θ` is sin(½θ), as `sin 2θ`
+        vulgar = tok.kind is Kind.LPAREN and self._source[tok.pos : tok.pos + 1] in VULGAR_FRACTIONS
+        if tok.kind is Kind.LPAREN and not vulgar:
             return Group(self._bracketed()), None
         if tok.kind is Kind.BAR:
             return self._bars(), None
-        if tok.kind in (Kind.NUM, Kind.NAME, Kind.CONST, Kind.FUNC, Kind.SQRT):
+        if vulgar or tok.kind in (Kind.NUM, Kind.NAME, Kind.CONST, Kind.FUNC, Kind.SQRT):
             self._enter(tok)
             start = self._i
             base = self._postfixed()

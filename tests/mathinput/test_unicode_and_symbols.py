@@ -23,6 +23,11 @@ TEXTBOOK = [
     ("¾ x", ("x",), 3 * sym("x") / 4),
     ("⅓ x", ("x",), sym("x") / 3),
     ("x^½", ("x",), sympy.sqrt(sym("x"))),
+    # A vulgar fraction is typed as a number is: a function without brackets takes it with the word
+    # glued to it, as `sin 2θ` (not sin(½)·θ)
+    ("sin ½θ", ("theta",), sympy.sin(sym("theta") / 2)),
+    ("cos½θ x", ("theta", "x"), sympy.cos(sym("theta") / 2) * sym("x")),
+    ("sin ½ θ", ("theta",), sympy.sin(sympy.Rational(1, 2)) * sym("theta")),  # a space ends it, as ever
     ("ħ/2", ("hbar",), sym("hbar") / 2),
     ("sin(30º) x", ("x",), sympy.sin(sympy.pi / 6) * sym("x")),  # º for °: option-0 on a Mac keyboard
     ("sin(30˚) x", ("x",), sympy.sin(sympy.pi / 6) * sym("x")),  # the ring above
