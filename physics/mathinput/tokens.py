@@ -141,6 +141,9 @@ def tokenize(
         elif ch == "|":
             i += 1
             token = Token(Kind.BAR, ch, start, i, space)
+        elif ch == "%" and (constant := _maxima_constant(chars, i)) is not None:  # `2*%pi`, `%e^x`
+            i += 1 + len(constant)
+            token = Token(Kind.CONST, constant, start, i, space)
         elif ch in "!%°":
             i += 1
             token = Token(Kind.POSTFIX, ch, start, i, space)
@@ -184,6 +187,19 @@ def _typed_where(token: Token, typed_position: Callable[[int], int]) -> Token:
         moved.char_positions = tuple(map(typed_position, moved.char_positions))
         moved.unsplittable = tuple((typed_position(a), typed_position(b)) for a, b in moved.unsplittable)
     return moved
+
+
+# Maxima's constants, as STACK students type them: `%pi` is π and `%e` Euler's number, never a percent.
+_MAXIMA_CONSTANTS = ("pi", "e")
+
+
+def _maxima_constant(chars: list[str], i: int) -> str | None:
+    """The constant named after the `%` at i (`%pi`, `%e`), else None."""
+    for name in _MAXIMA_CONSTANTS:
+        end = i + 1 + len(name)
+        if "".join(chars[i + 1 : end]) == name and not (end < len(chars) and chars[end].isalnum()):
+            return name
+    return None
 
 
 def _typed_degree_end(chars: list[str], i: int) -> int | None:

@@ -73,6 +73,11 @@ TEXTBOOK = [
     ("sin(30^o) x", ("x",), sympy.sin(sympy.pi / 6) * sym("x")),
     ("sin(30^{o}) x", ("x",), sympy.sin(sympy.pi / 6) * sym("x")),
     ("sin 30^° x", ("x",), sympy.sin(sympy.pi / 6) * sym("x")),
+    # Maxima's constants, as STACK students type them: never 2 percent times π
+    ("2*%pi*x", ("x",), 2 * sympy.pi * sym("x")),
+    ("2 %pi x", ("x",), 2 * sympy.pi * sym("x")),
+    ("x %e^2", ("x",), sym("x") * sympy.E**2),
+    ("x %", ("x",), sym("x") / 100),  # a percent sign alone is still a percent
     # Product signs that look like the ones read: bullet (option-8 on a Mac), asterisk operator
     ("m•g", ("m", "g"), sym("m") * sym("g")),
     ("m ∗ g", ("m", "g"), sym("m") * sym("g")),

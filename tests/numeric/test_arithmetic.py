@@ -37,6 +37,8 @@ ARITHMETIC = [
     ("5 sec", "5", "s", "5 s"),  # `sec` with no argument is the second, not the secant
     ("sec(0) m", "1", "m", "sec(0) m"),
     ("2 x 3 m", "6", "m", "2*3 m"),
+    ("2*%pi m", "6.28319", "m", "2*pi m"),  # Maxima's π, as STACK students type it
+    ("2 %pi m", "6.28319", "m", "2*pi m"),
     ("3.0 × 10 - 3 s", "27", "s", "3.0*10 - 3 s"),  # spaced round: a subtraction, not ×10^-3
     ("-3/2 N", "-1.5", "N", "-3/2 N"),
     ("50%", "0.5", None, "50%"),
