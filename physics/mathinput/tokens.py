@@ -163,6 +163,18 @@ def tokenize(
             continue
         elif ch == ",":
             raise ParseError(_comma_message(tokens), i)
+        elif ch == "." and tokens and not "".join(chars[i + 1 :]).strip():
+            i += 1  # the full stop of a sentence: `√(2gh).`, as a numeric answer's `4.58 m/s^2.`
+            continue
+        elif (
+            ch == "."
+            and tokens
+            and tokens[-1].kind in (Kind.WORD, Kind.RPAREN)
+            and i + 1 < n
+            and chars[i + 1].isalpha()
+        ):
+            # `m.g`, `sin θ.cos θ`: a dot for a product, as some schools write it
+            raise ParseError("Write a product with * or a space, not '.': m*g or m g.", i)
         elif ch == "$":  # what is left of LaTeX's math delimiters, when they wrap only part of it
             raise ParseError(
                 "Leave out the $ signs: type the expression alone (or all of it between two $).", i

@@ -30,6 +30,9 @@ PARSE_ERRORS = [
     ("()", 0, "Empty brackets"),
     ("x # y", 2, "Unexpected character '#'"),
     ("x; y", 1, "Unexpected character ';'"),
+    ("x.y", 1, "Write a product with * or a space, not '.'"),  # a dot for a product, as some schools write
+    ("sin(x).y", 6, "not '.'"),
+    ("x..", 1, "Unexpected character '.'"),
     ("4,58", 1, "decimal point"),
     ("x, y", 1, "Commas are not used in answers: give one expression"),
     ("(x, y)", 2, "not a pair or a list"),

@@ -73,6 +73,10 @@ TEXTBOOK = [
     ("sin(30^o) x", ("x",), sympy.sin(sympy.pi / 6) * sym("x")),
     ("sin(30^{o}) x", ("x",), sympy.sin(sympy.pi / 6) * sym("x")),
     ("sin 30^° x", ("x",), sympy.sin(sympy.pi / 6) * sym("x")),
+    # The full stop of a sentence, as a numeric answer takes it
+    ("x y.", ("x", "y"), sym("x") * sym("y")),
+    ("sqrt(x) . ", ("x",), sympy.sqrt(sym("x"))),
+    ("x/2.", ("x",), sym("x") / 2),
     # Maxima's constants, as STACK students type them: never 2 percent times π
     ("2*%pi*x", ("x",), 2 * sympy.pi * sym("x")),
     ("2 %pi x", ("x",), 2 * sympy.pi * sym("x")),
