@@ -25,7 +25,7 @@ from functools import lru_cache
 
 from physics.dimensions import Dimension, describe
 from physics.errors import AmbiguousInput, ParseError, TooLarge, UnknownUnit
-from physics.units.catalogue import ALIASES, FIRST_WHERE_NONE_FITS, MEANINGS, TWO_ANGLE_SPELLINGS
+from physics.units.catalogue import ALIASES, FIRST_WHERE_NONE_FITS, MEANINGS, SI_PREFIXES, TWO_ANGLE_SPELLINGS
 from physics.units.lexer import Kind, Token, tokenize
 from physics.units.parsed import ParsedUnits
 from physics.units.registry import UnitAtom, case_variant, lookup, lookup_piece, pint_unit, suggestion
@@ -141,6 +141,29 @@ def _readings(name: str, negative_power: bool) -> _NameReadings:
     return _NameReadings(tuple(unique), safe=len(unique) == 1 and variant is None)
 
 
+def _prefixes_joined(tokens: list[Token]) -> list[Token]:
+    """The tokens with a prefix said as a word apart from its unit joined to it (`kilo newtons`,
+    `kilo-newtons`, `micro seconds`), where the two make one unit's spelling: never `kilo` (kg) times a
+    newton."""
+    joined: list[Token] = []
+    i = 0
+    while i < len(tokens):
+        token = tokens[i]
+        after = tokens[i + 1] if i + 1 < len(tokens) else None
+        gap = 2 if after is not None and after.kind is Kind.TIMES and after.text == "-" else 1
+        unit = tokens[i + gap] if i + gap < len(tokens) else None
+        if token.kind is Kind.NAME and token.text.lower() in SI_PREFIXES and unit and unit.kind is Kind.NAME:
+            spelling = token.text.lower() + unit.text
+            readings = _readings(spelling, False)
+            if len(readings.options) == 1 and readings.safe and not readings.options[0].split:
+                joined.append(Token(Kind.NAME, spelling, token.position))
+                i += gap + 1
+                continue
+        joined.append(token)
+        i += 1
+    return joined
+
+
 # Aliases by their letters in lower case, where only one alias has them: a case slip's reading.
 _ALIASES_BY_FOLDED_CASE = {
     folded: alias
@@ -184,7 +207,7 @@ class _Parser:
     """One reading of a unit string; `choices` picks a reading (by index) for names at given positions."""
 
     def __init__(self, text: str, choices: Mapping[int, int]) -> None:
-        self.tokens = tokenize(text)
+        self.tokens = _prefixes_joined(tokenize(text))
         self.index = 0
         self.choices = choices
         self.open_names: list[tuple[Token, _NameReadings]] = []  # names read more than one way

@@ -151,6 +151,13 @@ ANSWERS = [
     ("80.33 ℉", "K", "300"),
     ("26.85 oC", "K", "300"),  # the degree typed as a letter o
     ("4186 J/(kg deg C)", "J/(kg*K)", "4186"),
+    # A prefix said as a word apart from its unit: never `kilo` (the kilogram) times a newton
+    ("1.5 kilo newtons", "N", "1500"),
+    ("1.5 kilo-newtons", "N", "1500"),
+    ("1.5 kilo N", "N", "1500"),
+    ("3000 micro seconds", "s", "0.003"),
+    ("3 milli-seconds", "s", "0.003"),
+    ("5 kilo", "kg", "5"),  # alone, still the kilogram
 ]
 
 
