@@ -17,6 +17,8 @@ MAX_DIGITS = 40
 MAX_EXPONENT = 400
 
 _DIGITS = "0123456789"
+# Digit-group separators other than the comma: programming's `1_500`, and the Swiss `1'500`.
+_DIGIT_SEPARATORS = "_'’"
 _MINUS_SIGNS = "-−"
 _TIMES_SIGNS = "×xX*·⋅"
 _SUPERSCRIPT_DIGITS = {c: i for i, c in enumerate("⁰¹²³⁴⁵⁶⁷⁸⁹")}
@@ -242,6 +244,8 @@ def read_number(text: str, start: int = 0) -> NumberLiteral:
             "A comma cannot appear in a number: use a decimal point (2.5) and no thousands separators (1500)",
             i,
         )
+    if i + 1 < len(text) and text[i] in _DIGIT_SEPARATORS and text[i + 1] in _DIGITS:
+        raise ParseError(f"Write a number without separators: 1500, not 1{text[i]}500", i)
     if i < len(text) and text[i] == "." and i + 1 < len(text) and text[i + 1] in _DIGITS:
         raise ParseError("A number has at most one decimal point", i)
     exponent: int | None = None

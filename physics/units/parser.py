@@ -141,6 +141,10 @@ def _readings(name: str, negative_power: bool) -> _NameReadings:
     return _NameReadings(tuple(unique), safe=len(unique) == 1 and variant is None)
 
 
+# Prefix symbols that are no unit alone, typed apart from the unit they scale (`1.5k N`, `2 M J`).
+_PREFIX_SYMBOLS_ALONE = frozenset({"k", "M"})
+
+
 def _prefixes_joined(tokens: list[Token]) -> list[Token]:
     """The tokens with a prefix said as a word apart from its unit joined to it (`kilo newtons`,
     `kilo-newtons`, `micro seconds`), where the two make one unit's spelling: never `kilo` (kg) times a
@@ -299,6 +303,14 @@ class _Parser:
                 f"{token.text!r} can mean {angles[0]} or {angles[1]}: for degrees write ° or deg, as in 30°",
                 token.position,
                 angles,
+            )
+        if token.text in _PREFIX_SYMBOLS_ALONE and power == 1 and self.at(Kind.NAME):
+            # `1.5k N`: a thousand, as a price is written; not a kelvin (k) or a metre (M) in capitals
+            raise UnknownUnit(
+                f"Unknown unit {token.text!r}: {token.text!r} is a prefix, not a unit; join it to its unit, "
+                f"as in {token.text}{self.token.text}",
+                token.position,
+                token.text,
             )
         readings = _readings(token.text, power < 0)
         if not readings.options:

@@ -112,6 +112,8 @@ REFUSED = [
     ("4,58", ParseError, 1, "decimal point"),
     ("1,500 m", ParseError, 1, "decimal point"),
     ("12 500", ParseError, 3, "side by side"),
+    ("1_500 N", ParseError, 1, "without separators: 1500, not 1_500"),  # was "the power 500 is too large"
+    ("1'500 N", ParseError, 1, "without separators"),
     ("12 500 m", ParseError, 3, "side by side"),
     ("4.58 m 3", ParseError, 7, ""),
     ("", ParseError, 0, "number"),

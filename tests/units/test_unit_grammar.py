@@ -130,6 +130,17 @@ def test_unknown_unit_suggests_the_spelling_with_the_right_case(typed: str, sugg
     assert f"did you mean {suggested!r}?" in caught.value.message
 
 
+@pytest.mark.parametrize("typed", ["k N", "M J"])
+def test_a_prefix_apart_from_its_unit_is_refused_saying_to_join_them(typed: str) -> None:
+    with pytest.raises(UnknownUnit) as caught:
+        parse_units(typed)
+    joined = typed.replace(" ", "")
+    assert (
+        f"{typed[0]!r} is a prefix, not a unit; join it to its unit, as in {joined}" in caught.value.message
+    )
+    assert caught.value.position == 0
+
+
 def test_glued_name_with_two_splits_is_ambiguous() -> None:
     with pytest.raises(AmbiguousInput) as caught:
         parse_units("Nms")
