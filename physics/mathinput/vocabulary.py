@@ -34,7 +34,7 @@ CHARACTER_VARIANTS: Final = MappingProxyType(
     {
         "ϑ": "θ", "ϕ": "φ", "ϵ": "ε", "ϱ": "ρ", "ς": "σ", "µ": "μ",
         "−": "-", "–": "-", "‐": "-", "‑": "-", "﹣": "-",
-        "×": "*", "·": "*", "⋅": "*", "∙": "*", "•": "*", "∗": "*", "÷": "/", "⁄": "/", "∕": "/",  # fraction and division slashes
+        "×": "*", "·": "*", "⋅": "*", "∙": "*", "•": "*", "∗": "*", "∣": "|", "÷": "/", "⁄": "/", "∕": "/",  # fraction and division slashes
         # Subscript digits, as in v₀, ε₀, r₁: the same names as v0 (an alias of v_0), ε0, r1.
         "₀": "0", "₁": "1", "₂": "2", "₃": "3", "₄": "4", "₅": "5", "₆": "6", "₇": "7", "₈": "8", "₉": "9",
         "ℏ": "ħ",  # the Planck constant sign, as the letter ħ
@@ -78,6 +78,7 @@ FUNCTIONS: Final = MappingProxyType(
         "arccsc": "acsc", "arccot": "acot", "sinh": "sinh", "cosh": "cosh", "tanh": "tanh",
         "asinh": "asinh", "acosh": "acosh", "atanh": "atanh", "arsinh": "asinh", "arcosh": "acosh",
         "artanh": "atanh", "factorial": "factorial", "cosec": "csc", "arccosec": "acsc", "Abs": "abs",
+        "log_10": "log10", "log_e": "log",  # `log_10(x)`, `log_{10}(x)` typed as LaTeX writes the base
     }
 )  # fmt: skip
 

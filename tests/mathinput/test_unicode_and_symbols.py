@@ -47,6 +47,10 @@ TEXTBOOK = [
     ("sec(x)", ("x",), sympy.sec(sym("x"))),
     ("cot(x)", ("x",), sympy.cot(sym("x"))),
     ("Abs(x)", ("x",), sympy.Abs(sym("x"))),
+    ("∣x − y∣", ("x", "y"), sympy.Abs(sym("x") - sym("y"))),  # the divides sign, as some editors set a bar
+    ("log_10(x)", ("x",), sympy.log(sym("x"), 10)),  # the base typed as LaTeX writes it
+    ("log_{10}(x)", ("x",), sympy.log(sym("x"), 10)),
+    ("log_e(x)", ("x",), sympy.log(sym("x"))),
     ("arccosec(x)", ("x",), sympy.acsc(sym("x"))),
     # An equation copied from Word: mathematical italic letters (ℎ is Word's italic h), and the invisible
     # function application after sin
