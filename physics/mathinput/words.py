@@ -30,6 +30,7 @@ def _keeps_whole(reading: tuple[Part, ...], tok: SpelledWord) -> bool:
 def resolve_words(tokens: list[Token], table: NameTable) -> list[Token]:
     """Replace every WORD token; raise on the first word that is unknown or reads two ways."""
     out: list[Token] = []
+    tokens = _latex_letters_joined(tokens, table)
     for index, tok in enumerate(tokens):
         if tok.kind is not Kind.WORD:
             out.append(tok)
@@ -101,6 +102,43 @@ def resolve_words(tokens: list[Token], table: NameTable) -> list[Token]:
             allowed,
         )
     return out
+
+
+def _latex_letters_joined(tokens: list[Token], table: NameTable) -> list[Token]:
+    """`\\Delta x` as the word Δx it shows (the space ending a command is no gap), where `Delta` alone is
+    no name and the two together read one way only (`Delta_x` declared); other tokens as they are."""
+    joined: list[Token] = []
+    k = 0
+    while k < len(tokens):
+        tok = tokens[k]
+        nxt = tokens[k + 1] if k + 1 < len(tokens) else None
+        if (
+            isinstance(tok, SpelledWord)
+            and nxt is not None
+            and nxt.kind is Kind.WORD
+            and not nxt.space_before
+            and not table.resolve(tok.text).readings
+        ):
+            word = SpelledWord(
+                Kind.WORD,
+                tok.text + nxt.text,
+                tok.pos,
+                nxt.end,
+                tok.space_before,
+                char_positions=(
+                    *tok.char_positions[:-1],
+                    *(nxt.position_in_text(at) for at in range(len(nxt.text) + 1)),
+                ),
+                unsplittable=tok.unsplittable,
+            )
+            readings = [r for r in table.resolve(word.text).readings if _keeps_whole(r, word)]
+            if len(readings) == 1:
+                joined.append(word)
+                k += 2
+                continue
+        joined.append(tok)
+        k += 1
+    return joined
 
 
 # A word that reads no way as it stands, but does with a number after a function split out: `sin2θ`.

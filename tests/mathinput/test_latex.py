@@ -335,3 +335,21 @@ def test_random_latex_raises_only_answer_errors_and_reads_back_consistently(seed
     rng = random.Random(seed)
     for _ in range(250):
         check_one("".join(rng.choice(LATEX_TOKENS) for _ in range(rng.randint(1, 12))))
+
+
+@pytest.mark.parametrize(
+    ("latex", "meant"),
+    [
+        (r"\Delta x/\Delta t", "Delta_x/Delta_t"),  # MathQuill's Δx: the space ending \Delta is no gap
+        (r"\frac{\Delta x}{\Delta t}", "Delta_x/Delta_t"),
+        (r"\Delta x \Delta t", "Delta_x*Delta_t"),
+    ],
+)
+def test_a_latex_letter_and_the_word_after_it_are_the_name_they_show(latex: str, meant: str) -> None:
+    assert read(latex, "Delta_x", "Delta_t").read_as.text == meant
+
+
+def test_a_latex_letter_that_is_a_name_stays_apart_from_the_word_after_it() -> None:
+    assert read(r"\Delta x", "Delta", "x", "Delta_x").read_as.text == "Delta*x"
+    with pytest.raises(UnknownSymbol):
+        read(r"\Delta\, x", "Delta_x")  # a space typed with \, is a gap
