@@ -1,5 +1,6 @@
-"""Multiple choice: the answer names one of a few stated choices, by its letter (`B`, `b)`, `(b)`) or
-by its whole text; exactly one choice is right, and a wrong one may carry its own feedback."""
+"""Multiple choice: the answer names one of a few stated choices, by its letter (`B`, `b)`, `(b)`,
+`option b`) or by its whole text (or both, as a list prints them: `b) Down the slope`); exactly one
+choice is right, and a wrong one may carry its own feedback."""
 
 from __future__ import annotations
 
@@ -7,12 +8,17 @@ import re
 from dataclasses import dataclass
 from string import ascii_uppercase
 
+from physics.characters import fullwidth_as_ascii, without_zero_width
 from physics.errors import ParseError, SpecError
 from physics.mathinput import InputLimits
 from physics.verdict import InputProblem, Judgement, Preview, ReadAs, Reason, Verdict
 
 MAX_CHOICES = len(ascii_uppercase)
 _LETTER = re.compile(r"^\(?\s*([A-Za-z])\s*[.)]?$")
+# A letter as a sentence says it: `option b`, `Choice B`, `answer b`
+_SAID_LETTER = re.compile(r"^(?:option|choice|answer)\s+\(?\s*([A-Za-z])\s*[.)]?$", re.IGNORECASE)
+# A letter with its choice's text, as a list prints it: `a) Up the slope`, `B - Down the slope`
+_LETTER_AND_TEXT = re.compile(r"^\(?\s*([A-Za-z])\s*(?:[.):]|\s[-–—]|-)\s*(.+)$")
 CORRECT_FEEDBACK = "Correct."
 WRONG_FEEDBACK = "That is not the right choice."
 
@@ -23,7 +29,8 @@ def label(index: int) -> str:
 
 
 def _plain(text: str) -> str:
-    return " ".join(text.split()).casefold()
+    """The text as compared: spacing, letter case and a closing full stop aside."""
+    return " ".join(text.split()).casefold().removesuffix(".").rstrip()
 
 
 @dataclass(frozen=True)
@@ -47,17 +54,41 @@ class ChoiceQuestion:
 
     def pick(self, answer: str) -> int:
         """The index of the choice `answer` names; ParseError when it names none."""
-        text = answer.strip()
+        visible = without_zero_width(answer)
+        text = fullwidth_as_ascii(answer if visible is None else visible.text).strip()
         letter = _LETTER.match(text)
         if letter is not None:
             index = ascii_uppercase.find(letter.group(1).upper())
             if index < len(self.choices):
                 return index
+        by_text = self._by_text(text)
+        if by_text is not None:
+            return by_text
+        said = _SAID_LETTER.match(text)
+        if said is not None:
+            index = ascii_uppercase.find(said.group(1).upper())
+            if index < len(self.choices):
+                return index
+        last = label(len(self.choices) - 1)
+        with_text = _LETTER_AND_TEXT.match(text)
+        if with_text is not None:
+            index = ascii_uppercase.find(with_text.group(1).upper())
+            named = self._by_text(with_text.group(2))
+            if named is not None and named == index:
+                return index
+            if named is not None:  # `a) Down the slope`: which one?
+                raise ParseError(
+                    f'{label(index)} is not the choice "{self.choices[named].text}" ({label(named)}): '
+                    f"answer with the letter of one choice, A to {last}.",
+                    0,
+                )
+        raise ParseError(f"Answer with the letter of one choice, A to {last}.", 0)
+
+    def _by_text(self, text: str) -> int | None:
         for index, choice in enumerate(self.choices):
             if _plain(choice.text) == _plain(text):
                 return index
-        last = label(len(self.choices) - 1)
-        raise ParseError(f"Answer with the letter of one choice, A to {last}.", 0)
+        return None
 
     def grade(self, answer: str, limits: InputLimits | None = None) -> Verdict:
         try:

@@ -8,7 +8,7 @@ import typing
 
 import pytest
 
-from physics.choice import ChoiceQuestion
+from physics.choice import Choice, ChoiceQuestion
 from physics.verdict import Outcome, Reason
 from problems.compiled import compile_problem
 from problems.errors import ProblemInvalid
@@ -67,6 +67,37 @@ def test_a_choice_part_compiles_to_a_question_graded_by_letter_or_text() -> None
             Reason.PARSE_ERROR,
         )
         assert "A to C" in verdicts[unreadable].feedback
+
+
+SLOPE_CHOICES = ChoiceQuestion(
+    (Choice("Up the slope"), Choice("Down the slope"), Choice("Perpendicular to the slope")), correct=0
+)
+CHOICES_AS_STUDENTS_NAME_THEM = [
+    # (answer, the letter it names, or None: refused)
+    ("option a", "A"),
+    ("Choice B", "B"),
+    ("Up the slope.", "A"),  # the text, with a full stop
+    ("a) Up the slope", "A"),  # the letter with its text, as the list prints it
+    ("B - Down the slope", "B"),
+    ("c: perpendicular to the slope", "C"),
+    ("ｂ", "B"),  # fullwidth, from an East Asian input method
+    ("A\u200b", "A"),  # a zero-width space copied with it
+    ("b) Up the slope", None),  # the letter of one and the text of another: which?
+    ("a) up", None),
+    ("option d", None),
+]
+
+
+@pytest.mark.parametrize(
+    ("answer", "named"), CHOICES_AS_STUDENTS_NAME_THEM, ids=[c[0] for c in CHOICES_AS_STUDENTS_NAME_THEM]
+)
+def test_a_choice_is_named_as_students_name_it(answer: str, named: str | None) -> None:
+    verdict = SLOPE_CHOICES.grade(answer)
+    if named is None:
+        assert (verdict.outcome, verdict.reason) == (Outcome.INVALID, Reason.PARSE_ERROR)
+        assert "A to C" in verdict.feedback
+        return
+    assert verdict.read_as is not None and verdict.read_as.text == named
 
 
 def test_a_choice_preview_names_the_choice_without_grading_it() -> None:
