@@ -183,12 +183,11 @@ def tokenize(
             raise ParseError(f"Give the expression alone, without '{ch}' (nor the name before it).", i)
         else:
             raise ParseError(f"Unexpected character {text[i]!r}.", i)
-        if token.kind in (Kind.NUM, Kind.SUP) and token.value == 0:
-            _refuse_power_zero_for_degrees(tokens, token)
         tokens.append(token)
         space = False
     latex.finish()
     tokens.append(Token(Kind.END, "", n, n, space))
+    _refuse_powers_zero_for_degrees(tokens)
     return derivatives_read(tokens) if velocities else tokens
 
 
@@ -228,22 +227,29 @@ def _typed_degree_end(chars: list[str], i: int) -> int | None:
     return None if j < n and (chars[j].isalnum() or chars[j] == "_") else j
 
 
-def _refuse_power_zero_for_degrees(before: list[Token], zero: Token) -> None:
-    """`30^0`, `30⁰`: a degree sign typed as a zero, or the number 1? Refused, with both: no one writes 1
-    so. (10^0 is a power of ten, as in 4.58×10^0.)"""
-    if zero.kind is Kind.SUP:
-        base = before[-1] if before else None
-    else:
-        base = (
-            before[-2] if len(before) >= 2 and before[-1].kind is Kind.OP and before[-1].text == "^" else None
+def _refuse_powers_zero_for_degrees(tokens: list[Token]) -> None:
+    """`30^0`, `30^{0}`, `30⁰`: a degree sign typed as a zero, or the number 1? Refused, with both: no one
+    writes 1 so. (10^0 is a power of ten, as in 4.58×10^0.)"""
+    for k, zero in enumerate(tokens):
+        if zero.kind not in (Kind.NUM, Kind.SUP) or zero.value != 0:
+            continue
+        at = k
+        if zero.kind is Kind.NUM:  # after `^`, or after `^(` with its bracket closed right after the 0
+            bracketed = (
+                tokens[k - 1].kind is Kind.LPAREN and tokens[k + 1].kind is Kind.RPAREN if k else False
+            )
+            caret = k - 2 if bracketed else k - 1
+            if caret < 1 or tokens[caret].kind is not Kind.OP or tokens[caret].text != "^":
+                continue
+            at = caret
+        base = tokens[at - 1] if at else None
+        if base is None or base.kind is not Kind.NUM or base.text == "10":
+            continue
+        raise LikelySlip(
+            f"Did you mean {base.text}° or {base.text} to the power 0 (which is 1)? For degrees write "
+            f"{base.text}° or {base.text} deg.",
+            tokens[at].pos,
         )
-    if base is None or base.kind is not Kind.NUM or base.text == "10":
-        return
-    raise LikelySlip(
-        f"Did you mean {base.text}° or {base.text} to the power 0 (which is 1)? For degrees write "
-        f"{base.text}° or {base.text} deg.",
-        zero.pos if zero.kind is Kind.SUP else before[-1].pos,
-    )
 
 
 # Two-argument functions students know from programming or calculators, and how the answer writes them.

@@ -157,7 +157,10 @@ def test_a_word_after_a_zero_width_character_is_placed_where_it_was_typed() -> N
     assert caught.value.position == 3
 
 
-@pytest.mark.parametrize(("typed", "position"), [("sin(30^0) x", 6), ("sin(30⁰) x", 6), ("2^0 x", 1)])
+@pytest.mark.parametrize(
+    ("typed", "position"),
+    [("sin(30^0) x", 6), ("sin(30⁰) x", 6), ("2^0 x", 1), ("x 30^{0}", 4), ("x 30^(0)", 4)],
+)
 def test_a_degree_typed_as_a_power_zero_is_refused_asking_which(typed: str, position: int) -> None:
     with pytest.raises(ParseError) as caught:
         parse_math(typed, names("x"))
@@ -168,3 +171,4 @@ def test_a_degree_typed_as_a_power_zero_is_refused_asking_which(typed: str, posi
 def test_a_power_zero_of_ten_or_of_a_symbol_is_read() -> None:
     assert same(parse_math("x 10^0", names("x")).expr, sym("x"))
     assert same(parse_math("x^0 y", names("x", "y")).expr, sym("y"))
+    assert same(parse_math("x 2^(0+1)", names("x")).expr, 2 * sym("x"))
