@@ -152,6 +152,8 @@ def tokenize(
             token = Token(Kind.SQRT, ch, start, i, space)
         elif ch in SUPERSCRIPT_DIGITS or ch in SUPERSCRIPT_SIGNS:
             token, i = _read_superscript(chars, i, space)
+            if tokens and tokens[-1].kind is Kind.OP and tokens[-1].text == "^" and not space:
+                tokens.pop()  # `x^²`: the caret, then the superscript from a palette, is the one power
         elif ch in VULGAR_FRACTIONS:
             if tokens and tokens[-1].kind is Kind.NUM and not space:
                 raise ParseError(

@@ -280,6 +280,12 @@ def _tokenize(text: str) -> list[Token]:
             value = 0
             for digit in text[digits_start:i]:
                 value = value * 10 + _SUPERSCRIPT_DIGITS[digit]
+            if (
+                tokens
+                and tokens[-1].kind is Kind.POWER
+                and tokens[-1].position + len(tokens[-1].text) == start
+            ):
+                tokens.pop()  # `s^²`: the caret, then the superscript from a palette, is the one power
             tokens.append(Token(Kind.SUPERSCRIPT, text[start:i], start, sign * value))
         elif char == "*" and text.startswith("**", i):
             i += 2

@@ -23,6 +23,8 @@ TEXTBOOK = [
     ("¾ x", ("x",), 3 * sym("x") / 4),
     ("⅓ x", ("x",), sym("x") / 3),
     ("x^½", ("x",), sympy.sqrt(sym("x"))),
+    ("x^²", ("x",), sym("x") ** 2),  # the caret, then a superscript from a palette: one power
+    ("x**⁻² y", ("x", "y"), sym("y") / sym("x") ** 2),
     # A vulgar fraction is typed as a number is: a function without brackets takes it with the word
     # glued to it, as `sin 2θ` (not sin(½)·θ)
     ("sin ½θ", ("theta",), sympy.sin(sym("theta") / 2)),

@@ -72,6 +72,8 @@ VERDICTS = [
     ("degree-as-power-zero", "28.65^0", ANGLE, BAD, Reason.PARSE_ERROR),  # 28.65° or 1? asked
     ("degree-as-superscript-zero", "28.65⁰", ANGLE, BAD, Reason.PARSE_ERROR),
     ("degree-as-power-zero-in-sin", "9.8 sin(30^0) N", NumericSpec(D("4.9"), "N"), BAD, Reason.PARSE_ERROR),
+    ("caret-then-superscript", "4.58 m/s^²", ACCEL, OK, Reason.EQUIVALENT),
+    ("caret-then-superscript-minus", "4.58 m·s^⁻²", ACCEL, OK, Reason.EQUIVALENT),
     ("latex-dollars", "$4.58\\,\\mathrm{m/s^2}$", ACCEL, OK, Reason.EQUIVALENT),  # copied from a document
     ("latex-parentheses", "\\(4.58 \\text{ m/s}^2\\)", ACCEL, OK, Reason.EQUIVALENT),
     ("prefixed-units", "4580 mm/s^2", ACCEL, OK, Reason.EQUIVALENT),
