@@ -177,6 +177,12 @@ def tokenize(
         ):
             # `m.g`, `sin θ.cos θ`: a dot for a product, as some schools write it
             raise ParseError("Write a product with * or a space, not '.': m*g or m g.", i)
+        elif ch in PRIMES and not velocities and tokens and tokens[-1].kind is Kind.WORD:
+            raise ParseError(
+                f"A prime ({tokens[-1].text}{ch}) is not read here: an answer is in the problem's symbols, "
+                "as they are listed (a derivative or a velocity only where the part asks for one).",
+                i,
+            )
         elif ch == "$":  # what is left of LaTeX's math delimiters, when they wrap only part of it
             raise ParseError(
                 "Leave out the $ signs: type the expression alone (or all of it between two $).", i

@@ -30,7 +30,9 @@ PARSE_ERRORS = [
     ("()", 0, "Empty brackets"),
     ("x # y", 2, "Unexpected character '#'"),
     ("x; y", 1, "Unexpected character ';'"),
-    ("x.y", 1, "Write a product with * or a space, not '.'"),  # a dot for a product, as some schools write
+    ("x.y", 1, "Write a product with * or a space, not '.'"),
+    ("x' + y", 1, "A prime (x') is not read here"),  # a velocity only in a Lagrangian or energy part
+    ("2 y′", 3, "A prime (y′) is not read here"),  # a dot for a product, as some schools write
     ("sin(x).y", 6, "not '.'"),
     ("x..", 1, "Unexpected character '.'"),
     ("4,58", 1, "decimal point"),
