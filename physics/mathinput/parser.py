@@ -65,8 +65,9 @@ _MAX_DIVISOR_READINGS = 4
 
 class Parser:
     """`choices` settles ambiguous groupings by the position of their operator: 0 reads `a/b c` as
-    (a/b)·c and `e^-ωt` as e^(−ω)·t, 1 as a/(b·c) and e^(−ωt). One without a choice is refused
-    (AmbiguousGrouping).
+    (a/b)·c and `e^-ωt` as e^(−ω)·t, 1 as a/(b·c) and e^(−ωt); a division followed by more factors has
+    a choice for each other place its divisor may end (2: `a/b c d` as a/(b·c)·d). One without a choice
+    is refused (AmbiguousGrouping, with a reading for each choice).
 
     A function without brackets takes the next factor with its power (`sin θ^2` is sin(θ²)), or the
     whole word typed without a space (`cos ωt` is cos(ωt), as physics writes it); each such

@@ -99,7 +99,8 @@ def parse_math(
     """Read `text` using only the declared `names` (spelling -> Symbol to use).
 
     `choices` reads each ambiguous grouping (by the position of its `/` or `^`) one way: 0 as (a/b)·c
-    or e^(−ω)·t, 1 as a/(b·c) or e^(−ωt); without a choice it is refused (AmbiguousGrouping). A bare function argument with a
+    or e^(−ω)·t, 1 as a/(b·c) or e^(−ωt), 2 and up as a/(b·c)·d (the divisor ending earlier); without a
+    choice it is refused (AmbiguousGrouping). A bare function argument with a
     power (`sin θ^2`) reads as sin(θ²) and `read_as.note` says so; `powers_outside` reads it as
     (sin θ)², the other reading, for comparison. `velocities`: `x'`, `ẋ`, `\\dot{x}` and `dx/dt` are read
     as the name `x_dot` (a coordinate's velocity, which `names` then declares).
