@@ -22,6 +22,7 @@ import numpy as np
 import sympy
 
 from physics import typeset
+from physics.characters import without_math_delimiters
 from physics.dimensions import Dimension, describe
 from physics.errors import AnswerError, ParseError
 from physics.mathinput import InputLimits, parse_math
@@ -63,6 +64,7 @@ def read_equation(
     limits = limits or InputLimits()
     if len(text) > limits.max_length:
         parse_math(text, names, limits=limits)  # raises the reader's own TooLarge
+    text = without_math_delimiters(text)  # `$ma = mg\sin\theta$`, before the sides are split apart
     sign = text.find("=")
     if sign < 0:
         raise ParseError(

@@ -108,6 +108,13 @@ INCLINE = {
             id="equation-force-missing",
         ),
         pytest.param(
+            {"kind": "equation", "answer": r"$m g \sin\theta - \mu N = m a$", **INCLINE},
+            "correct",
+            "equivalent",
+            "Correct",
+            id="equation-in-latex-math-delimiters",
+        ),
+        pytest.param(
             {"kind": "equation", "answer": "m a", **INCLINE},
             "invalid",
             "parse_error",
