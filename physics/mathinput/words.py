@@ -12,7 +12,7 @@ from fractions import Fraction
 from physics.errors import AmbiguousInput, TooLarge, UnknownFunction, UnknownSymbol
 from physics.mathinput.names import NameTable, Part
 from physics.mathinput.tokentypes import Kind, SpelledWord, Token
-from physics.mathinput.vocabulary import DEGREE_WORD, LISTED_FUNCTIONS, MAX_WORD_LENGTH, TIMES_WORD
+from physics.mathinput.vocabulary import DEGREE_WORD, FUNCTIONS, LISTED_FUNCTIONS, MAX_WORD_LENGTH, TIMES_WORD
 
 _ENDS_OPERAND = frozenset({Kind.NUM, Kind.NAME, Kind.CONST, Kind.RPAREN, Kind.POSTFIX, Kind.SUP})
 _PART_KINDS = {"name": Kind.NAME, "const": Kind.CONST, "func": Kind.FUNC}
@@ -84,8 +84,14 @@ def resolve_words(tokens: list[Token], table: NameTable) -> list[Token]:
                 texts,
             )
         if nxt.kind is Kind.LPAREN:
+            lowered = word.lower()  # `Sin(θ)`, `SQRT(x)`: a phone's capital, or caps lock
+            meant = (
+                f" Did you mean {lowered}? Function names are in small letters."
+                if lowered in FUNCTIONS
+                else ""
+            )
             raise UnknownFunction(
-                f'Unknown function "{word}". Functions you can use: {", ".join(LISTED_FUNCTIONS)}.',
+                f'Unknown function "{word}".{meant} Functions you can use: {", ".join(LISTED_FUNCTIONS)}.',
                 tok.pos,
                 word,
                 LISTED_FUNCTIONS,

@@ -190,6 +190,13 @@ def test_undeclared_name_before_a_bracket_is_an_unknown_function(typed, function
     assert "sqrt" in caught.value.message
 
 
+@pytest.mark.parametrize(("typed", "meant"), [("Sin(x)", "sin"), ("SQRT(x)", "sqrt"), ("Ln(x)", "ln")])
+def test_a_function_in_capitals_is_refused_naming_it_in_small_letters(typed: str, meant: str) -> None:
+    with pytest.raises(UnknownFunction) as caught:
+        read(typed, "x")
+    assert f"Did you mean {meant}? Function names are in small letters." in caught.value.message
+
+
 def test_declared_name_before_a_bracket_is_multiplication():
     assert same(read("m(g+M)", "m", "g", "M").expr, sym("m") * (sym("g") + sym("M")))
 
