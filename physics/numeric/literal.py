@@ -175,10 +175,19 @@ def _power_of_ten(text: str, i: int) -> tuple[int, int] | None:
     return _superscript_exponent(text, i)
 
 
-def _scientific(text: str, i: int) -> tuple[int, int] | None:
-    """A power of ten after the mantissa ending at i: (exponent, end), or None if none is written."""
+def _scientific(text: str, i: int, start: int) -> tuple[int, int] | None:
+    """A power of ten after the mantissa from `start` to i: (exponent, end), or None if none is written."""
     if i < len(text) and text[i] in "eE":
-        return _signed_exponent(text, i + 1)
+        found = _signed_exponent(text, i + 1)
+        if found is None and (i + 1 == len(text) or text[i + 1].isspace()):
+            # `2.5e m`: a power of ten with its digits left out, or 2.5 times e? (`2.5eV` is a unit)
+            mantissa = text[start:i]
+            raise LikelySlip(
+                f"Did you mean a power of ten, as in {mantissa}{text[i]}3, or {mantissa} times Euler's number e "
+                f"(write {mantissa}*e)?",
+                i,
+            )
+        return found
     j = skip_spaces(text, i)
     times_end = _times_sign_end(text, j)
     if times_end is not None:
@@ -254,7 +263,7 @@ def read_number(text: str, start: int = 0) -> NumberLiteral:
         bare = _power_of_ten(text, i)
         if bare is not None:
             return _finish(text, "1", "", False, bare[0], bare[1], negative, position)
-    found = _scientific(text, i)
+    found = _scientific(text, i, position)
     if found is not None:
         exponent, i = found
     return _finish(text, integer_digits, fraction_digits, has_point, exponent, i, negative, position)

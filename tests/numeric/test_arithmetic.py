@@ -39,6 +39,8 @@ ARITHMETIC = [
     ("2 x 3 m", "6", "m", "2*3 m"),
     ("2*%pi m", "6.28319", "m", "2*pi m"),  # Maxima's π, as STACK students type it
     ("2 %pi m", "6.28319", "m", "2*pi m"),
+    ("2.5*e m", "6.79570", "m", "2.5*e m"),  # Euler's number, written with its *
+    ("2.5e3 m", "2500", "m", None),
     ("3.0 × 10 - 3 s", "27", "s", "3.0*10 - 3 s"),  # spaced round: a subtraction, not ×10^-3
     ("-3/2 N", "-1.5", "N", "-3/2 N"),
     ("50%", "0.5", None, "50%"),

@@ -112,7 +112,11 @@ REFUSED = [
     ("4,58", ParseError, 1, "decimal point"),
     ("1,500 m", ParseError, 1, "decimal point"),
     ("12 500", ParseError, 3, "side by side"),
-    ("1_500 N", ParseError, 1, "without separators: 1500, not 1_500"),  # was "the power 500 is too large"
+    ("1_500 N", ParseError, 1, "without separators: 1500, not 1_500"),
+    # A power of ten with its digits left out: not 2.5 times Euler's number, which it read as
+    ("2.5e m", ParseError, 3, "Did you mean a power of ten, as in 2.5e3, or 2.5 times Euler's number e"),
+    ("-2.5E N", ParseError, 4, "as in -2.5E3"),
+    ("2.5e", ParseError, 3, "power of ten"),  # was "the power 500 is too large"
     ("1'500 N", ParseError, 1, "without separators"),
     ("12 500 m", ParseError, 3, "side by side"),
     ("4.58 m 3", ParseError, 7, ""),
