@@ -7,6 +7,7 @@ and braces go to `latex.LatexReader`, which makes of pasted LaTeX the tokens of 
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable
 from dataclasses import replace
 from fractions import Fraction
@@ -195,7 +196,8 @@ def tokenize(
         space = False
     latex.finish()
     tokens.append(Token(Kind.END, "", n, n, space))
-    _refuse_powers_zero_for_degrees(tokens)
+    if _MAYBE_POWER_ZERO.search(text):  # the walk over the tokens only where a 0 can be a power
+        _refuse_powers_zero_for_degrees(tokens)
     return derivatives_read(tokens) if velocities else tokens
 
 
@@ -233,6 +235,9 @@ def _typed_degree_end(chars: list[str], i: int) -> int | None:
     if braced:
         return j + 1 if j < n and chars[j] == "}" else None
     return None if j < n and (chars[j].isalnum() or chars[j] == "_") else j
+
+
+_MAYBE_POWER_ZERO = re.compile(r"\^[\s({]*[0.]|⁰")
 
 
 def _refuse_powers_zero_for_degrees(tokens: list[Token]) -> None:
