@@ -34,6 +34,19 @@ quantities:
   omega: {angular_frequency: theta}
   tension: {force: bob}
 """
+# a bead on a rod turned at w about the origin, in a horizontal plane (seen from above, no gravity): the
+# rod's gap turns with the time, so the count of freedoms takes it at an instant (not with t symbolic)
+SPUN_ROD = """
+coordinates: [r]
+bodies:
+  bead: {mass: m, position: {x: "r*cos(w*t)", y: "r*sin(w*t)"}}
+constraints:
+  rod: {kind: other, gap: "y_bead*cos(w*t) - x_bead*sin(w*t)"}
+state: {r: L, r_dot: a*w, t: 0}
+quantities:
+  outward: {acceleration: r}
+  push: {force: rod}
+"""
 # the same truck written low-level: the bob's position and the string's gap both move with the pivot
 TRUCK_BY_HAND = """
 coordinates: [theta]
@@ -189,6 +202,11 @@ def _same(first: sympy.Expr, second: sympy.Expr) -> bool:
                 "hold": {"lagrange", "newton", "dalembert", "frames"},
             },
         ),
+        (  # the centrifugal push outward, and the rod's Coriolis push 2 m w r'
+            SPUN_ROD,
+            {"outward": w**2 * L, "push": 2 * m * a * w**2},
+            {"outward": {"lagrange", "newton"}, "push": {"lagrange", "newton"}},
+        ),
     ],
     ids=[
         "truck equilibrium",
@@ -198,6 +216,7 @@ def _same(first: sympy.Expr, second: sympy.Expr) -> bool:
         "truck a body",
         "accelerometer",
         "incline pushed",
+        "rod spun",
     ],
 )
 def test_a_support_moving_as_prescribed_is_derived_by_several_methods_and_simulated(
