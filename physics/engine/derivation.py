@@ -10,6 +10,7 @@ import sympy
 
 from physics.answer_text import typed_text
 from physics.engine import bounces, evaluated_at, released, scenarios, tidy
+from physics.engine.along_the_way import check_along_the_way
 from physics.engine.checks import physical_checks
 from physics.engine.conservation import ConservationMethod
 from physics.engine.contacts import check_contact_signs
@@ -165,6 +166,7 @@ def _derive_model(model: Model) -> Derivation:
     lagrange = methods[0]
     assert isinstance(lagrange, LagrangeMethod)  # the first of _methods()
     contact_signs = check_contact_signs(model, lagrange, quantities)
+    contact_signs |= check_along_the_way(model, lagrange, quantities)
     contact_signs |= released.check_released(model, lagrange)
     # one compiled motion for every measure, from the equations Lagrange's method has formed
     simulator = Simulator(model, lagrange.equilibrium, quantities, lagrange)
