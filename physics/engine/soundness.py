@@ -15,6 +15,7 @@ from physics.answer_text import typed_text
 from physics.dimensions import Dimension
 from physics.engine.dimensional import LENGTH, TIME
 from physics.engine.model import MAGNITUDE_KINDS, Model, Quantity, QuantityKind
+from physics.engine.proof import domain_points
 from physics.engine.signs import Sign, point_text, sign_on_domain, where_negative
 from physics.errors import DerivationError
 from physics.symbolic.dimensional import DimensionMismatch, UnknownDimension, expression_dimension
@@ -46,6 +47,34 @@ def check_gravity(model: Model) -> None:
         "with y up",
         path=("gravity",),
     )
+
+
+def check_state_in_range(model: Model) -> None:
+    """Where the state puts a coordinate lies inside the range the model declares for it: the range says
+    which side of an anchor a body is on (a spring's length is |d|, and -d on the negative side), so a
+    state on the other side is derived as a body on the declared side, somewhere else. Cart 2 placed at
+    d = L0 ahead of cart 1 with d declared negative gives a spring squeezed by 2 L0, and an acceleration
+    for a state nobody posed."""
+    state = dict(model.state)
+    for name, low, high in model.coordinate_ranges:
+        value = state.get(model.coordinate(name).symbol)
+        if value is None or value.free_symbols - set(model.parameters):
+            continue
+        for point in domain_points(model, 12, seed=7):
+            try:
+                at, lowest, highest = (float(sympy.N(e.subs(point))) for e in (value, low, high))
+            except (TypeError, ValueError):
+                break
+            slack = 1e-9 * max(1.0, abs(at))
+            if lowest - slack <= at <= highest + slack:  # its ends included: a body resting at a stop
+                continue
+            raise DerivationError(
+                f"the state puts {name} at {typed_text(value)}, outside its declared range "
+                f"[{typed_text(low)}, {typed_text(high)}] at {point_text(point)} ({name} = {at:.4g}): the "
+                "range says which side the body is on (of a spring's anchor, of a surface), so the model "
+                "would be derived for a body on the other side. Check the range's side, or the state",
+                path=("state", name),
+            )
 
 
 def check_magnitudes(model: Model, quantities: Mapping[str, sympy.Expr]) -> None:

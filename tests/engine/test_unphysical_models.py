@@ -195,6 +195,43 @@ def test_a_rest_position_outside_the_coordinates_declared_range_is_refused(
     assert "the body rests on the other side there" in error.message
 
 
+BUMPER = """
+# cart 2 ahead of cart 1 by d, a spring bumper of natural length L0 between them
+coordinates: [x1, d]
+bodies:
+  cart1: {mass: m1, position: {x: x1}}
+  cart2: {mass: m2, position: {x: "x1 + d"}}
+elements:
+  bumper: {kind: spring, between: [cart1, cart2], stiffness: k, length: L0}
+state: {x1: 0, d: STATE}
+domain:
+  ranges: {d: RANGE}
+quantities:
+  closing: {acceleration: d}
+"""
+_m1, _m2 = (sympy.Symbol(n, positive=True) for n in ("m1", "m2"))
+# (the state's separation, the declared side, the acceleration or None where it is refused)
+BUMPER_STATES = [
+    pytest.param("L0/2", '["0", "oo"]', _k * _L0 * (_m1 + _m2) / (2 * _m1 * _m2), id="squeezed"),
+    pytest.param("0", '["0", "oo"]', _k * _L0 * (_m1 + _m2) / (_m1 * _m2), id="at-the-end-of-its-range"),
+    # d declared negative, so the spring's length is -d: at d = L0 it would be squeezed by 2 L0
+    pytest.param("L0/2", '["-oo", "0"]', None, id="state-on-the-side-the-range-excludes"),
+]
+
+
+@pytest.mark.parametrize(("state", "side", "acceleration"), BUMPER_STATES)
+def test_a_state_outside_the_coordinates_declared_range_is_refused(
+    state: str, side: str, acceleration: sympy.Expr | None
+) -> None:
+    text = BUMPER.replace("STATE", state).replace("RANGE", side)
+    if acceleration is not None:
+        assert sympy.simplify(_derive(text, "m1 m2 k L0")["closing"] - acceleration) == 0
+        return
+    error = _refusal(text, "m1 m2 k L0")
+    assert "the state puts d at L0/2, outside its declared range [-oo, 0]" in error.message
+    assert error.path == ("state", "d")
+
+
 CREST = """
 # a car cresting a circular hill of radius R at speed v, faster than the hill can hold it
 coordinates: [theta]
