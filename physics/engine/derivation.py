@@ -26,6 +26,7 @@ from physics.engine.proof import clear_domain_points, domain_points, prove_equal
 from physics.engine.results import Derivation, KnownMistake, LimitCase, MethodReport, SimulationCheck
 from physics.engine.settle import settle
 from physics.engine.simulation import Simulator
+from physics.engine.sizes import check_friction_reactions, check_sizes
 from physics.engine.soundness import check_gravity, check_magnitudes, check_state_in_range
 from physics.errors import DerivationError, PhyscheckError
 from physics.wording import counted
@@ -86,6 +87,8 @@ def _derive_model(model: Model) -> Derivation:
     check_consistency(model, mech)
     check_gravity(model)
     check_state_in_range(model)
+    check_sizes(model)
+    check_friction_reactions(model)
     methods = [cls(model, mech) for cls in _methods()]
     answers: dict[str, dict[str, sympy.Expr]] = {q.name: {} for q in model.quantities}
     stopped: dict[str, dict[str, str]] = {q.name: {} for q in model.quantities}  # why a method gave none

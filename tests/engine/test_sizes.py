@@ -1,0 +1,131 @@
+"""Sizes typed with a sign (a mass, a moment of inertia, a friction or drag coefficient, a spring's
+stiffness) are refused where they were written, saying what they are; every method would read the same
+wrong number and agree (a cylinder "rolling" down at 2 g sin(theta) with a negative inertia). Kinetic
+friction at a contact with another moving body must name it (`against`): it feels the reaction."""
+
+from __future__ import annotations
+
+import pytest
+import sympy
+import yaml
+
+from physics.engine import Model, derivation, load_model
+from physics.errors import DerivationError
+
+uncached = derivation._derive.__wrapped__
+
+ROLLING = """
+elements:
+  cylinder: {kind: rolling, mass: m, radius: R, inertia: INERTIA, angle: theta, coordinate: s}
+gravity: g
+domain:
+  ranges: {theta: ["0", "pi/2"]}
+quantities:
+  a: {acceleration: s}
+"""
+ROUGH_SLOPE = """
+elements:
+  ramp: {kind: incline, body: block, mass: MASS, angle: theta, coordinate: s, friction: MU}
+gravity: g
+domain:
+  ranges: {theta: ["0", "pi/2"]}
+  positive: ["tan(theta) - mu"]
+quantities:
+  a: {acceleration: s}
+"""
+DRAGGED = """
+coordinates: [x]
+bodies:
+  ball: {mass: m, position: {x: x}}
+forces:
+  - {body: ball, drag: DRAG}
+state: {x_dot: v}
+quantities:
+  a: {acceleration: x}
+"""
+SPRUNG = """
+coordinates: [y]
+bodies:
+  block: {mass: m, position: {y: y}}
+elements:
+  spring: {kind: spring, between: [block, {y: 0}], stiffness: STIFFNESS}
+gravity: g
+state: {y: 0}
+quantities:
+  a: {acceleration: y}
+"""
+NAMES = "m R theta g mu b v k"
+
+# (model, its blanks filled, the refusal and its path, or None: the model derives)
+CASES = [
+    (
+        ROLLING,
+        {"INERTIA": '"-m*R^2/2"'},
+        ("moment of inertia -R^2*m/2 is negative", ("elements", "cylinder", "inertia")),
+    ),
+    (ROLLING, {"INERTIA": '"m*R^2/2"'}, None),
+    (
+        ROUGH_SLOPE,
+        {"MASS": "m", "MU": "-mu"},
+        ("kinetic friction on block -mu is negative", ("elements", "ramp", "friction")),
+    ),
+    (ROUGH_SLOPE, {"MASS": "-m", "MU": "mu"}, ("block's mass -m is negative", ("elements", "ramp", "mass"))),
+    (ROUGH_SLOPE, {"MASS": "m", "MU": "mu"}, None),
+    (DRAGGED, {"DRAG": "-b"}, ("drag would push the body along its velocity", ("forces", 0))),
+    (DRAGGED, {"DRAG": "b"}, None),
+    (
+        SPRUNG,
+        {"STIFFNESS": "-k"},
+        ("the stiffness of spring 'spring' -k is negative", ("elements", "spring", "stiffness")),
+    ),
+    (SPRUNG, {"STIFFNESS": "k"}, None),
+]
+
+
+def _model(text: str, blanks: dict[str, str]) -> Model:
+    for blank, value in blanks.items():
+        text = text.replace(blank, value)
+    return load_model(yaml.safe_load(text), {n: sympy.Symbol(n, positive=True) for n in NAMES.split()})
+
+
+@pytest.mark.parametrize(("text", "blanks", "refused"), CASES)
+def test_a_size_typed_with_a_sign_is_refused_where_written(
+    text: str, blanks: dict[str, str], refused: tuple[str, tuple[str | int, ...]] | None
+) -> None:
+    model = _model(text, blanks)
+    if refused is None:
+        uncached(model)
+        return
+    message, path = refused
+    with pytest.raises(DerivationError) as caught:
+        uncached(model)
+    assert message in str(caught.value)
+    assert caught.value.path == path
+
+
+ROUGH_WEDGE = """
+coordinates: [X, s]
+bodies:
+  wedge: {mass: M, position: {x: X, y: 0}}
+  block: {mass: m, position: {x: "X + s*cos(theta)", y: "-s*sin(theta)"}}
+gravity: g
+constraints:
+  floor: {kind: surface, gap: y_wedge}
+  incline: {kind: surface, gap: "(x_block - x_wedge)*sin(theta) + (y_block - y_wedge)*cos(theta)"}
+friction:
+  - {constraint: incline, body: block, coefficient: mu, sliding: s}
+domain:
+  ranges: {theta: ["0", "pi/2"]}
+  positive: ["tan(theta) - mu"]
+quantities:
+  slide: {acceleration: s}
+"""
+
+
+def test_friction_against_a_moving_body_must_name_it() -> None:
+    """Without `against`, the wedge feels no friction: the pair's horizontal momentum would change with no
+    horizontal force on it. Refused at the friction, naming the body to add."""
+    symbols = {n: sympy.Symbol(n, positive=True) for n in ["m", "M", "g", "theta", "mu"]}
+    with pytest.raises(DerivationError, match="Add `against: wedge` to the friction") as caught:
+        uncached(load_model(yaml.safe_load(ROUGH_WEDGE), symbols))
+    assert caught.value.path == ("friction", 0)
