@@ -71,10 +71,17 @@ def _integrate(model: Model, found: Contact, point: tuple[tuple[sympy.Symbol, fl
     else:
         assert hit.restitution is not None
         if approach <= 0:
+            second = hit.fixed if hit.fixed is not None else hit.bodies[-1]
+            apart = (  # moving apart, not merely side by side: most often the normal is reversed
+                f", they move apart along it: the normal points from the first body ({hit.bodies[0]}) to the "
+                f"second ({second}); check its direction, or"
+                if approach < 0
+                else ":"
+            )
             raise DerivationError(
                 "the bodies do not approach along the normal at "
                 + ", ".join(f"{s}={v:.4g}" for s, v in point)
-                + ": declare the approach positive (domain.positive)",
+                + f"{apart} declare the approach positive (domain.positive)",
                 path=("impact",),
             )
         e = _value(hit.restitution, at)

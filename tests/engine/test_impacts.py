@@ -131,6 +131,23 @@ def test_bodies_that_do_not_approach_are_refused_by_the_simulation() -> None:
         uncached(load_model(data, SYMBOLS))
 
 
+def test_a_normal_pointing_the_wrong_way_is_named_as_the_likely_cause() -> None:
+    """A ball falling onto the floor with the normal from the floor up to the ball (+y): the ball moves
+    apart along it, so the refusal says which way the normal points, beside declaring the approach."""
+    data = {
+        "coordinates": ["y"],
+        "bodies": {"ball": {"mass": "m1", "position": {"y": "y"}}},
+        "state": {"y": 0, "y_dot": "-u"},
+        "impact": {"bodies": ["ball", {"fixed": "floor"}], "normal": {"y": 1}, "restitution": "e"},
+        "domain": {"ranges": {"e": ["0", "1"]}},
+        "quantities": {"rebound": {"final_velocity": "ball"}},
+    }
+    with pytest.raises(
+        DerivationError, match=r"the normal points from the first body \(ball\) to the second \(floor\)"
+    ):
+        uncached(load_model(data, SYMBOLS))
+
+
 def test_a_restitution_above_one_is_refused() -> None:
     with pytest.raises(DerivationError, match=r"lies in \[0, 1\]"):
         uncached(load_model(carts("1 + e"), SYMBOLS))
