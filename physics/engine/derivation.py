@@ -16,6 +16,7 @@ from physics.engine.conservation import ConservationMethod
 from physics.engine.contacts import check_contact_signs
 from physics.engine.dalembert import DAlembertMethod
 from physics.engine.frames import FramesMethod
+from physics.engine.grips import check_rolling_grips
 from physics.engine.lagrange import LagrangeMethod
 from physics.engine.mechanics import Mechanics
 from physics.engine.method import Method, NotApplicable
@@ -89,6 +90,7 @@ def _derive_model(model: Model) -> Derivation:
     check_state_in_range(model)
     check_sizes(model)
     check_friction_reactions(model)
+    check_rolling_grips(model, mech)
     methods = [cls(model, mech) for cls in _methods()]
     answers: dict[str, dict[str, sympy.Expr]] = {q.name: {} for q in model.quantities}
     stopped: dict[str, dict[str, str]] = {q.name: {} for q in model.quantities}  # why a method gave none
