@@ -15,6 +15,7 @@ from collections.abc import Mapping
 import sympy
 
 from physics.answer_text import typed_text
+from physics.engine import impact
 from physics.engine.method import Method
 from physics.engine.model import Action, Constraint, ConstraintKind, Model, QuantityKind
 from physics.engine.signs import Sign, point_text, sign_on_domain, where_negative
@@ -52,9 +53,40 @@ def check_contact_signs(
             there = f" at {coordinate} = {typed_text(value)}"
             path = ("quantities", quantity.name)
             _holds(model, kind, quantity.target, quantities[quantity.name], path, there)
+    _check_impulses(model, unilateral)
     if not shown:
         return {}
     return {"contact signs": f"{', '.join(shown)}: a string pulls, a surface pushes, on the whole domain"}
+
+
+def _check_impulses(model: Model, unilateral: Mapping[str, ConstraintKind]) -> None:
+    """An impact holds every constraint through the blow, which a string and a surface do only with an
+    impulse of their force's sign: a ball flying up into a bob hanging on a string would need the string
+    to push, and bounces off it as off a wall, while the string goes slack and the bob flies up."""
+    if model.impact is None or not unilateral:
+        return
+    try:
+        impulses = impact.constraint_impulses(model)
+    except PhyscheckError:
+        return  # the methods said why already
+    except Exception:  # sympy's failures on an uploaded model: the quantities were derived already
+        return
+    for name, kind in unilateral.items():
+        found = sign_on_domain(impulses[name], model)
+        if found.sign not in (Sign.NEGATIVE, Sign.MIXED):
+            continue
+        _, wrong, then = _UNILATERAL[kind]
+        where = (
+            "on the whole domain"
+            if found.sign is Sign.NEGATIVE
+            else f"at {point_text(found.negative_at or {})}"
+        )
+        raise DerivationError(
+            f"constraint {name!r}: {wrong} during the impact {where}: {then} at the blow, which the impact "
+            f"holds (its impulse {typed_text(impulses[name])} must not be negative). Model the blow with the "
+            f"contact released (`released: [{name}]`, its bodies free to part)",
+            path=("impact",),
+        )
 
 
 def _holds(

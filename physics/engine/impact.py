@@ -221,6 +221,26 @@ def by_impulse(model: Model) -> Worked:
     each constraint's impulse as unknowns (a block held on an incline is pushed by the incline during
     the impact), the constraints holding after; J is Poisson's compression impulse (the one that stops
     the normal approach) times 1 + e, or, for an explosion, the impulse whose work is the energy."""
+    blow = _blow(model)
+    mech = blow.found.mech
+    return blow.steps, by_body(mech, blow.found.before), by_body(mech, blow.after)
+
+
+def constraint_impulses(model: Model) -> dict[str, sympy.Expr]:
+    """Each constraint's impulse during the model's impact (Newton's route), positive as its force is:
+    a string's pulls, a surface's pushes (contacts.py checks that they do)."""
+    return _blow(model).impulses
+
+
+@dataclass(frozen=True)
+class _Blow:
+    steps: tuple[tuple[str, str], ...]
+    found: Contact
+    after: list[sympy.Expr]  # each Cartesian degree of freedom's velocity just after
+    impulses: dict[str, sympy.Expr]  # each constraint's impulse
+
+
+def _blow(model: Model) -> _Blow:
     steps: list[tuple[str, str]] = []
     step = _recorder(steps)
     hit = model.impact
@@ -274,7 +294,10 @@ def by_impulse(model: Model) -> Worked:
             r"J_c = " + typeset.latex(compression) + r",\ J = (1 + e) J_c = " + typeset.latex(j),
         )
     final = [_tidy(v.subs(impulse, j)) for v in in_j]
-    return tuple(steps), by_body(mech, found.before), by_body(mech, final)
+    impulses = {
+        c.name: _tidy(solved[lam].subs(impulse, j)) for c, lam in zip(model.constraints, held, strict=True)
+    }
+    return _Blow(tuple(steps), found, final, impulses)
 
 
 def coordinate_rates(model: Model, after: Velocities) -> list[sympy.Expr]:

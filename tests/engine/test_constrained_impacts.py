@@ -11,7 +11,7 @@ import sympy
 import yaml
 
 from physics.engine import derivation, load_model
-from physics.errors import SpecErrors
+from physics.errors import DerivationError, SpecErrors
 
 uncached = derivation._derive.__wrapped__
 NAMES = ("m", "m1", "m2", "u", "v", "e", "g", "L", "theta", "alpha")
@@ -171,3 +171,61 @@ def test_the_motion_after_an_impact_needs_one() -> None:
     with pytest.raises(SpecErrors) as caught:
         load_model(yaml.safe_load(text), SYMBOLS)
     assert [e.path for e in caught.value.errors] == [("quantities", "rise", "after")]
+
+
+# a ball flying straight up at u hits a body held still above it: the holding string or surface must
+# take the blow with an impulse of its force's sign, else it lets go (the string slackens, the block lifts)
+BOB_ON_A_STRING = """
+coordinates: [s]
+bodies:
+  ball: {mass: m1, position: {y: s}}
+elements:
+  string: {kind: pendulum, body: target, mass: m2, length: L, coordinate: phi}
+state: {s: "-L", phi: 0, s_dot: u}
+impact: {bodies: [ball, target], normal: {y: 1}, restitution: e}
+domain:
+  ranges: {e: ["0", "1"]}
+quantities:
+  ball_after: {final_velocity: ball}
+"""
+BLOCK_ON_A_SURFACE = """
+coordinates: [s, X]
+bodies:
+  ball: {mass: m1, position: {y: s}}
+  target: {mass: m2, position: {x: X, y: 0}}
+constraints:
+  CONTACT: {kind: surface, gap: GAP}
+state: {s: 0, X: 0, s_dot: u}
+impact: {bodies: [ball, target], normal: {y: 1}, restitution: e}
+domain:
+  ranges: {e: ["0", "1"]}
+quantities:
+  ball_after: {final_velocity: ball}
+"""
+# (the model, the constraint that would act the wrong way, or None: it holds, and the ball rebounds)
+STRUCK = [
+    pytest.param(BOB_ON_A_STRING, "string", id="bob-on-a-string-struck-from-below"),
+    pytest.param(
+        BLOCK_ON_A_SURFACE.replace("CONTACT", "floor").replace("GAP", "y_target"),
+        "floor",
+        id="block-on-a-floor",
+    ),
+    pytest.param(
+        BLOCK_ON_A_SURFACE.replace("CONTACT", "ceiling").replace("GAP", "-y_target"),
+        None,
+        id="block-under-a-ceiling",
+    ),
+]
+
+
+@pytest.mark.parametrize(("text", "refused"), STRUCK)
+def test_a_string_or_surface_whose_impulse_would_act_the_wrong_way_is_refused(
+    text: str, refused: str | None
+) -> None:
+    model = load_model(yaml.safe_load(text), SYMBOLS)
+    if refused is None:  # the ceiling takes the blow: the ball rebounds as off a wall
+        assert sympy.simplify(uncached(model).quantities["ball_after"] + e * u) == 0
+        return
+    with pytest.raises(DerivationError, match=f"constraint '{refused}': the .* during the impact") as caught:
+        uncached(model)
+    assert caught.value.path == ("impact",)
