@@ -4,7 +4,8 @@ compression, how far up a slope a sliding block gets, how high a released bob sw
 Each method finds the square of the coordinate's rate along the way by its own route (work and energy,
 or its equation of motion integrated: work_energy.py), as a function of where the motion has got to;
 the turning point is the first place ahead, in the direction the coordinate starts moving, where that
-square reaches zero. The simulation integrates the motion until the coordinate's rate changes sign.
+square reaches zero. Other coordinates must be cyclic: their conserved momenta fix their velocities
+(work_energy.held_velocities), as for a speed where the motion arrives. The simulation integrates the motion until the coordinate's rate changes sign.
 """
 
 from __future__ import annotations
@@ -28,18 +29,17 @@ POINTS = 8
 
 @derives(QuantityKind.TURNING_POINT)
 def turning_point(method: Method, quantity: Quantity) -> sympy.Expr:
-    from physics.engine.method import NotApplicable
-
     model = method.model
     c = model.coordinate(quantity.target)
-    if len(model.coordinates) != 1:
-        raise NotApplicable(f"the turning point of {c.name} is found for a model with that coordinate alone")
     state = dict(model.state)
     start = state.get(c.symbol, c.symbol)
     velocity = state.get(c.velocity, sympy.Integer(0))
+    # the other coordinates cyclic, their momenta keep the state's values (two carts meeting through a
+    # spring bumper, a satellite's angle): their velocities follow c's, as for a speed `at` a place
+    held = work_energy.held_velocities(method, c, quantity) if len(model.coordinates) > 1 else {}
     heading = _heading(method, quantity, velocity)
     end = c.symbol  # the rate's square where the coordinate has got to, as a function of it
-    trip = work_energy.Journey(c, start, end, velocity, heading)
+    trip = work_energy.Journey(c, start, end, velocity, heading, held)
     square = work_energy.ROUTES.get(method.name, work_energy.by_integration)(method, trip)
     roots = [tidy.simplify(r) for r in tidy.solve(square, end)]
     first = _first_ahead(model, roots, start, heading, quantity.name)

@@ -61,19 +61,21 @@ def journey(method: Method, quantity: Quantity) -> Journey:
     c = model.coordinate(name)
     state = dict(model.state)
     start = state[c.symbol]
-    held = _held(method, c, quantity) if len(model.coordinates) > 1 else {}
+    held = held_velocities(method, c, quantity) if len(model.coordinates) > 1 else {}
     return Journey(
         c, start, end, state.get(c.velocity, sympy.Integer(0)), _direction(model, start, end, name), held
     )
 
 
-def _held(method: Method, c: Coordinate, quantity: Quantity) -> dict[sympy.Symbol, sympy.Expr]:
+def held_velocities(method: Method, c: Coordinate, quantity: Quantity) -> dict[sympy.Symbol, sympy.Expr]:
     """The other coordinates' velocities from their conserved momenta (each cyclic), as functions of c
-    and c'; refused at the quantity's `at` when a coordinate is not fixed that way."""
+    and c'; refused at the quantity's `at` (a turning point: at the quantity) when a coordinate is not
+    fixed that way."""
     from physics.engine.conservation import cyclic_indices
 
     model, mech = method.model, method.mech
-    where = ("quantities", quantity.name, "at")
+    where = ("quantities", quantity.name, "at") if quantity.at else ("quantities", quantity.name)
+    arrival = typed_text(quantity.at[0][1]) if quantity.at else "its turning point"
     if model.nonconservative_loads:
         raise DerivationError(
             f"{quantity.name}: with several coordinates the state where {c.name} arrives is fixed by conserved "
@@ -86,7 +88,7 @@ def _held(method: Method, c: Coordinate, quantity: Quantity) -> dict[sympy.Symbo
     loose = [o.name for i, o in enumerate(model.coordinates) if o != c and i not in cyclic]
     if loose:
         raise DerivationError(
-            f"{quantity.name}: where {c.name} reaches {typed_text(quantity.at[0][1])}, {', '.join(loose)} is not "
+            f"{quantity.name}: where {c.name} reaches {arrival}, {', '.join(loose)} is not "
             "determined: the potential or the inertia depends on it, so no conserved momentum fixes it (two "
             f"coupled coordinates exchange energy). Declare {', '.join(loose)} fixed (a symbol, not a "
             f"coordinate), or a model whose other coordinates the potential and the inertia do not involve",

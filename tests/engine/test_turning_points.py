@@ -12,9 +12,9 @@ from physics.engine import derivation, load_model
 from physics.errors import DerivationError
 
 uncached = derivation._derive.__wrapped__
-NAMES = ("m", "k", "g", "h", "L0", "v", "mu", "theta", "R")
+NAMES = ("m", "k", "g", "h", "L0", "v", "mu", "theta", "R", "M", "G")
 SYMBOLS = {name: sympy.Symbol(name, positive=True) for name in NAMES}
-m, k, g, h, L0, v, mu, theta, R = (SYMBOLS[n] for n in NAMES)
+m, k, g, h, L0, v, mu, theta, R, M, G = (SYMBOLS[n] for n in NAMES)
 SLOPE = {"ranges": {"theta": ["0", "pi/2"]}}
 
 SPRING_DROP: dict[str, Any] = {
@@ -72,6 +72,29 @@ HANGING_FROM_REST: dict[str, Any] = {  # released with the spring unstretched: i
     "domain": {"ranges": {"y": ["-L0", "oo"]}},
 }
 
+# several coordinates, the others cyclic: their momenta keep the state's values, as for a speed `at`
+BUMPER: dict[str, Any] = {  # cart 1 at v runs into cart 2 at rest through a spring of natural length L0
+    "coordinates": ["x1", "d"],
+    "bodies": {
+        "cart1": {"mass": "m", "position": {"x": "x1"}},
+        "cart2": {"mass": "M", "position": {"x": "x1 + d"}},
+    },
+    "elements": {
+        "bumper": {"kind": "spring", "between": ["cart1", "cart2"], "stiffness": "k", "length": "L0"}
+    },
+    "state": {"x1": 0, "d": "L0", "x1_dot": "v", "d_dot": "-v"},
+    "domain": {"ranges": {"d": ["0", "oo"]}, "positive": ["L0^2*k*(m + M) - v^2*m*M"]},
+    "quantities": {"lowest": {"turning_point": "d"}},
+}
+APOGEE: dict[str, Any] = {  # launched sideways at v from R, below the escape speed
+    "coordinates": ["r", "phi"],
+    "bodies": {"craft": {"mass": "m", "position": {"x": "r*cos(phi)", "y": "r*sin(phi)"}}},
+    "potentials": [{"bodies": ["craft"], "anchor": {"x": 0, "y": 0}, "distance": "d", "energy": "-G*M*m/d"}],
+    "state": {"r": "R", "phi": 0, "phi_dot": "v/R"},
+    "domain": {"ranges": {"r": ["0", "oo"]}, "positive": ["v^2*R - G*M", "2*G*M - v^2*R"]},
+    "quantities": {"lowest": {"turning_point": "r"}},
+}
+
 
 @pytest.mark.parametrize(
     ("data", "expected"),
@@ -84,6 +107,8 @@ HANGING_FROM_REST: dict[str, Any] = {  # released with the spring unstretched: i
         ),
         pytest.param(ROLLING_UP, 7 * v**2 / (10 * g * sympy.sin(theta)), id="rolling-up"),
         pytest.param(HANGING_FROM_REST, 2 * m * g / k, id="from-rest"),
+        pytest.param(BUMPER, L0 - v * sympy.sqrt(m * M / (k * (m + M))), id="bumper-closest"),
+        pytest.param(APOGEE, R**2 * v**2 / (2 * G * M - R * v**2), id="apogee"),
     ],
 )
 def test_the_turning_point_is_derived_by_several_methods_and_simulated(
