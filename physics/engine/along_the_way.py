@@ -20,12 +20,12 @@ import sympy
 
 from physics.answer_text import typed_text
 from physics.engine import tidy, work_energy
+from physics.engine.contacts import UNILATERAL
 from physics.engine.method import Method, NotApplicable
 from physics.engine.model import (
     REACH_KINDS,
     Action,
     Constraint,
-    ConstraintKind,
     Model,
     Quantity,
     QuantityKind,
@@ -37,13 +37,10 @@ from physics.errors import DerivationError, PhyscheckError
 POINTS = 8
 SEED = 31
 STEPS = 24  # places along the way, the end included
-_TOLERANCE = 1e-9  # of the force's largest size along the way: a threshold's contact lets go at its end
+# of the force's largest size along the way (at least 1, the sampled parameters' order: a force that is
+# zero all along, a threshold's contact letting go at its end, may round to a tiny negative value)
+_TOLERANCE = 1e-9
 
-# a unilateral kind -> (the force's name, what it would do with the wrong sign, what then happens)
-_UNILATERAL = {
-    ConstraintKind.STRING: ("tension", "the string would push", "it goes slack"),
-    ConstraintKind.SURFACE: ("normal force", "the surface would pull", "the body leaves it"),
-}
 _AT_KINDS = REACH_KINDS | {QuantityKind.FORCE, QuantityKind.ACCELERATION}
 
 
@@ -115,13 +112,13 @@ def _holds_along(
                 return False  # not real along the way: the turn-back the simulation finds, not this check's
             values.append((place, value.real))
         scale = max(abs(v) for _, v in values)
-        first = next(((place, v) for place, v in values if v < -_TOLERANCE * scale), None)
+        first = next(((place, v) for place, v in values if v < -_TOLERANCE * max(scale, 1.0)), None)
         if first is not None and worst is None:
             worst = (first[0], point, first[1])
     if worst is None:
         return True
     place, point, _ = worst
-    named, wrong, then = _UNILATERAL[constraint.kind]
+    named, wrong, then = UNILATERAL[constraint.kind]
     target = typed_text(trip.end)
     raise DerivationError(
         f"{quantity.name}: constraint {constraint.name!r}: {wrong} on the way from {c.name} = "

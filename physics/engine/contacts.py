@@ -22,7 +22,7 @@ from physics.engine.signs import Sign, point_text, sign_on_domain, where_negativ
 from physics.errors import DerivationError, PhyscheckError
 
 # a unilateral kind -> (the force's name, what it would do with the wrong sign, what then happens)
-_UNILATERAL = {
+UNILATERAL = {
     ConstraintKind.STRING: ("tension", "the string would push", "it goes slack"),
     ConstraintKind.SURFACE: ("normal force", "the surface would pull", "the body leaves it"),
 }
@@ -75,7 +75,7 @@ def _check_impulses(model: Model, unilateral: Mapping[str, ConstraintKind]) -> N
         found = sign_on_domain(impulses[name], model)
         if found.sign not in (Sign.NEGATIVE, Sign.MIXED):
             continue
-        _, wrong, then = _UNILATERAL[kind]
+        _, wrong, then = UNILATERAL[kind]
         where = (
             "on the whole domain"
             if found.sign is Sign.NEGATIVE
@@ -99,7 +99,7 @@ def _holds(
     if found.sign is Sign.POSITIVE:
         return True
     if found.sign in (Sign.NEGATIVE, Sign.MIXED):
-        named, wrong, then = _UNILATERAL[kind]
+        named, wrong, then = UNILATERAL[kind]
         condition = where_negative(force, model, loads)
         if found.sign is Sign.NEGATIVE:
             where = f"wherever {condition}, which is the whole domain" if condition else "on the whole domain"
