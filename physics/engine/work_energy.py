@@ -126,7 +126,8 @@ def _direction(model: Model, start: sympy.Expr, end: sympy.Expr, name: str) -> i
         return -1
     raise DerivationError(
         f"cannot tell which way {name} moves from its start {typed_text(start)} to {typed_text(end)}: the difference {typed_text(difference)} "
-        "changes sign (or is zero) on the domain",
+        "changes sign (or is zero) on the domain; declare which way it goes (domain.positive: "
+        f"[{typed_text(difference)!r}], or its negative)",
         path=("state", name),
     )
 

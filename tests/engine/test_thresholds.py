@@ -9,6 +9,7 @@ import sympy
 import yaml
 
 from physics.engine import derivation, load_model
+from physics.errors import DerivationError
 
 uncached = derivation._derive.__wrapped__
 NAMES = ("m", "R", "g", "h", "theta_c")
@@ -125,3 +126,36 @@ def test_the_least_launch_to_get_somewhere_is_bracketed_by_runs_that_turn_back_a
     monkeypatch.setattr(derivation, "_simplest", lambda forms: forced)
     with pytest.raises(derivation.DerivationError, match=refusal):
         uncached(model)
+
+
+LADDER_LEAVES = """
+# a rod slides down a smooth wall on a smooth floor from rest at theta0 from the vertical; it leaves the
+# wall where the wall's push vanishes
+coordinates: [theta]
+bodies:
+  rod: {mass: m, inertia: "m*R^2/12", position: {x: "R*sin(theta)/2", y: "R*cos(theta)/2"}, angle: theta}
+gravity: g
+constraints:
+  wall: {kind: surface, gap: "x_rod - R*sin(phi_rod)/2"}
+  floor: {kind: surface, gap: "y_rod - R*cos(phi_rod)/2"}
+state: {theta: theta0}
+domain:
+  ranges: {theta0: ["0", "pi/2"], theta_c: ["0", "pi/2"], theta: ["0", "pi/2"]}
+  positive: [WHICH_WAY]
+quantities:
+  leaves: {solve: theta_c, zero: {force: wall, at: {theta: theta_c}}}
+"""
+
+
+def test_a_threshold_reached_from_a_symbolic_start_asks_which_way_the_coordinate_goes() -> None:
+    """From rest at theta0, where theta_c lies against theta0 is the author's to declare: asked, the
+    refusal says how; declared, the root is the textbook's."""
+    symbols = {**SYMBOLS, "theta0": sympy.Symbol("theta0", positive=True)}
+    undeclared = load_model(yaml.safe_load(LADDER_LEAVES.replace("WHICH_WAY", '"R"')), symbols)
+    with pytest.raises(
+        DerivationError, match=r"declare which way it goes \(domain.positive: \['-theta0 \+ theta_c'\]"
+    ):
+        uncached(undeclared)
+    declared = load_model(yaml.safe_load(LADDER_LEAVES.replace("WHICH_WAY", '"theta_c - theta0"')), symbols)
+    leaves = uncached(declared).quantities["leaves"]
+    assert sympy.simplify(leaves - sympy.acos(2 * sympy.cos(symbols["theta0"]) / 3)) == 0
