@@ -214,7 +214,7 @@ _m1, _m2 = (sympy.Symbol(n, positive=True) for n in ("m1", "m2"))
 BUMPER_STATES = [
     pytest.param("L0/2", '["0", "oo"]', _k * _L0 * (_m1 + _m2) / (2 * _m1 * _m2), id="squeezed"),
     pytest.param("0", '["0", "oo"]', _k * _L0 * (_m1 + _m2) / (_m1 * _m2), id="at-the-end-of-its-range"),
-    # d declared negative, so the spring's length is -d: at d = L0 it would be squeezed by 2 L0
+    # d declared negative, so the spring's length is -d: at d = L0/2 it would be squeezed by 3 L0/2
     pytest.param("L0/2", '["-oo", "0"]', None, id="state-on-the-side-the-range-excludes"),
 ]
 
