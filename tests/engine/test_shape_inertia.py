@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 import sympy
 
-from physics.engine import derive, load_model
+from physics.engine import derive
 from physics.engine.results import KnownMistake
 from problems.modelinfo import load_doc_model
 from problems.symbols import symbol_table
@@ -52,26 +52,8 @@ def test_a_radius_of_gyration_names_no_shape():
 
 
 def test_a_body_named_by_an_element_is_called_by_its_mass():
-    model = load_model(
-        {
-            "coordinates": ["s"],
-            "bodies": {
-                "m1": {"mass": "m1", "position": {"y": "s"}},
-                "m2": {"mass": "m2", "position": {"y": "-s"}},
-            },
-            "gravity": "g",
-            "elements": {
-                "string": {
-                    "kind": "pulley",
-                    "ends": [{"body": "m1", "pulls": "up"}, {"body": "m2", "pulls": "up"}],
-                    "mass": "M",
-                    "radius": "R",
-                    "inertia": "M*R^2/2",
-                }
-            },
-            "quantities": {"a": {"acceleration": "s"}},
-        },
-        {"m1": m1, "m2": m2, "M": M, "R": R, "g": g},
-    )
-    told = [slip.feedback for slip in derive(model).mistakes["a"] if "moment of inertia of" in slip.feedback]
+    # the pulley element's wheel is `stringWheel`, no word a student reads
+    told = [
+        s.feedback for s in _mistakes("atwood-massive-pulley", "acceleration") if "inertia of" in s.feedback
+    ]
     assert told and all("the body of mass $M$" in said and "stringWheel" not in said for said in told)
