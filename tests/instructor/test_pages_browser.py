@@ -78,6 +78,26 @@ def test_sign_in_then_problems_and_a_worked_solution(
     check_page(page, f"instructor-problem-{device}")
 
 
+
+@pytest.mark.parametrize("device", WIDTHS)
+def test_the_problem_pages_actions_are_one_row_and_the_students_link_a_line_of_its_own(
+    live_server: LiveServer, browse: Callable[..., Any], device: str
+) -> None:
+    page = signed_in_page(live_server, browse, "/instructor/problems/yo-yo", WIDTHS[device])
+    actions = page.locator(".actions")
+    printed = actions.get_by_role("link", name="Worked solution to print")
+    as_student = actions.get_by_role("button", name="View as a student")
+    students_link = page.get_by_text("Students' link to the solution:")
+    for shown in (printed, as_student, students_link):
+        shown.wait_for()
+    row, link = actions.bounding_box(), students_link.bounding_box()
+    assert link["y"] >= row["y"] + row["height"]  # below the row, not run on after its last link
+    if device == "desktop":  # room for all of them: one row
+        tops = [box["y"] + box["height"] / 2 for box in (printed.bounding_box(), as_student.bounding_box())]
+        first = actions.get_by_role("link", name="Class results").bounding_box()
+        assert max(tops) - min(tops) < 6 and abs(tops[0] - (first["y"] + first["height"] / 2)) < 6
+
+
 @pytest.mark.parametrize("device", WIDTHS)
 def test_upload_with_an_error_fix_it_preview_and_save(
     live_server: LiveServer, browse: Callable[..., Any], device: str
