@@ -260,11 +260,11 @@ async def assignment_page(
     )
 
 
-def assignment_banner(context: LtiContext, student: str, problem_id: str) -> dict[str, Any] | None:
+def assignment_banner(opened: access.Opening) -> dict[str, Any] | None:
     """What a problem page says about the assignment it is answered in: title, due date (the
-    student's, in the course's zone), late policy, and whether answers are still accepted."""
-    opened = access.opening(context.stores, student, problem_id, context.clock())
-    if opened is None or opened.assignment is None or opened.course is None or opened.due is None:
+    student's, in the course's zone), late policy, and whether answers are still accepted. From the
+    page's own `access.opening` (one look at the student's courses per page)."""
+    if opened.assignment is None or opened.course is None or opened.due is None:
         return None
     return {
         "course": opened.course,

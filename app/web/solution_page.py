@@ -15,7 +15,6 @@ from fastapi import APIRouter, Request
 from fastapi.responses import HTMLResponse, Response
 from starlette.concurrency import run_in_threadpool
 
-from app.courses import access
 from app.instructor.described import describe
 from app.lti.context import LtiContextDep
 from app.web.layout import page, templates
@@ -46,12 +45,10 @@ def solution_context(request: Request, problem_id: str, student: str) -> dict[st
     catalog = services.catalog
     record = catalog.get(problem_id)
     doc = catalog.document(record)
-    context = request.app.state.lti
-    now = context.clock()
-    opened = access.opening(context.stores, student, problem_id, now)
+    opened = loaded.opened  # the page's one look at the student's courses
     within = None
-    if opened is not None and opened.assignment is not None and opened.due is not None:
-        within = Within(opened.assignment, opened.due, now)
+    if opened.assignment is not None and opened.due is not None:
+        within = Within(opened.assignment, opened.due, loaded.now)
     release = solution_release(doc, loaded.work, within)
     values: dict[str, Any] = {"problem_id": problem_id, "doc": doc, "release": release, "student": student}
     if not release.released:

@@ -16,6 +16,7 @@ from __future__ import annotations
 import re
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
+from datetime import datetime
 from typing import Any
 
 from fastapi import APIRouter, Request
@@ -145,6 +146,8 @@ class Loaded:
     view: Mapping[str, Any]
     work: ProblemWork
     figure: str | None
+    opened: access.Opening  # whether and under which assignment the student's answers count now
+    now: datetime  # the time `opened` was decided at
     assignment: Mapping[str, Any] | None = None  # the assignment it is answered in (a course's student)
 
 
@@ -152,7 +155,8 @@ def _load(context: LtiContext, problem_id: str, student: str) -> Loaded | None:
     if context.student_view is None or not _PROBLEM_ID.match(problem_id):
         return None
     # A course's student sees only the problems of their open assignments (app.courses.access).
-    opened = access.opening(context.stores, student, problem_id, context.clock())
+    now = context.clock()
+    opened = access.opening(context.stores, student, problem_id, now)
     if opened is None:
         return None
     try:
@@ -160,8 +164,8 @@ def _load(context: LtiContext, problem_id: str, student: str) -> Loaded | None:
     except LookupError:
         return None
     work = load_work(context.stores.submissions, problem_id, student, view.get("parts", []))
-    banner = assignment_banner(context, student, problem_id)
-    return Loaded(view, work, _figure(context, problem_id, student), banner)
+    figure = _figure(context, problem_id, student)
+    return Loaded(view, work, figure, opened, now, assignment_banner(opened))
 
 
 def _content_context(loaded: Loaded, problem_id: str, student: str) -> dict[str, Any]:

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import re
 
+import pytest
 from fastapi.testclient import TestClient
 
 from app.courses.records import StaffRole
@@ -238,3 +239,39 @@ def test_the_submissions_page_and_csv_show_only_the_visitors_students(signed_in:
     exported = other.get("/instructor/submissions.csv")
     assert f"course:{course}:s1" not in exported.text and "keyed-student" in exported.text
     assert other.get("/instructor/submissions", params={"student": f"course:{course}:s1"}).status_code == 404
+
+
+def test_a_course_students_problem_and_solution_pages_look_at_their_courses_once_each(
+    signed_in: TestClient, stores: Stores, monkeypatch: pytest.MonkeyPatch
+):
+    from datetime import UTC, datetime, timedelta
+
+    from app.courses import access
+    from app.courses.records import AssignmentSpec
+
+    course = _make_course(signed_in)
+    now = datetime.now(UTC)
+    stores.courses.create_assignment(
+        course, AssignmentSpec("HW 1", ("yo-yo",), now - timedelta(days=1), now + timedelta(days=1))
+    )
+    page = signed_in.get(f"/instructor/courses/{course}")
+    signed_in.post(
+        f"/instructor/courses/{course}/join-code", data={"csrf": csrf_of(page.text), "enabled": "1"}
+    )
+    student = TestClient(signed_in.app, follow_redirects=False)
+    code = stores.courses.get_course(course).join_code
+    assert student.post(f"/join/{code}", data={"name": "Ada"}).status_code == 303
+    calls: list[str] = []
+    real = access.opening
+
+    def counted(*args: object, **kwargs: object) -> access.Opening | None:
+        calls.append("opening")
+        return real(*args, **kwargs)  # type: ignore[arg-type]
+
+    monkeypatch.setattr(access, "opening", counted)
+    for path in ("/p/yo-yo/content", "/p/yo-yo/solution/content"):
+        calls.clear()
+        shown = student.get(path)
+        assert shown.status_code == 200, path
+        assert calls == ["opening"], path
+    assert "HW 1" in student.get("/p/yo-yo/content").text  # the banner still names the assignment

@@ -78,7 +78,6 @@ def test_sign_in_then_problems_and_a_worked_solution(
     check_page(page, f"instructor-problem-{device}")
 
 
-
 @pytest.mark.parametrize("device", WIDTHS)
 def test_the_problem_pages_actions_are_one_row_and_the_students_link_a_line_of_its_own(
     live_server: LiveServer, browse: Callable[..., Any], device: str
