@@ -48,6 +48,9 @@ class Force:
     lever: float = 0.0
     lever_label: str = ""
     at_rim: bool = False  # a rolling contact: it acts where the body touches the surface
+    # on a round rigid body: where on its rim the force acts, as a unit vector from the centre (a
+    # surface's push and kinetic friction act where the body touches the surface, as textbooks draw them)
+    contact: tuple[float, float] | None = None
 
 
 def _unit(x: float, y: float) -> tuple[float, float] | None:
@@ -97,11 +100,47 @@ def _contact_forces(model: Model, given: tuple[tuple[str, float], ...]) -> dict[
                 *_lever(model, name, source, values, drawn),
                 at_rim=source[0] == "constraint"
                 and model.constraint(str(source[1])).kind is ConstraintKind.ROLLING,
+                contact=_contact_point(model, name, source, direction, found),
             )
             for source, _, direction in found
         )
         for name, found in contacts.items()
     }
+
+
+def _round_surface(model: Model, body_name: str, source: _Source) -> bool:
+    """Whether `source` is a surface a rigid body touches with its rim: a surface's gap that does not
+    turn with the body (a wheel's, a ball's) pushes along the line through its centre, from the point
+    where the body touches it. A ladder's floor turns with it (the gap holds its angle): its foot, not
+    its rim, touches; it keeps its lever arm."""
+    body = model.body(body_name)
+    if body.angle is None or source[0] != "constraint":
+        return False
+    constraint = model.constraint(str(source[1]))
+    if constraint.kind is not ConstraintKind.SURFACE:
+        return False
+    turn = dict(model.cartesian).get(f"phi_{body_name}")
+    return turn is None or turn not in constraint.gap.free_symbols
+
+
+def _contact_point(
+    model: Model,
+    body_name: str,
+    source: _Source,
+    direction: tuple[float, float],
+    found: list[tuple[_Source, str, tuple[float, float]]],
+) -> tuple[float, float] | None:
+    """Where on a round rigid body's rim a force acts: a surface's push where the body touches it
+    (opposite the push, from the centre); friction, kinetic or rolling, at the same point when the body
+    touches one surface (a rolling friction with a lever arm is drawn at its arm's end, the same point).
+    None for every other force (drawn from the body's edge along its line of action)."""
+    if _round_surface(model, body_name, source):
+        return (-direction[0], -direction[1])
+    rolls = source[0] == "constraint" and model.constraint(str(source[1])).kind is ConstraintKind.ROLLING
+    if source[0] != "friction" and not rolls:
+        return None
+    touching = [d for s, _, d in found if _round_surface(model, body_name, s)]
+    return (-touching[0][0], -touching[0][1]) if len(touching) == 1 else None
 
 
 def _named(model: Model, labels: dict[_Source, str]) -> dict[_Source, str]:
@@ -312,13 +351,17 @@ def _arm_label_at(start: tuple[float, float], direction: tuple[float, float]) ->
 
 
 def _clear_of_arms(forces: list[Force], arms: list[float]) -> tuple[float, float]:
-    """Where a wheel's name goes: the quarter of the wheel farthest from its lever arms and their labels."""
+    """Where a wheel's name goes: the quarter of the wheel farthest from its lever arms and their labels,
+    and from the arrows drawn across it from a contact point."""
     taken = []
     for force, arm in zip(forces, arms, strict=True):
+        dx, dy = force.direction
         if arm:
-            dx, dy = force.direction
             start = (arm * dy, -arm * dx)
             taken += [(start[0] / 2, start[1] / 2), _arm_label_at(start, force.direction)]
+        elif force.contact is not None:
+            cx, cy = force.contact[0] * RIGID, force.contact[1] * RIGID
+            taken += [(cx + dx * t, cy + dy * t) for t in (0.0, 0.4, 0.8, 1.2, 1.6)]
     quarters = [(RIGID * 0.45 * sx, RIGID * 0.5 * sy) for sx, sy in ((1, -1), (-1, -1), (-1, 1), (1, 1))]
     return max(quarters, key=lambda q: min(math.dist(q, point) for point in taken))
 
@@ -337,7 +380,8 @@ def free_body_figure(model: Model, body_name: str, given: Mapping[str, float], *
             canvas.circle((0.0, 0.0), arm, fill=FILLS[3])  # the axle a string is wound on
     else:
         canvas.polygon([(-half, -half), (half, -half), (half, half), (-half, half)], fill=FILLS[0])
-    if body.angle is not None and any(arms):  # the centre is where the lever arms start
+    # the centre is where the lever arms start, and a contact's push crosses it
+    if body.angle is not None and (any(arms) or any(f.contact for f in forces)):
         canvas.text(_clear_of_arms(forces, arms), label, size=0.36)
     elif len(label) <= 3:
         canvas.text((0.0, 0.0), label)
@@ -362,6 +406,17 @@ def free_body_figure(model: Model, body_name: str, given: Mapping[str, float], *
                 f"{force.label} at {round(math.degrees(math.atan2(dy, dx)))}° from the +x axis, acting "
                 f"{'left' if start[0] < 0 else 'right' if start[0] > 0 else 'off'} of the centre"
                 + (f" at lever arm {force.lever_label}" if force.lever_label else "")
+            )
+            continue
+        if force.contact is not None and body.angle is not None:  # from where the body touches
+            start = (force.contact[0] * RIGID, force.contact[1] * RIGID)
+            tip = (start[0] + dx * ARROW, start[1] + dy * ARROW)
+            canvas.arrow(start, tip, width=0.07, color="#a11111")
+            at = _clear_of_labels((tip[0] + dx * 0.5, tip[1] + dy * 0.5), force.direction, labelled)
+            canvas.text(at, force.label, size=FORCE_LABEL)
+            labelled.append(at)
+            said.append(
+                f"{force.label} at {round(math.degrees(math.atan2(dy, dx)))}° from the +x axis, at the contact"
             )
             continue
         # Forces along one line (a spring and drag, two tensions) are drawn side by side, not on top.

@@ -164,3 +164,59 @@ def test_labels_of_close_parallel_forces_and_of_lever_arms_do_not_meet(problem_i
     for i, (x1, y1) in enumerate(placed):
         for x2, y2 in placed[i + 1 :]:
             assert abs(x1 - x2) > 0.3 or abs(y1 - y2) > 0.3, placed
+
+
+def _arrow_tails(root: ET.Element) -> list[tuple[tuple[float, float], tuple[float, float]]]:
+    """Each force arrow's tail and unit direction, y up (the SVG's y points down)."""
+    tails = []
+    for line in root.iter(f"{SVG}line"):
+        if line.get("stroke") != "#a11111":
+            continue
+        x1, y1, x2, y2 = (float(line.get(k, "0")) for k in ("x1", "y1", "x2", "y2"))
+        length = math.hypot(x2 - x1, y2 - y1)
+        tails.append(((x1, -y1), ((x2 - x1) / length, (y1 - y2) / length)))
+    return tails
+
+
+@pytest.mark.parametrize(
+    ("problem_id", "body", "surface_forces"),
+    [
+        pytest.param("rolling-incline", "cylinder", ("N₁",), id="rolling-down-a-slope"),
+        pytest.param("rolling-cylinder-pulled", "cylinder", ("N",), id="pulled-on-a-floor"),
+        pytest.param("bowl-rolling", "ball", ("N", "f"), id="rolling-in-a-bowl"),
+        pytest.param("bowling-ball-skid", "ball", ("N", "f"), id="skidding-kinetic-friction"),
+    ],
+)
+def test_a_round_bodys_normal_force_and_friction_act_where_it_touches_the_surface(
+    problem_id: str, body: str, surface_forces: tuple[str, ...]
+) -> None:
+    # N had been drawn from the top of a rolling body, as if pulled from above
+    model = bank_model(problem_id)
+    forces = {f.label: f for f in body_forces(model, body, {})}
+    normal = forces[surface_forces[0]]
+    assert normal.contact is not None and opposite(normal.contact, normal.direction)
+    root = _drawn(problem_id, body)
+    circle = next(root.iter(f"{SVG}circle"))
+    centre, radius = (
+        (float(circle.get("cx", "0")), -float(circle.get("cy", "0"))),
+        float(circle.get("r", "0")),
+    )
+    touching = (centre[0] + normal.contact[0] * radius, centre[1] + normal.contact[1] * radius)
+    tails = _arrow_tails(root)
+    for label in surface_forces:
+        direction = forces[label].direction
+        tail = next(
+            t
+            for t, d in tails
+            if math.isclose(d[0], direction[0], abs_tol=1e-2)
+            and math.isclose(d[1], direction[1], abs_tol=1e-2)
+        )
+        assert math.dist(tail, touching) < 0.01, (label, tail, touching)
+        assert f"{label} at " in root.findtext(f"{SVG}desc", "")
+    assert "at the contact" in root.findtext(f"{SVG}desc", "")
+
+
+def test_a_ladders_normal_forces_keep_their_lever_arms_not_its_rim() -> None:
+    # a ladder's floor turns with it: its foot touches, not a rim; it is not moved to a contact point
+    model = bank_model("ladder-slipping")
+    assert all(force.contact is None for force in body_forces(model, "ladder", {}))
