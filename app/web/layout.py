@@ -49,6 +49,15 @@ def scale_note(svg: str | None) -> str:
 
 
 templates.env.filters["scale_note"] = scale_note
+
+
+def marks_coordinates(svg: str | None) -> bool:
+    """Whether a figure draws a coordinate's blue arrow (physics/figures/shapes.py mark_coordinate says
+    so in its description): only then may a caption point the reader to blue arrows."""
+    return "grows along the blue arrow" in (svg or "")
+
+
+templates.env.filters["marks_coordinates"] = marks_coordinates
 # an answer as read, in the student style of typing (`r0/2^(1/6)`), never the contract's `**`
 templates.env.filters["typed"] = in_student_style
 

@@ -50,7 +50,13 @@ def solution_context(request: Request, problem_id: str, student: str) -> dict[st
     if opened.assignment is not None and opened.due is not None:
         within = Within(opened.assignment, opened.due, loaded.now)
     release = solution_release(doc, loaded.work, within)
-    values: dict[str, Any] = {"problem_id": problem_id, "doc": doc, "release": release, "student": student}
+    values: dict[str, Any] = {
+        "problem_id": problem_id,
+        "doc": doc,
+        "release": release,
+        "student": student,
+        "assignment": loaded.assignment,  # a course's student: the page leads back to their courses
+    }
     if not release.released:
         return values
     variant = catalog.variant(record, student)

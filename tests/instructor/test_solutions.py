@@ -12,7 +12,7 @@ from app.storage import Stores
 from app.web.solution_access import solution_release
 from app.web.student_work import PartWork, ProblemWork
 from tests.bank import bank_documents
-from tests.instructor.conftest import new_key
+from tests.instructor.conftest import csrf_of, new_key
 from tests.instructor.test_pages import RIGHT, file_submissions
 
 PARTS = ("acceleration", "tension", "acceleration_numeric")
@@ -117,3 +117,44 @@ def test_the_problem_page_shows_the_comparison_and_numbered_equations(signed_in:
     assert '<section class="comparison"' in page
     assert '<span class="eqno">(1.1)</span>' in page
     assert "lambda" not in page and "y_yoyo" not in page and "g_k" not in page
+
+
+def test_the_hand_outs_caption_points_to_blue_arrows_only_when_the_figure_draws_them(
+    signed_in: TestClient, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # the caption had promised blue coordinate arrows under every figure; most draw none
+    said = "Blue arrows mark the coordinates"
+    assert said in signed_in.get("/instructor/problems/yo-yo/solution").text  # the yo-yo's y, drawn
+    catalog = signed_in.app.state.services.catalog  # type: ignore[attr-defined]
+    plain = '<svg xmlns="http://www.w3.org/2000/svg" role="img"><desc>A block on a slope.</desc></svg>'
+    monkeypatch.setattr(catalog, "figure", lambda problem_id, student: plain)
+    hand_out = signed_in.get("/instructor/problems/yo-yo/solution").text
+    assert "A block on a slope." in hand_out and said not in hand_out
+
+
+def test_a_course_students_solution_page_leads_back_to_their_courses(
+    signed_in: TestClient, stores: Stores
+) -> None:
+    from datetime import UTC, datetime, timedelta
+
+    from app.courses.records import AssignmentSpec
+
+    made = signed_in.post(
+        "/instructor/courses",
+        data={"csrf": csrf_of(signed_in.get("/instructor/courses").text), "title": "Mechanics"},
+    )
+    course = int(made.headers["location"].rsplit("/", 1)[1])
+    now = datetime.now(UTC)
+    stores.courses.create_assignment(
+        course, AssignmentSpec("HW 1", ("yo-yo",), now - timedelta(days=1), now + timedelta(days=1))
+    )
+    page = signed_in.get(f"/instructor/courses/{course}")
+    signed_in.post(
+        f"/instructor/courses/{course}/join-code", data={"csrf": csrf_of(page.text), "enabled": "1"}
+    )
+    student = TestClient(signed_in.app, follow_redirects=False)
+    student.post(f"/join/{stores.courses.get_course(course).join_code}", data={"name": "Ada"})
+    nav = student.get("/p/yo-yo/solution").text.split("<main", 1)[0]
+    assert 'href="/courses"' in nav and 'href="/problems"' not in nav  # as the problem page's nav
+    keyed = TestClient(signed_in.app).get("/p/yo-yo/solution").text  # a key's student: their problems
+    assert 'href="/problems"' in keyed.split("<main", 1)[0]
