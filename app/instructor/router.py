@@ -769,6 +769,24 @@ def _filters(problem: str | None, student: str | None) -> tuple[str | None, str 
     return (problem or "").strip() or None, (student or "").strip() or None
 
 
+def _named_student(typed: str, names: Mapping[str, str]) -> str:
+    """The identity the Student filter means: as typed when it is one (or no student's name), else the
+    one student of the instructor's courses with that name, in any case (an instructor knows Ada, not
+    `course:3:join-9f1c…`); a name two students share is refused, naming their identities."""
+    if typed in names:
+        return typed
+    matching = sorted(identity for identity, name in names.items() if name.casefold() == typed.casefold())
+    if len(matching) > 1:
+        raise PageError(
+            422,
+            "Which student?",
+            f"{len(matching)} students are named {typed!r}: filter by one's identity, "
+            + ", ".join(matching)
+            + ".",
+        )
+    return matching[0] if matching else typed
+
+
 @router.get("/submissions")
 async def submissions(
     request: Request,
@@ -781,24 +799,26 @@ async def submissions(
     _need_key(who)
     problem, student = _filters(problem, student)
 
-    def load() -> tuple[Any, list[str]]:
+    def load() -> tuple[Any, list[str], dict[str, str], str | None]:
         reach = _reachable(services, who)
-        if student is not None and not reach(student):
+        names = access.student_names(services.stores, who.principal)
+        wanted = student if student is None else _named_student(student, names)
+        if wanted is not None and not reach(wanted):
             raise PageError(404, "No such student", f"There is no student {student!r} in your courses.")
         found = services.stores.submissions.page(
-            problem_id=problem, student=student, limit=PAGE_SIZE, cursor=cursor or None
+            problem_id=problem, student=wanted, limit=PAGE_SIZE, cursor=cursor or None
         )
         # Students of courses the visitor does not teach are left out (a page may come back shorter).
         found = replace(found, items=[item for item in found.items if reach(item.student)])
-        return found, [record.id for record in services.catalog.list()]
+        return found, [record.id for record in services.catalog.list()], names, wanted
 
     try:
-        found, problem_ids = await run_in_threadpool(load)
+        found, problem_ids, names, wanted = await run_in_threadpool(load)
     except AppError as error:  # pragma: no cover - defensive; storage errors are below
         raise PageError(error.status, "Cannot list submissions", error.message) from None
     except ValueError:
         raise PageError(422, "Cannot list submissions", "That page link is not valid any more.") from None
-    query = {k: v for k, v in (("problem", problem), ("student", student)) if v}
+    query = {k: v for k, v in (("problem", problem), ("student", wanted)) if v}
     return await _page(
         request,
         services,
@@ -811,6 +831,9 @@ async def submissions(
             "csv": "/instructor/submissions.csv" + ("?" + urlencode(query) if query else ""),
             "problem": problem,
             "student": student,
+            "student_name": names.get(wanted or ""),
+            "wanted": wanted,
+            "names": names,
             "problem_ids": problem_ids,
             "preview_prefix": results_repository.PREVIEW_PREFIX,
         },

@@ -241,6 +241,50 @@ def test_the_submissions_page_and_csv_show_only_the_visitors_students(signed_in:
     assert other.get("/instructor/submissions", params={"student": f"course:{course}:s1"}).status_code == 404
 
 
+def test_the_submissions_page_names_a_courses_students_and_finds_them_by_name(
+    signed_in: TestClient, stores: Stores
+):
+    # a joined student's work is filed as course:N:join-…, which told the instructor nothing
+    from app.courses.records import RosterRow
+    from tests.db.helpers import CORRECT
+
+    course = _make_course(signed_in)
+    stores.courses.import_roster(
+        course,
+        [RosterRow("s1", "Ada Lovelace", ""), RosterRow("s2", "Alan", ""), RosterRow("s3", "Alan", "")],
+    )
+    version = stores.problems.get("yo-yo").version
+    for student in (f"course:{course}:s1", f"course:{course}:s2"):
+        stores.submissions.file(
+            problem_id="yo-yo",
+            problem_version=version,
+            part_id="acceleration",
+            student=student,
+            answer="g",
+            verdict=CORRECT,
+            max_attempts=None,
+        )
+    listed = signed_in.get("/instructor/submissions")
+    assert ">Ada Lovelace</a>" in listed.text and f"course:{course}:s1" in listed.text  # name, then identity
+    found = signed_in.get("/instructor/submissions", params={"student": "ada lovelace"})
+    assert (
+        found.status_code == 200 and "Ada Lovelace" in found.text and f"course:{course}:s2" not in found.text
+    )
+    assert f'/instructor/submissions.csv?student=course%3A{course}%3As1"' in found.text  # the CSV: hers too
+    shared = signed_in.get("/instructor/submissions", params={"student": "Alan"})
+    assert (
+        shared.status_code == 422
+        and f"course:{course}:s2" in shared.text
+        and f"course:{course}:s3" in shared.text
+    )
+    book = signed_in.get(f"/instructor/courses/{course}/gradebook", params={"student": f"course:{course}:s1"})
+    assert f'href="/instructor/submissions?student=course%3A{course}%3As1"' in book.text  # her answers
+    other = TestClient(signed_in.app, follow_redirects=False)
+    sign_in(other, new_key(stores, "instructor", "Prof B"))
+    elsewhere = other.get("/instructor/submissions", params={"student": "Ada Lovelace"})
+    assert elsewhere.status_code == 200 and f"course:{course}:s1" not in elsewhere.text  # not their student
+
+
 def test_a_course_students_problem_and_solution_pages_look_at_their_courses_once_each(
     signed_in: TestClient, stores: Stores, monkeypatch: pytest.MonkeyPatch
 ):
