@@ -42,13 +42,13 @@ from app.courses.records import (
 from app.courses.roster_csv import parse_roster
 from app.deps import ServicesDep
 from app.instructor import session as auth
+from app.instructor.builder_fields import LOCAL, fields_of, fields_typed
 from app.instructor.router import PageError, Visitor, _page
 from app.services import Services
 
 router = APIRouter(prefix="/instructor", include_in_schema=False)
 MAX_ROSTER_BYTES = 1_000_000
 _PROBLEM_ID = re.compile(r"^[A-Za-z0-9][A-Za-z0-9._-]{0,99}$")
-_LOCAL = "%Y-%m-%dT%H:%M"  # what <input type="datetime-local"> sends and shows
 
 
 def _course(
@@ -72,13 +72,9 @@ def _assignment(
     return _course(services, who, record.course_id, instructor=True), record
 
 
-def _local(moment: datetime, timezone: str) -> str:
-    return moment.astimezone(ZoneInfo(timezone)).strftime(_LOCAL)
-
-
 def _parse_local(text: str, timezone: str) -> datetime | None:
     try:
-        return datetime.strptime(text.strip(), _LOCAL).replace(tzinfo=ZoneInfo(timezone))
+        return datetime.strptime(text.strip(), LOCAL).replace(tzinfo=ZoneInfo(timezone))
     except ValueError:
         return None
 
@@ -225,7 +221,9 @@ def _builder_context(
     course: CourseRecord,
     record: AssignmentRecord | None,
     query: str,
+    now: datetime,
     chosen: list[str] | None = None,
+    typed: dict[str, str] | None = None,
 ) -> dict[str, Any]:
     colleagues = access.colleagues(services.stores, who.principal)
     shared = services.stores.courses.shared_problems()
@@ -253,9 +251,7 @@ def _builder_context(
         "query": query,
         "bank": bank,
         "picked": picked,
-        "spec": spec,
-        "opens": _local(spec.opens_at, course.timezone) if spec else "",
-        "due": _local(spec.due_at, course.timezone) if spec else "",
+        "fields": typed or fields_of(spec, course.timezone, now),
     }
 
 
@@ -265,7 +261,7 @@ async def new_assignment(
 ) -> Response:
     def load() -> dict[str, Any]:
         course = _course(services, who, course_id, instructor=True)
-        return _builder_context(services, who, course, None, q[:100])
+        return _builder_context(services, who, course, None, q[:100], request.app.state.lti.clock())
 
     values = await run_in_threadpool(load)
     return await _page(
@@ -279,7 +275,7 @@ async def edit_assignment(
 ) -> Response:
     def load() -> dict[str, Any]:
         course, record = _assignment(services, who, assignment_id)
-        return _builder_context(services, who, course, record, q[:100])
+        return _builder_context(services, who, course, record, q[:100], request.app.state.lti.clock())
 
     values = await run_in_threadpool(load)
     return await _page(
@@ -362,15 +358,16 @@ async def _save_builder(
             if not usable:
                 errors.append(f"There is no problem {problem_id!r} of yours.")
         if spec is None or errors:
-            values = _builder_context(services, who, course, record, "", picked)
-            return {**values, "errors": errors, "form_title": str(form.get("title") or "")}
+            now = request.app.state.lti.clock()
+            values = _builder_context(services, who, course, record, "", now, picked, fields_typed(form))
+            return {**values, "errors": errors}
         if record is None:
             return services.stores.courses.create_assignment(course.id, spec).course_id
         return services.stores.courses.update_assignment(record.id, spec).course_id
 
     outcome = await run_in_threadpool(save)
     if isinstance(outcome, int):
-        return RedirectResponse(f"/instructor/courses/{outcome}", status_code=303)
+        return RedirectResponse(f"/instructor/courses/{outcome}?saved=assignment", status_code=303)
     return await _page(
         request, services, who, "instructor/assignment.html", {"title": "Assignment", **outcome}, status=422
     )

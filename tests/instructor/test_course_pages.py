@@ -79,6 +79,7 @@ def test_the_assignment_builder_saves_problems_in_the_chosen_order_and_dates_in_
         },
     )
     assert saved.status_code == 303, saved.text
+    assert "Assignment saved." in signed_in.get(saved.headers["location"]).text  # said, not silent
     [made] = stores.courses.assignments(course)
     assert made.problems == ("yo-yo",) and made.spec.max_attempts == 3
     assert made.spec.due_at.isoformat() == "2026-03-08T22:59:00+00:00"  # 23:59 in Paris (CET)
@@ -319,3 +320,41 @@ def test_a_course_students_problem_and_solution_pages_look_at_their_courses_once
         assert shown.status_code == 200, path
         assert calls == ["opening"], path
     assert "HW 1" in student.get("/p/yo-yo/content").text  # the banner still names the assignment
+
+
+def test_a_refused_assignment_keeps_what_was_typed_and_a_new_one_opens_now(
+    signed_in: TestClient, stores: Stores
+):
+    course = _make_course(signed_in)
+    form = signed_in.get(f"/instructor/courses/{course}/assignments/new")
+    opens = re.search(
+        r'id="a-opens" name="opens_at" type="datetime-local" required value="([^"]*)"', form.text
+    )
+    assert opens and re.fullmatch(r"\d{4}-\d\d-\d\dT\d\d:\d\d", opens.group(1))  # now, in the course's zone
+    assert form.text.index('id="a-title"') < form.text.index('class="problem-picker"')  # settings first
+    refused = signed_in.post(
+        f"/instructor/courses/{course}/assignments/new",
+        data={
+            "csrf": csrf_of(form.text),
+            "title": "Homework 2",
+            "opens_at": "2026-03-01T09:00",
+            "due_at": "2026-03-08T23:59",
+            "late": "penalty",
+            "per_day": "5",
+            "limit": "40",
+            "max_attempts": "4",
+            "solutions": "never",
+        },
+    )
+    assert refused.status_code == 422 and "Pick at least one problem" in refused.text
+    for kept in (
+        'value="Homework 2"',
+        'value="2026-03-01T09:00"',
+        'value="2026-03-08T23:59"',
+        '<option value="penalty" selected',
+        'name="per_day" type="number" min="0" max="100" step="any" value="5"',
+        'name="limit" type="number" min="0" max="100" step="any" value="40"',
+        'name="max_attempts" type="number" min="1" value="4"',
+        '<option value="never" selected',
+    ):
+        assert kept in refused.text, kept

@@ -207,3 +207,35 @@ def test_a_course_runs_from_roster_to_gradebook(live_server: LiveServer, browse:
     home = browse(f"{live_server.url}/courses", width=WIDTHS["desktop"], cookies=desk.context.cookies())
     expect(home.locator(".assignment-list")).to_contain_text("your extension")
     check_page(home, "course-home-desktop")
+
+
+@pytest.mark.parametrize("device", WIDTHS)
+def test_the_builders_search_filters_in_place_keeping_what_was_typed_and_ticked(
+    live_server: LiveServer, browse: Callable[..., Any], device: str
+) -> None:
+    # the search had reloaded the page: the title and dates typed and the problems ticked were lost
+    from playwright.sync_api import expect
+
+    teacher = browse(f"{live_server.url}/instructor/sign-in", width=WIDTHS[device])
+    teacher.get_by_label("Instructor API key").fill(live_server.key("instructor", "Prof Meitner"))
+    teacher.get_by_role("button", name="Sign in").click()
+    teacher.get_by_role("link", name="Courses").click()
+    teacher.get_by_label("Title", exact=True).fill("Waves")
+    teacher.get_by_role("button", name="Create the course").click()
+    teacher.get_by_role("link", name="New assignment").click()
+    builder = teacher.url
+    expect(teacher.get_by_label(re.compile(r"^Opens"))).not_to_have_value("")  # a new one opens now
+    teacher.get_by_label("Title", exact=True).fill("Homework 3")
+    teacher.get_by_label(BANK["atwood"].title, exact=True).check()
+    search = teacher.get_by_label("Find problems by title or topic")
+    search.fill("pendulum")
+    search.press("Enter")
+    expect(teacher.get_by_label(BANK["simple-pendulum"].title, exact=True)).to_be_visible()
+    expect(teacher.get_by_label(BANK["projectile"].title, exact=True)).to_be_hidden()
+    expect(teacher.get_by_label(BANK["atwood"].title, exact=True)).to_be_checked()  # ticked: still listed
+    expect(teacher.locator("#shown-count")).to_have_text("2 problems listed")
+    assert teacher.url == builder
+    expect(teacher.get_by_label("Title", exact=True)).to_have_value("Homework 3")
+    settings, problems = teacher.get_by_label("Title", exact=True), teacher.locator("table.problem-picker")
+    assert settings.bounding_box()["y"] < problems.bounding_box()["y"]  # above the long list, not below
+    check_page(teacher, f"course-builder-search-{device}")

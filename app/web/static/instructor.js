@@ -33,3 +33,30 @@ document.addEventListener("click", (event) => {
   const lineHeight = parseFloat(getComputedStyle(box).lineHeight) || 20;
   box.scrollTop = Math.max(0, (wanted - 3) * lineHeight);
 });
+
+// The assignment builder's search filters the problem rows in place: its form's own GET (kept for a
+// browser without script) reloads the page, losing the settings typed and the problems ticked.
+(function () {
+  const search = document.getElementById("problem-search");
+  const box = document.getElementById("q");
+  const count = document.getElementById("shown-count");
+  if (!search || !box || !count) {
+    return;
+  }
+  const rows = Array.from(document.querySelectorAll("table.problem-picker tbody tr[data-search]"));
+  function filter() {
+    const words = box.value.toLowerCase().split(/\s+/).filter(Boolean);
+    let shown = 0;
+    for (const row of rows) {
+      const ticked = row.querySelector("input[type=checkbox]").checked;
+      row.hidden = !ticked && !words.every((word) => row.dataset.search.includes(word));
+      shown += row.hidden ? 0 : 1;
+    }
+    count.textContent = shown + (shown === 1 ? " problem" : " problems") + " listed";
+  }
+  box.addEventListener("input", filter);
+  search.addEventListener("submit", (event) => {
+    event.preventDefault();
+    filter();
+  });
+})();
