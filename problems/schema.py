@@ -18,6 +18,7 @@ from problems.fields import (
     DEFAULT_SIGFIGS,
     MAX_ATTEMPTS,
     MAX_ITEMS,
+    PART_ID,
     SLUG,
     Attempts,
     Expression,
@@ -88,6 +89,21 @@ KIND_MESSAGES = {
     "union_tag_invalid": f"kind must be {_KIND_LIST}",
     "union_tag_not_found": f"kind is required ({_KIND_LIST})",
 }
+# The document's name patterns in words: an author who wrote `id: Sled Problem` was shown the regular
+# expression itself.
+_PATTERNS_SAID = {
+    SLUG: "must be lower-case letters and digits, words joined by '-' (like sled-on-slope)",
+    PART_ID: "must start with a lower-case letter, then lower-case letters, digits or '_' (like normal_force)",
+    r"^[A-Za-z][A-Za-z0-9_]{0,19}$": "must be a name: a letter, then at most 19 letters, digits or '_'",
+    r"^[A-Za-z][A-Za-z0-9]{0,19}$": "must be a name: a letter, then at most 19 letters or digits",
+}
+
+
+def _pattern_said(ctx: dict[str, Any]) -> str:
+    pattern = str(ctx.get("pattern", ""))
+    return _PATTERNS_SAID.get(pattern, f"must match {pattern}")
+
+
 # A template is formatted with pydantic's context; a function takes that context where a count
 # decides the wording.
 _MESSAGES: dict[str, str | Callable[[dict[str, Any]], str]] = {
@@ -103,7 +119,7 @@ _MESSAGES: dict[str, str | Callable[[dict[str, Any]], str]] = {
     "int_type": "must be a whole number",
     "int_parsing": "must be a whole number",
     "int_from_float": "must be a whole number",
-    "string_pattern_mismatch": "must match {pattern}",
+    "string_pattern_mismatch": _pattern_said,
     "greater_than": "must be > {gt}",
     "greater_than_equal": "must be >= {ge}",
     "less_than_equal": "must be <= {le}",

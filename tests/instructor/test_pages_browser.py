@@ -119,6 +119,8 @@ def test_upload_with_an_error_fix_it_preview_and_save(
     expect(summary).to_contain_text("line ")
     expect(summary).to_be_focused()
     expect(source).to_have_value(broken)  # the text stays, beside its errors
+    # YAML's lines are not wrapped: a wrapped line's rest started at the left, reading as a new key
+    assert source.evaluate("box => getComputedStyle(box).whiteSpace") == "pre"
     check_page(page, f"instructor-upload-error-{device}")
     # "line N" takes the keyboard to that line of the text, selected.
     summary.get_by_role("link", name=re.compile(r"^line \d+$")).first.click()

@@ -150,6 +150,19 @@ SHAPE_CASES = [
     pytest.param(
         _set("parts.0.max_attempts", 0), {"parts[0].max_attempts": "must be >= 1"}, id="zero-attempts"
     ),
+    pytest.param(  # in words, not the regular expression it is checked with
+        _set("id", "Sled Problem"),
+        {"id": "must be lower-case letters and digits, words joined by '-' (like sled-on-slope)"},
+        id="id-said-in-words",
+    ),
+    pytest.param(
+        _set("parts.0.id", "Normal-Force"),
+        {
+            "parts[0].id": "must start with a lower-case letter, then lower-case letters, digits or '_' "
+            "(like normal_force)"
+        },
+        id="part-id-said-in-words",
+    ),
     pytest.param(
         _all(_set("parts.1.tolerance", {"rel": -0.1}), _delete("statement"), _set("given.k.unit", 5)),
         {"parts[1].tolerance.rel": "must be >= 0", "statement": "required", "given.k.unit": "must be text"},
