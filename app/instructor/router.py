@@ -553,7 +553,7 @@ async def problem(
     student = (student or "").strip() or None
     if student is not None and student != who.principal.own_identity:
         _need_key(who)
-    whose = student or who.principal.own_identity
+    whose, whose_name = await run_in_threadpool(_whose, services, who, student)
 
     def load() -> dict[str, Any]:
         catalog = services.catalog
@@ -587,6 +587,7 @@ async def problem(
             "title": context["doc"].title,
             "student": student,
             "whose": whose,
+            "whose_name": whose_name,
             "own": own,
             "saved": saved,
         },
@@ -613,7 +614,7 @@ async def solution(
     student = (student or "").strip() or None
     if student is not None and student != who.principal.own_identity:
         _need_key(who)
-    whose = student or who.principal.own_identity
+    whose, whose_name = await run_in_threadpool(_whose, services, who, student)
 
     def load() -> dict[str, Any]:
         catalog = services.catalog
@@ -641,7 +642,12 @@ async def solution(
         services,
         who,
         "instructor/solution.html",
-        {**context, "title": f"Worked solution: {context['doc'].title}", "whose": whose},
+        {
+            **context,
+            "title": f"Worked solution: {context['doc'].title}",
+            "whose": whose,
+            "whose_name": whose_name,
+        },
     )
 
 
@@ -767,6 +773,16 @@ async def results(problem_id: str, request: Request, services: ServicesDep, who:
 
 def _filters(problem: str | None, student: str | None) -> tuple[str | None, str | None]:
     return (problem or "").strip() or None, (student or "").strip() or None
+
+
+def _whose(services: Services, who: auth.Visitor, student: str | None) -> tuple[str, str]:
+    """The identity whose variant a page shows, and how to name it: the visitor's own preview, or the
+    student typed (by identity, or by a name on the rosters of the visitor's courses)."""
+    if student is None:
+        return who.principal.own_identity, who.principal.own_identity
+    names = access.student_names(services.stores, who.principal)
+    whose = _named_student(student, names)
+    return whose, names.get(whose, whose)
 
 
 def _named_student(typed: str, names: Mapping[str, str]) -> str:

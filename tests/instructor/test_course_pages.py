@@ -15,6 +15,10 @@ from tests.instructor.conftest import csrf_of, new_key, sign_in
 ROSTER = "id,name,email\ns001,Ada Lovelace,ada@uni.example\ns002,Alan Turing,alan@uni.example\n"
 
 
+def _given_values(html: str) -> list[str]:
+    return re.findall(r'<td class="value">([^<]*)</td>', html)
+
+
 def _make_course(client: TestClient) -> int:
     form = client.get("/instructor/courses")
     assert form.status_code == 200
@@ -280,6 +284,16 @@ def test_the_submissions_page_names_a_courses_students_and_finds_them_by_name(
     )
     book = signed_in.get(f"/instructor/courses/{course}/gradebook", params={"student": f"course:{course}:s1"})
     assert f'href="/instructor/submissions?student=course%3A{course}%3As1"' in book.text  # her answers
+    # her variant, by name, as her problem page shows it to her
+    variant = signed_in.get("/instructor/problems/yo-yo", params={"student": "Ada Lovelace"})
+    assert (
+        f'Showing the variant of <strong>Ada Lovelace</strong> <span class="muted">(course:{course}:s1)'
+        in (variant.text)
+    )
+    by_identity = signed_in.get("/instructor/problems/yo-yo", params={"student": f"course:{course}:s1"})
+    assert _given_values(variant.text) and _given_values(variant.text) == _given_values(by_identity.text)
+    hand_out = signed_in.get("/instructor/problems/yo-yo/solution", params={"student": "ada lovelace"})
+    assert f"<strong>Ada Lovelace</strong> (course:{course}:s1)" in hand_out.text
     other = TestClient(signed_in.app, follow_redirects=False)
     sign_in(other, new_key(stores, "instructor", "Prof B"))
     elsewhere = other.get("/instructor/submissions", params={"student": "Ada Lovelace"})
