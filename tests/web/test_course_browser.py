@@ -238,4 +238,14 @@ def test_the_builders_search_filters_in_place_keeping_what_was_typed_and_ticked(
     expect(teacher.get_by_label("Title", exact=True)).to_have_value("Homework 3")
     settings, problems = teacher.get_by_label("Title", exact=True), teacher.locator("table.problem-picker")
     assert settings.bounding_box()["y"] < problems.bounding_box()["y"]  # above the long list, not below
+    # a date or a number had kept the browser's small box beside the full-size title field
+    heights = {
+        name: round(teacher.get_by_label(label).bounding_box()["height"])
+        for name, label in (
+            ("text", re.compile(r"^Title$")),
+            ("date", re.compile(r"^Opens")),
+            ("number", re.compile(r"^Attempts per part")),
+        )
+    }
+    assert max(heights.values()) - min(heights.values()) <= 2, heights
     check_page(teacher, f"course-builder-search-{device}")
