@@ -43,6 +43,7 @@ from app.instructor.described import Described, MistakeInfo, describe
 from app.instructor.findings import Finding, part_findings
 from app.instructor.plots import Bar, bar_chart
 from app.instructor.preview import preview as preview_of
+from app.instructor.starter import starter_source
 from app.lti.platforms import platform_origins
 from app.routers.authoring import store_new_problem, store_new_version
 from app.services import Services
@@ -375,6 +376,7 @@ async def _edit_page(
     warnings: list[dict[str, Any]] | None = None,
     figure: str | None = None,
     status: int = 200,
+    started_from: str | None = None,
 ) -> Response:
     action = "/instructor/problems/new" if problem_id is None else f"/instructor/problems/{problem_id}/edit"
     preview_doc, preview_statement = None, None
@@ -390,6 +392,7 @@ async def _edit_page(
         {
             "title": "New problem" if problem_id is None else f"New version of {problem_id}",
             "problem_id": problem_id,
+            "started_from": started_from,
             "action": action,
             "source": source,
             "errors": errors,
@@ -513,9 +516,20 @@ async def _vet_and_maybe_save_form(
 
 
 @router.get("/problems/new")
-async def new_problem(request: Request, services: ServicesDep, who: Visitor) -> Response:
+async def new_problem(
+    request: Request,
+    services: ServicesDep,
+    who: Visitor,
+    start: Annotated[str | None, Query(alias="from", max_length=64)] = None,
+) -> Response:
     _can_upload(who)
-    return await _edit_page(request, services, who, problem_id=None, source="")
+    source = ""
+    if start:
+        found = await run_in_threadpool(starter_source, start, services.settings.bank_dir)
+        if found is None:
+            raise PageError(404, "No such built-in problem", f"There is no built-in problem {start!r}.")
+        source = found
+    return await _edit_page(request, services, who, problem_id=None, source=source, started_from=start)
 
 
 @router.post("/problems/new")

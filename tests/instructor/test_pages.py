@@ -4,6 +4,7 @@ POST), scoping (an LMS instructor session acts only for itself), and what each p
 from __future__ import annotations
 
 import csv
+import html
 import io
 import re
 import shutil
@@ -246,6 +247,24 @@ def test_unknown_problem_is_a_404_page(signed_in: TestClient):
 
 
 # ---- upload and edit ----------------------------------------------------------------------------------
+
+
+def test_a_new_problem_starts_from_a_built_in_ones_files_under_a_new_id_and_saves(signed_in: TestClient):
+    # the upload page had offered a blank box and a file name (problems/FORMAT.md) it did not serve
+    blank = signed_in.get("/instructor/problems/new")
+    assert "Start a new problem from this one" in blank.text  # where to find the examples
+    assert 'href="/instructor/problems/new?from=yo-yo"' in signed_in.get("/instructor/problems/yo-yo").text
+    started = signed_in.get("/instructor/problems/new", params={"from": "yo-yo"})
+    assert started.status_code == 200
+    source = html.unescape(re.search(r"<textarea[^>]*>(.*?)</textarea>", started.text, re.S).group(1))
+    assert source.startswith("id: yo-yo-copy\n") and "\nmodel:\n  " in source
+    assert "  #" in source  # the model's comments, as its author wrote them
+    saved = signed_in.post(
+        "/instructor/problems/new", data={"csrf": csrf_of(started.text), "source": source, "action": "save"}
+    )
+    assert saved.status_code == 303 and saved.headers["location"] == "/instructor/problems/yo-yo-copy?saved=1"
+    for missing in ("no-such", "../yo-yo", "yo-yo-copy"):  # an upload is edited as a new version instead
+        assert signed_in.get("/instructor/problems/new", params={"from": missing}).status_code == 404
 
 
 def test_upload_shows_every_error_with_its_path_and_line_then_previews_then_saves(signed_in: TestClient):
