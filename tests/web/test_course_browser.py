@@ -249,3 +249,23 @@ def test_the_builders_search_filters_in_place_keeping_what_was_typed_and_ticked(
     }
     assert max(heights.values()) - min(heights.values()) <= 2, heights
     check_page(teacher, f"course-builder-search-{device}")
+
+
+def test_the_join_link_is_copied_with_one_click(live_server: LiveServer, browse: Callable[..., Any]) -> None:
+    from playwright.sync_api import expect
+
+    teacher = browse(f"{live_server.url}/instructor/sign-in", width=WIDTHS["desktop"])
+    teacher.context.grant_permissions(["clipboard-read", "clipboard-write"], origin=live_server.url)
+    teacher.get_by_label("Instructor API key").fill(live_server.key("instructor", "Prof Curie"))
+    teacher.get_by_role("button", name="Sign in").click()
+    teacher.get_by_role("link", name="Courses").click()
+    teacher.get_by_label("Title", exact=True).fill("Optics")
+    teacher.get_by_role("button", name="Create the course").click()
+    teacher.get_by_role("button", name="Make a join code").click()
+    link = teacher.locator("#join-link").inner_text()
+    assert re.fullmatch(rf"{re.escape(live_server.url)}/join/\w+", link)
+    copy = teacher.locator("button[data-copy]")  # by its name it would be lost once it says "Copied"
+    expect(copy).to_have_text("Copy the join link")
+    copy.click()
+    expect(copy).to_have_text("Copied")
+    assert teacher.evaluate("() => navigator.clipboard.readText()") == link

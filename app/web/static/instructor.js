@@ -60,3 +60,21 @@ document.addEventListener("click", (event) => {
     filter();
   });
 })();
+
+// "Copy the join link": the link's text to the clipboard, said on the button (shown only where script
+// runs; selecting the link by hand works everywhere).
+for (const button of document.querySelectorAll("button[data-copy]")) {
+  const source = document.getElementById(button.dataset.copy);
+  if (!source || !navigator.clipboard) {
+    continue;
+  }
+  const label = button.textContent;
+  button.hidden = false;
+  button.addEventListener("click", () => {
+    navigator.clipboard.writeText(source.textContent.trim()).then(
+      () => { button.textContent = "Copied"; },
+      () => { button.textContent = "Select the link to copy it"; },
+    );
+    setTimeout(() => { button.textContent = label; }, 4000);
+  });
+}
