@@ -18,7 +18,7 @@ from starlette.concurrency import run_in_threadpool
 from app.instructor.described import describe
 from app.lti.context import LtiContextDep
 from app.web.layout import page, templates
-from app.web.solution_access import Within, solution_release
+from app.web.solution_access import solution_release
 from app.web.student_page import (
     _FRAGMENT_HEADERS,
     _PROBLEM_ID,
@@ -29,6 +29,7 @@ from app.web.student_page import (
     _load,
     _not_found,
     _refused,
+    solution_within,
 )
 from problems.variants import fill_statement
 
@@ -45,11 +46,7 @@ def solution_context(request: Request, problem_id: str, student: str) -> dict[st
     catalog = services.catalog
     record = catalog.get(problem_id)
     doc = catalog.document(record)
-    opened = loaded.opened  # the page's one look at the student's courses
-    within = None
-    if opened.assignment is not None and opened.due is not None:
-        within = Within(opened.assignment, opened.due, loaded.now)
-    release = solution_release(doc, loaded.work, within)
+    release = solution_release(doc, loaded.work, solution_within(loaded))
     values: dict[str, Any] = {
         "problem_id": problem_id,
         "doc": doc,

@@ -30,6 +30,7 @@ from app.lti.platforms import platform_origins
 from app.lti.sessions import current_session
 from app.web.course_pages import assignment_banner
 from app.web.layout import page, templates
+from app.web.solution_access import Within, solution_release
 from app.web.student_work import ProblemWork, load_work
 from physics.mathinput.render import latex_name
 
@@ -168,8 +169,30 @@ def _load(context: LtiContext, problem_id: str, student: str) -> Loaded | None:
     return Loaded(view, work, figure, opened, now, assignment_banner(opened))
 
 
-def _content_context(loaded: Loaded, problem_id: str, student: str) -> dict[str, Any]:
+def solution_within(loaded: Loaded) -> Within | None:
+    """The assignment whose policy releases the worked solution (None: the problem's own rule)."""
+    opened = loaded.opened
+    if opened.assignment is None or opened.due is None:
+        return None
+    return Within(opened.assignment, opened.due, loaded.now)
+
+
+def _solution_released(request: Request, problem_id: str, loaded: Loaded) -> bool:
+    """Whether the worked solution is open to the student now, so the page can say so (the link had
+    said "shown once it is released" after it was)."""
+    services = getattr(request.app.state, "services", None)
+    if services is None:
+        return False
+    try:
+        doc = services.catalog.document(services.catalog.get(problem_id))
+    except LookupError:
+        return False
+    return solution_release(doc, loaded.work, solution_within(loaded)).released
+
+
+def _content_context(request: Request, loaded: Loaded, problem_id: str, student: str) -> dict[str, Any]:
     return {
+        "solution_released": _solution_released(request, problem_id, loaded),
         "problem_id": problem_id,
         "view": loaded.view,
         "parts": _parts(loaded.view),
@@ -207,7 +230,7 @@ async def student_page(problem_id: str, request: Request, context: LtiContextDep
         "student/problem.html",
         {
             **shell,
-            **_content_context(loaded, problem_id, caller.student),
+            **_content_context(request, loaded, problem_id, caller.student),
             "mode": "session",
             "title": str(loaded.view.get("title", "Problem")),
             "meta": {"csrf-token": caller.csrf_token or ""},
@@ -246,7 +269,7 @@ async def student_content(problem_id: str, request: Request, context: LtiContext
     loaded = await run_in_threadpool(_load, context, problem_id, caller.student)
     if loaded is None:
         return _refused(404, "not found")
-    return _fragment(request, "student/content.html", _content_context(loaded, problem_id, caller.student))
+    return _fragment(request, "student/content.html", _content_context(request, loaded, problem_id, caller.student))
 
 
 @router.get("/p/{problem_id}/parts/{part_id}/work", include_in_schema=False)
@@ -259,7 +282,7 @@ async def part_work(problem_id: str, part_id: str, request: Request, context: Lt
     parts = {part["id"]: part for part in _parts(loaded.view)} if loaded else {}
     if loaded is None or part_id not in parts:
         return _refused(404, "not found")
-    values = {**_content_context(loaded, problem_id, caller.student), "part": parts[part_id]}
+    values = {**_content_context(request, loaded, problem_id, caller.student), "part": parts[part_id]}
     return _fragment(request, "student/work.html", values)
 
 

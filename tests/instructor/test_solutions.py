@@ -158,3 +158,16 @@ def test_a_course_students_solution_page_leads_back_to_their_courses(
     assert 'href="/courses"' in nav and 'href="/problems"' not in nav  # as the problem page's nav
     keyed = TestClient(signed_in.app).get("/p/yo-yo/solution").text  # a key's student: their problems
     assert 'href="/problems"' in keyed.split("<main", 1)[0]
+
+
+def test_the_problem_page_says_when_the_solution_is_released_and_after_the_answer_that_releases_it(
+    client: TestClient, stores: Stores
+) -> None:
+    # the link had kept saying "shown once it is released" after it was
+    headers = _student(stores, "di")
+    assert "shown once it is released" in client.get("/p/yo-yo/content", headers=headers).text
+    file_submissions(stores, [("di", part, "x", RIGHT) for part in PARTS])
+    page = client.get("/p/yo-yo/content", headers=headers).text
+    assert 'id="solution-link"' in page and "released to you" in page and "shown once" not in page
+    work = client.get("/p/yo-yo/parts/tension/work", headers=headers).text  # fetched after an answer
+    assert 'id="solution-link"' in work and "released to you" in work

@@ -127,3 +127,37 @@ def test_problem_list_for_a_student_key_links_every_problem_with_the_students_sc
     )
     page.go_back()
     expect(page.locator(".problem-list > li").first).to_contain_text("Score:")
+
+
+def test_the_answer_that_releases_the_worked_solution_says_so_at_once(
+    live_server: LiveServer, browse: Callable[..., Any]
+) -> None:
+    # the link at the foot of the page had said "shown once it is released" until a reload
+    from playwright.sync_api import expect
+
+    from tests.instructor.test_pages import RIGHT
+
+    problem_id = "skier-friction"
+    version = live_server.stores.problems.get(problem_id).version
+    for part in ("acceleration", "friction_coefficient_numeric", "acceleration_numeric"):
+        live_server.stores.submissions.file(
+            problem_id=problem_id,
+            problem_version=version,
+            part_id=part,
+            student="releaser",
+            answer="x",
+            verdict=RIGHT,
+            max_attempts=None,
+        )
+    key = live_server.key("student", "Releaser", student="releaser")
+    page = open_problem(live_server, browse, problem_id, key, WIDTHS["phone"])
+    link = page.locator("#solution-link")
+    expect(link).to_contain_text("shown once it is released")
+    box = page.locator("#part-friction_coefficient input[name=answer]")
+    box.press_sequentially("tan(alpha)")
+    box.press("Enter")
+    expect(page.locator("#part-friction_coefficient .verdict")).to_have_text(
+        re.compile(r"^Correct\."), timeout=FIRST_USE_MS
+    )
+    expect(link).to_contain_text("released to you")
+    check_page(page, "student-solution-released-phone")

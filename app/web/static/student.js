@@ -296,6 +296,9 @@
           var standing = fragment.querySelector("#standing");
           var current = document.getElementById("standing");
           if (standing && current) { current.innerHTML = standing.innerHTML; }
+          var released = fragment.querySelector("#solution-link");
+          var link = document.getElementById("solution-link");
+          if (released && link) { link.innerHTML = released.innerHTML; }  // this answer may have released it
           var latest = fragment.querySelector(".latest");
           verdict.textContent = "";
           if (lead) { verdict.appendChild(document.createTextNode(lead + " ")); }
