@@ -269,7 +269,9 @@ async def student_content(problem_id: str, request: Request, context: LtiContext
     loaded = await run_in_threadpool(_load, context, problem_id, caller.student)
     if loaded is None:
         return _refused(404, "not found")
-    return _fragment(request, "student/content.html", _content_context(request, loaded, problem_id, caller.student))
+    return _fragment(
+        request, "student/content.html", _content_context(request, loaded, problem_id, caller.student)
+    )
 
 
 @router.get("/p/{problem_id}/parts/{part_id}/work", include_in_schema=False)
