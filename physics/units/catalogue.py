@@ -208,6 +208,19 @@ SI_PREFIXES: tuple[str, ...] = (
     "deca", "hecto", "kilo", "mega", "giga", "tera", "peta", "exa", "zetta", "yotta",
 )  # fmt: skip
 
+_PREFIX_SYMBOL_LIST = (
+    "y", "z", "a", "f", "p", "n", "µ", "m", "c", "d", "da", "h", "k", "M", "G", "T", "P", "E", "Z", "Y",
+)  # fmt: skip
+
+# Each prefix's symbol, for a prefix said apart from a unit's symbol (`micro s`, `kilo m`); the Greek
+# letter's name and the letter typed apart (`mu s`, `µ s`) are the micro sign too.
+PREFIX_SYMBOLS: dict[str, str] = {
+    **dict(zip(SI_PREFIXES, _PREFIX_SYMBOL_LIST, strict=True)),
+    "mu": "µ",
+    "µ": "µ",
+    "μ": "µ",
+}
+
 # LaTeX for prefix symbols that are not plain Latin letters.
 PREFIX_LATEX: dict[str, str] = {"µ": r"\mu "}
 

@@ -24,11 +24,18 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 from physics.dimensions import Dimension, describe
-from physics.errors import AmbiguousInput, ParseError, TooLarge, UnknownUnit
-from physics.units.catalogue import ALIASES, FIRST_WHERE_NONE_FITS, MEANINGS, SI_PREFIXES, TWO_ANGLE_SPELLINGS
+from physics.errors import AmbiguousInput, AnswerError, ParseError, TooLarge, UnknownUnit
+from physics.units.catalogue import (
+    ALIASES,
+    FIRST_WHERE_NONE_FITS,
+    MEANINGS,
+    PREFIX_SYMBOLS,
+    SI_PREFIXES,
+    TWO_ANGLE_SPELLINGS,
+)
 from physics.units.lexer import Kind, Token, tokenize
 from physics.units.parsed import ParsedUnits
-from physics.units.registry import UnitAtom, case_variant, lookup, lookup_piece, pint_unit, suggestion
+from physics.units.registry import UnitAtom, case_variants, lookup, lookup_piece, pint_unit, suggestion
 
 MAX_UNIT_TEXT_LENGTH = 100
 MAX_UNIT_POWER = 12
@@ -92,6 +99,7 @@ class _NameReadings:
     options: tuple[_Option, ...]
     safe: bool
     default: bool = False
+    case_only: bool = False  # every reading is a unit the letters spell in another case (`mc`, `pa`)
 
     @property
     def plain(self) -> bool:
@@ -125,12 +133,13 @@ def _readings(name: str, negative_power: bool) -> _NameReadings:
     # `Kg`, `KJ` are the kilo prefix in capitals; `Nm` stays the newton-metre, never a nanometre.
     slip = not splits or splits[0].factors[0][0].name == "kelvin"
     alias_variant = _ALIASES_BY_FOLDED_CASE.get(name.casefold()) if slip else None  # `Kilos`, `Kgs`
-    variant = alias_variant or (case_variant(name) if slip else None)
-    variant_atom = lookup(variant) if variant is not None else None
+    # Every unit the letters spell in another case: `Ks` is ks or kS (a time or a conductance), and the
+    # expected dimension may choose.
+    variants = () if alias_variant is not None or not slip else case_variants(name)
     if alias_variant is not None:
         options.append(_Option(_alias_factors(ALIASES[alias_variant])))
-    elif variant_atom is not None:
-        options.append(_Option(((variant_atom, 1),)))
+    for variant in variants:
+        options.append(_Option(((_meaning(variant), 1),)))
     unique = list({option.text: option for option in options}.values())
     if not unique:
         # `sqft`, `cuin`; then the long tail by pint's own names (`furlongs`, `fortnight`).
@@ -138,7 +147,12 @@ def _readings(name: str, negative_power: bool) -> _NameReadings:
         other = _squared_or_cubed(name) or (None if pint_only is None else (pint_only, 1))
         if other is not None:
             return _NameReadings((_Option((other,)),), safe=True)
-    return _NameReadings(tuple(unique), safe=len(unique) == 1 and variant is None)
+    case_slip = alias_variant is not None or bool(variants)
+    return _NameReadings(
+        tuple(unique),
+        safe=len(unique) == 1 and not case_slip,
+        case_only=case_slip and not splits and not plural,
+    )
 
 
 # Prefix symbols that are no unit alone, typed apart from the unit they scale (`1.5k N`, `2 M J`).
@@ -147,8 +161,9 @@ _PREFIX_SYMBOLS_ALONE = frozenset({"k", "M"})
 
 def _prefixes_joined(tokens: list[Token]) -> list[Token]:
     """The tokens with a prefix said as a word apart from its unit joined to it (`kilo newtons`,
-    `kilo-newtons`, `micro seconds`), where the two make one unit's spelling: never `kilo` (kg) times a
-    newton."""
+    `kilo-newtons`, `micro seconds`, and before a symbol `micro s`, `kilo m`, `mu s`), where the two make
+    one unit's spelling: never `kilo` (kg) times a newton or a metre, nor `mu` the metre times the
+    atomic mass unit."""
     joined: list[Token] = []
     i = 0
     while i < len(tokens):
@@ -156,16 +171,29 @@ def _prefixes_joined(tokens: list[Token]) -> list[Token]:
         after = tokens[i + 1] if i + 1 < len(tokens) else None
         gap = 2 if after is not None and after.kind is Kind.TIMES and after.text == "-" else 1
         unit = tokens[i + gap] if i + gap < len(tokens) else None
-        if token.kind is Kind.NAME and token.text.lower() in SI_PREFIXES and unit and unit.kind is Kind.NAME:
-            spelling = token.text.lower() + unit.text
-            readings = _readings(spelling, False)
-            if len(readings.options) == 1 and readings.safe and not readings.options[0].split:
+        word = token.text.lower() if token.kind is Kind.NAME else ""
+        if word in PREFIX_SYMBOLS and unit and unit.kind is Kind.NAME:
+            spelling = next((s for s in _prefixed_spellings(word, unit.text) if _one_unit(s)), None)
+            if spelling is not None:
                 joined.append(Token(Kind.NAME, spelling, token.position))
                 i += gap + 1
                 continue
         joined.append(token)
         i += 1
     return joined
+
+
+def _prefixed_spellings(prefix: str, unit: str) -> tuple[str, ...]:
+    """The ways a prefix said apart joins its unit: the word to a name (`kilonewtons`), the symbol to a
+    symbol (`µs`)."""
+    by_symbol = PREFIX_SYMBOLS[prefix] + unit
+    return (prefix + unit, by_symbol) if prefix in SI_PREFIXES else (by_symbol,)
+
+
+def _one_unit(spelling: str) -> bool:
+    """Whether a spelling reads as one unit and one way only."""
+    readings = _readings(spelling, False)
+    return len(readings.options) == 1 and readings.safe and not readings.options[0].split
 
 
 # Aliases by their letters in lower case, where only one alias has them: a case slip's reading.
@@ -215,6 +243,7 @@ class _Parser:
         self.index = 0
         self.choices = choices
         self.open_names: list[tuple[Token, _NameReadings]] = []  # names read more than one way
+        self.names: list[Token] = []  # every name read, for the case slips of a reading that does not fit
 
     @property
     def token(self) -> Token:
@@ -312,6 +341,7 @@ class _Parser:
                 token.position,
                 token.text,
             )
+        self.names.append(token)
         readings = _readings(token.text, power < 0)
         if not readings.options:
             hint = suggestion(token.text)
@@ -374,7 +404,7 @@ class UnitReading:
 _MAX_READINGS = 64  # combinations of readings of glued names tried against the expected dimension
 
 
-def _read(text: str, expected: Dimension | None) -> UnitReading:
+def _read(text: str, expected: Dimension | None, *, case_slips: bool = True) -> UnitReading:
     parser = _Parser(text, {})
     literal = parser.parse()
     open_names = parser.open_names
@@ -382,6 +412,8 @@ def _read(text: str, expected: Dimension | None) -> UnitReading:
     plain = all(readings.plain for _, readings in open_names)
     if (safe and literal.dimension == expected) or (plain and expected is None):
         return UnitReading(literal)
+    if safe and case_slips and expected is not None:
+        _refuse_case_slip(text, parser.names, literal, expected)
     fits: list[ParsedUnits] = []
     if expected is not None:
         fits = _fitting(text, open_names, expected)
@@ -405,6 +437,16 @@ def _read(text: str, expected: Dimension | None) -> UnitReading:
             token.position,
             shown,
         )
+    if readings.case_only and len(shown) > 1:
+        # `mc` for a charge: mC or MC; `pa` with nothing to choose: Pa first, not pA or PA
+        offered = [fit.text for fit in fits] if len(fits) > 1 else [suggestion(token.text) or shown[0]]
+        quoted = [repr(text) for text in offered]
+        either = quoted[0] if len(quoted) == 1 else f"{', '.join(quoted[:-1])} or {quoted[-1]}"
+        raise UnknownUnit(
+            f"Unknown unit {token.text!r} (units are case-sensitive: did you mean {either}?)",
+            token.position,
+            token.text,
+        )
     if len(shown) == 1:
         raise UnknownUnit(
             f"Unknown unit {token.text!r} (units are case-sensitive: did you mean {shown[0]!r}?)",
@@ -416,6 +458,60 @@ def _read(text: str, expected: Dimension | None) -> UnitReading:
         "separating units with a space or ·",
         token.position,
         shown,
+    )
+
+
+# Names this short are tried in every case (`nm` as Nm, a glued N·m); longer ones as the units they spell.
+_MAX_RECASED_LENGTH = 3
+
+
+def _recased(name: str) -> list[str]:
+    """The name's letters in other cases that may be units: `PA` → `Pa`, `pA`; `nm` → `Nm`, `nM`, …"""
+    variants = list(case_variants(name))
+    if len(name) <= _MAX_RECASED_LENGTH and name.isascii() and name.isalpha():
+        for cases in itertools.product(*((c.lower(), c.upper()) for c in name)):
+            spelled = "".join(cases)
+            if spelled != name and spelled not in variants:
+                variants.append(spelled)
+    return variants
+
+
+def _refuse_case_slip(text: str, names: list[Token], literal: ParsedUnits, expected: Dimension) -> None:
+    """A unit that is not the expected dimension but is in another case (`101325 PA`, the petaampere,
+    for a pressure; `4.58 Ms^-2`, per megasecond squared, for an acceleration): refused asking whether
+    the unit in that case was meant, rather than graded as a wrong dimension; nothing is said where no
+    other case fits. A reading with the expected dimension is never questioned (`3 Mm` for mm)."""
+    offered: dict[str, None] = {}
+    slipped: Token | None = None
+    for token in names:
+        at = token.position
+        if text[at : at + len(token.text)] != token.text:
+            continue  # joined from words (`kilo newtons`) or read from LaTeX: not retyped here
+        for variant in _recased(token.text):
+            retyped = text[:at] + variant + text[at + len(token.text) :]
+            try:
+                reading = _read(retyped, expected, case_slips=False)
+            except AnswerError:
+                continue
+            if reading.units.dimension == expected:
+                offered[reading.units.text] = None
+                slipped = slipped or token
+    if slipped is None:
+        return
+    typed = " ".join(text.split())
+    atom = lookup(slipped.text)
+    name = atom.name if atom is not None and "_" not in atom.name else None  # not pint's `gauss_tesla`
+    what = f"{typed} measures {describe(literal.dimension)}"
+    if name is not None and typed == slipped.text:
+        what = f"{typed} is the {name}, {describe(literal.dimension)}"  # PA is the petaampere, a current
+    elif name is not None:
+        what = f"{slipped.text} is the {name}, so {typed} is {describe(literal.dimension)}"
+    shown = list(offered)
+    either = shown[0] if len(shown) == 1 else f"{', '.join(shown[:-1])} or {shown[-1]}"
+    raise AmbiguousInput(
+        f"Units are case-sensitive: {what}, but {describe(expected)} is expected. Did you mean {either}?",
+        slipped.position,
+        [literal.text, *shown],
     )
 
 

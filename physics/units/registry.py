@@ -275,6 +275,21 @@ def _folded_counts() -> dict[str, int]:
     return counts
 
 
+@cache
+def _spellings_by_folded_case() -> dict[str, tuple[str, ...]]:
+    table = spelling_table()
+    index: dict[str, list[str]] = {}
+    for spelling in sorted(table):
+        index.setdefault(spelling.casefold(), []).append(spelling)
+    return {folded: tuple(spellings) for folded, spellings in index.items()}
+
+
+def case_variants(spelling: str) -> tuple[str, ...]:
+    """Every accepted spelling that differs from `spelling` only in case: `Ks` → `kS`, `ks`; `PA` → `Pa`,
+    `pA`. Where several fit, the dimension an answer must have may choose among them."""
+    return tuple(s for s in _spellings_by_folded_case().get(spelling.casefold(), ()) if s != spelling)
+
+
 def case_variant(spelling: str) -> str | None:
     """The one accepted spelling that differs from `spelling` only in case (`Kg` → `kg`), if exactly one
     does: `MM` has two (`mm`, `Mm`), so it has none."""

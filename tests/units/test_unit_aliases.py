@@ -184,6 +184,11 @@ CHOSEN_BY_DIMENSION = [
     ("KM", LENGTH, "km"),
     ("KJ", ENERGY, "kJ"),
     ("Kg m/s^2", FORCE, "kg·m/s^2"),
+    # the letters spell several units in other cases (ks, kS; Pa, pA, PA): only one is the dimension
+    ("Ks", TIME, "ks"),
+    ("KS", TIME, "ks"),
+    ("pa", PRESSURE, "Pa"),
+    ("KPA", PRESSURE, "kPa"),
 ]
 
 
@@ -250,9 +255,60 @@ def test_instructor_units_with_no_safe_reading_are_a_spec_error() -> None:
 
 
 def test_newton_metre_stays_a_newton_metre() -> None:
-    # The case rule applies to a kelvin-led split only: `Nm` is never a nanometre.
+    # The case rule applies to a kelvin-led split only: `Nm` is never read as a nanometre; where a
+    # length is expected it is asked about (CASE_SLIPS below), not read either way.
     assert parse_units("Nm").text == "N·m"
-    assert read_units("Nm", LENGTH).units.text == "N·m"
+    assert read_units("Nm", ENERGY).units.text == "N·m"
+    with pytest.raises(AmbiguousInput, match="Did you mean nm"):
+        read_units("Nm", LENGTH)
+
+
+CASE_SLIPS = [
+    # (answer, spec units, value, the reading offered): a unit that is not the expected dimension, but
+    # is in another case; once graded wrong_dimension (an attempt used for a capital letter)
+    ("101325 PA", "Pa", "101325", "Pa", 7),  # the petaampere
+    ("4.58 Ms^-2", "m/s^2", "4.58", "m/s^2", 5),  # per megasecond squared
+    ("4.58 m/S^2", "m/s^2", "4.58", "m/s^2", 7),  # the siemens
+    ("5 S", "s", "5", "s", 2),
+    ("5 G", "g", "5", "g", 2),  # the gauss
+    ("10 nm", "N m", "10", "N·m", 3),  # a torque typed with a small n: the nanometre
+    ("5 MS", "ms", "5", "ms", 2),  # the megasiemens: ms and Ms are both times, both offered
+]
+
+
+@pytest.mark.parametrize(
+    ("answer", "units", "value", "offered", "position"), CASE_SLIPS, ids=[c[0] for c in CASE_SLIPS]
+)
+def test_a_unit_in_the_wrong_case_is_refused_asking_for_the_case_that_fits(
+    answer: str, units: str, value: str, offered: str, position: int
+) -> None:
+    verdict = check_numeric(answer, NumericSpec(D(value), units))
+    assert verdict.outcome is Outcome.INVALID, verdict.feedback
+    assert verdict.reason is Reason.AMBIGUOUS
+    assert verdict.error is not None
+    assert "case-sensitive" in verdict.error.message
+    assert f"Did you mean {offered}" in verdict.error.message or f" or {offered}?" in verdict.error.message
+    assert verdict.error.position == position
+
+
+CASE_KEPT = [
+    # (answer, spec units, value, reason): a reading with the expected dimension is graded as typed,
+    # whatever another case would make of it
+    ("3 Mm", "mm", "3", Reason.CONSTANT_FACTOR),  # the megametre is a length
+    ("3 MA", "mA", "3", Reason.CONSTANT_FACTOR),  # the megaampere is a current
+    ("5 Ms", "ms", "5", Reason.CONSTANT_FACTOR),
+    ("2 J", "W", "2", Reason.WRONG_DIMENSION),  # no other case of J is a unit
+    ("5 N", "kg", "5", Reason.WRONG_DIMENSION),  # a weight for a mass: a real mistake, graded
+]
+
+
+@pytest.mark.parametrize(("answer", "units", "value", "reason"), CASE_KEPT, ids=[c[0] for c in CASE_KEPT])
+def test_a_unit_is_graded_as_typed_where_no_other_case_is_asked_about(
+    answer: str, units: str, value: str, reason: Reason
+) -> None:
+    verdict = check_numeric(answer, NumericSpec(D(value), units))
+    assert verdict.outcome is Outcome.INCORRECT, verdict.feedback
+    assert verdict.reason is reason
 
 
 SI_ONLY = [

@@ -158,6 +158,14 @@ ANSWERS = [
     ("3000 micro seconds", "s", "0.003"),
     ("3 milli-seconds", "s", "0.003"),
     ("5 kilo", "kg", "5"),  # alone, still the kilogram
+    # before a unit's symbol, the prefix's symbol: once `micro` unknown, `kilo m` the kilogram-metre
+    ("30 micro s", "µs", "30"),
+    ("30 micro-s", "µs", "30"),
+    ("5 kilo m", "km", "5"),
+    ("2 kilo g", "kg", "2"),
+    ("3 mega Pa", "MPa", "3"),
+    ("30 mu s", "µs", "30"),  # the Greek letter's name: once m·u·s, metre by atomic mass unit
+    ("30 µ s", "µs", "30"),
 ]
 
 
