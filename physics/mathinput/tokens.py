@@ -155,6 +155,11 @@ def tokenize(
             token, i = _read_superscript(chars, i, space)
             if tokens and tokens[-1].kind is Kind.OP and tokens[-1].text == "^" and not space:
                 tokens.pop()  # `x^²`: the caret, then the superscript from a palette, is the one power
+            elif _caret_and_minus(tokens) and not space:
+                # `v^-²`: the caret and the minus typed, then the digit from a palette: the power −2
+                assert token.value is not None
+                token = replace(token, value=-token.value, space_before=tokens[-2].space_before)
+                del tokens[-2:]
         elif ch in VULGAR_FRACTIONS:
             if tokens and tokens[-1].kind is Kind.NUM and not space:
                 raise ParseError(
@@ -351,6 +356,18 @@ def _read_number(chars: list[str], i: int, space: bool, limits: InputLimits) -> 
     if shift:
         value *= Fraction(10) ** shift
     return Token(Kind.NUM, literal, start, i, space, value), i
+
+
+def _caret_and_minus(tokens: list[Token]) -> bool:
+    """Whether the tokens end with a `^` and a minus glued to it (`v^-`)."""
+    return (
+        len(tokens) >= 2
+        and tokens[-1].kind is Kind.OP
+        and tokens[-1].text == "-"
+        and not tokens[-1].space_before
+        and tokens[-2].kind is Kind.OP
+        and tokens[-2].text == "^"
+    )
 
 
 def _read_superscript(chars: list[str], i: int, space: bool) -> tuple[Token, int]:

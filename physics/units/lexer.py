@@ -286,6 +286,15 @@ def _tokenize(text: str) -> list[Token]:
                 and tokens[-1].position + len(tokens[-1].text) == start
             ):
                 tokens.pop()  # `s^²`: the caret, then the superscript from a palette, is the one power
+            elif (
+                len(tokens) >= 2
+                and tokens[-1].kind is Kind.MINUS
+                and tokens[-1].position + 1 == start
+                and tokens[-2].kind is Kind.POWER
+                and tokens[-2].position + len(tokens[-2].text) == tokens[-1].position
+            ):
+                del tokens[-2:]  # `s^-²`: the caret and the minus typed, the digit from a palette
+                sign = -sign
             tokens.append(Token(Kind.SUPERSCRIPT, text[start:i], start, sign * value))
         elif char == "*" and text.startswith("**", i):
             i += 2

@@ -24,6 +24,8 @@ TEXTBOOK = [
     ("⅓ x", ("x",), sym("x") / 3),
     ("x^½", ("x",), sympy.sqrt(sym("x"))),
     ("x^²", ("x",), sym("x") ** 2),  # the caret, then a superscript from a palette: one power
+    ("x^-² y", ("x", "y"), sym("y") / sym("x") ** 2),  # the caret and minus typed, then the palette's ²
+    ("x^−³", ("x",), sym("x") ** -3),
     ("x**⁻² y", ("x", "y"), sym("y") / sym("x") ** 2),
     # A vulgar fraction is typed as a number is: a function without brackets takes it with the word
     # glued to it, as `sin 2θ` (not sin(½)·θ)

@@ -18,6 +18,8 @@ SAME_UNITS = [
     ("m*s**-2", "m/s^2"),
     ("m s^(-2)", "m/s^2"),
     ("m s^−2", "m/s^2"),  # Unicode minus
+    ("m s^-²", "m/s^2"),  # the caret and the minus typed, then the palette's ²
+    ("m s^−²", "m/s^2"),
     ("m/(s s)", "m/s^2"),
     ("m/(s*s)", "m/s^2"),
     ("(m/s)/s", "m/s^2"),
