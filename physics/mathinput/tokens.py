@@ -84,6 +84,8 @@ def tokenize(
         start = i
         if (ch.isdigit() and ch.isascii()) or (ch == "." and i + 1 < n and chars[i + 1].isdigit()):
             token, i = _read_number(chars, i, space, limits)
+            if ch == "1" and token.text.startswith("10e"):
+                _refuse_two_powers_of_ten(text, tokens, token)
         elif ch.isalpha():  # a word starts with a letter
             i += 1
             while i < n and (
@@ -356,6 +358,24 @@ def _read_number(chars: list[str], i: int, space: bool, limits: InputLimits) -> 
     if shift:
         value *= Fraction(10) ** shift
     return Token(Kind.NUM, literal, start, i, space, value), i
+
+
+def _refuse_two_powers_of_ten(text: str, tokens: list[Token], ten: Token) -> None:
+    """`3.0×10e8`: a power of ten marked by both ×10 and e, which is 3.0×10^9 as typed; refused (as a
+    numeric answer's literal is), asking which was meant."""
+    if len(tokens) < 2 or tokens[-2].kind is not Kind.NUM:
+        return
+    times = tokens[-1]
+    if times.kind is not Kind.OP or times.text != "*" or text[times.pos : times.end] == "**":
+        return
+    typed = text[ten.pos : ten.end]
+    letter, exponent = typed[2], typed[3:]
+    mantissa = text[tokens[-2].pos : tokens[-2].end]
+    raise LikelySlip(
+        f"Did you mean {mantissa}×10^{exponent} or {mantissa}{letter}{exponent}? ×10 and {letter} each mark a "
+        "power of ten: write one of them, not both",
+        ten.pos + 2,
+    )
 
 
 def _caret_and_minus(tokens: list[Token]) -> bool:

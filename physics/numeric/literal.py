@@ -199,6 +199,7 @@ def _scientific(text: str, i: int, start: int) -> tuple[int, int] | None:
             found = _power_of_ten(text, after)
             if found is None:
                 _refuse_calculator_exponent(text, after)
+                _refuse_two_powers_of_ten(text, text[start:i], after)
                 raise ParseError("Write a power of ten with its exponent, for example 2.5×10^3", after)
             return found
     return None
@@ -227,6 +228,30 @@ def _refuse_calculator_exponent(text: str, after: int) -> None:
     digits_end = _run(text, digits, _DIGITS)
     if digits_end > digits and (minus == after or digits == minus + 1):
         raise CalculatorExponent(text[digits:digits_end], minus)
+
+
+def _refuse_two_powers_of_ten(text: str, mantissa: str, after: int) -> None:
+    """LikelySlip if `e3` (or `E-3`) follows the `×10` ending at `after`: `3.0×10e8` marks the power of
+    ten twice, and is 3.0×10^9 as typed, where 3.0×10^8 is what is meant most often."""
+    if after >= len(text) or text[after] not in "eE":
+        return
+    exponent = _signed_exponent(text, after + 1)
+    if exponent is None:
+        return
+    typed = text[after + 1 : exponent[1]]
+    raise TwoPowersOfTen(mantissa, text[after], typed, after)
+
+
+class TwoPowersOfTen(LikelySlip):
+    """`3.0×10e8`: ×10 and e both mark a power of ten. Read as typed it is 3.0×10^9, which few who type
+    it mean: refused, saying how to write each reading."""
+
+    def __init__(self, mantissa: str, letter: str, exponent: str, position: int) -> None:
+        super().__init__(
+            f"Did you mean {mantissa}×10^{exponent} or {mantissa}{letter}{exponent}? ×10 and {letter} each mark a "
+            f"power of ten: write one of them, not both",
+            position,
+        )
 
 
 def read_number(text: str, start: int = 0) -> NumberLiteral:

@@ -60,6 +60,9 @@ PARSE_ERRORS = [
     ("sin^x", 4, "Write a power of sin as sin^2(x)"),
     ("!x", 0, "Unexpected '!'"),
     ("x⁻", 1, "superscript"),
+    # A power of ten marked by both ×10 and e: not 3.0×10^9, as it read
+    ("3.0×10e8 x", 6, "Did you mean 3.0×10^8 or 3.0e8?"),
+    ("2*10E-3 y", 4, "2×10^-3 or 2E-3"),
     ("x y)", 3, "Unmatched"),
 ]
 

@@ -120,6 +120,7 @@ BLAME = [
     ("m/s^2", "m/s^2", Reason.PARSE_ERROR, 0, "must start with a number"),
     ("pi", "m/s^2", Reason.MISSING_UNITS, 2, "needs units"),
     ("4.58 x 10-3 m/s^2", "m/s^2", Reason.PARSE_ERROR, 9, "Did you mean ×10^-3?"),  # not 45.8 − 3
+    ("2*4.58×10e8 m/s^2", "m/s^2", Reason.PARSE_ERROR, 9, "Did you mean 4.58×10^8 or 4.58e8?"),  # not ×10^9
 ]
 
 

@@ -135,6 +135,11 @@ REFUSED = [
     ("3.0*10-3 s", ParseError, 6, "×10^-3"),
     ("3.0 · 10−12 s", ParseError, 8, "×10^-12"),
     ("3.0 x 10-3", ParseError, 8, "×10^-3"),
+    # A power of ten marked twice: not 3.0×10^9, as it read
+    ("3.0×10e8 m/s", ParseError, 6, "Did you mean 3.0×10^8 or 3.0e8?"),
+    ("3.0 x 10e8 m/s", ParseError, 8, "3.0×10^8 or 3.0e8"),
+    ("3.0*10E-8 m", ParseError, 6, "3.0×10^-8 or 3.0E-8"),
+    ("3.0·10e8", ParseError, 6, "each mark a power of ten"),
     ("1e999999", TooLarge, 2, "power of ten"),
     ("1e-401", TooLarge, 3, "power of ten"),
     ("4.58×10^9999", TooLarge, 8, "power of ten"),
