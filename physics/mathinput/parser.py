@@ -381,6 +381,64 @@ class Parser:
             f"Did you mean {readings[0]} or {readings[1]}? Add parentheses.", caret.pos, readings
         )
 
+    def _divisor_glued_to(self, argument: Node) -> bool:
+        """Whether a `/` and a factor follow a function's bare argument without a space (`sin θ/2`,
+        `√m/k`), so that they may be the argument's, as physics often means them. A bracketed argument
+        says where it ends (`sin(θ)/2`), and so does a space (`sin θ /2`); `√2/2` is (√2)/2, √(2/2)
+        being 1, which no one writes so. An argument ending with a power (`sin θ^2/2`) keeps the reading
+        the note on its power explains."""
+        tokens = self._tokens
+        slash = tokens[self._i]
+        if slash.kind is not Kind.OP or slash.text != "/" or slash.space_before:
+            return False
+        last = argument.rest[-1][1] if isinstance(argument, Product) else argument
+        if isinstance(argument, Group) or isinstance(last, Power) or tokens[self._i - 1].kind is Kind.RPAREN:
+            return False  # `sin θ^2/2`: its power is the question, asked by the powered argument's note
+        if self._glued_factor() != "/":
+            return False
+        divisor, after = tokens[self._i + 1], tokens[self._i + 2]
+        return not (
+            isinstance(argument, Num)
+            and divisor.kind is Kind.NUM
+            and divisor.value == argument.value
+            and (after.space_before or after.kind not in (Kind.NAME, Kind.CONST, Kind.NUM))
+        )
+
+    def _settle_argument(self, func_tok: Token, func: str, argument: Node, power: Node | None) -> Node:
+        """`sin θ/2` is sin(θ)/2 to the grammar, but is often meant sin(θ/2) (`2π√m/k` as 2π√(m/k)):
+        `choices` reads it (by the position of the function or root sign) one way, 0 as the grammar does
+        (the `/` left to the product), 1 with the `/` and the word typed on after it in the argument;
+        without a choice it is refused. A division in that word may be ambiguous in turn."""
+        choice = self._choices.get(func_tok.pos)
+        if choice == 0:
+            return argument
+        items: list[_Item] = []
+        op = self._glued_factor()
+        while op is not None:
+            tok = self._advance() if op == "/" else self._tokens[self._i]
+            items.append(_Item(op, self._raised(self._postfixed()), tok, op == "*"))
+            op = self._glued_factor()
+        if choice == 1:
+            first, items = self._settle_ambiguous_divisions(argument, items)
+            return Product(first, tuple((i.op, i.node) for i in items)) if items else first
+        rest = tuple((i.op, i.node) for i in items)
+        shown = "sqrt" if func in ROOT_SIGNS else func
+
+        def applied(inner: Node) -> Node:
+            if func in ROOT_SIGNS and ROOT_SIGNS[func] != 2:
+                index = Num(str(ROOT_SIGNS[func]), Fraction(ROOT_SIGNS[func]), True)
+                return Power(Group(inner), Group(Product(Num("1", Fraction(1), True), (("/", index),))))
+            call: Node = Call(shown, inner, func_tok.pos)
+            return call if power is None else Power(call, power)
+
+        readings = (
+            render_text(Product(applied(argument), rest), STUDENT_STYLE),
+            render_text(applied(Product(argument, rest)), STUDENT_STYLE),
+        )
+        raise AmbiguousGrouping(
+            f"Did you mean {readings[0]} or {readings[1]}? Add parentheses.", func_tok.pos, readings
+        )
+
     def _exponent(self) -> Node:
         tok = self._tokens[self._i]
         if tok.kind is Kind.OP and tok.text in "+-":
@@ -418,6 +476,8 @@ class Parser:
         if tok.kind is Kind.SQRT:
             self._advance()
             radicand = self._argument(tok, tok.text, bare_function=False)[0]
+            if self._divisor_glued_to(radicand):  # `√m/k`: √m/k or √(m/k)?
+                radicand = self._settle_argument(tok, tok.text, radicand, None)
             index = ROOT_SIGNS[tok.text]
             if index == 2:
                 return Call("sqrt", radicand, tok.pos)
@@ -482,6 +542,8 @@ class Parser:
         if power is not None and _is_minus_one(power) and func in INVERSES:
             func, power = INVERSES[func], None
         argument, outside = self._argument(func_tok, typed, bare_function=bare_function)
+        if outside is None and self._divisor_glued_to(argument):  # `sin θ/2`: sin(θ)/2 or sin(θ/2)?
+            argument = self._settle_argument(func_tok, func, argument, power)
         node: Node = Call(func, argument, func_tok.pos)
         if outside is not None:
             node = Power(node, outside.exponent, outside.pos)

@@ -103,6 +103,55 @@ def test_division_before_a_juxtaposed_product_is_refused_with_both_readings(text
     assert error.message == f"Did you mean {first} or {second}? Add parentheses."
 
 
+AMBIGUOUS_ARGUMENTS = [
+    # (text, position of the function or root, reading 1, reading 2): a bare argument with a `/` typed
+    # on, once read as the first alone (the documented rule), where students mostly mean the second
+    ("sin θ/2", 0, "sin(theta)/2", "sin(theta/2)"),
+    ("2 sin θ/2 cos θ/2", 2, "sin(theta)/2", "sin(theta/2)"),
+    ("sin^2 θ/2", 0, "sin(theta)^2/2", "sin(theta/2)^2"),
+    ("cos ωt/2", 0, "cos(omega·t)/2", "cos(omega·t/2)"),
+    ("2π√m/k", 2, "sqrt(m)/k", "sqrt(m/k)"),
+    ("√a/b c", 0, "sqrt(a)/b", "sqrt(a/b)"),  # the space ends the word, as ever
+    ("sqrt a/b", 0, "sqrt(a)/b", "sqrt(a/b)"),
+    ("∛a/b", 0, "a^(1/3)/b", "(a/b)^(1/3)"),
+    ("ln a/2", 0, "log(a)/2", "log(a/2)"),
+    ("√3/2", 0, "sqrt(3)/2", "sqrt(3/2)"),
+]
+
+
+@pytest.mark.parametrize(
+    ("text", "position", "first", "second"), AMBIGUOUS_ARGUMENTS, ids=[a[0] for a in AMBIGUOUS_ARGUMENTS]
+)
+def test_division_typed_on_to_a_bare_argument_is_refused_with_both_readings(text, position, first, second):
+    with pytest.raises(AmbiguousInput) as caught:
+        read(text, "theta", "omega", "t", "m", "k", "a", "b", "c")
+    error = caught.value
+    assert error.position == position
+    assert error.readings == (first, second)
+    assert error.message == f"Did you mean {first} or {second}? Add parentheses."
+
+
+NOT_AMBIGUOUS_ARGUMENTS = [
+    # (text, reading): brackets or a space say where the argument ends; √(2/2) would be 1
+    ("sin(θ)/2", "sin(theta)/2"),
+    ("sin θ /2", "sin(theta)/2"),
+    ("sin θ / 2", "sin(theta)/2"),
+    ("sin(θ/2)", "sin(theta/2)"),
+    ("√(m/k)/2", "sqrt(m/k)/2"),
+    ("√m/√k", "sqrt(m)/sqrt(k)"),
+    ("sin θ/cos θ", "sin(theta)/cos(theta)"),
+    ("√2/2", "sqrt(2)/2"),
+    ("√3/3", "sqrt(3)/3"),
+]
+
+
+@pytest.mark.parametrize(
+    ("text", "reading"), NOT_AMBIGUOUS_ARGUMENTS, ids=[a[0] for a in NOT_AMBIGUOUS_ARGUMENTS]
+)
+def test_a_bare_argument_whose_end_is_shown_is_read(text, reading):
+    assert read(text, "theta", "m", "k").read_as.text == reading
+
+
 NOT_AMBIGUOUS = ["a/b*c", "a/(b c)", "a b/c", "(a/b) c", "a/b + c", "a/b/c", "1/2 a b", "a/b^2*c"]
 
 

@@ -29,6 +29,7 @@ DECAY = (
     SymbolDecl("b", "kg/s"),
     SymbolDecl("m", "kg"),
 )
+WAVE = (SymbolDecl("A", "m"), SymbolDecl("k", "1"), SymbolDecl("x", "m"))
 DROP = (SymbolDecl("g", "m/s^2"), SymbolDecl("h", "m"), SymbolDecl("k", "N/m"), SymbolDecl("m", "kg"))
 CIRCUIT = (SymbolDecl("V0", "V"), SymbolDecl("t", "s"), SymbolDecl("R", "ohm"), SymbolDecl("C", "F"))
 PURE = (SymbolDecl("x", "1"), SymbolDecl("y", "1"))
@@ -67,6 +68,10 @@ SETTLED = [
     # a root as students type it: (2gh)^1 halved is no speed
     ("(2gh)^1/2", "sqrt(2*g*h)", DROP, "(2*g*h)**(1/2)", "a speed"),
     ("2π (k/m)^-1/2", "2*pi*sqrt(m/k)", DROP, "2*pi*(k/m)**(-1/2)", "a time"),
+    # a root or a function without brackets, a `/` typed on: √m/k would be no time, sin of x/L's x no angle
+    ("2π√m/k", "2*pi*sqrt(m/k)", DROP, "2*pi*sqrt(m/k)", "a time"),
+    ("2πsqrt m/k", "2*pi*sqrt(m/k)", DROP, "2*pi*sqrt(m/k)", "a time"),
+    ("A sin kx/A", "A*sin(k*x/A)", WAVE, "A*sin(k*x/A)", "a length"),
 ]
 
 
@@ -119,6 +124,11 @@ REFUSED = [
     ("e^x/2", "exp(x)/2", PURE, "Both readings are a pure number"),  # e^x/2 or e^(x/2)
     ("x^1/2", "sqrt(x)", PURE, "Both readings are a pure number"),  # x/2 or √x
     ("A e^-ωt^2", "A*exp(-omega*t)", DECAY, "Add parentheses"),  # neither exponent is a pure number
+    # a function's or a root's bare argument with a `/` typed on: sin(x)/2 or sin(x/2)?
+    ("sin x/2", "sin(x/2)", PURE, "Both readings are a pure number"),
+    ("y sin x/2", "y*sin(x)/2", PURE, "Both readings are a pure number"),
+    ("√x/y", "sqrt(x/y)", PURE, "Both readings are a pure number"),
+    ("sqrt 2gh/3", "sqrt(2*g*h/3)", DROP, "Both readings are a speed"),
 ]
 
 
