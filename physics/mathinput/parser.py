@@ -455,8 +455,29 @@ class Parser:
     def _postfixes(self, node: Node) -> Node:
         while self._tokens[self._i].kind is Kind.POSTFIX:
             tok = self._advance()
-            node = Postfix(_POSTFIX_KINDS[tok.text], node, tok.pos)
+            kind = _POSTFIX_KINDS[tok.text]
+            if kind == "degrees":
+                self._refuse_degrees_of_symbols(node, tok)
+            node = Postfix(kind, node, tok.pos)
         return node
+
+    def _refuse_degrees_of_symbols(self, node: Node, sign: Token) -> None:
+        """`cos(θ°)`, `sin (90-θ)°`: a symbol is an angle already (a problem's θ given as 30° is π/6), so
+        θ° would be θ·π/180, which no one means by it; refused, saying where the ° goes."""
+        name = _first_name(node)
+        if name is None:
+            return
+        if isinstance(node, Name):
+            raise ParseError(
+                f"{self._source[self._tokens[self._i - 2].pos : sign.pos].strip()} is an angle already: "
+                f"leave out the {self._typed(sign)} after it (a ° goes after a number, as in 30°).",
+                sign.pos,
+            )
+        raise ParseError(
+            f"The {self._typed(sign)} applies to all that comes before it, and {name} in it is an angle already: "
+            "put the ° after the numbers alone, as in (90° - θ).",
+            sign.pos,
+        )
 
     def _atom(self) -> Node:
         tok = self._tokens[self._i]
@@ -663,6 +684,28 @@ class Parser:
         if tok.kind is Kind.BAR:
             raise ParseError("Unexpected '|'.", tok.pos)
         raise ParseError(f"Unexpected '{self._typed(tok)}'.", tok.pos)
+
+
+def _first_name(node: Node) -> str | None:
+    """The first symbol in the tree, or None: whether a degree sign is put on a symbol."""
+    stack = [node]
+    while stack:
+        current = stack.pop()
+        if isinstance(current, Name):
+            return current.name
+        if isinstance(current, (Group, Neg, Postfix)):
+            stack.append(current.inner if isinstance(current, Group) else current.operand)
+        elif isinstance(current, Sum):
+            stack.extend(term for _, term in reversed(current.rest))
+            stack.append(current.first)
+        elif isinstance(current, Product):
+            stack.extend(factor for _, factor in reversed(current.rest))
+            stack.append(current.first)
+        elif isinstance(current, Power):
+            stack.extend((current.exponent, current.base))
+        elif isinstance(current, Call):
+            stack.append(current.arg)
+    return None
 
 
 def _superscript_node(tok: Token) -> Node:

@@ -60,6 +60,10 @@ PARSE_ERRORS = [
     ("sin^x", 4, "Write a power of sin as sin^2(x)"),
     ("!x", 0, "Unexpected '!'"),
     ("x⁻", 1, "superscript"),
+    # A degree sign on a symbol, which is an angle already: not θ·π/180, as it read
+    ("cos(x°)", 5, "x is an angle already: leave out the ° after it"),
+    ("2 sin x deg", 8, "leave out the deg"),
+    ("sin (90-x)°", 10, "put the ° after the numbers alone"),
     # A power of ten marked by both ×10 and e: not 3.0×10^9, as it read
     ("3.0×10e8 x", 6, "Did you mean 3.0×10^8 or 3.0e8?"),
     ("2*10E-3 y", 4, "2×10^-3 or 2E-3"),
