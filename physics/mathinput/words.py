@@ -102,7 +102,8 @@ def resolve_words(tokens: list[Token], table: NameTable) -> list[Token]:
         raise UnknownSymbol(
             f'Unknown symbol "{word}". Symbols you can use: {listed} (and {constants}).'
             + _greek_stand_in_hint(word, allowed)
-            + _letter_o_hint(word, allowed),
+            + _letter_o_hint(word, allowed)
+            + _capital_pi_hint(word),
             tok.pos,
             word,
             allowed,
@@ -197,6 +198,17 @@ def _split_tokens(pieces: list[Part | tuple[str, int, int]], tok: Token) -> list
 
 # Latin letters students type for a Greek one that looks alike: `wt` for ωt, `u` for μ.
 _STAND_INS = {"w": ("omega", "ω"), "u": ("mu", "μ")}
+
+
+# π as a calculator, a spreadsheet (`PI()`) or Mathematica (`Pi`) spells it, and the capital letter
+_CAPITAL_PIS = frozenset({"PI", "Pi", "pI", "Π"})
+
+
+def _capital_pi_hint(word: str) -> str:
+    """A sentence for `PI`, `Pi`, `Π` (not declared, or the word would be read), or ""."""
+    if word in _CAPITAL_PIS or (word[:2] in _CAPITAL_PIS and len(word) > 2) or word[:1] == "Π":
+        return " If you mean the number π, type pi or π (in small letters)."
+    return ""
 
 
 def _letter_o_hint(word: str, declared: Sequence[str]) -> str:

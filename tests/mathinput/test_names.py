@@ -142,7 +142,7 @@ def test_unknown_symbol_is_refused_listing_the_allowed_names(typed, declared, sy
 
 # A slip for a declared name, pointed out after the list of names: a Latin stand-in for a Greek letter,
 # the letter o typed for a zero subscript. Each hint's start, which must be absent where it has no case.
-STAND_IN, LETTER_O = "stands for", "with a zero"
+STAND_IN, LETTER_O, CAPITAL_PI = "stands for", "with a zero", "the number π"
 SLIP_HINTS = [
     # (typed, declared, which hint, the sentence the refusal must hold, or None: no such hint)
     ("wt", ("omega", "t"), STAND_IN, "If w stands for ω, type omega or ω."),
@@ -155,6 +155,11 @@ SLIP_HINTS = [
     ("xO + v_0 t", ("x_0", "v_0", "t"), LETTER_O, "If xO is x with a zero, type x0 or x_0"),
     ("vo t", ("v", "t"), LETTER_O, None),  # no v_0 to mean
     ("go t", ("v_0", "g", "t"), LETTER_O, None),
+    # π as a calculator, a spreadsheet or Mathematica spells it, and the capital letter
+    ("2 PI x", ("x",), CAPITAL_PI, "If you mean the number π, type pi or π (in small letters)."),
+    ("2Pi x", ("x",), CAPITAL_PI, "type pi or π"),
+    ("2Π x", ("x",), CAPITAL_PI, "type pi or π"),
+    ("2 Px", ("x",), CAPITAL_PI, None),
 ]
 
 
