@@ -119,10 +119,13 @@ def _readings(name: str, negative_power: bool) -> _NameReadings:
     if meanings is not None:
         return _NameReadings(tuple(_Option(((_meaning(m), 1),)) for m in meanings), safe=False, default=True)
     alias = ALIASES.get(name)
-    if alias is not None:
+    if alias is not None and not negative_power:
         return _NameReadings((_Option(_alias_factors(alias)),), safe=True)
-    atom = lookup(name)
     splits = tuple(_Option(tuple((a, 1) for a in split), split=True) for split in _splits(name))
+    if alias is not None:  # `rads^-1`: per radian, or rad·s⁻¹ as a student means it (not `mps` as m·ps)
+        plain_splits = tuple(split for split in splits if _unprefixed(split.factors))
+        return _NameReadings((_Option(_alias_factors(alias)), *plain_splits), safe=True)
+    atom = lookup(name)
     if atom is not None:
         return _NameReadings((_Option(((atom, 1),)), *(splits if negative_power else ())), safe=True)
     options = list(splits)
@@ -466,14 +469,23 @@ _MAX_RECASED_LENGTH = 3
 
 
 def _recased(name: str) -> list[str]:
-    """The name's letters in other cases that may be units: `PA` → `Pa`, `pA`; `nm` → `Nm`, `nM`, …"""
+    """The name's letters in other cases that are units: `PA` → `Pa`, `pA`; `nm` → `Nm` (N·m), but not
+    `mps` → `mPs`: a glued name in another case only where its units have no prefix."""
     variants = list(case_variants(name))
     if len(name) <= _MAX_RECASED_LENGTH and name.isascii() and name.isalpha():
         for cases in itertools.product(*((c.lower(), c.upper()) for c in name)):
             spelled = "".join(cases)
-            if spelled != name and spelled not in variants:
+            if spelled == name or spelled in variants:
+                continue
+            readings = _readings(spelled, False)
+            if len(readings.options) == 1 and readings.safe and _unprefixed(readings.options[0].factors):
                 variants.append(spelled)
     return variants
+
+
+def _unprefixed(factors: Factors) -> bool:
+    """Whether no unit of `factors` has a prefix: a glued name read as `rad·s`, `N·m`, not `m·ps`."""
+    return not any(atom.name.startswith(SI_PREFIXES) for atom, _ in factors)
 
 
 def _refuse_case_slip(text: str, names: list[Token], literal: ParsedUnits, expected: Dimension) -> None:

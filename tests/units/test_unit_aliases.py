@@ -189,6 +189,8 @@ CHOSEN_BY_DIMENSION = [
     ("KS", TIME, "ks"),
     ("pa", PRESSURE, "Pa"),
     ("KPA", PRESSURE, "kPa"),
+    # an alias with a negative power: per radian, or rad·s⁻¹ (once graded as a pure number)
+    ("rads^-1", Dimension({"time": -1}), "rad/s"),
 ]
 
 
