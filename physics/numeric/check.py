@@ -142,7 +142,7 @@ def _wrong_dimension(read: NumericAnswer, answer_units: ParsedUnits, target: Par
 
 
 # A trigonometric function of a bare whole or decimal number: `sin(28)`, `cos 60`, radians as typed.
-_TRIG_OF_A_NUMBER = re.compile(r"\b(sin|cos|tan)(\s*\(\s*|\s+)(\d+(?:\.\d+)?)(?![\d.°])")
+_TRIG_OF_A_NUMBER = re.compile(r"(?<![A-Za-z])(sin|cos|tan)(\s*\(\s*|\s+)(\d+(?:\.\d+)?)(?![\d.°])")
 
 
 def check_numeric(answer: str, spec: NumericSpec) -> Verdict:

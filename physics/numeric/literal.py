@@ -189,6 +189,8 @@ def _scientific(text: str, i: int, start: int) -> tuple[int, int] | None:
             )
         return found
     j = skip_spaces(text, i)
+    if j > i and j < len(text) and text[j] in "eE":
+        _refuse_spaced_exponent(text, text[start:i], j)
     times_end = _times_sign_end(text, j)
     if times_end is not None:
         k = skip_spaces(text, times_end)
@@ -228,6 +230,21 @@ def _refuse_calculator_exponent(text: str, after: int) -> None:
     digits_end = _run(text, digits, _DIGITS)
     if digits_end > digits and (minus == after or digits == minus + 1):
         raise CalculatorExponent(text[digits:digits_end], minus)
+
+
+_SPACED_EXPONENT = re.compile(r"[eE][-−+]?\d+(?![\w.])")
+
+
+def _refuse_spaced_exponent(text: str, mantissa: str, at: int) -> None:
+    """LikelySlip for `1.6 E-19 C`: a power of ten typed apart from its number, which the units would read
+    as a unit E to the power −19."""
+    found = _SPACED_EXPONENT.match(text, at)
+    if found is not None:
+        typed = found.group().replace("−", "-")
+        raise LikelySlip(
+            f"Did you mean {mantissa}{typed}? Write a power of ten without a space before its {typed[0]}",
+            at,
+        )
 
 
 def _refuse_two_powers_of_ten(text: str, mantissa: str, after: int) -> None:

@@ -205,6 +205,8 @@ WORDING = [
     ("100 lbf", NumericSpec(D("100"), "N"), "would be right in other units"),
     ("9.8*sin(28) m/s^2", NumericSpec(D("4.6007"), "m/s^2"), "right with its angles in degrees"),
     ("9.8 cos 62 m/s^2", NumericSpec(D("4.6007"), "m/s^2"), "unless it has a degree sign, as in cos(62°)."),
+    ("9.8sin(28) m/s^2", NumericSpec(D("4.6007"), "m/s^2"), "right with its angles in degrees"),  # glued
+    ("2π√0.5/20 s", NumericSpec(D("0.9935"), "s"), "Did you mean sqrt(0.5)/20 or sqrt(0.5/20)?"),
     ("4.58 ± 0.05 m/s^2", ACCEL, "Give one value, without its uncertainty (± …)"),
     ("(4.58 ± 0.05) m/s^2", ACCEL, "without its uncertainty (± …)"),
     ("4.58 +/- 0.05 m/s^2", ACCEL, "without its uncertainty (+/- …)"),

@@ -135,6 +135,9 @@ REFUSED = [
     ("3.0*10-3 s", ParseError, 6, "×10^-3"),
     ("3.0 · 10−12 s", ParseError, 8, "×10^-12"),
     ("3.0 x 10-3", ParseError, 8, "×10^-3"),
+    # A power of ten typed apart from its number: not a unit E to the power −19
+    ("1.6 E-19 C", ParseError, 4, "Did you mean 1.6E-19?"),
+    ("3.0 e8 m/s", ParseError, 4, "Did you mean 3.0e8?"),
     # A power of ten marked twice: not 3.0×10^9, as it read
     ("3.0×10e8 m/s", ParseError, 6, "Did you mean 3.0×10^8 or 3.0e8?"),
     ("3.0 x 10e8 m/s", ParseError, 8, "3.0×10^8 or 3.0e8"),
