@@ -381,19 +381,22 @@ class Parser:
             f"Did you mean {readings[0]} or {readings[1]}? Add parentheses.", caret.pos, readings
         )
 
-    def _divisor_glued_to(self, argument: Node) -> bool:
+    def _divisor_glued_to(self, argument: Node, *, root: bool = False) -> bool:
         """Whether a `/` and a factor follow a function's bare argument without a space (`sin θ/2`,
-        `√m/k`), so that they may be the argument's, as physics often means them. A bracketed argument
-        says where it ends (`sin(θ)/2`), and so does a space (`sin θ /2`); `√2/2` is (√2)/2, √(2/2)
-        being 1, which no one writes so. An argument ending with a power (`sin θ^2/2`) keeps the reading
-        the note on its power explains."""
+        `√m/k`), or a bracket follows a root's (`√2gL(1 - cos θ)`), so that they may be the argument's,
+        as physics often means them. A bracketed argument says where it ends (`sin(θ)/2`), and so does a
+        space (`sin θ /2`); `√2/2` is (√2)/2, √(2/2) being 1, which no one writes so, and `√2(1 + x)` is
+        √2·(1 + x), as printed. An argument ending with a power (`sin θ^2/2`) keeps the reading the note
+        on its power explains."""
         tokens = self._tokens
-        slash = tokens[self._i]
-        if slash.kind is not Kind.OP or slash.text != "/" or slash.space_before:
+        follower = tokens[self._i]
+        if follower.space_before or isinstance(argument, Group) or tokens[self._i - 1].kind is Kind.RPAREN:
             return False
         last = argument.rest[-1][1] if isinstance(argument, Product) else argument
-        if isinstance(argument, Group) or isinstance(last, Power) or tokens[self._i - 1].kind is Kind.RPAREN:
+        if isinstance(last, Power):
             return False  # `sin θ^2/2`: its power is the question, asked by the powered argument's note
+        if root and self._glued_bracket():
+            return not isinstance(argument, Num)  # `√2(1 + x)` is √2·(1 + x), as printed
         if self._glued_factor() != "/":
             return False
         divisor, after = tokens[self._i + 1], tokens[self._i + 2]
@@ -404,7 +407,24 @@ class Parser:
             and (after.space_before or after.kind not in (Kind.NAME, Kind.CONST, Kind.NUM))
         )
 
-    def _settle_argument(self, func_tok: Token, func: str, argument: Node, power: Node | None) -> Node:
+    def _glued_bracket(self) -> bool:
+        """Whether a bracket (not a vulgar fraction's) opens here, typed on without a space."""
+        tok = self._tokens[self._i]
+        return (
+            tok.kind is Kind.LPAREN
+            and not tok.space_before
+            and self._source[tok.pos : tok.pos + 1] in OPENERS
+        )
+
+    def _argument_follower(self, root: bool) -> Literal["*", "/"] | None:
+        """How the word typed on after a bare argument goes on: `_glued_factor`'s, or for a root a
+        bracket (`*`)."""
+        op = self._glued_factor()
+        return "*" if op is None and root and self._glued_bracket() else op
+
+    def _settle_argument(
+        self, func_tok: Token, func: str, argument: Node, power: Node | None, *, root: bool = False
+    ) -> Node:
         """`sin θ/2` is sin(θ)/2 to the grammar, but is often meant sin(θ/2) (`2π√m/k` as 2π√(m/k)):
         `choices` reads it (by the position of the function or root sign) one way, 0 as the grammar does
         (the `/` left to the product), 1 with the `/` and the word typed on after it in the argument;
@@ -413,11 +433,11 @@ class Parser:
         if choice == 0:
             return argument
         items: list[_Item] = []
-        op = self._glued_factor()
+        op = self._argument_follower(root)
         while op is not None:
             tok = self._advance() if op == "/" else self._tokens[self._i]
             items.append(_Item(op, self._raised(self._postfixed()), tok, op == "*"))
-            op = self._glued_factor()
+            op = self._argument_follower(root)
         if choice == 1:
             first, items = self._settle_ambiguous_divisions(argument, items)
             return Product(first, tuple((i.op, i.node) for i in items)) if items else first
@@ -497,8 +517,8 @@ class Parser:
         if tok.kind is Kind.SQRT:
             self._advance()
             radicand = self._argument(tok, tok.text, bare_function=False)[0]
-            if self._divisor_glued_to(radicand):  # `√m/k`: √m/k or √(m/k)?
-                radicand = self._settle_argument(tok, tok.text, radicand, None)
+            if self._divisor_glued_to(radicand, root=True):  # `√m/k`: √m/k or √(m/k)?
+                radicand = self._settle_argument(tok, tok.text, radicand, None, root=True)
             index = ROOT_SIGNS[tok.text]
             if index == 2:
                 return Call("sqrt", radicand, tok.pos)
@@ -563,8 +583,11 @@ class Parser:
         if power is not None and _is_minus_one(power) and func in INVERSES:
             func, power = INVERSES[func], None
         argument, outside = self._argument(func_tok, typed, bare_function=bare_function)
-        if outside is None and self._divisor_glued_to(argument):  # `sin θ/2`: sin(θ)/2 or sin(θ/2)?
-            argument = self._settle_argument(func_tok, func, argument, power)
+        root = func == "sqrt"
+        if outside is None and self._divisor_glued_to(
+            argument, root=root
+        ):  # `sin θ/2`: sin(θ)/2 or sin(θ/2)?
+            argument = self._settle_argument(func_tok, func, argument, power, root=root)
         node: Node = Call(func, argument, func_tok.pos)
         if outside is not None:
             node = Power(node, outside.exponent, outside.pos)

@@ -120,6 +120,9 @@ AMBIGUOUS_ARGUMENTS = [
     ("∛a/b", 0, "a^(1/3)/b", "(a/b)^(1/3)"),
     ("ln a/2", 0, "log(a)/2", "log(a/2)"),
     ("√3/2", 0, "sqrt(3)/2", "sqrt(3/2)"),
+    # a root's bare argument with a bracket typed on: the root's bar often reaches over it
+    ("√2a(1 - b)", 0, "sqrt(2·a)·(1 - b)", "sqrt(2·a·(1 - b))"),
+    ("sqrt 2a(1 - b)", 0, "sqrt(2·a)·(1 - b)", "sqrt(2·a·(1 - b))"),
 ]
 
 
@@ -146,6 +149,10 @@ NOT_AMBIGUOUS_ARGUMENTS = [
     ("sin θ/cos θ", "sin(theta)/cos(theta)"),
     ("√2/2", "sqrt(2)/2"),
     ("√3/3", "sqrt(3)/3"),
+    ("√2(m + k)", "sqrt(2)*(m + k)"),  # a number's root before a bracket, as printed
+    ("√(2m)(1 + k)", "sqrt(2*m)*(1 + k)"),
+    ("√2m (1 + k)", "sqrt(2*m)*(1 + k)"),
+    ("sin θ(1 + k)", "sin(theta)*(1 + k)"),  # a function's: the bracket is no part of its argument
 ]
 
 

@@ -29,6 +29,7 @@ DECAY = (
     SymbolDecl("b", "kg/s"),
     SymbolDecl("m", "kg"),
 )
+SWING = (SymbolDecl("g", "m/s^2"), SymbolDecl("L", "m"), SymbolDecl("theta", "1"))
 WAVE = (SymbolDecl("A", "m"), SymbolDecl("k", "1"), SymbolDecl("x", "m"))
 DROP = (SymbolDecl("g", "m/s^2"), SymbolDecl("h", "m"), SymbolDecl("k", "N/m"), SymbolDecl("m", "kg"))
 CIRCUIT = (SymbolDecl("V0", "V"), SymbolDecl("t", "s"), SymbolDecl("R", "ohm"), SymbolDecl("C", "F"))
@@ -129,6 +130,7 @@ REFUSED = [
     ("y sin x/2", "y*sin(x)/2", PURE, "Both readings are a pure number"),
     ("√x/y", "sqrt(x/y)", PURE, "Both readings are a pure number"),
     ("sqrt 2gh/3", "sqrt(2*g*h/3)", DROP, "Both readings are a speed"),
+    ("√2gL(1 - cos θ)", "sqrt(2*g*L*(1 - cos(theta)))", SWING, "Both readings are a speed"),  # √(2gL)·(…)
 ]
 
 
