@@ -167,6 +167,8 @@ ALIASES: dict[str, str] = {
     "ms-1": "m/s", "ms-2": "m/s^2",
     # The one-character degree Celsius and Fahrenheit signs, and the degree typed as a letter o
     "℃": "°C", "℉": "°F", "oC": "°C", "oF": "°F",
+    # and the degree sign typed after the scale's letter (`25 C°`): never a coulomb times a degree
+    "C°": "°C", "F°": "°F",
 }  # fmt: skip
 
 # Spellings with more than one meaning, each meaning a unit spelling. The first is pint's, taken where no

@@ -54,6 +54,9 @@ _SINGLE = {
     ")": Kind.RPAREN,
     "-": Kind.MINUS,
     "−": Kind.MINUS,  # Unicode minus
+    "–": Kind.MINUS,  # the en dash a word processor makes of a minus (`m s–2`)
+    "‐": Kind.MINUS,  # the hyphen and the non-breaking hyphen of a word processor
+    "‑": Kind.MINUS,
     "+": Kind.PLUS,
 }
 # Words that are operators, as a student says a unit: no unit has these names.
@@ -85,9 +88,13 @@ def _is_name_char(char: str) -> bool:
     return char.isalpha() or char in "°_℃℉"
 
 
+_MINUS_SIGNS = "-−–‐‑"  # the minus, and the dashes a word processor makes of one
+_AS_HYPHEN = str.maketrans(dict.fromkeys(_MINUS_SIGNS[1:], "-"))
+
+
 def _glued_negative_power(text: str, i: int) -> int | None:
-    """The end of a `-2` glued to the name ending at i (`s-2`), or None."""
-    if i + 1 < len(text) and text[i] in "-−" and text[i + 1] in "0123456789":
+    """The end of a `-2` glued to the name ending at i (`s-2`, `s–2`), or None."""
+    if i + 1 < len(text) and text[i] in _MINUS_SIGNS and text[i + 1] in "0123456789":
         end = i + 1
         while end < len(text) and text[end] in "0123456789":
             end += 1
@@ -243,8 +250,9 @@ def _tokenize(text: str) -> list[Token]:
                 continue
             glued_power = i < n and text[i] in "0123456789"
             power_end = _glued_negative_power(text, i)
-            if power_end is not None and text[start:power_end].replace("−", "-") in ALIASES:
-                tokens.append(Token(Kind.NAME, text[start:power_end].replace("−", "-"), start))
+            spelled = text[start:power_end].translate(_AS_HYPHEN) if power_end is not None else ""
+            if spelled in ALIASES:  # `ms-1`, `ms–1`
+                tokens.append(Token(Kind.NAME, spelled, start))
                 i = power_end
                 continue
             words = _word_tokens(text[start:i], start, first=not tokens)
@@ -290,10 +298,11 @@ def _tokenize(text: str) -> list[Token]:
                 len(tokens) >= 2
                 and tokens[-1].kind is Kind.MINUS
                 and tokens[-1].position + 1 == start
-                and tokens[-2].kind is Kind.POWER
+                and tokens[-2].kind in (Kind.POWER, Kind.NAME)
                 and tokens[-2].position + len(tokens[-2].text) == tokens[-1].position
             ):
-                del tokens[-2:]  # `s^-²`: the caret and the minus typed, the digit from a palette
+                # `s^-²`, `s-²`: the caret or the unit and the minus typed, the digit from a palette
+                del tokens[-1 if tokens[-2].kind is Kind.NAME else -2 :]
                 sign = -sign
             tokens.append(Token(Kind.SUPERSCRIPT, text[start:i], start, sign * value))
         elif char == "*" and text.startswith("**", i):
@@ -303,7 +312,7 @@ def _tokenize(text: str) -> list[Token]:
             i += 1  # the full stop of a sentence: `4.58 m/s^2.`
         elif char == "." and text[i + 1 : i + 2].isdigit():
             raise ParseError("A unit string holds whole numbers only: powers as in m^2 or s^-2", start)
-        elif char == "-" and 0 < i < n - 1 and _is_name_char(text[i - 1]) and text[i + 1].isalpha():
+        elif char in _MINUS_SIGNS and 0 < i < n - 1 and _is_name_char(text[i - 1]) and text[i + 1].isalpha():
             i += 1  # `N-m`, `ft-lb`, `kW-h`: a hyphen between units joins them, as engineers write it
             tokens.append(Token(Kind.TIMES, char, start))
         elif char in _SINGLE:

@@ -134,7 +134,9 @@ def _readings(name: str, negative_power: bool) -> _NameReadings:
         options.insert(0, _Option(((plural, 1),)))
     # A case slip counts as a reading where no split does, or where the split starts with a kelvin:
     # `Kg`, `KJ` are the kilo prefix in capitals; `Nm` stays the newton-metre, never a nanometre.
-    slip = not splits or splits[0].factors[0][0].name == "kelvin"
+    # So does a unit's name in capitals, at the start of a sentence or by a phone: `Amps`, `Pascals` (not
+    # A·m·ps, Pa·s·cal·s).
+    slip = not splits or splits[0].factors[0][0].name == "kelvin" or (len(name) > 3 and not name.islower())
     alias_variant = _ALIASES_BY_FOLDED_CASE.get(name.casefold()) if slip else None  # `Kilos`, `Kgs`
     # Every unit the letters spell in another case: `Ks` is ks or kS (a time or a conductance), and the
     # expected dimension may choose.

@@ -191,6 +191,9 @@ CHOSEN_BY_DIMENSION = [
     ("KPA", PRESSURE, "kPa"),
     # an alias with a negative power: per radian, or rad·s⁻¹ (once graded as a pure number)
     ("rads^-1", Dimension({"time": -1}), "rad/s"),
+    # a unit's name in capitals (a sentence's start, a phone): once split, A·m·ps and Pa·s·ca·l·s
+    ("Amps", Dimension({"current": 1}), "A"),
+    ("Pascals", PRESSURE, "Pa"),
 ]
 
 

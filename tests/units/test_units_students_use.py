@@ -166,6 +166,13 @@ ANSWERS = [
     ("3 mega Pa", "MPa", "3"),
     ("30 mu s", "µs", "30"),  # the Greek letter's name: once m·u·s, metre by atomic mass unit
     ("30 µ s", "µs", "30"),
+    # a word processor's dashes for a minus or a hyphen: once refused as unexpected characters
+    ("4.58 m s–2", "m/s^2", "4.58"),
+    ("4.58 m s‑2", "m/s^2", "4.58"),
+    ("4.58 ms–1", "m/s", "4.58"),
+    ("2 N–m", "N*m", "2"),
+    ("4.58 m.s-²", "m/s^2", "4.58"),  # the minus typed, the ² from a palette
+    ("25 C°", "K", "298.15"),  # the degree sign after the scale: once a coulomb times a degree
 ]
 
 
