@@ -395,7 +395,7 @@ class Parser:
         last = argument.rest[-1][1] if isinstance(argument, Product) else argument
         if isinstance(last, Power):
             return False  # `sin θ^2/2`: its power is the question, asked by the powered argument's note
-        if root and self._glued_bracket():
+        if root and (self._glued_bracket() or self._divided_by_bracket()):
             return not isinstance(argument, Num)  # `√2(1 + x)` is √2·(1 + x), as printed
         if self._glued_factor() != "/":
             return False
@@ -416,11 +416,27 @@ class Parser:
             and self._source[tok.pos : tok.pos + 1] in OPENERS
         )
 
+    def _divided_by_bracket(self) -> bool:
+        """Whether a `/` and a bracket follow here, typed on without a space: `√2gh/(1 + k)`."""
+        slash = self._tokens[self._i]
+        if slash.kind is not Kind.OP or slash.text != "/" or slash.space_before:
+            return False
+        self._i += 1
+        try:
+            return self._glued_bracket()
+        finally:
+            self._i -= 1
+
     def _argument_follower(self, root: bool) -> Literal["*", "/"] | None:
         """How the word typed on after a bare argument goes on: `_glued_factor`'s, or for a root a
-        bracket (`*`)."""
+        bracket (`*`) or a `/` before one (`√2gh/(1 + I/mr²)`; a function's `sin θ/(1 + k)` is
+        sin θ divided, as physics writes it)."""
         op = self._glued_factor()
-        return "*" if op is None and root and self._glued_bracket() else op
+        if op is not None or not root:
+            return op
+        if self._glued_bracket():
+            return "*"
+        return "/" if self._divided_by_bracket() else None
 
     def _settle_argument(
         self, func_tok: Token, func: str, argument: Node, power: Node | None, *, root: bool = False

@@ -102,8 +102,9 @@ def resolve_words(tokens: list[Token], table: NameTable) -> list[Token]:
         raise UnknownSymbol(
             f'Unknown symbol "{word}". Symbols you can use: {listed} (and {constants}).'
             + _greek_stand_in_hint(word, allowed)
-            + _letter_o_hint(word, allowed)
-            + _capital_pi_hint(word),
+            + _letter_o_hint(word, allowed, table)
+            + _capital_pi_hint(word)
+            + _spaced_name_hint(word, nxt, table),
             tok.pos,
             word,
             allowed,
@@ -211,12 +212,26 @@ def _capital_pi_hint(word: str) -> str:
     return ""
 
 
-def _letter_o_hint(word: str, declared: Sequence[str]) -> str:
-    """A sentence for `vo` typed with the letter o where `v_0` is declared (an initial value), or ""."""
+def _letter_o_hint(word: str, declared: Sequence[str], table: NameTable) -> str:
+    """A sentence for `vo` typed with the letter o where `v_0` is declared (an initial value), or "";
+    also for a Greek letter (`θ_o` for theta_0) and the subscript letter o (`θₒ`)."""
     base = word[:-1].rstrip("_")
-    if len(word) > 1 and word[-1] in "oO" and f"{base}_0" in declared:
+    if len(word) > 1 and word[-1] in "oOₒ" and (f"{base}_0" in declared or _one_name(f"{base}_0", table)):
         return f" If {word} is {base} with a zero, type {base}0 or {base}_0 (a zero, not the letter o)."
     return ""
+
+
+def _one_name(word: str, table: NameTable) -> bool:
+    """Whether the word reads as one declared name (`θ_0` as theta_0)."""
+    unique = table.resolve(word).unique
+    return unique is not None and len(unique) == 1 and unique[0].kind == "name"
+
+
+def _spaced_name_hint(word: str, nxt: Token, table: NameTable) -> str:
+    """A sentence for `Δ x` (`Delta x`) where the two words together are a declared name (`Delta_x`)."""
+    if nxt.kind is not Kind.WORD or not _one_name(word + nxt.text, table):
+        return ""
+    return f" If {word} {nxt.text} is {word}{nxt.text}, type it without the space."
 
 
 def _greek_stand_in_hint(word: str, declared: Sequence[str]) -> str:

@@ -52,6 +52,7 @@ def read_symbolic_answer(
             spaced = _spaced_reading(text, names, limits, powers_outside, fitting, expected)
             if spaced is not None:
                 return spaced
+            refused = _open_question(text, names, limits, powers_outside, fitting_choices, refused)
             raise AmbiguousGrouping(
                 f"{_asked(refused, fitting_choices)} {'Both readings' if len(fitting) == 2 else 'Each of these'} are "
                 f"{describe(expected)}, so the dimensions cannot decide.",
@@ -67,6 +68,27 @@ def read_symbolic_answer(
         if chosen.read_as.note is not None:  # how a bare function argument with a power was read
             note = f"{note}. {chosen.read_as.note}"
         return dataclasses.replace(chosen, read_as=dataclasses.replace(chosen.read_as, note=note))
+
+
+def _open_question(
+    text: str,
+    names: Mapping[str, sympy.Symbol],
+    limits: InputLimits,
+    powers_outside: bool,
+    fitting: Sequence[tuple[Mapping[int, int], ParsedMath]],
+    refused: AmbiguousGrouping,
+) -> AmbiguousGrouping:
+    """The refusal of a grouping the dimensions left open, where the first refused was settled by them:
+    `√2gh/(1+I/mr²)` asks about the root's reach, not about I/(m·r²), the only pure number to add to 1."""
+    open_positions = {p for choices, _ in fitting for p in choices if len({c.get(p) for c, _ in fitting}) > 1}
+    if not open_positions or refused.position in open_positions:
+        return refused
+    settled = {p: choice for p, choice in fitting[0][0].items() if p not in open_positions}
+    try:
+        parse_math(text, names, limits=limits, choices=settled, powers_outside=powers_outside)
+    except AmbiguousGrouping as question:
+        return question
+    return refused
 
 
 def _asked(refused: AmbiguousGrouping, fitting: Sequence[tuple[Mapping[int, int], ParsedMath]]) -> str:

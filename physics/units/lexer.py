@@ -251,7 +251,7 @@ def _tokenize(text: str) -> list[Token]:
             glued_power = i < n and text[i] in "0123456789"
             power_end = _glued_negative_power(text, i)
             spelled = text[start:power_end].translate(_AS_HYPHEN) if power_end is not None else ""
-            if spelled in ALIASES:  # `ms-1`, `ms–1`
+            if power_end is not None and spelled in ALIASES:  # `ms-1`, `ms–1`
                 tokens.append(Token(Kind.NAME, spelled, start))
                 i = power_end
                 continue

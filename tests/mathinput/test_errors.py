@@ -123,6 +123,7 @@ AMBIGUOUS_ARGUMENTS = [
     # a root's bare argument with a bracket typed on: the root's bar often reaches over it
     ("√2a(1 - b)", 0, "sqrt(2·a)·(1 - b)", "sqrt(2·a·(1 - b))"),
     ("sqrt 2a(1 - b)", 0, "sqrt(2·a)·(1 - b)", "sqrt(2·a·(1 - b))"),
+    ("√2a/(1 + b)", 0, "sqrt(2·a)/(1 + b)", "sqrt(2·a/(1 + b))"),  # a function's is divided (below)
 ]
 
 
@@ -153,6 +154,8 @@ NOT_AMBIGUOUS_ARGUMENTS = [
     ("√(2m)(1 + k)", "sqrt(2*m)*(1 + k)"),
     ("√2m (1 + k)", "sqrt(2*m)*(1 + k)"),
     ("sin θ(1 + k)", "sin(theta)*(1 + k)"),  # a function's: the bracket is no part of its argument
+    ("sin θ/(1 + k)", "sin(theta)/(1 + k)"),  # as physics writes g sin θ/(1 + I/(m r²))
+    ("√2/(1 + k)", "sqrt(2)/(1 + k)"),
 ]
 
 

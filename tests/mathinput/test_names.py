@@ -142,7 +142,7 @@ def test_unknown_symbol_is_refused_listing_the_allowed_names(typed, declared, sy
 
 # A slip for a declared name, pointed out after the list of names: a Latin stand-in for a Greek letter,
 # the letter o typed for a zero subscript. Each hint's start, which must be absent where it has no case.
-STAND_IN, LETTER_O, CAPITAL_PI = "stands for", "with a zero", "the number π"
+STAND_IN, LETTER_O, CAPITAL_PI, SPACED = "stands for", "with a zero", "the number π", "without the space"
 SLIP_HINTS = [
     # (typed, declared, which hint, the sentence the refusal must hold, or None: no such hint)
     ("wt", ("omega", "t"), STAND_IN, "If w stands for ω, type omega or ω."),
@@ -160,6 +160,12 @@ SLIP_HINTS = [
     ("2Pi x", ("x",), CAPITAL_PI, "type pi or π"),
     ("2Π x", ("x",), CAPITAL_PI, "type pi or π"),
     ("2 Px", ("x",), CAPITAL_PI, None),
+    ("θ_o t", ("theta_0", "t"), LETTER_O, "If θ_o is θ with a zero, type θ0 or θ_0"),  # a Greek letter
+    ("θₒ t", ("theta_0", "t"), LETTER_O, "If θₒ is θ with a zero"),  # the subscript letter o
+    # a name typed in two words, as `\Delta x` is (a space ends a LaTeX command) but not in plain text
+    ("Δ x/t", ("Delta_x", "t"), SPACED, "If Δ x is Δx, type it without the space."),
+    ("Delta x/t", ("Delta_x", "t"), SPACED, "If Delta x is Deltax, type it without the space."),
+    ("Δ t", ("Delta_x", "t"), SPACED, None),
 ]
 
 

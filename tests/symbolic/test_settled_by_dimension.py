@@ -29,6 +29,13 @@ DECAY = (
     SymbolDecl("b", "kg/s"),
     SymbolDecl("m", "kg"),
 )
+ROLL = (
+    SymbolDecl("g", "m/s^2"),
+    SymbolDecl("h", "m"),
+    SymbolDecl("I", "kg*m^2"),
+    SymbolDecl("m", "kg"),
+    SymbolDecl("r", "m"),
+)
 SWING = (SymbolDecl("g", "m/s^2"), SymbolDecl("L", "m"), SymbolDecl("theta", "1"))
 WAVE = (SymbolDecl("A", "m"), SymbolDecl("k", "1"), SymbolDecl("x", "m"))
 DROP = (SymbolDecl("g", "m/s^2"), SymbolDecl("h", "m"), SymbolDecl("k", "N/m"), SymbolDecl("m", "kg"))
@@ -131,6 +138,13 @@ REFUSED = [
     ("√x/y", "sqrt(x/y)", PURE, "Both readings are a pure number"),
     ("sqrt 2gh/3", "sqrt(2*g*h/3)", DROP, "Both readings are a speed"),
     ("√2gL(1 - cos θ)", "sqrt(2*g*L*(1 - cos(theta)))", SWING, "Both readings are a speed"),  # √(2gL)·(…)
+    # the question is the root's reach, I/(m·r²) being the only pure number to add to 1
+    (
+        "√2gh/(1+I/mr²)",
+        "sqrt(2*g*h/(1 + I/(m*r**2)))",
+        ROLL,
+        "Did you mean sqrt(2·g·h)/(1 + I/(m·r^2)) or sqrt(2·g·h/(1 + I/(m·r^2)))?",
+    ),
 ]
 
 
