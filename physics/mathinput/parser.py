@@ -19,7 +19,7 @@ from collections.abc import Mapping
 from fractions import Fraction
 from typing import Literal, NoReturn
 
-from physics.errors import AmbiguousGrouping, ParseError, TooLarge
+from physics.errors import AmbiguousGrouping, AmbiguousInput, ParseError, TooLarge
 from physics.mathinput.limits import InputLimits
 from physics.mathinput.powered import PoweredArgument
 from physics.mathinput.render import STUDENT_STYLE, render_text
@@ -42,6 +42,9 @@ from physics.mathinput.tree import (
 from physics.mathinput.vocabulary import INVERSES, OPENERS, ROOT_SIGNS, VULGAR_FRACTIONS
 
 _POSTFIX_KINDS: dict[str, PostfixKind] = {"!": "factorial", "%": "percent", "°": "degrees"}
+# Functions of an angle: a bare number as their argument is in radians, which no one types spaced from
+# a word after it (`sin 2 θ`).
+_TRIGONOMETRIC = frozenset({"sin", "cos", "tan", "sec", "csc", "cot"})
 # A tuple, not a set: membership by identity, without Enum's hash (a Python call) for every token.
 _FACTOR_STARTS = (Kind.NUM, Kind.NAME, Kind.CONST, Kind.FUNC, Kind.LPAREN, Kind.SQRT)
 
@@ -652,6 +655,8 @@ class Parser:
                 base = self._postfixed()
                 factors.append(self._raised(base))
             self._leave()
+            if len(factors) == 1 and func_tok.text in _TRIGONOMETRIC:
+                self._refuse_number_spaced_from_its_word(func_tok, typed, factors[0])
             last = factors[-1]
             node = _product_of(factors)
             if last is base or not isinstance(last, Power) or not bare_function:
@@ -675,6 +680,32 @@ class Parser:
                 )
             raise ParseError(f"Put the argument of {typed} in brackets, as in {typed}(-x).", tok.pos)
         raise ParseError(f"{typed} needs an argument, as in {typed}(x).", func_tok.pos)
+
+    def _refuse_number_spaced_from_its_word(self, func_tok: Token, typed: str, argument: Node) -> None:
+        """`sin 2 θ`, `cos ½ ωt`: a number, then a space, then a word: sin(2)·θ as the space reads it, which
+        no one means (a trigonometric function of a bare number is an angle in radians, 2 rad), or sin(2θ)?
+        Refused with both; `sin 30° x` (the degree sign says the number is the angle) stays."""
+        tokens = self._tokens
+        follower = tokens[self._i]
+        if follower.kind not in (Kind.NAME, Kind.CONST) or not follower.space_before:
+            return
+        number = ungroup(argument)
+        if not isinstance(number, Num) and not (
+            isinstance(number, Product) and isinstance(number.first, Num) and len(number.rest) == 1
+        ):
+            return  # a number, or `½` (the bracket (1/2))
+        end = self._i
+        while tokens[end + 1].kind in (Kind.NAME, Kind.CONST) and not tokens[end + 1].space_before:
+            end += 1
+        number_text = self._source[func_tok.end : follower.pos].strip()
+        word = self._source[follower.pos : tokens[end].end]
+        readings = (f"{typed}({number_text}{word})", f"{typed}({number_text})·{word}")
+        raise AmbiguousInput(
+            f"Did you mean {readings[0]} or {readings[1]}? A space ends the argument of {typed}: write "
+            f"{readings[0]} (or {number_text}{word} without the space), or {readings[1]}.",
+            follower.pos,
+            readings,
+        )
 
     def _powered_argument(self, func_tok: Token, start: int, power: Power) -> PoweredArgument | None:
         """How `sin θ^2` was typed, from the tokens of its argument (from `start`) and its final power;

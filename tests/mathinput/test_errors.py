@@ -139,6 +139,43 @@ def test_division_typed_on_to_a_bare_argument_is_refused_with_both_readings(text
     assert error.message == f"Did you mean {first} or {second}? Add parentheses."
 
 
+NUMBER_SPACED_FROM_ITS_WORD = [
+    # (text, position of the word, reading 1, reading 2): once sin(2)·θ, an angle of 2 rad times θ
+    ("sin 2 θ", 6, "sin(2θ)", "sin(2)·θ"),
+    ("m g sin 2 θ", 10, "sin(2θ)", "sin(2)·θ"),
+    ("cos 2 ωt", 6, "cos(2ωt)", "cos(2)·ωt"),
+    ("sin ½ θ", 6, "sin(½θ)", "sin(½)·θ"),
+    ("sin 2 θ^2", 6, "sin(2θ)", "sin(2)·θ"),
+]
+
+
+@pytest.mark.parametrize(
+    ("text", "position", "first", "second"),
+    NUMBER_SPACED_FROM_ITS_WORD,
+    ids=[a[0] for a in NUMBER_SPACED_FROM_ITS_WORD],
+)
+def test_a_number_spaced_from_the_word_after_it_is_asked_about(text, position, first, second):
+    with pytest.raises(AmbiguousInput) as caught:
+        read(text, "theta", "omega", "t", "m", "g")
+    assert caught.value.position == position
+    assert caught.value.readings == (first, second)
+    assert caught.value.message.startswith(f"Did you mean {first} or {second}?")
+
+
+NUMBER_ARGUMENT_KEPT = [
+    # (text, reading): a degree sign says the number is the angle; a root's or a log's number is a factor
+    ("sin 30° m", "sin(30*pi/180)*m"),
+    ("√2 g", "sqrt(2)*g"),
+    ("ln 2 t", "log(2)*t"),
+    ("sin 2θ", "sin(2*theta)"),
+]
+
+
+@pytest.mark.parametrize(("text", "reading"), NUMBER_ARGUMENT_KEPT, ids=[a[0] for a in NUMBER_ARGUMENT_KEPT])
+def test_a_number_argument_that_says_where_it_ends_is_read(text, reading):
+    assert read(text, "theta", "m", "g", "t").read_as.text == reading
+
+
 NOT_AMBIGUOUS_ARGUMENTS = [
     # (text, reading): brackets or a space say where the argument ends; √(2/2) would be 1
     ("sin(θ)/2", "sin(theta)/2"),

@@ -54,7 +54,7 @@ NOT_NOTED = [
     "sin^-1 x^2",
     "√x^2",  # the radical sign covers what follows
     "sin 2^2θ",  # the power is inside the argument, not at its end
-    "sin 2 θ^2",  # sin(2)·θ²: the power is outside the argument
+    "sin(2) θ^2",  # sin(2)·θ²: the power is outside the argument (`sin 2 θ^2` is asked: test_errors.py)
     "cos omega t^2",
     "sin|x|^2",
     "x^2",

@@ -31,7 +31,7 @@ TEXTBOOK = [
     # glued to it, as `sin 2θ` (not sin(½)·θ)
     ("sin ½θ", ("theta",), sympy.sin(sym("theta") / 2)),
     ("cos½θ x", ("theta", "x"), sympy.cos(sym("theta") / 2) * sym("x")),
-    ("sin ½ θ", ("theta",), sympy.sin(sympy.Rational(1, 2)) * sym("theta")),  # a space ends it, as ever
+    ("sin(½) x", ("x",), sympy.sin(sympy.Rational(1, 2)) * sym("x")),  # `sin ½ x` is asked (test_errors.py)
     ("ħ/2", ("hbar",), sym("hbar") / 2),
     ("sin(30º) x", ("x",), sympy.sin(sympy.pi / 6) * sym("x")),  # º for °: option-0 on a Mac keyboard
     ("sin(30˚) x", ("x",), sympy.sin(sympy.pi / 6) * sym("x")),  # the ring above
