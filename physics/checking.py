@@ -40,7 +40,7 @@ from physics.symbolic import (
 from physics.symbolic.dimensional import DimensionMismatch, UnknownDimension, expression_dimension
 from physics.symbolic.judge import FACTOR_FEEDBACK
 from physics.symbolic.quick import judged
-from physics.symbolic.reading import read_symbolic_answer
+from physics.symbolic.reading import read_symbolic_answer, shorter_arguments
 from physics.symbolic.typed_values import typed_value_hint, with_units_hint
 from physics.units import unit_dimension
 from physics.verdict import InputProblem, Outcome, Preview, Reason, Verdict
@@ -122,7 +122,11 @@ class SymbolicQuestion:
         # wrong one with a bare powered argument is built, to tell whether the other reading is right.
         if reading is not None:
             quick = judged(reading, reference, limits.max_exponent)
-            if quick is not None and (quick.correct or not reading.powered):
+            if (
+                quick is not None
+                and (quick.correct or not reading.powered)
+                and not (reading.long_words and quick.reason is Reason.WRONG_DIMENSION)
+            ):
                 return _led(Verdict.graded(quick, reading.read_as), reading.read_as.note)
         try:
             if reading is None:
@@ -130,6 +134,17 @@ class SymbolicQuestion:
             else:
                 parsed = build_reading(reading, limits)
             judgement = judge_symbolic(parsed.expr, reference)
+            if (
+                parsed.long_words
+                and judgement.reason is Reason.WRONG_DIMENSION
+                and reference.dimension is not None
+            ):
+                # `sinθmgL`: sin(θ·m·g·L) has no dimension; sin(θ)·m·g·L may be the only reading with one
+                shorter = shorter_arguments(
+                    answer, self.names, limits, dimensions, reference.dimension, parsed
+                )
+                if shorter is not parsed:
+                    parsed, judgement = shorter, judge_symbolic(shorter.expr, reference)
         except AnswerError as error:
             return Verdict.invalid(with_units_hint(error, answer, self.reference.dimension))
         lead = parsed.read_as.note  # how the answer was read (chosen by dimension, `sin θ^2`): said first

@@ -86,13 +86,16 @@ class Parser:
         choices: Mapping[int, int] | None = None,
         *,
         powers_outside: bool = False,
+        word_ends: Mapping[int, int] | None = None,
     ) -> None:
         self._source = source
         self._tokens = tokens
         self._limits = limits
         self._choices = choices or {}
         self._powers_outside = powers_outside
+        self._word_ends = word_ends or {}
         self.powered: list[PoweredArgument] = []
+        self.long_words: list[tuple[int, int]] = []  # (function's position, factors): `sinθmgL`'s θmgL
         self._i = 0
         self._depth = 0
         self._abs_depth = 0  # open |...| in the current bracket level; a | there closes instead of opening
@@ -647,14 +650,20 @@ class Parser:
             start = self._i
             base = self._postfixed()
             factors = [self._raised(base)]
-            # The word typed without a space is the argument: `cos ωt`, `sin kx`, `√2gh`, `sin 2πft`.
+            # The word typed without a space is the argument: `cos ωt`, `sin kx`, `√2gh`, `sin 2πft`
+            # (`word_ends` may end it earlier: `sinθmgL` as sin(θ)·m·g·L, where only that has a dimension).
+            ends = self._word_ends.get(func_tok.pos) if self._word_ends else None
             while tok.kind is not Kind.FUNC and tok.kind is not Kind.SQRT:
                 follower = self._tokens[self._i]
                 if follower.kind not in (Kind.NAME, Kind.CONST) or follower.space_before:
                     break
+                if ends is not None and len(factors) >= ends:
+                    break
                 base = self._postfixed()
                 factors.append(self._raised(base))
             self._leave()
+            if len(factors) > 1 and ends is None and func_tok.kind is Kind.FUNC and func_tok.text != "sqrt":
+                self.long_words.append((func_tok.pos, len(factors)))
             if len(factors) == 1 and func_tok.text in _TRIGONOMETRIC:
                 self._refuse_number_spaced_from_its_word(func_tok, typed, factors[0])
             last = factors[-1]

@@ -69,6 +69,7 @@ class ParsedMath:
     expr: sympy.Expr
     read_as: ReadAs  # rendered from the parse tree, so it shows how the input was grouped
     powered: tuple[PoweredArgument, ...] = ()  # bare function arguments with a power: `sin θ^2`
+    long_words: tuple[tuple[int, int], ...] = ()  # bare function arguments of several factors: `cos ωt`
 
 
 @dataclass(frozen=True)
@@ -79,6 +80,7 @@ class TreeReading:
     read_as: ReadAs
     powered: tuple[PoweredArgument, ...]
     symbols: Mapping[str, sympy.Symbol]  # what each name in the tree stands for
+    long_words: tuple[tuple[int, int], ...] = ()  # (function's position, factors) of `cos ωt`, `sinθmgL`
 
 
 @lru_cache(maxsize=256)
@@ -95,6 +97,7 @@ def parse_math(
     choices: Mapping[int, int] | None = None,
     powers_outside: bool = False,
     velocities: bool = False,
+    word_ends: Mapping[int, int] | None = None,
 ) -> ParsedMath:
     """Read `text` using only the declared `names` (spelling -> Symbol to use).
 
@@ -103,14 +106,22 @@ def parse_math(
     choice it is refused (AmbiguousGrouping). A bare function argument with a
     power (`sin θ^2`) reads as sin(θ²) and `read_as.note` says so; `powers_outside` reads it as
     (sin θ)², the other reading, for comparison. `velocities`: `x'`, `ẋ`, `\\dot{x}` and `dx/dt` are read
-    as the name `x_dot` (a coordinate's velocity, which `names` then declares).
+    as the name `x_dot` (a coordinate's velocity, which `names` then declares). `word_ends` ends a bare
+    function's word argument after as many factors as it says (by the function's position):
+    `sinθmgL` with {0: 1} is sin(θ)·m·g·L; `long_words` lists the words that could end so.
 
     Raises ParseError, AmbiguousInput, UnknownSymbol, UnknownFunction or TooLarge, each with a 0-based
     `position` into `text`; sizes are checked before any value is computed.
     """
     return build_reading(
         read_tree(
-            text, names, limits=limits, choices=choices, powers_outside=powers_outside, velocities=velocities
+            text,
+            names,
+            limits=limits,
+            choices=choices,
+            powers_outside=powers_outside,
+            velocities=velocities,
+            word_ends=word_ends,
         ),
         limits,
     )
@@ -124,21 +135,24 @@ def read_tree(
     choices: Mapping[int, int] | None = None,
     powers_outside: bool = False,
     velocities: bool = False,
+    word_ends: Mapping[int, int] | None = None,
 ) -> TreeReading:
     """`parse_math` up to the parse tree: raises what it raises before building, never a refusal of the
     builder's (`build_reading` makes those)."""
-    tree, powered, table = _tree(text, names, limits, choices, powers_outside, velocities)
+    tree, parser, table = _tree(text, names, limits, choices, powers_outside, velocities, word_ends)
+    powered = tuple(parser.powered)
     try:
         text, latex = render_both(tree)
         read_as = ReadAs(text, latex, reading_note(powered))
     except RecursionError:
         raise _too_deep() from None
-    return TreeReading(tree, read_as, powered, table.symbols)
+    return TreeReading(tree, read_as, powered, table.symbols, tuple(parser.long_words))
 
 
 def build_reading(reading: TreeReading, limits: InputLimits = DEFAULT_LIMITS) -> ParsedMath:
     """The reading's sympy expression: what `parse_math` returns for the text `reading` was read from."""
-    return ParsedMath(_built(reading.tree, reading.symbols, limits), reading.read_as, reading.powered)
+    expr = _built(reading.tree, reading.symbols, limits)
+    return ParsedMath(expr, reading.read_as, reading.powered, reading.long_words)
 
 
 def parse_expression(
@@ -177,17 +191,18 @@ def _tree(
     choices: Mapping[int, int] | None,
     powers_outside: bool,
     velocities: bool = False,
-) -> tuple[Node, tuple[PoweredArgument, ...], NameTable]:
+    word_ends: Mapping[int, int] | None = None,
+) -> tuple[Node, Parser, NameTable]:
     table = _name_table(tuple(names.items()))
     tokens = tokenize(text, limits, velocities=velocities)
     _refuse_exponent_letter_clash(text, tokens, table)
     tokens = resolve_words(tokens, table)
     try:
-        parser = Parser(text, tokens, limits, choices, powers_outside=powers_outside)
+        parser = Parser(text, tokens, limits, choices, powers_outside=powers_outside, word_ends=word_ends)
         tree = parser.parse()
     except RecursionError:
         raise _too_deep() from None
-    return tree, tuple(parser.powered), table
+    return tree, parser, table
 
 
 def _built(tree: Node, symbols: Mapping[str, sympy.Symbol], limits: InputLimits) -> sympy.Expr:

@@ -19,7 +19,7 @@ from collections.abc import Mapping, Sequence
 import sympy
 
 from physics.dimensions import Dimension, describe
-from physics.errors import AmbiguousGrouping
+from physics.errors import AmbiguousGrouping, AnswerError
 from physics.mathinput import InputLimits, ParsedMath, parse_math
 from physics.mathinput.render import in_student_style
 from physics.symbolic.dimensional import DimensionMismatch, UnknownDimension, expression_dimension
@@ -41,7 +41,10 @@ def read_symbolic_answer(
     reading has it (`dimensions`: each symbol's dimension, by name). Raises what parse_math raises.
     `powers_outside` reads `sin θ^2` as (sin θ)², as parse_math does."""
     try:
-        return parse_math(text, names, limits=limits, powers_outside=powers_outside)
+        parsed = parse_math(text, names, limits=limits, powers_outside=powers_outside)
+        if parsed.long_words and expected is not None and not _has(parsed.expr, dimensions, expected):
+            return shorter_arguments(text, names, limits, dimensions, expected, parsed)
+        return parsed
     except AmbiguousGrouping as refused:
         if expected is None:
             raise
@@ -68,6 +71,51 @@ def read_symbolic_answer(
         if chosen.read_as.note is not None:  # how a bare function argument with a power was read
             note = f"{note}. {chosen.read_as.note}"
         return dataclasses.replace(chosen, read_as=dataclasses.replace(chosen.read_as, note=note))
+
+
+# Readings of glued function arguments tried for one answer (each a parse).
+_MAX_SHORTER = 6
+
+
+def shorter_arguments(
+    text: str,
+    names: Mapping[str, sympy.Symbol],
+    limits: InputLimits,
+    dimensions: Mapping[str, Dimension],
+    expected: Dimension,
+    parsed: ParsedMath,
+) -> ParsedMath:
+    """`sinθmgL` is sin(θ·m·g·L) by the rule that a function takes the word typed on after it (`cos ωt`),
+    and so has no dimension: where ending a word earlier (sin(θ)·m·g·L) gives the only reading with the
+    expected dimension, that one is taken and said, as a grouping settled by dimension is. `parsed` as it
+    is otherwise. A shorter word can have another dimension only where the longer one had none."""
+    found: dict[str, ParsedMath] = {}
+    tries = 0
+    for position, factors in parsed.long_words:
+        for ends in range(factors - 1, 0, -1):
+            tries += 1
+            if tries > _MAX_SHORTER:
+                break
+            try:
+                other = parse_math(text, names, limits=limits, word_ends={position: ends})
+            except AnswerError:
+                continue
+            if _has(other.expr, dimensions, expected):
+                found.setdefault(other.read_as.text, other)
+    if len(found) != 1:
+        return parsed
+    chosen = next(iter(found.values()))
+    note = f"Read as {in_student_style(chosen.read_as.text)}: the only reading that is {describe(expected)}"
+    return dataclasses.replace(chosen, read_as=dataclasses.replace(chosen.read_as, note=note))
+
+
+def _has(expr: sympy.Expr, dimensions: Mapping[str, Dimension], expected: Dimension) -> bool:
+    """Whether `expr` has the expected dimension (False where it has none, or a symbol has none)."""
+    known = {s: dimensions[s.name] for s in expr.free_symbols if s.name in dimensions}
+    try:
+        return expression_dimension(expr, known) == expected
+    except (DimensionMismatch, UnknownDimension):
+        return False
 
 
 def _open_question(

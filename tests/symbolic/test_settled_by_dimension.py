@@ -80,6 +80,16 @@ SETTLED = [
     ("2π√m/k", "2*pi*sqrt(m/k)", DROP, "2*pi*sqrt(m/k)", "a time"),
     ("2πsqrt m/k", "2*pi*sqrt(m/k)", DROP, "2*pi*sqrt(m/k)", "a time"),
     ("A sin kx/A", "A*sin(k*x/A)", WAVE, "A*sin(k*x/A)", "a length"),
+    # a function's word glued on past its angle: sin(θ·m·g·L) has no dimension, sin(θ)·m·g·L is an energy
+    ("sinθmgL", "m*g*L*sin(theta)", (*SWING, SymbolDecl("m", "kg")), "sin(theta)*m*g*L", "an energy"),
+    (
+        "μcosθmg",
+        "mu*m*g*cos(theta)",
+        (*SWING, SymbolDecl("m", "kg"), SymbolDecl("mu", "1")),
+        "mu*cos(theta)*m*g",
+        "a force",
+    ),
+    ("cos ωtA", "A*cos(omega*t)", DECAY, "cos(omega*t)*A", "a length"),
 ]
 
 
@@ -98,6 +108,14 @@ def test_the_only_reading_with_the_expected_dimension_is_graded_and_shown(
     typed = reading.replace("**", "^").replace("*", "·")
     assert verdict.read_as.note.startswith(f"Read as {typed}: the only reading that is {kind}")
     assert verdict.feedback.startswith(f"Read as {typed}")
+
+
+def test_preview_shows_a_glued_argument_ended_by_dimension() -> None:
+    shown = preview(SymbolicJob("sinθmgL", "m*g*L*sin(theta)", (*SWING, SymbolDecl("m", "kg"))))
+    assert shown.error is None
+    assert shown.read_as is not None
+    assert shown.read_as.text == "sin(theta)*m*g*L"
+    assert shown.read_as.note == "Read as sin(theta)·m·g·L: the only reading that is an energy"
 
 
 def test_a_settled_reading_that_is_wrong_is_graded_wrong() -> None:
