@@ -45,9 +45,9 @@ WRONG_SHAPE = (
 def confused_inertias(model: Model) -> Iterator[tuple[Model, str]]:
     """The model with one body's inertia replaced by a shape's it is taken for, and what to tell a
     student whose answer is that model's."""
-    lengths = _geometric_symbols(model)
+    lengths = geometric_symbols(model)
     for index, body in enumerate(model.bodies):
-        factor = _shape_factor(body, lengths)
+        factor = shape_factor(body.inertia, body.mass, lengths)
         if factor is None:
             continue
         for wrong in CONFUSED[factor]:
@@ -63,7 +63,7 @@ def confused_inertias(model: Model) -> Iterator[tuple[Model, str]]:
             yield dataclasses.replace(model, bodies=tuple(bodies)), feedback
 
 
-def _geometric_symbols(model: Model) -> set[sympy.Symbol]:
+def geometric_symbols(model: Model) -> set[sympy.Symbol]:
     """The symbols the bodies' positions and the constraints are written in."""
     found: set[sympy.Symbol] = set()
     for body in model.bodies:
@@ -74,13 +74,13 @@ def _geometric_symbols(model: Model) -> set[sympy.Symbol]:
     return {symbol for symbol in found if isinstance(symbol, sympy.Symbol)}
 
 
-def _shape_factor(body: Body, lengths: set[sympy.Symbol]) -> sympy.Rational | None:
+def shape_factor(inertia: sympy.Expr, mass: sympy.Expr, lengths: set[sympy.Symbol]) -> sympy.Rational | None:
     """The number a standard shape's inertia is made of (½ in M R²/2), when the inertia is that number
     times the body's own mass times the square of one of its lengths; else None."""
-    if not isinstance(body.mass, sympy.Symbol) or body.inertia == 0:
+    if not isinstance(mass, sympy.Symbol) or inertia == 0:
         return None
-    factor, rest = body.inertia.as_coeff_Mul()
-    base, power = (rest / body.mass).as_base_exp()
+    factor, rest = inertia.as_coeff_Mul()
+    base, power = (rest / mass).as_base_exp()
     if factor in SHAPES and power == 2 and isinstance(base, sympy.Symbol) and base in lengths:
         return sympy.Rational(factor)
     return None

@@ -76,13 +76,13 @@ def _moves(model: Model, body: str) -> bool:
 
 def _sizes(model: Model) -> Iterator[tuple[sympy.Expr, str, str, Path]]:
     for body in model.bodies:
-        yield body.mass, f"{body.name}'s mass", "a mass is a size", _body_path(model, body.name, "mass")
+        yield body.mass, f"{body.name}'s mass", "a mass is a size", body_path(model, body.name, "mass")
         if body.angle is not None:
             yield (
                 body.inertia,
                 f"{body.name}'s moment of inertia",
                 "a moment of inertia is a sum of m r^2, never negative",
-                _body_path(model, body.name, "inertia"),
+                body_path(model, body.name, "inertia"),
             )
     for index, friction in enumerate(model.frictions):
         yield (
@@ -113,7 +113,7 @@ def _sizes(model: Model) -> Iterator[tuple[sympy.Expr, str, str, Path]]:
                 )
 
 
-def _body_path(model: Model, body: str, field: str) -> Path:
+def body_path(model: Model, body: str, field: str) -> Path:
     """Where the author wrote the body's `field`: the element that generated the body, or `bodies`."""
     for element in model.elements:
         if body in element.bodies and field in element.fields:

@@ -1,0 +1,70 @@
+"""A rigid body's inertia typed about the point it turns about, where `inertia` is about its centre.
+
+A body's `inertia` is about its centre of mass; the positions carry the rest (the parallel-axis term
+m d² comes from the centre's own motion). The slip instructors make is to type the inertia about the
+pivot instead: a rod hung from its end given m L²/3, a hoop on a nail 2 m R², a ball rolling on its
+contact point 7/5 m r², a ladder sliding down a wall m L²/3. Every method then counts m d² twice,
+agrees with the others and with the simulation, and the answers are a body nobody posed (the rod swings
+as if 7/4 as hard to turn).
+
+The point a body turns about is found from its motion, not from how the model names it: for a body
+that one coordinate moves, its centre's speed over its rate of turning is the distance d from the
+centre to the point at rest at that instant (a pivot, a rolling contact, the corner a sliding ladder
+turns about). Where that distance is fixed and the inertia less m d² is exactly a standard shape's
+about its centre (shape_inertia.SHAPES: a number times the mass times the square of one of the model's
+lengths), the inertia was typed about the pivot: refused where it was written, saying what it is about
+the centre. A spool rolling on its thin axle (m R²/2 on an axle of radius r) has an inertia above m r²
+and is no shape's plus m r², so it is left alone.
+"""
+
+from __future__ import annotations
+
+import sympy
+
+from physics.answer_text import typed_text
+from physics.engine.mechanics import time_derivative
+from physics.engine.model import Body, Model
+from physics.engine.shape_inertia import SHAPES, geometric_symbols, shape_factor
+from physics.engine.sizes import body_path
+from physics.errors import DerivationError
+
+
+def check_pivot_inertias(model: Model) -> None:
+    """DerivationError at the first rigid body whose inertia is a standard shape's about its centre plus
+    m d², d the fixed distance from its centre to the point it turns about."""
+    lengths = geometric_symbols(model)
+    for body in model.bodies:
+        distance = _turning_distance(model, body)
+        if distance is None:
+            continue
+        about_centre = sympy.factor(body.inertia - body.mass * distance**2)
+        factor = shape_factor(about_centre, body.mass, lengths)
+        if factor is None:
+            continue
+        raise DerivationError(
+            f"{body.name}'s moment of inertia {typed_text(body.inertia)} is its inertia about the point it "
+            f"turns about, {typed_text(distance)} from its centre (a pivot, or a rolling contact): about its "
+            f"centre it is {typed_text(about_centre)} ({SHAPES[factor]}), and `inertia` is about the centre "
+            f"of mass (the positions add {typed_text(body.mass * distance**2)} themselves). Write "
+            f"{typed_text(about_centre)}; a body whose inertia about its centre really is "
+            f"{typed_text(body.inertia)} is written with a length of its own (m*k^2, k its radius of gyration)",
+            path=body_path(model, body.name, "inertia"),
+        )
+
+
+def _turning_distance(model: Model, body: Body) -> sympy.Expr | None:
+    """The distance from the body's centre to the point of it at rest, where that is one fixed length
+    (the body moved by one coordinate, about a point fixed in it); None otherwise."""
+    if body.angle is None or body.inertia == 0:
+        return None
+    rate = time_derivative(body.angle, model)
+    if rate == 0:
+        return None
+    speed_squared = sum((time_derivative(expr, model) ** 2 for _, expr in body.position), sympy.Integer(0))
+    squared = sympy.simplify(speed_squared / rate**2)
+    moving = {c.symbol for c in model.coordinates} | {c.velocity for c in model.coordinates}
+    if model.time is not None:
+        moving.add(model.time)
+    if squared == 0 or squared.free_symbols & moving:
+        return None
+    return sympy.sqrt(squared)
