@@ -93,6 +93,8 @@ def _physics(model: Model, dims: Dims) -> list[Check]:
         checks.append((("constraints", constraint.name, "gap"), constraint.gap, None))
     for index, friction in enumerate(model.frictions):
         checks.append((("friction", index, "coefficient"), friction.coefficient, DIMENSIONLESS))
+    if model.frame is not None and model.frame.rate is not None:  # before the centrifugal energy it makes
+        checks.append((("frame", "rate"), model.frame.rate, TIME**-1))
     for index, pair in enumerate(model.potentials):
         checks.append((("potentials", index, "energy"), pair.energy, ENERGY))
     names = {c.symbol: c.name for c in model.coordinates} | {

@@ -86,3 +86,22 @@ def test_without_declared_dimensions_nothing_is_checked() -> None:
     data = pendulum_on_spring()
     data["potentials"][0]["energy"] = "k*(d - L)"
     load_model(data, SYMBOLS)
+
+
+def test_a_rotating_frames_rate_typed_as_a_speed_is_refused_at_the_rate() -> None:
+    """`rate: w*r` (the rim's speed) made a centrifugal energy in kg·m⁴/s²: the refusal names the rate
+    where the element wrote it, before the energy it generated."""
+    w, r = sympy.Symbol("w", positive=True), sympy.Symbol("r", positive=True)
+    data = {
+        "coordinates": [],
+        "bodies": {"coin": {"mass": "m", "position": {"x": "r", "y": 0}}},
+        "gravity": "g",
+        "constraints": {"table": {"kind": "surface", "gap": "y_coin"}},
+        "elements": {"frame": {"kind": "rotating", "rate": "w*r", "bodies": ["coin"]}},
+        "quantities": {"normal": {"force": "table"}},
+    }
+    with pytest.raises(SpecErrors) as caught:
+        load_model(data, {**SYMBOLS, "w": w, "r": r}, {**DIMENSIONS, "w": TIME**-1, "r": LENGTH})
+    first = caught.value.errors[0]
+    assert first.path == ("elements", "frame", "rate")
+    assert first.message.startswith("r*w is a speed; expected an angular frequency or rate")

@@ -92,8 +92,8 @@ class Builder:
             return
         self.data["frame"] = entry
         self.frame_implied = implied
-        for key in entry:
-            self.origins[("frame", key)] = path
+        for key in entry:  # a declared frame's fields are the element's own (rate, axis, bodies)
+            self.origins[("frame", key)] = path if implied else (*path, key)
 
     def position(self, body: str) -> dict[str, str] | None:
         """A body's position as text per axis (hand-written or generated), if it is defined yet."""
