@@ -83,4 +83,6 @@ def expression(method: Method, quantity: Quantity) -> sympy.Expr:
 def solve(method: Method, quantity: Quantity) -> sympy.Expr:
     """The parameter value that makes the inner quantity vanish, by this method's inner quantity."""
     assert quantity.inner is not None and quantity.parameter is not None
-    return method.solve_for(quantity.parameter, method.answer(quantity.inner), quantity.name)
+    inner = quantity.inner
+    what = f"the {inner.kind.value.replace('_', ' ')} of {inner.target}" if inner.target else inner.name
+    return method.solve_for(quantity.parameter, method.answer(inner), quantity.name, what)

@@ -18,6 +18,7 @@ from physics.engine.proof import domain_points
 from physics.engine.results import MethodReport, Step, StepKind
 from physics.engine.roots import admissible, declared_range
 from physics.engine.settle import plain_angle, settle
+from physics.engine.signs import Sign, sign_on_domain
 from physics.engine.supports import driven
 from physics.errors import DerivationError
 
@@ -241,9 +242,15 @@ class Method(ABC):
         )
         return tidy.simplify(stable[0])
 
-    def solve_for(self, parameter: sympy.Symbol, expr: sympy.Expr, name: str) -> sympy.Expr:
+    def solve_for(self, parameter: sympy.Symbol, expr: sympy.Expr, name: str, what: str = "it") -> sympy.Expr:
+        """The one root of expr = 0 in `parameter` that its declared sign and range allow; `what` says what
+        expr is (the acceleration of r), for the refusal when there is none."""
         found = tidy.solve(expr, parameter)
         roots = admissible(found, parameter, self.model)
+        if not roots:
+            raise DerivationError(
+                f"{self.title}: {name}: {_no_root(parameter, expr, found, what, self.model)}", quantity=name
+            )
         if len(roots) != 1:
             raise DerivationError(
                 f"{self.title}: {name}: expected one value of {parameter} {_declared(parameter, self.model)}, "
@@ -280,6 +287,20 @@ class Method(ABC):
         value = tidy.simplify(expr.subs(dict(self.model.state)))
         settled = settle(value, self.model)  # |R - r| where R > r is declared
         return value if settled == value else tidy.simplify(settled)
+
+
+def _no_root(
+    parameter: sympy.Symbol, expr: sympy.Expr, found: list[sympy.Expr], what: str, model: Model
+) -> str:
+    """Why no value of the parameter makes expr vanish: the sign it keeps (a repulsion pushes the orbit
+    outward at every speed), or the roots there are and what they are not."""
+    said = f"no value of {parameter} {_declared(parameter, model)} makes {what} vanish: {what} is {typed_text(expr)}"
+    if found:
+        return f"{said}, whose roots {typed_text(found)} are not real, of {parameter}'s sign and in its range"
+    sign = sign_on_domain(expr, model).sign
+    if sign in (Sign.POSITIVE, Sign.NEGATIVE):
+        return f"{said}, {sign.value} on the whole domain, whatever {parameter} is"
+    return f"{said}, which is zero for no {parameter}"
 
 
 def _declared(symbol: sympy.Symbol, model: Model) -> str:

@@ -6,11 +6,13 @@ from __future__ import annotations
 
 import dataclasses
 
+import pytest
 import sympy
 import yaml
 
 from physics.engine import derivation, load_model
 from physics.engine.roots import admissible
+from physics.errors import DerivationError
 
 uncached = derivation._derive.__wrapped__
 NAMES = ("m", "M", "L", "g", "d", "alpha", "theta", "Omega")
@@ -82,3 +84,35 @@ def test_a_root_whose_sign_rests_on_the_domain_is_judged_there() -> None:
     model = load_model(yaml.safe_load(CONICAL_RATE), SYMBOLS)
     root = sympy.sqrt(g / L) / sympy.sqrt(sympy.cos(alpha))
     assert admissible([-root, root], Omega, model) == [root]
+
+
+CIRCULAR_SPEED = """
+# the speed v of a circular orbit of radius R: the one at which r stops accelerating
+coordinates: [r, phi]
+bodies:
+  satellite: {mass: m, position: {x: "r*cos(phi)", y: "r*sin(phi)"}}
+potentials:
+  - {bodies: [satellite], anchor: {x: 0, y: 0}, distance: d, energy: ENERGY}
+state: {r: R, phi: 0, phi_dot: v/R}
+domain:
+  ranges: {r: ["0", "oo"]}
+quantities:
+  orbit_speed: {solve: v, zero: {acceleration: r}}
+"""
+
+
+def _orbit(energy: str) -> object:
+    names = {n: sympy.Symbol(n, positive=True) for n in ("G", "M", "m", "R", "v")}
+    return load_model(yaml.safe_load(CIRCULAR_SPEED.replace("ENERGY", f'"{energy}"')), names)
+
+
+def test_a_solve_with_no_admissible_root_says_plainly_why() -> None:
+    """A repulsion pushes the satellite outward at every speed: the refusal says the acceleration keeps
+    its sign whatever v is (it had said "found [] among the roots []")."""
+    G, R = (sympy.Symbol(n, positive=True) for n in ("G", "R"))
+    assert uncached(_orbit("-G*M*m/d")).quantities["orbit_speed"] == sympy.sqrt(G * M / R)
+    with pytest.raises(DerivationError) as caught:
+        uncached(_orbit("G*M*m/d"))
+    assert "no value of v (positive) makes the acceleration of r vanish" in caught.value.message
+    assert "(G*M + R*v^2)/R^2, positive on the whole domain, whatever v is" in caught.value.message
+    assert "among the roots" not in caught.value.message
