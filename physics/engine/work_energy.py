@@ -263,7 +263,7 @@ def by_integration(method: Method, trip: Journey) -> sympy.Expr:
 
     c = trip.coordinate
     q, qd = c.symbol, c.velocity
-    acceleration = method.free.acceleration(c.name)
+    acceleration = _in_one_trig_function(method.free.acceleration(c.name), q)
     if trip.held:  # the other coordinates' equations of motion, integrated once: their momenta conserved
         acceleration = tidy.simplify(acceleration.subs(trip.held))
     u = sympy.Dummy("u", positive=True)  # the speed; qd = sign * u on the way
@@ -296,6 +296,15 @@ def by_integration(method: Method, trip: Journey) -> sympy.Expr:
         method.tex(sympy.Eq(w, square)),
     )
     return square
+
+
+def _in_one_trig_function(expr: sympy.Expr, q: sympy.Symbol) -> sympy.Expr:
+    """expr with sin(q)^2 written 1 - cos(q)^2 and cancelled: an acceleration a method leaves as a ratio of
+    trigonometric polynomials (Newton's, through a grip written with acos, for a ball rolling round a
+    loop) is 5 g sin(q)/(7 (r - R)) once it is, and `integrate` would spend minutes on it as it was."""
+    if not expr.has(sympy.sin(q), sympy.cos(q)):
+        return expr
+    return sympy.factor(sympy.cancel(expr.subs(sympy.sin(q) ** 2, 1 - sympy.cos(q) ** 2)))
 
 
 def _check_reached(model: Model, trip: Journey, square: sympy.Expr, name: str) -> None:
