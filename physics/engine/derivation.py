@@ -12,6 +12,7 @@ from physics.answer_text import typed_text
 from physics.engine import bounces, evaluated_at, released, scenarios, tidy
 from physics.engine.along_the_way import check_along_the_way
 from physics.engine.checks import physical_checks
+from physics.engine.clearances import check_clearances
 from physics.engine.conservation import ConservationMethod
 from physics.engine.contacts import check_contact_signs
 from physics.engine.dalembert import DAlembertMethod
@@ -93,6 +94,7 @@ def _derive_model(model: Model) -> Derivation:
     check_friction_reactions(model)
     check_rolling_grips(model, mech)
     check_pivot_inertias(model)
+    check_clearances(model, mech)
     methods = [cls(model, mech) for cls in _methods()]
     answers: dict[str, dict[str, sympy.Expr]] = {q.name: {} for q in model.quantities}
     stopped: dict[str, dict[str, str]] = {q.name: {} for q in model.quantities}  # why a method gave none

@@ -36,7 +36,7 @@ def check_rolling_grips(model: Model, mech: Mechanics) -> None:
             under = [s for s in surfaces if s.gap.has(x) or s.gap.has(y)]
             if len(under) != 1:  # no surface, or several: which one it rolls on is not said
                 continue
-            signs = {_sign(mech, grip.gap, under[0].gap, (x, y, phi), p) for p in _points(model, mech)}
+            signs = {_sign(mech, grip.gap, under[0].gap, (x, y, phi), p) for p in state_points(model, mech)}
             if signs == {-1}:
                 raise DerivationError(
                     f"constraint {grip.name!r}: the grip turns {body.name} the wrong way for rolling on "
@@ -48,7 +48,7 @@ def check_rolling_grips(model: Model, mech: Mechanics) -> None:
                 )
 
 
-def _points(model: Model, mech: Mechanics) -> list[dict[sympy.Symbol, sympy.Expr]]:
+def state_points(model: Model, mech: Mechanics) -> list[dict[sympy.Symbol, sympy.Expr]]:
     """Domain points with the coordinates at the state (else at generic values)."""
     state = dict(model.state)
     generic = {q: state.get(q, sympy.Rational(3, 10) + sympy.Rational(i, 7)) for i, q in enumerate(mech.q)}
