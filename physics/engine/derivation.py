@@ -87,10 +87,10 @@ def _derive_model(model: Model) -> Derivation:
     tidy.forget()
     mech = Mechanics(model)
     released.check_freed(model, mech)  # before the count of freedoms, which it explains
+    check_sizes(model)  # before the consistency: a pendulum of length -L violates its own string
     check_consistency(model, mech)
     check_gravity(model)
     check_state_in_range(model)
-    check_sizes(model)
     check_friction_reactions(model)
     check_rolling_grips(model, mech)
     check_pivot_inertias(model)

@@ -21,8 +21,8 @@ from physics.answer_text import typed_text
 from physics.engine.loads.applied import AppliedForce, ForceKind
 from physics.engine.model import Model
 from physics.engine.signs import Sign, point_text, sign_on_domain
-from physics.engine.text import Path
-from physics.errors import DerivationError
+from physics.engine.text import Path, read_expr
+from physics.errors import DerivationError, SpecError
 
 
 def check_sizes(model: Model) -> None:
@@ -111,6 +111,38 @@ def _sizes(model: Model) -> Iterator[tuple[sympy.Expr, str, str, Path]]:
                     "the spring would push its ends apart when stretched",
                     ("elements", element.name, "stiffness"),
                 )
+        for field, what in _ELEMENT_LENGTHS.get(element.kind, ()):
+            length = _field_expr(model, element.fields.get(field))
+            if length is not None:
+                yield (
+                    length,
+                    f"the {what} of {element.kind} {element.name!r}",
+                    "a length is a size",
+                    (
+                        "elements",
+                        element.name,
+                        field,
+                    ),
+                )
+
+
+# an element's lengths, which its expansion puts under a square root or beside a distance: a spring of
+# natural length -L0 would be pulled towards its anchor, a pendulum's string of length -L violated
+_ELEMENT_LENGTHS = {
+    "spring": (("length", "natural length"),),
+    "pendulum": (("length", "length"),),
+    "rolling": (("radius", "radius"),),
+}
+
+
+def _field_expr(model: Model, raw: object) -> sympy.Expr | None:
+    """An element's field as written (a number or text over the model's symbols); None if it is not one."""
+    if raw is None or isinstance(raw, bool) or not isinstance(raw, str | int | float):
+        return None
+    try:
+        return read_expr(raw, {str(s): s for s in model.parameters}, ())
+    except SpecError:
+        return None
 
 
 def body_path(model: Model, body: str, field: str) -> Path:

@@ -10,7 +10,7 @@ import sympy
 import yaml
 
 from physics.engine import Model, derivation, load_model
-from physics.errors import DerivationError
+from physics.errors import DerivationError, SpecErrors
 
 uncached = derivation._derive.__wrapped__
 
@@ -54,7 +54,27 @@ state: {y: 0}
 quantities:
   a: {acceleration: y}
 """
-NAMES = "m R theta g mu b v k"
+STANDING_SPRING = """
+coordinates: [y]
+bodies:
+  block: {mass: m, position: {y: y}}
+elements:
+  spring: {kind: spring, between: [block, {y: 0}], stiffness: k, length: LENGTH}
+gravity: g
+domain:
+  ranges: {y: ["0", "oo"]}
+  positive: ["k*L0 - m*g"]
+quantities:
+  rest: {equilibrium: y}
+"""
+SWING = """
+elements:
+  string: {kind: pendulum, body: bob, mass: m, length: LENGTH, coordinate: phi}
+gravity: g
+quantities:
+  omega: {angular_frequency: phi}
+"""
+NAMES = "m R theta g mu b v k L0"
 
 # (model, its blanks filled, the refusal and its path, or None: the model derives)
 CASES = [
@@ -79,6 +99,20 @@ CASES = [
         ("the stiffness of spring 'spring' -k is negative", ("elements", "spring", "stiffness")),
     ),
     (SPRUNG, {"STIFFNESS": "k"}, None),
+    # lengths an element is built from: a spring of natural length -L0 had found no equilibrium ("found 0
+    # among the roots []"), a pendulum of length -L0 had violated its own string
+    (
+        STANDING_SPRING,
+        {"LENGTH": "-L0"},
+        ("the natural length of spring 'spring' -L0 is negative", ("elements", "spring", "length")),
+    ),
+    (STANDING_SPRING, {"LENGTH": "L0"}, None),
+    (
+        SWING,
+        {"LENGTH": "-L0"},
+        ("the length of pendulum 'string' -L0 is negative", ("elements", "string", "length")),
+    ),
+    (SWING, {"LENGTH": "L0"}, None),
 ]
 
 
@@ -129,3 +163,22 @@ def test_friction_against_a_moving_body_must_name_it() -> None:
     with pytest.raises(DerivationError, match="Add `against: wedge` to the friction") as caught:
         uncached(load_model(yaml.safe_load(ROUGH_WEDGE), symbols))
     assert caught.value.path == ("friction", 0)
+
+
+def test_an_inclines_angle_typed_in_degrees_is_refused_where_written() -> None:
+    """`angle: 30` is 30 radians, an incline steeper than vertical that had verified a = g sin(30)."""
+    with pytest.raises(SpecErrors) as caught:
+        _model(
+            "elements:\n  ramp: {kind: incline, body: block, mass: m, angle: 30, coordinate: s}\nquantities: {a: {acceleration: s}}\n",
+            {},
+        )
+    [error] = caught.value.errors
+    assert error.path == ("elements", "ramp", "angle")
+    assert (
+        error.message
+        == "30 radians is 1719°, steeper than vertical: angles are in radians, so 30° is written 30*pi/180"
+    )
+    _model(
+        "elements:\n  ramp: {kind: incline, body: block, mass: m, angle: 0.5, coordinate: s}\nquantities: {a: {acceleration: s}}\n",
+        {},
+    )

@@ -8,6 +8,7 @@ element it came from, so a fault found later is reported at the element's path.
 
 from __future__ import annotations
 
+import math
 import re
 from collections.abc import Mapping
 from dataclasses import dataclass, field
@@ -150,6 +151,22 @@ class Fields:
             self.error("expected an expression (text or number)", key)
             return ""
         return text_of(value)
+
+    def slope(self, key: str, default: str | None = None) -> str:
+        """A surface's angle above the horizontal, as text. A plain number is radians: one past a right
+        angle (`angle: 30`, degrees meant) would be a surface steeper than vertical, derived as it is."""
+        text = self.text(key, default)
+        try:
+            value = float(text)
+        except ValueError:
+            return text
+        if abs(value) > math.pi / 2:
+            self.error(
+                f"{text} radians is {math.degrees(value):.0f}°, steeper than vertical: angles are in "
+                f"radians, so {text}° is written {text}*pi/180",
+                key,
+            )
+        return text
 
     def name(self, key: str, default: str | None = None) -> str:
         value = self.spec.get(key, default)

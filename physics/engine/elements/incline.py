@@ -36,7 +36,7 @@ def block_on_line(
     """The block and its contact; returns the block's name. Shared with `surface`."""
     body = fields.name("body", name)
     coordinate = fields.name("coordinate")
-    angle = fields.text("angle", angle_default)
+    angle = fields.slope("angle", angle_default)
     direction = fields.choice("direction", ("down", "up"))
     origin = fields.point("at")
     wedge = fields.sub("wedge")

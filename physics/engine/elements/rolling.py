@@ -34,7 +34,7 @@ def expand(name: str, spec: Mapping[str, Any], builder: Builder, path: Path) -> 
     coordinate = fields.name("coordinate")
     radius = wrap(fields.text("radius"))
     origin = fields.point("at")
-    angle = fields.text("angle", "0")
+    angle = fields.slope("angle", "0")
     direction = fields.choice("direction", ("down", "up"))
     line = Line(angle, direction, origin, origin)
     sliding = fields.has("friction")
