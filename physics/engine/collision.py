@@ -208,12 +208,23 @@ def _nonconservative_work(
     return work
 
 
-def by_newton(model: Model, quantity: Quantity, steps: list[tuple[str, str]]) -> sympy.Expr:
-    hit = model.collision
-    assert hit is not None
+@dataclasses.dataclass(frozen=True)
+class _Balance:
+    """The impulse balance of the merged body: each Cartesian dof's law, the constraints allowing the
+    velocities after, and the unknowns (velocities just after, constraint impulses)."""
+
+    after: Model
+    mech: Mechanics
+    balances: list[sympy.Expr]
+    allowed: list[sympy.Expr]
+    velocity: list[sympy.Symbol]
+    impulses: list[sympy.Symbol]
+
+
+def _balance(model: Model) -> _Balance:
     after = merged(model)
     mech = Mechanics(after)
-    at, reaches = event_points(model)
+    at, _ = event_points(model)
     place = {d.symbol: d.mapping.subs(at) for d in mech.dofs}
     momentum = _projectile_momentum(model, mech)
     impulses = [sympy.Symbol(f"J_{c.name}", real=True) for c in after.constraints]
@@ -224,6 +235,29 @@ def by_newton(model: Model, quantity: Quantity, steps: list[tuple[str, str]]) ->
         for i, (d, u, p) in enumerate(zip(mech.dofs, velocity, momentum, strict=True))
     ]
     allowed = [sympy.Add(*(g_i * u for g_i, u in zip(g, velocity, strict=True))) for g in gradients]
+    return _Balance(after, mech, balances, allowed, velocity, impulses)
+
+
+def constraint_impulses(model: Model) -> dict[str, sympy.Expr]:
+    """Each constraint's impulse as the projectile embeds itself (Newton's route), positive as its force
+    is (a string's pulls); in the projectile's speed, SPEED where that is what is asked."""
+    found = _balance(model)
+    solution = solve_linear(
+        found.balances + found.allowed, found.velocity + found.impulses, "impulse balance"
+    )
+    return {
+        c.name: tidy.simplify(solution[j])
+        for c, j in zip(found.after.constraints, found.impulses, strict=True)
+    }
+
+
+def by_newton(model: Model, quantity: Quantity, steps: list[tuple[str, str]]) -> sympy.Expr:
+    hit = model.collision
+    assert hit is not None
+    found = _balance(model)
+    after, mech, balances, allowed = found.after, found.mech, found.balances, found.allowed
+    velocity, impulses = found.velocity, found.impulses
+    at, reaches = event_points(model)
     # just after the impact: v'_{x,block} for the block's x velocity (primed as textbooks write a velocity
     # after; u may be the given speed), J_{string} for the string's impulse
     names = {

@@ -15,7 +15,7 @@ from collections.abc import Mapping
 import sympy
 
 from physics.answer_text import typed_text
-from physics.engine import impact
+from physics.engine import collision, impact
 from physics.engine.method import Method
 from physics.engine.model import Action, Constraint, ConstraintKind, Model, QuantityKind
 from physics.engine.signs import Sign, point_text, sign_on_domain, where_negative
@@ -60,19 +60,25 @@ def check_contact_signs(
 
 
 def _check_impulses(model: Model, unilateral: Mapping[str, ConstraintKind]) -> None:
-    """An impact holds every constraint through the blow, which a string and a surface do only with an
-    impulse of their force's sign: a ball flying up into a bob hanging on a string would need the string
-    to push, and bounces off it as off a wall, while the string goes slack and the bob flies up."""
-    if model.impact is None or not unilateral:
+    """An impact (or a projectile's collision) holds every constraint through the blow, which a string and
+    a surface do only with an impulse of their force's sign: a ball flying up into a bob hanging on a
+    string would need the string to push, and bounces off it as off a wall (a bullet rising into it would
+    swing with it), while the string goes slack and the bob flies up."""
+    if (model.impact is None and model.collision is None) or not unilateral:
         return
     try:
-        impulses = impact.constraint_impulses(model)
+        if model.impact is not None:
+            impulses = impact.constraint_impulses(model)
+        else:
+            impulses = collision.constraint_impulses(model)
     except PhyscheckError:
         return  # the methods said why already
     except Exception:  # sympy's failures on an uploaded model: the quantities were derived already
         return
     for name, kind in unilateral.items():
-        found = sign_on_domain(impulses[name], model)
+        if name not in impulses:
+            continue
+        found = sign_on_domain(impulses[name].subs(collision.SPEED, 1), model)  # linear in an asked speed
         if found.sign not in (Sign.NEGATIVE, Sign.MIXED):
             continue
         _, wrong, then = UNILATERAL[kind]
@@ -81,11 +87,18 @@ def _check_impulses(model: Model, unilateral: Mapping[str, ConstraintKind]) -> N
             if found.sign is Sign.NEGATIVE
             else f"at {point_text(found.negative_at or {})}"
         )
+        if model.impact is not None:
+            raise DerivationError(
+                f"constraint {name!r}: {wrong} during the impact {where}: {then} at the blow, which the "
+                f"impact holds (its impulse {typed_text(impulses[name])} must not be negative). Model the blow "
+                f"with the contact released (`released: [{name}]`, its bodies free to part)",
+                path=("impact",),
+            )
         raise DerivationError(
-            f"constraint {name!r}: {wrong} during the impact {where}: {then} at the blow, which the impact "
-            f"holds (its impulse {typed_text(impulses[name])} must not be negative). Model the blow with the "
-            f"contact released (`released: [{name}]`, its bodies free to part)",
-            path=("impact",),
+            f"constraint {name!r}: {wrong} as the projectile strikes {where}: {then} at the blow, which the "
+            f"collision holds (its impulse {typed_text(impulses[name])} must not be negative). Check the "
+            "projectile's direction",
+            path=("collision", "direction"),
         )
 
 

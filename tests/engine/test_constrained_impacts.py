@@ -229,3 +229,33 @@ def test_a_string_or_surface_whose_impulse_would_act_the_wrong_way_is_refused(
     with pytest.raises(DerivationError, match=f"constraint '{refused}': the .* during the impact") as caught:
         uncached(model)
     assert caught.value.path == ("impact",)
+
+
+# a bullet fired at alpha to the horizontal embeds itself in a bob hanging on a string
+BULLET_AT_AN_ANGLE = """
+elements:
+  string: {kind: pendulum, body: bob, mass: m2, length: L, coordinate: phi}
+collision: {projectile: bullet, mass: m1, direction: {x: "cos(alpha)", y: DY}, target: bob, at: {phi: 0}, speed: u}
+domain:
+  ranges: {alpha: ["0", "pi/2"]}
+quantities:
+  swing: {velocity_after: phi}
+"""
+
+
+@pytest.mark.parametrize(
+    ("dy", "refused"), [("-sin(alpha)", False), ("sin(alpha)", True)], ids=["down", "up"]
+)
+def test_a_bullet_rising_into_a_hanging_bob_is_refused_at_its_direction(dy: str, refused: bool) -> None:
+    """Fired from below, the string would have to push the bob down to hold it on its circle: it goes
+    slack and the bob flies up. The collision had been worked with the string holding (m u cos(alpha)
+    / ((m1 + m2) L), as from above)."""
+    model = load_model(yaml.safe_load(BULLET_AT_AN_ANGLE.replace("DY", f'"{dy}"')), SYMBOLS)
+    if not refused:
+        swing = uncached(model).quantities["swing"]
+        assert sympy.simplify(swing - m1 * u * sympy.cos(alpha) / ((m1 + m2) * L)) == 0
+        return
+    with pytest.raises(
+        DerivationError, match="constraint 'string': the string would push as the projectile strikes"
+    ):
+        uncached(model)
