@@ -366,6 +366,18 @@ def _clear_of_arms(forces: list[Force], arms: list[float]) -> tuple[float, float
     return max(quarters, key=lambda q: min(math.dist(q, point) for point in taken))
 
 
+def _arrow_from(
+    canvas: Canvas, start: tuple[float, float], force: Force, labelled: list[tuple[float, float]]
+) -> None:
+    """The force's arrow from `start` along its direction, labelled clear of the labels already placed."""
+    dx, dy = force.direction
+    tip = (start[0] + dx * ARROW, start[1] + dy * ARROW)
+    canvas.arrow(start, tip, width=0.07, color="#a11111")
+    at = _clear_of_labels((tip[0] + dx * 0.5, tip[1] + dy * 0.5), force.direction, labelled)
+    canvas.text(at, force.label, size=FORCE_LABEL)
+    labelled.append(at)
+
+
 def free_body_figure(model: Model, body_name: str, given: Mapping[str, float], *, title: str) -> str:
     """SVG of the forces on one body (role img, <title>, <desc> listing the forces and directions)."""
     canvas = Canvas()
@@ -397,11 +409,7 @@ def free_body_figure(model: Model, body_name: str, given: Mapping[str, float], *
             canvas.line((0.0, 0.0), start, width=0.03, dashed=True)
             if force.lever_label:
                 canvas.text(_arm_label_at(start, force.direction), force.lever_label, size=0.42)
-            tip = (start[0] + dx * ARROW, start[1] + dy * ARROW)
-            canvas.arrow(start, tip, width=0.07, color="#a11111")
-            at = _clear_of_labels((tip[0] + dx * 0.5, tip[1] + dy * 0.5), force.direction, labelled)
-            canvas.text(at, force.label, size=FORCE_LABEL)
-            labelled.append(at)
+            _arrow_from(canvas, start, force, labelled)
             said.append(
                 f"{force.label} at {round(math.degrees(math.atan2(dy, dx)))}° from the +x axis, acting "
                 f"{'left' if start[0] < 0 else 'right' if start[0] > 0 else 'off'} of the centre"
@@ -409,12 +417,7 @@ def free_body_figure(model: Model, body_name: str, given: Mapping[str, float], *
             )
             continue
         if force.contact is not None and body.angle is not None:  # from where the body touches
-            start = (force.contact[0] * RIGID, force.contact[1] * RIGID)
-            tip = (start[0] + dx * ARROW, start[1] + dy * ARROW)
-            canvas.arrow(start, tip, width=0.07, color="#a11111")
-            at = _clear_of_labels((tip[0] + dx * 0.5, tip[1] + dy * 0.5), force.direction, labelled)
-            canvas.text(at, force.label, size=FORCE_LABEL)
-            labelled.append(at)
+            _arrow_from(canvas, (force.contact[0] * RIGID, force.contact[1] * RIGID), force, labelled)
             said.append(
                 f"{force.label} at {round(math.degrees(math.atan2(dy, dx)))}° from the +x axis, at the contact"
             )
