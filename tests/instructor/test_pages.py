@@ -437,3 +437,22 @@ def test_behind_https_the_session_cookie_is_secure(settings, pages_pool):
         response = sign_in(client, new_key(stores_of(client), "instructor", "Prof"))
     cookie = next(c for c in response.headers.get_list("set-cookie") if c.startswith(COOKIE + "="))
     assert "Secure" in cookie
+
+
+def test_a_limiting_case_is_not_described_by_restating_it(
+    settings: Settings, pages_pool: GradingPool, tmp_path: Path
+) -> None:
+    """The engine describes a bare angle's limit as `θ → 0`; the page had shown "θ → 0: θ → 0"."""
+    shutil.copytree(BANK_DIR / "moving-wedge", tmp_path / "moving-wedge")
+    with TestClient(make_app(settings.model_copy(update={"bank_dir": tmp_path}), pages_pool)) as client:
+        sign_in(client, new_key(stores_of(client), "instructor", "Prof Ada"))
+        html = client.get("/instructor/problems/moving-wedge").text
+    words = []
+    for section in html.split("Limiting cases")[1:]:
+        items = re.findall(r"<li>(.*?)</li>", section[: section.index("</ul>")], re.S)
+        words += [re.sub(r"<math.*?</math>", "", item, flags=re.S).strip() for item in items]
+    assert "" in words, f"a bare angle's limit is its formula alone: {words}"
+    assert not any(text.endswith("→ 0") for text in words), words
+    assert any(text.startswith(": ") and len(text) > 2 for text in words), (
+        f"described ones keep words: {words}"
+    )

@@ -42,6 +42,7 @@ from physics.symbolic import (
 )
 from physics.symbolic.tree_reference import TreeDomain, prepared_from_text, tree_domain
 from physics.verdict import Outcome, Preview, Reason, Verdict
+from physics.wording import symbol_label
 from problems.fields import (
     MAX_ITEMS,
     PART_ID,
@@ -390,7 +391,8 @@ class SymbolicKind:
                 for i, m in enumerate(part.context.mistakes)
             ),
             limits=tuple(
-                LimitInfo(limit_where(case.substitutions), case.description) for case in part.context.limits
+                LimitInfo(limit_where(case.substitutions), _beyond_where(case))
+                for case in part.context.limits
             ),
         )
 
@@ -415,6 +417,16 @@ def described_mistake(
         except PhyscheckError:
             pass
     return MistakeInfo(typeset.latex(expr), typed_text(expr), feedback, index < authored)
+
+
+def _beyond_where(case: LimitCase) -> str:
+    """A limit's description where it says more than its `where`: the engine describes a bare angle's
+    limit as `θ → 0`, which the page would show as "θ → 0: θ → 0"."""
+    restated = ", ".join(
+        f"{symbol_label(symbol.name)} → {'∞' if value == sympy.oo else value}"
+        for symbol, value in case.substitutions.items()
+    )
+    return "" if case.description == restated else case.description
 
 
 def limit_where(substitutions: Mapping[sympy.Symbol, sympy.Expr]) -> str:
