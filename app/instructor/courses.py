@@ -523,12 +523,18 @@ async def assignment_results(
         book = service.course_gradebook(services.stores, services.catalog, course, now)
         cells = [book.cell(e.student, record.id) for e in book.students]
         rows = []
+        titles: dict[str, str] = {}
         for index, part in enumerate(service.assignment_parts(services.catalog, record)):
             done = [c.parts[index] for c in cells if index < len(c.parts)]
             tried = [p for p in done if p.attempts]
+            if part.problem_id not in titles:
+                titles[part.problem_id] = services.catalog.document(
+                    services.catalog.get(part.problem_id)
+                ).title
             rows.append(
                 {
                     "problem": part.problem_id,
+                    "title": titles[part.problem_id],
                     "part": part.part_id,
                     "tried": len(tried),
                     "correct": sum(p.solved for p in tried),

@@ -158,7 +158,9 @@ def test_the_course_page_makes_and_turns_off_a_join_code(signed_in: TestClient, 
     assert stores.courses.get_course(course).join_code is None
 
 
-def test_an_assignments_results_count_the_courses_students_only(signed_in: TestClient, stores: Stores):
+def test_an_assignments_results_count_the_courses_students_only_under_the_problems_titles(
+    signed_in: TestClient, stores: Stores
+):
     from datetime import UTC, datetime, timedelta
 
     from app.courses.records import AssignmentSpec, RosterRow
@@ -183,8 +185,13 @@ def test_an_assignments_results_count_the_courses_students_only(signed_in: TestC
         )
     page = signed_in.get(f"/instructor/assignments/{made.id}/results")
     assert page.status_code == 200
-    row = re.search(r"<td>yo-yo</td><td>acceleration</td><td>(\d+)</td><td>(\d+)</td>", page.text)
-    assert row and row.groups() == ("1", "1")
+    title = stores.problems.get("yo-yo").document["title"]
+    row = re.search(
+        rf'<td><a href="/instructor/problems/yo-yo">{re.escape(title)}</a></td><td>acceleration</td>'
+        r"<td>(\d+)</td><td>(\d+)</td>",
+        page.text,
+    )
+    assert row and row.groups() == ("1", "1"), "each part under its problem's title, linked to the problem"
     other = TestClient(signed_in.app, follow_redirects=False)
     sign_in(other, new_key(stores, "instructor", "Prof B"))
     assert other.get(f"/instructor/assignments/{made.id}/results").status_code == 404
