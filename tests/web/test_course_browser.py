@@ -248,6 +248,12 @@ def test_the_builders_search_filters_in_place_keeping_what_was_typed_and_ticked(
         )
     }
     assert max(heights.values()) - min(heights.values()) <= 2, heights
+    # the late penalty's fields only while late work is accepted (they had shown with it closed)
+    penalty = teacher.get_by_label("Penalty per day late (%)")
+    expect(penalty).to_be_hidden()
+    teacher.get_by_label("Late work").select_option("penalty")
+    expect(penalty).to_be_visible()
+    expect(teacher.get_by_label("At most (%)")).to_be_visible()
     check_page(teacher, f"course-builder-search-{device}")
 
 

@@ -61,6 +61,18 @@ document.addEventListener("click", (event) => {
   });
 })();
 
+// The late penalty's fields only while late work is accepted: with it closed they set nothing.
+(function () {
+  const late = document.getElementById("a-late");
+  const penalty = document.getElementById("late-penalty");
+  if (!late || !penalty) {
+    return;
+  }
+  const show = () => { penalty.hidden = late.value !== "penalty"; };
+  late.addEventListener("change", show);
+  show();
+})();
+
 // "Copy the join link": the link's text to the clipboard, said on the button (shown only where script
 // runs; selecting the link by hand works everywhere).
 for (const button of document.querySelectorAll("button[data-copy]")) {
