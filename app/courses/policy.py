@@ -67,6 +67,14 @@ def status(
     return Status.IN_PROGRESS if started else Status.NOT_STARTED
 
 
+# When an assignment's worked solutions open, as the builder offers it and the course page lists it.
+SOLUTIONS_OPEN = {
+    SolutionRelease.AFTER_DUE: "After the due date",
+    SolutionRelease.AFTER_LAST_ATTEMPT: "Once every part is done",
+    SolutionRelease.NEVER: "Never",
+}
+
+
 def late_policy_text(policy: LatePolicy) -> str:
     """Said to students beside the due date."""
     if policy.kind is LateKind.CLOSED:

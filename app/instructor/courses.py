@@ -28,7 +28,7 @@ from starlette.datastructures import UploadFile
 
 from app.courses import access, gradebook, service
 from app.courses import sessions as course_sessions
-from app.courses.policy import late_policy_text, shown
+from app.courses.policy import SOLUTIONS_OPEN, late_policy_text, shown
 from app.courses.records import (
     AssignmentNotFound,
     AssignmentRecord,
@@ -127,6 +127,8 @@ def _course_context(services: Services, course: CourseRecord) -> dict[str, Any]:
                 "due": shown(a.spec.due_at, course.timezone),
                 "late": late_policy_text(a.spec.late),
                 "problems": len(a.problems),
+                "attempts": a.spec.max_attempts,
+                "solutions": SOLUTIONS_OPEN[a.spec.solutions],
             }
             for a in assignments
         ],
@@ -252,6 +254,7 @@ def _builder_context(
         "bank": bank,
         "picked": picked,
         "fields": typed or fields_of(spec, course.timezone, now),
+        "solutions_open": SOLUTIONS_OPEN,
     }
 
 

@@ -83,13 +83,17 @@ def test_the_assignment_builder_saves_problems_in_the_chosen_order_and_dates_in_
         },
     )
     assert saved.status_code == 303, saved.text
-    assert "Assignment saved." in signed_in.get(saved.headers["location"]).text  # said, not silent
+    listed = signed_in.get(saved.headers["location"]).text
+    assert "Assignment saved." in listed  # said, not silent
+    # the course's list says each assignment's attempts and when its solutions open, not only its dates
+    assert re.search(r"<td>3</td><td>After the due date</td>", listed), "attempts, then solutions"
     [made] = stores.courses.assignments(course)
     assert made.problems == ("yo-yo",) and made.spec.max_attempts == 3
     assert made.spec.due_at.isoformat() == "2026-03-08T22:59:00+00:00"  # 23:59 in Paris (CET)
     assert made.spec.late.per_day == 0.1
     edit = signed_in.get(f"/instructor/assignments/{made.id}/edit")
     assert 'value="2026-03-08T23:59"' in edit.text
+    assert '<option value="after_due" selected>After the due date</option>' in edit.text
     refused = signed_in.post(
         f"/instructor/courses/{course}/assignments/new",
         data={"csrf": csrf_of(form.text), "title": "", "opens_at": "", "due_at": ""},
