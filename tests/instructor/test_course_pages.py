@@ -30,6 +30,23 @@ def _make_course(client: TestClient) -> int:
     return int(made.headers["location"].rsplit("/", 1)[1])
 
 
+def _answered_yo_yo(stores: Stores, *students: str) -> None:
+    """Each student's right answer to the yo-yo's acceleration, filed as a graded submission."""
+    from tests.db.helpers import CORRECT
+
+    version = stores.problems.get("yo-yo").version
+    for student in students:
+        stores.submissions.file(
+            problem_id="yo-yo",
+            problem_version=version,
+            part_id="acceleration",
+            student=student,
+            answer="g",
+            verdict=CORRECT,
+            max_attempts=None,
+        )
+
+
 def test_a_course_is_made_its_roster_imported_twice_without_duplicates(signed_in: TestClient, stores: Stores):
     course = _make_course(signed_in)
     page = signed_in.get(f"/instructor/courses/{course}")
@@ -168,7 +185,6 @@ def test_an_assignments_results_count_the_courses_students_only_under_the_proble
     from datetime import UTC, datetime, timedelta
 
     from app.courses.records import AssignmentSpec, RosterRow
-    from tests.db.helpers import CORRECT
 
     course = _make_course(signed_in)
     stores.courses.import_roster(course, [RosterRow("s1", "Ada", ""), RosterRow("s2", "Alan", "")])
@@ -176,17 +192,7 @@ def test_an_assignments_results_count_the_courses_students_only_under_the_proble
     made = stores.courses.create_assignment(
         course, AssignmentSpec("HW", ("yo-yo",), now - timedelta(days=1), now + timedelta(days=1))
     )
-    version = stores.problems.get("yo-yo").version
-    for student in (f"course:{course}:s1", "someone-outside"):
-        stores.submissions.file(
-            problem_id="yo-yo",
-            problem_version=version,
-            part_id="acceleration",
-            student=student,
-            answer="g",
-            verdict=CORRECT,
-            max_attempts=None,
-        )
+    _answered_yo_yo(stores, f"course:{course}:s1", "someone-outside")
     page = signed_in.get(f"/instructor/assignments/{made.id}/results")
     assert page.status_code == 200
     title = stores.problems.get("yo-yo").document["title"]
@@ -231,21 +237,10 @@ def test_an_upload_is_seen_by_its_authors_courses_and_by_all_once_shared(
 
 def test_the_submissions_page_and_csv_show_only_the_visitors_students(signed_in: TestClient, stores: Stores):
     from app.courses.records import RosterRow
-    from tests.db.helpers import CORRECT
 
     course = _make_course(signed_in)
     stores.courses.import_roster(course, [RosterRow("s1", "Ada", "")])
-    version = stores.problems.get("yo-yo").version
-    for student in (f"course:{course}:s1", "keyed-student"):
-        stores.submissions.file(
-            problem_id="yo-yo",
-            problem_version=version,
-            part_id="acceleration",
-            student=student,
-            answer="g",
-            verdict=CORRECT,
-            max_attempts=None,
-        )
+    _answered_yo_yo(stores, f"course:{course}:s1", "keyed-student")
     own = signed_in.get("/instructor/submissions")
     assert f"course:{course}:s1" in own.text and "keyed-student" in own.text
     other = TestClient(signed_in.app, follow_redirects=False)
@@ -262,24 +257,13 @@ def test_the_submissions_page_names_a_courses_students_and_finds_them_by_name(
 ):
     # a joined student's work is filed as course:N:join-…, which told the instructor nothing
     from app.courses.records import RosterRow
-    from tests.db.helpers import CORRECT
 
     course = _make_course(signed_in)
     stores.courses.import_roster(
         course,
         [RosterRow("s1", "Ada Lovelace", ""), RosterRow("s2", "Alan", ""), RosterRow("s3", "Alan", "")],
     )
-    version = stores.problems.get("yo-yo").version
-    for student in (f"course:{course}:s1", f"course:{course}:s2"):
-        stores.submissions.file(
-            problem_id="yo-yo",
-            problem_version=version,
-            part_id="acceleration",
-            student=student,
-            answer="g",
-            verdict=CORRECT,
-            max_attempts=None,
-        )
+    _answered_yo_yo(stores, f"course:{course}:s1", f"course:{course}:s2")
     listed = signed_in.get("/instructor/submissions")
     assert ">Ada Lovelace</a>" in listed.text and f"course:{course}:s1" in listed.text  # name, then identity
     found = signed_in.get("/instructor/submissions", params={"student": "ada lovelace"})
