@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from typing import Annotated
 
-from fastapi import Depends, Request, Security
+from fastapi import Depends, Path, Request, Security
 from starlette.concurrency import run_in_threadpool
 
 from app.auth import Principal, bearer_token
@@ -23,6 +23,11 @@ async def get_services(request: Request) -> Services:
 
 
 ServicesDep = Annotated[Services, Depends(get_services)]
+
+# Courses and assignments are numbered by 64-bit integers in both databases. A larger number names no
+# record, and SQLite's driver raises OverflowError on it instead of finding nothing.
+RECORD_ID_MAX = 2**63 - 1
+RecordId = Annotated[int, Path(ge=1, le=RECORD_ID_MAX)]
 
 
 def get_problem_store(services: ServicesDep) -> ProblemStore:

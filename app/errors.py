@@ -28,6 +28,7 @@ from sqlalchemy.exc import DataError, InterfaceError, OperationalError
 from sqlalchemy.exc import TimeoutError as PoolTimeout
 from starlette.exceptions import HTTPException as StarletteHTTPException
 
+from app.allowed_methods import allowed_methods
 from app.db import errors as storage
 from physics.errors import DerivationError, SpecError
 from physics.wording import counted
@@ -221,7 +222,11 @@ def install_error_handlers(app: FastAPI) -> None:
                 return refused
             return _json(422, "malformed_request", unreadable_body_message(error.__cause__))
         code = _HTTP_CODES.get(error.status_code, "error")
-        return _json(error.status_code, code, str(error.detail), headers=getattr(error, "headers", None))
+        headers = getattr(error, "headers", None)
+        if error.status_code == 405:
+            allowed = allowed_methods(request.app, request.url.path)
+            headers = headers if allowed is None else {**(headers or {}), "Allow": allowed}
+        return _json(error.status_code, code, str(error.detail), headers=headers)
 
     @app.exception_handler(DataError)
     async def unstorable(request: Request, error: DataError) -> JSONResponse:

@@ -40,7 +40,7 @@ from app.courses.records import (
     SolutionRelease,
 )
 from app.courses.roster_csv import parse_roster
-from app.deps import ServicesDep
+from app.deps import RecordId, ServicesDep
 from app.instructor import session as auth
 from app.instructor.builder_fields import LOCAL, fields_of, fields_typed
 from app.instructor.router import PageError, Visitor, _page
@@ -136,7 +136,7 @@ def _course_context(services: Services, course: CourseRecord) -> dict[str, Any]:
 
 
 @router.get("/courses/{course_id}")
-async def course_page(course_id: int, request: Request, services: ServicesDep, who: Visitor) -> Response:
+async def course_page(course_id: RecordId, request: Request, services: ServicesDep, who: Visitor) -> Response:
     def load() -> dict[str, Any]:
         return _course_context(services, _course(services, who, course_id))
 
@@ -147,7 +147,9 @@ async def course_page(course_id: int, request: Request, services: ServicesDep, w
 
 
 @router.post("/courses/{course_id}/roster")
-async def import_roster(course_id: int, request: Request, services: ServicesDep, who: Visitor) -> Response:
+async def import_roster(
+    course_id: RecordId, request: Request, services: ServicesDep, who: Visitor
+) -> Response:
     await auth.require_csrf(request, services, who)
     form = await request.form()
     text = str(form.get("roster") or "")
@@ -183,7 +185,9 @@ async def import_roster(course_id: int, request: Request, services: ServicesDep,
 
 
 @router.post("/courses/{course_id}/links")
-async def sign_in_links(course_id: int, request: Request, services: ServicesDep, who: Visitor) -> Response:
+async def sign_in_links(
+    course_id: RecordId, request: Request, services: ServicesDep, who: Visitor
+) -> Response:
     """New personal links for everyone on the roster, or for one student: shown once, on this page."""
     await auth.require_csrf(request, services, who)
     form = await request.form()
@@ -260,7 +264,7 @@ def _builder_context(
 
 @router.get("/courses/{course_id}/assignments/new")
 async def new_assignment(
-    course_id: int, request: Request, services: ServicesDep, who: Visitor, q: str = ""
+    course_id: RecordId, request: Request, services: ServicesDep, who: Visitor, q: str = ""
 ) -> Response:
     def load() -> dict[str, Any]:
         course = _course(services, who, course_id, instructor=True)
@@ -274,7 +278,7 @@ async def new_assignment(
 
 @router.get("/assignments/{assignment_id}/edit")
 async def edit_assignment(
-    assignment_id: int, request: Request, services: ServicesDep, who: Visitor, q: str = ""
+    assignment_id: RecordId, request: Request, services: ServicesDep, who: Visitor, q: str = ""
 ) -> Response:
     def load() -> dict[str, Any]:
         course, record = _assignment(services, who, assignment_id)
@@ -378,14 +382,14 @@ async def _save_builder(
 
 @router.post("/courses/{course_id}/assignments/new")
 async def create_assignment(
-    course_id: int, request: Request, services: ServicesDep, who: Visitor
+    course_id: RecordId, request: Request, services: ServicesDep, who: Visitor
 ) -> Response:
     return await _save_builder(request, services, who, course_id, None)
 
 
 @router.post("/assignments/{assignment_id}/edit")
 async def update_assignment(
-    assignment_id: int, request: Request, services: ServicesDep, who: Visitor
+    assignment_id: RecordId, request: Request, services: ServicesDep, who: Visitor
 ) -> Response:
     return await _save_builder(request, services, who, None, assignment_id)
 
@@ -395,7 +399,7 @@ async def update_assignment(
 
 @router.get("/courses/{course_id}/gradebook")
 async def gradebook_page(
-    course_id: int, request: Request, services: ServicesDep, who: Visitor, student: str = ""
+    course_id: RecordId, request: Request, services: ServicesDep, who: Visitor, student: str = ""
 ) -> Response:
     now = request.app.state.lti.clock()
 
@@ -415,7 +419,9 @@ async def gradebook_page(
 
 
 @router.get("/courses/{course_id}/gradebook.csv")
-async def gradebook_csv(course_id: int, request: Request, services: ServicesDep, who: Visitor) -> Response:
+async def gradebook_csv(
+    course_id: RecordId, request: Request, services: ServicesDep, who: Visitor
+) -> Response:
     now = request.app.state.lti.clock()
 
     def load() -> str:
@@ -431,7 +437,7 @@ async def gradebook_csv(course_id: int, request: Request, services: ServicesDep,
 
 
 @router.post("/courses/{course_id}/extensions")
-async def extension(course_id: int, request: Request, services: ServicesDep, who: Visitor) -> Response:
+async def extension(course_id: RecordId, request: Request, services: ServicesDep, who: Visitor) -> Response:
     await auth.require_csrf(request, services, who)
     form = await request.form()
     student = str(form.get("student") or "")
@@ -493,7 +499,7 @@ async def view_as_student(problem_id: str, request: Request, services: ServicesD
 
 
 @router.post("/courses/{course_id}/join-code")
-async def join_code(course_id: int, request: Request, services: ServicesDep, who: Visitor) -> Response:
+async def join_code(course_id: RecordId, request: Request, services: ServicesDep, who: Visitor) -> Response:
     """A fresh join code for the course, or none (`enabled=0`)."""
     await auth.require_csrf(request, services, who)
     form = await request.form()
@@ -509,7 +515,7 @@ async def join_code(course_id: int, request: Request, services: ServicesDep, who
 
 @router.get("/assignments/{assignment_id}/results")
 async def assignment_results(
-    assignment_id: int, request: Request, services: ServicesDep, who: Visitor
+    assignment_id: RecordId, request: Request, services: ServicesDep, who: Visitor
 ) -> Response:
     """How the course's students did on each part of an assignment (from the gradebook: only this
     course's students, late penalties applied to the scores)."""

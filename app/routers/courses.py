@@ -32,7 +32,7 @@ from app.courses.records import (
 )
 from app.courses.roster_csv import parse_roster
 from app.db.errors import ProblemNotFound
-from app.deps import CurrentPrincipal, Instructor, ServicesDep
+from app.deps import RECORD_ID_MAX, CurrentPrincipal, Instructor, ServicesDep
 from app.errors import AppError, Conflict, NotFound
 from app.openapi import AUTHENTICATED, errors
 from app.schemas import examples
@@ -60,8 +60,8 @@ from app.schemas.courses import (
 from app.services import Services
 
 router = APIRouter(tags=["courses"], responses=AUTHENTICATED)
-CourseIdPath = Annotated[int, Path(openapi_examples=examples.COURSE_ID)]
-AssignmentIdPath = Annotated[int, Path(openapi_examples=examples.ASSIGNMENT_ID)]
+CourseIdPath = Annotated[int, Path(ge=1, le=RECORD_ID_MAX, openapi_examples=examples.COURSE_ID)]
+AssignmentIdPath = Annotated[int, Path(ge=1, le=RECORD_ID_MAX, openapi_examples=examples.ASSIGNMENT_ID)]
 StudentPath = Annotated[str, Path(openapi_examples=examples.ROSTERED_STUDENT)]
 SharedProblemPath = Annotated[str, Path(openapi_examples=examples.UPLOADED_PROBLEM_ID)]
 CSV_MEDIA = "text/csv"

@@ -25,6 +25,7 @@ from app.courses import sessions as course_sessions
 from app.courses.gradebook import AssignmentCell
 from app.courses.policy import Status, late_policy_text, shown
 from app.courses.records import AssignmentNotFound, AssignmentRecord, CourseRecord
+from app.deps import RecordId
 from app.lti.context import LtiContext, LtiContextDep
 from app.lti.platforms import platform_origins
 from app.lti.sessions import current_session
@@ -189,7 +190,7 @@ async def my_courses(request: Request, context: LtiContextDep) -> HTMLResponse:
 
 @router.get("/courses/{course_id}/assignments/{assignment_id}")
 async def assignment_page(
-    course_id: int, assignment_id: int, request: Request, context: LtiContextDep
+    course_id: RecordId, assignment_id: RecordId, request: Request, context: LtiContextDep
 ) -> Response:
     services = _services(request)
     now = context.clock()
