@@ -22,7 +22,12 @@ class RosterProblem:
 
 def parse_roster(text: str) -> tuple[list[RosterRow], list[RosterProblem]]:
     """Every row, or every problem found (all at once, with its line number)."""
-    lines = list(csv.reader(io.StringIO(text.lstrip("\ufeff"))))
+    # newline="": csv ends a line at \r\n, \n or a lone \r itself (Excel for Mac's "CSV" ends lines with \r).
+    reader = csv.reader(io.StringIO(text.lstrip("\ufeff"), newline=""))
+    try:
+        lines = list(reader)
+    except csv.Error as error:  # a field past csv's size limit
+        return [], [RosterProblem(reader.line_num, f"the line cannot be read as CSV ({error})")]
     rows: list[RosterRow] = []
     problems: list[RosterProblem] = []
     columns = (0, 1, 2)

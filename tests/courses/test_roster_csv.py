@@ -15,6 +15,7 @@ from app.courses.roster_csv import parse_roster
         "id,name,email\ns1,Ada Lovelace,ada@x.org\ns2,Alan Turing,\n",
         "\ufeffEmail,Student ID,Name\r\nada@x.org,s1,Ada Lovelace\r\n,s2,Alan Turing\r\n\r\n",
         'Student ID,Name\ns1,"Ada Lovelace"\ns2,Alan Turing\n',
+        "id,name,email\rs1,Ada Lovelace,ada@x.org\rs2,Alan Turing,\r",  # Excel for Mac ends lines with \r
     ],
 )
 def test_rosters_are_read_with_or_without_header(text):
@@ -29,3 +30,10 @@ def test_every_bad_line_is_reported_at_once():
     assert [r.roster_id for r in rows] == ["s1"]
     assert [p.line for p in problems] == [2, 3, 4, 5]
     assert "line 1" in problems[-1].message
+
+
+def test_a_field_past_the_csv_size_limit_is_a_problem_on_its_line():
+    rows, problems = parse_roster("s1,Ada\ns2," + "B" * 200_000 + "\n")
+    assert rows == []
+    assert [p.line for p in problems] == [2]
+    assert "cannot be read as CSV" in problems[0].message
