@@ -100,7 +100,9 @@ def _gap(a: float, b: float) -> float:
 
 def _text(forces: list[DrawnForce]) -> ReadAs:
     said = "; ".join(f"{f.kind} {f.angle:g}°" for f in forces)
-    return ReadAs(said, r"\text{" + said.replace("°", r"^\circ") + "}")
+    # Each angle in math mode: a superscript inside \text{} is printed as the characters "^\circ".
+    latex = r"\text{; }".join(rf"\text{{{f.kind} }}{f.angle:g}^\circ" for f in forces)
+    return ReadAs(said, latex)
 
 
 @dataclass(frozen=True)

@@ -8,6 +8,7 @@ from __future__ import annotations
 from functools import cache
 
 import pytest
+from latex2mathml.converter import convert
 from pydantic import TypeAdapter
 
 from physics.checking import run_job
@@ -156,3 +157,12 @@ def test_the_bank_block_gets_the_normal_force_perpendicular_to_its_own_incline()
         compiled.part("forces_on_wedge").job(f"weight 270; normal 90; normal {270 - theta:g}", variant)
     )
     assert wedge.outcome is Outcome.CORRECT, wedge
+
+
+def test_the_reading_typesets_each_angle_in_degrees():
+    verdict = check("incline", "weight 270; normal 60.5")
+    assert verdict.read_as is not None
+    assert verdict.read_as.text == "weight 270°; normal 60.5°"
+    mathml = convert(verdict.read_as.latex)
+    assert "^" not in mathml  # inside \text{} a superscript was printed as the characters ^\circ
+    assert mathml.count("&#x02218;") == 2  # a ring operator (the degree) above each angle
