@@ -5,8 +5,19 @@ from __future__ import annotations
 from datetime import datetime
 from typing import Any
 
-from sqlalchemy import JSON, CheckConstraint, Float, ForeignKey, Index, Integer, String, UniqueConstraint
+from sqlalchemy import (
+    JSON,
+    Boolean,
+    CheckConstraint,
+    Float,
+    ForeignKey,
+    Index,
+    Integer,
+    String,
+    UniqueConstraint,
+)
 from sqlalchemy.orm import Mapped, mapped_column
+from sqlalchemy.sql.expression import false
 
 from app.db.base import Base
 from app.db.models import HASH_LENGTH, NAME_LENGTH, STUDENT_LENGTH
@@ -62,7 +73,8 @@ class Enrolment(Base):
 
 
 class SignInToken(Base):
-    """A personal sign-in link's token (its hash): spent on first use, or replaced by a newer link."""
+    """A personal sign-in link's token (its hash): spent on first use, or replaced by a newer link. A
+    student's link to come back (`reusable`) is never spent: it signs in until replaced or expired."""
 
     __tablename__ = "sign_in_tokens"
     __table_args__ = (Index("ix_sign_in_tokens_student", "course_id", "student"),)
@@ -72,6 +84,7 @@ class SignInToken(Base):
     student: Mapped[str] = mapped_column(String(STUDENT_LENGTH))
     expires_at: Mapped[datetime] = mapped_column(UTCDateTime())
     used_at: Mapped[datetime | None] = mapped_column(UTCDateTime())
+    reusable: Mapped[bool] = mapped_column(Boolean, server_default=false())
 
 
 class CourseSessionRow(Base):

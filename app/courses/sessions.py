@@ -1,11 +1,16 @@
 """Students without an LMS: a personal sign-in link (a single-use token) opens a session for the
 course, held in an HttpOnly, SameSite=Lax cookie, so every tab of the browser is signed in and no
 page asks for an API key. The session reads as a launched student's (`SessionRecord`), so the API
-and the student pages accept it exactly as they accept an LMS launch, CSRF token included."""
+and the student pages accept it exactly as they accept an LMS launch, CSRF token included.
+
+A student's link to come back (shown when they join, or made again while signed in) is the same
+kind of token, not spent by signing in: it is what a password is elsewhere, so only its hash is
+kept, and any new link of theirs (the instructor's included) replaces it."""
 
 from __future__ import annotations
 
 import secrets
+from dataclasses import dataclass
 from datetime import datetime, timedelta
 
 from app.auth import Role
@@ -16,6 +21,7 @@ from app.storage.protocols import CourseStore
 COOKIE = "physcheck_course"
 SESSION_LIFETIME = timedelta(days=14)
 LINK_LIFETIME = timedelta(days=30)
+RETURN_LINK_LIFETIME = timedelta(days=365)  # a course's year at most; a new one replaces it sooner
 PREVIEW_LIFETIME = timedelta(hours=8)
 SIGN_IN_PATH = "/s/"  # followed by the token
 COURSE_PLATFORM = 0  # no LMS: what a course session's SessionRecord names as its platform
@@ -25,6 +31,14 @@ def issue_link(courses: CourseStore, course_id: int, student: str, now: datetime
     """A new personal link's token (shown once; only its hash is kept); older unused links die."""
     token = secrets.token_urlsafe(24)
     courses.issue_sign_in(course_id, student, token_hash(token), now + LINK_LIFETIME)
+    return token
+
+
+def issue_return_link(courses: CourseStore, course_id: int, student: str, now: datetime) -> str:
+    """The student's new link to come back (shown once): it signs them in on any device, each time,
+    until they or their instructor make a new link."""
+    token = secrets.token_urlsafe(24)
+    courses.issue_sign_in(course_id, student, token_hash(token), now + RETURN_LINK_LIFETIME, reusable=True)
     return token
 
 
@@ -88,19 +102,45 @@ def new_join_code() -> str:
     return "".join(secrets.choice(_JOIN_ALPHABET) for _ in range(8))
 
 
+@dataclass(frozen=True)
+class Joined:
+    """A new student of the course, signed in: the session's cookie, and their link to come back."""
+
+    cookie: str
+    session: CourseSession
+    return_token: str
+
+
+@dataclass(frozen=True)
+class AlreadyJoined:
+    """Someone of the course has this name or email already: no second student is made (they would
+    lose their work), and nobody signs in as that student by typing their name."""
+
+    matched: str  # "name" or "email"
+
+
+def _same_name(a: str, b: str) -> bool:
+    return " ".join(a.split()).casefold() == " ".join(b.split()).casefold()
+
+
 def join(
     courses: CourseStore, code: str, name: str, email: str, now: datetime
-) -> tuple[str, CourseSession] | None:
-    """Enrol a new student by the course's join code and sign them in: (cookie value, session), or
+) -> Joined | AlreadyJoined | None:
+    """Enrol a new student by the course's join code and sign them in, or say who is there already;
     None for an unknown code. Each join is a new student of the course (their own identity)."""
     if not code or len(code) > 32:
         return None
     course = courses.course_by_join_code(code)
     if course is None:
         return None
+    for enrolment in courses.roster(course.id):
+        if email and enrolment.email.casefold() == email.casefold():
+            return AlreadyJoined("email")
+        if _same_name(enrolment.name, name):
+            return AlreadyJoined("name")
     student = roster_identity(course.id, "join-" + secrets.token_hex(6))
     courses.enrol(course.id, student, name, email)
     session = CourseSession(course.id, student, name, secrets.token_urlsafe(32), now + SESSION_LIFETIME)
     cookie = secrets.token_urlsafe(32)
     courses.save_session(token_hash(cookie), session, now)
-    return cookie, session
+    return Joined(cookie, session, issue_return_link(courses, course.id, student, now))

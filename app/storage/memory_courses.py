@@ -45,7 +45,7 @@ class MemoryCourseStore:
         self._courses: dict[int, CourseRecord] = {}
         self._staff: dict[tuple[int, str], StaffRecord] = {}
         self._enrolments: dict[tuple[int, str], EnrolmentRecord] = {}
-        self._tokens: dict[str, tuple[int, str, datetime, datetime | None]] = {}
+        self._tokens: dict[str, tuple[int, str, datetime, datetime | None, bool]] = {}  # + reusable
         self._sessions: dict[str, CourseSession] = {}
         self._assignments: dict[int, AssignmentRecord] = {}
         self._extensions: dict[tuple[int, str], datetime] = {}
@@ -173,24 +173,27 @@ class MemoryCourseStore:
         with self._lock:
             return self._enrolments.get((course_id, student))
 
-    def issue_sign_in(self, course_id: int, student: str, token_hash: str, expires_at: datetime) -> None:
+    def issue_sign_in(
+        self, course_id: int, student: str, token_hash: str, expires_at: datetime, *, reusable: bool = False
+    ) -> None:
         with self._lock:
             if (course_id, student) not in self._enrolments:
                 raise NotFound(f"{student!r} is not enrolled in course {course_id}")
-            for key, (c, s, _, used) in list(self._tokens.items()):
+            for key, (c, s, _, used, _) in list(self._tokens.items()):
                 if (c, s) == (course_id, student) and used is None:
                     del self._tokens[key]
-            self._tokens[token_hash] = (course_id, student, expires_at, None)
+            self._tokens[token_hash] = (course_id, student, expires_at, None, reusable)
 
     def redeem_sign_in(self, token_hash: str, now: datetime) -> tuple[int, str] | None:
         with self._lock:
             found = self._tokens.get(token_hash)
             if found is None:
                 return None
-            course_id, student, expires_at, used = found
+            course_id, student, expires_at, used, reusable = found
             if used is not None or expires_at <= now:
                 return None
-            self._tokens[token_hash] = (course_id, student, expires_at, now)
+            if not reusable:
+                self._tokens[token_hash] = (course_id, student, expires_at, now, reusable)
             return course_id, student
 
     def save_session(self, id_hash: str, session: CourseSession, now: datetime) -> None:

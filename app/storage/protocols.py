@@ -396,13 +396,17 @@ class CourseStore(Protocol):
 
     def enrolment(self, course_id: int, student: str) -> EnrolmentRecord | None: ...
 
-    def issue_sign_in(self, course_id: int, student: str, token_hash: str, expires_at: datetime) -> None:
-        """A new personal link for an enrolled student; their older unused links stop working.
-        Raises NotFound when the student is not enrolled."""
+    def issue_sign_in(
+        self, course_id: int, student: str, token_hash: str, expires_at: datetime, *, reusable: bool = False
+    ) -> None:
+        """A new personal link for an enrolled student (`reusable`: their link to come back, never
+        spent); their older links that still work stop working. Raises NotFound when the student is
+        not enrolled."""
         ...
 
     def redeem_sign_in(self, token_hash: str, now: datetime) -> tuple[int, str] | None:
-        """(course id, student) of a live, unused link, spent now: of concurrent redeemers one wins."""
+        """(course id, student) of a live link: a single-use one is spent now (of concurrent redeemers
+        one wins), a reusable one stays live."""
         ...
 
     def save_session(self, id_hash: str, session: CourseSession, now: datetime) -> None:

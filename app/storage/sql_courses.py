@@ -263,7 +263,9 @@ class SqlCourseStore:
             row = session.get(Enrolment, (course_id, student))
             return None if row is None else _enrolment(row)
 
-    def issue_sign_in(self, course_id: int, student: str, token_hash: str, expires_at: datetime) -> None:
+    def issue_sign_in(
+        self, course_id: int, student: str, token_hash: str, expires_at: datetime, *, reusable: bool = False
+    ) -> None:
         with self._database.session() as session:
             if session.get(Enrolment, (course_id, student)) is None:
                 raise NotFound(f"{student!r} is not enrolled in course {course_id}")
@@ -276,7 +278,11 @@ class SqlCourseStore:
             )
             session.add(
                 SignInToken(
-                    token_hash=token_hash, course_id=course_id, student=student, expires_at=expires_at
+                    token_hash=token_hash,
+                    course_id=course_id,
+                    student=student,
+                    expires_at=expires_at,
+                    reusable=reusable,
                 )
             )
 
@@ -289,14 +295,17 @@ class SqlCourseStore:
                     SignInToken.token_hash == token_hash,
                     SignInToken.used_at.is_(None),
                     SignInToken.expires_at > now,
+                    SignInToken.reusable.is_(False),
                 )
                 .values(used_at=now)
             )
-            if getattr(spent, "rowcount", 0) != 1:
-                return None
             row = session.get(SignInToken, token_hash)
-            assert row is not None
-            return row.course_id, row.student
+            if getattr(spent, "rowcount", 0) == 1 or (
+                row is not None and row.reusable and row.used_at is None and row.expires_at > now
+            ):
+                assert row is not None
+                return row.course_id, row.student
+            return None
 
     def save_session(self, id_hash: str, session_record: CourseSession, now: datetime) -> None:
         with self._database.session() as session:

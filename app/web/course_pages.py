@@ -2,7 +2,9 @@
 
     GET  /s/{token}       "Sign in to <course>" (a button: mail scanners that fetch links spend nothing)
     POST /s/{token}       spends the link, sets the course session cookie, goes to /courses
-    GET|POST /join/{code} a course's join code: name and email, then signed in as its new student
+    GET|POST /join/{code} a course's join code: name and email, then signed in as its new student,
+                          shown their link to come back
+    POST /courses/return-link   a signed-in student's new link to come back (the old one stops working)
     GET  /courses         my courses, each with its assignments: due date, status and score
     GET  /courses/{c}/assignments/{a}   the assignment: its problems, due date, late policy, score
 
@@ -12,6 +14,7 @@ API read it as they read an LMS launch's, so no student page asks for a key.
 
 from __future__ import annotations
 
+import hmac
 from dataclasses import dataclass
 from datetime import datetime
 from typing import Any
@@ -100,13 +103,28 @@ def _course_cookie(response: Response, request: Request, cookie: str) -> None:
     )
 
 
+def _enrolled_in(request: Request, context: LtiContext, course: CourseRecord) -> str | None:
+    """The name of the student this browser is signed in as, when they are in `course` already."""
+    who = _student(request)
+    if who is None:
+        return None
+    enrolment = context.stores.courses.enrolment(course.id, who.student)
+    return None if enrolment is None else enrolment.name or "you"
+
+
 @router.get("/join/{code}")
 async def join_page(code: str, request: Request, context: LtiContextDep) -> HTMLResponse:
-    course = await run_in_threadpool(context.stores.courses.course_by_join_code, code[:32])
+    def load() -> tuple[CourseRecord | None, str | None]:
+        course = context.stores.courses.course_by_join_code(code[:32])
+        return course, None if course is None else _enrolled_in(request, context, course)
+
+    course, member = await run_in_threadpool(load)
     if course is None:
         return page(request, "courses/join.html", {"title": "Join a course", "unknown": True}, status=404)
     return page(
-        request, "courses/join.html", {"title": f"Join {course.title}", "course": course, "code": code}
+        request,
+        "courses/join.html",
+        {"title": f"Join {course.title}", "course": course, "code": code, "member": member},
     )
 
 
@@ -117,18 +135,80 @@ async def join(code: str, request: Request, context: LtiContextDep) -> Response:
     form = await request.form(max_files=0, max_fields=10)
     name = str(form.get("name") or "").strip()[:200]
     email = str(form.get("email") or "").strip()[:254]
+    course = await run_in_threadpool(context.stores.courses.course_by_join_code, code[:32])
+    if course is None:
+        return page(request, "courses/join.html", {"title": "Join a course", "unknown": True}, status=404)
+    if await run_in_threadpool(_enrolled_in, request, context, course) is not None:
+        return RedirectResponse("/courses", status_code=303)  # a second join would split their work
+    values: dict[str, Any] = {
+        "title": f"Join {course.title}",
+        "course": course,
+        "code": code,
+        "name": name,
+        "email": email,
+    }
     if not name:
-        course = await run_in_threadpool(context.stores.courses.course_by_join_code, code[:32])
-        values = {"title": "Join a course", "course": course, "code": code, "error": "Give your name."}
-        return page(request, "courses/join.html", values, status=422)
-    opened = await run_in_threadpool(
+        return page(request, "courses/join.html", {**values, "error": "Give your name."}, status=422)
+    joined = await run_in_threadpool(
         course_sessions.join, context.stores.courses, code, name, email, context.clock()
     )
-    if opened is None:
+    if joined is None:
         return page(request, "courses/join.html", {"title": "Join a course", "unknown": True}, status=404)
-    response = RedirectResponse("/courses", status_code=303)
-    _course_cookie(response, request, opened[0])
+    if isinstance(joined, course_sessions.AlreadyJoined):
+        return page(request, "courses/join.html", {**values, "taken": joined.matched}, status=409)
+    response = _return_link_page(request, course, joined.session.name, joined.return_token, joined=True)
+    _course_cookie(response, request, joined.cookie)
     return response
+
+
+def _return_link_page(
+    request: Request, course: CourseRecord, name: str, token: str, *, joined: bool
+) -> HTMLResponse:
+    """The link to come back, shown once (only its hash is kept)."""
+    url = str(request.base_url).rstrip("/") + course_sessions.SIGN_IN_PATH + token
+    title = f"Welcome to {course.title}" if joined else "Your link to come back"
+    return page(
+        request,
+        "courses/return_link.html",
+        {"title": title, "course": course, "name": name, "url": url, "joined": joined},
+    )
+
+
+@router.post("/courses/return-link")
+async def new_return_link(request: Request, context: LtiContextDep) -> Response:
+    """A signed-in student's new link to come back; their earlier links stop working."""
+    if _cross_site(request):
+        return _refused_cross_site(request)
+    form = await request.form(max_files=0, max_fields=10)
+    sent = str(form.get("csrf") or "")
+    now = context.clock()
+
+    def issue() -> tuple[CourseRecord, str, str] | int:
+        found = current_session(request)
+        if found is None or found[1].student is None:
+            return 401
+        student = found[1].student
+        courses = context.stores.courses.courses_enrolled(student)
+        if (
+            found[1].platform_id != course_sessions.COURSE_PLATFORM  # an LMS signs them in
+            or not courses  # an instructor's "view as a student"
+            or not hmac.compare_digest(sent.encode(), found[1].csrf_token.encode())
+        ):
+            return 403
+        course = courses[0]  # a joined or rostered student's identity belongs to one course
+        enrolment = context.stores.courses.enrolment(course.id, student)
+        name = enrolment.name if enrolment is not None else ""
+        return (
+            course,
+            name,
+            course_sessions.issue_return_link(context.stores.courses, course.id, student, now),
+        )
+
+    issued = await run_in_threadpool(issue)
+    if isinstance(issued, int):
+        values = {"title": "Your courses", "stale": issued == 403}
+        return page(request, "courses/signed_out.html", values, status=issued)
+    return _return_link_page(request, issued[0], issued[1], issued[2], joined=False)
 
 
 @dataclass(frozen=True)
@@ -157,14 +237,25 @@ def _rows(services: Services, course: CourseRecord, student: str, now: datetime)
     return rows
 
 
-def _student(request: Request) -> tuple[str, str] | None:
-    """(student identity, csrf token) of the signed-in student, or None."""
+@dataclass(frozen=True)
+class SignedIn:
+    student: str  # the identity their work is filed under
+    csrf_token: str
+    by_link: bool  # signed in by a link or a join code (not by an LMS): they may make a link to come back
+
+
+def _student(request: Request) -> SignedIn | None:
+    """The signed-in student, or None."""
     found = current_session(request)
     if found is None:
         return None
     _, record = found
     principal = record.principal(found[0])
-    return (principal.student, record.csrf_token) if principal.student is not None else None
+    if principal.student is None:
+        return None
+    return SignedIn(
+        principal.student, record.csrf_token, record.platform_id == course_sessions.COURSE_PLATFORM
+    )
 
 
 @router.get("/courses")
@@ -176,8 +267,8 @@ async def my_courses(request: Request, context: LtiContextDep) -> HTMLResponse:
         who = _student(request)
         if who is None:
             return None
-        courses = services.stores.courses.courses_enrolled(who[0])
-        return {"courses": [(c, _rows(services, c, who[0], now)) for c in courses], "student": who[0]}
+        courses = services.stores.courses.courses_enrolled(who.student)
+        return {"courses": [(c, _rows(services, c, who.student, now)) for c in courses], "who": who}
 
     values = await run_in_threadpool(load)
     frames = await _frames(context)
@@ -199,7 +290,7 @@ async def assignment_page(
         who = _student(request)
         if who is None:
             return "signed out"
-        student = who[0]
+        student = who.student
         if services.stores.courses.enrolment(course_id, student) is None:
             return None
         try:

@@ -179,6 +179,18 @@ def test_a_new_link_replaces_the_unused_one_and_an_expired_link_fails(stores: St
     assert stores.courses.redeem_sign_in("new", NOW) == (course.id, student)
 
 
+def test_a_link_to_come_back_signs_in_each_time_until_a_new_link_replaces_it(stores: Stores):
+    course = stores.courses.create_course("A", owner="key:1")
+    stores.courses.import_roster(course.id, ROSTER)
+    student = roster_identity(course.id, "s001")
+    stores.courses.issue_sign_in(course.id, student, "back", NOW + timedelta(days=7), reusable=True)
+    for _ in range(3):
+        assert stores.courses.redeem_sign_in("back", NOW) == (course.id, student)
+    assert stores.courses.redeem_sign_in("back", NOW + timedelta(days=8)) is None
+    stores.courses.issue_sign_in(course.id, student, "mailed", NOW + timedelta(days=7))
+    assert stores.courses.redeem_sign_in("back", NOW) is None
+
+
 def test_links_are_issued_only_to_enrolled_students(stores: Stores):
     course = stores.courses.create_course("A", owner="key:1")
     with pytest.raises(NotFound):

@@ -1,0 +1,133 @@
+"""A student who joins a course by its code gets a link to come back from any device; joining again
+under a name or email already in the course adds nobody and says how to get back in; nobody signs in
+as another student by typing their name."""
+
+from __future__ import annotations
+
+import re
+
+import pytest
+from fastapi.testclient import TestClient
+
+from tests.api.conftest import key_headers
+from tests.api.test_courses import RIGHT, WRONG, _assignment, _course, _roster
+
+RETURN_LINK = re.compile(r'<code class="sign-in-link" id="return-link">http://testserver(/s/[^<]+)</code>')
+
+
+@pytest.fixture
+def teacher(client):
+    return key_headers(client, "instructor", "Prof A")
+
+
+def _join_code(client: TestClient, teacher: dict[str, str]) -> str:
+    course = _course(client, teacher)
+    _assignment(client, teacher, course, problems=["skier-friction"])
+    return str(client.post(f"/v1/courses/{course}/join-code", json={}, headers=teacher).json()["join_code"])
+
+
+def _join(client: TestClient, code: str, **form: str) -> tuple[TestClient, str]:
+    """A new browser joining: the browser and the link to come back it was shown."""
+    browser = TestClient(client.app, follow_redirects=False)
+    joined = browser.post(f"/join/{code}", data=form)
+    assert joined.status_code == 200, joined.text
+    found = RETURN_LINK.search(joined.text)
+    assert found, "the page after joining shows no link to come back"
+    return browser, found.group(1)
+
+
+def _device(client: TestClient, link: str) -> tuple[TestClient, dict[str, str]]:
+    """Another device opening the link: its browser (signed in) and the CSRF header its pages carry."""
+    browser = TestClient(client.app, follow_redirects=False)
+    signed = browser.post(link)
+    assert signed.status_code == 303 and signed.headers["location"] == "/courses", signed.text
+    token = re.search(r'name="csrf-token" content="([^"]+)"', browser.get("/p/skier-friction").text)
+    assert token
+    return browser, {"X-CSRF-Token": token.group(1)}
+
+
+def _answer(browser: TestClient, csrf: dict[str, str], answer: str) -> None:
+    problem, part, _ = RIGHT
+    filed = browser.post(
+        f"/v1/problems/{problem}/parts/{part}/submissions", json={"answer": answer}, headers=csrf
+    )
+    assert filed.status_code == 201, filed.text
+
+
+def test_the_link_shown_on_joining_signs_the_student_in_on_other_devices_each_time_with_their_work(
+    client, teacher
+):
+    code = _join_code(client, teacher)
+    _, link = _join(client, code, name="Lise Meitner", email="lise@uni.example")
+    phone, phone_csrf = _device(client, link)
+    laptop, laptop_csrf = _device(client, link)  # the same link again: not spent
+    _answer(phone, phone_csrf, WRONG)
+    _answer(laptop, laptop_csrf, RIGHT[2])
+    students = {item["student"] for item in client.get("/v1/submissions", headers=teacher).json()["items"]}
+    assert len(students) == 1  # one student, whichever device answered
+
+
+def test_a_new_link_to_come_back_replaces_the_old_one(client, teacher):
+    code = _join_code(client, teacher)
+    browser, old = _join(client, code, name="Lise Meitner")
+    page = browser.get("/courses").text
+    csrf = re.search(r'name="csrf" value="([^"]+)"', page)
+    assert csrf and "Make a new link to come back" in page
+    made = browser.post("/courses/return-link", data={"csrf": csrf.group(1)})
+    new = RETURN_LINK.search(made.text)
+    assert made.status_code == 200 and new
+    assert TestClient(client.app).post(old, follow_redirects=False).status_code == 400
+    _device(client, new.group(1))
+
+
+def test_a_new_link_to_come_back_needs_the_pages_csrf_token(client, teacher):
+    code = _join_code(client, teacher)
+    browser, old = _join(client, code, name="Lise Meitner")
+    refused = browser.post("/courses/return-link", data={"csrf": "forged"})
+    assert refused.status_code == 403 and not RETURN_LINK.search(refused.text)
+    _device(client, old)  # the saved link still works
+
+
+@pytest.mark.parametrize(
+    ("first", "again", "matched"),
+    [
+        ({"name": "Lise Meitner", "email": ""}, {"name": "  lise   MEITNER ", "email": ""}, "name"),
+        (
+            {"name": "Lise Meitner", "email": "lise@uni.example"},
+            {"name": "L. M.", "email": "LISE@uni.example"},
+            "email",
+        ),
+        (
+            {"name": "Ada Lovelace", "email": ""},
+            {"name": "Ada Lovelace", "email": ""},
+            "name",
+        ),  # on the roster
+    ],
+)
+def test_joining_under_a_name_or_email_in_the_course_adds_nobody_and_says_how_to_get_back_in(
+    client, teacher, first, again, matched
+):
+    code = _join_code(client, teacher)
+    course = client.get("/v1/courses", headers=teacher).json()[0]["id"]
+    _roster(client, teacher, course)  # Ada Lovelace, Alan Turing, Emmy Noether
+    if first["name"] != "Ada Lovelace":
+        _join(client, code, **first)
+    before = client.get(f"/v1/courses/{course}/roster", headers=teacher).json()
+    stranger = TestClient(client.app, follow_redirects=False)
+    refused = stranger.post(f"/join/{code}", data=again)
+    assert refused.status_code == 409
+    assert f"with this {matched} already" in refused.text and "link to come back" in refused.text
+    assert "physcheck_course" not in refused.headers.get("set-cookie", "")  # nobody's session
+    assert client.get(f"/v1/courses/{course}/roster", headers=teacher).json() == before
+
+
+def test_a_student_signed_in_to_the_course_who_opens_its_join_link_again_is_not_joined_twice(client, teacher):
+    code = _join_code(client, teacher)
+    browser, _ = _join(client, code, name="Lise Meitner")
+    assert "You are in Mechanics already, as Lise Meitner" in browser.get(f"/join/{code}").text
+    again = browser.post(f"/join/{code}", data={"name": "Lise M."})
+    assert again.status_code == 303 and again.headers["location"] == "/courses"
+    course = client.get("/v1/courses", headers=teacher).json()[0]["id"]
+    assert [s["name"] for s in client.get(f"/v1/courses/{course}/roster", headers=teacher).json()] == [
+        "Lise Meitner"
+    ]
