@@ -18,7 +18,7 @@ from typing import Any
 
 from app.auth import Principal
 from app.courses.policy import accepting, due_for
-from app.courses.records import AssignmentRecord, CourseNotFound, CourseRecord, StaffRole
+from app.courses.records import AssignmentRecord, CourseNotFound, CourseRecord, EnrolmentRecord, StaffRole
 from app.db.records import ProblemRecord
 from app.storage import Stores
 
@@ -87,14 +87,13 @@ def may_reach_student(stores: Stores, principal: Principal, student: str) -> boo
     return any(course.id in taught for course in courses)
 
 
-def student_names(stores: Stores, principal: Principal) -> dict[str, str]:
-    """The names of the students of the courses the caller teaches, by the identity their work is
-    filed under (`course:3:join-…` means nothing to the instructor reading it)."""
+def students_taught(stores: Stores, principal: Principal) -> dict[str, EnrolmentRecord]:
+    """The students of the courses the caller teaches, by the identity their work is filed under
+    (`course:3:join-…` means nothing to the instructor reading it: their name and email do)."""
     return {
-        enrolment.student: enrolment.name
+        enrolment.student: enrolment
         for course, _ in taught_courses(stores, principal)
         for enrolment in stores.courses.roster(course.id)
-        if enrolment.name
     }
 
 

@@ -161,7 +161,7 @@ def to_csv(book: Gradebook) -> str:
                 notes.append(f"{assignment.title}: extended to {cell.due:%Y-%m-%d %H:%M} UTC")
         total, _ = book.total(enrolment.student)
         writer.writerow(
-            [enrolment.roster_id or enrolment.student, enrolment.name, enrolment.email]
+            [enrolment.shown_id, enrolment.name, enrolment.email]
             + [c.score for c in cells]
             + [total, "; ".join(notes)]
         )

@@ -73,6 +73,17 @@ class EnrolmentRecord:
     email: str
     created_at: datetime
 
+    @property
+    def shown_id(self) -> str:
+        """The id instructors and LMS gradebook imports read: the institution's, else the course's own
+        (`join-3f2a…` for a student who joined by code: stable, unlike a name), else the LMS identity."""
+        return self.roster_id or self.student.removeprefix(roster_identity(self.course_id, ""))
+
+    @property
+    def detail(self) -> str:
+        """What tells two students of the same name apart: the email, else the id."""
+        return self.email or self.shown_id
+
 
 @dataclass(frozen=True)
 class RosterImport:

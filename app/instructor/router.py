@@ -32,6 +32,7 @@ from starlette.concurrency import run_in_threadpool
 from starlette.datastructures import UploadFile
 
 from app.courses import access
+from app.courses.records import EnrolmentRecord
 from app.db import class_results as results_repository
 from app.db.errors import ProblemExists
 from app.db.errors import ProblemNotFound as StoredProblemNotFound
@@ -567,7 +568,7 @@ async def problem(
     student = (student or "").strip() or None
     if student is not None and student != who.principal.own_identity:
         _need_key(who)
-    whose, whose_name = await run_in_threadpool(_whose, services, who, student)
+    whose, whose_name, whose_detail = await run_in_threadpool(_whose, services, who, student)
 
     def load() -> dict[str, Any]:
         catalog = services.catalog
@@ -602,6 +603,7 @@ async def problem(
             "student": student,
             "whose": whose,
             "whose_name": whose_name,
+            "whose_detail": whose_detail,
             "own": own,
             "saved": saved,
         },
@@ -628,7 +630,7 @@ async def solution(
     student = (student or "").strip() or None
     if student is not None and student != who.principal.own_identity:
         _need_key(who)
-    whose, whose_name = await run_in_threadpool(_whose, services, who, student)
+    whose, whose_name, whose_detail = await run_in_threadpool(_whose, services, who, student)
 
     def load() -> dict[str, Any]:
         catalog = services.catalog
@@ -661,6 +663,7 @@ async def solution(
             "title": f"Worked solution: {context['doc'].title}",
             "whose": whose,
             "whose_name": whose_name,
+            "whose_detail": whose_detail,
         },
     )
 
@@ -789,29 +792,38 @@ def _filters(problem: str | None, student: str | None) -> tuple[str | None, str 
     return (problem or "").strip() or None, (student or "").strip() or None
 
 
-def _whose(services: Services, who: auth.Visitor, student: str | None) -> tuple[str, str]:
-    """The identity whose variant a page shows, and how to name it: the visitor's own preview, or the
-    student typed (by identity, or by a name on the rosters of the visitor's courses)."""
+def _whose(services: Services, who: auth.Visitor, student: str | None) -> tuple[str, str, str]:
+    """The identity whose variant a page shows, its name and what tells it apart (an email or an id):
+    the visitor's own preview, or the student typed (by identity, or by a name, email or id on the
+    rosters of the visitor's courses)."""
     if student is None:
-        return who.principal.own_identity, who.principal.own_identity
-    names = access.student_names(services.stores, who.principal)
-    whose = _named_student(student, names)
-    return whose, names.get(whose, whose)
+        return who.principal.own_identity, who.principal.own_identity, ""
+    students = access.students_taught(services.stores, who.principal)
+    whose = _named_student(student, students)
+    enrolment = students.get(whose)
+    if enrolment is None:
+        return whose, whose, ""
+    return whose, enrolment.name or enrolment.shown_id, enrolment.detail
 
 
-def _named_student(typed: str, names: Mapping[str, str]) -> str:
-    """The identity the Student filter means: as typed when it is one (or no student's name), else the
-    one student of the instructor's courses with that name, in any case (an instructor knows Ada, not
-    `course:3:join-9f1c…`); a name two students share is refused, naming their identities."""
-    if typed in names:
+def _named_student(typed: str, students: Mapping[str, EnrolmentRecord]) -> str:
+    """The identity the Student filter means: as typed when it is one (or nobody's), else the one
+    student of the instructor's courses with that name (in any case), email or id (an instructor
+    knows Ada, not `course:3:join-9f1c…`); a name two students share is refused, naming them apart."""
+    if typed in students:
         return typed
-    matching = sorted(identity for identity, name in names.items() if name.casefold() == typed.casefold())
+    wanted = typed.casefold()
+    matching = sorted(
+        identity
+        for identity, e in students.items()
+        if wanted in (e.name.casefold(), e.email.casefold(), e.shown_id.casefold())
+    )
     if len(matching) > 1:
         raise PageError(
             422,
             "Which student?",
-            f"{len(matching)} students are named {typed!r}: filter by one's identity, "
-            + ", ".join(matching)
+            f"{len(matching)} students are named {typed!r}: filter by one's email or id instead: "
+            + ", ".join(f"{students[i].name} ({students[i].detail})" for i in matching)
             + ".",
         )
     return matching[0] if matching else typed
@@ -829,10 +841,10 @@ async def submissions(
     _need_key(who)
     problem, student = _filters(problem, student)
 
-    def load() -> tuple[Any, list[str], dict[str, str], str | None]:
+    def load() -> tuple[Any, list[str], dict[str, EnrolmentRecord], str | None]:
         reach = _reachable(services, who)
-        names = access.student_names(services.stores, who.principal)
-        wanted = student if student is None else _named_student(student, names)
+        students = access.students_taught(services.stores, who.principal)
+        wanted = student if student is None else _named_student(student, students)
         if wanted is not None and not reach(wanted):
             raise PageError(404, "No such student", f"There is no student {student!r} in your courses.")
         found = services.stores.submissions.page(
@@ -840,10 +852,10 @@ async def submissions(
         )
         # Students of courses the visitor does not teach are left out (a page may come back shorter).
         found = replace(found, items=[item for item in found.items if reach(item.student)])
-        return found, [record.id for record in services.catalog.list()], names, wanted
+        return found, [record.id for record in services.catalog.list()], students, wanted
 
     try:
-        found, problem_ids, names, wanted = await run_in_threadpool(load)
+        found, problem_ids, students, wanted = await run_in_threadpool(load)
     except AppError as error:  # pragma: no cover - defensive; storage errors are below
         raise PageError(error.status, "Cannot list submissions", error.message) from None
     except ValueError:
@@ -861,9 +873,8 @@ async def submissions(
             "csv": "/instructor/submissions.csv" + ("?" + urlencode(query) if query else ""),
             "problem": problem,
             "student": student,
-            "student_name": names.get(wanted or ""),
-            "wanted": wanted,
-            "names": names,
+            "wanted": students.get(wanted or ""),
+            "students": students,
             "problem_ids": problem_ids,
             "preview_prefix": results_repository.PREVIEW_PREFIX,
         },

@@ -3,6 +3,8 @@ assignment, read the gradebook; and another instructor sees none of it."""
 
 from __future__ import annotations
 
+import csv
+import io
 import re
 
 import pytest
@@ -242,7 +244,7 @@ def test_the_submissions_page_and_csv_show_only_the_visitors_students(signed_in:
     stores.courses.import_roster(course, [RosterRow("s1", "Ada", "")])
     _answered_yo_yo(stores, f"course:{course}:s1", "keyed-student")
     own = signed_in.get("/instructor/submissions")
-    assert f"course:{course}:s1" in own.text and "keyed-student" in own.text
+    assert f"student=course%3A{course}%3As1" in own.text and "keyed-student" in own.text  # her answers' link
     other = TestClient(signed_in.app, follow_redirects=False)
     sign_in(other, new_key(stores, "instructor", "Prof B"))
     listed = other.get("/instructor/submissions")
@@ -265,30 +267,24 @@ def test_the_submissions_page_names_a_courses_students_and_finds_them_by_name(
     )
     _answered_yo_yo(stores, f"course:{course}:s1", f"course:{course}:s2")
     listed = signed_in.get("/instructor/submissions")
-    assert ">Ada Lovelace</a>" in listed.text and f"course:{course}:s1" in listed.text  # name, then identity
+    assert '>Ada Lovelace</a><br><span class="muted identity">s1</span>' in listed.text  # name, then id
     found = signed_in.get("/instructor/submissions", params={"student": "ada lovelace"})
     assert (
         found.status_code == 200 and "Ada Lovelace" in found.text and f"course:{course}:s2" not in found.text
     )
     assert f'/instructor/submissions.csv?student=course%3A{course}%3As1"' in found.text  # the CSV: hers too
     shared = signed_in.get("/instructor/submissions", params={"student": "Alan"})
-    assert (
-        shared.status_code == 422
-        and f"course:{course}:s2" in shared.text
-        and f"course:{course}:s3" in shared.text
-    )
+    assert shared.status_code == 422 and "Alan (s2), Alan (s3)" in shared.text
+    assert ", student Alan (s3)." in signed_in.get("/instructor/submissions", params={"student": "s3"}).text
     book = signed_in.get(f"/instructor/courses/{course}/gradebook", params={"student": f"course:{course}:s1"})
     assert f'href="/instructor/submissions?student=course%3A{course}%3As1"' in book.text  # her answers
     # her variant, by name, as her problem page shows it to her
     variant = signed_in.get("/instructor/problems/yo-yo", params={"student": "Ada Lovelace"})
-    assert (
-        f'Showing the variant of <strong>Ada Lovelace</strong> <span class="muted">(course:{course}:s1)'
-        in (variant.text)
-    )
+    assert 'Showing the variant of <strong>Ada Lovelace</strong> <span class="muted">(s1)' in (variant.text)
     by_identity = signed_in.get("/instructor/problems/yo-yo", params={"student": f"course:{course}:s1"})
     assert _given_values(variant.text) and _given_values(variant.text) == _given_values(by_identity.text)
     hand_out = signed_in.get("/instructor/problems/yo-yo/solution", params={"student": "ada lovelace"})
-    assert f"<strong>Ada Lovelace</strong> (course:{course}:s1)" in hand_out.text
+    assert "<strong>Ada Lovelace</strong> (s1)" in hand_out.text
     other = TestClient(signed_in.app, follow_redirects=False)
     sign_in(other, new_key(stores, "instructor", "Prof B"))
     elsewhere = other.get("/instructor/submissions", params={"student": "Ada Lovelace"})
@@ -367,3 +363,39 @@ def test_a_refused_assignment_keeps_what_was_typed_and_a_new_one_opens_now(
         '<option value="never" selected',
     ):
         assert kept in refused.text, kept
+
+
+def _visible_text(html: str) -> str:
+    """What a reader sees: the text between tags (a form's hidden student value is not read)."""
+    return re.sub(r"<[^>]+>", " ", html)
+
+
+def test_a_joined_student_is_shown_by_name_email_and_a_readable_id_never_by_their_filing_identity(
+    signed_in: TestClient, stores: Stores
+):
+    from app.courses import sessions as course_sessions
+    from app.db.types import utc_now
+
+    course = _make_course(signed_in)
+    stores.courses.set_join_code(course, "JOINCODE")
+    joined = course_sessions.join(stores.courses, "JOINCODE", "Lise Meitner", "lise@uni.example", utc_now())
+    assert isinstance(joined, course_sessions.Joined)
+    student = joined.session.student
+    _answered_yo_yo(stores, student)
+    for path, params in [
+        (f"/instructor/courses/{course}", {}),
+        (f"/instructor/courses/{course}/gradebook", {"student": student}),
+        ("/instructor/submissions", {}),
+        ("/instructor/submissions", {"student": "lise@uni.example"}),
+        ("/instructor/problems/yo-yo", {"student": "Lise Meitner"}),
+    ]:
+        shown = _visible_text(signed_in.get(path, params=params).text)
+        assert "Lise Meitner" in shown and "lise@uni.example" in shown, path
+        assert f"course:{course}:" not in shown, path
+    exports = [
+        list(csv.DictReader(io.StringIO(signed_in.get(f"/instructor/courses/{course}/gradebook.csv").text)))
+        for _ in range(2)
+    ]
+    ids = [rows[0]["Student ID"] for rows in exports]
+    assert re.fullmatch(r"join-[0-9a-f]{12}", ids[0]) and ids[0] == ids[1]  # readable, and the same each time
+    assert exports[0][0]["Name"] == "Lise Meitner" and exports[0][0]["Email"] == "lise@uni.example"
