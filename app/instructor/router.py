@@ -194,10 +194,14 @@ def _reachable(services: Services, who: auth.Visitor) -> Callable[[str], bool]:
     return reach
 
 
+# Where an instructor's work is: their courses (a first-run guide when there are none), not the bank.
+HOME = "/instructor/courses"
+
+
 def _safe_next(target: str | None) -> str:
     if target and target.startswith("/instructor") and "//" not in target and "\\" not in target:
         return target
-    return "/instructor/problems"
+    return HOME
 
 
 def _secure(services: Services) -> bool:
@@ -209,7 +213,7 @@ def _secure(services: Services) -> bool:
 
 @router.get("")
 async def home() -> Response:
-    return RedirectResponse("/instructor/problems", status_code=303)
+    return RedirectResponse(HOME, status_code=303)
 
 
 def _sign_in_form(

@@ -97,6 +97,19 @@ def test_instructor_key_signs_in_with_a_signed_httponly_strict_cookie(
     assert client.get("/instructor/problems").status_code == 200
 
 
+def test_a_new_instructor_lands_on_their_courses_with_a_guide_to_begin(
+    client: TestClient, instructor_key: str
+):
+    form = client.get("/instructor/sign-in")  # as typed: no page asked for first
+    response = client.post("/instructor/sign-in", data={"key": instructor_key, "csrf": csrf_of(form.text)})
+    assert response.status_code == 303 and response.headers["location"] == "/instructor/courses"
+    assert client.get("/instructor").headers["location"] == "/instructor/courses"
+    first = client.get("/instructor/courses").text
+    assert "Start here" in first and "Create the course" in first and "Add an assignment" in first
+    client.post("/instructor/courses", data={"csrf": csrf_of(first), "title": "Mechanics", "timezone": "UTC"})
+    assert "Start here" not in client.get("/instructor/courses").text  # once there is a course, its card
+
+
 @pytest.mark.parametrize(
     ("role", "status", "message"),
     [("student", 403, "This is a student key"), (None, 401, "unknown or revoked")],
