@@ -72,6 +72,14 @@ def _assignment(
     return _course(services, who, record.course_id, instructor=True), record
 
 
+def _known_zone(name: str) -> bool:
+    try:
+        ZoneInfo(name)
+    except (ValueError, KeyError):
+        return False
+    return bool(name)
+
+
 def _parse_local(text: str, timezone: str) -> datetime | None:
     try:
         return datetime.strptime(text.strip(), LOCAL).replace(tzinfo=ZoneInfo(timezone))
@@ -93,13 +101,23 @@ async def create_course(request: Request, services: ServicesDep, who: Visitor) -
     await auth.require_csrf(request, services, who)
     form = await request.form()
     title = str(form.get("title") or "").strip()[:200]
-    timezone = str(form.get("timezone") or "UTC").strip()
-    try:
-        ZoneInfo(timezone)
-    except (ValueError, KeyError):
-        timezone = "UTC"
-    if not title:
-        raise PageError(422, "A course needs a title", "Give the course a title.")
+    timezone = str(form.get("timezone") or "UTC").strip()[:64]
+    errors = [] if title else ["Give the course a title."]
+    if not _known_zone(timezone):
+        # it had become UTC without a word, and every date of the course was then shown in UTC
+        errors.append(
+            f"“{timezone}” is not a time zone name: write it as Region/City, such as Europe/Paris or "
+            "America/New_York (or UTC)."
+        )
+    if errors:
+        rows = await run_in_threadpool(access.taught_courses, services.stores, who.principal)
+        values = {
+            "title": "Courses",
+            "rows": rows,
+            "errors": errors,
+            "typed": {"title": title, "timezone": timezone},
+        }
+        return await _page(request, services, who, "instructor/courses.html", values, status=422)
     member = who.principal.member
     if member is None:
         raise PageError(403, "Not an instructor", "This session cannot teach a course.")

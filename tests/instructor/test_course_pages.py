@@ -399,3 +399,26 @@ def test_a_joined_student_is_shown_by_name_email_and_a_readable_id_never_by_thei
     ids = [rows[0]["Student ID"] for rows in exports]
     assert re.fullmatch(r"join-[0-9a-f]{12}", ids[0]) and ids[0] == ids[1]  # readable, and the same each time
     assert exports[0][0]["Name"] == "Lise Meitner" and exports[0][0]["Email"] == "lise@uni.example"
+
+
+@pytest.mark.parametrize(
+    ("title", "timezone", "said"),
+    [
+        ("Mechanics", "Paris", "“Paris” is not a time zone name"),
+        ("Mechanics", "Europe/Pariss", "“Europe/Pariss” is not a time zone name"),
+        ("", "Europe/Paris", "Give the course a title."),
+    ],
+)
+def test_a_course_with_an_unknown_time_zone_or_no_title_is_refused_saying_why_keeping_what_was_typed(
+    signed_in: TestClient, stores: Stores, title: str, timezone: str, said: str
+):
+    form = signed_in.get("/instructor/courses")
+    refused = signed_in.post(
+        "/instructor/courses", data={"csrf": csrf_of(form.text), "title": title, "timezone": timezone}
+    )
+    assert refused.status_code == 422 and said in refused.text
+    assert (
+        f'value="{timezone}"' in refused.text
+        and f'name="title" type="text" required maxlength="200" value="{title}"' in refused.text
+    )
+    assert "Start here" in refused.text  # no course was made (it had been, in UTC)

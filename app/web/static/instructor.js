@@ -90,3 +90,13 @@ for (const button of document.querySelectorAll("button[data-copy]")) {
     setTimeout(() => { button.textContent = label; }, 4000);
   });
 }
+
+// A new course's time zone: the browser's own rather than UTC, which an instructor in Paris would
+// otherwise have to know to change (every date of the course is shown in it).
+(function () {
+  const zone = document.getElementById("course-zone");
+  const own = Intl.DateTimeFormat().resolvedOptions().timeZone;
+  if (zone && zone.value === "UTC" && own && !document.querySelector(".errors")) {  // not what was typed
+    zone.value = own;
+  }
+})();

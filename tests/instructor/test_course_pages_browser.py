@@ -1,6 +1,7 @@
-"""The course pages' tables in Chromium: on a phone each row is a card of labelled lines that fits the
+"""The course pages in Chromium: on a phone each table row is a card of labelled lines that fits the
 screen (nothing scrolls sideways, the page nor a table in its box); at desktop width they stay tables
-with their column headings. axe-core on every page; screenshots in artifacts/tables-*.png."""
+with their column headings; and a new course's time zone is the browser's. axe-core on every page;
+screenshots in artifacts/tables-*.png."""
 
 from __future__ import annotations
 
@@ -102,3 +103,17 @@ def test_course_tables_are_cards_on_a_phone_and_tables_on_a_desktop(
         else:
             assert shown["table"] == "table" and shown["headingsShown"], f"{name}: not a table"
         check_page(page, f"tables-{name}-{device}")
+
+
+def test_a_new_courses_time_zone_is_the_browsers_own(live_server: LiveServer, chromium: Any) -> None:
+    from playwright.sync_api import expect
+
+    context = chromium.new_context(timezone_id="America/Chicago")
+    try:
+        page = context.new_page()
+        page.goto(live_server.url + "/instructor/courses")
+        page.get_by_label("Instructor API key").fill(live_server.key("instructor", "Prof Chicago"))
+        page.get_by_role("button", name="Sign in").click()
+        expect(page.get_by_label("Time zone of its dates")).to_have_value("America/Chicago")  # not UTC
+    finally:
+        context.close()
