@@ -282,11 +282,15 @@ def _builder_context(
 
 @router.get("/courses/{course_id}/assignments/new")
 async def new_assignment(
-    course_id: RecordId, request: Request, services: ServicesDep, who: Visitor, q: str = ""
+    course_id: RecordId, request: Request, services: ServicesDep, who: Visitor, q: str = "", pick: str = ""
 ) -> Response:
+    """The builder; `pick` ticks a problem already (a problem's page links here to assign it)."""
+
     def load() -> dict[str, Any]:
         course = _course(services, who, course_id, instructor=True)
-        return _builder_context(services, who, course, None, q[:100], request.app.state.lti.clock())
+        chosen = [pick] if _PROBLEM_ID.match(pick) else []
+        now = request.app.state.lti.clock()
+        return _builder_context(services, who, course, None, q[:100], now, chosen)
 
     values = await run_in_threadpool(load)
     return await _page(

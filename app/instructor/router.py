@@ -32,7 +32,7 @@ from starlette.concurrency import run_in_threadpool
 from starlette.datastructures import UploadFile
 
 from app.courses import access
-from app.courses.records import EnrolmentRecord
+from app.courses.records import EnrolmentRecord, StaffRole
 from app.db import class_results as results_repository
 from app.db.errors import ProblemExists
 from app.db.errors import ProblemNotFound as StoredProblemNotFound
@@ -596,6 +596,7 @@ async def problem(
 
     context = await run_in_threadpool(load)
     own = not record.builtin and str(record.owner_key_id) == who.principal.key_id
+    taught = await run_in_threadpool(access.taught_courses, services.stores, who.principal)
     return await _page(
         request,
         services,
@@ -610,6 +611,8 @@ async def problem(
             "whose_detail": whose_detail,
             "own": own,
             "saved": saved,
+            # where the instructor can put it to use (after an upload, the next step)
+            "teaching": [course for course, role in taught if role is StaffRole.INSTRUCTOR],
         },
     )
 

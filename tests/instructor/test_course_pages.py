@@ -422,3 +422,16 @@ def test_a_course_with_an_unknown_time_zone_or_no_title_is_refused_saying_why_ke
         and f'name="title" type="text" required maxlength="200" value="{title}"' in refused.text
     )
     assert "Start here" in refused.text  # no course was made (it had been, in UTC)
+
+
+def test_a_problems_page_links_to_a_new_assignment_of_each_course_with_the_problem_ticked(
+    signed_in: TestClient, stores: Stores
+):
+    before = signed_in.get("/instructor/problems/yo-yo", params={"saved": "1"}).text
+    assert 'To assign it, <a href="/instructor/courses">create a course</a> first.' in before  # no dead end
+    course = _make_course(signed_in)
+    page = signed_in.get("/instructor/problems/yo-yo").text
+    link = f"/instructor/courses/{course}/assignments/new?pick=yo-yo"
+    assert f'<a href="{link}">a new assignment of Mechanics</a>' in page
+    builder = signed_in.get(link).text
+    assert re.search(r'<input type="checkbox" name="problem" value="yo-yo" id="pick-yo-yo" checked>', builder)
