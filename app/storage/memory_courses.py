@@ -206,6 +206,10 @@ class MemoryCourseStore:
         with self._lock:
             return self._sessions.get(id_hash)
 
+    def end_session(self, id_hash: str) -> None:
+        with self._lock:
+            self._sessions.pop(id_hash, None)
+
     def create_assignment(self, course_id: int, spec: AssignmentSpec) -> AssignmentRecord:
         with self._lock:
             self._course(course_id)

@@ -328,6 +328,10 @@ class SqlCourseStore:
                 return None
             return CourseSession(row.course_id, row.student, row.name, row.csrf_token, row.expires_at)
 
+    def end_session(self, id_hash: str) -> None:
+        with self._database.session() as session:
+            session.execute(delete(CourseSessionRow).where(CourseSessionRow.id_hash == id_hash))
+
     def create_assignment(self, course_id: int, spec: AssignmentSpec) -> AssignmentRecord:
         with self._database.session() as session:
             if session.get(Course, course_id) is None:

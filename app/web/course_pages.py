@@ -5,6 +5,7 @@
     GET|POST /join/{code} a course's join code: name and email, then signed in as its new student,
                           shown their link to come back
     POST /courses/return-link   a signed-in student's new link to come back (the old one stops working)
+    POST /courses/sign-out      ends the browser's session
     GET  /courses         my courses, each with its assignments: due date, status and score
     GET  /courses/{c}/assignments/{a}   the assignment: its problems, due date, late policy, score
 
@@ -211,6 +212,33 @@ async def new_return_link(request: Request, context: LtiContextDep) -> Response:
     return _return_link_page(request, issued[0], issued[1], issued[2], joined=False)
 
 
+@router.post("/courses/sign-out")
+async def sign_out(request: Request, context: LtiContextDep) -> Response:
+    """Ends this browser's session (a shared computer's next user is not signed in as the student)."""
+    if _cross_site(request):
+        return _refused_cross_site(request)
+    form = await request.form(max_files=0, max_fields=10)
+    sent = str(form.get("csrf") or "")
+
+    def end() -> int:
+        who = _student(request)
+        if who is None:
+            return 401
+        if not who.by_link or not hmac.compare_digest(sent.encode(), who.csrf_token.encode()):
+            return 403
+        context.stores.courses.end_session(who.session_hash)
+        return 200
+
+    status = await run_in_threadpool(end)
+    values = {"title": "Signed out" if status == 200 else "Your courses", "stale": status == 403}
+    response = page(
+        request, "courses/signed_out.html", {**values, "signed_out": status == 200}, status=status
+    )
+    if status == 200:
+        response.delete_cookie(course_sessions.COOKIE, path="/")
+    return response
+
+
 @dataclass(frozen=True)
 class Row:
     assignment: AssignmentRecord
@@ -240,8 +268,10 @@ def _rows(services: Services, course: CourseRecord, student: str, now: datetime)
 @dataclass(frozen=True)
 class SignedIn:
     student: str  # the identity their work is filed under
+    name: str
     csrf_token: str
-    by_link: bool  # signed in by a link or a join code (not by an LMS): they may make a link to come back
+    session_hash: str
+    by_link: bool  # by a link or a join code (not by an LMS): they make links to come back, sign out
 
 
 def _student(request: Request) -> SignedIn | None:
@@ -254,7 +284,11 @@ def _student(request: Request) -> SignedIn | None:
     if principal.student is None:
         return None
     return SignedIn(
-        principal.student, record.csrf_token, record.platform_id == course_sessions.COURSE_PLATFORM
+        principal.student,
+        record.name,
+        record.csrf_token,
+        found[0],
+        record.platform_id == course_sessions.COURSE_PLATFORM,
     )
 
 

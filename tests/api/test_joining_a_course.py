@@ -131,3 +131,20 @@ def test_a_student_signed_in_to_the_course_who_opens_its_join_link_again_is_not_
     assert [s["name"] for s in client.get(f"/v1/courses/{course}/roster", headers=teacher).json()] == [
         "Lise Meitner"
     ]
+
+
+def test_signing_out_ends_the_session_and_the_link_to_come_back_still_works(client, teacher):
+    code = _join_code(client, teacher)
+    browser, link = _join(client, code, name="Lise Meitner")
+    page = browser.get("/courses").text
+    assert "Signed in as Lise Meitner" in page
+    cookie = browser.cookies.get("physcheck_course")
+    copy = TestClient(client.app, follow_redirects=False, cookies={"physcheck_course": cookie})
+    csrf = re.search(r'name="csrf" value="([^"]+)"', page)
+    assert csrf
+    assert browser.post("/courses/sign-out", data={"csrf": "forged"}).status_code == 403
+    out = browser.post("/courses/sign-out", data={"csrf": csrf.group(1)})
+    assert out.status_code == 200 and "Signed out" in out.text
+    assert browser.get("/courses").status_code == 401
+    assert copy.get("/courses").status_code == 401  # the session itself is gone, not only the cookie
+    _device(client, link)

@@ -191,6 +191,16 @@ def test_a_link_to_come_back_signs_in_each_time_until_a_new_link_replaces_it(sto
     assert stores.courses.redeem_sign_in("back", NOW) is None
 
 
+def test_an_ended_session_is_gone(stores: Stores):
+    course = stores.courses.create_course("A", owner="key:1")
+    live = CourseSession(course.id, "course:1:s001", "Ada", "csrf1", NOW + timedelta(hours=8))
+    stores.courses.save_session("mine", live, NOW)
+    stores.courses.save_session("theirs", live, NOW)
+    stores.courses.end_session("mine")
+    stores.courses.end_session("unknown")  # twice, or never opened: nothing to do
+    assert stores.courses.get_session("mine") is None and stores.courses.get_session("theirs") == live
+
+
 def test_links_are_issued_only_to_enrolled_students(stores: Stores):
     course = stores.courses.create_course("A", owner="key:1")
     with pytest.raises(NotFound):
