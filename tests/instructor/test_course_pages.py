@@ -174,7 +174,9 @@ def test_the_course_page_makes_and_turns_off_a_join_code(signed_in: TestClient, 
     )
     assert made.status_code == 303
     code = stores.courses.get_course(course).join_code
-    assert code and f"/join/{code}" in signed_in.get(f"/instructor/courses/{course}").text
+    shown = signed_in.get(f"/instructor/courses/{course}").text
+    assert code and f"/join/{code}" in shown
+    assert "link to come back" in shown and "each join is a new student" not in shown  # as joining now is
     signed_in.post(
         f"/instructor/courses/{course}/join-code", data={"csrf": csrf_of(page.text), "enabled": "0"}
     )
