@@ -40,6 +40,7 @@ from app.courses.records import (
     SolutionRelease,
 )
 from app.courses.roster_csv import parse_roster
+from app.db.errors import ProblemNotFound
 from app.deps import RecordId, ServicesDep
 from app.instructor import session as auth
 from app.instructor.builder_fields import LOCAL, fields_of, fields_typed
@@ -428,7 +429,13 @@ async def gradebook_page(
     def load() -> dict[str, Any]:
         course = _course(services, who, course_id)
         book = service.course_gradebook(services.stores, services.catalog, course, now)
-        return {"course": course, "book": book, "student": student, "shown": shown}
+        return {
+            "course": course,
+            "book": book,
+            "student": student,
+            "shown": shown,
+            "titles": _titles(services, {p for a in book.assignments for p in a.problems}),
+        }
 
     values = await run_in_threadpool(load)
     return await _page(
@@ -438,6 +445,17 @@ async def gradebook_page(
         "instructor/gradebook.html",
         {"title": f"Gradebook: {values['course'].title}", **values},
     )
+
+
+def _titles(services: Services, problem_ids: set[str]) -> dict[str, str]:
+    """Each problem's title, by id (a retired or unknown problem keeps its id)."""
+    titles = {}
+    for problem_id in problem_ids:
+        try:
+            titles[problem_id] = services.catalog.document(services.catalog.get(problem_id)).title
+        except ProblemNotFound:
+            titles[problem_id] = problem_id
+    return titles
 
 
 @router.get("/courses/{course_id}/gradebook.csv")

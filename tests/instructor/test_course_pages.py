@@ -437,3 +437,26 @@ def test_a_problems_page_links_to_a_new_assignment_of_each_course_with_the_probl
     assert f'<a href="{link}">a new assignment of Mechanics</a>' in page
     builder = signed_in.get(link).text
     assert re.search(r'<input type="checkbox" name="problem" value="yo-yo" id="pick-yo-yo" checked>', builder)
+
+
+def test_one_students_gradebook_names_the_problems_by_title_and_sets_the_extension_form_to_them(
+    signed_in: TestClient, stores: Stores
+):
+    from datetime import UTC, datetime, timedelta
+
+    from app.courses.records import AssignmentSpec
+
+    course = _make_course(signed_in)
+    signed_in.post(
+        f"/instructor/courses/{course}/roster",
+        data={"csrf": csrf_of(signed_in.get(f"/instructor/courses/{course}").text), "roster": ROSTER},
+    )
+    now = datetime.now(UTC)
+    stores.courses.create_assignment(
+        course, AssignmentSpec("HW 1", ("yo-yo",), now - timedelta(days=1), now + timedelta(days=1))
+    )
+    alan = f"course:{course}:s002"
+    page = signed_in.get(f"/instructor/courses/{course}/gradebook", params={"student": alan}).text
+    title = stores.problems.get("yo-yo").document["title"]
+    assert f'<td><a href="/instructor/problems/yo-yo">{title}</a></td><td>acceleration</td>' in page
+    assert f'<option value="{alan}" selected>Alan Turing' in page  # not the roster's first, Ada
