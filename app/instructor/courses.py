@@ -383,7 +383,7 @@ async def _save_builder(
                 usable = access.may_use_problem(
                     services.catalog.get(problem_id), who.principal, colleagues, shared
                 )
-            except LookupError:
+            except ProblemNotFound:
                 usable = False
             if not usable:
                 errors.append(f"There is no problem {problem_id!r} of yours.")

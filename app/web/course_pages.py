@@ -29,6 +29,7 @@ from app.courses import sessions as course_sessions
 from app.courses.gradebook import AssignmentCell
 from app.courses.policy import Status, late_policy_text, shown
 from app.courses.records import AssignmentNotFound, AssignmentRecord, CourseRecord
+from app.db.errors import ProblemNotFound
 from app.deps import RecordId
 from app.lti.context import LtiContext, LtiContextDep
 from app.lti.platforms import platform_origins
@@ -342,7 +343,7 @@ async def assignment_page(
         for problem_id in assignment.problems:
             try:
                 title = services.catalog.document(services.catalog.get(problem_id)).title
-            except LookupError:
+            except ProblemNotFound:  # retired by its author: the assignment's other problems stay open
                 continue
             parts = by_problem.get(problem_id, [])
             problems.append(

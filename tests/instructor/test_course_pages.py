@@ -460,3 +460,32 @@ def test_one_students_gradebook_names_the_problems_by_title_and_sets_the_extensi
     title = stores.problems.get("yo-yo").document["title"]
     assert f'<td><a href="/instructor/problems/yo-yo">{title}</a></td><td>acceleration</td>' in page
     assert f'<option value="{alan}" selected>Alan Turing' in page  # not the roster's first, Ada
+
+
+def test_an_assignment_whose_upload_was_retired_still_opens_for_its_students_with_its_other_problems(
+    signed_in: TestClient, stores: Stores
+):
+    from datetime import UTC, datetime, timedelta
+
+    from app.courses.records import AssignmentSpec
+
+    author = stores.keys.list()[0]
+    document = {**stores.problems.get("yo-yo").document, "id": "my-yo-yo", "title": "My yo-yo"}
+    stores.problems.create("my-yo-yo", document, owner_key_id=author.id)
+    course = _make_course(signed_in)
+    now = datetime.now(UTC)
+    made = stores.courses.create_assignment(
+        course,
+        AssignmentSpec("HW 1", ("my-yo-yo", "yo-yo"), now - timedelta(days=1), now + timedelta(days=1)),
+    )
+    page = signed_in.get(f"/instructor/courses/{course}")
+    signed_in.post(
+        f"/instructor/courses/{course}/join-code", data={"csrf": csrf_of(page.text), "enabled": "1"}
+    )
+    student = TestClient(signed_in.app, follow_redirects=False)
+    student.post(f"/join/{stores.courses.get_course(course).join_code}", data={"name": "Ada"})
+    stores.problems.retire("my-yo-yo")
+    shown = student.get(f"/courses/{course}/assignments/{made.id}")
+    assert shown.status_code == 200, shown.text  # it had been the API's 404, "no problem 'my-yo-yo'"
+    title = stores.problems.get("yo-yo").document["title"]
+    assert title in shown.text and "My yo-yo" not in shown.text
