@@ -489,3 +489,11 @@ def test_an_assignment_whose_upload_was_retired_still_opens_for_its_students_wit
     assert shown.status_code == 200, shown.text  # it had been the API's 404, "no problem 'my-yo-yo'"
     title = stores.problems.get("yo-yo").document["title"]
     assert title in shown.text and "My yo-yo" not in shown.text
+
+
+def test_a_refused_course_page_leads_back_to_the_courses(signed_in: TestClient):
+    missing = signed_in.get("/instructor/courses/999")
+    assert missing.status_code == 404 and "There is no course 999 of yours." in missing.text
+    assert (
+        'Back to <a href="/instructor/courses">your courses</a>' in missing.text
+    )  # it offered only the problems
