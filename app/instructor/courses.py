@@ -10,6 +10,7 @@ instructor's launch alike: `access.require_staff`).
     GET|POST  /instructor/assignments/{a}/edit           the same, for an assignment
     GET       /instructor/courses/{c}/gradebook          students x assignments, a student's parts
     GET       /instructor/assignments/{a}/results        how the course did on each part
+    POST      /instructor/assignments/{a}/delete         the assignment goes (its answers stay)
     POST      /instructor/courses/{c}/extensions         a student's own due date
     POST      /instructor/problems/{id}/as-student       view the student's page in one's own session
 """
@@ -415,6 +416,22 @@ async def update_assignment(
     assignment_id: RecordId, request: Request, services: ServicesDep, who: Visitor
 ) -> Response:
     return await _save_builder(request, services, who, None, assignment_id)
+
+
+@router.post("/assignments/{assignment_id}/delete")
+async def delete_assignment(
+    assignment_id: RecordId, request: Request, services: ServicesDep, who: Visitor
+) -> Response:
+    """As the API's DELETE: the assignment goes, its students' answers stay in the log."""
+    await auth.require_csrf(request, services, who)
+
+    def remove() -> int:
+        course, record = _assignment(services, who, assignment_id)
+        services.stores.courses.delete_assignment(record.id)
+        return course.id
+
+    course_id = await run_in_threadpool(remove)
+    return RedirectResponse(f"/instructor/courses/{course_id}?saved=deleted", status_code=303)
 
 
 # ---- the gradebook ---------------------------------------------------------------------------------

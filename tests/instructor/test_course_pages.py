@@ -497,3 +497,30 @@ def test_a_refused_course_page_leads_back_to_the_courses(signed_in: TestClient):
     assert (
         'Back to <a href="/instructor/courses">your courses</a>' in missing.text
     )  # it offered only the problems
+
+
+def test_an_assignment_is_deleted_from_its_page_and_its_answers_stay(signed_in: TestClient, stores: Stores):
+    from datetime import UTC, datetime, timedelta
+
+    from app.courses.records import AssignmentSpec
+
+    course = _make_course(signed_in)
+    now = datetime.now(UTC)
+    made = stores.courses.create_assignment(
+        course, AssignmentSpec("HW 1", ("yo-yo",), now - timedelta(days=1), now + timedelta(days=1))
+    )
+    _answered_yo_yo(stores, f"course:{course}:s1")
+    page = signed_in.get(f"/instructor/assignments/{made.id}/edit").text
+    assert "Delete “HW 1”" in page
+    assert (
+        signed_in.post(f"/instructor/assignments/{made.id}/delete", data={"csrf": "forged"}).status_code
+        == 403
+    )
+    done = signed_in.post(f"/instructor/assignments/{made.id}/delete", data={"csrf": csrf_of(page)})
+    assert (
+        done.status_code == 303 and done.headers["location"] == f"/instructor/courses/{course}?saved=deleted"
+    )
+    assert "Assignment deleted" in signed_in.get(done.headers["location"]).text
+    assert stores.courses.assignments(course) == []
+    assert signed_in.get(f"/instructor/assignments/{made.id}/edit").status_code == 404
+    assert len(stores.submissions.page(student=f"course:{course}:s1", limit=10).items) == 1
