@@ -848,7 +848,7 @@ async def submissions(
     _need_key(who)
     problem, student = _filters(problem, student)
 
-    def load() -> tuple[Any, list[str], dict[str, EnrolmentRecord], str | None]:
+    def load() -> tuple[Any, dict[str, str], dict[str, EnrolmentRecord], str | None]:
         reach = _reachable(services, who)
         students = access.students_taught(services.stores, who.principal)
         wanted = student if student is None else _named_student(student, students)
@@ -859,10 +859,12 @@ async def submissions(
         )
         # Students of courses the visitor does not teach are left out (a page may come back shorter).
         found = replace(found, items=[item for item in found.items if reach(item.student)])
-        return found, [record.id for record in services.catalog.list()], students, wanted
+        # by title, as instructors know their problems (ids told them less: skier-friction, atwood-slack)
+        titles = {record.id: services.catalog.document(record).title for record in services.catalog.list()}
+        return found, dict(sorted(titles.items(), key=lambda item: item[1].casefold())), students, wanted
 
     try:
-        found, problem_ids, students, wanted = await run_in_threadpool(load)
+        found, titles, students, wanted = await run_in_threadpool(load)
     except AppError as error:  # pragma: no cover - defensive; storage errors are below
         raise PageError(error.status, "Cannot list submissions", error.message) from None
     except ValueError:
@@ -882,7 +884,7 @@ async def submissions(
             "student": student,
             "wanted": students.get(wanted or ""),
             "students": students,
-            "problem_ids": problem_ids,
+            "titles": titles,
             "preview_prefix": results_repository.PREVIEW_PREFIX,
         },
     )

@@ -390,6 +390,9 @@ def test_submissions_are_filtered_by_student_and_downloaded_as_csv(signed_in: Te
     )
     html = signed_in.get("/instructor/submissions", params={"student": "ada"}).text
     assert ">ada</a>" in html and ">bob</a>" not in html
+    title = stores.problems.get(PROBLEM).document["title"]
+    assert f'<a href="/instructor/problems/{PROBLEM}">{title}</a> · acceleration' in html  # by title, not id
+    assert f'<option value="{PROBLEM}">{title}</option>' in html
     assert 'href="/instructor/submissions.csv?student=ada"' in html
     response = signed_in.get("/instructor/submissions.csv", params={"student": "ada"})
     assert response.headers["content-type"].startswith("text/csv")
