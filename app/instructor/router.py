@@ -860,7 +860,13 @@ async def submissions(
         # Students of courses the visitor does not teach are left out (a page may come back shorter).
         found = replace(found, items=[item for item in found.items if reach(item.student)])
         # by title, as instructors know their problems (ids told them less: skier-friction, atwood-slack)
-        titles = {record.id: services.catalog.document(record).title for record in services.catalog.list()}
+        colleagues = access.colleagues(services.stores, who.principal)
+        shared = services.stores.courses.shared_problems()
+        titles = {
+            record.id: services.catalog.document(record).title
+            for record in services.catalog.list()
+            if access.may_use_problem(record, who.principal, colleagues, shared)  # not others' uploads
+        }
         return found, dict(sorted(titles.items(), key=lambda item: item[1].casefold())), students, wanted
 
     try:

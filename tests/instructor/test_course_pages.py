@@ -11,6 +11,7 @@ import pytest
 from fastapi.testclient import TestClient
 
 from app.courses.records import StaffRole
+from app.db.records import Role
 from app.storage import Stores
 from tests.instructor.conftest import csrf_of, new_key, sign_in
 
@@ -524,3 +525,13 @@ def test_an_assignment_is_deleted_from_its_page_and_its_answers_stay(signed_in: 
     assert stores.courses.assignments(course) == []
     assert signed_in.get(f"/instructor/assignments/{made.id}/edit").status_code == 404
     assert len(stores.submissions.page(student=f"course:{course}:s1", limit=10).items) == 1
+
+
+def test_the_submissions_filter_lists_no_other_instructors_private_upload(
+    signed_in: TestClient, stores: Stores
+):
+    other = stores.keys.create(Role.INSTRUCTOR, name="Prof B")
+    document = {**stores.problems.get("yo-yo").document, "id": "secret-yo-yo", "title": "Exam question 3"}
+    stores.problems.create("secret-yo-yo", document, owner_key_id=other.record.id)
+    page = signed_in.get("/instructor/submissions").text
+    assert "Exam question 3" not in page and "secret-yo-yo" not in page
