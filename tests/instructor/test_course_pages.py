@@ -459,7 +459,10 @@ def test_one_students_gradebook_names_the_problems_by_title_and_sets_the_extensi
     alan = f"course:{course}:s002"
     page = signed_in.get(f"/instructor/courses/{course}/gradebook", params={"student": alan}).text
     title = stores.problems.get("yo-yo").document["title"]
-    assert f'<td><a href="/instructor/problems/yo-yo">{title}</a></td><td>acceleration</td>' in page
+    assert re.search(
+        rf'<td[^>]*><a href="/instructor/problems/yo-yo">{re.escape(title)}</a></td><td[^>]*>acceleration</td>',
+        page,
+    )
     assert f'<option value="{alan}" selected>Alan Turing' in page  # not the roster's first, Ada
 
 

@@ -27,14 +27,19 @@ ROSTER = [
     ),
     RosterRow("s-2026-000418", "Alan Turing", "alan.turing@physics.uni.example"),
 ]
-# Each page's table and how many rows it shows: the builder's bank, the course's assignments, the
-# gradebook's students, the submissions, an assignment's parts.
+# Each page's table: the builder's bank, the course's assignments, the gradebook's students and one
+# student's parts, the submissions, an assignment's parts, a problem's class results per part.
 PAGES = {
     "builder": ("/instructor/courses/{course}/assignments/new", "table.problem-picker"),
     "course": ("/instructor/courses/{course}", "table.stacked"),
     "gradebook": ("/instructor/courses/{course}/gradebook", "table.gradebook"),
+    "student": (
+        "/instructor/courses/{course}/gradebook?student=course%3A{course}%3As-2026-000417",
+        "#parts table",
+    ),
     "submissions": ("/instructor/submissions", "table.submissions"),
     "results": ("/instructor/assignments/{assignment}/results", "table.stacked"),
+    "class-results": ("/instructor/problems/yo-yo/results", ".overview table"),
 }
 
 
