@@ -246,6 +246,7 @@ class Row:
     cell: AssignmentCell
     due: str
     late_policy: str
+    opens: str = ""  # shown while it is not open yet
 
     @property
     def status(self) -> str:
@@ -261,7 +262,13 @@ def _rows(services: Services, course: CourseRecord, student: str, now: datetime)
     for assignment in services.stores.courses.assignments(course.id):
         cell = service.student_cell(services.stores, services.catalog, assignment, student, now)
         rows.append(
-            Row(assignment, cell, shown(cell.due, course.timezone), late_policy_text(assignment.spec.late))
+            Row(
+                assignment,
+                cell,
+                shown(cell.due, course.timezone),
+                late_policy_text(assignment.spec.late),
+                shown(assignment.spec.opens_at, course.timezone),
+            )
         )
     return rows
 

@@ -148,3 +148,23 @@ def test_signing_out_ends_the_session_and_the_link_to_come_back_still_works(clie
     assert browser.get("/courses").status_code == 401
     assert copy.get("/courses").status_code == 401  # the session itself is gone, not only the cookie
     _device(client, link)
+
+
+def test_an_assignment_not_open_yet_says_when_it_opens_on_the_students_home(client, teacher):
+    from datetime import UTC, datetime, timedelta
+
+    code = _join_code(client, teacher)
+    course = client.get("/v1/courses", headers=teacher).json()[0]["id"]
+    opens = datetime(2031, 3, 2, 9, 0, tzinfo=UTC)
+    _assignment(
+        client,
+        teacher,
+        course,
+        title="Homework 2",
+        problems=["yo-yo"],
+        opens_at=opens.isoformat(),
+        due_at=(opens + timedelta(days=7)).isoformat(),
+    )
+    browser, _ = _join(client, code, name="Lise Meitner")
+    home = browser.get("/courses").text
+    assert "Opens Sun 02 Mar 2031, 10:00 CET; due Sun 09 Mar 2031, 10:00 CET." in home  # Paris time
