@@ -21,6 +21,7 @@ from typing import Literal, NoReturn
 
 from physics.errors import AmbiguousGrouping, AmbiguousInput, ParseError, TooLarge
 from physics.mathinput.limits import InputLimits
+from physics.mathinput.mixed_numbers import mixed_number_slip
 from physics.mathinput.powered import PoweredArgument
 from physics.mathinput.render import STUDENT_STYLE, render_text
 from physics.mathinput.tokens import Kind, Token
@@ -45,6 +46,10 @@ _POSTFIX_KINDS: dict[str, PostfixKind] = {"!": "factorial", "%": "percent", "°"
 # Functions of an angle: a bare number as their argument is in radians, which no one types spaced from
 # a word after it (`sin 2 θ`).
 _TRIGONOMETRIC = frozenset({"sin", "cos", "tan", "sec", "csc", "cot"})
+# The tokens of `\\frac{n}{d}` (or `\\frac12`) after the number of a mixed number, `3\\frac{1}{2}`.
+_LATEX_FRACTION_OF_NUMBERS = (
+    Kind.LPAREN, Kind.LPAREN, Kind.NUM, Kind.RPAREN, Kind.OP, Kind.LPAREN, Kind.NUM, Kind.RPAREN, Kind.RPAREN,
+)  # fmt: skip
 # A tuple, not a set: membership by identity, without Enum's hash (a Python call) for every token.
 _FACTOR_STARTS = (Kind.NUM, Kind.NAME, Kind.CONST, Kind.FUNC, Kind.LPAREN, Kind.SQRT)
 
@@ -179,7 +184,14 @@ class Parser:
                 items.append(_Item("*" if tok.text == "*" else "/", factor, tok, False))
             elif kind in _FACTOR_STARTS or (kind is Kind.BAR and self._abs_depth == 0):
                 prev = tokens[self._i - 1]  # the factor before this one
+                if (
+                    kind is Kind.LPAREN
+                    and prev.kind is Kind.NUM
+                    and self._source[tok.pos : tok.pos + 1] == "\\"
+                ):
+                    self._refuse_a_latex_mixed_number(prev)
                 if kind is Kind.NUM and prev.kind is Kind.NUM:
+                    self._refuse_a_mixed_number(prev, tok)
                     raise ParseError(
                         f'Two numbers side by side ("{self._source[prev.pos : tok.end]}"): remove the '
                         "space if it is one number, or write * between them.",
@@ -195,6 +207,47 @@ class Parser:
             if not items:
                 return first
         return Product(first, tuple((item.op, item.node) for item in items))
+
+    def _refuse_a_mixed_number(self, whole: Token, top: Token) -> None:
+        """`1 1/2`, a whole number then a fraction of whole numbers: one and a half, as a recipe writes
+        it. Only where the first number is no exponent (`x^2 1/2` is two numbers side by side)."""
+        at = self._i
+        tokens = self._tokens
+        slash, bottom = tokens[at + 1], tokens[at + 2] if at + 2 < len(tokens) else tokens[-1]
+        if not (
+            whole.text.isdigit()
+            and top.text.isdigit()
+            and slash.kind is Kind.OP
+            and slash.text == "/"
+            and bottom.kind is Kind.NUM
+            and bottom.text.isdigit()
+            and bottom.value
+            and not (at >= 2 and tokens[at - 2].kind is Kind.OP and tokens[at - 2].text == "^")
+        ):
+            return
+        assert top.value is not None
+        typed = self._source[whole.pos : bottom.end]
+        raise mixed_number_slip(int(whole.text), top.value / bottom.value, typed, top.pos)
+
+    def _refuse_a_latex_mixed_number(self, whole: Token) -> None:
+        """`3\\frac{1}{2}`: a mixed number as LaTeX prints it, 3½, refused as `1 1/2` is. The tokens of a
+        `\\frac` of two whole numbers are `( ( n ) / ( d ) )`, each bracket a brace or zero-width."""
+        at = self._i
+        shape = self._tokens[at : at + 9]
+        kinds = [t.kind for t in shape]
+        if kinds != [*_LATEX_FRACTION_OF_NUMBERS] or not (
+            whole.text.isdigit()
+            and shape[2].text.isdigit()
+            and shape[4].text == "/"
+            and shape[6].text.isdigit()
+            and shape[6].value
+        ):
+            return
+        if at >= 2 and self._tokens[at - 2].kind is Kind.OP and self._tokens[at - 2].text == "^":
+            return
+        assert shape[2].value is not None
+        typed = self._source[whole.pos : shape[-1].end]
+        raise mixed_number_slip(int(whole.text), shape[2].value / shape[6].value, typed, shape[0].pos)
 
     def _settle_ambiguous_divisions(self, first: Node, items: list[_Item]) -> tuple[Node, list[_Item]]:
         """`a/b c` could be (a/b)·c or a/(b·c); only an integer fraction opening a term is a coefficient.

@@ -16,6 +16,7 @@ from physics.characters import without_math_delimiters, without_zero_width
 from physics.errors import AnswerError, LikelySlip, ParseError, TooLarge
 from physics.mathinput.latex import LatexReader
 from physics.mathinput.limits import InputLimits
+from physics.mathinput.mixed_numbers import mixed_number_slip
 from physics.mathinput.tokentypes import Kind, SpelledWord, Token
 from physics.mathinput.velocities import PRIMES, derivatives_read, dotted_word, is_word_mark, needs_spelling
 from physics.mathinput.vocabulary import (
@@ -163,10 +164,11 @@ def tokenize(
                 token = replace(token, value=-token.value, space_before=tokens[-2].space_before)
                 del tokens[-2:]
         elif ch in VULGAR_FRACTIONS:
+            if _ends_with_whole_number(tokens):  # `1½`, `1 ½`: one and a half, never 1·½
+                typed = f"{tokens[-1].text}{' ' if space else ''}{ch}"
+                raise mixed_number_slip(int(tokens[-1].text), Fraction(*VULGAR_FRACTIONS[ch]), typed, i)
             if tokens and tokens[-1].kind is Kind.NUM and not space:
-                raise ParseError(
-                    f"Write a mixed number as a fraction or a decimal (3/2 or 1.5), not 1{ch}.", i
-                )
+                raise ParseError(f"Write a number as a fraction or a decimal, not {tokens[-1].text}{ch}.", i)
             tokens.extend(_vulgar_fraction(ch, i, space))
             i += 1
             space = False
@@ -376,6 +378,14 @@ def _refuse_two_powers_of_ten(text: str, tokens: list[Token], ten: Token) -> Non
         "power of ten: write one of them, not both",
         ten.pos + 2,
     )
+
+
+def _ends_with_whole_number(tokens: list[Token]) -> bool:
+    """Whether the tokens end with a whole number that is not an exponent (`1` of `1 1/2`, not the `2`
+    of `x^2 ½`), so that a fraction after it makes a mixed number."""
+    if not tokens or tokens[-1].kind is not Kind.NUM or not tokens[-1].text.isdigit():
+        return False
+    return len(tokens) < 2 or tokens[-2].kind is not Kind.OP or tokens[-2].text != "^"
 
 
 def _caret_and_minus(tokens: list[Token]) -> bool:

@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 import sympy
 
-from physics.errors import AmbiguousInput, AnswerError, ParseError
+from physics.errors import AmbiguousInput, AnswerError, LikelySlip, ParseError
 from physics.mathinput import parse_math
 from tests.mathinput.support import names, same, sym
 
@@ -125,11 +125,39 @@ def test_scientific_notation_with_a_declared_letter_is_refused_with_both_reading
         assert reading in caught.value.message
 
 
-def test_a_mixed_number_with_a_vulgar_fraction_is_refused_with_the_fix() -> None:
-    with pytest.raises(ParseError) as caught:
-        parse_math("1½ m", names("m"))
-    assert "3/2 or 1.5" in caught.value.message
-    assert caught.value.position == 1
+MIXED_NUMBERS = [
+    # (typed, position of the fraction, the fix the message gives): one and a half as a recipe writes
+    # it; `1 ½ m` and `3\frac{1}{2} m` were read 1·½·m and 3·½·m, and graded
+    ("1½ m", 1, "(3/2 or 1.5), not 1½"),
+    ("1 ½ m", 2, "(3/2 or 1.5), not 1 ½"),
+    ("1 1/2 m", 2, "(3/2 or 1.5), not 1 1/2"),
+    ("2 3/4m", 2, "(11/4 or 2.75), not 2 3/4"),
+    ("1 1/3 m", 2, "(4/3), not 1 1/3"),
+    ("3\\frac{1}{2} m", 1, "(7/2 or 3.5), not 3\\frac{1}{2}"),
+    ("3 \\tfrac12 m", 2, "(7/2 or 3.5), not 3 \\tfrac12"),
+]
+
+
+@pytest.mark.parametrize(("typed", "position", "fix"), MIXED_NUMBERS, ids=[m[0] for m in MIXED_NUMBERS])
+def test_a_mixed_number_is_refused_with_its_fraction_and_decimal(typed: str, position: int, fix: str) -> None:
+    with pytest.raises(LikelySlip) as caught:
+        parse_math(typed, names("m"))
+    assert caught.value.position == position
+    assert f"Write a mixed number as one fraction or a decimal {fix}" in caught.value.message
+
+
+NOT_MIXED_NUMBERS = [
+    # (typed, read as): a number that is an exponent, or a fraction of symbols, is a factor as before
+    ("m^2 ½", "m**2/2"),
+    ("m^2 \\frac{1}{2}", "m**2/2"),
+    ("3\\frac{m}{2}", "3*m/2"),
+    ("½ m", "1/2*m"),
+]
+
+
+@pytest.mark.parametrize(("typed", "read_as"), NOT_MIXED_NUMBERS, ids=[m[0] for m in NOT_MIXED_NUMBERS])
+def test_a_number_beside_a_fraction_that_is_no_mixed_number_is_a_product(typed: str, read_as: str) -> None:
+    assert same(parse_math(typed, names("m")).expr, parse_math(read_as, names("m")).expr)
 
 
 def test_vulgar_fraction_read_as_shows_the_fraction() -> None:

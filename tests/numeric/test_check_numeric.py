@@ -52,6 +52,7 @@ VERDICTS = [
     ("leading-slash-units", "4.58 /s", NumericSpec(D("4.58"), "1/s"), OK, Reason.EQUIVALENT),
     ("number-then-number-over-unit", "4.58 12/s", NumericSpec(D("4.58"), "1/s"), BAD, Reason.PARSE_ERROR),
     ("glued-units", "4.58m/s^2", ACCEL, OK, Reason.EQUIVALENT),
+    ("mixed-number", "1 ½ m", NumericSpec(D("1.52"), "m"), BAD, Reason.PARSE_ERROR),  # never 1·½ m
     ("fullwidth-units", "4.58 ｍ／ｓ＾２", ACCEL, OK, Reason.EQUIVALENT),  # East Asian input methods
     ("fullwidth-number", "４．５８ m/s^2", ACCEL, OK, Reason.EQUIVALENT),
     ("fullwidth-brackets", "4.58 ［m/s^2］", ACCEL, OK, Reason.EQUIVALENT),
@@ -212,6 +213,14 @@ WORDING = [
     ("4.58 +/- 0.05 m/s^2", ACCEL, "without its uncertainty (+/- …)"),
     ("4.58+-0.05 m/s^2", ACCEL, "without its uncertainty (+- …)"),
     ("4.58 m/s^2 ± 1%", ACCEL, "without its uncertainty (± …)"),
+    # a mixed number: `1 ½ m` was 1·½ m, graded wrong; `1½ m` named an unexpected character in the units
+    ("1 ½ m", NumericSpec(D("1.5"), "m"), "Write a mixed number as one fraction or a decimal (3/2 or 1.5)"),
+    ("1½ m", NumericSpec(D("1.5"), "m"), "Write a mixed number as one fraction or a decimal (3/2 or 1.5)"),
+    (
+        "2 3/4 in",
+        NumericSpec(D("2.75"), "in"),
+        "Write a mixed number as one fraction or a decimal (11/4 or 2.75)",
+    ),
 ]
 
 
