@@ -100,6 +100,7 @@ class _NameReadings:
     safe: bool
     default: bool = False
     case_only: bool = False  # every reading is a unit the letters spell in another case (`mc`, `pa`)
+    first_where_none_fits: bool = False  # graded as the first reading where none has the dimension
 
     @property
     def plain(self) -> bool:
@@ -107,18 +108,24 @@ class _NameReadings:
         return self.safe or self.default
 
 
-def _readings(name: str, negative_power: bool) -> _NameReadings:
+def _readings(name: str, power: int = 1) -> _NameReadings:
     """Every reading of a glued name, most literal first.
 
     A known spelling or alias is taken as it is; a glued name that splits one way only is that product
     (`Nm`). Where another single unit fits the same letters (`Kg` for kg, `kgs` as a plural of kg) the
     name has no safe reading: only the expected dimension can choose. A known spelling with a negative
-    power (`ms^-1`) keeps its split as a second reading, for the same choice.
+    power (`ms^-1`) keeps its split as a second reading, for the same choice; so does an alias of a
+    rate with a power (`mps2`: metres per second squared, or (m/s)²).
     """
+    negative_power = power < 0
     meanings = MEANINGS.get(name)
     if meanings is not None:
         return _NameReadings(tuple(_Option(((_meaning(m), 1),)) for m in meanings), safe=False, default=True)
     alias = ALIASES.get(name)
+    if alias is not None and power > 1 and _alias_factors(alias)[-1][1] < 0:
+        # `mps2`, `mps²`: said "metres per second squared", the power on the second; or (m/s)² as typed
+        per = _alias_factors(alias)
+        return _NameReadings((_Option(per, split=True), _Option(per)), safe=False, first_where_none_fits=True)
     if alias is not None and not negative_power:
         return _NameReadings((_Option(_alias_factors(alias)),), safe=True)
     splits = tuple(_Option(tuple((a, 1) for a in split), split=True) for split in _splits(name))
@@ -197,7 +204,7 @@ def _prefixed_spellings(prefix: str, unit: str) -> tuple[str, ...]:
 
 def _one_unit(spelling: str) -> bool:
     """Whether a spelling reads as one unit and one way only."""
-    readings = _readings(spelling, False)
+    readings = _readings(spelling)
     return len(readings.options) == 1 and readings.safe and not readings.options[0].split
 
 
@@ -347,7 +354,7 @@ class _Parser:
                 token.text,
             )
         self.names.append(token)
-        readings = _readings(token.text, power < 0)
+        readings = _readings(token.text, power)
         if not readings.options:
             hint = suggestion(token.text)
             advice = f" (units are case-sensitive: did you mean {hint!r}?)" if hint else ""
@@ -429,7 +436,10 @@ def _read(text: str, expected: Dimension | None, *, case_slips: bool = True) -> 
             return UnitReading(
                 fits[0], f"Read {typed} as {fits[0].text}: the only reading that is {describe(expected)}"
             )
-    if all(readings.safe or token.text in FIRST_WHERE_NONE_FITS for token, readings in open_names):
+    if all(
+        readings.safe or readings.first_where_none_fits or token.text in FIRST_WHERE_NONE_FITS
+        for token, readings in open_names
+    ):
         return UnitReading(literal)  # graded: the dimension is wrong
     token, readings = next((t, r) for t, r in open_names if not r.safe)
     shown = [option.text for option in readings.options]
@@ -479,7 +489,7 @@ def _recased(name: str) -> list[str]:
             spelled = "".join(cases)
             if spelled == name or spelled in variants:
                 continue
-            readings = _readings(spelled, False)
+            readings = _readings(spelled)
             if len(readings.options) == 1 and readings.safe and _unprefixed(readings.options[0].factors):
                 variants.append(spelled)
     return variants

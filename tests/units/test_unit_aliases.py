@@ -194,6 +194,12 @@ CHOSEN_BY_DIMENSION = [
     # a unit's name in capitals (a sentence's start, a phone): once split, A·m·ps and Pa·s·ca·l·s
     ("Amps", Dimension({"current": 1}), "A"),
     ("Pascals", PRESSURE, "Pa"),
+    # an alias of a rate with a power, said "metres per second squared" (once (m/s)², graded m²/s²)
+    ("mps2", ACCELERATION, "m/s^2"),
+    ("mps^2", ACCELERATION, "m/s^2"),
+    ("mps²", ACCELERATION, "m/s^2"),
+    ("kph2", Dimension({"length": 1, "time": -2}), "km/h^2"),
+    ("mps^2", Dimension({"length": 2, "time": -2}), "m^2/s^2"),  # the square of a speed, where one is asked
 ]
 
 
@@ -207,6 +213,11 @@ def test_the_only_reading_with_the_expected_dimension_is_taken_and_said(
     assert read.units.text == reading
     assert read.note is not None
     assert f"Read {typed} as {reading}" in read.note
+
+
+def test_a_rate_alias_with_a_power_that_fits_nowhere_is_graded_per_second_squared() -> None:
+    assert read_units("mps^2", SPEED).units.text == "m/s^2"
+    assert read_units("mps2").units.text == "m/s^2"  # an instructor's, where no dimension is expected
 
 
 def test_a_literal_reading_with_the_expected_dimension_needs_no_note() -> None:
