@@ -152,6 +152,8 @@ def _readings(name: str, power: int = 1) -> _NameReadings:
         options.append(_Option(_alias_factors(ALIASES[alias_variant])))
     for variant in variants:
         options.append(_Option(((_meaning(variant), 1),)))
+    if slip and name.isupper() and name.isascii() and len(name) <= _MAX_RECASED_LENGTH:
+        options.extend(_glued_in_capitals(name))  # `NM` for a torque: N·m, as well as nm
     unique = list({option.text: option for option in options}.values())
     if not unique:
         # `sqft`, `cuin`; then the long tail by pint's own names (`furlongs`, `fortnight`).
@@ -493,6 +495,24 @@ def _recased(name: str) -> list[str]:
             if len(readings.options) == 1 and readings.safe and _unprefixed(readings.options[0].factors):
                 variants.append(spelled)
     return variants
+
+
+def _glued_in_capitals(name: str) -> list[_Option]:
+    """The products of unprefixed units that the letters of a short name typed in capitals spell in
+    other cases, one way each: `NM` is N·m (never a kelvin first, `KM` being km, not K·m)."""
+    glued: list[_Option] = []
+    for cases in itertools.product(*((c.lower(), c.upper()) for c in name)):
+        spelled = "".join(cases)
+        if spelled == name or lookup(spelled) is not None or spelled in ALIASES:
+            continue
+        splits = _splits(spelled)
+        if (
+            len(splits) == 1
+            and _unprefixed(tuple((a, 1) for a in splits[0]))
+            and splits[0][0].name != "kelvin"
+        ):
+            glued.append(_Option(tuple((a, 1) for a in splits[0]), split=True))
+    return glued
 
 
 def _unprefixed(factors: Factors) -> bool:

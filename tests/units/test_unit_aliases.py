@@ -200,6 +200,9 @@ CHOSEN_BY_DIMENSION = [
     ("mps²", ACCELERATION, "m/s^2"),
     ("kph2", Dimension({"length": 1, "time": -2}), "km/h^2"),
     ("mps^2", Dimension({"length": 2, "time": -2}), "m^2/s^2"),  # the square of a speed, where one is asked
+    # a short name typed in capitals spells a glued product too: NM was asked about as nm alone
+    ("NM", ENERGY, "N·m"),
+    ("NM", LENGTH, "nm"),
 ]
 
 
