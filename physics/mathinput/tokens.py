@@ -17,6 +17,13 @@ from physics.errors import AnswerError, LikelySlip, ParseError, TooLarge
 from physics.mathinput.latex import LatexReader
 from physics.mathinput.limits import InputLimits
 from physics.mathinput.mixed_numbers import mixed_number_slip
+from physics.mathinput.scripts import (
+    is_raised_power,
+    lowered_word,
+    raised_end,
+    raised_exponent,
+    word_before_raised,
+)
 from physics.mathinput.tokentypes import Kind, SpelledWord, Token
 from physics.mathinput.velocities import PRIMES, derivatives_read, dotted_word, is_word_mark, needs_spelling
 from physics.mathinput.vocabulary import (
@@ -26,6 +33,7 @@ from physics.mathinput.vocabulary import (
     OPENERS,
     ROOT_SIGNS,
     SUPERSCRIPT_DIGITS,
+    SUPERSCRIPT_PLAIN,
     SUPERSCRIPT_SIGNS,
     VULGAR_FRACTIONS,
 )
@@ -67,7 +75,8 @@ def tokenize(
             raise
         return [_typed_where(token, visible.typed_position) for token in seen]
     # Every variant is a non-ASCII character: plain ASCII text has none to replace.
-    chars = list(text) if text.isascii() else [CHARACTER_VARIANTS.get(ch, ch) for ch in text]
+    typed_ascii = text.isascii()
+    chars = list(text) if typed_ascii else [CHARACTER_VARIANTS.get(ch, ch) for ch in text]
     latex = LatexReader(chars, units_in_fonts, velocities)
     tokens: list[Token] = []
     n = len(chars)
@@ -87,15 +96,21 @@ def tokenize(
             token, i = _read_number(chars, i, space, limits)
             if ch == "1" and token.text.startswith("10e"):
                 _refuse_two_powers_of_ten(text, tokens, token)
-        elif ch.isalpha():  # a word starts with a letter
+        elif ch.isalpha() and ch not in SUPERSCRIPT_PLAIN:  # a word starts with a letter
             i += 1
             while i < n and (
                 (c := chars[i]).isalpha() or c in _WORD_MARKS or (velocities and is_word_mark(c))
             ):
                 i += 1
+            lowered = None
+            if not typed_ascii:  # `xʸ`: the word ends at a raised letter; `vₘₐₓ` is v_max
+                i = word_before_raised(chars, start, i)
+                lowered = lowered_word(chars, start, i, space)
             if velocities and i < n and chars[i] in PRIMES:
                 i += 1
-            if chars[i - 1] == "_" and i < n and chars[i] in "{\\":  # v_{0}, v_\theta
+            if lowered is not None:
+                token, i = lowered
+            elif chars[i - 1] == "_" and i < n and chars[i] in "{\\":  # v_{0}, v_\theta
                 token, i = latex.subscripted_word(start, i)
                 token = replace(token, space_before=space)
             elif velocities and needs_spelling(chars, start, i):
@@ -154,6 +169,22 @@ def tokenize(
         elif ch in ROOT_SIGNS:
             i += 1
             token = Token(Kind.SQRT, ch, start, i, space)
+        elif ch in SUPERSCRIPT_PLAIN and not is_raised_power(chars, i, end := raised_end(chars, i)):
+            if chars[i] == "ᵒ" and end == i + 1 and tokens and tokens[-1].kind is Kind.NUM:
+                token = Token(Kind.POSTFIX, "°", start, end, space)  # 30ᵒ, a degree as a raised o
+                i = end
+            else:  # `e⁻ʷᵗ`: an exponent typed raised, read as `^(-wt)`
+                if tokens and tokens[-1].kind is Kind.OP and tokens[-1].text == "^" and not space:
+                    space = tokens.pop().space_before  # `e^ʷᵗ`: the caret and the raised run are one power
+                raised = raised_exponent(
+                    chars, i, end, space, lambda plain: tokenize(plain, limits, velocities=velocities)
+                )
+                tokens.extend(raised)
+                if len(tokens) > max_tokens:
+                    raise TooLarge(f"The answer has too many parts (at most {max_tokens} tokens).", start)
+                i = end
+                space = False
+                continue
         elif ch in SUPERSCRIPT_DIGITS or ch in SUPERSCRIPT_SIGNS:
             token, i = _read_superscript(chars, i, space)
             if tokens and tokens[-1].kind is Kind.OP and tokens[-1].text == "^" and not space:

@@ -61,6 +61,23 @@ SUPERSCRIPT_DIGITS: Final = MappingProxyType(
     {"⁰": 0, "¹": 1, "²": 2, "³": 3, "⁴": 4, "⁵": 5, "⁶": 6, "⁷": 7, "⁸": 8, "⁹": 9}
 )
 SUPERSCRIPT_SIGNS: Final = MappingProxyType({"⁻": -1, "⁺": 1})
+# Superscript letters, brackets and a slash, as a phone's keyboard or a "superscript generator" types an
+# exponent (`e⁻ʷᵗ`, `e⁻ᵗᐟᵗᵃᵘ`): each the plain character it raises (the turned m, ᵚ, for the ω it
+# looks like and stands for there).
+SUPERSCRIPT_PLAIN: Final = MappingProxyType(
+    dict(
+        zip(
+            "ᵃᵇᶜᵈᵉᶠᵍʰⁱʲᵏˡᵐⁿᵒᵖʳˢᵗᵘᵛʷˣʸᶻᴬᴮᴰᴱᴳᴴᴵᴶᴷᴸᴹᴺᴼᴾᴿᵀᵁⱽᵂᵅᵝᵞᵟᵋᶿᶥᶲᵠᵡᵚ⁽⁾ᐟ⁰¹²³⁴⁵⁶⁷⁸⁹⁻⁺",
+            "abcdefghijklmnoprstuvwxyzABDEGHIJKLMNOPRTUVWαβγδεθιφφχω()/0123456789-+",
+            strict=True,
+        )
+    )
+)
+# Subscript letters (`vₘₐₓ`, `Fₙ`): each the plain letter it lowers. Subscript digits are digits already
+# (CHARACTER_VARIANTS).
+SUBSCRIPT_LETTERS: Final = MappingProxyType(
+    dict(zip("ₐₑₒₓₕₖₗₘₙₚₛₜᵢᵣᵤᵥⱼᵦᵧᵨᵩᵪ", "aeoxhklmnpstiruvjβγρφχ", strict=True))
+)
 
 # The root signs, and the index of each: `√x`, `∛x` (x^(1/3)), `∜x` (x^(1/4)).
 ROOT_SIGNS: Final = MappingProxyType({"√": 2, "∛": 3, "∜": 4})

@@ -161,7 +161,7 @@ SLIP_HINTS = [
     ("2Π x", ("x",), CAPITAL_PI, "type pi or π"),
     ("2 Px", ("x",), CAPITAL_PI, None),
     ("θ_o t", ("theta_0", "t"), LETTER_O, "If θ_o is θ with a zero, type θ0 or θ_0"),  # a Greek letter
-    ("θₒ t", ("theta_0", "t"), LETTER_O, "If θₒ is θ with a zero"),  # the subscript letter o
+    ("θₒ t", ("theta_0", "t"), LETTER_O, "If θ_o is θ with a zero"),  # the subscript letter o, as θ_o
     # a name typed in two words, as `\Delta x` is (a space ends a LaTeX command) but not in plain text
     ("Δ x/t", ("Delta_x", "t"), SPACED, "If Δ x is Δx, type it without the space."),
     ("Delta x/t", ("Delta_x", "t"), SPACED, "If Delta x is Deltax, type it without the space."),

@@ -33,6 +33,20 @@ TEXTBOOK = [
     ("cos½θ x", ("theta", "x"), sympy.cos(sym("theta") / 2) * sym("x")),
     ("sin(½) x", ("x",), sympy.sin(sympy.Rational(1, 2)) * sym("x")),  # `sin ½ x` is asked (test_errors.py)
     ("ħ/2", ("hbar",), sym("hbar") / 2),
+    # An exponent typed in raised letters, as a phone's keyboard gives them: it was refused, "a superscript
+    # sign needs superscript digits after it"
+    ("A e⁻ᵏᵗ", ("A", "k", "t"), sym("A") * sympy.exp(-sym("k") * sym("t"))),
+    ("e⁻ᵗᐟᵗᵃᵘ", ("t", "tau"), sympy.exp(-sym("t") / sym("tau"))),  # ᐟ, a generator's raised slash
+    ("e⁻ᵚᵗ", ("omega", "t"), sympy.exp(-sym("omega") * sym("t"))),  # ᵚ, the turned m, for ω
+    ("e^ᵏᵗ", ("k", "t"), sympy.exp(sym("k") * sym("t"))),  # the caret, then the raised run: one power
+    ("xʸ", ("x", "y"), sym("x") ** sym("y")),
+    ("x⁽ᵏ⁺¹⁾", ("x", "k"), sym("x") ** (sym("k") + 1)),
+    ("sin(30ᵒ) x", ("x",), sympy.sin(sympy.pi / 6) * sym("x")),  # a raised o after a number: a degree
+    # Subscript letters, as LaTeX's v_{max}: the name's subscript, never split into a product
+    ("vₘₐₓ t", ("v_max", "t"), sym("v_max") * sym("t")),
+    ("tvₘₐₓ", ("v_max", "t"), sym("v_max") * sym("t")),
+    ("vₘₐₓt", ("v_max", "t"), sym("v_max") * sym("t")),
+    ("μₖ Fₙ", ("mu_k", "F_n"), sym("mu_k") * sym("F_n")),
     ("sin(30º) x", ("x",), sympy.sin(sympy.pi / 6) * sym("x")),  # º for °: option-0 on a Mac keyboard
     ("sin(30˚) x", ("x",), sympy.sin(sympy.pi / 6) * sym("x")),  # the ring above
     ("ℏ ω", ("hbar", "omega"), sym("hbar") * sym("omega")),
@@ -123,6 +137,27 @@ def test_scientific_notation_with_a_declared_letter_is_refused_with_both_reading
     assert caught.value.position == typed.index(readings[0][0])
     for reading in readings:
         assert reading in caught.value.message
+
+
+LOWERED_OR_RAISED_REFUSED = [
+    # (typed, declared, position, words): a subscript letter is no factor, a raised w no ω
+    ("vₘ", ("v", "m"), 0, 'Unknown symbol "v_m"'),
+    ("e⁻ʷᵗ", ("omega", "t"), 2, "If w stands for ω, type omega or ω"),
+]
+
+
+@pytest.mark.parametrize(
+    ("typed", "declared", "position", "words"),
+    LOWERED_OR_RAISED_REFUSED,
+    ids=[c[0] for c in LOWERED_OR_RAISED_REFUSED],
+)
+def test_raised_and_lowered_letters_are_read_as_typed_or_refused_where_typed(
+    typed: str, declared: tuple[str, ...], position: int, words: str
+) -> None:
+    with pytest.raises(AnswerError) as caught:
+        parse_math(typed, names(*declared))
+    assert caught.value.position == position
+    assert words in caught.value.message
 
 
 MIXED_NUMBERS = [
