@@ -37,6 +37,7 @@ from physics.symbolic import (
     judge_symbolic,
     prepare_reference,
 )
+from physics.symbolic.bracketed_sums import unbracketed_sum
 from physics.symbolic.dimensional import DimensionMismatch, UnknownDimension, expression_dimension
 from physics.symbolic.judge import FACTOR_FEEDBACK
 from physics.symbolic.quick import judged
@@ -97,6 +98,11 @@ class SymbolicQuestion:
         verdict = self._graded(answer, limits)
         if verdict.outcome is not Outcome.INCORRECT or verdict.read_as is None:
             return verdict
+        if verdict.reason is Reason.WRONG_DIMENSION and self.reference.dimension is not None:
+            dimensions = {symbol.name: dim for symbol, dim in self.reference.dims.items()}
+            question = unbracketed_sum(answer, self.names, limits, dimensions, self.reference.dimension)
+            if question is not None:  # `mg/m+M`: m·g/(m + M) meant, its brackets left out
+                return Verdict.invalid(question)
         hint = typed_value_hint(
             verdict.read_as.text,
             verdict.reason,

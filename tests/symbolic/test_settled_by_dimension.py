@@ -335,3 +335,48 @@ def test_spacing_settles_what_dimension_leaves_open_and_dimension_the_rest() -> 
     assert verdict.read_as is not None
     assert verdict.read_as.text == "m*v/(q*B) + r*x/y*z"
     assert verdict.read_as.note is not None and "so it is (r·x/y)·z" in verdict.read_as.note
+
+
+ATWOOD = (SymbolDecl("m1", "kg"), SymbolDecl("m2", "kg"), SymbolDecl("g", "m/s^2"))
+UNBRACKETED_SUMS = [
+    # (answer, reference, symbols, the reading asked about): as typed the answer adds unlike quantities
+    # and was graded wrong_dimension, an attempt used for a missing bracket
+    ("mg/m+M", "m*g/(m + M)", PENDULUM, "m·g/(m + M)"),
+    ("mg / m+M", "m*g/(m + M)", PENDULUM, "m·g/(m + M)"),
+    ("g(m2-m1)/m1+m2", "g*(m2 - m1)/(m1 + m2)", ATWOOD, "g·(m2 - m1)/(m1 + m2)"),
+    ("m+M/m", "(m + M)/m", PENDULUM, "(m + M)/m"),
+]
+
+
+@pytest.mark.parametrize(
+    ("answer", "reference", "symbols", "meant"), UNBRACKETED_SUMS, ids=[c[0] for c in UNBRACKETED_SUMS]
+)
+def test_a_sum_whose_brackets_are_left_out_beside_a_division_is_asked_about(
+    answer: str, reference: str, symbols: tuple[SymbolDecl, ...], meant: str
+) -> None:
+    verdict = run_job(SymbolicJob(answer, reference, symbols))
+    assert verdict.outcome is Outcome.INVALID
+    assert verdict.reason is Reason.AMBIGUOUS
+    assert verdict.error is not None
+    assert verdict.error.position == answer.index("/")
+    assert verdict.error.message.startswith(f"Did you mean {meant}? As typed,")
+    assert "put the sum in brackets" in verdict.error.message
+
+
+KEPT_AS_TYPED = [
+    # (answer, reference, symbols, reason): a sum that adds like quantities, or whose bracketing does not
+    # have the dimension either, is graded as typed
+    ("mg/m+g", "m*g/(m + M)", PENDULUM, Reason.WRONG_VALUE),
+    ("mg/m+M g", "m*g/(m + M)", PENDULUM, Reason.WRONG_DIMENSION),
+]
+
+
+@pytest.mark.parametrize(
+    ("answer", "reference", "symbols", "reason"), KEPT_AS_TYPED, ids=[c[0] for c in KEPT_AS_TYPED]
+)
+def test_a_sum_beside_a_division_is_graded_as_typed_where_brackets_would_not_fit(
+    answer: str, reference: str, symbols: tuple[SymbolDecl, ...], reason: Reason
+) -> None:
+    verdict = run_job(SymbolicJob(answer, reference, symbols))
+    assert verdict.outcome is Outcome.INCORRECT
+    assert verdict.reason is reason
