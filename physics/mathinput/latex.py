@@ -12,7 +12,7 @@ argument closes with what the command needs (`\\frac`'s numerator with the `/` a
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from fractions import Fraction
 from typing import Literal
 
@@ -52,6 +52,7 @@ class _Frame:
     start: int  # of the command (of the brace for a plain one)
     brace: int
     index: Token | None = None  # the n of \sqrt[n]{…}
+    over: bool = False  # an \over has split it: its denominator's bracket closes with it
 
 
 def _zero_width(kind: Kind, text: str, pos: int, value: Fraction | None = None) -> Token:
@@ -69,8 +70,16 @@ def _is_word_char(ch: str) -> bool:
 class LatexReader:
     """The LaTeX of one text: the tokenizer hands it every backslash and brace, and `^\\circ`."""
 
-    def __init__(self, chars: list[str], units_in_fonts: bool = False, velocities: bool = False) -> None:
+    def __init__(
+        self,
+        chars: list[str],
+        units_in_fonts: bool = False,
+        velocities: bool = False,
+        tokens: list[Token] | None = None,
+    ) -> None:
         self._chars = chars
+        self._tokens = [] if tokens is None else tokens  # what the tokenizer has read: `\over` splits it
+        self._over_at: int | None = None  # an `\over` outside any brace: the whole text is its fraction
         self._n = len(chars)
         self._units_in_fonts = units_in_fonts
         self._velocities = velocities  # `\dot{x}` is the word x_dot (velocities.py)
@@ -91,10 +100,17 @@ class LatexReader:
         closing = Token(Kind.RPAREN, "}", i, i + 1)
         if not self._frames:
             return [closing], i + 1  # the parser says that no bracket opens it
-        return self._close(self._frames.pop(), closing, i + 1)
+        frame = self._frames.pop()
+        emitted, after = self._close(frame, closing, i + 1)
+        if frame.over:  # `{a \over b}`: the denominator's bracket closes with the brace
+            emitted.insert(0, _zero_width(Kind.RPAREN, ")", i))
+        return emitted, after
 
     def finish(self) -> None:
-        """Refuse a command's brace left open (a plain brace left open is the parser's to report)."""
+        """Refuse a command's brace left open (a plain brace left open is the parser's to report); close
+        the denominator of an `\\over` outside any brace."""
+        if self._over_at is not None:
+            self._tokens.append(_zero_width(Kind.RPAREN, ")", self._n))
         if all(frame.kind == "group" for frame in self._frames):
             return
         frame = self._frames[-1]
@@ -132,6 +148,8 @@ class LatexReader:
         name, end = self._command_name(i)
         if name in LATEX_SPACES:
             return [], end
+        if name == "over":
+            return self._over(i, end), end
         if name in LATEX_FRACTIONS:
             opened = Token(Kind.LPAREN, "(", i, end)
             numerator, after = self._argument("\\" + name, i, end, "numerator")
@@ -165,6 +183,32 @@ class LatexReader:
         if name == "dot" and self._velocities:
             return self._dotted(i, end)
         raise self._unknown(i, name)
+
+    def _over(self, i: int, end: int) -> list[Token]:
+        """`{a \\over b}`, as plain TeX writes a/b: what its brace holds before the command is the
+        numerator, what follows it the denominator; outside any brace, the whole text is split so."""
+        twice = ParseError(r"Two \over in one brace: write each fraction as \frac{a}{b}.", i)
+        if self._frames:
+            frame = self._frames[-1]
+            if frame.over:
+                raise twice
+            opened = next(
+                at
+                for at in range(len(self._tokens) - 1, -1, -1)
+                if self._tokens[at].kind is Kind.LPAREN and self._tokens[at].pos == frame.brace
+            )
+            self._tokens.insert(opened + 1, _zero_width(Kind.LPAREN, "(", frame.brace + 1))
+            self._frames[-1] = replace(frame, over=True)
+        else:
+            if self._over_at is not None:
+                raise twice
+            self._tokens.insert(0, _zero_width(Kind.LPAREN, "(", 0))
+            self._over_at = i
+        return [
+            _zero_width(Kind.RPAREN, ")", i),
+            Token(Kind.OP, "/", i, end),
+            _zero_width(Kind.LPAREN, "(", end),
+        ]
 
     def _dotted(self, i: int, end: int) -> tuple[list[Token], int]:
         """`\\dot{x}`, `\\dot x`, `\\dot{\\theta}`: the velocity's word `x_dot`, `theta_dot`."""

@@ -77,8 +77,8 @@ def tokenize(
     # Every variant is a non-ASCII character: plain ASCII text has none to replace.
     typed_ascii = text.isascii()
     chars = list(text) if typed_ascii else [CHARACTER_VARIANTS.get(ch, ch) for ch in text]
-    latex = LatexReader(chars, units_in_fonts, velocities)
     tokens: list[Token] = []
+    latex = LatexReader(chars, units_in_fonts, velocities, tokens)
     n = len(chars)
     max_tokens = limits.max_tokens
     i = 0

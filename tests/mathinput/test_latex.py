@@ -120,6 +120,13 @@ READS_AS_PLAIN = [
     (r"\mathrm{v}_{0}", "v_0"),
     (r"\text{m}\text{g}", "m g"),
     (r"mv_{0}", "m v_0"),
+    # plain TeX's fraction: the brace's text before \over over the text after it (it was refused)
+    (r"{x \over x + y}", "x/(x + y)"),
+    (r"x y \over M", "(x y)/M"),
+    (r"{{x} \over {y}} M", "(x/y) M"),
+    (r"{x \over 2}{y \over M}", "(x/2)(y/M)"),
+    (r"\frac{x \over y}{M}", "(x/y)/M"),
+    (r"\left( {x \over y} \right)^2", "(x/y)^2"),
 ]
 
 
@@ -172,6 +179,9 @@ LATEX_ERRORS = [
     (r"$x$ + y", 0, "Leave out the $ signs"),  # delimiters around only part of the answer
     (r"x^2 $", 4, "Leave out the $ signs"),
     (r"v_{\sin}", 3, "A subscript holds letters and digits"),
+    (r"{x \over y \over M}", 11, r"Two \over in one brace: write each fraction as \frac{a}{b}"),
+    (r"x \over y \over M", 10, r"Two \over in one brace"),
+    (r"x \overline{y}", 2, r"Unknown LaTeX command \overline"),
 ]
 
 
