@@ -169,6 +169,9 @@ ALIASES: dict[str, str] = {
     "℃": "°C", "℉": "°F", "oC": "°C", "oF": "°F",
     # and the degree sign typed after the scale's letter (`25 C°`): never a coulomb times a degree
     "C°": "°C", "F°": "°F",
+    # The raised c that British texts mark a radian with (`1.2ᶜ`): compatibility folding made it a c,
+    # the speed of light
+    "ᶜ": "rad",
 }  # fmt: skip
 
 # Spellings with more than one meaning, each meaning a unit spelling. The first is pint's, taken where no

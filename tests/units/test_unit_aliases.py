@@ -74,6 +74,8 @@ ALIAS_READINGS = [
     ("cm3", "cm^3"),
     ("kg m2/s2", "kg·m^2/s^2"),
     ("kgm2", "kg·m^2"),
+    ("ᶜ", "rad"),  # the raised c of British texts (1.2ᶜ), once folded to c, the speed of light
+    ("ᶜ/s", "rad/s"),
 ]
 
 
