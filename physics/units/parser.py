@@ -577,7 +577,32 @@ def _fitting(
 
 @lru_cache(maxsize=2048)
 def _read_cached(text: str, expected: Dimension | None) -> UnitReading:
-    return _read(text, expected)
+    if expected is None or not text.isupper():
+        return _read(text, expected)
+    # `9.8 M/S^2`, caps lock on: where the units as typed are unknown or do not fit, in small letters
+    # they may be the ones meant (a single name's other cases are read in `_readings`)
+    try:
+        typed = _read(text, expected)
+    except UnknownUnit:
+        typed = None
+    except AmbiguousInput:
+        if text.isalpha():
+            raise  # one name: its other cases were asked about (`101325 PA`: Pa?)
+        typed = None  # `KG M/S^2`: K·G or kg, in a product that in small letters is a force
+    if typed is not None and typed.units.dimension == expected:
+        return typed
+    try:
+        small = _read(text.lower(), expected)
+    except AnswerError:
+        small = None
+    if small is None or small.units.dimension != expected:
+        return typed or _read(text, expected)
+    shown = " ".join(text.split())
+    return UnitReading(
+        small.units,
+        f"Read {shown} as {small.units.text}: units are case-sensitive, and in small letters these are "
+        f"{describe(expected)}",
+    )
 
 
 def _check_length(text: str) -> None:

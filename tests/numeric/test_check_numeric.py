@@ -125,7 +125,8 @@ VERDICTS = [
     ("unexpected-units", "0.45 m", PURE, BAD, Reason.UNEXPECTED_UNITS),
     ("unexpected-angle-units", "0.45 rad", PURE, BAD, Reason.UNEXPECTED_UNITS),
     ("unknown-unit", "4.58 smoots", ACCEL, BAD, Reason.UNKNOWN_UNIT),
-    ("unknown-unit-case", "4.58 M/S^2", ACCEL, BAD, Reason.UNKNOWN_UNIT),
+    ("unknown-unit-case", "4.58 M/S^2", SPEED, BAD, Reason.UNKNOWN_UNIT),  # not a speed in small letters
+    ("caps-lock-units", "4.58 M/S^2", ACCEL, OK, Reason.EQUIVALENT),  # in small letters, an acceleration
     ("comma", "4,58 m/s^2", ACCEL, BAD, Reason.PARSE_ERROR),
     ("two-numbers", "12 500 m/s^2", ACCEL, BAD, Reason.PARSE_ERROR),
     ("empty", "", ACCEL, BAD, Reason.PARSE_ERROR),
@@ -194,6 +195,10 @@ WORDING = [
     ("4.58", ACCEL, "needs units"),
     ("0.45 m", PURE, "remove the units"),
     ("4.58 KM/s^2", ACCEL, "Read KM/s^2 as km/s^2: the only reading that is an acceleration"),
+    # caps lock on: units unknown as typed (M) that in small letters are the dimension asked
+    ("4.58 M/S^2", ACCEL, "Read M/S^2 as m/s^2: units are case-sensitive, and in small letters these are an"),
+    ("9.8 KG M/S^2", NumericSpec(D("9.8"), "N"), "Read KG M/S^2 as kg·m/s^2: units are case-sensitive"),
+    ("101325 PA", NumericSpec(D("101325"), "Pa"), "PA is the petaampere, a current"),  # one name: asked
     ("1.5e3 N", SIGFIGS3, "3 significant figures (yours shows 2)"),
     ("1234000 N", SIGFIGS3, "3 significant figures (yours shows 4 to 7)"),
     ("12 500 m/s^2", ACCEL, "12500"),
