@@ -47,12 +47,39 @@ def _as_g(decimal: str) -> tuple[str, str] | None:
     return ("g", "g") if _GRAVITY[0] <= float(decimal) <= _GRAVITY[1] else None
 
 
+# Angles in degrees as they are typed inside a function of an angle: `cos(90 - θ)` for cos(90° − θ).
+_DEGREES = re.compile(r"(?<=[(\s])(30|45|60|90|120|135|150|180|270|360)(?=\s*[-+)])")
+
+
+def _in_degrees(read_as_text: str, right_with: Callable[[str], bool]) -> str | None:
+    """Feedback for a wrong answer that an angle typed in degrees without its sign (`cos(90 - θ)`, 90
+    rad as typed) makes wrong, where the degree sign would make it right; else None."""
+    if "(" not in read_as_text:
+        return None
+    found = list(_DEGREES.finditer(read_as_text))
+    if not found:
+        return None
+    text = read_as_text
+    for match in reversed(found):
+        text = f"{text[: match.start()]}{match.group(1)}°{text[match.end() :]}"
+    if not right_with(text):
+        return None
+    said = ", ".join(dict.fromkeys(f"{match.group(1)}° for {match.group(1)}" for match in found))
+    return (
+        f"Your answer would be right with {said}: an angle is in radians unless it has a degree sign, so "
+        "write the ° (or the angle in radians, as pi/2 for 90°)."
+    )
+
+
 def typed_value_hint(
     read_as_text: str, reason: Reason, names: Mapping[str, object], right_with: Callable[[str], bool]
 ) -> str | None:
     """Feedback for a wrong answer whose decimals stand for π (off by a constant factor) or for a
-    declared g (a wrong dimension): when the answer with the symbols in their place is right
-    (`right_with` grades a text), what to write instead; else None."""
+    declared g (a wrong dimension), or whose angles were typed in degrees without the sign: when the
+    answer with the symbols in their place is right (`right_with` grades a text), what to write
+    instead; else None."""
+    if reason is Reason.WRONG_VALUE and (degrees := _in_degrees(read_as_text, right_with)) is not None:
+        return degrees
     if reason is Reason.CONSTANT_FACTOR:
         symbol_for = _as_pi
         advice = "a decimal is taken as exactly the number it shows, so write pi (or π) where you mean π"

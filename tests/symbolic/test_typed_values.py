@@ -1,6 +1,6 @@
 """Values typed where a symbol is meant are graded as typed, and the feedback says which symbol would
 make the answer right: a decimal for π (off by a constant factor), for e (a wrong value), 9.8 for a
-declared g (a wrong dimension). Units after a symbolic answer, of the dimension the answer must have, are refused with
+declared g (a wrong dimension), 90 for 90° (a wrong value). Units after a symbolic answer, of the dimension the answer must have, are refused with
 the advice to leave them out."""
 
 from __future__ import annotations
@@ -65,6 +65,30 @@ def test_a_value_typed_for_a_symbol_is_named_when_the_symbol_would_make_it_right
         start, advice = ADVICE[reason]
         assert verdict.feedback.startswith(start)  # then the hint
         assert hint in verdict.feedback and advice in verdict.feedback
+
+
+IN_DEGREES = [
+    # (answer, the hint's swaps, or None): an angle typed in degrees without its sign is 90 rad as typed
+    ("m g cos(90 - θ)", "90° for 90"),
+    ("m g cos(90-θ)", "90° for 90"),
+    ("-m g sin(180 + θ)", "180° for 180"),
+    ("m g cos(90 + θ)", None),  # wrong with the degree sign too
+]
+
+
+@pytest.mark.parametrize(("answer", "swaps"), IN_DEGREES, ids=[c[0] for c in IN_DEGREES])
+def test_an_angle_typed_in_degrees_without_its_sign_is_named_when_the_sign_would_make_it_right(
+    answer: str, swaps: str | None
+) -> None:
+    verdict = run_job(SymbolicJob(answer, WEIGHT_ALONG, SLOPE))
+    assert verdict.outcome is Outcome.INCORRECT  # graded as typed: 90 is 90 radians
+    assert verdict.reason is Reason.WRONG_VALUE
+    if swaps is None:
+        assert "would be right with" not in verdict.feedback
+    else:
+        assert f"Your answer would be right with {swaps}: an angle is in radians unless it has a" in (
+            verdict.feedback
+        )
 
 
 def test_the_symbols_themselves_are_correct() -> None:
