@@ -142,7 +142,7 @@ def read_tree(
     tree, parser, table = _tree(text, names, limits, choices, powers_outside, velocities, word_ends)
     powered = tuple(parser.powered)
     try:
-        text, latex = render_both(tree)
+        text, latex = render_both(tree, symbol_e="e" in names)
         read_as = ReadAs(text, latex, reading_note(powered))
     except RecursionError:
         raise _too_deep() from None

@@ -37,10 +37,15 @@ _TRAILING_DIGITS = re.compile(r"^([^\W\d_]+)(\d+)$")
 class TextStyle:
     power: str
     times: str
+    # Where the problem declares a symbol e (a coefficient of restitution), Euler's number is written
+    # exp(1) and upright, \mathrm{e}, so that neither reads as the symbol.
+    euler: str = "e"
+    euler_latex: str = "e"
 
 
 CONTRACT_STYLE = TextStyle(power="**", times="*")
 STUDENT_STYLE = TextStyle(power="^", times="·")
+_BESIDE_SYMBOL_E = TextStyle(power="**", times="*", euler="exp(1)", euler_latex=r"\mathrm{e}")
 
 
 def render_text(node: Node, style: TextStyle = CONTRACT_STYLE) -> str:
@@ -58,9 +63,10 @@ def render_latex(node: Node) -> str:
     return _pieces(node, CONTRACT_STYLE)[2]
 
 
-def render_both(node: Node) -> tuple[str, str]:
-    """`render_text(node)` and `render_latex(node)`, in one walk of the tree."""
-    text, _, latex, _ = _pieces(node, CONTRACT_STYLE)
+def render_both(node: Node, *, symbol_e: bool = False) -> tuple[str, str]:
+    """`render_text(node)` and `render_latex(node)`, in one walk of the tree; `symbol_e`: e is a declared
+    symbol, so Euler's number is set apart from it."""
+    text, _, latex, _ = _pieces(node, _BESIDE_SYMBOL_E if symbol_e else CONTRACT_STYLE)
     return text, latex
 
 
@@ -99,7 +105,7 @@ def _pieces(node: Node, style: TextStyle) -> _Pieces:
     if kind is Call:
         func = node.func  # type: ignore[union-attr]
         arg = _pieces(node.arg, style)  # type: ignore[union-attr]
-        return f"{func}({arg[0]})", _ATOM, _latex_call(func, arg, None), _ATOM
+        return f"{func}({arg[0]})", _ATOM, _latex_call(func, arg, None, style), _ATOM
     if kind is Neg:
         text, text_binding, latex, latex_binding = _pieces(node.operand, style)  # type: ignore[union-attr]
         neg = _is_neg(node.operand)  # type: ignore[union-attr]
@@ -110,7 +116,9 @@ def _pieces(node: Node, style: TextStyle) -> _Pieces:
             _PRODUCT,
         )
     if kind is Const:
-        return node.which, _ATOM, (r"\pi" if node.which == "pi" else "e"), _ATOM  # type: ignore[union-attr]
+        if node.which == "pi":  # type: ignore[union-attr]
+            return "pi", _ATOM, r"\pi", _ATOM
+        return style.euler, _ATOM, style.euler_latex, _ATOM
     assert isinstance(node, Postfix)
     text, text_binding, latex, latex_binding = _pieces(node.operand, style)
     if node.kind == "factorial":
@@ -164,7 +172,7 @@ def _power(node: Power, style: TextStyle) -> _Pieces:
     ):
         arg = _pieces(base.arg, style)
         text, binding = f"{base.func}({arg[0]})", _ATOM
-        latex = _latex_call(base.func, arg, exponent[2])
+        latex = _latex_call(base.func, arg, exponent[2], style)
     else:
         text, binding, base_latex, base_latex_binding = _pieces(node.base, style)
         latex = _paren(base_latex, base_latex_binding < _ATOM) + f"^{{{exponent[2]}}}"
@@ -205,12 +213,12 @@ def _latex_number(literal: str) -> tuple[str, int]:
     return literal, _ATOM
 
 
-def _latex_call(func: str, arg: _Pieces, power: str | None) -> str:
+def _latex_call(func: str, arg: _Pieces, power: str | None, style: TextStyle) -> str:
     inner = arg[2]
     if func == "sqrt":
         body = rf"\sqrt{{{inner}}}"
     elif func == "exp":
-        body = rf"e^{{{inner}}}"
+        body = rf"{style.euler_latex}^{{{inner}}}"
     elif func == "abs":
         body = rf"\left|{inner}\right|"
     elif func == "factorial":

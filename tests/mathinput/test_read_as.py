@@ -91,6 +91,22 @@ def test_read_as_latex_uses_frac_and_named_functions(text, declared, expected):
     assert read(text, *declared).read_as.latex == expected
 
 
+BESIDE_A_SYMBOL_E = [
+    # (typed, read_as text, LaTeX): where a symbol e is declared (a coefficient of restitution), Euler's
+    # number is exp(1), set upright; both had read e^2 h, as the symbol's square does
+    ("exp(2) h", "exp(2)*h", r"\mathrm{e}^{2} h"),
+    ("%e^2 h", "exp(1)**2*h", r"\mathrm{e}^{2} h"),
+    ("e^2 h", "e**2*h", r"e^{2} h"),  # the symbol
+]
+
+
+@pytest.mark.parametrize(("typed", "text", "latex"), BESIDE_A_SYMBOL_E, ids=[c[0] for c in BESIDE_A_SYMBOL_E])
+def test_eulers_number_is_set_apart_from_a_declared_symbol_e(typed: str, text: str, latex: str) -> None:
+    reading = read(typed, "e", "h")
+    assert (reading.read_as.text, reading.read_as.latex) == (text, latex)
+    assert same(parse_math(text, names("e", "h")).expr, reading.expr)
+
+
 @pytest.mark.parametrize(
     "text",
     ["-m*g*tan(theta)/(M*(1 + tan(theta)**2) + m*tan(theta)**2)", "sqrt(144*U0/(m*r0**2))", "mgsin(theta)"],
