@@ -617,7 +617,24 @@ def read_units(text: str, expected: Dimension | None = None) -> UnitReading:
     say so in `note`. Without one that decides, a name with no safe reading is refused.
     """
     _check_length(text)
-    return _read_cached(text, expected)
+    reading = _read_cached(text, expected)
+    if text.startswith("in ") and expected is not None and reading.units.dimension != expected:
+        _refuse_the_word_in(text, expected)
+    return reading
+
+
+def _refuse_the_word_in(text: str, expected: Dimension) -> None:
+    """`9.8 in m/s^2`, the answer said as a sentence: the inch times m/s² as typed. Refused where the
+    units after the word are the dimension asked, rather than graded as a quantity in m²/s²."""
+    rest = text[3:].strip()
+    try:
+        meant = _read_cached(rest, expected)
+    except AnswerError:
+        return
+    if meant.units.dimension == expected:
+        raise ParseError(
+            f"'in' here is the inch, so these units are in·{rest}: write the units alone, as in {rest}", 0
+        )
 
 
 def parse_units(text: str) -> ParsedUnits:

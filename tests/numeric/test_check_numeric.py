@@ -214,6 +214,8 @@ WORDING = [
     ("9.8sin(28) m/s^2", NumericSpec(D("4.6007"), "m/s^2"), "right with its angles in degrees"),  # glued
     ("2π√0.5/20 s", NumericSpec(D("0.9935"), "s"), "Did you mean sqrt(0.5)/20 or sqrt(0.5/20)?"),
     ("4.58 ± 0.05 m/s^2", ACCEL, "Give one value, without its uncertainty (± …)"),
+    # a sentence's `in`: the inch times m/s² as typed, once graded a quantity in m²/s²
+    ("4.58 in m/s^2", ACCEL, "'in' here is the inch, so these units are in·m/s^2: write the units alone"),
     ("(4.58 ± 0.05) m/s^2", ACCEL, "without its uncertainty (± …)"),
     ("4.58 +/- 0.05 m/s^2", ACCEL, "without its uncertainty (+/- …)"),
     ("4.58+-0.05 m/s^2", ACCEL, "without its uncertainty (+- …)"),
@@ -255,6 +257,7 @@ POSITIONS = [
     ("\u200b4.58\u200b", 6),  # where typed, zero-width characters and all
     ("\u200f4.58 m/smoot", 8),
     ("\u200b0.45 m", 6),  # unexpected units
+    ("9.8 in m/s^2", 4),  # the word in, which reads as the inch
 ]
 
 
