@@ -177,6 +177,8 @@ def _power_of_ten(text: str, i: int) -> tuple[int, int] | None:
 
 def _scientific(text: str, i: int, start: int) -> tuple[int, int] | None:
     """A power of ten after the mantissa from `start` to i: (exponent, end), or None if none is written."""
+    if "E" in text or "x" in text:  # `2.5 EXP -3`, `2.5EE-3`: a calculator's key for the power of ten
+        _refuse_calculator_key(text, text[start:i], skip_spaces(text, i))
     if i < len(text) and text[i] in "eE":
         found = _signed_exponent(text, i + 1)
         if found is None and (i + 1 == len(text) or text[i + 1].isspace()):
@@ -243,6 +245,23 @@ def _refuse_spaced_exponent(text: str, mantissa: str, at: int) -> None:
         typed = found.group().replace("−", "-")
         raise LikelySlip(
             f"Did you mean {mantissa}{typed}? Write a power of ten without a space before its {typed[0]}",
+            at,
+        )
+
+
+# A calculator's key for the power of ten, as its label reads, and the exponent typed after it.
+_CALCULATOR_KEY = re.compile(r"(EXP|Exp|exp|EE)\s*([-−+]?\d+)(?![\w.])")
+
+
+def _refuse_calculator_key(text: str, mantissa: str, at: int) -> None:
+    """LikelySlip for `2.5 EXP -3 m`, `2.5EE-3 m`: a power of ten as a calculator's key labels it, which
+    the units would read as a unit EXP."""
+    found = _CALCULATOR_KEY.match(text, at)
+    if found is not None:
+        key, exponent = found.group(1), found.group(2).replace("−", "-")
+        raise LikelySlip(
+            f"Did you mean {mantissa}E{exponent}? A calculator's {key} key is a power of ten: write "
+            f"{mantissa}E{exponent} or {mantissa}×10^{exponent}",
             at,
         )
 

@@ -214,6 +214,9 @@ WORDING = [
     ("9.8sin(28) m/s^2", NumericSpec(D("4.6007"), "m/s^2"), "right with its angles in degrees"),  # glued
     ("2π√0.5/20 s", NumericSpec(D("0.9935"), "s"), "Did you mean sqrt(0.5)/20 or sqrt(0.5/20)?"),
     ("4.58 ± 0.05 m/s^2", ACCEL, "Give one value, without its uncertainty (± …)"),
+    # a calculator's key for the power of ten, once an unknown unit EXP
+    ("2.5 EXP -3 m/s^2", ACCEL, "Did you mean 2.5E-3? A calculator's EXP key is a power of ten"),
+    ("2.5EE-3 m/s^2", ACCEL, "Did you mean 2.5E-3? A calculator's EE key is a power of ten: write 2.5E-3 or"),
     # a sentence's `in`: the inch times m/s² as typed, once graded a quantity in m²/s²
     ("4.58 in m/s^2", ACCEL, "'in' here is the inch, so these units are in·m/s^2: write the units alone"),
     ("(4.58 ± 0.05) m/s^2", ACCEL, "without its uncertainty (± …)"),
