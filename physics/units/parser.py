@@ -258,6 +258,8 @@ class _Parser:
         self.choices = choices
         self.open_names: list[tuple[Token, _NameReadings]] = []  # names read more than one way
         self.names: list[Token] = []  # every name read, for the case slips of a reading that does not fit
+        self.in_denominator = False
+        self.divided_twice: list[int] = []  # where a minus divides again what a `/` divides (`m/s^-2`)
 
     @property
     def token(self) -> Token:
@@ -284,7 +286,9 @@ class _Parser:
         denominators: list[tuple[ParsedUnits, int, Token]] = []
         while self.at(Kind.DIVIDE):
             slash = self.advance()
+            outer, self.in_denominator = self.in_denominator, True
             denominator, count = self.product()
+            self.in_denominator = outer
             denominators.append((denominator, count, slash))
         if len(denominators) > 1:
             for _, count, slash in denominators:
@@ -329,8 +333,14 @@ class _Parser:
             self.advance()
             return base ** self.exponent()
         if self.at(Kind.SUPERSCRIPT):
-            return base ** self._checked_power(self.advance())
+            return base ** self._superscript_power()
         return base
+
+    def _superscript_power(self) -> int:
+        token = self.advance()
+        if self.in_denominator and token.text.startswith("⁻"):
+            self.divided_twice.append(token.position)
+        return self._checked_power(token)
 
     def name_factor(self) -> ParsedUnits:
         token = self.advance()
@@ -339,7 +349,7 @@ class _Parser:
             self.advance()
             power = self.exponent()
         elif self.at(Kind.SUPERSCRIPT):
-            power = self._checked_power(self.advance())
+            power = self._superscript_power()
         angles = TWO_ANGLE_SPELLINGS.get(token.text)
         if angles is not None:
             raise AmbiguousInput(
@@ -390,7 +400,10 @@ class _Parser:
             self.advance()
         sign = 1
         if self.token.kind in (Kind.MINUS, Kind.PLUS):
-            sign = -1 if self.advance().kind is Kind.MINUS else 1
+            signed = self.advance()
+            sign = -1 if signed.kind is Kind.MINUS else 1
+            if sign < 0 and self.in_denominator:
+                self.divided_twice.append(signed.position)
         token = self.advance()
         if token.kind is not Kind.INTEGER:
             raise ParseError("A power of a unit must be a whole number, as in s^-2", token.position)
@@ -421,6 +434,8 @@ _MAX_READINGS = 64  # combinations of readings of glued names tried against the 
 def _read(text: str, expected: Dimension | None, *, case_slips: bool = True) -> UnitReading:
     parser = _Parser(text, {})
     literal = parser.parse()
+    if parser.divided_twice and expected is not None and literal.dimension != expected:
+        _refuse_dividing_twice(text, parser.divided_twice, literal, expected)
     open_names = parser.open_names
     safe = all(readings.safe for _, readings in open_names)
     plain = all(readings.plain for _, readings in open_names)
@@ -518,6 +533,28 @@ def _glued_in_capitals(name: str) -> list[_Option]:
 def _unprefixed(factors: Factors) -> bool:
     """Whether no unit of `factors` has a prefix: a glued name read as `rad·s`, `N·m`, not `m·ps`."""
     return not any(atom.name.startswith(SI_PREFIXES) for atom, _ in factors)
+
+
+def _refuse_dividing_twice(text: str, minuses: list[int], literal: ParsedUnits, expected: Dimension) -> None:
+    """`m/s^-2`: a `/` and a negative power each divide, so as typed the two multiply (m·s²). Where the
+    units without that minus (m/s^2) have the expected dimension, refused asking whether they were meant,
+    rather than graded as a wrong dimension."""
+    tries = [(at, text[:at] + text[at + 1 :]) for at in minuses]
+    if len(minuses) > 1:  # `J/kg^-1 K^-1`: every power of the denominator typed negative
+        tries.append((minuses[0], "".join(c for k, c in enumerate(text) if k not in minuses)))
+    for at, meant in tries:
+        try:
+            reading = _read(meant, expected, case_slips=False)
+        except AnswerError:
+            continue
+        if reading.units.dimension == expected:
+            typed = " ".join(text.split())
+            raise AmbiguousInput(
+                f"Did you mean {reading.units.text}? As typed, {typed} is {literal.text}: a / and a "
+                "negative power each divide, so together they multiply",
+                at,
+                [literal.text, reading.units.text],
+            )
 
 
 def _refuse_case_slip(text: str, names: list[Token], literal: ParsedUnits, expected: Dimension) -> None:

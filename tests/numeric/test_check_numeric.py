@@ -53,6 +53,8 @@ VERDICTS = [
     ("number-then-number-over-unit", "4.58 12/s", NumericSpec(D("4.58"), "1/s"), BAD, Reason.PARSE_ERROR),
     ("glued-units", "4.58m/s^2", ACCEL, OK, Reason.EQUIVALENT),
     ("mixed-number", "1 ½ m", NumericSpec(D("1.52"), "m"), BAD, Reason.PARSE_ERROR),  # never 1·½ m
+    ("divided-twice", "4.58 m/s^-2", ACCEL, BAD, Reason.AMBIGUOUS),  # m·s² as typed: asked about
+    ("divided-twice-where-meant", "4.58 m/s^-2", NumericSpec(D("4.58"), "m*s^2"), OK, Reason.EQUIVALENT),
     ("fullwidth-units", "4.58 ｍ／ｓ＾２", ACCEL, OK, Reason.EQUIVALENT),  # East Asian input methods
     ("fullwidth-number", "４．５８ m/s^2", ACCEL, OK, Reason.EQUIVALENT),
     ("fullwidth-brackets", "4.58 ［m/s^2］", ACCEL, OK, Reason.EQUIVALENT),
@@ -214,6 +216,14 @@ WORDING = [
     ("9.8sin(28) m/s^2", NumericSpec(D("4.6007"), "m/s^2"), "right with its angles in degrees"),  # glued
     ("2π√0.5/20 s", NumericSpec(D("0.9935"), "s"), "Did you mean sqrt(0.5)/20 or sqrt(0.5/20)?"),
     ("4.58 ± 0.05 m/s^2", ACCEL, "Give one value, without its uncertainty (± …)"),
+    # a / and a negative power, which together multiply: once graded a wrong dimension (m·s²)
+    ("4.58 m/s^-2", ACCEL, "Did you mean m/s^2? As typed, m/s^-2 is m·s^2: a / and a negative power each"),
+    ("4.58 m/s⁻²", ACCEL, "Did you mean m/s^2? As typed, m/s⁻² is m·s^2"),
+    (
+        "4.2 J/kg^-1 K^-1",
+        NumericSpec(D("4.2"), "J/(kg*K)"),
+        "Did you mean J/(kg·K)? As typed, J/kg^-1 K^-1 is",
+    ),
     # a calculator's key for the power of ten, once an unknown unit EXP
     ("2.5 EXP -3 m/s^2", ACCEL, "Did you mean 2.5E-3? A calculator's EXP key is a power of ten"),
     ("2.5EE-3 m/s^2", ACCEL, "Did you mean 2.5E-3? A calculator's EE key is a power of ten: write 2.5E-3 or"),
@@ -261,6 +271,7 @@ POSITIONS = [
     ("\u200f4.58 m/smoot", 8),
     ("\u200b0.45 m", 6),  # unexpected units
     ("9.8 in m/s^2", 4),  # the word in, which reads as the inch
+    ("9.8 m/s^-2", 8),  # the minus that divides again
 ]
 
 
