@@ -169,6 +169,15 @@ def _readings(name: str, power: int = 1) -> _NameReadings:
     )
 
 
+# Directions said after a value, as in a sentence: no unit, and never read as one.
+_DIRECTION_WORDS = frozenset(
+    {
+        "up", "upward", "upwards", "down", "downward", "downwards", "left", "right", "leftward",
+        "rightward", "north", "south", "east", "west", "forward", "forwards", "backward", "backwards",
+        "clockwise", "anticlockwise", "counterclockwise",
+    }
+)  # fmt: skip
+
 # Prefix symbols that are no unit alone, typed apart from the unit they scale (`1.5k N`, `2 M J`).
 _PREFIX_SYMBOLS_ALONE = frozenset({"k", "M"})
 
@@ -368,6 +377,13 @@ class _Parser:
         self.names.append(token)
         readings = _readings(token.text, power)
         if not readings.options:
+            if token.text.lower() in _DIRECTION_WORDS:  # `-6.17 m/s^2 downward`, as said in a sentence
+                raise UnknownUnit(
+                    f"Unknown unit {token.text!r}: a direction is not read here; give it by the sign of "
+                    "the value (negative for the other way), as the problem sets its axes",
+                    token.position,
+                    token.text,
+                )
             hint = suggestion(token.text)
             advice = f" (units are case-sensitive: did you mean {hint!r}?)" if hint else ""
             raise UnknownUnit(f"Unknown unit {token.text!r}{advice}", token.position, token.text)

@@ -224,6 +224,13 @@ WORDING = [
         NumericSpec(D("4.2"), "J/(kg*K)"),
         "Did you mean J/(kg·K)? As typed, J/kg^-1 K^-1 is",
     ),
+    # a direction said after the value: no unit, and the refusal says how to give it
+    (
+        "4.58 m/s^2 downward",
+        ACCEL,
+        "Unknown unit 'downward': a direction is not read here; give it by the sign",
+    ),
+    ("4.58 m/s^2 (down)", ACCEL, "Unknown unit 'down': a direction is not read here"),
     # a calculator's key for the power of ten, once an unknown unit EXP
     ("2.5 EXP -3 m/s^2", ACCEL, "Did you mean 2.5E-3? A calculator's EXP key is a power of ten"),
     ("2.5EE-3 m/s^2", ACCEL, "Did you mean 2.5E-3? A calculator's EE key is a power of ten: write 2.5E-3 or"),
