@@ -59,6 +59,37 @@ ZERO_WIDTH: Final = frozenset(
 )
 
 
+# Cyrillic and Greek letters that look like Latin ones, as a keyboard set to another alphabet types
+# them: `mс²` with a Cyrillic с shows as mc². Never read as the Latin letters (a Greek ν is a frequency),
+# but named where the word they make is unknown and its Latin look-alike is known.
+LATIN_LOOKALIKES: Final = MappingProxyType(
+    dict(
+        zip(
+            "аеѕіјкорсухһԁАВЕЅІЈКМНОРСТХΑΒΕΖΗΙΚΜΝΟΡΤΥΧοκνρυχ",
+            "aesijkopcyxhdABESIJKMHOPCTXABEZHIKMNOPTYXokvpux",
+            strict=True,
+        )
+    )
+)
+
+
+def as_latin(word: str) -> str | None:
+    """The word with its Cyrillic and Greek look-alikes of Latin letters in Latin, or None if it has none."""
+    if word.isascii() or LATIN_LOOKALIKES.keys().isdisjoint(word):
+        return None
+    return "".join(LATIN_LOOKALIKES.get(char, char) for char in word)
+
+
+def lookalike_hint(word: str) -> str:
+    """A sentence naming the first letter of `word` that is Cyrillic or Greek but looks Latin."""
+    char = next(char for char in word if char in LATIN_LOOKALIKES)
+    script = "Cyrillic" if "CYRILLIC" in unicodedata.name(char, "") else "Greek"
+    return (
+        f" Its {char} is a {script} letter that looks like the Latin {LATIN_LOOKALIKES[char]}: type the Latin "
+        "letter (the keyboard may be set to another alphabet)."
+    )
+
+
 def fullwidth_as_ascii(text: str) -> str:
     """The text with fullwidth forms as ASCII, the degree sign's and the times signs' look-alikes as
     those signs, mathematical letters as plain ones, and Word's invisible operators as spaces."""

@@ -9,6 +9,7 @@ import re
 from collections.abc import Sequence
 from fractions import Fraction
 
+from physics.characters import as_latin, lookalike_hint
 from physics.errors import AmbiguousInput, TooLarge, UnknownFunction, UnknownSymbol
 from physics.mathinput.names import NameTable, Part
 from physics.mathinput.tokentypes import Kind, SpelledWord, Token
@@ -104,7 +105,8 @@ def resolve_words(tokens: list[Token], table: NameTable) -> list[Token]:
             + _greek_stand_in_hint(word, allowed)
             + _letter_o_hint(word, allowed, table)
             + _capital_pi_hint(word)
-            + _spaced_name_hint(word, nxt, table),
+            + _spaced_name_hint(word, nxt, table)
+            + _lookalike_hint(word, table),
             tok.pos,
             word,
             allowed,
@@ -232,6 +234,14 @@ def _spaced_name_hint(word: str, nxt: Token, table: NameTable) -> str:
     if nxt.kind is not Kind.WORD or not _one_name(word + nxt.text, table):
         return ""
     return f" If {word} {nxt.text} is {word}{nxt.text}, type it without the space."
+
+
+def _lookalike_hint(word: str, table: NameTable) -> str:
+    """A sentence for `mс` typed with a Cyrillic с, where the Latin letters it looks like are read, or ""."""
+    latin = as_latin(word)
+    if latin is None or table.resolve(latin).unique is None:
+        return ""
+    return lookalike_hint(word)
 
 
 def _greek_stand_in_hint(word: str, declared: Sequence[str]) -> str:

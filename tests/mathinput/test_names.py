@@ -143,6 +143,7 @@ def test_unknown_symbol_is_refused_listing_the_allowed_names(typed, declared, sy
 # A slip for a declared name, pointed out after the list of names: a Latin stand-in for a Greek letter,
 # the letter o typed for a zero subscript. Each hint's start, which must be absent where it has no case.
 STAND_IN, LETTER_O, CAPITAL_PI, SPACED = "stands for", "with a zero", "the number π", "without the space"
+LOOKALIKE = "looks like the Latin"
 SLIP_HINTS = [
     # (typed, declared, which hint, the sentence the refusal must hold, or None: no such hint)
     ("wt", ("omega", "t"), STAND_IN, "If w stands for ω, type omega or ω."),
@@ -166,6 +167,12 @@ SLIP_HINTS = [
     ("Δ x/t", ("Delta_x", "t"), SPACED, "If Δ x is Δx, type it without the space."),
     ("Delta x/t", ("Delta_x", "t"), SPACED, "If Delta x is Deltax, type it without the space."),
     ("Δ t", ("Delta_x", "t"), SPACED, None),
+    # a Cyrillic or Greek letter that looks Latin, from a keyboard set to another alphabet: the unknown
+    # word looked like the declared one the message listed
+    ("mс^2", ("m", "c"), LOOKALIKE, "Its с is a Cyrillic letter that looks like the Latin c: type the Latin"),
+    ("m + Μ", ("m", "M"), LOOKALIKE, "Its Μ is a Greek letter that looks like the Latin M"),
+    ("ν t", ("v", "t"), LOOKALIKE, "Its ν is a Greek letter that looks like the Latin v"),
+    ("ν t", ("x", "t"), LOOKALIKE, None),  # no v to mean: perhaps a frequency
 ]
 
 
