@@ -8,6 +8,7 @@ and braces go to `latex.LatexReader`, which makes of pasted LaTeX the tokens of 
 from __future__ import annotations
 
 import re
+import unicodedata
 from collections.abc import Callable
 from dataclasses import replace
 from fractions import Fraction
@@ -230,6 +231,14 @@ def tokenize(
             )
         elif ch in "=≈":  # `a = g sin θ`, `≈ 2g`, as written on paper
             raise ParseError(f"Give the expression alone, without '{ch}' (nor the name before it).", i)
+        elif unicodedata.combining(ch) and tokens and tokens[-1].kind is Kind.WORD and not space:
+            # `v⃗`, `v̄`, `x̂`: a mark set over a letter, as a vector or a mean is written on paper (a dot is
+            # a velocity only where a part asks for one: velocities.py)
+            raise ParseError(
+                f"A mark over {tokens[-1].text[-1]} (an arrow, a bar, a hat, a dot) is not read: type the symbol as "
+                "the problem lists it, without the mark.",
+                i,
+            )
         else:
             raise ParseError(f"Unexpected character {text[i]!r}.", i)
         tokens.append(token)

@@ -319,12 +319,27 @@ def _tokenize(text: str) -> list[Token]:
             i += 1
             tokens.append(Token(_SINGLE[char], char, start))
         else:
-            hint = " (use a decimal point, not a comma, and one answer only)" if char == "," else ""
+            hint = _CHARACTER_HINTS.get(char, "")
             raise ParseError(f"Unexpected character {char!r} in the units{hint}", start)
     if leading is not None:
         raise ParseError(f"{leading[1].text!r} needs a unit after it, as in sq m", leading[1].position)
     tokens.append(Token(Kind.END, "", n))
     return tokens
+
+
+# Why a character that is no unit was typed, and what to type instead.
+_CHARACTER_HINTS = {
+    ",": " (use a decimal point, not a comma, and one answer only)",
+    **dict.fromkeys(
+        "′'",
+        ": a prime is not read as a unit; for minutes of arc write arcmin (or the angle in degrees, as "
+        "0.5°), for feet ft",
+    ),
+    **dict.fromkeys(
+        '″"',
+        ": a double prime is not read as a unit; for seconds of arc write arcsec, for inches in",
+    ),
+}
 
 
 def _raise_by(tokens: list[Token], leading: tuple[int, Token] | None) -> None:

@@ -68,6 +68,9 @@ PARSE_ERRORS = [
     ("3.0×10e8 x", 6, "Did you mean 3.0×10^8 or 3.0e8?"),
     ("2*10E-3 y", 4, "2×10^-3 or 2E-3"),
     ("x y)", 3, "Unmatched"),
+    # a mark over a letter, as a vector or a mean is written on paper: once "Unexpected character"
+    ("x⃗ + y", 1, "A mark over x (an arrow, a bar, a hat, a dot) is not read: type the symbol as"),
+    ("2 ȳ", 3, "A mark over y"),
 ]
 
 

@@ -231,6 +231,13 @@ WORDING = [
         "Unknown unit 'downward': a direction is not read here; give it by the sign",
     ),
     ("4.58 m/s^2 (down)", ACCEL, "Unknown unit 'down': a direction is not read here"),
+    # a prime or a double prime: minutes and seconds of arc, or feet and inches; named, not guessed
+    ("30′", NumericSpec(D("0.5"), "deg"), "a prime is not read as a unit; for minutes of arc write arcmin"),
+    (
+        '12"',
+        NumericSpec(D("12"), "in"),
+        "a double prime is not read as a unit; for seconds of arc write arcsec",
+    ),
     # a calculator's key for the power of ten, once an unknown unit EXP
     ("2.5 EXP -3 m/s^2", ACCEL, "Did you mean 2.5E-3? A calculator's EXP key is a power of ten"),
     ("2.5EE-3 m/s^2", ACCEL, "Did you mean 2.5E-3? A calculator's EE key is a power of ten: write 2.5E-3 or"),
