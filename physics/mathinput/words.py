@@ -73,6 +73,8 @@ def resolve_words(tokens: list[Token], table: NameTable) -> list[Token]:
             continue
         if not readings and not spelled:
             split = _function_number_split(word, table)
+            if split is None and nxt.kind is not Kind.LPAREN:
+                split = _number_ending(word, table)
             if split is not None:  # `sin2θ`: sin, 2, θ, which the parser reads as sin(2θ)
                 out.extend(_split_tokens(split, tok))
                 continue
@@ -177,6 +179,23 @@ def _function_number_split(word: str, table: NameTable) -> list[Part | tuple[str
         return None
     shifted = [_shifted(piece, end) for piece in after]
     return [*before, (found.group(2), start, end), *shifted]
+
+
+# A word ending in a number that is the argument of `ln` or `sqrt` before it, as `ln2` and `sqrt2` are
+# typed (not `log2`, which may name a base, nor `sin30`, which would be 30 radians).
+_NUMBER_ENDING = re.compile(r"(\D*(?:ln|sqrt))(\d+)")
+
+
+def _number_ending(word: str, table: NameTable) -> list[Part | tuple[str, int, int]] | None:
+    """`ln2`, `mln2`, `sqrt2`: the parts before the number (ending with the function), and the number;
+    None unless they read exactly one way. Not before a bracket: `ln2(x)` says nothing of what is meant."""
+    found = _NUMBER_ENDING.fullmatch(word)
+    if found is None:
+        return None
+    before = table.resolve(found.group(1)).unique
+    if before is None or before[-1].kind != "func":
+        return None
+    return [*before, (found.group(2), *found.span(2))]
 
 
 def _shifted(piece: Part | tuple[str, int, int], by: int) -> Part | tuple[str, int, int]:

@@ -69,6 +69,11 @@ GLUED = [
     ("cos2ωt", ("omega", "t"), sympy.cos(2 * sym("omega") * sym("t"))),
     ("sin2θcos2θ", ("theta",), sympy.sin(2 * sym("theta")) * sympy.cos(2 * sym("theta"))),
     ("m2g", ("m2", "g"), sym("m2") * sym("g")),  # a declared name with its digit is no function's
+    # a number ending the word, as `ln2` and `sqrt2` are typed (they were unknown symbols)
+    ("τ ln2", ("tau",), sym("tau") * sympy.log(2)),
+    ("τln2", ("tau",), sym("tau") * sympy.log(2)),
+    ("2ln2 τ", ("tau",), 2 * sympy.log(2) * sym("tau")),
+    ("sqrt2 τ", ("tau",), sympy.sqrt(2) * sym("tau")),
 ]
 
 
@@ -88,10 +93,16 @@ def test_a_number_glued_after_a_function_keeps_where_each_piece_was_typed():
     assert read("v sin2θ", "v", "theta").read_as.text == "v*sin(2*theta)"
 
 
-@pytest.mark.parametrize("typed", ["sin2", "sin2θ2"])
+@pytest.mark.parametrize("typed", ["sin2", "sin2θ2", "log2", "sin30"])
 def test_a_function_and_number_with_nothing_or_a_number_after_stays_unknown(typed):
+    # sin30 would be 30 radians, log2 may name a base: refused, where ln2 and sqrt2 are read
     with pytest.raises(UnknownSymbol):
         read(typed, "theta")
+
+
+def test_a_function_and_number_before_a_bracket_stays_unknown():
+    with pytest.raises(UnknownFunction):
+        read("ln2(θ)", "theta")
 
 
 AMBIGUOUS_NAMES = [

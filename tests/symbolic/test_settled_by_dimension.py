@@ -90,6 +90,8 @@ SETTLED = [
         "a force",
     ),
     ("cos ωtA", "A*cos(omega*t)", DECAY, "cos(omega*t)*A", "a length"),
+    # ln 2 typed glued, as a half-life is written: log(2/b) has no dimension to take the log of
+    ("m ln2/b", "m*log(2)/b", DECAY, "m*log(2)/b", "a time"),
 ]
 
 
