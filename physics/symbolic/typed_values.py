@@ -38,6 +38,30 @@ def _as_pi(decimal: str) -> tuple[str, str] | None:
     return None
 
 
+# Other numbers a formula holds, typed as decimals from a calculator: (value, as the reader takes it, as
+# shown, as the student should write it).
+_NAMED_NUMBERS = (
+    (math.log(2), "log(2)", "ln 2", "ln(2)"),
+    (math.sqrt(2), "sqrt(2)", "√2", "sqrt(2)"),
+    (math.sqrt(3), "sqrt(3)", "√3", "sqrt(3)"),
+)
+
+
+def _as_named_number(decimal: str) -> tuple[str, str] | None:
+    """ln 2, √2 or √3 that `decimal` rounds (`0.693` for a half-life's ln 2), or None."""
+    if len(decimal.replace(".", "").lstrip("0")) < _MIN_DIGITS:
+        return None
+    value = float(decimal)
+    for exact, typed, shown, _ in _NAMED_NUMBERS:
+        if abs(value / exact - 1) < _CLOSE:
+            return f"({typed})", shown
+    return None
+
+
+def _as_pi_or_named(decimal: str) -> tuple[str, str] | None:
+    return _as_pi(decimal) or _as_named_number(decimal)
+
+
 def _as_e(decimal: str) -> tuple[str, str] | None:
     digits = len(decimal.replace(".", "").lstrip("0"))
     return ("e", "e") if digits >= _MIN_DIGITS and abs(float(decimal) / math.e - 1) < _CLOSE else None
@@ -81,7 +105,7 @@ def typed_value_hint(
     if reason is Reason.WRONG_VALUE and (degrees := _in_degrees(read_as_text, right_with)) is not None:
         return degrees
     if reason is Reason.CONSTANT_FACTOR:
-        symbol_for = _as_pi
+        symbol_for = _as_pi_or_named
         advice = "a decimal is taken as exactly the number it shows, so write pi (or π) where you mean π"
     elif reason is Reason.WRONG_DIMENSION and "g" in names:
         symbol_for = _as_g
@@ -103,6 +127,10 @@ def typed_value_hint(
     if not right_with(text):
         return None
     said = ", ".join(dict.fromkeys(f"{shown} for {match.group(1)}" for match, (_, shown) in swaps))
+    named = [written for _, _, shown, written in _NAMED_NUMBERS if any(s[1] == shown for _, s in swaps)]
+    if named and reason is Reason.CONSTANT_FACTOR:
+        pi = " and pi (or π) where you mean π" if any("π" in s[1] for _, s in swaps) else ""
+        advice = f"a decimal is taken as exactly the number it shows, so write {' and '.join(named)}{pi}"
     return f"Your answer would be right with {said}: {advice}."
 
 

@@ -67,6 +67,46 @@ def test_a_value_typed_for_a_symbol_is_named_when_the_symbol_would_make_it_right
         assert hint in verdict.feedback and advice in verdict.feedback
 
 
+HALF_LIFE = (SymbolDecl("m", "kg"), SymbolDecl("b", "kg/s"))
+NAMED_NUMBERS = [
+    # (answer, reference, symbols, the hint's swaps and advice, or None): a calculator's decimal for ln 2
+    # or √2, once "off by a constant factor" alone
+    (
+        "0.693 m/b",
+        "m*log(2)/b",
+        HALF_LIFE,
+        "ln 2 for 0.693: a decimal is taken as exactly the number it shows, so write ln(2).",
+    ),
+    (
+        "1.414 sqrt(g L)",
+        "sqrt(2*g*L)",
+        PENDULUM,
+        "√2 for 1.414: a decimal is taken as exactly the number it shows, so write sqrt(2).",
+    ),
+    (
+        "6.28*1.414 sqrt(L/g)",
+        "2*pi*sqrt(2*L/g)",
+        PENDULUM,
+        "2π for 6.28, √2 for 1.414: a decimal is taken as exactly the number it shows, so write sqrt(2) and pi (or π) where you mean π.",
+    ),
+    ("0.69 m/b", "m*log(2)/b", HALF_LIFE, None),  # too few digits to stand for ln 2
+]
+
+
+@pytest.mark.parametrize(
+    ("answer", "reference", "symbols", "hint"), NAMED_NUMBERS, ids=[c[0] for c in NAMED_NUMBERS]
+)
+def test_a_decimal_for_ln_2_or_a_root_is_named_when_it_would_make_the_answer_right(
+    answer: str, reference: str, symbols: tuple[SymbolDecl, ...], hint: str | None
+) -> None:
+    verdict = run_job(SymbolicJob(answer, reference, symbols))
+    assert verdict.reason is Reason.CONSTANT_FACTOR
+    if hint is None:
+        assert verdict.feedback == FACTOR_FEEDBACK
+    else:
+        assert verdict.feedback == f"Your answer would be right with {hint}"
+
+
 IN_DEGREES = [
     # (answer, the hint's swaps, or None): an angle typed in degrees without its sign is 90 rad as typed
     ("m g cos(90 - θ)", "90° for 90"),
