@@ -177,11 +177,27 @@ class SymbolicQuestion:
 
     def read(self, answer: str, limits: InputLimits) -> Preview:
         dimensions = {symbol.name: dim for symbol, dim in self.reference.dims.items()}
-        try:
-            parsed = read_symbolic_answer(answer, self.names, limits, dimensions, self.reference.dimension)
-        except AnswerError as error:
-            return Preview(None, InputProblem(error.message, error.position))
-        return Preview(parsed.read_as, None)
+        return _preview(answer, self.names, limits, dimensions, self.reference.dimension)
+
+
+def _preview(
+    answer: str,
+    names: Mapping[str, sympy.Symbol],
+    limits: InputLimits,
+    dimensions: Mapping[str, Dimension],
+    expected: Dimension | None,
+) -> Preview:
+    """How a symbolic answer reads, or why it cannot be read; a sum whose brackets are left out beside a
+    division (`mg/m+M`) is asked about before it is submitted, as grading would."""
+    try:
+        parsed = read_symbolic_answer(answer, names, limits, dimensions, expected)
+    except AnswerError as error:
+        return Preview(None, InputProblem(error.message, error.position))
+    if expected is not None:
+        question = unbracketed_sum(answer, names, limits, dimensions, expected)
+        if question is not None:
+            return Preview(None, InputProblem(question.message, question.position))
+    return Preview(parsed.read_as, None)
 
 
 def _led(verdict: Verdict, lead: str | None) -> Verdict:
@@ -219,11 +235,7 @@ class CompiledQuestion:
             )
         except (DimensionMismatch, UnknownDimension):
             expected_dimension = None
-        try:
-            read = read_symbolic_answer(answer, self.names, limits, dimensions, expected_dimension)
-        except AnswerError as error:
-            return Preview(None, InputProblem(error.message, error.position))
-        return Preview(read.read_as, None)
+        return _preview(answer, self.names, limits, dimensions, expected_dimension)
 
 
 @dataclass(frozen=True)

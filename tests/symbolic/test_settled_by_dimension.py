@@ -382,3 +382,11 @@ def test_a_sum_beside_a_division_is_graded_as_typed_where_brackets_would_not_fit
     verdict = run_job(SymbolicJob(answer, reference, symbols))
     assert verdict.outcome is Outcome.INCORRECT
     assert verdict.reason is reason
+
+
+def test_preview_asks_about_a_sum_whose_brackets_are_left_out_before_submission() -> None:
+    shown = preview(SymbolicJob("mg/m+M", "m*g/(m + M)", PENDULUM))
+    assert shown.read_as is None
+    assert shown.error is not None
+    assert shown.error.position == 2
+    assert shown.error.message.startswith("Did you mean m·g/(m + M)?")
