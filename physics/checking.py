@@ -42,6 +42,7 @@ from physics.symbolic.dimensional import DimensionMismatch, UnknownDimension, ex
 from physics.symbolic.judge import FACTOR_FEEDBACK
 from physics.symbolic.quick import judged
 from physics.symbolic.reading import read_symbolic_answer, shorter_arguments
+from physics.symbolic.symbol_e import symbol_e_raised
 from physics.symbolic.typed_values import typed_value_hint, with_units_hint
 from physics.units import unit_dimension
 from physics.verdict import InputProblem, Outcome, Preview, Reason, Verdict
@@ -100,8 +101,10 @@ class SymbolicQuestion:
             return verdict
         if verdict.reason is Reason.WRONG_DIMENSION and self.reference.dimension is not None:
             dimensions = {symbol.name: dim for symbol, dim in self.reference.dims.items()}
-            question = unbracketed_sum(answer, self.names, limits, dimensions, self.reference.dimension)
-            if question is not None:  # `mg/m+M`: m·g/(m + M) meant, its brackets left out
+            question = unbracketed_sum(
+                answer, self.names, limits, dimensions, self.reference.dimension
+            ) or symbol_e_raised(answer, self.names, limits, dimensions)
+            if question is not None:  # `mg/m+M`: m·g/(m + M) meant; `e^(-t/τ)` with e a charge: exp
                 return Verdict.invalid(question)
         hint = typed_value_hint(
             verdict.read_as.text,

@@ -390,3 +390,23 @@ def test_preview_asks_about_a_sum_whose_brackets_are_left_out_before_submission(
     assert shown.error is not None
     assert shown.error.position == 2
     assert shown.error.message.startswith("Did you mean m·g/(m + M)?")
+
+
+CHARGED = (SymbolDecl("e", "C"), SymbolDecl("V0", "V"), SymbolDecl("t", "s"), SymbolDecl("tau", "s"))
+RESTITUTION = (SymbolDecl("e", "1"), SymbolDecl("h", "m"), SymbolDecl("t", "s"), SymbolDecl("tau", "s"))
+
+
+@pytest.mark.parametrize("answer", ["V0 e^(-t/τ)", "V0/e^(t/τ)", "V0 e**(-t/tau)"])
+def test_a_power_of_a_declared_charge_e_is_refused_saying_how_to_write_eulers_number(answer: str) -> None:
+    # it was graded wrong_dimension: "raises an electric charge to a power that is not a fixed number"
+    verdict = run_job(SymbolicJob(answer, "V0*exp(-t/tau)", CHARGED))
+    assert verdict.outcome is Outcome.INVALID
+    assert verdict.error is not None
+    assert verdict.error.position == answer.index("e")
+    assert verdict.error.message.startswith("Here e is the problem's symbol e, an electric charge")
+    assert "for Euler's number write exp(…)" in verdict.error.message
+
+
+def test_a_power_of_a_dimensionless_declared_e_is_graded_as_typed() -> None:
+    verdict = run_job(SymbolicJob("h e^(-t/τ)", "h*exp(-t/tau)", RESTITUTION))
+    assert verdict.outcome is Outcome.INCORRECT  # e^(−t/τ) of a coefficient of restitution: an answer
