@@ -74,7 +74,7 @@ def resolve_words(tokens: list[Token], table: NameTable) -> list[Token]:
         if not readings and not spelled:
             split = _function_number_split(word, table)
             if split is None and nxt.kind is not Kind.LPAREN:
-                split = _number_ending(word, table)
+                split = _number_ending(word, table, degrees=nxt.kind is Kind.POSTFIX and nxt.text == "°")
             if split is not None:  # `sin2θ`: sin, 2, θ, which the parser reads as sin(2θ)
                 out.extend(_split_tokens(split, tok))
                 continue
@@ -108,7 +108,8 @@ def resolve_words(tokens: list[Token], table: NameTable) -> list[Token]:
             + _letter_o_hint(word, allowed, table)
             + _capital_pi_hint(word)
             + _spaced_name_hint(word, nxt, table)
-            + _lookalike_hint(word, table),
+            + _lookalike_hint(word, table)
+            + glued_angle_hint(word),
             tok.pos,
             word,
             allowed,
@@ -182,14 +183,17 @@ def _function_number_split(word: str, table: NameTable) -> list[Part | tuple[str
 
 
 # A word ending in a number that is the argument of `ln` or `sqrt` before it, as `ln2` and `sqrt2` are
-# typed (not `log2`, which may name a base, nor `sin30`, which would be 30 radians).
+# typed (not `log2`, which may name a base, nor `sin30`, which would be 30 radians); and of a function
+# of an angle where a degree sign follows (`sin30°`).
 _NUMBER_ENDING = re.compile(r"(\D*(?:ln|sqrt))(\d+)")
+_DEGREES_ENDING = re.compile(r"(\D*(?:sin|cos|tan|sec|csc|cot))(\d+)")
 
 
-def _number_ending(word: str, table: NameTable) -> list[Part | tuple[str, int, int]] | None:
-    """`ln2`, `mln2`, `sqrt2`: the parts before the number (ending with the function), and the number;
-    None unless they read exactly one way. Not before a bracket: `ln2(x)` says nothing of what is meant."""
-    found = _NUMBER_ENDING.fullmatch(word)
+def _number_ending(word: str, table: NameTable, *, degrees: bool) -> list[Part | tuple[str, int, int]] | None:
+    """`ln2`, `mln2`, `sqrt2`, `sin30` before a degree sign: the parts before the number (ending with the
+    function), and the number; None unless they read exactly one way. Not before a bracket: `ln2(x)`
+    says nothing of what is meant."""
+    found = (_DEGREES_ENDING if degrees else _NUMBER_ENDING).fullmatch(word)
     if found is None:
         return None
     before = table.resolve(found.group(1)).unique
@@ -253,6 +257,16 @@ def _spaced_name_hint(word: str, nxt: Token, table: NameTable) -> str:
     if nxt.kind is not Kind.WORD or not _one_name(word + nxt.text, table):
         return ""
     return f" If {word} {nxt.text} is {word}{nxt.text}, type it without the space."
+
+
+def glued_angle_hint(word: str) -> str:
+    """A sentence for `sin30`, a function of an angle with a number glued on and no degree sign: 30
+    radians as typed, most often 30° meant; or ""."""
+    found = _DEGREES_ENDING.fullmatch(word)
+    if found is None:
+        return ""
+    name, number = found.group(1)[-3:], found.group(2)  # `mgsin30`: the function is the word's end
+    return f" Did you mean {name}({number}°)? Write the degree sign for degrees, or {name}({number}) for radians."
 
 
 def _lookalike_hint(word: str, table: NameTable) -> str:

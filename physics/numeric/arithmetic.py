@@ -22,6 +22,7 @@ from physics.errors import AnswerError, LikelySlip, ParseError, TooLarge, Unknow
 from physics.mathinput import InputLimits, parse_math
 from physics.mathinput.tokens import Kind, Token, tokenize
 from physics.mathinput.vocabulary import FUNCTIONS, PI_SPELLINGS
+from physics.mathinput.words import glued_angle_hint
 from physics.numeric.answer import (
     MAX_ANSWER_LENGTH,
     NumericAnswer,
@@ -53,6 +54,12 @@ def _is_arithmetic_word(tokens: list[Token], i: int) -> bool:
         return True
     if word == "x":  # `2 x 3`: a times sign between numbers
         return i > 0 and tokens[i - 1].kind is Kind.NUM and tokens[i + 1].kind is Kind.NUM
+    glued = _GLUED_NUMBER.fullmatch(word)
+    if glued is not None:  # `ln2`, `sqrt2`, and `sin30` before its degree sign, as the math reader reads them
+        following = tokens[i + 1]
+        if glued.group(1) in ("ln", "sqrt"):
+            return following.kind is not Kind.LPAREN
+        return following.kind is Kind.POSTFIX and following.text == "°"
     if word in FUNCTIONS:
         # `sec` is also the second: a function only when an argument follows (`sec(x)`, `sin 30°`).
         following = tokens[i + 1]
@@ -61,6 +68,9 @@ def _is_arithmetic_word(tokens: list[Token], i: int) -> bool:
         )
     return False
 
+
+# A function with its number glued on (`words._number_ending`).
+_GLUED_NUMBER = re.compile(r"(ln|sqrt|sin|cos|tan|sec|csc|cot)(\d+)")
 
 _ENDS_NUMBER = frozenset({Kind.NUM, Kind.RPAREN, Kind.WORD, Kind.POSTFIX})
 
@@ -93,6 +103,13 @@ def _quantities(tokens: list[Token], text: str) -> list[_Quantity]:
                 depth += 1
             elif token.kind is Kind.RPAREN:
                 depth -= 1
+            elif (
+                depth == 0
+                and token.kind is Kind.WORD
+                and not _is_arithmetic_word(tokens, i)
+                and (hint := glued_angle_hint(token.text))
+            ):
+                raise LikelySlip(hint.strip(), token.pos)  # `9.8 sin30 m/s^2`: never a unit sin³⁰
             elif depth == 0 and (
                 token.kind is Kind.LPAREN  # `[` opening units: the test above let it through
                 or (token.kind is Kind.WORD and not _is_arithmetic_word(tokens, i))
@@ -102,7 +119,10 @@ def _quantities(tokens: list[Token], text: str) -> list[_Quantity]:
                 before = tokens[i - 1] if i > 0 else None
                 times = before is not None and before.kind is Kind.OP and before.text == "*"
                 number_end = before.pos if times and before is not None else token.pos
-            elif token.kind is Kind.FUNC or (token.kind is Kind.WORD and token.text in FUNCTIONS):
+            elif token.kind is Kind.FUNC or (
+                token.kind is Kind.WORD
+                and (token.text in FUNCTIONS or _GLUED_NUMBER.fullmatch(token.text) is not None)
+            ):
                 function_seen = True  # a FUNC is a LaTeX function command, `\sin`
         elif token.kind is Kind.NUM and tokens[i - 1].kind is Kind.OP and tokens[i - 1].text == "*":
             found.append(_Quantity(start, number_end, units_start, tokens[i - 1].pos))

@@ -74,6 +74,8 @@ GLUED = [
     ("τln2", ("tau",), sym("tau") * sympy.log(2)),
     ("2ln2 τ", ("tau",), 2 * sympy.log(2) * sym("tau")),
     ("sqrt2 τ", ("tau",), sympy.sqrt(2) * sym("tau")),
+    ("τ sin30°", ("tau",), sym("tau") / 2),  # glued before its degree sign: 30°, as typed
+    ("mgcos60°", ("m", "g"), sym("m") * sym("g") / 2),
 ]
 
 
@@ -155,6 +157,7 @@ def test_unknown_symbol_is_refused_listing_the_allowed_names(typed, declared, sy
 # the letter o typed for a zero subscript. Each hint's start, which must be absent where it has no case.
 STAND_IN, LETTER_O, CAPITAL_PI, SPACED = "stands for", "with a zero", "the number π", "without the space"
 LOOKALIKE = "looks like the Latin"
+DEGREES = "Write the degree sign for degrees"
 SLIP_HINTS = [
     # (typed, declared, which hint, the sentence the refusal must hold, or None: no such hint)
     ("wt", ("omega", "t"), STAND_IN, "If w stands for ω, type omega or ω."),
@@ -184,6 +187,9 @@ SLIP_HINTS = [
     ("m + Μ", ("m", "M"), LOOKALIKE, "Its Μ is a Greek letter that looks like the Latin M"),
     ("ν t", ("v", "t"), LOOKALIKE, "Its ν is a Greek letter that looks like the Latin v"),
     ("ν t", ("x", "t"), LOOKALIKE, None),  # no v to mean: perhaps a frequency
+    # a function of an angle with its number glued on and no degree sign: 30 rad, or 30°?
+    ("m sin30", ("m",), DEGREES, "Did you mean sin(30°)? Write the degree sign for degrees, or sin(30) for"),
+    ("mcos60", ("m",), DEGREES, "Did you mean cos(60°)?"),
 ]
 
 

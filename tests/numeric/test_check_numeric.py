@@ -54,6 +54,8 @@ VERDICTS = [
     ("glued-units", "4.58m/s^2", ACCEL, OK, Reason.EQUIVALENT),
     ("mixed-number", "1 ½ m", NumericSpec(D("1.52"), "m"), BAD, Reason.PARSE_ERROR),  # never 1·½ m
     ("divided-twice", "4.58 m/s^-2", ACCEL, BAD, Reason.AMBIGUOUS),  # m·s² as typed: asked about
+    ("glued-degrees", "9.8 sin30° m/s^2", NumericSpec(D("4.9"), "m/s^2"), OK, Reason.EQUIVALENT),
+    ("glued-ln-2", "2ln2 s", NumericSpec(D("1.386"), "s"), OK, Reason.EQUIVALENT),
     ("divided-twice-where-meant", "4.58 m/s^-2", NumericSpec(D("4.58"), "m*s^2"), OK, Reason.EQUIVALENT),
     ("fullwidth-units", "4.58 ｍ／ｓ＾２", ACCEL, OK, Reason.EQUIVALENT),  # East Asian input methods
     ("fullwidth-number", "４．５８ m/s^2", ACCEL, OK, Reason.EQUIVALENT),
@@ -237,6 +239,13 @@ WORDING = [
         '12"',
         NumericSpec(D("12"), "in"),
         "a double prime is not read as a unit; for seconds of arc write arcsec",
+    ),
+    # a function of an angle with its number glued on and no degree sign: once "The power 30 is too
+    # large for a unit" (a unit sin to the power 30)
+    (
+        "9.8 sin30 m/s^2",
+        NumericSpec(D("4.9"), "m/s^2"),
+        "Did you mean sin(30°)? Write the degree sign for degrees",
     ),
     # a calculator's key for the power of ten, once an unknown unit EXP
     ("2.5 EXP -3 m/s^2", ACCEL, "Did you mean 2.5E-3? A calculator's EXP key is a power of ten"),
