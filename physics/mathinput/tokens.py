@@ -186,6 +186,11 @@ def tokenize(
                 i = end
                 space = False
                 continue
+        elif ch in SUPERSCRIPT_SIGNS and i + 1 < n and chars[i + 1] in VULGAR_FRACTIONS:
+            # `(k/m)⁻½`: a raised minus, then the fraction no palette raises: the power −½
+            tokens.append(Token(Kind.OP, "^", i, i, space))
+            token = Token(Kind.OP, "-" if SUPERSCRIPT_SIGNS[ch] < 0 else "+", i, i + 1)
+            i += 1
         elif ch in SUPERSCRIPT_DIGITS or ch in SUPERSCRIPT_SIGNS:
             token, i = _read_superscript(chars, i, space)
             if tokens and tokens[-1].kind is Kind.OP and tokens[-1].text == "^" and not space:

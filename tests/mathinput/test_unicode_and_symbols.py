@@ -27,6 +27,7 @@ TEXTBOOK = [
     ("x^-² y", ("x", "y"), sym("y") / sym("x") ** 2),  # the caret and minus typed, then the palette's ²
     ("x^−³", ("x",), sym("x") ** -3),
     ("x**⁻² y", ("x", "y"), sym("y") / sym("x") ** 2),
+    ("x⁻½ y", ("x", "y"), sym("y") / sympy.sqrt(sym("x"))),  # a raised minus, then a fraction: once refused
     # A vulgar fraction is typed as a number is: a function without brackets takes it with the word
     # glued to it, as `sin 2θ` (not sin(½)·θ)
     ("sin ½θ", ("theta",), sympy.sin(sym("theta") / 2)),
