@@ -191,13 +191,16 @@ def _preview(
     expected: Dimension | None,
 ) -> Preview:
     """How a symbolic answer reads, or why it cannot be read; a sum whose brackets are left out beside a
-    division (`mg/m+M`) is asked about before it is submitted, as grading would."""
+    division (`mg/m+M`) and a power of a charge e (`e^(-t/τ)`) are asked about before the answer is
+    submitted, as grading asks."""
     try:
         parsed = read_symbolic_answer(answer, names, limits, dimensions, expected)
     except AnswerError as error:
         return Preview(None, InputProblem(error.message, error.position))
     if expected is not None:
-        question = unbracketed_sum(answer, names, limits, dimensions, expected)
+        question = unbracketed_sum(answer, names, limits, dimensions, expected) or symbol_e_raised(
+            answer, names, limits, dimensions
+        )
         if question is not None:
             return Preview(None, InputProblem(question.message, question.position))
     return Preview(parsed.read_as, None)

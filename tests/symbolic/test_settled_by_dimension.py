@@ -410,3 +410,9 @@ def test_a_power_of_a_declared_charge_e_is_refused_saying_how_to_write_eulers_nu
 def test_a_power_of_a_dimensionless_declared_e_is_graded_as_typed() -> None:
     verdict = run_job(SymbolicJob("h e^(-t/τ)", "h*exp(-t/tau)", RESTITUTION))
     assert verdict.outcome is Outcome.INCORRECT  # e^(−t/τ) of a coefficient of restitution: an answer
+
+
+def test_preview_asks_about_a_power_of_a_declared_charge_e() -> None:
+    shown = preview(SymbolicJob("V0 e^(-t/τ)", "V0*exp(-t/tau)", CHARGED))
+    assert shown.read_as is None
+    assert shown.error is not None and shown.error.message.startswith("Here e is the problem's symbol e")
