@@ -15,6 +15,11 @@ about its centre (shape_inertia.SHAPES: a number times the mass times the square
 lengths), the inertia was typed about the pivot: refused where it was written, saying what it is about
 the centre. A spool rolling on its thin axle (m R²/2 on an axle of radius r) has an inertia above m r²
 and is no shape's plus m r², so it is left alone.
+
+A body that skids (kinetic friction at its `contact` point, its angle a coordinate of its own) turns
+about no fixed point yet, but it touches the surface a fixed distance from its centre and rolls about
+that point once the slipping stops: a ball skidding with 7/5 m r² is the same slip, and its skid's
+time and the speed it rolls at verified as those of a ball nobody posed (7 v/(12 μ g), 5 v/12).
 """
 
 from __future__ import annotations
@@ -31,25 +36,53 @@ from physics.errors import DerivationError
 
 def check_pivot_inertias(model: Model) -> None:
     """DerivationError at the first rigid body whose inertia is a standard shape's about its centre plus
-    m d², d the fixed distance from its centre to the point it turns about."""
+    m d², d the fixed distance from its centre to the point it turns about (or, skidding, its contact)."""
     lengths = geometric_symbols(model)
     for body in model.bodies:
-        distance = _turning_distance(model, body)
-        if distance is None:
+        found = _turning_point(model, body)
+        if found is None:
             continue
+        distance, point, aside = found
         about_centre = sympy.factor(body.inertia - body.mass * distance**2)
         factor = shape_factor(about_centre, body.mass, lengths)
         if factor is None:
             continue
         raise DerivationError(
-            f"{body.name}'s moment of inertia {typed_text(body.inertia)} is its inertia about the point it "
-            f"turns about, {typed_text(distance)} from its centre (a pivot, or a rolling contact): about its "
+            f"{body.name}'s moment of inertia {typed_text(body.inertia)} is its inertia about {point}, "
+            f"{typed_text(distance)} from its centre ({aside}): about its "
             f"centre it is {typed_text(about_centre)} ({SHAPES[factor]}), and `inertia` is about the centre "
             f"of mass (the positions add {typed_text(body.mass * distance**2)} themselves). Write "
             f"{typed_text(about_centre)}; a body whose inertia about its centre really is "
             f"{typed_text(body.inertia)} is written with a length of its own (m*k^2, k its radius of gyration)",
             path=body_path(model, body.name, "inertia"),
         )
+
+
+def _turning_point(model: Model, body: Body) -> tuple[sympy.Expr, str, str] | None:
+    """The fixed distance from the body's centre to the point it turns about (or will, once a skid turns
+    to rolling), and what that point is; None where there is none."""
+    distance = _turning_distance(model, body)
+    if distance is not None:
+        return distance, "the point it turns about", "a pivot, or a rolling contact"
+    distance = _contact_distance(model, body)
+    if distance is not None:
+        return distance, "its contact point", "it rolls about it once it stops skidding"
+    return None
+
+
+def _contact_distance(model: Model, body: Body) -> sympy.Expr | None:
+    """The distance from the body's centre to its friction's contact point, where that is one fixed
+    length (a round body skidding on a surface); None otherwise."""
+    if body.angle is None or body.inertia == 0:
+        return None
+    moving = {c.symbol for c in model.coordinates}
+    for friction in model.frictions:
+        if friction.body != body.name or not friction.contact:
+            continue
+        squared = sympy.simplify(sum((offset**2 for _, offset in friction.contact), sympy.Integer(0)))
+        if squared != 0 and not squared.free_symbols & moving:
+            return sympy.sqrt(squared)
+    return None
 
 
 def _turning_distance(model: Model, body: Body) -> sympy.Expr | None:

@@ -4,8 +4,9 @@ ML² about its end for its 1/12 ML² about its centre).
 
 A body's inertia (about its centre of mass) is recognised as a shape's when it is a number from the
 table below times the body's own mass times the square of one of the body's lengths: a length the
-model's positions or constraints use too, such as the radius a wheel rolls on or the length a rod
-hangs by. A radius of gyration (`m k²`, k nowhere else) names no shape, and is left alone."""
+model's positions, constraints or friction's contact points use too, such as the radius a wheel rolls
+or skids on or the length a rod hangs by. A radius of gyration (`m k²`, k nowhere else) names no shape,
+and is left alone."""
 
 from __future__ import annotations
 
@@ -64,13 +65,17 @@ def confused_inertias(model: Model) -> Iterator[tuple[Model, str]]:
 
 
 def geometric_symbols(model: Model) -> set[sympy.Symbol]:
-    """The symbols the bodies' positions and the constraints are written in."""
+    """The symbols the bodies' positions, the constraints and friction's contact points are written in
+    (a skidding ball's radius is only where it touches the floor)."""
     found: set[sympy.Symbol] = set()
     for body in model.bodies:
         for _, expr in body.position:
             found |= expr.free_symbols
     for constraint in model.constraints:
         found |= constraint.gap.free_symbols
+    for friction in model.frictions:
+        for _, offset in friction.contact:
+            found |= offset.free_symbols
     return {symbol for symbol in found if isinstance(symbol, sympy.Symbol)}
 
 

@@ -1,8 +1,8 @@
 """A rigid body's `inertia` is about its centre: typed about the point it turns about (a rod hung from its
 end given m L²/3, a hoop on a nail 2 m R², a hoop rolling on its rim 2 m R², a ladder sliding down a
-wall m L²/3), every method counts m d² twice and agrees, and the simulation too. Refused where it was
-written, saying the inertia about the centre; the right inertias, and a wheel rolling on a thin axle
-(above m r², no shape's plus m r²), derive."""
+wall m L²/3, a ball skidding on its contact point 7/5 m r²), every method counts m d² twice and agrees,
+and the simulation too. Refused where it was written, saying the inertia about the centre; the right
+inertias, and a wheel rolling on a thin axle (above m r², no shape's plus m r²), derive."""
 
 from __future__ import annotations
 
@@ -55,8 +55,17 @@ domain:
 quantities:
   a: {acceleration: s}
 """
-NAMES = "m L R r g theta theta0"
-m, L, R, r, g, theta, theta0 = sympy.symbols(NAMES, positive=True)
+SKIDDING = """
+# launched along the floor at v without spin: it skids (kinetic friction at its contact) until it rolls
+elements:
+  ball: {kind: rolling, mass: m, radius: r, inertia: INERTIA, coordinate: x, friction: mu, spin: phi}
+gravity: g
+state: {x_dot: v}
+quantities:
+  skid: {slip_time: ball}
+"""
+NAMES = "m L R r g theta theta0 mu v"
+m, L, R, r, g, theta, theta0, mu, v = sympy.symbols(NAMES, positive=True)
 
 # (model, inertia typed, the quantity's value, or the refusal's path and the inertia about the centre)
 RIGHT = [
@@ -66,12 +75,17 @@ RIGHT = [
     pytest.param(
         WHEEL, "m*R^2/2", "a", 2 * g * r**2 * sympy.sin(theta) / (R**2 + 2 * r**2), id="wheel-on-a-thin-axle"
     ),
+    pytest.param(SKIDDING, "2*m*r^2/5", "skid", 2 * v / (7 * mu * g), id="ball-skidding-until-it-rolls"),
 ]
 ABOUT_THE_PIVOT = [
     pytest.param(ROD, "m*L^2/3", ("elements", "hinge", "inertia"), "L^2*m/12", id="rod-from-its-end"),
     pytest.param(HOOP_ON_A_NAIL, "2*m*R^2", ("elements", "nail", "inertia"), "R^2*m", id="hoop-on-a-nail"),
     pytest.param(LADDER, "m*L^2/3", ("bodies", "ladder", "inertia"), "L^2*m/12", id="sliding-ladder"),
     pytest.param(WHEEL, "7*m*r^2/5", ("elements", "wheel", "inertia"), "2*m*r^2/5", id="ball-on-its-contact"),
+]
+SKIDDING_ABOUT_THE_CONTACT = [  # it turns about no fixed point until it rolls: about the point it will
+    pytest.param("7*m*r^2/5", "2*m*r^2/5", id="ball"),
+    pytest.param("3*m*r^2/2", "m*r^2/2", id="cylinder"),
 ]
 
 
@@ -96,4 +110,15 @@ def test_an_inertia_typed_about_the_point_the_body_turns_about_is_refused_where_
         uncached(_model(text, inertia))
     assert caught.value.path == path
     assert "is its inertia about the point it turns about" in caught.value.message
+    assert f"about its centre it is {about_centre}" in caught.value.message
+
+
+@pytest.mark.parametrize(("inertia", "about_centre"), SKIDDING_ABOUT_THE_CONTACT)
+def test_an_inertia_typed_about_a_skidding_bodys_contact_point_is_refused_where_written(
+    inertia: str, about_centre: str
+) -> None:
+    with pytest.raises(DerivationError) as caught:
+        uncached(_model(SKIDDING, inertia))
+    assert caught.value.path == ("elements", "ball", "inertia")
+    assert "is its inertia about its contact point" in caught.value.message
     assert f"about its centre it is {about_centre}" in caught.value.message
