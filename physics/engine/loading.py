@@ -1036,6 +1036,8 @@ def _quantity(
         | (_SLIPPING_KEYS if kind is QuantityKind.SLIPPING else set())
     )
     optional = {"bounces"} if kind in bounces.FINAL_KINDS else set()
+    if kind is QuantityKind.TURNING_POINT:  # how far the motion just after an impact goes (a squeeze)
+        optional = {"after"}
     _check_keys(spec, allowed | optional, allowed, path, errors)
     target = spec[kind.value]
     where: Path = (*path, kind.value)
@@ -1050,7 +1052,14 @@ def _quantity(
         if target not in pool:
             errors.add(f"unknown {_QUANTITY_TARGET[kind]} {target!r}", where)
             return None
-        return Quantity(name, kind, str(target))
+        after = spec.get("after", "")
+        if after not in ("", "impact"):
+            errors.add(
+                "`after: impact` takes the quantity in the motion just after the model's impact",
+                (*path, "after"),
+            )
+            return None
+        return Quantity(name, kind, str(target), after=after)
     if kind is QuantityKind.MECHANICAL_ENERGY:
         if target != "state":
             errors.add("the energy is the model's state's: write `mechanical_energy: state`", where)

@@ -95,6 +95,23 @@ APOGEE: dict[str, Any] = {  # launched sideways at v from R, below the escape sp
     "quantities": {"lowest": {"turning_point": "r"}},
 }
 
+# `after: impact`: in the motion just after the model's impact. Cart 1 at v bounces elastically off
+# cart 2, at rest on a spring of natural length L0 to a wall at x = L0: how far cart 2 squeezes it
+STRUCK_ON_A_SPRING: dict[str, Any] = {
+    "coordinates": ["x1", "x2"],
+    "bodies": {
+        "cart1": {"mass": "m", "position": {"x": "x1"}},
+        "cart2": {"mass": "M", "position": {"x": "x2"}},
+    },
+    "elements": {
+        "spring": {"kind": "spring", "between": ["cart2", {"x": "L0"}], "stiffness": "k", "length": "L0"}
+    },
+    "state": {"x1": 0, "x2": 0, "x1_dot": "v", "x2_dot": 0},
+    "impact": {"bodies": ["cart1", "cart2"], "normal": {"x": 1}, "restitution": 1},
+    "domain": {"ranges": {"x2": ["-oo", "L0"]}},
+    "quantities": {"lowest": {"turning_point": "x2", "after": "impact"}},
+}
+
 
 @pytest.mark.parametrize(
     ("data", "expected"),
@@ -109,6 +126,9 @@ APOGEE: dict[str, Any] = {  # launched sideways at v from R, below the escape sp
         pytest.param(HANGING_FROM_REST, 2 * m * g / k, id="from-rest"),
         pytest.param(BUMPER, L0 - v * sympy.sqrt(m * M / (k * (m + M))), id="bumper-closest"),
         pytest.param(APOGEE, R**2 * v**2 / (2 * G * M - R * v**2), id="apogee"),
+        pytest.param(
+            STRUCK_ON_A_SPRING, 2 * m * v * sympy.sqrt(M / k) / (m + M), id="after-an-impact-on-a-spring"
+        ),
     ],
 )
 def test_the_turning_point_is_derived_by_several_methods_and_simulated(
