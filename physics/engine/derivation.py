@@ -14,6 +14,7 @@ from physics.engine.along_the_way import check_along_the_way
 from physics.engine.checks import physical_checks
 from physics.engine.clearances import check_clearances
 from physics.engine.conservation import ConservationMethod
+from physics.engine.contact_friction import check_state_slips
 from physics.engine.contacts import check_contact_signs
 from physics.engine.dalembert import DAlembertMethod
 from physics.engine.frames import FramesMethod
@@ -92,6 +93,7 @@ def _derive_model(model: Model) -> Derivation:
     check_gravity(model)
     check_state_in_range(model)
     check_friction_reactions(model)
+    check_state_slips(model, mech)
     check_rolling_grips(model, mech)
     check_pivot_inertias(model)
     check_clearances(model, mech)

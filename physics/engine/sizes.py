@@ -62,7 +62,7 @@ def check_friction_reactions(model: Model) -> None:
                 f"kinetic friction on {friction.body} at {friction.constraint!r}, a contact with {others[0]}, "
                 f"which moves: {others[0]} feels the opposite friction (Newton's third law), which the model "
                 f"leaves out. Add `against: {others[0]}` to the friction",
-                path=_friction_path(model, index),
+                path=friction_path(model, index),
             )
 
 
@@ -89,7 +89,7 @@ def _sizes(model: Model) -> Iterator[tuple[sympy.Expr, str, str, Path]]:
             friction.coefficient,
             f"the coefficient of kinetic friction on {friction.body}",
             "friction would push the body along its slip instead of opposing it",
-            _friction_path(model, index),
+            friction_path(model, index),
         )
     applied = [f for f in model.force_entries if isinstance(f, AppliedForce)]
     for force in applied:
@@ -153,7 +153,7 @@ def body_path(model: Model, body: str, field: str) -> Path:
     return ("bodies", body, field)
 
 
-def _friction_path(model: Model, index: int) -> Path:
+def friction_path(model: Model, index: int) -> Path:
     """The element whose `friction` generated it, or its entry under `friction`."""
     friction = model.frictions[index]
     for element in model.elements:

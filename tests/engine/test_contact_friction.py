@@ -142,7 +142,42 @@ def test_a_ball_launched_backwards_against_the_assumed_slip_is_refused_at_fricti
     data["quantities"] = {"a": {"acceleration": "x"}}
     with pytest.raises(DerivationError) as caught:
         derive(load_model(data, SYMBOLS))
-    assert ("friction",) in [path for path, _ in caught.value.items()]
+    assert caught.value.path == ("friction", 0)
+    assert "slides towards decreasing x" in caught.value.message
+
+
+def _slid(direction: str, velocity: str) -> dict[str, Any]:
+    """A block sent along a rough slope, its coordinate growing `direction` the slope."""
+    ramp = {"kind": "incline", "body": "block", "mass": "m", "angle": "theta", "coordinate": "s"}
+    return {
+        "elements": {"ramp": {**ramp, "direction": direction, "friction": "mu"}},
+        "gravity": "g",
+        "state": {"s": 0, "s_dot": velocity},
+        "domain": {"ranges": {"theta": ["0", "pi/2"]}},
+        "quantities": {"far": {"turning_point": "s"}},
+    }
+
+
+# sent up the slope at v: with the coordinate growing down it, the state's velocity is -v, and friction
+# written against sliding towards increasing s would push the block up the slope
+SLID_UP = [
+    pytest.param("up", "v", v**2 / (2 * g * (sympy.sin(theta) + mu * sympy.cos(theta))), id="coordinate-up"),
+    pytest.param("down", "-v", None, id="coordinate-down"),
+]
+
+
+@pytest.mark.parametrize(("direction", "velocity", "expected"), SLID_UP)
+def test_a_block_sliding_against_its_frictions_assumed_slip_is_refused_where_the_friction_is_written(
+    direction: str, velocity: str, expected: sympy.Expr | None
+) -> None:
+    model = load_model(_slid(direction, velocity), SYMBOLS)
+    if expected is not None:
+        assert sympy.simplify(derive(model).quantities["far"] - expected) == 0
+        return
+    with pytest.raises(DerivationError) as caught:
+        derive(model)
+    assert caught.value.path == ("elements", "ramp", "friction")
+    assert "slides towards decreasing s" in caught.value.message
 
 
 def _faults(data: dict[str, Any]) -> dict[str, str]:
