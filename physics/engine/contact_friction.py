@@ -9,6 +9,12 @@ is written to oppose slip towards increasing `sliding`, so a block sent up a slo
 grows down it would be pushed up by its friction. The methods would then find no place where it stops
 ("it does not turn"), or a speed it never has; refused at the friction instead, saying which way it
 slides (`check_state_slips`).
+
+A rigid body's `contact` is where it touches the surface, so it lies on the surface's side of its centre
+(against the gap's gradient, which points away from the surface). Written on the far side (`{y: R}` for
+a ball on a floor), the friction's torque spins the body the other way, and its skid ends with the
+right time and speed but the spin of a ball rolling backwards, every method and the simulation
+agreeing (`check_contact_sides`).
 """
 
 from __future__ import annotations
@@ -19,10 +25,13 @@ import sympy
 
 from physics.answer_text import typed_text
 from physics.engine import tidy
+from physics.engine.grips import state_points
 from physics.engine.model import Friction, Model
 from physics.engine.signs import Sign, sign_on_domain
 from physics.engine.sizes import friction_path
 from physics.errors import DerivationError
+
+_POINTS = 8
 
 if TYPE_CHECKING:
     from physics.engine.mechanics import Mechanics
@@ -65,3 +74,39 @@ def check_state_slips(model: Model, mech: Mechanics) -> None:
             f"`direction`), or the state's velocity that way",
             path=friction_path(model, index),
         )
+
+
+def check_contact_sides(model: Model, mech: Mechanics) -> None:
+    """DerivationError at the first friction whose contact point lies, at every sampled state, on the far
+    side of its body's centre from the surface (along the gap's gradient)."""
+    place = {d.symbol: d.mapping for d in mech.dofs}
+    points = state_points(model, mech)[:_POINTS]
+    constraints = {c.name: c for c in model.constraints}
+    for index, friction in enumerate(model.frictions):
+        constraint = constraints.get(friction.constraint)
+        if not friction.contact or constraint is None:
+            continue
+        axes = {d.name: d.symbol for d in mech.dofs if d.body == friction.body}
+        normal = {
+            axis: sympy.diff(constraint.gap, axes[name]) if (name := f"{axis}_{friction.body}") in axes else 0
+            for axis, _ in friction.contact
+        }
+        facing = sympy.Add(*(offset * normal[axis] for axis, offset in friction.contact))
+        values = [complex(sympy.N(facing.subs(place).subs(point), 15)).real for point in points]
+        if not values or not all(v > 0 for v in values):
+            continue
+        # mirrored across the surface's tangent: the point on the surface's side (unit normal: a clearance)
+        mirrored = {a: tidy.simplify((o - 2 * facing * normal[a]).subs(place)) for a, o in friction.contact}
+        written = friction_path(model, index)
+        raise DerivationError(
+            f"friction on {friction.body} at {friction.constraint!r}: its contact point {_point(dict(friction.contact))} "
+            f"lies on the far side of {friction.body}'s centre from the surface (the gap "
+            f"{typed_text(constraint.gap)} grows towards it), so the friction's torque would turn "
+            f"{friction.body} the wrong way. The contact is where {friction.body} touches the surface, on its side "
+            f"of the centre: {_point(mirrored)}",
+            path=(*written, "contact") if written[0] == "friction" else written,
+        )
+
+
+def _point(offsets: dict[str, sympy.Expr]) -> str:
+    return "{" + ", ".join(f"{axis}: {typed_text(offset)}" for axis, offset in offsets.items()) + "}"

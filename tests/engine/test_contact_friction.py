@@ -146,6 +146,18 @@ def test_a_ball_launched_backwards_against_the_assumed_slip_is_refused_at_fricti
     assert "slides towards decreasing x" in caught.value.message
 
 
+def test_a_contact_point_on_the_far_side_from_the_surface_is_refused_with_the_near_one() -> None:
+    # at the top of the ball, friction's torque turns it backwards: it would end its skid rolling forward
+    # at 5 v/7 while spinning as if rolling backwards (phi' = +5 v/(7 R)), every method agreeing
+    data = skidding_ball()
+    data["friction"][0]["contact"] = {"y": "R"}
+    with pytest.raises(DerivationError) as caught:
+        derive(load_model(data, SYMBOLS))
+    assert caught.value.path == ("friction", 0, "contact")
+    assert "lies on the far side of ball's centre from the surface" in caught.value.message
+    assert caught.value.message.endswith("{y: -R}")
+
+
 def _slid(direction: str, velocity: str) -> dict[str, Any]:
     """A block sent along a rough slope, its coordinate growing `direction` the slope."""
     ramp = {"kind": "incline", "body": "block", "mass": "m", "angle": "theta", "coordinate": "s"}
