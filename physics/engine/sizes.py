@@ -27,7 +27,16 @@ from physics.errors import DerivationError, SpecError
 
 def check_sizes(model: Model) -> None:
     """Every mass, inertia, friction and drag coefficient and spring stiffness is not negative on the
-    domain; DerivationError at the first that is, where the author wrote it."""
+    domain, and no body is massless; DerivationError at the first that is, where the author wrote it."""
+    for body in model.bodies:
+        if body.mass == 0:  # its equation of motion is a balance of forces: no acceleration of its own
+            raise DerivationError(
+                f"{body.name}'s mass is 0: every body moves by Newton's law, and a massless point has no "
+                "acceleration of its own (the forces on it balance), so the equations of motion are singular. "
+                "Give it a mass, or leave it out: springs in series are one spring of stiffness k1*k2/(k1 + k2), "
+                "a light pulley under a body is the pulley element's `under`",
+                path=body_path(model, body.name, "mass"),
+            )
     for expr, what, meaning, path in _sizes(model):
         found = sign_on_domain(expr, model)
         if found.sign not in (Sign.NEGATIVE, Sign.MIXED):

@@ -1,6 +1,7 @@
 """Sizes typed with a sign (a mass, a moment of inertia, a friction or drag coefficient, a spring's
 stiffness) are refused where they were written, saying what they are; every method would read the same
-wrong number and agree (a cylinder "rolling" down at 2 g sin(theta) with a negative inertia). Kinetic
+wrong number and agree (a cylinder "rolling" down at 2 g sin(theta) with a negative inertia); a massless
+body has no equation of motion of its own, and is refused there too. Kinetic
 friction at a contact with another moving body must name it (`against`): it feels the reaction."""
 
 from __future__ import annotations
@@ -74,6 +75,19 @@ gravity: g
 quantities:
   omega: {angular_frequency: phi}
 """
+# springs in series, their junction a body of its own: massless, it had failed in the simulation
+# ("ZeroDivisionError: matrix is numerically singular"); with a mass it is a two-body chain
+IN_SERIES = """
+coordinates: [x, j]
+bodies:
+  block: {mass: m, position: {x: x}}
+  junction: {mass: MASS, position: {x: j}}
+elements:
+  inner: {kind: spring, between: [{x: 0}, junction], stiffness: k}
+  outer: {kind: spring, between: [junction, block], stiffness: k}
+quantities:
+  slow: {normal_frequency: 1}
+"""
 NAMES = "m R theta g mu b v k L0"
 
 # (model, its blanks filled, the refusal and its path, or None: the model derives)
@@ -113,6 +127,8 @@ CASES = [
         ("the length of pendulum 'string' -L0 is negative", ("elements", "string", "length")),
     ),
     (SWING, {"LENGTH": "L0"}, None),
+    (IN_SERIES, {"MASS": "0"}, ("junction's mass is 0", ("bodies", "junction", "mass"))),
+    (IN_SERIES, {"MASS": "m"}, None),
 ]
 
 
