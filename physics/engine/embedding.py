@@ -6,6 +6,10 @@ masses. A rigid target (a body with an angle) may be struck away from its centre
 to the body there by two bilateral constraints, so that every method sees the embedded mass where
 it is: its moment about the pivot, its weight's lever, and the impulses that hold it. An impact's
 `points` (a ball bouncing off a rod's end) are checked here the same way (`point_fault`).
+
+A rigid target that turns must say where it is struck (`unplaced_fault`): struck at its end or at its
+centre, a hanging rod swings off at rates 3 m u/((M + 3 m) L) and 6 m u/((4 M + 3 m) L), and a model
+that left the point out had been struck at its centre without a word.
 """
 
 from __future__ import annotations
@@ -71,6 +75,17 @@ def joined(model: Model) -> Model:
         bodies=(*model.bodies, particle),
         constraints=(*model.constraints, *welds),
         cartesian=(*model.cartesian, *symbols.items()),
+    )
+
+
+def unplaced_fault(target: Body, coordinates: set[sympy.Symbol], field: str) -> str | None:
+    """Why a rigid target that the coordinates turn needs its struck point written (`field`), or None."""
+    if target.angle is None or not target.angle.free_symbols & coordinates:
+        return None
+    centre = ", ".join(f"{axis}: {typed_text(at)}" for axis, at in target.position)
+    return (
+        f"{target.name} turns (its angle is {typed_text(target.angle)}): where it is struck decides how it "
+        f"turns, so give {field}, fixed on it as its position is written (at its centre: {{{centre}}})"
     )
 
 

@@ -646,10 +646,13 @@ def _collision(
         )
     hit = Collision(projectile, mass, direction, target, at, reaches, point, speed)
     struck = next((b for b in bodies if b.name == target), None)
+    moving = {c.symbol for c in coordinates}
     if point and struck is not None:
-        fault = embedding.point_fault(dict(point), struck, {c.symbol for c in coordinates})
+        fault = embedding.point_fault(dict(point), struck, moving)
         if fault is not None:
             errors.add(fault, (*path, "point"))  # the quantities that use the collision stay found
+    elif struck is not None and (fault := embedding.unplaced_fault(struck, moving, "`point: {x, y}`")):
+        errors.add(fault, (*path, "point"))
     return hit
 
 
@@ -791,6 +794,14 @@ def _impact(
     if flip:  # written from the fixed partner to the body: kept from the moving body to the partner
         normal = tuple((axis, -component) for axis, component in normal)
     points = _impact_points(spec.get("points"), symbols, known, names, motion[0], errors)
+    written = spec.get("points")
+    placed = set(written) if isinstance(written, Mapping) else set()
+    moving = {c.symbol for c in motion[0]}
+    for name in names:
+        if name in known and name not in placed:
+            fault = embedding.unplaced_fault(known[name], moving, f"`points: {{{name}: {{x, y}}}}`")
+            if fault is not None:
+                errors.add(fault, (*path, "points"))
     for q in asked:
         where = ("quantities", q.name, q.kind.value)
         if q.kind is QuantityKind.KINETIC_ENERGY_LOST:

@@ -1,6 +1,7 @@
 """A projectile that sticks in a rigid body away from its centre of mass (a bullet in a hanging rod's
 end): every method counts the embedded mass where it is, the simulation couples the bullet at that
-point, and a point that is not fixed on the body, or is away from a particle, is refused."""
+point, and a point that is not fixed on the body, or is away from a particle, is refused, as is a target
+that turns struck with no point written."""
 
 from __future__ import annotations
 
@@ -68,9 +69,13 @@ def test_a_bullet_in_a_rod_counts_its_moment_about_the_pivot_where_it_sticks(
     assert result.simulation["lost"].max_relative_error < 1e-3
 
 
-def test_without_a_point_the_bullet_sticks_at_the_centre_of_mass() -> None:
-    result = uncached(load_model(rod(""), TABLE))
-    assert sympy.simplify(result.quantities["speed"] - struck_at(L / 2)[0]) == 0
+def test_without_a_point_a_turning_target_is_refused_saying_where_its_centre_is() -> None:
+    # it had stuck at the centre of mass without a word: the lower end's speed is another
+    with pytest.raises(SpecErrors, match="rod turns") as refused:
+        load_model(rod(""), TABLE)
+    [error] = refused.value.errors
+    assert error.path == ("collision", "point")
+    assert "at its centre: {x: L*sin(phi)/2, y: -L*cos(phi)/2}" in error.message
 
 
 def test_newtons_method_balances_the_impulses_on_the_rod_and_on_the_bullet_in_it() -> None:

@@ -83,12 +83,14 @@ def test_the_struck_point_turns_the_rigid_body_by_the_impulses_moment(
         assert result.simulation[name].max_relative_error < 1e-3
 
 
-def test_struck_at_its_centre_the_rod_is_struck_where_no_point_is_given() -> None:
-    centre = uncached(
-        load_model(yaml.safe_load(HANGING.replace("POINT", '{x: "L*sin(phi)/2", y: "-L*cos(phi)/2"}')), TABLE)
-    )
-    plain = uncached(load_model(yaml.safe_load(HANGING.replace(", points: {rod: POINT}", "")), TABLE))
-    assert sympy.simplify(centre.quantities["spin"] - plain.quantities["spin"]) == 0
+def test_a_turning_rigid_body_struck_without_its_point_is_refused_saying_its_centre() -> None:
+    # it had been struck at its centre without a word: spin 6 m u (1 + e)/((4 M + 3 m) L), not the end's
+    with pytest.raises(SpecErrors) as caught:
+        load_model(yaml.safe_load(HANGING.replace(", points: {rod: POINT}", "")), TABLE)
+    [fault] = caught.value.errors
+    assert fault.path == ("impact", "points")
+    assert "rod turns" in fault.message
+    assert "at its centre: {x: L*sin(phi)/2, y: -L*cos(phi)/2}" in fault.message
 
 
 @pytest.mark.parametrize(
