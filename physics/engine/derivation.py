@@ -17,6 +17,7 @@ from physics.engine.conservation import ConservationMethod
 from physics.engine.contact_friction import check_contact_sides, check_state_slips
 from physics.engine.contacts import check_contact_signs
 from physics.engine.dalembert import DAlembertMethod
+from physics.engine.degrees import check_angles_in_radians
 from physics.engine.frames import FramesMethod
 from physics.engine.grips import check_rolling_grips
 from physics.engine.lagrange import LagrangeMethod
@@ -91,6 +92,7 @@ def _derive_model(model: Model) -> Derivation:
     check_sizes(model)  # before the consistency: a pendulum of length -L violates its own string
     check_consistency(model, mech)
     check_gravity(model)
+    check_angles_in_radians(model)  # before the range: 30 (degrees meant) is outside [0, pi/2] for that cause
     check_state_in_range(model)
     check_friction_reactions(model)
     check_state_slips(model, mech)
