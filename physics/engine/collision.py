@@ -21,6 +21,7 @@ from physics.engine.mechanics import Mechanics, cartesian_subscript, rates_givin
 from physics.engine.model import Model, Quantity, QuantityKind
 from physics.engine.quantity_table import derives
 from physics.engine.roots import admissible
+from physics.engine.signs import Sign, sign_on_domain
 from physics.errors import DerivationError
 
 if TYPE_CHECKING:
@@ -124,12 +125,39 @@ def _projectile_speed(
     return tidy.simplify(roots[0])
 
 
-def by_conservation(model: Model, quantity: Quantity, steps: list[tuple[str, str]]) -> sympy.Expr:
+def check_heading(model: Model) -> None:
+    """The blow drives the merged body towards where `reaches` says it stops: a coordinate that must
+    grow (or fall) to get there moves that way just after. A projectile fired the other way had been
+    taken to stop at `reaches` all the same (the speed squared, every method agreeing), refused only by
+    a simulation that "never turned back"."""
+    hit = model.collision
+    if hit is None or not hit.reaches:
+        return
     after = merged(model)
     mech = Mechanics(after)
     at, reaches = event_points(model)
+    equations, _ = _momentum_equations(model, mech, at)
+    velocities = solve_linear(equations, list(mech.qd), "momentum across the collision")
+    for c in model.coordinates:
+        ahead = sign_on_domain(tidy.simplify(reaches[c.symbol] - at[c.symbol]), model).sign
+        heading = sign_on_domain(tidy.simplify(velocities[c.velocity].subs(SPEED, 1)), model).sign
+        if {ahead, heading} == {Sign.POSITIVE, Sign.NEGATIVE}:
+            way = "decreasing" if heading is Sign.NEGATIVE else "increasing"
+            raise DerivationError(
+                f"the projectile drives {c.name} towards {way} values (just after the blow "
+                f"{c.name}_dot = {typed_text(tidy.simplify(velocities[c.velocity]))}, v the projectile's speed), but `reaches` puts "
+                f"{c.name} at {typed_text(reaches[c.symbol])}, the other way from {typed_text(at[c.symbol])}: "
+                "check the projectile's direction, or which side `reaches` is on",
+                path=("collision", "direction"),
+            )
+
+
+def _momentum_equations(
+    model: Model, mech: Mechanics, at: dict[sympy.Symbol, sympy.Expr]
+) -> tuple[list[sympy.Expr], list[sympy.Expr]]:
+    """M q' = p for the merged body just after the blow, p the projectile's momentum projected on each
+    coordinate's motion of the point it strikes; (the equations, p)."""
     momentum, point = _momentum(model), embedding.struck(model)
-    # the projectile's momentum projected on each coordinate's motion of the point it strikes
     brought = [
         sympy.Add(
             *(p * sympy.diff(point.get(axis, sympy.Integer(0)), q) for axis, p in momentum.items())
@@ -141,6 +169,14 @@ def by_conservation(model: Model, quantity: Quantity, steps: list[tuple[str, str
         sympy.Add(*(mass[i, j] * mech.qd[j] for j in range(len(mech.q)))) - brought[i]
         for i in range(len(mech.q))
     ]
+    return equations, brought
+
+
+def by_conservation(model: Model, quantity: Quantity, steps: list[tuple[str, str]]) -> sympy.Expr:
+    after = merged(model)
+    mech = Mechanics(after)
+    at, reaches = event_points(model)
+    equations, brought = _momentum_equations(model, mech, at)
     steps.append(
         (
             "Generalized momentum across the impulse",

@@ -13,6 +13,7 @@ from physics.engine import bounces, evaluated_at, released, scenarios, tidy
 from physics.engine.along_the_way import check_along_the_way
 from physics.engine.checks import physical_checks
 from physics.engine.clearances import check_clearances
+from physics.engine.collision import check_heading
 from physics.engine.conservation import ConservationMethod
 from physics.engine.contact_friction import check_contact_sides, check_state_slips
 from physics.engine.contacts import check_contact_signs
@@ -100,6 +101,7 @@ def _derive_model(model: Model) -> Derivation:
     check_pivot_inertias(model)
     check_clearances(model, mech)
     check_contact_sides(model, mech)  # after the clearances: a unit normal mirrors the contact
+    check_heading(model)
     methods = [cls(model, mech) for cls in _methods()]
     answers: dict[str, dict[str, sympy.Expr]] = {q.name: {} for q in model.quantities}
     stopped: dict[str, dict[str, str]] = {q.name: {} for q in model.quantities}  # why a method gave none
