@@ -16,7 +16,7 @@ from physics.engine.mechanics import Mechanics
 from physics.engine.model import Model, Quantity
 from physics.engine.proof import domain_points
 from physics.engine.results import MethodReport, Step, StepKind
-from physics.engine.roots import admissible, declared_range
+from physics.engine.roots import CHOOSE, admissible, declared_range
 from physics.engine.settle import plain_angle, settle
 from physics.engine.signs import Sign, sign_on_domain
 from physics.engine.supports import driven
@@ -254,7 +254,7 @@ class Method(ABC):
         if len(roots) != 1:
             raise DerivationError(
                 f"{self.title}: {name}: expected one value of {parameter} {_declared(parameter, self.model)}, "
-                f"found {typed_text(roots)} among the roots {typed_text(found)}",
+                f"found {typed_text(roots)} among the roots {typed_text(found)}" + CHOOSE.format(parameter),
                 quantity=name,
             )
         self.step(

@@ -29,6 +29,7 @@ from physics.engine.mechanics import Mechanics, time_derivative
 from physics.engine.model import SLIP_KINDS, Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
 from physics.engine.quantity_table import derives
+from physics.engine.roots import CHOOSE, chosen_by_positives
 from physics.engine.settle import plain_angle
 from physics.errors import DerivationError
 
@@ -115,10 +116,12 @@ def slipping_limit(method: Method, quantity: Quantity) -> sympy.Expr:
                 roots.append(tidy.simplify(root))
     roots = list(dict.fromkeys(roots))
     inside = [plain_angle(r, method.model) for r in roots if _in_parameter_range(r, parameter, method.model)]
+    inside = chosen_by_positives(inside, parameter, method.model)
     if len(inside) != 1:
         raise DerivationError(
             f"{method.title}: {quantity.name}: expected one value of {parameter} in its declared range at "
-            f"which |f| = {typed_text(mu)} N, found {typed_text(inside)} among {typed_text(roots)}",
+            f"which |f| = {typed_text(mu)} N, found {typed_text(inside)} among {typed_text(roots)}"
+            + (CHOOSE.format(parameter) if len(inside) > 1 else ""),
             quantity=quantity.name,
         )
     method.step(

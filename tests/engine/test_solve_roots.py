@@ -116,3 +116,44 @@ def test_a_solve_with_no_admissible_root_says_plainly_why() -> None:
     assert "no value of v (positive) makes the acceleration of r vanish" in caught.value.message
     assert "(G*M + R*v^2)/R^2, positive on the whole domain, whatever v is" in caught.value.message
     assert "among the roots" not in caught.value.message
+
+
+# A car held on a banked curve by static friction at its limit: slipping down below the least speed,
+# up above the greatest; both roots are real and positive, and only an inequality separates them
+BANKED = """
+coordinates: []
+bodies:
+  car: {mass: m, position: {x: R, y: 0}}
+gravity: g
+constraints:
+  bank: {kind: surface, gap: "-(x_car - R)*sin(theta) + y_car*cos(theta)"}
+  grip: {kind: other, gap: "(x_car - R)*cos(theta) + y_car*sin(theta)"}
+elements:
+  frame: {kind: rotating, rate: v/R, bodies: [car]}
+domain:
+  ranges: {theta: ["0", "pi/2"]}
+  positive: ["1 - mu_s*tan(theta)", "tan(theta) - mu_s", SIDE]
+quantities:
+  limit: {slipping: v, friction: grip, normal: bank, coefficient: mu_s}
+"""
+R, v, mu_s = (sympy.Symbol(n, positive=True) for n in ("R", "v", "mu_s"))
+sin, cos = sympy.sin(theta), sympy.cos(theta)
+SIDES = [
+    pytest.param('"g*R*tan(theta) - v^2"', R * g * (sin - mu_s * cos) / (cos + mu_s * sin), id="least-speed"),
+    pytest.param(
+        '"v^2 - g*R*tan(theta)"', R * g * (sin + mu_s * cos) / (cos - mu_s * sin), id="greatest-speed"
+    ),
+]
+
+
+@pytest.mark.parametrize(("side", "squared"), SIDES)
+def test_an_inequality_under_domain_positive_chooses_between_roots(side: str, squared: sympy.Expr) -> None:
+    table = {**SYMBOLS, "R": R, "v": v, "mu_s": mu_s}
+    found = uncached(load_model(yaml.safe_load(BANKED.replace("SIDE", side)), table)).quantities["limit"]
+    assert sympy.simplify(found**2 - squared) == 0
+
+
+def test_roots_no_declaration_separates_are_refused_saying_how_to_choose() -> None:
+    table = {**SYMBOLS, "R": R, "v": v, "mu_s": mu_s}
+    with pytest.raises(DerivationError, match="say which one the problem means"):
+        uncached(load_model(yaml.safe_load(BANKED.replace(", SIDE", "")), table))
