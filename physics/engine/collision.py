@@ -233,7 +233,7 @@ def _nonconservative_work(
             f"the force along {q} after the collision ({typed_text(generalized)}) depends on the speed: "
             "its work needs the motion itself"
         )
-    work = tidy.simplify(sympy.integrate(generalized, (q, at[q], reaches[q])))
+    work = tidy.simplify(tidy.integrate(generalized, (q, at[q], reaches[q])))
     steps.append(
         (
             "Work of friction and the other non-conservative forces until it stops",
@@ -333,8 +333,7 @@ def by_newton(model: Model, quantity: Quantity, steps: list[tuple[str, str]]) ->
         )
     )
     work = tidy.simplify(
-        sympy.integrate(force, (q, at[q], reaches[q]))
-        + _nonconservative_work(after, mech, at, reaches, steps)
+        tidy.integrate(force, (q, at[q], reaches[q])) + _nonconservative_work(after, mech, at, reaches, steps)
     )
     steps.append(
         (

@@ -29,6 +29,15 @@ _factored: dict[sympy.Basic, sympy.Basic] = {}  # by sympy's factor inside trigs
 _solved: dict[tuple[sympy.Basic, sympy.Symbol], list[sympy.Expr]] = {}
 
 
+def integrate(expr: sympy.Expr, limits: tuple[sympy.Symbol, sympy.Expr, sympy.Expr]) -> sympy.Expr:
+    """`sympy.integrate(expr, limits)`, first without the heuristic Risch algorithm (`heurisch`), sympy's
+    last resort, which alone may take minutes on what its table and substitution rules integrate at once
+    (a spring pulling across a rough slope: friction's work through the square root of its length, in
+    asinh, minutes against seconds); with it only where they leave an integral."""
+    found = sympy.integrate(expr, limits, heurisch=False)
+    return found if not found.has(sympy.Integral) else sympy.integrate(expr, limits)
+
+
 def simplify(expr: sympy.Expr) -> sympy.Expr:
     """`sympy.simplify(expr)`, from memory when this derivation has simplified expr already."""
     if not isinstance(expr, sympy.Basic):  # a mutable Matrix cannot be a key

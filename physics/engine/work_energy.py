@@ -203,7 +203,7 @@ def by_energy(method: Method, trip: Journey) -> sympy.Expr:
                 f"the non-conservative force along {c.name} ({typed_text(generalized)}) depends on the speed along the way "
                 "(a normal force on a curve, drag): its work needs the motion itself"
             )
-        work = tidy.simplify(sympy.integrate(generalized, (q, trip.start, trip.end)))
+        work = tidy.simplify(tidy.integrate(generalized, (q, trip.start, trip.end)))
         if work.has(sympy.Integral):
             raise NotApplicable(f"could not integrate the work of {typed_text(generalized)} along {c.name}")
         method.step(
@@ -277,9 +277,9 @@ def by_integration(method: Method, trip: Journey) -> sympy.Expr:
         )
     t = sympy.Dummy("t", real=True)
     growth = (
-        sympy.integrate(2 * quadratic.subs(q, t), (t, trip.start, q)) if quadratic != 0 else sympy.Integer(0)
+        tidy.integrate(2 * quadratic.subs(q, t), (t, trip.start, q)) if quadratic != 0 else sympy.Integer(0)
     )
-    driven = sympy.integrate(sympy.expand(2 * constant * sympy.exp(-growth)), (q, trip.start, trip.end))
+    driven = tidy.integrate(sympy.expand(2 * constant * sympy.exp(-growth)), (q, trip.start, trip.end))
     # simplified once, at the end: simplify on the integrands costs more than the integration
     square = tidy.simplify(sympy.exp(growth.subs(q, trip.end)) * (trip.velocity**2 + driven))
     if square.has(sympy.Integral):
