@@ -25,7 +25,7 @@ from typing import Any, TypeVar
 from app.db.errors import ProblemExists, ProblemNotFound
 from app.db.problems import document_hash
 from app.db.records import ProblemRecord
-from app.derivation import DerivationFailed, DerivationPool, unpack
+from app.derivation import DerivationFailed, DerivationPool, DerivationRefused, unpack
 from app.errors import GraderFault, Unavailable
 from app.grading.processes import PoolError
 from app.shipped_bank import ShippedBank, load_shipped, vouched_documents
@@ -221,6 +221,8 @@ class Catalog:
         self._sealed: dict[str, bytes] = {}  # verified stored compilations not opened yet, by store key
         self._deriver = deriver or DerivationPool()
         self._shipped = shipped
+        # Stored versions the running engine refuses (vetted by older code), by (id, version): why.
+        self._refused: dict[tuple[str, int], str] = {}
 
     def sync_builtin(self) -> list[ProblemRecord]:
         """Store the built-in bank: unchanged files keep their version, edited ones get a new one.
@@ -346,6 +348,10 @@ class Catalog:
                 record = pending.pop(future)
                 try:
                     payload = future.result()
+                except DerivationRefused as error:
+                    self._note_refused(record, error)
+                    failed.add(record.id)
+                    continue
                 except Exception as error:  # one broken problem must not keep the others cold
                     if not self._closing.is_set():
                         log.error(
@@ -446,6 +452,12 @@ class Catalog:
             raise Unavailable(
                 "The problem is being prepared after a fault; try again in a moment.", retry_after=2
             ) from error
+        except DerivationRefused as error:
+            self._note_refused(record, error)
+            raise GraderFault(
+                "This problem cannot be graded by this version of physcheck: its model is refused now "
+                "(its author can see why on the problem's page). Nothing was recorded."
+            ) from error
         except DerivationFailed as error:
             log.error("could not derive problem %r version %d: %s", record.id, record.version, error)
             raise GraderFault(
@@ -456,6 +468,26 @@ class Catalog:
         if found is None:
             raise GraderFault("This problem could not be prepared for grading; it has been logged.")
         return found
+
+    def refusal(self, record: ProblemRecord) -> tuple[str, ...] | None:
+        """Why the running engine refuses this stored version (each fault at its path), if it does."""
+        with self._lock:
+            why = self._refused.get((record.id, record.version))
+        return None if why is None else tuple(why.splitlines())
+
+    def _note_refused(self, record: ProblemRecord, error: DerivationRefused) -> None:
+        """Kept for the author's pages; logged once per version (a student's request for it is a 500)."""
+        with self._lock:
+            known = (record.id, record.version) in self._refused
+            self._refused[(record.id, record.version)] = str(error)
+        if not known and not self._closing.is_set():
+            log.error(
+                "problem %r version %d is refused by this code, which it does not derive under "
+                "(vetted by older code, its author must edit it): %s",
+                record.id,
+                record.version,
+                "; ".join(str(error).splitlines()),
+            )
 
     def _opened(self, record: ProblemRecord) -> CompiledProblem | None:
         """A payload found sealed at warm-up, unpickled now (each is opened once)."""

@@ -25,6 +25,7 @@ from app.grading import forkserver
 from app.grading.processes import PoolUnavailable, WorkerPool
 from app.grading.worker import limit_memory
 from problems.compiled import CompiledProblem, compile_problem
+from problems.errors import ProblemInvalid
 from problems.loader import parse_problem
 
 # A derivation leaves sympy's caches behind: a fresh worker from the clean fork server after this many.
@@ -36,6 +37,12 @@ REMEMBERED = 256
 
 class DerivationFailed(Exception):
     """The document did not derive (its traceback's text, or why the worker stopped)."""
+
+
+class DerivationRefused(DerivationFailed):
+    """The running engine refuses the document's model or parts, though it was vetted when stored (by
+    older code: the engine now refuses what it once verified, such as a period at a wide swing). The
+    message has one line per fault, at its path, as an upload's refusal lists them for the author."""
 
 
 class DerivationTimedOut(DerivationFailed):
@@ -66,6 +73,10 @@ def derived_payload(document: dict[str, Any]) -> bytes:
     try:
         doc = parse_problem(document, "json", check_meaning=False)
         return pack(compile_problem(doc).prepare())
+    except ProblemInvalid as error:
+        raise DerivationRefused(
+            "\n".join(f"{path}: {message}" if path else message for path, message in error.errors)
+        ) from None
     except MemoryError:
         raise DerivationFailed("deriving ran out of memory (the workers' memory limit)") from None
     except Exception:

@@ -379,15 +379,20 @@ async def _save_builder(
         spec, picked, errors = _read_builder(form, course)
         colleagues = access.colleagues(services.stores, who.principal)
         shared = services.stores.courses.shared_problems()
+        assigned = record.problems if record is not None else ()
         for problem_id in picked:
             try:
-                usable = access.may_use_problem(
-                    services.catalog.get(problem_id), who.principal, colleagues, shared
-                )
+                found = services.catalog.get(problem_id)
             except ProblemNotFound:
-                usable = False
-            if not usable:
                 errors.append(f"There is no problem {problem_id!r} of yours.")
+                continue
+            if not access.may_use_problem(found, who.principal, colleagues, shared):
+                errors.append(f"There is no problem {problem_id!r} of yours.")
+            elif problem_id not in assigned and services.catalog.refusal(found) is not None:
+                errors.append(
+                    f"{problem_id!r} no longer verifies under this version of physcheck, so students could "
+                    "not answer it: edit it first (its page says why)."
+                )
         if spec is None or errors:
             now = request.app.state.lti.clock()
             values = _builder_context(services, who, course, record, "", now, picked, fields_typed(form))

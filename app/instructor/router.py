@@ -38,7 +38,7 @@ from app.db.errors import ProblemExists
 from app.db.errors import ProblemNotFound as StoredProblemNotFound
 from app.db.records import ProblemRecord, Role
 from app.deps import ServicesDep, budget_wait
-from app.errors import AppError, Busy
+from app.errors import AppError, Busy, GraderFault
 from app.instructor import session as auth
 from app.instructor.described import Described, MistakeInfo, describe
 from app.instructor.findings import Finding, part_findings
@@ -333,6 +333,7 @@ async def problems(request: Request, services: ServicesDep, who: Visitor, q: str
                     "owner": "built-in"
                     if record.builtin
                     else ("yours" if str(record.owner_key_id) == who.principal.key_id else "uploaded"),
+                    "refused": services.catalog.refusal(record) is not None,
                 }
             )
         return sorted(rows, key=lambda row: (str(row["title"]).casefold(), row["id"]))
@@ -578,7 +579,15 @@ async def problem(
         catalog = services.catalog
         doc = catalog.document(record)
         variant = catalog.variant(record, whose)
-        compiled = catalog.compiled(record)
+        try:
+            compiled = catalog.compiled(record)
+        except GraderFault:
+            refused = catalog.refusal(record)
+            if refused is None:
+                raise
+            # Its author needs the page most now: what is refused, and the way to edit it.
+            statement = fill_statement(doc.statement, doc, variant)
+            return {"doc": doc, "record": record, "statement": statement, "refused": refused}
         try:
             figure = catalog.figure(problem_id, whose)
             forces = catalog.free_body_figures(problem_id, whose)
@@ -717,11 +726,17 @@ async def results(problem_id: str, request: Request, services: ServicesDep, who:
         doc = services.catalog.document(record)
         part_ids = [p.id for p in doc.parts]
         found = services.stores.submissions.class_results(problem_id, part_ids)
-        described = describe(services.catalog.compiled(record))
+        try:
+            described = describe(services.catalog.compiled(record))
+        except GraderFault:
+            if services.catalog.refusal(record) is None:
+                raise
+            described = None  # the answers given stay readable; mistakes are named by their feedback
         return {"doc": doc, "parts": found, "described": described}
 
     data = await run_in_threadpool(load)
-    mistakes = {m.feedback: m for info in data["described"].parts for m in info.mistakes}
+    described = data["described"]
+    mistakes = {m.feedback: m for info in described.parts for m in info.mistakes} if described else {}
     overview = bar_chart(
         "overview",
         "Students with a correct answer, per part",

@@ -8,6 +8,7 @@ their own standing on each assignment.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from datetime import datetime
 from typing import Annotated
 
@@ -356,8 +357,12 @@ def _spec(body: AssignmentIn) -> AssignmentSpec:
     )
 
 
-def _check_problems(services: Services, principal: Principal, problems: list[str]) -> None:
-    """Every problem exists and is the caller's to assign (built-in, shared, or their courses')."""
+def _check_problems(
+    services: Services, principal: Principal, problems: list[str], assigned: Sequence[str] = ()
+) -> None:
+    """Every problem exists and is the caller's to assign (built-in, shared, or their courses'), and
+    none but those `assigned` already is one this code refuses (stored under older code): its students
+    could not answer it."""
     colleagues = access.colleagues(services.stores, principal)
     shared = services.stores.courses.shared_problems()
     bad = []
@@ -369,6 +374,14 @@ def _check_problems(services: Services, principal: Principal, problems: list[str
         if record is None or not access.may_use_problem(record, principal, colleagues, shared):
             bad.append(
                 {"path": f"problems.{index}", "message": f"there is no problem {problem_id!r} of yours"}
+            )
+        elif problem_id not in assigned and services.catalog.refusal(record) is not None:
+            bad.append(
+                {
+                    "path": f"problems.{index}",
+                    "message": f"{problem_id!r} no longer verifies under this version of physcheck, so its "
+                    "students could not answer it: edit it first (its page says why)",
+                }
             )
     if bad:
         raise UnusableProblem("Some problems cannot be assigned.", bad)
@@ -472,8 +485,8 @@ async def update_assignment(
     principal: Instructor,
 ) -> AssignmentOut:
     def save() -> AssignmentOut:
-        _assignment_as_staff(services, principal, assignment_id, instructor=True)
-        _check_problems(services, principal, body.problems)
+        current = _assignment_as_staff(services, principal, assignment_id, instructor=True)
+        _check_problems(services, principal, body.problems, current.problems)
         made = services.stores.courses.update_assignment(assignment_id, _spec(body))
         return assignment_out(made, _points(services, made))
 

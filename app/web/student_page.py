@@ -190,8 +190,21 @@ def _solution_released(request: Request, problem_id: str, loaded: Loaded) -> boo
     return solution_release(doc, loaded.work, solution_within(loaded)).released
 
 
+def _engine_refuses(request: Request, problem_id: str) -> bool:
+    """Whether the running engine refuses the problem's stored version (vetted by older code): its
+    checks would fail, so the page says so before anyone types an answer."""
+    services = getattr(request.app.state, "services", None)
+    if services is None:
+        return False
+    try:
+        return services.catalog.refusal(services.catalog.get(problem_id)) is not None
+    except LookupError:
+        return False
+
+
 def _content_context(request: Request, loaded: Loaded, problem_id: str, student: str) -> dict[str, Any]:
     return {
+        "refused": _engine_refuses(request, problem_id),
         "solution_released": _solution_released(request, problem_id, loaded),
         "problem_id": problem_id,
         "view": loaded.view,

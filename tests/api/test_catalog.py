@@ -210,5 +210,5 @@ def test_a_problem_that_fails_to_derive_side_by_side_is_logged_and_the_others_ar
         catalog.warm_up()
     assert catalog.warm.is_set()
     [logged] = [r.getMessage() for r in caplog.records]
-    assert logged.startswith("could not compile problem 'broken-atwood' version 1: ") and "zeta" in logged
+    assert logged.startswith("problem 'broken-atwood' version 1 is refused by this code") and "zeta" in logged
     assert grades_its_reference(catalog)
