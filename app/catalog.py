@@ -446,7 +446,7 @@ class Catalog:
         """Derived in a worker process, stored, opened. 503 when no worker can derive it now (a fault, a
         shutdown), 500 when it does not derive: it was vetted, so the code changed under it."""
         try:
-            payload = self._deriver.submit(record.document).result()
+            payload = self._deriver.submit(record.document, urgent=True).result()
         except PoolError as error:
             log.error("could not derive problem %r version %d: %r", record.id, record.version, error)
             raise Unavailable(

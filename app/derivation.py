@@ -112,6 +112,7 @@ class DerivationPool:
         self._pool: WorkerPool | None = None
         self._closed = False
         self._pending: dict[str, Future[bytes]] = {}  # by document hash: one derivation per document
+        self._scheduled: dict[str, Future[Any]] = {}  # the pool's own futures of those, to hurry one
         # Documents that failed (but for a timeout), by hash: the same code fails them again, so each
         # request for one is answered at once rather than holding a worker for as long again.
         self._failed: OrderedDict[str, DerivationFailed] = OrderedDict()
@@ -120,10 +121,12 @@ class DerivationPool:
     def workers(self) -> int:
         return self._workers
 
-    def submit(self, document: Mapping[str, Any]) -> Future[bytes]:
+    def submit(self, document: Mapping[str, Any], *, urgent: bool = False) -> Future[bytes]:
         """The document's payload, derived in a worker (or remembered). The future raises
         DerivationFailed (the document's doing, or its time limit), or PoolError / PoolUnavailable
-        when no worker could run it (a fault or a shutdown: not the document's doing)."""
+        when no worker could run it (a fault or a shutdown: not the document's doing). `urgent`: a
+        request waits for it, so it goes before the derivations queued for no one (a first start's
+        bank, derived in order, would otherwise keep a page of its last problem waiting for them all)."""
         # Here, not at the top: the workers import this module for their task, and need no SQLAlchemy.
         from app.db.problems import document_hash
 
@@ -137,20 +140,23 @@ class DerivationPool:
         with self._lock:
             pending = self._pending.get(key)
             if pending is not None:
+                scheduled = self._scheduled.get(key)
+                if urgent and scheduled is not None and self._pool is not None:
+                    self._pool.hurry(scheduled)
                 return pending
             failed = self._failed.get(key)
             if failed is not None:
                 refused: Future[bytes] = Future()
                 refused.set_exception(failed)
                 return refused
-            future = self._schedule(dict(document))
+            future, self._scheduled[key] = self._schedule(dict(document))
             self._pending[key] = future
         future.add_done_callback(lambda finished: self._settled(key, finished))
         return future
 
-    def _schedule(self, document: dict[str, Any]) -> Future[bytes]:
-        """Send one derivation to a worker (the lock held); the pool's own future, but for a timeout,
-        which is the document's: DerivationFailed."""
+    def _schedule(self, document: dict[str, Any]) -> tuple[Future[bytes], Future[Any]]:
+        """Send one derivation to a worker (the lock held): the pool's own future's outcome, but for a
+        timeout, which is the document's (DerivationFailed); and the pool's future, to hurry it."""
         pool = self._started()
         outer: Future[bytes] = Future()
         inner = pool.schedule(derived_payload, (document,), self._timeout)
@@ -165,7 +171,7 @@ class DerivationPool:
                 outer.set_result(finished.result())
 
         inner.add_done_callback(relay)
-        return outer
+        return outer, inner
 
     def _started(self) -> WorkerPool:
         """The pool, started on first use (the lock held; `close` does not take it, so that a shutdown
@@ -196,6 +202,7 @@ class DerivationPool:
         error = future.exception()
         with self._lock:
             self._pending.pop(key, None)
+            self._scheduled.pop(key, None)
             if isinstance(error, DerivationFailed) and not isinstance(error, DerivationTimedOut):
                 self._failed[key] = error
                 while len(self._failed) > REMEMBERED:

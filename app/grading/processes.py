@@ -301,6 +301,17 @@ class WorkerPool:
             self._queue.append(job)
             self._dispatch()
 
+    def hurry(self, future: Future[Any]) -> bool:
+        """Move `schedule`'s job for `future` to the front of the queue, if it is still waiting there
+        (someone waits for it now: a page asking for a problem the first start has not derived yet)."""
+        with self._lock:
+            job = next((job for job in self._queue if job.future is future), None)
+            if job is None:
+                return False
+            self._queue.remove(job)
+            self._queue.appendleft(job)
+            return True
+
     def close(self) -> None:
         """Stop the supervisor, kill the workers, and fail every job not answered yet."""
         with self._lock:

@@ -19,6 +19,7 @@ from app.derivation import DerivationPool, forget_derived
 from app.storage import sql_stores
 from physics.checking import check_answer
 from physics.verdict import Outcome
+from tests.derivations import count_derivations
 
 BANK = Path(__file__).resolve().parents[2] / "problems" / "bank"
 SECRET = "secret-for-the-test"
@@ -29,15 +30,7 @@ def compilations(monkeypatch) -> list[str]:
     """The ids of the problems the catalog has derived (rather than loaded), in order; none is
     remembered from earlier tests."""
     forget_derived()
-    compiled: list[str] = []
-    real = DerivationPool.submit
-
-    def counting(self, document):
-        compiled.append(document["id"])
-        return real(self, document)
-
-    monkeypatch.setattr(DerivationPool, "submit", counting)
-    yield compiled
+    yield count_derivations(monkeypatch)
     forget_derived()
 
 

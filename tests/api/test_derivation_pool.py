@@ -63,6 +63,22 @@ def test_a_document_that_fails_is_refused_again_without_a_worker(scheduled):
     assert scheduled == ["broken"]
 
 
+def test_a_derivation_someone_waits_for_goes_before_those_queued_for_no_one(scheduled):
+    pool = DerivationPool(workers=1, timeout=120)
+    finished: list[str] = []
+    try:
+        futures = {name: pool.submit(atwood(id=name)) for name in ("first", "second", "third", "last")}
+        for name, future in futures.items():
+            future.add_done_callback(lambda _, name=name: finished.append(name))
+        assert pool.submit(atwood(id="last"), urgent=True) is futures["last"]  # the same derivation
+        for future in futures.values():
+            future.result()
+    finally:
+        pool.close()
+    # "first" was running already; "last" was waiting behind the other two, and now goes before them.
+    assert finished == ["first", "last", "second", "third"]
+
+
 def test_a_derivation_past_its_time_limit_is_killed_and_tried_again_when_asked(scheduled):
     pool = DerivationPool(workers=1, timeout=0.001)  # far below any derivation
     try:

@@ -20,6 +20,7 @@ from app.shipped_bank import DamagedBank, build_bank, read_bank, write_bank
 from app.storage import sql_stores
 from physics.checking import check_answer
 from physics.verdict import Outcome
+from tests.derivations import count_derivations
 
 BANK = Path(__file__).resolve().parents[2] / "problems" / "bank"
 SECRET = "secret-for-the-test"
@@ -64,15 +65,7 @@ def meanings_checked(monkeypatch: pytest.MonkeyPatch) -> list[str]:
 def derivations(monkeypatch: pytest.MonkeyPatch) -> list[str]:
     """The ids of the documents a start sent to a derivation worker."""
     forget_derived()
-    sent: list[str] = []
-    real = DerivationPool.submit
-
-    def counting(self, document):
-        sent.append(document["id"])
-        return real(self, document)
-
-    monkeypatch.setattr(DerivationPool, "submit", counting)
-    yield sent
+    yield count_derivations(monkeypatch)
     forget_derived()
 
 

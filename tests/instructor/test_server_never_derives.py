@@ -11,7 +11,7 @@ import sys
 import pytest
 from fastapi.testclient import TestClient
 
-from app.derivation import DerivationPool
+from tests.derivations import count_derivations
 from tests.instructor.conftest import csrf_of, new_key, stores_of
 from tests.instructor.test_pages import upload_text
 
@@ -47,15 +47,7 @@ def derivations_here(monkeypatch: pytest.MonkeyPatch) -> list[str]:
 @pytest.fixture
 def sent_to_workers(monkeypatch: pytest.MonkeyPatch) -> list[str]:
     """The ids of the documents the catalog asked a derivation worker for."""
-    sent: list[str] = []
-    real = DerivationPool.submit
-
-    def counting(self, document):
-        sent.append(document["id"])
-        return real(self, document)
-
-    monkeypatch.setattr(DerivationPool, "submit", counting)
-    return sent
+    return count_derivations(monkeypatch)
 
 
 def test_an_upload_is_previewed_stored_graded_and_shown_without_deriving_in_the_server(
