@@ -223,6 +223,7 @@ class Catalog:
         self._shipped = shipped
         # Stored versions the running engine refuses (vetted by older code), by (id, version): why.
         self._refused: dict[tuple[str, int], str] = {}
+        self._deriving: tuple[int, int] | None = None  # a warm-up's derivations: (done, of)
 
     def sync_builtin(self) -> list[ProblemRecord]:
         """Store the built-in bank: unchanged files keep their version, edited ones get a new one.
@@ -327,6 +328,12 @@ class Catalog:
             log.info("loaded %s from the shipped bank", counted(len(cold) - len(left), "problem"))
         return left
 
+    @property
+    def deriving(self) -> tuple[int, int] | None:
+        """While the warm-up derives what is not stored: how many of how many are done (failed ones
+        too); None otherwise."""
+        return None if self.warm.is_set() else self._deriving
+
     def _derive_all(self, records: list[ProblemRecord]) -> set[str]:
         """Each record derived by the deriver, stored, and left sealed for the opening after `warm`;
         returns the ids of those that failed."""
@@ -346,6 +353,7 @@ class Catalog:
             done, _ = wait(pending, timeout=0.5, return_when=FIRST_COMPLETED)
             for future in done:
                 record = pending.pop(future)
+                self._deriving = (len(records) - len(pending), len(records))
                 try:
                     payload = future.result()
                 except DerivationRefused as error:

@@ -44,5 +44,7 @@ async def ready(services: ServicesDep) -> dict[str, str] | JSONResponse:
             headers={"Retry-After": "2"},
         )
     if not services.catalog.warm.is_set():
-        return JSONResponse(error_body("not_ready", "Still compiling the problems."), status_code=503)
+        progress = services.catalog.deriving
+        said = "" if progress is None else f" ({progress[0]} of {progress[1]} derived)"
+        return JSONResponse(error_body("not_ready", f"Still compiling the problems{said}."), status_code=503)
     return {"status": "ready"}

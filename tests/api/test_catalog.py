@@ -205,3 +205,14 @@ def test_a_problem_that_fails_to_derive_side_by_side_is_logged_and_the_others_ar
     [logged] = [r.getMessage() for r in caplog.records]
     assert logged.startswith("problem 'broken-atwood' version 1 is refused by this code") and "zeta" in logged
     assert grades_its_reference(catalog)
+
+
+def test_a_first_start_tells_how_many_problems_it_has_derived_until_it_is_warm(db, small_bank):
+    catalog = Catalog(sql_stores(db), SECRET, small_bank)
+    _started.append(catalog)
+    catalog.sync_builtin()
+    assert catalog.deriving is None  # nothing derived yet
+    assert catalog._derive_all(catalog.list()) == set()  # the warm-up's derivations, warm not set yet
+    assert catalog.deriving == (2, 2)
+    catalog.warm.set()
+    assert catalog.deriving is None
