@@ -237,15 +237,15 @@ class EnergyQuestion:
         return m.proportional, m.factor
 
     def _mixed_dimensions(self, expr: sympy.Expr) -> str | None:
-        """Why a wrong answer is no energy at all, where its terms have different dimensions (`g s sin θ`
-        beside `½ m ṡ²`: a mass left out); None where they agree or cannot be told. (A right answer may
-        be scaled, `L/m`, or hold a constant, as the equations of motion allow: this explains only.)"""
+        """Why an answer is no energy at all, where its terms have different dimensions (`g s sin θ`
+        beside `½ m ṡ²`: a mass left out; `m g` added to a right one, a force); None where they agree or
+        cannot be told. (A right answer may be scaled, `L/m`, as the equations of motion allow.)"""
         if self.dimensions is None:
             return None
         try:
             expression_dimension(expr, self.dimensions)
         except DimensionMismatch as mismatch:
-            return f"Your {ASKED_WORDS[self.asked]} {mismatch.message}: each of its terms must be an energy."
+            return f"{mismatch.message}: each of its terms must be an energy."
         except UnknownDimension:
             pass
         return None
@@ -254,6 +254,13 @@ class EnergyQuestion:
         found = self._values(expr)
         words = ASKED_WORDS[self.asked]
         right, factor = self._matches(found, self._target, fixed=not self._lagrangian)
+        mixed = self._mixed_dimensions(expr)
+        if right and mixed is not None:  # `L + m g`: a force added, which no derivative sees
+            return Judgement(
+                False,
+                Reason.WRONG_DIMENSION,
+                f"Your {words} has the model's derivatives, but it {mixed}",
+            )
         if right:
             if factor is not None and abs(factor - 1) <= 1e-9:
                 return Judgement(True, Reason.EQUIVALENT, "Correct.")
@@ -279,9 +286,8 @@ class EnergyQuestion:
                     f"Your {words} is {factor_text(factor)} times the model's: check its factors"
                     + (" (½ m v², ½ I ω²)." if self.asked is Asked.KINETIC else "."),
                 )
-        mixed = self._mixed_dimensions(expr)
         if mixed is not None:
-            return Judgement(False, Reason.WRONG_DIMENSION, mixed)
+            return Judgement(False, Reason.WRONG_DIMENSION, f"Your {words} {mixed}")
         return Judgement(False, Reason.WRONG_VALUE, self._what_differs(found))
 
     def _what_differs(self, found: _Values) -> str:

@@ -104,7 +104,7 @@ LAGRANGIAN_RIGHT = [
     ("spring", "m/2*ẋ^2 - k/2*x^2 + m g x"),
     ("spring", "m x'^2 - k x^2 + 2 m g x"),
     ("spring", "1/2 m x'^2 - 1/2 k (x - m g/k)^2"),  # V about the equilibrium: a constant apart
-    ("spring", "1/2 m (dx/dt)^2 - 1/2 k x^2 + m g x + 5 x x'"),
+    ("spring", "1/2 m (dx/dt)^2 - 1/2 k x^2 + m g x + 5 sqrt(k m) x x'"),  # d/dt of an energy times a time
     ("spring", "1/2 x'^2 - k/(2 m)*x^2 + g x"),  # L/m
     ("yoyo", "1/2 m d'^2 + 1/2 m q^2 (d'/r)^2 + m g d"),
     ("yoyo", "1/2 m (1 + q^2/r^2) d'^2 + m g d"),
@@ -173,7 +173,7 @@ KINETIC_RIGHT = [
     ),
     ("cart", "1/2 M X'^2 + 1/2 m (X'^2 + 2 L X' φ' cos φ + L^2 φ'^2)"),
     ("cart", "1/2 (M+m) (dX/dt)^2 + m L (dX/dt) (dφ/dt) cos φ + 1/2 m L^2 (dφ/dt)^2"),
-    ("cart", "1/2 M X'^2 + 1/2 m ((X' + L φ' cos φ)^2 + (L φ' sin(φ))^2) + m"),
+    ("cart", "1/2 M X'^2 + 1/2 m ((X' + L φ' cos φ)^2 + (L φ' sin(φ))^2) + m g L"),
     ("spring", "1/2 m x'^2"),
     ("spring", "m/2*ẋ^2"),
     ("spring", "m x'^2/2"),
@@ -243,12 +243,12 @@ POTENTIAL_RIGHT = [
     ("spring", "1/2 k x^2 - m g x"),
     ("spring", "1/2 k (x - m g/k)^2"),  # from the equilibrium
     ("spring", r"\frac{1}{2} k x^2 - m g x"),
-    ("spring", "k x^2/2 - m g x + 4"),
+    ("spring", "k x^2/2 - m g x + 4 m^2 g^2/k"),
     ("spring", "1/2 k x x - m g x"),
     ("spring", "x (k x/2 - m g)"),
     ("spring", "0.5 k x^2 - m g x"),
     ("yoyo", "-m g d"),
-    ("yoyo", "m g (10 - d)"),
+    ("yoyo", "m g (10 r - d)"),
     ("yoyo", "-g m d"),
     ("yoyo", "-d m g + m g r"),
     ("yoyo", "m g (r - d)"),
@@ -397,11 +397,37 @@ def test_a_wrong_answer_whose_terms_differ_in_dimension_is_told_so(
     ("system", "answer"),
     [
         ("spring", "1/2 x'^2 - k/(2 m)*x^2 + g x"),  # L/m: the same equations of motion
-        ("spring", "1/2 m x'^2 - 1/2 k x^2 + m g x + 4"),  # a constant, as a level of V
+        ("spring", "1/2 m x'^2 - 1/2 k x^2 + m g x + m^2 g^2/k"),  # a constant energy, as a level of V
     ],
 )
-def test_a_right_lagrangian_is_not_held_to_its_dimension(system: str, answer: str) -> None:
+def test_a_right_lagrangian_scaled_or_with_a_constant_energy_is_correct(system: str, answer: str) -> None:
     assert check("lagrangian", system, answer).outcome is Outcome.CORRECT
+
+
+CONSTANTS_NOT_ENERGIES = [
+    # (kind, system, the model's answer plus a constant that is no energy, what the feedback says)
+    ("lagrangian", "spring", "1/2 m x'^2 - 1/2 k x^2 + m g x + m g", "adds an energy to a force"),
+    ("lagrangian", "cart", "(M+m)/2*X'^2 + m L X' φ' cos φ + m L^2/2*φ'^2 + m g L cos φ + g L", "an energy"),
+    ("lagrangian", "spring", "1/2 m x'^2 - 1/2 k x^2 + m g x + 4", "a pure number"),
+    ("potential_energy", "spring", "k/2*x^2 - m g x + k", "a spring constant"),
+    ("potential_energy", "spring", "k x^2/2 - m g x + 4", "a pure number"),
+    ("potential_energy", "yoyo", "m g (10 - d)", "a pure number to a length"),  # a level 10, no unit
+    ("kinetic_energy", "cart", "1/2 M X'^2 + 1/2 m ((X' + L φ' cos φ)^2 + (L φ' sin(φ))^2) + m", "a mass"),
+]
+
+
+@pytest.mark.parametrize(
+    ("kind", "system", "answer", "said"),
+    CONSTANTS_NOT_ENERGIES,
+    ids=[f"{c[0]}-{c[2]}" for c in CONSTANTS_NOT_ENERGIES],
+)
+def test_a_right_answer_plus_a_constant_that_is_no_energy_is_incorrect(
+    kind: str, system: str, answer: str, said: str
+) -> None:
+    verdict = check(kind, system, answer)
+    assert verdict.outcome is Outcome.INCORRECT
+    assert verdict.reason is Reason.WRONG_DIMENSION
+    assert said in verdict.feedback and "the model's derivatives" in verdict.feedback, verdict.feedback
 
 
 def test_the_coordinates_dimensions_follow_from_the_models_energy() -> None:

@@ -370,11 +370,17 @@ class EnergyKind:
         )
         if self.asked is Asked.LAGRANGIAN:
             first = question.coordinates[0]
-            for label, form in (
-                ("doubled", 2 * question.expected),
-                ("plus a total time derivative", question.expected + first.symbol * first.velocity),
+            # d/dt(q²/2) is no energy: judged as equations of motion alone, without the dimension check
+            unchecked = dataclasses.replace(question, dimensions=None)
+            for label, form, judged in (
+                ("doubled", 2 * question.expected, question),
+                (
+                    "plus a total time derivative",
+                    question.expected + first.symbol * first.velocity,
+                    unchecked,
+                ),
             ):
-                judgement = question.judge(form)
+                judgement = judged.judge(form)
                 results.append(
                     CheckResult(
                         problem,
