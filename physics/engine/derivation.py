@@ -11,6 +11,7 @@ import sympy
 from physics.answer_text import typed_text
 from physics.engine import bounces, evaluated_at, released, scenarios, tidy
 from physics.engine.along_the_way import check_along_the_way
+from physics.engine.amplitude import check_amplitudes
 from physics.engine.checks import physical_checks
 from physics.engine.clearances import check_clearances
 from physics.engine.collision import check_heading
@@ -184,6 +185,7 @@ def _derive_model(model: Model) -> Derivation:
     check_magnitudes(model, quantities)
     lagrange = methods[0]
     assert isinstance(lagrange, LagrangeMethod)  # the first of _methods()
+    check_amplitudes(lagrange)
     contact_signs = check_contact_signs(model, lagrange, quantities)
     contact_signs |= check_along_the_way(model, lagrange, quantities)
     contact_signs |= released.check_released(model, lagrange)

@@ -13,6 +13,7 @@ import sympy
 from physics.answer_text import typed_text
 from physics.dimensions import Dimension
 from physics.engine import (
+    amplitude,
     bounces,
     embedding,
     evaluated_at,
@@ -1049,6 +1050,8 @@ def _quantity(
     optional = {"bounces"} if kind in bounces.FINAL_KINDS else set()
     if kind is QuantityKind.TURNING_POINT:  # how far the motion just after an impact goes (a squeeze)
         optional = {"after"}
+    if kind in amplitude.KINDS:
+        optional = {"amplitude"}
     _check_keys(spec, allowed | optional, allowed, path, errors)
     target = spec[kind.value]
     where: Path = (*path, kind.value)
@@ -1070,7 +1073,13 @@ def _quantity(
                 (*path, "after"),
             )
             return None
-        return Quantity(name, kind, str(target), after=after)
+        small = spec.get("amplitude") == "small"
+        if "amplitude" in spec and not small:
+            errors.add(
+                "`amplitude: small` says the problem asks for small oscillations", (*path, "amplitude")
+            )
+            return None
+        return Quantity(name, kind, str(target), after=after, small=small)
     if kind is QuantityKind.MECHANICAL_ENERGY:
         if target != "state":
             errors.add("the energy is the model's state's: write `mechanical_energy: state`", where)

@@ -244,6 +244,9 @@ class Quantity:
     bounces: sympy.Expr | None = (
         None  # with `after`: after this many bounces off the fixed partner (bounces.py)
     )
+    small: bool = (
+        False  # PERIOD, ANGULAR_FREQUENCY: `amplitude: small`, whatever the state's swing (amplitude.py)
+    )
 
 
 @dataclass(frozen=True)

@@ -34,7 +34,7 @@ domain:
   positive: ["R - r"]
 state: {theta: "pi/6"}
 quantities:
-  omega: {angular_frequency: theta}
+  omega: {angular_frequency: theta, amplitude: small}
   normal: {force: bowl}
 """
 
