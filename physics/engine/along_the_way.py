@@ -50,18 +50,18 @@ def check_along_the_way(model: Model, method: Method, quantities: Mapping[str, s
     unilateral = [c for c in model.acting(Action.UNILATERAL) if isinstance(c, Constraint)]
     shown: list[str] = []
     for quantity in model.quantities:
-        trip = _trip(method, quantity, quantities)
-        if trip is None or not unilateral:
+        journey = trip(method, quantity, quantities)
+        if journey is None or not unilateral:
             continue
         for constraint in unilateral:
-            if _holds_along(model, method, quantity, trip, constraint):
+            if _holds_along(model, method, quantity, journey, constraint):
                 shown.append(f"{constraint.name} ({quantity.name})")
     if not shown:
         return {}
     return {"contacts along the way": f"{', '.join(shown)}: held from the state to where each is taken"}
 
 
-def _trip(
+def trip(
     method: Method, quantity: Quantity, quantities: Mapping[str, sympy.Expr]
 ) -> work_energy.Journey | None:
     """The motion from the state to where the quantity is taken, or None for a quantity taken elsewhere

@@ -12,6 +12,7 @@ from physics.answer_text import typed_text
 from physics.engine import bounces, evaluated_at, released, scenarios, tidy
 from physics.engine.along_the_way import check_along_the_way
 from physics.engine.amplitude import check_amplitudes
+from physics.engine.buffers import check_buffers, check_buffers_placed
 from physics.engine.checks import physical_checks
 from physics.engine.clearances import check_clearances
 from physics.engine.collision import check_heading
@@ -105,6 +106,7 @@ def _derive_model(model: Model) -> Derivation:
     check_contact_sides(model, mech)  # after the clearances: a unit normal mirrors the contact
     check_heading(model)
     check_parting(model)
+    check_buffers_placed(model, mech)
     methods = [cls(model, mech) for cls in _methods()]
     answers: dict[str, dict[str, sympy.Expr]] = {q.name: {} for q in model.quantities}
     stopped: dict[str, dict[str, str]] = {q.name: {} for q in model.quantities}  # why a method gave none
@@ -188,6 +190,7 @@ def _derive_model(model: Model) -> Derivation:
     check_amplitudes(lagrange)
     contact_signs = check_contact_signs(model, lagrange, quantities)
     contact_signs |= check_along_the_way(model, lagrange, quantities)
+    contact_signs |= check_buffers(model, lagrange, quantities)
     contact_signs |= released.check_released(model, lagrange)
     # one compiled motion for every measure, from the equations Lagrange's method has formed
     simulator = Simulator(model, lagrange.equilibrium, quantities, lagrange)

@@ -572,7 +572,11 @@ def _potentials(
         path: Path = ("potentials", index)
         spec = _mapping(entry, path, errors)
         _check_keys(
-            spec, {"bodies", "anchor", "energy", "distance"}, {"bodies", "energy", "distance"}, path, errors
+            spec,
+            {"bodies", "anchor", "energy", "distance", "reach"},
+            {"bodies", "energy", "distance"},
+            path,
+            errors,
         )
         members = spec.get("bodies")
         if not isinstance(members, list) or not 1 <= len(members) <= 2:
@@ -599,8 +603,11 @@ def _potentials(
             continue
         distance = symbols.get(distance_name, sympy.Symbol(distance_name, positive=True))
         energy = errors.read(spec.get("energy"), {**symbols, distance_name: distance}, (*path, "energy"))
+        reach = errors.read(spec["reach"], symbols, (*path, "reach")) if "reach" in spec else None
         if energy is not None and all(m in names for m in members):
-            result.append(PairPotential(f"potential{index}", tuple(members), anchor, energy, distance))
+            result.append(
+                PairPotential(f"potential{index}", tuple(members), anchor, energy, distance, reach=reach)
+            )
     return tuple(result)
 
 

@@ -3,6 +3,8 @@
     spring: {kind: spring, between: [block, {x: 0}], stiffness: k}
       length: L0               natural length (default 0: the energy is k d^2/2 in the stretch d)
       distance: d              the name of its length in the energy (default: <element>Length)
+      attached: false          a body meets its free end (a buffer): it only pushes, so the motion
+                               asked about must keep it at or below its natural length (buffers.py)
 
 Generates the potential k (d - L0)^2 / 2 of the distance d between its ends. d is a length: with a
 natural length on one axis, the model declares which side of the anchor the body is on (a coordinate
@@ -18,7 +20,7 @@ from physics.engine.elements.base import Builder, Fields, text_of, wrap
 from physics.engine.text import Path
 
 KIND = "spring"
-FIELDS = {"between", "stiffness", "length", "distance"}
+FIELDS = {"between", "stiffness", "length", "distance", "attached"}
 REQUIRED = {"between", "stiffness"}
 
 
@@ -37,6 +39,19 @@ def expand(name: str, spec: Mapping[str, Any], builder: Builder, path: Path) -> 
     stiffness = wrap(fields.text("stiffness"))
     stretch = f"({distance} - {wrap(fields.text('length'))})" if fields.has("length") else distance
     entry: dict[str, Any] = {"bodies": bodies, "distance": distance, "energy": f"{stiffness}*{stretch}^2/2"}
+    attached = spec.get("attached", True)
+    if not isinstance(attached, bool):
+        fields.error(
+            "true (the default: the body is fixed to the spring's end) or false (it only meets it)",
+            "attached",
+        )
+    elif not attached:
+        if not fields.has("length"):
+            fields.error(
+                "a spring that only pushes needs its natural length, where the body meets it", "attached"
+            )
+            return
+        entry["reach"] = fields.text("length")
     if points:
         entry["anchor"] = {str(axis): text_of(value) for axis, value in points[0].items()}
     builder.potential(entry, path)

@@ -27,6 +27,9 @@ class PairPotential:
     # On one shared axis the length is |b - a|; +1/-1 says which sign b - a keeps on the model's domain,
     # 0 that the energy is even in the distance (the sign does not matter). Set by `load_model`.
     side: int = 1
+    # the distance beyond which it lets go (an unattached spring's natural length: it only pushes);
+    # None: it acts at every distance (buffers.py checks the motion stays within it)
+    reach: sympy.Expr | None = None
 
     def traits(self, model: Model) -> Traits:
         return Traits(conservative=True, bodies=self.bodies)
