@@ -160,7 +160,7 @@ def answer(method: Method, quantity: Quantity) -> sympy.Expr:
         # |cos(theta)| of a wedge's speed written as cos(theta) where the domain keeps it positive
         speed = impact._signs_by_domain(model, sympy.sqrt(sympy.factor(tidy.simplify(squared))))
         method.step(
-            f"Speed of {quantity.target} there",
+            f"Speed of «{quantity.target}» there",  # the body in the problem's words, not its engine name
             rf"v_{{\mathrm{{{quantity.target}}}}} = \sqrt{{\dot x^2 + \dot y^2}} = " + method.tex(speed),
         )
         return speed

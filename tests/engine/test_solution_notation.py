@@ -125,3 +125,27 @@ def test_a_yoyo_derivation_writes_the_tension_and_no_internal_name() -> None:
     assert newton.forces == ("string",)
     dalembert = next(m for m in derivation.methods if m.name == "dalembert")
     assert dalembert.forces == ()  # constraint forces do no virtual work
+
+
+def test_a_speed_where_the_motion_gets_to_names_the_body_in_the_problems_words() -> None:
+    # two carts pushed apart by a spring: cart2's speed once they part, titled without the name cart2
+    data = {
+        "coordinates": ["x1", "d"],
+        "bodies": {
+            "cart1": {"mass": "m1", "position": {"x": "x1"}},
+            "cart2": {"mass": "m2", "position": {"x": "x1 + d"}},
+        },
+        "elements": {
+            "spring": {"kind": "spring", "between": ["cart1", "cart2"], "stiffness": "k", "length": "L0"}
+        },
+        "domain": {"ranges": {"d": ["0", "oo"]}, "positive": ["L0 - c"]},
+        "state": {"x1": 0, "d": "L0 - c"},
+        "notation": {"cart1": {"says": "the first cart"}, "cart2": {"says": "the second cart"}},
+        "quantities": {"parting": {"speed": "cart2", "at": {"d": "L0"}}},
+    }
+    model = load_model(data, {n: sympy.Symbol(n, positive=True) for n in ["m1", "m2", "k", "L0", "c"]})
+    derivation = derive(model)
+    assert derivation.notation is not None
+    assert audit(model, derivation.notation, derivation.methods) == []
+    titles = [s.title for m in derivation.methods for s in m.steps]
+    assert "Speed of «cart2» there" in titles
