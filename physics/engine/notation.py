@@ -308,9 +308,8 @@ def _forces(
             taken.add(tex)
     letters: dict[str, str] = {}
     for family in families:  # a family's bare letter is kept for it: N₁ and N₂, never N beside them
-        letters[family] = letters.get(f"pin_{'y' if family == 'pin_x' else 'x'}") or _letter(
-            family, taken, problem
-        )
+        partner = _PIN_PARTNERS.get(family)  # a support's R_x and R_y share their letter, no one else
+        letters[family] = (letters.get(partner) if partner else None) or _letter(family, taken, problem)
         taken.add(letters[family])
     for family, members in families.items():
         letter = letters[family]
@@ -326,6 +325,7 @@ def _forces(
     return forces, conditions
 
 
+_PIN_PARTNERS = {"pin_x": "pin_y", "pin_y": "pin_x"}
 _LETTERS = {
     "normal": ("N", r"\mathcal{N}"),
     "tension": ("T", r"\mathcal{T}"),

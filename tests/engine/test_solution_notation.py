@@ -93,6 +93,29 @@ CASES: list[tuple[str, Mapping[str, Any], Mapping[str, str]]] = [
         },
         {"d": "h"},
     ),
+    (
+        "a support's letter R is shared by its own components only: the string beside it keeps a tension's",
+        {
+            "coordinates": ["s"],
+            "bodies": {
+                "block": {"mass": "m", "position": {"x": "s", "y": "0"}},
+                "weight": {"mass": "m", "position": {"x": "0", "y": "-s"}},
+            },
+            "gravity": "g",
+            "constraints": {
+                "table": {"kind": "surface", "gap": "y_block"},
+                "wall": {"kind": "other", "gap": "x_weight"},
+            },
+            "elements": {
+                "string": {
+                    "kind": "pulley",
+                    "ends": [{"body": "block", "pulls": "right"}, {"body": "weight", "pulls": "up"}],
+                }
+            },
+            "quantities": {"a": {"acceleration": "s"}},
+        },
+        {"wall": "R_{x}", "string": r"\mathcal{T}"},
+    ),
 ]
 
 
