@@ -20,6 +20,7 @@ MAX_SCALES = 200
 BISECTIONS = 60
 PUSH = 1e-4  # a vanishing push off an unstable equilibrium, as a share of the motion's speed
 EQUILIBRIUM_ROUNDING = 1e-9  # an acceleration this small against its growth over the distance is none
+SEPARATION_ROUNDING = 1e-7  # of the coordinates' size: bodies left just touching (e = 0) are not closing
 
 
 @dataclass
@@ -250,8 +251,23 @@ class ReachMeasure:
                 return step * dt + high, sim_rk4(f, y, high)
             if turned(after_y):
                 raise DerivationError(f"{name}: the integrated motion turns back before it gets there")
+            self._keep_apart(after_y, name)
             y, before = after_y, after
         raise DerivationError(f"{name}: the integrated motion never gets there")
+
+    def _keep_apart(self, y: Vector, name: str) -> None:
+        """After an impact the bodies must not close on each other again before the motion gets where
+        the quantity is taken: a cart that bounces weakly off one on a spring is caught up by it."""
+        separation = self.simulator.separation
+        if separation is None:
+            return
+        scale = max([abs(v) for v in y[: self.simulator.dynamics.n]] + [1.0])
+        if separation(y) < -SEPARATION_ROUNDING * scale:
+            raise DerivationError(
+                f"{name}: after the impact the bodies meet again before the motion gets there (their "
+                "separation along the impact's normal closes): a second impact, which the model does not "
+                "follow. Ask about a motion that ends before they meet again, or model the second impact"
+            )
 
     def _velocity(self, body: str) -> Callable[..., list[float]]:
         """The body's Cartesian velocity (its position's axes) as a compiled function of q, q', parameters."""

@@ -22,6 +22,7 @@ from physics.engine import (
     embedding,
     expression_simulation,
     extremum,
+    impact,
     impact_simulation,
     slipping,
     vanishing_frequency,
@@ -279,6 +280,9 @@ class Simulator:
     references: Mapping[str, sympy.Expr] = dataclasses.field(default_factory=dict)
     # the derivation's Lagrange method of this same model: its equations and energies, formed once
     lagrange: LagrangeMethod | None = None
+    # after an impact: the bodies' separation along its normal at an integrated state (q, q'), which the
+    # motion must keep from closing again (a second impact the model does not follow)
+    separation: Callable[[Vector], float] | None = None
 
     @cached_property
     def dynamics(self) -> Dynamics:
@@ -372,6 +376,13 @@ class Simulator:
         index = [c.name for c in self.model.coordinates].index(quantity.target)
         return "velocity after an integrated spring-dashpot contact", self._impact.rates(point)[index], None
 
+    def _separation(self, point: Point) -> Callable[[Vector], float]:
+        """The impact's normal separation at an integrated state: its row of generalized directions
+        times the coordinates' displacement from where the bodies met."""
+        row = [_evaluate(a, point) for a in impact.contact(self.model).generalized]
+        start, _ = self._start(point)
+        return lambda y: sum(a * (q - q0) for a, q, q0 in zip(row, y, start, strict=False))
+
     def after_impact(self, quantity: Quantity, point: Point, expected: float) -> Measured:
         """The motion after the impact, started with the velocities the integrated contact left (never
         the derived ones), measured as any motion from a state is."""
@@ -390,7 +401,7 @@ class Simulator:
                 },
             }
             bounced = dataclasses.replace(self.model, state=tuple(state.items()), impact=None)
-            self._bounced[key] = Simulator(bounced, self.equilibrium_of)
+            self._bounced[key] = Simulator(bounced, self.equilibrium_of, separation=self._separation(point))
         simulator = self._bounced[key]
         inner = dataclasses.replace(quantity, after="", bounces=None)
         measure = simulator._reach if _reaches(inner) else simulator._measures().get(inner.kind)

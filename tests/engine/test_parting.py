@@ -54,3 +54,25 @@ def test_bodies_that_would_close_on_each_other_after_a_perfectly_inelastic_impac
 def test_bodies_that_part_after_a_perfectly_inelastic_impact_derive() -> None:
     far = uncached(load_model(PARTING, TABLE)).quantities["far"]
     assert sympy.simplify(far - m1 * u / (m1 + m2) * sympy.sqrt(m1 / k)) == 0
+
+
+def _bouncing(restitution: str) -> dict[str, Any]:
+    """Equal carts: cart 1 bounces off cart 2, which runs on into a spring ahead."""
+    model = carts("cart2", {"x": "L0"}, ["-oo", "L0"])
+    model["bodies"]["cart2"]["mass"] = "m1"
+    model["impact"]["restitution"] = restitution
+    return model
+
+
+def test_bodies_that_meet_again_before_the_quantity_after_a_weak_bounce_are_refused() -> None:
+    # e = 1/10: cart 1 goes on at 0.45 u, cart 2 at 0.55 u slowed by the spring, caught before it stops
+    with pytest.raises(DerivationError) as caught:
+        uncached(load_model(_bouncing("1/10"), TABLE))
+    assert caught.value.path == ("quantities", "far")
+    assert "meet again" in caught.value.message
+
+
+def test_an_elastic_bounce_that_leaves_the_struck_cart_alone_derives() -> None:
+    # e = 1: cart 1 stops dead, cart 2 takes u into the spring
+    far = uncached(load_model(_bouncing("1"), TABLE)).quantities["far"]
+    assert sympy.simplify(far - u * sympy.sqrt(m1 / k)) == 0
