@@ -106,3 +106,28 @@ def test_a_symmetric_pair_of_stable_equilibria_is_resolved_by_the_declared_range
     data["domain"]["ranges"] = {"x": ["0", "oo"]}  # both minima in range: refused, saying so
     with pytest.raises(DerivationError, match="stable equilibri"):
         derive(load_model(data, names))
+
+
+def test_a_spring_anchored_down_a_slope_rests_on_the_side_its_range_declares() -> None:
+    # the anchor D down the slope, the block above it (s <= D): the length sqrt((s - D)^2) is D - s, so
+    # the spring is squeezed at rest; it had been taken as s - D, a rest beyond the anchor, and refused
+    data = {
+        "elements": {
+            "ramp": {"kind": "incline", "body": "block", "mass": "m", "angle": "theta", "coordinate": "s"},
+            "spring": {
+                "kind": "spring",
+                "between": ["block", {"x": "D*cos(theta)", "y": "-D*sin(theta)"}],
+                "stiffness": "k",
+                "length": "L0",
+            },
+        },
+        "gravity": "g",
+        "domain": {
+            "ranges": {"theta": ["0", "pi/2"], "s": ["-oo", "D"]},
+            "positive": ["k*L0 - m*g*sin(theta)"],
+        },
+        "quantities": {"rest": {"equilibrium": "s"}},
+    }
+    theta, length = sympy.Symbol("theta", positive=True), sympy.Symbol("D", positive=True)
+    rest = derive(load_model(data, {**SYMBOLS, "theta": theta, "D": length})).quantities["rest"]
+    assert sympy.simplify(rest - (length - L0 + m * g * sympy.sin(theta) / k)) == 0

@@ -62,4 +62,7 @@ class PairPotential:
         squared = sympy.Add(*((b - a) ** 2 for a, b in ends))
         if squared.has(sympy.sin, sympy.cos):  # polar positions: r^2 cos^2 + r^2 sin^2 is r^2
             squared = sympy.trigsimp(squared)
-        return sympy.sqrt(squared)
+        from physics.engine.settle import settle  # here: settle builds on the model, which holds this
+
+        # along a slope the length is |s - D|: the side the declared range gives, as on one axis
+        return settle(sympy.sqrt(squared), model)
