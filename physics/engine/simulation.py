@@ -44,6 +44,7 @@ from physics.engine.model import (
     QuantityKind,
 )
 from physics.engine.results import SimulationCheck
+from physics.engine.sizes import friction_path
 from physics.engine.supports import driven
 from physics.errors import DerivationError
 
@@ -476,7 +477,7 @@ class Simulator:
                     f"direction the model's kinetic friction assumes (`sliding: {name}`): give the state a "
                     f"velocity that way ({name}_dot > 0), or check the domain, at "
                     + ", ".join(f"{s}={v:.4g}" for s, v in point.items()),
-                    path=("friction",),
+                    path=friction_path(self.model, backwards[0]),
                 )
             if backwards:
                 break  # it stopped and turned back: kinetic friction as modelled ends there

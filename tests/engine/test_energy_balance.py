@@ -41,8 +41,25 @@ def test_a_block_moving_up_keeps_the_books_and_friction_takes_energy_out() -> No
 def test_a_block_released_at_rest_slides_down_against_the_assumed_friction_and_is_refused() -> None:
     with pytest.raises(DerivationError) as caught:
         uncached(load_model(rough_incline(None), SYMBOLS))
-    assert caught.value.path == ("friction",)
+    assert caught.value.path == ("friction", 0)
     assert "slides towards decreasing s" in caught.value.message
+
+
+def test_a_crate_pushed_more_weakly_than_friction_is_refused_at_its_elements_friction() -> None:
+    # released at rest, F < mu m g: the equations send it backwards, against the push
+    data = {
+        "elements": {
+            "floor": {"kind": "surface", "body": "crate", "mass": "m", "coordinate": "x", "friction": "mu"}
+        },
+        "forces": [{"body": "crate", "force": {"x": "F"}}],
+        "gravity": "g",
+        "state": {"x": 0},
+        "domain": {"positive": ["mu*m*g - F"]},
+        "quantities": {"a": {"acceleration": "x"}},
+    }
+    with pytest.raises(DerivationError) as caught:
+        uncached(load_model(data, {**SYMBOLS, "F": sympy.Symbol("F", positive=True)}))
+    assert caught.value.path == ("elements", "floor", "friction")
 
 
 def test_equations_that_lose_track_of_the_friction_work_fail_the_books(
