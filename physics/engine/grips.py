@@ -14,15 +14,21 @@ refused at the grip where the sign is wrong at every one.
 
 from __future__ import annotations
 
+import math
+
 import sympy
 
+from physics.answer_text import typed_text
 from physics.engine.mechanics import Mechanics
-from physics.engine.model import ConstraintKind, Model
+from physics.engine.model import Body, Constraint, ConstraintKind, Model
 from physics.engine.proof import domain_points
+from physics.engine.shape_inertia import SHAPES, geometric_symbols, shape_factor
 from physics.errors import DerivationError
 
 POINTS = 6
 SEED = 37
+# hoop, disk, solid sphere, shell: shapes whose length is the radius they roll on
+ROUND = frozenset({sympy.Integer(1), sympy.Rational(1, 2), sympy.Rational(2, 5), sympy.Rational(2, 3)})
 
 
 def check_rolling_grips(model: Model, mech: Mechanics) -> None:
@@ -46,6 +52,62 @@ def check_rolling_grips(model: Model, mech: Mechanics) -> None:
                     "body rolling towards +x on a floor beneath it turns clockwise)",
                     path=("constraints", grip.name),
                 )
+            _check_radius(model, mech, grip, under[0], body, (x, y, phi))
+
+
+def _check_radius(
+    model: Model,
+    mech: Mechanics,
+    grip: Constraint,
+    surface: Constraint,
+    body: Body,
+    axes: tuple[sympy.Symbol, sympy.Symbol, sympy.Symbol],
+) -> None:
+    """A grip puts the contact point at a_phi / |n x a| from the centre (its torque over its push); a round
+    body of a standard shape has that point at its radius. A ball in a bowl geared by R/r instead of
+    (R - r)/r grips it at r (R - r)/R: its contact point slides, the grip doing no work."""
+    factor = shape_factor(body.inertia, body.mass, geometric_symbols(model))
+    if factor is None or factor not in ROUND:
+        return
+    radius = sympy.sqrt(body.inertia / (factor * body.mass))
+    found = [_reach(mech, grip.gap, surface.gap, axes, p) for p in state_points(model, mech)]
+    sizes = [
+        (r, float(sympy.N(radius.subs(p)))) for r, p in zip(found, state_points(model, mech), strict=True)
+    ]
+    if not sizes or any(r is None or abs(r - size) <= 1e-6 * size for r, size in sizes):
+        return
+    raise DerivationError(
+        f"constraint {grip.name!r}: the grip turns {body.name} as if its contact point with {surface.name!r} "
+        f"were {sizes[0][0]:.4g} from its centre (at a sampled point), but its inertia is {SHAPES[factor]} of "
+        f"radius {typed_text(radius)} ({sizes[0][1]:.4g}): rolling, the point that touches is at rest, and "
+        "here it would slide. A rolling body turns through the arc its centre travels over its radius: in a "
+        "bowl of radius R a ball of radius r turns (R - r)/r times the centre's angle, not R/r",
+        path=("constraints", grip.name),
+    )
+
+
+def _reach(
+    mech: Mechanics,
+    grip: sympy.Expr,
+    surface: sympy.Expr,
+    axes: tuple[sympy.Symbol, sympy.Symbol, sympy.Symbol],
+    point: dict[sympy.Symbol, sympy.Expr],
+) -> float | None:
+    """How far from the centre the grip acts, a_phi over the lever of its push about the normal."""
+    place = {d.symbol: d.mapping for d in mech.dofs}
+    x, y, phi = axes
+    try:
+        ax, ay, aphi, nx, ny = (
+            complex(sympy.N(sympy.diff(e, v).subs(place).subs(point), 15))
+            for e, v in ((grip, x), (grip, y), (grip, phi), (surface, x), (surface, y))
+        )
+    except (TypeError, ValueError):
+        return None
+    if any(abs(v.imag) > 1e-12 for v in (ax, ay, aphi, nx, ny)):
+        return None
+    norm = math.hypot(nx.real, ny.real)
+    lever = abs(nx.real * ay.real - ny.real * ax.real) / norm if norm else 0.0
+    return abs(aphi.real) / lever if lever > 1e-12 else None
 
 
 def state_points(model: Model, mech: Mechanics) -> list[dict[sympy.Symbol, sympy.Expr]]:

@@ -79,3 +79,24 @@ def test_a_grip_that_turns_the_body_the_wrong_way_is_refused(
     with pytest.raises(DerivationError, match="the grip turns ball the wrong way for rolling") as caught:
         uncached(model)
     assert caught.value.path == ("constraints", "grip")
+
+
+# (model, the ball's angle, the grip's gap): geared as if the contact point were elsewhere than its radius
+GEARED_WRONG = [
+    # the bowl's radius over the ball's, L/R, for (L - R)/R: the arc along the bowl, not the centre's
+    pytest.param(BOWL, '"-L*theta/R"', '"R*phi_ball + L*atan(x_ball/(-y_ball))"', id="bowl-L-over-R"),
+    pytest.param(
+        SLOPE, '"-2*s/R"', '"x_ball*cos(theta) - y_ball*sin(theta) + R*phi_ball/2"', id="slope-half"
+    ),
+]
+
+
+@pytest.mark.parametrize(("text", "angle", "gap"), GEARED_WRONG)
+def test_a_grip_geared_to_another_radius_than_the_bodys_is_refused(text: str, angle: str, gap: str) -> None:
+    names = ["m", "R", "L", "g"] + (["theta"] if text is SLOPE else [])
+    symbols = {n: sympy.Symbol(n, positive=True) for n in names}
+    model = load_model(yaml.safe_load(text.replace("ANGLE", angle).replace("GRIP", gap)), symbols)
+    with pytest.raises(DerivationError, match="would slide") as caught:
+        uncached(model)
+    assert caught.value.path == ("constraints", "grip")
+    assert "a solid sphere's of radius R" in caught.value.message
