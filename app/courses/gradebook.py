@@ -1,7 +1,8 @@
 """The gradebook: each student's best score on each part of each assignment, late penalties applied.
 
 A part's best is the highest score of its graded submissions, each multiplied by its late factor
-(a submission after the due date under a closed policy does not count). An assignment's score is the
+(a submission after the due date under a closed policy does not count, nor one made after the student
+opened the problem's worked solution: the part's grade is frozen then). An assignment's score is the
 sum of its parts' bests, out of its number of parts. Submissions are the append-only log: the
 gradebook is always recomputed from it, never stored.
 """
@@ -36,6 +37,7 @@ class PartCell:
     attempts: int
     solved: bool
     locked: bool  # out of attempts
+    frozen_at: datetime | None = None  # when the student opened the worked solution: no credit after
 
 
 @dataclass(frozen=True)
@@ -50,9 +52,18 @@ class AssignmentCell:
     extended: bool
     parts: tuple[PartCell, ...]
 
+    @property
+    def frozen(self) -> bool:
+        """Some part's grade was frozen by the student opening its worked solution."""
+        return any(part.frozen_at is not None for part in self.parts)
+
 
 def part_cell(
-    part: PartSpec, submissions: Iterable[SubmissionRecord], assignment: AssignmentRecord, due: datetime
+    part: PartSpec,
+    submissions: Iterable[SubmissionRecord],
+    assignment: AssignmentRecord,
+    due: datetime,
+    solution_opened: datetime | None = None,
 ) -> PartCell:
     best, best_late, attempts, solved = 0.0, False, 0, False
     for item in submissions:
@@ -60,7 +71,8 @@ def part_cell(
             continue
         attempts += 1
         factor = late_factor(assignment.spec.late, item.created_at, due)
-        if factor is None:
+        # Answers after the worked solution was read are checked but earn nothing: copied, not solved.
+        if factor is None or (solution_opened is not None and item.created_at >= solution_opened):
             continue
         solved = solved or item.verdict is Outcome.CORRECT
         counted = item.score * factor
@@ -68,7 +80,9 @@ def part_cell(
             best, best_late = counted, factor < 1.0
     limit = assignment.spec.max_attempts or part.max_attempts
     locked = limit is not None and attempts >= limit
-    return PartCell(part.problem_id, part.part_id, round(best, 6), best_late, attempts, solved, locked)
+    return PartCell(
+        part.problem_id, part.part_id, round(best, 6), best_late, attempts, solved, locked, solution_opened
+    )
 
 
 def assignment_cell(
@@ -78,12 +92,18 @@ def assignment_cell(
     student: str,
     extension: datetime | None,
     now: datetime,
+    solutions_opened: Mapping[str, datetime] | None = None,
 ) -> AssignmentCell:
+    """`solutions_opened`: when the student first opened each problem's worked solution."""
     due = due_for(assignment, extension)
+    opened = solutions_opened or {}
     by_part: dict[tuple[str, str], list[SubmissionRecord]] = {}
     for item in submissions:
         by_part.setdefault((item.problem_id, item.part_id), []).append(item)
-    cells = tuple(part_cell(p, by_part.get((p.problem_id, p.part_id), ()), assignment, due) for p in parts)
+    cells = tuple(
+        part_cell(p, by_part.get((p.problem_id, p.part_id), ()), assignment, due, opened.get(p.problem_id))
+        for p in parts
+    )
     started = any(by_part.get((p.problem_id, p.part_id)) for p in parts)
     done = bool(cells) and all(c.solved or c.locked for c in cells)
     return AssignmentCell(
@@ -121,8 +141,10 @@ def build(
     submissions: Mapping[str, Sequence[SubmissionRecord]],
     extensions: Mapping[int, Mapping[str, datetime]],
     now: datetime,
+    solutions_opened: Mapping[str, Mapping[str, datetime]] | None = None,
 ) -> Gradebook:
-    """`parts` per assignment id, `submissions` per student, `extensions` per assignment id."""
+    """`parts` per assignment id, `submissions` per student, `extensions` per assignment id,
+    `solutions_opened` per student (then per problem)."""
     cells = {}
     for enrolment in students:
         mine = submissions.get(enrolment.student, ())
@@ -135,6 +157,7 @@ def build(
                 enrolment.student,
                 extensions.get(assignment.id, {}).get(enrolment.student),
                 now,
+                (solutions_opened or {}).get(enrolment.student),
             )
     maximum = {a.id: len(parts.get(a.id, ())) for a in assignments}
     return Gradebook(tuple(students), tuple(assignments), cells, maximum)
@@ -157,6 +180,8 @@ def to_csv(book: Gradebook) -> str:
         for assignment, cell in zip(book.assignments, cells, strict=True):
             if cell.late:
                 notes.append(f"{assignment.title}: late penalty applied")
+            if cell.frozen:
+                notes.append(f"{assignment.title}: grade frozen, worked solution opened ({_frozen(cell)})")
             if cell.extended:
                 notes.append(f"{assignment.title}: extended to {cell.due:%Y-%m-%d %H:%M} UTC")
         total, _ = book.total(enrolment.student)
@@ -166,3 +191,9 @@ def to_csv(book: Gradebook) -> str:
             + [total, "; ".join(notes)]
         )
     return out.getvalue()
+
+
+def _frozen(cell: AssignmentCell) -> str:
+    """ "yo-yo at 2026-03-03 10:00 UTC" for each problem whose worked solution froze its parts' grades."""
+    opened = {p.problem_id: p.frozen_at for p in cell.parts if p.frozen_at is not None}
+    return ", ".join(f"{problem} at {at:%Y-%m-%d %H:%M} UTC" for problem, at in opened.items())

@@ -20,7 +20,7 @@ from sqlalchemy.orm import Mapped, mapped_column
 from sqlalchemy.sql.expression import false
 
 from app.db.base import Base
-from app.db.models import HASH_LENGTH, NAME_LENGTH, STUDENT_LENGTH
+from app.db.models import HASH_LENGTH, ID_LENGTH, NAME_LENGTH, STUDENT_LENGTH
 from app.db.types import UTCDateTime
 
 # Copied, not imported, by the migration (as app/db/models.py's lengths are).
@@ -129,6 +129,17 @@ class Extension(Base):
     assignment_id: Mapped[int] = mapped_column(ForeignKey("assignments.id"), primary_key=True)
     student: Mapped[str] = mapped_column(String(STUDENT_LENGTH), primary_key=True)
     due_at: Mapped[datetime] = mapped_column(UTCDateTime())
+
+
+class SolutionView(Base):
+    """The first time a student opened a problem's worked solution: no credit on its parts after."""
+
+    __tablename__ = "solution_views"
+
+    # No foreign key to problems: a retired problem's record stays, and so does the view.
+    student: Mapped[str] = mapped_column(String(STUDENT_LENGTH), primary_key=True)
+    problem_id: Mapped[str] = mapped_column(String(ID_LENGTH), primary_key=True)
+    opened_at: Mapped[datetime] = mapped_column(UTCDateTime())
 
 
 class BankShare(Base):

@@ -48,11 +48,12 @@ def assignment_score(
     student: str,
     extension: datetime | None,
     now: datetime,
+    solutions_opened: Mapping[str, datetime] | None = None,
 ) -> tuple[float, float]:
     """(score given, score maximum) as the gradebook counts it."""
     wanted = set(assignment.problems)
     mine = [s for s in submissions if s.student == student and s.problem_id in wanted]
     cell = assignment_cell(
-        assignment, parts_of(assignment.problems, documents), mine, student, extension, now
+        assignment, parts_of(assignment.problems, documents), mine, student, extension, now, solutions_opened
     )
     return cell.score, float(max(cell.maximum, 1))

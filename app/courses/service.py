@@ -49,6 +49,7 @@ def course_gradebook(stores: Stores, catalog: Catalog, course: CourseRecord, now
         {e.student: submissions_of(stores, e.student) for e in students},
         {a.id: stores.courses.extensions(a.id) for a in assignments},
         now,
+        {e.student: stores.courses.solutions_opened(e.student) for e in students},
     )
 
 
@@ -59,7 +60,13 @@ def student_cell(
     mine = [s for s in submissions_of(stores, student) if s.problem_id in wanted]
     extension = stores.courses.extensions(assignment.id).get(student)
     return gradebook.assignment_cell(
-        assignment, assignment_parts(catalog, assignment), mine, student, extension, now
+        assignment,
+        assignment_parts(catalog, assignment),
+        mine,
+        student,
+        extension,
+        now,
+        stores.courses.solutions_opened(student),
     )
 
 

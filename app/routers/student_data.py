@@ -89,6 +89,11 @@ class ExtensionPublic(BaseModel):
     due_at: datetime
 
 
+class SolutionOpenedPublic(BaseModel):
+    problem_id: str
+    opened_at: datetime
+
+
 class StudentDataPublic(BaseModel):
     student: str
     submissions: list[SubmissionPublic]
@@ -98,6 +103,7 @@ class StudentDataPublic(BaseModel):
     keys: list[StudentKeyPublic]
     enrolments: list[EnrolmentPublic] = []
     extensions: list[ExtensionPublic] = []
+    solutions_opened: list[SolutionOpenedPublic] = []
 
 
 class ErasedCounts(BaseModel):
@@ -110,6 +116,7 @@ class ErasedCounts(BaseModel):
     enrolments: int = 0
     course_sessions: int = 0
     extensions: int = 0
+    solution_views: int = 0
 
 
 class StudentErased(BaseModel):
@@ -152,6 +159,7 @@ async def erase_student(student: StudentQuery, services: ServicesDep, principal:
             enrolments=erased.enrolments,
             course_sessions=erased.course_sessions,
             extensions=erased.extensions,
+            solution_views=erased.solution_views,
         ),
     )
 
@@ -198,4 +206,8 @@ def _public(data: StudentData) -> StudentDataPublic:
             for e in data.enrolments
         ],
         extensions=[ExtensionPublic(assignment_id=x.assignment_id, due_at=x.due_at) for x in data.extensions],
+        solutions_opened=[
+            SolutionOpenedPublic(problem_id=x.problem_id, opened_at=x.opened_at)
+            for x in data.solutions_opened
+        ],
     )

@@ -50,6 +50,7 @@ class MemoryCourseStore:
         self._assignments: dict[int, AssignmentRecord] = {}
         self._extensions: dict[tuple[int, str], datetime] = {}
         self._shared: set[str] = set()
+        self._solution_views: dict[tuple[str, str], datetime] = {}  # (student, problem)
         self._next_assignment = 1
 
     def create_course(
@@ -257,6 +258,14 @@ class MemoryCourseStore:
         with self._lock:
             return {s: due for (a, s), due in self._extensions.items() if a == assignment_id}
 
+    def open_solution(self, student: str, problem_id: str, now: datetime) -> datetime:
+        with self._lock:
+            return self._solution_views.setdefault((student, problem_id), now.astimezone(UTC))
+
+    def solutions_opened(self, student: str) -> dict[str, datetime]:
+        with self._lock:
+            return {problem: at for (who, problem), at in self._solution_views.items() if who == student}
+
     def share_problem(self, problem_id: str, shared: bool) -> None:
         with self._lock:
             if shared:
@@ -305,6 +314,7 @@ def assignment_grade_queue(
                 stored.student,
                 courses.extensions(assignment_id).get(stored.student),
                 stored.created_at,
+                courses.solutions_opened(stored.student),
             )
             outbox_store.enqueue(key, stored.student, given, maximum, stored.created_at)
 

@@ -443,6 +443,14 @@ class CourseStore(Protocol):
 
     def extensions(self, assignment_id: int) -> dict[str, datetime]: ...
 
+    def open_solution(self, student: str, problem_id: str, now: datetime) -> datetime:
+        """Record that the student opened the problem's worked solution; when they first did."""
+        ...
+
+    def solutions_opened(self, student: str) -> dict[str, datetime]:
+        """When the student first opened each problem's worked solution, by problem id."""
+        ...
+
     def share_problem(self, problem_id: str, shared: bool) -> None:
         """Share an upload to the bank (every instructor may use it), or take it back."""
         ...

@@ -9,7 +9,7 @@ from sqlalchemy import select
 from sqlalchemy.orm import Session
 
 from app.courses import passback
-from app.courses.models import Assignment, Extension
+from app.courses.models import Assignment, Extension, SolutionView
 from app.db.models import Problem, ProblemVersion, Submission
 from app.db.records import SubmissionRecord
 from app.db.submissions import _record as submission_record
@@ -53,6 +53,10 @@ def queue_assignment_grades(session: Session, stored: SubmissionRecord) -> int:
             stored.student,
             None if extension is None else extension.due_at,
             stored.created_at,
+            {
+                row.problem_id: row.opened_at
+                for row in session.scalars(select(SolutionView).where(SolutionView.student == stored.student))
+            },
         )
         queued += enqueue_scores(session, key, stored.student, given, maximum, stored.created_at)
     return queued

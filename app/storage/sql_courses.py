@@ -17,6 +17,7 @@ from app.courses.models import (
     Enrolment,
     Extension,
     SignInToken,
+    SolutionView,
 )
 from app.courses.records import (
     AssignmentNotFound,
@@ -392,6 +393,26 @@ class SqlCourseStore:
         query = select(Extension).where(Extension.assignment_id == assignment_id)
         with self._database.session(read_only=True) as session:
             return {row.student: row.due_at for row in session.scalars(query)}
+
+    def open_solution(self, student: str, problem_id: str, now: datetime) -> datetime:
+        try:
+            with self._database.session() as session:
+                row = session.get(SolutionView, (student, problem_id))
+                if row is None:
+                    row = SolutionView(student=student, problem_id=problem_id, opened_at=now)
+                    session.add(row)
+                    session.flush()
+                return row.opened_at
+        except IntegrityError:  # another tab opened it at the same moment: the first stands
+            found = self.solutions_opened(student).get(problem_id)
+            if found is None:
+                raise
+            return found
+
+    def solutions_opened(self, student: str) -> dict[str, datetime]:
+        query = select(SolutionView).where(SolutionView.student == student)
+        with self._database.session(read_only=True) as session:
+            return {row.problem_id: row.opened_at for row in session.scalars(query)}
 
     def share_problem(self, problem_id: str, shared: bool) -> None:
         with self._database.session() as session:

@@ -1,7 +1,7 @@
 """One student's personal data, as a school's export or erasure request needs it: every submission,
 the attempts counted, where their scores go in an LMS (grade targets) and the scores queued there,
 the sessions LMS launches opened for them, their API keys, and their courses' records (enrolments with
-the roster's name and email, personal sign-in links, sessions those opened, extensions). A protocol with its SQL and in-memory
+the roster's name and email, personal sign-in links, sessions those opened, extensions, when they opened worked solutions). A protocol with its SQL and in-memory
 implementations.
 
 Erasure is the one exception to "submissions are append-only": the database lets a DELETE through only
@@ -16,7 +16,7 @@ from typing import Protocol
 
 from sqlalchemy import delete, func, select, update
 
-from app.courses.models import CourseSessionRow, Enrolment, Extension, SignInToken
+from app.courses.models import CourseSessionRow, Enrolment, Extension, SignInToken, SolutionView
 from app.db import keys as key_repository
 from app.db.database import Database
 from app.db.models import ApiKey, AttemptCounter, StudentErasure, Submission
@@ -90,6 +90,12 @@ class StudentExtension:
 
 
 @dataclass(frozen=True)
+class SolutionOpened:
+    problem_id: str
+    opened_at: datetime
+
+
+@dataclass(frozen=True)
 class StudentData:
     student: str
     submissions: list[SubmissionRecord]
@@ -99,6 +105,7 @@ class StudentData:
     keys: list[StudentKey]
     enrolments: list[CourseEnrolment] = field(default_factory=list)
     extensions: list[StudentExtension] = field(default_factory=list)
+    solutions_opened: list[SolutionOpened] = field(default_factory=list)
 
 
 @dataclass(frozen=True)
@@ -114,6 +121,7 @@ class Erased:
     enrolments: int = 0
     course_sessions: int = 0  # sessions opened by sign-in links, and the links themselves
     extensions: int = 0
+    solution_views: int = 0
 
 
 class StudentDataStore(Protocol):
@@ -194,7 +202,17 @@ class SqlStudentData:
                     select(Extension).where(Extension.student == student).order_by(Extension.assignment_id)
                 )
             ]
-        return StudentData(student, submissions, attempts, targets, sessions, keys, enrolments, extensions)
+            opened = [
+                SolutionOpened(row.problem_id, row.opened_at)
+                for row in session.scalars(
+                    select(SolutionView)
+                    .where(SolutionView.student == student)
+                    .order_by(SolutionView.problem_id)
+                )
+            ]
+        return StudentData(
+            student, submissions, attempts, targets, sessions, keys, enrolments, extensions, opened
+        )
 
     def erase(self, student: str) -> Erased:
         with self._database.session() as session:
@@ -225,6 +243,9 @@ class SqlStudentData:
                     )
                 ),
                 extensions=_deleted(session.execute(delete(Extension).where(Extension.student == student))),
+                solution_views=_deleted(
+                    session.execute(delete(SolutionView).where(SolutionView.student == student))
+                ),
                 course_sessions=_deleted(
                     session.execute(delete(CourseSessionRow).where(CourseSessionRow.student == student))
                 )
@@ -305,8 +326,13 @@ class MemoryStudentData:
                 for (assignment, who), due in sorted(courses._extensions.items())
                 if who == student
             ]
+            opened = [
+                SolutionOpened(problem, at)
+                for (who, problem), at in sorted(courses._solution_views.items())
+                if who == student
+            ]
         return StudentData(
-            student, list(submissions), attempts, targets, sessions, keys, enrolments, extensions
+            student, list(submissions), attempts, targets, sessions, keys, enrolments, extensions, opened
         )
 
     def erase(self, student: str) -> Erased:
@@ -337,7 +363,9 @@ class MemoryStudentData:
             extensions = {k: d for k, d in courses._extensions.items() if k[1] != student}
             tokens = {k: t for k, t in courses._tokens.items() if t[1] != student}
             sessions = {k: c for k, c in courses._sessions.items() if c.student != student}
+            views = {k: at for k, at in courses._solution_views.items() if k[0] != student}
             counts = {
+                "solution_views": len(courses._solution_views) - len(views),
                 "enrolments": len(courses._enrolments) - len(enrolments),
                 "extensions": len(courses._extensions) - len(extensions),
                 "course_sessions": len(courses._sessions)
@@ -347,6 +375,7 @@ class MemoryStudentData:
             }
             courses._enrolments, courses._extensions = enrolments, extensions
             courses._tokens, courses._sessions = tokens, sessions
+            courses._solution_views = views
         return counts
 
     def _forget_keys(self, student: str) -> int:

@@ -5,24 +5,32 @@ page says when it opens. Like the problem page, an LTI session sees it at once a
 fetches it as a fragment (`/p/{id}/solution/content`, bearer key). The content is the instructor's
 (app/instructor/described.py and worked.py) for the student's own variant: the answers, the figure and
 free-body diagrams, the methods compared and each method's solution, laid out to print on A4 or Letter.
+
+Within an assignment whose answers still count (late work accepted), opening the solution freezes the
+student's grade on the problem's parts (app/courses/gradebook.py): the page first says so and asks,
+and `POST /p/{id}/solution` records the opening; it is shown at once when nothing is left to earn.
 """
 
 from __future__ import annotations
 
+import hmac
 from typing import Any
 
 from fastapi import APIRouter, Request
-from fastapi.responses import HTMLResponse, Response
+from fastapi.responses import HTMLResponse, RedirectResponse, Response
 from starlette.concurrency import run_in_threadpool
 
+from app.courses.policy import shown
 from app.instructor.described import describe
 from app.lti.context import LtiContextDep
+from app.web.course_pages import _cross_site, _refused_cross_site
 from app.web.layout import page, templates
 from app.web.solution_access import solution_release
 from app.web.student_page import (
     _FRAGMENT_HEADERS,
     _PROBLEM_ID,
     SCRIPT,
+    Loaded,
     _ancestors,
     _caller,
     _fragment_caller,
@@ -56,6 +64,11 @@ def solution_context(request: Request, problem_id: str, student: str) -> dict[st
     }
     if not release.released:
         return values
+    frozen_at = next((w.frozen_at for w in loaded.work.parts.values() if w.frozen_at), None)
+    if frozen_at is None and (still_open := _still_to_earn(loaded)):
+        return {**values, "confirm": still_open}
+    if frozen_at is not None and loaded.opened.course is not None:
+        values["opened_at"] = shown(frozen_at, loaded.opened.course.timezone)
     variant = catalog.variant(record, student)
     try:
         forces = catalog.free_body_figures(problem_id, student)
@@ -68,6 +81,42 @@ def solution_context(request: Request, problem_id: str, student: str) -> dict[st
         "figure": loaded.figure,
         "forces": forces,
     }
+
+
+def _still_to_earn(loaded: Loaded) -> list[int]:
+    """The numbers of the parts opening the solution would freeze: within an assignment that still
+    takes answers, those neither solved nor out of attempts (nothing is lost on the others)."""
+    if solution_within(loaded) is None or not loaded.opened.accepting:
+        return []
+    return [
+        index + 1 for index, work in enumerate(loaded.work.parts.values()) if not (work.solved or work.locked)
+    ]
+
+
+@router.post("/p/{problem_id}/solution", include_in_schema=False)
+async def open_solution(problem_id: str, request: Request, context: LtiContextDep) -> Response:
+    """The student chose to read the worked solution: their grade on its parts is frozen from now."""
+    if _cross_site(request):
+        return _refused_cross_site(request)
+    caller = await _caller(request, context, allow_key=False)
+    form = await request.form(max_files=0, max_fields=10)
+    sent = str(form.get("csrf") or "")
+    if caller is None or not caller.csrf_token:
+        return _refused(401, "Sign in again to open the worked solution.")
+    if not hmac.compare_digest(sent.encode(), caller.csrf_token.encode()):
+        return _refused(403, "This page is out of date: reload it and try again.")
+
+    def record() -> bool:
+        values = solution_context(request, problem_id, caller.student)
+        if values is None:
+            return False
+        if values.get("confirm"):  # else released with nothing to freeze, or not released: nothing kept
+            context.stores.courses.open_solution(caller.student, problem_id, context.clock())
+        return True
+
+    if not _PROBLEM_ID.match(problem_id) or not await run_in_threadpool(record):
+        return _not_found(request, await _ancestors(context))
+    return RedirectResponse(f"/p/{problem_id}/solution", status_code=303)
 
 
 @router.get("/p/{problem_id}/solution", include_in_schema=False)
@@ -90,7 +139,13 @@ async def solution_page(problem_id: str, request: Request, context: LtiContextDe
     return page(
         request,
         "solution/student.html",
-        {**shell, **values, "mode": "session", "title": f"Worked solution: {values['doc'].title}"},
+        {
+            **shell,
+            **values,
+            "mode": "session",
+            "title": f"Worked solution: {values['doc'].title}",
+            "csrf": caller.csrf_token,
+        },
         frame_ancestors=ancestors,
     )
 

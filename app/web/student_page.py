@@ -164,7 +164,13 @@ def _load(context: LtiContext, problem_id: str, student: str) -> Loaded | None:
         view = opened.attempts_in(context.student_view(problem_id, student))
     except LookupError:
         return None
-    work = load_work(context.stores.submissions, problem_id, student, view.get("parts", []))
+    # Within an assignment, a worked solution the student opened freezes the grade on its parts.
+    frozen = (
+        None
+        if opened.assignment is None
+        else context.stores.courses.solutions_opened(student).get(problem_id)
+    )
+    work = load_work(context.stores.submissions, problem_id, student, view.get("parts", []), frozen)
     figure = _figure(context, problem_id, student)
     return Loaded(view, work, figure, opened, now, assignment_banner(opened))
 

@@ -35,6 +35,7 @@ class PartWork:
     limit: int | None = None
     best: float | None = None  # None: no graded attempt yet
     history: list[Attempt] = field(default_factory=list)  # newest first
+    frozen_at: datetime | None = None  # the worked solution was opened then: later answers earn nothing
 
     @property
     def locked(self) -> bool:
@@ -102,11 +103,18 @@ def _submissions(store: SubmissionStore, problem_id: str, student: str) -> list[
 
 
 def load_work(
-    store: SubmissionStore, problem_id: str, student: str, parts: Sequence[Mapping[str, Any]]
+    store: SubmissionStore,
+    problem_id: str,
+    student: str,
+    parts: Sequence[Mapping[str, Any]],
+    frozen_at: datetime | None = None,
 ) -> ProblemWork:
-    """The student's work on the parts of `parts` (the student view's parts, with `max_attempts`)."""
+    """The student's work on the parts of `parts` (the student view's parts, with `max_attempts`);
+    answers from `frozen_at` on (the worked solution opened) are shown but do not count."""
     work = {
-        str(part["id"]): PartWork(limit=part.get("max_attempts") if part.get("max_attempts") else None)
+        str(part["id"]): PartWork(
+            limit=part.get("max_attempts") if part.get("max_attempts") else None, frozen_at=frozen_at
+        )
         for part in parts
     }
     for record in _submissions(store, problem_id, student):
@@ -114,7 +122,7 @@ def load_work(
         if part is None:  # a part a later version dropped
             continue
         part.history.insert(0, _attempt(record))
-        if record.verdict != Outcome.INVALID:
+        if record.verdict != Outcome.INVALID and (frozen_at is None or record.created_at < frozen_at):
             part.best = max(part.best or 0.0, record.score)
     for part_id, part in work.items():
         part.used = store.attempts_used(problem_id, part_id, student)

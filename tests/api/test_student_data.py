@@ -54,6 +54,7 @@ def test_an_instructor_erases_one_students_data_and_no_one_elses(
             "enrolments": 0,
             "course_sessions": 0,
             "extensions": 0,
+            "solution_views": 0,
         },
     }
     listed = client.get("/v1/submissions", params={"student": "eve"}, headers=instructor_headers).json()

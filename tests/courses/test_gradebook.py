@@ -168,3 +168,38 @@ def test_solutions_open_by_the_assignments_release_policy(release, now, done, re
 def test_dates_are_shown_in_the_courses_zone():
     assert shown(DUE, "America/New_York") == "Mon 02 Mar 2026, 18:59 EST"
     assert shown(DUE, "Not/AZone").endswith("UTC")
+
+
+@pytest.mark.parametrize(
+    ("answered_after_opening", "score"),
+    [
+        (timedelta(minutes=-1), 0.9),  # answered late, then read the solution: the answer counts
+        (timedelta(0), 0.0),
+        (timedelta(minutes=1), 0.0),  # read the solution, then answered: checked, earns nothing
+    ],
+)
+def test_answers_after_opening_the_worked_solution_earn_no_credit(answered_after_opening, score):
+    opened = DUE + timedelta(hours=1)
+    subs = [_sub("acceleration", Outcome.CORRECT, opened + answered_after_opening)]
+    cell = gradebook.assignment_cell(
+        _assignment(), PARTS, subs, "s1", None, DUE + timedelta(days=1), {"yo-yo": opened}
+    )
+    assert cell.score == score
+    assert cell.parts[0].attempts == 1 and cell.parts[0].frozen_at == opened and cell.frozen
+
+
+def test_the_csv_notes_a_grade_frozen_by_opening_the_worked_solution():
+    students = [EnrolmentRecord(1, "course:1:s1", "s1", "Ada", "ada@x", DUE)]
+    opened = DUE + timedelta(hours=1)
+    subs = {"course:1:s1": [_sub("acceleration", Outcome.CORRECT, opened, "course:1:s1")]}
+    book = gradebook.build(
+        students,
+        [_assignment()],
+        {1: PARTS},
+        subs,
+        {},
+        DUE + timedelta(days=1),
+        {"course:1:s1": {"yo-yo": opened}},
+    )
+    row = list(csv.reader(io.StringIO(gradebook.to_csv(book))))[1]
+    assert row[-1] == "HW1: grade frozen, worked solution opened (yo-yo at 2026-03-03 00:59 UTC)"

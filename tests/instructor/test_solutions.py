@@ -171,3 +171,64 @@ def test_the_problem_page_says_when_the_solution_is_released_and_after_the_answe
     assert 'id="solution-link"' in page and "released to you" in page and "shown once" not in page
     work = client.get("/p/yo-yo/parts/tension/work", headers=headers).text  # fetched after an answer
     assert 'id="solution-link"' in work and "released to you" in work
+
+
+def _late_course_student(signed_in: TestClient, stores: Stores) -> tuple[TestClient, int, str]:
+    """A course whose assignment (yo-yo, solutions after the due date) is past due and still takes
+    late work, and a student who joined it: (their browser, the course id, their identity)."""
+    from datetime import UTC, datetime, timedelta
+
+    from app.courses.records import AssignmentSpec, LateKind, LatePolicy
+
+    made = signed_in.post(
+        "/instructor/courses",
+        data={"csrf": csrf_of(signed_in.get("/instructor/courses").text), "title": "Mechanics"},
+    )
+    course = int(made.headers["location"].rsplit("/", 1)[1])
+    now = datetime.now(UTC)
+    late = LatePolicy(LateKind.PENALTY, 0.1, 0.5)
+    stores.courses.create_assignment(
+        course, AssignmentSpec("HW 1", ("yo-yo",), now - timedelta(days=2), now - timedelta(hours=1), late)
+    )
+    page = signed_in.get(f"/instructor/courses/{course}")
+    signed_in.post(
+        f"/instructor/courses/{course}/join-code", data={"csrf": csrf_of(page.text), "enabled": "1"}
+    )
+    student = TestClient(signed_in.app, follow_redirects=False)
+    student.post(f"/join/{stores.courses.get_course(course).join_code}", data={"name": "Ada"})
+    [enrolment] = stores.courses.roster(course)
+    return student, course, enrolment.student
+
+
+def test_late_work_earns_nothing_once_the_student_has_opened_the_worked_solution(
+    signed_in: TestClient, stores: Stores
+) -> None:
+    # a solution open "after the due date" with late work accepted had been read and copied for credit
+    student, course, who = _late_course_student(signed_in, stores)
+    asked = student.get("/p/yo-yo/solution").text
+    assert "stays as it is now" in asked and 'id="solution-answers"' not in asked  # asked first
+    file_submissions(stores, [(who, "acceleration", "g", RIGHT)])  # before opening: counts, late
+    assert student.post("/p/yo-yo/solution", data={"csrf": "forged"}).status_code == 403
+    assert stores.courses.solutions_opened(who) == {}
+    opened = student.post("/p/yo-yo/solution", data={"csrf": csrf_of(asked)})
+    assert opened.status_code == 303 and "yo-yo" in stores.courses.solutions_opened(who)
+    shown = student.get("/p/yo-yo/solution").text
+    assert 'id="solution-answers"' in shown and "You opened this worked solution on" in shown
+    file_submissions(stores, [(who, "tension", "g", RIGHT)])  # after: checked, earns nothing
+
+    problem = student.get("/p/yo-yo").text
+    assert problem.count("Your grade on this part is frozen") == 3
+    book = signed_in.get(f"/instructor/courses/{course}/gradebook").text
+    assert "solution read" in book
+    csv_text = signed_in.get(f"/instructor/courses/{course}/gradebook.csv").text
+    assert ",0.9,0.9," in csv_text and "HW 1: grade frozen, worked solution opened (yo-yo at" in csv_text
+
+
+def test_a_solution_with_nothing_left_to_earn_opens_without_freezing_anything(
+    signed_in: TestClient, stores: Stores
+) -> None:
+    student, _, who = _late_course_student(signed_in, stores)
+    file_submissions(stores, [(who, part, "g", RIGHT) for part in PARTS])
+    shown = student.get("/p/yo-yo/solution").text
+    assert 'id="solution-answers"' in shown and "stays as it is now" not in shown
+    assert stores.courses.solutions_opened(who) == {}

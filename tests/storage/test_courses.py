@@ -311,3 +311,18 @@ def test_uploads_are_shared_to_the_bank_and_taken_back(stores: Stores):
     assert stores.courses.shared_problems() == {"upload-1"}
     stores.courses.share_problem("upload-1", False)
     assert stores.courses.shared_problems() == set()
+
+
+def test_the_first_opening_of_a_worked_solution_is_the_one_kept(stores: Stores):
+    first = stores.courses.open_solution("course:1:s001", "yo-yo", NOW)
+    again = stores.courses.open_solution("course:1:s001", "yo-yo", NOW + timedelta(hours=1))
+    stores.courses.open_solution("course:1:s002", "moving-wedge", NOW + timedelta(hours=2))
+    assert first == again == NOW
+    assert stores.courses.solutions_opened("course:1:s001") == {"yo-yo": NOW}
+    assert stores.courses.solutions_opened("nobody") == {}
+
+
+def test_concurrent_openings_of_a_worked_solution_keep_one_time(stores: Stores):
+    moments = [NOW + timedelta(seconds=n) for n in range(4)]
+    kept = in_parallel(4, lambda n: stores.courses.open_solution("s", "yo-yo", moments[n]))
+    assert len(set(kept)) == 1 and stores.courses.solutions_opened("s") == {"yo-yo": kept[0]}

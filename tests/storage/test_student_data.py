@@ -58,6 +58,7 @@ def _two_students(stores: Stores) -> None:
         )
         course_sessions.issue_link(stores.courses, course.id, student, now)
         stores.courses.set_extension(assignment.id, student, now + timedelta(days=9))
+        stores.courses.open_solution(student, PROBLEM, now)
 
 
 def test_export_holds_everything_of_one_student_and_nothing_of_others(stores: Stores):
@@ -77,6 +78,9 @@ def test_export_holds_everything_of_one_student_and_nothing_of_others(stores: St
     [enrolment] = data.enrolments
     assert (enrolment.name, enrolment.email) == ("Name of erased", "erased@uni.example")
     assert len(data.extensions) == 1
+    assert [(o.problem_id, o.opened_at) for o in data.solutions_opened] == [
+        (PROBLEM, data.extensions[0].due_at - timedelta(days=9))
+    ]
 
 
 def test_an_unknown_student_exports_empty(stores: Stores):
@@ -106,6 +110,7 @@ def test_erase_removes_one_students_data_and_keeps_the_others(stores: Stores):
         enrolments=1,
         course_sessions=3,  # the session a link opened, that spent link, and a newer one not yet used
         extensions=1,
+        solution_views=1,
     )
     assert erased.scores >= 1 and len(stores.outbox.scores()) == scores_before - erased.scores
     after = stores.student_data.export(ERASED)
@@ -113,7 +118,8 @@ def test_erase_removes_one_students_data_and_keeps_the_others(stores: Stores):
     assert stores.submissions.page(student=ERASED).items == []
     assert stores.submissions.attempts_used(PROBLEM, PART, ERASED) == 0
     assert stores.lti_sessions.get("session-erased") is None
-    assert (after.enrolments, after.extensions) == ([], [])
+    assert (after.enrolments, after.extensions, after.solutions_opened) == ([], [], [])
+    assert stores.courses.solutions_opened(KEPT) != {}
     assert stores.courses.courses_enrolled(ERASED) == []
     [key] = after.keys  # kept as a row, revoked and nameless
     assert key.name is None and key.revoked_at is not None
