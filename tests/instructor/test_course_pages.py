@@ -540,10 +540,10 @@ def test_the_submissions_filter_lists_no_other_instructors_private_upload(
     assert "Exam question 3" not in page and "secret-yo-yo" not in page
 
 
-def test_the_builder_warns_that_late_answers_count_beside_solutions_after_the_due_date(signed_in: TestClient):
+def test_the_builder_says_late_answers_earn_nothing_after_the_worked_solution_is_opened(signed_in: TestClient):
     course = _make_course(signed_in)
     form = signed_in.get(f"/instructor/courses/{course}/assignments/new").text
     penalty = form[form.index('<div id="late-penalty">') :]
     penalty = penalty[: penalty.index("</div>")]
     # inside the late penalty's fields: shown only while late work is accepted
-    assert "a student could read one and then answer late" in penalty
+    assert "earns nothing on its parts after" in penalty
