@@ -105,7 +105,9 @@ class Assignment(Base):
     __tablename__ = "assignments"
     __table_args__ = (
         CheckConstraint("late_policy IN ('closed', 'penalty')", name="late_policy"),
-        CheckConstraint("solutions IN ('never', 'after_due', 'after_last_attempt')", name="solutions"),
+        CheckConstraint(
+            "solutions IN ('never', 'after_due', 'after_last_attempt', 'released')", name="solutions"
+        ),
         CheckConstraint("due_at >= opens_at", name="due_after_open"),
     )
 

@@ -72,6 +72,7 @@ SOLUTIONS_OPEN = {
     SolutionRelease.AFTER_DUE: "After the due date",
     SolutionRelease.AFTER_LAST_ATTEMPT: "Once every part is done",
     SolutionRelease.NEVER: "Never",
+    SolutionRelease.RELEASED: "Now: released",
 }
 
 
@@ -91,6 +92,8 @@ def solutions_released(
     release = assignment.spec.solutions
     if release is SolutionRelease.NEVER:
         return False, "Your instructor does not release worked solutions for this assignment."
+    if release is SolutionRelease.RELEASED:
+        return True, "Your instructor has released the worked solutions of this assignment."
     if release is SolutionRelease.AFTER_DUE:
         if now > due:
             return True, "The assignment is past its due date, so its worked solutions are open."

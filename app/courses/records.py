@@ -23,6 +23,7 @@ class SolutionRelease(StrEnum):
     NEVER = "never"
     AFTER_DUE = "after_due"
     AFTER_LAST_ATTEMPT = "after_last_attempt"
+    RELEASED = "released"  # by the instructor, now ("release solutions now")
 
 
 @dataclass(frozen=True)

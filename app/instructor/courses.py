@@ -11,6 +11,7 @@ instructor's launch alike: `access.require_staff`).
     GET       /instructor/courses/{c}/gradebook          students x assignments, a student's parts
     GET       /instructor/assignments/{a}/results        how the course did on each part
     POST      /instructor/assignments/{a}/delete         the assignment goes (its answers stay)
+    POST      /instructor/assignments/{a}/release-solutions   its worked solutions open to students now
     POST      /instructor/courses/{c}/extensions         a student's own due date
     POST      /instructor/problems/{id}/as-student       view the student's page in one's own session
 """
@@ -18,6 +19,7 @@ instructor's launch alike: `access.require_staff`).
 from __future__ import annotations
 
 import re
+from dataclasses import replace
 from datetime import datetime
 from typing import Any
 from zoneinfo import ZoneInfo
@@ -437,6 +439,24 @@ async def delete_assignment(
 
     course_id = await run_in_threadpool(remove)
     return RedirectResponse(f"/instructor/courses/{course_id}?saved=deleted", status_code=303)
+
+
+@router.post("/assignments/{assignment_id}/release-solutions")
+async def release_solutions(
+    assignment_id: RecordId, request: Request, services: ServicesDep, who: Visitor
+) -> Response:
+    """Worked solutions open to every student now; one who opens one while their answers still count
+    earns nothing on its parts after (app/web/solution_page.py)."""
+    await auth.require_csrf(request, services, who)
+
+    def release() -> int:
+        course, record = _assignment(services, who, assignment_id)
+        spec = replace(record.spec, solutions=SolutionRelease.RELEASED)
+        services.stores.courses.update_assignment(record.id, spec)
+        return course.id
+
+    course_id = await run_in_threadpool(release)
+    return RedirectResponse(f"/instructor/courses/{course_id}?saved=released", status_code=303)
 
 
 # ---- the gradebook ---------------------------------------------------------------------------------

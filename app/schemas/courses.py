@@ -100,7 +100,7 @@ class AssignmentIn(BaseModel):
     max_attempts: Annotated[
         int | None, Field(ge=1, le=1000, description="per part; null: each problem's own")
     ] = None
-    solutions: Literal["never", "after_due", "after_last_attempt"] = "after_due"
+    solutions: Literal["never", "after_due", "after_last_attempt", "released"] = "after_due"
 
     @model_validator(mode="after")
     def _consistent(self) -> AssignmentIn:

@@ -106,7 +106,7 @@ def test_the_assignment_builder_saves_problems_in_the_chosen_order_and_dates_in_
     listed = signed_in.get(saved.headers["location"]).text
     assert "Assignment saved." in listed  # said, not silent
     # the course's list says each assignment's attempts and when its solutions open, not only its dates
-    assert re.search(r"<td[^>]*>3</td><td[^>]*>After the due date</td>", listed), "attempts, then solutions"
+    assert re.search(r"<td[^>]*>3</td><td[^>]*>After the due date\b", listed), "attempts, then solutions"
     [made] = stores.courses.assignments(course)
     assert made.problems == ("yo-yo",) and made.spec.max_attempts == 3
     assert made.spec.due_at.isoformat() == "2026-03-08T22:59:00+00:00"  # 23:59 in Paris (CET)
@@ -540,10 +540,40 @@ def test_the_submissions_filter_lists_no_other_instructors_private_upload(
     assert "Exam question 3" not in page and "secret-yo-yo" not in page
 
 
-def test_the_builder_says_late_answers_earn_nothing_after_the_worked_solution_is_opened(signed_in: TestClient):
+def test_the_builder_says_late_answers_earn_nothing_after_the_worked_solution_is_opened(
+    signed_in: TestClient,
+):
     course = _make_course(signed_in)
     form = signed_in.get(f"/instructor/courses/{course}/assignments/new").text
     penalty = form[form.index('<div id="late-penalty">') :]
     penalty = penalty[: penalty.index("</div>")]
     # inside the late penalty's fields: shown only while late work is accepted
     assert "earns nothing on its parts after" in penalty
+
+
+def test_releasing_an_assignments_solutions_now_opens_them_before_the_due_date(
+    signed_in: TestClient, stores: Stores
+):
+    from datetime import UTC, datetime, timedelta
+
+    from app.courses.policy import solutions_released
+    from app.courses.records import AssignmentSpec, SolutionRelease
+
+    course = _make_course(signed_in)
+    now = datetime.now(UTC)
+    made = stores.courses.create_assignment(
+        course, AssignmentSpec("HW 1", ("yo-yo",), now - timedelta(days=1), now + timedelta(days=1))
+    )
+    page = signed_in.get(f"/instructor/courses/{course}").text
+    assert f'action="/instructor/assignments/{made.id}/release-solutions"' in page
+    forged = signed_in.post(f"/instructor/assignments/{made.id}/release-solutions", data={"csrf": "forged"})
+    assert forged.status_code == 403
+    done = signed_in.post(
+        f"/instructor/assignments/{made.id}/release-solutions", data={"csrf": csrf_of(page)}
+    )
+    assert done.headers["location"] == f"/instructor/courses/{course}?saved=released"
+    after = signed_in.get(done.headers["location"]).text
+    assert "Worked solutions released" in after and "release-solutions" not in after
+    released = stores.courses.get_assignment(made.id)
+    assert released.spec.solutions is SolutionRelease.RELEASED and released.spec.due_at == made.spec.due_at
+    assert solutions_released(released, released.spec.due_at, now, all_parts_done=False)[0]

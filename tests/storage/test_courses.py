@@ -326,3 +326,10 @@ def test_concurrent_openings_of_a_worked_solution_keep_one_time(stores: Stores):
     moments = [NOW + timedelta(seconds=n) for n in range(4)]
     kept = in_parallel(4, lambda n: stores.courses.open_solution("s", "yo-yo", moments[n]))
     assert len(set(kept)) == 1 and stores.courses.solutions_opened("s") == {"yo-yo": kept[0]}
+
+
+@pytest.mark.parametrize("release", list(SolutionRelease))
+def test_every_solution_release_is_stored_and_read_back(stores: Stores, release: SolutionRelease):
+    course = stores.courses.create_course("A", owner="key:1")
+    made = stores.courses.create_assignment(course.id, _spec(solutions=release))
+    assert stores.courses.get_assignment(made.id).spec.solutions is release
