@@ -53,6 +53,11 @@ class AssignmentCell:
     parts: tuple[PartCell, ...]
 
     @property
+    def attempted(self) -> bool:
+        """Some part was answered and graded: a 0 is then a score, not "not started"."""
+        return any(part.attempts for part in self.parts)
+
+    @property
     def frozen(self) -> bool:
         """Some part's grade was frozen by the student opening its worked solution."""
         return any(part.frozen_at is not None for part in self.parts)
@@ -164,8 +169,9 @@ def build(
 
 
 def to_csv(book: Gradebook) -> str:
-    """One row per student: id, name, email, each assignment's points (its maximum in the header),
-    the total, and notes (late penalties, extensions). Scores are written as numbers and text cells
+    """One row per student: id, name, email, each assignment's points (its maximum in the header; empty
+    when nothing was answered, as LMS imports read "no grade", apart from a 0 earned), the total, and
+    notes (late penalties, extensions). Scores are written as numbers and text cells
     quoted and made inert (`app.spreadsheet`), so spreadsheets and LMS gradebook imports read them."""
     out = io.StringIO()
     writer = SafeWriter(out)
@@ -187,7 +193,7 @@ def to_csv(book: Gradebook) -> str:
         total, _ = book.total(enrolment.student)
         writer.writerow(
             [enrolment.shown_id, enrolment.name, enrolment.email]
-            + [c.score for c in cells]
+            + [c.score if c.attempted else "" for c in cells]
             + [total, "; ".join(notes)]
         )
     return out.getvalue()

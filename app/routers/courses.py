@@ -591,6 +591,8 @@ def gradebook_out(course: CourseRecord, book: Gradebook) -> GradebookOut:
                     status=cell.status.value,
                     due_at=cell.due,
                     extended=cell.extended,
+                    attempted=cell.attempted,
+                    solution_opened=cell.frozen,
                     parts=[
                         PartScoreOut(
                             problem=p.problem_id,
@@ -598,6 +600,7 @@ def gradebook_out(course: CourseRecord, book: Gradebook) -> GradebookOut:
                             score=p.score,
                             late=p.late,
                             attempts=p.attempts,
+                            solution_opened_at=p.frozen_at,
                         )
                         for p in cell.parts
                     ],

@@ -148,6 +148,7 @@ class PartScoreOut(BaseModel):
     score: float
     late: bool
     attempts: int
+    solution_opened_at: datetime | None = None
 
 
 class GradeCellOut(BaseModel):
@@ -158,6 +159,10 @@ class GradeCellOut(BaseModel):
     status: str
     due_at: datetime
     extended: bool
+    attempted: bool = Field(description="Some part was answered and graded: a score of 0 was earned.")
+    solution_opened: bool = Field(
+        description="The student opened a worked solution: no credit on its parts after."
+    )
     parts: list[PartScoreOut]
 
 

@@ -282,7 +282,8 @@ def test_late_work_loses_its_penalty_an_extension_lifts_it_and_the_csv_agrees(cl
     )
     assert float(rows["s001"][3]) == pytest.approx(0.8) and "late penalty" in rows["s001"][-1]
     assert float(rows["s002"][3]) == 1.0 and "extended" in rows["s002"][-1]
-    assert float(rows["s003"][3]) == 0.0
+    assert rows["s003"][3] == "" and not cells["s003"]["attempted"]  # nothing answered: no grade
+    assert cells["s001"]["attempted"] and not cells["s001"]["solution_opened"]
 
 
 def test_a_closed_assignment_refuses_answers_after_its_due_date(client, teacher):

@@ -147,7 +147,7 @@ def test_the_csv_has_a_row_per_student_numbers_for_scores_and_inert_text():
     rows = list(csv.reader(io.StringIO(gradebook.to_csv(book))))
     assert rows[0] == ["Student ID", "Name", "Email", "HW1 (out of 2)", "Total (out of 2)", "Notes"]
     assert rows[1] == ["s1", "Ada", "ada@x", "0.9", "0.9", "HW1: late penalty applied"]
-    assert rows[2][1] == "'=HYPERLINK(1)" and rows[2][3] == "0.0"
+    assert rows[2][1] == "'=HYPERLINK(1)" and rows[2][3] == ""  # nothing answered: no grade, not a 0
 
 
 @pytest.mark.parametrize(
@@ -203,3 +203,23 @@ def test_the_csv_notes_a_grade_frozen_by_opening_the_worked_solution():
     )
     row = list(csv.reader(io.StringIO(gradebook.to_csv(book))))[1]
     assert row[-1] == "HW1: grade frozen, worked solution opened (yo-yo at 2026-03-03 00:59 UTC)"
+
+
+@pytest.mark.parametrize(
+    ("subs", "shown"),
+    [
+        ([], ""),  # not started
+        ([("acceleration", Outcome.INVALID)], ""),  # nothing could be read: still nothing answered
+        ([("acceleration", Outcome.INCORRECT)], "0.0"),  # answered wrong: a 0 earned
+        ([("acceleration", Outcome.CORRECT)], "1.0"),
+    ],
+)
+def test_the_csv_leaves_an_assignment_not_started_empty_apart_from_a_0_earned(subs, shown):
+    students = [EnrolmentRecord(1, "course:1:s1", "s1", "Ada", "ada@x", DUE)]
+    filed = {
+        "course:1:s1": [
+            _sub(part, outcome, DUE - timedelta(hours=1), "course:1:s1") for part, outcome in subs
+        ]
+    }
+    book = gradebook.build(students, [_assignment()], {1: PARTS}, filed, {}, DUE)
+    assert list(csv.reader(io.StringIO(gradebook.to_csv(book))))[1][3] == shown

@@ -577,3 +577,35 @@ def test_releasing_an_assignments_solutions_now_opens_them_before_the_due_date(
     released = stores.courses.get_assignment(made.id)
     assert released.spec.solutions is SolutionRelease.RELEASED and released.spec.due_at == made.spec.due_at
     assert solutions_released(released, released.spec.due_at, now, all_parts_done=False)[0]
+
+
+def test_the_gradebook_shows_not_started_apart_from_a_0_earned(signed_in: TestClient, stores: Stores):
+    # both had read 0: a student who never answered and one who answered wrong
+    from datetime import UTC, datetime, timedelta
+
+    from app.courses.records import AssignmentSpec
+    from tests.db.helpers import INCORRECT
+
+    course = _make_course(signed_in)
+    page = signed_in.get(f"/instructor/courses/{course}")
+    signed_in.post(
+        f"/instructor/courses/{course}/roster", data={"csrf": csrf_of(page.text), "roster": ROSTER}
+    )
+    now = datetime.now(UTC)
+    stores.courses.create_assignment(
+        course, AssignmentSpec("HW 1", ("yo-yo",), now - timedelta(days=1), now + timedelta(days=1))
+    )
+    stores.submissions.file(
+        problem_id="yo-yo",
+        problem_version=stores.problems.get("yo-yo").version,
+        part_id="acceleration",
+        student=f"course:{course}:s001",
+        answer="-g",
+        verdict=INCORRECT,
+        max_attempts=None,
+    )
+    book = signed_in.get(f"/instructor/courses/{course}/gradebook").text
+    ada, alan = (book[book.index(name) :] for name in ("Ada Lovelace", "Alan Turing"))
+    assert re.search(r'data-label="HW 1 / \d+">0\b', ada)
+    assert re.search(r'data-label="HW 1 / \d+"><span aria-hidden="true">—</span>', alan)
+    assert '<span class="muted">not started</span>' in alan
