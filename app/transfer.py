@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import json
 import sys
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from pathlib import Path
 from typing import Any, TextIO
 
@@ -12,6 +12,7 @@ import yaml
 from tqdm import tqdm
 
 from app.authoring import vet
+from app.courses.records import EnrolmentRecord
 from app.db.records import ProblemRecord
 from app.spreadsheet import SafeWriter
 from app.storage import CompiledEntry, ProblemStore, SubmissionStore
@@ -30,6 +31,10 @@ SUBMISSION_COLUMNS = (
     "reason",
     "attempt",
     "feedback",
+    # Last, so that scripts reading the earlier columns by position still do: a course's student's,
+    # from its roster (`student` alone read `course:1:join-3f2a…`).
+    "name",
+    "email",
 )
 EXPORT_PAGE = 1000
 
@@ -69,11 +74,14 @@ def export_submissions(
     student: str | None = None,
     progress: bool = True,
     include: Callable[[str], bool] | None = None,
+    people: Mapping[str, EnrolmentRecord] | None = None,
 ) -> int:
     """Every submission (of one problem, of one student) as CSV, oldest first; returns how many rows
     were written. Text cells are neutralised for spreadsheets (`app.spreadsheet`). `progress=False`
     (the web pages) draws no progress bar on stderr; `include(student)` false leaves a student's rows out
-    (an instructor's page exports only the students of their courses)."""
+    (an instructor's page exports only the students of their courses); `people` gives the name and
+    email of each course's student, by the identity their work is filed under."""
+    known = people or {}
     writer = SafeWriter(out)
     writer.writerow(SUBMISSION_COLUMNS)
     rows, cursor = 0, None
@@ -96,6 +104,8 @@ def export_submissions(
                         item.reason.value,
                         "" if item.attempt is None else item.attempt,
                         item.feedback,
+                        known[item.student].name if item.student in known else "",
+                        known[item.student].email if item.student in known else "",
                     )
                 )
             rows += len(items)

@@ -924,7 +924,13 @@ async def submissions_csv(
     reach = _reachable(services, who)
     await run_in_threadpool(
         lambda: export_submissions(
-            services.stores.submissions, problem, out, student=student, progress=False, include=reach
+            services.stores.submissions,
+            problem,
+            out,
+            student=student,
+            progress=False,
+            include=reach,
+            people=access.students_taught(services.stores, who.principal),
         )
     )
     name = "submissions" + (f"-{problem}" if problem and _ID.match(problem) else "") + ".csv"

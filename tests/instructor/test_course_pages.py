@@ -609,3 +609,23 @@ def test_the_gradebook_shows_not_started_apart_from_a_0_earned(signed_in: TestCl
     assert re.search(r'data-label="HW 1 / \d+">0\b', ada)
     assert re.search(r'data-label="HW 1 / \d+"><span aria-hidden="true">—</span>', alan)
     assert '<span class="muted">not started</span>' in alan
+
+
+def test_the_submissions_csv_names_each_courses_student_beside_their_identity(
+    signed_in: TestClient, stores: Stores
+):
+    # a joined student's rows had read only course:N:join-…, with no name or email to tell who
+    from app.courses.records import RosterRow
+
+    course = _make_course(signed_in)
+    stores.courses.import_roster(course, [RosterRow("s1", "Ada Lovelace", "ada@uni.example")])
+    joined = f"course:{course}:join-3f2a"
+    stores.courses.enrol(course, joined, "Alan Turing", "alan@uni.example")
+    _answered_yo_yo(stores, f"course:{course}:s1", joined, "keyed-student")
+    rows = list(csv.DictReader(io.StringIO(signed_in.get("/instructor/submissions.csv").text)))
+    people = {row["student"]: (row["name"], row["email"]) for row in rows}
+    assert people == {
+        f"course:{course}:s1": ("Ada Lovelace", "ada@uni.example"),
+        joined: ("Alan Turing", "alan@uni.example"),
+        "keyed-student": ("", ""),  # in no course: no roster to name them
+    }
