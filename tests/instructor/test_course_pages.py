@@ -629,3 +629,31 @@ def test_the_submissions_csv_names_each_courses_student_beside_their_identity(
         joined: ("Alan Turing", "alan@uni.example"),
         "keyed-student": ("", ""),  # in no course: no roster to name them
     }
+
+
+def test_an_assignment_whose_only_problem_was_retired_says_there_is_nothing_to_answer(
+    signed_in: TestClient, stores: Stores
+):
+    # it had said "Not started" and "Score: 0 of 0"
+    from datetime import UTC, datetime, timedelta
+
+    from app.courses.records import AssignmentSpec
+
+    author = stores.keys.list()[0]
+    document = {**stores.problems.get("yo-yo").document, "id": "my-yo-yo", "title": "My yo-yo"}
+    stores.problems.create("my-yo-yo", document, owner_key_id=author.id)
+    course = _make_course(signed_in)
+    now = datetime.now(UTC)
+    made = stores.courses.create_assignment(
+        course, AssignmentSpec("HW 1", ("my-yo-yo",), now - timedelta(days=1), now + timedelta(days=1))
+    )
+    page = signed_in.get(f"/instructor/courses/{course}")
+    signed_in.post(
+        f"/instructor/courses/{course}/join-code", data={"csrf": csrf_of(page.text), "enabled": "1"}
+    )
+    student = TestClient(signed_in.app, follow_redirects=False)
+    student.post(f"/join/{stores.courses.get_course(course).join_code}", data={"name": "Ada"})
+    stores.problems.retire("my-yo-yo")
+    for path in ("/courses", f"/courses/{course}/assignments/{made.id}"):
+        shown = student.get(path).text
+        assert "Nothing to answer" in shown and "0 of 0" not in shown and "Not started" not in shown, path
