@@ -280,3 +280,79 @@ def test_the_join_link_is_copied_with_one_click(live_server: LiveServer, browse:
     copy.click()
     expect(copy).to_have_text("Copied")
     assert teacher.evaluate("() => navigator.clipboard.readText()") == link
+
+
+def test_a_late_student_is_asked_before_a_worked_solution_freezes_their_grade(
+    live_server: LiveServer, browse: Callable[..., Any]
+) -> None:
+    # a solution open "after the due date" with late work accepted had been read and copied for credit
+    from playwright.sync_api import expect
+
+    stores = live_server.stores
+    teacher_key = live_server.key("instructor", "Prof Franklin")
+    owner = max(k.id for k in stores.keys.list() if k.name == "Prof Franklin")
+    course = stores.courses.create_course("Lab", owner=f"key:{owner}")
+    stores.courses.set_join_code(course.id, "LABJ2345")
+    now = datetime.now(UTC)
+    from app.courses.records import AssignmentSpec, LateKind, LatePolicy
+
+    stores.courses.create_assignment(
+        course.id,
+        AssignmentSpec(
+            "Lab 1",
+            ("skier-friction",),
+            now - timedelta(days=3),
+            now - timedelta(hours=1),
+            LatePolicy(LateKind.PENALTY, 0.1, 0.5),
+        ),
+    )
+    student = browse(f"{live_server.url}/join/LABJ2345", width=WIDTHS["phone"])
+    student.get_by_label("Your name").fill("Rosalind")
+    student.get_by_role("button", name="Join the course").click()
+    student.goto(f"{live_server.url}/courses")
+    student.get_by_role("link", name="Lab 1").click()
+    _answer_in(student, BANK["skier-friction"].title, "Lab 1")
+    student.get_by_role("link", name="Worked solution").click()
+    expect(student.locator(".confirm-solution")).to_contain_text("stays as it is now")
+    check_page(student, "course-solution-ask-phone")
+    student.get_by_role("button", name="Open the worked solution").click()
+    expect(student.get_by_role("heading", name="Answers")).to_be_visible(timeout=FIRST_USE_MS)
+    expect(student.locator(".notice.frozen")).to_contain_text("You opened this worked solution on")
+    check_page(student, "course-solution-opened-phone")
+    student.get_by_role("link", name="Back to the problem").first.click()
+    expect(student.locator("#part-acceleration .notice.frozen")).to_contain_text("frozen")
+    check_page(student, "course-problem-frozen-phone")
+    wide = browse(student.url, width=WIDTHS["desktop"], cookies=student.context.cookies())
+    expect(wide.locator("#part-friction_coefficient .notice.frozen")).to_have_count(0)  # solved before
+    check_page(wide, "course-problem-frozen-desktop")
+
+    teacher = browse(f"{live_server.url}/instructor/sign-in", width=WIDTHS["desktop"])
+    teacher.get_by_label("Instructor API key").fill(teacher_key)
+    teacher.get_by_role("button", name="Sign in").click()
+    teacher.goto(f"{live_server.url}/instructor/courses/{course.id}/gradebook")
+    expect(teacher.locator("table.gradebook tbody tr").first).to_contain_text("solution read")
+    check_page(teacher, "course-gradebook-frozen-desktop")
+    check_page(
+        browse(teacher.url, width=WIDTHS["phone"], cookies=teacher.context.cookies()),
+        "course-gradebook-frozen-phone",
+    )
+    teacher.goto(f"{live_server.url}/instructor/courses/{course.id}")
+    teacher.get_by_role("button", name=re.compile(r"^Release now\W+Lab 1")).click()
+    expect(teacher.get_by_role("status")).to_contain_text("Worked solutions released")
+    check_page(teacher, "course-released-desktop")
+    check_page(
+        browse(teacher.url, width=WIDTHS["phone"], cookies=teacher.context.cookies()), "course-released-phone"
+    )
+
+
+def _answer_in(page: Any, problem_title: str, assignment: str) -> None:
+    from playwright.sync_api import expect
+
+    page.get_by_role("link", name=problem_title).click()
+    expect(page.locator(".assignment-banner")).to_contain_text(assignment)
+    box = page.locator("#part-friction_coefficient input[name=answer]")
+    box.press_sequentially(RIGHT)
+    box.press("Enter")
+    expect(page.locator("#part-friction_coefficient .verdict")).to_have_text(
+        re.compile(r"^Correct\."), timeout=FIRST_USE_MS
+    )
