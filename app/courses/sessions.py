@@ -1,6 +1,8 @@
 """Students without an LMS: a personal sign-in link (a single-use token) opens a session for the
 course, held in an HttpOnly, SameSite=Lax cookie, so every tab of the browser is signed in and no
-page asks for an API key. The session reads as a launched student's (`SessionRecord`), so the API
+page asks for an API key. The cookie holds one session per course (a student in a physics course
+and its lab is in both in one browser): a request acts as the session of its course or problem
+(`choose`), else the latest. The session reads as a launched student's (`SessionRecord`), so the API
 and the student pages accept it exactly as they accept an LMS launch, CSRF token included.
 
 A student's link to come back (shown when they join, or made again while signed in) is the same
@@ -10,12 +12,15 @@ kept, and any new link of theirs (the instructor's included) replaces it."""
 from __future__ import annotations
 
 import secrets
+from collections.abc import Sequence
 from dataclasses import dataclass
 from datetime import datetime, timedelta
 
 from app.auth import Role
+from app.courses import access
 from app.courses.records import CourseSession, roster_identity
 from app.lti.sessions import SessionRecord, token_hash
+from app.storage import Stores
 from app.storage.protocols import CourseStore
 
 COOKIE = "physcheck_course"
@@ -25,6 +30,8 @@ RETURN_LINK_LIFETIME = timedelta(days=365)  # a course's year at most; a new one
 PREVIEW_LIFETIME = timedelta(hours=8)
 SIGN_IN_PATH = "/s/"  # followed by the token
 COURSE_PLATFORM = 0  # no LMS: what a course session's SessionRecord names as its platform
+MAX_COURSES = 8  # sessions one browser's cookie holds, the latest first
+_SEPARATOR = "."  # not in token_urlsafe's alphabet
 
 
 def issue_link(courses: CourseStore, course_id: int, student: str, now: datetime) -> str:
@@ -75,15 +82,67 @@ def open_preview(courses: CourseStore, key_id: str, name: str, now: datetime) ->
     return cookie
 
 
-def find(courses: CourseStore, cookie: str, now: datetime) -> tuple[str, SessionRecord] | None:
-    """(id hash, the session as a launched student's) for a live course session cookie."""
-    if not cookie or len(cookie) > 100:
-        return None
-    id_hash = token_hash(cookie)
-    session = courses.get_session(id_hash)
-    if session is None or session.expires_at <= now:
-        return None
-    return id_hash, SessionRecord(
+def _cookie_ids(cookie: str | None) -> list[str]:
+    return [part for part in (cookie or "").split(_SEPARATOR) if 0 < len(part) <= 100][:MAX_COURSES]
+
+
+def live(courses: CourseStore, cookie: str | None, now: datetime) -> list[tuple[str, CourseSession]]:
+    """(id hash, session) of each live session the browser's cookie holds, the latest first."""
+    found = []
+    for cookie_id in _cookie_ids(cookie):
+        id_hash = token_hash(cookie_id)
+        session = courses.get_session(id_hash)
+        if session is not None and session.expires_at > now:
+            found.append((id_hash, session))
+    return found
+
+
+def added(courses: CourseStore, cookie: str | None, new: str, session: CourseSession, now: datetime) -> str:
+    """The browser's cookie with a new session first, in place of any it held for the same course or
+    student (signing in to one course no longer signs the browser out of the others)."""
+    kept = [new]
+    for cookie_id in _cookie_ids(cookie):
+        other = courses.get_session(token_hash(cookie_id))
+        if other is None or other.expires_at <= now:
+            continue
+        if (
+            other.course_id is None
+            or other.course_id == session.course_id
+            or other.student == session.student
+        ):
+            continue
+        kept.append(cookie_id)
+    return _SEPARATOR.join(kept[:MAX_COURSES])
+
+
+def choose(
+    stores: Stores,
+    found: Sequence[tuple[str, CourseSession]],
+    now: datetime,
+    *,
+    course_id: int | None = None,
+    problem_id: str | None = None,
+) -> tuple[str, CourseSession]:
+    """Which of the browser's sessions a request acts as: the one of its course; for a problem, the one
+    whose open assignment takes answers to it (else one that has it at all); else the latest."""
+    if course_id is not None:
+        for item in found:
+            if item[1].course_id == course_id:
+                return item
+    if problem_id is not None and len(found) > 1:
+        openings = [(item, access.opening(stores, item[1].student, problem_id, now)) for item in found]
+        for item, opened in openings:
+            if opened is not None and opened.accepting:
+                return item
+        for item, opened in openings:
+            if opened is not None:
+                return item
+    return found[0]
+
+
+def as_record(session: CourseSession) -> SessionRecord:
+    """A course session as a launched student's, which the API and the pages accept."""
+    return SessionRecord(
         platform_id=COURSE_PLATFORM,
         sub=session.student,
         student=session.student,

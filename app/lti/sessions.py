@@ -118,7 +118,20 @@ def current_session(request: Request) -> tuple[str, SessionRecord] | None:
     course_cookie = request.cookies.get(course_sessions.COOKIE)
     if not course_cookie:
         return None
-    return course_sessions.find(context.stores.courses, course_cookie, context.clock())
+    now = context.clock()
+    found = course_sessions.live(context.stores.courses, course_cookie, now)
+    if not found:
+        return None
+    params = request.path_params
+    course = params.get("course_id")
+    id_hash, session = course_sessions.choose(
+        context.stores,
+        found,
+        now,
+        course_id=int(course) if isinstance(course, (int, str)) and str(course).isdigit() else None,
+        problem_id=params.get("problem_id"),
+    )
+    return id_hash, course_sessions.as_record(session)
 
 
 def principal_from_session(request: Request) -> Principal | None:

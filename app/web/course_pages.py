@@ -28,7 +28,7 @@ from app.courses import access, service
 from app.courses import sessions as course_sessions
 from app.courses.gradebook import AssignmentCell
 from app.courses.policy import Status, late_policy_text, shown
-from app.courses.records import AssignmentNotFound, AssignmentRecord, CourseRecord
+from app.courses.records import AssignmentNotFound, AssignmentRecord, CourseRecord, CourseSession
 from app.db.errors import ProblemNotFound
 from app.deps import RecordId
 from app.lti.context import LtiContext, LtiContextDep
@@ -80,7 +80,8 @@ def _refused_cross_site(request: Request) -> HTMLResponse:
 async def sign_in(token: str, request: Request, context: LtiContextDep) -> Response:
     if _cross_site(request):
         return _refused_cross_site(request)
-    opened = await run_in_threadpool(course_sessions.sign_in, context.stores.courses, token, context.clock())
+    now = context.clock()
+    opened = await run_in_threadpool(course_sessions.sign_in, context.stores.courses, token, now)
     if opened is None:
         return page(
             request,
@@ -89,11 +90,22 @@ async def sign_in(token: str, request: Request, context: LtiContextDep) -> Respo
             status=400,
         )
     response = RedirectResponse("/courses", status_code=303)
-    _course_cookie(response, request, opened[0])
+    await _course_cookie(response, request, context, opened[0], opened[1])
     return response
 
 
-def _course_cookie(response: Response, request: Request, cookie: str) -> None:
+async def _course_cookie(
+    response: Response, request: Request, context: LtiContext, new: str, session: CourseSession
+) -> None:
+    """The browser's cookie with the new session beside those of its other courses."""
+    cookie = await run_in_threadpool(
+        course_sessions.added,
+        context.stores.courses,
+        request.cookies.get(course_sessions.COOKIE),
+        new,
+        session,
+        context.clock(),
+    )
     response.set_cookie(
         course_sessions.COOKIE,
         cookie,
@@ -107,11 +119,11 @@ def _course_cookie(response: Response, request: Request, cookie: str) -> None:
 
 def _enrolled_in(request: Request, context: LtiContext, course: CourseRecord) -> str | None:
     """The name of the student this browser is signed in as, when they are in `course` already."""
-    who = _student(request)
-    if who is None:
-        return None
-    enrolment = context.stores.courses.enrolment(course.id, who.student)
-    return None if enrolment is None else enrolment.name or "you"
+    for who in _students(request, context):
+        enrolment = context.stores.courses.enrolment(course.id, who.student)
+        if enrolment is not None:
+            return enrolment.name or "you"
+    return None
 
 
 @router.get("/join/{code}")
@@ -159,7 +171,7 @@ async def join(code: str, request: Request, context: LtiContextDep) -> Response:
     if isinstance(joined, course_sessions.AlreadyJoined):
         return page(request, "courses/join.html", {**values, "taken": joined.matched}, status=409)
     response = _return_link_page(request, course, joined.session.name, joined.return_token, joined=True)
-    _course_cookie(response, request, joined.cookie)
+    await _course_cookie(response, request, context, joined.cookie, joined.session)
     return response
 
 
@@ -183,18 +195,21 @@ async def new_return_link(request: Request, context: LtiContextDep) -> Response:
         return _refused_cross_site(request)
     form = await request.form(max_files=0, max_fields=10)
     sent = str(form.get("csrf") or "")
+    asked = str(form.get("course") or "")
     now = context.clock()
 
     def issue() -> tuple[CourseRecord, str, str] | int:
-        found = current_session(request)
-        if found is None or found[1].student is None:
+        signed_in = _students(request, context)
+        if not signed_in:
             return 401
-        student = found[1].student
-        courses = context.stores.courses.courses_enrolled(student)
+        # the session of the course asked for (a browser may be signed in to several), else the latest
+        mine = [(each, context.stores.courses.courses_enrolled(each.student)) for each in signed_in]
+        who, courses = next(((w, c) for w, c in mine if any(str(x.id) == asked for x in c)), mine[0])
+        student = who.student
         if (
-            found[1].platform_id != course_sessions.COURSE_PLATFORM  # an LMS signs them in
+            not who.by_link  # an LMS signs them in
             or not courses  # an instructor's "view as a student"
-            or not hmac.compare_digest(sent.encode(), found[1].csrf_token.encode())
+            or not hmac.compare_digest(sent.encode(), who.csrf_token.encode())
         ):
             return 403
         course = courses[0]  # a joined or rostered student's identity belongs to one course
@@ -227,7 +242,8 @@ async def sign_out(request: Request, context: LtiContextDep) -> Response:
             return 401
         if not who.by_link or not hmac.compare_digest(sent.encode(), who.csrf_token.encode()):
             return 403
-        context.stores.courses.end_session(who.session_hash)
+        for each in _students(request, context):  # every course this browser is signed in to
+            context.stores.courses.end_session(each.session_hash)
         return 200
 
     status = await run_in_threadpool(end)
@@ -282,6 +298,17 @@ class SignedIn:
     by_link: bool  # by a link or a join code (not by an LMS): they make links to come back, sign out
 
 
+def _students(request: Request, context: LtiContext) -> list[SignedIn]:
+    """Everyone this browser is signed in as: an LMS launch's student, else each course's session."""
+    latest = _student(request)
+    if latest is None or not latest.by_link:
+        return [] if latest is None else [latest]
+    cookie = request.cookies.get(course_sessions.COOKIE)
+    found = course_sessions.live(context.stores.courses, cookie, context.clock())
+    each = [SignedIn(s.student, s.name, s.csrf_token, h, True) for h, s in found if s.course_id is not None]
+    return each or [latest]
+
+
 def _student(request: Request) -> SignedIn | None:
     """The signed-in student, or None."""
     found = current_session(request)
@@ -309,8 +336,12 @@ async def my_courses(request: Request, context: LtiContextDep) -> HTMLResponse:
         who = _student(request)
         if who is None:
             return None
-        courses = services.stores.courses.courses_enrolled(who.student)
-        return {"courses": [(c, _rows(services, c, who.student, now)) for c in courses], "who": who}
+        courses = [
+            (c, _rows(services, c, each.student, now), each)
+            for each in _students(request, context)
+            for c in services.stores.courses.courses_enrolled(each.student)
+        ]
+        return {"courses": sorted(courses, key=lambda item: item[0].id), "who": who}
 
     values = await run_in_threadpool(load)
     frames = await _frames(context)

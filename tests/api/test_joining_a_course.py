@@ -168,3 +168,31 @@ def test_an_assignment_not_open_yet_says_when_it_opens_on_the_students_home(clie
     browser, _ = _join(client, code, name="Lise Meitner")
     home = browser.get("/courses").text
     assert "Opens Sun 02 Mar 2031, 10:00 CET; due Sun 09 Mar 2031, 10:00 CET." in home  # Paris time
+
+
+def test_a_student_who_joins_a_second_course_in_the_same_browser_stays_in_both(client, teacher):
+    # joining course B had signed the browser out of course A
+    code = _join_code(client, teacher)
+    mechanics = client.get("/v1/courses", headers=teacher).json()[0]["id"]
+    lab = _course(client, teacher, "Optics lab")
+    lab_work = _assignment(client, teacher, lab, problems=["yo-yo"], title="Lab 1")
+    lab_code = client.post(f"/v1/courses/{lab}/join-code", json={}, headers=teacher).json()["join_code"]
+    browser, _ = _join(client, code, name="Lise Meitner")
+    assert browser.post(f"/join/{lab_code}", data={"name": "Lise Meitner"}).status_code == 200
+    home = browser.get("/courses").text
+    assert "Mechanics" in home and "Optics lab" in home and "to 2 courses" in home
+    assert browser.get(f"/courses/{lab}/assignments/{lab_work['id']}").status_code == 200
+    # each problem's page and answers act as the student of the course that assigned it
+    for problem, part, answer in (RIGHT, ("yo-yo", "acceleration", "g")):
+        token = re.search(r'name="csrf-token" content="([^"]+)"', browser.get(f"/p/{problem}").text)
+        assert token
+        path = f"/v1/problems/{problem}/parts/{part}/submissions"
+        filed = browser.post(path, json={"answer": answer}, headers={"X-CSRF-Token": token.group(1)})
+        assert filed.status_code == 201, filed.text
+    for course in (mechanics, lab):
+        [row] = client.get(f"/v1/courses/{course}/gradebook", headers=teacher).json()["students"]
+        assert row["assignments"][0]["attempted"], course
+    csrf = re.search(r'name="csrf" value="([^"]+)"', home)
+    assert csrf
+    assert browser.post("/courses/sign-out", data={"csrf": csrf.group(1)}).status_code == 200
+    assert browser.get("/courses").status_code == 401  # out of both: a shared computer's next user

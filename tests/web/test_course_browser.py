@@ -356,3 +356,34 @@ def _answer_in(page: Any, problem_title: str, assignment: str) -> None:
     expect(page.locator("#part-friction_coefficient .verdict")).to_have_text(
         re.compile(r"^Correct\."), timeout=FIRST_USE_MS
     )
+
+
+@pytest.mark.parametrize("device", WIDTHS)
+def test_a_student_in_two_courses_stays_signed_in_to_both_in_one_browser(
+    live_server: LiveServer, browse: Callable[..., Any], device: str
+) -> None:
+    # joining the lab had signed the browser out of the physics course
+    from playwright.sync_api import expect
+
+    from app.courses.records import AssignmentSpec
+
+    stores = live_server.stores
+    now = datetime.now(UTC)
+    student = browse(f"{live_server.url}/courses", width=WIDTHS[device])
+    for title, problem in (("Physics", "atwood"), ("Physics lab", "projectile")):
+        course = stores.courses.create_course(title, owner="key:0")
+        code = f"{title[-3:].upper()}{device[:4].upper()}"
+        stores.courses.set_join_code(course.id, code)
+        spec = AssignmentSpec(f"{title} 1", (problem,), now - timedelta(days=1), now + timedelta(days=6))
+        stores.courses.create_assignment(course.id, spec)
+        student.goto(f"{live_server.url}/join/{code}")
+        student.get_by_label("Your name").fill("Chien-Shiung Wu")
+        student.get_by_role("button", name="Join the course").click()
+        expect(student.get_by_role("heading", level=1)).to_have_text(f"Welcome to {title}")
+    student.goto(f"{live_server.url}/courses")
+    expect(student.get_by_role("heading", level=2, name="Physics", exact=True)).to_be_visible()
+    expect(student.get_by_role("heading", level=2, name="Physics lab", exact=True)).to_be_visible()
+    check_page(student, f"course-two-courses-{device}")
+    student.get_by_role("link", name="Physics 1").click()
+    student.get_by_role("link", name=BANK["atwood"].title).click()
+    expect(student.locator(".assignment-banner")).to_contain_text("Physics 1")
