@@ -232,3 +232,16 @@ def test_a_solution_with_nothing_left_to_earn_opens_without_freezing_anything(
     shown = student.get("/p/yo-yo/solution").text
     assert 'id="solution-answers"' in shown and "stays as it is now" not in shown
     assert stores.courses.solutions_opened(who) == {}
+
+
+def test_after_an_answer_the_attempts_are_said_once_in_the_verdict_and_shown_in_the_standing(
+    client: TestClient, stores: Stores
+) -> None:
+    # a screen reader heard "Attempts: 1 used" twice: in the verdict's live region and the standing
+    headers = _student(stores, "ed")
+    fresh = client.get("/p/yo-yo/content", headers=headers).text
+    assert '<span class="attempts">Attempts: 0 used' in fresh  # no verdict yet: the standing says it
+    file_submissions(stores, [("ed", "tension", "x", RIGHT)])
+    work = client.get("/p/yo-yo/parts/tension/work", headers=headers).text
+    assert '<span class="visually-hidden">Attempts: 1 used.</span>' in work  # said with the verdict
+    assert '<span class="attempts" aria-hidden="true">Attempts: 1 used' in work  # and only shown here
