@@ -42,13 +42,14 @@ def resolve_words(tokens: list[Token], table: NameTable) -> list[Token]:
         if word == DEGREE_WORD and not table.is_declared(word) and prev and prev.kind in _ENDS_OPERAND:
             out.append(Token(Kind.POSTFIX, "°", tok.pos, tok.end, tok.space_before))
             continue
-        if (
-            word == TIMES_WORD
-            and not table.is_declared(word)
-            and prev is not None
-            and prev.kind is Kind.NUM
-            and nxt.kind is Kind.NUM
-        ):
+        if word == TIMES_WORD and prev is not None and prev.kind is Kind.NUM and nxt.kind is Kind.NUM:
+            if table.is_declared(word):  # `2 x 10^3 x`: a calculator's times sign as much as the symbol
+                raise AmbiguousInput(
+                    f"Is the x between {prev.text} and {nxt.text} a times sign or your symbol x? Write × or * "
+                    f"for a times sign, or * on both sides of the symbol ({prev.text}*x*{nxt.text}).",
+                    tok.pos,
+                    (f"{prev.text}*{nxt.text}", f"{prev.text}*x*{nxt.text}"),
+                )
             out.append(Token(Kind.OP, "*", tok.pos, tok.end, tok.space_before))
             continue
         if len(word) > MAX_WORD_LENGTH and not table.is_declared(word):

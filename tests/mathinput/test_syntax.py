@@ -6,6 +6,7 @@ import pytest
 import sympy
 from sympy import Abs, E, Rational, acos, asin, atan, cos, exp, factorial, log, pi, sin, sqrt, tan
 
+from physics.errors import AmbiguousInput
 from tests.mathinput.support import read, same, sym
 
 m, M, g, theta, x, y = sym("m"), sym("M"), sym("g"), sym("theta"), sym("x"), sym("y")
@@ -170,8 +171,25 @@ def test_numbers_are_exact_rationals(text, expected):
     assert not got.has(sympy.Float)
 
 
-def test_x_between_numbers_is_a_name_when_declared():
-    assert read("4.58 x 10^3", "x").expr == 4580 * x
+@pytest.mark.parametrize(
+    ("text", "readings"),
+    [
+        ("4.58 x 10^3", ("4.58*10", "4.58*x*10")),
+        ("2 x 10^3 x", ("2*10", "2*x*10")),  # a calculator's times sign, then the symbol
+        ("3 x 2", ("3*2", "3*x*2")),
+    ],
+)
+def test_x_between_numbers_is_asked_about_when_declared(text, readings):
+    with pytest.raises(AmbiguousInput, match="a times sign or your symbol x") as asked:
+        read(text, "x")
+    assert asked.value.readings == readings
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"), [("2*x*10^3", 2000 * x), ("2 x*10^3", 2000 * x), ("2×10^3 x", 2000 * x)]
+)
+def test_x_beside_a_sign_is_the_declared_symbol(text, expected):
+    assert read(text, "x").expr == expected
 
 
 COEFFICIENTS = [
