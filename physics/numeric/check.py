@@ -31,7 +31,9 @@ def _units_of(read: NumericAnswer, spec: NumericSpec, target: ParsedUnits | None
     """The units the answer's number is in (None: a pure number), or MissingUnits / UnexpectedUnits."""
     if read.units is None:
         if target is not None and spec.units_required:
-            raise MissingUnits(f"Your answer needs units, for example {read.text} {target.text}.", read.end)
+            raise MissingUnits(
+                f"Your answer needs units, for example {read.text} {_example_units(read, target)}.", read.end
+            )
         return target
     if target is None:
         raise UnexpectedUnits("This answer is a pure number: remove the units.", read.units_position)
@@ -44,6 +46,15 @@ def _units_of(read: NumericAnswer, spec: NumericSpec, target: ParsedUnits | None
                 foreign[0],
             )
     return read.units
+
+
+def _example_units(read: NumericAnswer, target: ParsedUnits) -> str:
+    """The target's units, but radians for a bare angle in π (`pi/6` where degrees are asked): the
+    student meant π/6 rad, and "pi/6 °" would tell them to write a thirtieth of a degree."""
+    (atom, power), *more = target.factors
+    if not more and power == 1 and atom.angle and atom.name != "radian" and "pi" in read.text:
+        return "rad"
+    return target.text
 
 
 def _check_figures_shown(read: NumericAnswer, tolerance: Tolerance) -> None:

@@ -100,3 +100,21 @@ def test_angular_units_other_than_strict_are_a_spec_error() -> None:
     with pytest.raises(SpecError) as raised:
         NumericSpec(D(1), "rad/s", angular_units="loose")
     assert raised.value.path == ("angular_units",)
+
+
+@pytest.mark.parametrize(
+    ("answer", "units", "example"),
+    [
+        ("π/6", "deg", "pi/6 rad"),  # not "pi/6 °", a thirtieth of a degree
+        ("2π", "°", "2*pi rad"),
+        ("pi/6", "rad", "pi/6 rad"),
+        ("π/2", "rad/s", "pi/2 rad/s"),
+        ("30", "deg", "30 °"),
+    ],
+)
+def test_a_bare_angle_is_asked_for_units_that_fit_how_it_is_written(
+    answer: str, units: str, example: str
+) -> None:
+    verdict = check_numeric(answer, NumericSpec(D("0.5236"), units))
+    assert verdict.reason is Reason.MISSING_UNITS
+    assert verdict.feedback == f"Your answer needs units, for example {example}."
