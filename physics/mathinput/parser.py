@@ -190,7 +190,7 @@ class Parser:
                     and self._source[tok.pos : tok.pos + 1] == "\\"
                 ):
                     self._refuse_a_latex_mixed_number(prev)
-                if kind is Kind.NUM and prev.kind is Kind.NUM:
+                if kind is Kind.NUM and prev.kind is Kind.NUM and not _times_a_power_of_ten(tokens, self._i):
                     self._refuse_a_mixed_number(prev, tok)
                     raise ParseError(
                         f'Two numbers side by side ("{self._source[prev.pos : tok.end]}"): remove the '
@@ -857,3 +857,12 @@ def _is_minus_one(node: Node) -> bool:
 
 def _product_of(factors: list[Node]) -> Node:
     return factors[0] if len(factors) == 1 else Product(factors[0], tuple(("*", f) for f in factors[1:]))
+
+
+def _times_a_power_of_ten(tokens: list[Token], at: int) -> bool:
+    """`4.58 10^3`: scientific notation with its × left out, as a calculator shows it. The number before
+    is no exponent (`x^2 10^3` may be x^(2·10^3)), and the two cannot be one number as `12 500` can."""
+    before, after = tokens[at - 2] if at >= 2 else None, tokens[at + 1]
+    raised = after.kind is Kind.SUP or (after.kind is Kind.OP and after.text == "^")
+    exponent = before is not None and before.kind is Kind.OP and before.text == "^"
+    return tokens[at].text == "10" and raised and not exponent

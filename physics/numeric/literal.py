@@ -1,7 +1,7 @@
 """Reading the number at the start of a numeric answer, exactly, with its significant figures.
 
 Accepted: an optional sign (`-`, `−`, `+`), a decimal literal (`4.58`, `.5`, `1500`, `100.`), an
-optional power of ten (`e3`, `E-3`, `×10^3`, `x 10^3`, `*10**3`, `·10⁻³`) and an optional `%` (or `percent`).
+optional power of ten (`e3`, `E-3`, `×10^3`, `x 10^3`, `*10**3`, `·10⁻³`, `10^3` alone) and an optional `%` (or `percent`).
 Size limits are checked on the raw characters before any arithmetic, so `1e999999` costs nothing.
 """
 
@@ -194,6 +194,10 @@ def _scientific(text: str, i: int, start: int) -> tuple[int, int] | None:
     if j > i and j < len(text) and text[j] in "eE":
         _refuse_spaced_exponent(text, text[start:i], j)
     times_end = _times_sign_end(text, j)
+    if (
+        times_end is None and j > i and text.startswith("10", j)
+    ):  # `4.58 10^3`: a calculator's, its × left out
+        return _power_of_ten(text, j + 2)
     if times_end is not None:
         k = skip_spaces(text, times_end)
         if text.startswith("10", k):

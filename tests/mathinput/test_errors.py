@@ -49,6 +49,7 @@ PARSE_ERRORS = [
     ("x \\sin\\thetay", 6, "Unknown LaTeX command \\thetay: put a space after \\theta, as in \\theta y"),
     ("12 500", 3, "Two numbers side by side"),
     ("x^2 3", 4, "Two numbers side by side"),
+    ("x^2 10^3", 4, "Two numbers side by side"),  # x^(2·10^3)? not taken for a power of ten
     ("sin", 0, "sin needs an argument"),
     ("sin^2", 0, "sin needs an argument"),
     ("x + sin -x", 8, "brackets"),
