@@ -386,6 +386,8 @@ class _Parser:
                 )
             hint = suggestion(token.text)
             advice = f" (units are case-sensitive: did you mean {hint!r}?)" if hint else ""
+            if token.text in _DEGREE_LOOKALIKES:  # `30o`: the letter typed for a degree sign
+                advice = ": for degrees write ° or deg, as in 30°"
             raise UnknownUnit(f"Unknown unit {token.text!r}{advice}", token.position, token.text)
         if len(readings.options) > 1 or not readings.safe:
             self.open_names.append((token, readings))
@@ -443,6 +445,9 @@ class UnitReading:
     units: ParsedUnits
     note: str | None = None
 
+
+# Letters typed where a degree sign was meant (`30o`), which no unit spells.
+_DEGREE_LOOKALIKES = frozenset({"o", "O", "ᵒ"})
 
 _MAX_READINGS = 64  # combinations of readings of glued names tried against the expected dimension
 

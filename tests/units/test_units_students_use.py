@@ -229,3 +229,19 @@ def test_an_alias_in_the_wrong_case_is_settled_by_dimension(typed: str, reading:
     read = read_units(typed, MASS)
     assert read.units.text == reading
     assert read.note == f"Read {typed} as {reading}: the only reading that is a mass"
+
+
+@pytest.mark.parametrize(
+    ("answer", "expected", "units", "reason", "says"),
+    [
+        ("30o", "30", "deg", Reason.UNKNOWN_UNIT, "for degrees write ° or deg"),
+        ("30 O", "30", "deg", Reason.UNKNOWN_UNIT, "for degrees write ° or deg"),
+    ],
+)
+def test_an_answer_in_a_habit_of_everyday_units_is_refused_saying_how_to_write_it(
+    answer: str, expected: str, units: str, reason: Reason, says: str
+) -> None:
+    verdict = check_numeric(answer, NumericSpec(D(expected), units))
+    assert verdict.outcome is Outcome.INVALID
+    assert verdict.reason is reason
+    assert says in verdict.feedback
