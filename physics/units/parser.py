@@ -396,6 +396,12 @@ class _Parser:
     def atom(self) -> ParsedUnits:
         token = self.advance()
         if token.kind is Kind.INTEGER:
+            if token.value != 1 and self.at(Kind.NAME):  # `5 ft 10 in`, `2 h 30 min`
+                raise ParseError(
+                    f"A second number with its own unit ({token.text} {self.token.text}): write the answer "
+                    "as one number in one unit, as 70 in for 5 ft 10 in",
+                    token.position,
+                )
             if token.value != 1:
                 raise ParseError(
                     "A unit string holds no numbers except 1 (as in 1/s) and powers (as in m^2)",
