@@ -213,6 +213,20 @@ def _scientific(text: str, i: int, start: int) -> tuple[int, int] | None:
     return None
 
 
+_INCHES_AFTER_FEET = re.compile(r"['’′](\d+)\s*[\"”″]")
+
+
+def _refuse_feet_and_inches(text: str, feet: str, at: int) -> None:
+    """ParseError for `5'10"`, a height in feet and inches: not the Swiss thousands separator `1'500`."""
+    found = _INCHES_AFTER_FEET.match(text, at)
+    if found is not None and feet:
+        inches = int(feet) * 12 + int(found.group(1))
+        raise ParseError(
+            f"Feet and inches ({text[: found.end()].strip()}): write one number in one unit, as {inches} in",
+            at,
+        )
+
+
 class CalculatorExponent(LikelySlip):
     """`3.0 x 10-3`: a calculator's exponent typed after `×10` without its `^`. Read as arithmetic it
     would be 3.0·10 − 3 = 27, which no one means by it: refused, whatever the arithmetic reader makes of
@@ -319,6 +333,7 @@ def read_number(text: str, start: int = 0) -> NumberLiteral:
             i,
         )
     if i + 1 < len(text) and text[i] in _DIGIT_SEPARATORS and text[i + 1] in _DIGITS:
+        _refuse_feet_and_inches(text, integer_digits, i)
         raise ParseError(f"Write a number without separators: 1500, not 1{text[i]}500", i)
     if i < len(text) and text[i] == "." and i + 1 < len(text) and text[i + 1] in _DIGITS:
         raise ParseError("A number has at most one decimal point", i)
