@@ -170,15 +170,16 @@ LATEX_PLAIN_TEXT_HINT: Final = (
     "^{…} and _{…})"
 )
 _NAME_AS_LISTED = "type the symbol as the problem lists it (v, v_x, F_net): a plain name has no accents"
+_NAME_NOT_BOLD = "type the symbol as the problem lists it (v, v_x, F_net), in plain letters: bold is not read"
 _ONE_EXPRESSION = "type only the expression, without =, relations or a second line"
 _WORK_IT_OUT = "an answer is an expression in the problem's symbols: work the operation out first"
 LATEX_HINTS: Final = MappingProxyType(
     {
         **dict.fromkeys(
-            ("vec", "hat", "bar", "dot", "ddot", "tilde", "overline", "overrightarrow", "mathbf",
-             "boldsymbol", "bm"),
+            ("vec", "hat", "bar", "dot", "ddot", "tilde", "overline", "overrightarrow"),
             _NAME_AS_LISTED,
         ),
+        **dict.fromkeys(("mathbf", "boldsymbol", "bm"), _NAME_NOT_BOLD),
         **dict.fromkeys(
             ("\\", "newline", "approx", "ne", "neq", "le", "leq", "ge", "geq", "lt", "gt", "equiv",
              "to", "rightarrow", "Rightarrow", "implies", "sim", "propto", "begin", "end"),

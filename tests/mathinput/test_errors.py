@@ -46,6 +46,12 @@ PARSE_ERRORS = [
     ("≈ 2 x", 0, "without '≈'"),
     # LaTeX is read (test_latex.py); a command it does not know is refused at its backslash
     ("-\\frac{x}{\\vec{y}}", 10, "Unknown LaTeX command \\vec: type the symbol as the problem lists it"),
+    (
+        "m\\mathbf{y}",
+        1,
+        "Unknown LaTeX command \\mathbf: type the symbol as the problem lists it (v, v_x, F_net), in plain letters: bold is not read",
+    ),  # not "accents"
+    ("\\boldsymbol{x}", 0, "in plain letters: bold is not read"),
     ("x \\sin\\thetay", 6, "Unknown LaTeX command \\thetay: put a space after \\theta, as in \\theta y"),
     ("12 500", 3, "Two numbers side by side"),
     ("x^2 3", 4, "Two numbers side by side"),
