@@ -197,11 +197,15 @@ class LatexReader:
                 for at in range(len(self._tokens) - 1, -1, -1)
                 if self._tokens[at].kind is Kind.LPAREN and self._tokens[at].pos == frame.brace
             )
+            if opened == len(self._tokens) - 1:  # `mg{\over m+M}`: the numerator left before the brace
+                raise self._no_numerator(i)
             self._tokens.insert(opened + 1, _zero_width(Kind.LPAREN, "(", frame.brace + 1))
             self._frames[-1] = replace(frame, over=True)
         else:
             if self._over_at is not None:
                 raise twice
+            if not self._tokens:
+                raise self._no_numerator(i)
             self._tokens.insert(0, _zero_width(Kind.LPAREN, "(", 0))
             self._over_at = i
         return [
@@ -209,6 +213,14 @@ class LatexReader:
             Token(Kind.OP, "/", i, end),
             _zero_width(Kind.LPAREN, "(", end),
         ]
+
+    @staticmethod
+    def _no_numerator(i: int) -> ParseError:
+        return ParseError(
+            r"\over has nothing before it: put the numerator before it in the same brace, as in {m g \over m + M}, "
+            r"or write \frac{m g}{m + M}.",
+            i,
+        )
 
     def _dotted(self, i: int, end: int) -> tuple[list[Token], int]:
         """`\\dot{x}`, `\\dot x`, `\\dot{\\theta}`: the velocity's word `x_dot`, `theta_dot`."""

@@ -52,6 +52,12 @@ PARSE_ERRORS = [
         "Unknown LaTeX command \\mathbf: type the symbol as the problem lists it (v, v_x, F_net), in plain letters: bold is not read",
     ),  # not "accents"
     ("\\boldsymbol{x}", 0, "in plain letters: bold is not read"),
+    (
+        "y{\\over x+y}",
+        2,
+        "\\over has nothing before it: put the numerator before it in the same brace",
+    ),  # was "Empty brackets"
+    ("\\over x", 0, "\\over has nothing before it"),
     ("x \\sin\\thetay", 6, "Unknown LaTeX command \\thetay: put a space after \\theta, as in \\theta y"),
     ("12 500", 3, "Two numbers side by side"),
     ("x^2 3", 4, "Two numbers side by side"),
