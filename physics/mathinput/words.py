@@ -110,7 +110,8 @@ def resolve_words(tokens: list[Token], table: NameTable) -> list[Token]:
             + _capital_pi_hint(word)
             + _spaced_name_hint(word, nxt, table)
             + _lookalike_hint(word, table)
-            + glued_angle_hint(word),
+            + glued_angle_hint(word)
+            + _digits_as_power_hint(word, table),
             tok.pos,
             word,
             allowed,
@@ -268,6 +269,25 @@ def glued_angle_hint(word: str) -> str:
         return ""
     name, number = found.group(1)[-3:], found.group(2)  # `mgsin30`: the function is the word's end
     return f" Did you mean {name}({number}°)? Write the degree sign for degrees, or {name}({number}) for radians."
+
+
+_NAMES_THEN_DIGITS = re.compile(r"(\D+)(\d+)")
+
+
+def _digits_as_power_hint(word: str, table: NameTable) -> str:
+    """A sentence for `mc2` (m c², its power typed as a plain digit, as a text message writes it) where
+    the letters read one way as declared names, the last of them with no numbered subscript; or ""."""
+    found = _NAMES_THEN_DIGITS.fullmatch(word)
+    if found is None:
+        return ""
+    names = table.resolve(found.group(1)).unique
+    if names is None or any(part.kind != "name" for part in names):
+        return ""
+    last = names[-1].canonical
+    if any(name[len(last) :].lstrip("_")[:1].isdigit() for name in table.declared if name.startswith(last)):
+        return ""  # `v2` where v_1 is declared: a subscript mistyped, more likely than a power
+    typed = " ".join(part.canonical for part in names)
+    return f" Did you mean {typed}^{found.group(2)}? Write a power with ^."
 
 
 def _lookalike_hint(word: str, table: NameTable) -> str:

@@ -158,6 +158,7 @@ def test_unknown_symbol_is_refused_listing_the_allowed_names(typed, declared, sy
 STAND_IN, LETTER_O, CAPITAL_PI, SPACED = "stands for", "with a zero", "the number π", "without the space"
 LOOKALIKE = "looks like the Latin"
 DEGREES = "Write the degree sign for degrees"
+POWER = "Write a power with ^"
 SLIP_HINTS = [
     # (typed, declared, which hint, the sentence the refusal must hold, or None: no such hint)
     ("wt", ("omega", "t"), STAND_IN, "If w stands for ω, type omega or ω."),
@@ -190,6 +191,11 @@ SLIP_HINTS = [
     # a function of an angle with its number glued on and no degree sign: 30 rad, or 30°?
     ("m sin30", ("m",), DEGREES, "Did you mean sin(30°)? Write the degree sign for degrees, or sin(30) for"),
     ("mcos60", ("m",), DEGREES, "Did you mean cos(60°)?"),
+    # a power typed as a plain digit, as a text message writes m c²
+    ("mc2", ("m", "c"), POWER, "Did you mean m c^2? Write a power with ^."),
+    ("1/2 mv2", ("m", "v"), POWER, "Did you mean m v^2?"),
+    ("v2 t", ("v_1", "v", "t"), POWER, None),  # a subscript mistyped, beside v_1
+    ("x2", ("m", "c"), POWER, None),  # no x to raise
 ]
 
 
