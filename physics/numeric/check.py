@@ -9,7 +9,14 @@ from fractions import Fraction
 from functools import cached_property
 
 from physics.dimensions import describe
-from physics.errors import AnswerError, MissingUnits, SigfigsError, UnexpectedUnits, UnknownUnit
+from physics.errors import (
+    AmbiguousInput,
+    AnswerError,
+    MissingUnits,
+    SigfigsError,
+    UnexpectedUnits,
+    UnknownUnit,
+)
 from physics.numeric.answer import NumericAnswer, read_numeric_answer
 from physics.numeric.diagnosis import diagnose
 from physics.numeric.spec import NumericSpec
@@ -86,6 +93,7 @@ class _Comparison:
     target: ParsedUnits | None
     tolerance: Tolerance
     cycles: Fraction | None = None  # 2π or 1/2π: how a hertz counts against angle units (strict), if it does
+    offset: bool = True  # False: a temperature read as a difference, the zeros of °C and K not shifting it
 
     @cached_property
     def _linear(self) -> tuple[Fraction, Fraction]:
@@ -94,7 +102,17 @@ class _Comparison:
             return Fraction(1), Fraction(0)
         shift = self.answer_units.convert(Fraction(0), self.target)
         scale = self.answer_units.convert(Fraction(1), self.target) - shift
-        return (scale if self.cycles is None else scale * self.cycles), shift
+        return (scale if self.cycles is None else scale * self.cycles), (
+            shift if self.offset else Fraction(0)
+        )
+
+    def as_difference(self) -> _Comparison | None:
+        """The comparison of a temperature difference, where the two units' zeros differ (°C against K);
+        None where they do not."""
+        scale, shift = self._linear
+        if shift == 0:
+            return None
+        return dataclasses.replace(self, expected_as_written=self.expected / scale, offset=False)
 
     @cached_property
     def _bounds(self) -> tuple[Fraction, Fraction]:
@@ -206,6 +224,8 @@ def _checked(answer: str, spec: NumericSpec) -> Verdict:
     comparison = _Comparison(expected, expected_as_written, answer_units, target, spec.tolerance, cycles)
     if comparison.passes(read.value):
         judgement = CORRECT
+    elif (difference := comparison.as_difference()) is not None and difference.passes(read.value):
+        return Verdict.invalid(_temperature_or_difference(read, comparison, difference), read_as)
     else:
         judgement = diagnose(read.value, expected_as_written, comparison.passes)
     remark = _cycles_or_radians(answer_units, target)
@@ -215,6 +235,26 @@ def _checked(answer: str, spec: NumericSpec) -> Verdict:
         feedback = f"{remark} {judgement.feedback}" if judgement.correct else f"{judgement.feedback} {remark}"
         judgement = dataclasses.replace(judgement, feedback=feedback)
     return _noted(Verdict.graded(judgement, read_as))
+
+
+def _temperature_or_difference(
+    read: NumericAnswer, comparison: _Comparison, difference: _Comparison
+) -> AmbiguousInput:
+    """`10 °C` where K are asked and 10 K is right: a temperature (283.15 K) or a change of 10 °C (10 K)?
+    Asked, not graded: the part does not say which it is, and the wrong reading would use an attempt."""
+    units = comparison.target.text if comparison.target is not None else ""
+    temperature = f"{_shown(comparison.in_target(read.value))} {units}"
+    change = f"{_shown(difference.in_target(read.value))} {units}"
+    return AmbiguousInput(
+        f"Is {read.text} {read.units_text} a temperature ({temperature}) or a change of temperature ({change})? "
+        f"Give the answer in {units} to say which.",
+        read.units_position,
+        (temperature, change),
+    )
+
+
+def _shown(value: Fraction) -> str:
+    return f"{float(value):.6g}"
 
 
 def _cycles_or_radians(answer: ParsedUnits | None, target: ParsedUnits | None) -> str:

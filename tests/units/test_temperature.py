@@ -2,10 +2,12 @@
 
 from __future__ import annotations
 
+from decimal import Decimal
 from fractions import Fraction
 
 import pytest
 
+from physics.numeric import NumericSpec, check_numeric
 from physics.units import IncompatibleUnits, parse_units
 
 F = Fraction
@@ -50,3 +52,23 @@ def test_celsius_has_the_dimension_of_kelvin() -> None:
 def test_converting_between_dimensions_is_refused() -> None:
     with pytest.raises(IncompatibleUnits):
         parse_units("°C").convert(F(1), parse_units("m"))
+
+
+# (answer, expected, the part's units, outcome, what the feedback says)
+TEMPERATURE_OR_CHANGE = [
+    ("10 °C", "10", "K", "invalid", "Is 10 °C a temperature (283.15 K) or a change of temperature (10 K)?"),
+    ("18 °F", "10", "K", "invalid", "a change of temperature (10 K)?"),
+    ("10 K", "10", "°C", "invalid", "Is 10 K a temperature (-263.15 °C) or a change of temperature (10 °C)?"),
+    ("10 °C", "283.15", "K", "correct", "Correct."),  # the temperature is right: no question
+    ("12 °C", "10", "K", "incorrect", "not within the accepted tolerance"),  # neither reading is right
+    ("10 °C", "10", "°C", "correct", "Correct."),  # the part's own units: nothing to convert
+]
+
+
+@pytest.mark.parametrize(("answer", "expected", "units", "outcome", "says"), TEMPERATURE_OR_CHANGE)
+def test_a_temperature_right_only_as_a_change_is_asked_about(
+    answer: str, expected: str, units: str, outcome: str, says: str
+) -> None:
+    verdict = check_numeric(answer, NumericSpec(Decimal(expected), units))
+    assert verdict.outcome.value == outcome
+    assert says in verdict.feedback
