@@ -553,6 +553,12 @@ class Parser:
             kind = _POSTFIX_KINDS[tok.text]
             if kind == "degrees":
                 self._refuse_degrees_of_symbols(node, tok)
+            elif kind == "percent" and (name := _first_name(node)) is not None:
+                # `0.5 m g %`: a percentage is of a number; after a symbol it would divide it by 100
+                raise ParseError(
+                    f"A % goes after a number, as in 50 % {name}: after {name} it would divide it by 100.",
+                    tok.pos,
+                )
             node = Postfix(kind, node, tok.pos)
         return node
 

@@ -59,6 +59,12 @@ PARSE_ERRORS = [
     ),  # was "Empty brackets"
     ("\\over x", 0, "\\over has nothing before it"),
     ("x \\sin\\thetay", 6, "Unknown LaTeX command \\thetay: put a space after \\theta, as in \\theta y"),
+    (
+        "0.5 x y %",
+        8,
+        "A % goes after a number, as in 50 % y: after y it would divide it by 100.",
+    ),  # was y/100
+    ("(x + y)%", 7, "A % goes after a number"),
     ("12 500", 3, "Two numbers side by side"),
     ("x^2 3", 4, "Two numbers side by side"),
     ("x^2 10^3", 4, "Two numbers side by side"),  # x^(2·10^3)? not taken for a power of ten

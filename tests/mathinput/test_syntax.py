@@ -194,6 +194,11 @@ def test_x_beside_a_sign_is_the_declared_symbol(text, expected):
     assert read(text, "x").expr == expected
 
 
+@pytest.mark.parametrize(("text", "expected"), [("50 % x", x / 2), ("x 50 %", x / 2), ("x·12.5%", x / 8)])
+def test_a_percentage_of_a_number_beside_a_symbol_is_its_fraction(text, expected):
+    assert read(text, "x").expr == expected
+
+
 COEFFICIENTS = [
     ("1/2 m v^2", ("m", "v"), m * v**2 / 2),
     ("-3/4 x", XY, -3 * x / 4),

@@ -104,7 +104,7 @@ TEXTBOOK = [
     ("2*%pi*x", ("x",), 2 * sympy.pi * sym("x")),
     ("2 %pi x", ("x",), 2 * sympy.pi * sym("x")),
     ("x %e^2", ("x",), sym("x") * sympy.E**2),
-    ("x %", ("x",), sym("x") / 100),  # a percent sign alone is still a percent
+    ("x 50 %", ("x",), sym("x") / 2),  # a percent sign alone is still a percent
     # Product signs that look like the ones read: bullet (option-8 on a Mac), asterisk operator
     ("m•g", ("m", "g"), sym("m") * sym("g")),
     ("m ∗ g", ("m", "g"), sym("m") * sym("g")),
