@@ -111,7 +111,8 @@ def resolve_words(tokens: list[Token], table: NameTable) -> list[Token]:
             + _spaced_name_hint(word, nxt, table)
             + _lookalike_hint(word, table)
             + glued_angle_hint(word)
-            + _digits_as_power_hint(word, table),
+            + _digits_as_power_hint(word, table)
+            + _case_hint(word, allowed),
             tok.pos,
             word,
             allowed,
@@ -288,6 +289,16 @@ def _digits_as_power_hint(word: str, table: NameTable) -> str:
         return ""  # `v2` where v_1 is declared: a subscript mistyped, more likely than a power
     typed = " ".join(part.canonical for part in names)
     return f" Did you mean {typed}^{found.group(2)}? Write a power with ^."
+
+
+def _case_hint(word: str, declared: Sequence[str]) -> str:
+    """A sentence for `l` where only `L` is declared (`V0` for v0: a phone's capital), or ""; never where
+    both cases are declared, as m and M are two masses."""
+    folded = word.casefold()
+    same = [name for name in declared if name.casefold() == folded]
+    if len(same) != 1:
+        return ""
+    return f" Names are case-sensitive: did you mean {same[0]}?"
 
 
 def _lookalike_hint(word: str, table: NameTable) -> str:

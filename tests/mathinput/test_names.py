@@ -159,6 +159,7 @@ STAND_IN, LETTER_O, CAPITAL_PI, SPACED = "stands for", "with a zero", "the numbe
 LOOKALIKE = "looks like the Latin"
 DEGREES = "Write the degree sign for degrees"
 POWER = "Write a power with ^"
+CASE = "Names are case-sensitive"
 SLIP_HINTS = [
     # (typed, declared, which hint, the sentence the refusal must hold, or None: no such hint)
     ("wt", ("omega", "t"), STAND_IN, "If w stands for ω, type omega or ω."),
@@ -196,6 +197,13 @@ SLIP_HINTS = [
     ("1/2 mv2", ("m", "v"), POWER, "Did you mean m v^2?"),
     ("v2 t", ("v_1", "v", "t"), POWER, None),  # a subscript mistyped, beside v_1
     ("x2", ("m", "c"), POWER, None),  # no x to raise
+    # a name in the other case, as a phone capitalises the first letter
+    ("2 pi sqrt(l/g)", ("L", "g"), CASE, "Names are case-sensitive: did you mean L?"),
+    ("V0 t", ("v0", "t"), CASE, "did you mean v0?"),
+    ("V_0 t", ("v_0", "t"), CASE, "did you mean v_0?"),
+    ("X t", ("x", "y", "t"), CASE, "did you mean x?"),
+    ("K t", ("k", "K_0", "t"), CASE, "did you mean k?"),
+    ("Q t", ("x", "t"), CASE, None),  # no q to mean
 ]
 
 
