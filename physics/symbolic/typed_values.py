@@ -1,4 +1,5 @@
-"""Values typed where a symbol is meant: a decimal for π (`2*3.14*sqrt(L/g)`, off by a constant factor),
+"""Values typed where a symbol is meant: a decimal for π (`2*3.14*sqrt(L/g)`, off by a constant factor;
+so too for ln 2, √2, √3 and a fraction such as 5/7, `0.714 g sin θ`),
 for e (`v0*2.718^(-b t/m)`, a wrong value) or for g (`9.8 m sin θ`, a wrong dimension), and units after
 a symbolic answer (`m g sin θ N`).
 
@@ -58,8 +59,23 @@ def _as_named_number(decimal: str) -> tuple[str, str] | None:
     return None
 
 
+_DENOMINATORS = range(3, 13)  # 1/3 to 11/12: the fractions a formula holds (5/7 of a rolling ball's g sin θ)
+
+
+def _as_fraction(decimal: str) -> tuple[str, str] | None:
+    """The fraction of small whole numbers that `decimal` rounds and is not (`0.714` for 5/7), or None."""
+    if len(decimal.replace(".", "").lstrip("0")) < _MIN_DIGITS:
+        return None
+    value = float(decimal)
+    for bottom in _DENOMINATORS:
+        top = round(value * bottom)
+        if top > 0 and math.gcd(top, bottom) == 1 and 0 < abs(value * bottom / top - 1) < _CLOSE:
+            return f"({top}/{bottom})", f"{top}/{bottom}"
+    return None
+
+
 def _as_pi_or_named(decimal: str) -> tuple[str, str] | None:
-    return _as_pi(decimal) or _as_named_number(decimal)
+    return _as_pi(decimal) or _as_named_number(decimal) or _as_fraction(decimal)
 
 
 def _as_e(decimal: str) -> tuple[str, str] | None:
@@ -128,6 +144,7 @@ def typed_value_hint(
         return None
     said = ", ".join(dict.fromkeys(f"{shown} for {match.group(1)}" for match, (_, shown) in swaps))
     named = [written for _, _, shown, written in _NAMED_NUMBERS if any(s[1] == shown for _, s in swaps)]
+    named += [shown for _, (_, shown) in swaps if "/" in shown and "π" not in shown]  # the fractions
     if named and reason is Reason.CONSTANT_FACTOR:
         pi = " and pi (or π) where you mean π" if any("π" in s[1] for _, s in swaps) else ""
         advice = f"a decimal is taken as exactly the number it shows, so write {' and '.join(named)}{pi}"

@@ -90,13 +90,28 @@ NAMED_NUMBERS = [
         "2π for 6.28, √2 for 1.414: a decimal is taken as exactly the number it shows, so write sqrt(2) and pi (or π) where you mean π.",
     ),
     ("0.69 m/b", "m*log(2)/b", HALF_LIFE, None),  # too few digits to stand for ln 2
+    # a fraction of small whole numbers, rounded: a rolling ball's 5/7 g sin θ
+    (
+        "0.714 g sin(theta)",
+        "5*g*sin(theta)/7",
+        SLOPE,
+        "5/7 for 0.714: a decimal is taken as exactly the number it shows, so write 5/7.",
+    ),
+    (
+        "0.333 m g",
+        "m*g/3",
+        SLOPE,
+        "1/3 for 0.333: a decimal is taken as exactly the number it shows, so write 1/3.",
+    ),
+    ("0.333 m g", "m*g/2", SLOPE, None),  # a third is not what makes it right
+    ("0.71 g sin(theta)", "5*g*sin(theta)/7", SLOPE, None),  # too few digits to stand for 5/7
 ]
 
 
 @pytest.mark.parametrize(
     ("answer", "reference", "symbols", "hint"), NAMED_NUMBERS, ids=[c[0] for c in NAMED_NUMBERS]
 )
-def test_a_decimal_for_ln_2_or_a_root_is_named_when_it_would_make_the_answer_right(
+def test_a_decimal_for_ln_2_a_root_or_a_fraction_is_named_when_it_would_make_the_answer_right(
     answer: str, reference: str, symbols: tuple[SymbolDecl, ...], hint: str | None
 ) -> None:
     verdict = run_job(SymbolicJob(answer, reference, symbols))
