@@ -147,12 +147,44 @@ def unbracketed_units(unit_text: str, start: int) -> tuple[str, int]:
 
 def read_units_at(unit_text: str, start: int, expected: Dimension | None) -> UnitReading:
     """`read_units`, with any error's position moved to where the units start in the answer."""
+    if unit_text.endswith(")") and (remark := _REMARK.search(unit_text)) is not None and remark.start() > 0:
+        restated = _restated(unit_text, remark, start, expected)
+        if restated is not None:
+            return restated
     try:
         return read_units(unit_text, expected)
     except AnswerError as error:
         if error.position is not None:
             error.position += start
         raise
+
+
+# Words in brackets after the units, as an answer is copied from a calculator, Wolfram|Alpha or a
+# chatbot: `4.58 m/s^2 (meters per second squared)`, `4.58 m/s^2 (approx)`.
+_REMARK = re.compile(r"\s*\(([^()]*)\)\s*$")
+_SAID_AS_DIRECTION = re.compile(r"\s*(up|down|left|right|north|south|east|west)\w*\s*", re.IGNORECASE)
+
+
+def _restated(
+    unit_text: str, remark: re.Match[str], start: int, expected: Dimension | None
+) -> UnitReading | None:
+    """The units before a remark in brackets that says them again (a product with them would square
+    them, and the divisor of `m/s^2 (m/s^2)` would cancel them); ParseError for one that is no units,
+    saying to leave it out; None where the units before it do not read, or it reads as other units."""
+    try:
+        before = read_units(unit_text[: remark.start()], expected)
+    except AnswerError:
+        return None
+    inside = remark.group(1)
+    try:
+        said = read_units(inside, before.units.dimension)
+    except AnswerError:
+        if _SAID_AS_DIRECTION.fullmatch(inside):  # `(down)`: the units' own refusal says what to do
+            return None
+        raise ParseError(
+            f"Give the value and its units alone: leave out ({inside.strip()})", start + remark.start(1) - 1
+        ) from None
+    return before if said.units.dimension == before.units.dimension else None
 
 
 def read_numeric_answer(

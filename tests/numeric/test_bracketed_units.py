@@ -89,3 +89,34 @@ def test_bracketed_units_that_cannot_be_read_are_refused_where_the_fault_is(
     assert verdict.error is not None
     assert verdict.error.position == position
     assert words in verdict.feedback
+
+
+# (answer, expected value, expected units, outcome, what the verdict says): units said again in
+# brackets after them, or a remark in brackets, as an answer is copied from Wolfram|Alpha or a chatbot
+REMARKS = [
+    ("4.58 m/s^2 (meters per second squared)", "4.58", "m/s^2", "correct", "Correct."),  # was 4.58 m/m
+    ("4.58 m/s^2 (m/s/s)", "4.58", "m/s^2", "correct", "Correct."),
+    ("12 J (joules)", "12", "J", "correct", "Correct."),
+    (
+        "4.58 m/s^2 (approx)",
+        "4.58",
+        "m/s^2",
+        "invalid",
+        "Give the value and its units alone: leave out (approx)",
+    ),
+    ("4.58 m/s^2 (3 s.f.)", "4.58", "m/s^2", "invalid", "leave out (3 s.f.)"),
+    ("4.58 m/s^2 (down)", "4.58", "m/s^2", "invalid", "a direction is not read here"),
+    ("4.58 kg (m/s)", "4.58", "N*s", "correct", "Correct."),  # other units: a product, as before
+    ("4186 J/(kg K)", "4186", "J/(kg*K)", "correct", "Correct."),
+]
+
+
+@pytest.mark.parametrize(
+    ("answer", "expected", "units", "outcome", "says"), REMARKS, ids=[c[0] for c in REMARKS]
+)
+def test_units_said_again_in_brackets_are_read_once_and_a_remark_is_refused(
+    answer: str, expected: str, units: str, outcome: str, says: str
+) -> None:
+    verdict = check_numeric(answer, NumericSpec(D(expected), units))
+    assert verdict.outcome.value == outcome
+    assert says in verdict.feedback
