@@ -48,7 +48,13 @@ _SINGLE = {
     "⋅": Kind.TIMES,  # dot operator
     "×": Kind.TIMES,
     ".": Kind.TIMES,  # `N.m`, `kg.m/s^2`
+    "∙": Kind.TIMES,  # the bullet operator and bullet a word processor's symbol menu gives
+    "•": Kind.TIMES,
+    "∗": Kind.TIMES,
     "/": Kind.DIVIDE,
+    "⁄": Kind.DIVIDE,  # the fraction slash and division slash, as the math reader takes them
+    "∕": Kind.DIVIDE,
+    "÷": Kind.DIVIDE,
     "^": Kind.POWER,
     "(": Kind.LPAREN,
     ")": Kind.RPAREN,

@@ -20,6 +20,12 @@ SAME_UNITS = [
     ("m s^−2", "m/s^2"),  # Unicode minus
     ("m s^-²", "m/s^2"),  # the caret and the minus typed, then the palette's ²
     ("m s^−²", "m/s^2"),
+    ("m⁄s²", "m/s^2"),  # the fraction slash, the division slash and ÷, as the math reader takes them
+    ("m∕s²", "m/s^2"),
+    ("m÷s²", "m/s^2"),
+    ("kg∙m/s²", "kg·m/s^2"),  # the bullet operator, the bullet and the asterisk operator
+    ("kg•m/s²", "kg·m/s^2"),
+    ("kg∗m/s²", "kg·m/s^2"),
     ("m/(s s)", "m/s^2"),
     ("m/(s*s)", "m/s^2"),
     ("(m/s)/s", "m/s^2"),
