@@ -119,13 +119,31 @@ def without_zero_width(text: str) -> Visible | None:
     return Visible("".join(text[at] for at in typed_at), typed_at, len(text))
 
 
-# The delimiters that wrap LaTeX math in a document or a web page: `$…$`, `$$…$$`, `\(…\)`, `\[…\]`.
-_MATH_DELIMITERS: Final = (("$$", "$$"), ("$", "$"), ("\\(", "\\)"), ("\\[", "\\]"))
+# The delimiters that wrap LaTeX math in a document or a web page: `$…$`, `$$…$$`, `\(…\)`, `\[…\]`; and
+# what a chatbot wraps an answer in: markdown's bold `**…**`, LaTeX's `\boxed{…}`.
+_MATH_DELIMITERS: Final = (
+    ("**", "**"), ("$$", "$$"), ("$", "$"), ("\\(", "\\)"), ("\\[", "\\]"), ("\\boxed{", "}"),
+)  # fmt: skip
+
+
+def may_be_wrapped(text: str) -> bool:
+    """Whether `without_math_delimiters` may find something to leave out: a cheap test first."""
+    return "$" in text or "\\(" in text or "\\[" in text or "\\boxed" in text or "**" in text[:4]
 
 
 def without_math_delimiters(text: str) -> str:
     """The text with the delimiters of LaTeX math around all of it (`$\\frac{mg}{k}$`, copied from a
-    document) as spaces, so that positions stay those typed; any other text as it is."""
+    document) as spaces, so that positions stay those typed, each layer in turn (`**$\\boxed{…}$**`); any
+    other text as it is."""
+    for _ in range(len(_MATH_DELIMITERS)):
+        unwrapped = _unwrapped(text)
+        if unwrapped is None:
+            break
+        text = unwrapped
+    return text
+
+
+def _unwrapped(text: str) -> str | None:
     stripped = text.strip()
     for opening, closing in _MATH_DELIMITERS:
         inner = stripped[len(opening) : -len(closing)]
@@ -133,9 +151,28 @@ def without_math_delimiters(text: str) -> str:
             len(stripped) > len(opening) + len(closing)
             and stripped.startswith(opening)
             and stripped.endswith(closing)
-            and "$" not in inner
+            and _wraps_all(opening, inner)
         ):
             start = text.index(stripped)
             end = start + len(stripped)
             return text[:start] + " " * len(opening) + inner + " " * len(closing) + text[end:]
-    return text
+    return None
+
+
+def _wraps_all(opening: str, inner: str) -> bool:
+    """Whether the opening and its closing wrap all of the text, not two parts of it (`$a$ + $b$`)."""
+    if opening == "**":
+        return "**" not in inner
+    if opening.endswith("{"):
+        return _balanced(inner)
+    return "$" not in inner
+
+
+def _balanced(text: str) -> bool:
+    """Whether every brace in `text` closes within it: `\\boxed{a}{b}` does not wrap all of it."""
+    depth = 0
+    for char in text:
+        depth += {"{": 1, "}": -1}.get(char, 0)
+        if depth < 0:
+            return False
+    return depth == 0

@@ -13,7 +13,7 @@ from collections.abc import Callable
 from dataclasses import replace
 from fractions import Fraction
 
-from physics.characters import without_math_delimiters, without_zero_width
+from physics.characters import may_be_wrapped, without_math_delimiters, without_zero_width
 from physics.errors import AnswerError, LikelySlip, ParseError, TooLarge
 from physics.mathinput.latex import LatexReader
 from physics.mathinput.limits import InputLimits
@@ -64,7 +64,7 @@ def tokenize(
             f"The answer is too long ({len(text)} characters; at most {limits.max_length}).",
             limits.max_length,
         )
-    if "$" in text or "\\(" in text or "\\[" in text:
+    if may_be_wrapped(text):
         text = without_math_delimiters(text)  # `$\frac{mg}{k}$` copied from a document
     visible = without_zero_width(text)
     if visible is not None:  # read what the student sees; positions stay those of the typed text

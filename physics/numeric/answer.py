@@ -12,7 +12,7 @@ import re
 from dataclasses import dataclass, replace
 from fractions import Fraction
 
-from physics.characters import fullwidth_as_ascii, without_math_delimiters, without_zero_width
+from physics.characters import fullwidth_as_ascii, may_be_wrapped, without_math_delimiters, without_zero_width
 from physics.dimensions import Dimension
 from physics.errors import AnswerError, LikelySlip, ParseError, TooLarge
 from physics.numeric.literal import NumberLiteral, read_number, units_start
@@ -197,7 +197,7 @@ def read_numeric_answer(
     """
     if len(text) > MAX_ANSWER_LENGTH:
         raise TooLarge(f"An answer may be at most {MAX_ANSWER_LENGTH} characters", MAX_ANSWER_LENGTH)
-    if "$" in text or "\\(" in text or "\\[" in text:
+    if may_be_wrapped(text):
         text = without_math_delimiters(text)  # `$4.58\,\mathrm{m/s^2}$` copied from a document
     visible = without_zero_width(text)
     if visible is not None:  # read what the student sees; positions stay those of the typed text

@@ -116,6 +116,11 @@ READS_AS_PLAIN = [
     (r"$$\frac{x}{y}$$", "x/y"),
     (r"\(\frac{x}{y}\)", "x/y"),
     (r" \[ x^{2} \] ", "x^2"),
+    # and what a chatbot wraps its answer in: markdown's bold, LaTeX's box, one inside another
+    (r"**x/(x + y)**", "x/(x + y)"),
+    (r"\boxed{\frac{x}{y}}", "x/y"),
+    (r"\[\boxed{x^{2}}\]", "x^2"),
+    (r"**$\boxed{\frac{x}{y}}$**", "x/y"),
     (r"\mathrm{v_0}", "v_0"),
     (r"\mathrm{v}_{0}", "v_0"),
     (r"\text{m}\text{g}", "m g"),
@@ -177,6 +182,7 @@ LATEX_ERRORS = [
     (r"x}", 1, "Unmatched '}'"),
     (r"\circ", 0, r"write degrees as 30^\circ"),
     (r"$x$ + y", 0, "Leave out the $ signs"),  # delimiters around only part of the answer
+    (r"\boxed{x}/\boxed{y}", 0, "Unknown LaTeX command \\boxed"),  # two boxes: none around all of it
     (r"x^2 $", 4, "Leave out the $ signs"),
     (r"v_{\sin}", 3, "A subscript holds letters and digits"),
     (r"{x \over y \over M}", 11, r"Two \over in one brace: write each fraction as \frac{a}{b}"),

@@ -108,6 +108,9 @@ REMARKS = [
     ("4.58 m/s^2 (down)", "4.58", "m/s^2", "invalid", "a direction is not read here"),
     ("4.58 kg (m/s)", "4.58", "N*s", "correct", "Correct."),  # other units: a product, as before
     ("4186 J/(kg K)", "4186", "J/(kg*K)", "correct", "Correct."),
+    # a chatbot's answer, in bold or boxed
+    ("**4.58 m/s²**", "4.58", "m/s^2", "correct", "Correct."),
+    (r"\[\boxed{4.58 \text{ m/s}^2}\]", "4.58", "m/s^2", "correct", "Correct."),
 ]
 
 
