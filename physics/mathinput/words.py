@@ -112,7 +112,7 @@ def resolve_words(tokens: list[Token], table: NameTable) -> list[Token]:
             + _lookalike_hint(word, table)
             + glued_angle_hint(word)
             + _digits_as_power_hint(word, table)
-            + _case_hint(word, allowed),
+            + _case_hint(word, allowed, table),
             tok.pos,
             word,
             allowed,
@@ -291,14 +291,17 @@ def _digits_as_power_hint(word: str, table: NameTable) -> str:
     return f" Did you mean {typed}^{found.group(2)}? Write a power with ^."
 
 
-def _case_hint(word: str, declared: Sequence[str]) -> str:
-    """A sentence for `l` where only `L` is declared (`V0` for v0: a phone's capital), or ""; never where
-    both cases are declared, as m and M are two masses."""
+def _case_hint(word: str, declared: Sequence[str], table: NameTable) -> str:
+    """A sentence for `l` where only `L` is declared, or `Mg sinθ` where m and g are (a phone's capital
+    at the start of the answer), or ""; never where both cases are declared, as m and M are two masses."""
     folded = word.casefold()
     same = [name for name in declared if name.casefold() == folded]
-    if len(same) != 1:
-        return ""
-    return f" Names are case-sensitive: did you mean {same[0]}?"
+    if len(same) == 1:
+        return f" Names are case-sensitive: did you mean {same[0]}?"
+    lowered = word[:1].lower() + word[1:]
+    if lowered != word and table.resolve(lowered).unique is not None:
+        return f" Names are case-sensitive: did you mean {lowered}?"
+    return ""
 
 
 def _lookalike_hint(word: str, table: NameTable) -> str:

@@ -204,6 +204,8 @@ SLIP_HINTS = [
     ("X t", ("x", "y", "t"), CASE, "did you mean x?"),
     ("K t", ("k", "K_0", "t"), CASE, "did you mean k?"),
     ("Q t", ("x", "t"), CASE, None),  # no q to mean
+    ("Mg x", ("m", "g", "x"), CASE, "Names are case-sensitive: did you mean mg?"),  # a phone's first capital
+    ("Xt", ("x", "t"), CASE, "did you mean xt?"),
 ]
 
 
