@@ -44,13 +44,22 @@ def resolve_words(tokens: list[Token], table: NameTable) -> list[Token]:
             continue
         if word == TIMES_WORD and prev is not None and prev.kind is Kind.NUM and nxt.kind is Kind.NUM:
             if table.is_declared(word):  # `2 x 10^3 x`: a calculator's times sign as much as the symbol
-                raise AmbiguousInput(
-                    f"Is the x between {prev.text} and {nxt.text} a times sign or your symbol x? Write × or * "
-                    f"for a times sign, or * on both sides of the symbol ({prev.text}*x*{nxt.text}).",
-                    tok.pos,
-                    (f"{prev.text}*{nxt.text}", f"{prev.text}*x*{nxt.text}"),
-                )
+                raise _times_or_symbol(word, prev.text, nxt.text, tok.pos)
             out.append(Token(Kind.OP, "*", tok.pos, tok.end, tok.space_before))
+            continue
+        if (
+            word in _TIMES_TEN
+            and prev is not None
+            and prev.kind is Kind.NUM
+            and _raised(nxt)
+            and not table.resolve(word).readings  # x_10 declared: 2x10^3 is 2·x_10³
+        ):
+            # `2x10^3`: a calculator's power of ten, the times sign glued to the 10
+            if table.is_declared(word[0]):
+                raise _times_or_symbol(word[0], prev.text, "10", tok.pos)
+            ten = tok.position_in_text(1)
+            out.append(Token(Kind.OP, "*", tok.pos, ten, tok.space_before))
+            out.append(Token(Kind.NUM, "10", ten, tok.end, False, Fraction(10)))
             continue
         if len(word) > MAX_WORD_LENGTH and not table.is_declared(word):
             raise TooLarge(
@@ -118,6 +127,22 @@ def resolve_words(tokens: list[Token], table: NameTable) -> list[Token]:
             allowed,
         )
     return out
+
+
+_TIMES_TEN = frozenset({"x10", "X10"})
+
+
+def _raised(token: Token) -> bool:
+    return token.kind is Kind.SUP or (token.kind is Kind.OP and token.text == "^")
+
+
+def _times_or_symbol(letter: str, before: str, after: str, position: int) -> AmbiguousInput:
+    return AmbiguousInput(
+        f"Is the {letter} between {before} and {after} a times sign or your symbol {letter}? Write × or * for "
+        f"a times sign, or * on both sides of the symbol ({before}*{letter}*{after}).",
+        position,
+        (f"{before}*{after}", f"{before}*{letter}*{after}"),
+    )
 
 
 def _latex_letters_joined(tokens: list[Token], table: NameTable) -> list[Token]:

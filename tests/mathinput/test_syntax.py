@@ -179,12 +179,28 @@ def test_numbers_are_exact_rationals(text, expected):
         ("4.58 x 10^3", ("4.58*10", "4.58*x*10")),
         ("2 x 10^3 x", ("2*10", "2*x*10")),  # a calculator's times sign, then the symbol
         ("3 x 2", ("3*2", "3*x*2")),
+        ("2x10^3 x", ("2*10", "2*x*10")),  # the times sign glued to the 10
+        ("2x10³", ("2*10", "2*x*10")),
     ],
 )
 def test_x_between_numbers_is_asked_about_when_declared(text, readings):
     with pytest.raises(AmbiguousInput, match="a times sign or your symbol x") as asked:
         read(text, "x")
     assert asked.value.readings == readings
+
+
+@pytest.mark.parametrize(
+    ("text", "declared", "expected"),
+    [
+        ("2x10^3 y", ("y",), 2000 * y),  # a calculator's power of ten, its × glued to the 10
+        ("2X10^3 y", ("y",), 2000 * y),
+        ("2x10³ y", ("y",), 2000 * y),
+        ("2X10^3 x", ("x",), 2000 * x),  # a capital X is no x
+        ("2x10^3", ("x_10",), 2 * sym("x_10") ** 3),  # x_10 declared: the name
+    ],
+)
+def test_a_glued_times_ten_is_a_power_of_ten_where_x_is_not_declared(text, declared, expected):
+    assert read(text, *declared).expr == expected
 
 
 @pytest.mark.parametrize(
