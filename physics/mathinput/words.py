@@ -121,7 +121,8 @@ def resolve_words(tokens: list[Token], table: NameTable) -> list[Token]:
             + _lookalike_hint(word, table)
             + glued_angle_hint(word)
             + _digits_as_power_hint(word, table)
-            + _case_hint(word, allowed, table),
+            + _case_hint(word, allowed, table)
+            + _subscript_hint(word, allowed, table),
             tok.pos,
             word,
             allowed,
@@ -327,6 +328,21 @@ def _case_hint(word: str, declared: Sequence[str], table: NameTable) -> str:
     if lowered != word and table.resolve(lowered).unique is not None:
         return f" Names are case-sensitive: did you mean {lowered}?"
     return ""
+
+
+def _subscript_hint(word: str, declared: Sequence[str], table: NameTable) -> str:
+    """A sentence for `μ` where only `mu_k` is declared: the letter without its subscript; or ""."""
+    meant = [
+        f"{word}_{name.split('_', 1)[1]}"
+        for name in declared
+        if "_" in name and _reads_as(f"{word}_{name.split('_', 1)[1]}", name, table)
+    ]
+    return f" Did you mean {meant[0]}? The symbol has a subscript." if len(meant) == 1 else ""
+
+
+def _reads_as(word: str, name: str, table: NameTable) -> bool:
+    unique = table.resolve(word).unique
+    return unique is not None and len(unique) == 1 and unique[0].canonical == name
 
 
 def _lookalike_hint(word: str, table: NameTable) -> str:

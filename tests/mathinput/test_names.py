@@ -160,6 +160,7 @@ LOOKALIKE = "looks like the Latin"
 DEGREES = "Write the degree sign for degrees"
 POWER = "Write a power with ^"
 CASE = "Names are case-sensitive"
+SUBSCRIPT = "The symbol has a subscript"
 SLIP_HINTS = [
     # (typed, declared, which hint, the sentence the refusal must hold, or None: no such hint)
     ("wt", ("omega", "t"), STAND_IN, "If w stands for ω, type omega or ω."),
@@ -206,6 +207,10 @@ SLIP_HINTS = [
     ("Q t", ("x", "t"), CASE, None),  # no q to mean
     ("Mg x", ("m", "g", "x"), CASE, "Names are case-sensitive: did you mean mg?"),  # a phone's first capital
     ("Xt", ("x", "t"), CASE, "did you mean xt?"),
+    # a letter without the subscript it is declared with
+    ("μ g", ("mu_k", "g"), SUBSCRIPT, "Did you mean μ_k? The symbol has a subscript."),
+    ("v t", ("v_0", "t"), SUBSCRIPT, "Did you mean v_0?"),
+    ("μ g", ("mu_k", "mu_s", "g"), SUBSCRIPT, None),  # which of the two?
 ]
 
 
