@@ -356,6 +356,11 @@ def _lookalike_hint(word: str, table: NameTable) -> str:
 def _greek_stand_in_hint(word: str, declared: Sequence[str]) -> str:
     """A sentence for an unknown word holding a Latin stand-in for a declared Greek symbol, or ""."""
     for letter, (name, glyph) in _STAND_INS.items():
-        if letter in word and letter not in declared and any(d.startswith(name) for d in declared):
+        if (
+            letter in word
+            and name not in word
+            and letter not in declared
+            and any(d.startswith(name) for d in declared)
+        ):
             return f" If {letter} stands for {glyph}, type {name} or {glyph}."
     return ""

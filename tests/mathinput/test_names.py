@@ -168,6 +168,7 @@ SLIP_HINTS = [
     ("u g", ("mu", "g"), STAND_IN, "If u stands for μ, type mu or μ."),
     ("wt", ("w", "omega", "x"), STAND_IN, None),  # w is declared: the unknown word is something else
     ("wt", ("theta", "t"), STAND_IN, None),  # no omega to mean
+    ("mu g", ("mu_k", "g"), STAND_IN, None),  # mu is spelled out: its u stands for nothing
     ("vo t", ("v_0", "t"), LETTER_O, "If vo is v with a zero, type v0 or v_0 (a zero, not the letter o)."),
     ("v_o t", ("v_0", "t"), LETTER_O, "If v_o is v with a zero, type v0 or v_0"),
     ("xO + v_0 t", ("x_0", "v_0", "t"), LETTER_O, "If xO is x with a zero, type x0 or x_0"),
