@@ -157,12 +157,15 @@ def with_units_hint(error: AnswerError, answer: str, expected: Dimension | None)
     without units. (`… T` for a force is not taken for the tesla: a T may be a tension.)"""
     if not isinstance(error, UnknownSymbol) or error.position is None or expected is None:
         return error
-    units = answer[error.position :].strip()
+    units = shown = answer[error.position :].strip()
+    if units.endswith(")") and answer[: error.position].rstrip().endswith("("):  # `m g h (J)`
+        units = units[:-1].rstrip()
+        shown = f"({units})"
     try:
         dimension = read_units(units).units.dimension
     except AnswerError:
         return error
     if dimension != expected:
         return error
-    error.message += f" A symbolic answer is written without units: leave out {units}."
+    error.message += f" A symbolic answer is written without units: leave out {shown}."
     return error

@@ -156,6 +156,8 @@ UNITS = [
     ("m g sin θ N", "N"),
     ("m*g*sin(theta) newtons", "newtons"),
     ("m g sin θ kg m/s^2", "kg m/s^2"),
+    ("m g sin θ (N)", "(N)"),  # in brackets, as a table's heading gives them
+    ("m g sin θ (kg m/s^2)", "(kg m/s^2)"),
     ("m g sin θ T", None),  # a tesla is no force: a T may be a tension
     ("m g sin θ J", None),  # an energy
 ]
