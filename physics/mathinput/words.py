@@ -122,7 +122,8 @@ def resolve_words(tokens: list[Token], table: NameTable) -> list[Token]:
             + glued_angle_hint(word)
             + _digits_as_power_hint(word, table)
             + _case_hint(word, allowed, table)
-            + _subscript_hint(word, allowed, table),
+            + _subscript_hint(word, allowed, table)
+            + _times_letter_hint(word, prev, nxt),
             tok.pos,
             word,
             allowed,
@@ -343,6 +344,15 @@ def _subscript_hint(word: str, declared: Sequence[str], table: NameTable) -> str
 def _reads_as(word: str, name: str, table: NameTable) -> bool:
     unique = table.resolve(word).unique
     return unique is not None and len(unique) == 1 and unique[0].canonical == name
+
+
+def _times_letter_hint(word: str, prev: Token | None, nxt: Token) -> str:
+    """A sentence for `m x g`, the letter x typed for a times sign between two factors, or ""."""
+    if word not in ("x", "X") or prev is None or prev.kind not in _ENDS_OPERAND:
+        return ""
+    if nxt.kind not in (Kind.WORD, Kind.NUM, Kind.LPAREN, Kind.FUNC, Kind.CONST, Kind.SQRT):
+        return ""
+    return f" If {word} is a times sign, write * or a space instead."
 
 
 def _lookalike_hint(word: str, table: NameTable) -> str:

@@ -161,6 +161,7 @@ DEGREES = "Write the degree sign for degrees"
 POWER = "Write a power with ^"
 CASE = "Names are case-sensitive"
 SUBSCRIPT = "The symbol has a subscript"
+TIMES = "is a times sign"
 SLIP_HINTS = [
     # (typed, declared, which hint, the sentence the refusal must hold, or None: no such hint)
     ("wt", ("omega", "t"), STAND_IN, "If w stands for ω, type omega or ω."),
@@ -212,6 +213,10 @@ SLIP_HINTS = [
     ("μ g", ("mu_k", "g"), SUBSCRIPT, "Did you mean μ_k? The symbol has a subscript."),
     ("v t", ("v_0", "t"), SUBSCRIPT, "Did you mean v_0?"),
     ("μ g", ("mu_k", "mu_s", "g"), SUBSCRIPT, None),  # which of the two?
+    # the letter x typed for a times sign between names, as between numbers it is read
+    ("m x g x h", ("m", "g", "h"), TIMES, "If x is a times sign, write * or a space instead."),
+    ("m X 2 g", ("m", "g", "h"), TIMES, "If X is a times sign"),
+    ("m + x", ("m", "g"), TIMES, None),  # after a plus: a symbol that is not declared
 ]
 
 
