@@ -108,6 +108,23 @@ def _read_literal(text: str, expected: Dimension | None) -> tuple[NumericAnswer,
     return NumericAnswer.of_literal(number, reading.units, rest_start, unit_text, reading.note), number.end
 
 
+# An approximation said before the value, with or without a name before it: `≈ 4.58`, `a ≈ 4.58`,
+# `approx. 4.58`, `about 4.58`.
+_APPROXIMATELY = re.compile(
+    r"\s*(?:[^\W\d]\w*\s*)?(≈|~|∼|approx\.?|approximately|about|around|roughly)\s*(?=[-−+.\d])", re.IGNORECASE
+)
+
+
+def _approximation(text: str) -> ParseError | None:
+    """Why `≈ 4.58`, `a ≈ 4.58` or `approx 4.58` is refused, or None for other text."""
+    approximately = _APPROXIMATELY.match(text)
+    if approximately is None:
+        return None
+    return ParseError(
+        f"Give the value without '{approximately.group(1)}': write the number itself", approximately.start(1)
+    )
+
+
 def _no_number_first(text: str, otherwise: AnswerError | None = None) -> AnswerError:
     """Why an answer that does not start with a number is refused: an equation (`a = 4.58 m/s^2`) or
     an approximation sign (`≈ 4.58`) is named, as students write them on paper; else `otherwise`."""
@@ -116,12 +133,11 @@ def _no_number_first(text: str, otherwise: AnswerError | None = None) -> AnswerE
         return ParseError(
             "Give the value alone, without a name and '=': write what comes after the '='", equals
         )
-    stripped = text.lstrip()
-    if stripped[:1] in ("≈", "~"):
-        return ParseError(
-            f"Give the value without '{stripped[0]}': write the number itself", len(text) - len(stripped)
-        )
-    return otherwise or ParseError("The answer must start with a number, such as 2.5 or 229/50", 0)
+    return (
+        _approximation(text)
+        or otherwise
+        or ParseError("The answer must start with a number, such as 2.5 or 229/50", 0)
+    )
 
 
 def unbracketed_units(unit_text: str, start: int) -> tuple[str, int]:
@@ -245,6 +261,8 @@ def read_numeric_answer(
         if literal_error is None:
             raise _no_number_first(text) from None
         raise literal_error
+    if not _STARTS_LITERAL.match(text) and (approximately := _approximation(text)) is not None:
+        raise approximately  # `approx 4.58`: never a unit or a symbol `approx`
     try:
         answer = read_arithmetic_answer(text, expected)
     except AnswerError:

@@ -209,6 +209,9 @@ WORDING = [
     ("4,58 m/s^2", ACCEL, "decimal point"),
     ("a = 4.58 m/s^2", ACCEL, "Give the value alone, without a name and '='"),
     ("≈ 4.58 m/s^2", ACCEL, "Give the value without '≈'"),
+    ("a ≈ 4.58 m/s^2", ACCEL, "Give the value without '≈'"),  # once "must start with a number"
+    ("approx. 4.58 m/s^2", ACCEL, "Give the value without 'approx.'"),
+    ("About -4.58 m/s^2", ACCEL, "Give the value without 'About'"),
     ("4.58 ft/s^2", ACCEL, "Your number would be right in other units than the ones you wrote"),
     ("15.03 m/s^2", NumericSpec(D("15.03"), "ft/s^2"), "0.3048 m per ft"),
     ("2.08 lb", NumericSpec(D("2.08"), "kg"), "0.4536 kg per lb"),
