@@ -74,6 +74,8 @@ def plain_units(text: str) -> tuple[str, list[int]]:
             name, end = _command_name(text, i)
             if name in LATEX_SPACES:
                 put(" ", i)
+            elif name == "rm":  # plain TeX's roman, `{\rm m/s^2}`: a font switch, no units
+                end = _skip_spaces(text, end)
             elif name in _SYMBOLS:
                 put(_SYMBOLS[name], i)
                 if name.isalpha():  # TeX drops the spaces that end a command's name: `\mu m` is µm

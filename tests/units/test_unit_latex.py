@@ -28,6 +28,8 @@ LATEX_UNITS = [
     (r"\text{m}~\text{s}^{-1}", "m s^-1"),
     (r"\operatorname{rad}/\mathrm{s}", "rad/s"),
     (r"m/s^{2}", "m/s^2"),
+    (r"{\rm m/s^2}", "m/s^2"),  # plain TeX's roman, a font switch
+    (r"\rm kg\,m^2", "kg m^2"),
 ]
 
 
