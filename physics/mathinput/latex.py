@@ -45,6 +45,10 @@ _PART = {
 }
 
 
+# Spacing, and plain TeX's roman font switch (`v_{\rm max}`): nothing of a subscript's name.
+_SKIPPED_IN_SUBSCRIPTS = LATEX_SPACES | {"rm"}
+
+
 @dataclass(frozen=True, slots=True)
 class _Frame:
     kind: FrameKind
@@ -443,7 +447,7 @@ class LatexReader:
                 text += ch
                 positions.append(k)
                 k += 1
-            elif ch == "\\" and self._command_name(k)[0] in LATEX_SPACES:
+            elif ch == "\\" and self._command_name(k)[0] in _SKIPPED_IN_SUBSCRIPTS:
                 k = self._command_name(k)[1]
             elif ch == "\\":
                 piece, piece_positions, k = self._subscript_command(k, refusal)

@@ -110,6 +110,7 @@ READS_AS_PLAIN = [
     (r"v_{\mathrm{max}}", "v_max"),
     (r"v_\mathrm{max}", "v_max"),
     (r"v_{\max}", "v_max"),  # MathQuill sets a typed max as the operator \max
+    (r"v_{\rm max}", "v_max"),  # plain TeX's roman, a font switch
     (r"v_\max", "v_max"),
     # The delimiters of LaTeX math around the whole answer, as copied from a document or a page
     (r"$\frac{x}{y}$", "x/y"),
