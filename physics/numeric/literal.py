@@ -175,10 +175,16 @@ def _power_of_ten(text: str, i: int) -> tuple[int, int] | None:
     return _superscript_exponent(text, i)
 
 
+# The exponent marks of calculators' displays: a TI's small capital E, and the decimal exponent symbol.
+_CALCULATOR_EXPONENTS = "ᴇ⏨"
+
+
 def _scientific(text: str, i: int, start: int) -> tuple[int, int] | None:
     """A power of ten after the mantissa from `start` to i: (exponent, end), or None if none is written."""
     if "E" in text or "x" in text:  # `2.5 EXP -3`, `2.5EE-3`: a calculator's key for the power of ten
         _refuse_calculator_key(text, text[start:i], skip_spaces(text, i))
+    if i < len(text) and text[i] in _CALCULATOR_EXPONENTS:  # `4.58ᴇ3`: a TI calculator's small capital E
+        return _signed_exponent(text, i + 1)
     if i < len(text) and text[i] in "eE":
         found = _signed_exponent(text, i + 1)
         if found is None and (i + 1 == len(text) or text[i + 1].isspace()):
