@@ -123,7 +123,8 @@ def resolve_words(tokens: list[Token], table: NameTable) -> list[Token]:
             + _digits_as_power_hint(word, table)
             + _case_hint(word, allowed, table)
             + _subscript_hint(word, allowed, table)
-            + _times_letter_hint(word, prev, nxt),
+            + _times_letter_hint(word, prev, nxt)
+            + _spaced_exponent_hint(word, prev),
             tok.pos,
             word,
             allowed,
@@ -353,6 +354,16 @@ def _times_letter_hint(word: str, prev: Token | None, nxt: Token) -> str:
     if nxt.kind not in (Kind.WORD, Kind.NUM, Kind.LPAREN, Kind.FUNC, Kind.CONST, Kind.SQRT):
         return ""
     return f" If {word} is a times sign, write * or a space instead."
+
+
+_EXPONENT_WORD = re.compile(r"[eE]\d+")
+
+
+def _spaced_exponent_hint(word: str, prev: Token | None) -> str:
+    """A sentence for `2 E3 x`, a power of ten typed apart from its number, or ""."""
+    if prev is None or prev.kind is not Kind.NUM or not _EXPONENT_WORD.fullmatch(word):
+        return ""
+    return f" Did you mean {prev.text}{word}? Write a power of ten without a space before its {word[0]}."
 
 
 def _lookalike_hint(word: str, table: NameTable) -> str:

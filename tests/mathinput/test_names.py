@@ -162,6 +162,7 @@ POWER = "Write a power with ^"
 CASE = "Names are case-sensitive"
 SUBSCRIPT = "The symbol has a subscript"
 TIMES = "is a times sign"
+EXPONENT = "Write a power of ten without a space"
 SLIP_HINTS = [
     # (typed, declared, which hint, the sentence the refusal must hold, or None: no such hint)
     ("wt", ("omega", "t"), STAND_IN, "If w stands for ω, type omega or ω."),
@@ -217,6 +218,9 @@ SLIP_HINTS = [
     ("m x g x h", ("m", "g", "h"), TIMES, "If x is a times sign, write * or a space instead."),
     ("m X 2 g", ("m", "g", "h"), TIMES, "If X is a times sign"),
     ("m + x", ("m", "g"), TIMES, None),  # after a plus: a symbol that is not declared
+    # a power of ten typed apart from its number
+    ("2 E3 x", ("x",), EXPONENT, "Did you mean 2E3? Write a power of ten without a space before its E."),
+    ("x E3", ("x",), EXPONENT, None),
 ]
 
 
