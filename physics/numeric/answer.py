@@ -51,7 +51,7 @@ class NumericAnswer:
             units_position,
             units_text,
             number,
-            note,
+            ". ".join(said for said in (number.note, note) if said) or None,
         )
 
     def read_as(self, units: ParsedUnits | None = None) -> ReadAs:
@@ -101,7 +101,8 @@ def _read_literal(text: str, expected: Dimension | None) -> tuple[NumericAnswer,
         unit_text[0] in "0123456789" or (unit_text[0] in ",." and unit_text[1:2].isdigit())
     ):
         raise ParseError(
-            "Two numbers side by side: write one number without spaces or separators (12500, not 12 500)",
+            "Two numbers side by side: write one number, its digits together (12500) or in groups of "
+            "three (12 500)",
             rest_start,
         )
     reading = read_units_at(unit_text, rest_start, expected)

@@ -37,6 +37,7 @@ class NumberLiteral:
     percent: bool
     position: int  # where the number starts in the answer
     end: int  # just past the number (and its `%`)
+    note: str | None = None  # how a typing habit was read (`4,58` as 4.58)
 
     @property
     def value(self) -> Fraction:
@@ -314,6 +315,47 @@ class TwoPowersOfTen(LikelySlip):
         )
 
 
+# SI's digit grouping: a space, a thin space or a narrow no-break space between groups of three digits.
+_GROUP_SPACES = " \u2009\u202f"
+
+
+def _grouped_end(text: str, start: int, integer_end: int) -> int | None:
+    """The end of an integer part grouped in threes (`1 500`, `12 345 678`) that starts at `start`, or
+    None: a first group of one to three digits, not a lone 0, then groups of exactly three."""
+    first = integer_end - start
+    if not 1 <= first <= 3 or text[start] == "0":
+        return None
+    end = integer_end
+    while end + 4 <= len(text) and text[end] in _GROUP_SPACES and _run(text, end + 1, _DIGITS) == end + 4:
+        end += 4
+    return end if end > integer_end else None
+
+
+def _decimal_comma(text: str, integer_digits: str, at: int, *, grouped: bool) -> bool:
+    """Whether a comma at `at` is a decimal comma, as much of Europe types one (`4,58`): digits both
+    sides, the number's only comma, and not a possible thousands separator (`1,500` is asked about)."""
+    if not integer_digits or at + 1 >= len(text) or text[at] != "," or text[at + 1] not in _DIGITS:
+        return False
+    end = _run(text, at + 1, _DIGITS)
+    if end < len(text) and text[end] in ",.":
+        return False  # `1,500,000`, `1,500.5`: thousands separators, refused
+    thousands = end - at - 1 == 3 and integer_digits[0] != "0" and len(integer_digits) <= 3
+    return grouped or not thousands  # `1 500,5`: grouped by spaces, so the comma is the decimal one
+
+
+def _refuse_thousands_comma(text: str, integer_digits: str, at: int) -> None:
+    """LikelySlip for `1,500`: a thousands separator, or a decimal comma? Asked, naming both."""
+    end = _run(text, at + 1, _DIGITS)
+    if end - at - 1 != 3 or (end < len(text) and text[end] in ",."):
+        return
+    group = text[at + 1 : end]
+    raise LikelySlip(
+        f"Did you mean {integer_digits}.{group} or {integer_digits}{group}? Write a decimal point for a "
+        f"decimal ({integer_digits}.{group}) and no comma between thousands ({integer_digits}{group})",
+        at,
+    )
+
+
 def read_number(text: str, start: int = 0) -> NumberLiteral:
     """The number at the start of `text` (after spaces), or ParseError / TooLarge with a position."""
     i = skip_spaces(text, start)
@@ -324,16 +366,27 @@ def read_number(text: str, start: int = 0) -> NumberLiteral:
         i = skip_spaces(text, i + 1)
     integer_end = _run(text, i, _DIGITS)
     integer_digits = text[i:integer_end]
-    has_point = integer_end < len(text) and text[integer_end] == "."
+    grouped_end = _grouped_end(text, i, integer_end)
+    if grouped_end is not None:  # `1 500`: SI's digit grouping
+        integer_digits = "".join(c for c in text[i:grouped_end] if c in _DIGITS)
+        integer_end = grouped_end
+    comma = _decimal_comma(text, integer_digits, integer_end, grouped=grouped_end is not None)
+    has_point = comma or (integer_end < len(text) and text[integer_end] == ".")
     fraction_start = integer_end + 1 if has_point else integer_end
     fraction_end = _run(text, fraction_start, _DIGITS)
     fraction_digits = text[fraction_start:fraction_end]
+    note = (
+        f"Read {text[i:fraction_end]} as {integer_digits or '0'}.{fraction_digits}: a decimal comma"
+        if comma
+        else None
+    )
     if not integer_digits and not fraction_digits:
         raise ParseError("The answer must start with a number, such as 2.5 or -0.5", i)
     if len(integer_digits) + len(fraction_digits) > MAX_DIGITS:
         raise TooLarge(f"A number may have at most {MAX_DIGITS} digits", i)
     i = fraction_end
     if i + 1 < len(text) and text[i] == "," and text[i + 1] in _DIGITS:
+        _refuse_thousands_comma(text, integer_digits, i)
         raise ParseError(
             "A comma cannot appear in a number: use a decimal point (2.5) and no thousands separators (1500)",
             i,
@@ -352,7 +405,7 @@ def read_number(text: str, start: int = 0) -> NumberLiteral:
     found = _scientific(text, i, position)
     if found is not None:
         exponent, i = found
-    return _finish(text, integer_digits, fraction_digits, has_point, exponent, i, negative, position)
+    return _finish(text, integer_digits, fraction_digits, has_point, exponent, i, negative, position, note)
 
 
 _PERCENT_WORDS = re.compile(r"per\s?cent\b", re.IGNORECASE)  # `45 percent`, `45 per cent`
@@ -377,6 +430,7 @@ def _finish(
     i: int,
     negative: bool,
     position: int,
+    note: str | None = None,
 ) -> NumberLiteral:
     j = skip_spaces(text, i)
     percent_end = _percent_end(text, j)
@@ -392,4 +446,5 @@ def _finish(
         percent=percent,
         position=position,
         end=i,
+        note=note,
     )

@@ -75,7 +75,8 @@ def choice(answer: str, choices: list[dict] | None = None) -> dict:
         pytest.param(numeric("4.58 m/s"), "incorrect", "wrong_dimension", id="wrong-dimension"),
         pytest.param(numeric("-4.58 m/s^2"), "incorrect", "sign_error", id="numeric-sign"),
         pytest.param(numeric("5.2 m/s^2"), "incorrect", "wrong_value", id="numeric-wrong"),
-        pytest.param(numeric("4,58 m/s^2"), "invalid", "parse_error", id="comma"),
+        pytest.param(numeric("4,580 m/s^2"), "invalid", "parse_error", id="thousands-or-decimal-comma"),
+        pytest.param(numeric("4,58 m/s^2"), "correct", "equivalent", id="decimal-comma"),
         pytest.param(
             numeric("4.6 m/s^2", tolerance={"sigfigs": 3}), "invalid", "sigfigs", id="sigfigs-shown"
         ),

@@ -114,9 +114,9 @@ BLAME = [
     ("2*(3 m/s^2", "m/s^2", Reason.PARSE_ERROR, 5, "write units after the number"),
     ("1/0 m/s^2", "m/s^2", Reason.PARSE_ERROR, 0, "divides by zero"),
     ("sqrt(-1) m/s^2", "m/s^2", Reason.PARSE_ERROR, 0, "no real value"),
-    ("12 500 m/s^2", "m/s^2", Reason.PARSE_ERROR, 3, "12500"),
+    ("12 50 m/s^2", "m/s^2", Reason.PARSE_ERROR, 3, "side by side"),
     ("4.5.8 m/s^2", "m/s^2", Reason.PARSE_ERROR, 3, "one decimal point"),
-    ("4,58 m/s^2", "m/s^2", Reason.PARSE_ERROR, 1, "decimal point"),
+    ("4,580 m/s^2", "m/s^2", Reason.PARSE_ERROR, 1, "decimal point"),
     ("m/s^2", "m/s^2", Reason.PARSE_ERROR, 0, "must start with a number"),
     ("pi", "m/s^2", Reason.MISSING_UNITS, 2, "needs units"),
     ("4.58 x 10-3 m/s^2", "m/s^2", Reason.PARSE_ERROR, 9, "Did you mean ×10^-3?"),  # not 45.8 − 3

@@ -53,6 +53,23 @@ VALUES = [
     ("1e-400", F(1, 10**400)),
     ("0", F(0)),
     ("-0.0", F(0)),
+    # SI's digit grouping: a space, thin space or narrow no-break space between groups of three
+    ("1 500", F(1500)),
+    ("1 500.5", F("1500.5")),
+    ("12 345", F(12345)),
+    ("1\u2009500", F(1500)),
+    ("1\u202f500", F(1500)),
+    ("1 000 000", F(10**6)),
+    ("-1 500", F(-1500)),
+    ("1 500e3", F(1500000)),
+    # a decimal comma, where it can be no thousands separator
+    ("4,58", F("4.58")),
+    ("-4,58", F("-4.58")),
+    ("0,500", F(1, 2)),
+    ("4,5800", F("4.58")),
+    ("1234,567", F("1234.567")),
+    ("1 500,5", F("1500.5")),  # grouped by spaces: the comma is the decimal one
+    ("4,58e3", F(4580)),
 ]
 
 
@@ -85,6 +102,10 @@ SIGFIGS = [
     ("1200e3", 2, 4),
     ("0", 1, 1),
     ("0.00", 2, 2),
+    ("1 500", 2, 4),
+    ("1 500.0", 5, 5),
+    ("4,58", 3, 3),
+    ("0,500", 3, 3),
 ]
 
 
@@ -104,6 +125,8 @@ RENDERED = [
     ("30°", "30°", r"30{}^{\circ}"),
     ("30 deg", "30°", r"30{}^{\circ}"),
     ("25 °C", "25 °C", r"25\,{}^{\circ}\mathrm{C}"),
+    ("1 500 N", "1500 N", r"1500\,\mathrm{N}"),
+    ("4,58 m/s^2", "4.58 m/s^2", r"4.58\,\mathrm{m}/\mathrm{s}^{2}"),
 ]
 
 
@@ -113,18 +136,41 @@ def test_answer_is_shown_as_read(answer: str, text: str, latex: str) -> None:
     assert (read_as.text, read_as.latex) == (text, latex)
 
 
+NOTED = [
+    # (answer, the note on how it was read): a typing habit read as meant is said, never silent
+    ("4,58 m/s^2", "Read 4,58 as 4.58: a decimal comma"),
+    ("-0,5", "Read 0,5 as 0.5: a decimal comma"),
+    ("1 500,5 N", "Read 1 500,5 as 1500.5: a decimal comma"),
+    ("1 500 N", None),  # grouping changes no digit: the reading shows it
+    ("4.58 m/s^2", None),
+]
+
+
+@pytest.mark.parametrize(("answer", "note"), NOTED, ids=[c[0] for c in NOTED])
+def test_a_decimal_comma_is_read_as_a_point_and_the_reading_says_so(answer: str, note: str | None) -> None:
+    assert read_numeric_answer(answer).read_as().note == note
+
+
 REFUSED = [
     # (text, error type, position, words the message must contain)
-    ("4,58", ParseError, 1, "decimal point"),
-    ("1,500 m", ParseError, 1, "decimal point"),
-    ("12 500", ParseError, 3, "side by side"),
+    # a thousands separator or a decimal comma? asked, naming both
+    ("1,500 m", ParseError, 1, "Did you mean 1.500 or 1500?"),
+    ("12,345", ParseError, 2, "Did you mean 12.345 or 12345?"),
+    ("1,500,000 m", ParseError, 1, "no thousands separators"),
+    ("1,500.5 m", ParseError, 1, "no thousands separators"),
+    ("4.5,8 m", ParseError, 3, "decimal point"),
+    # spaces that are not SI's grouping in threes: two numbers, as before
+    ("12 50", ParseError, 3, "side by side"),
+    ("12 5000 m", ParseError, 3, "side by side"),
+    ("1234 567 m", ParseError, 5, "side by side"),
+    ("0 500 m", ParseError, 2, "side by side"),
+    ("1  500 m", ParseError, 3, "side by side"),
     ("1_500 N", ParseError, 1, "without separators: 1500, not 1_500"),
     # A power of ten with its digits left out: not 2.5 times Euler's number, which it read as
     ("2.5e m", ParseError, 3, "Did you mean a power of ten, as in 2.5e3, or 2.5 times Euler's number e"),
     ("-2.5E N", ParseError, 4, "as in -2.5E3"),
     ("2.5e", ParseError, 3, "power of ten"),  # was "the power 500 is too large"
     ("1'500 N", ParseError, 1, "without separators"),
-    ("12 500 m", ParseError, 3, "side by side"),
     ("4.58 m 3", ParseError, 7, ""),
     ("", ParseError, 0, "number"),
     ("m/s", ParseError, 0, "number"),
