@@ -24,7 +24,7 @@ from physics.mathinput.limits import InputLimits
 from physics.mathinput.mixed_numbers import mixed_number_slip
 from physics.mathinput.powered import PoweredArgument
 from physics.mathinput.render import STUDENT_STYLE, render_text
-from physics.mathinput.tokens import Kind, Token
+from physics.mathinput.tokens import Kind, Token, script_fraction
 from physics.mathinput.tree import (
     Call,
     Const,
@@ -699,7 +699,10 @@ class Parser:
         when `powers_outside` (`sin θ^2` as (sin θ)²), else None."""
         tok = self._tokens[self._i]
         # `½` is read as the bracket `(1/2)`, but is typed as a number is: `sin ½θ` is sin(½θ), as `sin 2θ`
-        vulgar = tok.kind is Kind.LPAREN and self._source[tok.pos : tok.pos + 1] in VULGAR_FRACTIONS
+        vulgar = tok.kind is Kind.LPAREN and (
+            self._source[tok.pos : tok.pos + 1] in VULGAR_FRACTIONS
+            or script_fraction(self._source, tok.pos) is not None  # `sin ¹⁄₂θ`, as `sin ½θ`
+        )
         if tok.kind is Kind.LPAREN and not vulgar:
             return Group(self._bracketed()), None
         if tok.kind is Kind.BAR:

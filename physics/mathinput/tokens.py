@@ -170,6 +170,29 @@ def tokenize(
         elif ch in ROOT_SIGNS:
             i += 1
             token = Token(Kind.SQRT, ch, start, i, space)
+        elif ch in SUPERSCRIPT_DIGITS and (fraction := script_fraction(text, i)) is not None:
+            # `⁵⁄₇ g sin θ`: a fraction set with raised and lowered digits, as a word processor's or a
+            # "fraction generator" gives it, is the number 5/7, as `½` is
+            top, bottom, end = fraction
+            typed = text[i:end]
+            if _ends_with_whole_number(tokens):  # `1 ⁵⁄₇`: a mixed number, as `1 ½`
+                raise mixed_number_slip(
+                    int(tokens[-1].text),
+                    Fraction(top, bottom),
+                    f"{tokens[-1].text}{' ' if space else ''}{typed}",
+                    i,
+                )
+            if tokens and tokens[-1].kind in _FRACTION_IS_POWER_AFTER and not space:
+                named = tokens[-1].text if tokens[-1].kind in (Kind.NUM, Kind.WORD, Kind.CONST) else "(…)"
+                raise ParseError(
+                    f"A raised fraction {typed} after {named}: write {named}^({top}/{bottom}) for a power, "
+                    f"or {top}/{bottom} {named} for a product.",
+                    i,
+                )
+            tokens.extend(_fraction_tokens(top, bottom, i, end, space))
+            i = end
+            space = False
+            continue
         elif ch in SUPERSCRIPT_PLAIN and not is_raised_power(chars, i, end := raised_end(chars, i)):
             if chars[i] == "ᵒ" and end == i + 1 and tokens and tokens[-1].kind is Kind.NUM:
                 token = Token(Kind.POSTFIX, "°", start, end, space)  # 30ᵒ, a degree as a raised o
@@ -350,14 +373,42 @@ def _comma_message(before: list[Token]) -> str:
 
 def _vulgar_fraction(ch: str, i: int, space: bool) -> list[Token]:
     """`½` as the tokens of `(1/2)`, all at the character's position."""
-    top, bottom = VULGAR_FRACTIONS[ch]
+    return _fraction_tokens(*VULGAR_FRACTIONS[ch], i, i + 1, space)
+
+
+def _fraction_tokens(top: int, bottom: int, start: int, end: int, space: bool) -> list[Token]:
+    """A fraction typed as one sign (`½`, `⁵⁄₇`) as the tokens of `(5/7)`, each spanning the sign."""
     return [
-        Token(Kind.LPAREN, "(", i, i + 1, space),
-        Token(Kind.NUM, str(top), i, i + 1, False, Fraction(top)),
-        Token(Kind.OP, "/", i, i + 1),
-        Token(Kind.NUM, str(bottom), i, i + 1, False, Fraction(bottom)),
-        Token(Kind.RPAREN, ")", i, i + 1),
+        Token(Kind.LPAREN, "(", start, end, space),
+        Token(Kind.NUM, str(top), start, end, False, Fraction(top)),
+        Token(Kind.OP, "/", start, end),
+        Token(Kind.NUM, str(bottom), start, end, False, Fraction(bottom)),
+        Token(Kind.RPAREN, ")", start, end),
     ]
+
+
+# After these a raised fraction (`x⁵⁄₇`) may be a power as much as a product: asked, never guessed.
+_FRACTION_IS_POWER_AFTER = (Kind.NUM, Kind.WORD, Kind.CONST, Kind.RPAREN, Kind.POSTFIX, Kind.BAR)
+_SUBSCRIPT_DIGITS = "₀₁₂₃₄₅₆₇₈₉"
+_FRACTION_SLASHES = "⁄/∕"
+_MAX_SCRIPT_DIGITS = 6  # far more than any fraction typed this way; bounds the digits read
+
+
+def script_fraction(text: str, i: int) -> tuple[int, int, int] | None:
+    """A fraction of raised digits over lowered ones at i (`⁵⁄₇`, `¹/₁₂`): (top, bottom, end), or None."""
+    slash = i
+    while slash < len(text) and text[slash] in SUPERSCRIPT_DIGITS:
+        slash += 1
+    if slash == len(text) or text[slash] not in _FRACTION_SLASHES:
+        return None
+    end = slash + 1
+    while end < len(text) and text[end] in _SUBSCRIPT_DIGITS:
+        end += 1
+    if end == slash + 1 or max(slash - i, end - slash - 1) > _MAX_SCRIPT_DIGITS:
+        return None
+    top = int("".join(str(SUPERSCRIPT_DIGITS[c]) for c in text[i:slash]))
+    bottom = int("".join(str(_SUBSCRIPT_DIGITS.index(c)) for c in text[slash + 1 : end]))
+    return top, bottom, end
 
 
 def _read_number(chars: list[str], i: int, space: bool, limits: InputLimits) -> tuple[Token, int]:

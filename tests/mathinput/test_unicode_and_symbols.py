@@ -34,6 +34,15 @@ TEXTBOOK = [
     ("cos½θ x", ("theta", "x"), sympy.cos(sym("theta") / 2) * sym("x")),
     ("sin(½) x", ("x",), sympy.sin(sympy.Rational(1, 2)) * sym("x")),  # `sin ½ x` is asked (test_errors.py)
     ("ħ/2", ("hbar",), sym("hbar") / 2),
+    # A fraction set in raised and lowered digits (a word processor's, or a "fraction generator"'s) is
+    # the number, as `½` is: `⁵⁄₇` was refused as "Unexpected '⁵'"
+    ("⁵⁄₇ g sin θ", ("g", "theta"), 5 * sym("g") * sympy.sin(sym("theta")) / 7),
+    ("⁵⁄₇g", ("g",), 5 * sym("g") / 7),
+    ("¹/₂ m v²", ("m", "v"), sym("m") * sym("v") ** 2 / 2),  # a plain slash between them
+    ("¹∕₁₂ m L²", ("m", "L"), sym("m") * sym("L") ** 2 / 12),  # the division slash
+    ("sin ¹⁄₂θ", ("theta",), sympy.sin(sym("theta") / 2)),  # a number, as `sin ½θ`
+    ("g ⁵⁄₇", ("g",), 5 * sym("g") / 7),
+    ("⅔ m g", ("m", "g"), 2 * sym("m") * sym("g") / 3),
     # An exponent typed in raised letters, as a phone's keyboard gives them: it was refused, "a superscript
     # sign needs superscript digits after it"
     ("A e⁻ᵏᵗ", ("A", "k", "t"), sym("A") * sympy.exp(-sym("k") * sym("t"))),
@@ -144,6 +153,9 @@ LOWERED_OR_RAISED_REFUSED = [
     # (typed, declared, position, words): a subscript letter is no factor, a raised w no ω
     ("vₘ", ("v", "m"), 0, 'Unknown symbol "v_m"'),
     ("e⁻ʷᵗ", ("omega", "t"), 2, "If w stands for ω, type omega or ω"),
+    # a raised fraction glued to a factor: its power as much as a coefficient, so asked
+    ("x⁵⁄₇", ("x",), 1, "write x^(5/7) for a power, or 5/7 x for a product"),
+    ("(x)²⁄₃", ("x",), 3, "write (…)^(2/3) for a power"),
 ]
 
 
@@ -166,6 +178,7 @@ MIXED_NUMBERS = [
     # it; `1 ½ m` and `3\frac{1}{2} m` were read 1·½·m and 3·½·m, and graded
     ("1½ m", 1, "(3/2 or 1.5), not 1½"),
     ("1 ½ m", 2, "(3/2 or 1.5), not 1 ½"),
+    ("1 ⁵⁄₇ m", 2, "(12/7), not 1 ⁵⁄₇"),
     ("1 1/2 m", 2, "(3/2 or 1.5), not 1 1/2"),
     ("2 3/4m", 2, "(11/4 or 2.75), not 2 3/4"),
     ("1 1/3 m", 2, "(4/3), not 1 1/3"),
