@@ -2,6 +2,10 @@
 
 from __future__ import annotations
 
+# A `;` ending an answer, as Maxima and MATLAB end a command: refused, as STACK refuses it, in symbolic and
+# numeric answers alike.
+TRAILING_SEMICOLON = "Leave out the ';' at the end: an answer is not a command, so type it without one."
+
 
 def counted(count: int, noun: str, plural: str | None = None) -> str:
     """`1 problem`, `2 problems`, `0 problems`: the count with the noun agreeing, never `problem(s)`."""

@@ -38,6 +38,7 @@ from physics.mathinput.vocabulary import (
     SUPERSCRIPT_SIGNS,
     VULGAR_FRACTIONS,
 )
+from physics.wording import TRAILING_SEMICOLON
 
 __all__ = ["Kind", "Token", "tokenize"]
 
@@ -253,6 +254,9 @@ def tokenize(
                 "as they are listed (a derivative or a velocity only where the part asks for one).",
                 i,
             )
+        elif ch == ";" and not "".join(chars[i + 1 :]).strip():
+            # `m g sin θ;`: a command's end in Maxima or MATLAB; refused at the end, as STACK refuses it
+            raise ParseError(TRAILING_SEMICOLON, i)
         elif ch == "$":  # what is left of LaTeX's math delimiters, when they wrap only part of it
             raise ParseError(
                 "Leave out the $ signs: type the expression alone (or all of it between two $).", i

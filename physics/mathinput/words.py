@@ -101,7 +101,7 @@ def resolve_words(tokens: list[Token], table: NameTable) -> list[Token]:
             meant = (
                 f" Did you mean {lowered}? Function names are in small letters."
                 if lowered in FUNCTIONS
-                else ""
+                else _other_names_hint(word)
             )
             raise UnknownFunction(
                 f'Unknown function "{word}".{meant} Functions you can use: {", ".join(LISTED_FUNCTIONS)}.',
@@ -124,7 +124,8 @@ def resolve_words(tokens: list[Token], table: NameTable) -> list[Token]:
             + _case_hint(word, allowed, table)
             + _subscript_hint(word, allowed, table)
             + _times_letter_hint(word, prev, nxt)
-            + _spaced_exponent_hint(word, prev),
+            + _spaced_exponent_hint(word, prev)
+            + _other_names_hint(word),
             tok.pos,
             word,
             allowed,
@@ -288,6 +289,21 @@ def _spaced_name_hint(word: str, nxt: Token, table: NameTable) -> str:
     if nxt.kind is not Kind.WORD or not _one_name(word + nxt.text, table):
         return ""
     return f" If {word} {nxt.text} is {word}{nxt.text}, type it without the space."
+
+
+# Names of functions that Russian and some European textbooks use, and the name to type for each.
+_OTHER_FUNCTION_NAMES = {"tg": "tan", "ctg": "cot", "cotg": "cot", "arctg": "atan", "arcctg": "acot"}
+_OTHER_FUNCTION_WORD = re.compile(r"(arcctg|arctg|cotg|ctg|tg)(?![a-z])")
+
+
+def _other_names_hint(word: str) -> str:
+    """A sentence for `tg θ`, `arctg(x)`: a function under its Russian or European name; or "". Never
+    read as the function: t·g where t and g are declared is read so, as before."""
+    found = _OTHER_FUNCTION_WORD.match(word)
+    if found is None:
+        return ""
+    name = _OTHER_FUNCTION_NAMES[found.group(1)]
+    return f" Did you mean {name}? Write {name} for {found.group(1)}, as in {name}(x)."
 
 
 def glued_angle_hint(word: str) -> str:

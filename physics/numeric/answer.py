@@ -18,6 +18,7 @@ from physics.errors import AnswerError, LikelySlip, ParseError, TooLarge
 from physics.numeric.literal import NumberLiteral, read_number, units_start
 from physics.units import ParsedUnits, UnitReading, read_units
 from physics.verdict import ReadAs
+from physics.wording import TRAILING_SEMICOLON
 
 MAX_ANSWER_LENGTH = 200
 
@@ -232,6 +233,8 @@ def read_numeric_answer(
             else visible.typed_position(answer.units_position),
         )
     text = fullwidth_as_ascii(text)
+    if text.rstrip().endswith(";"):  # `4.58 m/s^2;`: a command's end, as STACK refuses it
+        raise ParseError(TRAILING_SEMICOLON, len(text.rstrip()) - 1)
     uncertainty = _UNCERTAINTY.search(text)
     if uncertainty is not None:  # a lab result as written in a report: `(4.58 ± 0.05) m/s^2`
         raise ParseError(

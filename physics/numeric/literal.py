@@ -1,7 +1,7 @@
 """Reading the number at the start of a numeric answer, exactly, with its significant figures.
 
 Accepted: an optional sign (`-`, `−`, `+`), a decimal literal (`4.58`, `.5`, `1500`, `100.`), an
-optional power of ten (`e3`, `E-3`, `×10^3`, `x 10^3`, `*10**3`, `·10⁻³`, `10^3` alone) and an optional `%` (or `percent`).
+optional power of ten (`e3`, `E-3`, `×10^3`, `x 10^3`, `*10**3`, `·10⁻³`, `10^3` alone, Mathematica's `*^3`) and an optional `%` (or `percent`).
 Size limits are checked on the raw characters before any arithmetic, so `1e999999` costs nothing.
 """
 
@@ -186,6 +186,8 @@ def _scientific(text: str, i: int, start: int) -> tuple[int, int] | None:
         _refuse_calculator_key(text, text[start:i], skip_spaces(text, i))
     if i < len(text) and text[i] in _CALCULATOR_EXPONENTS:  # `4.58ᴇ3`: a TI calculator's small capital E
         return _signed_exponent(text, i + 1)
+    if text.startswith("*^", i):  # `4.58*^3`: Mathematica's power of ten, as its output is copied
+        return _signed_exponent(text, i + 2)
     if i < len(text) and text[i] in "eE":
         found = _signed_exponent(text, i + 1)
         if found is None and (i + 1 == len(text) or text[i + 1].isspace()):

@@ -30,6 +30,9 @@ PARSE_ERRORS = [
     ("()", 0, "Empty brackets"),
     ("x # y", 2, "Unexpected character '#'"),
     ("x; y", 1, "Unexpected character ';'"),
+    # a command's end, as Maxima and MATLAB type it: refused at the end, as STACK refuses it
+    ("x y;", 3, "Leave out the ';' at the end"),
+    ("x y ; ", 4, "Leave out the ';' at the end"),
     ("x.y", 1, "Write a product with * or a space, not '.'"),
     ("x' + y", 1, "A prime (x') is not read here"),  # a velocity only in a Lagrangian or energy part
     ("2 y′", 3, "A prime (y′) is not read here"),  # a dot for a product, as some schools write

@@ -263,6 +263,34 @@ def test_a_function_in_capitals_is_refused_naming_it_in_small_letters(typed: str
     assert f"Did you mean {meant}? Function names are in small letters." in caught.value.message
 
 
+OTHER_FUNCTION_NAMES = [
+    # (typed, declared, the name to type): Russian and European names, refused naming the function to
+    # type; they were "Unknown function" or "Unknown symbol" with no more
+    ("tg(x)", ("x",), "tan"),
+    ("tg x", ("x",), "tan"),
+    ("ctg(x)", ("x",), "cot"),
+    ("cotg x", ("x",), "cot"),
+    ("arctg(x)", ("x",), "atan"),
+    ("arcctg x", ("x",), "acot"),
+    ("m g tgθ", ("m", "g", "theta"), "tan"),
+]
+
+
+@pytest.mark.parametrize(
+    ("typed", "declared", "meant"), OTHER_FUNCTION_NAMES, ids=[c[0] for c in OTHER_FUNCTION_NAMES]
+)
+def test_a_function_under_its_russian_or_european_name_is_refused_naming_the_one_to_type(
+    typed: str, declared: tuple[str, ...], meant: str
+) -> None:
+    with pytest.raises((UnknownFunction, UnknownSymbol)) as caught:
+        read(typed, *declared)
+    assert f"Did you mean {meant}? Write {meant} for" in caught.value.message
+
+
+def test_tg_of_declared_t_and_g_is_their_product_as_before() -> None:
+    assert same(read("v0 - tg", "v0", "t", "g").expr, sym("v0") - sym("t") * sym("g"))
+
+
 def test_declared_name_before_a_bracket_is_multiplication():
     assert same(read("m(g+M)", "m", "g", "M").expr, sym("m") * (sym("g") + sym("M")))
 

@@ -43,7 +43,9 @@ VALUES = [
     ("4.58ᴇ-3", F("0.00458")),
     ("4.58⏨3", F(4580)),  # the decimal exponent symbol
     ("4.58 10⁻³", F("0.00458")),
-    ("4.58\u200910^-3", F("0.00458")),  # a thin space, as a word processor sets it
+    ("4.58\u200910^-3", F("0.00458")),
+    ("4.58*^3", F(4580)),  # Mathematica's power of ten
+    ("4.58*^-3", F("0.00458")),  # a thin space, as a word processor sets it
     ("45%", F(45, 100)),
     ("45 %", F(45, 100)),
     ("4.5e1%", F(45, 100)),
@@ -127,6 +129,7 @@ RENDERED = [
     ("25 °C", "25 °C", r"25\,{}^{\circ}\mathrm{C}"),
     ("1 500 N", "1500 N", r"1500\,\mathrm{N}"),
     ("4,58 m/s^2", "4.58 m/s^2", r"4.58\,\mathrm{m}/\mathrm{s}^{2}"),
+    ("4.58*^3 N", "4.58e3 N", r"4.58 \times 10^{3}\,\mathrm{N}"),  # was "Nothing between '*' and '^'"
 ]
 
 
@@ -172,6 +175,8 @@ REFUSED = [
     ("2.5e", ParseError, 3, "power of ten"),  # was "the power 500 is too large"
     ("1'500 N", ParseError, 1, "without separators"),
     ("4.58 m 3", ParseError, 7, ""),
+    ("4.58 m/s^2;", ParseError, 10, "Leave out the ';' at the end"),  # was "Unexpected character ';'"
+    ("4.58;", ParseError, 4, "Leave out the ';' at the end"),
     ("", ParseError, 0, "number"),
     ("m/s", ParseError, 0, "number"),
     ("abc", ParseError, 0, "number"),
