@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass
+from decimal import Decimal
 from fractions import Fraction
 
 from physics.errors import LikelySlip, ParseError, TooLarge
@@ -222,14 +223,16 @@ def _scientific(text: str, i: int, start: int) -> tuple[int, int] | None:
     return None
 
 
-_INCHES_AFTER_FEET = re.compile(r"['’′](\d+)\s*[\"”″]")
+_INCHES_AFTER_FEET = re.compile(r"['’′]\s*(\d+(?:\.\d+)?)\s*(?:[\"”″]|'')")
+_PRIMES = "'’′"
 
 
 def _refuse_feet_and_inches(text: str, feet: str, at: int) -> None:
-    """ParseError for `5'10"`, a height in feet and inches: not the Swiss thousands separator `1'500`."""
+    """ParseError for `5'10"`, `5′ 11″`, a height in feet and inches: not the Swiss thousands separator
+    `1'500`."""
     found = _INCHES_AFTER_FEET.match(text, at)
-    if found is not None and feet:
-        inches = int(feet) * 12 + int(found.group(1))
+    if found is not None and feet and len(found.group(1)) <= MAX_DIGITS:
+        inches = Decimal(feet) * 12 + Decimal(found.group(1))  # exact: `5' 10.5"` is 70.5 in
         raise ParseError(
             f"Feet and inches ({text[: found.end()].strip()}): write one number in one unit, as {inches} in",
             at,
@@ -387,6 +390,8 @@ def read_number(text: str, start: int = 0) -> NumberLiteral:
     if len(integer_digits) + len(fraction_digits) > MAX_DIGITS:
         raise TooLarge(f"A number may have at most {MAX_DIGITS} digits", i)
     i = fraction_end
+    if i < len(text) and text[i] in _PRIMES and not has_point:  # `5′ 11″`, `5' 10.5"`
+        _refuse_feet_and_inches(text, integer_digits, i)
     if i + 1 < len(text) and text[i] == "," and text[i + 1] in _DIGITS:
         _refuse_thousands_comma(text, integer_digits, i)
         raise ParseError(

@@ -317,6 +317,7 @@ def _tokenize(text: str) -> list[Token]:
         elif char == "." and not text[i + 1 :].strip():
             i += 1  # the full stop of a sentence: `4.58 m/s^2.`
         elif char == "." and text[i + 1 : i + 2].isdigit():
+            _refuse_second_quantity(text, tokens, i)
             raise ParseError("A unit string holds whole numbers only: powers as in m^2 or s^-2", start)
         elif char in _MINUS_SIGNS and 0 < i < n - 1 and _is_name_char(text[i - 1]) and text[i + 1].isalpha():
             i += 1  # `N-m`, `ft-lb`, `kW-h`: a hyphen between units joins them, as engineers write it
@@ -354,3 +355,25 @@ def _raise_by(tokens: list[Token], leading: tuple[int, Token] | None) -> None:
         power, word = leading
         tokens.append(word)
         tokens.append(Token(Kind.INTEGER, str(power), word.position, power))
+
+
+def second_quantity(number: str, unit: str, position: int) -> ParseError:
+    """The refusal of `5 ft 10 in`, `2 h 30 min`: a second number with its own unit after the first."""
+    return ParseError(
+        f"A second number with its own unit ({number} {unit}): write the answer as one number in one unit, "
+        "as 70 in for 5 ft 10 in",
+        position,
+    )
+
+
+_DECIMAL_THEN_UNIT = re.compile(r"\.(\d+)\s*([^\W\d]+)")
+
+
+def _refuse_second_quantity(text: str, tokens: list[Token], point: int) -> None:
+    """`5 ft 10.5 in`: a decimal with its own unit after a unit is a second quantity, refused as `5 ft 10
+    in` is; not a unit string's stray decimal, which the caller refuses."""
+    if len(tokens) < 2 or tokens[-1].kind is not Kind.INTEGER or tokens[-2].kind is not Kind.NAME:
+        return
+    found = _DECIMAL_THEN_UNIT.match(text, point)
+    if found is not None:
+        raise second_quantity(f"{tokens[-1].text}.{found.group(1)}", found.group(2), tokens[-1].position)

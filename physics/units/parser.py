@@ -33,7 +33,7 @@ from physics.units.catalogue import (
     SI_PREFIXES,
     TWO_ANGLE_SPELLINGS,
 )
-from physics.units.lexer import Kind, Token, tokenize
+from physics.units.lexer import Kind, Token, second_quantity, tokenize
 from physics.units.parsed import ParsedUnits
 from physics.units.registry import UnitAtom, case_variants, lookup, lookup_piece, pint_unit, suggestion
 
@@ -397,11 +397,7 @@ class _Parser:
         token = self.advance()
         if token.kind is Kind.INTEGER:
             if token.value != 1 and self.at(Kind.NAME):  # `5 ft 10 in`, `2 h 30 min`
-                raise ParseError(
-                    f"A second number with its own unit ({token.text} {self.token.text}): write the answer "
-                    "as one number in one unit, as 70 in for 5 ft 10 in",
-                    token.position,
-                )
+                raise second_quantity(token.text, self.token.text, token.position)
             if token.value != 1:
                 raise ParseError(
                     "A unit string holds no numbers except 1 (as in 1/s) and powers (as in m^2)",

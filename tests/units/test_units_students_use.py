@@ -238,6 +238,20 @@ def test_an_alias_in_the_wrong_case_is_settled_by_dimension(typed: str, reading:
         ("30 O", "30", "deg", Reason.UNKNOWN_UNIT, "for degrees write ° or deg"),
         ("5 ft 10 in", "1.778", "m", Reason.PARSE_ERROR, "second number with its own unit (10 in)"),
         ("2 h 30 min", "9000", "s", Reason.PARSE_ERROR, "second number with its own unit (30 min)"),
+        # a decimal second number: was "A unit string holds whole numbers only"
+        ("5 ft 10.5 in", "1.791", "m", Reason.PARSE_ERROR, "second number with its own unit (10.5 in)"),
+        ("2 h 30.5 min", "9030", "s", Reason.PARSE_ERROR, "second number with its own unit (30.5 min)"),
+        # true primes, and a space after the feet: were "Unexpected character '′' in the units"
+        (
+            "5′ 11″",
+            "1.803",
+            "m",
+            Reason.PARSE_ERROR,
+            "Feet and inches (5′ 11″): write one number in one unit, as 71 in",
+        ),
+        ("5′11″", "1.803", "m", Reason.PARSE_ERROR, "Feet and inches (5′11″): write one number in one unit"),
+        ("5' 10.5\"", "1.791", "m", Reason.PARSE_ERROR, "write one number in one unit, as 70.5 in"),
+        ("5′ 11''", "1.803", "m", Reason.PARSE_ERROR, "write one number in one unit, as 71 in"),
         (
             "5'10\"",
             "1.778",
