@@ -171,6 +171,8 @@ def tokenize(
         elif ch in ROOT_SIGNS:
             i += 1
             token = Token(Kind.SQRT, ch, start, i, space)
+        elif ch in SUPERSCRIPT_PLAIN and _slash_between_raised(chars, i):
+            raise _unraised_slash(chars, tokens, i, raised_end(chars, i))
         elif ch in SUPERSCRIPT_DIGITS and (fraction := script_fraction(text, i)) is not None:
             # `⁵⁄₇ g sin θ`: a fraction set with raised and lowered digits, as a word processor's or a
             # "fraction generator" gives it, is the number 5/7, as `½` is
@@ -389,6 +391,26 @@ def _fraction_tokens(top: int, bottom: int, start: int, end: int, space: bool) -
         Token(Kind.NUM, str(bottom), start, end, False, Fraction(bottom)),
         Token(Kind.RPAREN, ")", start, end),
     ]
+
+
+def _slash_between_raised(chars: list[str], i: int) -> bool:
+    """Whether the raised run at i is followed by a slash and another raised run (`⁻ᵇᵗ/²ᵐ`)."""
+    slash = raised_end(chars, i)
+    return slash + 1 < len(chars) and chars[slash] == "/" and chars[slash + 1] in SUPERSCRIPT_PLAIN
+
+
+def _unraised_slash(chars: list[str], tokens: list[Token], i: int, slash: int) -> ParseError:
+    """`A e⁻ᵇᵗ/²ᵐ`: an exponent typed raised, its slash typed plain, as no keyboard raises one. As typed
+    the exponent ends at the slash; refused, saying how to write the whole exponent in ^( )."""
+    top = "".join(SUPERSCRIPT_PLAIN[c] for c in chars[i:slash])
+    bottom = "".join(SUPERSCRIPT_PLAIN[c] for c in chars[slash + 1 : raised_end(chars, slash + 1)])
+    divisor = bottom if len(bottom) == 1 else f"({bottom})"
+    base = tokens[-1].text if tokens and tokens[-1].kind in (Kind.WORD, Kind.CONST) else ""
+    return ParseError(
+        f"The exponent is raised but its '/' is not, so the exponent ends at the '/': write the whole "
+        f"exponent in ^( ), as {base}^({top}/{divisor}).",
+        slash,
+    )
 
 
 # After these a raised fraction (`x⁵⁄₇`) may be a power as much as a product: asked, never guessed.

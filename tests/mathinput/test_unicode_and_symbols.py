@@ -153,6 +153,15 @@ LOWERED_OR_RAISED_REFUSED = [
     # (typed, declared, position, words): a subscript letter is no factor, a raised w no ω
     ("vₘ", ("v", "m"), 0, 'Unknown symbol "v_m"'),
     ("e⁻ʷᵗ", ("omega", "t"), 2, "If w stands for ω, type omega or ω"),
+    # a raised exponent with its slash typed plain, as no keyboard raises one: was "Nothing between '/' and '^'"
+    (
+        "A e⁻ᵇᵗ/²ᵐ",
+        ("A", "b", "t", "m"),
+        6,
+        "its '/' is not, so the exponent ends at the '/': write the whole exponent in ^( ), as e^(-bt/(2m))",
+    ),
+    ("A e⁻ᵇᵗ⁄²ᵐ", ("A", "b", "t", "m"), 6, "as e^(-bt/(2m))"),  # the fraction slash
+    ("e⁻ᵗ/ᵗᵃᵘ", ("t", "tau"), 3, "as e^(-t/(tau))"),
     # a raised fraction glued to a factor: its power as much as a coefficient, so asked
     ("x⁵⁄₇", ("x",), 1, "write x^(5/7) for a power, or 5/7 x for a product"),
     ("(x)²⁄₃", ("x",), 3, "write (…)^(2/3) for a power"),
