@@ -345,6 +345,9 @@ UNBRACKETED_SUMS = [
     # and was graded wrong_dimension, an attempt used for a missing bracket
     ("mg/m+M", "m*g/(m + M)", PENDULUM, "m·g/(m + M)"),
     ("mg / m+M", "m*g/(m + M)", PENDULUM, "m·g/(m + M)"),
+    ("m g/m + M", "m*g/(m + M)", PENDULUM, "m·g/(m + M)"),  # spaced as most type it
+    ("m g / m + M", "m*g/(m + M)", PENDULUM, "m·g/(m + M)"),
+    ("2 m g/m + M", "2*m*g/(m + M)", PENDULUM, "2·m·g/(m + M)"),
     ("g(m2-m1)/m1+m2", "g*(m2 - m1)/(m1 + m2)", ATWOOD, "g·(m2 - m1)/(m1 + m2)"),
     ("m+M/m", "(m + M)/m", PENDULUM, "(m + M)/m"),
 ]
