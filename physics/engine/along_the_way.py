@@ -21,6 +21,7 @@ import sympy
 from physics.answer_text import typed_text
 from physics.engine import tidy, work_energy
 from physics.engine.contacts import UNILATERAL
+from physics.engine.leaving import leaving, staged
 from physics.engine.method import Method, NotApplicable
 from physics.engine.model import (
     REACH_KINDS,
@@ -85,21 +86,33 @@ def _holds_along(
 ) -> bool:
     """True when the force keeps its sign along the way; False when it could not be found there."""
     c = trip.coordinate
+    # the other coordinates stay where the state puts them (cyclic ones: nothing depends on them)
+    state = {**{v: sympy.Integer(0) for v in method.mech.qd}, **dict(model.state)}
+
+    def settled(force: sympy.Expr, square: sympy.Expr) -> sympy.Expr:
+        velocity = trip.sign * sympy.sqrt(square)
+        there = {c.velocity: velocity, **{v: e.subs(c.velocity, velocity) for v, e in trip.held.items()}}
+        return force.subs(there).subs({s: v for s, v in state.items() if s != c.symbol and s not in there})
+
     try:
         along = dataclasses.replace(
             trip, end=c.symbol
         )  # the rate's square wherever the coordinate has got to
         square = work_energy.by_integration(method, along)
-        force = method.free.force(constraint.name)
+        force = settled(method.free.force(constraint.name), square)
+        # past where the body leaves a spring that only pushes, the motion without it (leaving.py)
+        later, since, freed = (
+            staged(method, along) if leaving(method, along) else (square, trip.start, method)
+        )
+        if freed is not method:
+            force = sympy.Piecewise(
+                (force, trip.sign * (c.symbol - since) <= 0),
+                (settled(freed.free.force(constraint.name), later), True),
+            )
     except PhyscheckError:
         return False
     except Exception:  # sympy's failures on an uploaded model: the quantity itself was derived already
         return False
-    velocity = trip.sign * sympy.sqrt(square)
-    there = {c.velocity: velocity, **{v: e.subs(c.velocity, velocity) for v, e in trip.held.items()}}
-    # the other coordinates stay where the state puts them (cyclic ones: nothing depends on them)
-    state = {**{v: sympy.Integer(0) for v in method.mech.qd}, **dict(model.state)}
-    force = force.subs(there).subs({s: v for s, v in state.items() if s != c.symbol and s not in there})
     worst: tuple[float, dict[sympy.Symbol, float], float] | None = None
     for sampled in domain_points(model, POINTS, seed=SEED):
         point = {s: v for s, v in sampled.items() if s != c.symbol}  # the coordinate runs along the way

@@ -1,11 +1,12 @@
-"""A spring that only pushes: a body meets its free end (`attached: false`, a buffer or bumper).
+"""A spring that only pushes: a body meets its free end (`attached: false`, a buffer, a bumper, a launcher).
 
 The spring's potential k (d - L0)^2 / 2 pulls as well as pushes: a block sent along a floor onto a
-spring's free end would be pulled towards it before they meet, and back after they part, so the
-greatest compression would be derived for a motion that does not happen. As Modelica writes a contact
-that can only push as a component with its own condition (ElastoGap: no force while the gap is open),
-the spring carries its reach, its natural length, and the model must stay within it: at the state
-(the body touching or squeezing it), and all along each motion a quantity is taken at the end of.
+spring's free end would be pulled towards it before they meet, and back after they part. As Modelica
+writes a contact that can only push as a component with its own condition (ElastoGap: no force while
+the gap is open), the spring carries its reach, its natural length. The state must have the body
+touching it; a motion may carry the body off it (the methods follow it in two stages: leaving.py), but
+then for good, at every point of the domain alike: a body that meets the spring again on the way, or
+leaves it at some of the domain's points and turns back on it at others, is refused at the quantity.
 """
 
 from __future__ import annotations
@@ -15,7 +16,8 @@ from collections.abc import Mapping
 import sympy
 
 from physics.answer_text import typed_text
-from physics.engine.along_the_way import POINTS, SEED, STEPS, trip
+from physics.engine.along_the_way import STEPS, trip
+from physics.engine.leaving import POINTS, SEED, leaving
 from physics.engine.loads.pair import PairPotential
 from physics.engine.mechanics import Mechanics
 from physics.engine.method import Method
@@ -29,8 +31,7 @@ _TOLERANCE = 1e-9  # of the natural length: a state written at the contact itsel
 
 
 def check_buffers_placed(model: Model, mech: Mechanics) -> None:
-    """Before any method: each spring that only pushes is met at the state, and no quantity is taken
-    `at` a place beyond its reach (where the body has left it); DerivationError where written."""
+    """Before any method: each spring that only pushes is met at the state; DerivationError where written."""
     state = dict(model.state)
     for index, pair, length in _buffers(model, mech):
         assert pair.reach is not None
@@ -46,63 +47,111 @@ def check_buffers_placed(model: Model, mech: Mechanics) -> None:
                 f"{typed_text(pair.reach)}), with the velocity it arrives with",
                 path=where,
             )
-        for quantity in model.quantities:
-            if not quantity.at or quantity.after:
-                continue
-            there = length.subs({model.coordinate(n).symbol: v for n, v in quantity.at}).subs(state)
-            past = _past(model, [there], pair.reach)
-            if past is not None:
-                raise DerivationError(
-                    f"{quantity.name}: the spring at {'.'.join(map(str, where))} only pushes (attached: "
-                    f"false), and where the quantity is taken its length would be {typed_text(there)}, longer "
-                    f"than its natural length {typed_text(pair.reach)} ({point_text(past)}): the body has left "
-                    "the spring by then and moves on freely, which the model does not follow. Ask where the "
-                    f"body leaves it (its length {typed_text(pair.reach)}): the speed is kept after that",
-                    quantity=quantity.name,
-                    path=("quantities", quantity.name),
-                )
+        pulls = _pulls_when_squeezed(model, pair, at_state)
+        if pulls is not None:
+            raise DerivationError(
+                f"the spring only pushes (attached: false), but its energy {typed_text(pair.energy)} rises as "
+                f"it lengthens towards its natural length {typed_text(pair.reach)} ({point_text(pulls)}): "
+                "squeezed, it would pull the body in. A spring's energy is k (d - L0)^2/2, positive: check "
+                "its sign",
+                path=where,
+            )
+
+
+def _pulls_when_squeezed(
+    model: Model, pair: PairPotential, at_state: sympy.Expr
+) -> dict[sympy.Symbol, float] | None:
+    """A sampled point where the energy grows with the length between the state's and the natural length
+    (the force -dU/dd pulls the body in), or None."""
+    if at_state.free_symbols - set(model.parameters):
+        return None
+    assert pair.reach is not None
+    force = -sympy.diff(pair.energy, pair.distance)
+    for point in domain_points(model, POINTS, seed=SEED):
+        start, reach = (float(sympy.N(e.subs(point))) for e in (at_state, pair.reach))
+        for share in (0.25, 0.5, 0.75):
+            value = complex(
+                sympy.N(force.subs(point).subs(pair.distance, start + (reach - start) * share), 15)
+            )
+            if abs(value.imag) <= 1e-9 * max(1.0, abs(value.real)) and value.real < 0:
+                return point
+    return None
 
 
 def check_buffers(model: Model, method: Method, quantities: Mapping[str, sympy.Expr]) -> dict[str, str]:
-    """Each spring that only pushes is kept squeezed along each asked motion: a check's name -> what was
-    shown; DerivationError at the quantity where it is not."""
+    """Along each asked motion, each spring that only pushes stays squeezed, or the body leaves it for
+    good, alike at every sampled point: a check's name -> what was shown; DerivationError at the quantity
+    where it is not."""
     state = dict(model.state)
     shown = []
     for index, pair, length in _buffers(model, method.mech):
         assert pair.reach is not None
-        where = _written(model, pair.name, index)
+        where = ".".join(map(str, _written(model, pair.name, index)))
         for quantity in model.quantities:
             journey = trip(method, quantity, quantities)
             if journey is None:
                 continue
             c = journey.coordinate
             along = length.subs({s: v for s, v in state.items() if s != c.symbol})
+            if along.free_symbols - set(model.parameters) - {c.symbol}:
+                continue  # a coordinate the state leaves free: nothing to tell here
             places = [
                 journey.start + (journey.end - journey.start) * sympy.Rational(k, STEPS)
                 for k in range(STEPS + 1)
             ]
-            past = _past(model, [along.subs(c.symbol, place) for place in places], pair.reach)
-            if past is not None:
-                raise DerivationError(
-                    f"{quantity.name}: the spring at {'.'.join(map(str, where))} only pushes (attached: false), "
-                    f"but on the way from {c.name} = {typed_text(journey.start)} to {c.name} = "
-                    f"{typed_text(journey.end)} its length passes its natural length {typed_text(pair.reach)} "
-                    f"({point_text(past)}): the body leaves the spring and moves on freely, which the model "
-                    "does not follow. Ask about a motion that keeps it squeezed (the greatest compression, "
-                    "from where the body meets it)",
-                    quantity=quantity.name,
-                    path=("quantities", quantity.name),
+            ways = _ways(model, [along.subs(c.symbol, place) for place in places], pair.reach)
+            way = f"on the way from {c.name} = {typed_text(journey.start)} to {c.name} = {typed_text(journey.end)}"
+            said = f"{quantity.name}: the spring at {where} only pushes (attached: false), "
+            refusal = None
+            if "again" in ways:
+                refusal = (
+                    f"{said}and {way} the body leaves it and meets it again ({point_text(ways['again'])}), "
+                    "which the model does not follow. Ask about a motion that leaves it once, or stays on it"
                 )
-            shown.append(f"{'.'.join(map(str, where))} ({quantity.name})")
+            elif "leaves" in ways and "stays" in ways:
+                refusal = (
+                    f"{said}and {way} the body leaves it at some of the domain's points "
+                    f"({point_text(ways['leaves'])}) but turns back on it at others ({point_text(ways['stays'])}): "
+                    "two motions, two answers. Keep the domain to one of them (domain.positive: the condition "
+                    "that the body gets back to the spring's natural length still moving, such as "
+                    "k*d - 2*m*g*sin(theta) for a launcher compressed by d up a slope)"
+                )
+            elif "leaves" in ways and leaving(method, journey) is None:
+                refusal = (
+                    f"{said}and {way} the body leaves it ({point_text(ways['leaves'])}), but where it does "
+                    f"is not one place ahead of the start: {typed_text(along)} = {typed_text(pair.reach)} "
+                    f"must have a single root for {c.name} on the way"
+                )
+            if refusal is not None:
+                raise DerivationError(refusal, quantity=quantity.name, path=("quantities", quantity.name))
+            if "leaves" in ways:
+                shown.append(f"{where} ({quantity.name}: left once, at its natural length)")
+            else:
+                shown.append(f"{where} ({quantity.name}: squeezed all the way)")
     if not shown:
         return {}
-    return {"springs that only push": f"{', '.join(shown)}: squeezed from the state to where each is taken"}
+    return {"springs that only push": f"{', '.join(shown)}: from the state to where each is taken"}
 
 
 def _buffers(model: Model, mech: Mechanics) -> list[tuple[int, PairPotential, sympy.Expr]]:
     """Each spring that only pushes, with its index among the potentials and its length in the coordinates."""
     lengths = {d.name: d.mapping for d in mech.dofs}
     return [(i, p, p.length(model, lengths)) for i, p in enumerate(model.potentials) if p.reach is not None]
+
+
+def _ways(model: Model, lengths: list[sympy.Expr], reach: sympy.Expr) -> dict[str, dict[sympy.Symbol, float]]:
+    """How the body goes along the lengths in order, by sampled domain point: "stays" squeezed, "leaves"
+    for good, or leaves and meets the spring "again"; the first point of each."""
+    found: dict[str, dict[sympy.Symbol, float]] = {}
+    for point in domain_points(model, POINTS, seed=SEED):
+        limit = float(sympy.N(reach.subs(point)))
+        past = [
+            float(sympy.re(sympy.N(length.subs(point), 15))) > limit + _TOLERANCE * max(1.0, abs(limit))
+            for length in lengths
+        ]
+        way = "stays" if not any(past) else "leaves" if all(past[past.index(True) :]) else "again"
+        found.setdefault(way, point)
+    return found
 
 
 def _past(model: Model, lengths: list[sympy.Expr], reach: sympy.Expr) -> dict[sympy.Symbol, float] | None:

@@ -30,6 +30,7 @@ from physics.engine import (
 from physics.engine.collision import merged
 from physics.engine.contact_friction import slip_velocity
 from physics.engine.lagrange import LagrangeMethod
+from physics.engine.leaving import switched_off
 from physics.engine.mechanics import Mechanics
 from physics.engine.method import stable_equilibrium
 from physics.engine.model import (
@@ -287,7 +288,8 @@ class Simulator:
 
     @cached_property
     def dynamics(self) -> Dynamics:
-        return Dynamics(self.model, self.lagrange)
+        switched = switched_off(self.model)  # a spring that only pushes lets go past its natural length
+        return Dynamics(self.model, self.lagrange) if switched is self.model else Dynamics(switched)
 
     def check(
         self, quantity: Quantity, reference: sympy.Expr, points: Sequence[Point]

@@ -16,6 +16,7 @@ import sympy
 
 from physics.answer_text import typed_text
 from physics.engine import tidy, work_energy
+from physics.engine.leaving import staged
 from physics.engine.model import Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
 from physics.engine.quantity_table import derives
@@ -40,9 +41,10 @@ def turning_point(method: Method, quantity: Quantity) -> sympy.Expr:
     heading = _heading(method, quantity, velocity)
     end = c.symbol  # the rate's square where the coordinate has got to, as a function of it
     trip = work_energy.Journey(c, start, end, velocity, heading, held)
-    square = work_energy.ROUTES.get(method.name, work_energy.by_integration)(method, trip)
+    # past where the body leaves a spring that only pushes, the motion without it (leaving.py)
+    square, since, _ = staged(method, trip)
     roots = [tidy.simplify(r) for r in tidy.solve(square, end)]
-    first = _first_ahead(model, roots, start, heading, quantity.name)
+    first = _first_ahead(model, roots, since, heading, quantity.name)
     method.step(
         f"{method.named(c.name)} turns where its rate vanishes, first along the way it moves",
         method.tex(sympy.Eq(tidy.simplify(square), 0)) + r"\Rightarrow " + method.tex(sympy.Eq(end, first)),

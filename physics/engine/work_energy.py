@@ -139,7 +139,9 @@ def answer(method: Method, quantity: Quantity) -> sympy.Expr:
     trip = journey(method, quantity)
     key = (trip.coordinate.name, trip.end)
     if key not in method.arrivals:
-        method.arrivals[key] = ROUTES.get(method.name, by_integration)(method, trip)
+        from physics.engine.leaving import staged  # it builds on this module's routes
+
+        method.arrivals[key] = staged(method, trip)[0]
         _check_reached(model, trip, method.arrivals[key], quantity.name)
     square = method.arrivals[key]
     c = trip.coordinate
@@ -327,7 +329,8 @@ ROUTES = {"conservation": by_energy}
 def arrival_velocity(model: Model, quantity: Quantity) -> sympy.Expr:
     """The coordinate's velocity where the motion arrives, by energy (for mistakes: a slip's re-derivation)."""
     from physics.engine.conservation import ConservationMethod
+    from physics.engine.leaving import staged
 
     method = ConservationMethod(model, Mechanics(model))
     trip = journey(method, quantity)
-    return tidy.simplify(trip.sign * sympy.sqrt(by_energy(method, trip)))
+    return tidy.simplify(trip.sign * sympy.sqrt(staged(method, trip)[0]))
