@@ -19,6 +19,12 @@ from physics.errors import DerivationError
 
 def velocities_after(simulator: Simulator, name: str, count: int, point: Point) -> Vector:
     """The coordinates' velocities just after bounce number `count` (1: the model's own impact)."""
+    return bounced(simulator, name, count, point)[1]
+
+
+def bounced(simulator: Simulator, name: str, count: int, point: Point) -> tuple[Vector, Vector]:
+    """The coordinates' velocities just before and just after bounce number `count` (1: the model's own
+    impact, from the state's velocities)."""
     from physics.engine.reach_simulation import ReachMeasure  # it builds on simulation, as this does
 
     model = simulator.model
@@ -27,7 +33,7 @@ def velocities_after(simulator: Simulator, name: str, count: int, point: Point) 
     row = [_evaluate(a, point) for a in contact(model).generalized]
     dyn = simulator.dynamics
     params = dyn.values(point)
-    start, _ = simulator._start(point)
+    start, arriving = simulator._start(point)
     rates = simulator._impact.rates(point)
     reach = ReachMeasure(simulator)
     for _ in range(count - 1):
@@ -44,7 +50,7 @@ def velocities_after(simulator: Simulator, name: str, count: int, point: Point) 
         _, arrival = reach._integrate(
             [*start, *rates], 2 * parting / -pull, point, closed, lambda y: False, name
         )
-        arriving = arrival[dyn.n :]
+        arriving = list(arrival[dyn.n : 2 * dyn.n])
         state = {
             **dict(model.state),
             **{c.velocity: sympy.Float(v, 17) for c, v in zip(model.coordinates, arriving, strict=True)},
@@ -53,21 +59,31 @@ def velocities_after(simulator: Simulator, name: str, count: int, point: Point) 
         rates = again.rates(point)
         if not all(math.isfinite(v) for v in rates):
             raise DerivationError(f"{name}: the integrated bounce failed")
-    return rates
+    return arriving, rates
 
 
 def measure_final(simulator: Simulator, quantity: Quantity, point: Point, expected: float) -> Measured:
-    """A body's velocity or speed just after the n-th integrated bounce."""
+    """A body's velocity or speed just after the n-th integrated bounce, or the kinetic energy that bounce
+    took (the velocities the integrated flight arrived with against those it left with)."""
     model = simulator.model
     count = round(_evaluate(quantity.bounces, point)) if quantity.bounces is not None else 1
-    rates = velocities_after(simulator, quantity.name, count, point)
+    arriving, rates = bounced(simulator, quantity.name, count, point)
+    what = f"after {count} integrated bounces"
+    if quantity.kind is QuantityKind.KINETIC_ENERGY_LOST:
+        dyn = simulator.dynamics
+        start, _ = simulator._start(point)
+        before, after = (dyn.energy(start, v, dyn.values(point)) for v in (arriving, rates))
+        return (
+            f"kinetic energy lost in bounce {count} of the integrated motion",
+            before - after,
+            abs(before - after - expected) / max(abs(before), 1e-12),
+        )
     found = contact(model)
     velocity = [
         sum(_evaluate(found.jacobian[i, j], point) * r for j, r in enumerate(rates))
         for i, d in enumerate(found.mech.dofs)
         if d.body == quantity.target and not d.name.startswith("phi_")
     ]
-    what = f"after {count} integrated bounces"
     if quantity.kind is QuantityKind.FINAL_SPEED:
         return f"speed {what}", math.hypot(*velocity), None
     (component,) = velocity

@@ -29,8 +29,11 @@ if TYPE_CHECKING:
     from physics.engine.method import Method
 
 Report = Callable[[str, tuple[str | int, ...]], None]
-# a body's velocity or speed just after the n-th bounce: `{final_speed: ball, bounces: n}`
-FINAL_KINDS = frozenset({QuantityKind.FINAL_SPEED, QuantityKind.FINAL_VELOCITY})
+# a body's velocity or speed just after the n-th bounce (`{final_speed: ball, bounces: n}`), or the
+# kinetic energy the n-th bounce takes (`{kinetic_energy_lost: impact, bounces: n}`)
+FINAL_KINDS = frozenset(
+    {QuantityKind.FINAL_SPEED, QuantityKind.FINAL_VELOCITY, QuantityKind.KINETIC_ENERGY_LOST}
+)
 
 
 def check(quantities: Sequence[Quantity], model_impact: Impact | None, report: Report) -> None:
@@ -101,13 +104,26 @@ def final(method: Method, quantity: Quantity, worked: impact.Worked) -> sympy.Ex
     for title, latex in steps:
         method.step(title, latex)
     model = method.model
-    rates = velocities_after(method, quantity, impact.coordinate_rates(model, after))
+    first = impact.coordinate_rates(model, after)
+    rates = velocities_after(method, quantity, first)
+    if quantity.kind is QuantityKind.KINETIC_ENERGY_LOST:
+        # into the n-th bounce the body arrives with the kinetic energy it left the one before with: the
+        # flight back to the same place keeps T + V (the cycle's return: by energy, or at constant
+        # acceleration); the first bounce's own factor undone, n = 1 gives the first impact's loss
+        assert quantity.bounces is not None
+        earlier = velocities_after(method, dataclasses.replace(quantity, bounces=quantity.bounces - 1), first)
+        before = _by_body(model, earlier)
+    return impact.answer(((), before, _by_body(model, rates)), model, quantity, method.step)
+
+
+def _by_body(model: Model, rates: list[sympy.Expr]) -> impact.Velocities:
+    """The bodies' velocities from the coordinates' rates at the contact."""
     found = impact.contact(model)
     cartesian = [
         sympy.Add(*(found.jacobian[i, j] * r for j, r in enumerate(rates)))
         for i in range(len(found.mech.dofs))
     ]
-    return impact.answer(((), before, impact.by_body(found.mech, cartesian)), model, quantity, method.step)
+    return impact.by_body(found.mech, cartesian)
 
 
 def _contact_row(model: Model) -> list[sympy.Expr]:

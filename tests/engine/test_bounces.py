@@ -63,9 +63,28 @@ def test_the_velocity_just_after_the_nth_bounce_is_derived_and_measured_after_n_
     assert "integrated bounces" in derived.simulation["nth"].compared
 
 
-def test_the_energy_lost_takes_no_count_of_bounces() -> None:
-    with pytest.raises(SpecErrors, match="unknown key 'bounces'"):
-        load_model(ball(lost={"kinetic_energy_lost": "impact", "bounces": "n"}), SYMBOLS)
+# the kinetic energy the n-th bounce takes: the ball arrives with e^(2(n-1)) of the fall's m g h
+ENERGY_LOST_IN_BOUNCE = [
+    ("n", e ** (2 * n - 2) * m * g * h * (1 - e**2)),
+    (1, m * g * h * (1 - e**2)),
+    (3, e**4 * m * g * h * (1 - e**2)),
+]
+
+
+@pytest.mark.parametrize(("count", "expected"), ENERGY_LOST_IN_BOUNCE)
+def test_the_energy_lost_in_the_nth_bounce_is_derived_and_measured_in_that_bounce(
+    count: Any, expected: sympy.Expr
+) -> None:
+    derived = derive(load_model(ball(lost={"kinetic_energy_lost": "impact", "bounces": count}), SYMBOLS))
+    assert sympy.simplify(derived.quantities["lost"] - expected) == 0
+    assert "kinetic energy lost in bounce" in derived.simulation["lost"].compared
+
+
+def test_the_simulation_disagrees_with_the_energy_lost_in_all_n_bounces() -> None:
+    model = load_model(ball(lost={"kinetic_energy_lost": "impact", "bounces": "n"}), SYMBOLS)
+    simulator = Simulator(model, LagrangeMethod(model, Mechanics(model)).equilibrium)
+    with pytest.raises(DerivationError, match="lost: the simulation disagrees"):
+        derivation._simulate(model, {"lost": m * g * h * (1 - e ** (2 * n))}, simulator)
 
 
 def test_a_number_of_bounces_may_be_a_number() -> None:
