@@ -1,11 +1,13 @@
 """A period or angular frequency asked of a motion the state sets swinging wide.
 
-`period` and `angular_frequency` are those of small oscillations about the stable equilibrium: every
+`period` and `angular_frequency` are those of small oscillations about the stable equilibrium, and so
+are a damped oscillation's `damped_frequency`, `decay_time` and `undamped_frequency`: every
 method linearizes there, and the simulation releases the body 1e-4 beside it. A pendulum released from
 60° swings with a longer period than 2 pi sqrt(L/g) (by 7 %; from the horizontal by 18 %), so a model
 whose state puts the coordinate away from equilibrium, or moving through it, asks for a period the
 engine does not derive, unless the motion is isochronous (a quadratic potential and a constant
-inertia: a mass on a spring keeps its period at any amplitude). Such a quantity is refused unless it
+inertia, with linear drag a constant coefficient of the rate: a mass on a spring keeps its period at any
+amplitude, and with a dashpot its ringing frequency and decay time). Such a quantity is refused unless it
 says `amplitude: small`, the problem's own words that the oscillations are small.
 """
 
@@ -19,7 +21,15 @@ from physics.engine.lagrange import LagrangeMethod
 from physics.engine.model import Quantity, QuantityKind
 from physics.errors import DerivationError
 
-KINDS = frozenset({QuantityKind.PERIOD, QuantityKind.ANGULAR_FREQUENCY})
+KINDS = frozenset(
+    {
+        QuantityKind.PERIOD,
+        QuantityKind.ANGULAR_FREQUENCY,
+        QuantityKind.DAMPED_FREQUENCY,
+        QuantityKind.DECAY_TIME,
+        QuantityKind.UNDAMPED_FREQUENCY,
+    }
+)
 
 
 def check_amplitudes(lagrange: LagrangeMethod) -> None:
@@ -69,14 +79,16 @@ def _check(lagrange: LagrangeMethod, quantity: Quantity, name: str) -> None:
 def _isochronous(
     equation: sympy.Expr, q: sympy.Symbol, rate: sympy.Symbol, acceleration: sympy.Symbol
 ) -> bool:
-    """a q'' + k q + c = 0 with a and k constant: the period keeps at any amplitude (a mass on a spring)."""
-    if equation.has(rate):
-        return False
+    """a q'' + b q' + k q + c = 0 with a, b and k constant: the period keeps at any amplitude (a mass on a
+    spring, with a dashpot or without)."""
     return all(
         tidy.simplify(d) == 0
         for d in (
             sympy.diff(equation, q, 2),
             sympy.diff(equation, acceleration, q),
             sympy.diff(equation, acceleration, 2),
+            sympy.diff(equation, rate, q),
+            sympy.diff(equation, rate, acceleration),
+            sympy.diff(equation, rate, 2),
         )
     )
