@@ -474,11 +474,20 @@ class Simulator:
             # (a collision's state is before the blow: the slide it starts goes the projectile's way)
             if backwards and all(initial[k] <= 0 for k in backwards) and self.model.collision is None:
                 name = self.model.frictions[backwards[0]].sliding
+                at = ", ".join(f"{s}={v:.4g}" for s, v in point.items())
+                if self._pushed_forward(point, backwards[0]):
+                    raise DerivationError(
+                        f"released at rest from the model's state, the body is pushed towards increasing {name} "
+                        "less hard than kinetic friction holds it back: it stays at rest, static friction holding "
+                        "it (the model's kinetic friction would drive it backwards). Keep the domain where the "
+                        f"push beats friction (domain.positive), or give the state a velocity ({name}_dot > 0) "
+                        f"if it is already sliding, at {at}",
+                        path=friction_path(self.model, backwards[0]),
+                    )
                 raise DerivationError(
                     f"released from the model's state, the body slides towards decreasing {name}, against the "
                     f"direction the model's kinetic friction assumes (`sliding: {name}`): give the state a "
-                    f"velocity that way ({name}_dot > 0), or check the domain, at "
-                    + ", ".join(f"{s}={v:.4g}" for s, v in point.items()),
+                    f"velocity that way ({name}_dot > 0), or check the domain, at {at}",
                     path=friction_path(self.model, backwards[0]),
                 )
             if backwards:
@@ -495,6 +504,17 @@ class Simulator:
             for now in [dyn.at(params, y, 2 * n + 2)]
         )
         return change, end[2 * n], abs(kinetic), end[2 * n + 1]
+
+    def _pushed_forward(self, point: Point, index: int) -> bool:
+        """Whether, without its friction, the body at rest at the state would start sliding the way that
+        friction assumes: a push that kinetic friction, written as always acting, overpowers."""
+        frictionless = Dynamics(dataclasses.replace(self.model, frictions=()))
+        params = frictionless.values(point)
+        q, qd = self._start(point)
+        step = self._step_for(point)
+        after = rk4(frictionless.derivative(params), frictionless.initial(q, qd, params), step, 1)[-1]
+        n = frictionless.n
+        return self._slip_velocities(*after[: 2 * n], *self.dynamics.values(point))[index] > 0
 
     @cached_property
     def _slip_velocities(self) -> Callable[..., list[float]]:

@@ -42,10 +42,11 @@ def test_a_block_released_at_rest_slides_down_against_the_assumed_friction_and_i
     with pytest.raises(DerivationError) as caught:
         uncached(load_model(rough_incline(None), SYMBOLS))
     assert caught.value.path == ("friction", 0)
-    assert "slides towards decreasing s" in caught.value.message
+    assert "slides towards decreasing s" in caught.value.message  # gravity, not a weak push: it does slide
+    assert "static friction" not in caught.value.message
 
 
-def test_a_crate_pushed_more_weakly_than_friction_is_refused_at_its_elements_friction() -> None:
+def test_a_crate_pushed_more_weakly_than_friction_is_refused_as_held_by_static_friction() -> None:
     # released at rest, F < mu m g: the equations send it backwards, against the push
     data = {
         "elements": {
@@ -60,6 +61,7 @@ def test_a_crate_pushed_more_weakly_than_friction_is_refused_at_its_elements_fri
     with pytest.raises(DerivationError) as caught:
         uncached(load_model(data, {**SYMBOLS, "F": sympy.Symbol("F", positive=True)}))
     assert caught.value.path == ("elements", "floor", "friction")
+    assert "it stays at rest, static friction holding it" in caught.value.message
 
 
 def test_equations_that_lose_track_of_the_friction_work_fail_the_books(
