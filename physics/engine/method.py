@@ -48,7 +48,8 @@ class Method(ABC):
         self.steps: list[Step] = []
         self._logged: set[str] = set()
         self._impact: impact.Worked | None = None  # the impact worked once, for all its quantities
-        self.arrivals: dict[tuple[object, ...], sympy.Expr] = {}  # work_energy: v^2 where the motion arrives
+        # v^2 where the motion arrives (work_energy), turning points (turning): found once per method
+        self.arrivals: dict[tuple[object, ...], sympy.Expr] = {}
         # each coordinate's equilibrium, found once: frequencies, expressions and the simulation ask again
         self._equilibria: dict[str, sympy.Expr] = {}
         self._printed: set[sympy.Basic] = set()  # symbols printed since the last step (Step.symbols)

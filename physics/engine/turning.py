@@ -30,6 +30,14 @@ POINTS = 8
 
 @derives(QuantityKind.TURNING_POINT)
 def turning_point(method: Method, quantity: Quantity) -> sympy.Expr:
+    # found once per method and coordinate: an `expression` of it (how far from the start) asks again
+    key = ("turning point", quantity.target)
+    if key not in method.arrivals:
+        method.arrivals[key] = _turning_point(method, quantity)
+    return method.arrivals[key]
+
+
+def _turning_point(method: Method, quantity: Quantity) -> sympy.Expr:
     model = method.model
     c = model.coordinate(quantity.target)
     state = dict(model.state)
