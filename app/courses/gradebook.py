@@ -14,7 +14,7 @@ from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from datetime import datetime
 
-from app.courses.policy import Status, due_for, late_factor, status
+from app.courses.policy import Counting, Status, due_for, status
 from app.courses.records import AssignmentRecord, EnrolmentRecord
 from app.db.records import SubmissionRecord
 from app.spreadsheet import SafeWriter
@@ -71,13 +71,13 @@ def part_cell(
     solution_opened: datetime | None = None,
 ) -> PartCell:
     best, best_late, attempts, solved = 0.0, False, 0, False
+    counting = Counting(assignment.spec.late, due, solution_opened)
     for item in submissions:
         if item.verdict is Outcome.INVALID:
             continue
         attempts += 1
-        factor = late_factor(assignment.spec.late, item.created_at, due)
-        # Answers after the worked solution was read are checked but earn nothing: copied, not solved.
-        if factor is None or (solution_opened is not None and item.created_at >= solution_opened):
+        factor = counting.factor(item.created_at)
+        if factor is None:
             continue
         solved = solved or item.verdict is Outcome.CORRECT
         counted = item.score * factor

@@ -7,6 +7,7 @@ ask here, so a late submission is judged the same way everywhere.
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 from datetime import datetime, timedelta
 from enum import StrEnum
 from zoneinfo import ZoneInfo, ZoneInfoNotFoundError
@@ -46,6 +47,24 @@ def late_factor(policy: LatePolicy, submitted_at: datetime, due: datetime) -> fl
     if policy.kind is LateKind.CLOSED:
         return None
     return 1.0 - min(policy.limit, policy.per_day * late)
+
+
+@dataclass(frozen=True)
+class Counting:
+    """How an assignment counts one student's answers to one problem: its late policy, the student's
+    due date, and when they opened the problem's worked solution. The gradebook and the problem page
+    both count with it, so the page shows what the gradebook holds."""
+
+    late: LatePolicy
+    due: datetime
+    solution_opened: datetime | None = None
+
+    def factor(self, submitted_at: datetime) -> float | None:
+        """What a graded answer's score counts for: its late factor; None when it earns nothing (late
+        under a closed policy, or given after the worked solution was opened: copied, not solved)."""
+        if self.solution_opened is not None and submitted_at >= self.solution_opened:
+            return None
+        return late_factor(self.late, submitted_at, self.due)
 
 
 def accepting(assignment: AssignmentRecord, due: datetime, now: datetime) -> bool:

@@ -25,6 +25,7 @@ from starlette.concurrency import run_in_threadpool
 
 from app.auth import bearer_token
 from app.courses import access
+from app.courses.policy import Counting
 from app.lti.context import LtiContext, LtiContextDep
 from app.lti.platforms import platform_origins
 from app.lti.sessions import current_session
@@ -164,15 +165,24 @@ def _load(context: LtiContext, problem_id: str, student: str) -> Loaded | None:
         view = opened.attempts_in(context.student_view(problem_id, student))
     except LookupError:
         return None
-    # Within an assignment, a worked solution the student opened freezes the grade on its parts.
-    frozen = (
-        None
-        if opened.assignment is None
-        else context.stores.courses.solutions_opened(student).get(problem_id)
+    work = load_work(
+        context.stores.submissions,
+        problem_id,
+        student,
+        view.get("parts", []),
+        counting(context, opened, student, problem_id),
     )
-    work = load_work(context.stores.submissions, problem_id, student, view.get("parts", []), frozen)
     figure = _figure(context, problem_id, student)
     return Loaded(view, work, figure, opened, now, assignment_banner(opened))
+
+
+def counting(context: LtiContext, opened: access.Opening, student: str, problem_id: str) -> Counting | None:
+    """How the assignment the problem is answered in counts the student's answers, as its gradebook
+    does: late penalties from their due date, and no credit after they opened the worked solution."""
+    if opened.assignment is None or opened.due is None:
+        return None
+    frozen = context.stores.courses.solutions_opened(student).get(problem_id)
+    return Counting(opened.assignment.spec.late, opened.due, frozen)
 
 
 def solution_within(loaded: Loaded) -> Within | None:

@@ -1,6 +1,7 @@
 """A student's standing on one problem, read from the database: per part the attempts used of the
-limit, the best score (what the LMS holds: a later wrong attempt never lowers it), and the history of
-submissions, newest first; for the problem, the sum of the parts' best scores."""
+limit, the best score (what the LMS and the gradebook hold: a later wrong attempt never lowers it, a
+late one counts with its penalty), and the history of submissions, newest first; for the problem, the
+sum of the parts' best scores."""
 
 from __future__ import annotations
 
@@ -9,6 +10,7 @@ from dataclasses import dataclass, field
 from datetime import datetime
 from typing import Any
 
+from app.courses.policy import Counting
 from app.db.records import SubmissionRecord
 from app.storage import SubmissionStore
 from physics.verdict import Outcome
@@ -27,15 +29,18 @@ class Attempt:
     number: int | None  # the graded attempt's number; None for an unreadable answer (no attempt used)
     created_at: datetime
     latex: str | None  # how the answer was read, to typeset it
+    late_factor: float = 1.0  # what a late answer's score counted for (0.9: a 10 % penalty)
 
 
 @dataclass
 class PartWork:
     used: int = 0
     limit: int | None = None
-    best: float | None = None  # None: no graded attempt yet
+    best: float | None = None  # None: no graded attempt yet; else its score as counted (penalty applied)
     history: list[Attempt] = field(default_factory=list)  # newest first
     frozen_at: datetime | None = None  # the worked solution was opened then: later answers earn nothing
+    late_factor: float = 1.0  # the best attempt was late: its score counted for this much
+    correct: bool = False  # a counted answer was right (late, its best is under 1)
 
     @property
     def locked(self) -> bool:
@@ -43,7 +48,12 @@ class PartWork:
 
     @property
     def solved(self) -> bool:
-        return self.best is not None and self.best >= 1.0
+        return self.correct or (self.best is not None and self.best >= 1.0)
+
+    @property
+    def late_penalty(self) -> float:
+        """The share of the best attempt's score its lateness cost (0.1 for 10 %)."""
+        return round(1.0 - self.late_factor, 6)
 
     @property
     def last_answer(self) -> str:
@@ -66,6 +76,11 @@ class ProblemWork:
     def attempted(self) -> bool:
         return any(work.history for work in self.parts.values())
 
+    @property
+    def late(self) -> bool:
+        """A part's best attempt lost points for being late."""
+        return any(work.late_penalty > 0 for work in self.parts.values())
+
 
 def shown_feedback(verdict: Outcome, feedback: str) -> str:
     """The feedback as the page shows it after its own word for the verdict: without the "Correct."
@@ -76,7 +91,7 @@ def shown_feedback(verdict: Outcome, feedback: str) -> str:
     return feedback
 
 
-def _attempt(record: SubmissionRecord) -> Attempt:
+def _attempt(record: SubmissionRecord, factor: float | None) -> Attempt:
     invalid = record.verdict == Outcome.INVALID
     return Attempt(
         answer=record.answer,
@@ -87,6 +102,7 @@ def _attempt(record: SubmissionRecord) -> Attempt:
         number=record.attempt,
         created_at=record.created_at,
         latex=record.read_as.latex if record.read_as else None,
+        late_factor=1.0 if invalid or factor is None else factor,
     )
 
 
@@ -107,10 +123,12 @@ def load_work(
     problem_id: str,
     student: str,
     parts: Sequence[Mapping[str, Any]],
-    frozen_at: datetime | None = None,
+    counting: Counting | None = None,
 ) -> ProblemWork:
-    """The student's work on the parts of `parts` (the student view's parts, with `max_attempts`);
-    answers from `frozen_at` on (the worked solution opened) are shown but do not count."""
+    """The student's work on the parts of `parts` (the student view's parts, with `max_attempts`),
+    counted as the assignment `counting` counts it (late penalties; answers after the worked solution
+    was opened are shown but earn nothing); without one every graded answer counts in full."""
+    frozen_at = None if counting is None else counting.solution_opened
     work = {
         str(part["id"]): PartWork(
             limit=part.get("max_attempts") if part.get("max_attempts") else None, frozen_at=frozen_at
@@ -121,9 +139,14 @@ def load_work(
         part = work.get(record.part_id)
         if part is None:  # a part a later version dropped
             continue
-        part.history.insert(0, _attempt(record))
-        if record.verdict != Outcome.INVALID and (frozen_at is None or record.created_at < frozen_at):
-            part.best = max(part.best or 0.0, record.score)
+        factor = 1.0 if counting is None else counting.factor(record.created_at)
+        part.history.insert(0, _attempt(record, factor))
+        if record.verdict == Outcome.INVALID or factor is None:
+            continue
+        counted = round(record.score * factor, 6)  # as the gradebook rounds it
+        if part.best is None or counted > part.best:
+            part.best, part.late_factor = counted, factor
+        part.correct = part.correct or record.verdict == Outcome.CORRECT
     for part_id, part in work.items():
         part.used = store.attempts_used(problem_id, part_id, student)
     return ProblemWork(work)

@@ -1,0 +1,85 @@
+"""What a course's student earns on an assignment's problem, as their problem page shows it and the
+gradebook counts it: late penalties, and no credit after reading the worked solution."""
+
+from __future__ import annotations
+
+from datetime import UTC, datetime, timedelta
+
+from fastapi.testclient import TestClient
+
+from app.courses.records import AssignmentRecord, AssignmentSpec, LateKind, LatePolicy
+from app.courses.service import student_cell
+from app.storage import Stores
+from tests.db.helpers import CORRECT
+from tests.instructor.conftest import csrf_of
+
+PENALTY = LatePolicy(LateKind.PENALTY, per_day=0.1, limit=0.5)
+
+
+def _joined_student(
+    signed_in: TestClient, stores: Stores, spec: AssignmentSpec
+) -> tuple[TestClient, str, AssignmentRecord]:
+    """A course with one assignment, and a student who joined it by its code: their browser, the
+    identity their work is filed under, and the assignment."""
+    form = signed_in.get("/instructor/courses")
+    made = signed_in.post(
+        "/instructor/courses", data={"csrf": csrf_of(form.text), "title": "Mechanics", "timezone": "UTC"}
+    )
+    course = int(made.headers["location"].rsplit("/", 1)[1])
+    assignment = stores.courses.create_assignment(course, spec)
+    page = signed_in.get(f"/instructor/courses/{course}")
+    signed_in.post(
+        f"/instructor/courses/{course}/join-code", data={"csrf": csrf_of(page.text), "enabled": "1"}
+    )
+    student = TestClient(signed_in.app, follow_redirects=False)
+    student.post(f"/join/{stores.courses.get_course(course).join_code}", data={"name": "Ada"})
+    (enrolment,) = stores.courses.roster(course)
+    return student, enrolment.student, assignment
+
+
+def _file_right_answer(stores: Stores, student: str) -> None:
+    stores.submissions.file(
+        problem_id="yo-yo",
+        problem_version=stores.problems.get("yo-yo").version,
+        part_id="acceleration",
+        student=student,
+        answer="g",
+        verdict=CORRECT,
+        max_attempts=None,
+    )
+
+
+def _gradebook_score(client: TestClient, assignment: AssignmentRecord, student: str) -> float:
+    services = client.app.state.services  # type: ignore[attr-defined]
+    return student_cell(services.stores, services.catalog, assignment, student, datetime.now(UTC)).score
+
+
+def test_the_problem_page_shows_a_late_answers_score_with_its_penalty_as_the_gradebook_counts_it(
+    signed_in: TestClient, stores: Stores
+):
+    # the page had said "1 of 4" where the gradebook counted 0.9 of the late part
+    now = datetime.now(UTC)
+    spec = AssignmentSpec("HW 1", ("yo-yo",), now - timedelta(days=2), now - timedelta(hours=1), PENALTY)
+    student, identity, assignment = _joined_student(signed_in, stores, spec)
+    _file_right_answer(stores, identity)
+    counted = _gradebook_score(signed_in, assignment, identity)
+    assert counted == 0.9  # one day (or part of one) late, 10 % a day
+    page = student.get("/p/yo-yo").text
+    assert f"Your score: <strong>{counted:g} of " in page
+    assert "late penalties applied" in page
+    assert (
+        f"Solved late: best score {counted:g} of 1 (answered after the due date: a 10 % late penalty)."
+        in page
+    )
+    assert "Late: it counts for 90 % of its score." in page  # in the part's history, beside the answer
+
+
+def test_the_problem_page_shows_an_answer_on_time_in_full(signed_in: TestClient, stores: Stores):
+    now = datetime.now(UTC)
+    spec = AssignmentSpec("HW 1", ("yo-yo",), now - timedelta(days=2), now + timedelta(days=1), PENALTY)
+    student, identity, _ = _joined_student(signed_in, stores, spec)
+    _file_right_answer(stores, identity)
+    page = student.get("/p/yo-yo").text
+    assert "Solved: best score 1 of 1." in page
+    assert "late penalt" not in page and "Solved late" not in page and "Late: it counts" not in page
+
