@@ -6,9 +6,10 @@ fetches it as a fragment (`/p/{id}/solution/content`, bearer key). The content i
 (app/instructor/described.py and worked.py) for the student's own variant: the answers, the figure and
 free-body diagrams, the methods compared and each method's solution, laid out to print on A4 or Letter.
 
-Within an assignment whose answers still count (late work accepted), opening the solution freezes the
-student's grade on the problem's parts (app/courses/gradebook.py): the page first says so and asks,
-and `POST /p/{id}/solution` records the opening; it is shown at once when nothing is left to earn.
+A course's student's every opening is recorded, and freezes their grade on the problem's parts
+(app/courses/gradebook.py): within an assignment whose answers still count (late work accepted), the
+page first says so and asks, and `POST /p/{id}/solution` records the opening; when nothing is left to
+earn now, it is shown at once and recorded then (an extension may reopen the answers later).
 """
 
 from __future__ import annotations
@@ -67,6 +68,10 @@ def solution_context(request: Request, problem_id: str, student: str) -> dict[st
     frozen_at = next((w.frozen_at for w in loaded.work.parts.values() if w.frozen_at), None)
     if frozen_at is None and (still_open := _still_to_earn(loaded)):
         return {**values, "confirm": still_open}
+    if frozen_at is None and loaded.opened.course is not None:
+        # Read with nothing at stake (past the due date, out of attempts) it is still read: an
+        # extension later must not let its answers earn credit, so every opening is recorded.
+        frozen_at = request.app.state.lti.stores.courses.open_solution(student, problem_id, loaded.now)
     if frozen_at is not None and loaded.opened.course is not None:
         values["opened_at"] = shown(frozen_at, loaded.opened.course.timezone)
     variant = catalog.variant(record, student)
@@ -110,7 +115,7 @@ async def open_solution(problem_id: str, request: Request, context: LtiContextDe
         values = solution_context(request, problem_id, caller.student)
         if values is None:
             return False
-        if values.get("confirm"):  # else released with nothing to freeze, or not released: nothing kept
+        if values.get("confirm"):  # else recorded as it was shown, or not released: nothing to keep
             context.stores.courses.open_solution(caller.student, problem_id, context.clock())
         return True
 

@@ -83,3 +83,28 @@ def test_the_problem_page_shows_an_answer_on_time_in_full(signed_in: TestClient,
     assert "Solved: best score 1 of 1." in page
     assert "late penalt" not in page and "Solved late" not in page and "Late: it counts" not in page
 
+
+def test_a_solution_read_with_nothing_at_stake_still_freezes_the_grade_when_an_extension_reopens_answers(
+    signed_in: TestClient, stores: Stores
+):
+    # read after the due date, it had not been recorded: an extension then let its answers earn credit
+    now = datetime.now(UTC)
+    spec = AssignmentSpec("HW 1", ("yo-yo",), now - timedelta(days=2), now - timedelta(hours=1))
+    student, identity, assignment = _joined_student(signed_in, stores, spec)
+    shown = student.get("/p/yo-yo/solution")
+    assert (
+        shown.status_code == 200 and "confirm-solution" not in shown.text
+    )  # shown at once: nothing at stake
+    assert "yo-yo" in stores.courses.solutions_opened(identity)
+    stores.courses.set_extension(assignment.id, identity, now + timedelta(days=1))
+    _file_right_answer(stores, identity)
+    assert _gradebook_score(signed_in, assignment, identity) == 0
+    assert "Your grade on this part is frozen" in student.get("/p/yo-yo").text
+
+
+def test_a_solution_not_yet_released_is_not_recorded_as_read(signed_in: TestClient, stores: Stores):
+    now = datetime.now(UTC)
+    spec = AssignmentSpec("HW 1", ("yo-yo",), now - timedelta(days=2), now + timedelta(days=1))
+    student, identity, _ = _joined_student(signed_in, stores, spec)
+    assert "Not released yet" in student.get("/p/yo-yo/solution").text
+    assert stores.courses.solutions_opened(identity) == {}

@@ -4,6 +4,7 @@ student sees one only once it is released to them (app/web/solution_access.py, t
 from __future__ import annotations
 
 import html
+import re
 
 import pytest
 from fastapi.testclient import TestClient
@@ -224,14 +225,19 @@ def test_late_work_earns_nothing_once_the_student_has_opened_the_worked_solution
     assert ",0.9,0.9," in csv_text and "HW 1: grade frozen, worked solution opened (yo-yo at" in csv_text
 
 
-def test_a_solution_with_nothing_left_to_earn_opens_without_freezing_anything(
+def test_a_solution_with_nothing_left_to_earn_opens_at_once_recorded_and_costing_nothing(
     signed_in: TestClient, stores: Stores
 ) -> None:
     student, _, who = _late_course_student(signed_in, stores)
     file_submissions(stores, [(who, part, "g", RIGHT) for part in PARTS])
+    before = re.search(r"Your score: <strong>[^<]*</strong>", student.get("/p/yo-yo").text)
     shown = student.get("/p/yo-yo/solution").text
-    assert 'id="solution-answers"' in shown and "stays as it is now" not in shown
-    assert stores.courses.solutions_opened(who) == {}
+    assert 'id="solution-answers"' in shown and "stays as it is now" not in shown  # not asked first
+    assert "yo-yo" in stores.courses.solutions_opened(who)  # every opening is kept (an extension may follow)
+    after = student.get("/p/yo-yo").text
+    assert (
+        before is not None and before.group(0) in after and "Your grade on this part is frozen" not in after
+    )
 
 
 def test_after_an_answer_the_attempts_are_said_once_in_the_verdict_and_shown_in_the_standing(
