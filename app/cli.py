@@ -162,8 +162,10 @@ def _problems_export(args: argparse.Namespace, settings: Settings) -> int:
 
 
 def _submissions_export(args: argparse.Namespace, settings: Settings) -> int:
+    from app.courses.access import enrolled_anywhere
     from app.startup import open_database
     from app.storage.sql import SqlSubmissionStore
+    from app.storage.sql_courses import SqlCourseStore
     from app.transfer import export_submissions
 
     database = open_database(settings)
@@ -173,7 +175,9 @@ def _submissions_export(args: argparse.Namespace, settings: Settings) -> int:
             if args.output
             else nullcontext(sys.stdout) as out
         ):
-            rows = export_submissions(SqlSubmissionStore(database), args.problem, out)
+            # named from the rosters, as an instructor's CSV names them (app/instructor/router.py)
+            person = enrolled_anywhere(SqlCourseStore(database))
+            rows = export_submissions(SqlSubmissionStore(database), args.problem, out, person=person)
     finally:
         database.dispose()
     print(f"{counted(rows, 'submission')} exported", file=sys.stderr)

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import json
 import sys
-from collections.abc import Callable, Mapping
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any, TextIO
 
@@ -66,6 +66,11 @@ def export_problem(problems: ProblemStore, problem_id: str, fmt: str, out: TextI
         yaml.safe_dump(document, out, sort_keys=False, allow_unicode=True)
 
 
+def _name_and_email(person: Callable[[str], EnrolmentRecord | None] | None, student: str) -> tuple[str, str]:
+    found = None if person is None else person(student)
+    return ("", "") if found is None else (found.name, found.email)
+
+
 def export_submissions(
     submissions: SubmissionStore,
     problem_id: str | None,
@@ -74,14 +79,13 @@ def export_submissions(
     student: str | None = None,
     progress: bool = True,
     include: Callable[[str], bool] | None = None,
-    people: Mapping[str, EnrolmentRecord] | None = None,
+    person: Callable[[str], EnrolmentRecord | None] | None = None,
 ) -> int:
     """Every submission (of one problem, of one student) as CSV, oldest first; returns how many rows
     were written. Text cells are neutralised for spreadsheets (`app.spreadsheet`). `progress=False`
     (the web pages) draws no progress bar on stderr; `include(student)` false leaves a student's rows out
-    (an instructor's page exports only the students of their courses); `people` gives the name and
-    email of each course's student, by the identity their work is filed under."""
-    known = people or {}
+    (an instructor's page exports only the students of their courses); `person(student)` gives the
+    roster's name and email of a course's student, by the identity their work is filed under."""
     writer = SafeWriter(out)
     writer.writerow(SUBMISSION_COLUMNS)
     rows, cursor = 0, None
@@ -104,8 +108,7 @@ def export_submissions(
                         item.reason.value,
                         "" if item.attempt is None else item.attempt,
                         item.feedback,
-                        known[item.student].name if item.student in known else "",
-                        known[item.student].email if item.student in known else "",
+                        *_name_and_email(person, item.student),
                     )
                 )
             rows += len(items)

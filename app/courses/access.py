@@ -11,7 +11,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from datetime import datetime
 from typing import Any
@@ -21,6 +21,7 @@ from app.courses.policy import accepting, due_for
 from app.courses.records import AssignmentRecord, CourseNotFound, CourseRecord, EnrolmentRecord, StaffRole
 from app.db.records import ProblemRecord
 from app.storage import Stores
+from app.storage.protocols import CourseStore
 
 
 def course_role(stores: Stores, principal: Principal, course_id: int) -> StaffRole | None:
@@ -95,6 +96,21 @@ def students_taught(stores: Stores, principal: Principal) -> dict[str, Enrolment
         for course, _ in taught_courses(stores, principal)
         for enrolment in stores.courses.roster(course.id)
     }
+
+
+def enrolled_anywhere(courses: CourseStore) -> Callable[[str], EnrolmentRecord | None]:
+    """Who an identity is, from the roster of the first course enrolling it: the command line's
+    export, whose operator reads every course, names students as an instructor's pages name theirs.
+    Looked up once per identity."""
+    found: dict[str, EnrolmentRecord | None] = {}
+
+    def person(student: str) -> EnrolmentRecord | None:
+        if student not in found:
+            enrolments = (courses.enrolment(c.id, student) for c in courses.courses_enrolled(student))
+            found[student] = next((e for e in enrolments if e is not None), None)
+        return found[student]
+
+    return person
 
 
 def colleagues(stores: Stores, principal: Principal) -> set[int]:

@@ -930,7 +930,7 @@ async def submissions_csv(
             student=student,
             progress=False,
             include=reach,
-            people=access.students_taught(services.stores, who.principal),
+            person=access.students_taught(services.stores, who.principal).get,
         )
     )
     name = "submissions" + (f"-{problem}" if problem and _ID.match(problem) else "") + ".csv"

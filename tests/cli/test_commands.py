@@ -131,6 +131,41 @@ def test_submissions_export_writes_csv_with_every_row(database_env, tmp_path, ca
     assert [row["verdict"] for row in rows] == ["incorrect", "incorrect", "correct"]
 
 
+def test_submissions_export_names_each_courses_student_as_the_instructors_csv_does(
+    database_env, tmp_path, capsys
+):
+    # the command line's name and email columns had been empty where the web CSV filled them
+    from app.courses.records import RosterRow
+    from tests.db.helpers import CORRECT
+
+    main(["problems", "import", str(_atwood_file(tmp_path))])
+    database = Database(database_env)
+    try:
+        stores = sql_stores(database)
+        course = stores.courses.create_course("Mechanics", owner="key:1")
+        stores.courses.import_roster(course.id, [RosterRow("s1", "Ada Lovelace", "ada@uni.example")])
+        (ada,) = stores.courses.roster(course.id)
+        for student in (ada.student, "keyed-student"):
+            stores.submissions.file(
+                problem_id="cli-atwood",
+                problem_version=1,
+                part_id="acceleration",
+                student=student,
+                answer="g",
+                verdict=CORRECT,
+                max_attempts=None,
+            )
+    finally:
+        database.dispose()
+    out = tmp_path / "out.csv"
+    assert main(["submissions", "export", "-o", str(out)]) == 0
+    rows = list(csv.DictReader(io.StringIO(out.read_text())))
+    assert {row["student"]: (row["name"], row["email"]) for row in rows} == {
+        ada.student: ("Ada Lovelace", "ada@uni.example"),
+        "keyed-student": ("", ""),  # in no course: no roster names them
+    }
+
+
 def test_bank_verify_passes_on_a_good_problem(capsys):
     assert main(["bank", "verify", "--variants", "2", "--problem", "atwood"]) == 0
     out = capsys.readouterr().out
