@@ -569,6 +569,18 @@ async def problem(
     student: Annotated[str | None, Query(max_length=200)] = None,
     saved: Annotated[int | None, Query()] = None,
 ) -> Response:
+    return await _problem_page(problem_id, request, services, who, student, saved)
+
+
+async def _problem_page(
+    problem_id: str,
+    request: Request,
+    services: Services,
+    who: auth.Visitor,
+    student: str | None,
+    saved: int | None = None,
+    status: int = 200,
+) -> Response:
     record = await run_in_threadpool(_usable_record, services, who, problem_id)
     student = (student or "").strip() or None
     if student is not None and student != who.principal.own_identity:
@@ -623,6 +635,7 @@ async def problem(
             # where the instructor can put it to use (after an upload, the next step)
             "teaching": [course for course, role in taught if role is StaffRole.INSTRUCTOR],
         },
+        status=status,
     )
 
 
@@ -648,10 +661,16 @@ async def solution(
         _need_key(who)
     whose, whose_name, whose_detail = await run_in_threadpool(_whose, services, who, student)
 
-    def load() -> dict[str, Any]:
+    def load() -> dict[str, Any] | None:
         catalog = services.catalog
         doc = catalog.document(record)
         variant = catalog.variant(record, whose)
+        try:
+            compiled = catalog.compiled(record)
+        except GraderFault:
+            if catalog.refusal(record) is None:
+                raise
+            return None  # no solution under this code: the problem's page says why
         try:
             figure = catalog.figure(problem_id, whose)
             forces = catalog.free_body_figures(problem_id, whose)
@@ -662,13 +681,15 @@ async def solution(
             "doc": doc,
             "record": record,
             "statement": fill_statement(doc.statement, doc, variant),
-            "described": describe(catalog.compiled(record), variant),
+            "described": describe(compiled, variant),
             "figure": figure,
             "forces": forces,
             "release_rule": _RELEASE_RULES[doc.solutions],
         }
 
     context = await run_in_threadpool(load)
+    if context is None:  # the engine refuses this version: its faults and "Edit it", as a conflict
+        return await _problem_page(problem_id, request, services, who, student, status=409)
     return await _page(
         request,
         services,

@@ -122,3 +122,16 @@ def test_the_assignment_builder_says_a_problem_the_engine_now_refuses_must_be_ed
     assert refused.status_code == 422
     assert "no longer verifies under this version of physcheck" in html.unescape(refused.text)
     assert stores.courses.assignments(course) == []
+
+
+def test_the_worked_solution_of_a_problem_the_engine_now_refuses_shows_its_faults_and_edit_link_not_a_500(
+    client: TestClient, stores: Stores
+):
+    # it had been a 500 (a server fault) where the problem's page says why and how to edit it
+    author = stores.keys.create(Role.INSTRUCTOR, name="Prof Ada")
+    stores.problems.create("old-atwood", refused_document(), owner_key_id=author.record.id)
+    assert sign_in(client, author.plaintext).status_code == 303  # type: ignore[attr-defined]
+    page = client.get("/instructor/problems/old-atwood/solution")
+    assert page.status_code == 409, page.text
+    assert "This version no longer verifies" in page.text and "zeta" in page.text
+    assert 'href="/instructor/problems/old-atwood/edit">Edit it</a>' in page.text
