@@ -62,6 +62,19 @@ templates.env.filters["marks_coordinates"] = marks_coordinates
 templates.env.filters["typed"] = in_student_style
 
 
+def still_deriving(request: Request) -> str | None:
+    """While a first start still derives the bank (what `/ready` calls compiling): how far it is, said
+    on the pages users land on ("12 of 40"; "" before it counts); None once every problem is ready."""
+    services = getattr(request.app.state, "services", None)
+    if services is None or services.catalog.warm.is_set():
+        return None
+    progress = services.catalog.deriving
+    return "" if progress is None else f"{progress[0]} of {progress[1]}"
+
+
+templates.env.globals["still_deriving"] = still_deriving
+
+
 def static_files() -> StaticFiles:
     """Mounted at STATIC_PATH by the app: physcheck.css and the pages' scripts."""
     return StaticFiles(directory=HERE / "static")

@@ -2,6 +2,10 @@
 
 from __future__ import annotations
 
+import threading
+from types import SimpleNamespace
+
+import pytest
 from fastapi import FastAPI
 from fastapi.testclient import TestClient
 
@@ -30,3 +34,34 @@ def test_stylesheet_is_served_from_the_app() -> None:
     response = _client().get("/static/physcheck.css")
     assert response.status_code == 200
     assert "max-width" in response.text
+
+
+class _Catalog:
+    """The catalog as the pages read it: ready (`warm`) or still deriving, with its progress."""
+
+    def __init__(self, ready: bool, deriving: tuple[int, int] | None) -> None:
+        self.warm = threading.Event()
+        if ready:
+            self.warm.set()
+        self.deriving = deriving
+
+
+@pytest.mark.parametrize(
+    ("ready", "deriving", "said"),
+    [
+        (False, None, "still preparing its problems."),  # before the first is derived: no count yet
+        (False, (12, 40), "still preparing its problems (12 of 40 ready)."),
+        (True, None, None),
+    ],
+)
+def test_home_says_while_the_bank_is_still_being_derived_at_a_first_start(
+    ready: bool, deriving: tuple[int, int] | None, said: str | None
+) -> None:
+    # it had said nothing while /ready said "Still compiling the problems (N of M derived)"
+    client = _client()
+    client.app.state.services = SimpleNamespace(catalog=_Catalog(ready, deriving))  # type: ignore[attr-defined]
+    text = client.get("/").text
+    if said is None:
+        assert "preparing its problems" not in text
+    else:
+        assert said in text and "its page waits for it" in text
