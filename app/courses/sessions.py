@@ -71,15 +71,16 @@ def sign_in(courses: CourseStore, token: str, now: datetime) -> tuple[str, Cours
     return cookie, session
 
 
-def open_preview(courses: CourseStore, key_id: str, name: str, now: datetime) -> str:
+def open_preview(courses: CourseStore, key_id: str, name: str, now: datetime) -> tuple[str, CourseSession]:
     """ "View as a student" for an instructor key: a student's session under the instructor's preview
-    identity (`preview:<key id>`, filed apart from the class as the instructor's previews always are)."""
+    identity (`preview:<key id>`, filed apart from the class as the instructor's previews always are),
+    added to the browser's cookie as a course's is: (cookie value, session)."""
     cookie = secrets.token_urlsafe(32)
     session = CourseSession(
         None, f"preview:{key_id}", name, secrets.token_urlsafe(32), now + PREVIEW_LIFETIME
     )
     courses.save_session(token_hash(cookie), session, now)
-    return cookie
+    return cookie, session
 
 
 def _cookie_ids(cookie: str | None) -> list[str]:
@@ -124,7 +125,8 @@ def choose(
     problem_id: str | None = None,
 ) -> tuple[str, CourseSession]:
     """Which of the browser's sessions a request acts as: the one of its course; for a problem, the one
-    whose open assignment takes answers to it (else one that has it at all); else the latest."""
+    whose open assignment takes answers to it (else one that has it at all); else the latest of a
+    course (an instructor's preview beside it is for the problem they chose to view)."""
     if course_id is not None:
         for item in found:
             if item[1].course_id == course_id:
@@ -137,7 +139,7 @@ def choose(
         for item, opened in openings:
             if opened is not None:
                 return item
-    return found[0]
+    return next((item for item in found if item[1].course_id is not None), found[0])
 
 
 def as_record(session: CourseSession) -> SessionRecord:

@@ -49,6 +49,7 @@ from app.instructor import session as auth
 from app.instructor.builder_fields import LOCAL, fields_of, fields_typed
 from app.instructor.router import PageError, Visitor, _page
 from app.services import Services
+from app.web.course_pages import course_cookie
 
 router = APIRouter(prefix="/instructor", include_in_schema=False)
 MAX_ROSTER_BYTES = 1_000_000
@@ -560,23 +561,16 @@ async def view_as_student(problem_id: str, request: Request, services: ServicesD
         raise PageError(404, "No such problem", f"There is no problem {problem_id!r}.")
     response = RedirectResponse(f"/p/{problem_id}", status_code=303)
     if who.principal.api_key:
-        now = request.app.state.lti.clock()
-        cookie = await run_in_threadpool(
+        context = request.app.state.lti
+        cookie, session = await run_in_threadpool(
             course_sessions.open_preview,
             services.stores.courses,
             who.principal.key_id,
             who.principal.name,
-            now,
+            context.clock(),
         )
-        response.set_cookie(
-            course_sessions.COOKIE,
-            cookie,
-            max_age=int(course_sessions.PREVIEW_LIFETIME.total_seconds()),
-            path="/",
-            httponly=True,
-            samesite="lax",
-            secure=request.url.scheme == "https",
-        )
+        # beside the browser's course sessions, not in place of them (the preview is the latest)
+        await course_cookie(response, request, context, cookie, session)
     return response
 
 

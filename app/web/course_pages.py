@@ -90,14 +90,15 @@ async def sign_in(token: str, request: Request, context: LtiContextDep) -> Respo
             status=400,
         )
     response = RedirectResponse("/courses", status_code=303)
-    await _course_cookie(response, request, context, opened[0], opened[1])
+    await course_cookie(response, request, context, opened[0], opened[1])
     return response
 
 
-async def _course_cookie(
+async def course_cookie(
     response: Response, request: Request, context: LtiContext, new: str, session: CourseSession
 ) -> None:
-    """The browser's cookie with the new session beside those of its other courses."""
+    """The browser's cookie with the new session beside those of its other courses (an instructor's
+    "View as a student" too: it signs nobody out)."""
     cookie = await run_in_threadpool(
         course_sessions.added,
         context.stores.courses,
@@ -171,7 +172,7 @@ async def join(code: str, request: Request, context: LtiContextDep) -> Response:
     if isinstance(joined, course_sessions.AlreadyJoined):
         return page(request, "courses/join.html", {**values, "taken": joined.matched}, status=409)
     response = _return_link_page(request, course, joined.session.name, joined.return_token, joined=True)
-    await _course_cookie(response, request, context, joined.cookie, joined.session)
+    await course_cookie(response, request, context, joined.cookie, joined.session)
     return response
 
 

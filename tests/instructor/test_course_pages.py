@@ -166,6 +166,33 @@ def test_view_as_a_student_opens_the_student_page_in_the_instructors_session(
     assert forged.status_code == 403
 
 
+def test_view_as_a_student_keeps_the_browsers_course_session_signed_in(signed_in: TestClient, stores: Stores):
+    # the preview's cookie had replaced the course's: the browser's student was signed out of it
+    course = _make_course(signed_in)
+    page = signed_in.get(f"/instructor/courses/{course}")
+    signed_in.post(
+        f"/instructor/courses/{course}/join-code", data={"csrf": csrf_of(page.text), "enabled": "1"}
+    )
+    joined = signed_in.post(f"/join/{stores.courses.get_course(course).join_code}", data={"name": "Ada"})
+    assert joined.status_code == 200
+    problem = signed_in.get("/instructor/problems/yo-yo")
+    opened = signed_in.post("/instructor/problems/yo-yo/as-student", data={"csrf": csrf_of(problem.text)})
+    assert opened.status_code == 303
+    courses = signed_in.get("/courses").text
+    assert "Mechanics" in courses and "Signed in as Ada" in courses  # still the course's student there
+    preview = signed_in.get("/p/yo-yo")
+    assert preview.status_code == 200 and 'data-mode="session"' in preview.text
+    token = re.search(r'name="csrf-token" content="([^"]+)"', preview.text)
+    assert token is not None
+    filed = signed_in.post(
+        "/v1/problems/yo-yo/parts/acceleration/submissions",
+        json={"answer": "g"},
+        headers={"X-CSRF-Token": token.group(1)},
+    )
+    assert filed.status_code == 201  # the page acts as the preview, filed apart from the class
+    assert [s.student for s in stores.submissions.page().items] == [f"preview:{stores.keys.list()[0].id}"]
+
+
 def test_the_course_page_makes_and_turns_off_a_join_code(signed_in: TestClient, stores: Stores):
     course = _make_course(signed_in)
     page = signed_in.get(f"/instructor/courses/{course}")
