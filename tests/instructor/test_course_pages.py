@@ -493,9 +493,12 @@ def test_one_students_gradebook_names_the_problems_by_title_and_sets_the_extensi
     assert f'<option value="{alan}" selected>Alan Turing' in page  # not the roster's first, Ada
 
 
-def test_an_assignment_whose_upload_was_retired_still_opens_for_its_students_with_its_other_problems(
-    signed_in: TestClient, stores: Stores
-):
+def _upload_retired_from_an_assignment(
+    signed_in: TestClient, stores: Stores, problems: tuple[str, ...]
+) -> tuple[TestClient, int, int]:
+    """The instructor's upload `my-yo-yo` (a copy of the yo-yo) in an open assignment of `problems`, a
+    student who joined the course by its code, then the upload retired: (the student's browser, the
+    course id, the assignment id)."""
     from datetime import UTC, datetime, timedelta
 
     from app.courses.records import AssignmentSpec
@@ -506,8 +509,7 @@ def test_an_assignment_whose_upload_was_retired_still_opens_for_its_students_wit
     course = _make_course(signed_in)
     now = datetime.now(UTC)
     made = stores.courses.create_assignment(
-        course,
-        AssignmentSpec("HW 1", ("my-yo-yo", "yo-yo"), now - timedelta(days=1), now + timedelta(days=1)),
+        course, AssignmentSpec("HW 1", problems, now - timedelta(days=1), now + timedelta(days=1))
     )
     page = signed_in.get(f"/instructor/courses/{course}")
     signed_in.post(
@@ -516,7 +518,14 @@ def test_an_assignment_whose_upload_was_retired_still_opens_for_its_students_wit
     student = TestClient(signed_in.app, follow_redirects=False)
     student.post(f"/join/{stores.courses.get_course(course).join_code}", data={"name": "Ada"})
     stores.problems.retire("my-yo-yo")
-    shown = student.get(f"/courses/{course}/assignments/{made.id}")
+    return student, course, made.id
+
+
+def test_an_assignment_whose_upload_was_retired_still_opens_for_its_students_with_its_other_problems(
+    signed_in: TestClient, stores: Stores
+):
+    student, course, assignment = _upload_retired_from_an_assignment(signed_in, stores, ("my-yo-yo", "yo-yo"))
+    shown = student.get(f"/courses/{course}/assignments/{assignment}")
     assert shown.status_code == 200, shown.text  # it had been the API's 404, "no problem 'my-yo-yo'"
     title = stores.problems.get("yo-yo").document["title"]
     assert title in shown.text and "My yo-yo" not in shown.text
@@ -662,25 +671,7 @@ def test_an_assignment_whose_only_problem_was_retired_says_there_is_nothing_to_a
     signed_in: TestClient, stores: Stores
 ):
     # it had said "Not started" and "Score: 0 of 0"
-    from datetime import UTC, datetime, timedelta
-
-    from app.courses.records import AssignmentSpec
-
-    author = stores.keys.list()[0]
-    document = {**stores.problems.get("yo-yo").document, "id": "my-yo-yo", "title": "My yo-yo"}
-    stores.problems.create("my-yo-yo", document, owner_key_id=author.id)
-    course = _make_course(signed_in)
-    now = datetime.now(UTC)
-    made = stores.courses.create_assignment(
-        course, AssignmentSpec("HW 1", ("my-yo-yo",), now - timedelta(days=1), now + timedelta(days=1))
-    )
-    page = signed_in.get(f"/instructor/courses/{course}")
-    signed_in.post(
-        f"/instructor/courses/{course}/join-code", data={"csrf": csrf_of(page.text), "enabled": "1"}
-    )
-    student = TestClient(signed_in.app, follow_redirects=False)
-    student.post(f"/join/{stores.courses.get_course(course).join_code}", data={"name": "Ada"})
-    stores.problems.retire("my-yo-yo")
-    for path in ("/courses", f"/courses/{course}/assignments/{made.id}"):
+    student, course, assignment = _upload_retired_from_an_assignment(signed_in, stores, ("my-yo-yo",))
+    for path in ("/courses", f"/courses/{course}/assignments/{assignment}"):
         shown = student.get(path).text
         assert "Nothing to answer" in shown and "0 of 0" not in shown and "Not started" not in shown, path
