@@ -20,6 +20,7 @@ from fastapi.staticfiles import StaticFiles
 from fastapi.templating import Jinja2Templates
 from markupsafe import Markup
 
+from app.courses.policy import shown
 from app.web.rendering import render_inline, render_markdown, tex_to_mathml
 from physics.mathinput.render import in_student_style
 from problems import kinds as answer_kinds
@@ -32,6 +33,7 @@ templates = Jinja2Templates(directory=[HERE / "templates", Path(answer_kinds.__f
 templates.env.filters["markdown"] = render_markdown
 templates.env.filters["inline"] = render_inline
 templates.env.filters["tex"] = tex_to_mathml
+templates.env.filters["in_zone"] = shown  # a moment as its course reads it, as the banner gives the due date
 
 
 def _tex_block(tex: str) -> Markup:

@@ -3,10 +3,12 @@ gradebook counts it: late penalties, and no credit after reading the worked solu
 
 from __future__ import annotations
 
+import re
 from datetime import UTC, datetime, timedelta
 
 from fastapi.testclient import TestClient
 
+from app.courses.policy import shown
 from app.courses.records import AssignmentRecord, AssignmentSpec, LateKind, LatePolicy
 from app.courses.service import student_cell
 from app.storage import Stores
@@ -17,13 +19,13 @@ PENALTY = LatePolicy(LateKind.PENALTY, per_day=0.1, limit=0.5)
 
 
 def _joined_student(
-    signed_in: TestClient, stores: Stores, spec: AssignmentSpec
+    signed_in: TestClient, stores: Stores, spec: AssignmentSpec, timezone: str = "UTC"
 ) -> tuple[TestClient, str, AssignmentRecord]:
     """A course with one assignment, and a student who joined it by its code: their browser, the
     identity their work is filed under, and the assignment."""
     form = signed_in.get("/instructor/courses")
     made = signed_in.post(
-        "/instructor/courses", data={"csrf": csrf_of(form.text), "title": "Mechanics", "timezone": "UTC"}
+        "/instructor/courses", data={"csrf": csrf_of(form.text), "title": "Mechanics", "timezone": timezone}
     )
     course = int(made.headers["location"].rsplit("/", 1)[1])
     assignment = stores.courses.create_assignment(course, spec)
@@ -108,3 +110,39 @@ def test_a_solution_not_yet_released_is_not_recorded_as_read(signed_in: TestClie
     student, identity, _ = _joined_student(signed_in, stores, spec)
     assert "Not released yet" in student.get("/p/yo-yo/solution").text
     assert stores.courses.solutions_opened(identity) == {}
+
+
+def _answer_boxes(page: str) -> list[str]:
+    return re.findall(r'<input id="answer-\d+"[^>]*>', page)
+
+
+def test_a_closed_assignments_problem_page_disables_its_answer_boxes_until_an_extension_reopens_them(
+    signed_in: TestClient, stores: Stores
+):
+    # past its due date the boxes had stayed open, and a typed answer was refused (409) only when sent
+    now = datetime.now(UTC)
+    spec = AssignmentSpec("HW 1", ("yo-yo",), now - timedelta(days=2), now - timedelta(hours=1))
+    student, identity, assignment = _joined_student(signed_in, stores, spec)
+    page = student.get("/p/yo-yo").text
+    assert "answers are no longer accepted" in page
+    assert _answer_boxes(page) and all("disabled" in box for box in _answer_boxes(page))
+    stores.courses.set_extension(assignment.id, identity, now + timedelta(days=1))
+    reopened = student.get("/p/yo-yo").text
+    assert _answer_boxes(reopened) and not any("disabled" in box for box in _answer_boxes(reopened))
+
+
+def test_the_frozen_grade_notice_gives_the_moment_in_the_courses_zone_as_the_solution_page_does(
+    signed_in: TestClient, stores: Stores
+):
+    # the problem page had given it in UTC, the solution page and the due date in the course's zone
+    now = datetime.now(UTC)
+    spec = AssignmentSpec("HW 1", ("yo-yo",), now - timedelta(days=2), now - timedelta(hours=1))
+    student, identity, assignment = _joined_student(signed_in, stores, spec, timezone="Asia/Tokyo")
+    student.get("/p/yo-yo/solution")
+    opened = stores.courses.solutions_opened(identity)["yo-yo"]
+    stores.courses.set_extension(assignment.id, identity, now + timedelta(days=1))
+    page = student.get("/p/yo-yo").text
+    assert (
+        f'you opened the worked solution on <time datetime="{opened.isoformat()}">{shown(opened, "Asia/Tokyo")}</time>'
+        in page
+    )
