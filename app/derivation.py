@@ -151,6 +151,8 @@ class DerivationPool:
                 return refused
             future, self._scheduled[key] = self._schedule(dict(document))
             self._pending[key] = future
+            if urgent and self._pool is not None:  # a problem stored after start, asked for at once
+                self._pool.hurry(self._scheduled[key])
         future.add_done_callback(lambda finished: self._settled(key, finished))
         return future
 

@@ -79,6 +79,22 @@ def test_a_derivation_someone_waits_for_goes_before_those_queued_for_no_one(sche
     assert finished == ["first", "last", "second", "third"]
 
 
+def test_a_new_derivation_someone_waits_for_goes_before_those_queued_for_no_one(scheduled):
+    # a problem stored after a first start (an upload, an edit) had waited behind the whole bank
+    pool = DerivationPool(workers=1, timeout=120)
+    finished: list[str] = []
+    try:
+        futures = {name: pool.submit(atwood(id=name)) for name in ("first", "second", "third")}
+        futures["asked"] = pool.submit(atwood(id="asked"), urgent=True)
+        for name, future in futures.items():
+            future.add_done_callback(lambda _, name=name: finished.append(name))
+        for future in futures.values():
+            future.result()
+    finally:
+        pool.close()
+    assert finished == ["first", "asked", "second", "third"]
+
+
 def test_a_derivation_past_its_time_limit_is_killed_and_tried_again_when_asked(scheduled):
     pool = DerivationPool(workers=1, timeout=0.001)  # far below any derivation
     try:
