@@ -26,10 +26,12 @@ lint: $(BIN)/physcheck
 	$(BIN)/mypy
 
 # The bank's per-problem self-test is `physcheck bank verify` (20 variants); pytest's copy of it is left out
-# here. Tests run on every core; an idle worker takes tests from a busy one (worksteal), so a file of
-# slow parametrized tests is shared out (a module fixture, such as a live server, may then be set up
-# once per worker); --durations names the slowest tests of each run.
-test: lint
+# here. The bank is built first, as a package is: the tests' servers then load it as a first start does,
+# instead of each deriving, module by module, every bank problem it uses (a quarter of the page and
+# service tests' CPU). Tests run on every core; an idle worker takes tests from a busy one (worksteal),
+# so a file of slow parametrized tests is shared out (a module fixture, such as a live server, may then
+# be set up once per worker); --durations names the slowest tests of each run.
+test: lint bank
 	$(BIN)/physcheck bank verify
 	$(BIN)/pytest -q -n auto --dist worksteal -m "not bank_selftest" --durations=25
 

@@ -24,7 +24,7 @@ from sqlalchemy.pool import NullPool
 
 from app.db.database import Database
 from app.db.migrate import migrate
-from tests.sampling import described, fix_seed
+from tests.sampling import described, fix_seed, sample_marked
 
 # Browser fixtures (live_server, browse, check_page...) shared by every page test.
 pytest_plugins = ["tests.browser"]
@@ -163,6 +163,20 @@ def _empty_postgres(url: str) -> None:
 
 def pytest_configure(config: pytest.Config) -> None:
     fix_seed()
+
+
+def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
+    """`@pytest.mark.sample(k)`: k of the test's parametrized cases run today (tests/sampling.py)."""
+
+    def k_of(item: pytest.Item) -> int | None:
+        mark = item.get_closest_marker("sample")
+        return None if mark is None else int(mark.args[0])
+
+    kept = sample_marked(items, k_of, lambda item: item.nodeid.split("[")[0])
+    if len(kept) < len(items):
+        running = {id(item) for item in kept}
+        config.hook.pytest_deselected(items=[item for item in items if id(item) not in running])
+        items[:] = kept
 
 
 def pytest_terminal_summary(terminalreporter: pytest.TerminalReporter) -> None:

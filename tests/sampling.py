@@ -6,6 +6,9 @@ sample is drawn from a seed: PHYSCHECK_TEST_SEED when set, else the day's number
 in the controller (`fix_seed`, from conftest's pytest_configure) so that every xdist worker collects
 the same tests. pytest's summary prints the seed, which draws a failing run's sample again;
 PHYSCHECK_TEST_ALL=1 runs every case.
+
+A parametrized test too costly to run every case of each time is marked `@pytest.mark.sample(k)`:
+`k` of its cases (its databases, widths, models...) run, drawn the same way (conftest deselects the rest).
 """
 
 from __future__ import annotations
@@ -13,7 +16,7 @@ from __future__ import annotations
 import datetime
 import os
 import random
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from typing import TypeVar
 
 SEED_ENV = "PHYSCHECK_TEST_SEED"
@@ -43,3 +46,16 @@ def sampled(cases: Sequence[T], k: int, name: str) -> list[T]:
     fix_seed()
     chosen = set(random.Random(f"{os.environ[SEED_ENV]}:{name}").sample(range(len(cases)), k))
     return [case for index, case in enumerate(cases) if index in chosen]
+
+
+def sample_marked(
+    items: Sequence[T], k_of: Callable[[T], int | None], test_of: Callable[[T], str]
+) -> list[T]:
+    """The collected items to run: of each test whose `k_of` is a number (its `sample` mark), `k` of its
+    parametrized cases, drawn as `sampled` draws them (by the test's own name); every other item."""
+    groups: dict[str, list[T]] = {}
+    for item in items:
+        if k_of(item) is not None:
+            groups.setdefault(test_of(item), []).append(item)
+    kept = {id(item) for test, cases in groups.items() for item in sampled(cases, k_of(cases[0]) or 0, test)}
+    return [item for item in items if k_of(item) is None or id(item) in kept]

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from tests.sampling import ALL_ENV, SEED_ENV, sampled
+from tests.sampling import ALL_ENV, SEED_ENV, sample_marked, sampled
 
 CASES = [f"problem-{n}" for n in range(49)]
 
@@ -41,3 +41,23 @@ def test_every_case_runs_when_asked_or_when_there_are_few(monkeypatch: pytest.Mo
     assert sampled(CASES, k, "pages") == CASES
     monkeypatch.delenv(ALL_ENV)
     assert (sampled(CASES, k, "pages") == CASES) == (k >= len(CASES))
+
+
+def test_a_sample_mark_keeps_k_cases_of_each_marked_test_and_every_unmarked_one(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    monkeypatch.delenv(ALL_ENV, raising=False)
+    monkeypatch.setenv(SEED_ENV, "7")
+    marks = {"slow_table": 2, "other_table": 1}
+    items = [f"{test}[{case}]" for test in ("slow_table", "plain", "other_table") for case in "abcd"]
+
+    def k_of(item: str) -> int | None:
+        return marks.get(item.split("[")[0])
+
+    kept = sample_marked(items, k_of, lambda item: item.split("[")[0])
+    assert [item for item in kept if item.startswith("plain")] == [f"plain[{case}]" for case in "abcd"]
+    assert len([item for item in kept if item.startswith("slow_table")]) == 2
+    assert len([item for item in kept if item.startswith("other_table")]) == 1
+    assert kept == sorted(kept, key=items.index)
+    monkeypatch.setenv(ALL_ENV, "1")
+    assert sample_marked(items, k_of, lambda item: item.split("[")[0]) == items

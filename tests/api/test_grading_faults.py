@@ -189,6 +189,7 @@ def submitting(db: Database, faulty_pool: GradingPool) -> Iterator[tuple[TestCli
         pytest.param("spec", 500, "grader_fault", id="stored-reference-fails"),
     ],
 )
+@pytest.mark.sample(10)
 def test_a_grader_fault_on_a_submission_files_nothing_and_uses_no_attempt(submitting, answer, status, code):
     client, student = submitting
     response = client.post(SUBMIT, json={"answer": answer}, headers=student)

@@ -118,6 +118,7 @@ WRONG = [
 
 @pytest.mark.slow
 @pytest.mark.parametrize(("change", "path", "said"), WRONG)
+@pytest.mark.sample(3)
 def test_an_uploaded_launcher_written_wrong_is_refused_where_written(
     client, instructor_headers, change: Any, path: str, said: str
 ):

@@ -142,6 +142,7 @@ LAUNCHED = [
 
 
 @pytest.mark.parametrize(("text", "name", "expected"), LAUNCHED)
+@pytest.mark.sample(2)
 def test_a_motion_past_where_the_body_leaves_the_spring_derives(text: str, name: str, expected: str) -> None:
     found = uncached(_model(text)).quantities[name]
     assert sympy.simplify(found - sympy.sympify(expected, locals=_SYMBOLS)) == 0

@@ -118,6 +118,7 @@ def derived(name: str) -> Derivation:
         ("held", "steepest", sympy.atan(mu_s)),
     ],
 )
+@pytest.mark.sample(2)
 def test_friction_at_a_contact_is_derived_by_two_methods_and_simulated(
     model: str, quantity: str, expected: sympy.Expr
 ) -> None:

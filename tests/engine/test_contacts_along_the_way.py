@@ -103,6 +103,7 @@ CASES = [
 
 
 @pytest.mark.parametrize(("text", "blank", "names", "refused", "gives"), CASES)
+@pytest.mark.sample(3)
 def test_contacts_hold_along_the_way(
     text: str, blank: str, names: str, refused: str | None, gives: tuple[str, str] | None
 ) -> None:

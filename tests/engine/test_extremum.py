@@ -79,6 +79,7 @@ def cubic(kind: str, end: str) -> dict[str, Any]:
     ],
     ids=["launch-angle-for-range", "rope-angle-against-friction", "pivot-for-shortest-period"],
 )
+@pytest.mark.sample(2)
 def test_the_extremum_is_derived_by_two_methods_and_found_on_simulated_runs(
     model: str, expected: sympy.Expr, measured: str
 ) -> None:

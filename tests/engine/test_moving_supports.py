@@ -219,6 +219,7 @@ def _same(first: sympy.Expr, second: sympy.Expr) -> bool:
         "rod spun",
     ],
 )
+@pytest.mark.sample(3)
 def test_a_support_moving_as_prescribed_is_derived_by_several_methods_and_simulated(
     text: str, expected: dict[str, sympy.Expr], methods: dict[str, set[str]]
 ) -> None:

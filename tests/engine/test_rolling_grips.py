@@ -67,6 +67,7 @@ CASES = [
 
 
 @pytest.mark.parametrize(("text", "angle", "gap", "refused"), CASES)
+@pytest.mark.sample(2)
 def test_a_grip_that_turns_the_body_the_wrong_way_is_refused(
     text: str, angle: str, gap: str, refused: bool
 ) -> None:

@@ -147,6 +147,7 @@ SIDES = [
 
 
 @pytest.mark.parametrize(("side", "squared"), SIDES)
+@pytest.mark.sample(1)
 def test_an_inequality_under_domain_positive_chooses_between_roots(side: str, squared: sympy.Expr) -> None:
     table = {**SYMBOLS, "R": R, "v": v, "mu_s": mu_s}
     found = uncached(load_model(yaml.safe_load(BANKED.replace("SIDE", side)), table)).quantities["limit"]

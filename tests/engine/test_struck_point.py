@@ -57,6 +57,7 @@ def struck_at(s: sympy.Expr) -> tuple[sympy.Expr, sympy.Expr]:
         pytest.param(L / 2, '{x: "L*sin(phi)/2", y: "-L*cos(phi)/2"}', id="centre"),
     ],
 )
+@pytest.mark.sample(2)
 def test_a_bullet_in_a_rod_counts_its_moment_about_the_pivot_where_it_sticks(
     s: sympy.Expr, point: str
 ) -> None:

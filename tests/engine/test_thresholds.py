@@ -112,6 +112,7 @@ LEAST_LAUNCHES = [
 
 
 @pytest.mark.parametrize(("forced", "refusal"), LEAST_LAUNCHES)
+@pytest.mark.sample(2)
 def test_the_least_launch_to_get_somewhere_is_bracketed_by_runs_that_turn_back_and_arrive(
     monkeypatch: pytest.MonkeyPatch, forced: sympy.Expr | None, refusal: str | None
 ) -> None:

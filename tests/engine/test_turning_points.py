@@ -131,6 +131,7 @@ STRUCK_ON_A_SPRING: dict[str, Any] = {
         ),
     ],
 )
+@pytest.mark.sample(3)
 def test_the_turning_point_is_derived_by_several_methods_and_simulated(
     data: dict[str, Any], expected: sympy.Expr
 ) -> None:

@@ -43,6 +43,7 @@ quantities:
     [(ROD_UPRIGHT, sympy.sqrt(3 * g / L)), (TOP_OF_SPHERE, sympy.sqrt(2 * g * R / 3))],
     ids=["rod-balanced-upright", "block-on-top-of-a-sphere"],
 )
+@pytest.mark.sample(1)
 def test_a_release_from_an_unstable_top_is_derived_and_simulated_with_a_vanishing_push(
     model: str, expected: sympy.Expr
 ) -> None:

@@ -55,6 +55,7 @@ def signed_in_page(live_server: LiveServer, browse: Callable[..., Any], path: st
 
 
 @pytest.mark.parametrize("device", WIDTHS)
+@pytest.mark.sample(1)
 def test_sign_in_then_problems_and_a_worked_solution(
     live_server: LiveServer, browse: Callable[..., Any], device: str
 ) -> None:
@@ -98,6 +99,7 @@ def test_the_problem_pages_actions_are_one_row_and_the_students_link_a_line_of_i
 
 
 @pytest.mark.parametrize("device", WIDTHS)
+@pytest.mark.sample(1)
 def test_upload_with_an_error_fix_it_preview_and_save(
     live_server: LiveServer, browse: Callable[..., Any], device: str
 ) -> None:

@@ -59,6 +59,7 @@ EXAMPLES = sampled([(f"example{i}", block) for i, block in enumerate(MODELS)], 2
 
 @pytest.mark.slow
 @pytest.mark.parametrize("block", [block for _, block in EXAMPLES], ids=[name for name, _ in EXAMPLES])
+@pytest.mark.sample(12)
 def test_guide_model_example_derives_what_it_says(block: str) -> None:
     [names] = _comments(block, "symbols")
     symbols = {n: sympy.Symbol(n, positive=True) for n in names.split()}

@@ -103,6 +103,7 @@ def test_sigterm_during_a_first_starts_derivation_ends_the_fork_server_and_every
 
 
 @pytest.mark.parametrize("sig", [signal.SIGTERM, signal.SIGINT], ids=["SIGTERM", "Ctrl-C"])
+@pytest.mark.sample(1)
 def test_a_server_waiting_for_its_database_obeys_sigterm_and_ctrl_c(tmp_path: Path, sig: signal.Signals):
     log = tmp_path / "server.log"
     nothing_listens = f"postgresql+psycopg://postgres@127.0.0.1:{free_port()}/test"
@@ -118,6 +119,7 @@ def test_a_server_waiting_for_its_database_obeys_sigterm_and_ctrl_c(tmp_path: Pa
 
 
 @pytest.mark.parametrize("sig", [signal.SIGTERM, signal.SIGINT], ids=["SIGTERM", "Ctrl-C"])
+@pytest.mark.sample(1)
 def test_a_normal_shutdown_logs_no_worker_fault(tmp_path: Path, sig: signal.Signals):
     log = tmp_path / "server.log"
     server = LiveServer(f"sqlite:///{tmp_path / 'db.sqlite'}", log, warm_up="false").start()

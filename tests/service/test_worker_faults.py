@@ -104,6 +104,7 @@ def served(database_url: str, tmp_path: Path):
         server.kill()
 
 
+@pytest.mark.sample(1)
 def test_grading_resumes_after_an_idle_worker_is_killed(served):
     server, http = served
     workers = _children(_fork_server(server))
@@ -115,6 +116,7 @@ def test_grading_resumes_after_an_idle_worker_is_killed(served):
     assert not set(_children(_fork_server(server))) & set(workers)
 
 
+@pytest.mark.sample(1)
 def test_grading_resumes_after_the_fork_server_is_killed(served):
     server, http = served
     fork_server = _fork_server(server)
@@ -128,6 +130,7 @@ def test_grading_resumes_after_the_fork_server_is_killed(served):
     assert found and fork_server not in found, found
 
 
+@pytest.mark.sample(1)
 def test_a_sigterm_to_the_whole_process_group_stops_the_server_without_losing_workers_first(served):
     """As systemd stops a service: the server shuts its workers down itself, with nothing to replace."""
     server, _ = served

@@ -60,7 +60,7 @@ def open_problem(
     return page
 
 
-@pytest.mark.parametrize("problem_id", sampled(sorted(BANK), 10, "student-page-on-a-phone"))
+@pytest.mark.parametrize("problem_id", sampled(sorted(BANK), 6, "student-page-on-a-phone"))
 def test_a_bank_problems_page_renders_with_its_figure_on_a_phone(
     live_server: LiveServer, browse: Callable[..., Any], problem_id: str
 ) -> None:
@@ -72,6 +72,7 @@ def test_a_bank_problems_page_renders_with_its_figure_on_a_phone(
 
 
 @pytest.mark.parametrize("problem_id", WORKED)
+@pytest.mark.sample(3)
 def test_student_works_a_bank_problem_at_desktop_and_phone_widths(
     live_server: LiveServer, browse: Callable[..., Any], problem_id: str
 ) -> None:
