@@ -99,6 +99,8 @@ class CourseSessionRow(Base):
     name: Mapped[str] = mapped_column(String(NAME_LENGTH))
     csrf_token: Mapped[str] = mapped_column(String(HASH_LENGTH))
     expires_at: Mapped[datetime] = mapped_column(UTCDateTime(), index=True)
+    # A preview's problem: it acts for that problem's pages only, never shadowing a course's student.
+    problem_id: Mapped[str | None] = mapped_column(String(ID_LENGTH))
 
 
 class Assignment(Base):

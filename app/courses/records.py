@@ -103,6 +103,7 @@ class CourseSession:
     name: str
     csrf_token: str
     expires_at: datetime
+    problem_id: str | None = None  # a preview's: the problem it was opened for (see sessions.choose)
 
 
 @dataclass(frozen=True)

@@ -2,8 +2,9 @@
 course, held in an HttpOnly, SameSite=Lax cookie, so every tab of the browser is signed in and no
 page asks for an API key. The cookie holds one session per course (a student in a physics course
 and its lab is in both in one browser): a request acts as the session of its course or problem
-(`choose`), else the latest. The session reads as a launched student's (`SessionRecord`), so the API
-and the student pages accept it exactly as they accept an LMS launch, CSRF token included.
+(`choose`), else the latest; an instructor's "view as a student" beside them acts for the problem it
+was opened for. The session reads as a launched student's (`SessionRecord`), so the API and the
+student pages accept it exactly as they accept an LMS launch, CSRF token included.
 
 A student's link to come back (shown when they join, or made again while signed in) is the same
 kind of token, not spent by signing in: it is what a password is elsewhere, so only its hash is
@@ -71,13 +72,16 @@ def sign_in(courses: CourseStore, token: str, now: datetime) -> tuple[str, Cours
     return cookie, session
 
 
-def open_preview(courses: CourseStore, key_id: str, name: str, now: datetime) -> tuple[str, CourseSession]:
-    """ "View as a student" for an instructor key: a student's session under the instructor's preview
-    identity (`preview:<key id>`, filed apart from the class as the instructor's previews always are),
-    added to the browser's cookie as a course's is: (cookie value, session)."""
+def open_preview(
+    courses: CourseStore, key_id: str, name: str, problem_id: str, now: datetime
+) -> tuple[str, CourseSession]:
+    """ "View as a student" of one problem for an instructor key: a student's session under the
+    instructor's preview identity (`preview:<key id>`, filed apart from the class as the instructor's
+    previews always are), added to the browser's cookie as a course's is; it acts in place of a
+    course's session for that problem's pages only: (cookie value, session)."""
     cookie = secrets.token_urlsafe(32)
     session = CourseSession(
-        None, f"preview:{key_id}", name, secrets.token_urlsafe(32), now + PREVIEW_LIFETIME
+        None, f"preview:{key_id}", name, secrets.token_urlsafe(32), now + PREVIEW_LIFETIME, problem_id
     )
     courses.save_session(token_hash(cookie), session, now)
     return cookie, session
@@ -124,22 +128,28 @@ def choose(
     course_id: int | None = None,
     problem_id: str | None = None,
 ) -> tuple[str, CourseSession]:
-    """Which of the browser's sessions a request acts as: the one of its course; for a problem, the one
-    whose open assignment takes answers to it (else one that has it at all); else the latest of a
-    course (an instructor's preview beside it is for the problem they chose to view)."""
+    """Which of the browser's sessions a request acts as: the one of its course; for a problem, the
+    instructor's preview opened for it, else the course session whose open assignment takes answers to
+    it (else one that has it at all); else the latest of a course. A preview acts for its own problem
+    only: for 8 hours it had been chosen for every problem page, the browser's own student's too."""
+    courses = [item for item in found if item[1].course_id is not None]
     if course_id is not None:
-        for item in found:
+        for item in courses:
             if item[1].course_id == course_id:
                 return item
-    if problem_id is not None and len(found) > 1:
-        openings = [(item, access.opening(stores, item[1].student, problem_id, now)) for item in found]
+    if problem_id is not None:
+        for item in found:
+            if item[1].course_id is None and item[1].problem_id == problem_id:
+                return item
+    if problem_id is not None and len(courses) > 1:
+        openings = [(item, access.opening(stores, item[1].student, problem_id, now)) for item in courses]
         for item, opened in openings:
             if opened is not None and opened.accepting:
                 return item
         for item, opened in openings:
             if opened is not None:
                 return item
-    return next((item for item in found if item[1].course_id is not None), found[0])
+    return courses[0] if courses else found[0]
 
 
 def as_record(session: CourseSession) -> SessionRecord:

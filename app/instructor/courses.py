@@ -567,6 +567,7 @@ async def view_as_student(problem_id: str, request: Request, services: ServicesD
             services.stores.courses,
             who.principal.key_id,
             who.principal.name,
+            problem_id,
             context.clock(),
         )
         # beside the browser's course sessions, not in place of them (the preview is the latest)

@@ -319,6 +319,7 @@ class SqlCourseStore:
                     name=session_record.name,
                     csrf_token=session_record.csrf_token,
                     expires_at=session_record.expires_at,
+                    problem_id=session_record.problem_id,
                 )
             )
 
@@ -327,7 +328,9 @@ class SqlCourseStore:
             row = session.get(CourseSessionRow, id_hash)
             if row is None:
                 return None
-            return CourseSession(row.course_id, row.student, row.name, row.csrf_token, row.expires_at)
+            return CourseSession(
+                row.course_id, row.student, row.name, row.csrf_token, row.expires_at, row.problem_id
+            )
 
     def end_session(self, id_hash: str) -> None:
         with self._database.session() as session:

@@ -193,6 +193,49 @@ def test_view_as_a_student_keeps_the_browsers_course_session_signed_in(signed_in
     assert [s.student for s in stores.submissions.page().items] == [f"preview:{stores.keys.list()[0].id}"]
 
 
+def _submitted_as(client: TestClient, stores: Stores, problem: str, query: str = "") -> str:
+    """Whom the browser's answer to the problem's page is filed under (the page's CSRF token sent)."""
+    page = client.get(f"/p/{problem}{query}")
+    assert page.status_code == 200, page.text
+    token = re.search(r'name="csrf-token" content="([^"]+)"', page.text)
+    assert token is not None
+    filed = client.post(
+        f"/v1/problems/{problem}/parts/acceleration/submissions{query}",
+        json={"answer": "g"},
+        headers={"X-CSRF-Token": token.group(1)},
+    )
+    assert filed.status_code == 201, filed.text
+    return next(
+        s.student for s in stores.submissions.page().items if str(s.id) == filed.json()["submission_id"]
+    )
+
+
+def test_a_preview_acts_only_for_the_problem_it_was_opened_for(signed_in: TestClient, stores: Stores):
+    # it had been chosen for every problem page for 8 hours, the browser's own course student's too
+    from datetime import UTC, datetime, timedelta
+
+    from app.courses.records import AssignmentSpec
+
+    author = stores.keys.list()[0]
+    stores.problems.create(
+        "my-yo-yo", {**stores.problems.get("yo-yo").document, "id": "my-yo-yo"}, owner_key_id=author.id
+    )
+    course = _make_course(signed_in)
+    now = datetime.now(UTC)
+    stores.courses.create_assignment(
+        course, AssignmentSpec("HW", ("yo-yo",), now - timedelta(days=1), now + timedelta(days=1))
+    )
+    page = signed_in.get(f"/instructor/courses/{course}")
+    signed_in.post(f"/instructor/courses/{course}/join-code", data={"csrf": csrf_of(page.text)})
+    signed_in.post(f"/join/{stores.courses.get_course(course).join_code}", data={"name": "Ada"})
+    ada = stores.courses.roster(course)[0].student
+    problem = signed_in.get("/instructor/problems/my-yo-yo")
+    opened = signed_in.post("/instructor/problems/my-yo-yo/as-student", data={"csrf": csrf_of(problem.text)})
+    assert opened.status_code == 303
+    assert _submitted_as(signed_in, stores, "yo-yo") == ada
+    assert _submitted_as(signed_in, stores, "my-yo-yo") == f"preview:{author.id}"
+
+
 def test_the_course_page_makes_and_turns_off_a_join_code(signed_in: TestClient, stores: Stores):
     course = _make_course(signed_in)
     page = signed_in.get(f"/instructor/courses/{course}")
