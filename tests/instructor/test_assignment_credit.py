@@ -146,3 +146,19 @@ def test_the_frozen_grade_notice_gives_the_moment_in_the_courses_zone_as_the_sol
         f'you opened the worked solution on <time datetime="{opened.isoformat()}">{shown(opened, "Asia/Tokyo")}</time>'
         in page
     )
+
+
+def test_a_closed_assignments_parts_say_since_when_they_are_closed_in_the_courses_zone(
+    signed_in: TestClient, stores: Stores
+):
+    # each part had said "Attempts: 0 used (no limit)" beside its disabled box, as if it were open
+    now = datetime.now(UTC)
+    due = now - timedelta(hours=1)
+    spec = AssignmentSpec("HW 1", ("yo-yo",), now - timedelta(days=2), due)
+    student, identity, _ = _joined_student(signed_in, stores, spec, timezone="Asia/Tokyo")
+    _file_right_answer(stores, identity)  # on the acceleration: its attempt is still said
+    page = student.get("/p/yo-yo").text
+    standings = dict(re.findall(r'id="standing-(\d+)">\s*<span class="attempts[^"]*">([^<]*)</span>', page))
+    closed = f"Closed since {shown(due, 'Asia/Tokyo')}"
+    assert standings == {"0": f"{closed}; 1 attempt used.", "1": f"{closed}.", "2": f"{closed}."}
+    assert "(no limit)" not in page
