@@ -90,11 +90,14 @@ def solution_context(request: Request, problem_id: str, student: str) -> dict[st
 
 def _still_to_earn(loaded: Loaded) -> list[int]:
     """The numbers of the parts opening the solution would freeze: within an assignment that still
-    takes answers, those neither solved nor out of attempts (nothing is lost on the others)."""
+    takes answers, those neither earned in full nor out of attempts (nothing is lost on the others; a
+    part solved late had been taken as earned, and was frozen without a word)."""
     if solution_within(loaded) is None or not loaded.opened.accepting:
         return []
     return [
-        index + 1 for index, work in enumerate(loaded.work.parts.values()) if not (work.solved or work.locked)
+        index + 1
+        for index, work in enumerate(loaded.work.parts.values())
+        if not (work.earned_in_full or work.locked)
     ]
 
 

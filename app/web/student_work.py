@@ -51,6 +51,12 @@ class PartWork:
         return self.correct or (self.best is not None and self.best >= 1.0)
 
     @property
+    def earned_in_full(self) -> bool:
+        """Its whole point is counted. A part solved late (a penalty taken) is not: reading the worked
+        solution is asked about for it as for an open part, since answers still count there."""
+        return self.best is not None and self.best >= 1.0
+
+    @property
     def late_penalty(self) -> float:
         """The share of the best attempt's score its lateness cost (0.1 for 10 %)."""
         return round(1.0 - self.late_factor, 6)

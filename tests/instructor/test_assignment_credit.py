@@ -6,10 +6,11 @@ from __future__ import annotations
 import re
 from datetime import UTC, datetime, timedelta
 
+import pytest
 from fastapi.testclient import TestClient
 
 from app.courses.policy import shown
-from app.courses.records import AssignmentRecord, AssignmentSpec, LateKind, LatePolicy
+from app.courses.records import AssignmentRecord, AssignmentSpec, LateKind, LatePolicy, SolutionRelease
 from app.courses.service import student_cell
 from app.storage import Stores
 from tests.db.helpers import CORRECT
@@ -49,6 +50,20 @@ def _file_right_answer(stores: Stores, student: str) -> None:
         verdict=CORRECT,
         max_attempts=None,
     )
+
+
+def _file_right_answers(stores: Stores, student: str) -> None:
+    """A right answer to each of the yo-yo's parts, filed now."""
+    for part in stores.problems.get("yo-yo").document["parts"]:
+        stores.submissions.file(
+            problem_id="yo-yo",
+            problem_version=stores.problems.get("yo-yo").version,
+            part_id=part["id"],
+            student=student,
+            answer="g",
+            verdict=CORRECT,
+            max_attempts=None,
+        )
 
 
 def _gradebook_score(client: TestClient, assignment: AssignmentRecord, student: str) -> float:
@@ -162,3 +177,28 @@ def test_a_closed_assignments_parts_say_since_when_they_are_closed_in_the_course
     closed = f"Closed since {shown(due, 'Asia/Tokyo')}"
     assert standings == {"0": f"{closed}; 1 attempt used.", "1": f"{closed}.", "2": f"{closed}."}
     assert "(no limit)" not in page
+
+
+@pytest.mark.parametrize(
+    ("due_in", "asked_for"),
+    [
+        (timedelta(days=1), None),  # solved on time: nothing left to earn, shown at once
+        (timedelta(hours=-1), "parts 1, 2, 3"),  # solved late, a penalty taken: asked first
+    ],
+)
+def test_opening_a_released_solution_asks_first_for_parts_solved_only_late(
+    signed_in: TestClient, stores: Stores, due_in: timedelta, asked_for: str | None
+):
+    # a part solved late had counted as earned: the solution opened without a word, its grade frozen
+    now = datetime.now(UTC)
+    spec = AssignmentSpec(
+        "HW 1", ("yo-yo",), now - timedelta(days=2), now + due_in, PENALTY, None, SolutionRelease.RELEASED
+    )
+    student, identity, _ = _joined_student(signed_in, stores, spec)
+    _file_right_answers(stores, identity)
+    shown = student.get("/p/yo-yo/solution").text
+    asked = re.search(r"your grade on (parts? [\d, ]+) of this problem stays as it is now", shown)
+    assert (asked and asked.group(1)) == asked_for
+    assert ("yo-yo" in stores.courses.solutions_opened(identity)) is (asked_for is None)
+    warned = "Opening it freezes your grade" in student.get("/p/yo-yo").text
+    assert warned is (asked_for is not None)
