@@ -150,13 +150,18 @@ class Opening:
         return {**view, "parts": [{**part, "max_attempts": limit} for part in view.get("parts", [])]}
 
 
-def opening(stores: Stores, student: str, problem_id: str, now: datetime) -> Opening | None:
+def opening(
+    stores: Stores, student: str, problem_id: str, now: datetime, course_id: int | None = None
+) -> Opening | None:
     """None when the problem is not in any of the student's open assignments (it does not exist for
     them); else the assignment that takes the answer: the first accepting one by due date, or the
-    latest due when none accepts."""
+    latest due when none accepts. With `course_id`, only that course's assignments: the course the
+    student is working in (a problem in two courses had its answers filed under the first)."""
     courses = stores.courses.courses_enrolled(student)
     if not courses:
-        return Opening(None, None, True, None)
+        return None if course_id is not None else Opening(None, None, True, None)
+    if course_id is not None:
+        courses = [course for course in courses if course.id == course_id]
     found: list[tuple[CourseRecord, AssignmentRecord, datetime]] = []
     for course in courses:
         for assignment in stores.courses.assignments(course.id):
@@ -165,7 +170,8 @@ def opening(stores: Stores, student: str, problem_id: str, now: datetime) -> Ope
                 found.append((course, assignment, due_for(assignment, extension)))
     if not found:
         # A problem the student was launched into by its own LMS link (graded there) stays theirs.
-        return Opening(None, None, True, None) if stores.outbox.launched(student, problem_id) else None
+        launched = course_id is None and stores.outbox.launched(student, problem_id)
+        return Opening(None, None, True, None) if launched else None
     for course, assignment, due in found:
         if accepting(assignment, due, now):
             return Opening(assignment, course, True, due)

@@ -122,16 +122,22 @@ def current_session(request: Request) -> tuple[str, SessionRecord] | None:
     found = course_sessions.live(context.stores.courses, course_cookie, now)
     if not found:
         return None
-    params = request.path_params
-    course = params.get("course_id")
     id_hash, session = course_sessions.choose(
         context.stores,
         found,
         now,
-        course_id=int(course) if isinstance(course, (int, str)) and str(course).isdigit() else None,
-        problem_id=params.get("problem_id"),
+        course_id=requested_course(request),
+        problem_id=request.path_params.get("problem_id"),
     )
     return id_hash, course_sessions.as_record(session)
+
+
+def requested_course(request: Request) -> int | None:
+    """The course a request is made in: its path's (`/courses/{course_id}/…`), else `?course=`, as a
+    problem's page and its answers carry it from the assignment they were opened in."""
+    named = request.path_params.get("course_id") or request.query_params.get("course")
+    text = str(named) if isinstance(named, (int, str)) else ""
+    return int(text) if text.isdigit() and len(text) < 10 else None
 
 
 def principal_from_session(request: Request) -> Principal | None:

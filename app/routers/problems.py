@@ -32,6 +32,12 @@ from app.web.rendering import tex_to_mathml
 from physics.errors import SpecError
 
 router = APIRouter(tags=["problems"], responses=AUTHENTICATED)
+# The course the answer is made in, for a student in more than one whose assignments have the problem
+# (a course's page sends it; without it, the first open assignment by due date takes the answer).
+CourseQuery = Annotated[
+    int | None,
+    Query(ge=1, description="the course the answer is made in (a student in several courses)"),
+]
 # Examples for /docs "Try it out": a problem and part of the built-in bank.
 ProblemIdPath = Annotated[str, Path(openapi_examples=examples.PROBLEM_ID)]
 PartIdPath = Annotated[str, Path(openapi_examples=examples.PART_ID)]
@@ -84,9 +90,12 @@ async def get_problem(
     services: ServicesDep,
     principal: CurrentPrincipal,
     student: Annotated[StudentId | None, Query()] = None,
+    course: CourseQuery = None,
 ) -> ProblemPublic:
     who = student_of(principal, student)
-    opened = await run_in_threadpool(require_open, services, principal, problem_id, who, now_of(request))
+    opened = await run_in_threadpool(
+        require_open, services, principal, problem_id, who, now_of(request), course
+    )
     try:
         view = await run_in_threadpool(services.catalog.student_view, problem_id, who)
     except LookupError:
@@ -107,11 +116,15 @@ async def submit(
     request: Request,
     services: ServicesDep,
     principal: CurrentPrincipal,
+    course: CourseQuery = None,
 ) -> SubmissionResult:
     """Graded and filed; for a student of a course, only within an assignment that accepts answers
-    now (409 after a closed assignment's due date), with the assignment's attempts per part."""
+    now (409 after a closed assignment's due date), with the assignment's attempts per part; with
+    `course`, an assignment of that course."""
     who = student_of(principal, body.student)
-    opened = await run_in_threadpool(require_open, services, principal, problem_id, who, now_of(request))
+    opened = await run_in_threadpool(
+        require_open, services, principal, problem_id, who, now_of(request), course
+    )
     if not opened.accepting:
         raise Conflict(opened.why)
     record = await run_in_threadpool(services.catalog.get, problem_id)
@@ -134,10 +147,11 @@ async def preview(
     services: ServicesDep,
     request: Request,
     principal: PreviewPrincipal,
+    course: CourseQuery = None,
 ) -> PreviewPublic:
     """How the answer would be read (for a live preview while typing); nothing is graded or stored."""
     who = student_of(principal, None)
-    await run_in_threadpool(require_open, services, principal, problem_id, who, now_of(request))
+    await run_in_threadpool(require_open, services, principal, problem_id, who, now_of(request), course)
     record = await run_in_threadpool(services.catalog.get, problem_id)
     _require_part(services, record, part_id)
     job = await run_in_threadpool(services.catalog.job, record, part_id, who, body.answer)
@@ -160,7 +174,12 @@ def visible_problems(services: Services, principal: Principal, now: datetime) ->
 
 
 def require_open(
-    services: Services, principal: Principal, problem_id: str, who: str, now: datetime
+    services: Services,
+    principal: Principal,
+    problem_id: str,
+    who: str,
+    now: datetime,
+    course: int | None = None,
 ) -> access.Opening:
     """The problem as `who` may reach it: NotFound when it is outside their assignments, when an
     instructor names a student of a course they do not teach, or an upload not theirs to use."""
@@ -179,7 +198,7 @@ def require_open(
             ):
                 raise missing
             return access.Opening(None, None, True, None)
-    found = access.opening(services.stores, who, problem_id, now)
+    found = access.opening(services.stores, who, problem_id, now, course)
     if found is None:
         raise missing
     return found

@@ -439,4 +439,6 @@ def assignment_banner(opened: access.Opening) -> dict[str, Any] | None:
         "late_policy": late_policy_text(opened.assignment.spec.late),
         "accepting": opened.accepting,
         "why": opened.why,
+        # carried by the page's links and answers, so that they stay in this course (see `choose`)
+        "query": f"?course={opened.course.id}",
     }

@@ -24,6 +24,7 @@ from starlette.concurrency import run_in_threadpool
 from app.courses.policy import shown
 from app.instructor.described import describe
 from app.lti.context import LtiContextDep
+from app.lti.sessions import requested_course
 from app.web.course_pages import _cross_site, _refused_cross_site
 from app.web.layout import page, templates
 from app.web.solution_access import solution_release
@@ -49,7 +50,7 @@ def solution_context(request: Request, problem_id: str, student: str) -> dict[st
     """Everything the solution shows for `student`, or None for no such problem. `released` says
     whether it may be shown (the rest is then left out)."""
     services = getattr(request.app.state, "services", None)
-    loaded = _load(request.app.state.lti, problem_id, student)
+    loaded = _load(request.app.state.lti, problem_id, student, requested_course(request))
     if services is None or loaded is None:
         return None
     catalog = services.catalog
@@ -124,7 +125,9 @@ async def open_solution(problem_id: str, request: Request, context: LtiContextDe
 
     if not _PROBLEM_ID.match(problem_id) or not await run_in_threadpool(record):
         return _not_found(request, await _ancestors(context))
-    return RedirectResponse(f"/p/{problem_id}/solution", status_code=303)
+    course = requested_course(request)
+    query = "" if course is None else f"?course={course}"
+    return RedirectResponse(f"/p/{problem_id}/solution{query}", status_code=303)
 
 
 @router.get("/p/{problem_id}/solution", include_in_schema=False)

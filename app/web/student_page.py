@@ -28,7 +28,7 @@ from app.courses import access
 from app.courses.policy import Counting
 from app.lti.context import LtiContext, LtiContextDep
 from app.lti.platforms import platform_origins
-from app.lti.sessions import current_session
+from app.lti.sessions import current_session, requested_course
 from app.web.course_pages import assignment_banner
 from app.web.layout import page, templates
 from app.web.solution_access import Within, solution_release
@@ -51,6 +51,7 @@ class Throttled(Exception):
 class Caller:
     student: str  # whose work the page shows and submits (an instructor key previews as "preview:…")
     csrf_token: str | None  # a session's; None for a key
+    course: int | None = None  # the course the page is opened in (`?course=`), if it names one
 
 
 def _who(student: str | None, key_id: str) -> str:
@@ -68,13 +69,13 @@ async def _caller(request: Request, context: LtiContext, *, allow_key: bool) -> 
         wait = None if context.rate_limit is None else await run_in_threadpool(context.rate_limit, principal)
         if wait is not None:
             raise Throttled(wait)
-        return Caller(_who(principal.student, principal.key_id), None)
+        return Caller(_who(principal.student, principal.key_id), None, requested_course(request))
     found = await run_in_threadpool(current_session, request)
     if found is None:
         return None
     id_hash, record = found
     principal = record.principal(id_hash)
-    return Caller(_who(principal.student, principal.key_id), record.csrf_token)
+    return Caller(_who(principal.student, principal.key_id), record.csrf_token, requested_course(request))
 
 
 async def _ancestors(context: LtiContext) -> list[str]:
@@ -153,12 +154,12 @@ class Loaded:
     assignment: Mapping[str, Any] | None = None  # the assignment it is answered in (a course's student)
 
 
-def _load(context: LtiContext, problem_id: str, student: str) -> Loaded | None:
+def _load(context: LtiContext, problem_id: str, student: str, course: int | None = None) -> Loaded | None:
     if context.student_view is None or not _PROBLEM_ID.match(problem_id):
         return None
     # A course's student sees only the problems of their open assignments (app.courses.access).
     now = context.clock()
-    opened = access.opening(context.stores, student, problem_id, now)
+    opened = access.opening(context.stores, student, problem_id, now, course)
     if opened is None:
         return None
     try:
@@ -251,7 +252,7 @@ async def student_page(problem_id: str, request: Request, context: LtiContextDep
     shell = {"problem_id": problem_id, "scripts": [SCRIPT], "title": "Problem"}
     if caller is None:
         return page(request, "student/problem.html", {**shell, "mode": "key"}, frame_ancestors=ancestors)
-    loaded = await run_in_threadpool(_load, context, problem_id, caller.student)
+    loaded = await run_in_threadpool(_load, context, problem_id, caller.student, caller.course)
     if loaded is None:
         return _not_found(request, ancestors)
     return page(
@@ -295,7 +296,7 @@ async def student_content(problem_id: str, request: Request, context: LtiContext
     caller = await _fragment_caller(request, context)
     if isinstance(caller, Response):
         return caller
-    loaded = await run_in_threadpool(_load, context, problem_id, caller.student)
+    loaded = await run_in_threadpool(_load, context, problem_id, caller.student, caller.course)
     if loaded is None:
         return _refused(404, "not found")
     return _fragment(
@@ -309,7 +310,7 @@ async def part_work(problem_id: str, part_id: str, request: Request, context: Lt
     caller = await _fragment_caller(request, context)
     if isinstance(caller, Response):
         return caller
-    loaded = await run_in_threadpool(_load, context, problem_id, caller.student)
+    loaded = await run_in_threadpool(_load, context, problem_id, caller.student, caller.course)
     parts = {part["id"]: part for part in _parts(loaded.view)} if loaded else {}
     if loaded is None or part_id not in parts:
         return _refused(404, "not found")

@@ -236,6 +236,36 @@ def test_a_preview_acts_only_for_the_problem_it_was_opened_for(signed_in: TestCl
     assert _submitted_as(signed_in, stores, "my-yo-yo") == f"preview:{author.id}"
 
 
+def _two_courses_with_yo_yo(signed_in: TestClient, stores: Stores) -> dict[int, tuple[int, str]]:
+    """A lecture and its lab, each with an open assignment of the yo-yo, and the browser joined to
+    both (the lab's session its latest): per course, the assignment and the student's identity."""
+    from datetime import UTC, datetime, timedelta
+
+    from app.courses.records import AssignmentSpec
+
+    now = datetime.now(UTC)
+    spec = AssignmentSpec("HW", ("yo-yo",), now - timedelta(days=1), now + timedelta(days=1))
+    students = {}
+    for _ in range(2):
+        course = _make_course(signed_in)
+        made = stores.courses.create_assignment(course, spec)
+        page = signed_in.get(f"/instructor/courses/{course}")
+        signed_in.post(f"/instructor/courses/{course}/join-code", data={"csrf": csrf_of(page.text)})
+        signed_in.post(f"/join/{stores.courses.get_course(course).join_code}", data={"name": "Ada"})
+        students[course] = (made.id, stores.courses.roster(course)[0].student)
+    return students
+
+
+def test_a_problem_in_two_courses_files_the_answer_in_the_course_its_page_was_opened_from(
+    signed_in: TestClient, stores: Stores
+):
+    # the answer went to the browser's latest course that had the problem open, whichever page it came from
+    for course, (assignment, student) in _two_courses_with_yo_yo(signed_in, stores).items():
+        listed = signed_in.get(f"/courses/{course}/assignments/{assignment}").text
+        assert f'href="/p/yo-yo?course={course}"' in listed
+        assert _submitted_as(signed_in, stores, "yo-yo", f"?course={course}") == student
+
+
 def test_the_course_page_makes_and_turns_off_a_join_code(signed_in: TestClient, stores: Stores):
     course = _make_course(signed_in)
     page = signed_in.get(f"/instructor/courses/{course}")

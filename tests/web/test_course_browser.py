@@ -370,11 +370,12 @@ def test_a_student_in_two_courses_stays_signed_in_to_both_in_one_browser(
     stores = live_server.stores
     now = datetime.now(UTC)
     student = browse(f"{live_server.url}/courses", width=WIDTHS[device])
-    for title, problem in (("Physics", "atwood"), ("Physics lab", "projectile")):
+    # the lab has the atwood too: the physics course's page of it had acted as the lab's student
+    for title, problems in (("Physics", ("atwood",)), ("Physics lab", ("projectile", "atwood"))):
         course = stores.courses.create_course(title, owner="key:0")
         code = f"{title[-3:].upper()}{device[:4].upper()}"
         stores.courses.set_join_code(course.id, code)
-        spec = AssignmentSpec(f"{title} 1", (problem,), now - timedelta(days=1), now + timedelta(days=6))
+        spec = AssignmentSpec(f"{title} 1", problems, now - timedelta(days=1), now + timedelta(days=6))
         stores.courses.create_assignment(course.id, spec)
         student.goto(f"{live_server.url}/join/{code}")
         student.get_by_label("Your name").fill("Chien-Shiung Wu")
@@ -387,3 +388,9 @@ def test_a_student_in_two_courses_stays_signed_in_to_both_in_one_browser(
     student.get_by_role("link", name="Physics 1").click()
     student.get_by_role("link", name=BANK["atwood"].title).click()
     expect(student.locator(".assignment-banner")).to_contain_text("Physics 1")
+    # the page's own calls name its course (unnamed, the lab and the course could both take them)
+    physics = stores.courses.course_by_join_code(f"ICS{device[:4].upper()}")
+    assert physics is not None and student.url.endswith(f"/p/atwood?course={physics.id}")
+    with student.expect_request(lambda request: "/preview" in request.url) as previewed:
+        student.locator("#part-acceleration input[name=answer]").press_sequentially("g")
+    assert previewed.value.url.endswith(f"/v1/problems/atwood/parts/acceleration/preview?course={physics.id}")

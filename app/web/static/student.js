@@ -9,6 +9,11 @@
   if (!root) { return; }
   var keyMode = root.getAttribute("data-mode") === "key";
   var problemId = root.getAttribute("data-problem");
+  // The course the page was opened in (its assignment's): every request of the page names it, so that
+  // answers are filed in that course even when the browser is signed in to another that has the problem.
+  var course = root.getAttribute("data-course") || new URLSearchParams(window.location.search).get("course");
+
+  function inCourse(url) { return course ? url + "?course=" + encodeURIComponent(course) : url; }
 
   function key() { return keyMode ? window.sessionStorage.getItem(KEY_STORE) : null; }
 
@@ -271,7 +276,7 @@
       if (!text.trim()) { preview.textContent = ""; input.removeAttribute("aria-invalid"); return; }
       timer = window.setTimeout(function () {
         var mine = ++asked;
-        post(base + "/preview", { answer: text }).then(function (r) {
+        post(inCourse(base + "/preview"), { answer: text }).then(function (r) {
           if (mine !== asked) { return; }  // a newer keystroke already asked again
           if (r.status !== 200) { preview.textContent = errorText(r); return; }
           showPreview(preview, input, r.data, text);
@@ -288,7 +293,7 @@
     if (editor) { wireForces(editor, input, askPreview); }
 
     function refresh(lead) {
-      return getHtml("/p/" + encodeURIComponent(problemId) + "/parts/" + encodeURIComponent(part) + "/work")
+      return getHtml(inCourse("/p/" + encodeURIComponent(problemId) + "/parts/" + encodeURIComponent(part) + "/work"))
         .then(function (fragment) {
           var work = fragment.querySelector(".work");
           var target = section.querySelector(".work");
@@ -317,7 +322,7 @@
       button.disabled = true;
       verdict.removeAttribute("data-verdict");
       verdict.textContent = "Checking…";
-      post(base + "/submissions", { answer: input.value }).then(function (r) {
+      post(inCourse(base + "/submissions"), { answer: input.value }).then(function (r) {
         if (r.status === 201) {
           return refresh(null).catch(function () {
             // Graded and stored, but the fresh standing could not be fetched: say the verdict at least.
@@ -341,8 +346,8 @@
 
   function contentUrl() {
     var own = root.getAttribute("data-content");  // a page of its own, such as the worked solution
-    if (own) { return own; }
-    return problemId ? "/p/" + encodeURIComponent(problemId) + "/content" : "/problems/content";
+    if (own) { return inCourse(own); }
+    return problemId ? inCourse("/p/" + encodeURIComponent(problemId) + "/content") : "/problems/content";
   }
 
   function loadWithKey(k) {
