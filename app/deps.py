@@ -8,8 +8,8 @@ from fastapi import Depends, Path, Request, Security
 from starlette.concurrency import run_in_threadpool
 
 from app.auth import Principal, bearer_token
-from app.errors import Forbidden, RateLimited, Unauthenticated
-from app.lti.sessions import principal_from_session
+from app.errors import AppError, CourseRequired, Forbidden, NotFound, RateLimited, Unauthenticated
+from app.lti.sessions import principal_from_session, unsettled_course
 from app.openapi import bearer_scheme
 from app.ratelimit import MemoryRateLimiter
 from app.services import Services
@@ -84,6 +84,9 @@ async def authenticated(request: Request, services: Services) -> Principal:
             raise Unauthenticated(
                 "Send an API key as 'Authorization: Bearer <key>', or open this from your course."
             )
+        refused = await run_in_threadpool(_course_unsettled, services, request)
+        if refused is not None:
+            raise refused
     else:
         token = bearer_token(authorization)
         found = None if token is None else await key_principal(services, token)
@@ -93,6 +96,25 @@ async def authenticated(request: Request, services: Services) -> Principal:
             )
         principal = found
     return principal
+
+
+def _course_unsettled(services: Services, request: Request) -> AppError | None:
+    """A browser signed in to several courses calls the API naming none where more than one could
+    take the call, or names one it is not signed in to: either had acted as the latest course's
+    student, filing an answer in a course the student may not have meant. The refusal of the first
+    names the courses to choose from."""
+    unsettled = unsettled_course(request)
+    if unsettled is None:
+        return None
+    if unsettled.unknown is not None:
+        return NotFound(f"This browser is not signed in to course {unsettled.unknown}.")
+    ids = unsettled.rivals
+    named = "; ".join(f"{i}: {services.stores.courses.get_course(i).title}" for i in ids)
+    return CourseRequired(
+        f"This browser is signed in to {len(ids)} courses this could be for ({named}): "
+        "name one with ?course=<id>.",
+        [{"path": "course", "message": "required: more than one of the browser's courses could take this"}],
+    )
 
 
 def spend_budget(services: Services, principal: Principal) -> None:

@@ -6,6 +6,7 @@
      ├── NotFound          404    unknown problem, part or submission (or not yours)
      ├── Conflict          409    e.g. no attempts left
      ├── PayloadTooLarge   413
+     ├── CourseRequired    422    a browser in several courses calls the API naming none (`?course=`)
      ├── RateLimited       429    with Retry-After
      ├── GraderFault       500    grading itself failed (a crash, a stored problem that will not grade)
      └── Busy              503    the grading queue is full, with Retry-After
@@ -66,6 +67,10 @@ class NotFound(AppError):
 
 class Conflict(AppError):
     status, code = 409, "conflict"
+
+
+class CourseRequired(AppError):
+    status, code = 422, "course_required"
 
 
 class PayloadTooLarge(AppError):

@@ -152,6 +152,21 @@ def choose(
     return courses[0] if courses else found[0]
 
 
+def rivals(
+    stores: Stores, found: Sequence[tuple[str, CourseSession]], now: datetime, *, problem_id: str | None
+) -> list[CourseSession]:
+    """The course sessions an API call naming no course could act as, when more than one could (else
+    none): for a problem, those of the courses whose open assignments have it (a preview opened for it
+    is chosen before them); else every one. `choose` would take one of them: the call must say which
+    (`?course=`), so that no answer is filed in a course the student did not mean."""
+    if problem_id is not None and any(s.course_id is None and s.problem_id == problem_id for _, s in found):
+        return []
+    courses = [s for _, s in found if s.course_id is not None]
+    if problem_id is not None:
+        courses = [s for s in courses if access.opening(stores, s.student, problem_id, now) is not None]
+    return courses if len(courses) > 1 else []
+
+
 def as_record(session: CourseSession) -> SessionRecord:
     """A course session as a launched student's, which the API and the pages accept."""
     return SessionRecord(

@@ -132,6 +132,39 @@ def current_session(request: Request) -> tuple[str, SessionRecord] | None:
     return id_hash, course_sessions.as_record(session)
 
 
+@dataclass(frozen=True)
+class Unsettled:
+    """Why an API call through a course cookie cannot say which of the browser's sessions it is:
+    `?course=` names a course the browser is not signed in to, or it names none where more than one
+    could take the call (`app.courses.sessions.rivals`). Either had acted as the latest course's."""
+
+    unknown: int | None = None
+    rivals: tuple[int, ...] = ()
+
+
+def unsettled_course(request: Request) -> Unsettled | None:
+    """None when the call's session is settled (an LMS session's, one course's, or the named course's)."""
+    context = getattr(request.app.state, "lti", None)
+    if context is None:
+        return None
+    session_id = request.cookies.get(SESSION_COOKIE)
+    now = context.clock()
+    if session_id and find_session(context.stores.lti_sessions, session_id, now=now) is not None:
+        return None
+    from app.courses import sessions as course_sessions
+
+    found = course_sessions.live(context.stores.courses, request.cookies.get(course_sessions.COOKIE), now)
+    named = requested_course(request)
+    if named is not None:
+        in_query = request.query_params.get("course") is not None and "course_id" not in request.path_params
+        mine = any(session.course_id == named for _, session in found)
+        return Unsettled(unknown=named) if in_query and not mine else None
+    problem_id = request.path_params.get("problem_id")
+    rivals = course_sessions.rivals(context.stores, found, now, problem_id=problem_id)
+    ids = tuple(session.course_id for session in rivals if session.course_id is not None)
+    return Unsettled(rivals=ids) if ids else None
+
+
 def requested_course(request: Request) -> int | None:
     """The course a request is made in: its path's (`/courses/{course_id}/…`), else `?course=`, as a
     problem's page and its answers carry it from the assignment they were opened in."""

@@ -266,6 +266,36 @@ def test_a_problem_in_two_courses_files_the_answer_in_the_course_its_page_was_op
         assert _submitted_as(signed_in, stores, "yo-yo", f"?course={course}") == student
 
 
+def test_an_api_call_from_a_browser_in_two_courses_naming_none_is_refused_naming_them(
+    signed_in: TestClient, stores: Stores
+):
+    # it had acted as the latest course's student: an answer could be filed in the other course's place
+    students = _two_courses_with_yo_yo(signed_in, stores)
+    page = signed_in.get("/p/yo-yo")
+    token = re.search(r'name="csrf-token" content="([^"]+)"', page.text)
+    assert token is not None
+    shown = re.search(r'data-course="(\d+)"', page.text)  # the page's calls name the course it shows
+    assert shown is not None and int(shown.group(1)) in students
+    headers = {"X-CSRF-Token": token.group(1)}
+    for path, body in (
+        ("/v1/problems/yo-yo/parts/acceleration/submissions", {"answer": "g"}),
+        ("/v1/submissions", None),
+    ):
+        refused = signed_in.request("POST" if body else "GET", path, json=body, headers=headers)
+        assert refused.status_code == 422, path
+        error = refused.json()["error"]
+        assert error["code"] == "course_required" and error["details"][0]["path"] == "course"
+        assert all(f"{course}: Mechanics" in error["message"] for course in students)
+    assert stores.submissions.page().items == []  # nothing filed
+    elsewhere = signed_in.get("/v1/submissions", params={"course": 999}, headers=headers)
+    assert elsewhere.status_code == 404  # not the latest course's list under another's name
+    for course, (_, student) in students.items():  # named, each call acts in its course
+        assert _submitted_as(signed_in, stores, "yo-yo", f"?course={course}") == student
+        listed = signed_in.get("/v1/submissions", params={"course": course}, headers=headers)
+        assert listed.status_code == 200
+        assert [item["student"] for item in listed.json()["items"]] == [student]
+
+
 def test_the_course_page_makes_and_turns_off_a_join_code(signed_in: TestClient, stores: Stores):
     course = _make_course(signed_in)
     page = signed_in.get(f"/instructor/courses/{course}")
