@@ -15,7 +15,7 @@ from fractions import Fraction
 from physics.characters import fullwidth_as_ascii, may_be_wrapped, without_math_delimiters, without_zero_width
 from physics.dimensions import Dimension
 from physics.errors import AnswerError, LikelySlip, ParseError, TooLarge
-from physics.numeric.literal import NumberLiteral, read_number, units_start
+from physics.numeric.literal import NumberLiteral, read_number, side_by_side, units_start
 from physics.units import ParsedUnits, UnitReading, read_units
 from physics.verdict import ReadAs
 from physics.wording import TRAILING_SEMICOLON
@@ -101,11 +101,7 @@ def _read_literal(text: str, expected: Dimension | None) -> tuple[NumericAnswer,
     elif reciprocal is None and (
         unit_text[0] in "0123456789" or (unit_text[0] in ",." and unit_text[1:2].isdigit())
     ):
-        raise ParseError(
-            "Two numbers side by side: write one number, its digits together (12500) or in groups of "
-            "three (12 500)",
-            rest_start,
-        )
+        raise side_by_side(text, number, rest_start)
     reading = read_units_at(unit_text, rest_start, expected)
     return NumericAnswer.of_literal(number, reading.units, rest_start, unit_text, reading.note), number.end
 

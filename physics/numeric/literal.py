@@ -336,6 +336,62 @@ def _grouped_end(text: str, start: int, integer_end: int) -> int | None:
     return end if end > integer_end else None
 
 
+def _grouped_fraction_end(text: str, fraction_end: int) -> int:
+    """The end of digits after the point grouped in threes from the point (`0.123 45`, `4.580 0`),
+    as SI groups them: groups of exactly three, the last of one to three; `fraction_end` where no
+    group follows. A short group that is a power of ten's 10 (`4.580 10^3`, a calculator's display)
+    is none."""
+    end = fraction_end
+    while end < len(text) and text[end] in _GROUP_SPACES:
+        group_end = _run(text, end + 1, _DIGITS)
+        size = group_end - end - 1
+        if not 1 <= size <= 3 or (size < 3 and _power_of_ten(text, group_end) is not None):
+            break
+        end = group_end
+        if size < 3:
+            break
+    return end
+
+
+def side_by_side(text: str, number: NumberLiteral, at: int) -> ParseError:
+    """Why digits after a number and a space (`12 50`, `0.12 345`, `0 500`) are refused: two numbers,
+    the space no grouping in threes, saying what was read and how to write the one number meant."""
+    typed = text[number.position : number.end].strip()
+    after = text[at : _run(text, at, _DIGITS)]
+    read = f"Read as {typed} and then {after or text[at]}, two numbers side by side"
+    followed = text[at + len(after) : at + len(after) + 1]
+    if not after or followed in (".", ",") or number.exponent is not None or number.percent:
+        return ParseError(f"{read}: write one number", at)
+    sign = "-" if number.negative else ""
+    if number.integer_digits == "0" and not number.has_point:  # `0 500`: no group starts with a lone 0
+        return ParseError(
+            f"Did you mean {sign}0.{after} or {sign}{after}? {read}: SI's groups of three never start with 0",
+            at,
+        )
+    whole, fraction = number.integer_digits, number.fraction_digits
+    if number.has_point:
+        fraction += after
+    else:
+        whole += after
+    together = sign + whole + ("." + fraction if number.has_point else "")
+    grouped = sign + _in_threes(whole, fraction, point=number.has_point)
+    if grouped == together:
+        return ParseError(f"{read}: write one number, its digits together ({together})", at)
+    return ParseError(
+        f"{read}: write one number, its digits together ({together}) or in groups of three either side "
+        f"of the point ({grouped})",
+        at,
+    )
+
+
+def _in_threes(whole: str, fraction: str, *, point: bool) -> str:
+    """`12345.6789` as SI groups it, in threes from the point: `12 345.678 9`."""
+    head = len(whole) % 3 or 3
+    groups = [whole[:head], *(whole[k : k + 3] for k in range(head, len(whole), 3))]
+    after = " ".join(fraction[k : k + 3] for k in range(0, len(fraction), 3))
+    return " ".join(groups) + ("." + after if point else "")
+
+
 def _decimal_comma(text: str, integer_digits: str, at: int, *, grouped: bool) -> bool:
     """Whether a comma at `at` is a decimal comma, as much of Europe types one (`4,58`): digits both
     sides, the number's only comma, and not a possible thousands separator (`1,500` is asked about)."""
@@ -379,7 +435,9 @@ def read_number(text: str, start: int = 0) -> NumberLiteral:
     has_point = comma or (integer_end < len(text) and text[integer_end] == ".")
     fraction_start = integer_end + 1 if has_point else integer_end
     fraction_end = _run(text, fraction_start, _DIGITS)
-    fraction_digits = text[fraction_start:fraction_end]
+    if has_point and fraction_end - fraction_start == 3:  # `0.123 45`: SI's grouping after the point
+        fraction_end = _grouped_fraction_end(text, fraction_end)
+    fraction_digits = "".join(c for c in text[fraction_start:fraction_end] if c in _DIGITS)
     note = (
         f"Read {text[i:fraction_end]} as {integer_digits or '0'}.{fraction_digits}: a decimal comma"
         if comma

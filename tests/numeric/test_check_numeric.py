@@ -207,7 +207,7 @@ WORDING = [
     ("101325 PA", NumericSpec(D("101325"), "Pa"), "PA is the petaampere, a current"),  # one name: asked
     ("1.5e3 N", SIGFIGS3, "3 significant figures (yours shows 2)"),
     ("1234000 N", SIGFIGS3, "3 significant figures (yours shows 4 to 7)"),
-    ("12 50 m/s^2", ACCEL, "Two numbers side by side"),
+    ("12 50 m/s^2", ACCEL, "Read as 12 and then 50, two numbers side by side"),
     ("4,580 m/s^2", ACCEL, "Did you mean 4.580 or 4580?"),
     ("4,58 m/s^2", ACCEL, "Read 4,58 as 4.58: a decimal comma. "),  # graded, and the feedback says so
     ("a = 4.58 m/s^2", ACCEL, "Give the value alone, without a name and '='"),

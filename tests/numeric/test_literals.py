@@ -64,6 +64,13 @@ VALUES = [
     ("1 000 000", F(10**6)),
     ("-1 500", F(-1500)),
     ("1 500e3", F(1500000)),
+    # and after the point, in threes from it, the last group one to three digits
+    ("0.123 45", F("0.12345")),
+    ("0.123 456 7", F("0.1234567")),
+    ("4.580 0", F("4.58")),
+    ("12 345.678 9", F("12345.6789")),
+    ("0.123\u200945", F("0.12345")),
+    ("4.580 10^3", F(4580)),  # a calculator's display, its × left out: 10 is no group
     # a decimal comma, where it can be no thousands separator
     ("4,58", F("4.58")),
     ("-4,58", F("-4.58")),
@@ -106,6 +113,7 @@ SIGFIGS = [
     ("0.00", 2, 2),
     ("1 500", 2, 4),
     ("1 500.0", 5, 5),
+    ("4.580 0", 5, 5),
     ("4,58", 3, 3),
     ("0,500", 3, 3),
 ]
@@ -166,8 +174,26 @@ REFUSED = [
     ("12 50", ParseError, 3, "side by side"),
     ("12 5000 m", ParseError, 3, "side by side"),
     ("1234 567 m", ParseError, 5, "side by side"),
-    ("0 500 m", ParseError, 2, "side by side"),
+    ("0 500 m", ParseError, 2, "Did you mean 0.500 or 500? Read as 0 and then 500"),
     ("1  500 m", ParseError, 3, "side by side"),
+    # groups after the point that are not SI's threes from the point: what was read, and the one number
+    ("0.12 345 m", ParseError, 5, "Read as 0.12 and then 345, two numbers side by side"),
+    (
+        "0.12 345 m",
+        ParseError,
+        5,
+        "together (0.12345) or in groups of three either side of the point (0.123 45)",
+    ),
+    ("0.123 4567 m", ParseError, 6, "Read as 0.123 and then 4567"),
+    ("0.123 45 678 m", ParseError, 9, "Read as 0.123 45 and then 678"),
+    ("12 50 m", ParseError, 3, "together (1250) or in groups of three either side of the point (1 250)"),
+    (
+        "0.45 6 m",
+        ParseError,
+        5,
+        "Read as 0.45 and then 6, two numbers side by side: write one number, its digits together (0.456)",
+    ),
+    ("4.5e3 12 m", ParseError, 6, "Read as 4.5e3 and then 12, two numbers side by side: write one number"),
     ("1_500 N", ParseError, 1, "without separators: 1500, not 1_500"),
     # A power of ten with its digits left out: not 2.5 times Euler's number, which it read as
     ("2.5e m", ParseError, 3, "Did you mean a power of ten, as in 2.5e3, or 2.5 times Euler's number e"),
