@@ -96,6 +96,10 @@ def _bracketings(text: str, tokens: list[Token]) -> list[tuple[int, str]]:
         slash = tokens[k]
         end, after = _sum_after(text, tokens, k)
         start, before = _sum_before(tokens, k)
+        # `a/(b) + c`, `a + (b)/c`: a bracket around the divisor or the whole numerator says where it
+        # ends, as typed; only a bracket left out is asked about
+        after = after and tokens[k + 1].kind is not Kind.LPAREN
+        before = before and not _bracketed_numerator(tokens, k)
         ways = []
         if after:  # a/b + c → a/(b + c)
             ways.append(f"{text[: slash.end]}({text[slash.end : end]}){text[end:]}")
@@ -141,6 +145,18 @@ def _sum_before(tokens: list[Token], k: int) -> tuple[int, bool]:
         elif depth == 0 and _binary_sign(tokens, at):
             signed = True
     return 0, signed
+
+
+def _bracketed_numerator(tokens: list[Token], k: int) -> bool:
+    """Whether the numerator of the `/` at k is one bracket, begun after a sign or at the start."""
+    if tokens[k - 1].kind is not Kind.RPAREN:
+        return False
+    depth = 0
+    for at in range(k - 1, -1, -1):
+        depth += {Kind.RPAREN: 1, Kind.LPAREN: -1}.get(tokens[at].kind, 0)
+        if depth == 0:
+            return at == 0 or tokens[at - 1].kind is Kind.LPAREN or tokens[at - 1].text in ("+", "-")
+    return False
 
 
 def _binary_sign(tokens: list[Token], at: int) -> bool:

@@ -350,6 +350,7 @@ UNBRACKETED_SUMS = [
     ("2 m g/m + M", "2*m*g/(m + M)", PENDULUM, "2·m·g/(m + M)"),
     ("g(m2-m1)/m1+m2", "g*(m2 - m1)/(m1 + m2)", ATWOOD, "g·(m2 - m1)/(m1 + m2)"),
     ("m+M/m", "(m + M)/m", PENDULUM, "(m + M)/m"),
+    ("m + 2(M)/m", "(m + 2*M)/m", PENDULUM, "(m + 2·M)/m"),  # a bracket that is not all the numerator
 ]
 
 
@@ -373,6 +374,12 @@ KEPT_AS_TYPED = [
     # have the dimension either, is graded as typed
     ("mg/m+g", "m*g/(m + M)", PENDULUM, Reason.WRONG_VALUE),
     ("mg/m+M g", "m*g/(m + M)", PENDULUM, Reason.WRONG_DIMENSION),
+    # a bracket around the divisor or the whole numerator says where it ends: read as typed, not asked
+    ("m g/(m) + M", "m*g/(m + M)", PENDULUM, Reason.WRONG_DIMENSION),
+    ("m g/(m)+M", "m*g/(m + M)", PENDULUM, Reason.WRONG_DIMENSION),
+    ("(m g/(m) + M)", "m*g/(m + M)", PENDULUM, Reason.WRONG_DIMENSION),
+    ("M + (m g)/m", "m*g/(m + M)", PENDULUM, Reason.WRONG_DIMENSION),
+    ("m + (M)/m", "(m + M)/m", PENDULUM, Reason.WRONG_DIMENSION),
 ]
 
 
