@@ -101,7 +101,7 @@ def resolve_words(tokens: list[Token], table: NameTable) -> list[Token]:
             meant = (
                 f" Did you mean {lowered}? Function names are in small letters."
                 if lowered in FUNCTIONS
-                else _other_names_hint(word)
+                else other_names_hint(word)
             )
             raise UnknownFunction(
                 f'Unknown function "{word}".{meant} Functions you can use: {", ".join(LISTED_FUNCTIONS)}.',
@@ -125,7 +125,7 @@ def resolve_words(tokens: list[Token], table: NameTable) -> list[Token]:
             + _subscript_hint(word, allowed, table)
             + _times_letter_hint(word, prev, nxt)
             + _spaced_exponent_hint(word, prev)
-            + _other_names_hint(word),
+            + other_names_hint(word),
             tok.pos,
             word,
             allowed,
@@ -296,7 +296,7 @@ _OTHER_FUNCTION_NAMES = {"tg": "tan", "ctg": "cot", "cotg": "cot", "arctg": "ata
 _OTHER_FUNCTION_WORD = re.compile(r"(arcctg|arctg|cotg|ctg|tg)(?![a-z])")
 
 
-def _other_names_hint(word: str) -> str:
+def other_names_hint(word: str) -> str:
     """A sentence for `tg θ`, `arctg(x)`: a function under its Russian or European name; or "". Never
     read as the function: t·g where t and g are declared is read so, as before."""
     found = _OTHER_FUNCTION_WORD.match(word)

@@ -22,7 +22,7 @@ from physics.errors import AnswerError, LikelySlip, ParseError, TooLarge, Unknow
 from physics.mathinput import InputLimits, parse_math
 from physics.mathinput.tokens import Kind, Token, tokenize
 from physics.mathinput.vocabulary import FUNCTIONS, PI_SPELLINGS
-from physics.mathinput.words import glued_angle_hint
+from physics.mathinput.words import glued_angle_hint, other_names_hint
 from physics.numeric.answer import (
     MAX_ANSWER_LENGTH,
     NumericAnswer,
@@ -110,6 +110,14 @@ def _quantities(tokens: list[Token], text: str) -> list[_Quantity]:
                 and (hint := glued_angle_hint(token.text))
             ):
                 raise LikelySlip(hint.strip(), token.pos)  # `9.8 sin30 m/s^2`: never a unit sin³⁰
+            elif (
+                depth == 0
+                and token.kind is Kind.WORD
+                and (tokens[i + 1].kind in (Kind.LPAREN, Kind.NUM) or token.text[-1].isdigit())
+                and (hint := other_names_hint(token.text))
+            ):
+                # `9.81 tg 30°`: tan under its European name, never the units t·g
+                raise LikelySlip(hint.strip(), token.pos)
             elif depth == 0 and (
                 token.kind is Kind.LPAREN  # `[` opening units: the test above let it through
                 or (token.kind is Kind.WORD and not _is_arithmetic_word(tokens, i))

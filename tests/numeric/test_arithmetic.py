@@ -124,6 +124,13 @@ BLAME = [
     ("pi", "m/s^2", Reason.MISSING_UNITS, 2, "needs units"),
     ("4.58 x 10-3 m/s^2", "m/s^2", Reason.PARSE_ERROR, 9, "Did you mean ×10^-3?"),  # not 45.8 − 3
     ("2*4.58×10e8 m/s^2", "m/s^2", Reason.PARSE_ERROR, 9, "Did you mean 4.58×10^8 or 4.58e8?"),  # not ×10^9
+    # a function under its European or Russian name: never the units t·g (was "A second number …")
+    ("9.81 tg 30° m/s^2", "m/s^2", Reason.PARSE_ERROR, 5, "Did you mean tan? Write tan for tg"),
+    ("9.81*tg(30°) m/s^2", "m/s^2", Reason.PARSE_ERROR, 5, "Did you mean tan?"),
+    ("9.81 tg30° m/s^2", "m/s^2", Reason.PARSE_ERROR, 5, "Did you mean tan?"),
+    ("tg(30°)*9.81 m/s^2", "m/s^2", Reason.PARSE_ERROR, 0, "Did you mean tan?"),
+    ("9.81 ctg(30°) m/s^2", "m/s^2", Reason.PARSE_ERROR, 5, "Did you mean cot? Write cot for ctg"),
+    ("9.81*arctg(0.5) m/s^2", "m/s^2", Reason.PARSE_ERROR, 5, "Did you mean atan?"),
 ]
 
 
