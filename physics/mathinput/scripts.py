@@ -38,8 +38,33 @@ def raised_exponent(
     return [
         Token(Kind.OP, "^", start, start, space),
         Token(Kind.LPAREN, "(", start, start),
-        *(_moved(token, start) for token in inside),
+        *(_moved(token, start) for token in _raised_divisor_bracketed(inside)),
         Token(Kind.RPAREN, ")", end, end),
+    ]
+
+
+# What a raised slash's divisor may hold to be taken whole: numbers and names, a product.
+_FACTORS = (Kind.NUM, Kind.WORD, Kind.CONST)
+
+
+def _raised_divisor_bracketed(inside: list[Token]) -> list[Token]:
+    """`⁻ᵇᵗᐟ²ᵐ`: the product after a raised slash, to the run's end, is its divisor, bracketed (zero
+    width): −bt/(2m). A raised run has no room for the brackets a student would type on a line, and
+    raised characters on both sides of the slash say the fraction is all of the exponent. Only one
+    slash, with factors alone after it; any other run is read as typed."""
+    slashes = [k for k, token in enumerate(inside) if token.kind is Kind.OP and token.text == "/"]
+    if len(slashes) != 1 or slashes[0] == 0:
+        return inside
+    k = slashes[0]
+    divisor = inside[k + 1 :]
+    if not divisor or any(token.kind not in _FACTORS for token in divisor):
+        return inside
+    opening, closing = inside[k].end, divisor[-1].end
+    return [
+        *inside[: k + 1],
+        Token(Kind.LPAREN, "(", opening, opening),
+        *divisor,
+        Token(Kind.RPAREN, ")", closing, closing),
     ]
 
 

@@ -47,6 +47,20 @@ TEXTBOOK = [
     # sign needs superscript digits after it"
     ("A e⁻ᵏᵗ", ("A", "k", "t"), sym("A") * sympy.exp(-sym("k") * sym("t"))),
     ("e⁻ᵗᐟᵗᵃᵘ", ("t", "tau"), sympy.exp(-sym("t") / sym("tau"))),  # ᐟ, a generator's raised slash
+    # the product after a raised slash, raised to the run's end, is all its divisor: was asked, "Did you
+    # mean (b·t/2)·m or b·t/(2·m)?"
+    ("A e⁻ᵇᵗᐟ²ᵐ", ("A", "b", "t", "m"), sym("A") * sympy.exp(-sym("b") * sym("t") / (2 * sym("m")))),
+    (
+        "A e⁻ᵇᵗᐟ²ᵐ t",
+        ("A", "b", "t", "m"),
+        sym("A") * sym("t") * sympy.exp(-sym("b") * sym("t") / (2 * sym("m"))),
+    ),
+    ("e^⁻ᵗᐟᴿᴸ", ("t", "R", "L"), sympy.exp(-sym("t") / (sym("R") * sym("L")))),
+    ("e⁻ᵗᐟ⁽ᴿᴸ⁾", ("t", "R", "L"), sympy.exp(-sym("t") / (sym("R") * sym("L")))),
+    # a sign or a bracket after it, or a second slash: read as typed
+    ("e⁻ᵗᐟ²⁺ᵏ", ("t", "k"), sympy.exp(-sym("t") / 2 + sym("k"))),
+    ("e⁽⁻ᵗᐟ²⁾ᵏ", ("t", "k"), sympy.exp(-sym("t") * sym("k") / 2)),
+    ("e⁻ᵗᐟ²ᐟᵏ", ("t", "k"), sympy.exp(-sym("t") / (2 * sym("k")))),
     ("e⁻ᵚᵗ", ("omega", "t"), sympy.exp(-sym("omega") * sym("t"))),  # ᵚ, the turned m, for ω
     ("e^ᵏᵗ", ("k", "t"), sympy.exp(sym("k") * sym("t"))),  # the caret, then the raised run: one power
     ("xʸ", ("x", "y"), sym("x") ** sym("y")),
