@@ -31,6 +31,7 @@ from physics.mathinput.vocabulary import (
     CHARACTER_VARIANTS,
     CLOSERS,
     FUNCTIONS,
+    GREEK_LETTERS,
     OPENERS,
     ROOT_SIGNS,
     SUPERSCRIPT_DIGITS,
@@ -404,7 +405,8 @@ def _unraised_slash(chars: list[str], tokens: list[Token], i: int, slash: int) -
     the exponent ends at the slash; refused, saying how to write the whole exponent in ^( )."""
     top = "".join(SUPERSCRIPT_PLAIN[c] for c in chars[i:slash])
     bottom = "".join(SUPERSCRIPT_PLAIN[c] for c in chars[slash + 1 : raised_end(chars, slash + 1)])
-    divisor = bottom if len(bottom) == 1 else f"({bottom})"
+    one_factor = len(bottom) == 1 or bottom.isdigit() or bottom in GREEK_LETTERS  # `t/tau`, not `t/(tau)`
+    divisor = bottom if one_factor else f"({bottom})"
     base = tokens[-1].text if tokens and tokens[-1].kind in (Kind.WORD, Kind.CONST) else ""
     return ParseError(
         f"The exponent is raised but its '/' is not, so the exponent ends at the '/': write the whole "

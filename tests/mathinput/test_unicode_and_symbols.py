@@ -175,7 +175,9 @@ LOWERED_OR_RAISED_REFUSED = [
         "its '/' is not, so the exponent ends at the '/': write the whole exponent in ^( ), as e^(-bt/(2m))",
     ),
     ("A e⁻ᵇᵗ⁄²ᵐ", ("A", "b", "t", "m"), 6, "as e^(-bt/(2m))"),  # the fraction slash
-    ("e⁻ᵗ/ᵗᵃᵘ", ("t", "tau"), 3, "as e^(-t/(tau))"),
+    ("e⁻ᵗ/ᵗᵃᵘ", ("t", "tau"), 3, "as e^(-t/tau)."),  # one name needs no bracket: was e^(-t/(tau))
+    ("e⁻ᵗ/ᴿᴸ", ("t", "R", "L"), 3, "as e^(-t/(RL))."),
+    ("e⁻ᵗ/²", ("t",), 3, "as e^(-t/2)."),
     # a raised fraction glued to a factor: its power as much as a coefficient, so asked
     ("x⁵⁄₇", ("x",), 1, "write x^(5/7) for a power, or 5/7 x for a product"),
     ("(x)²⁄₃", ("x",), 3, "write (…)^(2/3) for a power"),
