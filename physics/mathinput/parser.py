@@ -19,7 +19,7 @@ from collections.abc import Mapping
 from fractions import Fraction
 from typing import Literal, NoReturn
 
-from physics.errors import AmbiguousGrouping, AmbiguousInput, ParseError, TooLarge
+from physics.errors import AmbiguousGrouping, AmbiguousInput, LikelySlip, ParseError, TooLarge
 from physics.mathinput.limits import InputLimits
 from physics.mathinput.mixed_numbers import mixed_number_slip
 from physics.mathinput.powered import PoweredArgument
@@ -553,6 +553,7 @@ class Parser:
             kind = _POSTFIX_KINDS[tok.text]
             if kind == "degrees":
                 self._refuse_degrees_of_symbols(node, tok)
+                self._refuse_degrees_of_a_value(node, tok)
             elif kind == "percent" and (name := _first_name(node)) is not None:
                 # `0.5 m g %`: a percentage is of a number; after a symbol it would divide it by 100
                 raise ParseError(
@@ -577,6 +578,21 @@ class Parser:
         raise ParseError(
             f"The {self._typed(sign)} applies to all that comes before it, and {name} in it is an angle already: "
             "put the ° after the numbers alone, as in (90° - θ).",
+            sign.pos,
+        )
+
+    def _refuse_degrees_of_a_value(self, node: Node, sign: Token) -> None:
+        """`sin(30)°`, as a calculator's key order has it: as typed the ° turns sin(30), of 30 radians,
+        into degrees, which no one means by it; refused, asking about the angle in degrees."""
+        if not (isinstance(node, Call) and node.func in _TRIGONOMETRIC):
+            return
+        typed = self._source[node.pos : sign.pos].strip()
+        number = ungroup(node.arg)
+        meant = f"{node.func}({number.literal}°)" if isinstance(number, Num) else f"{node.func}(30°)"
+        ask = f"Did you mean {meant}? " if isinstance(number, Num) else ""
+        raise LikelySlip(
+            f"{ask}The {self._typed(sign)} after {typed} would turn its value into degrees: put the ° inside "
+            f"the brackets, after the angle's number, as in {meant}.",
             sign.pos,
         )
 

@@ -21,7 +21,7 @@ from physics.dimensions import Dimension
 from physics.errors import AnswerError, LikelySlip, ParseError, TooLarge, UnknownSymbol
 from physics.mathinput import InputLimits, parse_math
 from physics.mathinput.tokens import Kind, Token, tokenize
-from physics.mathinput.vocabulary import FUNCTIONS, PI_SPELLINGS
+from physics.mathinput.vocabulary import DEGREE_WORD, FUNCTIONS, PI_SPELLINGS
 from physics.mathinput.words import glued_angle_hint, other_names_hint
 from physics.numeric.answer import (
     MAX_ANSWER_LENGTH,
@@ -75,6 +75,22 @@ _GLUED_NUMBER = re.compile(r"(ln|sqrt|sin|cos|tan|sec|csc|cot)(\d+)")
 _ENDS_NUMBER = frozenset({Kind.NUM, Kind.RPAREN, Kind.WORD, Kind.POSTFIX})
 
 
+_TRIGONOMETRIC = frozenset({"sin", "cos", "tan", "sec", "csc", "cot"})
+
+
+def _degrees_of_a_sine(tokens: list[Token], i: int) -> bool:
+    """Whether the word at i is `deg` right after a sine's (cosine's, …) bracket, `sin(30)deg`: left in
+    the number part, for the math reader to ask about (did you mean sin(30°)?), never a unit."""
+    if tokens[i].text != DEGREE_WORD or i == 0 or tokens[i - 1].kind is not Kind.RPAREN:
+        return False
+    depth = 0
+    for at in range(i - 1, -1, -1):
+        depth += {Kind.RPAREN: 1, Kind.LPAREN: -1}.get(tokens[at].kind, 0)
+        if depth == 0:
+            return at > 0 and FUNCTIONS.get(tokens[at - 1].text) in _TRIGONOMETRIC
+    return False
+
+
 def _opens_units(tokens: list[Token], i: int) -> bool:
     """Whether the `[` at i opens units in square brackets after a number (`9.8 [m/s^2]`, `9.8*[m]`),
     not arithmetic (`2 [pi]`); elsewhere (`[m]`, `2+[m]`) the brackets are refused as before."""
@@ -120,7 +136,11 @@ def _quantities(tokens: list[Token], text: str) -> list[_Quantity]:
                 raise LikelySlip(hint.strip(), token.pos)
             elif depth == 0 and (
                 token.kind is Kind.LPAREN  # `[` opening units: the test above let it through
-                or (token.kind is Kind.WORD and not _is_arithmetic_word(tokens, i))
+                or (
+                    token.kind is Kind.WORD
+                    and not _is_arithmetic_word(tokens, i)
+                    and not _degrees_of_a_sine(tokens, i)
+                )
                 or (token.kind is Kind.POSTFIX and token.text == "°" and not function_seen)
             ):
                 units_start = token.pos

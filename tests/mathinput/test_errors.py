@@ -86,6 +86,10 @@ PARSE_ERRORS = [
     ("cos(x°)", 5, "x is an angle already: leave out the ° after it"),
     ("2 sin x deg", 8, "leave out the deg"),
     ("sin (90-x)°", 10, "put the ° after the numbers alone"),
+    # a degree sign after a sine's bracket, in a calculator's key order: not sin(30 rad)·π/180, as it read
+    ("x sin(30)°", 9, "Did you mean sin(30°)? The ° after sin(30) would turn its value into degrees"),
+    ("x cos(60) deg", 10, "Did you mean cos(60°)? The deg after cos(60)"),
+    ("x tan(15+15)°", 12, "The ° after tan(15+15) would turn its value into degrees: put the ° inside"),
     # A power of ten marked by both ×10 and e: not 3.0×10^9, as it read
     ("3.0×10e8 x", 6, "Did you mean 3.0×10^8 or 3.0e8?"),
     ("2*10E-3 y", 4, "2×10^-3 or 2E-3"),

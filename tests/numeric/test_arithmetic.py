@@ -131,6 +131,10 @@ BLAME = [
     ("tg(30°)*9.81 m/s^2", "m/s^2", Reason.PARSE_ERROR, 0, "Did you mean tan?"),
     ("9.81 ctg(30°) m/s^2", "m/s^2", Reason.PARSE_ERROR, 5, "Did you mean cot? Write cot for ctg"),
     ("9.81*arctg(0.5) m/s^2", "m/s^2", Reason.PARSE_ERROR, 5, "Did you mean atan?"),
+    # a degree sign or deg after a sine's bracket: not a unit, nor sin(30 rad) in degrees, as they read
+    ("9.8*sin(30)° m/s^2", "m/s^2", Reason.PARSE_ERROR, 11, "Did you mean sin(30°)?"),
+    ("9.8 sin(30)deg m/s^2", "m/s^2", Reason.PARSE_ERROR, 11, "Did you mean sin(30°)?"),
+    ("9.8 cos(60) deg m/s^2", "m/s^2", Reason.PARSE_ERROR, 12, "Did you mean cos(60°)?"),
 ]
 
 

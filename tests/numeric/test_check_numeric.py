@@ -141,6 +141,9 @@ VERDICTS = [
     ("huge-exponent", "1e999999 m/s^2", ACCEL, BAD, Reason.TOO_LARGE),
     ("too-long", "4" * 201, ACCEL, BAD, Reason.TOO_LARGE),
     ("too-many-digits", "4." + "5" * 40 + " m/s^2", ACCEL, BAD, Reason.TOO_LARGE),
+    # deg after an inverse sine's bracket is the answer's unit, as typed (a sine's is asked about)
+    ("deg-after-an-inverse-sine", "asin(0.5) deg", NumericSpec(D("30"), "deg"), NO, Reason.CONSTANT_FACTOR),
+    ("sines-degree-sign-outside", "9.8*sin(30)° m/s^2", ACCEL, BAD, Reason.PARSE_ERROR),
 ]
 
 
