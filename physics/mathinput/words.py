@@ -296,9 +296,20 @@ _OTHER_FUNCTION_NAMES = {"tg": "tan", "ctg": "cot", "cotg": "cot", "arctg": "ata
 _OTHER_FUNCTION_WORD = re.compile(r"(arcctg|arctg|cotg|ctg|tg)(?![a-z])")
 
 
+# MATLAB's functions of an angle in degrees (`sind(30)`), and the function to type with a degree sign.
+_DEGREE_FUNCTION_WORD = re.compile(r"(sin|cos|tan|sec|csc|cot)d(?![a-z])")
+
+
 def other_names_hint(word: str) -> str:
-    """A sentence for `tg θ`, `arctg(x)`: a function under its Russian or European name; or "". Never
-    read as the function: t·g where t and g are declared is read so, as before."""
+    """A sentence for `tg θ`, `arctg(x)`: a function under its Russian or European name, or MATLAB's
+    `sind(30)`; or "". Never read as the function: t·g where t and g are declared is read so, as before."""
+    degrees = _DEGREE_FUNCTION_WORD.match(word)
+    if degrees is not None:
+        name = degrees.group(1)
+        return (
+            f" Did you mean {name}? {name}d is MATLAB's {name} of an angle in degrees: type {name}, with a "
+            f"degree sign after a number of degrees, as in {name}(30°) (an angle's symbol needs none)."
+        )
     found = _OTHER_FUNCTION_WORD.match(word)
     if found is None:
         return ""

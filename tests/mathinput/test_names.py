@@ -287,6 +287,27 @@ def test_a_function_under_its_russian_or_european_name_is_refused_naming_the_one
     assert f"Did you mean {meant}? Write {meant} for" in caught.value.message
 
 
+MATLAB_DEGREE_FUNCTIONS = [
+    # (typed, declared, the function to type): MATLAB's functions of degrees, once "Unknown function" alone
+    ("sind(30) x", ("x",), "sin"),
+    ("x cosd(θ)", ("x", "theta"), "cos"),
+    ("x tand θ", ("x", "theta"), "tan"),
+]
+
+
+@pytest.mark.parametrize(
+    ("typed", "declared", "meant"), MATLAB_DEGREE_FUNCTIONS, ids=[c[0] for c in MATLAB_DEGREE_FUNCTIONS]
+)
+def test_matlabs_function_of_degrees_is_refused_naming_the_one_to_type(
+    typed: str, declared: tuple[str, ...], meant: str
+) -> None:
+    with pytest.raises((UnknownFunction, UnknownSymbol)) as caught:
+        read(typed, *declared)
+    assert (
+        f"Did you mean {meant}? {meant}d is MATLAB's {meant} of an angle in degrees" in caught.value.message
+    )
+
+
 def test_tg_of_declared_t_and_g_is_their_product_as_before() -> None:
     assert same(read("v0 - tg", "v0", "t", "g").expr, sym("v0") - sym("t") * sym("g"))
 

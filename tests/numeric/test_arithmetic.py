@@ -131,6 +131,14 @@ BLAME = [
     ("tg(30°)*9.81 m/s^2", "m/s^2", Reason.PARSE_ERROR, 0, "Did you mean tan?"),
     ("9.81 ctg(30°) m/s^2", "m/s^2", Reason.PARSE_ERROR, 5, "Did you mean cot? Write cot for ctg"),
     ("9.81*arctg(0.5) m/s^2", "m/s^2", Reason.PARSE_ERROR, 5, "Did you mean atan?"),
+    (
+        "9.8*sind(30) m/s^2",
+        "m/s^2",
+        Reason.PARSE_ERROR,
+        4,
+        "Did you mean sin? sind is MATLAB's sin of an angle in degrees",
+    ),
+    ("9.8 cosd 60 m/s^2", "m/s^2", Reason.PARSE_ERROR, 4, "as in cos(30°)"),
     # a degree sign or deg after a sine's bracket: not a unit, nor sin(30 rad) in degrees, as they read
     ("9.8*sin(30)° m/s^2", "m/s^2", Reason.PARSE_ERROR, 11, "Did you mean sin(30°)?"),
     ("9.8 sin(30)deg m/s^2", "m/s^2", Reason.PARSE_ERROR, 11, "Did you mean sin(30°)?"),
