@@ -274,6 +274,8 @@ def tokenize(
                 "the problem lists it, without the mark.",
                 i,
             )
+        elif ch in _LONG_DASHES:  # `—mg`: a phone's long dash, or the one `--` turns into; never guessed
+            raise LikelySlip(f"{ch} is a dash, which is not read here: for a minus sign, type -.", i)
         else:
             raise ParseError(f"Unexpected character {text[i]!r}.", i)
         tokens.append(token)
@@ -283,6 +285,11 @@ def tokenize(
     if _MAYBE_POWER_ZERO.search(text):  # the walk over the tokens only where a 0 can be a power
         _refuse_powers_zero_for_degrees(tokens)
     return derivatives_read(tokens) if velocities else tokens
+
+
+# Dashes longer than the en dash that is read as a minus (CHARACTER_VARIANTS): the em dash, the
+# horizontal bar, the figure dash.
+_LONG_DASHES = "—―‒"
 
 
 def _typed_where(token: Token, typed_position: Callable[[int], int]) -> Token:

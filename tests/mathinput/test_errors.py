@@ -86,6 +86,9 @@ PARSE_ERRORS = [
     ("cos(x°)", 5, "x is an angle already: leave out the ° after it"),
     ("2 sin x deg", 8, "leave out the deg"),
     ("sin (90-x)°", 10, "put the ° after the numbers alone"),
+    # a dash longer than the en dash read as a minus: once "Unexpected character"
+    ("—x y", 0, "— is a dash, which is not read here: for a minus sign, type -."),
+    ("x ― y", 2, "for a minus sign, type -"),
     # a degree sign after a sine's bracket, in a calculator's key order: not sin(30 rad)·π/180, as it read
     ("x sin(30)°", 9, "Did you mean sin(30°)? The ° after sin(30) would turn its value into degrees"),
     ("x cos(60) deg", 10, "Did you mean cos(60°)? The deg after cos(60)"),

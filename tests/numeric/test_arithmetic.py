@@ -131,6 +131,7 @@ BLAME = [
     ("tg(30°)*9.81 m/s^2", "m/s^2", Reason.PARSE_ERROR, 0, "Did you mean tan?"),
     ("9.81 ctg(30°) m/s^2", "m/s^2", Reason.PARSE_ERROR, 5, "Did you mean cot? Write cot for ctg"),
     ("9.81*arctg(0.5) m/s^2", "m/s^2", Reason.PARSE_ERROR, 5, "Did you mean atan?"),
+    ("—4.58 m/s^2", "m/s^2", Reason.PARSE_ERROR, 0, "— is a dash"),  # was "must start with a number"
     (
         "9.8*sind(30) m/s^2",
         "m/s^2",
