@@ -12,6 +12,7 @@ argument closes with what the command needs (`\\frac`'s numerator with the `/` a
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, replace
 from fractions import Fraction
 from typing import Literal
@@ -21,6 +22,7 @@ from physics.latex_words import LATEX_FRACTIONS, LATEX_SPACES, LATEX_TEXT_WRAPPE
 from physics.mathinput.tokentypes import Kind, SpelledWord, Token
 from physics.mathinput.vocabulary import (
     FUNCTIONS,
+    GREEK_LETTERS,
     LATEX_BRACKETS,
     LATEX_FUNCTION_COMMANDS,
     LATEX_HINTS,
@@ -295,6 +297,9 @@ class LatexReader:
         return self._text(i + 1, j), j
 
     def _unknown(self, i: int, name: str) -> ParseError:
+        named = _MATHEMATICA_CHARACTER.match(self._text(i, min(self._n, i + _SHOWN_NAME_LENGTH + 3)))
+        if named is not None:  # `Sin[\[Theta]]`, as Mathematica copies a Greek letter as plain text
+            return ParseError(_mathematica_character_message(named.group(), named.group(1)), i)
         shown = name if len(name) <= _SHOWN_NAME_LENGTH else name[:_SHOWN_NAME_LENGTH] + "…"
         hint = LATEX_HINTS.get(name, LATEX_PLAIN_TEXT_HINT)
         # `\sinx`, `\thetat`: TeX reads the letters after a command as part of its name.
@@ -523,3 +528,21 @@ def _bracket(char: str, pos: int, end: int) -> Token:
     if char == "}":
         return Token(Kind.RPAREN, "}", pos, end)
     return Token(_BRACKET_KINDS[char], char, pos, end)
+
+
+# Mathematica's named characters, as its plain text (InputForm) writes them: `\[Theta]`, `\[CapitalOmega]`.
+_MATHEMATICA_CHARACTER = re.compile(r"\\\[([A-Za-z]+)\]")
+_MATHEMATICA_SIGNS = {"Degree": "°", "HBar": "ħ", "Times": "*", "Pi": "π"}
+
+
+def _mathematica_character_message(typed: str, name: str) -> str:
+    r"""What to type for `\[Theta]` (θ or theta), or that Mathematica's named characters are not read."""
+    if name in _MATHEMATICA_SIGNS:
+        return (
+            f"{typed} is Mathematica's name for {_MATHEMATICA_SIGNS[name]}: type {_MATHEMATICA_SIGNS[name]}."
+        )
+    letter = name.removeprefix("Curly")  # `\[CurlyEpsilon]`: the letter's other form
+    letter = letter.removeprefix("Capital") if letter.startswith("Capital") else letter.lower()
+    if letter in GREEK_LETTERS:
+        return f"{typed} is Mathematica's name for {GREEK_LETTERS[letter]}: type {GREEK_LETTERS[letter]} or {letter}."
+    return f"{typed} is a Mathematica character, not read here: type the expression in plain text."

@@ -189,6 +189,12 @@ LATEX_ERRORS = [
     (r"{x \over y \over M}", 11, r"Two \over in one brace: write each fraction as \frac{a}{b}"),
     (r"x \over y \over M", 10, r"Two \over in one brace"),
     (r"x \overline{y}", 2, r"Unknown LaTeX command \overline"),
+    # Mathematica's named characters, as its plain text copies them: once "Unknown LaTeX command \["
+    (r"x sin(\[Theta])", 6, r"\[Theta] is Mathematica's name for θ: type θ or theta."),
+    (r"\[CapitalOmega] x", 0, r"\[CapitalOmega] is Mathematica's name for Ω: type Ω or Omega."),
+    (r"x sin(\[CurlyTheta])", 6, r"\[CurlyTheta] is Mathematica's name for θ"),
+    (r"sin(30 \[Degree]) x", 7, r"\[Degree] is Mathematica's name for °: type °."),
+    (r"x \[Wolf]", 2, r"\[Wolf] is a Mathematica character, not read here"),
 ]
 
 
