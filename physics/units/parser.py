@@ -178,6 +178,9 @@ _DIRECTION_WORDS = frozenset(
     }
 )  # fmt: skip
 
+# How near the value is, said after it as in a sentence (`4.58 m/s^2 approx`): no unit, and never read as one.
+_REMARK_WORDS = frozenset({"approx", "approximately", "about", "roughly", "exactly", "circa"})
+
 # Prefix symbols that are no unit alone, typed apart from the unit they scale (`1.5k N`, `2 M J`).
 _PREFIX_SYMBOLS_ALONE = frozenset({"k", "M"})
 
@@ -381,6 +384,12 @@ class _Parser:
                 raise UnknownUnit(
                     f"Unknown unit {token.text!r}: a direction is not read here; give it by the sign of "
                     "the value (negative for the other way), as the problem sets its axes",
+                    token.position,
+                    token.text,
+                )
+            if token.text.lower() in _REMARK_WORDS:
+                raise UnknownUnit(
+                    f"Unknown unit {token.text!r}: give the value and its units alone, and leave out {token.text}",
                     token.position,
                     token.text,
                 )

@@ -242,6 +242,13 @@ WORDING = [
         "Unknown unit 'downward': a direction is not read here; give it by the sign",
     ),
     ("4.58 m/s^2 (down)", ACCEL, "Unknown unit 'down': a direction is not read here"),
+    # how near the value is, said after it: no unit (was "Unknown unit 'approx'" alone)
+    (
+        "4.58 m/s^2 approx",
+        ACCEL,
+        "Unknown unit 'approx': give the value and its units alone, and leave out approx",
+    ),
+    ("4.58 m/s^2 exactly", ACCEL, "leave out exactly"),
     # a prime or a double prime: minutes and seconds of arc, or feet and inches; named, not guessed
     ("30′", NumericSpec(D("0.5"), "deg"), "a prime is not read as a unit; for minutes of arc write arcmin"),
     (
