@@ -669,6 +669,8 @@ class Parser:
         power: Node | None = None
         tok = self._tokens[self._i]
         if tok.kind is Kind.OP and tok.text in "^":
+            if func == "exp" and self._tokens[self._i + 1].kind is Kind.LPAREN:
+                self._refuse_exp_raised(tok)
             self._advance()
             power = self._function_power(typed)
         elif tok.kind is Kind.SUP:
@@ -689,6 +691,27 @@ class Parser:
         if outside is not None:
             node = Power(node, outside.exponent, outside.pos)
         return Power(node, power, func_tok.pos) if power is not None else node
+
+    def _refuse_exp_raised(self, caret: Token) -> None:
+        """`exp^(-t/τ)`, e's power written with exp's name, as WeBWorK and calculators write e^x: as typed
+        a power of exp waiting for its argument. Refused with the two ways to write it, unless an argument
+        follows the power (`exp^2(x)`, a power of exp)."""
+        depth, at = 0, self._i + 1
+        while True:
+            kind = self._tokens[at].kind
+            depth += {Kind.LPAREN: 1, Kind.RPAREN: -1}.get(kind, 0)
+            if kind is Kind.END:
+                return  # an unclosed bracket: its own refusal says where
+            if depth == 0:
+                break
+            at += 1
+        following = self._tokens[at + 1]
+        if following.kind in (Kind.LPAREN, Kind.NUM, Kind.NAME, Kind.CONST) and not following.space_before:
+            return
+        power = self._source[self._tokens[self._i + 1].pos : self._tokens[at].end]
+        raise ParseError(
+            f"Did you mean e^{power}? Write e's power as e^{power} or exp{power}, not both.", caret.pos
+        )
 
     def _function_power(self, typed: str) -> Node:
         tok = self._tokens[self._i]

@@ -86,6 +86,9 @@ PARSE_ERRORS = [
     ("cos(x°)", 5, "x is an angle already: leave out the ° after it"),
     ("2 sin x deg", 8, "leave out the deg"),
     ("sin (90-x)°", 10, "put the ° after the numbers alone"),
+    # e's power written with exp's name, as WeBWorK and calculators show e^x: once "exp needs an argument"
+    ("y exp^(-x/2)", 5, "Did you mean e^(-x/2)? Write e's power as e^(-x/2) or exp(-x/2), not both."),
+    ("exp^(x)", 3, "Did you mean e^(x)?"),
     # a dash longer than the en dash read as a minus: once "Unexpected character"
     ("—x y", 0, "— is a dash, which is not read here: for a minus sign, type -."),
     ("x ― y", 2, "for a minus sign, type -"),

@@ -110,6 +110,7 @@ CASES = [
     ("2π x", XY, 2 * pi * x),
     ("e", XY, E),
     ("e^x", XY, exp(x)),
+    ("exp^(2)(x)", XY, exp(x) ** 2),  # a power of exp with its argument after it (exp^(x) alone is asked)
     ("2e", XY, 2 * E),
     # degrees
     ("30°", XY, pi / 6),
