@@ -32,6 +32,7 @@ from physics.mathinput.vocabulary import (
     CLOSERS,
     FUNCTIONS,
     GREEK_LETTERS,
+    GREEK_NAMES,
     OPENERS,
     ROOT_SIGNS,
     SUPERSCRIPT_DIGITS,
@@ -274,6 +275,13 @@ def tokenize(
                 "the problem lists it, without the mark.",
                 i,
             )
+        elif ch in _GREEK_LOOKALIKE_SIGNS:  # `sin ∝`: a phone's symbols offer ∝ where α is meant
+            letter = _GREEK_LOOKALIKE_SIGNS[ch]
+            raise ParseError(
+                f"{ch} is the sign for 'proportional to', not read here: for {letter} type {letter} or "
+                f"{GREEK_NAMES[letter]}.",
+                i,
+            )
         elif ch in _LONG_DASHES:  # `—mg`: a phone's long dash, or the one `--` turns into; never guessed
             raise LikelySlip(f"{ch} is a dash, which is not read here: for a minus sign, type -.", i)
         else:
@@ -286,6 +294,9 @@ def tokenize(
         _refuse_powers_zero_for_degrees(tokens)
     return derivatives_read(tokens) if velocities else tokens
 
+
+# Signs that look like a Greek letter, and the letter: ∝ (proportional to) for α.
+_GREEK_LOOKALIKE_SIGNS = {"∝": "α"}
 
 # Dashes longer than the en dash that is read as a minus (CHARACTER_VARIANTS): the em dash, the
 # horizontal bar, the figure dash.

@@ -255,7 +255,7 @@ def _split_tokens(pieces: list[Part | tuple[str, int, int]], tok: Token) -> list
 
 
 # Latin letters students type for a Greek one that looks alike: `wt` for ωt, `u` for μ.
-_STAND_INS = {"w": ("omega", "ω"), "u": ("mu", "μ")}
+_STAND_INS = {"w": ("omega", "ω"), "u": ("mu", "μ"), "a": ("alpha", "α")}
 
 
 # π as a calculator, a spreadsheet (`PI()`) or Mathematica (`Pi`) spells it, and the capital letter

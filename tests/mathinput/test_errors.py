@@ -89,6 +89,8 @@ PARSE_ERRORS = [
     # e's power written with exp's name, as WeBWorK and calculators show e^x: once "exp needs an argument"
     ("y exp^(-x/2)", 5, "Did you mean e^(-x/2)? Write e's power as e^(-x/2) or exp(-x/2), not both."),
     ("exp^(x)", 3, "Did you mean e^(x)?"),
+    # a sign that looks like a Greek letter, offered where the letter is looked for: once "Unexpected character"
+    ("sin ∝", 4, "∝ is the sign for 'proportional to', not read here: for α type α or alpha."),
     # a dash longer than the en dash read as a minus: once "Unexpected character"
     ("—x y", 0, "— is a dash, which is not read here: for a minus sign, type -."),
     ("x ― y", 2, "for a minus sign, type -"),

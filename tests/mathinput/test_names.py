@@ -168,6 +168,7 @@ SLIP_HINTS = [
     ("wt", ("omega", "t"), STAND_IN, "If w stands for ω, type omega or ω."),
     ("A cos(w0 t)", ("A", "omega_0", "t"), STAND_IN, "If w stands for ω, type omega or ω."),
     ("u g", ("mu", "g"), STAND_IN, "If u stands for μ, type mu or μ."),
+    ("g sina", ("alpha", "g"), STAND_IN, "If a stands for α, type alpha or α."),  # a keyboard without Greek
     ("wt", ("w", "omega", "x"), STAND_IN, None),  # w is declared: the unknown word is something else
     ("wt", ("theta", "t"), STAND_IN, None),  # no omega to mean
     ("mu g", ("mu_k", "g"), STAND_IN, None),  # mu is spelled out: its u stands for nothing
