@@ -633,6 +633,13 @@ class Parser:
     def _bracketed(self) -> Node:
         opening = self._advance()
         if self._tokens[self._i].kind is Kind.RPAREN:
+            before = self._tokens[self._i - 2] if self._i >= 2 else None
+            if before is not None and before.kind is Kind.CONST and before.text == "pi":
+                # `2*pi()`, as a spreadsheet writes π (`PI()`): a number, with no brackets
+                raise ParseError(
+                    f"π is a number, not a function: type {self._typed(before)} without the brackets.",
+                    opening.pos,
+                )
             raise ParseError("Empty brackets: write something inside them.", opening.pos)
         saved, self._abs_depth = self._abs_depth, 0
         inner = self._sum()

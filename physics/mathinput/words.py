@@ -116,7 +116,7 @@ def resolve_words(tokens: list[Token], table: NameTable) -> list[Token]:
             f'Unknown symbol "{word}". Symbols you can use: {listed} (and {constants}).'
             + _greek_stand_in_hint(word, allowed)
             + _letter_o_hint(word, allowed, table)
-            + _capital_pi_hint(word)
+            + capital_pi_hint(word)
             + _spaced_name_hint(word, nxt, table)
             + _lookalike_hint(word, table)
             + glued_angle_hint(word)
@@ -262,7 +262,7 @@ _STAND_INS = {"w": ("omega", "ω"), "u": ("mu", "μ"), "a": ("alpha", "α")}
 _CAPITAL_PIS = frozenset({"PI", "Pi", "pI", "Π"})
 
 
-def _capital_pi_hint(word: str) -> str:
+def capital_pi_hint(word: str) -> str:
     """A sentence for `PI`, `Pi`, `Π` (not declared, or the word would be read), or ""."""
     if word in _CAPITAL_PIS or (word[:2] in _CAPITAL_PIS and len(word) > 2) or word[:1] == "Π":
         return " If you mean the number π, type pi or π (in small letters)."

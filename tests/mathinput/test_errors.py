@@ -91,6 +91,9 @@ PARSE_ERRORS = [
     ("exp^(x)", 3, "Did you mean e^(x)?"),
     # a sign that looks like a Greek letter, offered where the letter is looked for: once "Unexpected character"
     ("sin ∝", 4, "∝ is the sign for 'proportional to', not read here: for α type α or alpha."),
+    # π with a spreadsheet's brackets, PI(): once "Empty brackets"
+    ("2 pi() x", 4, "π is a number, not a function: type pi without the brackets."),
+    ("2π() x", 2, "type π without the brackets"),
     # a dash longer than the en dash read as a minus: once "Unexpected character"
     ("—x y", 0, "— is a dash, which is not read here: for a minus sign, type -."),
     ("x ― y", 2, "for a minus sign, type -"),

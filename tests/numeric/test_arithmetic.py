@@ -47,6 +47,7 @@ ARITHMETIC = [
     ("3.0 × 10 - 3 s", "27", "s", "3.0*10 - 3 s"),  # spaced round: a subtraction, not ×10^-3
     ("-3/2 N", "-1.5", "N", "-3/2 N"),
     ("50%", "0.5", None, "50%"),
+    ("2*5 Pint/min", "10", "pint/min", "2*5 pt/min"),  # a unit in capitals, not π (PI, Pi are asked about)
 ]
 
 
@@ -131,7 +132,26 @@ BLAME = [
     ("tg(30°)*9.81 m/s^2", "m/s^2", Reason.PARSE_ERROR, 0, "Did you mean tan?"),
     ("9.81 ctg(30°) m/s^2", "m/s^2", Reason.PARSE_ERROR, 5, "Did you mean cot? Write cot for ctg"),
     ("9.81*arctg(0.5) m/s^2", "m/s^2", Reason.PARSE_ERROR, 5, "Did you mean atan?"),
-    ("—4.58 m/s^2", "m/s^2", Reason.PARSE_ERROR, 0, "— is a dash"),  # was "must start with a number"
+    ("—4.58 m/s^2", "m/s^2", Reason.PARSE_ERROR, 0, "— is a dash"),
+    # a function or π in capitals, as caps lock, a phone or a spreadsheet types them: never units
+    ("2*PI()*sqrt(2) m/s^2", "m/s^2", Reason.PARSE_ERROR, 2, "If you mean the number π, type pi or π"),
+    ("2*Pi*sqrt(2) m/s^2", "m/s^2", Reason.PARSE_ERROR, 2, "type pi or π (in small letters)"),
+    ("2*pi()*sqrt(2) m/s^2", "m/s^2", Reason.PARSE_ERROR, 4, "π is a number, not a function"),
+    (
+        "SQRT(21) m/s^2",
+        "m/s^2",
+        Reason.PARSE_ERROR,
+        0,
+        "Did you mean sqrt? Function names are in small letters.",
+    ),
+    ("9.8*Sin(30°) m/s^2", "m/s^2", Reason.PARSE_ERROR, 4, "Did you mean sin?"),
+    (
+        "9.8 SIN 30° m/s^2",
+        "m/s^2",
+        Reason.PARSE_ERROR,
+        4,
+        "Did you mean sin?",
+    ),  # was "must start with a number"
     (
         "9.8*sind(30) m/s^2",
         "m/s^2",
