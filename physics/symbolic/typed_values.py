@@ -153,11 +153,17 @@ def typed_value_hint(
 
 def with_units_hint(error: AnswerError, answer: str, expected: Dimension | None) -> AnswerError:
     """An unknown symbol where the rest of the answer reads as units of the expected dimension
-    (`m g sin θ N`, `… kg m/s^2` for a force): the refusal says that a symbolic answer is written
-    without units. (`… T` for a force is not taken for the tesla: a T may be a tension.)"""
-    if not isinstance(error, UnknownSymbol) or error.position is None or expected is None:
+    (`m g sin θ N`, `… kg m/s^2` for a force, `… \\mathrm{kg\\,m/s^2}`): the refusal says that a symbolic
+    answer is written without units. (`… T` for a force is not taken for the tesla: a T may be a tension.)"""
+    if error.position is None or expected is None:
         return error
-    units = shown = answer[error.position :].strip()
+    if isinstance(error, UnknownSymbol):
+        start = error.position
+    else:  # `… \mathrm{rad/s}`: units in a LaTeX font command, refused inside its braces
+        start = max(answer.rfind("\\mathrm{", 0, error.position), answer.rfind("\\text{", 0, error.position))
+        if start < 0:
+            return error
+    units = shown = answer[start:].strip()
     if units.endswith(")") and answer[: error.position].rstrip().endswith("("):  # `m g h (J)`
         units = units[:-1].rstrip()
         shown = f"({units})"
@@ -167,5 +173,9 @@ def with_units_hint(error: AnswerError, answer: str, expected: Dimension | None)
         return error
     if dimension != expected:
         return error
-    error.message += f" A symbolic answer is written without units: leave out {shown}."
+    leave_out = f"A symbolic answer is written without units: leave out {shown}."
+    if isinstance(error, UnknownSymbol):
+        error.message += f" {leave_out}"
+    else:  # the font command's own complaint (a name only) is beside the point
+        error.message, error.position = leave_out, start
     return error

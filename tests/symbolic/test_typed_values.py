@@ -175,3 +175,28 @@ def test_units_after_a_symbolic_answer_are_refused_with_the_advice_to_leave_them
         assert advice not in verdict.feedback
     else:
         assert f"{advice} {units}." in verdict.feedback
+
+
+LATEX_UNITS = [
+    # (answer, the refusal's message): units in a LaTeX font command, once "\mathrm{…} may only hold a name"
+    (
+        r"mg\sin\theta\,\mathrm{kg\,m/s^2}",
+        r"A symbolic answer is written without units: leave out \mathrm{kg\,m/s^2}.",
+    ),
+    (
+        r"mg\sin\theta\ \text{kg m/s^2}",
+        r"A symbolic answer is written without units: leave out \text{kg m/s^2}.",
+    ),
+    (r"mg\sin\theta\ \mathrm{J/m^2}", r"\mathrm{…} may only hold a name here"),  # no force: as before
+]
+
+
+@pytest.mark.parametrize(("answer", "message"), LATEX_UNITS, ids=[c[0] for c in LATEX_UNITS])
+def test_latex_units_after_a_symbolic_answer_are_refused_with_the_advice_to_leave_them_out(
+    answer: str, message: str
+) -> None:
+    verdict = run_job(SymbolicJob(answer, WEIGHT_ALONG, SLOPE))
+    assert verdict.outcome is Outcome.INVALID  # no attempt used
+    assert verdict.reason is Reason.PARSE_ERROR
+    assert verdict.error is not None
+    assert message in verdict.error.message
