@@ -207,7 +207,10 @@ def _scientific(text: str, i: int, start: int) -> tuple[int, int] | None:
     if (
         times_end is None and j > i and text.startswith("10", j)
     ):  # `4.58 10^3`: a calculator's, its × left out
-        return _power_of_ten(text, j + 2)
+        found = _power_of_ten(text, j + 2)
+        if found is None:
+            _refuse_calculator_exponent(text, j + 2)  # `4.58 10-3`: its ^ left out too
+        return found
     if times_end is not None:
         k = skip_spaces(text, times_end)
         if text.startswith("10", k):

@@ -218,6 +218,8 @@ REFUSED = [
     ("3.0*10-3 s", ParseError, 6, "×10^-3"),
     ("3.0 · 10−12 s", ParseError, 8, "×10^-12"),
     ("3.0 x 10-3", ParseError, 8, "×10^-3"),
+    ("4.58 10-3 m", ParseError, 7, "Did you mean ×10^-3?"),  # its × left out too: was "two numbers"
+    ("4.58 10−12 m", ParseError, 7, "×10^-12"),
     # A power of ten typed apart from its number: not a unit E to the power −19
     ("1.6 E-19 C", ParseError, 4, "Did you mean 1.6E-19?"),
     ("3.0 e8 m/s", ParseError, 4, "Did you mean 3.0e8?"),
