@@ -243,6 +243,19 @@ def tokenize(
         elif ch == "." and tokens and not "".join(chars[i + 1 :]).strip():
             i += 1  # the full stop of a sentence: `√(2gh).`, as a numeric answer's `4.58 m/s^2.`
             continue
+        elif ch == "." and i + 1 < n and chars[i + 1] in _ELEMENTWISE:  # MATLAB's `v.^2`, `m.*g`, `a./b`
+            op = chars[i + 1]
+            raise LikelySlip(
+                f"Did you mean {op}? .{op} is MATLAB's element-wise {_ELEMENTWISE[op]}: type {op} alone.", i
+            )
+        elif (
+            ch == "." and tokens and tokens[-1].text in _CODE_MODULES and i + 1 < n and chars[i + 1].isalpha()
+        ):
+            # `np.sqrt(2*g*h)`, `math.pi`: a name as Python code writes it
+            module = tokens[-1].text
+            raise LikelySlip(
+                f"Leave out {module}.: type the function or constant alone, as in sqrt(x) or pi.", i
+            )
         elif (
             ch == "."
             and tokens
@@ -294,6 +307,11 @@ def tokenize(
         _refuse_powers_zero_for_degrees(tokens)
     return derivatives_read(tokens) if velocities else tokens
 
+
+# MATLAB's element-wise operators, `.^`, `.*`, `./`: each the operator after its dot.
+_ELEMENTWISE = {"^": "power", "*": "product", "/": "division"}
+# Modules whose functions Python code names with the module: `np.sqrt`, `math.pi`.
+_CODE_MODULES = frozenset({"np", "numpy", "math", "cmath", "sp", "sympy", "scipy"})
 
 # Signs that look like a Greek letter, and the letter: ∝ (proportional to) for α.
 _GREEK_LOOKALIKE_SIGNS = {"∝": "α"}

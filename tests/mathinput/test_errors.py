@@ -94,6 +94,13 @@ PARSE_ERRORS = [
     # π with a spreadsheet's brackets, PI(): once "Empty brackets"
     ("2 pi() x", 4, "π is a number, not a function: type pi without the brackets."),
     ("2π() x", 2, "type π without the brackets"),
+    # MATLAB's element-wise operators and Python's module names, as code copied into an answer types them:
+    # once "Unexpected character '.'" and "Write a product with * or a space, not '.'"
+    ("x*y.^2", 3, "Did you mean ^? .^ is MATLAB's element-wise power: type ^ alone."),
+    ("x.*y", 1, "Did you mean *? .* is MATLAB's element-wise product"),
+    ("(x+y)./2", 5, "Did you mean /? ./ is MATLAB's element-wise division"),
+    ("np.sqrt(x)", 2, "Leave out np.: type the function or constant alone, as in sqrt(x) or pi."),
+    ("2*math.pi*x", 6, "Leave out math."),
     # a dash longer than the en dash read as a minus: once "Unexpected character"
     ("—x y", 0, "— is a dash, which is not read here: for a minus sign, type -."),
     ("x ― y", 2, "for a minus sign, type -"),

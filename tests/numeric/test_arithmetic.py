@@ -133,6 +133,8 @@ BLAME = [
     ("9.81 ctg(30°) m/s^2", "m/s^2", Reason.PARSE_ERROR, 5, "Did you mean cot? Write cot for ctg"),
     ("9.81*arctg(0.5) m/s^2", "m/s^2", Reason.PARSE_ERROR, 5, "Did you mean atan?"),
     ("—4.58 m/s^2", "m/s^2", Reason.PARSE_ERROR, 0, "— is a dash"),
+    ("np.sqrt(21) m/s^2", "m/s^2", Reason.PARSE_ERROR, 2, "Leave out np."),  # was "must start with a number"
+    ("sqrt(2*9.8.*1) m/s^2", "m/s^2", Reason.PARSE_ERROR, 10, "Did you mean *? .* is MATLAB's element-wise"),
     # a function or π in capitals, as caps lock, a phone or a spreadsheet types them: never units
     ("2*PI()*sqrt(2) m/s^2", "m/s^2", Reason.PARSE_ERROR, 2, "If you mean the number π, type pi or π"),
     ("2*Pi*sqrt(2) m/s^2", "m/s^2", Reason.PARSE_ERROR, 2, "type pi or π (in small letters)"),
