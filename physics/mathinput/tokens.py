@@ -386,7 +386,16 @@ def _refuse_powers_zero_for_degrees(tokens: list[Token]) -> None:
 
 
 # Two-argument functions students know from programming or calculators, and how the answer writes them.
-_TWO_ARGUMENTS = {"atan2": "the angle as atan(y/x)", "arctan2": "the angle as atan(y/x)"}
+_TWO_ARGUMENTS = {
+    "atan2": "the angle as atan(y/x)",
+    "arctan2": "the angle as atan(y/x)",
+    # a power or a root as code and spreadsheets write it: `pow(x, 2)`, `POWER(x, 0.5)`, `nthroot(x, 3)`
+    "pow": "a power with ^, as x^2 or x^(1/2)",
+    "power": "a power with ^, as x^2 or x^(1/2)",
+    "nthroot": "a root as a power, as x^(1/3), or with sqrt(x)",
+    "root": "a root as a power, as x^(1/3), or with sqrt(x)",
+    "surd": "a root as a power, as x^(1/3), or with sqrt(x)",
+}
 
 
 def _comma_message(before: list[Token]) -> str:

@@ -42,6 +42,9 @@ PARSE_ERRORS = [
     ("x, y", 1, "Commas are not used in answers: give one expression"),
     ("(x, y)", 2, "not a pair or a list"),
     ("atan2(y, x)", 7, "a function of several arguments cannot be written; write the angle as atan(y/x)."),
+    ("pow(x, 2)", 5, "cannot be written; write a power with ^, as x^2 or x^(1/2)."),  # code's power
+    ("POWER(x, 0.5)", 7, "write a power with ^"),  # a spreadsheet's
+    ("nthroot(x, 3)", 9, "write a root as a power, as x^(1/3), or with sqrt(x)."),  # MATLAB's
     ("2 max(x, (y + 1), y)", 7, "a function of several arguments cannot be written."),
     ("sin(x, y)", 5, "sin(…) takes one argument."),
     ("sin(x) (y, x)", 9, "not a pair or a list"),
