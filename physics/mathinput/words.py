@@ -291,9 +291,12 @@ def _spaced_name_hint(word: str, nxt: Token, table: NameTable) -> str:
     return f" If {word} {nxt.text} is {word}{nxt.text}, type it without the space."
 
 
-# Names of functions that Russian and some European textbooks use, and the name to type for each.
-_OTHER_FUNCTION_NAMES = {"tg": "tan", "ctg": "cot", "cotg": "cot", "arctg": "atan", "arcctg": "acot"}
-_OTHER_FUNCTION_WORD = re.compile(r"(arcctg|arctg|cotg|ctg|tg)(?![a-z])")
+# Names of functions that Russian and some European textbooks use (and ISO 80000-2's lg, the common
+# logarithm), and the name to type for each.
+_OTHER_FUNCTION_NAMES = {
+    "tg": "tan", "ctg": "cot", "cotg": "cot", "arctg": "atan", "arcctg": "acot", "lg": "log10",
+}  # fmt: skip
+_OTHER_FUNCTION_WORD = re.compile(r"(arcctg|arctg|cotg|ctg|tg|lg)(?![a-z])")
 
 
 # MATLAB's functions of an angle in degrees (`sind(30)`), and the function to type with a degree sign.

@@ -274,6 +274,7 @@ OTHER_FUNCTION_NAMES = [
     ("arctg(x)", ("x",), "atan"),
     ("arcctg x", ("x",), "acot"),
     ("m g tgθ", ("m", "g", "theta"), "tan"),
+    ("τ lg(2)", ("tau",), "log10"),  # ISO 80000-2's common logarithm
 ]
 
 
@@ -311,6 +312,10 @@ def test_matlabs_function_of_degrees_is_refused_naming_the_one_to_type(
 
 def test_tg_of_declared_t_and_g_is_their_product_as_before() -> None:
     assert same(read("v0 - tg", "v0", "t", "g").expr, sym("v0") - sym("t") * sym("g"))
+
+
+def test_lg_of_declared_l_and_g_is_their_product() -> None:
+    assert same(read("lg", "l", "g").expr, sym("l") * sym("g"))
 
 
 def test_declared_name_before_a_bracket_is_multiplication():

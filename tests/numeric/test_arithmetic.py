@@ -132,6 +132,7 @@ BLAME = [
     ("tg(30°)*9.81 m/s^2", "m/s^2", Reason.PARSE_ERROR, 0, "Did you mean tan?"),
     ("9.81 ctg(30°) m/s^2", "m/s^2", Reason.PARSE_ERROR, 5, "Did you mean cot? Write cot for ctg"),
     ("9.81*arctg(0.5) m/s^2", "m/s^2", Reason.PARSE_ERROR, 5, "Did you mean atan?"),
+    ("10*lg(2) m/s^2", "m/s^2", Reason.PARSE_ERROR, 3, "Did you mean log10? Write log10 for lg"),
     ("—4.58 m/s^2", "m/s^2", Reason.PARSE_ERROR, 0, "— is a dash"),
     ("np.sqrt(21) m/s^2", "m/s^2", Reason.PARSE_ERROR, 2, "Leave out np."),  # was "must start with a number"
     ("sqrt(2*9.8.*1) m/s^2", "m/s^2", Reason.PARSE_ERROR, 10, "Did you mean *? .* is MATLAB's element-wise"),
