@@ -395,6 +395,28 @@ def _in_threes(whole: str, fraction: str, *, point: bool) -> str:
     return " ".join(groups) + ("." + after if point else "")
 
 
+def _refuse_raised_point(text: str, integer_digits: str, at: int) -> None:
+    """LikelySlip for `4·58`: a raised dot between whole numbers is a decimal point in British print and
+    a product elsewhere, so asked, naming both. A power of ten (`2·10^3`) or a decimal after the dot
+    (`2·9.8`) says it is a product."""
+    if not text.startswith("·", at):
+        return
+    end = _run(text, at + 1, _DIGITS)
+    after = text[at + 1 : end]
+    if (
+        not after
+        or text[end : end + 1] in (".", ",")
+        or (after == "10" and _power_of_ten(text, end) is not None)
+    ):
+        return
+    raise LikelySlip(
+        f"Did you mean {integer_digits}.{after} or {integer_digits}×{after}? A raised dot between digits is a "
+        f"decimal point in British print and a product elsewhere: write {integer_digits}.{after} for the "
+        f"decimal, or {integer_digits}*{after} for the product",
+        at,
+    )
+
+
 def _decimal_comma(text: str, integer_digits: str, at: int, *, grouped: bool) -> bool:
     """Whether a comma at `at` is a decimal comma, as much of Europe types one (`4,58`): digits both
     sides, the number's only comma, and not a possible thousands separator (`1,500` is asked about)."""
@@ -464,6 +486,8 @@ def read_number(text: str, start: int = 0) -> NumberLiteral:
         raise ParseError(f"Write a number without separators: 1500, not 1{text[i]}500", i)
     if i < len(text) and text[i] == "." and i + 1 < len(text) and text[i + 1] in _DIGITS:
         raise ParseError("A number has at most one decimal point", i)
+    if not has_point and integer_digits:
+        _refuse_raised_point(text, integer_digits, i)
     exponent: int | None = None
     if not has_point and integer_digits == "10" and not negative:
         # A bare power of ten, `10^3`, is 1×10^3.

@@ -31,6 +31,7 @@ ARITHMETIC = [
     ("⅔ m", "0.666667", "m", "2/3 m"),
     ("⁵⁄₇ m", "0.714286", "m", "5/7 m"),  # raised over lowered digits: was "Unexpected '⁵'"
     ("2*9.8 m/s^2", "19.6", "m/s^2", "2*9.8 m/s^2"),
+    ("2·9.8 m/s^2", "19.6", "m/s^2", "2*9.8 m/s^2"),  # a raised dot before a decimal: a product
     ("9.81*m/s^2", "9.81", "m/s^2", "9.81 m/s^2"),
     ("4.58·m/s^2", "4.58", "m/s^2", "4.58 m/s^2"),
     ("4.58 * m/s^2", "4.58", "m/s^2", "4.58 m/s^2"),

@@ -33,6 +33,7 @@ VALUES = [
     ("4.58*10^3", F(4580)),
     ("4.58*10**3", F(4580)),
     ("4.58·10⁻³", F("0.00458")),
+    ("2·10^3", F(2000)),  # a raised dot before a power of ten is a product, as ×
     ("4.58⋅10³", F(4580)),
     ("4.58×10^-3", F("0.00458")),
     ("4.58×10^(-3)", F("0.00458")),
@@ -218,6 +219,9 @@ REFUSED = [
     ("3.0*10-3 s", ParseError, 6, "×10^-3"),
     ("3.0 · 10−12 s", ParseError, 8, "×10^-12"),
     ("3.0 x 10-3", ParseError, 8, "×10^-3"),
+    # a raised dot between whole numbers, British print's decimal point or a product: was read as 4×58
+    ("4·58 N", ParseError, 1, "Did you mean 4.58 or 4×58? A raised dot between digits is a decimal point"),
+    ("12·5", ParseError, 2, "Did you mean 12.5 or 12×5?"),
     ("4.58 10-3 m", ParseError, 7, "Did you mean ×10^-3?"),  # its × left out too: was "two numbers"
     ("4.58 10−12 m", ParseError, 7, "×10^-12"),
     # A power of ten typed apart from its number: not a unit E to the power −19
