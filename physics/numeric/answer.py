@@ -14,9 +14,10 @@ from fractions import Fraction
 
 from physics.characters import fullwidth_as_ascii, may_be_wrapped, without_math_delimiters, without_zero_width
 from physics.dimensions import Dimension
-from physics.errors import AnswerError, LikelySlip, ParseError, TooLarge
+from physics.errors import AnswerError, LikelySlip, ParseError, TooLarge, UnknownUnit
 from physics.numeric.literal import NumberLiteral, read_number, side_by_side, units_start
 from physics.units import ParsedUnits, UnitReading, read_units
+from physics.units.cyrillic import cyrillic_units_hint
 from physics.verdict import ReadAs
 from physics.wording import TRAILING_SEMICOLON
 
@@ -170,6 +171,8 @@ def read_units_at(unit_text: str, start: int, expected: Dimension | None) -> Uni
     except AnswerError as error:
         if error.position is not None:
             error.position += start
+        if isinstance(error, UnknownUnit) and (hint := cyrillic_units_hint(unit_text, expected)):
+            error.message += hint  # `4.58 м/с²`: SI's units as a Russian school writes them
         raise
 
 
