@@ -46,8 +46,18 @@ INVISIBLE_GAPS: Final = MappingProxyType({"\u2061": " ", "\u2062": " "})
 # Dots and stars typed for a product: the bullet operator, the bullet (option-8 on a Mac keyboard), and
 # the asterisk operator (Word's symbol menu), as the middle dot and the asterisk they look like.
 TIMES_LOOKALIKES: Final = MappingProxyType({"∙": "·", "•": "·", "∗": "*"})
+# The digits of Arabic script, as an Arabic (U+0660…) or Persian (U+06F0…) keyboard types them, and its
+# decimal separator and thousands separator: the same digits and marks (`٤٫٥٨` is 4.58).
+ARABIC_DIGITS: Final = MappingProxyType(
+    {
+        **{chr(0x0660 + digit): str(digit) for digit in range(10)},
+        **{chr(0x06F0 + digit): str(digit) for digit in range(10)},
+        "٫": ".",
+        "٬": ",",
+    }
+)
 _PLAIN: Final = MappingProxyType(
-    {**FULLWIDTH, **DEGREE_LOOKALIKES, **MATH_LETTERS, **INVISIBLE_GAPS, **TIMES_LOOKALIKES}
+    {**FULLWIDTH, **DEGREE_LOOKALIKES, **MATH_LETTERS, **INVISIBLE_GAPS, **TIMES_LOOKALIKES, **ARABIC_DIGITS}
 )
 
 # Characters that show nothing and mean nothing in an answer: zero-width space, non-joiner and joiner,
@@ -91,8 +101,9 @@ def lookalike_hint(word: str) -> str:
 
 
 def fullwidth_as_ascii(text: str) -> str:
-    """The text with fullwidth forms as ASCII, the degree sign's and the times signs' look-alikes as
-    those signs, mathematical letters as plain ones, and Word's invisible operators as spaces."""
+    """The text with fullwidth forms and Arabic script's digits as ASCII, the degree sign's and the times
+    signs' look-alikes as those signs, mathematical letters as plain ones, and Word's invisible operators
+    as spaces."""
     if text.isascii():
         return text
     return "".join(_PLAIN.get(ch, ch) for ch in text)

@@ -8,7 +8,7 @@ from __future__ import annotations
 from types import MappingProxyType
 from typing import Final
 
-from physics.characters import DEGREE_LOOKALIKES, FULLWIDTH, INVISIBLE_GAPS, MATH_LETTERS
+from physics.characters import ARABIC_DIGITS, DEGREE_LOOKALIKES, FULLWIDTH, INVISIBLE_GAPS, MATH_LETTERS
 
 GREEK_LETTERS: Final = MappingProxyType(
     {
@@ -39,6 +39,7 @@ CHARACTER_VARIANTS: Final = MappingProxyType(
         "₀": "0", "₁": "1", "₂": "2", "₃": "3", "₄": "4", "₅": "5", "₆": "6", "₇": "7", "₈": "8", "₉": "9",
         "ℏ": "ħ",  # the Planck constant sign, as the letter ħ
         **FULLWIDTH,  # from East Asian input methods
+        **ARABIC_DIGITS,  # ٤٫٥ from an Arabic or Persian keyboard
         **DEGREE_LOOKALIKES,  # 30º, 30˚
         **MATH_LETTERS,  # 𝑚𝑔ℎ, 𝜃: an equation copied from Word or a PDF
         **INVISIBLE_GAPS,  # sin⁡θ as Word copies it: function application, invisible times

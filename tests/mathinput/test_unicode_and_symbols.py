@@ -79,6 +79,7 @@ TEXTBOOK = [
     ("［m+M］g", ("m", "M", "g"), (sym("m") + sym("M")) * sym("g")),
     ("｛m+M｝g", ("m", "M", "g"), (sym("m") + sym("M")) * sym("g")),
     ("２m＊g", ("m", "g"), 2 * sym("m") * sym("g")),
+    ("٢m g", ("m", "g"), 2 * sym("m") * sym("g")),  # an Arabic keyboard's digit
     (
         "ｍ ｇ ｓｉｎ（θ）",
         ("m", "g", "theta"),

@@ -60,6 +60,8 @@ VERDICTS = [
     ("fullwidth-units", "4.58 ｍ／ｓ＾２", ACCEL, OK, Reason.EQUIVALENT),  # East Asian input methods
     ("fullwidth-number", "４．５８ m/s^2", ACCEL, OK, Reason.EQUIVALENT),
     ("fullwidth-brackets", "4.58 ［m/s^2］", ACCEL, OK, Reason.EQUIVALENT),
+    ("arabic-digits", "٤٫٥٨ m/s^2", ACCEL, OK, Reason.EQUIVALENT),  # an Arabic keyboard's digits and point
+    ("persian-digits", "۴٫۵۸ m/s^2", ACCEL, OK, Reason.EQUIVALENT),
     ("math-italic-units", "4.58 𝑚/𝑠^2", ACCEL, OK, Reason.EQUIVALENT),  # copied from Word
     ("math-bold-digits", "𝟒.𝟓𝟖 m/s^2", ACCEL, OK, Reason.EQUIVALENT),
     ("invisible-times-units", "4.58 m\u2062s^-2", ACCEL, OK, Reason.EQUIVALENT),
