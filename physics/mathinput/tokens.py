@@ -280,6 +280,8 @@ def tokenize(
             )
         elif ch in "=≈":  # `a = g sin θ`, `≈ 2g`, as written on paper
             raise ParseError(f"Give the expression alone, without '{ch}' (nor the name before it).", i)
+        elif ch == ":":  # `a: m*g`, Maxima's assignment; `Answer: 2g`, as a sentence introduces it
+            raise ParseError("Give the expression alone, without ':' (nor what comes before it).", i)
         elif unicodedata.combining(ch) and tokens and tokens[-1].kind is Kind.WORD and not space:
             # `v⃗`, `v̄`, `x̂`: a mark set over a letter, as a vector or a mean is written on paper (a dot is
             # a velocity only where a part asks for one: velocities.py)

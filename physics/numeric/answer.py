@@ -125,13 +125,17 @@ def _approximation(text: str) -> ParseError | None:
 
 
 def _no_number_first(text: str, otherwise: AnswerError | None = None) -> AnswerError:
-    """Why an answer that does not start with a number is refused: an equation (`a = 4.58 m/s^2`) or
-    an approximation sign (`≈ 4.58`) is named, as students write them on paper; else `otherwise`."""
+    """Why an answer that does not start with a number is refused: an equation (`a = 4.58 m/s^2`), a
+    label (`a: 4.58 m/s^2`) or an approximation sign (`≈ 4.58`) is named, as students write them on
+    paper; else `otherwise`."""
     equals = text.find("=")
     if equals >= 0:
         return ParseError(
             "Give the value alone, without a name and '=': write what comes after the '='", equals
         )
+    colon = text.find(":")
+    if colon >= 0:  # `a: 4.58 m/s^2`, Maxima's assignment; `Answer: 4.58 m/s^2`, a sentence's
+        return ParseError("Give the value alone: write what comes after the ':'", colon)
     return (
         _approximation(text)
         or otherwise

@@ -104,6 +104,9 @@ PARSE_ERRORS = [
     ("(x+y)./2", 5, "Did you mean /? ./ is MATLAB's element-wise division"),
     ("np.sqrt(x)", 2, "Leave out np.: type the function or constant alone, as in sqrt(x) or pi."),
     ("2*math.pi*x", 6, "Leave out math."),
+    # a label before the expression, Maxima's assignment: once "Unexpected character ':'"
+    ("a: x y", 1, "Give the expression alone, without ':' (nor what comes before it)."),
+    ("f(x) := x y", 5, "without ':'"),
     # a dash longer than the en dash read as a minus: once "Unexpected character"
     ("—x y", 0, "— is a dash, which is not read here: for a minus sign, type -."),
     ("x ― y", 2, "for a minus sign, type -"),

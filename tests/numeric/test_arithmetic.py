@@ -135,6 +135,9 @@ BLAME = [
     ("9.81*arctg(0.5) m/s^2", "m/s^2", Reason.PARSE_ERROR, 5, "Did you mean atan?"),
     ("10*lg(2) m/s^2", "m/s^2", Reason.PARSE_ERROR, 3, "Did you mean log10? Write log10 for lg"),
     ("—4.58 m/s^2", "m/s^2", Reason.PARSE_ERROR, 0, "— is a dash"),
+    # a label before the value, Maxima's assignment or a sentence's: was "must start with a number"
+    ("a: 4.58 m/s^2", "m/s^2", Reason.PARSE_ERROR, 1, "Give the value alone: write what comes after the ':'"),
+    ("Answer: 4.58 m/s^2", "m/s^2", Reason.PARSE_ERROR, 6, "write what comes after the ':'"),
     ("np.sqrt(21) m/s^2", "m/s^2", Reason.PARSE_ERROR, 2, "Leave out np."),  # was "must start with a number"
     ("sqrt(2*9.8.*1) m/s^2", "m/s^2", Reason.PARSE_ERROR, 10, "Did you mean *? .* is MATLAB's element-wise"),
     # a function or π in capitals, as caps lock, a phone or a spreadsheet types them: never units
