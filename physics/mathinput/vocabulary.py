@@ -190,6 +190,10 @@ LATEX_HINTS: Final = MappingProxyType(
             ("int", "iint", "oint", "sum", "prod", "lim", "partial", "nabla", "infty"),
             _WORK_IT_OUT,
         ),
+        **dict.fromkeys(  # siunitx's quantities, `\SI{4.58}{m/s^2}`, as a LaTeX-writing student sets them
+            ("SI", "qty", "num", "si", "unit"),
+            "type the value and its units in plain text, as in 4.58 m/s^2 (siunitx's commands are not read)",
+        ),
         "pm": "give one answer, with its sign", "mp": "give one answer, with its sign",
         "circ": "write degrees as 30^\\circ or 30°",
         "ell": "type the name the problem uses for it (l or L)",
