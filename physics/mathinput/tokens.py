@@ -297,6 +297,8 @@ def tokenize(
                 f"{GREEK_NAMES[letter]}.",
                 i,
             )
+        elif ch in _OPENING_QUOTES and not tokens:  # `"m*g"`, as an instruction quoted how to type it
+            raise LikelySlip("Leave out the quotation marks: type the answer alone.", i)
         elif ch in _LONG_DASHES:  # `—mg`: a phone's long dash, or the one `--` turns into; never guessed
             raise LikelySlip(f"{ch} is a dash, which is not read here: for a minus sign, type -.", i)
         else:
@@ -317,6 +319,9 @@ _CODE_MODULES = frozenset({"np", "numpy", "math", "cmath", "sp", "sympy", "scipy
 
 # Signs that look like a Greek letter, and the letter: ∝ (proportional to) for α.
 _GREEK_LOOKALIKE_SIGNS = {"∝": "α"}
+
+# Quotation marks that open a quoted answer: straight, typographic, low and guillemets.
+_OPENING_QUOTES = "\"'‘“„«"
 
 # Dashes longer than the en dash that is read as a minus (CHARACTER_VARIANTS): the em dash, the
 # horizontal bar, the figure dash.

@@ -107,6 +107,10 @@ PARSE_ERRORS = [
     # a label before the expression, Maxima's assignment: once "Unexpected character ':'"
     ("a: x y", 1, "Give the expression alone, without ':' (nor what comes before it)."),
     ("f(x) := x y", 5, "without ':'"),
+    # the answer in quotation marks, as an instruction quoted how to type it: once "Unexpected character"
+    ('"x y"', 0, "Leave out the quotation marks: type the answer alone."),
+    ("“x y”", 0, "Leave out the quotation marks"),
+    ("'x y'", 0, "Leave out the quotation marks"),
     # a dash longer than the en dash read as a minus: once "Unexpected character"
     ("—x y", 0, "— is a dash, which is not read here: for a minus sign, type -."),
     ("x ― y", 2, "for a minus sign, type -"),

@@ -135,6 +135,13 @@ BLAME = [
     ("9.81*arctg(0.5) m/s^2", "m/s^2", Reason.PARSE_ERROR, 5, "Did you mean atan?"),
     ("10*lg(2) m/s^2", "m/s^2", Reason.PARSE_ERROR, 3, "Did you mean log10? Write log10 for lg"),
     ("—4.58 m/s^2", "m/s^2", Reason.PARSE_ERROR, 0, "— is a dash"),
+    (
+        '"4.58 m/s^2"',
+        "m/s^2",
+        Reason.PARSE_ERROR,
+        0,
+        "Leave out the quotation marks",
+    ),  # was "must start with"
     # a label before the value, Maxima's assignment or a sentence's: was "must start with a number"
     ("a: 4.58 m/s^2", "m/s^2", Reason.PARSE_ERROR, 1, "Give the value alone: write what comes after the ':'"),
     ("Answer: 4.58 m/s^2", "m/s^2", Reason.PARSE_ERROR, 6, "write what comes after the ':'"),
