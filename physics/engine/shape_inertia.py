@@ -28,6 +28,16 @@ SHAPES: dict[sympy.Rational, str] = {
     _TWELFTH: "a rod's about its centre",
     _THIRD: "a rod's about its end",
 }
+# A shape's inertia about a point on its edge (a rod's end, a round body's rim), the parallel-axis sum
+# of its own about the centre and m times the edge's distance squared: factor -> (centre's factor, the
+# edge's distance over the length, what it is).
+ABOUT_AN_EDGE: dict[sympy.Rational, tuple[sympy.Rational, sympy.Rational, str]] = {
+    _THIRD: (_TWELFTH, _HALF, "a rod's about its end"),
+    sympy.Integer(2): (_ONE, _ONE, "a thin hoop's about a point on its rim"),
+    sympy.Rational(3, 2): (_HALF, _ONE, "a uniform disk's about a point on its rim"),
+    sympy.Rational(7, 5): (_SOLID, _ONE, "a solid sphere's about a point on its surface"),
+    sympy.Rational(5, 3): (_SHELL, _ONE, "a thin spherical shell's about a point on its surface"),
+}
 # What each is taken for: the shapes a student confuses it with, most often first.
 CONFUSED: dict[sympy.Rational, tuple[sympy.Rational, ...]] = {
     _ONE: (_HALF,),
@@ -82,12 +92,33 @@ def geometric_symbols(model: Model) -> set[sympy.Symbol]:
 def shape_factor(inertia: sympy.Expr, mass: sympy.Expr, lengths: set[sympy.Symbol]) -> sympy.Rational | None:
     """The number a standard shape's inertia is made of (½ in M R²/2), when the inertia is that number
     times the body's own mass times the square of one of its lengths; else None."""
+    found = _factor_and_length(inertia, mass, lengths)
+    return found[0] if found is not None and found[0] in SHAPES else None
+
+
+def edge_shape(
+    inertia: sympy.Expr, mass: sympy.Expr, lengths: set[sympy.Symbol]
+) -> tuple[sympy.Rational, sympy.Symbol] | None:
+    """The factor (in ABOUT_AN_EDGE) and the length of an inertia that is a shape's about its edge."""
+    found = _factor_and_length(inertia, mass, lengths)
+    return found if found is not None and found[0] in ABOUT_AN_EDGE else None
+
+
+def _factor_and_length(
+    inertia: sympy.Expr, mass: sympy.Expr, lengths: set[sympy.Symbol]
+) -> tuple[sympy.Rational, sympy.Symbol] | None:
+    """The inertia as a number times the body's own mass times the square of one of its lengths."""
     if not isinstance(mass, sympy.Symbol) or inertia == 0:
         return None
     factor, rest = inertia.as_coeff_Mul()
     base, power = (rest / mass).as_base_exp()
-    if factor in SHAPES and power == 2 and isinstance(base, sympy.Symbol) and base in lengths:
-        return sympy.Rational(factor)
+    if (
+        isinstance(factor, sympy.Rational)
+        and power == 2
+        and isinstance(base, sympy.Symbol)
+        and base in lengths
+    ):
+        return factor, base
     return None
 
 

@@ -2,7 +2,9 @@
 end given m L²/3, a hoop on a nail 2 m R², a hoop rolling on its rim 2 m R², a ladder sliding down a
 wall m L²/3, a ball skidding on its contact point 7/5 m r²), every method counts m d² twice and agrees,
 and the simulation too. Refused where it was written, saying the inertia about the centre; the right
-inertias, and a wheel rolling on a thin axle (above m r², no shape's plus m r²), derive."""
+inertias, and a wheel rolling on a thin axle (above m r², no shape's plus m r²), derive. An inertia that is
+a shape's about its edge (m L²/3, a rod's about its end) on a body turning about another point (a rod
+pivoted L/4 from its centre) is the same slip, refused saying what it is and what the pivot implies."""
 
 from __future__ import annotations
 
@@ -11,6 +13,7 @@ import sympy
 import yaml
 
 from physics.engine import derivation, load_model
+from physics.engine.pivot_inertia import check_pivot_inertias
 from physics.errors import DerivationError
 
 uncached = derivation._derive.__wrapped__
@@ -20,6 +23,13 @@ elements:
   hinge: {kind: pendulum, body: rod, mass: m, inertia: INERTIA, distance: L/2, coordinate: phi}
 gravity: g
 state: {phi: -pi/2}
+quantities:
+  start: {acceleration: phi}
+"""
+ON_AN_AXLE = """
+elements:
+  axle: {kind: pendulum, body: BODY, mass: m, inertia: INERTIA, distance: DISTANCE, coordinate: phi}
+gravity: g
 quantities:
   start: {acceleration: phi}
 """
@@ -64,8 +74,8 @@ state: {x_dot: v}
 quantities:
   skid: {slip_time: ball}
 """
-NAMES = "m L R r g theta theta0 mu v"
-m, L, R, r, g, theta, theta0, mu, v = sympy.symbols(NAMES, positive=True)
+NAMES = "m L R r g theta theta0 mu v m1 m2 M"
+m, L, R, r, g, theta, theta0, mu, v, *_ = sympy.symbols(NAMES, positive=True)
 
 # (model, inertia typed, the quantity's value, or the refusal's path and the inertia about the centre)
 RIGHT = [
@@ -86,6 +96,47 @@ ABOUT_THE_PIVOT = [
 SKIDDING_ABOUT_THE_CONTACT = [  # it turns about no fixed point until it rolls: about the point it will
     pytest.param("7*m*r^2/5", "2*m*r^2/5", id="ball"),
     pytest.param("3*m*r^2/2", "m*r^2/2", id="cylinder"),
+]
+
+
+# (model, the inertia typed; what the refusal says it is, and what to write; the element it is written in): a
+# shape's inertia about its edge on a body turning about another point
+ATWOOD = """
+coordinates: [s]
+bodies:
+  m1: {mass: m1, position: {y: s}}
+  m2: {mass: m2, position: {y: "-s"}}
+gravity: g
+elements:
+  string: {kind: pulley, ends: [{body: m1, pulls: up}, {body: m2, pulls: up}], mass: M, radius: R, inertia: INERTIA}
+quantities:
+  a: {acceleration: s}
+"""
+ABOUT_AN_EDGE_ELSEWHERE = [
+    pytest.param(
+        ON_AN_AXLE.replace("BODY", "rod").replace("DISTANCE", "L/4"),
+        "m*L^2/3",
+        "rod's moment of inertia L^2*m/3 is a rod's about its end (L^2*m/12 + m*(L/2)^2)",
+        "Write L^2*m/12 (about the point it turns about, L^2*m/12 + m*(L/4)^2 = 7*L^2*m/48)",
+        "axle",
+        id="rod-a-quarter-from-its-end",
+    ),
+    pytest.param(
+        ON_AN_AXLE.replace("BODY", "disk").replace("DISTANCE", "R/2"),
+        "3*m*R^2/2",
+        "disk's moment of inertia 3*R^2*m/2 is a uniform disk's about a point on its rim (R^2*m/2 + R^2*m)",
+        "Write R^2*m/2 (about the point it turns about, R^2*m/2 + m*(R/2)^2 = 3*R^2*m/4)",
+        "axle",
+        id="disk-halfway-to-its-rim",
+    ),
+    pytest.param(
+        ATWOOD,
+        "3*M*R^2/2",
+        "a uniform disk's about a point on its rim (M*R^2/2 + M*R^2), but it turns about its centre",
+        "Write M*R^2/2;",
+        "string",
+        id="pulley-on-its-axle",
+    ),
 ]
 
 
@@ -122,3 +173,18 @@ def test_an_inertia_typed_about_a_skidding_bodys_contact_point_is_refused_where_
     assert caught.value.path == ("elements", "ball", "inertia")
     assert "is its inertia about its contact point" in caught.value.message
     assert f"about its centre it is {about_centre}" in caught.value.message
+
+
+@pytest.mark.parametrize(("text", "inertia", "what", "fix", "element"), ABOUT_AN_EDGE_ELSEWHERE)
+def test_a_shapes_inertia_about_its_edge_on_a_body_turning_about_another_point_is_refused_where_written(
+    text: str, inertia: str, what: str, fix: str, element: str
+) -> None:
+    with pytest.raises(DerivationError) as caught:
+        check_pivot_inertias(_model(text, inertia))
+    assert caught.value.path == ("elements", element, "inertia")
+    assert what in caught.value.message
+    assert fix in caught.value.message
+
+
+def test_a_shapes_inertia_about_its_centre_on_a_body_turning_about_another_point_is_left_alone() -> None:
+    check_pivot_inertias(_model(ON_AN_AXLE.replace("BODY", "rod").replace("DISTANCE", "L/4"), "m*L^2/12"))
