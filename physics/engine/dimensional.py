@@ -126,6 +126,8 @@ def _physics(model: Model, dims: Dims) -> list[Check]:
             checks.append((("quantities", quantity.name, "at", name), value, dims.get(coordinates[name])))
         if quantity.level is not None:
             checks.append((("quantities", quantity.name, "level"), quantity.level, LENGTH))
+        if quantity.slope is not None:
+            checks.append((("quantities", quantity.name, "slope"), quantity.slope, DIMENSIONLESS))
     return checks
 
 

@@ -236,6 +236,9 @@ class Quantity:
     # there too), reached by the motion from the model's state: ((coordinate, value),)
     at: tuple[tuple[str, sympy.Expr], ...] = ()
     level: sympy.Expr | None = None  # TIME_OF_FLIGHT, RANGE: the landing height (y); None: the launch's
+    # TIME_OF_FLIGHT, RANGE: lands instead on the line through the launch point rising at this angle (an
+    # incline's surface), the range taken along it
+    slope: sympy.Expr | None = None
     # for SLIPPING: the holding contact's friction and normal constraints, and mu_s
     contact: tuple[str, str] = ("", "")
     coefficient: sympy.Expr | None = None

@@ -5,6 +5,7 @@
     rate: {velocity: theta, at: {theta: 0}}             # the coordinate's velocity there
     normal_bottom: {force: track, at: {theta: 0}}       # the constraint force there, with that velocity
     flight: {time_of_flight: ball, level: "-h"}         # until the body's y is -h (default: launch height)
+    up: {range: ball, slope: theta}                     # along an incline through the launch point
     rebound: {max_height: ball, after: impact}          # in the motion just after the model's impact
     later: {max_height: ball, after: impact, bounces: n}   # after the n-th bounce off a fixed floor
 """
@@ -54,7 +55,7 @@ def load_quantity(
         {kind.value, "after"}
         | ({"bounces"} if "after" in spec else set())
         | ({"at"} if kind in AT_KINDS else set())
-        | ({"level"} if kind in LEVEL_KINDS else set())
+        | ({"level", "slope"} if kind in LEVEL_KINDS else set())
     )
     faults = len([None for key in spec if key not in allowed])
     for key in spec:
@@ -84,13 +85,20 @@ def load_quantity(
     elif "at" in spec:
         at, bad = _read_at(spec["at"], symbols, coordinates, (*path, "at"), report)
         faults += bad
-    level = None
-    if "level" in spec:
-        try:
-            level = read_expr(spec["level"], symbols, (*path, "level"))
-        except SpecError as error:
-            report(error.message, error.path)
-            faults += 1
+    if "level" in spec and "slope" in spec:
+        report(
+            "the body lands at a height (`level`) or on a slope through the launch point (`slope`), not both",
+            (*path, "slope"),
+        )
+        faults += 1
+    landing: dict[str, sympy.Expr] = {}
+    for key in ("level", "slope"):
+        if key in spec:
+            try:
+                landing[key] = read_expr(spec[key], symbols, (*path, key))
+            except SpecError as error:
+                report(error.message, error.path)
+                faults += 1
     after = spec.get("after", "")
     if after not in ("", "impact"):
         report(
@@ -106,7 +114,16 @@ def load_quantity(
             faults += 1
     if faults:
         return None
-    return Quantity(name, kind, str(target), at=at, level=level, after=str(after), bounces=bounces)
+    return Quantity(
+        name,
+        kind,
+        str(target),
+        at=at,
+        level=landing.get("level"),
+        slope=landing.get("slope"),
+        after=str(after),
+        bounces=bounces,
+    )
 
 
 def _read_at(

@@ -40,6 +40,14 @@ APEX_RANGE = "That is the horizontal distance to the top of the flight, not to t
 LAUNCH_LEVEL = (
     "This lands the body at the height it was launched from; it comes down to the landing level stated."
 )
+LEVEL_GROUND = (
+    "This lands the body on level ground at the height it was launched from; it lands on the slope, "
+    "which rises (or falls away) under its flight."
+)
+HORIZONTAL = (
+    "That is the horizontal distance to the landing point; the range is measured along the slope: "
+    "divide by the cosine of its angle."
+)
 HEIGHT_FACTOR = (
     "At the top the vertical kinetic energy $\\tfrac12 m v_{y0}^2$ has become $m g H$: check the factor 2."
 )
@@ -61,8 +69,10 @@ def candidates(model: Model, quantity: Quantity, reference: sympy.Expr, rederive
     return []
 
 
-def _swapped(reference: sympy.Expr) -> sympy.Expr | None:
-    trig = reference.atoms(sympy.sin, sympy.cos)
+def _swapped(reference: sympy.Expr, slope: sympy.Expr | None) -> sympy.Expr | None:
+    """The launch angle's sine and cosine swapped (a slope's own are no launch component)."""
+    kept = slope.free_symbols if slope is not None else set()
+    trig = {t for t in reference.atoms(sympy.sin, sympy.cos) if not t.free_symbols & kept}
     if not trig:
         return None
     swap = {t: (sympy.cos if isinstance(t, sympy.sin) else sympy.sin)(t.args[0]) for t in trig}
@@ -70,7 +80,7 @@ def _swapped(reference: sympy.Expr) -> sympy.Expr | None:
 
 
 def _trajectory(model: Model, quantity: Quantity, reference: sympy.Expr, rederive: Rederive) -> Candidates:
-    found: Candidates = [(_swapped(reference), LAUNCH_COMPONENTS)]
+    found: Candidates = [(_swapped(reference, quantity.slope), LAUNCH_COMPONENTS)]
     if quantity.kind is QuantityKind.MAX_HEIGHT:
         from physics.engine.trajectory import launch
 
@@ -80,9 +90,13 @@ def _trajectory(model: Model, quantity: Quantity, reference: sympy.Expr, rederiv
         if vx != 0:
             found += [(tidy.simplify(reference * (vx**2 + vy**2) / vy**2), WHOLE_SPEED)]
         return found
-    launch_level = rederive(model, dataclasses.replace(quantity, level=None))
+    launch_level = rederive(model, dataclasses.replace(quantity, level=None, slope=None))
     if quantity.level is not None:
         found += [(launch_level, LAUNCH_LEVEL)]
+    if quantity.slope is not None:
+        found += [(launch_level, LEVEL_GROUND)]
+        if quantity.kind is QuantityKind.RANGE:
+            found += [(tidy.simplify(reference * sympy.cos(quantity.slope)), HORIZONTAL)]
     if launch_level is not None and quantity.kind is QuantityKind.TIME_OF_FLIGHT:
         found += [(launch_level / 2, TIME_TO_APEX)]
         if quantity.level is None:

@@ -195,11 +195,24 @@ class ReachMeasure:
             raise DerivationError(f"{quantity.name}: nothing pulls {quantity.target} down in the simulation")
         vy = vx[vy_index]
         scale = (abs(vy) + math.sqrt(vy**2 + 2 * abs(ay) * abs(y0 - level))) / abs(ay)
+        x0 = start[place["x"]] if "x" in place else 0.0
+        slope = _evaluate(quantity.slope, point) if quantity.slope is not None else None
+        if slope is not None:  # the time to come back to the launch's line, falling as it does: a scale only
+            horizontal = vx[axes.index("x")] if "x" in axes else 0.0
+            scale = max(scale, 2 * abs(horizontal * math.tan(slope) - vy) / abs(ay))
         if quantity.kind is QuantityKind.MAX_HEIGHT:
             key: tuple[object, ...] = ("apex", *sorted((str(s), v) for s, v in point.items()))
 
             def event(y: Vector) -> float:
                 return -velocity(*y, *params)[vy_index]
+
+        elif slope is not None:
+            key = ("slope", slope, *sorted((str(s), v) for s, v in point.items()))
+
+            def event(y: Vector) -> float:
+                now = dyn.positions(y[: dyn.n], params)
+                across = now[place["x"]] - x0 if "x" in place else 0.0
+                return y0 + across * math.tan(slope) - now[place["y"]]
 
         else:
             key = ("landing", level, *sorted((str(s), v) for s, v in point.items()))
@@ -213,6 +226,12 @@ class ReachMeasure:
         now = dyn.positions(y[: dyn.n], params)
         if quantity.kind is QuantityKind.TIME_OF_FLIGHT:
             return "time until the integrated flight comes down to the landing level", time, None
+        if quantity.kind is QuantityKind.RANGE and slope is not None:
+            return (
+                "distance along the slope of the integrated flight where it lands on it",
+                (now[place["x"]] - x0) / math.cos(slope),
+                None,
+            )
         if quantity.kind is QuantityKind.RANGE:
             return (
                 "horizontal distance of the integrated flight at the landing level",

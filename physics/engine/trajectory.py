@@ -8,11 +8,18 @@ y'(t) = 0, and the range is x(T) - x0.
 Energy and momentum (the conservation method): with no horizontal force the horizontal momentum keeps
 vx; energy gives the height at which the vertical velocity vanishes and the vertical velocity on landing;
 the vertical impulse Fy T = m (vy1 - vy0) gives the time, and the range is vx T.
+
+A body may land instead on a slope through the launch point (`slope`: its angle above the horizontal,
+an incline's surface), the range then taken along it. Kinematics: y(t) - y0 = (x(t) - x0) tan θ, the root
+other than the launch. Energy and momentum: the drop to the landing is vx T tan θ, so energy and the
+vertical impulse give vy1² - 2 vx tan θ vy1 = vy0² - 2 vx tan θ vy0, whose roots are the launch's vy0 and
+(their sum) 2 vx tan θ - vy0; the range is vx T / cos θ.
 """
 
 from __future__ import annotations
 
 import dataclasses
+import math
 from collections.abc import Callable
 from typing import TYPE_CHECKING
 
@@ -40,6 +47,7 @@ class Launch:
     position: Vector
     velocity: Vector
     level: sympy.Expr
+    slope: sympy.Expr | None  # lands on the line through the launch point at this angle instead
 
 
 def launch(model: Model, quantity: Quantity) -> Launch:
@@ -59,7 +67,34 @@ def launch(model: Model, quantity: Quantity) -> Launch:
         {a: start.get(a, sympy.Integer(0)) for a in ("x", "y")},
         {a: velocity.get(a, sympy.Integer(0)) for a in ("x", "y")},
         level,
+        quantity.slope,
     )
+
+
+def check_slopes(model: Model) -> None:
+    """A slope is a line's angle above the horizontal, within a right angle either way: 30 (30° meant)
+    is 30 radians, a line falling at 81°, on which every method would land the body alike."""
+    for quantity in model.quantities:
+        if quantity.slope is not None:
+            _check_slope(model, quantity.name, quantity.slope)
+
+
+def _check_slope(model: Model, name: str, slope: sympy.Expr) -> None:
+    for point in domain_points(model, POINTS, seed=29):
+        value = float(sympy.N(slope.subs(point), 15))
+        if abs(value) < math.pi / 2:
+            continue
+        at = (
+            ""
+            if isinstance(slope, sympy.Number)
+            else " at " + ", ".join(f"{s}={v:.4g}" for s, v in point.items())
+        )
+        degrees = f": {slope}° is written {slope}*pi/180" if isinstance(slope, sympy.Number) else ""
+        raise DerivationError(
+            f"{name}: the slope {typed_text(slope)} is {math.degrees(value):.0f}°{at}; it is the angle in radians "
+            f"of the line the body lands on, between -pi/2 and pi/2{degrees}",
+            path=("quantities", name, "slope"),
+        )
 
 
 @derives(*TRAJECTORY_KINDS)
@@ -134,6 +169,8 @@ def by_kinematics(method: Method, quantity: Quantity) -> sympy.Expr:
             + method.tex(height),
         )
         return height
+    if start.slope is not None:
+        return _onto_slope(method, quantity, start, acceleration, path, t)
     flight = later_root(
         model,
         _quadratic_roots(acceleration["y"] / 2, start.velocity["y"], start.position["y"] - start.level),
@@ -147,6 +184,35 @@ def by_kinematics(method: Method, quantity: Quantity) -> sympy.Expr:
         return flight
     distance = tidy.simplify(path["x"].subs(t, flight) - start.position["x"])
     method.step("Range", r"x(T) - x_0 = " + method.tex(distance))
+    return distance
+
+
+def _onto_slope(
+    method: Method, quantity: Quantity, start: Launch, acceleration: Vector, path: Vector, t: sympy.Symbol
+) -> sympy.Expr:
+    """Kinematics down (or up) to the line through the launch point at the angle `slope`."""
+    assert start.slope is not None
+    tan = sympy.tan(start.slope)
+    roots = _quadratic_roots(
+        (acceleration["y"] - acceleration["x"] * tan) / 2,
+        start.velocity["y"] - start.velocity["x"] * tan,
+        sympy.Integer(0),
+    )
+    flight = later_root(method.model, roots, quantity.name)
+    x0, y0 = start.position["x"], start.position["y"]
+    method.step(
+        "Landing on the slope through the launch point",
+        method.tex(sympy.Eq(path["y"] - y0, (path["x"] - x0) * tan))
+        + r"\Rightarrow T = "
+        + method.tex(flight),
+    )
+    if quantity.kind is QuantityKind.TIME_OF_FLIGHT:
+        return flight
+    distance = tidy.simplify((path["x"].subs(t, flight) - x0) / sympy.cos(start.slope))
+    method.step(
+        "Range along the slope",
+        rf"\frac{{x(T) - x_0}}{{\cos\left({method.tex(start.slope)}\right)}} = " + method.tex(distance),
+    )
     return distance
 
 
@@ -226,6 +292,8 @@ def by_energy(method: Method, quantity: Quantity) -> sympy.Expr:
             method.tex(energy) + r"\Rightarrow H = " + method.tex(found),
         )
         return tidy.simplify(found)
+    if start.slope is not None:
+        return _energy_onto_slope(method, quantity, start, fy)
     landing = sympy.Symbol("v_y1", real=True)
     energy = sympy.Eq(m * landing**2 / 2, m * vy**2 / 2 + fy * (start.level - start.position["y"]))
     size = sympy.sqrt(vy**2 + 2 * fy * (start.level - start.position["y"]) / m)
@@ -245,6 +313,36 @@ def by_energy(method: Method, quantity: Quantity) -> sympy.Expr:
         return flight
     distance = tidy.simplify(vx * flight)
     method.step("Range at the conserved horizontal velocity", r"R = v_x T = " + method.tex(distance))
+    return distance
+
+
+def _energy_onto_slope(method: Method, quantity: Quantity, start: Launch, fy: sympy.Expr) -> sympy.Expr:
+    """Energy and the vertical impulse to the slope through the launch point: the drop is vx T tan θ."""
+    assert start.slope is not None
+    body = method.model.body(quantity.target)
+    m, vx, vy = body.mass, start.velocity["x"], start.velocity["y"]
+    tan = sympy.tan(start.slope)
+    angle = rf"\tan\left({method.tex(start.slope)}\right)"
+    descending = 2 * vx * tan - vy  # the other root: the two sum to 2 vx tan θ, and one is the launch's vy0
+    method.step(
+        f"Energy from the launch to the landing on the slope, a height $v_x T {angle}$ above the launch, "
+        "and the vertical impulse over the flight",
+        rf"\tfrac12 m v_{{y1}}^2 = \tfrac12 m v_{{y0}}^2 + F_y v_x T {angle},\quad F_y T = m (v_{{y1}} - v_{{y0}})"
+        + rf"\Rightarrow v_{{y1}}^2 - 2 v_x {angle}\, v_{{y1}} = v_{{y0}}^2 - 2 v_x {angle}\, v_{{y0}}"
+        + r"\Rightarrow v_{y1} = "
+        + method.tex(descending),
+    )
+    time = later_root(method.model, [tidy.simplify(m * (descending - vy) / fy)], quantity.name)
+    method.step(
+        "Time of flight from the impulse", r"T = \frac{m (v_{y1} - v_{y0})}{F_y} = " + method.tex(time)
+    )
+    if quantity.kind is QuantityKind.TIME_OF_FLIGHT:
+        return time
+    distance = tidy.simplify(vx * time / sympy.cos(start.slope))
+    method.step(
+        "Range along the slope at the conserved horizontal velocity",
+        rf"R = \frac{{v_x T}}{{\cos\left({method.tex(start.slope)}\right)}} = " + method.tex(distance),
+    )
     return distance
 
 

@@ -26,6 +26,7 @@ class Launch:
     landing: sympy.Expr  # the ground's y
     vx: sympy.Expr
     vy: sympy.Expr
+    slope: sympy.Expr | None = None  # the ground is instead the line through the launch point at this angle
 
 
 def launch_of(model: Model) -> Launch | None:
@@ -52,7 +53,8 @@ def launch_of(model: Model) -> Launch | None:
         q.level for q in model.quantities if q.kind in (QuantityKind.TIME_OF_FLIGHT, QuantityKind.RANGE)
     ]
     landing = next((level for level in levels if level is not None), height)
-    return Launch(body, height, landing, state[x.velocity], state[y.velocity])
+    slope = next((q.slope for q in model.quantities if q.slope is not None), None)
+    return Launch(body, height, landing, state[x.velocity], state[y.velocity], slope)
 
 
 def draw_projectile(figure: Figure, model: Model, launch: Launch, values: Values) -> None:
@@ -60,10 +62,14 @@ def draw_projectile(figure: Figure, model: Model, launch: Launch, values: Values
     g = values.number(model.gravity)
     vx, vy = values.number(launch.vx), values.number(launch.vy)
     drop = values.number(launch.height) - values.number(launch.landing)  # launch above the ground
-    # The time to land: y(t) = drop + vy t - g t^2 / 2 = 0, the later root.
+    # The time to land: y(t) = drop + vy t - g t^2 / 2 = 0, the later root; on a slope through the launch
+    # point, vy t - g t^2 / 2 = vx t tan(slope).
+    rise = math.tan(values.number(launch.slope)) if launch.slope is not None else 0.0
     flight = (vy + math.sqrt(max(vy * vy + 2 * g * drop, 0.0))) / g
+    if launch.slope is not None:
+        flight = max(2 * (vy - vx * rise) / g, 0.0)
     top = drop + max(vy, 0.0) ** 2 / (2 * g)
-    scale = SPAN / max(abs(vx) * flight, top, 1e-9)
+    scale = SPAN / max(abs(vx) * flight, top, abs(vx * flight * rise), 1e-9)
     steps = 40
     path = [
         (
@@ -75,7 +81,7 @@ def draw_projectile(figure: Figure, model: Model, launch: Launch, values: Values
     start = (0.0, drop * scale)
     land_x = path[-1][0]
     left, right = min(0.0, land_x) - 1.2, max(0.0, land_x) + 1.2
-    canvas.ground((left, 0.0), (right, 0.0))
+    canvas.ground((left, left * rise), (right, right * rise))
     height_symbols = sorted(launch.height.free_symbols & set(model.parameters), key=lambda s: s.name)
     if drop * scale > 0.05:  # a cliff (or tower) under the launch point, its height labelled
         canvas.polygon([(left, 0.0), (left, start[1]), (0.4, start[1]), (0.4, 0.0)], fill="#eeeeee")
@@ -84,7 +90,8 @@ def draw_projectile(figure: Figure, model: Model, launch: Launch, values: Values
             canvas.text(((left + 0.4) / 2, start[1] / 2), symbol_label(height_symbols[0].name))
         canvas.line(start, (start[0] + 2.0, start[1]), dashed=True, width=0.03)  # the angle's horizontal
     canvas.polyline(path, width=0.04, dashed=True)
-    canvas.line((land_x, -0.15), (land_x, 0.15), width=0.05)  # where it lands
+    land_y = land_x * rise
+    canvas.line((land_x, land_y - 0.15), (land_x, land_y + 0.15), width=0.05)  # where it lands
     angle = math.atan2(vy, vx)
     tip = (start[0] + ARROW * math.cos(angle), start[1] + ARROW * math.sin(angle))
     canvas.arrow(start, tip, width=0.06)
@@ -106,9 +113,12 @@ def draw_projectile(figure: Figure, model: Model, launch: Launch, values: Values
     canvas.text((start[0] - 0.5, start[1] + 0.45), label, anchor="end")
     where = "from a height " + symbol_label(height_symbols[0].name) if drop > 0 and height_symbols else ""
     where = where or ("from above the ground" if drop > 0 else "from the ground")
+    ground = "the ground"
+    if launch.slope is not None:
+        where, ground = "from a point on a slope", "the slope"
     figure.say(
         f"A ball {label} launched {where}"
         + (f" at speed {symbol_label(speed[0].name)}" if speed else "")
         + (f" at an angle {symbol_label(symbol.name)} above the horizontal" if symbol is not None else "")
-        + "; its path (dashed) lands on the ground."
+        + f"; its path (dashed) lands on {ground}."
     )

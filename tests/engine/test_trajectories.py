@@ -15,8 +15,8 @@ from physics.engine import derive, load_model
 from physics.errors import DerivationError, SpecErrors
 
 BANK = Path(__file__).resolve().parents[2] / "problems" / "bank"
-m, v0, alpha, g, h = sympy.symbols("m v0 alpha g h", positive=True)
-SYMBOLS = {str(s): s for s in (m, v0, alpha, g, h)}
+m, v0, alpha, g, h, theta = sympy.symbols("m v0 alpha g h theta", positive=True)
+SYMBOLS = {str(s): s for s in (m, v0, alpha, g, h, theta)}
 ALL = {"lagrange", "newton", "conservation"}
 
 
@@ -63,6 +63,69 @@ def test_a_landing_level_below_the_launch_takes_the_later_root() -> None:
     assert sympy.simplify(result.quantities["T"] - flight) == 0
     assert sympy.simplify(result.quantities["R"] - v0 * cos(alpha) * flight) == 0
     assert set(result.agreement["R"]) >= ALL
+
+
+# (slope, launch velocity, the domain's positives; time of flight, range along the slope): the classic
+# range up and down an incline through the launch point, R = 2 v0² cos α sin(α ∓ θ) / (g cos² θ)
+ONTO_A_SLOPE = [
+    pytest.param(
+        "theta",
+        ("v0*cos(alpha)", "v0*sin(alpha)"),
+        ["alpha - theta"],
+        2 * v0 * sin(alpha - theta) / (g * cos(theta)),
+        2 * v0**2 * cos(alpha) * sin(alpha - theta) / (g * cos(theta) ** 2),
+        id="up-an-incline",
+    ),
+    pytest.param(
+        "-theta",
+        ("v0*cos(alpha)", "v0*sin(alpha)"),
+        [],
+        2 * v0 * sin(alpha + theta) / (g * cos(theta)),
+        2 * v0**2 * cos(alpha) * sin(alpha + theta) / (g * cos(theta) ** 2),
+        id="down-an-incline",
+    ),
+    pytest.param(
+        "-theta",
+        ("v0", "0"),
+        [],
+        2 * v0 * sympy.tan(theta) / g,
+        2 * v0**2 * sin(theta) / (g * cos(theta) ** 2),
+        id="thrown-level-off-a-slope",
+    ),
+]
+
+
+def _onto_a_slope(slope: str, velocity: tuple[str, str], positive: list[str]) -> dict[str, Any]:
+    data = launch()
+    data["limits"] = []
+    data["state"] = {"x": 0, "y": 0, "x_dot": velocity[0], "y_dot": velocity[1]}
+    data["domain"] = {"ranges": {"alpha": ["0", "pi/2"], "theta": ["0", "pi/2"]}, "positive": positive}
+    data["quantities"] = {
+        "T": {"time_of_flight": "ball", "slope": slope},
+        "R": {"range": "ball", "slope": slope},
+    }
+    return data
+
+
+@pytest.mark.parametrize(("slope", "velocity", "positive", "flight", "distance"), ONTO_A_SLOPE)
+def test_a_landing_on_a_slope_through_the_launch_point_gives_the_range_along_it(
+    slope: str, velocity: tuple[str, str], positive: list[str], flight: sympy.Expr, distance: sympy.Expr
+) -> None:
+    result = derive(load_model(_onto_a_slope(slope, velocity, positive), SYMBOLS))
+    assert sympy.simplify(result.quantities["T"] - flight) == 0
+    assert sympy.simplify(result.quantities["R"] - distance) == 0
+    assert set(result.agreement["R"]) >= ALL
+    assert "along the slope" in result.simulation["R"].compared
+
+
+def test_the_range_along_a_slope_offers_the_level_ground_and_the_horizontal_distance_as_mistakes() -> None:
+    data = _onto_a_slope("-theta", ("v0*cos(alpha)", "v0*sin(alpha)"), [])  # derived above: cached
+    mistakes = {sympy.simplify(k.expr): k.feedback for k in derive(load_model(data, SYMBOLS)).mistakes["R"]}
+    assert "level ground" in mistakes[sympy.simplify(v0**2 * sin(2 * alpha) / g)]
+    horizontal = 2 * v0**2 * cos(alpha) * sin(alpha + theta) / (g * cos(theta))
+    assert "horizontal distance" in next(
+        f for e, f in mistakes.items() if sympy.simplify(e - horizontal) == 0
+    )
 
 
 def test_a_flight_with_drag_is_refused_with_each_method_s_reason() -> None:
@@ -115,6 +178,18 @@ def test_a_landing_level_that_is_not_a_length_is_refused_at_its_path() -> None:
             id="unreadable-level",
         ),
         pytest.param(
+            {"quantities": {"T": {"time_of_flight": "ball", "level": 0, "slope": "theta"}}},
+            ("quantities", "T", "slope"),
+            "not both",
+            id="level-and-slope",
+        ),
+        pytest.param(
+            {"quantities": {"H": {"max_height": "ball", "slope": "theta"}}},
+            ("quantities", "H", "slope"),
+            "unknown key",
+            id="slope-on-the-height",
+        ),
+        pytest.param(
             {"state": {"x_dot": "v0"}, "quantities": {"T": {"time_of_flight": "ball"}}},
             ("state",),
             "give where x, y start",
@@ -130,3 +205,14 @@ def test_a_wrong_flight_quantity_is_refused_at_its_path(
         load_model(data, SYMBOLS)
     found = {e.path: e.message for e in caught.value.errors}
     assert words in found[path], found
+
+
+@pytest.mark.parametrize(
+    ("slope", "words"), [("30", "30° is written 30*pi/180"), ("2*theta + 2", "between -pi/2 and pi/2")]
+)
+def test_a_slope_past_a_right_angle_is_refused_at_its_path(slope: str, words: str) -> None:
+    data = _onto_a_slope(slope, ("v0*cos(alpha)", "v0*sin(alpha)"), [])
+    with pytest.raises(DerivationError) as caught:
+        derive(load_model(data, SYMBOLS))
+    assert caught.value.path == ("quantities", "T", "slope")
+    assert words in caught.value.message

@@ -78,3 +78,30 @@ def test_a_launch_from_a_height_stands_on_a_cliff_labelled_with_it() -> None:
     assert points[0][1] - points[-1][1] > 1.0  # it lands well below where it was launched
     assert {"m", "v₀", "α", "h"} <= {e.text for e in root.iter(f"{SVG}text")}
     assert "from a height h" in root.findtext(f"{SVG}desc", "")
+
+
+@pytest.mark.parametrize("slope", ["theta", "-theta"], ids=["up-an-incline", "down-an-incline"])
+def test_a_landing_on_a_slope_draws_the_slope_through_the_launch_point_and_ends_the_path_on_it(
+    slope: str,
+) -> None:
+    symbols = {n: sympy.Symbol(n, positive=True) for n in ("m", "v0", "alpha", "theta", "g")}
+    model = load_model(
+        {
+            "coordinates": ["x", "y"],
+            "bodies": {"ball": {"mass": "m", "position": {"x": "x", "y": "y"}}},
+            "gravity": "g",
+            "state": {"x": 0, "y": 0, "x_dot": "v0*cos(alpha)", "y_dot": "v0*sin(alpha)"},
+            "quantities": {"range": {"range": "ball", "slope": slope}},
+        },
+        symbols,
+    )
+    angle = 0.3 if slope == "theta" else -0.3
+    values = {"v0": 10.0, "alpha": 0.8, "theta": 0.3, "g": 9.81}
+    root = ET.fromstring(model_figure(model, values, title="incline"))
+    [path] = [e for e in root.iter(f"{SVG}polyline") if e.get("stroke-dasharray")]
+    (x0, y0), (x1, y1) = _points(path)[0], _points(path)[-1]
+    assert (y1 - y0) / (x1 - x0) == pytest.approx(math.tan(angle), rel=1e-3)
+    [ground] = [e for e in root.iter(f"{SVG}line") if float(e.get("stroke-width", 0)) == 0.07]
+    ends = [(float(ground.get(f"x{i}", 0)), -float(ground.get(f"y{i}", 0))) for i in (1, 2)]
+    assert all(y - y0 == pytest.approx((x - x0) * math.tan(angle), abs=1e-2) for x, y in ends)
+    assert "lands on the slope" in root.findtext(f"{SVG}desc", "")
