@@ -71,10 +71,13 @@ def measure_final(simulator: Simulator, quantity: Quantity, point: Point, expect
     what = f"after {count} integrated bounces"
     if quantity.kind is QuantityKind.KINETIC_ENERGY_LOST:
         dyn = simulator.dynamics
-        start, _ = simulator._start(point)
+        start, launched = simulator._start(point)
+        if quantity.total:  # into the first bounce with the state's velocities
+            arriving = launched
         before, after = (dyn.energy(start, v, dyn.values(point)) for v in (arriving, rates))
+        which = f"the first {count} bounces" if quantity.total else f"bounce {count}"
         return (
-            f"kinetic energy lost in bounce {count} of the integrated motion",
+            f"kinetic energy lost in {which} of the integrated motion",
             before - after,
             abs(before - after - expected) / max(abs(before), 1e-12),
         )

@@ -29,10 +29,15 @@ if TYPE_CHECKING:
     from physics.engine.method import Method
 
 Report = Callable[[str, tuple[str | int, ...]], None]
+Rederive = Callable[[Model, Quantity], sympy.Expr | None]
 # a body's velocity or speed just after the n-th bounce (`{final_speed: ball, bounces: n}`), or the
 # kinetic energy the n-th bounce takes (`{kinetic_energy_lost: impact, bounces: n}`)
 FINAL_KINDS = frozenset(
     {QuantityKind.FINAL_SPEED, QuantityKind.FINAL_VELOCITY, QuantityKind.KINETIC_ENERGY_LOST}
+)
+TOTAL = (
+    "`total: true` with `bounces: n` takes the kinetic energy the first n bounces take together (the ball "
+    "arrives at each with the energy it left the one before with); without it, the n-th bounce's alone"
 )
 
 
@@ -46,6 +51,24 @@ def check(quantities: Sequence[Quantity], model_impact: Impact | None, report: R
             report("a body bounces again only off a fixed partner: the impact's other body moves on", path)
         if quantity.bounces.is_number and not (quantity.bounces.is_integer and quantity.bounces >= 1):
             report(f"the number of bounces is a whole number, 1 or more, not {quantity.bounces}", path)
+
+
+NTH_ALONE = (
+    "That is what the last of those bounces takes alone; the question asks for the energy all of them take "
+    "together, from the first bounce on."
+)
+ALL_TOGETHER = (
+    "That is what all the bounces up to this one take together; the question asks for what this bounce "
+    "alone takes, from the energy the body arrives with."
+)
+
+
+def mistakes(model: Model, quantity: Quantity, rederive: Rederive) -> list[tuple[sympy.Expr | None, str]]:
+    """The energy lost in the n-th bounce alone taken for the first n together, and the other way round."""
+    if quantity.kind is not QuantityKind.KINETIC_ENERGY_LOST or quantity.bounces is None:
+        return []
+    other = rederive(model, dataclasses.replace(quantity, total=not quantity.total))
+    return [(other, NTH_ALONE if quantity.total else ALL_TOGETHER)]
 
 
 def velocities_after(method: Method, quantity: Quantity, first: list[sympy.Expr]) -> list[sympy.Expr]:
@@ -106,10 +129,12 @@ def final(method: Method, quantity: Quantity, worked: impact.Worked) -> sympy.Ex
     model = method.model
     first = impact.coordinate_rates(model, after)
     rates = velocities_after(method, quantity, first)
-    if quantity.kind is QuantityKind.KINETIC_ENERGY_LOST:
+    if quantity.kind is QuantityKind.KINETIC_ENERGY_LOST and not quantity.total:
         # into the n-th bounce the body arrives with the kinetic energy it left the one before with: the
         # flight back to the same place keeps T + V (the cycle's return: by energy, or at constant
-        # acceleration); the first bounce's own factor undone, n = 1 gives the first impact's loss
+        # acceleration); the first bounce's own factor undone, n = 1 gives the first impact's loss. With
+        # `total`, the same return makes the first n bounces' losses telescope: the energy before the
+        # first less that after the n-th
         assert quantity.bounces is not None
         earlier = velocities_after(method, dataclasses.replace(quantity, bounces=quantity.bounces - 1), first)
         before = _by_body(model, earlier)

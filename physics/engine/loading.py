@@ -1055,6 +1055,8 @@ def _quantity(
         | (_SLIPPING_KEYS if kind is QuantityKind.SLIPPING else set())
     )
     optional = {"bounces"} if kind in bounces.FINAL_KINDS else set()
+    if kind is QuantityKind.KINETIC_ENERGY_LOST:
+        optional |= {"total"}
     if kind is QuantityKind.TURNING_POINT:  # how far the motion just after an impact goes (a squeeze)
         optional = {"after"}
     if kind in amplitude.KINDS:
@@ -1094,7 +1096,11 @@ def _quantity(
         return Quantity(name, kind, "state")
     if kind in IMPACT_KINDS:  # checked against the impact section by `_impact`
         count = errors.read(spec["bounces"], symbols, (*path, "bounces")) if "bounces" in spec else None
-        return Quantity(name, kind, str(target), bounces=count)
+        total = spec.get("total", False)
+        if total is not False and (total is not True or "bounces" not in spec):
+            errors.add(bounces.TOTAL, (*path, "total"))
+            return None
+        return Quantity(name, kind, str(target), bounces=count, total=total)
     if kind is QuantityKind.MODE_SHAPE:
         return errors.attempt(lambda: mode_shapes.read(name, target, where, coordinates))
     if kind is QuantityKind.NORMAL_FREQUENCY:

@@ -13,7 +13,7 @@ from collections.abc import Callable
 
 import sympy
 
-from physics.engine import collision, damping, impact, orbits, reach_mistakes, slipping, tidy
+from physics.engine import bounces, collision, damping, impact, orbits, reach_mistakes, slipping, tidy
 from physics.engine.mechanics import Mechanics
 from physics.engine.model import (
     IMPACT_KINDS,
@@ -138,6 +138,7 @@ def generate_mistakes(
         quantity.kind in IMPACT_KINDS or quantity.kind is QuantityKind.VELOCITY_AFTER
     ) and model.impact is not None:
         candidates += impact.mistakes(model, reference)
+        candidates += bounces.mistakes(model, quantity, rederive)
     if quantity.kind in SLIP_KINDS:
         candidates.append((slipping.without_torque(model, quantity, rederive), slipping.NO_TORQUE))
     if quantity.kind in ORBIT_KINDS:

@@ -247,6 +247,7 @@ class Quantity:
     bounces: sympy.Expr | None = (
         None  # with `after`: after this many bounces off the fixed partner (bounces.py)
     )
+    total: bool = False  # KINETIC_ENERGY_LOST with `bounces`: over the first n together, not the n-th alone
     small: bool = (
         False  # PERIOD, ANGULAR_FREQUENCY: `amplitude: small`, whatever the state's swing (amplitude.py)
     )

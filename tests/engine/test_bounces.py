@@ -87,6 +87,55 @@ def test_the_simulation_disagrees_with_the_energy_lost_in_all_n_bounces() -> Non
         derivation._simulate(model, {"lost": m * g * h * (1 - e ** (2 * n))}, simulator)
 
 
+# the kinetic energy the first n bounces take together: m g h arrives, e^(2n) of it leaves the n-th
+ENERGY_LOST_IN_THE_FIRST_BOUNCES = [
+    ("n", m * g * h * (1 - e ** (2 * n))),
+    (3, m * g * h * (1 - e**6)),
+]
+
+
+def _lost_in_all(count: Any) -> dict[str, Any]:
+    return ball(lost={"kinetic_energy_lost": "impact", "bounces": count, "total": True})
+
+
+@pytest.mark.parametrize(("count", "expected"), ENERGY_LOST_IN_THE_FIRST_BOUNCES)
+def test_the_energy_lost_in_the_first_n_bounces_together_is_derived_and_measured_over_them(
+    count: Any, expected: sympy.Expr
+) -> None:
+    derived = derive(load_model(_lost_in_all(count), SYMBOLS))
+    assert sympy.simplify(derived.quantities["lost"] - expected) == 0
+    assert set(derived.agreement["lost"]) == {"newton", "conservation"}
+    assert "kinetic energy lost in the first" in derived.simulation["lost"].compared
+
+
+def test_the_simulation_disagrees_with_the_nth_bounce_alone_for_the_first_n_together() -> None:
+    model = load_model(_lost_in_all("n"), SYMBOLS)
+    simulator = Simulator(model, LagrangeMethod(model, Mechanics(model)).equilibrium)
+    with pytest.raises(DerivationError, match="lost: the simulation disagrees"):
+        derivation._simulate(model, {"lost": e ** (2 * n - 2) * m * g * h * (1 - e**2)}, simulator)
+
+
+def test_the_nth_bounce_alone_is_a_known_mistake_for_the_first_n_together() -> None:
+    mistakes = derive(load_model(_lost_in_all("n"), SYMBOLS)).mistakes["lost"]
+    alone = e ** (2 * n - 2) * m * g * h * (1 - e**2)
+    [feedback] = [k.feedback for k in mistakes if sympy.simplify(k.expr - alone) == 0]
+    assert "the last of those bounces takes alone" in feedback
+
+
+@pytest.mark.parametrize(
+    "spec",
+    [
+        pytest.param({"kinetic_energy_lost": "impact", "total": True}, id="without-a-count"),
+        pytest.param({"kinetic_energy_lost": "impact", "bounces": "n", "total": "all"}, id="not-true"),
+    ],
+)
+def test_a_total_that_is_not_over_a_count_of_bounces_is_refused_at_its_path(spec: dict[str, Any]) -> None:
+    with pytest.raises(SpecErrors) as caught:
+        load_model(ball(lost=spec), SYMBOLS)
+    found = {error.path: error.message for error in caught.value.errors}
+    assert "`total: true` with `bounces: n`" in found[("quantities", "lost", "total")]
+
+
 def test_a_number_of_bounces_may_be_a_number() -> None:
     derived = derive(load_model(ball(third={"max_height": "ball", "after": "impact", "bounces": 3}), SYMBOLS))
     assert sympy.simplify(derived.quantities["third"] - e**6 * h) == 0
