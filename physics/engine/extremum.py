@@ -50,7 +50,7 @@ def extremum(method: Method, quantity: Quantity) -> sympy.Expr:
             f"{name}: {what} = {typed_text(value)} does not depend on {parameter}", quantity=name
         )
     slope = tidy.simplify(sympy.diff(value, parameter))
-    found = tidy.solve(slope, parameter)
+    found = _other_turns(tidy.solve(slope, parameter), slope, parameter, model)
     bend = sympy.diff(value, parameter, 2)
     # the stationary values the parameter's sign and range allow, and of those the maxima (minima)
     stationary = [
@@ -79,6 +79,25 @@ def extremum(method: Method, quantity: Quantity) -> sympy.Expr:
     return root
 
 
+def _other_turns(
+    found: list[sympy.Expr], slope: sympy.Expr, parameter: sympy.Symbol, model: Model
+) -> list[sympy.Expr]:
+    """The roots with those an arctangent's branch leaves out: solve gives tan(2α − θ) = −cot θ one α,
+    θ/2 − π/4, where the launch angle of the longest range up an incline is π/4 + θ/2, a half-turn of
+    2α on. Each shift of a quarter or a half turn that also makes the derivative vanish (at the domain's
+    points) is a root too; the declared range then chooses."""
+    points = domain_points(model, POINTS, seed=41)
+    shifted = []
+    for root in found:
+        if not root.has(sympy.atan):
+            continue
+        for turn in (sympy.pi / 2, -sympy.pi / 2, sympy.pi, -sympy.pi):
+            other = root + turn
+            if all(abs(complex(sympy.N(slope.subs(parameter, other).subs(p), 30))) < 1e-20 for p in points):
+                shifted.append(other)
+    return found + shifted
+
+
 def described(quantity: Quantity) -> str:
     """ "the acceleration of x", for messages and titles."""
     words = quantity.kind.value.replace("_", " ")
@@ -100,12 +119,18 @@ def _without_abs(expr: sympy.Expr, model: Model) -> sympy.Expr:
 
 def _simplest(root: sympy.Expr, model: Model) -> sympy.Expr:
     """An angle root in its simplest equal form: solve writes tan(a) = mu as 2*atan((sqrt(mu^2 + 1) - 1)/mu),
-    which is atan(mu) on the domain (checked at its points: the inverse functions' branches differ)."""
+    which is atan(mu) on the domain, and atan(1/tan(theta)) for pi/2 - theta (each checked at its points:
+    the inverse functions' branches differ)."""
     if not root.has(sympy.atan, sympy.asin, sympy.acos):
         return root
     candidates = [
         inverse(tidy.simplify(sympy.expand_trig(function(root))))
         for function, inverse in ((sympy.tan, sympy.atan), (sympy.sin, sympy.asin), (sympy.cos, sympy.acos))
+    ]
+    candidates += [  # atan(cot u) is pi/2 - u where u is within a right angle
+        tidy.simplify(root.subs(term, sympy.pi / 2 - term.args[0].base.args[0]))
+        for term in root.atoms(sympy.atan)
+        if term.args[0].is_Pow and term.args[0].exp == -1 and isinstance(term.args[0].base, sympy.tan)
     ]
     equal = [
         c

@@ -4,20 +4,22 @@ from its own expression of the quantity and checked on simulated runs either sid
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 import pytest
 import sympy
 import yaml
 
-from physics.engine import derivation, load_model
+from physics.engine import derivation, extremum, load_model
 from physics.errors import DerivationError, SpecErrors
 
 uncached = derivation._derive.__wrapped__
 SYMBOLS = {
-    name: sympy.Symbol(name, positive=True) for name in ("m", "g", "v0", "alpha", "mu", "F", "v", "h", "r")
+    name: sympy.Symbol(name, positive=True)
+    for name in ("m", "g", "v0", "alpha", "mu", "F", "v", "h", "r", "theta")
 }
-m, g, v0, alpha, mu, F, v, h, r = SYMBOLS.values()
+m, g, v0, alpha, mu, F, v, h, r, theta = SYMBOLS.values()
 
 LAUNCH = """
 coordinates: [x, y]
@@ -29,6 +31,19 @@ domain:
   ranges: {alpha: ["0", "pi/2"]}
 quantities:
   best: {maximize: alpha, of: {range: ball}}
+"""
+# thrown from the foot of an incline at theta, landing on it: the longest range along it at pi/4 + theta/2
+UP_AN_INCLINE = """
+coordinates: [x, y]
+bodies:
+  ball: {mass: m, position: {x: x, y: y}}
+gravity: g
+state: {x: 0, y: 0, x_dot: "v0*cos(alpha)", y_dot: "v0*sin(alpha)"}
+domain:
+  ranges: {alpha: ["0", "pi/2"], theta: ["0", "pi/2"]}
+  positive: ["alpha - theta"]
+quantities:
+  best: {maximize: alpha, of: {range: ball, slope: theta}}
 """
 ROPE = """
 gravity: g
@@ -76,8 +91,14 @@ def cubic(kind: str, end: str) -> dict[str, Any]:
         (LAUNCH, sympy.pi / 4, "integrated range"),
         (ROPE, sympy.atan(mu), "integrated acceleration"),
         (PIVOT, r, "integrated period"),
+        (UP_AN_INCLINE, sympy.pi / 4 + theta / 2, "integrated range"),
     ],
-    ids=["launch-angle-for-range", "rope-angle-against-friction", "pivot-for-shortest-period"],
+    ids=[
+        "launch-angle-for-range",
+        "rope-angle-against-friction",
+        "pivot-for-shortest-period",
+        "launch-angle-up-an-incline",
+    ],
 )
 @pytest.mark.sample(2)
 def test_the_extremum_is_derived_by_two_methods_and_found_on_simulated_runs(
@@ -88,6 +109,15 @@ def test_the_extremum_is_derived_by_two_methods_and_found_on_simulated_runs(
     assert len(result.agreement["best"]) >= 2
     assert measured in result.simulation["best"].compared
     assert result.simulation["best"].max_relative_error < 1e-3
+
+
+def test_a_root_an_arctangents_branch_leaves_out_is_found_a_half_turn_on() -> None:
+    """solve gives tan(2 alpha - theta) = -cot(theta) only theta/2 - pi/4, outside alpha's range."""
+    model = load_model(yaml.safe_load(UP_AN_INCLINE), SYMBOLS)
+    slope = sympy.sin(2 * alpha) * sympy.tan(theta) + sympy.cos(2 * alpha)  # d(range)/d(alpha), less a factor
+    roots = extremum._other_turns(sympy.solve(slope, alpha), slope, alpha, model)
+    values = {round(float(root.subs(theta, 0.3)), 9) for root in roots}
+    assert round(math.pi / 4 + 0.15, 9) in values
 
 
 def test_the_other_stationary_value_is_a_minimum_not_the_maximum() -> None:
