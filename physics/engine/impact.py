@@ -386,7 +386,12 @@ def mistakes(model: Model, reference: sympy.Expr) -> list[tuple[sympy.Expr | Non
     if len(masses) == 2 and all(isinstance(m, sympy.Symbol) for m in masses):
         ma, mb = masses
         found.append((reference.subs({ma: mb, mb: ma}, simultaneous=True), SWAPPED_MASSES))
-    return found
+    # e = 0 in the n-th bounce's e^(2n - 2): no student's answer (there is no second bounce to slip on)
+    return [(wrong, why) for wrong, why in found if wrong is None or not _zero_to_a_symbol(wrong)]
+
+
+def _zero_to_a_symbol(expression: sympy.Expr) -> bool:
+    return any(power.base == 0 and not power.exp.is_number for power in expression.atoms(sympy.Pow))
 
 
 # The derivation methods that work an impact, by method name.

@@ -225,7 +225,8 @@ class ReachMeasure:
         time, y = self._events[key]
         now = dyn.positions(y[: dyn.n], params)
         if quantity.kind is QuantityKind.TIME_OF_FLIGHT:
-            return "time until the integrated flight comes down to the landing level", time, None
+            landing = "lands on the slope" if slope is not None else "comes down to the landing level"
+            return f"time until the integrated flight {landing}", time, None
         if quantity.kind is QuantityKind.RANGE and slope is not None:
             return (
                 "distance along the slope of the integrated flight where it lands on it",

@@ -175,3 +175,10 @@ def test_a_ball_gravity_carries_away_from_a_ceiling_is_refused_as_bouncing_once(
     data["impact"]["normal"] = {"y": 1}
     with pytest.raises(DerivationError, match="nothing brings the body back to the contact"):
         derive(load_model(data, SYMBOLS))
+
+
+def test_no_known_mistake_of_the_nth_bounce_raises_zero_to_a_symbolic_power() -> None:
+    """e = 0 in e^(2n - 2) is no student's slip (there is no second bounce) and would show as 0**(2n - 2)."""
+    mistakes = derive(load_model(ball(lost={"kinetic_energy_lost": "impact", "bounces": "n"}), SYMBOLS))
+    for known in mistakes.mistakes["lost"]:
+        assert not any(p.base == 0 for p in known.expr.atoms(sympy.Pow)), known.expr
