@@ -19,6 +19,7 @@ from collections.abc import Mapping
 from fractions import Fraction
 from typing import Literal, NoReturn
 
+from physics import separators
 from physics.errors import AmbiguousGrouping, AmbiguousInput, LikelySlip, ParseError, TooLarge
 from physics.mathinput.limits import InputLimits
 from physics.mathinput.mixed_numbers import mixed_number_slip
@@ -192,11 +193,7 @@ class Parser:
                     self._refuse_a_latex_mixed_number(prev)
                 if kind is Kind.NUM and prev.kind is Kind.NUM and not _times_a_power_of_ten(tokens, self._i):
                     self._refuse_a_mixed_number(prev, tok)
-                    raise ParseError(
-                        f'Two numbers side by side ("{self._source[prev.pos : tok.end]}"): remove the '
-                        "space if it is one number, or write * between them.",
-                        tok.pos,
-                    )
+                    raise separators.side_by_side(self._source, prev.pos, tok.pos, product=True)
                 items.append(_Item("*", self._power(), tok, True))
             else:
                 break

@@ -13,6 +13,7 @@ from collections.abc import Callable
 from dataclasses import replace
 from fractions import Fraction
 
+from physics import separators
 from physics.characters import may_be_wrapped, without_math_delimiters, without_zero_width
 from physics.errors import AnswerError, LikelySlip, ParseError, TooLarge
 from physics.mathinput.latex import LatexReader
@@ -505,7 +506,7 @@ def _read_number(chars: list[str], i: int, space: bool, limits: InputLimits) -> 
             i += 1
         fraction = "".join(chars[frac_start:i])
     if i + 1 < n and chars[i] == "," and chars[i + 1].isdigit():
-        raise ParseError("Use a decimal point, not a comma, inside a number (write 4.58, not 4,58).", i)
+        raise separators.comma_in_number("".join(chars), i)
     digits = len(whole) + len(fraction)
     if digits > limits.max_number_digits:
         raise TooLarge(f"A number has too many digits (at most {limits.max_number_digits}).", start)

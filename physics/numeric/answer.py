@@ -53,7 +53,7 @@ class NumericAnswer:
             units_position,
             units_text,
             number,
-            ". ".join(said for said in (number.note, note) if said) or None,
+            note,
         )
 
     def read_as(self, units: ParsedUnits | None = None) -> ReadAs:

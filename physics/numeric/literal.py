@@ -12,6 +12,7 @@ from dataclasses import dataclass
 from decimal import Decimal
 from fractions import Fraction
 
+from physics import separators
 from physics.errors import LikelySlip, ParseError, TooLarge
 
 MAX_DIGITS = 40
@@ -38,7 +39,6 @@ class NumberLiteral:
     percent: bool
     position: int  # where the number starts in the answer
     end: int  # just past the number (and its `%`)
-    note: str | None = None  # how a typing habit was read (`4,58` as 4.58)
 
     @property
     def value(self) -> Fraction:
@@ -323,76 +323,14 @@ class TwoPowersOfTen(LikelySlip):
         )
 
 
-# SI's digit grouping: a space, a thin space or a narrow no-break space between groups of three digits.
-_GROUP_SPACES = " \u2009\u202f"
-
-
-def _grouped_end(text: str, start: int, integer_end: int) -> int | None:
-    """The end of an integer part grouped in threes (`1 500`, `12 345 678`) that starts at `start`, or
-    None: a first group of one to three digits, not a lone 0, then groups of exactly three."""
-    first = integer_end - start
-    if not 1 <= first <= 3 or text[start] == "0":
-        return None
-    end = integer_end
-    while end + 4 <= len(text) and text[end] in _GROUP_SPACES and _run(text, end + 1, _DIGITS) == end + 4:
-        end += 4
-    return end if end > integer_end else None
-
-
-def _grouped_fraction_end(text: str, fraction_end: int) -> int:
-    """The end of digits after the point grouped in threes from the point (`0.123 45`, `4.580 0`),
-    as SI groups them: groups of exactly three, the last of one to three; `fraction_end` where no
-    group follows. A short group that is a power of ten's 10 (`4.580 10^3`, a calculator's display)
-    is none."""
-    end = fraction_end
-    while end < len(text) and text[end] in _GROUP_SPACES:
-        group_end = _run(text, end + 1, _DIGITS)
-        size = group_end - end - 1
-        if not 1 <= size <= 3 or (size < 3 and _power_of_ten(text, group_end) is not None):
-            break
-        end = group_end
-        if size < 3:
-            break
-    return end
-
-
 def side_by_side(text: str, number: NumberLiteral, at: int) -> ParseError:
-    """Why digits after a number and a space (`12 50`, `0.12 345`, `0 500`) are refused: two numbers,
-    the space no grouping in threes, saying what was read and how to write the one number meant."""
-    typed = text[number.position : number.end].strip()
-    after = text[at : _run(text, at, _DIGITS)]
-    read = f"Read as {typed} and then {after or text[at]}, two numbers side by side"
-    followed = text[at + len(after) : at + len(after) + 1]
-    if not after or followed in (".", ",") or number.exponent is not None or number.percent:
-        return ParseError(f"{read}: write one number", at)
-    sign = "-" if number.negative else ""
-    if number.integer_digits == "0" and not number.has_point:  # `0 500`: no group starts with a lone 0
-        return ParseError(
-            f"Did you mean {sign}0.{after} or {sign}{after}? {read}: SI's groups of three never start with 0",
-            at,
-        )
-    whole, fraction = number.integer_digits, number.fraction_digits
-    if number.has_point:
-        fraction += after
-    else:
-        whole += after
-    together = sign + whole + ("." + fraction if number.has_point else "")
-    grouped = sign + _in_threes(whole, fraction, point=number.has_point)
-    if grouped == together:
-        return ParseError(f"{read}: write one number, its digits together ({together})", at)
-    return ParseError(
-        f"{read}: write one number, its digits together ({together}) or in groups of three either side "
-        f"of the point ({grouped})",
-        at,
-    )
-
-
-def _in_threes(whole: str, fraction: str, *, point: bool) -> str:
-    """`12345.6789` as SI groups it, in threes from the point: `12 345.678 9`."""
-    head = len(whole) % 3 or 3
-    groups = [whole[:head], *(whole[k : k + 3] for k in range(head, len(whole), 3))]
-    after = " ".join(fraction[k : k + 3] for k in range(0, len(fraction), 3))
-    return " ".join(groups) + ("." + after if point else "")
+    """Why digits after a number and a space (`12 500`, `0.123 45`, `0 500`) are refused: two numbers,
+    saying what was seen and how to write the one number meant."""
+    if number.exponent is not None or number.percent or text[at] not in _DIGITS:
+        typed = text[number.position : number.end].strip()
+        after = text[at : _run(text, at, _DIGITS)] or text[at]
+        return ParseError(f"Read as {typed} and then {after}, two numbers side by side: write one number", at)
+    return separators.side_by_side(text, number.position, at)
 
 
 def _refuse_raised_point(text: str, integer_digits: str, at: int) -> None:
@@ -417,31 +355,6 @@ def _refuse_raised_point(text: str, integer_digits: str, at: int) -> None:
     )
 
 
-def _decimal_comma(text: str, integer_digits: str, at: int, *, grouped: bool) -> bool:
-    """Whether a comma at `at` is a decimal comma, as much of Europe types one (`4,58`): digits both
-    sides, the number's only comma, and not a possible thousands separator (`1,500` is asked about)."""
-    if not integer_digits or at + 1 >= len(text) or text[at] != "," or text[at + 1] not in _DIGITS:
-        return False
-    end = _run(text, at + 1, _DIGITS)
-    if end < len(text) and text[end] in ",.":
-        return False  # `1,500,000`, `1,500.5`: thousands separators, refused
-    thousands = end - at - 1 == 3 and integer_digits[0] != "0" and len(integer_digits) <= 3
-    return grouped or not thousands  # `1 500,5`: grouped by spaces, so the comma is the decimal one
-
-
-def _refuse_thousands_comma(text: str, integer_digits: str, at: int) -> None:
-    """LikelySlip for `1,500`: a thousands separator, or a decimal comma? Asked, naming both."""
-    end = _run(text, at + 1, _DIGITS)
-    if end - at - 1 != 3 or (end < len(text) and text[end] in ",."):
-        return
-    group = text[at + 1 : end]
-    raise LikelySlip(
-        f"Did you mean {integer_digits}.{group} or {integer_digits}{group}? Write a decimal point for a "
-        f"decimal ({integer_digits}.{group}) and no comma between thousands ({integer_digits}{group})",
-        at,
-    )
-
-
 def read_number(text: str, start: int = 0) -> NumberLiteral:
     """The number at the start of `text` (after spaces), or ParseError / TooLarge with a position."""
     i = skip_spaces(text, start)
@@ -452,22 +365,10 @@ def read_number(text: str, start: int = 0) -> NumberLiteral:
         i = skip_spaces(text, i + 1)
     integer_end = _run(text, i, _DIGITS)
     integer_digits = text[i:integer_end]
-    grouped_end = _grouped_end(text, i, integer_end)
-    if grouped_end is not None:  # `1 500`: SI's digit grouping
-        integer_digits = "".join(c for c in text[i:grouped_end] if c in _DIGITS)
-        integer_end = grouped_end
-    comma = _decimal_comma(text, integer_digits, integer_end, grouped=grouped_end is not None)
-    has_point = comma or (integer_end < len(text) and text[integer_end] == ".")
+    has_point = integer_end < len(text) and text[integer_end] == "."
     fraction_start = integer_end + 1 if has_point else integer_end
     fraction_end = _run(text, fraction_start, _DIGITS)
-    if has_point and fraction_end - fraction_start == 3:  # `0.123 45`: SI's grouping after the point
-        fraction_end = _grouped_fraction_end(text, fraction_end)
-    fraction_digits = "".join(c for c in text[fraction_start:fraction_end] if c in _DIGITS)
-    note = (
-        f"Read {text[i:fraction_end]} as {integer_digits or '0'}.{fraction_digits}: a decimal comma"
-        if comma
-        else None
-    )
+    fraction_digits = text[fraction_start:fraction_end]
     if not integer_digits and not fraction_digits:
         raise ParseError("The answer must start with a number, such as 2.5 or -0.5", i)
     if len(integer_digits) + len(fraction_digits) > MAX_DIGITS:
@@ -476,11 +377,7 @@ def read_number(text: str, start: int = 0) -> NumberLiteral:
     if i < len(text) and text[i] in _PRIMES and not has_point:  # `5′ 11″`, `5' 10.5"`
         _refuse_feet_and_inches(text, integer_digits, i)
     if i + 1 < len(text) and text[i] == "," and text[i + 1] in _DIGITS:
-        _refuse_thousands_comma(text, integer_digits, i)
-        raise ParseError(
-            "A comma cannot appear in a number: use a decimal point (2.5) and no thousands separators (1500)",
-            i,
-        )
+        raise separators.comma_in_number(text, i)
     if i + 1 < len(text) and text[i] in _DIGIT_SEPARATORS and text[i + 1] in _DIGITS:
         _refuse_feet_and_inches(text, integer_digits, i)
         raise ParseError(f"Write a number without separators: 1500, not 1{text[i]}500", i)
@@ -497,7 +394,7 @@ def read_number(text: str, start: int = 0) -> NumberLiteral:
     found = _scientific(text, i, position)
     if found is not None:
         exponent, i = found
-    return _finish(text, integer_digits, fraction_digits, has_point, exponent, i, negative, position, note)
+    return _finish(text, integer_digits, fraction_digits, has_point, exponent, i, negative, position)
 
 
 _PERCENT_WORDS = re.compile(r"per\s?cent\b", re.IGNORECASE)  # `45 percent`, `45 per cent`
@@ -522,7 +419,6 @@ def _finish(
     i: int,
     negative: bool,
     position: int,
-    note: str | None = None,
 ) -> NumberLiteral:
     j = skip_spaces(text, i)
     percent_end = _percent_end(text, j)
@@ -538,5 +434,4 @@ def _finish(
         percent=percent,
         position=position,
         end=i,
-        note=note,
     )

@@ -76,7 +76,6 @@ def choice(answer: str, choices: list[dict] | None = None) -> dict:
         pytest.param(numeric("-4.58 m/s^2"), "incorrect", "sign_error", id="numeric-sign"),
         pytest.param(numeric("5.2 m/s^2"), "incorrect", "wrong_value", id="numeric-wrong"),
         pytest.param(numeric("4,580 m/s^2"), "invalid", "parse_error", id="thousands-or-decimal-comma"),
-        pytest.param(numeric("4,58 m/s^2"), "correct", "equivalent", id="decimal-comma"),
         pytest.param(
             numeric("4.6 m/s^2", tolerance={"sigfigs": 3}), "invalid", "sigfigs", id="sigfigs-shown"
         ),
@@ -270,6 +269,28 @@ def test_invalid_verdict_points_at_the_problem(client, student_headers):
     assert result["verdict"] == "invalid"
     assert result["error"]["position"] == 6  # the "*" with nothing before it
     assert result["error"]["message"]
+
+
+CONTRACT_NUMBERS = [
+    # (body, position, message): API.md's "a comma inside a number (4,58) or two numbers side by side
+    # (12 500) is invalid", in both kinds of answer
+    (numeric("4,58 m/s^2"), 1, "4,58: a decimal comma is not read; write 4.58"),
+    (numeric("12 500", expected=12500, units=None), 3, "12 500: two numbers side by side; for one number"),
+    (symbolic("4,58 m g", "4.58*m*g"), 1, "4,58: a decimal comma is not read; write 4.58"),
+    (symbolic("12 500 m g", "12500*m*g"), 3, "12 500: two numbers side by side; for one number"),
+]
+
+
+@pytest.mark.parametrize(
+    ("body", "position", "message"), CONTRACT_NUMBERS, ids=[c[0]["answer"] for c in CONTRACT_NUMBERS]
+)
+def test_a_comma_in_a_number_or_two_numbers_side_by_side_are_invalid(
+    client, student_headers, body, position, message
+):
+    result = client.post("/v1/check", json=body, headers=student_headers).json()
+    assert (result["verdict"], result["reason"], result["read_as"]) == ("invalid", "parse_error", None)
+    assert result["error"]["position"] == position
+    assert result["error"]["message"].startswith(message)
 
 
 def test_ambiguous_division_is_refused_with_both_readings(client, student_headers):

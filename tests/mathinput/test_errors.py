@@ -38,7 +38,7 @@ PARSE_ERRORS = [
     ("2 y′", 3, "A prime (y′) is not read here"),  # a dot for a product, as some schools write
     ("sin(x).y", 6, "not '.'"),
     ("x..", 1, "Unexpected character '.'"),
-    ("4,58", 1, "decimal point"),
+    ("4,58", 1, "4,58: a decimal comma is not read; write 4.58"),
     ("x, y", 1, "Commas are not used in answers: give one expression"),
     ("(x, y)", 2, "not a pair or a list"),
     ("atan2(y, x)", 7, "a function of several arguments cannot be written; write the angle as atan(y/x)."),
@@ -71,9 +71,9 @@ PARSE_ERRORS = [
         "A % goes after a number, as in 50 % y: after y it would divide it by 100.",
     ),  # was y/100
     ("(x + y)%", 7, "A % goes after a number"),
-    ("12 500", 3, "Two numbers side by side"),
-    ("x^2 3", 4, "Two numbers side by side"),
-    ("x^2 10^3", 4, "Two numbers side by side"),  # x^(2·10^3)? not taken for a power of ten
+    ("12 500", 3, "12 500: two numbers side by side; for one number, write 12500 (or 12.5e3)"),
+    ("x^2 3", 4, "two numbers side by side"),
+    ("x^2 10^3", 4, "two numbers side by side"),  # x^(2·10^3)? not taken for a power of ten
     ("sin", 0, "sin needs an argument"),
     ("sin^2", 0, "sin needs an argument"),
     ("x + sin -x", 8, "brackets"),

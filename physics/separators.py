@@ -1,0 +1,97 @@
+"""Numbers typed with a separator that is not read: a comma inside a number (`4,58`, `1,500`) and digits
+grouped by spaces (`12 500`, SI's `0.123 45`). The contract makes both `invalid` (a comma may be a
+decimal comma or a thousands separator, and a space may be a product), so nothing here reads such a
+number as one: it only says what was seen and what to type instead, for both readers of numbers
+(physics/numeric/literal.py and physics/mathinput/tokens.py). Imports nothing of the project but errors.
+"""
+
+from __future__ import annotations
+
+from physics.errors import LikelySlip, ParseError
+
+_DIGITS = "0123456789"
+# The spaces SI groups digits with (and a phone's no-break space): shown back as a plain space.
+_SPACES = " \u00a0\u2009\u202f"
+_NUMBER = _DIGITS + ".,"
+
+
+def comma_in_number(text: str, at: int) -> LikelySlip:
+    """Why the comma at `at`, between digits, is refused: a decimal comma (`4,58`: write 4.58), a
+    thousands separator (`1,500,000`: write 1500000) or either (`1,500`: asked, naming both). A slip,
+    so that no other reader (a numeric answer's arithmetic, its units) has the last word on it."""
+    seen, start = _typed_number(text, at)
+    spaced = [k for k, c in enumerate(seen) if c in _SPACES]
+    if spaced:  # `1 500,5`: refused where the second number starts, as without the comma
+        second = start + spaced[0] + 1
+        return LikelySlip(side_by_side(text, start, second).message, second)
+    whole, _, after = seen.partition(",")
+    if "," in after or "." in seen:  # `1,500,000`, `1,500.5`: thousands separators
+        return LikelySlip(f"{seen}: a comma between thousands is not read; write {seen.replace(',', '')}", at)
+    if len(after) == 3 and len(whole) <= 3 and whole[0] != "0":
+        return LikelySlip(
+            f"{seen}: a comma is not read in a number. Did you mean {whole}.{after} or {whole}{after}? Write "
+            f"a decimal point for a decimal ({whole}.{after}), and the digits together for thousands "
+            f"({whole}{after})",
+            at,
+        )
+    return LikelySlip(f"{seen}: a decimal comma is not read; write {whole}.{after}", at)
+
+
+def side_by_side(text: str, start: int, at: int, *, product: bool = False) -> ParseError:
+    """Why the digits at `at`, after the number that starts at `start` and a space (`12 500`,
+    `0.123 45`, `0 500`), are refused: two numbers side by side, saying how to write the one number
+    meant (and, where `product` may be meant, as in a symbolic answer, how to write the product)."""
+    end = at
+    while end < len(text) and (
+        text[end] in _NUMBER or (text[end] in _SPACES and text[end + 1 : end + 2] in tuple(_DIGITS))
+    ):
+        end += 1
+    shown = " ".join(text[start:end].lstrip("+-−").rstrip(".,").split())
+    first, _, rest = shown.partition(" ")
+    second = rest.split(" ")[0]
+    times = f"; for a product, write {first}*{second}" if product else ""
+    together = shown.replace(" ", "")
+    if not second or any(c not in _NUMBER for c in together):  # `4.5e3 12`: no digits to join
+        return ParseError(f"{shown}: two numbers side by side; write one number{times}", at)
+    if first == "0":  # `0 500`: no group of digits starts with a lone 0
+        return ParseError(f"{shown}: two numbers side by side. Did you mean 0.{second} or {second}?", at)
+    if together.count(",") == 1 and "." not in together:  # `1 500,5`: the comma a decimal one
+        together = together.replace(",", ".")
+    together = together.replace(",", "")
+    if together.count(".") > 1:
+        return ParseError(
+            f"{shown}: two numbers side by side; write one number, its digits together{times}", at
+        )
+    return ParseError(
+        f"{shown}: two numbers side by side; for one number, write {together}{_scientific(together)}{times}",
+        at,
+    )
+
+
+def _typed_number(text: str, at: int) -> tuple[str, int]:
+    """The digits, points, commas and spaces between digits around `at`, as typed, and where they start."""
+
+    def inside(k: int) -> bool:
+        if text[k] in _NUMBER:
+            return True
+        return (
+            text[k] in _SPACES and 0 < k < len(text) - 1 and text[k - 1] in _DIGITS and text[k + 1] in _DIGITS
+        )
+
+    start = at
+    while start > 0 and inside(start - 1):
+        start -= 1
+    end = at
+    while end < len(text) and inside(end):
+        end += 1
+    seen = text[start:end].rstrip(".,")  # a full stop ending the answer is no decimal point
+    return seen.lstrip(".,"), start + len(seen) - len(seen.lstrip(".,"))
+
+
+def _scientific(whole: str) -> str:
+    """` (or 12.5e3)` for a whole number of thousands or more, in the engineering notation physics uses."""
+    if "." in whole or len(whole) < 4 or whole[0] == "0":
+        return ""
+    power = (len(whole) - 1) // 3 * 3
+    head, tail = whole[:-power], whole[-power:].rstrip("0")
+    return f" (or {head}.{tail}e{power})" if tail else f" (or {head}e{power})"

@@ -1,0 +1,68 @@
+"""A comma inside a number and digits grouped by spaces are `invalid` wherever numbers are read (API.md:
+"a comma inside a number (`4,58`) or two numbers side by side (`12 500`) is `invalid`"), each refusal
+saying what was seen and what to type instead, at the right place."""
+
+from __future__ import annotations
+
+from decimal import Decimal
+
+import pytest
+
+from physics.errors import ParseError
+from physics.numeric import NumericSpec, check_numeric
+from physics.verdict import Outcome, Reason
+from tests.mathinput.support import read
+
+REFUSED = [
+    # (typed number, position in it, the message's start): the contract's own examples first
+    ("4,58", 1, "4,58: a decimal comma is not read; write 4.58"),
+    ("12 500", 3, "12 500: two numbers side by side; for one number, write 12500 (or 12.5e3)"),
+    ("0,500", 1, "0,500: a decimal comma is not read; write 0.500"),
+    ("1,500", 1, "1,500: a comma is not read in a number. Did you mean 1.500 or 1500?"),
+    ("1,500,000", 1, "1,500,000: a comma between thousands is not read; write 1500000"),
+    ("1 500", 2, "1 500: two numbers side by side; for one number, write 1500 (or 1.5e3)"),
+    ("1\u2009500", 2, "1 500: two numbers side by side"),  # a thin space
+    ("1\u202f500", 2, "1 500: two numbers side by side"),  # a narrow no-break space
+    ("12 345", 3, "12 345: two numbers side by side; for one number, write 12345"),
+    ("1 500.5", 2, "1 500.5: two numbers side by side; for one number, write 1500.5"),
+    ("0.123 45", 6, "0.123 45: two numbers side by side; for one number, write 0.12345"),
+    ("4.580 7", 6, "4.580 7: two numbers side by side; for one number, write 4.5807"),
+    ("1 500,5", 2, "1 500,5: two numbers side by side; for one number, write 1500.5"),
+    ("0 500", 2, "0 500: two numbers side by side. Did you mean 0.500 or 500?"),
+]
+IDS = [c[0] for c in REFUSED]
+
+
+@pytest.mark.parametrize(("number", "position", "message"), REFUSED, ids=IDS)
+def test_a_numeric_answer_with_a_separator_is_invalid_saying_what_to_type(
+    number: str, position: int, message: str
+) -> None:
+    verdict = check_numeric(f"{number} N", NumericSpec(Decimal("4.58"), "N"))
+    assert (verdict.outcome, verdict.reason) == (Outcome.INVALID, Reason.PARSE_ERROR)
+    assert verdict.error is not None
+    assert verdict.error.position == position
+    assert verdict.error.message.startswith(message)
+
+
+@pytest.mark.parametrize(("number", "position", "message"), REFUSED, ids=IDS)
+def test_a_symbolic_answer_with_a_separator_is_refused_saying_what_to_type(
+    number: str, position: int, message: str
+) -> None:
+    with pytest.raises(ParseError) as caught:
+        read(f"{number} m g", "m", "g")
+    assert caught.value.position == position
+    assert caught.value.message.startswith(message)
+
+
+def test_two_numbers_side_by_side_in_a_symbolic_answer_may_also_be_a_product() -> None:
+    with pytest.raises(ParseError) as caught:
+        read("12 500 m g", "m", "g")
+    assert caught.value.message.endswith("; for a product, write 12*500")
+
+
+@pytest.mark.parametrize("answer", ["2*4,58 N", "4,58*2 N", "(4,58) N"])
+def test_a_decimal_comma_in_arithmetic_is_refused_at_the_comma(answer: str) -> None:
+    verdict = check_numeric(answer, NumericSpec(Decimal("9.16"), "N"))
+    assert verdict.error is not None
+    assert verdict.error.message.startswith("4,58: a decimal comma is not read; write 4.58")
+    assert answer[verdict.error.position] == ","
