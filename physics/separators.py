@@ -51,7 +51,10 @@ def side_by_side(text: str, start: int, at: int, *, product: bool = False) -> Pa
     second = rest.split(" ")[0]
     times = f"; for a product, write {first}*{second}" if product else ""
     together = shown.replace(" ", "")
-    if not second or any(c not in _NUMBER for c in together):  # `4.5e3 12`: no digits to join
+    raised = text[end : end + 1] in ("^", *"⁰¹²³⁴⁵⁶⁷⁸⁹⁻")  # `x^2 10^3`: the digits are no one number
+    if raised:
+        return ParseError(f"{shown}: two numbers side by side; write * between them for a product", at)
+    if not second or any(c not in _NUMBER for c in together):  # `4.5e3 12`: nor these
         return ParseError(f"{shown}: two numbers side by side; write one number{times}", at)
     if first == "0":  # `0 500`: no group of digits starts with a lone 0
         return ParseError(f"{shown}: two numbers side by side. Did you mean 0.{second} or {second}?", at)
@@ -65,6 +68,15 @@ def side_by_side(text: str, start: int, at: int, *, product: bool = False) -> Pa
     return ParseError(
         f"{shown}: two numbers side by side; for one number, write {together}{_scientific(together)}{times}",
         at,
+    )
+
+
+def power_of_ten_apart(text: str, start: int, ten: int, end: int) -> LikelySlip:
+    """Why `4.58 10^3`, a calculator's display with its × left out, is refused: two numbers side by
+    side (the number from `start`, the power of ten from `ten` to `end`), saying where the × goes."""
+    mantissa, power = text[start:ten].strip(), text[ten:end].strip()
+    return LikelySlip(
+        f"{mantissa} {power}: two numbers side by side; for a power of ten, write {mantissa}×{power}", ten
     )
 
 

@@ -60,6 +60,29 @@ def test_two_numbers_side_by_side_in_a_symbolic_answer_may_also_be_a_product() -
     assert caught.value.message.endswith("; for a product, write 12*500")
 
 
+POWERS_OF_TEN_APART = [
+    # (typed, position, message): a calculator's display, its × left out, is two numbers side by side too
+    ("4.58 10^3", 5, "4.58 10^3: two numbers side by side; for a power of ten, write 4.58×10^3"),
+    ("4.58 10⁻³", 5, "4.58 10⁻³: two numbers side by side; for a power of ten, write 4.58×10⁻³"),
+    ("4.580\u200910^-3", 6, "4.580 10^-3: two numbers side by side; for a power of ten, write 4.580×10^-3"),
+]
+
+
+@pytest.mark.parametrize(
+    ("number", "position", "message"), POWERS_OF_TEN_APART, ids=[c[0] for c in POWERS_OF_TEN_APART]
+)
+def test_a_power_of_ten_apart_from_its_number_is_refused_saying_where_the_times_sign_goes(
+    number: str, position: int, message: str
+) -> None:
+    verdict = check_numeric(f"{number} N", NumericSpec(Decimal("4.58"), "N"))
+    assert (verdict.outcome, verdict.reason) == (Outcome.INVALID, Reason.PARSE_ERROR)
+    assert verdict.error is not None
+    assert (verdict.error.position, verdict.error.message) == (position, message)
+    with pytest.raises(ParseError) as caught:
+        read(f"{number} m", "m")
+    assert (caught.value.position, caught.value.message) == (position, message)
+
+
 @pytest.mark.parametrize("answer", ["2*4,58 N", "4,58*2 N", "(4,58) N"])
 def test_a_decimal_comma_in_arithmetic_is_refused_at_the_comma(answer: str) -> None:
     verdict = check_numeric(answer, NumericSpec(Decimal("9.16"), "N"))

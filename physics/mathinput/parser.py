@@ -191,7 +191,11 @@ class Parser:
                     and self._source[tok.pos : tok.pos + 1] == "\\"
                 ):
                     self._refuse_a_latex_mixed_number(prev)
-                if kind is Kind.NUM and prev.kind is Kind.NUM and not _times_a_power_of_ten(tokens, self._i):
+                if kind is Kind.NUM and prev.kind is Kind.NUM:
+                    if _times_a_power_of_ten(tokens, self._i):
+                        self._power()
+                        end = self._tokens[self._i - 1].end
+                        raise separators.power_of_ten_apart(self._source, prev.pos, tok.pos, end)
                     self._refuse_a_mixed_number(prev, tok)
                     raise separators.side_by_side(self._source, prev.pos, tok.pos, product=True)
                 items.append(_Item("*", self._power(), tok, True))
@@ -912,8 +916,8 @@ def _product_of(factors: list[Node]) -> Node:
 
 
 def _times_a_power_of_ten(tokens: list[Token], at: int) -> bool:
-    """`4.58 10^3`: scientific notation with its × left out, as a calculator shows it. The number before
-    is no exponent (`x^2 10^3` may be x^(2·10^3)), and the two cannot be one number as `12 500` can."""
+    """`4.58 10^3`: scientific notation with its × left out, as a calculator shows it, refused saying
+    where the × goes. The number before is no exponent (`x^2 10^3` may be x^(2·10^3))."""
     before, after = tokens[at - 2] if at >= 2 else None, tokens[at + 1]
     raised = after.kind is Kind.SUP or (after.kind is Kind.OP and after.text == "^")
     exponent = before is not None and before.kind is Kind.OP and before.text == "^"

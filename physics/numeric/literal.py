@@ -204,13 +204,12 @@ def _scientific(text: str, i: int, start: int) -> tuple[int, int] | None:
     if j > i and j < len(text) and text[j] in "eE":
         _refuse_spaced_exponent(text, text[start:i], j)
     times_end = _times_sign_end(text, j)
-    if (
-        times_end is None and j > i and text.startswith("10", j)
-    ):  # `4.58 10^3`: a calculator's, its × left out
+    if times_end is None and j > i and text.startswith("10", j):  # `4.58 10^3`: two numbers, never one
         found = _power_of_ten(text, j + 2)
         if found is None:
             _refuse_calculator_exponent(text, j + 2)  # `4.58 10-3`: its ^ left out too
-        return found
+            return None
+        raise separators.power_of_ten_apart(text, start, j, found[1])
     if times_end is not None:
         k = skip_spaces(text, times_end)
         if text.startswith("10", k):

@@ -39,12 +39,9 @@ VALUES = [
     ("4.58×10^(-3)", F("0.00458")),
     ("4.58×10^−3", F("0.00458")),
     ("10^3", F(1000)),
-    ("4.58 10^3", F(4580)),  # a calculator's display, its × left out
     ("4.58ᴇ3", F(4580)),  # a TI calculator's small capital E
     ("4.58ᴇ-3", F("0.00458")),
     ("4.58⏨3", F(4580)),  # the decimal exponent symbol
-    ("4.58 10⁻³", F("0.00458")),
-    ("4.58\u200910^-3", F("0.00458")),
     ("4.58*^3", F(4580)),  # Mathematica's power of ten
     ("4.58*^-3", F("0.00458")),  # a thin space, as a word processor sets it
     ("45%", F(45, 100)),
@@ -56,7 +53,6 @@ VALUES = [
     ("1e-400", F(1, 10**400)),
     ("0", F(0)),
     ("-0.0", F(0)),
-    ("4.580 10^3", F(4580)),  # a calculator's display, its × left out: 10 is no group
 ]
 
 
