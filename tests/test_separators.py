@@ -54,6 +54,16 @@ def test_a_symbolic_answer_with_a_separator_is_refused_saying_what_to_type(
     assert caught.value.message.startswith(message)
 
 
+@pytest.mark.parametrize(
+    ("answer", "message"),
+    [("12 500/2", "12 500: two numbers side by side"), ("1 1/2", "Write a mixed number")],
+)
+def test_digits_grouped_before_a_division_are_no_mixed_number(answer: str, message: str) -> None:
+    with pytest.raises(ParseError) as caught:
+        read(f"{answer} m", "m")
+    assert caught.value.message.startswith(message)
+
+
 def test_two_numbers_side_by_side_in_a_symbolic_answer_may_also_be_a_product() -> None:
     with pytest.raises(ParseError) as caught:
         read("12 500 m g", "m", "g")

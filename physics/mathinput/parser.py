@@ -223,10 +223,12 @@ class Parser:
             and bottom.kind is Kind.NUM
             and bottom.text.isdigit()
             and bottom.value
+            and top.value is not None
+            # `12 500/2`: a group of three digits over less is no mixed number, but digits grouped
+            and not (len(top.text) == 3 and top.value >= bottom.value)
             and not (at >= 2 and tokens[at - 2].kind is Kind.OP and tokens[at - 2].text == "^")
         ):
             return
-        assert top.value is not None
         typed = self._source[whole.pos : bottom.end]
         raise mixed_number_slip(int(whole.text), top.value / bottom.value, typed, top.pos)
 
