@@ -25,6 +25,14 @@ def comma_in_number(text: str, at: int) -> LikelySlip:
         second = start + spaced[0] + 1
         return LikelySlip(side_by_side(text, start, second).message, second)
     whole, _, after = seen.partition(",")
+    if "." in whole:  # `1.500,5`: points between thousands and a decimal comma, or no number at all
+        groups = whole.split(".")
+        if "," in after or not 1 <= len(groups[0]) <= 3 or any(len(g) != 3 for g in groups[1:]):
+            return LikelySlip(f"{seen}: a comma is not read in a number; write it with one decimal point", at)
+        return LikelySlip(
+            f"{seen}: a comma is not read in a number, nor a point between thousands; write {''.join(groups)}.{after}",
+            at,
+        )
     if "," in after or "." in seen:  # `1,500,000`, `1,500.5`: thousands separators
         return LikelySlip(f"{seen}: a comma between thousands is not read; write {seen.replace(',', '')}", at)
     if len(after) == 3 and len(whole) <= 3 and whole[0] != "0":

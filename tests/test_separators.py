@@ -20,6 +20,7 @@ REFUSED = [
     ("0,500", 1, "0,500: a decimal comma is not read; write 0.500"),
     ("1,500", 1, "1,500: a comma is not read in a number. Did you mean 1.500 or 1500?"),
     ("1,500,000", 1, "1,500,000: a comma between thousands is not read; write 1500000"),
+    ("1.500,5", 5, "1.500,5: a comma is not read in a number, nor a point between thousands; write 1500.5"),
     ("1 500", 2, "1 500: two numbers side by side; for one number, write 1500 (or 1.5e3)"),
     ("1\u2009500", 2, "1 500: two numbers side by side"),  # a thin space
     ("1\u202f500", 2, "1 500: two numbers side by side"),  # a narrow no-break space

@@ -120,7 +120,7 @@ REFUSED = [
     # own examples, 4,58 and 12 500, are pinned by tests/test_separators.py through every reader)
     ("1,500,000 m", ParseError, 1, "1,500,000: a comma between thousands is not read; write 1500000"),
     ("1,500.5 m", ParseError, 1, "write 1500.5"),
-    ("4.5,8 m", ParseError, 3, "4.5,8: a comma between thousands is not read"),
+    ("4.5,8 m", ParseError, 3, "4.5,8: a comma is not read in a number; write it with one decimal point"),
     ("12 5000 m", ParseError, 3, "12 5000: two numbers side by side; for one number, write 125000"),
     ("1234 567 m", ParseError, 5, "write 1234567 (or 1.234567e6)"),
     ("1  500 m", ParseError, 3, "1 500: two numbers side by side"),
