@@ -26,13 +26,14 @@ lint: $(BIN)/physcheck
 	$(BIN)/mypy
 
 # The bank's per-problem self-test is `physcheck bank verify` (20 variants); pytest's copy of it is left out
-# here. The bank is built first, as a package is: the tests' servers then load it as a first start does,
-# instead of each deriving, module by module, every bank problem it uses (a quarter of the page and
-# service tests' CPU). Tests run on every core; an idle worker takes tests from a busy one (worksteal),
-# so a file of slow parametrized tests is shared out (a module fixture, such as a live server, may then
-# be set up once per worker); --durations names the slowest tests of each run.
-test: lint bank
-	$(BIN)/physcheck bank verify
+# here. It also writes the derived bank (--build, as `make bank` does, from the same derivations): the
+# tests' servers then load it as a first start from the package does, instead of each deriving, module
+# by module, every bank problem it uses (a quarter of the page and service tests' CPU). Tests run on
+# every core; an idle worker takes tests from a busy one (worksteal), so a file of slow parametrized
+# tests is shared out (a module fixture, such as a live server, may then be set up once per worker);
+# --durations names the slowest tests of each run.
+test: lint
+	$(BIN)/physcheck bank verify --build
 	$(BIN)/pytest -q -n auto --dist worksteal -m "not bank_selftest" --durations=25
 
 # Re-pin both locks from pyproject.toml (needs the network to PyPI).

@@ -102,9 +102,11 @@ def _keys_revoke(args: argparse.Namespace, settings: Settings) -> int:
 
 def _bank_verify(args: argparse.Namespace, settings: Settings) -> int:
     from app.bank_verify import verify_command
+    from app.shipped_bank import SHIPPED_BANK
 
+    build = (Path(args.output) if args.output else SHIPPED_BANK) if args.build else None
     return verify_command(
-        variants=args.variants, only=args.problem, bank_dir=settings.bank_dir, jobs=args.jobs
+        variants=args.variants, only=args.problem, bank_dir=settings.bank_dir, jobs=args.jobs, build=build
     )
 
 
@@ -213,6 +215,14 @@ def build_parser() -> argparse.ArgumentParser:
     verify.add_argument("--problem", action="append", default=None, help="only this problem (repeatable)")
     verify.add_argument(
         "--jobs", type=int, default=None, help="problems derived at once (default: one per core)"
+    )
+    verify.add_argument(
+        "--build",
+        action="store_true",
+        help="when every problem passes, also write the derived bank as `bank build` does (derived once)",
+    )
+    verify.add_argument(
+        "--output", default=None, help="with --build: file to write (default: the package's own)"
     )
     verify.set_defaults(handler=_bank_verify)
     build = bank.add_parser(

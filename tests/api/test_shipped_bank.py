@@ -14,6 +14,7 @@ from pathlib import Path
 import pytest
 
 from app import catalog as catalog_module
+from app.bank_verify import verify_command
 from app.catalog import Catalog
 from app.derivation import DerivationPool, forget_derived
 from app.shipped_bank import DamagedBank, build_bank, read_bank, write_bank
@@ -204,3 +205,22 @@ def test_a_first_start_with_a_damaged_shipped_bank_logs_it_and_derives_the_bank(
     assert grades_its_reference(catalog)
     [refused] = [record.getMessage() for record in caplog.records]
     assert refused.startswith(f"refusing the shipped bank {damaged}: ")
+
+
+def test_bank_verify_with_build_writes_the_bank_that_build_writes(
+    db, small_bank, shipped, derivations, tmp_path, capsys
+):
+    """`make test` verifies and builds in one derivation of each problem; a first start loads it."""
+    path = tmp_path / "verified.compiled"
+    assert verify_command(variants=2, bank_dir=small_bank, jobs=1, build=path) == 0
+    built, verified = read_bank(shipped), read_bank(path)
+    assert built is not None and verified is not None
+    assert verified.payloads.keys() == built.payloads.keys() and verified.source == built.source
+    assert grades_its_reference(first_start(db, small_bank, path))
+    assert derivations == []
+
+
+def test_bank_verify_of_some_problems_writes_no_bank(small_bank, tmp_path, capsys):
+    path = tmp_path / "part.compiled"
+    assert verify_command(variants=2, only=["atwood"], bank_dir=small_bank, jobs=1, build=path) == 0
+    assert not path.exists()
