@@ -98,7 +98,15 @@ def tokenize(
             raise TooLarge(f"The answer has too many parts (at most {max_tokens} tokens).", i)
         start = i
         if (ch.isdigit() and ch.isascii()) or (ch == "." and i + 1 < n and chars[i + 1].isdigit()):
-            token, i = _read_number(chars, i, space, limits)
+            try:
+                token, i = _read_number(chars, i, space, limits)
+            except LikelySlip as slip:
+                # `atan2(3,4)`: a function of two arguments, where `sin(4,58)` may be sin(4.58)
+                opened = _open_bracket(tokens)
+                called = tokens[opened - 1] if opened else None
+                if called is not None and called.kind is Kind.WORD and called.text.lower() in _TWO_ARGUMENTS:
+                    raise ParseError(_comma_message(tokens), slip.position) from None
+                raise
             if ch == "1" and token.text.startswith("10e"):
                 _refuse_two_powers_of_ten(text, tokens, token)
         elif ch.isalpha() and ch not in SUPERSCRIPT_PLAIN:  # a word starts with a letter
@@ -409,26 +417,31 @@ _TWO_ARGUMENTS = {
 def _comma_message(before: list[Token]) -> str:
     """Why a comma cannot be read, by where it stands: in a function's brackets (`atan2(y, x)`), in
     plain brackets (a pair), or between two expressions."""
+    at = _open_bracket(before)
+    if at is None:
+        return "Commas are not used in answers: give one expression (a product is written with * or a space)."
+    name = before[at - 1].text if at and before[at - 1].kind is Kind.WORD else None
+    if name is None:
+        return "Commas are not used in answers: give one expression, not a pair or a list."
+    if name in FUNCTIONS:
+        return f"Commas are not used in answers: {name}(…) takes one argument."
+    written = _TWO_ARGUMENTS.get(name.lower())
+    instead = f"; write {written}" if written else ""
+    return f"Commas are not used in answers: a function of several arguments cannot be written{instead}."
+
+
+def _open_bracket(before: list[Token]) -> int | None:
+    """Where the innermost bracket still open after `before` opens, if one is."""
     depth = 0
     for at in range(len(before) - 1, -1, -1):
         kind = before[at].kind
         if kind is Kind.RPAREN:
             depth += 1
         elif kind is Kind.LPAREN:
-            if depth:
-                depth -= 1
-                continue
-            name = before[at - 1].text if at and before[at - 1].kind is Kind.WORD else None
-            if name is None:
-                return "Commas are not used in answers: give one expression, not a pair or a list."
-            if name in FUNCTIONS:
-                return f"Commas are not used in answers: {name}(…) takes one argument."
-            written = _TWO_ARGUMENTS.get(name.lower())
-            instead = f"; write {written}" if written else ""
-            return (
-                f"Commas are not used in answers: a function of several arguments cannot be written{instead}."
-            )
-    return "Commas are not used in answers: give one expression (a product is written with * or a space)."
+            if not depth:
+                return at
+            depth -= 1
+    return None
 
 
 def _vulgar_fraction(ch: str, i: int, space: bool) -> list[Token]:

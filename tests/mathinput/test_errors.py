@@ -42,6 +42,9 @@ PARSE_ERRORS = [
     ("x, y", 1, "Commas are not used in answers: give one expression"),
     ("(x, y)", 2, "not a pair or a list"),
     ("atan2(y, x)", 7, "a function of several arguments cannot be written; write the angle as atan(y/x)."),
+    ("atan2(3,4)", 7, "a function of several arguments cannot be written; write the angle as atan(y/x)."),
+    ("pow(2,5)", 5, "a function of several arguments cannot be written; write a power with ^, as x^2"),
+    ("sin(4,58)", 5, "4,58: a decimal comma is not read; write 4.58"),  # one argument: a decimal comma
     ("pow(x, 2)", 5, "cannot be written; write a power with ^, as x^2 or x^(1/2)."),  # code's power
     ("POWER(x, 0.5)", 7, "write a power with ^"),  # a spreadsheet's
     ("nthroot(x, 3)", 9, "write a root as a power, as x^(1/3), or with sqrt(x)."),  # MATLAB's
