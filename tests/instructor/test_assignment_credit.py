@@ -202,3 +202,17 @@ def test_opening_a_released_solution_asks_first_for_parts_solved_only_late(
     assert ("yo-yo" in stores.courses.solutions_opened(identity)) is (asked_for is None)
     warned = "Opening it freezes your grade" in student.get("/p/yo-yo").text
     assert warned is (asked_for is not None)
+
+
+def test_a_part_solved_only_late_says_its_grade_is_frozen_once_the_solution_is_opened(
+    signed_in: TestClient, stores: Stores
+):
+    # its answers earn no more than the late score now, yet the page had said nothing of it
+    now = datetime.now(UTC)
+    spec = AssignmentSpec("HW 1", ("yo-yo",), now - timedelta(days=2), now - timedelta(hours=1), PENALTY)
+    student, identity, _ = _joined_student(signed_in, stores, spec)
+    _file_right_answer(stores, identity)
+    stores.courses.open_solution(identity, "yo-yo", datetime.now(UTC))  # after the answer: it counts
+    page = student.get("/p/yo-yo").text
+    assert "Solved late: best score 0.9 of 1" in page
+    assert "Your grade on this part is frozen at 0.9 of 1" in page
