@@ -223,7 +223,9 @@ def test_late_work_earns_nothing_once_the_student_has_opened_the_worked_solution
     file_submissions(stores, [(who, "tension", "g", RIGHT)])  # after: checked, earns nothing
 
     problem = student.get("/p/yo-yo").text
-    assert problem.count("Your grade on this part is frozen") == 2  # not on the part solved before
+    # on every part, the one solved late before opening too: it stays at its late score
+    assert problem.count("Your grade on this part is frozen") == 3
+    assert "Your grade on this part is frozen at 0.9 of 1" in problem
     book = signed_in.get(f"/instructor/courses/{course}/gradebook").text
     assert "solution read" in book
     csv_text = signed_in.get(f"/instructor/courses/{course}/gradebook.csv").text
