@@ -170,11 +170,13 @@ def _steady_rate(method: Method, target: str) -> tuple[sympy.Expr, Method]:
     if not moving:
         raise DerivationError(f"every rate of {target} keeps the other coordinates still", quantity=target)
     first, acceleration = moving[0]
-    roots = [r for r in tidy.solve(acceleration, RATE) if r.is_real is not False]
-    if len(roots) != 1 or not _positive_on_domain(roots[0], model):
+    found = [r for r in tidy.solve(acceleration, RATE) if r.is_real is not False]
+    # ±sqrt(g/(L cos(alpha))): sympy cannot sign cos(alpha) by itself, the domain can
+    roots = [r for r in found if _positive_on_domain(r, model)]
+    if len(roots) != 1:
         raise DerivationError(
             f"no steady rotation of {target}: {first.name}'' = {typed_text(acceleration)} has no single positive root in "
-            f"{target}' (found {typed_text(roots)}); the force must pull towards the centre",
+            f"{target}' (found {typed_text(found)}); the force must pull towards the centre",
             quantity=target,
         )
     rate = tidy.simplify(roots[0])
