@@ -27,7 +27,7 @@ def check_clearances(model: Model, mech: Mechanics) -> None:
     """DerivationError at the first surface or string whose gap does not grow at unit rate (a string:
     a whole number of times) as each body it places moves off."""
     points = state_points(model, mech)
-    planar = [b.name for b in model.bodies if {axis for axis, _ in b.position} == {"x", "y"}]
+    planar = [b.name for b in model.bodies if len(b.position) > 1]  # in the x–y plane, or in space
     for constraint in model.constraints:
         if constraint.kind not in (ConstraintKind.SURFACE, ConstraintKind.STRING):
             continue

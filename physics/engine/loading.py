@@ -15,6 +15,7 @@ from physics.dimensions import Dimension
 from physics.engine import (
     amplitude,
     bounces,
+    depth,
     embedding,
     evaluated_at,
     forcing,
@@ -158,6 +159,8 @@ def _load_model(
     dimensions: Mapping[str, Dimension] | None,
     ranges: Mapping[str, tuple[sympy.Expr, sympy.Expr]] | None,
 ) -> Model:
+    if isinstance(data, Mapping):
+        depth.check_elements(data, data.get("elements"))
     expanded = expand_elements(data, symbols)  # composable elements -> the low-level sections
     if isinstance(data, Mapping):
         released.check_elements(data.get(released.KEY), expanded.elements)
@@ -228,6 +231,7 @@ def _load_low_level(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]
     reach_loading.check_targets(quantities, bodies, state, coordinates, errors.add)
     bounces.check(quantities, impact, errors.add)
     _check_slip_quantities(quantities, frictions, errors)
+    depth.check(data, bodies, declared, quantities, time, errors.add)
     named = [*coord_names, *(c.name for c in declared), *(b.name for b in bodies)]
     notation = errors.attempt(partial(read_notation, data.get("notation"), named)) or ()
     if errors.errors:
@@ -456,7 +460,7 @@ def _bodies(
             angle = errors.read(spec["angle"], scope, (*path, "angle"))
         elif "inertia" in spec:
             errors.add("a body with a moment of inertia needs an angle", (*path, "angle"))
-        position = _axes(spec.get("position"), scope, (*path, "position"), errors)
+        position = _axes(spec.get("position"), scope, (*path, "position"), errors, depth.SPACE)
         if mass is not None and inertia is not None and position:
             result.append(Body(name, mass, inertia, position, angle))
     return tuple(result)
@@ -472,20 +476,33 @@ def _moving_anchor(value: Any, symbols: Mapping[str, sympy.Symbol]) -> bool:
 
 
 def _axes(
-    value: Any, scope: Mapping[str, sympy.Symbol], path: Path, errors: _Collector
+    value: Any,
+    scope: Mapping[str, sympy.Symbol],
+    path: Path,
+    errors: _Collector,
+    axes: tuple[str, ...] = AXES,
 ) -> tuple[tuple[str, sympy.Expr], ...]:
+    """A point or direction in the x–y plane; a body's position (`axes`: depth.SPACE) may also take z."""
     spec = _mapping(value, path, errors)
     result: list[tuple[str, sympy.Expr]] = []
     for axis in spec:
-        if axis not in AXES:
-            errors.add(f"unknown axis {axis!r}; expected x and/or y", (*path, str(axis)))
-    for axis in AXES:
+        if axis == depth.DEPTH and axis not in axes:
+            errors.add(
+                "z is for a body's position only: every other point or direction is in the x–y plane",
+                (*path, str(axis)),
+            )
+        elif axis not in axes:
+            errors.add(
+                f"unknown axis {axis!r}; expected {', '.join(axes[:-1])} and/or {axes[-1]}",
+                (*path, str(axis)),
+            )
+    for axis in axes:
         if axis in spec:
             expr = errors.read(spec[axis], scope, (*path, axis))
             if expr is not None:
                 result.append((axis, expr))
     if value is not None and not spec:
-        errors.add("give at least one of x, y", path)
+        errors.add(f"give at least one of {', '.join(axes)}", path)
     return tuple(result)
 
 

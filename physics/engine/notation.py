@@ -265,14 +265,16 @@ def _coordinate_words(name: str, model: Model) -> str:
         return f"the angle «{body.name}» has turned through"
     if all(d.free_symbols & {c.symbol} for d in direction.values() if d != 0):
         return f"an angle that sets where «{body.name}» is (see the figure)"
-    says = {
-        (1, 0): "to the right, the $+x$ direction",
-        (-1, 0): "to the left, the $-x$ direction",
-        (0, 1): "upwards",
-        (0, -1): "downwards",
+    says: dict[tuple[int, ...], str] = {
+        (1, 0, 0): "to the right, the $+x$ direction",
+        (-1, 0, 0): "to the left, the $-x$ direction",
+        (0, 1, 0): "upwards",
+        (0, -1, 0): "downwards",
+        (0, 0, 1): "horizontally along $+z$",
+        (0, 0, -1): "horizontally along $-z$",
     }
-    parts = [direction.get(axis, sympy.Integer(0)) for axis in ("x", "y")]
-    key = (int(parts[0]) if parts[0].is_Integer else 9, int(parts[1]) if parts[1].is_Integer else 9)
+    parts = [direction.get(axis, sympy.Integer(0)) for axis in ("x", "y", "z")]
+    key = tuple(int(p) if p.is_Integer else 9 for p in parts)
     way = says.get(key, "along the direction its position changes with it")
     others = [f"«{b.name}»" for b, _ in moved[1:]]
     tail = f"; {' and '.join(others)} move{'s' if len(others) == 1 else ''} with it" if others else ""
@@ -405,8 +407,8 @@ def _pin_axis(constraint: Constraint, model: Model) -> str | None:
     """ "x" or "y" if the gap holds one of a body's x and y (not both), linearly: an axle or a pivot,
     which may sit off the body's centre (then its angle is in the gap too)."""
     names = {str(s): s for s in constraint.gap.free_symbols}
-    held = [n for n in names if n.startswith(("x_", "y_"))]
-    if len(held) != 1 or sympy.diff(constraint.gap, names[held[0]], 2) != 0:
+    held = [n for n in names if n.startswith(("x_", "y_", "z_"))]
+    if len(held) != 1 or held[0].startswith("z_") or sympy.diff(constraint.gap, names[held[0]], 2) != 0:
         return None
     return held[0][0]
 
@@ -470,6 +472,7 @@ def _cartesian(model: Model, taken: set[str], coordinates: Mapping[str, Name]) -
             words = {
                 "x": f"the horizontal position of «{body.name}»'s centre, positive to the right ($+x$)",
                 "y": f"the height of «{body.name}»'s centre, positive upwards ($+y$)",
+                "z": f"the horizontal position of «{body.name}»'s centre across $x$, along $+z$",
                 "phi": f"the angle «{body.name}» has turned through, positive anticlockwise",
             }[axis]
             result[key] = Name(tex, words, Source.PHYSICS, _plain(tex))

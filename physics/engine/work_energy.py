@@ -163,7 +163,7 @@ def answer(method: Method, quantity: Quantity) -> sympy.Expr:
         speed = impact._signs_by_domain(model, sympy.sqrt(sympy.factor(tidy.simplify(squared))))
         method.step(
             f"Speed of «{quantity.target}» there",  # the body in the problem's words, not its engine name
-            rf"v_{{\mathrm{{{quantity.target}}}}} = \sqrt{{\dot x^2 + \dot y^2}} = " + method.tex(speed),
+            rf"v_{{\mathrm{{{quantity.target}}}}} = \sqrt{{{_squares(position)}}} = " + method.tex(speed),
         )
         return speed
     # the cyclic coordinates' positions stay as at the state: nothing depends on them
@@ -334,3 +334,9 @@ def arrival_velocity(model: Model, quantity: Quantity) -> sympy.Expr:
     method = ConservationMethod(model, Mechanics(model))
     trip = journey(method, quantity)
     return tidy.simplify(trip.sign * sympy.sqrt(staged(method, trip)[0]))
+
+
+def _squares(position: dict[str, sympy.Expr]) -> str:
+    """The squared velocity components in TeX: those of x and y, and of z for a body placed on z."""
+    axes = [a for a in ("x", "y", "z") if a in position] if "z" in position else ["x", "y"]
+    return " + ".join(rf"\dot {a}^2" for a in axes)

@@ -22,6 +22,7 @@ from functools import lru_cache
 
 import sympy
 
+from physics.engine import depth
 from physics.engine.model import Constraint, ConstraintKind, Model
 from physics.engine.notation import notation_of, split_subscript
 from physics.figures.configuration import drawn_configuration
@@ -384,7 +385,9 @@ def free_body_figure(model: Model, body_name: str, given: Mapping[str, float], *
     body = model.body(body_name)
     label = body_label(body, model)
     half = BLOCK / 2
-    forces = body_forces(model, body_name, given)
+    # the diagram is in the x–y plane: a force on a body moving along z would be drawn without its z part
+    across = any(axis == depth.DEPTH for axis, _ in body.position)
+    forces = [] if across else body_forces(model, body_name, given)
     arms = _drawn_arms(forces)
     if body.angle is not None:  # a rigid body: a wheel, each force drawn where its line of action passes
         canvas.circle((0.0, 0.0), RIGID, fill=FILLS[0])
@@ -438,4 +441,6 @@ def free_body_figure(model: Model, body_name: str, given: Mapping[str, float], *
         degrees = round(math.degrees(math.atan2(dy, dx)))
         said.append(f"{force.label} at {degrees}° from the +x axis")
     description = f"Forces on {label}: " + ("; ".join(said) if said else "none") + "."
+    if across:
+        description = f"Forces on {label}: not drawn, as {label} moves along z, across the page."
     return canvas.svg(f"Free-body diagram: {title}, {label}", description)

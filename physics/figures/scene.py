@@ -16,6 +16,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping
 
+from physics.engine import depth
 from physics.engine.model import AuthoredElement, Model
 from physics.figures import incline, pendulum, pulleys, spring_block, turning
 from physics.figures.figure import Figure, NotDrawable, Values
@@ -52,6 +53,8 @@ def compose(model: Model, given: Mapping[str, float]) -> Figure:
 
 
 def _draw(figure: Figure, model: Model, values: Values) -> None:
+    if depth.uses_depth(model.bodies):  # every picture here is of the x–y plane: z would be dropped
+        raise NotDrawable("a body moves along z, across the page: the bodies are drawn side by side")
     if model.impact is not None:
         figure.drawn_from = "impact"
         draw_impact(figure, model, values)

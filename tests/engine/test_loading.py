@@ -37,8 +37,8 @@ BROKEN = [
         id="unbalanced-parenthesis",
     ),
     pytest.param(
-        lambda d: d["bodies"]["block"]["position"].update(z="0"),
-        ("bodies", "block", "position", "z"),
+        lambda d: d["bodies"]["block"]["position"].update(w="0"),
+        ("bodies", "block", "position", "w"),
         id="unknown-axis",
     ),
     pytest.param(
