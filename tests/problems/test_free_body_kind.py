@@ -8,13 +8,16 @@ from __future__ import annotations
 from functools import cache
 
 import pytest
+import yaml
 from latex2mathml.converter import convert
 from pydantic import TypeAdapter
 
 from physics.checking import run_job
 from physics.verdict import Outcome, Verdict
-from problems.compiled import compile_problem
+from problems.compiled import build_problem, compile_problem
+from problems.errors import ProblemInvalid
 from problems.kinds import CheckIn
+from problems.loader import parse_problem
 from problems.variants import draw_variant
 from tests.bank import bank_documents
 
@@ -166,3 +169,23 @@ def test_the_reading_typesets_each_angle_in_degrees():
     mathml = convert(verdict.read_as.latex)
     assert "^" not in mathml  # inside \text{} a superscript was printed as the characters ^\circ
     assert mathml.count("&#x02218;") == 2  # a ring operator (the degree) above each angle
+
+
+@pytest.mark.parametrize(("body", "refused"), [("puck", True), ("weight", False)])
+def test_free_body_part_on_a_body_moving_along_z_is_refused_at_its_body(body: str, refused: bool) -> None:
+    """The diagram is drawn in the x–y plane: a tension along z would be graded without its z part."""
+    from tests.engine.test_depth import PUCK
+
+    model = {**PUCK, "unused": ["speed", "tension"]}
+    symbols = {name: {"meaning": name, "dimension": unit} for name, unit in _PUCK_UNITS.items()}
+    part = {"id": "forces", "kind": "free_body", "prompt": "Draw the forces.", "body": body}
+    document = {"id": "puck-z", "title": "Puck", "statement": "A puck.", "symbols": symbols}
+    doc = parse_problem(yaml.safe_dump({**document, "parts": [part], "model": model}), "yaml")
+    if not refused:
+        build_problem(doc, 1, use_model=False)
+        return
+    with pytest.raises(ProblemInvalid, match=r"parts\[0\]\.body: .*'puck' moves along z"):
+        build_problem(doc, 1, use_model=False)
+
+
+_PUCK_UNITS = {"m1": "kg", "m2": "kg", "g": "m/s^2", "R": "m", "l": "m", "mu": "1", "k": "N/m", "v": "m/s"}

@@ -13,6 +13,7 @@ import sympy
 from pydantic import Field
 
 from physics.checking import QuestionJob
+from physics.engine import depth
 from physics.errors import SpecError
 from physics.forces_check import (
     KINDS,
@@ -147,6 +148,12 @@ class FreeBodyKind:
         if part.body not in names:
             raise SpecError(
                 f"the model has no body {part.body!r}; its bodies are {', '.join(names)}", (*path, "body")
+            )
+        if any(axis == depth.DEPTH for axis, _ in model.body(part.body).position):
+            raise SpecError(
+                f"a free-body diagram is drawn in the x–y plane, and {part.body!r} moves along z: "
+                "its forces there would lose their z parts",
+                (*path, "body"),
             )
         notation = getattr(context.derived.raw if context.derived else None, "notation", None)
         words = dict(getattr(notation, "bodies", {}) or {}).get(part.body, f"the {part.body}")
