@@ -10,7 +10,8 @@ from typing import Any
 import pytest
 import sympy
 
-from physics.engine import derive, load_model
+from physics.engine import depth, derive, load_model
+from physics.engine.model import QuantityKind
 from physics.errors import DerivationError, SpecErrors
 
 SYMBOLS = {n: sympy.Symbol(n, positive=True) for n in ("m1", "m2", "g", "R", "l", "mu", "k", "v", "t")}
@@ -133,6 +134,12 @@ REFUSED = [
         id="extremum-of-a-flight",
     ),
     pytest.param(
+        lambda d: d["quantities"].update(ring={"damped_frequency": "r"}),
+        ("quantities", "ring", "damped_frequency"),
+        PLANE_ONLY,
+        id="damped-frequency",
+    ),
+    pytest.param(
         lambda d: d["quantities"].update(drift={"terminal_velocity": "r"}),
         ("quantities", "drift", "terminal_velocity"),
         PLANE_ONLY,
@@ -217,3 +224,14 @@ def test_conical_pendulum_on_z_derives_the_positive_steady_rate() -> None:
     expected = 2 * sympy.pi * sympy.sqrt(L * sympy.cos(alpha) / G)
     point = {L: 0.7, alpha: 0.6, G: 9.8}
     assert abs(float((derived["period"] - expected).subs(point))) < 1e-9
+
+
+@pytest.mark.parametrize("kind", sorted(set(QuantityKind) - depth.KINDS))
+def test_no_quantity_kind_outside_the_generic_ones_loads_with_z(kind: QuantityKind) -> None:
+    """Each is refused at the quantity: by depth.py, or already by its own reading (it needs a section
+    a model with z cannot have)."""
+    target = "r" if kind.value.endswith(("frequency", "time", "velocity", "distance")) else "puck"
+    asked = _puck(lambda d: d["quantities"].update(asked={kind.value: target}))
+    with pytest.raises(SpecErrors) as caught:
+        load_model(asked, SYMBOLS)
+    assert any(e.path[:2] == ("quantities", "asked") for e in caught.value.errors)
