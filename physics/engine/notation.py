@@ -472,7 +472,7 @@ def _cartesian(model: Model, taken: set[str], coordinates: Mapping[str, Name]) -
             words = {
                 "x": f"the horizontal position of «{body.name}»'s centre, positive to the right ($+x$)",
                 "y": f"the height of «{body.name}»'s centre, positive upwards ($+y$)",
-                "z": f"the horizontal position of «{body.name}»'s centre across $x$, along $+z$",
+                "z": f"the horizontal position of «{body.name}»'s centre along $+z$, at right angles to $x$",
                 "phi": f"the angle «{body.name}» has turned through, positive anticlockwise",
             }[axis]
             result[key] = Name(tex, words, Source.PHYSICS, _plain(tex))
