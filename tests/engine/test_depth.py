@@ -39,9 +39,12 @@ def _puck(change: Callable[[dict[str, Any]], object]) -> dict[str, Any]:
 
 
 def test_puck_through_a_hole_derives_speed_and_tension_with_z() -> None:
-    derived = derive(load_model(PUCK, SYMBOLS)).quantities
+    derivation = derive(load_model(PUCK, SYMBOLS))
+    derived = derivation.quantities
     assert sympy.simplify(derived["speed"] - sympy.sqrt(M2 * G * R / M1)) == 0
     assert sympy.simplify(derived["tension"] - M2 * G) == 0
+    assert "horizontal position" in derivation.notation.cartesian["z_puck"].words
+    assert "+z" in derivation.notation.cartesian["z_puck"].words
 
 
 def test_a_string_through_the_hole_that_would_push_is_refused() -> None:
