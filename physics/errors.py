@@ -4,7 +4,8 @@
      ├── AnswerError        an answer could not be read: an `invalid` verdict, no attempt used
      │    ├── ParseError          reason parse_error
      │    ├── AmbiguousInput      reason ambiguous (carries both readings)
-     │    │    └── AmbiguousGrouping   `a/b c`, `e^-ωt`: the expected dimension (or a space) may settle it
+     │    │    └── AmbiguousGrouping   `e^-ωt`, `sin θ/2`: the expected dimension may settle it
+     │    │         └── AmbiguousDivision   `p^2/2m`, `a/b c`: never settled (API.md)
      │    ├── UnknownSymbol       reason unknown_symbol (carries the allowed names)
      │    ├── UnknownFunction     reason unknown_function (carries the allowed functions)
      │    ├── TooLarge            reason too_large (a size limit checked before evaluation)
@@ -63,25 +64,20 @@ class AmbiguousInput(AnswerError):
 
 
 class AmbiguousGrouping(AmbiguousInput):
-    """One operator that groups two ways: `a/b c`, (a/b)·c or a/(b·c), and `e^-ωt`, e^(−ω)·t or
-    e^(−ωt). `position` is the operator's (the `/`, the `^`), by which a reader may settle it by
-    dimension. `spaced`: a division whose divisor is followed by a space (`a/b c`, not `a/bc`), which
-    spacing reads as (a/b)·c where dimensions cannot decide. `readings` holds one reading per choice (a
-    division followed by several factors has one for each place its divisor may end: `a/b c d` is
-    (a/b)·c·d, a/(b·c·d) or a/(b·c)·d); `partial`: too many to list, so not all are there, and the
-    grouping cannot be settled by dimension."""
+    """One operator that groups two ways where physics usually means one: `e^-ωt`, e^(−ω)·t or
+    e^(−ωt); `sin θ/2`, sin(θ)/2 or sin(θ/2). `position` is the operator's (the `^`, the function), by
+    which a reader may settle it by dimension. `readings` holds one reading per choice."""
 
-    def __init__(
-        self,
-        message: str,
-        position: int | None,
-        readings: Sequence[str],
-        *,
-        spaced: bool = False,
-        partial: bool = False,
-    ) -> None:
+
+class AmbiguousDivision(AmbiguousGrouping):
+    """A `/` followed by an unparenthesised juxtaposed product: `p^2/2m`, (p²/2)·m or p²/(2m). The
+    contract (API.md) refuses it whatever the dimensions: a reader may try its readings to settle another
+    grouping (`e^-t/τ cos ωt`), never to take one. A divisor followed by several factors has a reading for
+    each place it may end (`a/b c d`: (a/b)·c·d, a/(b·c·d), a/(b·c)·d); `partial`: too many to list, so
+    not all are there, and none is tried."""
+
+    def __init__(self, message: str, position: int | None, readings: Sequence[str], *, partial: bool) -> None:
         super().__init__(message, position, readings)
-        self.spaced = spaced
         self.partial = partial
 
 

@@ -20,7 +20,14 @@ from fractions import Fraction
 from typing import Literal, NoReturn
 
 from physics import separators
-from physics.errors import AmbiguousGrouping, AmbiguousInput, LikelySlip, ParseError, TooLarge
+from physics.errors import (
+    AmbiguousDivision,
+    AmbiguousGrouping,
+    AmbiguousInput,
+    LikelySlip,
+    ParseError,
+    TooLarge,
+)
 from physics.mathinput.limits import InputLimits
 from physics.mathinput.mixed_numbers import mixed_number_slip
 from physics.mathinput.powered import PoweredArgument
@@ -68,7 +75,7 @@ class _Item:
 
 
 # A division followed by more factors than this has too many readings to list (each place its divisor
-# may end): it is refused with two, and not settled by dimension.
+# may end): it is refused with two, and its readings are not tried to settle other groupings.
 _MAX_DIVISOR_READINGS = 4
 
 
@@ -76,7 +83,8 @@ class Parser:
     """`choices` settles ambiguous groupings by the position of their operator: 0 reads `a/b c` as
     (a/b)·c and `e^-ωt` as e^(−ω)·t, 1 as a/(b·c) and e^(−ωt); a division followed by more factors has
     a choice for each other place its divisor may end (2: `a/b c d` as a/(b·c)·d). One without a choice
-    is refused (AmbiguousGrouping, with a reading for each choice).
+    is refused (AmbiguousGrouping, with a reading for each choice; AmbiguousDivision for a division,
+    which a choice only reads one way to try how other groupings read: the contract refuses it).
 
     A function without brackets takes the next factor with its power (`sin θ^2` is sin(θ²)), or the
     whole word typed without a space (`cos ωt` is cos(ωt), as physics writes it); each such
@@ -296,7 +304,7 @@ class Parser:
 
     def _ambiguous_division(
         self, first: Node, items: list[_Item], k: int, ends: tuple[int, ...]
-    ) -> AmbiguousGrouping:
+    ) -> AmbiguousDivision:
         """The refusal of the division at items[k], with a reading for each place its divisor may end
         (`ends`, by choice); a run too long to list each is refused with two, as `partial`."""
         item = items[k]
@@ -318,11 +326,10 @@ class Parser:
                 readings.append(f"{numerator}/({render_text(divisor, STUDENT_STYLE)}){after}")
         # Asked in the order the divisor grows: (a/b)·c·d, a/(b·c)·d, a/(b·c·d)
         asked = [readings[0], *readings[2:], readings[1]]
-        return AmbiguousGrouping(
+        return AmbiguousDivision(
             f"Did you mean {', '.join(asked[:-1])} or {asked[-1]}? Add parentheses.",
             item.token.pos,
             readings,
-            spaced=items[k + 1].token.space_before,
             partial=partial,
         )
 

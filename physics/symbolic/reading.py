@@ -1,14 +1,15 @@
 """Reading a symbolic answer, with an ambiguous grouping settled by dimension where only one reading
 fits.
 
-`mv/qB` is (m·v/q)·B or m·v/(q·B), and `A e^-ωt` is A·e^(−ω)·t or A·e^(−ωt). The math reader refuses
+`A e^-ωt` is A·e^(−ω)·t or A·e^(−ωt), and `2π√m/k` 2π·√m/k or 2π·√(m/k). The math reader refuses
 them; here, when every symbol of the answer has a declared dimension and exactly one reading has the
-dimension the answer must have (a radius: m·v/(q·B); a displacement: A·e^(−ωt), since exp of a rate
-has none), that reading is taken and `read_as.note` says so. Where both readings of a division fit, spacing
-decides as it does for a function's argument: a space before the next factor ends the divisor
-(`12 U0/r ((r0/r)^12 - (r0/r)^6)` is (12·U0/r)·(…)), and the note says so; a divisor glued to what
-follows (`a/bc`) is refused. Where neither fits, or a dimension is unknown, the refusal stands: the
-student must add parentheses.
+dimension the answer must have (a displacement: A·e^(−ωt), since exp of a rate has none), that reading
+is taken and `read_as.note` says so. Where several or none fit, or a dimension is unknown, the refusal
+stands: the student must add parentheses. A `/` followed by an unparenthesised product (`p^2/2m`,
+`m v/q B`) is never settled: the contract (API.md) refuses it whatever the dimensions. Its readings are
+tried only to settle another grouping: `A e^-t/τ cos ωt` is A·e^(−t/τ)·cos(ωt), since with e^(−t) it
+has no dimension however τ cos ωt is grouped; a reading that fits only with the division read one way
+is refused with the division's question.
 """
 
 from __future__ import annotations
@@ -19,7 +20,7 @@ from collections.abc import Mapping, Sequence
 import sympy
 
 from physics.dimensions import Dimension, describe
-from physics.errors import AmbiguousGrouping, AnswerError
+from physics.errors import AmbiguousDivision, AmbiguousGrouping, AnswerError
 from physics.mathinput import InputLimits, ParsedMath, parse_math
 from physics.mathinput.render import in_student_style
 from physics.symbolic.dimensional import DimensionMismatch, UnknownDimension, expression_dimension
@@ -48,16 +49,17 @@ def read_symbolic_answer(
     except AmbiguousGrouping as refused:
         if expected is None:
             raise
-        chosen_readings = _readings(text, names, limits, {}, refused, powers_outside)
-        fitting_choices = [(c, r) for c, r in chosen_readings if _fits(r.expr, dimensions, expected, refused)]
+        chosen_readings = _readings(text, names, limits, {}, None, refused, powers_outside)
+        fitting_readings = [t for t in chosen_readings if _fits(t[1].expr, dimensions, expected, refused)]
+        divisions = [d for _, _, d in fitting_readings or chosen_readings if d is not None]
+        if divisions:  # it fits (or may) only with a division read one way: the contract refuses it
+            raise divisions[0] from None
+        fitting_choices = [(c, r) for c, r, _ in fitting_readings]
         fitting = [r for _, r in fitting_choices]
         if len(fitting) > 1:
-            spaced = _spaced_reading(text, names, limits, powers_outside, fitting, expected)
-            if spaced is not None:
-                return spaced
             refused = _open_question(text, names, limits, powers_outside, fitting_choices, refused)
             raise AmbiguousGrouping(
-                f"{_asked(refused, fitting_choices)} {'Both readings' if len(fitting) == 2 else 'Each of these'} are "
+                f"{refused.message} {'Both readings' if len(fitting) == 2 else 'Each of these'} are "
                 f"{describe(expected)}, so the dimensions cannot decide.",
                 refused.position,
                 refused.readings,
@@ -127,7 +129,7 @@ def _open_question(
     refused: AmbiguousGrouping,
 ) -> AmbiguousGrouping:
     """The refusal of a grouping the dimensions left open, where the first refused was settled by them:
-    `√2gh/(1+I/mr²)` asks about the root's reach, not about I/(m·r²), the only pure number to add to 1."""
+    `A e^-ωt sin x/2` asks about sin's reach, not about e's exponent, which only ω·t fits."""
     open_positions = {p for choices, _ in fitting for p in choices if len({c.get(p) for c, _ in fitting}) > 1}
     if not open_positions or refused.position in open_positions:
         return refused
@@ -139,105 +141,35 @@ def _open_question(
     return refused
 
 
-def _asked(refused: AmbiguousGrouping, fitting: Sequence[tuple[Mapping[int, int], ParsedMath]]) -> str:
-    """The refusal's question, asking only of the readings that fit where the division had more than
-    two (`1/2π √(k/m)`: not 1/(2π·√(k/m)), which is not a frequency)."""
-    if len(refused.readings) <= 2 or refused.position is None:
-        return refused.message
-    taken = sorted({choices[refused.position] for choices, _ in fitting if refused.position in choices})
-    if len(taken) < 2:
-        return refused.message
-    texts = [refused.readings[choice] for choice in taken]
-    return f"Did you mean {', '.join(texts[:-1])} or {texts[-1]}? Add parentheses."
-
-
-def _spaced_reading(
-    text: str,
-    names: Mapping[str, sympy.Symbol],
-    limits: InputLimits,
-    powers_outside: bool,
-    fitting: list[ParsedMath],
-    expected: Dimension,
-) -> ParsedMath | None:
-    """The one `fitting` reading left when each division with a space after its divisor is read as
-    spacing reads it (`a/b c` as (a/b)·c), with a note saying so; None if none or several are left."""
-    fits = {r.read_as.text for r in fitting}
-    found = [
-        (parsed, pairs)
-        for parsed, pairs in _by_spacing(text, names, limits, {}, (), powers_outside)
-        if parsed.read_as.text in fits
-    ]
-    if len(found) != 1 or not found[0][1]:
-        return None
-    chosen, pairs = found[0]
-    taken, other = (" and ".join(dict.fromkeys(side)) for side in zip(*pairs, strict=True))
-    several = len(set(pairs)) > 1
-    note = (
-        f"Read as {in_student_style(chosen.read_as.text)}: {'every reading is' if several else 'both readings are'} "
-        f"{describe(expected)}, and a space ends the divisor, so it is {taken}; write {other} for the "
-        f"other reading{'s' if several else ''}"
-    )
-    if chosen.read_as.note is not None:
-        note = f"{note}. {chosen.read_as.note}"
-    return dataclasses.replace(chosen, read_as=dataclasses.replace(chosen.read_as, note=note))
-
-
-def _by_spacing(
-    text: str,
-    names: Mapping[str, sympy.Symbol],
-    limits: InputLimits,
-    choices: dict[int, int],
-    pairs: tuple[tuple[str, str], ...],
-    powers_outside: bool,
-) -> list[tuple[ParsedMath, tuple[tuple[str, str], ...]]]:
-    """Every reading with each spaced division read as (a/b)·c, and the (taken, other) readings of those
-    divisions; the other groupings both ways, as `_readings` does."""
-    try:
-        parsed = parse_math(text, names, limits=limits, choices=choices, powers_outside=powers_outside)
-        return [(parsed, pairs)]
-    except AmbiguousGrouping as grouping:
-        position = grouping.position
-        if len(choices) >= MAX_SETTLED or position is None or position in choices or grouping.partial:
-            return []
-        if grouping.spaced:
-            taken = ((grouping.readings[0], grouping.readings[1]),)
-            return _by_spacing(text, names, limits, {**choices, position: 0}, pairs + taken, powers_outside)
-        return [
-            reading
-            for choice in range(len(grouping.readings))  # a choice for each reading
-            for reading in _by_spacing(
-                text, names, limits, {**choices, position: choice}, pairs, powers_outside
-            )
-        ]
-
-
 def _readings(
     text: str,
     names: Mapping[str, sympy.Symbol],
     limits: InputLimits,
     choices: dict[int, int],
+    division: AmbiguousDivision | None,
     refused: AmbiguousGrouping,
     powers_outside: bool,
-) -> list[tuple[dict[int, int], ParsedMath]]:
-    """Every reading, with the choices that make it."""
+) -> list[tuple[dict[int, int], ParsedMath, AmbiguousDivision | None]]:
+    """Every reading, with the choices that make it and the refusal of the first division it reads one
+    way (None if it reads none)."""
     try:
-        return [
-            (choices, parse_math(text, names, limits=limits, choices=choices, powers_outside=powers_outside))
-        ]
+        parsed = parse_math(text, names, limits=limits, choices=choices, powers_outside=powers_outside)
+        return [(choices, parsed, division)]
     except AmbiguousGrouping as another:
-        if (
-            len(choices) >= MAX_SETTLED
-            or another.position is None
-            or another.position in choices
-            or another.partial
-        ):
+        if isinstance(another, AmbiguousDivision) and another.partial:
+            raise another from None
+        if len(choices) >= MAX_SETTLED or another.position is None or another.position in choices:
             raise refused from None
+        if division is None and isinstance(another, AmbiguousDivision):
+            division = another
         position = another.position
+        # The last choice first: it takes the word typed on into the grouping, as physics means it
+        # (e^(−bt/2m)), so a division refused in it is asked about in the student's terms.
         return [
             reading
-            for choice in range(len(another.readings))  # a choice for each reading
+            for choice in reversed(range(len(another.readings)))
             for reading in _readings(
-                text, names, limits, {**choices, position: choice}, refused, powers_outside
+                text, names, limits, {**choices, position: choice}, division, refused, powers_outside
             )
         ]
 

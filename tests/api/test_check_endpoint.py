@@ -293,23 +293,47 @@ def test_a_comma_in_a_number_or_two_numbers_side_by_side_are_invalid(
     assert result["error"]["message"].startswith(message)
 
 
-def test_ambiguous_division_is_refused_with_both_readings(client, student_headers):
-    symbols = {"p": {}, "m": {"dimension": "kg"}}  # p has no dimension: nothing can settle it
-    result = client.post(
-        "/v1/check", json=symbolic("p^2/2m", "p^2/(2*m)", symbols), headers=student_headers
-    ).json()
-    assert (result["verdict"], result["reason"]) == ("invalid", "ambiguous")
-    assert "(" in result["error"]["message"]
+MOMENTUM = {"p": {"dimension": "kg*m/s"}, "m": {"dimension": "kg"}}
+CHARGE = {
+    "m": {"dimension": "kg"},
+    "v": {"dimension": "m/s"},
+    "q": {"dimension": "C"},
+    "B": {"dimension": "T"},
+}
+CONTRACT_DIVISIONS = [
+    # API.md's own examples of a `/` followed by an unparenthesised juxtaposed product, with symbols
+    # whose dimensions leave one reading: refused all the same (they were graded, read by dimension)
+    (symbolic("p^2/2m", "p^2/(2*m)", MOMENTUM), "(p^2/2)·m", "p^2/(2·m)"),
+    (
+        symbolic("v^2/2g", "v^2/(2*g)", {"v": {"dimension": "m/s"}, "g": {"dimension": "m/s^2"}}),
+        "(v^2/2)·g",
+        "v^2/(2·g)",
+    ),
+    (symbolic("m v/q B", "m*v/(q*B)", CHARGE), "(m·v/q)·B", "m·v/(q·B)"),
+    (symbolic("mv/qB", "m*v/(q*B)", CHARGE), "(m·v/q)·B", "m·v/(q·B)"),
+    (symbolic("p^2/2m", "p^2/(2*m)", {"p": {}, "m": {"dimension": "kg"}}), "(p^2/2)·m", "p^2/(2·m)"),
+]
 
 
-def test_ambiguous_division_is_settled_where_one_reading_has_the_expected_dimension(client, student_headers):
-    symbols = {"p": {"dimension": "kg*m/s"}, "m": {"dimension": "kg"}}
-    result = client.post(
-        "/v1/check", json=symbolic("p^2/2m", "p^2/(2*m)", symbols), headers=student_headers
-    ).json()
+@pytest.mark.parametrize(
+    ("body", "one", "other"),
+    CONTRACT_DIVISIONS,
+    ids=[f"{c[0]['answer']} {c[0]['symbols']}" for c in CONTRACT_DIVISIONS],
+)
+def test_a_division_before_an_unbracketed_product_is_ambiguous_whatever_the_dimensions(
+    client, student_headers, body, one, other
+):
+    result = client.post("/v1/check", json=body, headers=student_headers).json()
+    assert (result["verdict"], result["reason"], result["read_as"]) == ("invalid", "ambiguous", None)
+    assert result["error"]["position"] == body["answer"].index("/")
+    assert result["error"]["message"] == f"Did you mean {one} or {other}? Add parentheses."
+
+
+def test_an_integer_fraction_starting_a_term_is_a_coefficient(client, student_headers):
+    body = symbolic("1/2 m v^2", "m*v^2/2", CHARGE)
+    result = client.post("/v1/check", json=body, headers=student_headers).json()
     assert (result["verdict"], result["reason"]) == ("correct", "equivalent")
-    assert result["read_as"]["text"] == "p**2/(2*m)"
-    assert result["read_as"]["note"] == "Read as p^2/(2·m): the only reading that is an energy"
+    assert result["read_as"]["text"] == "1/2*m*v**2"
 
 
 @pytest.mark.parametrize(

@@ -35,7 +35,7 @@ RIGHT = "g r^2/(r^2 + k^2)"
 WRONG = "g/2"
 WRONG_TENSION = "m g"  # a known mistake, whose feedback has `$...$` maths in it
 UNREADABLE = "m g +"
-SETTLED_BY_DIMENSION = "g/k^2 r^2"  # (g/k²)·r² or g/(k² r²): only the first is an acceleration
+SETTLED_BY_DIMENSION = "(g^2 r^4)^1/2/(r^2 + k^2)"  # a root, or halved: only the root is an acceleration
 LIMIT = 2
 
 

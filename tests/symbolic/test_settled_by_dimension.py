@@ -1,6 +1,7 @@
-"""An ambiguous grouping (the division `mv/qB`, the power `A e^-ωt`) is settled by dimension where
+"""An ambiguous grouping (the power `A e^-ωt`, the root `(2gh)^1/2`) is settled by dimension where
 exactly one reading has the dimension the answer must have; it is refused where dimensions cannot
-decide."""
+decide. A `/` followed by an unparenthesised product (`mv/qB`) is never settled: the contract refuses it
+whatever the dimensions."""
 
 from __future__ import annotations
 
@@ -47,12 +48,6 @@ UNDIMENSIONED = (SymbolDecl("A"), SymbolDecl("omega"), SymbolDecl("t"))
 
 SETTLED = [
     # (answer, reference, symbols, reading taken, what the answer must be)
-    ("mv/qB", "m*v/(q*B)", CHARGE, "m*v/(q*B)", "a length"),
-    ("m v/q B", "m*v/(q*B)", CHARGE, "m*v/(q*B)", "a length"),
-    ("(m+M)/m sqrt(2gL)", "(m+M)/m*sqrt(2*g*L)", PENDULUM, "(m + M)/m*sqrt(2*g*L)", "a speed"),
-    ("12/r0 sqrt(U0/m)", "12/r0*sqrt(U0/m)", LENNARD_JONES, "12/r0*sqrt(U0/m)", "an angular frequency"),
-    ("p^2/2m", "p^2/(2*m)", MOMENTUM, "p**2/(2*m)", "an energy"),
-    ("v^2/2g", "v^2/(2*g)", FALL, "v**2/(2*g)", "a length"),
     # e^(−ω)·t takes exp of a rate: only e^(−ωt) can be right, as physics writes it
     ("A e^-ωt", "A*exp(-omega*t)", DECAY, "A*e**(-omega*t)", "a length"),
     (
@@ -64,15 +59,8 @@ SETTLED = [
     ),
     ("A e^-kA", "A*exp(-k*A)", DECAY, "A*e**(-k*A)", "a length"),
     ("A e^-t/τ", "A*exp(-t/tau)", DECAY, "A*e**(-t/tau)", "a length"),
-    # two groupings at once: the `^`, then the `/` in its exponent
-    (
-        "A e^-bt/2m cos(ωt)",
-        "A*exp(-b*t/(2*m))*cos(omega*t)",
-        DECAY,
-        "A*e**(-b*t/(2*m))*cos(omega*t)",
-        "a length",
-    ),
-    ("V0 e^-t/RC", "V0*exp(-t/(R*C))", CIRCUIT, "V0*e**(-t/(R*C))", "a voltage"),
+    # with e^(−t) there is no length however τ cos(ωt) is grouped: no division is read one way
+    ("A e^-t/τ cos(ωt)", "A*exp(-t/tau)*cos(omega*t)", DECAY, "A*e**(-t/tau)*cos(omega*t)", "a length"),
     # a root as students type it: (2gh)^1 halved is no speed
     ("(2gh)^1/2", "sqrt(2*g*h)", DROP, "(2*g*h)**(1/2)", "a speed"),
     ("2π (k/m)^-1/2", "2*pi*sqrt(m/k)", DROP, "2*pi*(k/m)**(-1/2)", "a time"),
@@ -121,32 +109,22 @@ def test_preview_shows_a_glued_argument_ended_by_dimension() -> None:
 
 
 def test_a_settled_reading_that_is_wrong_is_graded_wrong() -> None:
-    verdict = run_job(SymbolicJob("2mv/qB", "m*v/(q*B)", CHARGE))
+    verdict = run_job(SymbolicJob("2A e^-ωt", "A*exp(-omega*t)", DECAY))
     assert verdict.outcome is Outcome.INCORRECT
     assert verdict.reason is Reason.CONSTANT_FACTOR
     assert verdict.read_as is not None and verdict.read_as.note is not None
 
 
 def test_preview_shows_the_settled_reading_before_submission() -> None:
-    shown = preview(SymbolicJob("mv/qB", "m*v/(q*B)", CHARGE))
+    shown = preview(SymbolicJob("A e^-ωt", "A*exp(-omega*t)", DECAY))
     assert shown.error is None
     assert shown.read_as is not None
-    assert shown.read_as.text == "m*v/(q*B)"
+    assert shown.read_as.text == "A*e**(-omega*t)"
     assert shown.read_as.note is not None
 
 
 REFUSED = [
     # (answer, reference, symbols, why dimensions cannot decide)
-    (
-        "12 U0/r((r0/r)^12 - (r0/r)^6)",
-        "12*U0/r*((r0/r)^12 - (r0/r)^6)",
-        LENNARD_JONES,
-        "Both readings are a force",
-    ),  # the bracket is a pure number, so both readings are forces; glued to the divisor, no space decides
-    ("x/yz", "x*z/y", PURE3, "Both readings are a pure number"),
-    ("m v/q B", "m*v/(q*B)", UNDIMENSIONED_CHARGE, "Add parentheses"),  # the contract's: no dimensions
-    ("p^2/2m", "p^2/(2*m)", (SymbolDecl("p"), SymbolDecl("m", "kg")), "Add parentheses"),  # p undimensioned
-    ("mv/qB", "m*v*B", CHARGE, "Add parentheses"),  # neither reading has the reference's dimension
     ("e^2x", "exp(2*x)", PURE, "Both readings are a pure number"),  # e²·x or e^(2x)
     ("A e^-2kA", "A*exp(-2*k*A)", DECAY, "Both readings are a length"),  # A·e^(−2)·k·A is one too
     ("e^x/2", "exp(x)/2", PURE, "Both readings are a pure number"),  # e^x/2 or e^(x/2)
@@ -158,12 +136,13 @@ REFUSED = [
     ("√x/y", "sqrt(x/y)", PURE, "Both readings are a pure number"),
     ("sqrt 2gh/3", "sqrt(2*g*h/3)", DROP, "Both readings are a speed"),
     ("√2gL(1 - cos θ)", "sqrt(2*g*L*(1 - cos(theta)))", SWING, "Both readings are a speed"),  # √(2gL)·(…)
-    # the question is the root's reach, I/(m·r²) being the only pure number to add to 1
+    ("√2gh/(1+I/(mr²))", "sqrt(2*g*h/(1 + I/(m*r**2)))", ROLL, "Both readings are a speed"),
+    # the question is sin's reach, e's exponent being settled (only ω·t is a pure number)
     (
-        "√2gh/(1+I/mr²)",
-        "sqrt(2*g*h/(1 + I/(m*r**2)))",
-        ROLL,
-        "Did you mean sqrt(2·g·h)/(1 + I/(m·r^2)) or sqrt(2·g·h/(1 + I/(m·r^2)))?",
+        "A e^-ωt sin x/2",
+        "A*exp(-omega*t)*sin(x/2)",
+        (*DECAY, SymbolDecl("x", "1")),
+        "Did you mean sin(x)/2 or sin(x/2)? Add parentheses. Both readings are a length",
     ),
 ]
 
@@ -184,66 +163,118 @@ BOX = (SymbolDecl("n", "1"), SymbolDecl("hbar", "J*s"), SymbolDecl("m", "kg"), S
 FIELD = (SymbolDecl("q", "C"), SymbolDecl("epsilon_0", "C^2/(N*m^2)"), SymbolDecl("r", "m"))
 FREQUENCY = "sqrt(k/m)/(2*pi)"
 
-# The divisor of a division followed by several factors may end after any of them: each place is a
-# reading. `1/2π √(k/m)` is (1/2)·π·√(k/m) or 1/(2π)·√(k/m) (both frequencies) or 1/(2π·√(k/m)); it was
-# read as (1/2)·π·√(k/m), "the only reading that is a frequency", and graded wrong.
-DIVISOR_ENDS_REFUSED = [
-    # (answer, the readings asked about)
-    ("1/2π sqrt(k/m)", ("(1/2)·pi·sqrt(k/m)", "1/(2·pi)·sqrt(k/m)")),
-    ("1/2π√(k/m)", ("(1/2)·pi·sqrt(k/m)", "1/(2·pi)·sqrt(k/m)")),
-    ("1/2π (k/m)^0.5", ("(1/2)·pi·(k/m)^0.5", "1/(2·pi)·(k/m)^0.5")),
-]
-
-
-@pytest.mark.parametrize(("answer", "asked"), DIVISOR_ENDS_REFUSED, ids=[c[0] for c in DIVISOR_ENDS_REFUSED])
-def test_a_divisor_that_may_end_at_several_places_is_refused_with_the_readings_that_fit(
-    answer: str, asked: tuple[str, str]
-) -> None:
-    verdict = run_job(SymbolicJob(answer, FREQUENCY, SPRING))
-    assert verdict.outcome is Outcome.INVALID
-    assert verdict.reason is Reason.AMBIGUOUS
-    assert f"Did you mean {asked[0]} or {asked[1]}? Add parentheses." in verdict.feedback
-    assert "Both readings are an angular frequency" in verdict.feedback
-    assert "1/(2·pi·sqrt(k/m))" not in verdict.feedback  # a time: not asked about
-
-
-DIVISOR_ENDS_SETTLED = [
-    # (answer, reference, symbols, reading): one place for the divisor's end has the dimension
-    ("n^2 π^2 ħ^2/2m L^2", "n^2*pi^2*hbar^2/(2*m*L^2)", BOX, "n**2*pi**2*hbar**2/(2*m*L**2)"),
-    ("n^2 π^2 ħ^2/2 m L^2", "n^2*pi^2*hbar^2/(2*m*L^2)", BOX, "n**2*pi**2*hbar**2/(2*m*L**2)"),
-    ("q/4π ε₀ r²", "q/(4*pi*epsilon_0*r^2)", FIELD, "q/(4*pi*epsilon_0*r**2)"),
+DIVISIONS = [
+    # (answer, reference, symbols, the readings asked about): a `/` followed by an unparenthesised
+    # juxtaposed product, which the contract refuses whatever the dimensions; each was graded, read as
+    # its only reading with the expected dimension, or as (a/b)·c because a space ended the divisor
+    ("mv/qB", "m*v/(q*B)", CHARGE, ("(m·v/q)·B", "m·v/(q·B)")),
+    ("m v/q B", "m*v/(q*B)", CHARGE, ("(m·v/q)·B", "m·v/(q·B)")),
+    ("m v/q B", "m*v/(q*B)", UNDIMENSIONED_CHARGE, ("(m·v/q)·B", "m·v/(q·B)")),
+    ("p^2/2m", "p^2/(2*m)", MOMENTUM, ("(p^2/2)·m", "p^2/(2·m)")),
+    ("p^2/2m", "p^2/(2*m)", (SymbolDecl("p"), SymbolDecl("m", "kg")), ("(p^2/2)·m", "p^2/(2·m)")),
+    ("v^2/2g", "v^2/(2*g)", FALL, ("(v^2/2)·g", "v^2/(2·g)")),
+    ("mv/qB", "m*v*B", CHARGE, ("(m·v/q)·B", "m·v/(q·B)")),  # neither reading fits: refused as before
+    (
+        "(m+M)/m sqrt(2gL)",
+        "(m+M)/m*sqrt(2*g*L)",
+        PENDULUM,
+        ("((m + M)/m)·sqrt(2·g·L)", "(m + M)/(m·sqrt(2·g·L))"),
+    ),
+    ("12/r0 sqrt(U0/m)", "12/r0*sqrt(U0/m)", LENNARD_JONES, ("(12/r0)·sqrt(U0/m)", "12/(r0·sqrt(U0/m))")),
+    ("x/yz", "x*z/y", PURE3, ("(x/y)·z", "x/(y·z)")),
+    ("x/y z", "x*z/y", PURE3, ("(x/y)·z", "x/(y·z)")),
+    ("x / y z", "x*z/y", PURE3, ("(x/y)·z", "x/(y·z)")),
+    ("x/y (z)", "x*z/y", PURE3, ("(x/y)·z", "x/(y·z)")),
+    (
+        "12 U0/r ((r0/r)^12 - (r0/r)^6)",
+        "12*U0/r*((r0/r)^12 - (r0/r)^6)",
+        LENNARD_JONES,
+        ("(12·U0/r)·((r0/r)^12 - (r0/r)^6)", "12·U0/(r·((r0/r)^12 - (r0/r)^6))"),
+    ),
+    ("mv/qB + mv/2qB", "3*m*v/(2*q*B)", CHARGE, ("(m·v/q)·B", "m·v/(q·B)")),
+    # inside e's exponent, a root's or a function's argument: the same construct, refused there too
+    ("A e^-bt/2m cos(ωt)", "A*exp(-b*t/(2*m))*cos(omega*t)", DECAY, ("(b·t/2)·m", "b·t/(2·m)")),
+    ("V0 e^-t/RC", "V0*exp(-t/(R*C))", CIRCUIT, ("(t/R)·C", "t/(R·C)")),
+    ("√2gh/(1+I/mr²)", "sqrt(2*g*h/(1 + I/(m*r**2)))", ROLL, ("(I/m)·r^2", "I/(m·r^2)")),
+    # a divisor followed by several factors: a reading for each place it may end
+    (
+        "1/2π sqrt(k/m)",
+        FREQUENCY,
+        SPRING,
+        ("(1/2)·pi·sqrt(k/m)", "1/(2·pi)·sqrt(k/m)", "1/(2·pi·sqrt(k/m))"),
+    ),
+    (
+        "n^2 π^2 ħ^2/2m L^2",
+        "n^2*pi^2*hbar^2/(2*m*L^2)",
+        BOX,
+        ("(n^2·pi^2·hbar^2/2)·m·L^2", "n^2·pi^2·hbar^2/(2·m)·L^2", "n^2·pi^2·hbar^2/(2·m·L^2)"),
+    ),
+    (
+        "q/4π ε₀ r²",
+        "q/(4*pi*epsilon_0*r^2)",
+        FIELD,
+        (
+            "(q/4)·pi·epsilon_0·r^2",
+            "q/(4·pi)·epsilon_0·r^2",
+            "q/(4·pi·epsilon_0)·r^2",
+            "q/(4·pi·epsilon_0·r^2)",
+        ),
+    ),
 ]
 
 
 @pytest.mark.parametrize(
-    ("answer", "reference", "symbols", "reading"),
-    DIVISOR_ENDS_SETTLED,
-    ids=[c[0] for c in DIVISOR_ENDS_SETTLED],
+    ("answer", "reference", "symbols", "readings"),
+    DIVISIONS,
+    ids=[c[0] for c in DIVISIONS],
 )
-def test_a_divisor_that_may_end_at_several_places_is_settled_where_one_fits(
-    answer: str, reference: str, symbols: tuple[SymbolDecl, ...], reading: str
+def test_a_division_before_an_unbracketed_product_is_refused_whatever_the_dimensions(
+    answer: str, reference: str, symbols: tuple[SymbolDecl, ...], readings: tuple[str, ...]
 ) -> None:
     verdict = run_job(SymbolicJob(answer, reference, symbols))
-    assert verdict.outcome is Outcome.CORRECT
-    assert verdict.read_as is not None and verdict.read_as.text == reading
+    assert (verdict.outcome, verdict.reason, verdict.read_as) == (Outcome.INVALID, Reason.AMBIGUOUS, None)
+    assert verdict.error is not None
+    asked = f"{', '.join(readings[:-1])} or {readings[-1]}" if len(readings) > 2 else " or ".join(readings)
+    assert verdict.error.message == f"Did you mean {asked}? Add parentheses."
+    assert answer[verdict.error.position] == "/"
 
 
-def test_a_division_followed_by_too_many_factors_is_not_settled_by_dimension() -> None:
-    # Each place the divisor may end is a reading; past a few, they are not all listed, and not settled
+def test_preview_refuses_a_division_before_an_unbracketed_product() -> None:
+    shown = preview(SymbolicJob("p^2/2m", "p^2/(2*m)", MOMENTUM))
+    assert shown.read_as is None
+    assert shown.error is not None
+    assert shown.error.message == "Did you mean (p^2/2)·m or p^2/(2·m)? Add parentheses."
+
+
+COEFFICIENTS = [
+    # (answer, reference, symbols): an integer fraction opening a term, spaced from what follows
+    ("1/2 m v^2", "m*v^2/2", CHARGE),
+    ("1/2 p^2/m", "p^2/(2*m)", MOMENTUM),
+    ("m v^2 + 1/2 m v^2", "3*m*v^2/2", CHARGE),
+]
+
+
+@pytest.mark.parametrize(("answer", "reference", "symbols"), COEFFICIENTS, ids=[c[0] for c in COEFFICIENTS])
+def test_an_integer_fraction_starting_a_term_is_a_coefficient(
+    answer: str, reference: str, symbols: tuple[SymbolDecl, ...]
+) -> None:
+    verdict = run_job(SymbolicJob(answer, reference, symbols))
+    assert verdict.outcome is Outcome.CORRECT, verdict.feedback
+    assert verdict.read_as is not None and verdict.read_as.note is None
+
+
+def test_a_division_followed_by_too_many_factors_is_refused_with_two_readings() -> None:
+    # Each place the divisor may end is a reading; past a few, they are not all listed
     verdict = run_job(SymbolicJob("1/2π k m m k sqrt(k/m)/(k m)^2", FREQUENCY, SPRING))
     assert verdict.reason is Reason.AMBIGUOUS
+    assert verdict.feedback == (
+        "Did you mean (1/2)·pi·k·m·m·k·sqrt(k/m) or 1/(2·pi·k·m·m·k·sqrt(k/m))? Add parentheses."
+    )
 
 
-def test_several_ambiguous_divisions_are_settled_together() -> None:
-    verdict = run_job(SymbolicJob("mv/qB + mv/2qB", "3*m*v/(2*q*B)", CHARGE))
-    assert verdict.outcome is Outcome.CORRECT
-    assert verdict.read_as is not None
-    assert verdict.read_as.text == "m*v/(q*B) + m*v/(2*q*B)"
-
-
-def test_more_ambiguous_divisions_than_the_budget_are_refused() -> None:
-    answer = " + ".join(["mv/qB"] * 4)
-    verdict = run_job(SymbolicJob(answer, "4*m*v/(q*B)", CHARGE))
+def test_more_ambiguous_groupings_than_the_budget_are_refused() -> None:
+    answer = " + ".join(["A e^-ωt"] * 4)  # each settled alone
+    verdict = run_job(SymbolicJob(answer, "4*A*exp(-omega*t)", DECAY))
     assert verdict.reason is Reason.AMBIGUOUS
 
 
@@ -277,66 +308,6 @@ def test_the_refusal_of_an_exponent_names_both_readings_at_its_caret() -> None:
     assert verdict.error is not None
     assert verdict.error.position == 1
     assert verdict.feedback.startswith("Did you mean e^2·x or e^(2·x)? Add parentheses.")
-
-
-SPACED = [
-    # (answer, reference, symbols, reading, what both readings are): a space before the next factor ends
-    # the divisor, as calculators and CAS read `a/b c`, where dimensions cannot decide
-    (
-        "12 U0/r ((r0/r)^12 - (r0/r)^6)",
-        "12*U0/r*((r0/r)^12 - (r0/r)^6)",
-        LENNARD_JONES,
-        "12*U0/r*((r0/r)**12 - (r0/r)**6)",
-        "a force",
-    ),
-    ("x/y z", "x*z/y", PURE3, "x/y*z", "a pure number"),
-    ("x/y (z)", "x*z/y", PURE3, "x/y*z", "a pure number"),
-    ("x / y z", "x*z/y", PURE3, "x/y*z", "a pure number"),
-    ("x/y z + x/y z", "2*x*z/y", PURE3, "x/y*z + x/y*z", "a pure number"),
-]
-
-
-@pytest.mark.parametrize(
-    ("answer", "reference", "symbols", "reading", "kind"), SPACED, ids=[c[0] for c in SPACED]
-)
-def test_where_both_readings_fit_a_space_after_the_divisor_ends_it(
-    answer: str, reference: str, symbols: tuple[SymbolDecl, ...], reading: str, kind: str
-) -> None:
-    verdict = run_job(SymbolicJob(answer, reference, symbols))
-    assert verdict.outcome is Outcome.CORRECT, verdict.feedback
-    assert verdict.read_as is not None
-    assert verdict.read_as.text == reading
-    typed = reading.replace("**", "^").replace("*", "·")
-    note = verdict.read_as.note
-    assert note is not None
-    assert note.startswith(f"Read as {typed}: both readings are {kind}, and a space ends the divisor")
-    assert verdict.feedback.startswith(note)
-
-
-def test_the_note_on_a_spaced_divisor_says_how_to_write_the_other_reading() -> None:
-    verdict = run_job(SymbolicJob("x/y z", "x/(y*z)", PURE3))
-    assert verdict.outcome is Outcome.INCORRECT  # read as (x/y)·z, which is not x/(y·z)
-    assert verdict.read_as is not None and verdict.read_as.note is not None
-    assert verdict.read_as.note.endswith("so it is (x/y)·z; write x/(y·z) for the other reading")
-
-
-def test_preview_shows_how_spacing_settled_a_division() -> None:
-    shown = preview(
-        SymbolicJob("12 U0/r ((r0/r)^12 - (r0/r)^6)", "12*U0/r*((r0/r)^12 - (r0/r)^6)", LENNARD_JONES)
-    )
-    assert shown.error is None
-    assert shown.read_as is not None
-    assert shown.read_as.text == "12*U0/r*((r0/r)**12 - (r0/r)**6)"
-    assert shown.read_as.note is not None and "a space ends the divisor" in shown.read_as.note
-
-
-def test_spacing_settles_what_dimension_leaves_open_and_dimension_the_rest() -> None:
-    symbols = (*CHARGE, SymbolDecl("r", "m"), *PURE3)
-    verdict = run_job(SymbolicJob("mv/qB + r x/y z", "m*v/(q*B) + r*x*z/y", symbols))
-    assert verdict.outcome is Outcome.CORRECT, verdict.feedback
-    assert verdict.read_as is not None
-    assert verdict.read_as.text == "m*v/(q*B) + r*x/y*z"
-    assert verdict.read_as.note is not None and "so it is (r·x/y)·z" in verdict.read_as.note
 
 
 ATWOOD = (SymbolDecl("m1", "kg"), SymbolDecl("m2", "kg"), SymbolDecl("g", "m/s^2"))

@@ -16,8 +16,8 @@ SHOWN = [
     (Outcome.CORRECT, "Correct.", ""),
     (
         Outcome.CORRECT,
-        "Read as m·v/(q·B): the only reading that is a length. Correct.",
-        "Read as m·v/(q·B): the only reading that is a length.",
+        "Read as A·e^(-omega·t): the only reading that is a length. Correct.",
+        "Read as A·e^(-omega·t): the only reading that is a length.",
     ),
     (
         Outcome.INCORRECT,
@@ -44,10 +44,10 @@ def test_the_page_drops_only_the_correct_its_verdict_word_already_says(
     ("answer", "reference", "symbols", "typed"),
     [
         (
-            "mv/qB",
-            "m*v/(q*B)",
-            (SymbolDecl("m", "kg"), SymbolDecl("v", "m/s"), SymbolDecl("q", "C"), SymbolDecl("B", "T")),
-            "m·v/(q·B)",
+            "2π√m/k",
+            "2*pi*sqrt(m/k)",
+            (SymbolDecl("m", "kg"), SymbolDecl("k", "N/m")),
+            "2·pi·sqrt(m/k)",
         ),
         (
             "A e^-ωt",
