@@ -264,7 +264,9 @@ def _coordinate_words(name: str, model: Model) -> str:
     if not direction:
         return f"the angle «{body.name}» has turned through"
     if all(d.free_symbols & {c.symbol} for d in direction.values() if d != 0):
-        return f"an angle that sets where «{body.name}» is (see the figure)"
+        # a model with z is drawn with its bodies side by side: its figure shows no such angle
+        seen = "" if "z" in direction else " (see the figure)"
+        return f"an angle that sets where «{body.name}» is{seen}"
     says: dict[tuple[int, ...], str] = {
         (1, 0, 0): "to the right, the $+x$ direction",
         (-1, 0, 0): "to the left, the $-x$ direction",
