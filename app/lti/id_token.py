@@ -8,14 +8,14 @@ import json
 from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
 from datetime import UTC, datetime, timedelta
-from typing import Any, Protocol
-
-from joserfc import jwt
-from joserfc.errors import JoseError
-from joserfc.jwk import RSAKey
+from typing import TYPE_CHECKING, Any, Protocol
 
 from app.lti.errors import MalformedRequest, UntrustedToken
+from app.lti.keys import BadKey, verified_claims
 from app.lti.platforms import PlatformRecord
+
+if TYPE_CHECKING:
+    from joserfc.jwk import RSAKey
 
 LEEWAY = timedelta(seconds=60)
 DEFAULT_MAX_AGE = timedelta(hours=1)  # the setting `lti_max_token_age_seconds`
@@ -115,10 +115,10 @@ async def verify_id_token(
     kid = check_header(read_header(token))
     key = await keys.key_for(platform, kid)
     try:
-        verified = jwt.decode(token, key, algorithms=[ALGORITHM])
-    except JoseError as error:
+        claims = verified_claims(token, key)
+    except BadKey as error:
         raise UntrustedToken("bad_signature", "The id_token signature does not verify.") from error
-    return check_claims(verified.claims, platform, now=now, expected_nonce=expected_nonce, max_age=max_age)
+    return check_claims(claims, platform, now=now, expected_nonce=expected_nonce, max_age=max_age)
 
 
 def _timestamp(claims: Mapping[str, Any], name: str) -> datetime:

@@ -6,14 +6,16 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass
 from datetime import datetime, timedelta
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import httpx
-from joserfc.errors import JoseError
-from joserfc.jwk import RSAKey
 
 from app.lti.errors import PlatformKeysUnavailable, UntrustedToken
+from app.lti.keys import BadKey, public_key
 from app.lti.platforms import PlatformRecord
+
+if TYPE_CHECKING:
+    from joserfc.jwk import RSAKey
 
 CACHE_TTL = timedelta(minutes=10)
 # A flood of tokens with made-up kids must not turn into a flood of fetches.
@@ -42,8 +44,8 @@ def parse_jwks(document: Any) -> dict[str, RSAKey]:
         if entry.get("alg", "RS256") != "RS256" or entry.get("use", "sig") != "sig":
             continue
         try:
-            keys[kid] = RSAKey.import_key(entry)
-        except (JoseError, ValueError, TypeError):
+            keys[kid] = public_key(entry)
+        except BadKey:
             continue
     return keys
 

@@ -18,9 +18,7 @@ from collections import Counter, defaultdict
 from collections.abc import Callable, Collection, Iterable, Mapping, Sequence
 from dataclasses import dataclass, replace
 from datetime import datetime
-from typing import Any
-
-from joserfc.jwk import RSAKey
+from typing import TYPE_CHECKING, Any
 
 from app.db import keys as key_format
 from app.db.class_results import (
@@ -51,6 +49,9 @@ from app.lti.platforms import PlatformRecord
 from app.storage.protocols import DEFAULT_PAGE_LIMIT, MAX_PAGE_LIMIT, CompiledEntry, Filed, QueuedScore
 from physics.verdict import Outcome as Verdicts
 from physics.verdict import Verdict
+
+if TYPE_CHECKING:
+    from joserfc.jwk import RSAKey
 
 Clock = Callable[[], datetime]
 # Runs under the submission store's lock, before the filing is visible (the fake LTI queue uses it).

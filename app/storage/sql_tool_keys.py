@@ -5,9 +5,8 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from datetime import datetime
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from joserfc.jwk import RSAKey
 from sqlalchemy import select
 from sqlalchemy.orm import Session
 
@@ -15,6 +14,9 @@ from app.db.database import Database
 from app.db.types import utc_now
 from app.lti import keys
 from app.lti.models import LtiToolKey
+
+if TYPE_CHECKING:
+    from joserfc.jwk import RSAKey
 
 
 def _load(row: LtiToolKey) -> RSAKey:
