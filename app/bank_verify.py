@@ -13,13 +13,13 @@ from tqdm import tqdm
 
 from app.db.problems import document_hash
 from app.derivation import pack
-from app.shipped_bank import write_bank
+from app.shipped_bank import BankRead, write_bank
 from app.web.document_text import render_problems
 from physics.wording import counted
 from problems.compiled import compile_problem
 from problems.errors import ProblemInvalid
 from problems.fingerprint import engine_digest, source_digest
-from problems.loader import load_bank
+from problems.loader import bank_digest, load_bank
 from problems.schema import ProblemDocument
 from problems.selftest import Report, verify_problem
 
@@ -61,7 +61,7 @@ def verify_command(
         print(f"{counted(len(unrendered), 'text')} failed to render cleanly")
     ok = report.ok and not unrendered
     if build is not None and ok and not only:
-        write_bank(build, engine_digest(), source_digest(), payloads)
+        write_bank(build, engine_digest(), source_digest(), payloads, BankRead(bank_digest(bank_dir), bank))
         print(f"wrote {build}")
     return 0 if ok else 1
 

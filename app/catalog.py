@@ -28,7 +28,7 @@ from app.db.records import ProblemRecord
 from app.derivation import DerivationFailed, DerivationPool, DerivationRefused, unpack
 from app.errors import GraderFault, Unavailable
 from app.grading.processes import PoolError
-from app.shipped_bank import ShippedBank, load_shipped, vouched_documents
+from app.shipped_bank import ShippedBank, load_shipped, shipped_documents, vouched_documents
 from app.storage import CompiledCache, CompiledEntry, Stores
 from physics.checking import CheckJob
 from physics.engine.model import Model
@@ -38,7 +38,7 @@ from physics.wording import counted
 from problems.compiled import CompiledProblem, document_digest
 from problems.errors import ProblemInvalid
 from problems.fingerprint import engine_digest, source_digest
-from problems.loader import BANK_DIR, load_bank, parse_problem
+from problems.loader import BANK_DIR, bank_digest, load_bank, parse_problem
 from problems.modelinfo import load_doc_model
 from problems.schema import ProblemDocument
 from problems.semantics import semantic_errors
@@ -56,20 +56,20 @@ _MEANING_CHECKED: set[str] = set()  # digests (document and code files) found so
 _BANKS_READ: dict[Path, tuple[str, list[ProblemDocument]]] = {}  # by directory: its files' digest, documents
 
 
-def _bank_documents(bank_dir: Path | None) -> list[ProblemDocument]:
+def _bank_documents(bank_dir: Path | None, shipped: Path | None) -> list[ProblemDocument]:
     """The bank's documents (shape checked), parsed again only when a file changed: every app in one
-    process (each test's fresh database) stores the same bank, and parsing it is most of a start-up."""
+    process (each test's fresh database) stores the same bank, and parsing it is most of a start-up's
+    storage work. A new process takes them from the shipped bank when it was built from these very
+    files by this code."""
     root = (bank_dir or BANK_DIR).resolve()
-    digest = hashlib.sha256()
-    for path in sorted(root.rglob("*")):
-        if path.is_file():
-            digest.update(f"{path.relative_to(root)}\0".encode())
-            digest.update(path.read_bytes())
+    digest = bank_digest(root)
     found = _BANKS_READ.get(root)
-    if found is not None and found[0] == digest.hexdigest():
+    if found is not None and found[0] == digest:
         return list(found[1])
-    documents = load_bank(root, check_meaning=False)
-    _BANKS_READ[root] = (digest.hexdigest(), documents)
+    documents = shipped_documents(shipped, digest, source_digest())
+    if documents is None:
+        documents = load_bank(root, check_meaning=False)
+    _BANKS_READ[root] = (digest, documents)
     return list(documents)
 
 
@@ -233,7 +233,7 @@ class Catalog:
         code holds it (checked when the bank was built).
         """
         listed = {record.id: record for record in self.list()}
-        documents = _bank_documents(self._bank_dir)
+        documents = _bank_documents(self._bank_dir, self._shipped)
         hashes = {doc.id: document_hash(doc.model_dump(mode="json")) for doc in documents}
         unchanged = {
             doc.id

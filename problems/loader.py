@@ -8,6 +8,7 @@ whitelist parser in `problems.semantics`.
 
 from __future__ import annotations
 
+import hashlib
 import json
 from collections.abc import Mapping
 from pathlib import Path
@@ -207,3 +208,15 @@ def load_bank(dir: Path | str | None = None, *, check_meaning: bool = True) -> l
 
 def _format_of(path: Path) -> Format:
     return "json" if path.suffix == ".json" else "yaml"
+
+
+def bank_digest(dir: Path | str | None = None) -> str:
+    """SHA-256 over every file under the bank directory, names and bytes: the same digest, the same bank
+    (milliseconds, where parsing it takes a fifth of a CPU-second)."""
+    root = Path(dir) if dir is not None else BANK_DIR
+    digest = hashlib.sha256()
+    for path in sorted(root.rglob("*")):
+        if path.is_file():
+            digest.update(f"{path.relative_to(root)}\0".encode())
+            digest.update(path.read_bytes())
+    return digest.hexdigest()

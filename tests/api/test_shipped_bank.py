@@ -17,10 +17,12 @@ from app import catalog as catalog_module
 from app.bank_verify import verify_command
 from app.catalog import Catalog
 from app.derivation import DerivationPool, forget_derived
-from app.shipped_bank import DamagedBank, build_bank, read_bank, write_bank
+from app.shipped_bank import DamagedBank, build_bank, read_bank, shipped_documents, write_bank
 from app.storage import sql_stores
 from physics.checking import check_answer
 from physics.verdict import Outcome
+from problems.fingerprint import source_digest
+from problems.loader import bank_digest, load_bank
 from tests.derivations import count_derivations
 
 BANK = Path(__file__).resolve().parents[2] / "problems" / "bank"
@@ -134,6 +136,55 @@ def test_a_shipped_bank_derived_by_other_code_is_ignored_and_the_bank_derived_in
     assert [line.split(" (")[1] for line in progress] == ["1 of 2)", "2 of 2)"]
 
 
+@pytest.fixture
+def bank_parses(monkeypatch: pytest.MonkeyPatch) -> list[Path]:
+    """The bank directories a start parsed the files of (none remembered from earlier in this process)."""
+    monkeypatch.setattr(catalog_module, "_BANKS_READ", {})
+    parsed: list[Path] = []
+
+    def parsing(root, **options):
+        parsed.append(root)
+        return load_bank(root, **options)
+
+    monkeypatch.setattr(catalog_module, "load_bank", parsing)
+    return parsed
+
+
+def test_a_start_takes_the_bank_documents_from_the_shipped_bank_instead_of_parsing_its_files(
+    db, small_bank, shipped, bank_parses
+):
+    catalog = first_start(db, small_bank, shipped)
+    assert bank_parses == []
+    assert [catalog.get(doc.id).document for doc in load_bank(small_bank)] == [
+        doc.model_dump(mode="json") for doc in load_bank(small_bank)
+    ]
+    assert grades_its_reference(catalog)
+
+
+def test_a_bank_file_edited_after_the_build_is_parsed_and_its_edit_served(
+    db, small_bank, shipped, bank_parses, tmp_path
+):
+    edited = tmp_path / "bank"
+    shutil.copytree(small_bank, edited)
+    problem = edited / "atwood" / "problem.yaml"
+    text = problem.read_text()
+    title = next(line for line in text.splitlines() if line.startswith("title:"))
+    problem.write_text(text.replace(title, "title: The Atwood machine, edited after the build"))
+    catalog = first_start(db, edited, shipped)
+    assert bank_parses == [edited.resolve()]
+    assert catalog.get("atwood").document["title"] == "The Atwood machine, edited after the build"
+
+
+def test_the_shipped_bank_holds_the_documents_only_for_the_files_and_code_it_was_built_from(
+    small_bank, shipped
+):
+    files, code = bank_digest(small_bank), source_digest()
+    assert shipped_documents(shipped, files, code) == load_bank(small_bank)
+    assert shipped_documents(shipped, "other files", code) is None
+    assert shipped_documents(shipped, files, "other code") is None
+    assert shipped_documents(shipped.with_name("gone.compiled"), files, code) is None
+
+
 def test_a_first_start_does_not_check_again_the_meaning_the_shipped_bank_was_built_with(
     db, small_bank, shipped, meanings_checked
 ):
@@ -216,6 +267,7 @@ def test_bank_verify_with_build_writes_the_bank_that_build_writes(
     built, verified = read_bank(shipped), read_bank(path)
     assert built is not None and verified is not None
     assert verified.payloads.keys() == built.payloads.keys() and verified.source == built.source
+    assert shipped_documents(path, bank_digest(small_bank), source_digest()) == load_bank(small_bank)
     assert grades_its_reference(first_start(db, small_bank, path))
     assert derivations == []
 
