@@ -17,12 +17,14 @@ Handler = Callable[[argparse.Namespace, Settings], int]
 
 
 def _serve(args: argparse.Namespace, settings: Settings) -> int:
+    from app.heap import freeze_long_lived, pause_collection
+
+    pause_collection()  # until the app is built: what is imported stays
     from app.grading.forkserver import start_early
 
     start_early()  # the workers' fork server loads the checker while this process imports the service
     import uvicorn
 
-    from app.heap import freeze_long_lived
     from app.http_protocol import HttpProtocol
     from app.main import create_app
     from app.startup import Stopped, open_storage_when_reachable

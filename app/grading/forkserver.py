@@ -12,12 +12,8 @@ import multiprocessing.context
 import os
 from multiprocessing import forkserver
 
-# app.cli: each worker runs the program's main script again when it starts, and the `physcheck` script
-# imports app.cli (with the settings: a sixth of a CPU-second), so the fork server imports it once for
-# them all, at start and at every replacement. ("__main__" would say so for any script, but Python
-# 3.11's fork server never receives the main script's path.)
-# app.grading.processes: every grading worker's loop, which a worker would otherwise import as it starts.
-PRELOAD = ["app.cli", "app.grading.preload", "app.grading.processes"]
+# The preload imports the checker, the workers' loop and app.cli (app/grading/preload.py says why).
+PRELOAD = ["app.grading.preload"]
 
 
 def context() -> multiprocessing.context.ForkServerContext:
