@@ -9,7 +9,8 @@ stands: the student must add parentheses. A `/` followed by an unparenthesised p
 `m v/q B`) is never settled: the contract (API.md) refuses it whatever the dimensions. Its readings are
 tried only to settle another grouping: `A e^-t/τ cos ωt` is A·e^(−t/τ)·cos(ωt), since with e^(−t) it
 has no dimension however τ cos ωt is grouped; a reading that fits only with the division read one way
-is refused with the division's question.
+is refused with the division's question. Wherever the dimensions cannot decide, a division's question is
+asked before any other grouping's.
 """
 
 from __future__ import annotations
@@ -25,8 +26,15 @@ from physics.mathinput import InputLimits, ParsedMath, parse_math
 from physics.mathinput.render import in_student_style
 from physics.symbolic.dimensional import DimensionMismatch, UnknownDimension, expression_dimension
 
-# Ambiguous groupings one answer may have settled: 2^3 readings at most are parsed.
+# Ambiguous groupings one answer may have settled (a division's choices are not counted: it is never
+# settled, and each reading tries one division's readings at most): 2^3 · 4 readings at most are parsed.
 MAX_SETTLED = 3
+# Parses spent looking past other groupings for a division to ask about, where dimensions cannot decide.
+_MAX_LOOKED_PAST = 2**MAX_SETTLED
+
+
+class _Undecidable(Exception):
+    """The dimensions cannot settle the answer's groupings: a symbol has none, or there are too many."""
 
 
 def read_symbolic_answer(
@@ -48,9 +56,12 @@ def read_symbolic_answer(
         return parsed
     except AmbiguousGrouping as refused:
         if expected is None:
-            raise
-        chosen_readings = _readings(text, names, limits, {}, None, refused, powers_outside)
-        fitting_readings = [t for t in chosen_readings if _fits(t[1].expr, dimensions, expected, refused)]
+            raise _question(text, names, limits, powers_outside, refused) from None
+        try:
+            chosen_readings = _readings(text, names, limits, {}, None, powers_outside)
+            fitting_readings = [t for t in chosen_readings if _fits(t[1].expr, dimensions, expected)]
+        except _Undecidable:
+            raise _question(text, names, limits, powers_outside, refused) from None
         divisions = [d for _, _, d in fitting_readings or chosen_readings if d is not None]
         if divisions:  # it fits (or may) only with a division read one way: the contract refuses it
             raise divisions[0] from None
@@ -141,27 +152,57 @@ def _open_question(
     return refused
 
 
+def _question(
+    text: str,
+    names: Mapping[str, sympy.Symbol],
+    limits: InputLimits,
+    powers_outside: bool,
+    refused: AmbiguousGrouping,
+) -> AmbiguousGrouping:
+    """The question to ask where the dimensions cannot settle `refused`: a division's, if reading the
+    groupings before it as physics means them finds one (`e^2x p^2/2m` asks about p^2/2m, which the
+    contract refuses whatever else is settled), else `refused` itself."""
+    choices: dict[int, int] = {}
+    for _ in range(_MAX_LOOKED_PAST):
+        try:
+            parse_math(text, names, limits=limits, choices=choices, powers_outside=powers_outside)
+        except AmbiguousDivision as division:
+            return division
+        except AmbiguousGrouping as another:
+            if another.position is not None and another.position not in choices:
+                choices[another.position] = len(another.readings) - 1
+                continue
+        except AnswerError:
+            pass
+        return refused
+    return refused
+
+
 def _readings(
     text: str,
     names: Mapping[str, sympy.Symbol],
     limits: InputLimits,
     choices: dict[int, int],
     division: AmbiguousDivision | None,
-    refused: AmbiguousGrouping,
     powers_outside: bool,
 ) -> list[tuple[dict[int, int], ParsedMath, AmbiguousDivision | None]]:
-    """Every reading, with the choices that make it and the refusal of the first division it reads one
-    way (None if it reads none)."""
+    """Every reading, with the choices that make it and the refusal of the division it reads one way
+    (None if it reads none). A reading that meets a second division is refused with the first: it can
+    only be asked about. _Undecidable where more groupings than MAX_SETTLED would have to be settled."""
     try:
         parsed = parse_math(text, names, limits=limits, choices=choices, powers_outside=powers_outside)
         return [(choices, parsed, division)]
     except AmbiguousGrouping as another:
-        if isinstance(another, AmbiguousDivision) and another.partial:
-            raise another from None
-        if len(choices) >= MAX_SETTLED or another.position is None or another.position in choices:
-            raise refused from None
-        if division is None and isinstance(another, AmbiguousDivision):
+        if isinstance(another, AmbiguousDivision):
+            if division is not None:
+                raise division from None
+            if another.partial:
+                raise another from None
             division = another
+        elif len(choices) - (division is not None) >= MAX_SETTLED:
+            raise _Undecidable from None
+        if another.position is None or another.position in choices:
+            raise _Undecidable from None
         position = another.position
         # The last choice first: it takes the word typed on into the grouping, as physics means it
         # (e^(−bt/2m)), so a division refused in it is asked about in the student's terms.
@@ -169,18 +210,17 @@ def _readings(
             reading
             for choice in reversed(range(len(another.readings)))
             for reading in _readings(
-                text, names, limits, {**choices, position: choice}, division, refused, powers_outside
+                text, names, limits, {**choices, position: choice}, division, powers_outside
             )
         ]
 
 
-def _fits(
-    expr: sympy.Expr, dimensions: Mapping[str, Dimension], expected: Dimension, refused: AmbiguousGrouping
-) -> bool:
+def _fits(expr: sympy.Expr, dimensions: Mapping[str, Dimension], expected: Dimension) -> bool:
+    """Whether `expr` has the expected dimension; _Undecidable where a symbol has none."""
     known = {s: dimensions[s.name] for s in expr.free_symbols if s.name in dimensions}
     try:
         return expression_dimension(expr, known) == expected
     except DimensionMismatch:
         return False
     except UnknownDimension:
-        raise refused from None  # a symbol without a dimension: nothing can be decided
+        raise _Undecidable from None

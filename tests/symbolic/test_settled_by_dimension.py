@@ -162,6 +162,8 @@ SPRING = (SymbolDecl("k", "N/m"), SymbolDecl("m", "kg"))
 BOX = (SymbolDecl("n", "1"), SymbolDecl("hbar", "J*s"), SymbolDecl("m", "kg"), SymbolDecl("L", "m"))
 FIELD = (SymbolDecl("q", "C"), SymbolDecl("epsilon_0", "C^2/(N*m^2)"), SymbolDecl("r", "m"))
 FREQUENCY = "sqrt(k/m)/(2*pi)"
+UNDIMENSIONED_P = (SymbolDecl("p"), SymbolDecl("m", "kg"), SymbolDecl("x", "1"))
+DECAY_XYZ = (*DECAY, SymbolDecl("x", "1"), SymbolDecl("y", "1"), SymbolDecl("z", "1"))
 
 DIVISIONS = [
     # (answer, reference, symbols, the readings asked about): a `/` followed by an unparenthesised
@@ -196,6 +198,19 @@ DIVISIONS = [
     ("A e^-bt/2m cos(ωt)", "A*exp(-b*t/(2*m))*cos(omega*t)", DECAY, ("(b·t/2)·m", "b·t/(2·m)")),
     ("V0 e^-t/RC", "V0*exp(-t/(R*C))", CIRCUIT, ("(t/R)·C", "t/(R·C)")),
     ("√2gh/(1+I/mr²)", "sqrt(2*g*h/(1 + I/(m*r**2)))", ROLL, ("(I/m)·r^2", "I/(m·r^2)")),
+    # beside another grouping the dimensions cannot settle (p, or every symbol, has no dimension; more
+    # groupings than the budget): the division is asked about, not the other grouping
+    ("e^2x p^2/2m", "exp(2*x)*p^2/(2*m)", UNDIMENSIONED_P, ("(e^(2·x)·p^2/2)·m", "e^(2·x)·p^2/(2·m)")),
+    (
+        "e^2x p^2/2m",
+        "exp(2*x)*p^2/(2*m)",
+        (SymbolDecl("p"), SymbolDecl("m"), SymbolDecl("x")),
+        ("(e^(2·x)·p^2/2)·m", "e^(2·x)·p^2/(2·m)"),
+    ),
+    ("sin x/2 p^2/2m", "sin(x/2)*p^2/(2*m)", UNDIMENSIONED_P, ("(sin(x/2)·p^2/2)·m", "sin(x/2)·p^2/(2·m)")),
+    (" + ".join(["A e^-ωt"] * 3 + ["A x/y z"]), "3*A*exp(-omega*t)", DECAY_XYZ, ("(A·x/y)·z", "A·x/(y·z)")),
+    (" + ".join(["A e^-ωt"] * 4 + ["A x/y z"]), "4*A*exp(-omega*t)", DECAY_XYZ, ("(A·x/y)·z", "A·x/(y·z)")),
+    (" + ".join(["A e^-ωt"] + ["A x/y z"] * 3), "A*exp(-omega*t)", DECAY_XYZ, ("(A·x/y)·z", "A·x/(y·z)")),
     # a divisor followed by several factors: a reading for each place it may end
     (
         "1/2π sqrt(k/m)",
@@ -270,6 +285,16 @@ def test_a_division_followed_by_too_many_factors_is_refused_with_two_readings() 
     assert verdict.feedback == (
         "Did you mean (1/2)·pi·k·m·m·k·sqrt(k/m) or 1/(2·pi·k·m·m·k·sqrt(k/m))? Add parentheses."
     )
+
+
+def test_a_divisions_readings_do_not_count_against_the_budget_of_settled_groupings() -> None:
+    # e^(−t)/τ cos(ωt), the grammar's reading of the first power, reads its division both ways before the
+    # other two powers are settled: three groupings, within the budget, and only e^(−t/τ) fits
+    answer = "A e^-t/τ cos(ωt) + A e^-ωt + A e^-ωt"
+    verdict = run_job(SymbolicJob(answer, "A*exp(-t/tau)*cos(omega*t) + 2*A*exp(-omega*t)", DECAY))
+    assert verdict.outcome is Outcome.CORRECT, verdict.feedback
+    assert verdict.read_as is not None
+    assert verdict.read_as.text == "A*e**(-t/tau)*cos(omega*t) + A*e**(-omega*t) + A*e**(-omega*t)"
 
 
 def test_more_ambiguous_groupings_than_the_budget_are_refused() -> None:
