@@ -15,11 +15,19 @@ _SPACES = " \u00a0\u2009\u202f"
 _NUMBER = _DIGITS + ".,"
 
 
+# LaTeX's decimal comma, braced so that TeX sets no space after it: `4{,}58`.
+LATEX_COMMA = "{,}"
+
+
 def comma_in_number(text: str, at: int) -> LikelySlip:
     """Why the comma at `at`, between digits, is refused: a decimal comma (`4,58`: write 4.58), a
     thousands separator (`1,500,000`: write 1500000) or either (`1,500`: asked, naming both). A slip,
-    so that no other reader (a numeric answer's arithmetic, its units) has the last word on it."""
+    so that no other reader (a numeric answer's arithmetic, its units) has the last word on it. At a
+    LaTeX comma (`4{,}58`, at its brace) the comma is a decimal one: LaTeX groups thousands with `\\,`."""
     seen, start = _typed_number(text, at)
+    if text.startswith(LATEX_COMMA, at):
+        whole, _, after = seen.partition(",")
+        return LikelySlip(f"{seen}: a decimal comma is not read; write {whole}.{after}", at + 1)
     spaced = [k for k, c in enumerate(seen) if c in _SPACES]
     if spaced:  # `1 500,5`: refused where the second number starts, as without the comma
         second = start + spaced[0] + 1
@@ -92,7 +100,7 @@ def _typed_number(text: str, at: int) -> tuple[str, int]:
     """The digits, points, commas and spaces between digits around `at`, as typed, and where they start."""
 
     def inside(k: int) -> bool:
-        if text[k] in _NUMBER:
+        if text[k] in _NUMBER or LATEX_COMMA in (text[k : k + 3], text[k - 2 : k + 1]):
             return True
         return (
             text[k] in _SPACES and 0 < k < len(text) - 1 and text[k - 1] in _DIGITS and text[k + 1] in _DIGITS
@@ -104,7 +112,9 @@ def _typed_number(text: str, at: int) -> tuple[str, int]:
     end = at
     while end < len(text) and inside(end):
         end += 1
-    seen = text[start:end].rstrip(".,")  # a full stop ending the answer is no decimal point
+    seen = (
+        text[start:end].replace(LATEX_COMMA, ",").rstrip(".,")
+    )  # a full stop ending the answer is no decimal point
     return seen.lstrip(".,"), start + len(seen) - len(seen.lstrip(".,"))
 
 

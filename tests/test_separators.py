@@ -30,6 +30,9 @@ REFUSED = [
     ("4.580 7", 6, "4.580 7: two numbers side by side; for one number, write 4.5807"),
     ("1 500,5", 2, "1 500,5: two numbers side by side; for one number, write 1500.5"),
     ("0 500", 2, "0 500: two numbers side by side. Did you mean 0.500 or 500?"),
+    # LaTeX's braced comma is a decimal one (LaTeX groups thousands with a thin space, \,)
+    ("4{,}58", 2, "4,58: a decimal comma is not read; write 4.58"),
+    ("1{,}500", 2, "1,500: a decimal comma is not read; write 1.500"),
 ]
 IDS = [c[0] for c in REFUSED]
 

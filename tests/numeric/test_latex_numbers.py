@@ -59,6 +59,9 @@ LATEX_ERRORS = [
     (r"4.58\,\mathrm{m}^{1.5}", 19, "whole numbers"),
     (r"a = 4.58\,\mathrm{m/s^2}", 2, "Give the value alone, without a name and '='"),
     (r"\approx 4.58", 0, r"Unknown LaTeX command \approx: type only the expression"),
+    # LaTeX's decimal comma, braced so that no space follows it: the decimal comma's own message
+    (r"4{,}58\,\mathrm{m/s^2}", 2, "4,58: a decimal comma is not read; write 4.58"),
+    (r"\frac{4{,}58}{2}\,\mathrm{m/s^2}", 8, "4,58: a decimal comma is not read; write 4.58"),
     # siunitx's quantity, as a LaTeX-writing student sets one: once "type that part in plain text" alone
     (r"\SI{4.58}{m/s^2}", 0, r"Unknown LaTeX command \SI: type the value and its units in plain text, as in"),
     (r"\qty{4.58}{\metre\per\second\squared}", 0, "siunitx's commands are not read"),
