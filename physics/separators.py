@@ -72,6 +72,12 @@ def side_by_side(text: str, start: int, at: int, *, product: bool = False) -> Pa
         return ParseError(f"{shown}: two numbers side by side; write * between them for a product", at)
     if not second or any(c not in _NUMBER for c in together):  # `4.5e3 12`: nor these
         return ParseError(f"{shown}: two numbers side by side; write one number{times}", at)
+    if second == "10" and shown == f"{first} 10":  # `4.58 10`: a calculator's ×10 with its exponent left out
+        return ParseError(
+            f"{shown}: two numbers side by side; for a power of ten, write {first}×10^ and its exponent (as "
+            f"in {first}×10^3), or {first}e10 for {first}×10^10{times}",
+            at,
+        )
     if first == "0":  # `0 500`: no group of digits starts with a lone 0
         return ParseError(f"{shown}: two numbers side by side. Did you mean 0.{second} or {second}?", at)
     if together.count(",") == 1 and "." not in together:  # `1 500,5`: the comma a decimal one
@@ -83,6 +89,20 @@ def side_by_side(text: str, start: int, at: int, *, product: bool = False) -> Pa
         )
     return ParseError(
         f"{shown}: two numbers side by side; for one number, write {together}{_scientific(together)}{times}",
+        at,
+    )
+
+
+def number_after_a_power(base: str, exponent: str, number: str, at: int) -> ParseError:
+    """Why `x^2 3`, a number typed after a power (`base` ^ `exponent`), is refused: as typed, two numbers
+    side by side, the exponent and the number; saying how to write the product, or the power meant."""
+    power = f"{base}^{exponent}"
+    times = "*" if base[-1:] in _DIGITS else " "  # `2^2 3`: 3*2^2, never the numbers 3 2^2 side by side
+    one_exponent = exponent.lstrip("+-").isdigit() and number.isdigit()
+    return ParseError(
+        f"{power} {number}: the number after a power is a separate factor, not part of the exponent: for "
+        f"the product, write {number}{times}{power}"
+        + (f"; for the power, write {base}^({exponent}{number})" if one_exponent else ""),
         at,
     )
 

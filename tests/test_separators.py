@@ -30,6 +30,13 @@ REFUSED = [
     ("4.580 7", 6, "4.580 7: two numbers side by side; for one number, write 4.5807"),
     ("1 500,5", 2, "1 500,5: two numbers side by side; for one number, write 1500.5"),
     ("0 500", 2, "0 500: two numbers side by side. Did you mean 0.500 or 500?"),
+    # a calculator's display, 4.58 and its exponent 10, or ×10 with its exponent left out: never 4.5810
+    (
+        "4.58 10",
+        5,
+        "4.58 10: two numbers side by side; for a power of ten, write 4.58×10^ and its exponent (as in "
+        "4.58×10^3), or 4.58e10 for 4.58×10^10",
+    ),
     # LaTeX's braced comma is a decimal one (LaTeX groups thousands with a thin space, \,)
     ("4{,}58", 2, "4,58: a decimal comma is not read; write 4.58"),
     ("1{,}500", 2, "1,500: a decimal comma is not read; write 1.500"),
@@ -103,3 +110,57 @@ def test_a_decimal_comma_in_arithmetic_is_refused_at_the_comma(answer: str) -> N
     assert verdict.error is not None
     assert verdict.error.message.startswith("4,58: a decimal comma is not read; write 4.58")
     assert answer[verdict.error.position] == ","
+
+
+NUMBERS_AFTER_A_POWER = [
+    # (answer, position, message): the exponent and a number typed after it, side by side
+    (
+        "x^2 3",
+        4,
+        "x^2 3: the number after a power is a separate factor, not part of the exponent: for the product, "
+        "write 3 x^2; for the power, write x^(23)",
+    ),
+    (
+        "m g x^-2 3",
+        9,
+        "x^-2 3: the number after a power is a separate factor, not part of the exponent: for the product, write 3 x^-2; for the power, write x^(-23)",
+    ),
+    (
+        "x**2 3",
+        5,
+        "x^2 3: the number after a power is a separate factor, not part of the exponent: for the product, write 3 x^2; for the power, write x^(23)",
+    ),
+    (
+        "x^2 1/2",
+        4,
+        "x^2 1/2: the number after a power is a separate factor, not part of the exponent: for the product, write 1/2 x^2",
+    ),
+    (
+        "(m+g)^2 3.5",
+        8,
+        "(m+g)^2 3.5: the number after a power is a separate factor, not part of the exponent: for the product, write 3.5 (m+g)^2",
+    ),
+    (
+        "2^2 3",
+        4,
+        "2^2 3: the number after a power is a separate factor, not part of the exponent: for the product, write 3*2^2; for the power, write 2^(23)",
+    ),
+]
+
+
+@pytest.mark.parametrize(
+    ("answer", "position", "message"), NUMBERS_AFTER_A_POWER, ids=[c[0] for c in NUMBERS_AFTER_A_POWER]
+)
+def test_a_number_after_a_power_is_refused_saying_how_to_write_the_product_or_the_power(
+    answer: str, position: int, message: str
+) -> None:
+    with pytest.raises(ParseError) as caught:
+        read(answer, "x", "m", "g")
+    assert (caught.value.position, caught.value.message) == (position, message)
+
+
+def test_a_number_after_a_power_of_a_number_is_refused_in_a_numeric_answer_too() -> None:
+    verdict = check_numeric("9.8*2^2 3 N", NumericSpec(Decimal("117.6"), "N"))
+    assert (verdict.outcome, verdict.reason) == (Outcome.INVALID, Reason.PARSE_ERROR)
+    assert verdict.error is not None
+    assert verdict.error.message.endswith("for the product, write 3*2^2; for the power, write 2^(23)")

@@ -179,15 +179,17 @@ class Parser:
         return self._power()
 
     def _product(self) -> Node:
+        tokens = self._tokens
+        factor_at = tokens[self._i].pos  # where the last factor read was typed
         first = self._power()
         items: list[_Item] = []
-        tokens = self._tokens
         while True:
             tok = tokens[self._i]
             kind = tok.kind
             if kind is Kind.OP and tok.text in "*/":
                 self._i += 1
                 after = tokens[self._i]
+                factor_at = after.pos
                 signed = after.kind is Kind.OP and after.text in "+-"
                 factor = self._signed() if signed else self._power()
                 items.append(_Item("*" if tok.text == "*" else "/", factor, tok, False))
@@ -204,8 +206,11 @@ class Parser:
                         self._power()
                         end = self._tokens[self._i - 1].end
                         raise separators.power_of_ten_apart(self._source, prev.pos, tok.pos, end)
+                    if _number_after_an_exponent(tokens, self._i):
+                        raise self._number_after_a_power(factor_at, prev, tok)
                     self._refuse_a_mixed_number(prev, tok)
                     raise separators.side_by_side(self._source, prev.pos, tok.pos, product=True)
+                factor_at = tok.pos
                 items.append(_Item("*", self._power(), tok, True))
             else:
                 break
@@ -217,9 +222,24 @@ class Parser:
                 return first
         return Product(first, tuple((item.op, item.node) for item in items))
 
+    def _number_after_a_power(self, factor_at: int, exponent: Token, number: Token) -> ParseError:
+        """The refusal of `x^2 3`: the power typed from `factor_at` to its `exponent`, then a `number`
+        (with the fraction typed on it: `x^2 1/2`)."""
+        tokens, at = self._tokens, self._i
+        end = number.end
+        if tokens[at + 1].kind is Kind.OP and tokens[at + 1].text == "/" and tokens[at + 2].kind is Kind.NUM:
+            end = tokens[at + 2].end
+        caret = next(t for t in reversed(tokens[: at - 1]) if t.kind is Kind.OP and t.text == "^")
+        return separators.number_after_a_power(
+            self._source[factor_at : caret.pos],
+            self._source[tokens[tokens.index(caret) + 1].pos : exponent.end],
+            self._source[number.pos : end],
+            number.pos,
+        )
+
     def _refuse_a_mixed_number(self, whole: Token, top: Token) -> None:
         """`1 1/2`, a whole number then a fraction of whole numbers: one and a half, as a recipe writes
-        it. Only where the first number is no exponent (`x^2 1/2` is two numbers side by side)."""
+        it. Only where the first number is no exponent (`x^2 1/2` is a number after a power)."""
         at = self._i
         tokens = self._tokens
         slash, bottom = tokens[at + 1], tokens[at + 2] if at + 2 < len(tokens) else tokens[-1]
@@ -922,6 +942,15 @@ def _is_minus_one(node: Node) -> bool:
 
 def _product_of(factors: list[Node]) -> Node:
     return factors[0] if len(factors) == 1 else Product(factors[0], tuple(("*", f) for f in factors[1:]))
+
+
+def _number_after_an_exponent(tokens: list[Token], at: int) -> bool:
+    """Whether the number at `at` follows an exponent (`x^2 3`, `x^-2 3`) and is raised by nothing itself
+    (`x^2 10^3` is two numbers side by side, as any other)."""
+    before = [t.text if t.kind is Kind.OP else "" for t in tokens[max(at - 3, 0) : at - 1]]
+    after = tokens[at + 1]
+    raised = after.kind is Kind.SUP or (after.kind is Kind.OP and after.text == "^")
+    return not raised and (before[-1:] == ["^"] or (before[-2:-1] == ["^"] and before[-1] in ("+", "-")))
 
 
 def _times_a_power_of_ten(tokens: list[Token], at: int) -> bool:
