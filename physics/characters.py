@@ -47,13 +47,13 @@ INVISIBLE_GAPS: Final = MappingProxyType({"\u2061": " ", "\u2062": " "})
 # the asterisk operator (Word's symbol menu), as the middle dot and the asterisk they look like.
 TIMES_LOOKALIKES: Final = MappingProxyType({"∙": "·", "•": "·", "∗": "*"})
 # The digits of Arabic script, as an Arabic (U+0660…) or Persian (U+06F0…) keyboard types them, and its
-# decimal separator and thousands separator: the same digits and marks (`٤٫٥٨` is 4.58).
+# decimal separator: the same digits and point (`٤٫٥٨` is 4.58). Its thousands separator, ٬, is kept:
+# unlike a comma it is no decimal one, and the readers of numbers refuse it by its own name.
 ARABIC_DIGITS: Final = MappingProxyType(
     {
         **{chr(0x0660 + digit): str(digit) for digit in range(10)},
         **{chr(0x06F0 + digit): str(digit) for digit in range(10)},
         "٫": ".",
-        "٬": ",",
     }
 )
 _PLAIN: Final = MappingProxyType(

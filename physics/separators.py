@@ -12,7 +12,9 @@ from physics.errors import LikelySlip, ParseError
 _DIGITS = "0123456789"
 # The spaces SI groups digits with (and a phone's no-break space): shown back as a plain space.
 _SPACES = " \u00a0\u2009\u202f"
-_NUMBER = _DIGITS + ".,"
+# Arabic script's thousands separator, as an Arabic or Persian keyboard types it: `٤٬٥٨٠`.
+ARABIC_THOUSANDS = "٬"
+_NUMBER = _DIGITS + ".," + ARABIC_THOUSANDS
 
 
 # LaTeX's decimal comma, braced so that TeX sets no space after it: `4{,}58`.
@@ -51,6 +53,26 @@ def comma_in_number(text: str, at: int) -> LikelySlip:
             at,
         )
     return LikelySlip(f"{seen}: a decimal comma is not read; write {whole}.{after}", at)
+
+
+def arabic_thousands(text: str, at: int) -> LikelySlip:
+    """Why the Arabic thousands separator at `at`, between digits, is refused: the contract reads no
+    separator in a number (a comma, a space), and this one is never a decimal one, so it is not asked
+    about as `1,500` is: `٤٬٥٨٠` is 4580, to be typed so."""
+    seen, _ = _typed_number(text, at)
+    whole, _, fraction = seen.partition(".")
+    groups = whole.split(ARABIC_THOUSANDS)
+    grouped = (
+        1 <= len(groups[0]) <= 3 and all(len(g) == 3 for g in groups[1:]) and ARABIC_THOUSANDS not in fraction
+    )
+    meant = (
+        f"write {''.join(groups)}{'.' + fraction if fraction else ''}"
+        if grouped
+        else "write its digits together, with a point (or ٫) before any decimals"
+    )
+    return LikelySlip(
+        f"{seen}: {ARABIC_THOUSANDS}, the Arabic thousands separator, is not read in a number; {meant}", at
+    )
 
 
 def side_by_side(text: str, start: int, at: int, *, product: bool = False) -> ParseError:

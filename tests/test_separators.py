@@ -37,6 +37,18 @@ REFUSED = [
         "4.58 10: two numbers side by side; for a power of ten, write 4.58×10^ and its exponent (as in "
         "4.58×10^3), or 4.58e10 for 4.58×10^10",
     ),
+    # Arabic script's thousands separator is never a decimal one: not asked about, as 1,500 is
+    ("٤٬٥٨٠", 1, "4٬580: ٬, the Arabic thousands separator, is not read in a number; write 4580"),
+    (
+        "١٬٥٠٠٬٠٠٠٫٥",
+        1,
+        "1٬500٬000.5: ٬, the Arabic thousands separator, is not read in a number; write 1500000.5",
+    ),
+    (
+        "۴٬۵۸",
+        1,
+        "4٬58: ٬, the Arabic thousands separator, is not read in a number; write its digits together",
+    ),
     # LaTeX's braced comma is a decimal one (LaTeX groups thousands with a thin space, \,)
     ("4{,}58", 2, "4,58: a decimal comma is not read; write 4.58"),
     ("1{,}500", 2, "1,500: a decimal comma is not read; write 1.500"),

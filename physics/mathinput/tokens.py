@@ -522,6 +522,8 @@ def _read_number(chars: list[str], i: int, space: bool, limits: InputLimits) -> 
         raise separators.comma_in_number("".join(chars), i)
     if "".join(chars[i : i + 3]) == separators.LATEX_COMMA and i + 3 < n and chars[i + 3].isdigit():
         raise separators.comma_in_number("".join(chars), i)
+    if i + 1 < n and chars[i] == separators.ARABIC_THOUSANDS and chars[i + 1].isdigit():
+        raise separators.arabic_thousands("".join(chars), i)
     digits = len(whole) + len(fraction)
     if digits > limits.max_number_digits:
         raise TooLarge(f"A number has too many digits (at most {limits.max_number_digits}).", start)

@@ -379,6 +379,8 @@ def read_number(text: str, start: int = 0) -> NumberLiteral:
         raise separators.comma_in_number(text, i)
     if text.startswith(separators.LATEX_COMMA, i) and i + 3 < len(text) and text[i + 3] in _DIGITS:
         raise separators.comma_in_number(text, i)
+    if i + 1 < len(text) and text[i] == separators.ARABIC_THOUSANDS and text[i + 1] in _DIGITS:
+        raise separators.arabic_thousands(text, i)
     if i + 1 < len(text) and text[i] in _DIGIT_SEPARATORS and text[i + 1] in _DIGITS:
         _refuse_feet_and_inches(text, integer_digits, i)
         raise ParseError(f"Write a number without separators: 1500, not 1{text[i]}500", i)
