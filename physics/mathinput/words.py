@@ -72,6 +72,7 @@ def resolve_words(tokens: list[Token], table: NameTable) -> list[Token]:
         if isinstance(tok, SpelledWord):
             readings = tuple(r for r in readings if _keeps_whole(r, tok))
         if len(readings) == 1:
+            _refuse_degree_function(word, readings[0], nxt, tok.pos)
             space = tok.space_before
             for part in readings[0]:
                 if spelled:
@@ -318,6 +319,28 @@ def other_names_hint(word: str) -> str:
         return ""
     name = _OTHER_FUNCTION_NAMES[found.group(1)]
     return f" Did you mean {name}? Write {name} for {found.group(1)}, as in {name}(x)."
+
+
+def _refuse_degree_function(word: str, reading: tuple[Part, ...], nxt: Token, at: int) -> None:
+    """`m g sind θ` where a symbol d is declared: sin(d)·θ to the grammar, but MATLAB's sine of an angle in
+    degrees as typed; refused, saying what to type for each (never graded as sin(d)·θ)."""
+    if len(reading) < 2 or reading[-2].kind != "func" or reading[-1].kind != "name":
+        return
+    function, symbol = reading[-2], reading[-1]
+    degrees = _DEGREE_FUNCTION_WORD.fullmatch(word[function.start : symbol.end])
+    if degrees is None or word[symbol.start : symbol.end] != "d":
+        return
+    name = degrees.group(1)
+    after = nxt.text if nxt.kind in (Kind.WORD, Kind.NUM) else "(…)"
+    applied = f"{name} {after}" if after != "(…)" else f"{name}(…)"
+    raise AmbiguousInput(
+        f"Did you mean {applied} or {name}(d)·{after}? {name}d is MATLAB's {name} of an angle in degrees, "
+        f"which is not read here: for {name} of {after}, type {applied} (an angle's symbol needs no degree "
+        f"sign; a number of degrees does, as in {name}(30°)); for {name} of your symbol d times {after}, "
+        f"type {name}(d) {after}.",
+        at + function.start,
+        (f"{name}({after})", f"{name}(d)*{after}"),
+    )
 
 
 def glued_angle_hint(word: str) -> str:

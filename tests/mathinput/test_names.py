@@ -310,6 +310,38 @@ def test_matlabs_function_of_degrees_is_refused_naming_the_one_to_type(
     )
 
 
+MATLAB_DEGREE_FUNCTIONS_BESIDE_A_DECLARED_D = [
+    # (typed, declared, the function, the readings asked about): with d declared these were graded as
+    # sin(d)·θ
+    ("m g sind θ", ("m", "g", "d", "theta"), "sin", "Did you mean sin θ or sin(d)·θ?"),
+    ("m g cosd(θ)", ("m", "g", "d", "theta"), "cos", "Did you mean cos(…) or cos(d)·(…)?"),
+    ("x mgtand 30", ("x", "m", "g", "d"), "tan", "Did you mean tan 30 or tan(d)·30?"),
+]
+
+
+@pytest.mark.parametrize(
+    ("typed", "declared", "name", "asked"),
+    MATLAB_DEGREE_FUNCTIONS_BESIDE_A_DECLARED_D,
+    ids=[c[0] for c in MATLAB_DEGREE_FUNCTIONS_BESIDE_A_DECLARED_D],
+)
+def test_matlabs_function_of_degrees_is_asked_about_where_d_is_a_symbol(
+    typed: str, declared: tuple[str, ...], name: str, asked: str
+) -> None:
+    with pytest.raises(AmbiguousInput) as caught:
+        read(typed, *declared)
+    assert caught.value.message.startswith(asked)
+    assert (
+        f"{name}d is MATLAB's {name} of an angle in degrees, which is not read here" in caught.value.message
+    )
+    assert f"type {name}(d)" in caught.value.message
+    assert typed[caught.value.position :].startswith(f"{name}d")
+
+
+def test_a_function_glued_to_a_declared_d_inside_a_word_reads_as_before() -> None:
+    # only a word ending in sind, cosd, … is MATLAB's: sin(d·θ) where dθ is typed on
+    assert same(read("sindθ", "d", "theta").expr, sympy.sin(sym("d") * sym("theta")))
+
+
 def test_tg_of_declared_t_and_g_is_their_product_as_before() -> None:
     assert same(read("v0 - tg", "v0", "t", "g").expr, sym("v0") - sym("t") * sym("g"))
 
