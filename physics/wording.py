@@ -5,6 +5,13 @@ from __future__ import annotations
 # A `;` ending an answer, as Maxima and MATLAB end a command: refused, as STACK refuses it, in symbolic and
 # numeric answers alike.
 TRAILING_SEMICOLON = "Leave out the ';' at the end: an answer is not a command, so type it without one."
+# Arrows a phone's symbol keyboard offers, typed for a direction beside a value (`4.58 m/s^2 ↓`).
+ARROWS = "↓↑←→⇓⇑⇐⇒↙↘↖↗"
+# Why a direction said beside a value is not read: the sign carries it.
+DIRECTION_BY_SIGN = (
+    "a direction is not read here; give it by the sign of the value (negative for the other way), as the "
+    "problem sets its axes"
+)
 
 
 def counted(count: int, noun: str, plural: str | None = None) -> str:

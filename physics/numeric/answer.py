@@ -15,11 +15,12 @@ from fractions import Fraction
 from physics.characters import fullwidth_as_ascii, may_be_wrapped, without_math_delimiters, without_zero_width
 from physics.dimensions import Dimension
 from physics.errors import AnswerError, LikelySlip, ParseError, TooLarge, UnknownUnit
+from physics.mathinput.vocabulary import FUNCTIONS
 from physics.numeric.literal import NumberLiteral, read_number, side_by_side, units_start
 from physics.units import ParsedUnits, UnitReading, read_units
-from physics.units.cyrillic import cyrillic_units_hint
+from physics.units.other_scripts import other_script_units_hint
 from physics.verdict import ReadAs
-from physics.wording import TRAILING_SEMICOLON
+from physics.wording import ARROWS, DIRECTION_BY_SIGN, TRAILING_SEMICOLON
 
 MAX_ANSWER_LENGTH = 200
 
@@ -69,6 +70,7 @@ class NumericAnswer:
 _RECIPROCAL = re.compile(r"1\s*/")  # `4.9e12 1/s` is a number and a unit, not two numbers
 _UNCERTAINTY = re.compile(r"±|\+\s*/\s*[-−]|\+[-−](?=\s*[\d.])")
 _STARTS_LITERAL = re.compile(r"\s*[-−+]?\s*\.?[0-9]")
+_MATH_WORDS = frozenset({*FUNCTIONS, "pi", "π", "e"})  # words arithmetic reads before a number
 _NOT_ARITHMETIC = re.compile(r"[\s\d.,*·⋅]*")  # after a literal: more digits or a times sign only
 
 
@@ -136,11 +138,29 @@ def _no_number_first(text: str, otherwise: AnswerError | None = None) -> AnswerE
     colon = text.find(":")
     if colon >= 0:  # `a: 4.58 m/s^2`, Maxima's assignment; `Answer: 4.58 m/s^2`, a sentence's
         return ParseError("Give the value alone: write what comes after the ':'", colon)
+    start = len(text) - len(text.lstrip())
+    if text[start : start + 1] in tuple(ARROWS):  # `↓ 4.58 m/s^2`
+        return ParseError(DIRECTION_BY_SIGN[0].upper() + DIRECTION_BY_SIGN[1:], start)
     return (
         _approximation(text)
+        or _sentence(text)
         or otherwise
         or ParseError("The answer must start with a number, such as 2.5 or 229/50", 0)
     )
+
+
+# Words before the value, as a sentence says it: `The period is 1.42 s`, `it takes 3.2 s`.
+_SENTENCE = re.compile(r"\s*([^\W\d_]+(?:\s+[^\W\d_]+)+)\s+(?=[-−+]?\.?\d)")
+
+
+def _sentence(text: str) -> ParseError | None:
+    """Why `The period is 1.42 s` is refused, saying what to type; None where the words before the value
+    may be arithmetic's (`pi sqrt 2 m`) or there are none."""
+    sentence = _SENTENCE.match(text)
+    if sentence is None or any(w.lower() in _MATH_WORDS for w in sentence.group(1).split()):
+        return None
+    value = text[sentence.end() :].strip().rstrip(".")
+    return ParseError(f"Type only the value and its units ({value}), not a sentence", sentence.start(1))
 
 
 def unbracketed_units(unit_text: str, start: int) -> tuple[str, int]:
@@ -175,8 +195,10 @@ def read_units_at(unit_text: str, start: int, expected: Dimension | None) -> Uni
     except AnswerError as error:
         if error.position is not None:
             error.position += start
-        if isinstance(error, UnknownUnit) and (hint := cyrillic_units_hint(unit_text, expected)):
-            error.message += hint  # `4.58 м/с²`: SI's units as a Russian school writes them
+        if isinstance(error, UnknownUnit) and (hint := other_script_units_hint(unit_text, expected)):
+            error.message += (
+                hint  # `4.58 м/с²`, `4.58 米/秒²`: SI's units as a Russian or Chinese school writes them
+            )
         raise
 
 
@@ -270,6 +292,8 @@ def read_numeric_answer(
         raise literal_error
     if not _STARTS_LITERAL.match(text) and (approximately := _approximation(text)) is not None:
         raise approximately  # `approx 4.58`: never a unit or a symbol `approx`
+    if not _STARTS_LITERAL.match(text) and (sentence := _sentence(text)) is not None:
+        raise sentence  # `The period is 1.42 s`: never units or symbols `The period is`
     try:
         answer = read_arithmetic_answer(text, expected)
     except AnswerError:

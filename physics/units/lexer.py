@@ -18,6 +18,7 @@ from enum import Enum
 from physics.errors import AnswerError, LikelySlip, ParseError
 from physics.units.catalogue import ALIASES, SPELLINGS_WITH_DIGITS
 from physics.units.latex import plain_units
+from physics.wording import ARROWS, DIRECTION_BY_SIGN
 
 
 class Kind(Enum):
@@ -346,6 +347,7 @@ _CHARACTER_HINTS = {
         '″"',
         ": a double prime is not read as a unit; for seconds of arc write arcsec, for inches in",
     ),
+    **dict.fromkeys(ARROWS, f": {DIRECTION_BY_SIGN}"),
 }
 
 

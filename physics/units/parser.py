@@ -36,6 +36,7 @@ from physics.units.catalogue import (
 from physics.units.lexer import Kind, Token, second_quantity, tokenize
 from physics.units.parsed import ParsedUnits
 from physics.units.registry import UnitAtom, case_variants, lookup, lookup_piece, pint_unit, suggestion
+from physics.wording import DIRECTION_BY_SIGN
 
 MAX_UNIT_TEXT_LENGTH = 100
 MAX_UNIT_POWER = 12
@@ -382,8 +383,7 @@ class _Parser:
         if not readings.options:
             if token.text.lower() in _DIRECTION_WORDS:  # `-6.17 m/s^2 downward`, as said in a sentence
                 raise UnknownUnit(
-                    f"Unknown unit {token.text!r}: a direction is not read here; give it by the sign of "
-                    "the value (negative for the other way), as the problem sets its axes",
+                    f"Unknown unit {token.text!r}: {DIRECTION_BY_SIGN}",
                     token.position,
                     token.text,
                 )

@@ -244,6 +244,22 @@ WORDING = [
         "Unknown unit 'downward': a direction is not read here; give it by the sign",
     ),
     ("4.58 m/s^2 (down)", ACCEL, "Unknown unit 'down': a direction is not read here"),
+    # an arrow for the direction, before or after the value: once "Unexpected character '↓' in the units"
+    # or "The answer must start with a number"
+    (
+        "4.58 m/s^2 ↓",
+        ACCEL,
+        "Unexpected character '↓' in the units: a direction is not read here; give it by",
+    ),
+    ("↓ 4.58 m/s^2", ACCEL, "A direction is not read here; give it by the sign of the value"),
+    # a sentence: once "The answer must start with a number"; words arithmetic reads are no sentence
+    (
+        "The period is 1.42 s.",
+        NumericSpec(D("1.42"), "s"),
+        "Type only the value and its units (1.42 s), not a",
+    ),
+    ("it takes about 1.42 s", NumericSpec(D("1.42"), "s"), "Type only the value and its units (1.42 s)"),
+    ("pi sqrt 2 m", NumericSpec(D("4.4429"), "m"), "Correct"),
     # how near the value is, said after it: no unit (was "Unknown unit 'approx'" alone)
     (
         "4.58 m/s^2 approx",

@@ -1,4 +1,4 @@
-"""Units written in Russian: refused naming the Latin symbols to type, never read as them."""
+"""Units written in Russian or Chinese: refused naming the Latin symbols to type, never read as them."""
 
 from __future__ import annotations
 
@@ -7,7 +7,7 @@ from decimal import Decimal
 import pytest
 
 from physics.numeric import NumericSpec, check_numeric
-from physics.units.cyrillic import latin_units
+from physics.units.other_scripts import latin_units
 from physics.verdict import Outcome, Reason
 
 LATIN = [
@@ -22,6 +22,11 @@ LATIN = [
     ("мс", "ms"),  # the millisecond, as Russian writes it
     ("мин", "min"),
     ("кПа", "kPa"),
+    ("米/秒²", "m/s²"),  # as Chinese textbooks write them
+    ("千克", "kg"),
+    ("公斤", "kg"),
+    ("牛·米", "N·m"),
+    ("千米/小时", "km/h"),
     ("m/s^2", None),  # no Cyrillic
     ("шт", None),  # no unit's symbol
 ]
@@ -48,7 +53,26 @@ REFUSED = [
         "m/s^2",
         "did you mean m/s?",
     ),  # graded once typed in Latin: a speed, not an acceleration
-    ("4.58 шт", "4.58", "m/s^2", "Unknown unit 'шт'"),
+    (
+        "4.58 шт",
+        "4.58",
+        "m/s^2",
+        "Unknown unit 'шт': units are written with SI's symbols in Latin letters, as in",
+    ),
+    # Chinese: was "Unknown unit '米'" with no more
+    (
+        "4.58 米/秒²",
+        "4.58",
+        "m/s^2",
+        "Unknown unit '米': units are written with SI's symbols in Latin letters; did you mean m/s²?",
+    ),
+    ("4.58 千克", "4.58", "kg", "did you mean kg?"),
+    (
+        "4.58 メートル",
+        "4.58",
+        "m",
+        "units are written with SI's symbols in Latin letters, as in m/s^2, kg or N",
+    ),
 ]
 
 
