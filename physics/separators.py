@@ -17,19 +17,19 @@ ARABIC_THOUSANDS = "٬"
 _NUMBER = _DIGITS + ".," + ARABIC_THOUSANDS
 
 
-# LaTeX's decimal comma, braced so that TeX sets no space after it: `4{,}58`.
+# A comma braced so that TeX sets no space after it: `4{,}58`, `1{,}500`.
 LATEX_COMMA = "{,}"
 
 
 def comma_in_number(text: str, at: int) -> LikelySlip:
     """Why the comma at `at`, between digits, is refused: a decimal comma (`4,58`: write 4.58), a
     thousands separator (`1,500,000`: write 1500000) or either (`1,500`: asked, naming both). A slip,
-    so that no other reader (a numeric answer's arithmetic, its units) has the last word on it. At a
-    LaTeX comma (`4{,}58`, at its brace) the comma is a decimal one: LaTeX groups thousands with `\\,`."""
+    so that no other reader (a numeric answer's arithmetic, its units) has the last word on it. A LaTeX
+    comma (`4{,}58`, braced so that TeX sets no space after it) is read as typed commas are: it is a
+    decimal comma in one document and a thousands separator in another (`1{,}500`)."""
     seen, start = _typed_number(text, at)
     if text.startswith(LATEX_COMMA, at):
-        whole, _, after = seen.partition(",")
-        return LikelySlip(f"{seen}: a decimal comma is not read; write {whole}.{after}", at + 1)
+        at += 1  # at the comma inside the braces
     spaced = [k for k, c in enumerate(seen) if c in _SPACES]
     if spaced:  # `1 500,5`: refused where the second number starts, as without the comma
         second = start + spaced[0] + 1

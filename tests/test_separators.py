@@ -51,7 +51,7 @@ REFUSED = [
     ),
     # LaTeX's braced comma is a decimal one (LaTeX groups thousands with a thin space, \,)
     ("4{,}58", 2, "4,58: a decimal comma is not read; write 4.58"),
-    ("1{,}500", 2, "1,500: a decimal comma is not read; write 1.500"),
+    ("1{,}500", 2, "1,500: a comma is not read in a number. Did you mean 1.500 or 1500?"),
 ]
 IDS = [c[0] for c in REFUSED]
 
