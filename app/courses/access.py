@@ -18,7 +18,14 @@ from typing import Any
 
 from app.auth import Principal
 from app.courses.policy import accepting, due_for
-from app.courses.records import AssignmentRecord, CourseNotFound, CourseRecord, EnrolmentRecord, StaffRole
+from app.courses.records import (
+    AssignmentRecord,
+    CourseNotFound,
+    CourseRecord,
+    EnrolmentRecord,
+    ExtensionRecord,
+    StaffRole,
+)
 from app.db.records import ProblemRecord
 from app.storage import Stores
 from app.storage.protocols import CourseStore
@@ -139,6 +146,7 @@ class Opening:
     accepting: bool
     due: datetime | None
     why: str = ""
+    extension: ExtensionRecord | None = None  # the student's, which counts from when it was granted
 
     def attempts_in(self, view: Mapping[str, Any]) -> Mapping[str, Any]:
         """A student's view of the problem with each part's attempts as this assignment allows them
@@ -162,24 +170,25 @@ def opening(
         return None if course_id is not None else Opening(None, None, True, None)
     if course_id is not None:
         courses = [course for course in courses if course.id == course_id]
-    found: list[tuple[CourseRecord, AssignmentRecord, datetime]] = []
+    found: list[tuple[CourseRecord, AssignmentRecord, ExtensionRecord | None]] = []
     for course in courses:
         for assignment in stores.courses.assignments(course.id):
             if problem_id in assignment.problems and assignment.spec.opens_at <= now:
-                extension = stores.courses.extensions(assignment.id).get(student)
-                found.append((course, assignment, due_for(assignment, extension)))
+                found.append((course, assignment, stores.courses.extensions(assignment.id).get(student)))
     if not found:
         # A problem the student was launched into by its own LMS link (graded there) stays theirs.
         launched = course_id is None and stores.outbox.launched(student, problem_id)
         return Opening(None, None, True, None) if launched else None
-    for course, assignment, due in found:
+    for course, assignment, extension in found:
+        due = due_for(assignment, extension)
         if accepting(assignment, due, now):
-            return Opening(assignment, course, True, due)
-    course, assignment, due = found[-1]
+            return Opening(assignment, course, True, due, extension=extension)
+    course, assignment, extension = found[-1]
     return Opening(
         assignment,
         course,
         False,
-        due,
+        due_for(assignment, extension),
         f"{assignment.title!r} closed at its due date; answers are no longer accepted.",
+        extension,
     )

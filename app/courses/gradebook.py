@@ -1,8 +1,9 @@
 """The gradebook: each student's best score on each part of each assignment, late penalties applied.
 
 A part's best is the highest score of its graded submissions, each multiplied by its late factor
-(a submission after the due date under a closed policy does not count, nor one made after the student
-opened the problem's worked solution: the part's grade is frozen then). An assignment's score is the
+against the due date in force when it was made (an extension counts from when it was granted), and a
+submission after the due date under a closed policy does not count, nor one made after the student
+opened the problem's worked solution: the part's grade is frozen then. An assignment's score is the
 sum of its parts' bests, out of its number of parts. Submissions are the append-only log: the
 gradebook is always recomputed from it, never stored.
 """
@@ -15,7 +16,7 @@ from dataclasses import dataclass
 from datetime import datetime
 
 from app.courses.policy import Counting, Status, due_for, status
-from app.courses.records import AssignmentRecord, EnrolmentRecord
+from app.courses.records import AssignmentRecord, EnrolmentRecord, ExtensionRecord
 from app.db.records import SubmissionRecord
 from app.spreadsheet import SafeWriter
 from physics.verdict import Outcome
@@ -63,15 +64,8 @@ class AssignmentCell:
         return any(part.frozen_at is not None for part in self.parts)
 
 
-def part_cell(
-    part: PartSpec,
-    submissions: Iterable[SubmissionRecord],
-    assignment: AssignmentRecord,
-    due: datetime,
-    solution_opened: datetime | None = None,
-) -> PartCell:
+def part_cell(part: PartSpec, submissions: Iterable[SubmissionRecord], counting: Counting) -> PartCell:
     best, best_late, attempts, solved = 0.0, False, 0, False
-    counting = Counting(assignment.spec.late, due, solution_opened)
     for item in submissions:
         if item.verdict is Outcome.INVALID:
             continue
@@ -83,10 +77,17 @@ def part_cell(
         counted = item.score * factor
         if counted > best:
             best, best_late = counted, factor < 1.0
-    limit = assignment.spec.max_attempts or part.max_attempts
+    limit = counting.assignment.spec.max_attempts or part.max_attempts
     locked = limit is not None and attempts >= limit
     return PartCell(
-        part.problem_id, part.part_id, round(best, 6), best_late, attempts, solved, locked, solution_opened
+        part.problem_id,
+        part.part_id,
+        round(best, 6),
+        best_late,
+        attempts,
+        solved,
+        locked,
+        counting.solution_opened,
     )
 
 
@@ -95,7 +96,7 @@ def assignment_cell(
     parts: Sequence[PartSpec],
     submissions: Sequence[SubmissionRecord],
     student: str,
-    extension: datetime | None,
+    extension: ExtensionRecord | None,
     now: datetime,
     solutions_opened: Mapping[str, datetime] | None = None,
 ) -> AssignmentCell:
@@ -106,7 +107,11 @@ def assignment_cell(
     for item in submissions:
         by_part.setdefault((item.problem_id, item.part_id), []).append(item)
     cells = tuple(
-        part_cell(p, by_part.get((p.problem_id, p.part_id), ()), assignment, due, opened.get(p.problem_id))
+        part_cell(
+            p,
+            by_part.get((p.problem_id, p.part_id), ()),
+            Counting(assignment, extension, opened.get(p.problem_id)),
+        )
         for p in parts
     )
     started = any(by_part.get((p.problem_id, p.part_id)) for p in parts)
@@ -119,7 +124,7 @@ def assignment_cell(
         late=any(c.late for c in cells),
         status=status(assignment, due, now, started=started, done=done),
         due=due,
-        extended=extension is not None and extension > assignment.spec.due_at,
+        extended=due > assignment.spec.due_at,
         parts=cells,
     )
 
@@ -144,7 +149,7 @@ def build(
     assignments: Sequence[AssignmentRecord],
     parts: Mapping[int, Sequence[PartSpec]],
     submissions: Mapping[str, Sequence[SubmissionRecord]],
-    extensions: Mapping[int, Mapping[str, datetime]],
+    extensions: Mapping[int, Mapping[str, ExtensionRecord]],
     now: datetime,
     solutions_opened: Mapping[str, Mapping[str, datetime]] | None = None,
 ) -> Gradebook:

@@ -133,6 +133,8 @@ class Extension(Base):
     assignment_id: Mapped[int] = mapped_column(ForeignKey("assignments.id"), primary_key=True)
     student: Mapped[str] = mapped_column(String(STUDENT_LENGTH), primary_key=True)
     due_at: Mapped[datetime] = mapped_column(UTCDateTime())
+    # NULL: it covers answers given before it was granted too (see records.ExtensionRecord)
+    granted_at: Mapped[datetime | None] = mapped_column(UTCDateTime())
 
 
 class SolutionView(Base):

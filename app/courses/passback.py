@@ -13,7 +13,7 @@ from datetime import datetime
 from typing import Any
 
 from app.courses.gradebook import PartSpec, assignment_cell
-from app.courses.records import AssignmentRecord
+from app.courses.records import AssignmentRecord, ExtensionRecord
 from app.db.records import SubmissionRecord
 
 PREFIX = "assignment:"
@@ -46,7 +46,7 @@ def assignment_score(
     documents: Mapping[str, Mapping[str, Any]],
     submissions: Sequence[SubmissionRecord],
     student: str,
-    extension: datetime | None,
+    extension: ExtensionRecord | None,
     now: datetime,
     solutions_opened: Mapping[str, datetime] | None = None,
 ) -> tuple[float, float]:

@@ -12,7 +12,7 @@ from datetime import datetime, timedelta
 from enum import StrEnum
 from zoneinfo import ZoneInfo, ZoneInfoNotFoundError
 
-from app.courses.records import AssignmentRecord, LateKind, LatePolicy, SolutionRelease
+from app.courses.records import AssignmentRecord, ExtensionRecord, LateKind, LatePolicy, SolutionRelease
 
 DAY = timedelta(days=1)
 
@@ -26,10 +26,21 @@ class Status(StrEnum):
     CLOSED = "closed"
 
 
-def due_for(assignment: AssignmentRecord, extension: datetime | None) -> datetime:
+def due_for(assignment: AssignmentRecord, extension: ExtensionRecord | None) -> datetime:
     """The student's due date: their extension when they have one (it may only move it later)."""
     due = assignment.spec.due_at
-    return due if extension is None or extension < due else extension
+    return due if extension is None or extension.due_at < due else extension.due_at
+
+
+def granted(
+    current: ExtensionRecord | None, due_at: datetime, now: datetime, *, regrade_earlier: bool
+) -> ExtensionRecord:
+    """An extension to `due_at` granted now. It counts for answers given from now on, as an LMS's
+    does (earlier late answers keep their penalty), or for every answer when the teacher asks; moving
+    a granted extension keeps what it already covered."""
+    if regrade_earlier:
+        return ExtensionRecord(due_at, None)
+    return ExtensionRecord(due_at, now if current is None else current.granted_at)
 
 
 def days_late(submitted_at: datetime, due: datetime) -> int:
@@ -51,20 +62,23 @@ def late_factor(policy: LatePolicy, submitted_at: datetime, due: datetime) -> fl
 
 @dataclass(frozen=True)
 class Counting:
-    """How an assignment counts one student's answers to one problem: its late policy, the student's
-    due date, and when they opened the problem's worked solution. The gradebook and the problem page
-    both count with it, so the page shows what the gradebook holds."""
+    """How an assignment counts one student's answers to one problem: its late policy and due date,
+    the student's extension, and when they opened the problem's worked solution. The gradebook and
+    the problem page both count with it, so the page shows what the gradebook holds."""
 
-    late: LatePolicy
-    due: datetime
+    assignment: AssignmentRecord
+    extension: ExtensionRecord | None = None
     solution_opened: datetime | None = None
 
     def factor(self, submitted_at: datetime) -> float | None:
-        """What a graded answer's score counts for: its late factor; None when it earns nothing (late
-        under a closed policy, or given after the worked solution was opened: copied, not solved)."""
+        """What a graded answer's score counts for: its late factor against the due date in force when
+        it was given; None when it earns nothing (late under a closed policy, or given after the
+        worked solution was opened: copied, not solved)."""
         if self.solution_opened is not None and submitted_at >= self.solution_opened:
             return None
-        return late_factor(self.late, submitted_at, self.due)
+        covered = self.extension is not None and self.extension.covers(submitted_at)
+        due = due_for(self.assignment, self.extension if covered else None)
+        return late_factor(self.assignment.spec.late, submitted_at, due)
 
 
 def accepting(assignment: AssignmentRecord, due: datetime, now: datetime) -> bool:

@@ -145,6 +145,19 @@ class AssignmentRecord:
         return self.spec.problems
 
 
+@dataclass(frozen=True)
+class ExtensionRecord:
+    """A student's own due date for an assignment. It counts for the answers they give from
+    `granted_at` on: one given before keeps the grade it had (an extension reopens the assignment, it
+    does not regrade late work), unless the teacher asked it to cover earlier answers too (None)."""
+
+    due_at: datetime
+    granted_at: datetime | None
+
+    def covers(self, submitted_at: datetime) -> bool:
+        return self.granted_at is None or submitted_at >= self.granted_at
+
+
 class CourseNotFound(NotFound):
     def __init__(self, course_id: int) -> None:
         super().__init__(f"no course {course_id}")

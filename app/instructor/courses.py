@@ -31,7 +31,7 @@ from starlette.datastructures import UploadFile
 
 from app.courses import access, gradebook, service
 from app.courses import sessions as course_sessions
-from app.courses.policy import SOLUTIONS_OPEN, late_policy_text, shown
+from app.courses.policy import SOLUTIONS_OPEN, granted, late_policy_text, shown
 from app.courses.records import (
     AssignmentNotFound,
     AssignmentRecord,
@@ -539,10 +539,15 @@ async def extension(course_id: RecordId, request: Request, services: ServicesDep
         if record is None or record.course_id != course_id:
             raise PageError(422, "No such assignment", "Pick an assignment of this course.")
         due = _parse_local(str(form.get("due_at") or ""), course.timezone)
-        services.stores.courses.set_extension(record.id, student, due)
-        service.resend_total(
-            services.stores, services.catalog, record, student, request.app.state.lti.clock()
+        now = request.app.state.lti.clock()
+        current = services.stores.courses.extensions(record.id).get(student)
+        extension = (
+            None
+            if due is None
+            else granted(current, due, now, regrade_earlier=form.get("regrade_earlier") == "on")
         )
+        services.stores.courses.set_extension(record.id, student, extension)
+        service.resend_total(services.stores, services.catalog, record, student, now)
 
     await run_in_threadpool(save)
     return RedirectResponse(f"/instructor/courses/{course_id}/gradebook", status_code=303)

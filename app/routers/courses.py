@@ -20,7 +20,7 @@ from app.auth import Principal
 from app.courses import access, gradebook, service
 from app.courses import sessions as course_sessions
 from app.courses.gradebook import AssignmentCell, Gradebook
-from app.courses.policy import due_for
+from app.courses.policy import due_for, granted
 from app.courses.records import (
     AssignmentRecord,
     AssignmentSpec,
@@ -518,7 +518,10 @@ async def list_extensions(
     def load() -> list[ExtensionOut]:
         _assignment_as_staff(services, principal, assignment_id)
         found = services.stores.courses.extensions(assignment_id)
-        return [ExtensionOut(student=s, due_at=d) for s, d in sorted(found.items())]
+        return [
+            ExtensionOut(student=s, due_at=x.due_at, granted_at=x.granted_at)
+            for s, x in sorted(found.items())
+        ]
 
     return await run_in_threadpool(load)
 
@@ -536,17 +539,21 @@ async def set_extension(
     services: ServicesDep,
     principal: Instructor,
 ) -> ExtensionOut:
-    """The student's own due date for this assignment (late penalties count from it; an LMS gets the
-    total again)."""
+    """The student's own due date for this assignment, for the answers they give from now on: answers
+    already graded keep their late penalty unless `regrade_earlier` (an LMS gets the total again)."""
     now = now_of(request)
 
     def save() -> ExtensionOut:
         record = _assignment_as_staff(services, principal, assignment_id)
         if services.stores.courses.enrolment(record.course_id, student) is None:
             raise NotFound(f"{student!r} is not enrolled in this course.")
-        services.stores.courses.set_extension(assignment_id, student, body.due_at)
+        current = services.stores.courses.extensions(assignment_id).get(student)
+        extension = granted(current, body.due_at, now, regrade_earlier=body.regrade_earlier)
+        services.stores.courses.set_extension(assignment_id, student, extension)
         service.resend_total(services.stores, services.catalog, record, student, now)
-        return ExtensionOut(student=student, due_at=due_for(record, body.due_at))
+        return ExtensionOut(
+            student=student, due_at=due_for(record, extension), granted_at=extension.granted_at
+        )
 
     return await run_in_threadpool(save)
 

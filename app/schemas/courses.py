@@ -135,11 +135,15 @@ class StudentStanding(BaseModel):
 
 class ExtensionIn(BaseModel):
     due_at: AwareDatetime
+    # An extension counts for the answers given from when it is granted: earlier late answers keep
+    # their penalty unless the teacher asks to regrade them too.
+    regrade_earlier: bool = False
 
 
 class ExtensionOut(BaseModel):
     student: str
     due_at: datetime
+    granted_at: datetime | None = None  # null: it covers answers given before it was granted too
 
 
 class PartScoreOut(BaseModel):

@@ -179,7 +179,11 @@ ASSIGNMENT: Examples = {
     }
 }
 EXTENSION: Examples = {
-    "week": {"summary": "A week more for one student", "value": {"due_at": "2026-09-15T23:59:00+02:00"}}
+    "week": {"summary": "A week more for one student", "value": {"due_at": "2026-09-15T23:59:00+02:00"}},
+    "regrade": {
+        "summary": "A week more, and no late penalty on the answers already given",
+        "value": {"due_at": "2026-09-15T23:59:00+02:00", "regrade_earlier": True},
+    },
 }
 
 

@@ -17,6 +17,7 @@ from app.courses.records import (
     CourseRecord,
     CourseSession,
     EnrolmentRecord,
+    ExtensionRecord,
     JoinCodeTaken,
     RosterImport,
     RosterRow,
@@ -48,7 +49,7 @@ class MemoryCourseStore:
         self._tokens: dict[str, tuple[int, str, datetime, datetime | None, bool]] = {}  # + reusable
         self._sessions: dict[str, CourseSession] = {}
         self._assignments: dict[int, AssignmentRecord] = {}
-        self._extensions: dict[tuple[int, str], datetime] = {}
+        self._extensions: dict[tuple[int, str], ExtensionRecord] = {}
         self._shared: set[str] = set()
         self._solution_views: dict[tuple[str, str], datetime] = {}  # (student, problem)
         self._next_assignment = 1
@@ -246,15 +247,18 @@ class MemoryCourseStore:
             found = [a for a in self._assignments.values() if a.course_id == course_id]
         return sorted(found, key=lambda a: (a.spec.due_at, a.id))
 
-    def set_extension(self, assignment_id: int, student: str, due_at: datetime | None) -> None:
+    def set_extension(self, assignment_id: int, student: str, extension: ExtensionRecord | None) -> None:
         with self._lock:
             self._assignment(assignment_id)
-            if due_at is None:
+            if extension is None:
                 self._extensions.pop((assignment_id, student), None)
             else:
-                self._extensions[(assignment_id, student)] = due_at.astimezone(UTC)
+                granted = None if extension.granted_at is None else extension.granted_at.astimezone(UTC)
+                self._extensions[(assignment_id, student)] = ExtensionRecord(
+                    extension.due_at.astimezone(UTC), granted
+                )
 
-    def extensions(self, assignment_id: int) -> dict[str, datetime]:
+    def extensions(self, assignment_id: int) -> dict[str, ExtensionRecord]:
         with self._lock:
             return {s: due for (a, s), due in self._extensions.items() if a == assignment_id}
 

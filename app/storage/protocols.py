@@ -18,6 +18,7 @@ from app.courses.records import (
     CourseRecord,
     CourseSession,
     EnrolmentRecord,
+    ExtensionRecord,
     RosterImport,
     RosterRow,
     StaffRecord,
@@ -437,11 +438,11 @@ class CourseStore(Protocol):
         """By due date, then id."""
         ...
 
-    def set_extension(self, assignment_id: int, student: str, due_at: datetime | None) -> None:
+    def set_extension(self, assignment_id: int, student: str, extension: ExtensionRecord | None) -> None:
         """A student's own due date for an assignment; None removes it."""
         ...
 
-    def extensions(self, assignment_id: int) -> dict[str, datetime]: ...
+    def extensions(self, assignment_id: int) -> dict[str, ExtensionRecord]: ...
 
     def open_solution(self, student: str, problem_id: str, now: datetime) -> datetime:
         """Record that the student opened the problem's worked solution; when they first did."""

@@ -27,6 +27,7 @@ from app.courses.records import (
     CourseRecord,
     CourseSession,
     EnrolmentRecord,
+    ExtensionRecord,
     JoinCodeTaken,
     LateKind,
     LatePolicy,
@@ -379,23 +380,32 @@ class SqlCourseStore:
         with self._database.session(read_only=True) as session:
             return [assignment_record(row) for row in session.scalars(query)]
 
-    def set_extension(self, assignment_id: int, student: str, due_at: datetime | None) -> None:
+    def set_extension(self, assignment_id: int, student: str, extension: ExtensionRecord | None) -> None:
         with self._database.session() as session:
             if session.get(Assignment, assignment_id) is None:
                 raise AssignmentNotFound(assignment_id)
             row = session.get(Extension, (assignment_id, student))
-            if due_at is None:
+            if extension is None:
                 if row is not None:
                     session.delete(row)
             elif row is None:
-                session.add(Extension(assignment_id=assignment_id, student=student, due_at=due_at))
+                session.add(
+                    Extension(
+                        assignment_id=assignment_id,
+                        student=student,
+                        due_at=extension.due_at,
+                        granted_at=extension.granted_at,
+                    )
+                )
             else:
-                row.due_at = due_at
+                row.due_at, row.granted_at = extension.due_at, extension.granted_at
 
-    def extensions(self, assignment_id: int) -> dict[str, datetime]:
+    def extensions(self, assignment_id: int) -> dict[str, ExtensionRecord]:
         query = select(Extension).where(Extension.assignment_id == assignment_id)
         with self._database.session(read_only=True) as session:
-            return {row.student: row.due_at for row in session.scalars(query)}
+            return {
+                row.student: ExtensionRecord(row.due_at, row.granted_at) for row in session.scalars(query)
+            }
 
     def open_solution(self, student: str, problem_id: str, now: datetime) -> datetime:
         try:

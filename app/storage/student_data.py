@@ -322,8 +322,8 @@ class MemoryStudentData:
                 if who == student
             ]
             extensions = [
-                StudentExtension(assignment, due)
-                for (assignment, who), due in sorted(courses._extensions.items())
+                StudentExtension(assignment, extension.due_at)
+                for (assignment, who), extension in sorted(courses._extensions.items())
                 if who == student
             ]
             opened = [

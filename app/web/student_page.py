@@ -179,11 +179,12 @@ def _load(context: LtiContext, problem_id: str, student: str, course: int | None
 
 def counting(context: LtiContext, opened: access.Opening, student: str, problem_id: str) -> Counting | None:
     """How the assignment the problem is answered in counts the student's answers, as its gradebook
-    does: late penalties from their due date, and no credit after they opened the worked solution."""
-    if opened.assignment is None or opened.due is None:
+    does: late penalties from the due date in force when each was given, and no credit after they
+    opened the worked solution."""
+    if opened.assignment is None:
         return None
     frozen = context.stores.courses.solutions_opened(student).get(problem_id)
-    return Counting(opened.assignment.spec.late, opened.due, frozen)
+    return Counting(opened.assignment, opened.extension, frozen)
 
 
 def solution_within(loaded: Loaded) -> Within | None:

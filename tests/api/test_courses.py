@@ -8,6 +8,7 @@ import csv
 import io
 import re
 from datetime import UTC, datetime, timedelta
+from unittest.mock import ANY
 
 import pytest
 from fastapi.testclient import TestClient
@@ -241,7 +242,7 @@ def test_a_ta_reads_the_gradebook_but_does_not_change_the_course(client, teacher
     assert client.get(f"/v1/courses/{course}/gradebook", headers=ta).status_code == 404
 
 
-def test_late_work_loses_its_penalty_an_extension_lifts_it_and_the_csv_agrees(client, teacher):
+def test_late_work_loses_its_penalty_an_extension_spares_new_answers_and_the_csv_agrees(client, teacher):
     course = _course(client, teacher)
     _roster(client, teacher, course)
     now = datetime.now(UTC)
@@ -256,9 +257,10 @@ def test_late_work_loses_its_penalty_an_extension_lifts_it_and_the_csv_agrees(cl
     )
     links = _links(client, teacher, course)
     problem, part, answer = RIGHT
+    path = f"/v1/problems/{problem}/parts/{part}/submissions"
+    browsers = {}
     for roster_id in ("s001", "s002"):
-        browser, csrf = _signed_in(client, links[f"course:{course}:{roster_id}"])
-        path = f"/v1/problems/{problem}/parts/{part}/submissions"
+        browsers[roster_id] = browser, csrf = _signed_in(client, links[f"course:{course}:{roster_id}"])
         assert browser.post(path, json={"answer": answer}, headers=csrf).status_code == 201
     book = client.get(f"/v1/courses/{course}/gradebook", headers=teacher).json()
     cells = {row["student"]["roster_id"]: row["assignments"][0] for row in book["students"]}
@@ -269,7 +271,13 @@ def test_late_work_loses_its_penalty_an_extension_lifts_it_and_the_csv_agrees(cl
         json={"due_at": _iso(now + timedelta(days=1))},
         headers=teacher,
     )
-    assert extended.status_code == 200
+    assert extended.status_code == 200 and extended.json()["granted_at"] is not None
+    book = client.get(f"/v1/courses/{course}/gradebook", headers=teacher).json()
+    cells = {row["student"]["roster_id"]: row["assignments"][0] for row in book["students"]}
+    # the answer graded before the extension keeps its penalty: the extension is for new answers
+    assert cells["s002"]["score"] == pytest.approx(0.8) and cells["s002"]["extended"]
+    browser, csrf = browsers["s002"]
+    assert browser.post(path, json={"answer": answer}, headers=csrf).status_code == 201
     book = client.get(f"/v1/courses/{course}/gradebook", headers=teacher).json()
     cells = {row["student"]["roster_id"]: row["assignments"][0] for row in book["students"]}
     assert cells["s002"]["score"] == 1.0 and not cells["s002"]["late"] and cells["s002"]["extended"]
@@ -284,6 +292,36 @@ def test_late_work_loses_its_penalty_an_extension_lifts_it_and_the_csv_agrees(cl
     assert float(rows["s002"][3]) == 1.0 and "extended" in rows["s002"][-1]
     assert rows["s003"][3] == "" and not cells["s003"]["attempted"]  # nothing answered: no grade
     assert cells["s001"]["attempted"] and not cells["s001"]["solution_opened"]
+
+
+def test_an_extension_regrades_earlier_late_answers_only_when_the_teacher_asks(client, teacher):
+    course = _course(client, teacher)
+    _roster(client, teacher, course)
+    now = datetime.now(UTC)
+    homework = _assignment(
+        client,
+        teacher,
+        course,
+        problems=["skier-friction"],
+        opens_at=_iso(now - timedelta(days=5)),
+        due_at=_iso(now - timedelta(hours=30)),
+        late={"kind": "penalty", "per_day": 0.1, "limit": 0.5},
+    )
+    problem, part, answer = RIGHT
+    browser, csrf = _signed_in(client, _links(client, teacher, course)[f"course:{course}:s001"])
+    path = f"/v1/problems/{problem}/parts/{part}/submissions"
+    assert browser.post(path, json={"answer": answer}, headers=csrf).status_code == 201
+    extension = f"/v1/assignments/{homework['id']}/extensions/course:{course}:s001"
+    due = _iso(now + timedelta(days=1))
+    scores = []
+    for body in ({"due_at": due}, {"due_at": due, "regrade_earlier": True}):
+        assert client.put(extension, json=body, headers=teacher).status_code == 200
+        book = client.get(f"/v1/courses/{course}/gradebook", headers=teacher).json()
+        (row,) = [r for r in book["students"] if r["student"]["roster_id"] == "s001"]
+        scores.append(row["assignments"][0]["score"])
+    assert scores == [pytest.approx(0.8), 1.0]
+    listed = client.get(f"/v1/assignments/{homework['id']}/extensions", headers=teacher).json()
+    assert listed == [{"student": f"course:{course}:s001", "due_at": ANY, "granted_at": None}]
 
 
 def test_a_closed_assignment_refuses_answers_after_its_due_date(client, teacher):

@@ -11,11 +11,12 @@ import pytest
 
 from app.courses import gradebook
 from app.courses.gradebook import PartSpec
-from app.courses.policy import Status, days_late, late_factor, shown, solutions_released
+from app.courses.policy import Status, days_late, granted, late_factor, shown, solutions_released
 from app.courses.records import (
     AssignmentRecord,
     AssignmentSpec,
     EnrolmentRecord,
+    ExtensionRecord,
     LateKind,
     LatePolicy,
     SolutionRelease,
@@ -97,12 +98,73 @@ def test_an_on_time_right_answer_beats_a_later_penalised_one():
     assert cell.score == 1.0 and not cell.late
 
 
+GRANTED = DUE + timedelta(days=2)  # an extension to EXTENDED, given two days after the due date
+EXTENDED = DUE + timedelta(days=5)
+
+
+@pytest.mark.parametrize(
+    ("answered", "granted_at", "solution_opened", "score"),
+    [
+        # graded two days late before the extension: it keeps its grade, as in an LMS
+        (DUE + timedelta(hours=30), GRANTED, None, 0.8),
+        # given within the extended window: counts in full
+        (DUE + timedelta(days=3), GRANTED, None, 1.0),
+        # after the student's own due date: late from it, a day
+        (EXTENDED + timedelta(hours=1), GRANTED, None, 0.9),
+        # the teacher asked the extension to cover the answers already given
+        (DUE + timedelta(hours=30), None, None, 1.0),
+        # an extension granted ahead of the due date covers everything after it
+        (DUE + timedelta(hours=30), DUE - timedelta(days=1), None, 1.0),
+        # within the extension but after opening the worked solution: frozen, earns nothing
+        (DUE + timedelta(days=3), GRANTED, DUE + timedelta(hours=50), 0.0),
+    ],
+)
+def test_an_extension_counts_for_answers_given_after_it_was_granted(
+    answered, granted_at, solution_opened, score
+):
+    subs = [_sub("acceleration", Outcome.CORRECT, answered)]
+    cell = gradebook.assignment_cell(
+        _assignment(),
+        PARTS,
+        subs,
+        "s1",
+        ExtensionRecord(EXTENDED, granted_at),
+        answered,
+        {"yo-yo": solution_opened} if solution_opened else None,
+    )
+    assert cell.score == pytest.approx(score)
+    assert cell.late is (0 < score < 1) and cell.extended and cell.due == EXTENDED
+
+
 def test_an_extension_lifts_the_penalty_for_that_student_only():
     late = DUE + timedelta(hours=30)
-    subs = [_sub("acceleration", Outcome.CORRECT, late)]
-    extended = gradebook.assignment_cell(_assignment(), PARTS, subs, "s1", DUE + timedelta(days=2), late)
-    assert extended.score == 1.0 and not extended.late and extended.extended
-    assert extended.status is Status.IN_PROGRESS
+    students = [EnrolmentRecord(1, s, s, s, "", DUE) for s in ("s1", "s2")]
+    book = gradebook.build(
+        students,
+        [_assignment()],
+        {1: PARTS},
+        {s: [_sub("acceleration", Outcome.CORRECT, late, s)] for s in ("s1", "s2")},
+        {1: {"s1": ExtensionRecord(EXTENDED, DUE)}},
+        late,
+    )
+    assert book.cell("s1", 1).score == 1.0 and book.cell("s1", 1).status is Status.IN_PROGRESS
+    assert book.cell("s2", 1).score == pytest.approx(0.8) and not book.cell("s2", 1).extended
+
+
+@pytest.mark.parametrize(
+    ("current", "regrade_earlier", "expected"),
+    [
+        (None, False, ExtensionRecord(EXTENDED, GRANTED)),
+        (None, True, ExtensionRecord(EXTENDED, None)),
+        # moved later: what it covered already stays covered, nothing more
+        (ExtensionRecord(DUE + timedelta(days=1), DUE), False, ExtensionRecord(EXTENDED, DUE)),
+        (ExtensionRecord(DUE + timedelta(days=1), None), False, ExtensionRecord(EXTENDED, None)),
+    ],
+)
+def test_an_extension_is_granted_from_now_unless_the_teacher_regrades_earlier_answers(
+    current, regrade_earlier, expected
+):
+    assert granted(current, EXTENDED, GRANTED, regrade_earlier=regrade_earlier) == expected
 
 
 def test_under_a_closed_policy_late_work_does_not_count():

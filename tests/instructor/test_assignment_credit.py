@@ -10,7 +10,14 @@ import pytest
 from fastapi.testclient import TestClient
 
 from app.courses.policy import shown
-from app.courses.records import AssignmentRecord, AssignmentSpec, LateKind, LatePolicy, SolutionRelease
+from app.courses.records import (
+    AssignmentRecord,
+    AssignmentSpec,
+    ExtensionRecord,
+    LateKind,
+    LatePolicy,
+    SolutionRelease,
+)
 from app.courses.service import student_cell
 from app.storage import Stores
 from tests.db.helpers import CORRECT
@@ -113,7 +120,7 @@ def test_a_solution_read_with_nothing_at_stake_still_freezes_the_grade_when_an_e
         shown.status_code == 200 and "confirm-solution" not in shown.text
     )  # shown at once: nothing at stake
     assert "yo-yo" in stores.courses.solutions_opened(identity)
-    stores.courses.set_extension(assignment.id, identity, now + timedelta(days=1))
+    stores.courses.set_extension(assignment.id, identity, ExtensionRecord(now + timedelta(days=1), now))
     _file_right_answer(stores, identity)
     assert _gradebook_score(signed_in, assignment, identity) == 0
     assert "Your grade on this part is frozen" in student.get("/p/yo-yo").text
@@ -141,7 +148,7 @@ def test_a_closed_assignments_problem_page_disables_its_answer_boxes_until_an_ex
     page = student.get("/p/yo-yo").text
     assert "answers are no longer accepted" in page
     assert _answer_boxes(page) and all("disabled" in box for box in _answer_boxes(page))
-    stores.courses.set_extension(assignment.id, identity, now + timedelta(days=1))
+    stores.courses.set_extension(assignment.id, identity, ExtensionRecord(now + timedelta(days=1), now))
     reopened = student.get("/p/yo-yo").text
     assert _answer_boxes(reopened) and not any("disabled" in box for box in _answer_boxes(reopened))
 
@@ -155,7 +162,7 @@ def test_the_frozen_grade_notice_gives_the_moment_in_the_courses_zone_as_the_sol
     student, identity, assignment = _joined_student(signed_in, stores, spec, timezone="Asia/Tokyo")
     student.get("/p/yo-yo/solution")
     opened = stores.courses.solutions_opened(identity)["yo-yo"]
-    stores.courses.set_extension(assignment.id, identity, now + timedelta(days=1))
+    stores.courses.set_extension(assignment.id, identity, ExtensionRecord(now + timedelta(days=1), now))
     page = student.get("/p/yo-yo").text
     assert (
         f'you opened the worked solution on <time datetime="{opened.isoformat()}">{shown(opened, "Asia/Tokyo")}</time>'
@@ -216,3 +223,30 @@ def test_a_part_solved_only_late_says_its_grade_is_frozen_once_the_solution_is_o
     page = student.get("/p/yo-yo").text
     assert "Solved late: best score 0.9 of 1" in page
     assert "Your grade on this part is frozen at 0.9 of 1" in page
+
+
+@pytest.mark.parametrize(("ticked", "score"), [(False, 0.9), (True, 1.0)])
+def test_an_extension_set_on_the_gradebook_page_regrades_an_earlier_late_answer_only_when_ticked(
+    signed_in: TestClient, stores: Stores, ticked: bool, score: float
+):
+    # an extension had lifted the penalty of answers graded before it was granted, unasked
+    now = datetime.now(UTC)
+    spec = AssignmentSpec("HW 1", ("yo-yo",), now - timedelta(days=2), now - timedelta(hours=1), PENALTY)
+    student, identity, assignment = _joined_student(signed_in, stores, spec)
+    _file_right_answer(stores, identity)
+    gradebook = f"/instructor/courses/{assignment.course_id}/gradebook"
+    form = {
+        "csrf": csrf_of(signed_in.get(gradebook).text),
+        "student": identity,
+        "assignment": str(assignment.id),
+        "due_at": f"{now + timedelta(days=2):%Y-%m-%dT%H:%M}",
+    }
+    sent = signed_in.post(
+        f"/instructor/courses/{assignment.course_id}/extensions",
+        data={**form, "regrade_earlier": "on"} if ticked else form,
+    )
+    assert sent.status_code == 303
+    assert _gradebook_score(signed_in, assignment, identity) == score
+    assert f"best score {score:g} of 1" in student.get("/p/yo-yo").text  # the page counts as the gradebook
+    _file_right_answer(stores, identity)  # within the extension: in full either way
+    assert _gradebook_score(signed_in, assignment, identity) == 1.0

@@ -161,7 +161,9 @@ async def test_an_assignment_link_copied_to_another_lms_course_is_refused(sites:
     assert sites.stores.outbox.scores() == []
 
 
-async def test_an_extension_sends_the_total_again_without_the_late_penalty(sites: Sites) -> None:
+async def test_an_extension_regrading_earlier_answers_sends_the_total_again_without_the_late_penalty(
+    sites: Sites,
+) -> None:
     await _instructor_launch(sites, deep_linking=True)
     past = datetime.now(UTC) - timedelta(hours=2)
     course = await _build_assignment(
@@ -185,6 +187,7 @@ async def test_an_extension_sends_the_total_again_without_the_late_penalty(sites
             "student": unescape(student.group(1)),
             "assignment": assignment.group(1),
             "due_at": (datetime.now(UTC) + timedelta(days=2)).strftime("%Y-%m-%dT%H:%M"),
+            "regrade_earlier": "on",  # else the late answer keeps its penalty: new answers are spared
         },
     )
     assert extended.status_code == 303, extended.text

@@ -13,6 +13,7 @@ from app.courses.records import (
     AssignmentSpec,
     CourseNotFound,
     CourseSession,
+    ExtensionRecord,
     JoinCodeTaken,
     LateKind,
     LatePolicy,
@@ -248,10 +249,12 @@ def test_dates_come_back_in_utc_whatever_zone_they_were_given_in(stores: Stores)
     course = stores.courses.create_course("A", owner="key:1")
     due = datetime(2026, 3, 8, 23, 59, tzinfo=paris)
     made = stores.courses.create_assignment(course.id, _spec(opens_at=due - timedelta(days=7), due_at=due))
-    stores.courses.set_extension(made.id, "s1", due + timedelta(days=1))
+    stores.courses.set_extension(made.id, "s1", ExtensionRecord(due + timedelta(days=1), due))
     got = stores.courses.get_assignment(made.id).spec.due_at
     assert got == due and got.tzinfo is not None and got.utcoffset() == timedelta(0)
-    assert stores.courses.extensions(made.id)["s1"].utcoffset() == timedelta(0)
+    extension = stores.courses.extensions(made.id)["s1"]
+    assert extension.due_at.utcoffset() == timedelta(0)
+    assert extension.granted_at is not None and extension.granted_at.utcoffset() == timedelta(0)
 
 
 def test_an_assignment_is_updated_and_deleted_with_its_extensions(stores: Stores):
@@ -265,7 +268,7 @@ def test_an_assignment_is_updated_and_deleted_with_its_extensions(stores: Stores
     )
     assert stores.courses.get_assignment(made.id) == changed
     assert changed.spec.late.kind is LateKind.CLOSED and changed.spec.max_attempts is None
-    stores.courses.set_extension(made.id, "course:1:s001", NOW + timedelta(days=10))
+    stores.courses.set_extension(made.id, "course:1:s001", ExtensionRecord(NOW + timedelta(days=10), NOW))
     stores.courses.delete_assignment(made.id)
     with pytest.raises(AssignmentNotFound):
         stores.courses.get_assignment(made.id)
@@ -277,17 +280,17 @@ def test_an_assignment_is_updated_and_deleted_with_its_extensions(stores: Stores
 def test_extensions_are_set_moved_and_removed_per_student(stores: Stores):
     course = stores.courses.create_course("A", owner="key:1")
     made = stores.courses.create_assignment(course.id, _spec())
-    stores.courses.set_extension(made.id, "s1", NOW + timedelta(days=8))
-    stores.courses.set_extension(made.id, "s1", NOW + timedelta(days=9))
-    stores.courses.set_extension(made.id, "s2", NOW + timedelta(days=8))
+    stores.courses.set_extension(made.id, "s1", ExtensionRecord(NOW + timedelta(days=8), NOW))
+    stores.courses.set_extension(made.id, "s1", ExtensionRecord(NOW + timedelta(days=9), None))
+    stores.courses.set_extension(made.id, "s2", ExtensionRecord(NOW + timedelta(days=8), NOW))
     assert stores.courses.extensions(made.id) == {
-        "s1": NOW + timedelta(days=9),
-        "s2": NOW + timedelta(days=8),
+        "s1": ExtensionRecord(NOW + timedelta(days=9), None),
+        "s2": ExtensionRecord(NOW + timedelta(days=8), NOW),
     }
     stores.courses.set_extension(made.id, "s2", None)
     assert set(stores.courses.extensions(made.id)) == {"s1"}
     with pytest.raises(AssignmentNotFound):
-        stores.courses.set_extension(made.id + 99, "s1", NOW)
+        stores.courses.set_extension(made.id + 99, "s1", ExtensionRecord(NOW, NOW))
 
 
 @pytest.mark.parametrize(

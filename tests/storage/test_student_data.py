@@ -12,7 +12,7 @@ from sqlalchemy.exc import DatabaseError
 
 from app.auth import Role
 from app.courses import sessions as course_sessions
-from app.courses.records import AssignmentSpec
+from app.courses.records import AssignmentSpec, ExtensionRecord
 from app.db.database import Database
 from app.db.models import Submission
 from app.db.types import utc_now
@@ -57,7 +57,7 @@ def _two_students(stores: Stores) -> None:
             stores.courses, course_sessions.issue_link(stores.courses, course.id, student, now), now
         )
         course_sessions.issue_link(stores.courses, course.id, student, now)
-        stores.courses.set_extension(assignment.id, student, now + timedelta(days=9))
+        stores.courses.set_extension(assignment.id, student, ExtensionRecord(now + timedelta(days=9), now))
         stores.courses.open_solution(student, PROBLEM, now)
 
 

@@ -2,7 +2,7 @@
 of 30, builds two assignments of three problems (one due two hours ago, with a late penalty), makes the
 sign-in links; students sign in by their links (a phone and a desktop, several tabs, no key asked),
 see only their assignments, and answer; a late answer loses its penalty, an extension lifts it for
-one student; the gradebook page and its CSV agree with the submissions. axe-core on every page,
+one student (regrading the answers given, as the teacher ticks); the gradebook page and its CSV agree with the submissions. axe-core on every page,
 screenshots at 1280 and 390 px in artifacts/course-*.png. (The LMS side, deep linking an assignment
 and its scores sent once each, runs against the test platform in tests/lti/test_assignment_links.py.)
 """
@@ -154,7 +154,8 @@ def test_a_course_runs_from_roster_to_gradebook(live_server: LiveServer, browse:
     reused.get_by_role("button", name="Sign in").click()
     expect(reused.get_by_role("alert")).to_contain_text("already been used")
 
-    # Student 2 at a desktop, late too; then an extension lifts their penalty.
+    # Student 2 at a desktop, late too; then an extension that regrades the answers given lifts their
+    # penalty (without the tick it counts for new answers only).
     desk = _sign_in_student(browse, links[1], WIDTHS["desktop"])
     desk.get_by_role("link", name="Homework 2").click()
     _answer(desk, BANK["skier-friction"].title)
@@ -164,6 +165,7 @@ def test_a_course_runs_from_roster_to_gradebook(live_server: LiveServer, browse:
     teacher.get_by_label("Student", exact=True).select_option(label="Student 02 (s002@uni.example)")
     teacher.get_by_label("Assignment").select_option(label="Homework 2")
     teacher.get_by_label(re.compile(r"^New due date")).fill(_local(now + timedelta(days=2)))
+    teacher.get_by_label("Also lift the late penalty on the answers already given").check()
     teacher.get_by_role("button", name="Set the extension").click()
     rows = teacher.locator("table.gradebook tbody tr")
     expect(rows).to_have_count(30)
