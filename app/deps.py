@@ -80,13 +80,14 @@ async def authenticated(request: Request, services: Services) -> Principal:
     authorization = request.headers.get("authorization")
     if authorization is None:
         principal = await run_in_threadpool(principal_from_session, request)
+        # checked first: a call naming a course the browser is not signed in to acts as no session
+        refused = await run_in_threadpool(_course_unsettled, services, request)
+        if refused is not None:
+            raise refused
         if principal is None:
             raise Unauthenticated(
                 "Send an API key as 'Authorization: Bearer <key>', or open this from your course."
             )
-        refused = await run_in_threadpool(_course_unsettled, services, request)
-        if refused is not None:
-            raise refused
     else:
         token = bearer_token(authorization)
         found = None if token is None else await key_principal(services, token)

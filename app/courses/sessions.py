@@ -127,16 +127,16 @@ def choose(
     *,
     course_id: int | None = None,
     problem_id: str | None = None,
-) -> tuple[str, CourseSession]:
-    """Which of the browser's sessions a request acts as: the one of its course; for a problem, the
-    instructor's preview opened for it, else the course session whose open assignment takes answers to
-    it (else one that has it at all); else the latest of a course. A preview acts for its own problem
-    only: for 8 hours it had been chosen for every problem page, the browser's own student's too."""
+) -> tuple[str, CourseSession] | None:
+    """Which of the browser's sessions a request acts as: the one of its course, and none when it
+    names a course the browser is not signed in to (another course's student had acted on its pages);
+    for a problem, the instructor's preview opened for it, else the course session whose open
+    assignment takes answers to it (else one that has it at all); else the latest of a course. A
+    preview acts for its own problem only: for 8 hours it had been chosen for every problem page, the
+    browser's own student's too."""
     courses = [item for item in found if item[1].course_id is not None]
     if course_id is not None:
-        for item in courses:
-            if item[1].course_id == course_id:
-                return item
+        return next((item for item in courses if item[1].course_id == course_id), None)
     if problem_id is not None:
         for item in found:
             if item[1].course_id is None and item[1].problem_id == problem_id:

@@ -122,13 +122,16 @@ def current_session(request: Request) -> tuple[str, SessionRecord] | None:
     found = course_sessions.live(context.stores.courses, course_cookie, now)
     if not found:
         return None
-    id_hash, session = course_sessions.choose(
+    chosen = course_sessions.choose(
         context.stores,
         found,
         now,
         course_id=requested_course(request),
         problem_id=request.path_params.get("problem_id"),
     )
+    if chosen is None:
+        return None
+    id_hash, session = chosen
     return id_hash, course_sessions.as_record(session)
 
 
@@ -158,7 +161,7 @@ def unsettled_course(request: Request) -> Unsettled | None:
     if named is not None:
         in_query = request.query_params.get("course") is not None and "course_id" not in request.path_params
         mine = any(session.course_id == named for _, session in found)
-        return Unsettled(unknown=named) if in_query and not mine else None
+        return Unsettled(unknown=named) if in_query and found and not mine else None
     problem_id = request.path_params.get("problem_id")
     rivals = course_sessions.rivals(context.stores, found, now, problem_id=problem_id)
     ids = tuple(session.course_id for session in rivals if session.course_id is not None)

@@ -328,6 +328,14 @@ def _student(request: Request) -> SignedIn | None:
     )
 
 
+def _signed_in_elsewhere(request: Request, context: LtiContext) -> bool:
+    """Whether this browser holds a session of some course: a page of a course it has none for then
+    asks to sign in to that one (no other course's session acts for it: `course_sessions.choose`)."""
+    cookie = request.cookies.get(course_sessions.COOKIE)
+    found = course_sessions.live(context.stores.courses, cookie, context.clock())
+    return any(session.course_id is not None for _, session in found)
+
+
 @router.get("/courses")
 async def my_courses(request: Request, context: LtiContextDep) -> HTMLResponse:
     services = _services(request)
@@ -363,7 +371,7 @@ async def assignment_page(
     def load() -> dict[str, Any] | str | None:
         who = _student(request)
         if who is None:
-            return "signed out"
+            return "other course" if _signed_in_elsewhere(request, context) else "signed out"
         student = who.student
         if services.stores.courses.enrolment(course_id, student) is None:
             return None
@@ -406,6 +414,14 @@ async def assignment_page(
 
     values = await run_in_threadpool(load)
     frames = await _frames(context)
+    if values == "other course":
+        return page(
+            request,
+            "courses/signed_out.html",
+            {"title": "Sign in to this course", "other_course": True},
+            status=401,
+            frame_ancestors=frames,
+        )
     if values == "signed out":
         return page(
             request, "courses/signed_out.html", {"title": "Your courses"}, status=401, frame_ancestors=frames

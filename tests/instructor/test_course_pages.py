@@ -296,6 +296,30 @@ def test_an_api_call_from_a_browser_in_two_courses_naming_none_is_refused_naming
         assert [item["student"] for item in listed.json()["items"]] == [student]
 
 
+@pytest.mark.parametrize("enrolled_in_both", [False, True])
+def test_a_course_page_the_browser_has_no_session_for_asks_to_sign_in_to_that_course(
+    signed_in: TestClient, stores: Stores, enrolled_in_both: bool
+):
+    # the page had acted as the browser's other course's student (`choose` fell back to the latest)
+    from datetime import UTC, datetime, timedelta
+
+    from app.courses.records import AssignmentSpec
+
+    now = datetime.now(UTC)
+    spec = AssignmentSpec("Lab work", ("yo-yo",), now - timedelta(days=1), now + timedelta(days=1))
+    lecture, lab = _make_course(signed_in), _make_course(signed_in)
+    lab_work = stores.courses.create_assignment(lab, spec)
+    page = signed_in.get(f"/instructor/courses/{lecture}")
+    signed_in.post(f"/instructor/courses/{lecture}/join-code", data={"csrf": csrf_of(page.text)})
+    signed_in.post(f"/join/{stores.courses.get_course(lecture).join_code}", data={"name": "Ada"})
+    if enrolled_in_both:  # one identity in both courses, as an LMS's is
+        stores.courses.enrol(lab, stores.courses.roster(lecture)[0].student, "Ada")
+    shown = signed_in.get(f"/courses/{lab}/assignments/{lab_work.id}")
+    assert shown.status_code == 401
+    assert "<h1>Sign in to this course</h1>" in shown.text and "Lab work" not in shown.text
+    assert signed_in.get("/courses").status_code == 200  # still signed in to the lecture
+
+
 def test_the_course_page_makes_and_turns_off_a_join_code(signed_in: TestClient, stores: Stores):
     course = _make_course(signed_in)
     page = signed_in.get(f"/instructor/courses/{course}")
