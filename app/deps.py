@@ -109,12 +109,17 @@ def _course_unsettled(services: Services, request: Request) -> AppError | None:
         return None
     if unsettled.unknown is not None:
         return NotFound(f"This browser is not signed in to course {unsettled.unknown}.")
-    ids = unsettled.rivals
+    ids = sorted(unsettled.rivals)
     named = "; ".join(f"{i}: {services.stores.courses.get_course(i).title}" for i in ids)
+    choices = " or ".join(f"?course={i}" for i in ids)
     return CourseRequired(
-        f"This browser is signed in to {len(ids)} courses this could be for ({named}): "
-        "name one with ?course=<id>.",
-        [{"path": "course", "message": "required: more than one of the browser's courses could take this"}],
+        f"This browser is signed in to {len(ids)} courses this could be for ({named}): name one with {choices}.",
+        [
+            {
+                "path": "course",
+                "message": f"required: one of the courses {', '.join(map(str, ids))}, which could each take this",
+            }
+        ],
     )
 
 

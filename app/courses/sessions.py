@@ -19,7 +19,7 @@ from datetime import datetime, timedelta
 
 from app.auth import Role
 from app.courses import access
-from app.courses.records import CourseSession, roster_identity
+from app.courses.records import AssignmentNotFound, CourseSession, roster_identity
 from app.lti.sessions import SessionRecord, token_hash
 from app.storage import Stores
 from app.storage.protocols import CourseStore
@@ -152,18 +152,59 @@ def choose(
     return courses[0] if courses else found[0]
 
 
+def implied_course(
+    stores: Stores,
+    found: Sequence[tuple[str, CourseSession]],
+    *,
+    assignment_id: str | None,
+    student: str | None,
+) -> int | None:
+    """The course an API call names without `?course=`: an assignment's (`/v1/assignments/{id}…`: the
+    id names it), else that of the one session among the browser's whose course has the student the
+    call names (`?student=`); None when the call implies none, or more than one."""
+    if assignment_id is not None and assignment_id.isdigit() and len(assignment_id) < 10:
+        try:
+            return stores.courses.get_assignment(int(assignment_id)).course_id
+        except AssignmentNotFound:
+            return None
+    courses = {s.course_id for s in _with_student(stores, found, student)} if student else set()
+    return courses.pop() if len(courses) == 1 else None
+
+
+def _with_student(
+    stores: Stores, found: Sequence[tuple[str, CourseSession]], student: str
+) -> list[CourseSession]:
+    """The browser's course sessions whose course has this student."""
+    return [
+        s
+        for _, s in found
+        if s.course_id is not None
+        and (s.student == student or stores.courses.enrolment(s.course_id, student) is not None)
+    ]
+
+
 def rivals(
-    stores: Stores, found: Sequence[tuple[str, CourseSession]], now: datetime, *, problem_id: str | None
+    stores: Stores,
+    found: Sequence[tuple[str, CourseSession]],
+    now: datetime,
+    *,
+    problem_id: str | None,
+    student: str | None = None,
 ) -> list[CourseSession]:
     """The course sessions an API call naming no course could act as, when more than one could (else
     none): for a problem, those of the courses whose open assignments have it (a preview opened for it
-    is chosen before them); else every one. `choose` would take one of them: the call must say which
-    (`?course=`), so that no answer is filed in a course the student did not mean."""
+    is chosen before them); for a student (`?student=`), those of the courses that have them, where the
+    call's answer depends on the course (a student in none of them is no one's to choose by);
+    else every one. `choose` would take one of them: the call must say which (`?course=`), so that no
+    answer is filed in a course the student did not mean."""
     if problem_id is not None and any(s.course_id is None and s.problem_id == problem_id for _, s in found):
         return []
     courses = [s for _, s in found if s.course_id is not None]
     if problem_id is not None:
         courses = [s for s in courses if access.opening(stores, s.student, problem_id, now) is not None]
+    if student:
+        having = _with_student(stores, found, student)
+        courses = [s for s in courses if s in having]
     return courses if len(courses) > 1 else []
 
 

@@ -6,6 +6,7 @@ from __future__ import annotations
 import hashlib
 import hmac
 import secrets
+from collections.abc import Sequence
 from dataclasses import dataclass
 from datetime import datetime, timedelta
 from typing import TYPE_CHECKING
@@ -15,6 +16,8 @@ from fastapi import Request
 from app.auth import Principal, Role
 
 if TYPE_CHECKING:  # the stores name this module's record
+    from app.courses.records import CourseSession
+    from app.storage import Stores
     from app.storage.protocols import LtiSessionStore
 
 SESSION_COOKIE = "physcheck_session"
@@ -126,7 +129,7 @@ def current_session(request: Request) -> tuple[str, SessionRecord] | None:
         context.stores,
         found,
         now,
-        course_id=requested_course(request),
+        course_id=requested_course(request) or implied_course(context.stores, found, request),
         problem_id=request.path_params.get("problem_id"),
     )
     if chosen is None:
@@ -162,10 +165,30 @@ def unsettled_course(request: Request) -> Unsettled | None:
         in_query = request.query_params.get("course") is not None and "course_id" not in request.path_params
         mine = any(session.course_id == named for _, session in found)
         return Unsettled(unknown=named) if in_query and found and not mine else None
+    implied = implied_course(context.stores, found, request)
+    if implied is not None:
+        mine = any(session.course_id == implied for _, session in found)
+        return Unsettled(unknown=implied) if found and not mine else None
     problem_id = request.path_params.get("problem_id")
-    rivals = course_sessions.rivals(context.stores, found, now, problem_id=problem_id)
+    student = request.query_params.get("student")
+    rivals = course_sessions.rivals(context.stores, found, now, problem_id=problem_id, student=student)
     ids = tuple(session.course_id for session in rivals if session.course_id is not None)
     return Unsettled(rivals=ids) if ids else None
+
+
+def implied_course(
+    stores: Stores, found: Sequence[tuple[str, CourseSession]], request: Request
+) -> int | None:
+    """The course the call implies by the assignment or the student it names (see `course_sessions`)."""
+    from app.courses import sessions as course_sessions
+
+    assignment_id = request.path_params.get("assignment_id")
+    return course_sessions.implied_course(
+        stores,
+        found,
+        assignment_id=None if assignment_id is None else str(assignment_id),
+        student=request.query_params.get("student"),
+    )
 
 
 def requested_course(request: Request) -> int | None:

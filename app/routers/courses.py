@@ -466,13 +466,28 @@ def _assignment_as_staff(
     return record
 
 
-@router.get("/v1/assignments/{assignment_id}", response_model=AssignmentOut, responses=errors(403, 404, 422))
+@router.get(
+    "/v1/assignments/{assignment_id}",
+    response_model=AssignmentOut | StudentStanding,
+    responses=errors(404, 422),
+)
 async def get_assignment(
-    assignment_id: AssignmentIdPath, services: ServicesDep, principal: Instructor
-) -> AssignmentOut:
-    def load() -> AssignmentOut:
-        record = _assignment_as_staff(services, principal, assignment_id)
-        return assignment_out(record, _points(services, record))
+    assignment_id: AssignmentIdPath, request: Request, services: ServicesDep, principal: CurrentPrincipal
+) -> AssignmentOut | StudentStanding:
+    """Staff get the assignment; an enrolled student their standing on it, as in the course's list (a
+    browser signed in to several courses acts in the assignment's own: its id names it)."""
+    now = now_of(request)
+
+    def load() -> AssignmentOut | StudentStanding:
+        if principal.student is None:
+            record = _assignment_as_staff(services, principal, assignment_id)
+            return assignment_out(record, _points(services, record))
+        record = services.stores.courses.get_assignment(assignment_id)
+        if services.stores.courses.enrolment(record.course_id, principal.student) is None:
+            raise NotFound(f"There is no assignment {assignment_id} of yours.")
+        return standing(
+            record, service.student_cell(services.stores, services.catalog, record, principal.student, now)
+        )
 
     return await run_in_threadpool(load)
 

@@ -286,6 +286,8 @@ def test_an_api_call_from_a_browser_in_two_courses_naming_none_is_refused_naming
         error = refused.json()["error"]
         assert error["code"] == "course_required" and error["details"][0]["path"] == "course"
         assert all(f"{course}: Mechanics" in error["message"] for course in students)
+        first, second = sorted(students)
+        assert f"name one with ?course={first} or ?course={second}." in error["message"]
     assert stores.submissions.page().items == []  # nothing filed
     elsewhere = signed_in.get("/v1/submissions", params={"course": 999}, headers=headers)
     assert elsewhere.status_code == 404  # not the latest course's list under another's name
@@ -294,6 +296,55 @@ def test_an_api_call_from_a_browser_in_two_courses_naming_none_is_refused_naming
         listed = signed_in.get("/v1/submissions", params={"course": course}, headers=headers)
         assert listed.status_code == 200
         assert [item["student"] for item in listed.json()["items"]] == [student]
+
+
+def test_an_assignment_read_from_a_browser_in_two_courses_acts_in_the_assignments_course(
+    signed_in: TestClient, stores: Stores
+):
+    # it had been refused for want of ?course=, though the assignment's id names its course
+    students = _two_courses_with_yo_yo(signed_in, stores)
+    for course, (assignment, _) in students.items():
+        read = signed_in.get(f"/v1/assignments/{assignment}")
+        assert read.status_code == 200, read.text
+        assert read.json()["course_id"] == course and read.json()["status"] == "not started"
+    elsewhere = stores.courses.create_assignment(
+        _make_course(signed_in), stores.courses.get_assignment(assignment).spec
+    )
+    assert signed_in.get(f"/v1/assignments/{elsewhere.id}").status_code == 404  # a course not its own
+
+
+@pytest.mark.parametrize(
+    ("named", "status"),
+    [
+        ("the lecture's student", 403),  # their own course's session: acting for students needs a key
+        ("a student of neither", 403),  # whichever course: the same answer, nothing to choose
+        ("a student of both", 422),  # truly ambiguous: which course's session asks matters
+    ],
+)
+def test_student_data_from_a_browser_in_two_courses_asks_for_the_course_only_when_ambiguous(
+    signed_in: TestClient, stores: Stores, named: str, status: int
+):
+    students = _two_courses_with_yo_yo(signed_in, stores)
+    (lecture, (_, lecture_student)), (lab, _) = sorted(students.items())
+    for course in (lecture, lab):
+        stores.courses.enrol(course, "lti:1:both", "Both")
+    student = {
+        "the lecture's student": lecture_student,
+        "a student of neither": "s-1024",
+        "a student of both": "lti:1:both",
+    }[named]
+    answered = signed_in.get("/v1/student-data", params={"student": student})
+    assert answered.status_code == status, answered.text
+    error = answered.json()["error"]
+    if status == 422:
+        assert error["code"] == "course_required"
+        assert f"name one with ?course={lecture} or ?course={lab}." in error["message"]
+        assert (
+            error["details"][0]["message"]
+            == f"required: one of the courses {lecture}, {lab}, which could each take this"
+        )
+    else:
+        assert error["code"] == "forbidden"
 
 
 @pytest.mark.parametrize("enrolled_in_both", [False, True])
