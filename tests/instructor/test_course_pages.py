@@ -9,6 +9,7 @@ import re
 
 import pytest
 from fastapi.testclient import TestClient
+from httpx import Response
 
 from app.courses.records import StaffRole
 from app.db.records import Role
@@ -143,25 +144,20 @@ def test_the_gradebook_page_links_its_csv_and_another_instructor_sees_nothing(
     assert "Mechanics" not in other.get("/instructor/courses").text
 
 
+def _view_as_student(client: TestClient, problem: str) -> Response:
+    """The instructor's "View as a student" of a problem, sent from the problem's page."""
+    page = client.get(f"/instructor/problems/{problem}")
+    assert "View as a student" in page.text
+    return client.post(f"/instructor/problems/{problem}/as-student", data={"csrf": csrf_of(page.text)})
+
+
 def test_view_as_a_student_opens_the_student_page_in_the_instructors_session(
     signed_in: TestClient, stores: Stores
 ):
-    problem = signed_in.get("/instructor/problems/yo-yo")
-    assert "View as a student" in problem.text
-    opened = signed_in.post("/instructor/problems/yo-yo/as-student", data={"csrf": csrf_of(problem.text)})
+    opened = _view_as_student(signed_in, "yo-yo")
     assert opened.status_code == 303 and opened.headers["location"] == "/p/yo-yo"
-    page = signed_in.get("/p/yo-yo")
-    assert page.status_code == 200 and 'data-mode="session"' in page.text  # no key asked for
-    token = re.search(r'name="csrf-token" content="([^"]+)"', page.text)
-    assert token is not None
-    filed = signed_in.post(
-        "/v1/problems/yo-yo/parts/acceleration/submissions",
-        json={"answer": "g"},
-        headers={"X-CSRF-Token": token.group(1)},
-    )
-    assert filed.status_code == 201
     key_id = stores.keys.list()[0].id
-    assert [s.student for s in stores.submissions.page().items] == [f"preview:{key_id}"]  # filed apart
+    assert _submitted_as(signed_in, stores, "yo-yo") == f"preview:{key_id}"  # filed apart, no key asked
     forged = signed_in.post("/instructor/problems/yo-yo/as-student", data={"csrf": "nope"})
     assert forged.status_code == 403
 
@@ -175,28 +171,17 @@ def test_view_as_a_student_keeps_the_browsers_course_session_signed_in(signed_in
     )
     joined = signed_in.post(f"/join/{stores.courses.get_course(course).join_code}", data={"name": "Ada"})
     assert joined.status_code == 200
-    problem = signed_in.get("/instructor/problems/yo-yo")
-    opened = signed_in.post("/instructor/problems/yo-yo/as-student", data={"csrf": csrf_of(problem.text)})
-    assert opened.status_code == 303
+    assert _view_as_student(signed_in, "yo-yo").status_code == 303
     courses = signed_in.get("/courses").text
     assert "Mechanics" in courses and "Signed in as Ada" in courses  # still the course's student there
-    preview = signed_in.get("/p/yo-yo")
-    assert preview.status_code == 200 and 'data-mode="session"' in preview.text
-    token = re.search(r'name="csrf-token" content="([^"]+)"', preview.text)
-    assert token is not None
-    filed = signed_in.post(
-        "/v1/problems/yo-yo/parts/acceleration/submissions",
-        json={"answer": "g"},
-        headers={"X-CSRF-Token": token.group(1)},
-    )
-    assert filed.status_code == 201  # the page acts as the preview, filed apart from the class
-    assert [s.student for s in stores.submissions.page().items] == [f"preview:{stores.keys.list()[0].id}"]
+    # the page acts as the preview, filed apart from the class
+    assert _submitted_as(signed_in, stores, "yo-yo") == f"preview:{stores.keys.list()[0].id}"
 
 
 def _submitted_as(client: TestClient, stores: Stores, problem: str, query: str = "") -> str:
     """Whom the browser's answer to the problem's page is filed under (the page's CSRF token sent)."""
     page = client.get(f"/p/{problem}{query}")
-    assert page.status_code == 200, page.text
+    assert page.status_code == 200 and 'data-mode="session"' in page.text, page.text
     token = re.search(r'name="csrf-token" content="([^"]+)"', page.text)
     assert token is not None
     filed = client.post(
@@ -229,9 +214,7 @@ def test_a_preview_acts_only_for_the_problem_it_was_opened_for(signed_in: TestCl
     signed_in.post(f"/instructor/courses/{course}/join-code", data={"csrf": csrf_of(page.text)})
     signed_in.post(f"/join/{stores.courses.get_course(course).join_code}", data={"name": "Ada"})
     ada = stores.courses.roster(course)[0].student
-    problem = signed_in.get("/instructor/problems/my-yo-yo")
-    opened = signed_in.post("/instructor/problems/my-yo-yo/as-student", data={"csrf": csrf_of(problem.text)})
-    assert opened.status_code == 303
+    assert _view_as_student(signed_in, "my-yo-yo").status_code == 303
     assert _submitted_as(signed_in, stores, "yo-yo") == ada
     assert _submitted_as(signed_in, stores, "my-yo-yo") == f"preview:{author.id}"
 
