@@ -1,5 +1,5 @@
 """What the model's declared inequalities settle in an expression: |R − r| is R − r where R > r is
-declared, atan(tan θ) is θ where θ ranges inside (−π/2, π/2).
+declared, atan(tan θ) is θ where θ ranges inside (−π/2, π/2), √(1/cos α) is 1/√(cos α) where cos α > 0.
 
 sympy simplifies under the symbols' own assumptions only, so a ball rolling in a bowl written with an
 angle (`sqrt(x^2 + y^2)` of a centre at distance R − r, `atan(x/(-y))` of its angle) leaves
@@ -31,16 +31,41 @@ _INVERSES = (
 
 
 def settle(expr: sympy.Expr, model: Model) -> sympy.Expr:
-    """expr with the absolute values and inverse-of-own-function pairs the domain decides removed."""
-    if not expr.has(sympy.Abs, sympy.atan, sympy.asin, sympy.acos):
-        return expr
-    settled = expr.replace(lambda e: isinstance(e, sympy.Abs), lambda e: _unsigned(e, model))
+    """expr with the absolute values, inverse-of-own-function pairs and radicals of quotients the domain
+    decides removed."""
+    settled = expr
+    if any(_root_of_quotient(power) for power in expr.atoms(sympy.Pow)):
+        settled = expr.replace(_root_of_quotient, lambda e: _split_root(e, model))
+    if not settled.has(sympy.Abs, sympy.atan, sympy.asin, sympy.acos):
+        return settled
+    settled = settled.replace(lambda e: isinstance(e, sympy.Abs), lambda e: _unsigned(e, model))
     for inverse, own, (low, high) in _INVERSES:
         settled = settled.replace(
             lambda e, inverse=inverse: isinstance(e, inverse),
             lambda e, own=own, low=low, high=high: _inverted(e, own, low, high, model),
         )
     return settled
+
+
+def _root_of_quotient(expr: sympy.Basic) -> bool:
+    """A fractional power of a product with a symbolic divisor, sqrt(1/cos(alpha)): sympy splits it only
+    where it knows the divisor's sign, so a conical pendulum's period would read
+    2 pi sqrt(L)/(sqrt(g) sqrt(1/cos(alpha))). Sums are left whole (sqrt(g/L - w^2) as written)."""
+    return (
+        isinstance(expr, sympy.Pow)
+        and expr.exp.is_Rational
+        and not expr.exp.is_Integer
+        and isinstance(expr.base, sympy.Pow | sympy.Mul)
+        and bool(expr.base.as_numer_denom()[1].free_symbols)
+    )
+
+
+def _split_root(power: sympy.Pow, model: Model) -> sympy.Expr:
+    """(n/d)^r as n^r/d^r, which holds for every n where d > 0: the domain must keep d positive."""
+    numerator, denominator = power.base.as_numer_denom()
+    if _sign(denominator, model) != 1:
+        return power
+    return numerator**power.exp / denominator**power.exp
 
 
 def _unsigned(absolute: sympy.Expr, model: Model) -> sympy.Expr:

@@ -60,6 +60,13 @@ def test_a_ball_rolling_in_a_bowl_with_an_angle_coordinate_is_derived_without_ab
         ('positive: ["R - r"]', "asin(sin(theta))", "theta"),
         ('positive: ["R - r"]', "acos(cos(theta))", "acos(cos(theta))"),  # θ < 0 is in the range
         ("positive: []", "abs(R - r)", "abs(R - r)"),  # either sign on the domain
+        # a root of a quotient splits where the divisor keeps its sign: a conical pendulum's sqrt(1/cos)
+        ('positive: ["R - r"]', "sqrt(1/(R - r))", "1/sqrt(R - r)"),
+        ('positive: ["R - r"]', "sqrt(1/cos(theta))", "1/sqrt(cos(theta))"),  # cos > 0 on (-pi/2, pi/2)
+        ('positive: ["R - r"]', "(m*g/cos(theta))^(-1/2)", "sqrt(cos(theta))/(sqrt(m)*sqrt(g))"),
+        ("positive: []", "sqrt(1/(R - r))", "sqrt(1/(R - r))"),  # either sign: sqrt(1/-1) is not 1/sqrt(-1)
+        ('positive: ["R - r"]', "sqrt(1/sin(theta))", "sqrt(1/sin(theta))"),  # sin < 0 for theta < 0
+        ('positive: ["R - r"]', "sqrt(g/(R - r) - g/R)", "sqrt(g/(R - r) - g/R)"),  # a sum stays whole
     ],
 )
 def test_settle_removes_only_what_the_declared_domain_decides(
