@@ -231,7 +231,7 @@ def _load_low_level(data: Mapping[str, Any], symbols: Mapping[str, sympy.Symbol]
     reach_loading.check_targets(quantities, bodies, state, coordinates, errors.add)
     bounces.check(quantities, impact, errors.add)
     _check_slip_quantities(quantities, frictions, errors)
-    depth.check(data, bodies, declared, quantities, time, errors.add)
+    depth.check(data, bodies, declared, potentials, quantities, errors.add)
     named = [*coord_names, *(c.name for c in declared), *(b.name for b in bodies)]
     notation = errors.attempt(partial(read_notation, data.get("notation"), named)) or ()
     if errors.errors:
@@ -482,13 +482,14 @@ def _axes(
     errors: _Collector,
     axes: tuple[str, ...] = AXES,
 ) -> tuple[tuple[str, sympy.Expr], ...]:
-    """A point or direction in the x–y plane; a body's position (`axes`: depth.SPACE) may also take z."""
+    """A point or direction in the x–y plane; a body's position or an anchor (`axes`: depth.SPACE) may also take z."""
     spec = _mapping(value, path, errors)
     result: list[tuple[str, sympy.Expr]] = []
     for axis in spec:
         if axis == depth.DEPTH and axis not in axes:
             errors.add(
-                "z is for a body's position only: every other point or direction is in the x–y plane",
+                "z is for a body's position or a potential's anchor only: every other point or direction is "
+                "in the x–y plane",
                 (*path, str(axis)),
             )
         elif axis not in axes:
@@ -611,7 +612,7 @@ def _potentials(
                 (*path, "anchor"),
             )
         elif len(members) == 1:
-            anchor = _axes(spec.get("anchor"), symbols, (*path, "anchor"), errors)
+            anchor = _axes(spec.get("anchor"), symbols, (*path, "anchor"), errors, depth.SPACE)
         elif "anchor" in spec:
             errors.add("an anchor is only for a potential on one body", (*path, "anchor"))
         distance_name = spec.get("distance")

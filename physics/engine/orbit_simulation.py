@@ -100,7 +100,9 @@ class OrbitMeasure:
                 f"the simulation finds no rate of {target} that holds every other coordinate"
             )
         turning = self._turning_dofs(target)
-        states = rk4(dyn.derivative(params), [*q, *qd], 2 * math.pi / rate / PER_TURN, PER_TURN + 20)
+        states = rk4(
+            dyn.derivative(params), dyn.initial(q, qd, params), 2 * math.pi / rate / PER_TURN, PER_TURN + 20
+        )
         held = [k for k in range(dyn.n) if k != i]
         drift = max(abs(y[k] - q[k]) / max(abs(q[k]), 1.0) for y in states for k in held)
         if drift > STAYS_PUT:

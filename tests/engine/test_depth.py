@@ -10,6 +10,7 @@ from typing import Any
 import pytest
 import sympy
 
+from physics.answer_text import typed_text
 from physics.engine import depth, derive, load_model
 from physics.engine.model import QuantityKind
 from physics.errors import DerivationError, SpecErrors
@@ -69,14 +70,6 @@ REFUSED = [
         id="friction",
     ),
     pytest.param(
-        lambda d: d.update(
-            potentials=[{"bodies": ["puck"], "anchor": {"x": 0}, "energy": "k*d^2/2", "distance": "d"}]
-        ),
-        ("potentials",),
-        PLANE_ONLY,
-        id="potentials",
-    ),
-    pytest.param(
         lambda d: d.update(forces=[{"body": "puck", "drag": "k"}]), ("forces",), PLANE_ONLY, id="forces"
     ),
     pytest.param(lambda d: d.update(frame={"body": "weight"}), ("frame",), PLANE_ONLY, id="frame"),
@@ -93,7 +86,7 @@ REFUSED = [
     pytest.param(
         lambda d: d.update(elements={"s": {"kind": "spring", "ends": ["puck", {"x": 0, "y": 0}], "k": "k"}}),
         ("elements",),
-        PLANE_ONLY,
+        "write a spring as a potential of the distance (`potentials:`)",
         id="elements",
     ),
     pytest.param(
@@ -107,12 +100,6 @@ REFUSED = [
         ("constraints", "grip", "kind"),
         PLANE_ONLY,
         id="rolling-grip",
-    ),
-    pytest.param(
-        lambda d: d["bodies"]["weight"]["position"].update(x="v*t"),
-        ("bodies", "weight", "position"),
-        "moving in the time",
-        id="support-moving-in-time",
     ),
     pytest.param(
         lambda d: d["quantities"].update(flight=FLIGHT),
@@ -168,11 +155,6 @@ def test_a_model_with_z_refuses_what_is_written_for_the_plane(
     ("section", "entry", "path"),
     [
         (
-            "potentials",
-            {"bodies": ["weight"], "anchor": {"z": 0}, "energy": "k*d^2/2", "distance": "d"},
-            (0, "anchor", "z"),
-        ),
-        (
             "collision",
             {"projectile": "bullet", "target": "weight", "direction": {"z": 1}},
             ("direction", "z"),
@@ -186,12 +168,12 @@ def test_z_in_a_point_or_direction_other_than_a_position_is_refused(
         "coordinates": ["s"],
         "bodies": {"weight": {"mass": "m2", "position": {"y": "s"}}},
         "quantities": {"a": {"acceleration": "s"}},
-        section: [entry] if section == "potentials" else entry,
+        section: entry,
     }
     with pytest.raises(SpecErrors) as caught:
         load_model(data, SYMBOLS)
     found = {e.path: e.message for e in caught.value.errors}
-    assert "z is for a body's position only" in found[(section, *path)]
+    assert "z is for a body's position or a potential's anchor only" in found[(section, *path)]
 
 
 def test_a_planar_model_keeps_every_section() -> None:
@@ -204,31 +186,150 @@ def test_a_planar_model_keeps_every_section() -> None:
         assert all(PLANE_ONLY not in e.message for e in error.errors)
 
 
+L, ALPHA, A, L0 = (sympy.Symbol(n, positive=True) for n in ("L", "alpha", "A", "L0"))
+K = SYMBOLS["k"]
+CONE_SYMBOLS = {**SYMBOLS, "L": L, "alpha": ALPHA, "A": A, "L0": L0}
+# a bob on a string of length L from a pivot at the origin, swinging round at the angle alpha
+CONE: dict[str, Any] = {
+    "coordinates": ["theta", "phi"],
+    "bodies": {
+        "bob": {
+            "mass": "m1",
+            "position": {"x": "L*sin(theta)*cos(phi)", "y": "-L*cos(theta)", "z": "L*sin(theta)*sin(phi)"},
+        }
+    },
+    "gravity": "g",
+    "constraints": {"string": {"kind": "string", "gap": "L - sqrt(x_bob^2 + y_bob^2 + z_bob^2)"}},
+    "state": {"theta": "alpha"},
+    "domain": {"ranges": {"alpha": ["0", "pi/2"], "theta": ["0", "pi/2"]}},
+    "quantities": {"period": {"revolution_period": "phi"}},
+}
+
+
 def test_conical_pendulum_on_z_derives_the_positive_steady_rate() -> None:
     """sympy cannot sign ±sqrt(g/(L cos(alpha))) alone: the domain keeps the positive rate (orbits.py)."""
-    L, alpha = sympy.Symbol("L", positive=True), sympy.Symbol("alpha", positive=True)
-    data = {
-        "coordinates": ["theta", "phi"],
-        "bodies": {
-            "bob": {
-                "mass": "m1",
-                "position": {
-                    "x": "L*sin(theta)*cos(phi)",
-                    "y": "-L*cos(theta)",
-                    "z": "L*sin(theta)*sin(phi)",
-                },
-            }
-        },
-        "gravity": "g",
-        "constraints": {"string": {"kind": "string", "gap": "L - sqrt(x_bob^2 + y_bob^2 + z_bob^2)"}},
-        "state": {"theta": "alpha"},
-        "domain": {"ranges": {"alpha": ["0", "pi/2"], "theta": ["0", "pi/2"]}},
-        "quantities": {"period": {"revolution_period": "phi"}},
-    }
-    derived = derive(load_model(data, {**SYMBOLS, "L": L, "alpha": alpha})).quantities
-    expected = 2 * sympy.pi * sympy.sqrt(L * sympy.cos(alpha) / G)
-    point = {L: 0.7, alpha: 0.6, G: 9.8}
+    derived = derive(load_model(CONE, CONE_SYMBOLS)).quantities
+    expected = 2 * sympy.pi * sympy.sqrt(L * sympy.cos(ALPHA) / G)
+    point = {L: 0.7, ALPHA: 0.6, G: 9.8}
     assert abs(float((derived["period"] - expected).subs(point))) < 1e-9
+
+
+def test_conical_pendulum_period_is_written_without_a_root_of_a_reciprocal() -> None:
+    """2 pi sqrt(L cos(alpha)/g) as a teacher writes it, not 2 pi sqrt(L/g)/sqrt(1/cos(alpha))."""
+    period = derive(load_model(CONE, CONE_SYMBOLS)).quantities["period"]
+    assert typed_text(period) == "2*pi*sqrt(L)*sqrt(cos(alpha))/sqrt(g)"
+
+
+def _moving_pivot(gap: str) -> dict[str, Any]:
+    """The cone hung in a lift accelerating upwards at A: the pivot at A t^2/2."""
+    data = copy.deepcopy(CONE)
+    data["bodies"]["bob"]["position"]["y"] = "A*t^2/2 - L*cos(theta)"
+    data["constraints"]["string"]["gap"] = gap
+    data["quantities"]["tension"] = {"force": "string"}
+    data["state"]["phi_dot"] = "sqrt((g + A)/(L*cos(alpha)))"
+    return data
+
+
+def test_conical_pendulum_in_an_accelerating_lift_feels_g_plus_a() -> None:
+    derivation = derive(
+        load_model(_moving_pivot("L - sqrt(x_bob^2 + (y_bob - A*t^2/2)^2 + z_bob^2)"), CONE_SYMBOLS)
+    )
+    derived = derivation.quantities
+    assert sympy.simplify(derived["period"] - 2 * sympy.pi * sympy.sqrt(L * sympy.cos(ALPHA) / (G + A))) == 0
+    assert sympy.simplify(derived["tension"] - M1 * (G + A) / sympy.cos(ALPHA)) == 0
+    assert len(derivation.agreement["period"]) >= 2 and {"period", "tension"} <= set(derivation.simulation)
+
+
+def test_a_string_gap_left_at_the_fixed_pivot_under_a_moving_bob_is_refused_at_the_gap() -> None:
+    with pytest.raises(DerivationError) as caught:
+        derive(load_model(_moving_pivot("L - sqrt(x_bob^2 + y_bob^2 + z_bob^2)"), CONE_SYMBOLS))
+    assert caught.value.path == ("constraints", "string"), caught.value
+
+
+# two pucks on a frictionless table (x and z) joined by a spring of natural length L0, released with
+# the second at (a, b) from the first: each is pulled along the line between them
+PUCKS: dict[str, Any] = {
+    "coordinates": ["x1", "z1", "x2", "z2"],
+    "bodies": {
+        "one": {"mass": "m1", "position": {"x": "x1", "z": "z1"}},
+        "two": {"mass": "m2", "position": {"x": "x2", "z": "z2"}},
+    },
+    "potentials": [{"bodies": ["one", "two"], "distance": "d", "energy": "k*(d - L0)^2/2"}],
+    "state": {"x1": 0, "z1": 0, "x2": "a", "z2": "b"},
+    "quantities": {"ax1": {"acceleration": "x1"}, "az2": {"acceleration": "z2"}},
+}
+# a bob on a spring from the origin, free in x, y and z, released at (a, -h, b)
+SPRUNG_BOB: dict[str, Any] = {
+    "coordinates": ["X", "Y", "Z"],
+    "bodies": {"bob": {"mass": "m1", "position": {"x": "X", "y": "Y", "z": "Z"}}},
+    "gravity": "g",
+    "potentials": [
+        {"bodies": ["bob"], "anchor": {"x": 0, "y": 0, "z": 0}, "distance": "d", "energy": "k*(d - L0)^2/2"}
+    ],
+    "state": {"X": "a", "Y": "-h", "Z": "b"},
+    "quantities": {"az": {"acceleration": "Z"}, "ay": {"acceleration": "Y"}},
+}
+SPRING_SYMBOLS = {**SYMBOLS, **{n: sympy.Symbol(n, positive=True) for n in ("L0", "a", "b", "h")}}
+a, b, h = (SPRING_SYMBOLS[n] for n in ("a", "b", "h"))
+SPRINGS_ON_Z = [
+    pytest.param(
+        PUCKS,
+        {
+            "ax1": K * (1 - L0 / sympy.sqrt(a**2 + b**2)) * a / M1,
+            "az2": -K * (1 - L0 / sympy.sqrt(a**2 + b**2)) * b / M2,
+        },
+        id="two-pucks-on-a-table",
+    ),
+    pytest.param(
+        SPRUNG_BOB,
+        {
+            "az": -K * (1 - L0 / sympy.sqrt(a**2 + b**2 + h**2)) * b / M1,
+            "ay": K * (1 - L0 / sympy.sqrt(a**2 + b**2 + h**2)) * h / M1 - G,
+        },
+        id="bob-free-in-x-y-and-z",
+    ),
+]
+
+
+@pytest.mark.parametrize(("data", "expected"), SPRINGS_ON_Z)
+def test_a_spring_on_z_pulls_along_the_distance_in_three_dimensions(
+    data: dict[str, Any], expected: dict[str, sympy.Expr]
+) -> None:
+    derivation = derive(load_model(data, SPRING_SYMBOLS))
+    for name, value in expected.items():
+        assert sympy.simplify(derivation.quantities[name] - value) == 0, name
+        assert len(derivation.agreement[name]) >= 2 and name in derivation.simulation
+
+
+SPRING_WITHOUT_Z = [
+    pytest.param(
+        lambda d: d["potentials"][0].update(anchor={"x": 0, "y": 0}),
+        SPRUNG_BOB,
+        ("potentials", 0, "anchor"),
+        "bob is on z but the anchor gives no z",
+        id="anchor-without-z",
+    ),
+    pytest.param(
+        lambda d: d["bodies"]["two"].update(position={"x": "x2"}),
+        PUCKS,
+        ("potentials", 0, "bodies"),
+        "one is on z but two gives no z",
+        id="other-body-without-z",
+    ),
+]
+
+
+@pytest.mark.parametrize(("change", "data", "path", "says"), SPRING_WITHOUT_Z)
+def test_a_spring_whose_ends_do_not_both_give_z_is_refused_at_the_end_without_it(
+    change: Callable[[dict[str, Any]], object], data: dict[str, Any], path: tuple[str | int, ...], says: str
+) -> None:
+    edited = copy.deepcopy(data)
+    change(edited)
+    with pytest.raises(SpecErrors) as caught:
+        load_model(edited, SPRING_SYMBOLS)
+    found = {e.path: e.message for e in caught.value.errors}
+    assert path in found, found
+    assert says in found[path]
 
 
 @pytest.mark.parametrize("kind", sorted(set(QuantityKind) - depth.KINDS))
