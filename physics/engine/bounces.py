@@ -42,7 +42,8 @@ TOTAL = (
 
 
 def check(quantities: Sequence[Quantity], model_impact: Impact | None, report: Report) -> None:
-    """Bounces need an impact against a fixed partner (a floor, a wall), and a count of at least one."""
+    """Bounces need an impact against a fixed partner (a floor, a wall), a count of at least one, and no
+    slope to land on."""
     for quantity in quantities:
         if quantity.bounces is None:
             continue
@@ -51,6 +52,12 @@ def check(quantities: Sequence[Quantity], model_impact: Impact | None, report: R
             report("a body bounces again only off a fixed partner: the impact's other body moves on", path)
         if quantity.bounces.is_number and not (quantity.bounces.is_integer and quantity.bounces >= 1):
             report(f"the number of bounces is a whole number, 1 or more, not {quantity.bounces}", path)
+        if quantity.slope is not None:  # the slope runs through the launch: earlier flights would cross it
+            report(
+                "a landing on a slope through the launch point ends the first flight after the impact, "
+                "so there are no later bounces to count: ask for the slope without bounces",
+                path,
+            )
 
 
 NTH_ALONE = (

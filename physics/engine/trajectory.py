@@ -198,7 +198,7 @@ def _onto_slope(
         start.velocity["y"] - start.velocity["x"] * tan,
         sympy.Integer(0),
     )
-    flight = later_root(method.model, roots, quantity.name)
+    flight = later_root(method.model, roots, quantity.name, ONTO_SLOPE)
     x0, y0 = start.position["x"], start.position["y"]
     method.step(
         "Landing on the slope through the launch point",
@@ -224,8 +224,22 @@ def _quadratic_roots(a: sympy.Expr, b: sympy.Expr, c: sympy.Expr) -> list[sympy.
     return [(-b + root) / (2 * a), (-b - root) / (2 * a)]
 
 
-def later_root(model: Model, roots: list[sympy.Expr], name: str) -> sympy.Expr:
-    """The landing: the root that is positive and latest at every domain point (not the launch, t = 0)."""
+# why a landing on a slope has no root, and what the model must declare
+ONTO_SLOPE = (
+    "the body never comes down to the slope through the launch point: it leaves on the slope's lower side, "
+    "into the incline",
+    "; declare the launch steeper than the slope under domain.positive",
+)
+
+
+def later_root(
+    model: Model,
+    roots: list[sympy.Expr],
+    name: str,
+    missed: tuple[str, str] = ("the body never comes down to the landing level", ""),
+) -> sympy.Expr:
+    """The landing: the root that is positive and latest at every domain point (not the launch, t = 0).
+    `missed`: why there is none, and what to declare."""
     points = domain_points(model, POINTS, seed=19)
     chosen: set[int] = set()
     for point in points:
@@ -236,8 +250,9 @@ def later_root(model: Model, roots: list[sympy.Expr], name: str) -> sympy.Expr:
                 values.append((value.real, index))
         if not values:
             raise DerivationError(
-                f"{name}: the body never comes down to the landing level (roots {typed_text(roots)}) at "
-                + ", ".join(f"{s}={v:.4g}" for s, v in point.items()),
+                f"{name}: {missed[0]} (roots {typed_text(roots)}) at "
+                + ", ".join(f"{s}={v:.4g}" for s, v in point.items())
+                + missed[1],
                 quantity=name,
             )
         chosen.add(max(values)[1])
@@ -332,7 +347,7 @@ def _energy_onto_slope(method: Method, quantity: Quantity, start: Launch, fy: sy
         + r"\Rightarrow v_{y1} = "
         + method.tex(descending),
     )
-    time = later_root(method.model, [tidy.simplify(m * (descending - vy) / fy)], quantity.name)
+    time = later_root(method.model, [tidy.simplify(m * (descending - vy) / fy)], quantity.name, ONTO_SLOPE)
     method.step(
         "Time of flight from the impulse", r"T = \frac{m (v_{y1} - v_{y0})}{F_y} = " + method.tex(time)
     )

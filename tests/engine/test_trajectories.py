@@ -216,3 +216,49 @@ def test_a_slope_past_a_right_angle_is_refused_at_its_path(slope: str, words: st
         derive(load_model(data, SYMBOLS))
     assert caught.value.path == ("quantities", "T", "slope")
     assert words in caught.value.message
+
+
+# a ball arriving at a floor at (u, -w) bounces off it with restitution e and lands on an incline at
+# theta that rises from the bounce point: T = 2 (e w - u tan(theta))/g, the range along the incline u T/cos
+u, w, e = sympy.symbols("u w e", positive=True)
+BOUNCE_SYMBOLS = {**SYMBOLS, "u": u, "w": w, "e": e}
+
+
+def _bounced_onto_a_slope(positive: list[str], **asked: Any) -> dict[str, Any]:
+    return {
+        "coordinates": ["x", "y"],
+        "bodies": {"ball": {"mass": "m", "position": {"x": "x", "y": "y"}}},
+        "gravity": "g",
+        "state": {"x": 0, "y": 0, "x_dot": "u", "y_dot": "-w"},
+        "impact": {"bodies": ["ball", {"fixed": "floor"}], "normal": {"y": -1}, "restitution": "e"},
+        "domain": {"ranges": {"e": ["0", "1"], "theta": ["0", "pi/2"]}, "positive": positive},
+        "quantities": {
+            "T": {"time_of_flight": "ball", "after": "impact", "slope": "theta", **asked},
+            "R": {"range": "ball", "after": "impact", "slope": "theta", **asked},
+        },
+    }
+
+
+def test_a_bounce_onto_an_incline_through_the_bounce_point_lands_along_it() -> None:
+    result = derive(load_model(_bounced_onto_a_slope(["e*w - u*tan(theta)"]), BOUNCE_SYMBOLS))
+    flight = 2 * (e * w - u * sympy.tan(theta)) / g
+    assert sympy.simplify(result.quantities["T"] - flight) == 0
+    assert sympy.simplify(result.quantities["R"] - u * flight / cos(theta)) == 0
+    assert set(result.agreement["R"]) >= {"newton", "conservation"}
+    assert "along the slope" in result.simulation["R"].compared
+    assert "after an integrated contact" in result.simulation["R"].compared
+
+
+def test_a_bounce_that_leaves_below_the_incline_is_refused_saying_so() -> None:
+    """Without e w > u tan(theta) the ball would leave the bounce into the incline at some points."""
+    with pytest.raises(DerivationError) as caught:
+        derive(load_model(_bounced_onto_a_slope([]), BOUNCE_SYMBOLS))
+    assert "never comes down to the slope through the launch point" in str(caught.value)
+    assert "declare the launch steeper than the slope under domain.positive" in str(caught.value)
+
+
+def test_bounces_counted_before_a_landing_on_a_slope_are_refused_at_the_count() -> None:
+    with pytest.raises(SpecErrors) as caught:
+        load_model(_bounced_onto_a_slope(["e*w - u*tan(theta)"], bounces=2), BOUNCE_SYMBOLS)
+    found = {e.path: e.message for e in caught.value.errors}
+    assert "ends the first flight after the impact" in found[("quantities", "T", "bounces")]
