@@ -242,19 +242,24 @@ def test_a_ta_reads_the_gradebook_but_does_not_change_the_course(client, teacher
     assert client.get(f"/v1/courses/{course}/gradebook", headers=ta).status_code == 404
 
 
-def test_late_work_loses_its_penalty_an_extension_spares_new_answers_and_the_csv_agrees(client, teacher):
-    course = _course(client, teacher)
-    _roster(client, teacher, course)
-    now = datetime.now(UTC)
-    homework = _assignment(
+def _late_homework(client, teacher, course: int, now: datetime) -> dict:
+    """An assignment due 30 hours ago (two days started late), 0.1 off a day, at most 0.5."""
+    return _assignment(
         client,
         teacher,
         course,
         problems=["skier-friction"],
         opens_at=_iso(now - timedelta(days=5)),
-        due_at=_iso(now - timedelta(hours=30)),  # two days started late
+        due_at=_iso(now - timedelta(hours=30)),
         late={"kind": "penalty", "per_day": 0.1, "limit": 0.5},
     )
+
+
+def test_late_work_loses_its_penalty_an_extension_spares_new_answers_and_the_csv_agrees(client, teacher):
+    course = _course(client, teacher)
+    _roster(client, teacher, course)
+    now = datetime.now(UTC)
+    homework = _late_homework(client, teacher, course, now)
     links = _links(client, teacher, course)
     problem, part, answer = RIGHT
     path = f"/v1/problems/{problem}/parts/{part}/submissions"
@@ -298,15 +303,7 @@ def test_an_extension_regrades_earlier_late_answers_only_when_the_teacher_asks(c
     course = _course(client, teacher)
     _roster(client, teacher, course)
     now = datetime.now(UTC)
-    homework = _assignment(
-        client,
-        teacher,
-        course,
-        problems=["skier-friction"],
-        opens_at=_iso(now - timedelta(days=5)),
-        due_at=_iso(now - timedelta(hours=30)),
-        late={"kind": "penalty", "per_day": 0.1, "limit": 0.5},
-    )
+    homework = _late_homework(client, teacher, course, now)
     problem, part, answer = RIGHT
     browser, csrf = _signed_in(client, _links(client, teacher, course)[f"course:{course}:s001"])
     path = f"/v1/problems/{problem}/parts/{part}/submissions"
