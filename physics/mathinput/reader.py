@@ -196,7 +196,7 @@ def _tree(
     table = _name_table(tuple(names.items()))
     tokens = tokenize(text, limits, velocities=velocities)
     _refuse_exponent_letter_clash(text, tokens, table)
-    tokens = resolve_words(tokens, table)
+    tokens = resolve_words(tokens, table, text)
     try:
         parser = Parser(text, tokens, limits, choices, powers_outside=powers_outside, word_ends=word_ends)
         tree = parser.parse()

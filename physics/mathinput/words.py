@@ -12,6 +12,7 @@ from fractions import Fraction
 from physics.characters import as_latin, lookalike_hint
 from physics.errors import AmbiguousInput, TooLarge, UnknownFunction, UnknownSymbol
 from physics.mathinput.names import NameTable, Part
+from physics.mathinput.sentences import refuse_leading_sentence
 from physics.mathinput.tokentypes import Kind, SpelledWord, Token
 from physics.mathinput.vocabulary import DEGREE_WORD, FUNCTIONS, LISTED_FUNCTIONS, MAX_WORD_LENGTH, TIMES_WORD
 
@@ -28,8 +29,8 @@ def _keeps_whole(reading: tuple[Part, ...], tok: SpelledWord) -> bool:
     return not any(low < part.start < high for part in reading for low, high in tok.unsplittable)
 
 
-def resolve_words(tokens: list[Token], table: NameTable) -> list[Token]:
-    """Replace every WORD token; raise on the first word that is unknown or reads two ways."""
+def resolve_words(tokens: list[Token], table: NameTable, text: str) -> list[Token]:
+    """Replace every WORD token of `text`; raise on the first word that is unknown or reads two ways."""
     out: list[Token] = []
     tokens = _latex_letters_joined(tokens, table)
     for index, tok in enumerate(tokens):
@@ -110,6 +111,8 @@ def resolve_words(tokens: list[Token], table: NameTable) -> list[Token]:
                 word,
                 LISTED_FUNCTIONS,
             )
+        if prev is None:
+            refuse_leading_sentence(tokens, table, text)
         allowed = table.declared
         listed = ", ".join(allowed) if allowed else "none"
         constants = "the constants pi and e" if table.euler_available else "the constant pi"

@@ -60,6 +60,12 @@ def choice(answer: str, choices: list[dict] | None = None) -> dict:
         pytest.param(symbolic("-g sin(θ)cos(θ)"), "incorrect", "wrong_value", id="fixed-wedge-like"),
         pytest.param(symbolic("-m g sin(θ)cos(θ)/(M + m sin^2 θ"), "invalid", "parse_error", id="unbalanced"),
         pytest.param(symbolic("-m g sin(φ)"), "invalid", "unknown_symbol", id="unknown-symbol"),
+        pytest.param(
+            symbolic("The acceleration is -m g sin θ cos θ/(M + m sin^2 θ)"),
+            "invalid",
+            "parse_error",
+            id="sentence-before-the-expression",
+        ),
         pytest.param(symbolic("foo(m)"), "invalid", "unknown_function", id="unknown-function"),
         pytest.param(symbolic("9^9^9"), "invalid", "too_large", id="tower"),
         pytest.param(numeric("4.58 m/s^2"), "correct", "equivalent", id="numeric-contract-example"),

@@ -1,0 +1,73 @@
+"""An answer typed as a sentence (`The period is 2π√(L/g)`): refused saying to type the expression alone,
+rather than naming its first word as an unknown symbol. Words that are declared symbols are never part
+of the sentence, so `m g` stays an answer however it is surrounded.
+"""
+
+from __future__ import annotations
+
+from physics.errors import ParseError
+from physics.mathinput.names import NameTable
+from physics.mathinput.tokentypes import Kind, SpelledWord, Token
+
+# Words that a sentence about an answer holds and an answer does not: one of them must be among the
+# opening words, so that two undeclared names (`Delta x`, `vx vy`) are still asked about as names.
+_SENTENCE_WORDS = frozenset(
+    {
+        "the", "is", "are", "was", "equals", "equal", "answer", "of", "so", "then", "thus", "hence",
+        "therefore", "it", "this", "that", "we", "get", "gives", "given", "by", "will", "be", "my", "final",
+    }
+)  # fmt: skip
+
+
+def refuse_leading_sentence(tokens: list[Token], table: NameTable, text: str) -> None:
+    """Raise where the answer opens with two or more plain words that are no names (one of them a
+    sentence's), followed by an expression; the refusal shows the expression without the words around it."""
+    leading = _leading_words(tokens)
+    unknown = [_plain_unknown(tok, table) for tok in leading]
+    opening = len(unknown) if all(unknown) else unknown.index(False)
+    if opening < 2 or not any(tok.text.lower() in _SENTENCE_WORDS for tok in leading[:opening]):
+        return
+    # The sentence ends after a run of its words: the last run with an expression after it
+    # (`The period T is 2π√(L/g)`: after `is`; `the answer is m g newtons`: after `is`, not `newtons`).
+    ends = [
+        k + 1 for k in range(len(leading)) if unknown[k] and (k + 1 == len(leading) or not unknown[k + 1])
+    ]
+    for end in reversed(ends):
+        expression = _expression_after(tokens, end, table, text)
+        if expression:
+            sentence = text[tokens[0].pos : tokens[end - 1].end]
+            raise ParseError(
+                f'"{sentence}" is a sentence, which is not read: type only the expression, as in {expression}.',
+                tokens[0].pos,
+            )
+
+
+def _leading_words(tokens: list[Token]) -> list[Token]:
+    """The words the answer opens with, each spaced from the one before."""
+    words: list[Token] = []
+    for tok in tokens:
+        if tok.kind is not Kind.WORD or (words and not tok.space_before):
+            break
+        words.append(tok)
+    return words
+
+
+def _plain_unknown(tok: Token, table: NameTable) -> bool:
+    """Whether a word is typed in plain letters and reads as no name, function or constant."""
+    return (
+        tok.kind is Kind.WORD
+        and not isinstance(tok, SpelledWord)
+        and tok.text.isascii()
+        and tok.text.isalpha()
+        and not table.resolve(tok.text).readings
+    )
+
+
+def _expression_after(tokens: list[Token], start: int, table: NameTable, text: str) -> str:
+    """The text from tokens[start] on, without the plain words that end it (`2π√(L/g) seconds`)."""
+    stop = len(tokens) - 1  # the END token
+    while stop > start and _plain_unknown(tokens[stop - 1], table) and tokens[stop - 1].space_before:
+        stop -= 1
+    if stop == start:
+        return ""
+    return text[tokens[start].pos : tokens[stop - 1].end].strip()
