@@ -73,7 +73,7 @@ def resolve_words(tokens: list[Token], table: NameTable, text: str) -> list[Toke
         if isinstance(tok, SpelledWord):
             readings = tuple(r for r in readings if _keeps_whole(r, tok))
         if len(readings) == 1:
-            _refuse_degree_function(word, readings[0], nxt, tok.pos)
+            _refuse_degree_function(word, readings[0], tokens[index + 1 :], text, tok.pos)
             space = tok.space_before
             for part in readings[0]:
                 if spelled:
@@ -324,9 +324,12 @@ def other_names_hint(word: str) -> str:
     return f" Did you mean {name}? Write {name} for {found.group(1)}, as in {name}(x)."
 
 
-def _refuse_degree_function(word: str, reading: tuple[Part, ...], nxt: Token, at: int) -> None:
-    """`m g sind θ` where a symbol d is declared: sin(d)·θ to the grammar, but MATLAB's sine of an angle in
-    degrees as typed; refused, saying what to type for each (never graded as sin(d)·θ)."""
+def _refuse_degree_function(
+    word: str, reading: tuple[Part, ...], following: list[Token], text: str, at: int
+) -> None:
+    """`m g sind θ`, `m g sind(θ)` where a symbol d is declared: sin(d)·θ to the grammar, but MATLAB's sine
+    of an angle in degrees as typed; refused, saying what to type for each (never graded as sin(d)·θ).
+    `following`: the tokens after the word, whose first argument is shown as typed."""
     if len(reading) < 2 or reading[-2].kind != "func" or reading[-1].kind != "name":
         return
     function, symbol = reading[-2], reading[-1]
@@ -334,16 +337,33 @@ def _refuse_degree_function(word: str, reading: tuple[Part, ...], nxt: Token, at
     if degrees is None or word[symbol.start : symbol.end] != "d":
         return
     name = degrees.group(1)
-    after = nxt.text if nxt.kind in (Kind.WORD, Kind.NUM) else "(…)"
-    applied = f"{name} {after}" if after != "(…)" else f"{name}(…)"
+    nxt = following[0]
+    if nxt.kind in (Kind.WORD, Kind.NUM):
+        after = text[nxt.pos : nxt.end] or nxt.text
+        applied, times, typed_times = f"{name} {after}", f"{name}(d)·{after}", f"{name}(d) {after}"
+    else:
+        after = _bracketed_text(following, text) or "…"
+        applied, times, typed_times = f"{name}({after})", f"{name}(d)·({after})", f"{name}(d) ({after})"
     raise AmbiguousInput(
-        f"Did you mean {applied} or {name}(d)·{after}? {name}d is MATLAB's {name} of an angle in degrees, "
+        f"Did you mean {applied} or {times}? {name}d is MATLAB's {name} of an angle in degrees, "
         f"which is not read here: for {name} of {after}, type {applied} (an angle's symbol needs no degree "
         f"sign; a number of degrees does, as in {name}(30°)); for {name} of your symbol d times {after}, "
-        f"type {name}(d) {after}.",
+        f"type {typed_times}.",
         at + function.start,
-        (f"{name}({after})", f"{name}(d)*{after}"),
+        (f"{name}({after})", times.replace("·", "*")),
     )
+
+
+def _bracketed_text(tokens: list[Token], text: str) -> str | None:
+    """What is typed inside the bracket that tokens[0] opens, or None where no bracket opens or closes."""
+    if tokens[0].kind is not Kind.LPAREN:
+        return None
+    depth = 0
+    for tok in tokens:
+        depth += {Kind.LPAREN: 1, Kind.RPAREN: -1}.get(tok.kind, 0)
+        if depth == 0:
+            return text[tokens[0].end : tok.pos].strip()
+    return None
 
 
 def glued_angle_hint(word: str) -> str:

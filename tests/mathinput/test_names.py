@@ -314,7 +314,9 @@ MATLAB_DEGREE_FUNCTIONS_BESIDE_A_DECLARED_D = [
     # (typed, declared, the function, the readings asked about): with d declared these were graded as
     # sin(d)·θ
     ("m g sind θ", ("m", "g", "d", "theta"), "sin", "Did you mean sin θ or sin(d)·θ?"),
-    ("m g cosd(θ)", ("m", "g", "d", "theta"), "cos", "Did you mean cos(…) or cos(d)·(…)?"),
+    ("m g cosd(θ)", ("m", "g", "d", "theta"), "cos", "Did you mean cos(θ) or cos(d)·(θ)? "),
+    ("m g sind(θ/2)", ("m", "g", "d", "theta"), "sin", "Did you mean sin(θ/2) or sin(d)·(θ/2)? "),
+    ("m g sind(theta)", ("m", "g", "d", "theta"), "sin", "Did you mean sin(theta) or sin(d)·(theta)? "),
     ("x mgtand 30", ("x", "m", "g", "d"), "tan", "Did you mean tan 30 or tan(d)·30?"),
 ]
 
@@ -334,6 +336,7 @@ def test_matlabs_function_of_degrees_is_asked_about_where_d_is_a_symbol(
         f"{name}d is MATLAB's {name} of an angle in degrees, which is not read here" in caught.value.message
     )
     assert f"type {name}(d)" in caught.value.message
+    assert "…" not in caught.value.message  # the argument as typed, never elided
     assert typed[caught.value.position :].startswith(f"{name}d")
 
 
