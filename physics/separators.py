@@ -15,6 +15,7 @@ _SPACES = " \u00a0\u2009\u202f"
 # Arabic script's thousands separator, as an Arabic or Persian keyboard types it: `٤٬٥٨٠`.
 ARABIC_THOUSANDS = "٬"
 _NUMBER = _DIGITS + ".," + ARABIC_THOUSANDS
+_RAISED_DIGITS = "⁰¹²³⁴⁵⁶⁷⁸⁹"
 
 
 # A comma braced so that TeX sets no space after it: `4{,}58`, `1{,}500`.
@@ -89,11 +90,19 @@ def side_by_side(text: str, start: int, at: int, *, product: bool = False) -> Pa
     second = rest.split(" ")[0]
     times = f"; for a product, write {first}*{second}" if product else ""
     together = shown.replace(" ", "")
-    raised = text[end : end + 1] in ("^", *"⁰¹²³⁴⁵⁶⁷⁸⁹⁻")  # `x^2 10^3`: the digits are no one number
+    raised = text[end : end + 1] in ("^", *_RAISED_DIGITS, "⁻")  # `2 3^2`: the digits are no one number
     if raised:
         return ParseError(f"{shown}: two numbers side by side; write * between them for a product", at)
     if not second or any(c not in _NUMBER for c in together):  # `4.5e3 12`: nor these
         return ParseError(f"{shown}: two numbers side by side; write one number{times}", at)
+    exponent = shown.removeprefix(f"{first} 10 ")
+    if exponent.isdecimal() and len(exponent) <= 2 and first.replace(".", "", 1).isdecimal():
+        # `4.58 10 3`: a calculator's display with its × and ^ left out (no group of digits is two long)
+        return ParseError(
+            f"{shown}: numbers side by side. Did you mean {first}×10^{exponent}? For a power of ten, write "
+            f"{first}×10^{exponent} or {first}e{exponent}",
+            at,
+        )
     if second == "10" and shown == f"{first} 10":  # `4.58 10`: a calculator's ×10 with its exponent left out
         return ParseError(
             f"{shown}: two numbers side by side; for a power of ten, write {first}×10^ and its exponent (as "
@@ -120,11 +129,16 @@ def number_after_a_power(base: str, exponent: str, number: str, at: int) -> Pars
     side by side, the exponent and the number; saying how to write the product, or the power meant."""
     power = f"{base}^{exponent}"
     times = "*" if base[-1:] in _DIGITS else " "  # `2^2 3`: 3*2^2, never the numbers 3 2^2 side by side
-    one_exponent = exponent.lstrip("+-").isdigit() and number.isdigit()
+    whole_exponent = exponent.lstrip("+-").isdecimal()
+    if whole_exponent and any(c in number for c in "^" + _RAISED_DIGITS):  # `x^2 10^3`: times a power
+        meant = f"; for the power, write {base}^({exponent}·{number})"
+    elif whole_exponent and number.isdecimal():  # `x^2 3`: the digits of one exponent
+        meant = f"; for the power, write {base}^({exponent}{number})"
+    else:
+        meant = ""
     return ParseError(
         f"{power} {number}: the number after a power is a separate factor, not part of the exponent: for "
-        f"the product, write {number}{times}{power}"
-        + (f"; for the power, write {base}^({exponent}{number})" if one_exponent else ""),
+        f"the product, write {number}{times}{power}{meant}",
         at,
     )
 

@@ -98,6 +98,17 @@ POWERS_OF_TEN_APART = [
     ("4.58 10^3", 5, "4.58 10^3: two numbers side by side; for a power of ten, write 4.58×10^3"),
     ("4.58 10⁻³", 5, "4.58 10⁻³: two numbers side by side; for a power of ten, write 4.58×10⁻³"),
     ("4.580\u200910^-3", 6, "4.580 10^-3: two numbers side by side; for a power of ten, write 4.580×10^-3"),
+    # its ^ left out too: was "for one number, write 4.58103"
+    (
+        "4.58 10 3",
+        5,
+        "4.58 10 3: numbers side by side. Did you mean 4.58×10^3? For a power of ten, write 4.58×10^3 or 4.58e3",
+    ),
+    (
+        "6 10 23",
+        2,
+        "6 10 23: numbers side by side. Did you mean 6×10^23? For a power of ten, write 6×10^23 or 6e23",
+    ),
 ]
 
 
@@ -156,6 +167,22 @@ NUMBERS_AFTER_A_POWER = [
         "2^2 3",
         4,
         "2^2 3: the number after a power is a separate factor, not part of the exponent: for the product, write 3*2^2; for the power, write 2^(23)",
+    ),
+    # a power of ten after a power: the exponent times it, or a factor; was "2 10: two numbers side by side"
+    (
+        "x^2 10^3",
+        4,
+        "x^2 10^3: the number after a power is a separate factor, not part of the exponent: for the product, write 10^3 x^2; for the power, write x^(2·10^3)",
+    ),
+    (
+        "x^-2 10^3",
+        5,
+        "x^-2 10^3: the number after a power is a separate factor, not part of the exponent: for the product, write 10^3 x^-2; for the power, write x^(-2·10^3)",
+    ),
+    (
+        "x^2 10³",
+        4,
+        "x^2 10³: the number after a power is a separate factor, not part of the exponent: for the product, write 10³ x^2; for the power, write x^(2·10³)",
     ),
 ]
 

@@ -224,10 +224,15 @@ class Parser:
 
     def _number_after_a_power(self, factor_at: int, exponent: Token, number: Token) -> ParseError:
         """The refusal of `x^2 3`: the power typed from `factor_at` to its `exponent`, then a `number`
-        (with the fraction typed on it: `x^2 1/2`)."""
+        (with the fraction typed on it, `x^2 1/2`, or its own power, `x^2 10^3`)."""
         tokens, at = self._tokens, self._i
         end = number.end
-        if tokens[at + 1].kind is Kind.OP and tokens[at + 1].text == "/" and tokens[at + 2].kind is Kind.NUM:
+        if _is_raised(tokens[at + 1]):  # `x^2 10^3`: the number with its own power
+            self._power()
+            end = tokens[self._i - 1].end
+        elif (
+            tokens[at + 1].kind is Kind.OP and tokens[at + 1].text == "/" and tokens[at + 2].kind is Kind.NUM
+        ):
             end = tokens[at + 2].end
         caret = next(t for t in reversed(tokens[: at - 1]) if t.kind is Kind.OP and t.text == "^")
         return separators.number_after_a_power(
@@ -945,18 +950,18 @@ def _product_of(factors: list[Node]) -> Node:
 
 
 def _number_after_an_exponent(tokens: list[Token], at: int) -> bool:
-    """Whether the number at `at` follows an exponent (`x^2 3`, `x^-2 3`) and is raised by nothing itself
-    (`x^2 10^3` is two numbers side by side, as any other)."""
+    """Whether the number at `at` follows an exponent: `x^2 3`, `x^-2 3`, `x^2 10^3`."""
     before = [t.text if t.kind is Kind.OP else "" for t in tokens[max(at - 3, 0) : at - 1]]
-    after = tokens[at + 1]
-    raised = after.kind is Kind.SUP or (after.kind is Kind.OP and after.text == "^")
-    return not raised and (before[-1:] == ["^"] or (before[-2:-1] == ["^"] and before[-1] in ("+", "-")))
+    return before[-1:] == ["^"] or (before[-2:-1] == ["^"] and before[-1] in ("+", "-"))
+
+
+def _is_raised(token: Token) -> bool:
+    return token.kind is Kind.SUP or (token.kind is Kind.OP and token.text == "^")
 
 
 def _times_a_power_of_ten(tokens: list[Token], at: int) -> bool:
     """`4.58 10^3`: scientific notation with its × left out, as a calculator shows it, refused saying
     where the × goes. The number before is no exponent (`x^2 10^3` may be x^(2·10^3))."""
-    before, after = tokens[at - 2] if at >= 2 else None, tokens[at + 1]
-    raised = after.kind is Kind.SUP or (after.kind is Kind.OP and after.text == "^")
-    exponent = before is not None and before.kind is Kind.OP and before.text == "^"
-    return tokens[at].text == "10" and raised and not exponent
+    return (
+        tokens[at].text == "10" and _is_raised(tokens[at + 1]) and not _number_after_an_exponent(tokens, at)
+    )

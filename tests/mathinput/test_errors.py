@@ -76,7 +76,7 @@ PARSE_ERRORS = [
     ("(x + y)%", 7, "A % goes after a number"),
     ("12 500", 3, "12 500: two numbers side by side; for one number, write 12500 (or 12.5e3)"),
     ("x^2 3", 4, "the number after a power is a separate factor"),
-    ("x^2 10^3", 4, "two numbers side by side"),  # x^(2·10^3)? not taken for a power of ten
+    ("x^2 10^3", 4, "the number after a power is a separate factor"),  # not taken for a power of ten
     ("sin", 0, "sin needs an argument"),
     ("sin^2", 0, "sin needs an argument"),
     ("x + sin -x", 8, "brackets"),
