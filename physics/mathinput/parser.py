@@ -31,7 +31,7 @@ from physics.errors import (
 from physics.mathinput.limits import InputLimits
 from physics.mathinput.mixed_numbers import mixed_number_slip
 from physics.mathinput.powered import PoweredArgument
-from physics.mathinput.render import STUDENT_STYLE, render_text
+from physics.mathinput.render import AS_TYPED_STYLE, STUDENT_STYLE, render_text
 from physics.mathinput.tokens import Kind, Token, script_fraction
 from physics.mathinput.tree import (
     Call,
@@ -127,6 +127,10 @@ class Parser:
 
     def _typed(self, tok: Token) -> str:
         return self._source[tok.pos : tok.end] or tok.text
+
+    def _typed_since(self, start: int) -> str:
+        """The text typed from `start` to the end of the last token read."""
+        return self._source[start : self._tokens[self._i - 1].end]
 
     def _enter(self, tok: Token) -> None:
         self._depth += 1
@@ -333,22 +337,22 @@ class Parser:
         """The refusal of the division at items[k], with a reading for each place its divisor may end
         (`ends`, by choice); a run too long to list each is refused with two, as `partial`."""
         item = items[k]
-        numerator = render_text(Product(first, tuple((i.op, i.node) for i in items[:k])), STUDENT_STYLE)
+        numerator = render_text(Product(first, tuple((i.op, i.node) for i in items[:k])), AS_TYPED_STYLE)
         partial = len(ends) > _MAX_DIVISOR_READINGS
         readings: list[str] = []
         for divisor_end in ends[:2] if partial else ends:
             divisor = Product(item.node, tuple(("*", i.node) for i in items[k + 1 : divisor_end]))
             rest = [i.node for i in items[divisor_end : ends[1]]]
             after = (
-                "·" + render_text(Product(rest[0], tuple(("*", n) for n in rest[1:])), STUDENT_STYLE)
+                "·" + render_text(Product(rest[0], tuple(("*", n) for n in rest[1:])), AS_TYPED_STYLE)
                 if rest
                 else ""
             )
             if divisor_end == k + 1:  # (a/b)·c
                 numerator_product = Product(first, tuple((i.op, i.node) for i in items[: k + 1]))
-                readings.append(f"({render_text(numerator_product, STUDENT_STYLE)}){after}")
+                readings.append(f"({render_text(numerator_product, AS_TYPED_STYLE)}){after}")
             else:
-                readings.append(f"{numerator}/({render_text(divisor, STUDENT_STYLE)}){after}")
+                readings.append(f"{numerator}/({render_text(divisor, AS_TYPED_STYLE)}){after}")
         # Asked in the order the divisor grows: (a/b)·c·d, a/(b·c)·d, a/(b·c·d)
         asked = [readings[0], *readings[2:], readings[1]]
         return AmbiguousDivision(
@@ -377,22 +381,23 @@ class Parser:
             node = self._postfixes(node)
             after = self._tokens[self._i]
         if (after.kind is Kind.OP and after.text == "^") or after.kind is Kind.SUP:
-            return self._raised(node)
+            return self._raised(node, tok.pos)
         return node
 
-    def _raised(self, node: Node) -> Node:
-        """`node` with the powers written after it (`^2`, `**2`, `²`)."""
+    def _raised(self, node: Node, start: int) -> Node:
+        """`node`, typed from `start`, with the powers written after it (`^2`, `**2`, `²`)."""
         while True:
             tok = self._tokens[self._i]
             if tok.kind is Kind.OP and tok.text in "^":
                 self._advance()
                 self._enter(tok)
                 exponent = self._exponent()
-                if node == Const("e") and self._word_glued_to(exponent):
-                    exponent = self._settle_exponent(node, exponent, tok, whole_word=True)
-                elif self._fraction_glued_to(exponent):
-                    exponent = self._settle_exponent(node, exponent, tok, whole_word=False)
-                node = Power(node, exponent, tok.pos)
+                whole_word = node == Const("e") and self._word_glued_to(exponent)
+                if whole_word or self._fraction_glued_to(exponent):
+                    exponent = self._settle_exponent(node, exponent, tok, whole_word=whole_word)
+                    node = Power(node, exponent, tok.pos, self._typed_since(start))
+                else:
+                    node = Power(node, exponent, tok.pos)
                 self._leave()
             elif tok.kind is Kind.SUP:
                 self._advance()
@@ -457,7 +462,7 @@ class Parser:
         op = self._glued_factor() if whole_word else self._glued_fraction()
         while op is not None:
             tok = self._advance() if op == "/" else self._tokens[self._i]
-            items.append(_Item(op, self._raised(self._postfixed()), tok, op == "*"))
+            items.append(_Item(op, self._raised(self._postfixed(), tok.pos), tok, op == "*"))
             op = self._glued_factor() if whole_word else None
         negative = isinstance(exponent, Neg)
         first = exponent.operand if isinstance(exponent, Neg) else exponent
@@ -546,7 +551,7 @@ class Parser:
         op = self._argument_follower(root)
         while op is not None:
             tok = self._advance() if op == "/" else self._tokens[self._i]
-            items.append(_Item(op, self._raised(self._postfixed()), tok, op == "*"))
+            items.append(_Item(op, self._raised(self._postfixed(), tok.pos), tok, op == "*"))
             op = self._argument_follower(root)
         if choice == 1:
             first, items = self._settle_ambiguous_divisions(argument, items)
@@ -649,16 +654,18 @@ class Parser:
         if tok.kind is Kind.SQRT:
             self._advance()
             radicand = self._argument(tok, tok.text, bare_function=False)[0]
+            settled: str | None = None
             if self._divisor_glued_to(radicand, root=True):  # `√m/k`: √m/k or √(m/k)?
                 radicand = self._settle_argument(tok, tok.text, radicand, None, root=True)
+                settled = self._typed_since(tok.pos)
             index = ROOT_SIGNS[tok.text]
             if index == 2:
-                return Call("sqrt", radicand, tok.pos)
+                return Call("sqrt", radicand, tok.pos, settled)
             # `∛x` is x^(1/3), as `\sqrt[3]{x}` reads
             reciprocal = Product(
                 Num("1", Fraction(1), True), (("/", Num(str(index), Fraction(index), True)),)
             )
-            return Power(Group(radicand), Group(reciprocal), tok.pos)
+            return Power(Group(radicand), Group(reciprocal), tok.pos, settled)
         if tok.kind is Kind.LPAREN:
             return Group(self._bracketed())
         if tok.kind is Kind.BAR:
@@ -725,14 +732,16 @@ class Parser:
             func, power = INVERSES[func], None
         argument, outside = self._argument(func_tok, typed, bare_function=bare_function)
         root = func == "sqrt"
+        settled: str | None = None
         if outside is None and self._divisor_glued_to(
             argument, root=root
         ):  # `sin θ/2`: sin(θ)/2 or sin(θ/2)?
             argument = self._settle_argument(func_tok, func, argument, power, root=root)
-        node: Node = Call(func, argument, func_tok.pos)
-        if outside is not None:
-            node = Power(node, outside.exponent, outside.pos)
-        return Power(node, power, func_tok.pos) if power is not None else node
+            settled = self._typed_since(func_tok.pos)
+        if power is not None:
+            return Power(Call(func, argument, func_tok.pos), power, func_tok.pos, settled)
+        node: Node = Call(func, argument, func_tok.pos, settled)
+        return Power(node, outside.exponent, outside.pos) if outside is not None else node
 
     def _refuse_exp_raised(self, caret: Token) -> None:
         """`exp^(-t/τ)`, e's power written with exp's name, as WeBWorK and calculators write e^x: as typed
@@ -792,7 +801,7 @@ class Parser:
             self._enter(tok)
             start = self._i
             base = self._postfixed()
-            factors = [self._raised(base)]
+            factors = [self._raised(base, tok.pos)]
             # The word typed without a space is the argument: `cos ωt`, `sin kx`, `√2gh`, `sin 2πft`
             # (`word_ends` may end it earlier: `sinθmgL` as sin(θ)·m·g·L, where only that has a dimension).
             ends = self._word_ends.get(func_tok.pos) if self._word_ends else None
@@ -803,7 +812,7 @@ class Parser:
                 if ends is not None and len(factors) >= ends:
                     break
                 base = self._postfixed()
-                factors.append(self._raised(base))
+                factors.append(self._raised(base, follower.pos))
             self._leave()
             if len(factors) > 1 and ends is None and func_tok.kind is Kind.FUNC and func_tok.text != "sqrt":
                 self.long_words.append((func_tok.pos, len(factors)))

@@ -2,7 +2,8 @@
 
 Text is in the contract's style (`-m*g*sin(theta)/(M + m*sin(theta)**2)`: explicit `*`, `**`, declared
 spellings, only the parentheses the grouping needs) and parses back to the same expression; LaTeX uses
-`\\frac`, `\\sin`, `\\theta`. STUDENT_STYLE (`^`, `·`) writes the readings of an ambiguous answer.
+`\\frac`, `\\sin`, `\\theta`. STUDENT_STYLE (`^`, `·`) writes the readings of an ambiguous answer, and
+AS_TYPED_STYLE those of a division whose other groupings were read one way to find it.
 """
 
 from __future__ import annotations
@@ -41,10 +42,13 @@ class TextStyle:
     # exp(1) and upright, \mathrm{e}, so that neither reads as the symbol.
     euler: str = "e"
     euler_latex: str = "e"
+    # A call or a power whose reach was a choice shown as typed (`sin x/2`), not as the reading tried.
+    as_typed: bool = False
 
 
 CONTRACT_STYLE = TextStyle(power="**", times="*")
 STUDENT_STYLE = TextStyle(power="^", times="·")
+AS_TYPED_STYLE = TextStyle(power="^", times="·", as_typed=True)
 _BESIDE_SYMBOL_E = TextStyle(power="**", times="*", euler="exp(1)", euler_latex=r"\mathrm{e}")
 
 
@@ -105,7 +109,10 @@ def _pieces(node: Node, style: TextStyle) -> _Pieces:
     if kind is Call:
         func = node.func  # type: ignore[union-attr]
         arg = _pieces(node.arg, style)  # type: ignore[union-attr]
-        return f"{func}({arg[0]})", _ATOM, _latex_call(func, arg, None, style), _ATOM
+        latex = _latex_call(func, arg, None, style)
+        if style.as_typed and node.typed is not None:  # type: ignore[union-attr]
+            return node.typed, _PRODUCT, latex, _ATOM  # type: ignore[union-attr]
+        return f"{func}({arg[0]})", _ATOM, latex, _ATOM
     if kind is Neg:
         text, text_binding, latex, latex_binding = _pieces(node.operand, style)  # type: ignore[union-attr]
         neg = _is_neg(node.operand)  # type: ignore[union-attr]
@@ -176,6 +183,8 @@ def _power(node: Power, style: TextStyle) -> _Pieces:
     else:
         text, binding, base_latex, base_latex_binding = _pieces(node.base, style)
         latex = _paren(base_latex, base_latex_binding < _ATOM) + f"^{{{exponent[2]}}}"
+    if style.as_typed and node.typed is not None:
+        return node.typed, _PRODUCT, latex, _POWER
     text = _wrap(text, binding < _ATOM) + style.power + _wrap(exponent[0], exponent[1] < _POWER)
     return text, _POWER, latex, _POWER
 

@@ -58,6 +58,7 @@ class Power:
     base: Node
     exponent: Node
     pos: int = field(default=0, compare=False)  # of the ^ (for size errors)
+    typed: str | None = field(default=None, compare=False)  # as Call.typed: `e^2x`, `(2gh)^1/2`
 
 
 @dataclass(slots=True, unsafe_hash=True)
@@ -65,6 +66,9 @@ class Call:
     func: str  # canonical function name (vocabulary.FUNCTIONS values)
     arg: Node
     pos: int = field(default=0, compare=False)
+    # As typed (`sin x/2`), where how far the argument reaches was a choice, not typed: a division's
+    # question shows it so, not as the reading tried.
+    typed: str | None = field(default=None, compare=False)
 
 
 @dataclass(slots=True, unsafe_hash=True)

@@ -200,14 +200,22 @@ DIVISIONS = [
     ("√2gh/(1+I/mr²)", "sqrt(2*g*h/(1 + I/(m*r**2)))", ROLL, ("(I/m)·r^2", "I/(m·r^2)")),
     # beside another grouping the dimensions cannot settle (p, or every symbol, has no dimension; more
     # groupings than the budget): the division is asked about, not the other grouping
-    ("e^2x p^2/2m", "exp(2*x)*p^2/(2*m)", UNDIMENSIONED_P, ("(e^(2·x)·p^2/2)·m", "e^(2·x)·p^2/(2·m)")),
+    # (the other grouping shown as typed, not as the reading tried to find the division)
+    ("e^2x p^2/2m", "exp(2*x)*p^2/(2*m)", UNDIMENSIONED_P, ("(e^2x·p^2/2)·m", "e^2x·p^2/(2·m)")),
     (
         "e^2x p^2/2m",
         "exp(2*x)*p^2/(2*m)",
         (SymbolDecl("p"), SymbolDecl("m"), SymbolDecl("x")),
-        ("(e^(2·x)·p^2/2)·m", "e^(2·x)·p^2/(2·m)"),
+        ("(e^2x·p^2/2)·m", "e^2x·p^2/(2·m)"),
     ),
-    ("sin x/2 p^2/2m", "sin(x/2)*p^2/(2*m)", UNDIMENSIONED_P, ("(sin(x/2)·p^2/2)·m", "sin(x/2)·p^2/(2·m)")),
+    ("sin x/2 p^2/2m", "sin(x/2)*p^2/(2*m)", UNDIMENSIONED_P, ("(sin x/2·p^2/2)·m", "sin x/2·p^2/(2·m)")),
+    ("√x/2 p^2/2m", "sqrt(x/2)*p^2/(2*m)", UNDIMENSIONED_P, ("(√x/2·p^2/2)·m", "√x/2·p^2/(2·m)")),
+    (
+        "p^2/2m sin x/2",
+        "sin(x/2)*p^2/(2*m)",
+        UNDIMENSIONED_P,
+        ("(p^2/2)·m·sin x/2", "p^2/(2·m)·sin x/2", "p^2/(2·m·sin x/2)"),
+    ),
     (" + ".join(["A e^-ωt"] * 3 + ["A x/y z"]), "3*A*exp(-omega*t)", DECAY_XYZ, ("(A·x/y)·z", "A·x/(y·z)")),
     (" + ".join(["A e^-ωt"] * 4 + ["A x/y z"]), "4*A*exp(-omega*t)", DECAY_XYZ, ("(A·x/y)·z", "A·x/(y·z)")),
     (" + ".join(["A e^-ωt"] + ["A x/y z"] * 3), "A*exp(-omega*t)", DECAY_XYZ, ("(A·x/y)·z", "A·x/(y·z)")),
