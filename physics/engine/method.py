@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import dataclasses
 from abc import ABC, abstractmethod
-from collections.abc import Sequence
+from collections.abc import Iterable, Sequence
 from functools import cached_property, lru_cache
 
 import sympy
@@ -74,6 +74,14 @@ class Method(ABC):
             symbols = tuple(sorted(str(s) for s in self._printed))
             self.steps.append(Step(title, latex, kind, written, symbols))
         self._printed = set()
+
+    def adopt(self, steps: Iterable[Step]) -> None:
+        """Log the steps of this method worked at another state as they were (once per title): its
+        equations stay numbered and its solve keeps its unknowns, so the page counts them."""
+        for step in steps:
+            if step.title not in self._logged:
+                self._logged.add(step.title)
+                self.steps.append(step)
 
     def named(self, coordinate: str) -> str:
         """A coordinate as the solution writes it, in a title: `$s$`."""

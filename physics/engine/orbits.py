@@ -35,6 +35,7 @@ from physics.engine.model import EFFECTIVE_KINDS, ORBIT_KINDS, Model, Quantity, 
 from physics.engine.newton import NewtonMethod
 from physics.engine.proof import domain_points
 from physics.engine.quantity_table import derives
+from physics.engine.results import StepKind
 from physics.errors import DerivationError
 
 FRAME = "frame"  # `revolution_period: frame`: one turn of the model's rotating frame
@@ -158,6 +159,9 @@ def _steady_rate(method: Method, target: str) -> tuple[sympy.Expr, Method]:
     state.update({c.velocity: sympy.Integer(0) for c in others})
     state[turning.velocity] = RATE
     solver = restated(method, dataclasses.replace(model, state=tuple(state.items())))
+    # the rate sought is the turning coordinate's rate, and its steps are read as such
+    turning_tex = method.tex(turning.velocity)
+    solver.mech.__dict__["latex_names"] = {**method.mech.latex_names, RATE: turning_tex}
     spin = tidy.simplify(solver.acceleration(target))
     if spin != 0:
         raise DerivationError(
@@ -186,11 +190,19 @@ def _steady_rate(method: Method, target: str) -> tuple[sympy.Expr, Method]:
                 f"no steady rotation of {target}: at {target}' = {typed_text(rate)}, {c.name}'' = {typed_text(a)} does not vanish",
                 quantity=target,
             )
-    for step in solver.steps:
-        method.step(step.title, step.latex)
-    turning_tex = method.tex(turning.velocity)
+    rate_name = {RATE.name: str(turning.velocity)}
+    # a solve at the steady rate is not the method's solve at the state (a force asked for logs that)
+    steady = f", for a steady rate ${turning_tex}$"
+    method.adopt(
+        dataclasses.replace(
+            step,
+            title=step.title + (steady if step.kind is StepKind.SOLVE else ""),
+            symbols=tuple(sorted({rate_name.get(s, s) for s in step.symbols})),
+        )
+        for step in solver.steps
+    )
     method.step(
-        f"Steady rotation of {target}",
+        f"Steady rotation of {method.named(target)}",
         method.tex(sympy.Eq(first.acceleration, acceleration.subs(RATE, turning.velocity)))
         + rf" = 0 \Rightarrow \omega = {turning_tex} = "
         + method.tex(rate),
@@ -318,8 +330,7 @@ def _circular_orbit(method: Method, target: str) -> tuple[sympy.Expr, sympy.Expr
     r = model.coordinate(target).symbol
     solver = restated(method, conserved_state(method, target))
     radial = tidy.simplify(solver.acceleration(target))
-    for step in solver.steps:
-        method.step(step.title, step.latex)
+    method.adopt(solver.steps)
     roots = tidy.solve(radial, r)
     slope = sympy.diff(radial, r)
     stable = [

@@ -13,6 +13,8 @@ import sympy
 from physics.answer_text import typed_text
 from physics.engine import depth, derive, load_model
 from physics.engine.model import QuantityKind
+from physics.engine.notation import audit
+from physics.engine.results import StepKind
 from physics.errors import DerivationError, SpecErrors
 
 SYMBOLS = {n: sympy.Symbol(n, positive=True) for n in ("m1", "m2", "g", "R", "l", "mu", "k", "v", "t")}
@@ -238,6 +240,28 @@ def test_conical_pendulum_in_an_accelerating_lift_feels_g_plus_a() -> None:
     assert sympy.simplify(derived["period"] - 2 * sympy.pi * sympy.sqrt(L * sympy.cos(ALPHA) / (G + A))) == 0
     assert sympy.simplify(derived["tension"] - M1 * (G + A) / sympy.cos(ALPHA)) == 0
     assert len(derivation.agreement["period"]) >= 2 and {"period", "tension"} <= set(derivation.simulation)
+
+
+LIFT = _moving_pivot("L - sqrt(x_bob^2 + (y_bob - A*t^2/2)^2 + z_bob^2)")
+# (numbered equations, unknowns) each method's worked solution counts: the page's comparison table
+LIFT_COUNTS = {"newton": (4, 4), "frames": (4, 4), "dalembert": (2, 2), "lagrange": (3, 3)}
+
+
+def test_the_lift_cones_worked_solutions_count_the_equations_and_unknowns_they_solve() -> None:
+    """The steady rate is found by each method at another state: its equations stay numbered and its
+    solve keeps its unknowns (T and the accelerations), read with the rate as phi', not an engine name."""
+    derivation = derive(load_model(LIFT, CONE_SYMBOLS))
+    counted = {}
+    for report in derivation.methods:
+        unknowns = {u for step in report.steps for u in step.unknowns}
+        equations = sum(step.kind is StepKind.EQUATION for step in report.steps)
+        counted[report.name] = (equations, len(unknowns))
+        assert not any("steady" in step.latex for step in report.steps), report.name
+    assert {name: counted[name] for name in LIFT_COUNTS} == LIFT_COUNTS
+    assert audit(load_model(LIFT, CONE_SYMBOLS), derivation.notation, derivation.methods) == []
+    newton = next(r for r in derivation.methods if r.name == "newton")
+    solved = [step.latex for step in newton.steps if step.kind is StepKind.SOLVE]
+    assert any(r"T = \frac{m_{1} \left(A + g\right)}{\cos{\left(\alpha \right)}}" in s for s in solved)
 
 
 def test_a_string_gap_left_at_the_fixed_pivot_under_a_moving_bob_is_refused_at_the_gap() -> None:
