@@ -40,6 +40,7 @@ SHORT = {
 }
 _MASS_OF = re.compile(r"^(?:the )?mass of (?:the |a |an )?(.+)$", re.IGNORECASE)
 _VECTORIAL = frozenset({"newton", "frames"})
+_SINGULAR = frozenset({"dalembert"})  # its title names one principle: "d'Alembert's principle reaches"
 
 
 @dataclass(frozen=True)
@@ -359,7 +360,7 @@ def _advice(methods: Sequence[MethodInfo]) -> str:
     quickest = min(motion, key=lambda m: (m.equations + m.unknowns, len(m.steps)))
     most = max(motion, key=lambda m: m.equations)
     said = [
-        f"**{quickest.title}** reach the answer with the least algebra here: {quickest.equations} "
+        f"**{quickest.title}** {_verb([quickest], 'reach', 'reaches')} the answer with the least algebra here: {quickest.equations} "
         f"equation{'s' if quickest.equations != 1 else ''} in {quickest.unknowns} unknown"
         f"{'s' if quickest.unknowns != 1 else ''}"
         + (
@@ -369,10 +370,10 @@ def _advice(methods: Sequence[MethodInfo]) -> str:
         )
         + "."
     ]
-    free = [m.title for m in methods if not m.constraint_forces]
+    free = [m for m in methods if not m.constraint_forces]
     if free:
         said.append(
-            f"{_join(free)} never name{'s' if len(free) == 1 else ''} a constraint force: the constraints "
+            f"{_join([m.title for m in free])} never {_verb(free, 'name', 'names')} a constraint force: the constraints "
             "are built into the coordinates (or do no work), so the motion comes without them."
         )
     giving = [m for m in methods if m.constraint_forces]
@@ -380,10 +381,15 @@ def _advice(methods: Sequence[MethodInfo]) -> str:
         vectorial = next(m for m in giving if m.name in _VECTORIAL)
         said.append(
             f"A force the problem asks for ({_join([f'${f}$' for f in vectorial.constraint_forces])}) "
-            f"comes directly from {vectorial.title}, which has it as an unknown; the scalar methods need "
+            f"comes directly from {vectorial.title}, which have it as an unknown; the scalar methods need "
             "one more equation of Newton's per force once they have the motion."
         )
     return " ".join(said)
+
+
+def _verb(subject: Sequence[MethodInfo], plural: str, singular: str) -> str:
+    """The verb agreeing with the methods' titles as its subject: laws reach, one principle reaches."""
+    return singular if len(subject) == 1 and subject[0].name in _SINGULAR else plural
 
 
 def _join(items: Sequence[str]) -> str:
