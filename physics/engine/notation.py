@@ -264,7 +264,7 @@ def _coordinate_words(name: str, model: Model) -> str:
     if not direction:
         return f"the angle «{body.name}» has turned through"
     if all(d.free_symbols & {c.symbol} for d in direction.values() if d != 0):
-        # a model with z is drawn with its bodies side by side: its figure shows no such angle
+        # a model with z is drawn from the side, or its bodies side by side: no figure marks the coordinate
         seen = "" if "z" in direction else " (see the figure)"
         return f"an angle that sets where «{body.name}» is{seen}"
     says: dict[tuple[int, ...], str] = {

@@ -207,12 +207,29 @@ def _contact_labels(model: Model, drawn: dict[_Source, str]) -> dict[_Source, st
     return labels
 
 
-def _contacts(
-    model: Model, body_name: str, values: Values, drawn: dict[sympy.Symbol, float]
-) -> list[tuple[_Source, str, tuple[float, float]]]:
-    """The constraint and friction forces on one body in the configuration `drawn`, each with its
-    source, its letter and direction."""
-    place: dict[sympy.Symbol, float] = {}
+def _across_the_page(model: Model, body_name: str, given: Mapping[str, float]) -> bool:
+    """Whether the diagram, of the x–y plane, would leave out part of a force on a body on z: the body is
+    off the page (z ≠ 0) where the scene draws it, a constraint pulls it along z there, or a potential
+    (read in the x–y plane only) acts on it."""
+    body = model.body(body_name)
+    if not any(axis == depth.DEPTH for axis, _ in body.position):
+        return False
+    if any(body_name in p.bodies for p in model.potentials):
+        return True
+    values = Values(model, given)
+    place = _place(model, values, drawn_configuration(model, dict(given)))
+    z = model.cartesian_symbol(f"{depth.DEPTH}_{body_name}")
+    try:
+        return abs(place[z]) > 1e-9 or any(
+            abs(_slope(c, z, place, values)) > 1e-9 for c in model.constraints if z in c.gap.free_symbols
+        )
+    except (KeyError, TypeError, ValueError, ZeroDivisionError):  # not defined where it is drawn
+        return True
+
+
+def _place(model: Model, values: Values, drawn: dict[sympy.Symbol, float]) -> dict[sympy.Symbol, float]:
+    """Every body's Cartesian coordinates (and the time) where the configuration `drawn` puts them."""
+    place = dict(drawn)  # the time too: a gap that moves with it is taken where the scene draws it
     for other in model.bodies:
         for name, expr in [
             *((f"{axis}_{other.name}", e) for axis, e in other.position),
@@ -222,6 +239,15 @@ def _contacts(
                 place[model.cartesian_symbol(name)] = values.number(expr, drawn)
             except (TypeError, ValueError, ZeroDivisionError):
                 continue
+    return place
+
+
+def _contacts(
+    model: Model, body_name: str, values: Values, drawn: dict[sympy.Symbol, float]
+) -> list[tuple[_Source, str, tuple[float, float]]]:
+    """The constraint and friction forces on one body in the configuration `drawn`, each with its
+    source, its letter and direction."""
+    place = _place(model, values, drawn)
     found: list[tuple[_Source, str, tuple[float, float]]] = []
     held: list[tuple[Constraint, tuple[float, float]]] = []  # kind "other": a wire, a pivot, a grip
     names = dict(model.cartesian)
@@ -385,8 +411,7 @@ def free_body_figure(model: Model, body_name: str, given: Mapping[str, float], *
     body = model.body(body_name)
     label = body_label(body, model)
     half = BLOCK / 2
-    # the diagram is in the x–y plane: a force on a body moving along z would be drawn without its z part
-    across = any(axis == depth.DEPTH for axis, _ in body.position)
+    across = _across_the_page(model, body_name, given)
     forces = [] if across else body_forces(model, body_name, given)
     arms = _drawn_arms(forces)
     if body.angle is not None:  # a rigid body: a wheel, each force drawn where its line of action passes
@@ -442,5 +467,5 @@ def free_body_figure(model: Model, body_name: str, given: Mapping[str, float], *
         said.append(f"{force.label} at {degrees}° from the +x axis")
     description = f"Forces on {label}: " + ("; ".join(said) if said else "none") + "."
     if across:
-        description = f"Forces on {label}: not drawn, as {label} moves along z, across the page."
+        description = f"Forces on {label}: not drawn, as where the problem is drawn {label} is off the page or pulled across it (along z)."
     return canvas.svg(f"Free-body diagram: {title}, {label}", description)

@@ -8,6 +8,7 @@ import math
 
 import sympy
 
+from physics.engine.depth import DEPTH
 from physics.engine.model import AuthoredElement, Body, Constraint, Model
 from physics.figures.chain import draw_pendulum_chain
 from physics.figures.figure import BLOCK, Figure, NotNumeric, Values, body_label
@@ -58,16 +59,49 @@ def _turning_rate(model: Model, body: Body) -> sympy.Expr | None:
     return frame.rate
 
 
+def _state_of(model: Model, body: Body) -> sympy.Expr | None:
+    """The state's value of the pendulum's angle from the downward vertical, when the state gives it."""
+    state = dict(model.state)
+    return next(
+        (state[c.symbol] for c in model.coordinates if c.symbol in state and _moves(body, c.symbol)), None
+    )
+
+
+def _moves(body: Body, symbol: sympy.Symbol) -> bool:
+    return any(expr.has(symbol) for _, expr in body.position)
+
+
 def _state_angle(model: Model, body: Body, values: Values) -> float | None:
     """The pendulum's angle from the downward vertical at the model's state, when the state gives it."""
-    state = dict(model.state)
-    for c in model.coordinates:
-        if c.symbol in state and any(expr.has(c.symbol) for _, expr in body.position):
-            try:
-                return values.number(state[c.symbol])
-            except NotNumeric:
-                return None
-    return None
+    value = _state_of(model, body)
+    try:
+        return None if value is None else values.number(value)
+    except NotNumeric:
+        return None
+
+
+def _lift(model: Model, body: Body, string: Constraint) -> sympy.Expr | None:
+    """The upward acceleration of a support moving up and down in the time (a lift's ceiling), else None."""
+    time = model.time
+    if time is None or time not in string.gap.free_symbols:
+        return None
+    along = {axis: sympy.diff(expr, time, 2) for axis, expr in body.position}
+    rise = along.get("y", sympy.Integer(0))
+    return rise if rise != 0 and all(a == 0 for axis, a in along.items() if axis != "y") else None
+
+
+def _draw_lift(figure: Figure, reach: float, length: float, rise: sympy.Expr) -> None:
+    """The lift's car round the pendulum, hung from its ceiling at the origin, and its acceleration."""
+    canvas = figure.canvas
+    half, floor = reach + 1.2, -length - 1.4
+    canvas.ground((-half, 0.0), (half, 0.0), below=False)
+    canvas.polyline([(-half, 0.0), (-half, floor), (half, floor), (half, 0.0)], width=0.06)
+    canvas.arrow((half + 0.6, floor / 2 - 0.7), (half + 0.6, floor / 2 + 0.7), width=0.05)
+    canvas.text((half + 1.0, floor / 2), _name(rise, "A"), anchor="start")
+
+
+def _name(expr: sympy.Expr, otherwise: str) -> str:
+    return symbol_label(expr.name) if isinstance(expr, sympy.Symbol) else otherwise
 
 
 def _swung_to(model: Model, body: Body, angle: float, values: Values) -> dict[sympy.Symbol, float]:
@@ -114,6 +148,13 @@ def draw_pendulum(
     noun, support = pendulum_words(body, string)
     rate = _turning_rate(model, body)
     state_angle = _state_angle(model, body, values)
+    # a bob on z goes round a cone, seen from the side where it crosses the page, at the state's angle
+    cone = any(axis == DEPTH for axis, _ in body.position) and state_angle is not None
+    lift = _lift(model, body, string) if cone else None
+    if cone and state_angle is not None:
+        given = _state_of(model, body)
+        angle_symbol = given if isinstance(given, sympy.Symbol) else angle_symbol
+        state_angle = figure.readable_angle(state_angle, angle_symbol)
     # Drawn at the state's angle when the state gives one (a ball at the top of its circle, a bob
     # passing the bottom), else swung aside to show that it swings. In a turning frame the state is the
     # cone's angle that the problem asks for, which the figure does not give away.
@@ -125,6 +166,8 @@ def draw_pendulum(
     pivot = (0.0, 0.0)
     if pivot_body is not None:
         _cart(figure, pivot, body_label(pivot_body, model))
+    elif lift is not None:
+        _draw_lift(figure, length * abs(math.sin(angle)), length, lift)
     elif truck is not None:
         _cart(figure, pivot, "")
         canvas.arrow((-0.7, -5.45), (0.7, -5.45), width=0.05)
@@ -142,12 +185,12 @@ def draw_pendulum(
             (length * math.sin(i * math.pi / 24), -length * math.cos(i * math.pi / 24)) for i in range(49)
         ]
         canvas.polyline(circle, dashed=True, width=0.03)
-    if rate is not None:  # the horizontal circle the bob goes round, seen obliquely, and the turning rate
+    if rate is not None or cone:  # the horizontal circle the bob goes round, seen obliquely, and its rate
         ring = [(raised[0] * math.cos(i * math.pi / 24), raised[1] + 0.3 * raised[0] * math.sin(i * math.pi / 24))
                 for i in range(49)]  # fmt: skip
         canvas.polyline(ring, dashed=True, width=0.03)
         canvas.arc((0.0, -length - 0.3), 0.5, math.radians(200), math.radians(340))
-        if isinstance(rate, sympy.Symbol):
+        if rate is not None and isinstance(rate, sympy.Symbol):
             canvas.text((0.8, -length - 0.5), symbol_label(rate.name), anchor="start")
     canvas.line(pivot, raised, width=0.04)
     if noun == "block":
@@ -190,6 +233,16 @@ def draw_pendulum(
             f"A {noun} {name} on {held} is whirled in a vertical circle (dashed) about the {support}'s "
             "fixed end; it is drawn at the top"
         )
+    elif cone:
+        where = "a fixed point"
+        if lift is not None:
+            where = f"the ceiling of a lift that accelerates upwards at {_name(lift, 'a constant rate')} (the arrow)"
+        slant = f" at the angle {symbol_label(angle_symbol.name)}" if angle_symbol is not None else ""
+        said = (
+            f"Seen from the side, z out of the page: a {noun} {name} hangs from {where} on {held} and goes "
+            f"round a horizontal circle (dashed), the {support}{slant} from the vertical (dashed) through "
+            "that point sweeping out a cone about it"
+        )
     elif rate is not None:
         at = f" at the rate {symbol_label(rate.name)}" if isinstance(rate, sympy.Symbol) else ""
         said = (
@@ -205,7 +258,7 @@ def draw_pendulum(
         draw_bullet(figure, (-3.2, -length), 1, mass, -0.45)
         said += "; a bullet" + (f" {symbol_label(mass.name)}" if isinstance(mass, sympy.Symbol) else "")
         said += " flies into it horizontally at its lowest point"
-    if angle_symbol is not None:
+    if angle_symbol is not None and not cone:
         said += f", and it swings up to the angle {symbol_label(angle_symbol.name)} from the vertical"
     figure.say(said + ".")
 

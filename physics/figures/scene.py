@@ -4,9 +4,9 @@ An impact section sets the picture whatever holds its bodies (impact.py). Otherw
 with elements is drawn by the picture family of its leading element kind (DRAWERS: a pendulum hangs
 from whatever else there is, an incline carries the springs and pulleys on it, ...), from the elements'
 own fields. A hand-written low-level model, or elements in a combination no family draws, is recognised
-from its sections (recognise.py). A figure that cannot be drawn because a parameter has no number at
-the figure's values is drawn as its bodies side by side, with the reason kept; any other failure is a
-bug, and is raised.
+from its sections (recognise.py); a model with a body on z is seen from the side (side_view.py). A
+figure that cannot be drawn because a parameter has no number at the figure's values is drawn as its
+bodies side by side, with the reason kept; any other failure is a bug, and is raised.
 
 Angles are labelled with the problem's symbol that sets them, bodies with their mass symbols. Values
 are the student's (angles set the drawing's slopes) or typical ones; sizes are the figure's own.
@@ -23,6 +23,7 @@ from physics.figures.figure import Figure, NotDrawable, Values
 from physics.figures.impact import draw_impact
 from physics.figures.path import draw_row
 from physics.figures.recognise import draw_recognised
+from physics.figures.side_view import draw_side_view
 
 # Draws the picture of a model's elements, or returns False (before drawing) for a combination it
 # does not know.
@@ -53,8 +54,10 @@ def compose(model: Model, given: Mapping[str, float]) -> Figure:
 
 
 def _draw(figure: Figure, model: Model, values: Values) -> None:
-    if depth.uses_depth(model.bodies):  # every picture here is of the x–y plane: z would be dropped
-        raise NotDrawable("a body moves along z, across the page: the bodies are drawn side by side")
+    if depth.uses_depth(model.bodies):  # every picture here is of the x–y plane: seen from the side
+        figure.drawn_from = "low-level model"
+        draw_side_view(figure, model, values)
+        return
     if model.impact is not None:
         figure.drawn_from = "impact"
         draw_impact(figure, model, values)

@@ -1,23 +1,67 @@
-"""A model with a body on z is drawn plainly: every picture is of the x–y plane, and z would be dropped."""
+"""A model with a body on z is drawn from the side (the x–y plane, z out of the page) where its bodies
+are in the page as drawn: a conical pendulum at phi = 0, with its string, angle and circle. Anything
+else with z is drawn as its bodies side by side, and a force the side view would cut is not drawn."""
 
 from __future__ import annotations
 
+import copy
+import re
+
+import pytest
+
 from physics.engine import load_model
-from physics.figures import free_body_figure
+from physics.figures import free_body_figure, model_figure
 from physics.figures.scene import compose
-from tests.engine.test_depth import PUCK, SYMBOLS
+from tests.engine.test_depth import CONE, CONE_SYMBOLS, LIFT, PUCK, SYMBOLS
+
+VALUES = {"m1": 0.5, "L": 1.2, "alpha": 0.6, "A": 2.0, "g": 9.81}
+# from the pivot at the origin down to the bob at +x (SVG's y points down)
+STRING = re.compile(r'<line x1="0\.000" y1="-?0\.000" x2="[1-9][\d.]*" y2="[1-9][\d.]*" stroke="#1b1b1b"')
+ARROW = re.compile(r'<line [^>]*stroke="#a11111"')
 
 
-def test_a_model_with_z_is_drawn_as_its_bodies_side_by_side() -> None:
-    figure = compose(load_model(PUCK, SYMBOLS), {})
-    assert figure.fallback is not None and "along z" in figure.fallback
-    assert "The bodies of the problem" in " ".join(figure.said)
+@pytest.mark.parametrize(
+    ("model", "support"),
+    [(CONE, "a fixed point"), (LIFT, "the ceiling of a lift that accelerates upwards at A (the arrow)")],
+    ids=["cone", "cone-in-a-lift"],
+)
+def test_a_conical_pendulum_on_z_is_drawn_from_the_side_with_its_string_angle_and_circle(
+    model: dict[str, object], support: str
+) -> None:
+    svg = model_figure(load_model(model, CONE_SYMBOLS), VALUES, title="Cone")
+    assert STRING.search(svg), "the string from the pivot to the bob, drawn aside to +x at phi = 0"
+    assert ">α</text>" in svg and "stroke-dasharray" in svg and "<polyline" in svg  # the angle, the circle
+    assert f"hangs from {support} on a string of length L" in svg
+    assert "the string at the angle α from the vertical" in svg and "bodies of the problem" not in svg
 
 
-def test_free_body_diagram_leaves_out_the_forces_on_a_body_on_z_only() -> None:
+@pytest.mark.parametrize("model", [CONE, LIFT], ids=["cone", "cone-in-a-lift"])
+def test_the_bob_of_a_conical_pendulum_shows_its_weight_and_the_tension_towards_the_pivot(
+    model: dict[str, object],
+) -> None:
+    svg = free_body_figure(load_model(model, CONE_SYMBOLS), "bob", VALUES, title="Cone")
+    # the string at alpha = 0.6 rad (34°) from the vertical, the bob at +x: T at 90° + 34°
+    assert "m₁g at -90° from the +x axis; T at 124° from the +x axis." in svg
+    assert len(ARROW.findall(svg)) == 2
+
+
+def test_a_model_on_z_off_the_page_at_its_state_is_drawn_as_its_bodies_side_by_side() -> None:
+    turned = copy.deepcopy(CONE)
+    turned["state"]["phi"] = "pi/2"  # the bob straight out of the page: a side view would misplace it
+    model = load_model(turned, CONE_SYMBOLS)
+    figure = compose(model, VALUES)
+    assert figure.fallback is not None and "off the page" in figure.fallback
+    assert "not drawn, as where the problem is drawn m₁ is off the page" in free_body_figure(
+        model, "bob", VALUES, title="Cone"
+    )
+
+
+def test_a_puck_through_a_hole_is_drawn_side_by_side_and_its_forces_in_the_page() -> None:
     model = load_model(PUCK, SYMBOLS)
+    figure = compose(model, {})
+    assert figure.fallback is not None and "only a conical pendulum" in figure.fallback
     puck = free_body_figure(model, "puck", {}, title="Puck")
     weight = free_body_figure(model, "weight", {}, title="Puck")
-    assert "not drawn, as m₁ moves along z" in puck
-    assert "<line" not in puck and "from the +x axis" not in puck
+    # at phi = 0 the puck is in the page and the string pulls it along -x, to the hole
+    assert "m₁g at -90° from the +x axis; T at 180° from the +x axis; N at 90° from the +x axis" in puck
     assert "m₂g at -90° from the +x axis" in weight and "T at 90° from the +x axis" in weight

@@ -51,6 +51,14 @@ def test_the_wedge_feels_the_block_pushing_into_it_and_the_floor_pushing_up() ->
     assert any(close(d, (-math.sin(THIRTY), -math.cos(THIRTY))) for d in normals)
 
 
+def test_a_bob_hung_from_an_accelerating_truck_feels_the_tension_along_its_string_as_drawn() -> None:
+    """The pivot moves in the time t: the string's pull is taken where the scene draws it, at t = 0."""
+    found = forces("pendulum-in-truck", "bob", {"A": 2.0, "g": 9.81})
+    assert set(found) == {"mg", "T"}
+    tilt = math.atan(2.0 / 9.81)  # the bob hangs back, against the acceleration: T leans forward
+    assert close(found["T"], (math.sin(tilt), math.cos(tilt)))
+
+
 @pytest.mark.parametrize("problem_id", sorted(BANK))
 def test_every_body_of_every_bank_problem_gets_a_free_body_diagram(problem_id: str) -> None:
     doc = BANK[problem_id]
