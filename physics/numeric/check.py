@@ -213,21 +213,15 @@ def _checked(answer: str, spec: NumericSpec) -> Verdict:
         return Verdict.invalid(error, read_as)
     if answer_units is not None and target is not None and answer_units.dimension != target.dimension:
         return _noted(Verdict.graded(_wrong_dimension(read, answer_units, target), read_as))
-    expected = spec.expected_value
-    expected_as_written = expected
-    cycles = None
-    if answer_units is not None and target is not None:
-        expected_as_written = target.convert(expected, answer_units)
-        cycles = _cycles(answer_units, target, strict=spec.angular_units == "strict")
-        if cycles is not None:
-            expected_as_written /= cycles
-    comparison = _Comparison(expected, expected_as_written, answer_units, target, spec.tolerance, cycles)
+    comparison = _compared(spec.expected_value, answer_units, target, spec)
     if comparison.passes(read.value):
         judgement = CORRECT
     elif (difference := comparison.as_difference()) is not None and difference.passes(read.value):
         return Verdict.invalid(_temperature_or_difference(read, comparison, difference), read_as)
     else:
-        judgement = diagnose(read.value, expected_as_written, comparison.passes)
+        judgement = _known_mistake(read.value, answer_units, target, spec) or diagnose(
+            read.value, comparison.expected_as_written, comparison.passes
+        )
     remark = _cycles_or_radians(answer_units, target)
     if remark:
         # Said before the verdict's "Correct." (a page shows its own word for the verdict first and
@@ -235,6 +229,27 @@ def _checked(answer: str, spec: NumericSpec) -> Verdict:
         feedback = f"{remark} {judgement.feedback}" if judgement.correct else f"{judgement.feedback} {remark}"
         judgement = dataclasses.replace(judgement, feedback=feedback)
     return _noted(Verdict.graded(judgement, read_as))
+
+
+def _compared(
+    expected: Fraction, answer_units: ParsedUnits | None, target: ParsedUnits | None, spec: NumericSpec
+) -> _Comparison:
+    """How an answer in `answer_units` is held against `expected` (a value in the spec's units)."""
+    if answer_units is None or target is None:
+        return _Comparison(expected, expected, answer_units, target, spec.tolerance)
+    cycles = _cycles(answer_units, target, strict=spec.angular_units == "strict")
+    as_written = target.convert(expected, answer_units) / (1 if cycles is None else cycles)
+    return _Comparison(expected, as_written, answer_units, target, spec.tolerance, cycles)
+
+
+def _known_mistake(
+    value: Fraction, answer_units: ParsedUnits | None, target: ParsedUnits | None, spec: NumericSpec
+) -> Judgement | None:
+    """The first known mistake whose value the answer is within the tolerance of, as its judgement."""
+    for mistake in spec.mistakes:
+        if _compared(Fraction(mistake.value), answer_units, target, spec).passes(value):
+            return Judgement(False, Reason.KNOWN_MISTAKE, mistake.feedback)
+    return None
 
 
 def _temperature_or_difference(

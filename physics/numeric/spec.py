@@ -19,6 +19,14 @@ ANGULAR_UNITS = (None, "strict")
 
 
 @dataclass(frozen=True)
+class MistakenValue:
+    """The value a known mistake gives for this student (in the spec's units), and what to tell them."""
+
+    value: Decimal
+    feedback: str
+
+
+@dataclass(frozen=True)
 class NumericSpec:
     expected: Decimal  # exact decimal of the reference value, in `units`
     units: str | None = None  # None: the answer is a pure number
@@ -27,6 +35,8 @@ class NumericSpec:
     arithmetic: bool = True  # the number may be an expression (`229/50`); False: a plain decimal
     units_system: str | None = None  # "SI": answers must use SI units (or those accepted with them)
     angular_units: str | None = None  # "strict": Hz is 2π rad/s where the other side has an angle unit
+    # A wrong answer within the tolerance of one of these is that mistake (the first listed wins).
+    mistakes: tuple[MistakenValue, ...] = ()
 
     def __post_init__(self) -> None:
         # frozen: normalising what the author passed (a JSON float 4.5807 means the decimal 4.5807)

@@ -74,3 +74,24 @@ def within_absolute(value: Fraction, expected: Fraction, bound: Fraction) -> boo
 def matches_sigfigs(value: Fraction, expected: Fraction, figures: int) -> bool:
     """The value part of the sigfigs rule (the figures shown are checked when the answer is read)."""
     return value == Fraction(round_sigfigs(expected, figures))
+
+
+def accepts(tolerance: Tolerance, value: Decimal, expected: Decimal) -> bool:
+    """Whether every key of `tolerance` takes the exact `value` for `expected` (sigfigs: the two round
+    alike), as a mistake's value it takes for the right one cannot be told from it."""
+    if not tolerance.kinds:
+        return value == expected
+    for kind in tolerance.kinds:
+        match kind:
+            case ToleranceKind.RELATIVE:
+                assert tolerance.rel is not None
+                ok = within_relative(Fraction(value), Fraction(expected), Fraction(tolerance.rel))
+            case ToleranceKind.ABSOLUTE:
+                assert tolerance.abs is not None
+                ok = within_absolute(Fraction(value), Fraction(expected), Fraction(tolerance.abs))
+            case ToleranceKind.SIGFIGS:
+                assert tolerance.sigfigs is not None
+                ok = round_sigfigs(value, tolerance.sigfigs) == round_sigfigs(expected, tolerance.sigfigs)
+        if not ok:
+            return False
+    return True

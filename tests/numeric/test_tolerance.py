@@ -9,6 +9,7 @@ import pytest
 
 from physics.errors import SpecError
 from physics.numeric import NumericSpec, Tolerance, check_numeric
+from physics.numeric.tolerance import accepts
 from physics.verdict import Outcome
 
 D = Decimal
@@ -51,6 +52,25 @@ EDGES = [
 def test_tolerance_edge(answer: str, expected: str, tolerance: Tolerance, correct: bool) -> None:
     verdict = check_numeric(answer, NumericSpec(D(expected), tolerance=tolerance))
     assert verdict.outcome == (Outcome.CORRECT if correct else Outcome.INCORRECT)
+
+
+@pytest.mark.parametrize(
+    ("answer", "expected", "tolerance", "correct"), EDGES, ids=[f"{c[0]} vs {c[1]} {c[2]}" for c in EDGES]
+)
+def test_tolerance_accepts_a_value_exactly_as_it_grades_that_answer(
+    answer: str, expected: str, tolerance: Tolerance, correct: bool
+) -> None:
+    assert accepts(tolerance, D(answer), D(expected)) is correct
+
+
+@pytest.mark.parametrize(
+    ("value", "expected", "taken"),
+    [("4.58493", "4.5807", True), ("4.58512", "4.5807", False), ("-4.58", "4.58", False)],
+)
+def test_tolerance_in_sigfigs_accepts_a_value_of_any_figures_that_rounds_alike(
+    value: str, expected: str, taken: bool
+) -> None:
+    assert accepts(Tolerance(sigfigs=3), D(value), D(expected)) is taken
 
 
 def test_default_tolerance_is_one_percent_relative() -> None:
