@@ -20,7 +20,7 @@ import sympy
 
 from physics.checking import CheckJob, Question, read_relation
 from physics.errors import SpecError
-from physics.symbolic import make_symbol
+from physics.symbolic import KnownMistake, make_symbol
 from problems.errors import ErrorItem, ProblemInvalid, format_path
 from problems.kinds import (
     AnyCompiledPart,
@@ -139,11 +139,12 @@ def build_problem(doc: ProblemDocument, version: int = 0, *, use_model: bool = T
 
     # Expression parts first: a numeric part evaluates one of them (its `of`).
     expressions: dict[str, tuple[sympy.Expr, bool]] = {}
+    mistakes: dict[str, tuple[KnownMistake, ...]] = {}
     compiled: dict[str, AnyCompiledPart] = {}
     order = sorted(range(len(doc.parts)), key=lambda i: not kind_of(doc.parts[i]).expression_answer)
     for index in order:
         part = doc.parts[index]
-        context = CompileContext(table, specs, constraints, doc, derived, dict(expressions))
+        context = CompileContext(table, specs, constraints, doc, derived, dict(expressions), dict(mistakes))
         try:
             compiled[part.id] = done = kind_of(part).compile(part, ("parts", index), context)
         except SpecError as error:
@@ -151,6 +152,8 @@ def build_problem(doc: ProblemDocument, version: int = 0, *, use_model: bool = T
             continue
         if done.expression is not None and kind_of(part).expression_answer:
             expressions[part.id] = (done.expression, done.derived)
+            if isinstance(done, CompiledSymbolicPart):
+                mistakes[part.id] = done.context.mistakes
     parts = {part.id: compiled[part.id] for part in doc.parts if part.id in compiled}
     if errors:
         raise ProblemInvalid(errors, doc.id)

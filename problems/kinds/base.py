@@ -31,7 +31,7 @@ import sympy
 
 from physics.checking import CheckJob, Question
 from physics.errors import AnswerError, SpecError
-from physics.symbolic import SymbolSpec
+from physics.symbolic import KnownMistake, SymbolSpec
 from physics.verdict import Verdict
 from problems.errors import ErrorItem, format_path
 
@@ -84,9 +84,10 @@ class MeaningContext:
 @dataclass(frozen=True)
 class CompileContext:
     """What compiling a part may use: its problem's symbols and domain, and, for a bank part, its document,
-    its model's derivation and the expression parts compiled before it (`expressions`). A `POST /v1/check`
-    body is a one-part problem with no document (`doc` None), its part `ADHOC_PART`: the same compile
-    reads it."""
+    its model's derivation and the expression parts compiled before it (`expressions`, and the known
+    `mistakes` of those that have them: a numeric part evaluated from one recognises them too). A
+    `POST /v1/check` body is a one-part problem with no document (`doc` None), its part `ADHOC_PART`:
+    the same compile reads it."""
 
     table: Mapping[str, sympy.Symbol]
     specs: Mapping[str, SymbolSpec]
@@ -94,6 +95,7 @@ class CompileContext:
     doc: ProblemDocument | None = None
     derived: Derived | None = None
     expressions: Mapping[str, tuple[sympy.Expr, bool]] = field(default_factory=dict)  # id -> (expr, derived)
+    mistakes: Mapping[str, tuple[KnownMistake, ...]] = field(default_factory=dict)  # id -> its mistakes
 
 
 @dataclass(frozen=True)

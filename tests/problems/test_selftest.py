@@ -21,6 +21,7 @@ def test_small_problem_passes_its_self_test() -> None:
         "mistake 1",
         "variant 0",
         "variant 0 10% off",
+        "variant 0 mistake 1",
         "variant 2 in rad/ms",
     } <= checks
     assert calls[-1] == ("tiny-spring:angular_frequency_numeric", 2, 2)

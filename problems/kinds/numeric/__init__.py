@@ -1,6 +1,7 @@
 """Numeric parts: a number with units, within a tolerance of the expected value, which is either evaluated
 per student from an expression (a symbolic part or a model quantity) at their given values, or stated
-(`value`, the same for every student, exact as written: a `POST /v1/check` body is such a part)."""
+(`value`, the same for every student, exact as written: a `POST /v1/check` body is such a part). One
+evaluated from a symbolic part recognises that part's known mistakes by their values at the same givens."""
 
 from __future__ import annotations
 
@@ -26,11 +27,12 @@ from physics import typeset
 from physics.checking import NumericJob
 from physics.dimensions import DIMENSIONLESS
 from physics.errors import AnswerError, SpecError
-from physics.numeric import NumericSpec, Tolerance, round_sigfigs
-from physics.symbolic import SymbolSpec, UnknownDimension, expression_dimension
+from physics.numeric import MistakenValue, NumericSpec, Tolerance, round_sigfigs
+from physics.numeric.tolerance import accepts
+from physics.symbolic import KnownMistake, SymbolSpec, UnknownDimension, expression_dimension
 from physics.symbolic.dimensional import DimensionMismatch
 from physics.units import parse_units, unit_dimension
-from physics.verdict import Outcome
+from physics.verdict import Outcome, Reason
 from problems.fields import (
     DEFAULT_TOLERANCE_DECL,
     PART_ID,
@@ -184,12 +186,14 @@ def adhoc_part(
 
 @dataclass(frozen=True)
 class Evaluated:
-    """An expected value that depends on the student: `expr` (in SI) at their given values."""
+    """An expected value that depends on the student: `expr` (in SI) at their given values; `mistakes`,
+    the known mistakes of the symbolic part it is `of` (in SI too), are recognised at the same values."""
 
     of: str
     expr: sympy.Expr
     document: ProblemDocument = field(repr=False)
     table: Mapping[str, sympy.Symbol] = field(repr=False)
+    mistakes: tuple[KnownMistake, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -227,20 +231,41 @@ class CompiledNumericPart:
         """The expected value for this student, in `units`: stated, or evaluated to 12 significant figures."""
         if isinstance(self.value, Decimal):
             return self.value
-        if variant is None:
-            raise ValueError(f"part {self.id!r} is evaluated per student: its value needs their variant")
-        values = si_values(self.value.document, variant, self.value.table)
-        return evaluate_reference(self.value.expr, values, self.units, where=self.id)
+        return evaluate_reference(self.value.expr, self._values(variant), self.units, where=self.id)
 
     def spec(self, variant: Variant | None) -> NumericSpec:
-        return self._stated if isinstance(self.value, Decimal) else self._spec(self.reference(variant))
+        if isinstance(self.value, Decimal):
+            return self._stated
+        values = self._values(variant)
+        expected = evaluate_reference(self.value.expr, values, self.units, where=self.id)
+        return self._spec(expected, self._mistaken(self.value.mistakes, values, expected))
+
+    def _values(self, variant: Variant | None) -> dict[sympy.Symbol, sympy.Expr]:
+        if variant is None or not isinstance(self.value, Evaluated):
+            raise ValueError(f"part {self.id!r} is evaluated per student: its value needs their variant")
+        return si_values(self.value.document, variant, self.value.table)
+
+    def _mistaken(
+        self, mistakes: Sequence[KnownMistake], values: Mapping[sympy.Symbol, sympy.Expr], expected: Decimal
+    ) -> tuple[MistakenValue, ...]:
+        """The mistakes' values at this student's values, but for those the tolerance would take for the
+        right value (no answer could show that mistake) and those that are no finite real number there."""
+        found = []
+        for mistake in mistakes:
+            try:
+                value = evaluate_reference(mistake.expr, values, self.units)
+            except SpecError:
+                continue
+            if not accepts(self.tolerance, value, expected):
+                found.append(MistakenValue(value, mistake.feedback))
+        return tuple(found)
 
     @cached_property
     def _stated(self) -> NumericSpec:
         """A stated value's question: every student's, made once (by the compile, which checks it)."""
         return self._spec(self.reference(None))
 
-    def _spec(self, expected: Decimal) -> NumericSpec:
+    def _spec(self, expected: Decimal, mistakes: tuple[MistakenValue, ...] = ()) -> NumericSpec:
         dimensionless = is_pure_number(self.units)
         return NumericSpec(
             expected=expected,
@@ -250,6 +275,7 @@ class CompiledNumericPart:
             arithmetic=self.arithmetic,
             units_system=self.units_system,
             angular_units=self.angular_units,
+            mistakes=mistakes,
         )
 
     def question(self, variant: Variant | None = None) -> NumericSpec:
@@ -318,7 +344,8 @@ class NumericKind:
     def selftest(
         self, problem: str, part: CompiledNumericPart, students: Sequence[Variant]
     ) -> list[CheckResult]:
-        """Across students' variants, the reference value (also in other units) accepted, 10 % off rejected."""
+        """Across students' variants, the reference value (also in other units) accepted, 10 % off rejected,
+        each known mistake's value named as that mistake."""
         results: list[CheckResult] = []
         sigfigs = part.tolerance.sigfigs
         dimensionless = is_pure_number(part.units)
@@ -333,6 +360,10 @@ class NumericKind:
                 attempts.append(
                     (f"variant {index} 10% off", answer_text(reference * OFF_BY, sigfigs) + suffix, False)
                 )
+            mistaken = [
+                (f"variant {index} mistake {j}", answer_text(mistake.value, sigfigs) + suffix)
+                for j, mistake in enumerate(spec.mistakes, start=1)
+            ]
             for alternative in unit_alternatives(part.units):
                 factor = unit_scale(part.units) / unit_scale(alternative)
                 if sigfigs is not None and not _power_of_ten(factor):
@@ -353,6 +384,11 @@ class NumericKind:
                     verdict.outcome is Outcome.CORRECT
                 ) == should_pass and verdict.outcome is not Outcome.INVALID
                 detail = "" if ok else f"expected {reference}: " + explain(text, verdict)
+                results.append(CheckResult(problem, part.id, label, ok, detail))
+            for label, text in mistaken:
+                verdict = spec.grade(text)
+                ok = verdict.reason is Reason.KNOWN_MISTAKE
+                detail = "" if ok else "expected a known mistake: " + explain(text, verdict)
                 results.append(CheckResult(problem, part.id, label, ok, detail))
         return results
 
@@ -419,7 +455,19 @@ def _evaluated(part: NumericPart, of: str, path: Path, context: CompileContext) 
     if missing:
         raise SpecError(f"needs given values for {', '.join(missing)}", (*path, "of"))
     _require_dimension(expr, part, of, context.specs, context.table, path)
-    return Evaluated(of, expr, doc, context.table), from_model
+    mistakes = tuple(m for m in context.mistakes.get(of, ()) if _recognisable(m.expr, part, doc, context))
+    return Evaluated(of, expr, doc, context.table, mistakes), from_model
+
+
+def _recognisable(expr: sympy.Expr, part: NumericPart, doc: ProblemDocument, context: CompileContext) -> bool:
+    """A mistake a numeric answer can show: the givens evaluate it, to a value in the part's units (one
+    of another dimension is no number an answer in those units could be)."""
+    if any(symbol.name not in doc.given for symbol in expr.free_symbols):
+        return False
+    try:
+        return _dimension_fits(expr, part, context.specs, context.table)
+    except DimensionMismatch:
+        return False
 
 
 def is_pure_number(units: str) -> bool:
@@ -446,18 +494,26 @@ def _require_dimension(
     table: Mapping[str, sympy.Symbol],
     path: Path,
 ) -> None:
-    dims = {table[n]: s.dimension for n, s in specs.items() if s.dimension is not None}
     try:
-        have = expression_dimension(expr, dims)
-    except UnknownDimension:
-        return  # a symbol without a declared dimension: nothing to compare against
+        fits = _dimension_fits(expr, part, specs, table)
     except DimensionMismatch as error:
         raise SpecError(
             f"the expression for {of} is dimensionally inconsistent: {error}", (*path, "of")
         ) from None
-    want = DIMENSIONLESS if part.dimensionless else unit_dimension(part.units)
-    if have != want:
+    if not fits:
         raise SpecError(f"{part.units} does not match the dimension of {of}", (*path, "units"))
+
+
+def _dimension_fits(
+    expr: sympy.Expr, part: NumericPart, specs: Mapping[str, SymbolSpec], table: Mapping[str, sympy.Symbol]
+) -> bool:
+    """Whether `expr` has the dimension of the part's units (DimensionMismatch: it has none)."""
+    dims = {table[n]: s.dimension for n, s in specs.items() if s.dimension is not None}
+    try:
+        have = expression_dimension(expr, dims)
+    except UnknownDimension:
+        return True  # a symbol without a declared dimension: nothing to compare against
+    return have == (DIMENSIONLESS if part.dimensionless else unit_dimension(part.units))
 
 
 def answer_text(value: Decimal, sigfigs: int | None) -> str:
