@@ -14,6 +14,7 @@ from functools import cache
 import sympy
 from sympy.printing.str import StrPrinter
 
+from physics import typeset
 from physics.errors import AnswerError
 from physics.mathinput import parse_math
 from physics.mathinput.vocabulary import FUNCTIONS
@@ -46,6 +47,16 @@ class _StudentPrinter(StrPrinter):  # type: ignore[misc]
 
 
 class _TypedPrinter(_StudentPrinter):
+    def _print_Mul(self, expr: sympy.Mul) -> str:
+        # one root, as a teacher writes it: sqrt(L*g/cos(alpha))*sin(alpha), not sqrt(L)*sqrt(g)*...
+        factors = list(expr.args)
+        merged = typeset.one_root(factors)
+        if merged is factors:
+            return str(super()._print_Mul(expr))
+        if len(merged) == 1:  # the root alone
+            return str(self._print(merged[0]))
+        return str(super()._print_Mul(sympy.Mul(*merged, evaluate=False)))
+
     def _print_Pow(self, expr: sympy.Pow, rational: bool = False) -> str:
         # sympy joins base and exponent, both already written by this printer, with its one `**`
         text: str = super()._print_Pow(expr, rational)

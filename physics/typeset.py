@@ -47,7 +47,7 @@ class _TextbookLatex(LatexPrinter):  # type: ignore[misc]
         if negative and mixed:  # -(M + m) g L (cos θ - 1) is (M + m) g L (1 - cos θ)
             base, exponent = changed[mixed[-1]].as_base_exp()
             changed[mixed[-1]], negative = sympy.Pow(-base, exponent), False
-        ordered = sorted(_one_root(changed), key=self._place)
+        ordered = sorted(one_root(changed), key=self._place)
         if ordered == factors:
             positive = sympy.Mul(*factors)
             written = (
@@ -118,15 +118,25 @@ class _TextbookLatex(LatexPrinter):  # type: ignore[misc]
         return QUANTITY
 
 
-def _one_root(factors: list[sympy.Expr]) -> list[sympy.Expr]:
-    """Square roots as one: √2 √g √L √(1 - cos θ) is written √(2 g L (1 - cos θ)). Exact where at most
-    one of the roots' bases may be negative (√a √b = √(a b) when a ≥ 0), so only then."""
-    roots = [f for f in factors if f.is_Pow and f.exp == sympy.S.Half]
-    unsure = [f for f in roots if not f.base.is_nonnegative]
-    if len(roots) < 2 or len(unsure) > 1:
+def one_root(factors: list[sympy.Expr]) -> list[sympy.Expr]:
+    """A product's square roots as one: √2 √g √L √(1 - cos θ) is written √(2 g L (1 - cos θ)), and
+    √L √g/√(cos α) is √(L g/cos α). Exact where at most one base above the line and one below it may be
+    negative, wherever the roots' product is real (√a √b = √(a b) when a ≥ 0; √a/√b = √(a/b) unless
+    a > 0 > b, where it is imaginary), as a reference is on its domain; otherwise left apart."""
+    above = [f for f in factors if f.is_Pow and f.exp == sympy.S.Half]
+    below = [f for f in factors if f.is_Pow and f.exp == -sympy.S.Half]
+    unsure_above = [f for f in above if not f.base.is_nonnegative]
+    unsure_below = [f for f in below if not f.base.is_positive]
+    if len(above) + len(below) < 2 or len(unsure_above) > 1 or len(unsure_below) > 1:
         return factors
-    merged = sympy.Pow(sympy.Mul(*(f.base for f in roots), evaluate=False), sympy.S.Half, evaluate=False)
-    return [f for f in factors if f not in roots] + [merged]
+    if not above:  # 1/√(G M), not √(1/(G M))
+        merged = sympy.Pow(sympy.Mul(*(f.base for f in below), evaluate=False), -sympy.S.Half, evaluate=False)
+    elif below:  # a quotient, which a printer writes as a fraction only when it is evaluated
+        radicand = sympy.Mul(*(f.base for f in above)) / sympy.Mul(*(f.base for f in below))
+        merged = sympy.Pow(radicand, sympy.S.Half, evaluate=False)
+    else:
+        merged = sympy.Pow(sympy.Mul(*(f.base for f in above), evaluate=False), sympy.S.Half, evaluate=False)
+    return [f for f in factors if f not in above and f not in below] + [merged]
 
 
 def _all_subtracted(factor: sympy.Expr) -> bool:

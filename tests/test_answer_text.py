@@ -22,6 +22,10 @@ TYPED = [
     (sympy.sqrt(4 * m * x - b**2), "sqrt(-b^2 + 4*m*x)"),
     (sympy.Abs(x - L1), "abs(L1 - x)"),
     (sympy.exp(-b * x / (2 * m)), "exp(-b*x/(2*m))"),
+    # a product's square roots are one root, as a teacher writes it
+    (sympy.sqrt(k1 / m), "sqrt(k1/m)"),
+    (2 * sympy.pi * sympy.sqrt(2 * x * m), "2*pi*sqrt(2*m*x)"),
+    (x ** sympy.Rational(3, 2) / (sympy.sqrt(b) * sympy.sqrt(m)), "x^(3/2)/sqrt(b*m)"),
 ]
 
 
@@ -32,4 +36,18 @@ def test_an_expression_reads_as_typed_and_parses_back(expr: sympy.Expr, typed: s
 
 
 def test_a_list_of_roots_reads_as_typed() -> None:
-    assert typed_text([-sympy.sqrt(b / m), x**2]) == "[-sqrt(b)/sqrt(m), x^2]"
+    assert typed_text([-sympy.sqrt(b / m), x**2]) == "[-sqrt(b/m), x^2]"
+
+
+def test_a_root_over_a_root_of_unknown_sign_is_one_root_where_the_quotient_is_real() -> None:
+    """A conical pendulum's speed: sqrt(b)/sqrt(cos(x)) is sqrt(b/cos(x)) wherever it is real (cos(x) > 0)."""
+    speed = sympy.sqrt(b) * sympy.sin(x) / sympy.sqrt(sympy.cos(x))
+    typed = typed_text(speed)
+    assert typed == "sqrt(b/cos(x))*sin(x)"
+    assert abs(complex((parse_math(typed, NAMES).expr - speed).subs({b: 2.0, x: 0.4}))) < 1e-12
+
+
+def test_roots_of_two_bases_of_unknown_sign_stay_apart() -> None:
+    """sqrt(u)*sqrt(v) is -sqrt(u*v) where both are negative: one root would be another number."""
+    u, v = sympy.symbols("u v", real=True)
+    assert typed_text(sympy.sqrt(u) * sympy.sqrt(v)) == "sqrt(u)*sqrt(v)"
