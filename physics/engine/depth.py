@@ -4,8 +4,8 @@ A body may be placed on z so that a conical pendulum or a puck on a table can be
 The mechanics that reads positions only through generic sums over their axes handles z: energies,
 Lagrange, Newton's constraint forces (a gap's gradient in x_, y_ and z_), the simulation, steady
 circular motion, pair potentials (the distance over every axis), supports moving in the time (the
-chain rule in t). Everything written for the x–y plane (impacts, friction, frames, flights, elements,
-the `forces:` entries) would ignore z and could verify a wrong model, so a model with z refuses each
+chain rule in t), the `forces:` entries (a load's force on each Cartesian dof, z among them). Everything
+written for the x–y plane (impacts, friction, frames, flights, elements) would ignore z and could verify a wrong model, so a model with z refuses each
 of them where it is written, and a body on z is a particle (its angle would turn in the x–y plane).
 """
 
@@ -57,6 +57,7 @@ SECTIONS = frozenset(
         "gravity",
         "constraints",
         "potentials",
+        "forces",
         "state",
         "domain",
         "quantities",

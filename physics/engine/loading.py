@@ -329,7 +329,7 @@ def _forces(
             (*path, key),
             expression=lambda text, where: errors.read(text, scope, where),
             parameter=lambda text, where: errors.read(text, symbols, where),
-            axes=lambda text, where: _axes(text, scope, where, errors),
+            axes=lambda text, where: _axes(text, scope, where, errors, depth.SPACE),
             error=errors.add,
         )
         load = force_kinds.READERS[key](key, read)

@@ -19,6 +19,7 @@ if TYPE_CHECKING:
     from physics.engine.model import Model
 
 ZERO = sympy.Integer(0)
+DEPTH = "z"  # as depth.py names it (depth.py imports the model, which imports this module)
 
 
 class ForceKind(StrEnum):
@@ -88,6 +89,14 @@ def read(key: str, entry: Entry) -> AppliedForce | None:
     kind = ForceKind(key)
     if kind is ForceKind.APPLIED:
         components = entry.axes(entry.value, entry.path)
+        placed = {axis for axis, _ in entry.body.position}
+        for axis, _ in components:
+            if axis == DEPTH and axis not in placed:  # it would push along an axis the body cannot move on
+                entry.error(
+                    f"{entry.body.name} has no z in its position, so a force along z would do nothing: "
+                    "give the body's z, or leave the component out",
+                    (*entry.path, axis),
+                )
         return AppliedForce(entry.body.name, kind, components=components) if components else None
     coefficient = entry.parameter(entry.value, entry.path)
     return AppliedForce(entry.body.name, kind, coefficient=coefficient) if coefficient is not None else None
