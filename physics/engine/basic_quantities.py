@@ -38,10 +38,10 @@ def equilibrium(method: Method, quantity: Quantity) -> sympy.Expr:
 
 @derives(QuantityKind.STIFFNESS)
 def stiffness(method: Method, quantity: Quantity) -> sympy.Expr:
-    """-dQ/dq at the equilibrium."""
+    """-dQ/dq at the equilibrium (the other coordinates where they rest with it)."""
     q = method.model.coordinate(quantity.target).symbol
-    q0 = method.equilibrium(quantity.target)
-    value = tidy.simplify(-sympy.diff(method.potential_force(quantity.target), q).subs(q, q0))
+    rest = method.rest(quantity.target)
+    value = tidy.simplify(-sympy.diff(method.potential_force(quantity.target), q).subs(rest))
     generalized = method.mech.notation.letters.generalized
     method.step(
         f"Stiffness at the equilibrium of {method.named(quantity.target)}",

@@ -195,7 +195,7 @@ def _derive_model(model: Model) -> Derivation:
     contact_signs |= check_buffers(model, lagrange, quantities)
     contact_signs |= released.check_released(model, lagrange)
     # one compiled motion for every measure, from the equations Lagrange's method has formed
-    simulator = Simulator(model, lagrange.equilibrium, quantities, lagrange)
+    simulator = Simulator(model, lagrange.equilibrium, quantities, lagrange, rest_of=lagrange.rest)
     simulation = _simulate(model, quantities, simulator)
     variants: dict[tuple[Model, type[Method]], Method] = {(model, LagrangeMethod): lagrange}
 

@@ -11,7 +11,6 @@ from functools import cached_property
 
 import sympy
 
-from physics.answer_text import typed_text
 from physics.engine import modes, tidy
 from physics.engine.mechanics import solve_linear, time_derivative
 from physics.engine.method import Method, NotApplicable
@@ -188,7 +187,7 @@ class LagrangeMethod(Method):
         """Linearized Lagrange equations M q'' + K q = 0 about the equilibrium: omega^2 = eig(M^-1 K)."""
         mech = self.mech
         q = self.model.coordinate(coordinate).symbol
-        at = {q: equilibrium, **{c: 0 for c in mech.q if c != q}}
+        at = {**self.rest(coordinate), q: equilibrium}
         if driven(self.model):  # Lagrange's equations linearized about the rest relative to the support
             self._at_rest()
             mass, stiffness = self.mode_matrices(at)
@@ -196,9 +195,15 @@ class LagrangeMethod(Method):
             stiffness = sympy.hessian(mech.potential, mech.q).subs(at)
             mass = mech.mass_matrix.subs(at)
         block = modes.coupled([mass, stiffness], list(mech.q).index(q))  # other, uncoupled systems apart
-        omega2 = _single_nonzero_eigenvalue(
-            mass.extract(block, block).inv() * stiffness.extract(block, block)
-        )
+        values = [
+            tidy.simplify(v)
+            for v in (mass.extract(block, block).inv() * stiffness.extract(block, block)).eigenvals()
+        ]
+        nonzero = [v for v in values if v != 0]
+        if len(nonzero) != 1:
+            partners = [str(mech.q[j]) for j in block if mech.q[j] != q]
+            raise NotApplicable(modes.no_single_mode(values, coordinate, partners))
+        omega2 = nonzero[0]
         self.step(
             "Small oscillations: the mass matrix $\\mathbf{M}$ and stiffness matrix $\\mathbf{K}$",
             r"\mathbf{M}\ddot{\mathbf{q}} + \mathbf{K}\mathbf{q} = 0,\ \mathbf{M} = "
@@ -209,11 +214,3 @@ class LagrangeMethod(Method):
             + self.tex(omega2),
         )
         return tidy.simplify(sympy.sqrt(omega2))
-
-
-def _single_nonzero_eigenvalue(matrix: sympy.Matrix) -> sympy.Expr:
-    values = [tidy.simplify(v) for v in matrix.eigenvals()]
-    nonzero = [v for v in values if v != 0]
-    if len(nonzero) != 1:
-        raise NotApplicable(f"expected one oscillating mode, found eigenvalues {typed_text(values)}")
-    return nonzero[0]

@@ -52,6 +52,8 @@ class Method(ABC):
         self.arrivals: dict[tuple[object, ...], sympy.Expr] = {}
         # each coordinate's equilibrium, found once: frequencies, expressions and the simulation ask again
         self._equilibria: dict[str, sympy.Expr] = {}
+        # where a coordinate's force depends on others: all the coordinates at their joint equilibrium
+        self._joint: dict[str, dict[sympy.Symbol, sympy.Expr]] = {}
         self._printed: set[sympy.Basic] = set()  # symbols printed since the last step (Step.symbols)
 
     @cached_property
@@ -195,9 +197,7 @@ class Method(ABC):
         force = self.potential_force(coordinate)
         others = (force.free_symbols & set(self.mech.q)) - {q}
         if others:
-            raise NotApplicable(
-                f"the force on {coordinate} depends on other coordinates {sorted(map(str, others))}"
-            )
+            return self._joint_equilibrium(coordinate, sorted(map(str, others)))
         roots = _real_roots(force, q)
         slope = sympy.diff(force, q)
         stable = [
@@ -224,6 +224,46 @@ class Method(ABC):
             [q],
         )
         return tidy.simplify(stable[0])
+
+    def _joint_equilibrium(self, coordinate: str, others: list[str]) -> sympy.Expr:
+        """The coordinate's value at the stable equilibrium of all the coordinates together (a bob on a
+        spring free in x, y and z rests below the anchor), where this method's own force on it vanishes."""
+        try:
+            point = stable_equilibrium(self.model)
+        except (DerivationError, NotApplicable) as error:
+            why = error.message if isinstance(error, DerivationError) else str(error)
+            raise NotApplicable(
+                f"the force on {coordinate} depends on other coordinates {others}, and the coordinates have no "
+                f"one stable equilibrium together ({why}): ask for its acceleration or potential_force at "
+                "the state, or hold the others with constraints"
+            ) from None
+        q = self.model.coordinate(coordinate).symbol
+        force = self.potential_force(coordinate)
+        if tidy.simplify(force.subs(point)) != 0:
+            raise DerivationError(
+                f"{self.title}: the force on {coordinate}, {typed_text(force)}, does not vanish at the "
+                f"equilibrium of all the coordinates {typed_text(point)}",
+                quantity=coordinate,
+            )
+        self._joint[coordinate] = point
+        generalized = self.mech.notation.letters.generalized
+        self.step(
+            f"Equilibrium of {self.named(coordinate)}: its force depends on the other coordinates, so all "
+            "the generalized forces vanish together",
+            rf"{generalized}_{{{self.tex(q)}}} = {self.tex(force)} = 0 \Rightarrow "
+            + r",\ ".join(self.tex(sympy.Eq(c, v)) for c, v in point.items()),
+            StepKind.SOLVE,
+            [q],
+        )
+        return tidy.simplify(point[q])
+
+    def rest(self, coordinate: str) -> dict[sympy.Symbol, sympy.Expr]:
+        """Every coordinate where `coordinate` rests at its equilibrium, the point its small oscillations
+        are linearized about: the others at 0, or at the equilibrium of all the coordinates together where
+        its force depends on them."""
+        q0 = self.equilibrium(coordinate)
+        zero = dict.fromkeys(self.mech.q, sympy.Integer(0))
+        return {**zero, **self._joint.get(coordinate, {}), self.model.coordinate(coordinate).symbol: q0}
 
     def terminal_velocity(self, coordinate: str) -> sympy.Expr:
         """The velocity at which the coordinate stops accelerating: this method's own acceleration with the

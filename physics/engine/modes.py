@@ -24,6 +24,19 @@ from physics.errors import DerivationError
 ORDER_POINTS = 6
 
 
+def no_single_mode(values: Sequence[sympy.Expr], coordinate: str, partners: Sequence[str]) -> str:
+    """Why a coordinate has no one frequency (NotApplicable's message), and, where its small oscillations
+    mix with other coordinates', what the teacher can ask instead."""
+    found = f"expected one oscillating mode, found eigenvalues {typed_text(list(values))}"
+    if len([v for v in values if v != 0]) < 2 or not partners:
+        return found
+    return (
+        f"{found}: {coordinate} oscillates together with {', '.join(partners)} about the equilibrium, so it "
+        "has no frequency of its own; ask for normal_frequency (n: the n-th lowest mode of all the "
+        "coordinates) or mode_shape instead"
+    )
+
+
 def coupled(matrices: Sequence[sympy.Matrix], index: int) -> list[int]:
     """The coordinates that move with coordinate `index`: linked to it, directly or through others, by a
     non-zero off-diagonal entry of any of the matrices. Two pendulums side by side are two blocks, each
@@ -45,6 +58,8 @@ def equilibrium_point(model: Model, mech: Mechanics) -> dict[sympy.Symbol, sympy
     moving = [q for q in mech.q if potential.has(q)]
     gradient = [sympy.diff(potential, q) for q in moving]
     solutions = sympy.solve(gradient, moving, dict=True) if moving else [{}]
+    if not any(all(q in solution for q in moving) for solution in solutions):
+        solutions = _one_at_a_time(list(zip(gradient, moving, strict=True)))
     stable = [
         {q: tidy.simplify(solution.get(q, sympy.Integer(0))) for q in mech.q}
         for solution in solutions
@@ -58,6 +73,33 @@ def equilibrium_point(model: Model, mech: Mechanics) -> dict[sympy.Symbol, sympy
             path=("domain",),
         )
     return stable[0]
+
+
+def _one_at_a_time(pairs: list[tuple[sympy.Expr, sympy.Symbol]]) -> list[dict[sympy.Symbol, sympy.Expr]]:
+    """The roots of the equations, each (equation, unknown) solved alone and put into the rest, branch by
+    branch: sympy finds none of a bob's on a spring free in x, y and z all at once (the distance's root in
+    each), but X = 0 and Z = 0 (factors of their own equations, so solved first), then Y = -(L0 + m g/k).
+    Conditional roots are dropped, and so are roots in the unknowns still to solve (X = sqrt(L0^2 - Y^2 -
+    Z^2), the spring at its natural length: a surface of points, no isolated equilibrium)."""
+    if not pairs:
+        return [{}]
+    pairs = sorted(pairs, key=lambda pair: not _factor_of(pair[1], pair[0]))
+    (equation, unknown), rest = pairs[0], pairs[1:]
+    later = [u for _, u in rest]
+    found: list[dict[sympy.Symbol, sympy.Expr]] = []
+    for root in tidy.solve(equation, unknown):
+        if root.has(sympy.Piecewise, sympy.nan, *later) or root.is_real is False:
+            continue
+        remaining = [(tidy.simplify(e.subs(unknown, root)), u) for e, u in rest]
+        for solution in _one_at_a_time(remaining):
+            found.append({**solution, unknown: tidy.simplify(root.subs(solution))})
+    return found
+
+
+def _factor_of(unknown: sympy.Symbol, equation: sympy.Expr) -> bool:
+    """unknown is a factor of the equation's numerator (k (d - L0) Z/d): its root 0 comes at once."""
+    numerator = sympy.factor_terms(sympy.together(equation)).as_numer_denom()[0]
+    return unknown in sympy.Mul.make_args(numerator)
 
 
 def _numbers(model: Model, count: int) -> list[dict[sympy.Symbol, float]]:

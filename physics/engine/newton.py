@@ -12,7 +12,6 @@ from functools import cached_property
 
 import sympy
 
-from physics.answer_text import typed_text
 from physics.engine import collision, modes, tidy
 from physics.engine.frames import centripetal_accelerations
 from physics.engine.mechanics import solve_linear, time_derivative
@@ -183,7 +182,7 @@ class NewtonMethod(Method):
         if self.model.constraints:
             raise NotApplicable("Cartesian small oscillations are done here only without constraints")
         q = self.model.coordinate(coordinate).symbol
-        at = {q: equilibrium, **{c: 0 for c in mech.q if c != q}}
+        at = {**self.rest(coordinate), q: equilibrium}
         point = {d.symbol: d.mapping.subs(at) for d in mech.dofs}
         symbols = [d.symbol for d in mech.dofs]
         stiffness = sympy.hessian(mech.cartesian_potential, symbols).subs(point)
@@ -193,7 +192,8 @@ class NewtonMethod(Method):
         values = [tidy.simplify(v) for v in (mass.inv() * stiffness).extract(block, block).eigenvals()]
         nonzero = [v for v in values if v != 0]
         if len(nonzero) != 1:
-            raise NotApplicable(f"expected one oscillating mode, found eigenvalues {typed_text(values)}")
+            partners = [d.name for j, d in enumerate(mech.dofs) if j in block and j not in moved]
+            raise NotApplicable(modes.no_single_mode(values, coordinate, partners))
         self.step(
             "Small oscillations of the Cartesian equations ($\\mathbf{K}$: the stiffness matrix)",
             r"\mathbf{M}\ddot{\mathbf{x}} = -\mathbf{K}\mathbf{x},\ \mathbf{K} = "

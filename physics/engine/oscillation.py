@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import sympy
 
-from physics.answer_text import typed_text
 from physics.engine import modes, tidy
 from physics.engine.method import Method, NotApplicable
 
@@ -17,17 +16,19 @@ from physics.engine.method import Method, NotApplicable
 def frequency_from_accelerations(
     method: Method, coordinate: str, equilibrium: sympy.Expr, accelerations: dict[sympy.Symbol, sympy.Expr]
 ) -> sympy.Expr:
-    """omega of small oscillations of `coordinate` about `equilibrium` (the other coordinates at 0, as
-    the other methods take them), from the coordinates' accelerations at rest as functions of q."""
+    """omega of small oscillations of `coordinate` about `equilibrium` (the others where `Method.rest`
+    puts them, as the other methods take them), from the coordinates' accelerations at rest as functions
+    of q."""
     mech = method.mech
     q = method.model.coordinate(coordinate).symbol
-    at = {q: equilibrium, **{c: 0 for c in mech.q if c != q}}
+    at = {**method.rest(coordinate), q: equilibrium}
     stiffness = sympy.Matrix([[-sympy.diff(accelerations[a], c) for c in mech.q] for a in mech.qdd]).subs(at)
     block = modes.coupled([stiffness], list(mech.q).index(q))  # other, uncoupled systems apart
     values = [tidy.simplify(v) for v in stiffness.extract(block, block).eigenvals()]
     nonzero = [v for v in values if v != 0]
     if len(nonzero) != 1:
-        raise NotApplicable(f"expected one oscillating mode, found {typed_text(values)}")
+        partners = [str(mech.q[j]) for j in block if mech.q[j] != q]
+        raise NotApplicable(modes.no_single_mode(values, coordinate, partners))
     method.step(
         "Small oscillations of the equation of motion",
         rf"\ddot{{{method.tex(q)}}} = f({method.tex(q)}),\quad \omega^2 = -\left.\frac{{\partial f}}"

@@ -282,6 +282,8 @@ class Simulator:
     references: Mapping[str, sympy.Expr] = dataclasses.field(default_factory=dict)
     # the derivation's Lagrange method of this same model: its equations and energies, formed once
     lagrange: LagrangeMethod | None = None
+    # every coordinate where a coordinate rests at its equilibrium (Method.rest); the others at 0 without it
+    rest_of: Callable[[str], Mapping[sympy.Symbol, sympy.Expr]] | None = None
     # after an impact: the bodies' separation along its normal at an integrated state (q, q'), which the
     # motion must keep from closing again (a second impact the model does not follow)
     separation: Callable[[Vector], float] | None = None
@@ -404,7 +406,9 @@ class Simulator:
                 },
             }
             bounced = dataclasses.replace(self.model, state=tuple(state.items()), impact=None)
-            self._bounced[key] = Simulator(bounced, self.equilibrium_of, separation=self._separation(point))
+            self._bounced[key] = Simulator(
+                bounced, self.equilibrium_of, rest_of=self.rest_of, separation=self._separation(point)
+            )
         simulator = self._bounced[key]
         inner = dataclasses.replace(quantity, after="", bounces=None)
         measure = simulator._reach if _reaches(inner) else simulator._measures().get(inner.kind)
@@ -858,9 +862,9 @@ class Simulator:
         dyn = self.dynamics
         params = dyn.values(point)
         i = [c.name for c in self.model.coordinates].index(coordinate)
-        q0 = _evaluate(self.equilibrium_of(coordinate), point)
+        base = self._rest(coordinate, point)
+        q0 = base[i]
         scale = max(abs(q0), 1.0)
-        base = [q0 if j == i else 0.0 for j in range(dyn.n)]
         h = 1e-3 * scale
 
         def shifted(delta: float) -> Vector:
@@ -895,6 +899,17 @@ class Simulator:
             raise DerivationError(f"{coordinate}: no oscillation seen in the simulation")
         period = (crossings[-1] - crossings[0]) / (len(crossings) - 1) * estimate / per_period
         return q0, [max(values) + q0, min(values) + q0], period
+
+    def _rest(self, coordinate: str, point: Point) -> Vector:
+        """The coordinates' values where `coordinate` rests at its equilibrium."""
+        rest = self.rest_of(coordinate) if self.rest_of is not None else {}
+        q0 = self.equilibrium_of(coordinate)
+        return [
+            _evaluate(q0, point)
+            if c.name == coordinate
+            else _evaluate(rest.get(c.symbol, sympy.Integer(0)), point)
+            for c in self.model.coordinates
+        ]
 
     def _equilibrium(self, quantity: Quantity, point: Point, expected: float) -> Measured:
         q0, (high, low), _ = self._oscillate(quantity.target, point)
@@ -938,12 +953,11 @@ class Simulator:
         return sum(m * a * (u - d) / (2 * step) for m, a, u, d in zip(masses, accel, up, down, strict=True))
 
     def _stiffness(self, quantity: Quantity, point: Point, expected: float) -> Measured:
-        dyn = self.dynamics
         i = [c.name for c in self.model.coordinates].index(quantity.target)
-        q0 = _evaluate(self.equilibrium_of(quantity.target), point)
-        h = 1e-4 * (abs(q0) or 1.0)
+        base = self._rest(quantity.target, point)
+        h = 1e-4 * (abs(base[i]) or 1.0)
         forces = [
-            self._measured_generalized_force(i, [q0 + d if j == i else 0.0 for j in range(dyn.n)], point)
+            self._measured_generalized_force(i, [b + d if j == i else b for j, b in enumerate(base)], point)
             for d in (-h, h)
         ]
         return (

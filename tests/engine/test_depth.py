@@ -71,9 +71,6 @@ REFUSED = [
         PLANE_ONLY,
         id="friction",
     ),
-    pytest.param(
-        lambda d: d.update(forces=[{"body": "puck", "drag": "k"}]), ("forces",), PLANE_ONLY, id="forces"
-    ),
     pytest.param(lambda d: d.update(frame={"body": "weight"}), ("frame",), PLANE_ONLY, id="frame"),
     pytest.param(
         lambda d: d.update(impact={"bodies": ["puck", "weight"]}), ("impact",), PLANE_ONLY, id="impact"
@@ -216,10 +213,14 @@ def test_conical_pendulum_on_z_derives_the_positive_steady_rate() -> None:
     assert abs(float((derived["period"] - expected).subs(point))) < 1e-9
 
 
-def test_conical_pendulum_period_is_written_without_a_root_of_a_reciprocal() -> None:
-    """2 pi sqrt(L cos(alpha)/g) as a teacher writes it, not 2 pi sqrt(L/g)/sqrt(1/cos(alpha))."""
-    period = derive(load_model(CONE, CONE_SYMBOLS)).quantities["period"]
-    assert typed_text(period) == "2*pi*sqrt(L)*sqrt(cos(alpha))/sqrt(g)"
+def test_conical_pendulum_period_and_speed_are_written_with_one_root() -> None:
+    """As a teacher writes them: 2 pi sqrt(L cos(alpha)/g), sin(alpha) sqrt(g L/cos(alpha)); not
+    2 pi sqrt(L)/(sqrt(g) sqrt(1/cos(alpha))) nor sqrt(L)*sqrt(g)*sin(alpha)/sqrt(cos(alpha))."""
+    data = copy.deepcopy(CONE)
+    data["quantities"]["speed"] = {"circular_speed": "phi"}
+    derived = derive(load_model(data, CONE_SYMBOLS)).quantities
+    assert typed_text(derived["period"]) == "2*pi*sqrt(L*cos(alpha)/g)"
+    assert typed_text(derived["speed"]) == "sqrt(L*g/cos(alpha))*sin(alpha)"
 
 
 def _moving_pivot(gap: str) -> dict[str, Any]:
@@ -365,3 +366,121 @@ def test_no_quantity_kind_outside_the_generic_ones_loads_with_z(kind: QuantityKi
     with pytest.raises(SpecErrors) as caught:
         load_model(asked, SYMBOLS)
     assert any(e.path[:2] == ("quantities", "asked") for e in caught.value.errors)
+
+
+F = sympy.Symbol("F", positive=True)
+W = sympy.Symbol("w", positive=True)
+FORCE_SYMBOLS = {**{n: s for n, s in CONE_SYMBOLS.items() if n != "t"}, "F": F, "w": W}
+# a puck on a frictionless table (x and z), pulled along z
+PULLED_PUCK: dict[str, Any] = {
+    "coordinates": ["X", "Z"],
+    "bodies": {"puck": {"mass": "m1", "position": {"x": "X", "z": "Z"}}},
+    "forces": [{"body": "puck", "force": {"z": "F"}}],
+    "quantities": {"az": {"acceleration": "Z"}, "ax": {"acceleration": "X"}},
+}
+# the conical pendulum's bob held at rest at the angle alpha, a wind F blowing along x
+WINDY_CONE = {
+    **CONE,
+    "forces": [{"body": "bob", "force": {"x": "F"}}],
+    "state": {"theta": "alpha", "phi": 0},
+    "quantities": {"tension": {"force": "string"}, "swing": {"acceleration": "theta"}},
+}
+FORCES_ON_Z = [
+    pytest.param(PULLED_PUCK, {"az": F / M1, "ax": 0}, id="constant-pull-along-z"),
+    pytest.param(
+        {
+            **PULLED_PUCK,
+            "forces": [{"body": "puck", "force": {"z": "F*cos(w*t)"}}],
+            "state": {"t": "pi/(3*w)"},
+        },
+        {"az": F / (2 * M1)},
+        id="pull-along-z-in-the-time",
+    ),
+    pytest.param(
+        WINDY_CONE,
+        {
+            "tension": M1 * G * sympy.cos(ALPHA) + F * sympy.sin(ALPHA),
+            "swing": (F * sympy.cos(ALPHA) - M1 * G * sympy.sin(ALPHA)) / (M1 * L),
+        },
+        id="conical-pendulum-in-a-wind",
+    ),
+]
+
+
+@pytest.mark.parametrize(("data", "expected"), FORCES_ON_Z)
+def test_a_given_force_on_a_body_on_z_derives(data: dict[str, Any], expected: dict[str, sympy.Expr]) -> None:
+    derivation = derive(load_model(data, FORCE_SYMBOLS))
+    for name, value in expected.items():
+        assert sympy.simplify(derivation.quantities[name] - value) == 0, name
+        assert len(derivation.agreement[name]) >= 2 and name in derivation.simulation
+
+
+def test_a_force_along_z_on_a_body_without_z_is_refused_at_its_component() -> None:
+    data = copy.deepcopy(PULLED_PUCK)
+    data["coordinates"].append("s")
+    data["bodies"]["cart"] = {"mass": "m2", "position": {"x": "s"}}
+    data["forces"] = [{"body": "cart", "force": {"z": "F"}}]
+    with pytest.raises(SpecErrors) as caught:
+        load_model(data, FORCE_SYMBOLS)
+    found = {e.path: e.message for e in caught.value.errors}
+    assert "cart has no z in its position" in found[("forces", 0, "force", "z")], found
+
+
+def test_a_wind_on_a_steadily_circling_bob_is_refused_as_no_steady_rotation() -> None:
+    data = _puck(lambda d: d.update(forces=[{"body": "puck", "force": {"z": "F"}}]))
+    with pytest.raises(DerivationError, match="does not turn uniformly"):
+        derive(load_model(data, {**SYMBOLS, "F": F}))
+
+
+# the bob on a spring free in x, y and z, now at rest below the anchor
+RESTING_BOB = {
+    **SPRUNG_BOB,
+    "state": {"X": 0, "Y": "-L0 - m1*g/k", "Z": 0},
+    "domain": {"ranges": {"Y": ["-oo", "0"]}},
+    "quantities": {
+        "rest": {"equilibrium": "Y"},
+        "bounce": {"angular_frequency": "Y"},
+        "sway": {"angular_frequency": "X"},
+        "stiff": {"stiffness": "Y"},
+    },
+}
+
+
+def test_a_bob_on_a_spring_free_in_three_dimensions_has_each_coordinates_equilibrium_and_frequency() -> None:
+    """Y's force depends on X and Z, but the coordinates rest together below the anchor and separate
+    there: it bounces at sqrt(k/m) and sways as a pendulum of the stretched spring's length."""
+    derivation = derive(load_model(RESTING_BOB, SPRING_SYMBOLS))
+    stretched = L0 + M1 * G / K
+    expected = {
+        "rest": -stretched,
+        "bounce": sympy.sqrt(K / M1),
+        "sway": sympy.sqrt(G / stretched),
+        "stiff": K,
+    }
+    for name, value in expected.items():
+        assert sympy.simplify(derivation.quantities[name] - value) == 0, name
+        assert len(derivation.agreement[name]) >= 2 and name in derivation.simulation
+
+
+def test_a_coordinate_oscillating_with_another_is_refused_naming_normal_frequency() -> None:
+    """Two carts in a chain of springs from a wall, the second s beyond the first: x1 has no frequency of
+    its own (moving it moves the second cart too), though s has its equilibrium."""
+    chain = {
+        "coordinates": ["x1", "s"],
+        "bodies": {
+            "one": {"mass": "m1", "position": {"x": "x1"}},
+            "two": {"mass": "m1", "position": {"x": "x1 + s"}},
+        },
+        "potentials": [
+            {"bodies": ["one"], "anchor": {"x": 0}, "distance": "d", "energy": "k*(d - L0)^2/2"},
+            {"bodies": ["one", "two"], "distance": "e", "energy": "k*(e - L0)^2/2"},
+        ],
+        "state": {"x1": "L0", "s": "L0"},
+        "domain": {"ranges": {"x1": ["0", "oo"], "s": ["0", "oo"]}},
+        "quantities": {"rest": {"equilibrium": "s"}, "w1": {"angular_frequency": "x1"}},
+    }
+    with pytest.raises(DerivationError) as caught:
+        derive(load_model(chain, SPRING_SYMBOLS))
+    assert {path[1] for path, _ in caught.value.findings} == {"w1"}
+    assert "x1 oscillates together with s" in str(caught.value)
+    assert "ask for normal_frequency" in str(caught.value)
