@@ -23,7 +23,7 @@ from functools import lru_cache
 import sympy
 
 from physics.engine import depth
-from physics.engine.model import Constraint, ConstraintKind, Model
+from physics.engine.model import AppliedForce, Constraint, ConstraintKind, ForceKind, Model
 from physics.engine.notation import notation_of, split_subscript
 from physics.figures.configuration import drawn_configuration
 from physics.figures.figure import BLOCK, Values, body_label
@@ -209,12 +209,14 @@ def _contact_labels(model: Model, drawn: dict[_Source, str]) -> dict[_Source, st
 
 def _across_the_page(model: Model, body_name: str, given: Mapping[str, float]) -> bool:
     """Whether the diagram, of the x–y plane, would leave out part of a force on a body on z: the body is
-    off the page (z ≠ 0) where the scene draws it, a constraint pulls it along z there, or a potential
-    (read in the x–y plane only) acts on it."""
+    off the page (z ≠ 0) where the scene draws it, a constraint pulls it along z there, a potential
+    (read in the x–y plane only) acts on it, or a given force or drag may push it along z."""
     body = model.body(body_name)
     if not any(axis == depth.DEPTH for axis, _ in body.position):
         return False
     if any(body_name in p.bodies for p in model.potentials):
+        return True
+    if any(_along_z(f) for f in model.forces if f.body == body_name):
         return True
     values = Values(model, given)
     place = _place(model, values, drawn_configuration(model, dict(given)))
@@ -225,6 +227,11 @@ def _across_the_page(model: Model, body_name: str, given: Mapping[str, float]) -
         )
     except (KeyError, TypeError, ValueError, ZeroDivisionError):  # not defined where it is drawn
         return True
+
+
+def _along_z(force: AppliedForce) -> bool:
+    """A given force with a z component, or drag, which opposes a velocity that may run along z."""
+    return force.kind is not ForceKind.APPLIED or any(axis == depth.DEPTH for axis, _ in force.components)
 
 
 def _place(model: Model, values: Values, drawn: dict[sympy.Symbol, float]) -> dict[sympy.Symbol, float]:

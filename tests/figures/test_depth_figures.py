@@ -8,6 +8,7 @@ import copy
 import re
 
 import pytest
+import sympy
 
 from physics.engine import load_model
 from physics.figures import free_body_figure, model_figure
@@ -65,3 +66,17 @@ def test_a_puck_through_a_hole_is_drawn_side_by_side_and_its_forces_in_the_page(
     # at phi = 0 the puck is in the page and the string pulls it along -x, to the hole
     assert "m₁g at -90° from the +x axis; T at 180° from the +x axis; N at 90° from the +x axis" in puck
     assert "m₂g at -90° from the +x axis" in weight and "T at 90° from the +x axis" in weight
+
+
+@pytest.mark.parametrize(
+    ("wind", "drawn"), [({"x": "F"}, True), ({"z": "F"}, False)], ids=["in-the-page", "along-z"]
+)
+def test_a_given_force_on_the_bob_is_drawn_only_where_it_lies_in_the_page(
+    wind: dict[str, str], drawn: bool
+) -> None:
+    windy = copy.deepcopy(CONE)
+    windy["forces"] = [{"body": "bob", "force": wind}]
+    symbols = {**CONE_SYMBOLS, "F": sympy.Symbol("F", positive=True)}
+    svg = free_body_figure(load_model(windy, symbols), "bob", {**VALUES, "F": 2.0}, title="Cone")
+    assert ("not drawn" not in svg) is drawn
+    assert len(ARROW.findall(svg)) == (3 if drawn else 0)
