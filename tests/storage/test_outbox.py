@@ -27,9 +27,15 @@ URLS = (f"{ISSUER}/auth", f"{ISSUER}/token", f"{ISSUER}/jwks")
 DOCUMENT = {"id": PROBLEM, "title": "Wedge", "parts": [{"id": "a"}, {"id": "b"}]}
 
 
+def _a_moment_ago() -> datetime:
+    # The fake LMS checks the tool's token against the real time: a clock that stood still at the
+    # fixture's start and was advanced a few milliseconds could sign an `iat` a second ahead of it.
+    return utc_now() - timedelta(seconds=5)
+
+
 @dataclass
 class Clock:
-    now: datetime = field(default_factory=utc_now)
+    now: datetime = field(default_factory=_a_moment_ago)
 
     def __call__(self) -> datetime:
         return self.now
