@@ -3,8 +3,6 @@ bodies side by side."""
 
 from __future__ import annotations
 
-import math
-
 import sympy
 
 from physics.engine import embedding
@@ -64,7 +62,7 @@ def draw_path(
         top = max(p[1] for p in points) + 1.0
         bottom = min(p[1] for p in points) - 0.5
         figure.canvas.line((0.0, bottom), (0.0, top), dashed=True, width=0.04)
-        figure.canvas.arc((0.0, top - 0.3), 0.5, math.radians(200), math.radians(340))
+        figure.canvas.turning((0.0, top - 0.3), 0.5)
         rates = other_symbols(spin, body, model)
         if rates:
             figure.canvas.text((0.9, top - 0.2), symbol_label(rates[0].name), anchor="start")

@@ -189,7 +189,7 @@ def draw_pendulum(
         ring = [(raised[0] * math.cos(i * math.pi / 24), raised[1] + 0.3 * raised[0] * math.sin(i * math.pi / 24))
                 for i in range(49)]  # fmt: skip
         canvas.polyline(ring, dashed=True, width=0.03)
-        canvas.arc((0.0, -length - 0.3), 0.5, math.radians(200), math.radians(340))
+        canvas.turning((0.0, -length - 0.3), 0.5)
         if rate is not None and isinstance(rate, sympy.Symbol):
             canvas.text((0.8, -length - 0.5), symbol_label(rate.name), anchor="start")
     canvas.line(pivot, raised, width=0.04)

@@ -120,12 +120,22 @@ class Canvas:
         self.line(at(0.58, 0.8), at(0.58, -0.8), width=0.07)  # the piston
         self.line(at(0.58), b, width=0.045)
 
+    def turning(self, c: Point, r: float) -> None:
+        """The sign of a rotation about a vertical axis through `c`, seen from the side: the arc in
+        front of the axis, its head saying which way round."""
+        start, end = math.radians(200), math.radians(340)
+        self.arc(c, r, start, end)
+        tip = (c[0] + r * math.cos(end), c[1] + r * math.sin(end))
+        self._head(tip, -math.sin(end), math.cos(end), head=0.2)
+
     def arrow(self, a: Point, b: Point, *, width: float = 0.06, color: str = INK) -> None:
         self.line(a, b, width=width, color=color)
         dx, dy = b[0] - a[0], b[1] - a[1]
         length = math.hypot(dx, dy) or 1.0
-        ux, uy = dx / length, dy / length
-        head = 0.28
+        self._head(b, dx / length, dy / length, color=color)
+
+    def _head(self, b: Point, ux: float, uy: float, *, head: float = 0.28, color: str = INK) -> None:
+        """An arrowhead with its tip at `b`, pointing along the unit vector (ux, uy)."""
         left = (b[0] - ux * head - uy * head * 0.45, b[1] - uy * head + ux * head * 0.45)
         right = (b[0] - ux * head + uy * head * 0.45, b[1] - uy * head - ux * head * 0.45)
         self._extend(left, right)

@@ -4,8 +4,6 @@ or the axis of the curve a body on a slope follows (a car on a banked road)."""
 
 from __future__ import annotations
 
-import math
-
 import sympy
 
 from physics.engine.model import AuthoredElement, ConstraintKind, Model
@@ -56,7 +54,7 @@ def draw_curve_axis(
     canvas = figure.canvas
     below = -0.7  # the distance to the axis is marked under the ground, as a drawing's dimension is
     canvas.line((x, below), (x, top), dashed=True, width=0.04)
-    canvas.arc((x, top - 0.3), 0.5, math.radians(200), math.radians(340))
+    canvas.turning((x, top - 0.3), 0.5)
     radius = dict(at).get("x") if isinstance(at, dict) else None
     label = symbol_label(str(radius)) if isinstance(radius, str) and radius.isidentifier() else ""
     canvas.line((base[0], base[1]), (base[0], below), dashed=True, width=0.02)

@@ -19,6 +19,7 @@ VALUES = {"m1": 0.5, "L": 1.2, "alpha": 0.6, "A": 2.0, "g": 9.81}
 # from the pivot at the origin down to the bob at +x (SVG's y points down)
 STRING = re.compile(r'<line x1="0\.000" y1="-?0\.000" x2="[1-9][\d.]*" y2="[1-9][\d.]*" stroke="#1b1b1b"')
 ARROW = re.compile(r'<line [^>]*stroke="#a11111"')
+TURNING = re.compile(r'<path d="M [\d.-]+ [\d.-]+ A 0\.500 0\.500 [^>]*/><polygon points=')
 
 
 @pytest.mark.parametrize(
@@ -80,3 +81,10 @@ def test_a_given_force_on_the_bob_is_drawn_only_where_it_lies_in_the_page(
     svg = free_body_figure(load_model(windy, symbols), "bob", {**VALUES, "F": 2.0}, title="Cone")
     assert ("not drawn" not in svg) is drawn
     assert len(ARROW.findall(svg)) == (3 if drawn else 0)
+
+
+@pytest.mark.parametrize("model", [CONE, LIFT], ids=["cone", "cone-in-a-lift"])
+def test_the_sign_of_the_bob_going_round_has_a_head_saying_which_way(model: dict[str, object]) -> None:
+    svg = model_figure(load_model(model, CONE_SYMBOLS), VALUES, title="Cone")
+    # an arc alone, below the circle, reads as a stray mark; its head makes it the sign of a rotation
+    assert TURNING.search(svg), "the arc under the axis, followed by its arrowhead"
