@@ -199,3 +199,14 @@ def test_bank_numeric_part_names_its_symbolic_parts_declared_mistake(
     verdict = graded(problem, part, answer, {"m": "0.50", "L": "0.80", "omega": "6.0"})
     assert (verdict.outcome, verdict.reason) == (Outcome.INCORRECT, Reason.KNOWN_MISTAKE), verdict.feedback
     assert feedback in verdict.feedback
+
+
+def test_a_numeric_part_of_a_model_quantity_names_the_engines_mistakes() -> None:
+    # No symbolic part asks for the common velocity: its mistakes are the engine's. m1 = 1.0 kg,
+    # m2 = 2.0 kg, u = 3.0 m/s: the common velocity is 1.0 m/s, and 2.0 m/s with the masses swapped.
+    problem = compile_problem(bank_documents()["collision-scenarios"])
+    values = {"m1": "1.0", "m2": "2.0", "u": "3.0"}
+    verdict = graded(problem, "common_velocity_numeric", "2.0 m/s", values)
+    assert (verdict.outcome, verdict.reason) == (Outcome.INCORRECT, Reason.KNOWN_MISTAKE), verdict.feedback
+    assert "masses are swapped" in verdict.feedback
+    assert graded(problem, "common_velocity_numeric", "1.0 m/s", values).outcome is Outcome.CORRECT

@@ -447,15 +447,17 @@ def _evaluated(part: NumericPart, of: str, path: Path, context: CompileContext) 
         raise SpecError(f"{of!r} is evaluated at a problem's given values", (*path, "of"))
     if of in context.expressions:
         expr, from_model = context.expressions[of]
+        known = context.mistakes.get(of, ())
     elif derived is not None and of in derived.quantities:
         expr, from_model = derived.quantities[of], True
+        known = derived.mistakes.get(of, ())  # the engine's, as a symbolic part asking for it has them
     else:
         raise SpecError(f"{of!r} is neither a symbolic part nor a model quantity", (*path, "of"))
     missing = sorted(s.name for s in expr.free_symbols if s.name not in doc.given)
     if missing:
         raise SpecError(f"needs given values for {', '.join(missing)}", (*path, "of"))
     _require_dimension(expr, part, of, context.specs, context.table, path)
-    mistakes = tuple(m for m in context.mistakes.get(of, ()) if _recognisable(m.expr, part, doc, context))
+    mistakes = tuple(m for m in known if _recognisable(m.expr, part, doc, context))
     return Evaluated(of, expr, doc, context.table, mistakes), from_model
 
 
