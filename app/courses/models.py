@@ -135,6 +135,8 @@ class Extension(Base):
     due_at: Mapped[datetime] = mapped_column(UTCDateTime())
     # NULL: it covers answers given before it was granted too (see records.ExtensionRecord)
     granted_at: Mapped[datetime | None] = mapped_column(UTCDateTime())
+    # The due dates it replaced when moved, oldest first: [[granted_at ISO or null, due_at ISO], …]
+    earlier: Mapped[list[Any] | None] = mapped_column(JSON)
 
 
 class SolutionView(Base):

@@ -7,7 +7,7 @@ ask here, so a late submission is judged the same way everywhere.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from datetime import datetime, timedelta
 from enum import StrEnum
 from zoneinfo import ZoneInfo, ZoneInfoNotFoundError
@@ -36,11 +36,16 @@ def granted(
     current: ExtensionRecord | None, due_at: datetime, now: datetime, *, regrade_earlier: bool
 ) -> ExtensionRecord:
     """An extension to `due_at` granted now. It counts for answers given from now on, as an LMS's
-    does (earlier late answers keep their penalty), or for every answer when the teacher asks; moving
-    a granted extension keeps what it already covered."""
+    does (earlier late answers keep their penalty), or for every answer when the teacher asks. Moving
+    one is granting it anew: the answers given before keep the due date they were given under (the
+    one it replaces, or the assignment's), so a move regrades nothing a new extension would not."""
     if regrade_earlier:
         return ExtensionRecord(due_at, None)
-    return ExtensionRecord(due_at, now if current is None else current.granted_at)
+    if current is None:
+        return ExtensionRecord(due_at, now)
+    if current.due_at == due_at:
+        return current
+    return ExtensionRecord(due_at, now, (*current.earlier, replace(current, earlier=())))
 
 
 def days_late(submitted_at: datetime, due: datetime) -> int:
@@ -76,8 +81,8 @@ class Counting:
         worked solution was opened: copied, not solved)."""
         if self.solution_opened is not None and submitted_at >= self.solution_opened:
             return None
-        covered = self.extension is not None and self.extension.covers(submitted_at)
-        due = due_for(self.assignment, self.extension if covered else None)
+        in_force = None if self.extension is None else self.extension.in_force(submitted_at)
+        due = due_for(self.assignment, in_force)
         return late_factor(self.assignment.spec.late, submitted_at, due)
 
 

@@ -149,13 +149,23 @@ class AssignmentRecord:
 class ExtensionRecord:
     """A student's own due date for an assignment. It counts for the answers they give from
     `granted_at` on: one given before keeps the grade it had (an extension reopens the assignment, it
-    does not regrade late work), unless the teacher asked it to cover earlier answers too (None)."""
+    does not regrade late work), unless the teacher asked it to cover earlier answers too (None).
+    `earlier` holds the due dates it replaced when it was moved, oldest first, each with its own grant
+    time: an answer keeps the due date in force when it was given, as with a new extension."""
 
     due_at: datetime
     granted_at: datetime | None
+    earlier: tuple[ExtensionRecord, ...] = ()
 
     def covers(self, submitted_at: datetime) -> bool:
         return self.granted_at is None or submitted_at >= self.granted_at
+
+    def in_force(self, submitted_at: datetime) -> ExtensionRecord | None:
+        """The grant that set this student's due date for an answer given then; None before any."""
+        for grant in (self, *reversed(self.earlier)):
+            if grant.covers(submitted_at):
+                return grant
+        return None
 
 
 class CourseNotFound(NotFound):

@@ -253,10 +253,7 @@ class MemoryCourseStore:
             if extension is None:
                 self._extensions.pop((assignment_id, student), None)
             else:
-                granted = None if extension.granted_at is None else extension.granted_at.astimezone(UTC)
-                self._extensions[(assignment_id, student)] = ExtensionRecord(
-                    extension.due_at.astimezone(UTC), granted
-                )
+                self._extensions[(assignment_id, student)] = _utc_extension(extension)
 
     def extensions(self, assignment_id: int) -> dict[str, ExtensionRecord]:
         with self._lock:
@@ -323,3 +320,10 @@ def assignment_grade_queue(
             outbox_store.enqueue(key, stored.student, given, maximum, stored.created_at)
 
     return queue
+
+
+def _utc_extension(extension: ExtensionRecord) -> ExtensionRecord:
+    """As the SQL store hands it back: its times in UTC."""
+    granted = None if extension.granted_at is None else extension.granted_at.astimezone(UTC)
+    earlier = tuple(_utc_extension(x) for x in extension.earlier)
+    return ExtensionRecord(extension.due_at.astimezone(UTC), granted, earlier)

@@ -10,12 +10,11 @@ from sqlalchemy.orm import Session
 
 from app.courses import passback
 from app.courses.models import Assignment, Extension, SolutionView
-from app.courses.records import ExtensionRecord
 from app.db.models import Problem, ProblemVersion, Submission
 from app.db.records import SubmissionRecord
 from app.db.submissions import _record as submission_record
 from app.lti.models import LtiGradeTarget
-from app.storage.sql_courses import assignment_record
+from app.storage.sql_courses import assignment_record, extension_record
 from app.storage.sql_outbox import enqueue_scores
 from physics.verdict import Outcome as Verdicts
 
@@ -52,7 +51,7 @@ def queue_assignment_grades(session: Session, stored: SubmissionRecord) -> int:
             _documents(session, assignment.problems),
             submissions,
             stored.student,
-            None if extension is None else ExtensionRecord(extension.due_at, extension.granted_at),
+            None if extension is None else extension_record(extension),
             stored.created_at,
             {
                 row.problem_id: row.opened_at

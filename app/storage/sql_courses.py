@@ -3,7 +3,8 @@
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
-from datetime import datetime
+from datetime import UTC, datetime
+from typing import Any
 
 from sqlalchemy import delete, select, update
 from sqlalchemy.exc import IntegrityError
@@ -72,6 +73,28 @@ def assignment_record(row: Assignment) -> AssignmentRecord:
         solutions=SolutionRelease(row.solutions),
     )
     return AssignmentRecord(row.id, row.course_id, spec, row.created_at)
+
+
+def extension_record(row: Extension) -> ExtensionRecord:
+    earlier = tuple(
+        ExtensionRecord(_utc(due), None if granted is None else _utc(granted))
+        for granted, due in row.earlier or ()
+    )
+    return ExtensionRecord(row.due_at, row.granted_at, earlier)
+
+
+def _earlier_json(extension: ExtensionRecord) -> list[Any] | None:
+    return [
+        [
+            None if x.granted_at is None else x.granted_at.astimezone(UTC).isoformat(),
+            x.due_at.astimezone(UTC).isoformat(),
+        ]
+        for x in extension.earlier
+    ] or None
+
+
+def _utc(text: str) -> datetime:
+    return datetime.fromisoformat(text).astimezone(UTC)
 
 
 def _write_spec(row: Assignment, spec: AssignmentSpec) -> None:
@@ -395,17 +418,17 @@ class SqlCourseStore:
                         student=student,
                         due_at=extension.due_at,
                         granted_at=extension.granted_at,
+                        earlier=_earlier_json(extension),
                     )
                 )
             else:
                 row.due_at, row.granted_at = extension.due_at, extension.granted_at
+                row.earlier = _earlier_json(extension)
 
     def extensions(self, assignment_id: int) -> dict[str, ExtensionRecord]:
         query = select(Extension).where(Extension.assignment_id == assignment_id)
         with self._database.session(read_only=True) as session:
-            return {
-                row.student: ExtensionRecord(row.due_at, row.granted_at) for row in session.scalars(query)
-            }
+            return {row.student: extension_record(row) for row in session.scalars(query)}
 
     def open_solution(self, student: str, problem_id: str, now: datetime) -> datetime:
         try:

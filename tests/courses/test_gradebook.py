@@ -156,15 +156,55 @@ def test_an_extension_lifts_the_penalty_for_that_student_only():
     [
         (None, False, ExtensionRecord(EXTENDED, GRANTED)),
         (None, True, ExtensionRecord(EXTENDED, None)),
-        # moved later: what it covered already stays covered, nothing more
-        (ExtensionRecord(DUE + timedelta(days=1), DUE), False, ExtensionRecord(EXTENDED, DUE)),
-        (ExtensionRecord(DUE + timedelta(days=1), None), False, ExtensionRecord(EXTENDED, None)),
+        # moved: granted anew, the answers before keeping the due date they were given under
+        (
+            ExtensionRecord(DUE + timedelta(days=1), DUE),
+            False,
+            ExtensionRecord(EXTENDED, GRANTED, (ExtensionRecord(DUE + timedelta(days=1), DUE),)),
+        ),
+        (
+            ExtensionRecord(DUE + timedelta(days=1), None),
+            False,
+            ExtensionRecord(EXTENDED, GRANTED, (ExtensionRecord(DUE + timedelta(days=1), None),)),
+        ),
+        (
+            ExtensionRecord(DUE + timedelta(days=1), DUE, (ExtensionRecord(DUE, None),)),
+            False,
+            ExtensionRecord(
+                EXTENDED,
+                GRANTED,
+                (ExtensionRecord(DUE, None), ExtensionRecord(DUE + timedelta(days=1), DUE)),
+            ),
+        ),
+        # set again to the same date: nothing changes
+        (ExtensionRecord(EXTENDED, DUE), False, ExtensionRecord(EXTENDED, DUE)),
+        # moved with the tick: it covers every answer, and nothing earlier matters
+        (ExtensionRecord(DUE + timedelta(days=1), DUE), True, ExtensionRecord(EXTENDED, None)),
     ],
 )
 def test_an_extension_is_granted_from_now_unless_the_teacher_regrades_earlier_answers(
     current, regrade_earlier, expected
 ):
     assert granted(current, EXTENDED, GRANTED, regrade_earlier=regrade_earlier) == expected
+
+
+@pytest.mark.parametrize(
+    ("answered", "score"),
+    [
+        # before the first grant: late by the assignment's due date, two days
+        (DUE + timedelta(hours=25), 0.8),
+        # under the first extension (to DUE + 36 h), 4 h past it: late by it, as graded then
+        (DUE + timedelta(hours=40), 0.9),
+        # after the move: the new due date
+        (DUE + timedelta(days=3), 1.0),
+    ],
+)
+def test_a_moved_extension_leaves_each_earlier_answer_the_due_date_it_was_given_under(answered, score):
+    first = granted(None, DUE + timedelta(hours=36), DUE + timedelta(hours=26), regrade_earlier=False)
+    moved = granted(first, EXTENDED, GRANTED, regrade_earlier=False)
+    subs = [_sub("acceleration", Outcome.CORRECT, answered)]
+    cell = gradebook.assignment_cell(_assignment(), PARTS, subs, "s1", moved, EXTENDED)
+    assert cell.score == pytest.approx(score) and cell.due == EXTENDED
 
 
 def test_under_a_closed_policy_late_work_does_not_count():

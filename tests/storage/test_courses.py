@@ -283,12 +283,23 @@ def test_extensions_are_set_moved_and_removed_per_student(stores: Stores):
     stores.courses.set_extension(made.id, "s1", ExtensionRecord(NOW + timedelta(days=8), NOW))
     stores.courses.set_extension(made.id, "s1", ExtensionRecord(NOW + timedelta(days=9), None))
     stores.courses.set_extension(made.id, "s2", ExtensionRecord(NOW + timedelta(days=8), NOW))
-    assert stores.courses.extensions(made.id) == {
+    paris = ZoneInfo("Europe/Paris")
+    replaced = (
+        ExtensionRecord(NOW + timedelta(days=8), None),
+        ExtensionRecord(NOW.astimezone(paris) + timedelta(days=9), NOW.astimezone(paris) + timedelta(days=1)),
+    )
+    stores.courses.set_extension(made.id, "s3", ExtensionRecord(NOW + timedelta(days=10), NOW, replaced))
+    got = stores.courses.extensions(made.id)
+    assert got == {
         "s1": ExtensionRecord(NOW + timedelta(days=9), None),
         "s2": ExtensionRecord(NOW + timedelta(days=8), NOW),
+        "s3": ExtensionRecord(NOW + timedelta(days=10), NOW, replaced),
     }
+    assert all(x.due_at.utcoffset() == timedelta(0) for x in got["s3"].earlier)
+    stores.courses.set_extension(made.id, "s3", ExtensionRecord(NOW + timedelta(days=11), NOW))
+    assert stores.courses.extensions(made.id)["s3"].earlier == ()
     stores.courses.set_extension(made.id, "s2", None)
-    assert set(stores.courses.extensions(made.id)) == {"s1"}
+    assert set(stores.courses.extensions(made.id)) == {"s1", "s3"}
     with pytest.raises(AssignmentNotFound):
         stores.courses.set_extension(made.id + 99, "s1", ExtensionRecord(NOW, NOW))
 
