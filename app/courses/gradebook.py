@@ -52,6 +52,7 @@ class AssignmentCell:
     due: datetime
     extended: bool
     parts: tuple[PartCell, ...]
+    extension: ExtensionRecord | None = None
 
     @property
     def attempted(self) -> bool:
@@ -126,6 +127,7 @@ def assignment_cell(
         due=due,
         extended=due > assignment.spec.due_at,
         parts=cells,
+        extension=extension,
     )
 
 
@@ -176,8 +178,8 @@ def build(
 def to_csv(book: Gradebook) -> str:
     """One row per student: id, name, email, each assignment's points (its maximum in the header; empty
     when nothing was answered, as LMS imports read "no grade", apart from a 0 earned), the total, and
-    notes (late penalties, extensions). Scores are written as numbers and text cells
-    quoted and made inert (`app.spreadsheet`), so spreadsheets and LMS gradebook imports read them."""
+    notes (late penalties, extensions with when each was granted). Scores are written as numbers and
+    text cells quoted and made inert (`app.spreadsheet`), so spreadsheets and LMS gradebook imports read them."""
     out = io.StringIO()
     writer = SafeWriter(out)
     writer.writerow(
@@ -194,7 +196,7 @@ def to_csv(book: Gradebook) -> str:
             if cell.frozen:
                 notes.append(f"{assignment.title}: grade frozen, worked solution opened ({_frozen(cell)})")
             if cell.extended:
-                notes.append(f"{assignment.title}: extended to {cell.due:%Y-%m-%d %H:%M} UTC")
+                notes.append(f"{assignment.title}: extended to {cell.due:%Y-%m-%d %H:%M} UTC{_granted(cell)}")
         total, _ = book.total(enrolment.student)
         writer.writerow(
             [enrolment.shown_id, enrolment.name, enrolment.email]
@@ -202,6 +204,14 @@ def to_csv(book: Gradebook) -> str:
             + [total, "; ".join(notes)]
         )
     return out.getvalue()
+
+
+def _granted(cell: AssignmentCell) -> str:
+    """When the extension began to count, which says which late penalties it lifted."""
+    granted_at = None if cell.extension is None else cell.extension.granted_at
+    if granted_at is None:
+        return ", covering the answers given before it too"
+    return f", granted {granted_at:%Y-%m-%d %H:%M} UTC"
 
 
 def _frozen(cell: AssignmentCell) -> str:

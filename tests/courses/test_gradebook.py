@@ -253,6 +253,22 @@ def test_the_csv_has_a_row_per_student_numbers_for_scores_and_inert_text():
 
 
 @pytest.mark.parametrize(
+    ("granted_at", "note"),
+    [
+        (GRANTED, "HW1: extended to 2026-03-07 23:59 UTC, granted 2026-03-04 23:59 UTC"),
+        (None, "HW1: extended to 2026-03-07 23:59 UTC, covering the answers given before it too"),
+    ],
+)
+def test_the_csv_says_when_each_extension_was_granted(granted_at, note):
+    students = [EnrolmentRecord(1, "course:1:s1", "s1", "Ada", "ada@x", DUE)]
+    extensions = {1: {"course:1:s1": ExtensionRecord(EXTENDED, granted_at)}}
+    book = gradebook.build(students, [_assignment()], {1: PARTS}, {}, extensions, GRANTED)
+    rows = list(csv.reader(io.StringIO(gradebook.to_csv(book))))
+    assert rows[0] == ["Student ID", "Name", "Email", "HW1 (out of 2)", "Total (out of 2)", "Notes"]
+    assert rows[1][-1] == note
+
+
+@pytest.mark.parametrize(
     ("release", "now", "done", "released"),
     [
         (SolutionRelease.NEVER, DUE + timedelta(days=30), True, False),
