@@ -336,6 +336,16 @@ def _signed_in_elsewhere(request: Request, context: LtiContext) -> bool:
     return any(session.course_id is not None for _, session in found)
 
 
+async def sign_in_prompt(request: Request, context: LtiContext, frames: list[str]) -> Response:
+    """A page of a course this browser is not signed in to (401): sign in to that course, or, signed
+    in to none, how to sign in."""
+    if await run_in_threadpool(_signed_in_elsewhere, request, context):
+        values: dict[str, Any] = {"title": "Sign in to this course", "other_course": True}
+    else:
+        values = {"title": "Your courses"}
+    return page(request, "courses/signed_out.html", values, status=401, frame_ancestors=frames)
+
+
 @router.get("/courses")
 async def my_courses(request: Request, context: LtiContextDep) -> HTMLResponse:
     services = _services(request)
@@ -371,7 +381,7 @@ async def assignment_page(
     def load() -> dict[str, Any] | str | None:
         who = _student(request)
         if who is None:
-            return "other course" if _signed_in_elsewhere(request, context) else "signed out"
+            return "signed out"
         student = who.student
         if services.stores.courses.enrolment(course_id, student) is None:
             return None
@@ -414,18 +424,8 @@ async def assignment_page(
 
     values = await run_in_threadpool(load)
     frames = await _frames(context)
-    if values == "other course":
-        return page(
-            request,
-            "courses/signed_out.html",
-            {"title": "Sign in to this course", "other_course": True},
-            status=401,
-            frame_ancestors=frames,
-        )
     if values == "signed out":
-        return page(
-            request, "courses/signed_out.html", {"title": "Your courses"}, status=401, frame_ancestors=frames
-        )
+        return await sign_in_prompt(request, context, frames)
     if not isinstance(values, dict):
         return page(
             request,

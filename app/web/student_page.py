@@ -29,7 +29,7 @@ from app.courses.policy import Counting
 from app.lti.context import LtiContext, LtiContextDep
 from app.lti.platforms import platform_origins
 from app.lti.sessions import current_session, requested_course
-from app.web.course_pages import assignment_banner
+from app.web.course_pages import assignment_banner, sign_in_prompt
 from app.web.layout import page, templates
 from app.web.solution_access import Within, solution_release
 from app.web.student_work import ProblemWork, load_work
@@ -251,6 +251,9 @@ async def student_page(problem_id: str, request: Request, context: LtiContextDep
         return _not_found(request, ancestors)
     caller = await _caller(request, context, allow_key=False)
     shell = {"problem_id": problem_id, "scripts": [SCRIPT], "title": "Problem"}
+    if caller is None and requested_course(request) is not None:
+        # Opened from a course's assignment page: a course's student signs in by link, not by key.
+        return await sign_in_prompt(request, context, ancestors)
     if caller is None:
         return page(request, "student/problem.html", {**shell, "mode": "key"}, frame_ancestors=ancestors)
     loaded = await run_in_threadpool(_load, context, problem_id, caller.student, caller.course)

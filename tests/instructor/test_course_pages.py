@@ -330,9 +330,10 @@ def test_student_data_from_a_browser_in_two_courses_asks_for_the_course_only_whe
         assert error["code"] == "forbidden"
 
 
+@pytest.mark.parametrize("problem_page", [False, True])
 @pytest.mark.parametrize("enrolled_in_both", [False, True])
 def test_a_course_page_the_browser_has_no_session_for_asks_to_sign_in_to_that_course(
-    signed_in: TestClient, stores: Stores, enrolled_in_both: bool
+    signed_in: TestClient, stores: Stores, enrolled_in_both: bool, problem_page: bool
 ):
     # the page had acted as the browser's other course's student (`choose` fell back to the latest)
     from datetime import UTC, datetime, timedelta
@@ -348,10 +349,28 @@ def test_a_course_page_the_browser_has_no_session_for_asks_to_sign_in_to_that_co
     signed_in.post(f"/join/{stores.courses.get_course(lecture).join_code}", data={"name": "Ada"})
     if enrolled_in_both:  # one identity in both courses, as an LMS's is
         stores.courses.enrol(lab, stores.courses.roster(lecture)[0].student, "Ada")
-    shown = signed_in.get(f"/courses/{lab}/assignments/{lab_work.id}")
+    # the problem page, opened from the lab's assignment page, had shown the problem's key form
+    path = f"/p/yo-yo?course={lab}" if problem_page else f"/courses/{lab}/assignments/{lab_work.id}"
+    shown = signed_in.get(path)
     assert shown.status_code == 401
     assert "<h1>Sign in to this course</h1>" in shown.text and "Lab work" not in shown.text
+    assert 'id="key-form"' not in shown.text
     assert signed_in.get("/courses").status_code == 200  # still signed in to the lecture
+
+
+@pytest.mark.parametrize(
+    ("path", "status", "shown"),
+    [
+        ("/p/yo-yo?course=1", 401, "You are not signed in."),
+        ("/p/yo-yo", 200, 'id="key-form"'),  # a key's page, as before
+    ],
+)
+def test_a_problem_page_of_a_course_asks_a_browser_signed_in_nowhere_to_sign_in(
+    signed_in: TestClient, path: str, status: int, shown: str
+):
+    browser = TestClient(signed_in.app, follow_redirects=False)
+    got = browser.get(path)
+    assert got.status_code == status and shown in got.text
 
 
 def test_the_course_page_makes_and_turns_off_a_join_code(signed_in: TestClient, stores: Stores):
