@@ -66,15 +66,18 @@ def _course(
 
 
 def _assignment(
-    services: Services, who: auth.Visitor, assignment_id: int
+    services: Services, who: auth.Visitor, assignment_id: int, *, instructor: bool = True
 ) -> tuple[CourseRecord, AssignmentRecord]:
+    """The assignment and its course when the caller teaches it; one of another course is answered
+    as one that does not exist, never naming its course (which would tell that it exists)."""
     try:
         record = services.stores.courses.get_assignment(assignment_id)
-    except AssignmentNotFound:
+        course = access.require_staff(services.stores, who.principal, record.course_id, instructor=instructor)
+    except (AssignmentNotFound, CourseNotFound):
         raise PageError(
             404, "No such assignment", f"There is no assignment {assignment_id} of yours."
         ) from None
-    return _course(services, who, record.course_id, instructor=True), record
+    return course, record
 
 
 def _known_zone(name: str) -> bool:
@@ -604,13 +607,7 @@ async def assignment_results(
     now = request.app.state.lti.clock()
 
     def load() -> dict[str, Any]:
-        try:
-            record = services.stores.courses.get_assignment(assignment_id)
-        except AssignmentNotFound:
-            raise PageError(
-                404, "No such assignment", f"There is no assignment {assignment_id} of yours."
-            ) from None
-        course = _course(services, who, record.course_id)
+        course, record = _assignment(services, who, assignment_id, instructor=False)
         book = service.course_gradebook(services.stores, services.catalog, course, now)
         cells = [book.cell(e.student, record.id) for e in book.students]
         rows = []

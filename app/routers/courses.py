@@ -22,8 +22,10 @@ from app.courses import sessions as course_sessions
 from app.courses.gradebook import AssignmentCell, Gradebook
 from app.courses.policy import due_for, granted
 from app.courses.records import (
+    AssignmentNotFound,
     AssignmentRecord,
     AssignmentSpec,
+    CourseNotFound,
     CourseRecord,
     EnrolmentRecord,
     LateKind,
@@ -461,8 +463,13 @@ def standing(record: AssignmentRecord, cell: AssignmentCell) -> StudentStanding:
 def _assignment_as_staff(
     services: Services, principal: Principal, assignment_id: AssignmentIdPath, *, instructor: bool = False
 ) -> AssignmentRecord:
+    """The assignment when the caller teaches its course; else the 404 of one that does not exist,
+    never naming its course (which would tell that it exists, and whose it is)."""
     record = services.stores.courses.get_assignment(assignment_id)
-    _staff(services, principal, record.course_id, instructor=instructor)
+    try:
+        _staff(services, principal, record.course_id, instructor=instructor)
+    except CourseNotFound:
+        raise AssignmentNotFound(assignment_id) from None
     return record
 
 
@@ -484,7 +491,7 @@ async def get_assignment(
             return assignment_out(record, _points(services, record))
         record = services.stores.courses.get_assignment(assignment_id)
         if services.stores.courses.enrolment(record.course_id, principal.student) is None:
-            raise NotFound(f"There is no assignment {assignment_id} of yours.")
+            raise AssignmentNotFound(assignment_id)  # as for one that does not exist
         return standing(
             record, service.student_cell(services.stores, services.catalog, record, principal.student, now)
         )

@@ -359,6 +359,38 @@ def test_an_assignments_attempts_per_part_override_the_problems(client, teacher)
     assert "Attempts: 1 of 1 used" in page and "(no limit)" not in page
 
 
+@pytest.mark.parametrize(
+    ("method", "path"),
+    [
+        ("GET", "/v1/courses/{c}"),
+        ("GET", "/v1/courses/{c}/roster"),
+        ("GET", "/v1/courses/{c}/assignments"),
+        ("GET", "/v1/courses/{c}/gradebook"),
+        ("GET", "/v1/assignments/{a}"),
+        ("DELETE", "/v1/assignments/{a}"),
+        ("GET", "/v1/assignments/{a}/extensions"),
+        ("DELETE", "/v1/assignments/{a}/extensions/course:{c}:s001"),
+    ],
+)
+def test_another_instructors_course_or_assignment_answers_as_one_that_does_not_exist(
+    client, teacher, other_teacher, method, path
+):
+    # an assignment of another's course had answered "no course 1", telling that it exists and where
+    course = _course(client, teacher)
+    _roster(client, teacher, course)
+    assignment = _assignment(client, teacher, course)["id"]
+    absent = {"c": course + 100, "a": assignment + 100}
+    theirs = client.request(method, path.format(c=course, a=assignment), headers=other_teacher)
+    missing = client.request(method, path.format(**absent), headers=other_teacher)
+    assert theirs.status_code == missing.status_code == 404
+    said = theirs.json()["error"]["message"]
+    assert said == missing.json()["error"]["message"].replace(str(absent["c"]), str(course)).replace(
+        str(absent["a"]), str(assignment)
+    )
+    if "{c}" not in path:
+        assert f"course {course}" not in said
+
+
 def test_an_instructor_assigns_only_problems_that_are_theirs_to_use(client, teacher, other_teacher):
     course = _course(client, teacher)
     response = client.post(

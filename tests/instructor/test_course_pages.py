@@ -711,6 +711,26 @@ def test_an_assignment_whose_upload_was_retired_still_opens_for_its_students_wit
     assert title in shown.text and "My yo-yo" not in shown.text
 
 
+@pytest.mark.parametrize("page", ["edit", "results"])
+def test_another_instructors_assignment_page_answers_as_one_that_does_not_exist(
+    signed_in: TestClient, stores: Stores, page: str
+):
+    # it had answered "There is no course 1 of yours.", telling that the assignment exists and where
+    from datetime import UTC, datetime, timedelta
+
+    from app.courses.records import AssignmentSpec
+
+    now = datetime.now(UTC)
+    spec = AssignmentSpec("Lab work", ("yo-yo",), now - timedelta(days=1), now + timedelta(days=1))
+    theirs = stores.courses.create_assignment(stores.courses.create_course("B", owner="key:other").id, spec)
+    shown = signed_in.get(f"/instructor/assignments/{theirs.id}/{page}")
+    missing = signed_in.get(f"/instructor/assignments/{theirs.id + 100}/{page}")
+    assert shown.status_code == missing.status_code == 404
+    assert f"There is no assignment {theirs.id} of yours." in shown.text
+    assert f"There is no assignment {theirs.id + 100} of yours." in missing.text
+    assert "No such assignment" in shown.text and "There is no course" not in shown.text
+
+
 def test_a_refused_course_page_leads_back_to_the_courses(signed_in: TestClient):
     missing = signed_in.get("/instructor/courses/999")
     assert missing.status_code == 404 and "There is no course 999 of yours." in missing.text
