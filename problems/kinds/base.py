@@ -127,6 +127,7 @@ class MistakeInfo:
     text: str  # the same, as plain text (chart labels)
     feedback: str
     by_author: bool  # written in the problem (else found by the engine)
+    value: str | None = None  # a numeric part's, for the variant described: "1.83 s"
 
 
 @dataclass(frozen=True)

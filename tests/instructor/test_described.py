@@ -13,6 +13,9 @@ from problems.loader import parse_problem
 from problems.variants import fixed_variant
 from tests.bank import bank_documents
 from tests.problems.documents import spring, stated_value
+from tests.problems.test_numeric_mistakes import AT as LIFT_AT
+from tests.problems.test_numeric_mistakes import AT_REST, SAID_AGAIN, SWAPPED
+from tests.problems.test_numeric_mistakes import compiled as lift_problem
 
 
 @pytest.mark.parametrize("sigfigs", [None, 2, 3, 5])
@@ -51,3 +54,35 @@ def test_mistakes_are_labelled_as_an_instructor_types_them() -> None:
     texts = [m.text for part in describe(compile_problem(doc)).parts for m in part.mistakes]
     assert any("^" in text for text in texts), texts  # the wedge's slips hold sin(theta)^2
     assert not any("**" in text for text in texts), texts
+
+
+@pytest.mark.parametrize(
+    ("alpha", "listed"),
+    [
+        pytest.param(None, [(AT_REST, None), (SWAPPED, None), (SAID_AGAIN, None)], id="no-student"),
+        pytest.param(
+            "30", [(AT_REST, "1.867 s"), (SWAPPED, "1.293 s"), (SAID_AGAIN, "1.867 s")], id="a-student"
+        ),
+        # 0.9 % from the right value at 44.5°: the 1 % tolerance takes it for it, so no answer shows it
+        pytest.param("44.5", [(AT_REST, "1.694 s"), (SAID_AGAIN, "1.694 s")], id="within-tolerance-left-out"),
+    ],
+)
+def test_a_numeric_part_lists_the_known_mistakes_it_recognises(alpha, listed) -> None:
+    problem = lift_problem()
+    variant = None if alpha is None else fixed_variant(problem.document, {**LIFT_AT, "alpha": alpha})
+    parts = {p.id: p for p in describe(problem, variant).parts}
+    assert [(m.feedback, m.value) for m in parts["period_numeric"].mistakes] == listed
+    # written as the symbolic part shows them, the author's typing
+    assert [m.latex for m in parts["period_numeric"].mistakes] == [
+        m.latex for m in parts["period"].mistakes if m.feedback in {f for f, _ in listed}
+    ]
+    assert parts["tension_numeric"].mistakes == ()
+
+
+def test_a_numeric_part_of_a_model_quantity_lists_the_engines_mistakes() -> None:
+    # m1 = 1.0 kg, m2 = 2.0 kg, u = 3.0 m/s: a common velocity of 1.0 m/s, 2.0 m/s with the masses swapped
+    doc = bank_documents()["collision-scenarios"]
+    variant = fixed_variant(doc, {"m1": "1.0", "m2": "2.0", "u": "3.0"})
+    part = next(p for p in describe(compile_problem(doc), variant).parts if p.id == "common_velocity_numeric")
+    swapped = [m for m in part.mistakes if "masses are swapped" in m.feedback]
+    assert [(m.value, m.by_author) for m in swapped] == [("2.000 m/s", False)]

@@ -51,11 +51,13 @@ from problems.kinds.base import (
     CheckResult,
     CompileContext,
     MeaningContext,
+    MistakeInfo,
     PartInfo,
     Path,
     Reference,
     explain,
 )
+from problems.kinds.symbolic import described_mistake
 from problems.variants import evaluate_reference, format_number, format_quantity, si_values, unit_scale
 
 if TYPE_CHECKING:
@@ -252,13 +254,20 @@ class CompiledNumericPart:
         right value (no answer could show that mistake) and those that are no finite real number there."""
         found = []
         for mistake in mistakes:
-            try:
-                value = evaluate_reference(mistake.expr, values, self.units)
-            except SpecError:
-                continue
-            if not accepts(self.tolerance, value, expected):
+            value = self.mistaken_value(mistake, values, expected)
+            if value is not None:
                 found.append(MistakenValue(value, mistake.feedback))
         return tuple(found)
+
+    def mistaken_value(
+        self, mistake: KnownMistake, values: Mapping[sympy.Symbol, sympy.Expr], expected: Decimal
+    ) -> Decimal | None:
+        """The mistake's value in `units`, or None where no answer could show it (see `_mistaken`)."""
+        try:
+            value = evaluate_reference(mistake.expr, values, self.units)
+        except SpecError:
+            return None
+        return None if accepts(self.tolerance, value, expected) else value
 
     @cached_property
     def _stated(self) -> NumericSpec:
@@ -408,6 +417,7 @@ class NumericKind:
             expected=expected,
             expected_full=full,
             error=error,
+            mistakes=() if error else _described_mistakes(part, compiled, variant),
         )
 
 
@@ -438,6 +448,35 @@ def _shown_value(
     # A part graded to n significant figures shows the value an answer must equal, by the same rule.
     shown = format_quantity(round_sigfigs(value, part.tolerance.sigfigs or SHOWN_FIGURES), part.units)
     return shown, format_quantity(value, part.units), None
+
+
+def _described_mistakes(
+    part: CompiledNumericPart, compiled: CompiledProblem, variant: Variant | None
+) -> tuple[MistakeInfo, ...]:
+    """The known mistakes an answer is recognised as, written as its symbolic part shows them (a model
+    quantity's are the engine's); for a variant, only those its tolerance tells from the right value
+    there, each with its value."""
+    if not isinstance(part.value, Evaluated) or not part.value.mistakes:
+        return ()
+    of = part.value.of
+    symbolic = compiled.parts.get(of)
+    known: tuple[KnownMistake, ...] = getattr(getattr(symbolic, "context", None), "mistakes", ())
+    written = getattr(compiled.document.part(of), "mistakes", ()) if symbolic is not None else ()
+    values = None if variant is None else part._values(variant)
+    expected = None if variant is None else part.reference(variant)
+    found = []
+    for mistake in part.value.mistakes:
+        # its place among the symbolic part's says whether the author wrote it, and as what
+        index = known.index(mistake) if mistake in known else len(written)
+        info = described_mistake(mistake.expr, mistake.feedback, written, index, compiled.table)
+        if values is not None and expected is not None:
+            value = part.mistaken_value(mistake, values, expected)
+            if value is None:
+                continue
+            shown = round_sigfigs(value, part.tolerance.sigfigs or SHOWN_FIGURES)
+            info = dataclasses.replace(info, value=format_quantity(shown, part.units))
+        found.append(info)
+    return tuple(found)
 
 
 def _evaluated(part: NumericPart, of: str, path: Path, context: CompileContext) -> tuple[Evaluated, bool]:
