@@ -106,6 +106,31 @@ def test_fitting_against_the_angle_or_a_factor_off_is_said() -> None:
     assert doubled.reason is Reason.KNOWN_MISTAKE and "2 times" in doubled.feedback
 
 
+@pytest.mark.parametrize(
+    ("scale", "units", "reason", "said"),
+    [
+        (1, "m/s^2", Reason.KNOWN_MISTAKE, "2 times"),
+        (100, "cm/s^2", Reason.KNOWN_MISTAKE, "2 times"),  # held against the answer as read, in its units
+        (1, "m/s", Reason.WRONG_DIMENSION, "is expected"),  # the units' message wins, as for a numeric part
+    ],
+)
+def test_a_wrong_fit_is_named_from_the_answer_read_once(monkeypatch, scale, units, reason, said) -> None:
+    # Each wrong fit was a question of its own that read the answer again: a regrade read every answer
+    # once per wrong fit.
+    from physics.numeric import check
+
+    read_numeric_answer = check.read_numeric_answer
+    part, variant = _student("alice")
+    lab, question = part.lab(variant), part.question(variant)
+    reads = []
+    monkeypatch.setattr(
+        check, "read_numeric_answer", lambda *a, **k: reads.append(a) or read_numeric_answer(*a, **k)
+    )
+    verdict = question.grade(f"{2 * lab.fit.value * scale:.5f} {units}")
+    assert verdict.reason is reason and said in verdict.feedback
+    assert len(question.mistakes) >= 2 and len(reads) == 1
+
+
 def test_the_student_sees_their_own_table_plot_and_csv() -> None:
     doc, compiled = _lab()
     variant = draw_variant(doc, 1, "alice", "secret")

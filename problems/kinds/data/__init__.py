@@ -20,9 +20,9 @@ from physics.checking import QuestionJob, read_expression
 from physics.errors import SpecError
 from physics.fitting import Fit, fit_parameter, measurements, proportional_fit
 from physics.mathinput import InputLimits
-from physics.numeric import NumericSpec, Tolerance
+from physics.numeric import MistakenValue, NumericSpec, Tolerance
 from physics.pickling import pickled_by_fields
-from physics.verdict import Outcome, Preview, Reason, Verdict
+from physics.verdict import Outcome, Reason
 from problems.fields import PART_ID, Attempts, CheckBody, Name, RequestText, ShortRequestText, Strict, Text
 from problems.kinds.base import CheckResult, CompileContext, MeaningContext, PartInfo, Path, Reference
 from problems.modelinfo import missing_quantity
@@ -80,7 +80,7 @@ class DataJob:
     units: str | None = None
     limits_config: InputLimits = dataclasses.field(default_factory=InputLimits)
 
-    def question(self) -> DataQuestion:
+    def question(self) -> NumericSpec:
         if len(self.settings) != len(self.measured):
             raise SpecError("as many measurements as settings are needed", ("measured",))
         names = {name: sympy.Symbol(name, real=True) for name in (self.vary, self.fit, *dict(self.values))}
@@ -93,7 +93,7 @@ class DataJob:
             fit = fit_parameter(quantity, vary, parameter, self.settings, self.measured, fixed, 1.0)
         except ValueError as error:
             raise SpecError(str(error), ("measured",)) from None
-        return DataQuestion(_spec(fit.value, WITHIN * fit.standard_error, self.units or "1"))
+        return _spec(fit.value, WITHIN * fit.standard_error, self.units or "1")
 
 
 class DataPart(Strict):
@@ -109,32 +109,6 @@ class DataPart(Strict):
     measured_units: Annotated[str, Field(min_length=1, max_length=40)]  # the measurements' units
     measured_name: Annotated[str, Field(min_length=1, max_length=60)] = "y"  # column heading, e.g. "a"
     max_attempts: Attempts | None = None
-
-
-@dataclass(frozen=True)
-class Mistaken:
-    spec: NumericSpec
-    feedback: str
-
-
-@dataclass(frozen=True)
-class DataQuestion:
-    """One student's fit, and the values a wrong fit of their data gives."""
-
-    spec: NumericSpec
-    wrong: tuple[Mistaken, ...] = ()
-
-    def grade(self, answer: str, limits: InputLimits | None = None) -> Verdict:
-        verdict = self.spec.grade(answer)
-        if verdict.outcome is not Outcome.INCORRECT or verdict.reason is Reason.WRONG_DIMENSION:
-            return verdict
-        for wrong in self.wrong:
-            if wrong.spec.grade(answer).outcome is Outcome.CORRECT:
-                return Verdict(Outcome.INCORRECT, 0.0, Reason.KNOWN_MISTAKE, wrong.feedback, verdict.read_as)
-        return verdict
-
-    def read(self, answer: str, limits: InputLimits | None = None) -> Preview:
-        return self.spec.read(answer)
 
 
 @dataclass(frozen=True)
@@ -198,19 +172,21 @@ class CompiledDataPart:
         )
         return Lab(self.settings, shown, Fit(fit.value / p_scale, fit.standard_error / p_scale), bool(linear))
 
-    def question(self, variant: Variant | None = None) -> DataQuestion:
+    def question(self, variant: Variant | None = None) -> NumericSpec:
+        """The student's fit, with the values wrong fits of their data give as its known mistakes (read
+        once and held against each, within the fit's tolerance)."""
         if variant is None:
             raise ValueError(f"part {self.id!r} grades each student's own data: it needs their variant")
         lab = self.lab(variant)
         spec = _spec(lab.fit.value, WITHIN * lab.fit.standard_error, self.units)
-        wrong: list[Mistaken] = []
+        wrong: list[MistakenValue] = []
         if lab.linear:
             y_scale = float(unit_scale(self.measured_units)) / float(unit_scale(self.units))
             for unit_name, scale in (("radians", float(unit_scale(self.vary_unit))), (self.vary_unit, 1.0)):
                 slope = proportional_fit([x * scale for x in lab.settings], lab.measured) * y_scale
                 wrong.append(
-                    Mistaken(
-                        _spec(slope, WITHIN * lab.fit.standard_error, self.units),
+                    MistakenValue(
+                        _value(slope),
                         f"That is the slope of the measurements against ${typeset.latex(self.vary)}$ itself (in "
                         f"{unit_name}): they are proportional to ${typeset.latex(sympy.diff(self.quantity, self.parameter))}$, "
                         "so fit them against that.",
@@ -218,15 +194,14 @@ class CompiledDataPart:
                 )
         for factor, said in ((2, "2 times"), (sympy.Rational(1, 2), "half")):
             wrong.append(
-                Mistaken(
-                    _spec(lab.fit.value * float(factor), WITHIN * lab.fit.standard_error, self.units),
+                MistakenValue(
+                    _value(lab.fit.value * float(factor)),
                     f"That is {said} the value your data give: check the factor relating the slope to "
                     f"${typeset.latex(self.parameter)}$.",
                 )
             )
-        return DataQuestion(
-            spec, tuple(w for w in wrong if abs(w.spec.expected - spec.expected) > 2 * _tolerance(spec))
-        )
+        apart = tuple(w for w in wrong if abs(w.value - spec.expected) > 2 * _tolerance(spec))
+        return dataclasses.replace(spec, mistakes=apart)
 
     def job(self, answer: str, variant: Variant | None = None) -> QuestionJob:
         return QuestionJob(answer, self.question(variant))
@@ -279,8 +254,12 @@ def _tolerance(spec: NumericSpec) -> Decimal:
     return spec.tolerance.abs or Decimal(0)
 
 
+def _value(value: float) -> Decimal:
+    return Decimal(f"{value:.12g}")
+
+
 def _spec(value: float, within: float, units: str) -> NumericSpec:
-    expected = Decimal(f"{value:.12g}")
+    expected = _value(value)
     allowed = Decimal(f"{max(within, abs(value) * 1e-9):.6g}")
     return NumericSpec(
         expected=expected, units=None if units == "1" else units, tolerance=Tolerance(abs=allowed)
@@ -370,8 +349,8 @@ class DataKind:
                         problem, part.id, f"student {index} {label}", ok, "" if ok else verdict.feedback
                     )
                 )
-            for j, wrong in enumerate(question.wrong, start=1):
-                verdict = question.grade(f"{wrong.spec.expected}{unit}")
+            for j, wrong in enumerate(question.mistakes, start=1):
+                verdict = question.grade(f"{wrong.value}{unit}")
                 ok = verdict.reason is Reason.KNOWN_MISTAKE
                 results.append(
                     CheckResult(
