@@ -100,7 +100,7 @@ class ComparisonRow:
     unknowns: int
     forces: str  # Markdown: "$N_{1}$, $N_{2}$" or "none"
     steps: int
-    answers: str  # Markdown: the parts it answers
+    answers: str  # the numbers of the parts it answers, "1, 2, 3"
 
 
 @dataclass(frozen=True)
@@ -334,10 +334,11 @@ def worked_solutions(
 
 
 def compare(methods: Sequence[MethodInfo], compiled: CompiledProblem) -> Comparison:
-    parts = {p.id: p for p in compiled.document.parts}
+    parts = compiled.document.parts
     rows = []
     for m in methods:
-        answered = [pid for pid, p in parts.items() if getattr(p, "quantity_name", pid) in m.answers]
+        # by the number the answers' list gives each part: a hand-out's reader never sees part ids
+        answered = [str(n) for n, p in enumerate(parts, 1) if getattr(p, "quantity_name", p.id) in m.answers]
         rows.append(
             ComparisonRow(
                 method=m.title,
@@ -345,7 +346,7 @@ def compare(methods: Sequence[MethodInfo], compiled: CompiledProblem) -> Compari
                 unknowns=m.unknowns,
                 forces=", ".join(f"${f}$" for f in m.constraint_forces) or "none",
                 steps=len(m.steps),
-                answers=", ".join(f"`{a}`" for a in answered) or "—",
+                answers=", ".join(answered) or "—",
             )
         )
     return Comparison(tuple(rows), _advice(methods))

@@ -257,3 +257,15 @@ def test_after_an_answer_the_attempts_are_said_once_in_the_verdict_and_shown_in_
     work = client.get("/p/yo-yo/parts/tension/work", headers=headers).text
     assert '<span class="visually-hidden">Attempts: 1 used.</span>' in work  # said with the verdict
     assert '<span class="attempts" aria-hidden="true">Attempts: 1 used' in work  # and only shown here
+
+
+def test_the_comparison_names_the_parts_each_method_answers_by_their_numbers(signed_in: TestClient) -> None:
+    # A hand-out's reader sees the answers numbered 1, 2, …, never the parts' ids
+    hand_out = signed_in.get("/instructor/problems/yo-yo/solution").text
+    comparison = hand_out[hand_out.index('<section class="comparison"') :]
+    comparison = comparison[: comparison.index("</table>")]
+    answered = re.findall(r'data-label="Parts it answers"><span>([^<]*)</span>', comparison)
+    assert answered and "acceleration" not in comparison
+    assert all(re.fullmatch(r"\d(, \d)*", cell) for cell in answered), answered
+    # Newton's laws give the acceleration and the tension, parts 1 and 2; the energy the acceleration
+    assert {"1, 2", "1"} <= set(answered), answered
