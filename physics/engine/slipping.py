@@ -125,7 +125,7 @@ def slipping_limit(method: Method, quantity: Quantity) -> sympy.Expr:
             quantity=quantity.name,
         )
     method.step(
-        f"Limit of static friction at {friction_name}",
+        f"Limit of static friction {method.force_named(friction_name)}",
         rf"f = {method.tex(friction)},\ N = {method.tex(normal)},\ |f| = {method.tex(mu)} N"
         rf"\Rightarrow {method.tex(parameter)} = {method.tex(inside[0])}",
     )

@@ -172,3 +172,66 @@ def test_a_speed_where_the_motion_gets_to_names_the_body_in_the_problems_words()
     assert audit(model, derivation.notation, derivation.methods) == []
     titles = [s.title for m in derivation.methods for s in m.steps]
     assert "Speed of «cart2» there" in titles
+
+
+SLIPPING: list[tuple[str, Mapping[str, Any]]] = [
+    (
+        "a rolling element's grip, named by the element (hoopRolling)",
+        {
+            "elements": {
+                "hoop": {
+                    "kind": "rolling",
+                    "mass": "m",
+                    "radius": "R",
+                    "inertia": "m*R^2",
+                    "angle": "theta",
+                    "coordinate": "s",
+                }
+            },
+            "gravity": "g",
+            "domain": {"ranges": {"theta": ["0", "pi/2"]}},
+            "quantities": {
+                "least": {
+                    "slipping": "mu_s",
+                    "friction": "hoopRolling",
+                    "normal": "hoop",
+                    "coefficient": "mu_s",
+                }
+            },
+        },
+    ),
+    (
+        "a grip written by hand",
+        {
+            "coordinates": [],
+            "bodies": {"block": {"mass": "m", "position": {"x": 0, "y": 0}}},
+            "gravity": "g",
+            "constraints": {
+                "slope": {"kind": "surface", "gap": "x_block*sin(theta) + y_block*cos(theta)"},
+                "hold": {"kind": "other", "gap": "y_block*sin(theta) - x_block*cos(theta)"},
+            },
+            "domain": {"ranges": {"theta": ["0", "pi/2"]}},
+            "quantities": {
+                "steepest": {
+                    "slipping": "theta",
+                    "friction": "hold",
+                    "normal": "slope",
+                    "coefficient": "mu_s",
+                }
+            },
+        },
+    ),
+]
+
+
+@pytest.mark.parametrize(("what", "data"), SLIPPING, ids=[c[0] for c in SLIPPING])
+def test_a_limit_of_static_friction_names_the_friction_force_as_the_solution_writes_it(
+    what: str, data: Mapping[str, Any]
+) -> None:
+    symbols = {n: sympy.Symbol(n, positive=True) for n in ["m", "R", "theta", "g", "mu_s"]}
+    model = load_model(data, symbols)
+    derivation = derive(model)
+    assert derivation.notation is not None
+    assert audit(model, derivation.notation, derivation.methods) == []
+    titles = [s.title for m in derivation.methods for s in m.steps if s.title.startswith("Limit of static")]
+    assert titles and all("$" in t for t in titles), titles
