@@ -36,7 +36,12 @@ from physics.engine.results import Derivation, KnownMistake, LimitCase, MethodRe
 from physics.engine.settle import settle
 from physics.engine.simulation import Simulator
 from physics.engine.sizes import check_friction_reactions, check_sizes
-from physics.engine.soundness import check_gravity, check_magnitudes, check_state_in_range
+from physics.engine.soundness import (
+    check_gravity,
+    check_magnitudes,
+    check_state_in_range,
+    check_weight_as_force,
+)
 from physics.engine.trajectory import check_slopes
 from physics.errors import DerivationError, PhyscheckError
 from physics.wording import counted
@@ -97,6 +102,7 @@ def _derive_model(model: Model) -> Derivation:
     check_sizes(model)  # before the consistency: a pendulum of length -L violates its own string
     check_consistency(model, mech)
     check_gravity(model)
+    check_weight_as_force(model)
     check_angles_in_radians(model)  # before the range: 30 (degrees meant) is outside [0, pi/2] for that cause
     check_slopes(model)
     check_state_in_range(model)

@@ -49,6 +49,32 @@ def check_gravity(model: Model) -> None:
     )
 
 
+def check_weight_as_force(model: Model) -> None:
+    """Without `gravity:`, a given force of a body's mass times an acceleration symbol (m*g) along +y is its
+    weight typed with the sign of "up": every method and the simulation would lift the body with it."""
+    if model.gravity is not None:
+        return
+    dims = dict(model.dimensions)
+    for force in model.forces:
+        components = dict(force.components)
+        up = components.get("y")
+        if up is None or set(components) - {"y"} or not force.constant(model.moving_symbols):
+            continue
+        mass = model.body(force.body).mass
+        ratio = sympy.simplify(up / mass)
+        if not isinstance(ratio, sympy.Symbol) or ratio not in model.parameters:
+            continue
+        if dims.get(ratio) != LENGTH / TIME**2 and not (ratio.name == "g" and ratio not in dims):
+            continue
+        shown = typed_text(up)
+        raise DerivationError(
+            f"the force {shown} on {force.body} points up (+y) and the model has no gravity: if it is "
+            f"{force.body}'s weight, it points down. Write `gravity: {ratio}` (it acts along −y on every "
+            f"body) and leave this force out, or write it as {{y: {typed_text(-up)}}}",
+            path=("forces", model.force_entries.index(force)),
+        )
+
+
 def check_state_in_range(model: Model) -> None:
     """Where the state puts a coordinate lies inside the range the model declares for it: the range says
     which side of an anchor a body is on (a spring's length is |d|, and -d on the negative side), so a

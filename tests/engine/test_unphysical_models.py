@@ -252,3 +252,45 @@ def test_a_surface_pulling_on_the_whole_domain_says_so_without_a_constant_for_a_
     error = _refusal(CREST, "m g R v")
     assert "the surface would pull on the whole domain" in error.message
     assert "-1 < 0" not in error.message
+
+
+HANGING_WEIGHT = """
+# a block hanging from a spring whose top is the origin; y is up; its weight given as a force
+coordinates: [y]
+bodies:
+  block: {mass: m, position: {y: y}}
+elements:
+  spring: {kind: spring, between: [block, {y: 0}], stiffness: k, length: L0}
+forces:
+  - {body: block, force: {y: WEIGHT}}
+GRAVITY
+domain:
+  ranges: {y: ["-oo", "0"]}
+  positive: ["k*L0 - m*g"]
+quantities:
+  rest: {equilibrium: y}
+"""
+
+
+_m, _k, _g, _L0 = sympy.symbols("m k g L0", positive=True)
+
+
+@pytest.mark.parametrize(
+    ("weight", "gravity", "rest"),
+    [
+        ('"m*g"', "", None),  # the weight typed up, no gravity: refused
+        ('"-m*g"', "", -_L0 - _m * _g / _k),  # typed down: it is the weight
+        ('"m*g"', "gravity: g", -_L0),  # up beside gravity: a lift that balances the weight, as given
+    ],
+)
+def test_a_force_of_mass_times_g_pointing_up_without_gravity_is_refused_as_a_weight_typed_up(
+    weight: str, gravity: str, rest: sympy.Expr | None
+) -> None:
+    text = HANGING_WEIGHT.replace("WEIGHT", weight).replace("GRAVITY", gravity)
+    if rest is None:
+        error = _refusal(text, "m k g L0")
+        assert error.path == ("forces", 0)
+        assert "the force g*m on block points up (+y) and the model has no gravity" in error.message
+        assert "Write `gravity: g`" in error.message
+        return
+    assert sympy.simplify(_derive(text, "m k g L0")["rest"] - rest) == 0
