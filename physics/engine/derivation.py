@@ -29,7 +29,7 @@ from physics.engine.method import Method, NotApplicable
 from physics.engine.mistakes import generate_limits, generate_mistakes
 from physics.engine.model import Model, Quantity
 from physics.engine.newton import NewtonMethod
-from physics.engine.parting import check_parting
+from physics.engine.parting import check_parting, check_release
 from physics.engine.pivot_inertia import check_pivot_inertias
 from physics.engine.proof import clear_domain_points, domain_points, prove_equal
 from physics.engine.results import Derivation, KnownMistake, LimitCase, MethodReport, SimulationCheck
@@ -114,6 +114,7 @@ def _derive_model(model: Model) -> Derivation:
     check_contact_sides(model, mech)  # after the clearances: a unit normal mirrors the contact
     check_heading(model)
     check_parting(model)
+    check_release(model)
     check_buffers_placed(model, mech)
     methods = [cls(model, mech) for cls in _methods()]
     answers: dict[str, dict[str, sympy.Expr]] = {q.name: {} for q in model.quantities}

@@ -85,3 +85,24 @@ def _separation(model: Model) -> sympy.Expr:
         second = {axis: expr.subs(state) for axis, expr in first.items()}
     zero = sympy.Integer(0)
     return sympy.Add(*(n[a] * (second.get(a, zero) - first.get(a, zero)) for a in AXES))
+
+
+def check_release(model: Model) -> None:
+    """An explosion (`release: Q`) parts bodies that are together before, at rest relative to each other
+    along the normal: it adds Q of kinetic energy. Bodies that meet at a speed and `release` the energy
+    a sticking collision loses would gain it twice over, and every method and the simulation agree on
+    those velocities; refused at the impact."""
+    hit = model.impact
+    if hit is None or hit.release is None:
+        return
+    found = impact.contact(model)
+    closing = tidy.simplify(-sympy.Add(*(c * v for c, v in zip(found.normal_row, found.before, strict=True))))
+    if closing == 0:
+        return
+    raise DerivationError(
+        f"`release: {typed_text(hit.release)}` is an explosion: it adds that kinetic energy to bodies "
+        f"that are together before, but here they close along the normal at {typed_text(closing)} at the "
+        "state. Bodies that collide and stick lose energy: write `restitution: 0` (or `stick: true`) and "
+        "ask the energy lost as {kinetic_energy_lost: impact}",
+        path=("impact", "release"),
+    )

@@ -124,6 +124,25 @@ def test_an_explosion_shares_the_energy_released_and_keeps_the_momentum() -> Non
     assert set(result.simulation) == {"v1", "v2", "lost"}
 
 
+@pytest.mark.parametrize(
+    ("state", "closing"),
+    [
+        ({"x1_dot": "u1"}, "u1"),  # a sticking collision's lost energy typed as released
+        ({"x1_dot": "u1", "x2_dot": "u2"}, "u1 - u2"),
+    ],
+)
+def test_an_explosion_between_bodies_that_meet_at_a_speed_is_refused_at_its_release(
+    state: dict[str, str], closing: str
+) -> None:
+    data = shell()
+    data["state"] = state
+    with pytest.raises(DerivationError) as caught:
+        uncached(load_model(data, SYMBOLS))
+    assert caught.value.path == ("impact", "release")
+    assert f"they close along the normal at {closing} at the state" in caught.value.message
+    assert "write `restitution: 0`" in caught.value.message
+
+
 def test_bodies_that_do_not_approach_are_refused_by_the_simulation() -> None:
     data = carts()
     data["domain"] = {"ranges": {"e": ["0", "1"]}}  # u1 - u2 not declared positive
