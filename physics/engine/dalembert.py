@@ -110,6 +110,7 @@ class DAlembertMethod(Method):
                     for d in mech.dofs
                 )
             )
+            + mech.given_at_rest()[list(mech.q).index(q)]
         )
         if model.time is not None and model.time in force.free_symbols:
             raise NotApplicable(NOT_STEADY)

@@ -162,11 +162,16 @@ class LagrangeMethod(Method):
                 rf"{letters.generalized}_{{{self.tex(q)}}} = " + self.tex(force),
             )
             return force
-        force = tidy.simplify(-sympy.diff(self.mech.potential, q))
+        given = self.mech.given_at_rest()[list(self.mech.q).index(q)]
+        force = tidy.simplify(-sympy.diff(self.mech.potential, q) + given)
         self.step(
-            f"Generalized force on {self.named(coordinate)}",
+            f"Generalized force on {self.named(coordinate)}"
+            + (" (the potential's, and the given forces' at rest)" if given != 0 else ""),
             rf"{letters.generalized}_{{{self.tex(q)}}} = -\frac{{\partial {letters.potential}}}"
-            rf"{{\partial {self.tex(q)}}} = " + self.tex(force),
+            rf"{{\partial {self.tex(q)}}}"
+            + (" + " + self.tex(given) if given != 0 else "")
+            + " = "
+            + self.tex(force),
         )
         return force
 
@@ -191,8 +196,9 @@ class LagrangeMethod(Method):
         if driven(self.model):  # Lagrange's equations linearized about the rest relative to the support
             self._at_rest()
             mass, stiffness = self.mode_matrices(at)
-        else:
-            stiffness = sympy.hessian(mech.potential, mech.q).subs(at)
+        else:  # the given forces without a potential stiffen it too: K = V'' - dQ/dq
+            given = sympy.Matrix(mech.given_at_rest())
+            stiffness = (sympy.hessian(mech.potential, mech.q) - given.jacobian(mech.q)).subs(at)
             mass = mech.mass_matrix.subs(at)
         block = modes.coupled([mass, stiffness], list(mech.q).index(q))  # other, uncoupled systems apart
         values = [

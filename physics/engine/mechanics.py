@@ -163,6 +163,19 @@ class Mechanics:
                 total = [t + f for t, f in zip(total, load.force(self, view), strict=True)]
         return total
 
+    def given_at_rest(self) -> list[sympy.Expr]:
+        """The generalized forces, with every velocity zero, of the given forces that have no potential
+        (a force or torque written in the coordinates: a spring on a string's free end as a torque k R s):
+        a rest is where they balance the potential's force too. Drag vanishes at rest; kinetic friction is
+        not taken there."""
+        forces = self.load_forces(
+            False,
+            [sympy.Integer(0)] * len(self.model.constraints),
+            lambda traits: not (traits.conservative or traits.dissipates or traits.constraints),
+        )
+        rest = dict.fromkeys(self.qd, sympy.Integer(0))
+        return [f.subs(rest) for f in self.generalized(forces)]
+
     def velocity_of(self, dof: CartesianDof) -> sympy.Expr:
         """A Cartesian dof's velocity in the coordinates and their velocities."""
         return time_derivative(dof.mapping, self.model)

@@ -168,7 +168,7 @@ class NewtonMethod(Method):
                 for d in mech.dofs
             )
         )
-        force = tidy.simplify(force)
+        force = tidy.simplify(force + mech.given_at_rest()[list(mech.q).index(q)])
         self.step(
             f"Virtual work of the forces along {self.named(coordinate)}",
             rf"{self.mech.notation.letters.generalized}_{{{self.tex(q)}}} = \sum_i F_i "
@@ -181,6 +181,8 @@ class NewtonMethod(Method):
         mech = self.mech
         if self.model.constraints:
             raise NotApplicable("Cartesian small oscillations are done here only without constraints")
+        if any(g != 0 for g in mech.given_at_rest()):
+            raise NotApplicable("a given force in the coordinates has no Cartesian stiffness matrix here")
         q = self.model.coordinate(coordinate).symbol
         at = {**self.rest(coordinate), q: equilibrium}
         point = {d.symbol: d.mapping.subs(at) for d in mech.dofs}

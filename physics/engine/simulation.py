@@ -876,6 +876,10 @@ class Simulator:
             + dyn.potential(shifted(-h), params)
         ) / h**2
         inertia = dyn.mass(base, params)[i][i]
+        if self.model.loads_where(lambda t: not (t.conservative or t.dissipates or t.constraints)):
+            # a force in the coordinates pulls back too (a torque k R s): its slope, from the accelerations
+            pull = [dyn.unknowns(shifted(d), [0.0] * dyn.n, params)[i] for d in (h, -h)]
+            stiffness = -inertia * (pull[0] - pull[1]) / (2 * h)
         if stiffness <= 0:
             raise DerivationError(
                 f"{coordinate}: the potential is not a minimum at the equilibrium {typed_text(q0)}"

@@ -82,6 +82,56 @@ def test_a_force_given_in_the_coordinate_acts_like_a_spring() -> None:
     assert sympy.simplify(result.quantities["a"] + k * A / m) == 0
 
 
+R, M, L0 = sympy.symbols("R M L0", positive=True)
+# a block hanging from a spring element, with a second spring written as a force in the coordinate
+HUNG = {
+    "coordinates": ["y"],
+    "bodies": {"block": {"mass": "m", "position": {"y": "y"}}},
+    "elements": {
+        "spring": {"kind": "spring", "between": ["block", {"y": 0}], "stiffness": "k", "length": "L0"}
+    },
+    "forces": [{"body": "block", "force": {"y": "-c*y"}}],
+    "gravity": "g",
+    "domain": {"ranges": {"y": ["-oo", "0"]}},
+    "quantities": {"rest": {"equilibrium": "y"}, "w": {"angular_frequency": "y"}},
+}
+# a block on a string over a disc pulley whose other run is tied to a spring: the spring as a torque
+PULLEY_SPRING = {
+    "coordinates": ["s"],
+    "bodies": {
+        "wheel": {"mass": "M", "inertia": "M*R^2/2", "position": {"x": 0, "y": 0}, "angle": "-s/R"},
+        "block": {"mass": "m", "position": {"y": "-s"}},
+    },
+    "gravity": "g",
+    "constraints": {
+        "string": {"kind": "string", "gap": "y_block - y_wheel - R*phi_wheel"},
+        "axleX": {"kind": "other", "gap": "x_wheel"},
+        "axleY": {"kind": "other", "gap": "y_wheel"},
+    },
+    "forces": [{"body": "wheel", "torque": "k*R*s"}],
+    "quantities": {"rest": {"equilibrium": "s"}, "w": {"angular_frequency": "s"}},
+}
+
+
+@pytest.mark.parametrize(
+    ("data", "rest", "omega"),
+    [
+        (HUNG, -(k * L0 + m * g) / (k + c), sympy.sqrt((k + c) / m)),
+        (PULLEY_SPRING, m * g / k, sympy.sqrt(k / (m + M / 2))),
+    ],
+    ids=["a second spring as a force", "a spring on the string's free end as a torque"],
+)
+def test_a_force_given_in_the_coordinates_moves_the_rest_and_stiffens_the_oscillation(
+    data: dict[str, Any], rest: sympy.Expr, omega: sympy.Expr
+) -> None:
+    symbols = {**SYMBOLS, "R": R, "M": M, "L0": L0}
+    result = uncached(load_model(data, symbols))
+    assert sympy.simplify(result.quantities["rest"] - rest) == 0
+    assert sympy.simplify(result.quantities["w"] - omega) == 0
+    assert len(result.agreement["rest"]) >= 2 and len(result.agreement["w"]) >= 2
+    assert set(result.simulation) == {"rest", "w"}
+
+
 def test_force_faults_are_reported_with_their_paths() -> None:
     data = falling({"drag": "b", "quadratic_drag": "c"})
     data["forces"].append({"body": "nobody", "drag": "b"})
