@@ -208,7 +208,8 @@ class Method(ABC):
         if len(stable) != 1:
             raise DerivationError(
                 f"{self.title}: expected one stable equilibrium of {coordinate}, found {len(stable)} among "
-                f"the roots {typed_text(roots)} of Q = {typed_text(force)}",
+                f"the roots {typed_text(roots)} of Q = {typed_text(force)}"
+                + ("" if stable else _why_none_stable(force, q, roots, slope, self.model)),
                 quantity=coordinate,
             )
         _check_in_range(stable[0], coordinate, self.model, self.title)
@@ -375,6 +376,37 @@ def _real_roots(expr: sympy.Expr, q: sympy.Symbol) -> list[sympy.Expr]:
         and not (q.is_positive and r.is_positive is False)
         and not (q.is_negative and r.is_negative is False)
     ]
+
+
+def _why_none_stable(
+    force: sympy.Expr, q: sympy.Symbol, roots: list[sympy.Expr], slope: sympy.Expr, model: Model
+) -> str:
+    """Why no root is a stable rest, for the refusal: the roots that push away, and those the
+    coordinate's declared sign (its range starting at 0, open) left out."""
+    why = []
+    unstable = [
+        r for r in roots if sign_on_domain(tidy.simplify(slope.subs(q, r)), model).sign is Sign.POSITIVE
+    ]
+    if unstable:
+        why.append(
+            f"at {typed_text(unstable[0]) if len(unstable) == 1 else typed_text(unstable)} the force pushes "
+            f"{q} away (dQ/d{q} > 0): an unstable rest, so no small oscillation about it (check the sign "
+            "of the potential or of the coordinate)"
+        )
+    free = sympy.Dummy(str(q), real=True)
+    try:
+        everything = [r.subs(free, q) for r in sympy.solve(force.subs(q, free), free)]
+    except (NotImplementedError, TypeError, ValueError):
+        everything = []
+    dropped = [
+        r for r in everything if r.is_real is not False and all(sympy.simplify(r - k) != 0 for k in roots)
+    ]
+    if dropped:
+        why.append(
+            f"{typed_text(dropped)} left out: {q}'s declared range excludes it (a range is open: a rest at "
+            "its end is outside it; widen the range past the rest)"
+        )
+    return "; " + "; ".join(why) if why else ""
 
 
 def _in_range(value: sympy.Expr, coordinate: str, model: Model) -> bool:

@@ -85,6 +85,48 @@ def test_a_potential_without_a_minimum_has_no_stable_equilibrium() -> None:
         uncached(model)
 
 
+HOOP_ON_NAIL = {
+    "elements": {
+        "nail": {
+            "kind": "pendulum",
+            "body": "hoop",
+            "mass": "m",
+            "inertia": "m*R^2",
+            "distance": "R",
+            "coordinate": "phi",
+        }
+    },
+    "gravity": "g",
+    "domain": {"ranges": {"phi": ["RANGE_LOW", "pi"]}},
+    "quantities": {"omega": {"angular_frequency": "phi", "amplitude": "small"}},
+}
+
+
+@pytest.mark.parametrize(
+    ("low", "says"),
+    [
+        (
+            "0",
+            [
+                "at pi the force pushes phi away (dQ/dphi > 0): an unstable rest",
+                "[0] left out: phi's declared range excludes it",
+            ],
+        ),
+        ("pi/2", ["[0] left out", "a range is open"]),
+    ],
+)
+def test_no_stable_rest_says_which_roots_push_away_and_which_the_range_left_out(
+    low: str, says: list[str]
+) -> None:
+    data = copy.deepcopy(HOOP_ON_NAIL)
+    data["domain"]["ranges"]["phi"][0] = low
+    names = {n: sympy.Symbol(n, positive=True) for n in ("m", "R", "g")}
+    with pytest.raises(DerivationError) as caught:
+        uncached(load_model(data, names))
+    for words in says:
+        assert words in caught.value.message
+
+
 def test_an_answer_that_depends_on_the_configuration_needs_a_state() -> None:
     model = _load("ballistic-pendulum", lambda d: d.update(quantities={"swing": {"acceleration": "phi"}}))
     with pytest.raises(DerivationError, match="phi"):
