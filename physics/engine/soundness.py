@@ -7,6 +7,8 @@ proved and simulated consistently; only a check of the model's own sense refuses
 
 from __future__ import annotations
 
+import re
+
 from collections.abc import Mapping
 
 import sympy
@@ -49,9 +51,13 @@ def check_gravity(model: Model) -> None:
     )
 
 
+_GRAVITY_NAME = re.compile(r"g(_\w+)?")
+
+
 def check_weight_as_force(model: Model) -> None:
-    """Without `gravity:`, a given force of a body's mass times an acceleration symbol (m*g) along +y is its
-    weight typed with the sign of "up": every method and the simulation would lift the body with it."""
+    """Without `gravity:`, a given force of a body's mass times g (an acceleration: `g`, `g_0`, `g_moon`)
+    along +y is its weight typed with the sign of "up": every method and the simulation would lift the
+    body with it."""
     if model.gravity is not None:
         return
     dims = dict(model.dimensions)
@@ -64,7 +70,8 @@ def check_weight_as_force(model: Model) -> None:
         ratio = sympy.simplify(up / mass)
         if not isinstance(ratio, sympy.Symbol) or ratio not in model.parameters:
             continue
-        if dims.get(ratio) != LENGTH / TIME**2 and not (ratio.name == "g" and ratio not in dims):
+        # gravity's own letter: a lift's or a rocket's m*A up, in a model without gravity, is a push
+        if not _GRAVITY_NAME.fullmatch(ratio.name) or dims.get(ratio, LENGTH / TIME**2) != LENGTH / TIME**2:
             continue
         shown = typed_text(up)
         raise DerivationError(

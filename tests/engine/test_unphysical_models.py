@@ -69,6 +69,7 @@ DIMENSIONS = {
     "L0": "m",
     "alpha": "1",
     "v": "m/s",
+    "A": "m/s^2",
 }
 
 
@@ -294,3 +295,10 @@ def test_a_force_of_mass_times_g_pointing_up_without_gravity_is_refused_as_a_wei
         assert "Write `gravity: g`" in error.message
         return
     assert sympy.simplify(_derive(text, "m k g L0")["rest"] - rest) == 0
+
+
+def test_a_push_of_mass_times_another_acceleration_without_gravity_is_no_weight_typed_up() -> None:
+    # a rocket's thrust m*A in space (no gravity) points up as written: it is no weight
+    text = HANGING_WEIGHT.replace("WEIGHT", '"m*A"').replace("GRAVITY", "").replace("m*g", "m*A")
+    _A = sympy.Symbol("A", positive=True)
+    assert sympy.simplify(_derive(text, "m k A L0")["rest"] - (-_L0 + _m * _A / _k)) == 0
