@@ -8,7 +8,6 @@ proved and simulated consistently; only a check of the model's own sense refuses
 from __future__ import annotations
 
 import re
-
 from collections.abc import Mapping
 
 import sympy
