@@ -16,6 +16,7 @@ _SPACES = " \u00a0\u2009\u202f"
 ARABIC_THOUSANDS = "٬"
 _NUMBER = _DIGITS + ".," + ARABIC_THOUSANDS
 _RAISED_DIGITS = "⁰¹²³⁴⁵⁶⁷⁸⁹"
+_MINUS_SIGNS = "-−"
 
 
 # A comma braced so that TeX sets no space after it: `4{,}58`, `1{,}500`.
@@ -96,6 +97,10 @@ def side_by_side(text: str, start: int, at: int, *, product: bool = False) -> Pa
     if not second or any(c not in _NUMBER for c in together):  # `4.5e3 12`: nor these
         return ParseError(f"{shown}: two numbers side by side; write one number{times}", at)
     exponent = shown.removeprefix(f"{first} 10 ")
+    if shown == f"{first} 10" and first.replace(".", "", 1).isdecimal():
+        found = calculator_exponent(text, end)
+        if found is not None:  # `4.58 10 -3`: the display of a negative power, its × and ^ left out
+            return calculator_exponent_slip(first, found[1], at, typed=text[start : found[2]])
     if exponent.isdecimal() and len(exponent) <= 2 and first.replace(".", "", 1).isdecimal():
         # `4.58 10 3`: a calculator's display with its × and ^ left out (no group of digits is two long)
         return ParseError(
@@ -120,6 +125,47 @@ def side_by_side(text: str, start: int, at: int, *, product: bool = False) -> Pa
         )
     return ParseError(
         f"{shown}: two numbers side by side; for one number, write {together}{_scientific(together)}{times}",
+        at,
+    )
+
+
+def calculator_exponent(text: str, after: int) -> tuple[int, str, int] | None:
+    """`10-3`, `10 -3`, `10- 3` after the 10 ending at `after`: a calculator's negative exponent typed
+    without its ^ (where the minus stands, the exponent's digits, where they end); None where no minus
+    and digits follow, or where the minus is spaced on both sides (`10 - 3`, a subtraction)."""
+    minus = after
+    while minus < len(text) and text[minus].isspace():
+        minus += 1
+    if minus == len(text) or text[minus] not in _MINUS_SIGNS:
+        return None
+    digits = minus + 1
+    while digits < len(text) and text[digits].isspace():
+        digits += 1
+    end = digits
+    while end < len(text) and text[end] in _DIGITS:
+        end += 1
+    if end == digits or (minus > after and digits > minus + 1):
+        return None
+    return minus, text[digits:end], end
+
+
+def calculator_exponent_slip(
+    mantissa: str, exponent: str, at: int, *, typed: str | None = None
+) -> LikelySlip:
+    """Why `3.0 x 10-3` (or, `typed` as it stands, `4.58 10 -3`, its × left out too) is refused: a
+    calculator's display of mantissa×10^-exponent, which as arithmetic would be 3.0·10 − 3; asked as
+    `4.58 10 3` is."""
+    meant = f"{mantissa}×10^-{exponent}"
+    if typed is not None:
+        shown = " ".join(typed.split())
+        return LikelySlip(
+            f"{shown}: numbers side by side. Did you mean {meant}? For a power of ten, write {meant} or "
+            f"{mantissa}e-{exponent}",
+            at,
+        )
+    return LikelySlip(
+        f"Did you mean {meant}? Write the power of ten with ^ ({meant}, or {mantissa}e-{exponent}); for a "
+        f"subtraction, put spaces round the minus (10 - {exponent})",
         at,
     )
 

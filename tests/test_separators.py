@@ -104,6 +104,18 @@ POWERS_OF_TEN_APART = [
         5,
         "4.58 10 3: numbers side by side. Did you mean 4.58×10^3? For a power of ten, write 4.58×10^3 or 4.58e3",
     ),
+    # its ^ left out, with a minus: was "Did you mean ×10^-3?" (numeric), "4.58 10: …" (symbolic)
+    (
+        "4.58 10 -3",
+        5,
+        "4.58 10 -3: numbers side by side. Did you mean 4.58×10^-3? For a power of ten, write 4.58×10^-3 or "
+        "4.58e-3",
+    ),
+    (
+        "4.58 10−3",
+        5,
+        "4.58 10−3: numbers side by side. Did you mean 4.58×10^-3? For a power of ten, write 4.58×10^-3 or 4.58e-3",
+    ),
     (
         "6 10 23",
         2,

@@ -157,6 +157,8 @@ class Parser:
         first = self._term()
         rest: list[tuple[Literal["+", "-"], Node]] = []
         while (tok := self._tokens[self._i]).kind is Kind.OP and tok.text in "+-":
+            if tok.text == "-" and _after_times_ten(self._tokens, self._i):
+                self._refuse_a_calculator_exponent()
             op = self._advance()
             rest.append(("+" if op.text == "+" else "-", self._term()))
         self._leave()
@@ -225,6 +227,15 @@ class Parser:
             if not items:
                 return first
         return Product(first, tuple((item.op, item.node) for item in items))
+
+    def _refuse_a_calculator_exponent(self) -> None:
+        """`3.0×10-3`, a calculator's display of 3.0×10^-3 with its ^ left out: 3.0·10 − 3 as typed, which
+        no one means; refused as in a numeric answer (a minus spaced on both sides is a subtraction)."""
+        ten = self._tokens[self._i - 1]
+        found = separators.calculator_exponent(self._source, ten.end)
+        if found is not None:
+            mantissa = self._tokens[self._i - 3]
+            raise separators.calculator_exponent_slip(self._typed(mantissa), found[1], found[0])
 
     def _number_after_a_power(self, factor_at: int, exponent: Token, number: Token) -> ParseError:
         """The refusal of `x^2 3`: the power typed from `factor_at` to its `exponent`, then a `number`
@@ -966,6 +977,20 @@ def _number_after_an_exponent(tokens: list[Token], at: int) -> bool:
 
 def _is_raised(token: Token) -> bool:
     return token.kind is Kind.SUP or (token.kind is Kind.OP and token.text == "^")
+
+
+def _after_times_ten(tokens: list[Token], at: int) -> bool:
+    """Whether the minus at `at` follows a number times 10, `3.0×10-3`, the number no exponent."""
+    return (
+        at >= 3
+        and tokens[at - 1].text == "10"
+        and tokens[at - 1].kind is Kind.NUM
+        and tokens[at - 2].kind is Kind.OP
+        and tokens[at - 2].text == "*"
+        and tokens[at - 3].kind is Kind.NUM
+        and not (at >= 4 and _is_raised(tokens[at - 4]))
+        and tokens[at + 1].is_integer_literal
+    )
 
 
 def _times_a_power_of_ten(tokens: list[Token], at: int) -> bool:

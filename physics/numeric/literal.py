@@ -207,7 +207,7 @@ def _scientific(text: str, i: int, start: int) -> tuple[int, int] | None:
     if times_end is None and j > i and text.startswith("10", j):  # `4.58 10^3`: two numbers, never one
         found = _power_of_ten(text, j + 2)
         if found is None:
-            _refuse_calculator_exponent(text, j + 2)  # `4.58 10-3`: its ^ left out too
+            _refuse_calculator_exponent(text, text[start:i], j + 2, apart_from=start)  # `4.58 10-3`
             return None
         raise separators.power_of_ten_apart(text, start, j, found[1])
     if times_end is not None:
@@ -218,7 +218,7 @@ def _scientific(text: str, i: int, start: int) -> tuple[int, int] | None:
                 return None  # `4 × 100`: not a power of ten; the unit reader will refuse it
             found = _power_of_ten(text, after)
             if found is None:
-                _refuse_calculator_exponent(text, after)
+                _refuse_calculator_exponent(text, text[start:i], after)
                 _refuse_two_powers_of_ten(text, text[start:i], after)
                 raise ParseError("Write a power of ten with its exponent, for example 2.5×10^3", after)
             return found
@@ -241,29 +241,21 @@ def _refuse_feet_and_inches(text: str, feet: str, at: int) -> None:
         )
 
 
-class CalculatorExponent(LikelySlip):
-    """`3.0 x 10-3`: a calculator's exponent typed after `×10` without its `^`. Read as arithmetic it
-    would be 3.0·10 − 3 = 27, which no one means by it: refused, whatever the arithmetic reader makes of
-    it, saying how to write either reading. (A minus spaced on both sides, `3 × 10 - 3`, is arithmetic.)"""
-
-    def __init__(self, exponent: str, position: int) -> None:
-        super().__init__(
-            f"Did you mean ×10^-{exponent}? Write the power of ten with ^ (…×10^-{exponent}); for a "
-            f"subtraction, put spaces round the minus (10 - {exponent})",
-            position,
-        )
-
-
-def _refuse_calculator_exponent(text: str, after: int) -> None:
-    """CalculatorExponent if a minus and digits follow the `×10` ending at `after`, the minus glued to the
-    10 or to the digits (`10-3`, `10 -3`, `10- 3`); a minus spaced on both sides is a subtraction."""
-    minus = skip_spaces(text, after)
-    if minus == len(text) or text[minus] not in _MINUS_SIGNS:
+def _refuse_calculator_exponent(
+    text: str, mantissa: str, after: int, *, apart_from: int | None = None
+) -> None:
+    """Refuses `3.0 x 10-3`, a calculator's exponent typed after `×10` (ending at `after`) without its `^`:
+    as arithmetic it would be 3.0·10 − 3 = 27, which no one means by it, so it is refused whatever the
+    arithmetic reader makes of it, asking "Did you mean 3.0×10^-3?". A minus spaced on both sides,
+    `3 × 10 - 3`, is arithmetic. `apart_from`: where the mantissa starts, when its × is left out too
+    (`4.58 10 -3`, refused as numbers side by side, as `4.58 10 3` is)."""
+    found = separators.calculator_exponent(text, after)
+    if found is None:
         return
-    digits = skip_spaces(text, minus + 1)
-    digits_end = _run(text, digits, _DIGITS)
-    if digits_end > digits and (minus == after or digits == minus + 1):
-        raise CalculatorExponent(text[digits:digits_end], minus)
+    minus, exponent, end = found
+    if apart_from is None:
+        raise separators.calculator_exponent_slip(mantissa, exponent, minus)
+    raise separators.calculator_exponent_slip(mantissa, exponent, after - 2, typed=text[apart_from:end])
 
 
 _SPACED_EXPONENT = re.compile(r"[eE][-−+]?\d+(?![\w.])")

@@ -124,6 +124,10 @@ PARSE_ERRORS = [
     # A power of ten marked by both ×10 and e: not 3.0×10^9, as it read
     ("3.0×10e8 x", 6, "Did you mean 3.0×10^8 or 3.0e8?"),
     ("2*10E-3 y", 4, "2×10^-3 or 2E-3"),
+    # a calculator's exponent with its ^ left out, as numeric answers refuse it: was graded as 3.0·10 − 3·x
+    ("3.0×10-3 x", 6, "Did you mean 3.0×10^-3? Write the power of ten with ^"),
+    ("y (3.0 · 10 -3)", 12, "Did you mean 3.0×10^-3?"),
+    ("x*2*10−12", 6, "Did you mean 2×10^-12?"),
     ("x y)", 3, "Unmatched"),
     # a mark over a letter, as a vector or a mean is written on paper: once "Unexpected character"
     ("x⃗ + y", 1, "A mark over x (an arrow, a bar, a hat, a dot) is not read: type the symbol as"),

@@ -124,7 +124,7 @@ BLAME = [
     ("4,580 m/s^2", "m/s^2", Reason.PARSE_ERROR, 1, "decimal point"),
     ("m/s^2", "m/s^2", Reason.PARSE_ERROR, 0, "must start with a number"),
     ("pi", "m/s^2", Reason.MISSING_UNITS, 2, "needs units"),
-    ("4.58 x 10-3 m/s^2", "m/s^2", Reason.PARSE_ERROR, 9, "Did you mean ×10^-3?"),  # not 45.8 − 3
+    ("4.58 x 10-3 m/s^2", "m/s^2", Reason.PARSE_ERROR, 9, "Did you mean 4.58×10^-3?"),  # not 45.8 − 3
     ("2*4.58×10e8 m/s^2", "m/s^2", Reason.PARSE_ERROR, 9, "Did you mean 4.58×10^8 or 4.58e8?"),  # not ×10^9
     # a function under its European or Russian name: never the units t·g (was "A second number …")
     ("9.81 tg 30° m/s^2", "m/s^2", Reason.PARSE_ERROR, 5, "Did you mean tan? Write tan for tg"),

@@ -149,7 +149,7 @@ REFUSED = [
     ("4.5.8", ParseError, 3, "decimal point"),
     ("4.58×10^", ParseError, 7, "power of ten"),
     # A calculator's exponent without its ^: not the arithmetic 3.0·10 − 3 (27)
-    ("3.0 x 10-3 s", ParseError, 8, "Did you mean ×10^-3?"),
+    ("3.0 x 10-3 s", ParseError, 8, "Did you mean 3.0×10^-3?"),
     ("3.0x10-3 s", ParseError, 6, "×10^-3"),
     ("3.0 × 10 -3 s", ParseError, 9, "×10^-3"),
     ("3.0 × 10- 3 s", ParseError, 8, "×10^-3"),
@@ -159,8 +159,10 @@ REFUSED = [
     # a raised dot between whole numbers, British print's decimal point or a product: was read as 4×58
     ("4·58 N", ParseError, 1, "Did you mean 4.58 or 4×58? A raised dot between digits is a decimal point"),
     ("12·5", ParseError, 2, "Did you mean 12.5 or 12×5?"),
-    ("4.58 10-3 m", ParseError, 7, "Did you mean ×10^-3?"),  # its × left out too: was "two numbers"
-    ("4.58 10−12 m", ParseError, 7, "×10^-12"),
+    # its × left out too: was "two numbers", then "Did you mean ×10^-3?" without its number
+    ("4.58 10-3 m", ParseError, 5, "4.58 10-3: numbers side by side. Did you mean 4.58×10^-3?"),
+    ("4.58 10−12 m", ParseError, 5, "Did you mean 4.58×10^-12?"),
+    ("4.58 10 -3 m", ParseError, 5, "4.58 10 -3: numbers side by side. Did you mean 4.58×10^-3?"),
     # A power of ten typed apart from its number: not a unit E to the power −19
     ("1.6 E-19 C", ParseError, 4, "Did you mean 1.6E-19?"),
     ("3.0 e8 m/s", ParseError, 4, "Did you mean 3.0e8?"),
