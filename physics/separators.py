@@ -7,6 +7,8 @@ number as one: it only says what was seen and what to type instead, for both rea
 
 from __future__ import annotations
 
+import re
+
 from physics.errors import LikelySlip, ParseError
 
 _DIGITS = "0123456789"
@@ -17,6 +19,8 @@ ARABIC_THOUSANDS = "٬"
 _NUMBER = _DIGITS + ".," + ARABIC_THOUSANDS
 _RAISED_DIGITS = "⁰¹²³⁴⁵⁶⁷⁸⁹"
 _MINUS_SIGNS = "-−"
+# A power typed on a number: `^2`, `**-2`, `^(1/2)`, `^{2}`, `²`, `⁻¹`.
+_POWER = re.compile(r"(?:\^|\*\*)\s*[-−+]?(?:\d+(?:\.\d+)?|\([^()]*\)|\{[^{}]*\})|⁻?[⁰¹²³⁴⁵⁶⁷⁸⁹]+")
 
 
 # A comma braced so that TeX sets no space after it: `4{,}58`, `1{,}500`.
@@ -91,9 +95,16 @@ def side_by_side(text: str, start: int, at: int, *, product: bool = False) -> Pa
     second = rest.split(" ")[0]
     times = f"; for a product, write {first}*{second}" if product else ""
     together = shown.replace(" ", "")
-    raised = text[end : end + 1] in ("^", *_RAISED_DIGITS, "⁻")  # `2 3^2`: the digits are no one number
-    if raised:
-        return ParseError(f"{shown}: two numbers side by side; write * between them for a product", at)
+    power = _POWER.match(text, end)
+    if power is not None:  # `2 3^2`: the digits are no one number; shown with the power they carry
+        raised = f"{shown}{power.group()}"
+        if " " in rest:  # `1 500 000^2`
+            return ParseError(f"{raised}: numbers side by side; write * between them for a product", at)
+        grouped = first.isdecimal() and len(first) <= 3 and len(second) == 3 and second.isdecimal()
+        one = f"; for one number, write {first}{second}{power.group()}" if grouped else ""  # `1 500^2`
+        return ParseError(
+            f"{raised}: two numbers side by side; for a product, write {first}*{rest}{power.group()}{one}", at
+        )
     if not second or any(c not in _NUMBER for c in together):  # `4.5e3 12`: nor these
         return ParseError(f"{shown}: two numbers side by side; write one number{times}", at)
     exponent = shown.removeprefix(f"{first} 10 ")

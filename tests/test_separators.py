@@ -37,6 +37,15 @@ REFUSED = [
         "4.58 10: two numbers side by side; for a power of ten, write 4.58×10^ and its exponent (as in "
         "4.58×10^3), or 4.58e10 for 4.58×10^10",
     ),
+    # a number with a power after another: the power shown with it (was "2 3: …", the ^2 dropped)
+    ("2 3^2", 2, "2 3^2: two numbers side by side; for a product, write 2*3^2"),
+    ("2 3²", 2, "2 3²: two numbers side by side; for a product, write 2*3²"),
+    ("4.5 2^(1/2)", 4, "4.5 2^(1/2): two numbers side by side; for a product, write 4.5*2^(1/2)"),
+    (
+        "1 500^2",
+        2,
+        "1 500^2: two numbers side by side; for a product, write 1*500^2; for one number, write 1500^2",
+    ),
     # Arabic script's thousands separator is never a decimal one: not asked about, as 1,500 is
     ("٤٬٥٨٠", 1, "4٬580: ٬, the Arabic thousands separator, is not read in a number; write 4580"),
     (
