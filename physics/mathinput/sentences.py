@@ -5,6 +5,8 @@ of the sentence, so `m g` stays an answer however it is surrounded.
 
 from __future__ import annotations
 
+import re
+
 from physics.errors import ParseError
 from physics.mathinput.names import NameTable
 from physics.mathinput.tokentypes import Kind, SpelledWord, Token
@@ -42,6 +44,26 @@ def refuse_leading_sentence(tokens: list[Token], table: NameTable, text: str) ->
             )
 
 
+# The verbs of `T is 2π√(L/g)`, the answer's name before it.
+_NAMING_VERBS = frozenset({"is", "equals", "was", "are"})
+
+
+def refuse_a_named_answer(tokens: list[Token], table: NameTable, text: str) -> None:
+    """Raise where the answer opens with a declared name and a verb (`T is 2π√(L/g)`, T declared),
+    followed by an expression: a sentence, as `The period is 2π√(L/g)` is, not an unknown symbol `is`."""
+    name, verb = tokens[0], tokens[1]
+    if name.kind is not Kind.WORD or verb.text.lower() not in _NAMING_VERBS or not verb.space_before:
+        return
+    expression = _expression_after(tokens, 2, table, text)
+    if not expression:
+        return
+    raise ParseError(
+        f'"{text[name.pos : verb.end]}" is a sentence, which is not read: type only the expression, as in '
+        f"{expression}.",
+        name.pos,
+    )
+
+
 def _leading_words(tokens: list[Token]) -> list[Token]:
     """The words the answer opens with, each spaced from the one before."""
     words: list[Token] = []
@@ -71,3 +93,28 @@ def _expression_after(tokens: list[Token], start: int, table: NameTable, text: s
     if stop == start:
         return ""
     return text[tokens[start].pos : tokens[stop - 1].end].strip()
+
+
+# A name on one side of an `=`: `T`, `ω`, `v_0`, `a_{max}`, `F_N`.
+_NAME_SIDE = re.compile(r"\s*[^\W\d]\w*(?:_\{?\w+\}?)?\s*")
+# Words typed after the expression, as its units in words: `seconds`, `newtons`.
+_TRAILING_WORDS = re.compile(r"(?:\s+[A-Za-z]{4,})+\s*$")
+
+
+def equals_sign(text: str, at: int) -> ParseError:
+    """The refusal of the `=` (or `≈`) at `at`: the answer is the expression alone. Where a name stands on
+    one side and an expression on the other (`T = 2π√(L/g)`, `g sin α = a`), it shows the expression to
+    type, as a sentence's refusal does."""
+    sign = text[at]
+    left, right = text[:at], text[at + 1 :]
+    if "=" not in right and "≈" not in right and right.strip() and left.strip():
+        if _NAME_SIDE.fullmatch(left):
+            expression = _TRAILING_WORDS.sub("", right).strip()
+            return ParseError(
+                f"Give the expression alone, without '{left.strip()} {sign}': type only {expression}.", at
+            )
+        if _NAME_SIDE.fullmatch(right):
+            return ParseError(
+                f"Give the expression alone, without '{sign} {right.strip()}': type only {left.strip()}.", at
+            )
+    return ParseError(f"Give the expression alone, without '{sign}' (nor the name before it).", at)

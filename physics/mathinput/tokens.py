@@ -26,6 +26,7 @@ from physics.mathinput.scripts import (
     raised_exponent,
     word_before_raised,
 )
+from physics.mathinput.sentences import equals_sign
 from physics.mathinput.tokentypes import Kind, SpelledWord, Token
 from physics.mathinput.velocities import PRIMES, derivatives_read, dotted_word, is_word_mark, needs_spelling
 from physics.mathinput.vocabulary import (
@@ -288,7 +289,7 @@ def tokenize(
                 "Leave out the $ signs: type the expression alone (or all of it between two $).", i
             )
         elif ch in "=≈":  # `a = g sin θ`, `≈ 2g`, as written on paper
-            raise ParseError(f"Give the expression alone, without '{ch}' (nor the name before it).", i)
+            raise equals_sign("".join(chars), i)
         elif ch == ":":  # `a: m*g`, Maxima's assignment; `Answer: 2g`, as a sentence introduces it
             raise ParseError("Give the expression alone, without ':' (nor what comes before it).", i)
         elif unicodedata.combining(ch) and tokens and tokens[-1].kind is Kind.WORD and not space:

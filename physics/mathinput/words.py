@@ -12,7 +12,7 @@ from fractions import Fraction
 from physics.characters import as_latin, lookalike_hint
 from physics.errors import AmbiguousInput, TooLarge, UnknownFunction, UnknownSymbol
 from physics.mathinput.names import NameTable, Part
-from physics.mathinput.sentences import refuse_leading_sentence
+from physics.mathinput.sentences import refuse_a_named_answer, refuse_leading_sentence
 from physics.mathinput.tokentypes import Kind, SpelledWord, Token
 from physics.mathinput.vocabulary import DEGREE_WORD, FUNCTIONS, LISTED_FUNCTIONS, MAX_WORD_LENGTH, TIMES_WORD
 
@@ -113,6 +113,8 @@ def resolve_words(tokens: list[Token], table: NameTable, text: str) -> list[Toke
             )
         if prev is None:
             refuse_leading_sentence(tokens, table, text)
+        elif index == 1:
+            refuse_a_named_answer(tokens, table, text)
         allowed = table.declared
         listed = ", ".join(allowed) if allowed else "none"
         constants = "the constants pi and e" if table.euler_available else "the constant pi"

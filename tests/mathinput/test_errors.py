@@ -51,7 +51,7 @@ PARSE_ERRORS = [
     ("2 max(x, (y + 1), y)", 7, "a function of several arguments cannot be written."),
     ("sin(x, y)", 5, "sin(…) takes one argument."),
     ("sin(x) (y, x)", 9, "not a pair or a list"),
-    ("x = y", 2, "Give the expression alone, without '='"),
+    ("x = y", 2, "Give the expression alone, without 'x ='"),
     ("≈ 2 x", 0, "without '≈'"),
     # LaTeX is read (test_latex.py); a command it does not know is refused at its backslash
     ("-\\frac{x}{\\vec{y}}", 10, "Unknown LaTeX command \\vec: type the symbol as the problem lists it"),

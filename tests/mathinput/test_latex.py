@@ -151,7 +151,7 @@ LATEX_ERRORS = [
     (r"\foo", 0, r"Unknown LaTeX command \foo: type that part in plain text, as in sqrt(x)"),
     (r"m g \vec{x}", 4, r"Unknown LaTeX command \vec: type the symbol as the problem lists it"),
     (r"x \pm y", 2, r"Unknown LaTeX command \pm: give one answer"),
-    (r"x = \frac{m}{M}", 2, "Give the expression alone, without '='"),
+    (r"x = \frac{m}{M}", 2, "Give the expression alone, without 'x =': type only \\frac{m}{M}"),
     (r"x \approx y", 2, r"Unknown LaTeX command \approx: type only the expression"),
     (r"x \\ y", 2, r"Unknown LaTeX command \\"),
     (r"\int x", 0, r"Unknown LaTeX command \int: an answer is an expression"),

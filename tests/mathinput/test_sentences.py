@@ -18,6 +18,9 @@ SENTENCES = [
     ("the answer is m g sin θ newtons", ("m", "g", "theta"), "m g sin θ", "the answer is"),
     ("this gives (m+M) g", ("m", "M", "g"), "(m+M) g", "this gives"),
     ("It is \\frac{m g}{k}", ("m", "g", "k"), "\\frac{m g}{k}", "It is"),
+    # the answer's declared name and a verb: once 'Unknown symbol "is"'
+    ("T is 2π√(L/g)", PENDULUM, "2π√(L/g)", "T is"),
+    ("T equals 2π√(L/g) seconds", PENDULUM, "2π√(L/g)", "T equals"),
 ]
 
 
@@ -57,7 +60,23 @@ def test_a_sentence_word_that_reads_as_declared_symbols_is_read() -> None:
     assert read("the g", "t", "h", "e", "g").read_as.text == "t*h*e*g"
 
 
-def test_a_name_and_equals_sign_before_the_expression_keeps_its_own_refusal() -> None:
+EQUATIONS = [
+    # (typed, the refusal, where): an equation's one side a name, shown the other side to type (once
+    # "Give the expression alone, without '=' (nor the name before it)." for each)
+    ("T = 2π√(L/g)", "Give the expression alone, without 'T =': type only 2π√(L/g).", 2),
+    ("T=2π√(L/g) seconds", "Give the expression alone, without 'T =': type only 2π√(L/g).", 1),
+    ("T ≈ 2π√(L/g)", "Give the expression alone, without 'T ≈': type only 2π√(L/g).", 2),
+    ("2π√(L/g) = T", "Give the expression alone, without '= T': type only 2π√(L/g).", 9),
+    # neither side a name alone: said without showing one
+    ("T(L) = 2π√(L/g)", "Give the expression alone, without '=' (nor the name before it).", 5),
+    ("T = 2π√(L/g) = 2 s", "Give the expression alone, without '=' (nor the name before it).", 2),
+]
+
+
+@pytest.mark.parametrize(("typed", "message", "position"), EQUATIONS, ids=[c[0] for c in EQUATIONS])
+def test_an_answer_typed_as_an_equation_is_refused_showing_the_side_to_type(
+    typed: str, message: str, position: int
+) -> None:
     with pytest.raises(ParseError) as caught:
-        read("T = 2π√(L/g) seconds", *PENDULUM)
-    assert caught.value.message == "Give the expression alone, without '=' (nor the name before it)."
+        read(typed, *PENDULUM)
+    assert (caught.value.message, caught.value.position) == (message, position)
