@@ -103,7 +103,7 @@ def resolve_words(tokens: list[Token], table: NameTable, text: str) -> list[Toke
             meant = (
                 f" Did you mean {lowered}? Function names are in small letters."
                 if lowered in FUNCTIONS
-                else other_names_hint(word)
+                else other_names_hint(word, degree_function_argument(tokens[index + 1 :], text))
             )
             raise UnknownFunction(
                 f'Unknown function "{word}".{meant} Functions you can use: {", ".join(LISTED_FUNCTIONS)}.',
@@ -131,7 +131,7 @@ def resolve_words(tokens: list[Token], table: NameTable, text: str) -> list[Toke
             + _subscript_hint(word, allowed, table)
             + _times_letter_hint(word, prev, nxt)
             + _spaced_exponent_hint(word, prev)
-            + other_names_hint(word),
+            + other_names_hint(word, degree_function_argument(tokens[index + 1 :], text)),
             tok.pos,
             word,
             allowed,
@@ -309,21 +309,53 @@ _OTHER_FUNCTION_WORD = re.compile(r"(arcctg|arctg|cotg|ctg|tg|lg)(?![a-z])")
 _DEGREE_FUNCTION_WORD = re.compile(r"(sin|cos|tan|sec|csc|cot)d(?![a-z])")
 
 
-def other_names_hint(word: str) -> str:
+def other_names_hint(word: str, argument: str = "") -> str:
     """A sentence for `tg θ`, `arctg(x)`: a function under its Russian or European name, or MATLAB's
-    `sind(30)`; or "". Never read as the function: t·g where t and g are declared is read so, as before."""
+    `sind(30)`, shown with its `argument` as typed where known (`sind(30)`: "write sin(30°)"); or "".
+    Never read as the function: t·g where t and g are declared is read so, as before."""
     degrees = _DEGREE_FUNCTION_WORD.match(word)
     if degrees is not None:
         name = degrees.group(1)
-        return (
-            f" Did you mean {name}? {name}d is MATLAB's {name} of an angle in degrees: type {name}, with a "
-            f"degree sign after a number of degrees, as in {name}(30°) (an angle's symbol needs none)."
-        )
+        glued = word[degrees.end() :]  # `sind30`
+        return _degree_function_hint(name, glued if glued.isdecimal() else argument.strip())
     found = _OTHER_FUNCTION_WORD.match(word)
     if found is None:
         return ""
     name = _OTHER_FUNCTION_NAMES[found.group(1)]
     return f" Did you mean {name}? Write {name} for {found.group(1)}, as in {name}(x)."
+
+
+_NUMBER_OF_DEGREES = re.compile(r"\d+(?:\.\d*)?\s*°?")
+
+
+def _degree_function_hint(name: str, argument: str) -> str:
+    """MATLAB's `sind(30)`: what to type for it, sin(30°), or sin(θ) of an angle's symbol."""
+    matlab = f"{name}d is MATLAB's {name} of an angle in degrees, which is not read here"
+    if _NUMBER_OF_DEGREES.fullmatch(argument):
+        meant = f"{name}({argument.rstrip('°').strip()}°)"
+        return f" Did you mean {meant}? {matlab}: write {meant}, with the degree sign."
+    if argument and not any(c.isdigit() for c in argument):  # `sind(θ)`; not `sind(90 - θ)`, 90 rad
+        meant = f"{name}({argument})"
+        return (
+            f" Did you mean {meant}? {matlab}: write {meant} (an angle's symbol needs no degree sign; a number "
+            f"of degrees does, as in {name}(30°))."
+        )
+    return (
+        f" Did you mean {name}? {matlab}: type {name}, with a degree sign after a number of degrees, as in "
+        f"{name}(30°) (an angle's symbol needs none)."
+    )
+
+
+def degree_function_argument(following: list[Token], text: str) -> str:
+    """What is typed as the argument of a word such as `sind`: inside its bracket, or the number (with
+    its degree sign) or word after it; "" where none is seen."""
+    nxt = following[0]
+    if nxt.kind is Kind.LPAREN:
+        return _bracketed_text(following, text) or ""
+    if nxt.kind in (Kind.NUM, Kind.WORD):
+        end = following[1].end if following[1].kind is Kind.POSTFIX and following[1].text == "°" else nxt.end
+        return text[nxt.pos : end]
+    return ""
 
 
 def _refuse_degree_function(

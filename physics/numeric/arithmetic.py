@@ -22,7 +22,12 @@ from physics.errors import AnswerError, LikelySlip, ParseError, TooLarge, Unknow
 from physics.mathinput import InputLimits, parse_math
 from physics.mathinput.tokens import Kind, Token, tokenize
 from physics.mathinput.vocabulary import DEGREE_WORD, FUNCTIONS, PI_SPELLINGS
-from physics.mathinput.words import capital_pi_hint, glued_angle_hint, other_names_hint
+from physics.mathinput.words import (
+    capital_pi_hint,
+    degree_function_argument,
+    glued_angle_hint,
+    other_names_hint,
+)
 from physics.numeric.answer import (
     MAX_ANSWER_LENGTH,
     NumericAnswer,
@@ -75,12 +80,14 @@ _GLUED_NUMBER = re.compile(r"(ln|sqrt|sin|cos|tan|sec|csc|cot)(\d+)")
 _ENDS_NUMBER = frozenset({Kind.NUM, Kind.RPAREN, Kind.WORD, Kind.POSTFIX})
 
 
-def _slip_hint(tokens: list[Token], i: int) -> str:
+def _slip_hint(tokens: list[Token], i: int, text: str) -> str:
     """What to type for a word in the number part that means a function or π under another spelling:
     `tg 30°` or MATLAB's `sind(30)`, `SQRT(2)` or `Sin(30°)` in capitals, a spreadsheet's `PI()`; or ""."""
     word, following = tokens[i].text, tokens[i + 1]
     argued = following.kind in (Kind.LPAREN, Kind.NUM)
-    if (argued or word[-1].isdigit()) and (hint := other_names_hint(word)):
+    if (argued or word[-1].isdigit()) and (
+        hint := other_names_hint(word, degree_function_argument(tokens[i + 1 :], text))
+    ):
         return hint.strip()
     if argued and word.lower() in FUNCTIONS and word not in FUNCTIONS:
         return f"Did you mean {word.lower()}? Function names are in small letters."
@@ -140,7 +147,7 @@ def _quantities(tokens: list[Token], text: str) -> list[_Quantity]:
                 and (hint := glued_angle_hint(token.text))
             ):
                 raise LikelySlip(hint.strip(), token.pos)  # `9.8 sin30 m/s^2`: never a unit sin³⁰
-            elif depth == 0 and token.kind is Kind.WORD and (hint := _slip_hint(tokens, i)):
+            elif depth == 0 and token.kind is Kind.WORD and (hint := _slip_hint(tokens, i, text)):
                 raise LikelySlip(hint, token.pos)  # `9.81 tg 30°`, `2*PI()`: never units t·g or P·I
             elif depth == 0 and (
                 token.kind is Kind.LPAREN  # `[` opening units: the test above let it through

@@ -171,9 +171,11 @@ BLAME = [
         "m/s^2",
         Reason.PARSE_ERROR,
         4,
-        "Did you mean sin? sind is MATLAB's sin of an angle in degrees",
+        "Did you mean sin(30°)? sind is MATLAB's sin of an angle in degrees, which is not read here: write "
+        "sin(30°), with the degree sign.",
     ),
-    ("9.8 cosd 60 m/s^2", "m/s^2", Reason.PARSE_ERROR, 4, "as in cos(30°)"),
+    ("9.8 cosd 60 m/s^2", "m/s^2", Reason.PARSE_ERROR, 4, "write cos(60°)"),
+    ("9.8 tand(45°) m/s^2", "m/s^2", Reason.PARSE_ERROR, 4, "write tan(45°)"),
     # a degree sign or deg after a sine's bracket: not a unit, nor sin(30 rad) in degrees, as they read
     ("9.8*sin(30)° m/s^2", "m/s^2", Reason.PARSE_ERROR, 11, "Did you mean sin(30°)?"),
     ("9.8 sin(30)deg m/s^2", "m/s^2", Reason.PARSE_ERROR, 11, "Did you mean sin(30°)?"),
