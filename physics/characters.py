@@ -32,12 +32,13 @@ def _math_letter(code: int) -> str | None:
 
 
 # 𝑚, 𝒎, 𝐅, 𝜃, 𝟐 as m, m, F, θ, 2; and the two letters Word's equation editor takes from the letterlike
-# block instead: ℎ (its italic h) and ℯ (a script e, Euler's number in some typefaces).
+# block instead: ℎ (its italic h) and ℯ (a script e, Euler's number in some typefaces); and ℓ.
 MATH_LETTERS: Final = MappingProxyType(
     {
         **{chr(code): plain for code in range(0x1D400, 0x1D800) if (plain := _math_letter(code))},
         "ℎ": "h",
         "ℯ": "e",
+        "ℓ": "l",  # the script l that `\ell` sets for a length
     }
 )
 # What Word's equation editor puts between a function and its argument (function application, in

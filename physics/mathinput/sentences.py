@@ -106,15 +106,25 @@ def equals_sign(text: str, at: int) -> ParseError:
     one side and an expression on the other (`T = 2π√(L/g)`, `g sin α = a`), it shows the expression to
     type, as a sentence's refusal does."""
     sign = text[at]
+    named = named_side(text, at)
+    if named is None:
+        return ParseError(f"Give the expression alone, without '{sign}' (nor the name before it).", at)
+    name, expression = named
+    if text[:at].strip() == name:
+        without, expression = f"{name} {sign}", _TRAILING_WORDS.sub("", expression)  # `… seconds`
+    else:
+        without = f"{sign} {name}"
+    return ParseError(f"Give the expression alone, without '{without}': type only {expression}.", at)
+
+
+def named_side(text: str, at: int) -> tuple[str, str] | None:
+    """The name and the expression of `T = 2π√(L/g)` (or `2π√(L/g) = T`), the sign at `at`; None where
+    neither side is a name alone, or the answer has another sign."""
     left, right = text[:at], text[at + 1 :]
-    if "=" not in right and "≈" not in right and right.strip() and left.strip():
-        if _NAME_SIDE.fullmatch(left):
-            expression = _TRAILING_WORDS.sub("", right).strip()
-            return ParseError(
-                f"Give the expression alone, without '{left.strip()} {sign}': type only {expression}.", at
-            )
-        if _NAME_SIDE.fullmatch(right):
-            return ParseError(
-                f"Give the expression alone, without '{sign} {right.strip()}': type only {left.strip()}.", at
-            )
-    return ParseError(f"Give the expression alone, without '{sign}' (nor the name before it).", at)
+    if any(sign in right for sign in "=≈") or not left.strip() or not right.strip():
+        return None
+    if _NAME_SIDE.fullmatch(left):
+        return left.strip(), right.strip()
+    if _NAME_SIDE.fullmatch(right):
+        return right.strip(), left.strip()
+    return None

@@ -271,9 +271,9 @@ def tokenize(
             and tokens
             and tokens[-1].kind in (Kind.WORD, Kind.RPAREN)
             and i + 1 < n
-            and chars[i + 1].isalpha()
+            and (chars[i + 1].isalpha() or chars[i + 1] in ROOT_SIGNS or chars[i + 1] == "(")
         ):
-            # `m.g`, `sin θ.cos θ`: a dot for a product, as some schools write it
+            # `m.g`, `sin θ.cos θ`, `2π.√(L/g)`: a dot for a product, as some schools write it
             raise ParseError("Write a product with * or a space, not '.': m*g or m g.", i)
         elif ch in PRIMES and not velocities and tokens and tokens[-1].kind is Kind.WORD:
             raise ParseError(

@@ -15,6 +15,7 @@ from fractions import Fraction
 from physics.characters import fullwidth_as_ascii, may_be_wrapped, without_math_delimiters, without_zero_width
 from physics.dimensions import Dimension
 from physics.errors import AnswerError, LikelySlip, ParseError, TooLarge, UnknownUnit
+from physics.mathinput.sentences import named_side
 from physics.mathinput.vocabulary import FUNCTIONS
 from physics.numeric.literal import NumberLiteral, read_number, side_by_side, units_start
 from physics.units import ParsedUnits, UnitReading, read_units
@@ -132,6 +133,9 @@ def _no_number_first(text: str, otherwise: AnswerError | None = None) -> AnswerE
     paper; else `otherwise`."""
     equals = text.find("=")
     if equals >= 0:
+        named = named_side(text, equals)
+        if named is not None and text[:equals].strip() == named[0]:  # `T = 2.01 s`: shows the value to type
+            return ParseError(f"Give the value alone, without '{named[0]} =': type only {named[1]}", equals)
         return ParseError(
             "Give the value alone, without a name and '=': write what comes after the '='", equals
         )

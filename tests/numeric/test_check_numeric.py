@@ -215,7 +215,8 @@ WORDING = [
     ("12 50 m/s^2", ACCEL, "12 50: two numbers side by side; for one number, write 1250"),
     ("4,580 m/s^2", ACCEL, "Did you mean 4.580 or 4580?"),
     ("4,58 m/s^2", ACCEL, "4,58: a decimal comma is not read; write 4.58"),
-    ("a = 4.58 m/s^2", ACCEL, "Give the value alone, without a name and '='"),
+    ("a = 4.58 m/s^2", ACCEL, "Give the value alone, without 'a =': type only 4.58 m/s^2"),
+    ("a(t) = 4.58 m/s^2", ACCEL, "Give the value alone, without a name and '='"),
     ("≈ 4.58 m/s^2", ACCEL, "Give the value without '≈'"),
     ("a ≈ 4.58 m/s^2", ACCEL, "Give the value without '≈'"),  # once "must start with a number"
     ("approx. 4.58 m/s^2", ACCEL, "Give the value without 'approx.'"),

@@ -57,7 +57,7 @@ LATEX_ERRORS = [
     (r"\frac{229}{50}\,\mathrm{m/s^2}\vec", 30, r"Unknown LaTeX command \vec"),
     (r"\frac{229}{50", 10, r"the '{' of \frac is never closed"),
     (r"4.58\,\mathrm{m}^{1.5}", 19, "whole numbers"),
-    (r"a = 4.58\,\mathrm{m/s^2}", 2, "Give the value alone, without a name and '='"),
+    (r"a = 4.58\,\mathrm{m/s^2}", 2, r"Give the value alone, without 'a =': type only 4.58\,\mathrm{m/s^2}"),
     (r"\approx 4.58", 0, r"Unknown LaTeX command \approx: type only the expression"),
     # LaTeX's decimal comma, braced so that no space follows it: the decimal comma's own message
     (r"4{,}58\,\mathrm{m/s^2}", 2, "4,58: a decimal comma is not read; write 4.58"),

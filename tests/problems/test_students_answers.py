@@ -1,0 +1,111 @@
+"""Answers to the bank's problems typed as students of different habits type them (calculators, LaTeX,
+Wolfram, phone keyboards, Word), each read as the student meant it or refused saying what to type."""
+
+from __future__ import annotations
+
+from functools import cache
+
+import pytest
+
+from physics.checking import check_answer
+from physics.verdict import Outcome
+from problems.compiled import CompiledProblem, compile_problem
+from problems.errors import ProblemInvalid
+from problems.variants import Variant, fixed_variant
+from tests.bank import bank_documents
+
+# The seed document's skier: 35°, μ = 0.13, so a = 4.58 m/s²; other problems take their midpoints.
+VALUES = {"skier-friction": {"alpha": 35, "mu": "0.13"}}
+
+
+@cache
+def compiled(problem_id: str) -> CompiledProblem:
+    """The hand-typed answers where they suffice (fast); the engine's where a part has only a derived one."""
+    try:
+        return compile_problem(bank_documents()[problem_id], use_model=False)
+    except ProblemInvalid:
+        return compile_problem(bank_documents()[problem_id])
+
+
+def _variant(problem_id: str, part_id: str) -> Variant | None:
+    if not part_id.endswith("_numeric"):
+        return None
+    return fixed_variant(bank_documents()[problem_id], VALUES.get(problem_id, {}))
+
+
+CORRECT = [
+    # (problem, part, typed): each read as the student meant it, and right
+    ("moving-wedge", "wedge_acceleration", "-mg sinθ cosθ/(M+m sin²θ)"),
+    ("moving-wedge", "wedge_acceleration", "−m·g·sin(θ)·cos(θ)/(M+m·sin(θ)^2)"),
+    ("moving-wedge", "wedge_acceleration", "-(m g sin(2θ))/(2(M + m sin^2(θ)))"),
+    ("moving-wedge", "wedge_acceleration", r"-\frac{mg\sin\theta\cos\theta}{M+m\sin^2\theta}"),
+    ("moving-wedge", "normal_force", "M m g cos(θ) / (M + m sin(θ)²)"),
+    ("moving-wedge", "block_relative_acceleration", "(M+m)g sinθ/(M+msin^2θ)"),
+    ("yo-yo", "acceleration", "g/(1+(k/r)²)"),
+    ("yo-yo", "tension", "mgk²/(r²+k²)"),
+    ("simple-pendulum", "period", "2×π×√(L÷g)"),
+    ("simple-pendulum", "period", "2π(L/g)^.5"),
+    ("simple-pendulum", "period", "2πL^½g^-½"),
+    ("simple-pendulum", "period", "2π sqrt[L/g]"),
+    ("simple-pendulum", "period", "2 π √ (L/g)"),
+    ("simple-pendulum", "period", "2πsqrt L/g"),  # settled by dimension
+    ("simple-pendulum", "period", "2π√(L/g)\u200b"),  # a zero-width space copied from a page
+    ("simple-pendulum", "angular_frequency", "(g/L)^1/2"),
+    ("simple-pendulum", "tension_at_bottom", "m(g+v²/L)"),
+    ("lennard-jones", "oscillation_frequency", "12 sqrt(U_0/m)/r_0"),
+    ("lennard-jones", "spring_constant", "72U0/r0²"),
+    ("lennard-jones", "equilibrium_separation", "r₀"),
+    ("ballistic-pendulum", "bullet_speed", "((m+M)/m)√(2gL(1−cos θ))"),
+    ("ballistic-pendulum", "bullet_speed", "(1+M/m)sqrt(2*g*L*(1-cos(theta)))"),
+    ("mass-spring", "period", "2π√m/k"),  # settled by dimension
+    ("rolling-incline", "acceleration_sphere", "5/7 g sin θ"),
+    ("rolling-incline", "acceleration_hoop", "½ g sin θ"),
+    ("conical-pendulum", "cone_angle", "cos^-1(g/(ω^2 L))"),
+    ("skier-friction", "acceleration", "gsinα-μgcosα"),
+    ("skier-friction", "acceleration", "g[sin α - μ cos α]"),
+    ("skier-friction", "acceleration", r"g (\sin\alpha - \mu \cos\alpha)"),
+    ("yo-yo-lagrangian", "kinetic_energy", "½m(1+k²/r²)ḋ²"),
+    ("yo-yo-lagrangian", "kinetic_energy", "1/2 m d’^2 (1 + k^2/r^2)"),  # a phone's curly apostrophe
+    ("yo-yo-lagrangian", "newton_vertical", "mg − T = m·a"),
+    ("skier-friction", "acceleration_numeric", "9.81 × (sin 35° − 0.13 cos 35°) m/s²"),
+    ("skier-friction", "acceleration_numeric", "4.58 m s⁻²"),
+    ("skier-friction", "acceleration_numeric", "4.58 meters per second squared"),
+]
+
+
+@pytest.mark.parametrize(("problem_id", "part_id", "typed"), CORRECT, ids=[c[2] for c in CORRECT])
+def test_a_students_answer_is_read_as_meant(problem_id: str, part_id: str, typed: str) -> None:
+    variant = _variant(problem_id, part_id)
+    verdict = check_answer(typed, compiled(problem_id).question(part_id, variant))
+    assert verdict.outcome is Outcome.CORRECT, verdict.feedback
+
+
+REFUSED = [
+    # (problem, part, typed, the refusal's words): each once read otherwise or refused unhelpfully
+    ("simple-pendulum", "period", "T = 2π√(L/g)", "without 'T =': type only 2π√(L/g)."),
+    ("yo-yo-lagrangian", "lagrangian", "L = 1/2 m(1+k²/r²)d'² + mgd", "without 'L =': type only 1/2 m"),
+    ("skier-friction", "friction_coefficient", "μ = tan α", "without 'μ =': type only tan α."),
+    ("simple-pendulum", "period_numeric", "T=2.01s", "Give the value alone, without 'T =': type only 2.01s"),
+    (
+        "simple-pendulum",
+        "period",
+        "2.π.√(L/g)",
+        "Write a product with * or a space, not '.'",
+    ),  # was "Unexpected"
+    ("simple-pendulum", "period", "2π√(ℓ/g)", "did you mean L?"),  # `\ell`'s script l: was no hint
+    ("skier-friction", "acceleration_numeric", "9.81*sind(35) m/s^2", "Did you mean sin(35°)?"),
+    ("skier-friction", "acceleration", "g (sind(α) - μ cosd(α))", "Did you mean sin(α)?"),
+    ("skier-friction", "acceleration_numeric", "4.58 10 -3 m/s^2", "Did you mean 4.58×10^-3?"),
+    ("skier-friction", "acceleration", "3.0×10-3 g", "Did you mean 3.0×10^-3?"),  # was graded 3.0·10 − 3g
+    ("skier-friction", "acceleration_numeric", "2 3^2 m/s^2", "2 3^2: two numbers side by side"),
+]
+
+
+@pytest.mark.parametrize(("problem_id", "part_id", "typed", "words"), REFUSED, ids=[c[2] for c in REFUSED])
+def test_a_students_answer_that_cannot_be_read_says_what_to_type(
+    problem_id: str, part_id: str, typed: str, words: str
+) -> None:
+    variant = _variant(problem_id, part_id)
+    verdict = check_answer(typed, compiled(problem_id).question(part_id, variant))
+    assert verdict.outcome is Outcome.INVALID
+    assert words in verdict.feedback
