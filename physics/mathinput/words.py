@@ -104,6 +104,7 @@ def resolve_words(tokens: list[Token], table: NameTable, text: str) -> list[Toke
                 f" Did you mean {lowered}? Function names are in small letters."
                 if lowered in FUNCTIONS
                 else other_names_hint(word, degree_function_argument(tokens[index + 1 :], text))
+                or _glued_capital_function_hint(word, table)
             )
             raise UnknownFunction(
                 f'Unknown function "{word}".{meant} Functions you can use: {", ".join(LISTED_FUNCTIONS)}.',
@@ -328,6 +329,18 @@ def other_names_hint(word: str, argument: str = "") -> str:
 _NUMBER_OF_DEGREES = re.compile(r"\d+(?:\.\d*)?\s*°?")
 
 
+def _glued_capital_function_hint(word: str, table: NameTable) -> str:
+    """A sentence for `MmgCos(θ)`, declared names and then a function in a phone's capital: "Did you
+    mean Mmg cos(…)?"; or ""."""
+    for name in sorted(FUNCTIONS, key=len, reverse=True):
+        head, tail = word[: -len(name)], word[-len(name) :]
+        if head and tail != name and tail.lower() == name:
+            names = table.resolve(head).unique
+            if names is not None and all(part.kind == "name" for part in names):
+                return f" Did you mean {head} {name}(…)? Function names are in small letters."
+    return ""
+
+
 def _degree_function_hint(name: str, argument: str) -> str:
     """MATLAB's `sind(30)`: what to type for it, sin(30°), or sin(θ) of an angle's symbol."""
     matlab = f"{name}d is MATLAB's {name} of an angle in degrees, which is not read here"
@@ -410,23 +423,26 @@ def glued_angle_hint(word: str) -> str:
     return f" Did you mean {name}({number}°)? Write the degree sign for degrees, or {name}({number}) for radians."
 
 
-_NAMES_THEN_DIGITS = re.compile(r"(\D+)(\d+)")
+_NAMES_THEN_DIGITS = re.compile(r"(\D+)(\d+)(\D*)")
 
 
 def _digits_as_power_hint(word: str, table: NameTable) -> str:
-    """A sentence for `mc2` (m c², its power typed as a plain digit, as a text message writes it) where
-    the letters read one way as declared names, the last of them with no numbered subscript; or ""."""
+    """A sentence for `mc2` (m c², its power typed as a plain digit, as a text message writes it), or
+    `mω2L` (m ω² L), where the letters read one way as declared names, the last before the digits with no
+    numbered subscript; or ""."""
     found = _NAMES_THEN_DIGITS.fullmatch(word)
     if found is None:
         return ""
     names = table.resolve(found.group(1)).unique
-    if names is None or any(part.kind != "name" for part in names):
+    after = table.resolve(found.group(3)).unique if found.group(3) else ()
+    if names is None or after is None or any(part.kind != "name" for part in (*names, *after)):
         return ""
     last = names[-1].canonical
     if any(name[len(last) :].lstrip("_")[:1].isdigit() for name in table.declared if name.startswith(last)):
         return ""  # `v2` where v_1 is declared: a subscript mistyped, more likely than a power
     typed = " ".join(part.canonical for part in names)
-    return f" Did you mean {typed}^{found.group(2)}? Write a power with ^."
+    rest = "".join(f" {part.canonical}" for part in after)
+    return f" Did you mean {typed}^{found.group(2)}{rest}? Write a power with ^."
 
 
 def _case_hint(word: str, declared: Sequence[str], table: NameTable) -> str:

@@ -200,6 +200,8 @@ SLIP_HINTS = [
     # a power typed as a plain digit, as a text message writes m c²
     ("mc2", ("m", "c"), POWER, "Did you mean m c^2? Write a power with ^."),
     ("1/2 mv2", ("m", "v"), POWER, "Did you mean m v^2?"),
+    ("mω2L", ("m", "omega", "L"), POWER, "Did you mean m omega^2 L? Write a power with ^."),
+    ("mω2Lx", ("m", "omega", "L"), POWER, None),  # no x after the power
     ("v2 t", ("v_1", "v", "t"), POWER, None),  # a subscript mistyped, beside v_1
     ("x2", ("m", "c"), POWER, None),  # no x to raise
     # a name in the other case, as a phone capitalises the first letter
@@ -257,7 +259,17 @@ def test_undeclared_name_before_a_bracket_is_an_unknown_function(typed, function
     assert "sqrt" in caught.value.message
 
 
-@pytest.mark.parametrize(("typed", "meant"), [("Sin(x)", "sin"), ("SQRT(x)", "sqrt"), ("Ln(x)", "ln")])
+@pytest.mark.parametrize(
+    ("typed", "meant"),
+    [
+        ("Sin(x)", "sin"),
+        ("SQRT(x)", "sqrt"),
+        ("Ln(x)", "ln"),
+        # glued to names before it, as a phone capitalises: once "Unknown function" alone
+        ("xCos(x)", "x cos(…)"),
+        ("xxSQRT(x)", "xx sqrt(…)"),
+    ],
+)
 def test_a_function_in_capitals_is_refused_naming_it_in_small_letters(typed: str, meant: str) -> None:
     with pytest.raises(UnknownFunction) as caught:
         read(typed, "x")

@@ -98,6 +98,13 @@ REFUSED = [
     ("skier-friction", "acceleration_numeric", "4.58 10 -3 m/s^2", "Did you mean 4.58×10^-3?"),
     ("skier-friction", "acceleration", "3.0×10-3 g", "Did you mean 3.0×10^-3?"),  # was graded 3.0·10 − 3g
     ("skier-friction", "acceleration_numeric", "2 3^2 m/s^2", "2 3^2: two numbers side by side"),
+    (
+        "moving-wedge",
+        "normal_force",
+        "MmgCos(θ)/(M+mSin²(θ))",
+        "Did you mean Mmg cos(…)?",
+    ),  # a phone's capital
+    ("conical-pendulum", "tension", "mω2L", "Did you mean m omega^2 L? Write a power with ^."),
 ]
 
 
