@@ -106,6 +106,8 @@ def equals_sign(text: str, at: int) -> ParseError:
     one side and an expression on the other (`T = 2π√(L/g)`, `g sin α = a`), it shows the expression to
     type, as a sentence's refusal does."""
     sign = text[at]
+    if not text[:at].strip() and sign == "=":  # `=m*g*h`: a spreadsheet's formula
+        return ParseError("Leave out the '=' at the start: type the expression alone.", at)
     named = named_side(text, at)
     if named is None:
         return ParseError(f"Give the expression alone, without '{sign}' (nor the name before it).", at)

@@ -133,6 +133,8 @@ def _no_number_first(text: str, otherwise: AnswerError | None = None) -> AnswerE
     paper; else `otherwise`."""
     equals = text.find("=")
     if equals >= 0:
+        if not text[:equals].strip():  # `=9.81*sin(35°)`: a spreadsheet's formula
+            return ParseError("Leave out the '=' at the start: type the value alone", equals)
         named = named_side(text, equals)
         if named is not None and text[:equals].strip() == named[0]:  # `T = 2.01 s`: shows the value to type
             return ParseError(f"Give the value alone, without '{named[0]} =': type only {named[1]}", equals)

@@ -175,7 +175,8 @@ _DIRECTION_WORDS = frozenset(
     {
         "up", "upward", "upwards", "down", "downward", "downwards", "left", "right", "leftward",
         "rightward", "north", "south", "east", "west", "forward", "forwards", "backward", "backwards",
-        "clockwise", "anticlockwise", "counterclockwise",
+        "clockwise", "anticlockwise", "counterclockwise", "uphill", "downhill", "inward", "inwards",
+        "outward", "outwards",
     }
 )  # fmt: skip
 

@@ -105,6 +105,15 @@ REFUSED = [
         "Did you mean Mmg cos(…)?",
     ),  # a phone's capital
     ("conical-pendulum", "tension", "mω2L", "Did you mean m omega^2 L? Write a power with ^."),
+    # a spreadsheet's formula: was told to leave out "a name" that is not there
+    (
+        "skier-friction",
+        "acceleration_numeric",
+        "=9.81*(sin(35°)-0.13*cos(35°)) m/s^2",
+        "Leave out the '=' at",
+    ),
+    ("simple-pendulum", "period", "=2*pi*sqrt(L/g)", "Leave out the '=' at the start"),
+    ("skier-friction", "acceleration_numeric", "4.58 m/s^2 downhill", "a direction is not read here"),
 ]
 
 
