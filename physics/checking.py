@@ -39,6 +39,7 @@ from physics.symbolic import (
 )
 from physics.symbolic.bracketed_sums import unbracketed_sum
 from physics.symbolic.dimensional import DimensionMismatch, UnknownDimension, expression_dimension
+from physics.symbolic.fraction_exponents import fraction_exponent
 from physics.symbolic.judge import FACTOR_FEEDBACK
 from physics.symbolic.quick import judged
 from physics.symbolic.reading import read_symbolic_answer, shorter_arguments
@@ -101,9 +102,11 @@ class SymbolicQuestion:
             return verdict
         if verdict.reason is Reason.WRONG_DIMENSION and self.reference.dimension is not None:
             dimensions = {symbol.name: dim for symbol, dim in self.reference.dims.items()}
-            question = unbracketed_sum(
-                answer, self.names, limits, dimensions, self.reference.dimension
-            ) or symbol_e_raised(answer, self.names, limits, dimensions)
+            question = (
+                unbracketed_sum(answer, self.names, limits, dimensions, self.reference.dimension)
+                or symbol_e_raised(answer, self.names, limits, dimensions)
+                or fraction_exponent(answer, self.names, limits, dimensions, self.reference.dimension)
+            )
             if question is not None:  # `mg/m+M`: m·g/(m + M) meant; `e^(-t/τ)` with e a charge: exp
                 return Verdict.invalid(question)
         hint = typed_value_hint(
@@ -191,15 +194,17 @@ def _preview(
     expected: Dimension | None,
 ) -> Preview:
     """How a symbolic answer reads, or why it cannot be read; a sum whose brackets are left out beside a
-    division (`mg/m+M`) and a power of a charge e (`e^(-t/τ)`) are asked about before the answer is
-    submitted, as grading asks."""
+    division (`mg/m+M`), a power of a charge e (`e^(-t/τ)`) and an exponent's fraction typed on it
+    (`(R+h)^3/2`) are asked about before the answer is submitted, as grading asks."""
     try:
         parsed = read_symbolic_answer(answer, names, limits, dimensions, expected)
     except AnswerError as error:
         return Preview(None, InputProblem(error.message, error.position))
     if expected is not None:
-        question = unbracketed_sum(answer, names, limits, dimensions, expected) or symbol_e_raised(
-            answer, names, limits, dimensions
+        question = (
+            unbracketed_sum(answer, names, limits, dimensions, expected)
+            or symbol_e_raised(answer, names, limits, dimensions)
+            or fraction_exponent(answer, names, limits, dimensions, expected)
         )
         if question is not None:
             return Preview(None, InputProblem(question.message, question.position))

@@ -105,6 +105,8 @@ REFUSED = [
         "Did you mean Mmg cos(…)?",
     ),  # a phone's capital
     ("conical-pendulum", "tension", "mω2L", "Did you mean m omega^2 L? Write a power with ^."),
+    # graded wrong_dimension as (R+h)³/2, an attempt used for a bracket
+    ("satellite-orbit", "period", "2π(R+h)^3/2/√(GM)", "Did you mean 2·pi·(R + h)^(3/2)/sqrt(G·M)?"),
     # a spreadsheet's formula: was told to leave out "a name" that is not there
     (
         "skier-friction",

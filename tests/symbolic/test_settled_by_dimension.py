@@ -430,3 +430,42 @@ def test_preview_asks_about_a_power_of_a_declared_charge_e() -> None:
     shown = preview(SymbolicJob("V0 e^(-t/τ)", "V0*exp(-t/tau)", CHARGED))
     assert shown.read_as is None
     assert shown.error is not None and shown.error.message.startswith("Here e is the problem's symbol e")
+
+
+ORBIT = (SymbolDecl("G", "m^3/(kg*s^2)"), SymbolDecl("M", "kg"), SymbolDecl("R", "m"), SymbolDecl("h", "m"))
+FRACTION_EXPONENTS = [
+    # (answer, reference, symbols, the reading asked about): as typed the fraction divides the power, which
+    # has no dimension the answer could have, and was graded wrong_dimension, an attempt used for a bracket
+    ("2π(R+h)^3/2/√(GM)", "2*pi*sqrt((R + h)^3/(G*M))", ORBIT, "2·pi·(R + h)^(3/2)/sqrt(G·M)"),
+    ("2*pi*(R+h)**3/2/sqrt(G*M)", "2*pi*sqrt((R + h)^3/(G*M))", ORBIT, "2·pi·(R + h)^(3/2)/sqrt(G·M)"),
+    ("2π/((G M)^(1/2) (R+h)^-3/2)", "2*pi*sqrt((R + h)^3/(G*M))", ORBIT, "2·pi/((G·M)^(1/2)·(R + h)^(-3/2))"),
+]
+
+
+@pytest.mark.parametrize(
+    ("answer", "reference", "symbols", "meant"), FRACTION_EXPONENTS, ids=[c[0] for c in FRACTION_EXPONENTS]
+)
+def test_an_exponents_fraction_typed_without_brackets_is_asked_about_where_only_it_fits(
+    answer: str, reference: str, symbols: tuple[SymbolDecl, ...], meant: str
+) -> None:
+    verdict = run_job(SymbolicJob(answer, reference, symbols))
+    assert (verdict.outcome, verdict.reason) == (Outcome.INVALID, Reason.AMBIGUOUS)
+    assert verdict.error is not None
+    assert verdict.error.message.startswith(f"Did you mean {meant}? As typed,")
+    assert "write the exponent in brackets" in verdict.error.message
+    assert preview(SymbolicJob(answer, reference, symbols)).error == verdict.error
+
+
+@pytest.mark.parametrize(
+    ("answer", "reference", "reason"),
+    [
+        ("2m R^2/5", "2*m*R^2/5", Reason.EQUIVALENT),  # the fraction outside has the dimension: as typed
+        ("2m R^2/5", "2*m*R^2/3", Reason.CONSTANT_FACTOR),
+        ("2π(R+h)^3/2/(G M)", "2*pi*sqrt((R + h)^3/(G*M))", Reason.WRONG_DIMENSION),  # neither fits
+    ],
+)
+def test_an_exponents_fraction_is_graded_as_typed_where_the_bracketed_exponent_does_not_fit(
+    answer: str, reference: str, reason: Reason
+) -> None:
+    symbols = (*ORBIT, SymbolDecl("m", "kg"))
+    assert run_job(SymbolicJob(answer, reference, symbols)).reason is reason
