@@ -505,8 +505,8 @@ class Parser:
         last = argument.rest[-1][1] if isinstance(argument, Product) else argument
         if isinstance(last, Power):
             return False  # `sin θ^2/2`: its power is the question, asked by the powered argument's note
-        if root and (self._glued_bracket() or self._divided_by_bracket()):
-            return not isinstance(argument, Num)  # `√2(1 + x)` is √2·(1 + x), as printed
+        if root and (self._glued_bracket() or self._divided_by_bracket() or self._glued_function()):
+            return not isinstance(argument, Num)  # `√2(1 + x)` is √2·(1 + x), as printed, `√3cosθ` √3·cos θ
         if self._glued_factor() != "/":
             return False
         divisor, after = tokens[self._i + 1], tokens[self._i + 2]
@@ -526,6 +526,11 @@ class Parser:
             and self._source[tok.pos : tok.pos + 1] in OPENERS
         )
 
+    def _glued_function(self) -> bool:
+        """Whether a function is typed on here without a space: `√gRtanθ`, √(gR)·tan θ or √(gR·tan θ)?"""
+        tok = self._tokens[self._i]
+        return tok.kind is Kind.FUNC and not tok.space_before
+
     def _divided_by_bracket(self) -> bool:
         """Whether a `/` and a bracket follow here, typed on without a space: `√2gh/(1 + k)`."""
         slash = self._tokens[self._i]
@@ -539,12 +544,12 @@ class Parser:
 
     def _argument_follower(self, root: bool) -> Literal["*", "/"] | None:
         """How the word typed on after a bare argument goes on: `_glued_factor`'s, or for a root a
-        bracket (`*`) or a `/` before one (`√2gh/(1 + I/mr²)`; a function's `sin θ/(1 + k)` is
+        bracket or a function (`*`) or a `/` before a bracket (`√2gh/(1 + I/mr²)`; a function's `sin θ/(1 + k)` is
         sin θ divided, as physics writes it)."""
         op = self._glued_factor()
         if op is not None or not root:
             return op
-        if self._glued_bracket():
+        if self._glued_bracket() or self._glued_function():
             return "*"
         return "/" if self._divided_by_bracket() else None
 

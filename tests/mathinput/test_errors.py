@@ -188,6 +188,9 @@ AMBIGUOUS_ARGUMENTS = [
     ("√2a(1 - b)", 0, "sqrt(2·a)·(1 - b)", "sqrt(2·a·(1 - b))"),
     ("sqrt 2a(1 - b)", 0, "sqrt(2·a)·(1 - b)", "sqrt(2·a·(1 - b))"),
     ("√2a/(1 + b)", 0, "sqrt(2·a)/(1 + b)", "sqrt(2·a/(1 + b))"),  # a function's is divided (below)
+    # or a function typed on: `√gRtanθ` was graded as √(gR)·tan θ
+    ("√2bcosθ", 0, "sqrt(2·b)·cos(theta)", "sqrt(2·b·cos(theta))"),
+    ("sqrt bttanθ", 0, "sqrt(b·t)·tan(theta)", "sqrt(b·t·tan(theta))"),
 ]
 
 
@@ -257,6 +260,9 @@ NOT_AMBIGUOUS_ARGUMENTS = [
     ("sin θ(1 + k)", "sin(theta)*(1 + k)"),  # a function's: the bracket is no part of its argument
     ("sin θ/(1 + k)", "sin(theta)/(1 + k)"),  # as physics writes g sin θ/(1 + I/(m r²))
     ("√2/(1 + k)", "sqrt(2)/(1 + k)"),
+    ("√3cosθ", "sqrt(3)*cos(theta)"),  # a number's root before a function, as printed
+    ("√m cosθ", "sqrt(m)*cos(theta)"),
+    ("sinθcosθ", "sin(theta)*cos(theta)"),  # a function's argument ends at the next function
 ]
 
 

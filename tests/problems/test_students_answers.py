@@ -107,6 +107,8 @@ REFUSED = [
     ("conical-pendulum", "tension", "mω2L", "Did you mean m omega^2 L? Write a power with ^."),
     # graded wrong_dimension as (R+h)³/2, an attempt used for a bracket
     ("satellite-orbit", "period", "2π(R+h)^3/2/√(GM)", "Did you mean 2·pi·(R + h)^(3/2)/sqrt(G·M)?"),
+    # graded as √(gR)·tan θ: both readings are speeds, so it is asked
+    ("banked-curve", "design_speed", "√gRtanθ", "Did you mean sqrt(g·R)·tan(theta) or sqrt(g·R·tan(theta))?"),
     # a spreadsheet's formula: was told to leave out "a name" that is not there
     (
         "skier-friction",
