@@ -220,6 +220,13 @@ def _scientific(text: str, i: int, start: int) -> tuple[int, int] | None:
             if found is None:
                 _refuse_calculator_exponent(text, text[start:i], after)
                 _refuse_two_powers_of_ten(text, text[start:i], after)
+                digits = skip_spaces(text, after)
+                exponent = text[digits : _run(text, digits, _DIGITS)]
+                if digits > after and 0 < len(exponent) <= 2:  # `1.2 x 10 4`: its ^ left out
+                    meant = f"{text[start:i]}×10^{exponent}"
+                    raise LikelySlip(
+                        f"Did you mean {meant}? Write the power of ten with ^, as {meant}", after
+                    )
                 raise ParseError("Write a power of ten with its exponent, for example 2.5×10^3", after)
             return found
     return None

@@ -156,6 +156,8 @@ REFUSED = [
     ("3.0*10-3 s", ParseError, 6, "×10^-3"),
     ("3.0 · 10−12 s", ParseError, 8, "×10^-12"),
     ("3.0 x 10-3", ParseError, 8, "×10^-3"),
+    # its ^ left out, a space in its place: was "Write a power of ten with its exponent"
+    ("1.2 x 10 4 m/s", ParseError, 8, "Did you mean 1.2×10^4? Write the power of ten with ^"),
     # a raised dot between whole numbers, British print's decimal point or a product: was read as 4×58
     ("4·58 N", ParseError, 1, "Did you mean 4.58 or 4×58? A raised dot between digits is a decimal point"),
     ("12·5", ParseError, 2, "Did you mean 12.5 or 12×5?"),

@@ -52,6 +52,7 @@ ALIAS_READINGS = [
     ("kph", "km/h"),
     ("kmh", "km/h"),
     ("kmph", "km/h"),
+    ("kmps", "km/s"),  # was km·ps, a length times a time
     ("mps", "m/s"),
     ("gm", "g"),
     ("gms", "g"),
