@@ -183,11 +183,13 @@ class Dynamics:
         ]
 
     def values(self, point: Point) -> Vector:
-        """The parameters' values at the point (the time, when not a parameter, from the state)."""
-        start = dict(self.model.state).get(self.model.time) if self.model.time is not None else None
-        if start is None and self.model.time is not None and self.model.time not in point:
+        """The parameters' values at the point, the time from the state where it gives one (the
+        derivation's answers are taken there, even when the time is also a symbol of the table)."""
+        time = self.model.time
+        start = dict(self.model.state).get(time) if time is not None else None
+        if start is None and time is not None and time not in point:
             start = sympy.Integer(0)  # a support moving as prescribed, from t = 0 unless the state says
-        return [point[p] if p in point or start is None else _evaluate(start, point) for p in self.params]
+        return [_evaluate(start, point) if p == time and start is not None else point[p] for p in self.params]
 
     def initial(self, q: Vector, qd: Vector, params: Vector) -> Vector:
         """The integrated state: positions, velocities and, with a force in the time, the time."""

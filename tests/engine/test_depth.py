@@ -415,6 +415,22 @@ def test_a_given_force_on_a_body_on_z_derives(data: dict[str, Any], expected: di
         assert len(derivation.agreement[name]) >= 2 and name in derivation.simulation
 
 
+@pytest.mark.parametrize(
+    "table", [FORCE_SYMBOLS, {**FORCE_SYMBOLS, "t": SYMBOLS["t"]}], ids=["engine-t", "table-t"]
+)
+def test_a_pull_along_z_in_the_time_is_simulated_at_the_states_time(table: dict[str, sympy.Symbol]) -> None:
+    """With t a symbol of the problem's table too, the state's time is where both the answer and the
+    simulation are taken, not a sampled t."""
+    data = {
+        **PULLED_PUCK,
+        "forces": [{"body": "puck", "force": {"z": "F*cos(w*t)"}}],
+        "state": {"t": "pi/(3*w)"},
+    }
+    derivation = derive(load_model(data, table))
+    assert sympy.simplify(derivation.quantities["az"] - F / (2 * M1)) == 0
+    assert derivation.simulation["az"].max_relative_error < 1e-3
+
+
 def test_a_force_along_z_on_a_body_without_z_is_refused_at_its_component() -> None:
     data = copy.deepcopy(PULLED_PUCK)
     data["coordinates"].append("s")

@@ -56,6 +56,13 @@ def test_a_time_of_the_symbol_table_leaves_answers_functions_of_it() -> None:
     assert result.simulation["a"].points == 3
 
 
+def test_a_time_of_the_symbol_table_that_the_state_gives_is_taken_at_the_states_time() -> None:
+    t = sympy.Symbol("t", positive=True)
+    result = uncached(load_model(driven_cart(), {**SYMBOLS, "t": t}))
+    assert sympy.simplify(result.quantities["a"] - (F0 / 2 - k * A) / m) == 0
+    assert result.simulation["a"].max_relative_error < 1e-3
+
+
 def test_what_needs_a_steady_equilibrium_is_refused_with_a_driving_force() -> None:
     data = driven_cart()
     data["quantities"] = {"rest": {"equilibrium": "x"}, "a": {"acceleration": "x"}}
