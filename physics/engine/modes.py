@@ -79,20 +79,22 @@ def _one_at_a_time(pairs: list[tuple[sympy.Expr, sympy.Symbol]]) -> list[dict[sy
     """The roots of the equations, each (equation, unknown) solved alone and put into the rest, branch by
     branch: sympy finds none of a bob's on a spring free in x, y and z all at once (the distance's root in
     each), but X = 0 and Z = 0 (factors of their own equations, so solved first), then Y = -(L0 + m g/k).
-    Conditional roots are dropped, and so are roots in the unknowns still to solve (X = sqrt(L0^2 - Y^2 -
-    Z^2), the spring at its natural length: a surface of points, no isolated equilibrium)."""
+    Every root is followed, those in the unknowns still to solve too (X = Y where the bob hangs at X - Y):
+    a root that leaves no isolated point (X = Y + sqrt(L0^2 - Y^2), the spring at its natural length,
+    where the weight is left unbalanced) ends its branch with no solution. Conditional roots are dropped."""
     if not pairs:
         return [{}]
     pairs = sorted(pairs, key=lambda pair: not _factor_of(pair[1], pair[0]))
     (equation, unknown), rest = pairs[0], pairs[1:]
-    later = [u for _, u in rest]
     found: list[dict[sympy.Symbol, sympy.Expr]] = []
     for root in tidy.solve(equation, unknown):
-        if root.has(sympy.Piecewise, sympy.nan, *later) or root.is_real is False:
+        if root.has(sympy.Piecewise, sympy.nan) or root.is_real is False:
             continue
         remaining = [(tidy.simplify(e.subs(unknown, root)), u) for e, u in rest]
         for solution in _one_at_a_time(remaining):
-            found.append({**solution, unknown: tidy.simplify(root.subs(solution))})
+            value = tidy.simplify(root.subs(solution))
+            if value.is_real is not False:
+                found.append({**solution, unknown: value})
     return found
 
 

@@ -478,6 +478,19 @@ def test_a_bob_on_a_spring_free_in_three_dimensions_has_each_coordinates_equilib
         assert len(derivation.agreement[name]) >= 2 and name in derivation.simulation
 
 
+def test_an_equilibrium_whose_first_root_is_in_a_later_coordinate_is_found() -> None:
+    """The bob hung at x = X - Y: X's equation gives X = Y, a root in Y still to solve, which is followed
+    (not dropped) to the one rest point X = Y = -(L0 + m g/k)."""
+    sheared = copy.deepcopy(RESTING_BOB)
+    sheared["bodies"]["bob"]["position"]["x"] = "X - Y"
+    sheared["state"] = {"X": "-L0 - m1*g/k", "Y": "-L0 - m1*g/k", "Z": 0}
+    sheared["domain"] = {"ranges": {"X": ["-oo", "0"], "Y": ["-oo", "0"]}}
+    sheared["quantities"] = {"rest": {"equilibrium": "Y"}, "across": {"equilibrium": "X"}}
+    derived = derive(load_model(sheared, SPRING_SYMBOLS)).quantities
+    for name in ("rest", "across"):
+        assert sympy.simplify(derived[name] + L0 + M1 * G / K) == 0, name
+
+
 def test_a_coordinate_oscillating_with_another_is_refused_naming_normal_frequency() -> None:
     """Two carts in a chain of springs from a wall, the second s beyond the first: x1 has no frequency of
     its own (moving it moves the second cart too), though s has its equilibrium."""
