@@ -209,21 +209,22 @@ def _contact_labels(model: Model, drawn: dict[_Source, str]) -> dict[_Source, st
 
 def _across_the_page(model: Model, body_name: str, given: Mapping[str, float]) -> bool:
     """Whether the diagram, of the x–y plane, would leave out part of a force on a body on z: the body is
-    off the page (z ≠ 0) where the scene draws it, a constraint pulls it along z there, a potential
-    (read in the x–y plane only) acts on it, or a given force or drag may push it along z."""
+    off the page (z ≠ 0) where the scene draws it, a constraint or a potential (a spring to a point off
+    the page) pulls it along z there, or a given force or drag may push it along z."""
     body = model.body(body_name)
     if not any(axis == depth.DEPTH for axis, _ in body.position):
         return False
-    if any(body_name in p.bodies for p in model.potentials):
-        return True
     if any(_along_z(f) for f in model.forces if f.body == body_name):
         return True
     values = Values(model, given)
     place = _place(model, values, drawn_configuration(model, dict(given)))
     z = model.cartesian_symbol(f"{depth.DEPTH}_{body_name}")
+    lengths = [p.length(model, dict(model.cartesian)) for p in model.potentials if body_name in p.bodies]
+    pulls = [c.gap for c in model.constraints if z in c.gap.free_symbols] + lengths
     try:
+        # not "> 1e-9": a slope that is no number (a spring of length 0) leaves the force's way unknown
         return abs(place[z]) > 1e-9 or any(
-            abs(_slope(c, z, place, values)) > 1e-9 for c in model.constraints if z in c.gap.free_symbols
+            not abs(values.number(sympy.diff(pull, z), place)) <= 1e-9 for pull in pulls
         )
     except (KeyError, TypeError, ValueError, ZeroDivisionError):  # not defined where it is drawn
         return True

@@ -13,7 +13,7 @@ import sympy
 from physics.engine import load_model
 from physics.figures import free_body_figure, model_figure
 from physics.figures.scene import compose
-from tests.engine.test_depth import CONE, CONE_SYMBOLS, LIFT, PUCK, SYMBOLS
+from tests.engine.test_depth import CONE, CONE_SYMBOLS, LIFT, PUCK, SPRING_SYMBOLS, SPRUNG_BOB, SYMBOLS
 
 VALUES = {"m1": 0.5, "L": 1.2, "alpha": 0.6, "A": 2.0, "g": 9.81}
 # from the pivot at the origin down to the bob at +x (SVG's y points down)
@@ -88,3 +88,21 @@ def test_the_sign_of_the_bob_going_round_has_a_head_saying_which_way(model: dict
     svg = model_figure(load_model(model, CONE_SYMBOLS), VALUES, title="Cone")
     # an arc alone, below the circle, reads as a stray mark; its head makes it the sign of a rotation
     assert TURNING.search(svg), "the arc under the axis, followed by its arrowhead"
+
+
+@pytest.mark.parametrize(
+    ("state", "drawn"),
+    [({"X": 0, "Y": "-L0 - m1*g/k", "Z": 0}, True), ({"X": "a", "Y": "-h", "Z": "b"}, False)],
+    ids=["hanging-in-the-page", "pulled-across-the-page"],
+)
+def test_a_springs_pull_on_a_bob_on_z_is_drawn_only_where_it_lies_in_the_page(
+    state: dict[str, object], drawn: bool
+) -> None:
+    """The spring's pull is taken in the x–y plane: drawn where the spring lies in the page (the bob
+    hanging under the anchor), never cut to its x–y part (the bob at z = b pulled back along z)."""
+    hung = {**SPRUNG_BOB, "state": state}
+    svg = free_body_figure(
+        load_model(hung, SPRING_SYMBOLS), "bob", {**VALUES, "k": 20.0, "L0": 0.5}, title="Bob"
+    )
+    assert ("m₁g at -90° from the +x axis; Fₖ at 90° from the +x axis." in svg) is drawn
+    assert ("not drawn" in svg) is not drawn
