@@ -190,6 +190,17 @@ def _steady_rate(method: Method, target: str) -> tuple[sympy.Expr, Method]:
                 f"no steady rotation of {target}: at {target}' = {typed_text(rate)}, {c.name}'' = {typed_text(a)} does not vanish",
                 quantity=target,
             )
+    # a rate the state leaves out is 0, and the circular quantities find the rate themselves
+    given = dict(model.state).get(turning.velocity, sympy.Integer(0))
+    if given != 0 and not _same_on_domain(given, rate, model):
+        raise DerivationError(
+            f"the state gives {target}' = {typed_text(given)}, but {target} turns steadily, the other "
+            f"coordinates held at the state, at {target}' = {typed_text(rate)}: a steady quantity (its period, "
+            "speed or energy) would not be of the state's motion, where forces and accelerations are taken. "
+            f"For the steady motion give {turning.velocity}: {typed_text(rate)} in the state; for the motion "
+            f"at {target}' = {typed_text(given)}, ask for no steady quantity of {target}",
+            quantity=target,
+        )
     rate_name = {RATE.name: str(turning.velocity)}
     # a solve at the steady rate is not the method's solve at the state (a force asked for logs that)
     steady = f", for a steady rate ${turning_tex}$"
@@ -354,6 +365,21 @@ def _circular_orbit(method: Method, target: str) -> tuple[sympy.Expr, sympy.Expr
         + method.tex(radius),
     )
     return radius, tidy.simplify(slope.subs(r, radius))
+
+
+def _same_on_domain(first: sympy.Expr, second: sympy.Expr, model: Model) -> bool:
+    """Equal at sampled domain points: sympy alone may not see that sqrt(g/(L cos(alpha))) is
+    sqrt(g)/sqrt(L cos(alpha)) without the domain's signs."""
+    if tidy.simplify(first - second) == 0:
+        return True
+    try:
+        return all(
+            abs(complex(sympy.N((first - second).subs(point))))
+            <= 1e-9 * max(1.0, abs(complex(sympy.N(second.subs(point)))))
+            for point in domain_points(model, 12, seed=3)
+        )
+    except (TypeError, ValueError):
+        return False
 
 
 def _positive_on_domain(expr: sympy.Expr, model: Model) -> bool:

@@ -223,6 +223,33 @@ def test_conical_pendulum_period_and_speed_are_written_with_one_root() -> None:
     assert typed_text(derived["speed"]) == "sqrt(L*g/cos(alpha))*sin(alpha)"
 
 
+@pytest.mark.parametrize(
+    ("rate", "steady"),
+    [
+        pytest.param("sqrt(g/(L*cos(alpha)))", True, id="the-steady-rate"),
+        pytest.param("sqrt(g/L/cos(alpha))", True, id="the-steady-rate-written-otherwise"),
+        pytest.param("v/L", False, id="another-rate"),
+    ],
+)
+def test_a_rate_in_the_state_beside_a_steady_period_must_be_the_steady_rate(rate: str, steady: bool) -> None:
+    """Else the period would be of the steady motion and the tension of the state's, unsaid."""
+    data = copy.deepcopy(CONE)
+    data["state"]["phi_dot"] = rate
+    data["quantities"]["tension"] = {"force": "string"}
+    if steady:
+        assert (
+            sympy.simplify(
+                derive(load_model(data, CONE_SYMBOLS)).quantities["tension"] - M1 * G / sympy.cos(ALPHA)
+            )
+            == 0
+        )
+        return
+    with pytest.raises(
+        DerivationError, match=r"For the steady motion give phi_dot: sqrt\(g/\(L\*cos\(alpha\)\)\)"
+    ):
+        derive(load_model(data, CONE_SYMBOLS))
+
+
 def _moving_pivot(gap: str) -> dict[str, Any]:
     """The cone hung in a lift accelerating upwards at A: the pivot at A t^2/2."""
     data = copy.deepcopy(CONE)
