@@ -58,6 +58,9 @@ class _TypedPrinter(_StudentPrinter):
         return str(super()._print_Mul(sympy.Mul(*merged, evaluate=False)))
 
     def _print_Pow(self, expr: sympy.Pow, rational: bool = False) -> str:
+        parts = typeset.one_root([expr])  # a root alone: sqrt(4*R - 4*r) is 2*sqrt(R - r), as in a product
+        if len(parts) > 1:
+            return str(self._print(sympy.Mul(*parts, evaluate=False)))
         # sympy joins base and exponent, both already written by this printer, with its one `**`
         text: str = super()._print_Pow(expr, rational)
         return text.replace("**", "^")

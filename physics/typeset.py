@@ -6,10 +6,11 @@ sympy orders a product's factors alphabetically, so a worked solution read `V = 
 numbers, then friction coefficients (μ m g), masses (m, M, m_1), g, the other quantities, velocities
 and accelerations (m \\ddot{x}), roots, and functions last (\\sin θ); a sum goes with what it holds
 ((M + m) g, U_0 r_0^6 (r_0^6 - r^6), g (\\sin α - μ \\cos α)), and factors of one kind keep sympy's
-order. Square roots are one root where that is exact (√(2 g L), not √2 √g √L). A sum starts with a term
-added (`T - m g`, not `-m g + T`), and a sum of terms all subtracted gives its sign to the product
-(`-(M + m) g`, not `(-M - m) g`), and a negative product's sign goes into a difference it holds
-(`(M + m) g L (1 - \\cos θ)`, not `-(M + m) g L (\\cos θ - 1)`). Only the printing changes, never the expression.
+order. Square roots are one root where that is exact (√(2 g L), not √2 √g √L), with the numbers a root's
+sum holds outside it (2 √(R - r), not √(4 R - 4 r)). A sum starts with a term added (`T - m g`, not
+`-m g + T`), and a sum of terms all subtracted gives its sign to the product (`-(M + m) g`, not
+`(-M - m) g`), and a negative product's sign goes into a difference it holds (`(M + m) g L (1 - \\cos θ)`,
+not `-(M + m) g L (\\cos θ - 1)`). Only the printing changes, never the expression.
 """
 
 from __future__ import annotations
@@ -34,6 +35,12 @@ class _TextbookLatex(LatexPrinter):  # type: ignore[misc]
         super().__init__(settings)
         self._order = self._settings["order"]  # sums are written in it; products in the textbook's
 
+    def _print_Pow(self, expr: Any) -> str:
+        parts = one_root([expr])  # a root alone: √(4 R - 4 r) is 2 √(R - r), as in a product
+        if len(parts) > 1:
+            return str(self._print(sympy.Mul(*parts, evaluate=False)))
+        return str(super()._print_Pow(expr))
+
     def _print_Mul(self, expr: Any) -> str:
         if not isinstance(expr, sympy.Mul) or not expr.is_commutative:
             return str(super()._print_Mul(expr))
@@ -47,7 +54,7 @@ class _TextbookLatex(LatexPrinter):  # type: ignore[misc]
         if negative and mixed:  # -(M + m) g L (cos θ - 1) is (M + m) g L (1 - cos θ)
             base, exponent = changed[mixed[-1]].as_base_exp()
             changed[mixed[-1]], negative = sympy.Pow(-base, exponent), False
-        ordered = sorted(one_root(changed), key=self._place)
+        ordered = sorted(map(_divisor_root, one_root(changed)), key=self._place)
         if ordered == factors:
             positive = sympy.Mul(*factors)
             written = (
@@ -123,20 +130,52 @@ def one_root(factors: list[sympy.Expr]) -> list[sympy.Expr]:
     √L √g/√(cos α) is √(L g/cos α). Exact where at most one base above the line and one below it may be
     negative, wherever the roots' product is real (√a √b = √(a b) when a ≥ 0; √a/√b = √(a/b) unless
     a > 0 > b, where it is imaginary), as a reference is on its domain; otherwise left apart."""
-    above = [f for f in factors if f.is_Pow and f.exp == sympy.S.Half]
-    below = [f for f in factors if f.is_Pow and f.exp == -sympy.S.Half]
+    split = _numbers_out(factors)
+    above = [f for f in split if f.is_Pow and f.exp == sympy.S.Half]
+    below = [f for f in split if f.is_Pow and f.exp == -sympy.S.Half]
     unsure_above = [f for f in above if not f.base.is_nonnegative]
     unsure_below = [f for f in below if not f.base.is_positive]
     if len(above) + len(below) < 2 or len(unsure_above) > 1 or len(unsure_below) > 1:
-        return factors
+        return factors if split == factors else split
     if not above:  # 1/√(G M), not √(1/(G M))
         merged = sympy.Pow(sympy.Mul(*(f.base for f in below), evaluate=False), -sympy.S.Half, evaluate=False)
     elif below:  # a quotient, which a printer writes as a fraction only when it is evaluated
-        radicand = sympy.Mul(*(f.base for f in above)) / sympy.Mul(*(f.base for f in below))
+        # one product, not a product over a product: 35 (R - r) would be distributed, 35 R - 35 r
+        radicand = sympy.Mul(*(f.base for f in above), *(1 / f.base for f in below))
         merged = sympy.Pow(radicand, sympy.S.Half, evaluate=False)
     else:
         merged = sympy.Pow(sympy.Mul(*(f.base for f in above), evaluate=False), sympy.S.Half, evaluate=False)
-    return [f for f in factors if f not in above and f not in below] + [merged]
+    return [f for f in split if f not in above and f not in below] + [merged]
+
+
+def _numbers_out(factors: list[sympy.Expr]) -> list[sympy.Expr]:
+    """The factors with each root's sum freed of its numeric factor, as a teacher writes the number
+    outside: √(4 R - 4 r) is 2 √(R - r), √2 √(2 - 2 cos θ) is 2 √(1 - cos θ). `factors` itself when
+    no root holds one."""
+    split: list[sympy.Expr] = []
+    for factor in factors:
+        base, power = factor.as_base_exp()
+        inverted = base.is_Pow and base.exp == -1  # √(1/(7 R - 7 r))
+        total = base.base if inverted else base
+        content, rest = total.primitive() if abs(power) == sympy.S.Half and total.is_Add else (1, total)
+        if content == 1:
+            split.append(factor)
+            continue
+        if inverted:
+            content, rest = 1 / content, 1 / rest
+        split += [sympy.Pow(content, power), sympy.Pow(rest, power)]
+    if len(split) == len(factors):
+        return factors
+    numeric = sympy.Mul(*(f for f in split if not f.free_symbols))  # √2 √2 is 2
+    return [*sympy.Mul.make_args(numeric), *(f for f in split if f.free_symbols)]
+
+
+def _divisor_root(factor: sympy.Expr) -> sympy.Expr:
+    """1/√(G M) as one over its root: sympy's fraction would evaluate the divisor √(G M) and split it
+    into √G √M again, where the typed text keeps 1/sqrt(G*M)."""
+    if factor.is_Pow and factor.exp == -sympy.S.Half and factor.base.is_Mul:
+        return sympy.Pow(sympy.Pow(factor.base, sympy.S.Half, evaluate=False), -1, evaluate=False)
+    return factor
 
 
 def _all_subtracted(factor: sympy.Expr) -> bool:

@@ -26,6 +26,16 @@ TYPED = [
     (sympy.sqrt(k1 / m), "sqrt(k1/m)"),
     (2 * sympy.pi * sympy.sqrt(2 * x * m), "2*pi*sqrt(2*m*x)"),
     (x ** sympy.Rational(3, 2) / (sympy.sqrt(b) * sympy.sqrt(m)), "x^(3/2)/sqrt(b*m)"),
+    # a number leaves the root, as it would from sqrt(4*m): not sqrt(4*x - 4*b) nor sqrt(2*m*(2 - 2*cos(x)))
+    (sympy.sqrt(4 * x - 4 * b), "2*sqrt(-b + x)"),
+    (m * sympy.sqrt(9 * x + 9 * b), "3*m*sqrt(b + x)"),
+    (1 / sympy.sqrt(4 * x + 4 * b), "1/(2*sqrt(b + x))"),
+    (sympy.sqrt(2) * sympy.sqrt(m) * sympy.sqrt(2 - 2 * sympy.cos(x)), "2*sqrt(m*(1 - cos(x)))"),
+    # the surd left under the root stays a factor of the sum, not distributed over it
+    (
+        2 * sympy.sqrt(5) * sympy.pi * sympy.sqrt(7 * x - 7 * b) / (5 * sympy.sqrt(m)),
+        "2*pi*sqrt(35*(-b + x)/m)/5",
+    ),
 ]
 
 

@@ -49,6 +49,13 @@ WRITTEN = {ACCELERATION: r"\ddot{x}_{\mathrm{block}}"}
         (sympy.sqrt(REAL) * sympy.sqrt(OTHER_REAL), r"\sqrt{x} \sqrt{y}"),  # both may be negative
         (2 * sympy.pi * sympy.sqrt(r / g), r"2 \pi \sqrt{\frac{r}{g}}"),  # one root over and under the line
         (sympy.sqrt(g / h), r"\sqrt{\frac{g}{h}}"),
+        (  # roots only under the line: one root there too, as the typed 1/sqrt(M*g)
+            2 * sympy.pi * (h + r) ** sympy.Rational(3, 2) / (sympy.sqrt(M) * sympy.sqrt(g)),
+            r"\frac{2 \pi \left(h + r\right)^{\frac{3}{2}}}{\sqrt{M g}}",
+        ),
+        (1 / (sympy.sqrt(M) * sympy.sqrt(g)), r"\frac{1}{\sqrt{M g}}"),
+        (sympy.sqrt(g) * sympy.sqrt(4 * h - 4 * r), r"2 \sqrt{g \left(h - r\right)}"),  # the number outside
+        (sympy.sqrt(4 * h - 4 * r), r"2 \sqrt{h - r}"),
         (m * v * sympy.exp(-k * x), r"m v e^{- k x}"),
         (sympy.atan(1 / (2 * mu)), r"\arctan{\left(\frac{1}{2 \mu} \right)}"),
         (m * v**2 / 2, r"\frac{m v^{2}}{2}"),
