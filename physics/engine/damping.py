@@ -335,8 +335,7 @@ def undamped_frequency(method: Method, quantity: Quantity) -> sympy.Expr:
     free = without_drag(method.model, quantity.name)
     solver = type(method)(free, Mechanics(free))
     omega = solver.frequency(quantity.target, solver.equilibrium(quantity.target))
-    for step in solver.steps:
-        method.step(f"{step.title} (the damping left out)", step.latex)
+    method.adopt_after(solver.steps, "(the damping left out)")
     method.step(
         f"Undamped angular frequency of {method.named(quantity.target)}: the damping left out",
         r"\omega_0 = " + method.tex(omega),

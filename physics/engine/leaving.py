@@ -114,8 +114,7 @@ def staged(method: Method, trip: Journey) -> tuple[sympy.Expr, sympy.Expr, Metho
         "length); from there it moves on without it",
         method.tex(sympy.Eq(c.velocity, velocity)),
     )
-    for step in later.steps:
-        method.step(f"{step.title} (after leaving the spring)", step.latex)
+    method.adopt_after(later.steps, "(after leaving the spring)")
     return square, found.place, later
 
 

@@ -85,6 +85,18 @@ class Method(ABC):
                 self._logged.add(step.title)
                 self.steps.append(step)
 
+    def adopt_after(self, steps: Iterable[Step], said: str) -> None:
+        """Log the steps of another solve (the same system at another state, or changed) with `said` added
+        to each title, every other field as it was: its equations stay numbered, its solve keeps its
+        unknowns, and its symbols take those printed for `said`."""
+        printed, self._printed = {str(s) for s in self._printed}, set()
+        self.adopt(
+            dataclasses.replace(
+                step, title=f"{step.title} {said}", symbols=tuple(sorted({*step.symbols, *printed}))
+            )
+            for step in steps
+        )
+
     def named(self, coordinate: str) -> str:
         """A coordinate as the solution writes it, in a title: `$s$`."""
         return f"${self.mech.notation.coordinates[coordinate].tex}$"
@@ -146,8 +158,7 @@ class Method(ABC):
         bounced = dataclasses.replace(self.model, state=tuple(state.items()), impact=None)
         solver = type(self)(bounced, Mechanics(bounced))
         result = solver.answer(dataclasses.replace(quantity, after="", bounces=None))
-        for step in solver.steps:
-            self.step(f"{step.title} (after the impact)", step.latex)
+        self.adopt_after(solver.steps, "(after the impact)")
         return result
 
     def mode_matrices(self, point: dict[sympy.Symbol, sympy.Expr]) -> tuple[sympy.Matrix, sympy.Matrix]:

@@ -172,8 +172,7 @@ def answer(method: Method, quantity: Quantity) -> sympy.Expr:
     solver = type(method)(reached, Mechanics(reached))
     result = solver.answer(dataclasses.replace(quantity, at=()))
     where = f"(where {method.named(c.name)} = ${method.tex(trip.end)}$)"
-    for step in solver.steps:
-        method.step(f"{step.title} {where}", step.latex)
+    method.adopt_after(solver.steps, where)
     return result
 
 

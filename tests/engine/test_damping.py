@@ -10,6 +10,7 @@ import pytest
 import sympy
 
 from physics.engine import derivation, load_model
+from physics.engine.results import StepKind
 from physics.errors import DerivationError
 
 uncached = derivation._derive.__wrapped__
@@ -139,6 +140,18 @@ def test_the_undamped_frequency_of_a_damped_model_leaves_the_drag_out(
     assert "decay time" in result.simulation["omega_0"].compared
     assert result.simulation["omega_0"].max_relative_error < 1e-3
     assert sympy.simplify(result.quantities["omega_0"] - result.quantities["omega_d"]) != 0
+
+
+def test_the_undamped_frequencys_steps_keep_the_drag_free_solves_kinds_and_symbols() -> None:
+    """Copied whole, not title and formula alone: its solves keep their kind (and unknowns), and the notation
+    check sees its symbols."""
+    model = damped_spring()
+    model["quantities"] = {"omega_0": {"undamped_frequency": "x"}}
+    result = uncached(load_model(model, SYMBOLS))
+    for report in result.methods:
+        copied = [step for step in report.steps if step.title.endswith("(the damping left out)")]
+        assert any(step.kind is StepKind.SOLVE and step.unknowns for step in copied), report.name
+        assert all(step.symbols for step in copied), report.name
 
 
 def test_the_undamped_frequency_of_a_model_without_drag_is_refused_naming_angular_frequency() -> None:
