@@ -31,7 +31,7 @@ from physics.engine import tidy
 from physics.engine.conservation import ConservationMethod, cyclic_indices
 from physics.engine.mechanics import Mechanics, solve_linear, time_derivative
 from physics.engine.method import Method, NotApplicable
-from physics.engine.model import EFFECTIVE_KINDS, ORBIT_KINDS, Model, Quantity, QuantityKind
+from physics.engine.model import EFFECTIVE_KINDS, ORBIT_KINDS, REACH_KINDS, Model, Quantity, QuantityKind
 from physics.engine.newton import NewtonMethod
 from physics.engine.proof import domain_points
 from physics.engine.quantity_table import derives
@@ -190,11 +190,13 @@ def _steady_rate(method: Method, target: str) -> tuple[sympy.Expr, Method]:
                 f"no steady rotation of {target}: at {target}' = {typed_text(rate)}, {c.name}'' = {typed_text(a)} does not vanish",
                 quantity=target,
             )
-    # a rate the state leaves out is 0, and the circular quantities find the rate themselves
+    # a rate the state leaves out is 0, and the circular quantities find the rate themselves; but a
+    # force or an acceleration beside them is taken at the state's rate, which must then be this one
     given = dict(model.state).get(turning.velocity, sympy.Integer(0))
-    if given != 0 and not _same_on_domain(given, rate, model):
+    if (given != 0 or _asks_of_the_state(model)) and not _same_on_domain(given, rate, model):
+        at_rest = f" (a {turning.velocity} left out of the state is 0)" if given == 0 else ""
         raise DerivationError(
-            f"the state gives {target}' = {typed_text(given)}, but {target} turns steadily, the other "
+            f"the state gives {target}' = {typed_text(given)}{at_rest}, but {target} turns steadily, the other "
             f"coordinates held at the state, at {target}' = {typed_text(rate)}: a steady quantity (its period, "
             "speed or energy) would not be of the state's motion, where forces and accelerations are taken. "
             f"For the steady motion give {turning.velocity}: {typed_text(rate)} in the state; for the motion "
@@ -365,6 +367,17 @@ def _circular_orbit(method: Method, target: str) -> tuple[sympy.Expr, sympy.Expr
         + method.tex(radius),
     )
     return radius, tidy.simplify(slope.subs(r, radius))
+
+
+# taken in the motion at the state, so at the state's rate of the turning coordinate
+_OF_THE_STATE = REACH_KINDS | {QuantityKind.FORCE, QuantityKind.ACCELERATION, QuantityKind.MECHANICAL_ENERGY}
+
+
+def _asks_of_the_state(model: Model) -> bool:
+    def of_the_state(quantity: Quantity | None) -> bool:
+        return quantity is not None and (quantity.kind in _OF_THE_STATE or of_the_state(quantity.inner))
+
+    return any(of_the_state(q) for q in model.quantities)
 
 
 def _same_on_domain(first: sympy.Expr, second: sympy.Expr, model: Model) -> bool:

@@ -250,6 +250,40 @@ def test_a_rate_in_the_state_beside_a_steady_period_must_be_the_steady_rate(rate
         derive(load_model(data, CONE_SYMBOLS))
 
 
+STEADY_AND_STATE_AT_REST = [
+    pytest.param(
+        {"period": {"revolution_period": "phi"}, "tension": {"force": "string"}},
+        None,
+        id="period-and-tension",
+    ),
+    pytest.param(
+        {"speed": {"circular_speed": "phi"}, "swing": {"acceleration": "theta"}},
+        None,
+        id="speed-and-acceleration",
+    ),
+    pytest.param(
+        {"tension": {"force": "string"}}, M1 * G * sympy.cos(ALPHA), id="tension-of-a-bob-released-at-rest"
+    ),
+]
+
+
+@pytest.mark.parametrize(("quantities", "tension"), STEADY_AND_STATE_AT_REST)
+def test_a_steady_quantity_beside_a_force_needs_the_steady_rate_in_the_state(
+    quantities: dict[str, Any], tension: sympy.Expr | None
+) -> None:
+    """phi_dot left out is 0: the tension would be m g cos(alpha), of a bob at rest at alpha, beside the
+    period of the steady motion; asked alone, that tension is the released bob's, and right."""
+    data = copy.deepcopy(CONE)
+    data["quantities"] = quantities
+    if tension is not None:
+        assert sympy.simplify(derive(load_model(data, CONE_SYMBOLS)).quantities["tension"] - tension) == 0
+        return
+    with pytest.raises(
+        DerivationError, match=r"For the steady motion give phi_dot: sqrt\(g/\(L\*cos\(alpha\)\)\)"
+    ):
+        derive(load_model(data, CONE_SYMBOLS))
+
+
 def _moving_pivot(gap: str) -> dict[str, Any]:
     """The cone hung in a lift accelerating upwards at A: the pivot at A t^2/2."""
     data = copy.deepcopy(CONE)
