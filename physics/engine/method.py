@@ -209,6 +209,11 @@ class Method(ABC):
         others = (force.free_symbols & set(self.mech.q)) - {q}
         if others:
             return self._joint_equilibrium(coordinate, sorted(map(str, others)))
+        if tidy.simplify(force) == 0:
+            raise DerivationError(
+                f"{self.title}: " + modes.continuum([coordinate], f"at every {coordinate} (Q = 0 there)"),
+                quantity=coordinate,
+            )
         roots = _real_roots(force, q)
         slope = sympy.diff(force, q)
         stable = [

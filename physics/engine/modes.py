@@ -37,6 +37,14 @@ def no_single_mode(values: Sequence[sympy.Expr], coordinate: str, partners: Sequ
     )
 
 
+def continuum(free: Sequence[str], where: str) -> str:
+    """Why a continuum of equilibria has no one equilibrium (DerivationError's message)."""
+    return (
+        f"the bodies rest {where}, {' and '.join(free)} taking any value: a continuum of equilibria, with no "
+        "one point to oscillate about"
+    )
+
+
 def coupled(matrices: Sequence[sympy.Matrix], index: int) -> list[int]:
     """The coordinates that move with coordinate `index`: linked to it, directly or through others, by a
     non-zero off-diagonal entry of any of the matrices. Two pendulums side by side are two blocks, each
@@ -66,6 +74,12 @@ def equilibrium_point(model: Model, mech: Mechanics) -> dict[sympy.Symbol, sympy
         if all(q in solution for q in moving)
     ]
     stable = [point for point in stable if _in_ranges(model, point) and _stable(model, mech, point)]
+    continua = [solution for solution in solutions if not all(q in solution for q in moving)]
+    if not stable and continua:
+        line = continua[0]
+        free = [str(q) for q in moving if q not in line]
+        where = ", ".join(f"{q} = {typed_text(v)}" for q, v in line.items())
+        raise DerivationError(continuum(free, f"wherever {where}" if where else "anywhere"), path=("domain",))
     if len(stable) != 1:
         raise DerivationError(
             f"expected one stable equilibrium of {', '.join(map(str, moving))}, found {len(stable)} among "
@@ -81,11 +95,14 @@ def _one_at_a_time(pairs: list[tuple[sympy.Expr, sympy.Symbol]]) -> list[dict[sy
     each), but X = 0 and Z = 0 (factors of their own equations, so solved first), then Y = -(L0 + m g/k).
     Every root is followed, those in the unknowns still to solve too (X = Y where the bob hangs at X - Y):
     a root that leaves no isolated point (X = Y + sqrt(L0^2 - Y^2), the spring at its natural length,
-    where the weight is left unbalanced) ends its branch with no solution. Conditional roots are dropped."""
+    where the weight is left unbalanced) ends its branch with no solution; an equation that vanishes
+    whatever its unknown leaves it free (every point of a line rests). Conditional roots are dropped."""
     if not pairs:
         return [{}]
     pairs = sorted(pairs, key=lambda pair: not _factor_of(pair[1], pair[0]))
     (equation, unknown), rest = pairs[0], pairs[1:]
+    if equation == 0:  # every value of the unknown is a rest: it stays free, a continuum
+        return _one_at_a_time(rest)
     found: list[dict[sympy.Symbol, sympy.Expr]] = []
     for root in tidy.solve(equation, unknown):
         if root.has(sympy.Piecewise, sympy.nan) or root.is_real is False:

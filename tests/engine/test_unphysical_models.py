@@ -302,3 +302,51 @@ def test_a_push_of_mass_times_another_acceleration_without_gravity_is_no_weight_
     text = HANGING_WEIGHT.replace("WEIGHT", '"m*A"').replace("GRAVITY", "").replace("m*g", "m*A")
     _A = sympy.Symbol("A", positive=True)
     assert sympy.simplify(_derive(text, "m k A L0")["rest"] - (-_L0 + _m * _A / _k)) == 0
+
+
+BEAD_ON_A_ROD = """
+# a bead free on a horizontal rod: nothing pulls it anywhere along x
+coordinates: [x]
+bodies:
+  bead: {mass: m, position: {x: x}}
+gravity: g
+quantities:
+  QUANTITY
+"""
+TWO_BEADS_ON_A_SPRING = """
+# two beads on a horizontal rod joined by a spring: at rest wherever it has its natural length
+coordinates: [x1, x2]
+bodies:
+  a: {mass: m1, position: {x: x1}}
+  b: {mass: m2, position: {x: x2}}
+elements:
+  spring: {kind: spring, between: [a, b], stiffness: k, length: L0}
+domain:
+  ranges: {x1: ["-oo", "0"], x2: ["0", "oo"]}
+quantities:
+  QUANTITY
+"""
+
+
+@pytest.mark.parametrize(
+    ("model", "names", "quantity", "where"),
+    [
+        pytest.param(BEAD_ON_A_ROD, "m g", "rest: {equilibrium: x}", "at every x", id="bead-equilibrium"),
+        pytest.param(BEAD_ON_A_ROD, "m g", "w: {angular_frequency: x}", "at every x", id="bead-frequency"),
+        pytest.param(
+            TWO_BEADS_ON_A_SPRING,
+            "m1 m2 k L0",
+            "rest: {equilibrium: x1}",
+            "wherever x1 = -L0 + x2",
+            id="beads",
+        ),
+    ],
+)
+def test_a_continuum_of_equilibria_is_refused_as_one(
+    model: str, names: str, quantity: str, where: str
+) -> None:
+    """Every point of the coordinate is a rest: there is no one equilibrium to give or oscillate about,
+    which the refusal says, not 'found 0'."""
+    error = _refusal(model.replace("QUANTITY", quantity), names)
+    assert f"the bodies rest {where}" in error.message
+    assert "a continuum of equilibria, with no one point to oscillate about" in error.message
