@@ -207,27 +207,32 @@ def _contact_labels(model: Model, drawn: dict[_Source, str]) -> dict[_Source, st
     return labels
 
 
-def _across_the_page(model: Model, body_name: str, given: Mapping[str, float]) -> bool:
-    """Whether the diagram, of the x–y plane, would leave out part of a force on a body on z: the body is
-    off the page (z ≠ 0) where the scene draws it, a constraint or a potential (a spring to a point off
-    the page) pulls it along z there, or a given force or drag may push it along z."""
+def across_the_page(model: Model, body_name: str, given: Mapping[str, float]) -> str:
+    """Why the diagram, of the x–y plane, would leave out part of a force on a body on z ("" where it
+    would not): the body is off the page (z ≠ 0) where the scene draws it, a constraint or a potential
+    (a spring to a point off the page) pulls it along z there, or a given force or drag may push it
+    along z."""
     body = model.body(body_name)
     if not any(axis == depth.DEPTH for axis, _ in body.position):
-        return False
-    if any(_along_z(f) for f in model.forces if f.body == body_name):
-        return True
+        return ""
+    for force in model.forces:
+        if force.body == body_name and _along_z(force):
+            given_force = force.kind is ForceKind.APPLIED
+            return "a given force on it has a part along z" if given_force else "drag on it may act along z"
     values = Values(model, given)
     place = _place(model, values, drawn_configuration(model, dict(given)))
     z = model.cartesian_symbol(f"{depth.DEPTH}_{body_name}")
     lengths = [p.length(model, dict(model.cartesian)) for p in model.potentials if body_name in p.bodies]
     pulls = [c.gap for c in model.constraints if z in c.gap.free_symbols] + lengths
     try:
+        if abs(place[z]) > 1e-9:
+            return f"it is off the page where the problem is drawn (z = {place[z]:.3g})"
         # not "> 1e-9": a slope that is no number (a spring of length 0) leaves the force's way unknown
-        return abs(place[z]) > 1e-9 or any(
-            not abs(values.number(sympy.diff(pull, z), place)) <= 1e-9 for pull in pulls
-        )
-    except (KeyError, TypeError, ValueError, ZeroDivisionError):  # not defined where it is drawn
-        return True
+        if any(not abs(values.number(sympy.diff(pull, z), place)) <= 1e-9 for pull in pulls):
+            return "a constraint or a spring pulls it along z where the problem is drawn"
+    except (KeyError, TypeError, ValueError, ZeroDivisionError):
+        return "its place where the problem is drawn is not defined"
+    return ""
 
 
 def _along_z(force: AppliedForce) -> bool:
@@ -419,7 +424,7 @@ def free_body_figure(model: Model, body_name: str, given: Mapping[str, float], *
     body = model.body(body_name)
     label = body_label(body, model)
     half = BLOCK / 2
-    across = _across_the_page(model, body_name, given)
+    across = bool(across_the_page(model, body_name, given))
     forces = [] if across else body_forces(model, body_name, given)
     arms = _drawn_arms(forces)
     if body.angle is not None:  # a rigid body: a wheel, each force drawn where its line of action passes

@@ -171,20 +171,40 @@ def test_the_reading_typesets_each_angle_in_degrees():
     assert mathml.count("&#x02218;") == 2  # a ring operator (the degree) above each angle
 
 
-@pytest.mark.parametrize(("body", "refused"), [("puck", True), ("weight", False)])
-def test_free_body_part_on_a_body_moving_along_z_is_refused_at_its_body(body: str, refused: bool) -> None:
-    """The diagram is drawn in the x–y plane: a tension along z would be graded without its z part."""
+IN_AND_ACROSS_THE_PAGE = [
+    pytest.param("weight", {}, "weight 270; tension 90", None, id="a-body-in-the-plane"),
+    # at phi = 0 the puck is in the page, the string pulling it along -x, to the hole
+    pytest.param(
+        "puck", {}, "weight 270; tension 180; normal 90", None, id="a-body-on-z-whose-forces-lie-in-the-page"
+    ),
+    pytest.param("puck", {"state": {"r": "R", "phi": "pi/2"}}, None, "it is off the page", id="off-the-page"),
+    pytest.param(
+        "puck",
+        {"forces": [{"body": "puck", "force": {"z": "mu*m1*g"}}]},
+        None,
+        "a given force on it has a part along z",
+        id="a-force-across-the-page",
+    ),
+]
+
+
+@pytest.mark.parametrize(("body", "change", "drawn", "reason"), IN_AND_ACROSS_THE_PAGE)
+def test_free_body_part_on_a_body_on_z_is_refused_where_a_force_crosses_the_page(
+    body: str, change: dict[str, object], drawn: str | None, reason: str | None
+) -> None:
+    """The diagram is drawn in the x–y plane: a force along z would be graded without its z part, so
+    it is refused saying which; a body on z whose forces all lie in the page is drawn and graded."""
     from tests.engine.test_depth import PUCK
 
-    model = {**PUCK, "unused": ["speed", "tension"]}
+    model = {**PUCK, "unused": ["speed", "tension"], **change}
     symbols = {name: {"meaning": name, "dimension": unit} for name, unit in _PUCK_UNITS.items()}
     part = {"id": "forces", "kind": "free_body", "prompt": "Draw the forces.", "body": body}
     document = {"id": "puck-z", "title": "Puck", "statement": "A puck.", "symbols": symbols}
     doc = parse_problem(yaml.safe_dump({**document, "parts": [part], "model": model}), "yaml")
-    if not refused:
-        build_problem(doc, 1, use_model=False)
+    if drawn is not None:
+        assert build_problem(doc, 1, use_model=False).part("forces").solution().text == drawn
         return
-    with pytest.raises(ProblemInvalid, match=r"parts\[0\]\.body: .*'puck' moves along z"):
+    with pytest.raises(ProblemInvalid, match=rf"parts\[0\]\.body: .*'puck' moves along z: {reason}"):
         build_problem(doc, 1, use_model=False)
 
 

@@ -13,7 +13,6 @@ import sympy
 from pydantic import Field
 
 from physics.checking import QuestionJob
-from physics.engine import depth
 from physics.errors import SpecError
 from physics.forces_check import (
     KINDS,
@@ -88,13 +87,7 @@ class CompiledFreeBodyPart:
         """The model's forces on the body, with the student's values (typical ones without a student)."""
         from physics.figures.free_body import body_forces
 
-        if variant is None:
-            given = {name: float(decl.min + decl.max) / 2 for name, decl in self.document.given.items()}
-            values = {self.table[n]: v * _unit(self.document, n) for n, v in given.items()}
-        else:
-            values = si_values(self.document, variant, self.table)
-        si = {symbol.name: float(value) for symbol, value in values.items()}
-        drawn = body_forces(self.model, self.body, si)
+        drawn = body_forces(self.model, self.body, self.values(variant))
         gravity = self.model.gravity is not None
         return tuple(
             ExpectedForce(
@@ -102,6 +95,15 @@ class CompiledFreeBodyPart:
             )
             for i, f in enumerate(drawn)
         )
+
+    def values(self, variant: Variant | None) -> dict[str, float]:
+        """The given values in SI, the student's (typical ones, mid-range, without a student)."""
+        if variant is None:
+            given = {name: float(decl.min + decl.max) / 2 for name, decl in self.document.given.items()}
+            values = {self.table[n]: v * _unit(self.document, n) for n, v in given.items()}
+        else:
+            values = si_values(self.document, variant, self.table)
+        return {symbol.name: float(value) for symbol, value in values.items()}
 
     def solution(self) -> Reference:
         text = "; ".join(f"{f.kind} {f.angle:g}" for f in self.forces(None))
@@ -138,6 +140,7 @@ class FreeBodyKind:
             )
 
     def compile(self, part: FreeBodyPart, path: Path, context: CompileContext) -> CompiledFreeBodyPart:
+        from physics.figures.free_body import across_the_page
         from problems.modelinfo import load_doc_model
 
         doc = context.doc
@@ -149,15 +152,19 @@ class FreeBodyKind:
             raise SpecError(
                 f"the model has no body {part.body!r}; its bodies are {', '.join(names)}", (*path, "body")
             )
-        if any(axis == depth.DEPTH for axis, _ in model.body(part.body).position):
-            raise SpecError(
-                f"a free-body diagram is drawn in the x–y plane, and {part.body!r} moves along z: "
-                "its forces there would lose their z parts",
-                (*path, "body"),
-            )
         notation = getattr(context.derived.raw if context.derived else None, "notation", None)
         words = dict(getattr(notation, "bodies", {}) or {}).get(part.body, f"the {part.body}")
-        return CompiledFreeBodyPart(part.id, part.body, words, model, doc, context.table, part.tolerance)
+        compiled = CompiledFreeBodyPart(part.id, part.body, words, model, doc, context.table, part.tolerance)
+        # a body on z is drawn where its forces lie in the page (a conical pendulum's bob at phi = 0)
+        across = across_the_page(model, part.body, compiled.values(None))
+        if across:
+            raise SpecError(
+                f"a free-body diagram is drawn in the x–y plane, and {part.body!r} moves along z: {across}, "
+                "so its forces would lose their z parts (a body on z is drawn where its forces lie in the "
+                "page, as a conical pendulum's bob at phi = 0)",
+                (*path, "body"),
+            )
+        return compiled
 
     def student_view(self, part: FreeBodyPart, doc: ProblemDocument) -> dict[str, Any]:
         return {
