@@ -16,6 +16,7 @@ import math
 import numpy
 import sympy
 
+from physics.engine import depth
 from physics.engine.mechanics import Mechanics
 from physics.engine.model import AppliedForce, ForceKind, Model, PairPotential
 from physics.figures.figure import Values
@@ -72,29 +73,34 @@ def resting_configuration(model: Model, values: Values) -> dict[sympy.Symbol, fl
 def _potential_direction(
     model: Model, potential: PairPotential, body_name: str, values: Values, place: dict[sympy.Symbol, float]
 ) -> Direction | None:
-    """The potential's force on the body at `place`; pulling towards the other end where it vanishes."""
+    """The potential's force on the body at `place`; pulling towards the other end where it vanishes.
+    A force with a part along z has no direction in the page: a ValueError, never its x–y part drawn."""
     mechanics = Mechanics(model)
     own = {d.name: d.symbol for d in mechanics.dofs}
     distance = mechanics.distance(potential, own)
     energy = potential.energy.subs(potential.distance, distance)
     where = {d.symbol: values.number(d.mapping, place) for d in mechanics.dofs}
-    axes = [f"{axis}_{body_name}" for axis in ("x", "y")]
-    symbols = [own.get(name) for name in axes]
+    symbols = [own.get(f"{axis}_{body_name}") for axis in ("x", "y", depth.DEPTH)]
 
     def along(expr: sympy.Expr) -> list[float]:
         return [values.number(-sympy.diff(expr, s), where) if s is not None else 0.0 for s in symbols]
 
+    def in_the_page(x: float, y: float, z: float) -> Direction | None:
+        if abs(z) > 1e-9 * math.hypot(x, y, z):
+            raise ValueError(f"a potential's force on {body_name} has a part along z, out of the page")
+        return _unit(x, y)
+
     try:
         force = along(energy)
     except _EVALUATION_ERRORS:
-        force = [math.nan, math.nan]
-    direction = _unit(*force)
-    if direction is not None and math.hypot(*force) > 1e-9 * _scale(energy, where, values):
-        return direction
+        force = [math.nan] * 3
+    if math.hypot(*force) > 1e-9 * _scale(energy, where, values):  # not a rounding error's: its way counts
+        return in_the_page(*force)
     try:
-        return _unit(*along(distance))  # where the distance shrinks: towards the other end
+        towards = along(distance)  # where the distance shrinks: towards the other end
     except _EVALUATION_ERRORS:
         return None
+    return in_the_page(*towards)
 
 
 def _scale(energy: sympy.Expr, where: dict[sympy.Symbol, float], values: Values) -> float:

@@ -12,6 +12,8 @@ import sympy
 
 from physics.engine import load_model
 from physics.figures import free_body_figure, model_figure
+from physics.figures.figure import Values
+from physics.figures.loads import potential_forces
 from physics.figures.scene import compose
 from tests.engine.test_depth import CONE, CONE_SYMBOLS, LIFT, PUCK, SPRING_SYMBOLS, SPRUNG_BOB, SYMBOLS
 
@@ -106,3 +108,21 @@ def test_a_springs_pull_on_a_bob_on_z_is_drawn_only_where_it_lies_in_the_page(
     )
     assert ("m₁g at -90° from the +x axis; Fₖ at 90° from the +x axis." in svg) is drawn
     assert ("not drawn" in svg) is not drawn
+
+
+@pytest.mark.parametrize(
+    ("state", "direction"),
+    [({"X": 0, "Y": "-L0 - m1*g/k", "Z": 0}, (0.0, 1.0)), ({"X": "a", "Y": "-h", "Z": "b"}, None)],
+    ids=["hanging-in-the-page", "pulled-across-the-page"],
+)
+def test_a_springs_force_with_a_part_along_z_has_no_direction_in_the_page(
+    state: dict[str, object], direction: tuple[float, float] | None
+) -> None:
+    """Whoever asks for it, a pull along z is refused, never cut to its x–y part (a wrong arrow)."""
+    model = load_model({**SPRUNG_BOB, "state": state}, SPRING_SYMBOLS)
+    values = Values(model, {**VALUES, "k": 20.0, "L0": 0.5, "a": 0.3, "b": 0.4, "h": 1.0})
+    if direction is not None:
+        assert potential_forces(model, "bob", values) == [("Fₖ", direction)]
+        return
+    with pytest.raises(ValueError, match="part along z"):
+        potential_forces(model, "bob", values)
