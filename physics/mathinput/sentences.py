@@ -64,6 +64,24 @@ def refuse_a_named_answer(tokens: list[Token], table: NameTable, text: str) -> N
     )
 
 
+def refuse_a_remark(tokens: list[Token], at: int, table: NameTable, text: str) -> None:
+    """Raise where the unknown word at tokens[at] is in a remark in brackets that ends the answer, of
+    plain words only (`2π√(L/g) (small angles)`, `m g (approx)`): the refusal shows the expression to type."""
+    if tokens[-2].kind is not Kind.RPAREN or tokens[-2].text != ")":
+        return
+    opening = next((k for k in range(at - 1, -1, -1) if tokens[k].kind in (Kind.LPAREN, Kind.RPAREN)), None)
+    if opening is None or tokens[opening].text != "(" or not tokens[opening].space_before or opening == 0:
+        return
+    words = tokens[opening + 1 : -2]
+    if not all(_plain_unknown(tok, table) for tok in words) or (len(words) < 2 and len(words[0].text) < 4):
+        return  # `m (mu)`, `m g (x)`: a name the problem lacks, more likely than a remark
+    remark = text[tokens[opening].pos : tokens[-2].end]
+    raise ParseError(
+        f"Give the expression alone: leave out {remark}, and type only {text[: tokens[opening].pos].strip()}.",
+        tokens[opening].pos,
+    )
+
+
 def _leading_words(tokens: list[Token]) -> list[Token]:
     """The words the answer opens with, each spaced from the one before."""
     words: list[Token] = []

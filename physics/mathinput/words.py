@@ -12,7 +12,7 @@ from fractions import Fraction
 from physics.characters import as_latin, lookalike_hint
 from physics.errors import AmbiguousInput, TooLarge, UnknownFunction, UnknownSymbol
 from physics.mathinput.names import NameTable, Part
-from physics.mathinput.sentences import refuse_a_named_answer, refuse_leading_sentence
+from physics.mathinput.sentences import refuse_a_named_answer, refuse_a_remark, refuse_leading_sentence
 from physics.mathinput.tokentypes import Kind, SpelledWord, Token
 from physics.mathinput.vocabulary import DEGREE_WORD, FUNCTIONS, LISTED_FUNCTIONS, MAX_WORD_LENGTH, TIMES_WORD
 
@@ -112,6 +112,7 @@ def resolve_words(tokens: list[Token], table: NameTable, text: str) -> list[Toke
                 word,
                 LISTED_FUNCTIONS,
             )
+        refuse_a_remark(tokens, index, table, text)
         if prev is None:
             refuse_leading_sentence(tokens, table, text)
         elif index == 1:

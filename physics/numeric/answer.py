@@ -218,21 +218,13 @@ def _restated(
     unit_text: str, remark: re.Match[str], start: int, expected: Dimension | None
 ) -> UnitReading | None:
     """The units before a remark in brackets that says them again (a product with them would square
-    them, and the divisor of `m/s^2 (m/s^2)` would cancel them); ParseError for one that is no units,
-    saying to leave it out; None where the units before it do not read, or it reads as other units."""
+    them, and the divisor of `m/s^2 (m/s^2)` would cancel them); None where the units before it do not
+    read, or it reads as no units or other units (`_said_after_the_value` refuses a remark)."""
     try:
         before = read_units(unit_text[: remark.start()], expected)
+        said = read_units(remark.group(1), before.units.dimension)
     except AnswerError:
         return None
-    inside = remark.group(1)
-    try:
-        said = read_units(inside, before.units.dimension)
-    except AnswerError:
-        if _SAID_AS_DIRECTION.fullmatch(inside):  # `(down)`: the units' own refusal says what to do
-            return None
-        raise ParseError(
-            f"Give the value and its units alone: leave out ({inside.strip()})", start + remark.start(1) - 1
-        ) from None
     return before if said.units.dimension == before.units.dimension else None
 
 
@@ -273,6 +265,17 @@ def read_numeric_answer(
             "is graded here",
             uncertainty.start(),
         )
+    try:
+        return _read_value(text, expected, arithmetic)
+    except AnswerError:
+        said_after = _said_after_the_value(text, expected, arithmetic)
+        if said_after is None:
+            raise
+        raise said_after from None
+
+
+def _read_value(text: str, expected: Dimension | None, arithmetic: bool) -> NumericAnswer:
+    """`read_numeric_answer` of a text already plain (no delimiters, fullwidth forms or uncertainty)."""
     # Imported here: arithmetic pulls in the math reader and sympy, which plain literals never need.
     from physics.numeric.arithmetic import number_part_end, read_arithmetic_answer
 
@@ -314,6 +317,49 @@ def read_numeric_answer(
             0,
         )
     return answer
+
+
+_EQUATION_SIGN = re.compile("[=≈]")
+
+
+def _said_after_the_value(text: str, expected: Dimension | None, arithmetic: bool) -> ParseError | None:
+    """The refusal of what is said after a value that reads, in place of the reader's own: an equation (`4.58 m/s^2 =
+    a`, `… ≈ 0.47g`) or a remark in brackets (`0.0612 (no units)`), showing the value to type; None
+    for other text. Only ever on the refusal path: it reads the value again without what follows."""
+    sign = _EQUATION_SIGN.search(text)
+    if (
+        sign is not None
+        and (value := text[: sign.start()].strip())
+        and _reads(value, expected, arithmetic) is not None
+    ):
+        at = sign.start()
+        named = named_side(text, at)
+        without = f"{text[at]} {named[0]}" if named is not None and named[1] == value else text[at:].strip()
+        return ParseError(f"Give the value alone, without '{without}': type only {value}", at)
+    remark = _REMARK.search(text)
+    # `(down)`: the units' own refusal says to give a direction by the sign
+    if (
+        remark is None
+        or not any(c.isalpha() for c in remark.group(1))
+        or _SAID_AS_DIRECTION.fullmatch(remark.group(1))
+    ):
+        return None
+    value = text[: remark.start()].strip()
+    answer = _reads(value, expected, arithmetic) if value else None
+    if answer is None:
+        return None
+    alone = "the value and its units" if answer.units is not None else "the value"
+    return ParseError(
+        f"Give {alone} alone: leave out ({remark.group(1).strip()}), and type only {value}",
+        remark.start(1) - 1,
+    )
+
+
+def _reads(value: str, expected: Dimension | None, arithmetic: bool) -> NumericAnswer | None:
+    try:
+        return _read_value(value, expected, arithmetic)
+    except AnswerError:
+        return None
 
 
 def _beyond_literal(text: str, ends: int) -> bool:

@@ -118,6 +118,12 @@ REFUSED = [
     ),
     ("simple-pendulum", "period", "=2*pi*sqrt(L/g)", "Leave out the '=' at the start"),
     ("skier-friction", "acceleration_numeric", "4.58 m/s^2 downhill", "a direction is not read here"),
+    # an equation or a remark after the value: was "Unexpected character '=' in the units", "Unexpected
+    # word 'no' in the number", "Unknown symbol "small""
+    ("skier-friction", "acceleration_numeric", "4.58 m/s^2 = a", "without '= a': type only 4.58 m/s^2"),
+    ("skier-friction", "acceleration_numeric", "4.58 m/s^2 ≈ 0.47g", "type only 4.58 m/s^2"),
+    ("simple-pendulum", "period_numeric", "2.01 (no units)", "Give the value alone: leave out (no units)"),
+    ("simple-pendulum", "period", "2π√(L/g) (small angles)", "and type only 2π√(L/g)."),
 ]
 
 
