@@ -322,8 +322,17 @@ class TwoPowersOfTen(LikelySlip):
 
 
 def side_by_side(text: str, number: NumberLiteral, at: int) -> ParseError:
-    """Why digits after a number and a space (`12 500`, `0.123 45`, `0 500`) are refused: two numbers,
-    saying what was seen and how to write the one number meant."""
+    """Why digits after a number and a space (`12 500`, `0.123 45`, `0 500`, `4 .58`) are refused: two
+    numbers, saying what was seen and how to write the one number meant."""
+    fraction_end = _run(text, at + 1, _DIGITS)
+    if (
+        text[at] == "."
+        and fraction_end > at + 1
+        and not (number.has_point or number.percent)
+        and number.exponent is None
+    ):
+        meant = f"{text[number.position : number.end].strip()}.{text[at + 1 : fraction_end]}"
+        return ParseError(f"Did you mean {meant}? Type a decimal number without a space: write {meant}", at)
     if number.exponent is not None or number.percent or text[at] not in _DIGITS:
         typed = text[number.position : number.end].strip()
         after = text[at : _run(text, at, _DIGITS)] or text[at]

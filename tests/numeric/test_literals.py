@@ -132,6 +132,8 @@ REFUSED = [
     ),
     ("-0.45 6 m", ParseError, 6, "0.45 6: two numbers side by side; for one number, write 0.456"),
     ("4.5e3 12 m", ParseError, 6, "Read as 4.5e3 and then 12, two numbers side by side: write one number"),
+    ("4 .58 m", ParseError, 2, "Did you mean 4.58? Type a decimal number without a space"),  # a stray space
+    ("4.5 .8 m", ParseError, 4, "Read as 4.5 and then ., two numbers side by side"),
     ("1_500 N", ParseError, 1, "without separators: 1500, not 1_500"),
     # A power of ten with its digits left out: not 2.5 times Euler's number, which it read as
     ("2.5e m", ParseError, 3, "Did you mean a power of ten, as in 2.5e3, or 2.5 times Euler's number e"),
