@@ -1,12 +1,14 @@
 """Units written in Russian (`м/с²`, `кг`, `Н·м`, `км/ч`) or Chinese (`米/秒²`, `千克`), as a student whose
 school writes SI's units in its own script types them. They are refused naming the Latin symbols to
 type, never read as them: the spelling is the student's to fix, and the suggestion is made only where
-it reads as units; other words in those scripts are refused saying units are typed in Latin letters."""
+it reads as units; other words in those scripts are refused saying units are typed in Latin letters.
+A Cyrillic or Greek letter that only looks Latin (`2.01 ѕ`) is named, as in a symbolic answer."""
 
 from __future__ import annotations
 
 import re
 
+from physics.characters import as_latin, lookalike_hint
 from physics.dimensions import Dimension
 from physics.errors import AnswerError
 from physics.units.parser import read_units
@@ -55,14 +57,17 @@ def _latin_symbol(word: str) -> str | None:
 
 
 def other_script_units_hint(unit_text: str, expected: Dimension | None) -> str:
-    """A sentence naming the Latin units to type for units written in Russian or Chinese, or saying to
-    type SI's symbols for other words in those scripts; "" for units with none (`expected` settles the
+    """A sentence naming the Latin units to type for units written in Russian or Chinese, or with a letter
+    that looks Latin, or saying to type SI's symbols for other words in those scripts; "" for units with none (`expected` settles the
     reading of glued Latin names, as for any units)."""
-    if not _WORD.search(unit_text):
-        return ""
     latin = latin_units(unit_text)
     if latin is not None and _read(latin, expected):
         return f": units are written with SI's symbols in Latin letters; did you mean {latin.strip()}?"
+    looks = as_latin(unit_text)
+    if looks is not None and _read(looks, expected):  # `2.01 ѕ`: a Cyrillic letter that looks Latin
+        return f": did you mean {looks.strip()}?{lookalike_hint(unit_text)}"
+    if not _WORD.search(unit_text):
+        return ""
     return ": units are written with SI's symbols in Latin letters, as in m/s^2, kg or N"
 
 

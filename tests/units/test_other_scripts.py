@@ -1,4 +1,5 @@
-"""Units written in Russian or Chinese: refused naming the Latin symbols to type, never read as them."""
+"""Units written in Russian or Chinese, or with a letter that looks Latin: refused naming the Latin symbols
+to type, never read as them."""
 
 from __future__ import annotations
 
@@ -73,11 +74,17 @@ REFUSED = [
         "m",
         "units are written with SI's symbols in Latin letters, as in m/s^2, kg or N",
     ),
+    # a Cyrillic or Greek letter that looks Latin, named as in a symbolic answer: was no hint, or the
+    # Russian one, which this is not
+    ("2.01 ѕ", "2.01", "s", "did you mean s? Its ѕ is a Cyrillic letter that looks like the Latin s"),
+    ("4.58 m/ѕ^2", "4.58", "m/s^2", "did you mean m/s^2? Its ѕ is a Cyrillic letter"),
+    ("4.58 κm/h", "4.58", "km/h", "did you mean km/h? Its κ is a Greek letter that looks like the Latin k"),
+    ("4.58 m/с²", "4.58", "m/s^2", "did you mean m/s²?"),  # Russian's с, the second, not the Latin c
 ]
 
 
 @pytest.mark.parametrize(("answer", "expected", "units", "message"), REFUSED, ids=[c[0] for c in REFUSED])
-def test_units_written_in_russian_are_refused_naming_the_latin_symbols(
+def test_units_in_another_script_are_refused_naming_the_latin_symbols(
     answer: str, expected: str, units: str, message: str
 ) -> None:
     verdict = check_numeric(answer, NumericSpec(Decimal(expected), units))
