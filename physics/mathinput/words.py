@@ -104,6 +104,7 @@ def resolve_words(tokens: list[Token], table: NameTable, text: str) -> list[Toke
                 f" Did you mean {lowered}? Function names are in small letters."
                 if lowered in FUNCTIONS
                 else other_names_hint(word, degree_function_argument(tokens[index + 1 :], text))
+                or root_hint(word, tokens[index + 1 :], text)
                 or _glued_capital_function_hint(word, table)
             )
             raise UnknownFunction(
@@ -133,7 +134,8 @@ def resolve_words(tokens: list[Token], table: NameTable, text: str) -> list[Toke
             + _subscript_hint(word, allowed, table)
             + _times_letter_hint(word, prev, nxt)
             + _spaced_exponent_hint(word, prev)
-            + other_names_hint(word, degree_function_argument(tokens[index + 1 :], text)),
+            + other_names_hint(word, degree_function_argument(tokens[index + 1 :], text))
+            + root_hint(word, tokens[index + 1 :], text),
             tok.pos,
             word,
             allowed,
@@ -325,6 +327,26 @@ def other_names_hint(word: str, argument: str = "") -> str:
         return ""
     name = _OTHER_FUNCTION_NAMES[found.group(1)]
     return f" Did you mean {name}? Write {name} for {found.group(1)}, as in {name}(x)."
+
+
+# A square root's name as students spell it out, and `sqr`, BASIC's and Pascal's square (a square root to
+# many who type it).
+_ROOT_NAMES = frozenset({"root", "sqroot", "sqrroot", "squareroot"})
+
+
+def root_hint(word: str, following: list[Token], text: str) -> str:
+    """A sentence for `root(L/g)`, `squareroot(L/g)`: "Did you mean sqrt(L/g)?"; for `sqr(x)`, asking
+    which of the square root and the square is meant; or "". `following`: the tokens after the word."""
+    lowered = word.lower()
+    if lowered not in _ROOT_NAMES and lowered != "sqr":
+        return ""
+    argument = _bracketed_text(following, text) or "…"
+    if lowered == "sqr":
+        return (
+            f" Did you mean the square root, sqrt({argument}), or the square, ({argument})^2? Write one of them; "
+            "sqr is not read."
+        )
+    return f" Did you mean sqrt({argument})? Write a square root as sqrt(…) or √(…)."
 
 
 _NUMBER_OF_DEGREES = re.compile(r"\d+(?:\.\d*)?\s*°?")

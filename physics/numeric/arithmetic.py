@@ -27,6 +27,7 @@ from physics.mathinput.words import (
     degree_function_argument,
     glued_angle_hint,
     other_names_hint,
+    root_hint,
 )
 from physics.numeric.answer import (
     MAX_ANSWER_LENGTH,
@@ -82,12 +83,15 @@ _ENDS_NUMBER = frozenset({Kind.NUM, Kind.RPAREN, Kind.WORD, Kind.POSTFIX})
 
 def _slip_hint(tokens: list[Token], i: int, text: str) -> str:
     """What to type for a word in the number part that means a function or π under another spelling:
-    `tg 30°` or MATLAB's `sind(30)`, `SQRT(2)` or `Sin(30°)` in capitals, a spreadsheet's `PI()`; or ""."""
+    `tg 30°` or MATLAB's `sind(30)`, `root(2)`, `SQRT(2)` or `Sin(30°)` in capitals, a spreadsheet's
+    `PI()`; or ""."""
     word, following = tokens[i].text, tokens[i + 1]
     argued = following.kind in (Kind.LPAREN, Kind.NUM)
     if (argued or word[-1].isdigit()) and (
         hint := other_names_hint(word, degree_function_argument(tokens[i + 1 :], text))
     ):
+        return hint.strip()
+    if argued and (hint := root_hint(word, tokens[i + 1 :], text)):
         return hint.strip()
     if argued and word.lower() in FUNCTIONS and word not in FUNCTIONS:
         return f"Did you mean {word.lower()}? Function names are in small letters."

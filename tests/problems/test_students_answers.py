@@ -118,6 +118,16 @@ REFUSED = [
     ),
     ("simple-pendulum", "period", "=2*pi*sqrt(L/g)", "Leave out the '=' at the start"),
     ("skier-friction", "acceleration_numeric", "4.58 m/s^2 downhill", "a direction is not read here"),
+    # a square root's name spelled out, or BASIC's square: was "Unknown function" with no hint
+    ("simple-pendulum", "period", "2π root(L/g)", "Did you mean sqrt(L/g)?"),
+    ("simple-pendulum", "period", "2π squareroot(L/g)", "Did you mean sqrt(L/g)?"),
+    (
+        "simple-pendulum",
+        "period",
+        "2π sqr(L/g)",
+        "Did you mean the square root, sqrt(L/g), or the square, (L/g)^2?",
+    ),
+    ("simple-pendulum", "period_numeric", "2*pi*sqroot(0.5/9.81) s", "Did you mean sqrt(0.5/9.81)?"),
     # an equation or a remark after the value: was "Unexpected character '=' in the units", "Unexpected
     # word 'no' in the number", "Unknown symbol "small""
     ("skier-friction", "acceleration_numeric", "4.58 m/s^2 = a", "without '= a': type only 4.58 m/s^2"),
