@@ -167,6 +167,8 @@ def calculator_exponent_slip(
     calculator's display of mantissa×10^-exponent, which as arithmetic would be 3.0·10 − 3; asked as
     `4.58 10 3` is."""
     meant = f"{mantissa}×10^-{exponent}"
+    # `g sin α 10 -3`: a mantissa of symbols has no `e` form
+    scientific = f", or {mantissa}e-{exponent}" if mantissa.replace(".", "", 1).isdecimal() else ""
     if typed is not None:
         shown = " ".join(typed.split())
         return LikelySlip(
@@ -175,7 +177,7 @@ def calculator_exponent_slip(
             at,
         )
     return LikelySlip(
-        f"Did you mean {meant}? Write the power of ten with ^ ({meant}, or {mantissa}e-{exponent}); for a "
+        f"Did you mean {meant}? Write the power of ten with ^ ({meant}{scientific}); for a "
         f"subtraction, put spaces round the minus (10 - {exponent})",
         at,
     )

@@ -154,12 +154,16 @@ class Parser:
 
     def _sum(self) -> Node:
         self._enter(self._tokens[self._i])
+        term_at = self._tokens[self._i].pos
         first = self._term()
         rest: list[tuple[Literal["+", "-"], Node]] = []
         while (tok := self._tokens[self._i]).kind is Kind.OP and tok.text in "+-":
             if tok.text == "-" and _after_times_ten(self._tokens, self._i):
                 self._refuse_a_calculator_exponent()
+            elif tok.text == "-" and _after_a_factor_and_ten(self._tokens, self._i):
+                self._refuse_a_calculator_exponent(term_at)
             op = self._advance()
+            term_at = self._tokens[self._i].pos
             rest.append(("+" if op.text == "+" else "-", self._term()))
         self._leave()
         return Sum(first, tuple(rest)) if rest else first
@@ -228,14 +232,19 @@ class Parser:
                 return first
         return Product(first, tuple((item.op, item.node) for item in items))
 
-    def _refuse_a_calculator_exponent(self) -> None:
+    def _refuse_a_calculator_exponent(self, term_at: int | None = None) -> None:
         """`3.0×10-3`, a calculator's display of 3.0×10^-3 with its ^ left out: 3.0·10 − 3 as typed, which
-        no one means; refused as in a numeric answer (a minus spaced on both sides is a subtraction)."""
+        no one means; refused as in a numeric answer (a minus spaced on both sides is a subtraction).
+        `term_at`: where the term starts whose factors are the mantissa, `g sin α 10 -3`."""
         ten = self._tokens[self._i - 1]
         found = separators.calculator_exponent(self._source, ten.end)
-        if found is not None:
-            mantissa = self._tokens[self._i - 3]
-            raise separators.calculator_exponent_slip(self._typed(mantissa), found[1], found[0])
+        if found is None:
+            return
+        if term_at is None:
+            mantissa = self._typed(self._tokens[self._i - 3])
+        else:
+            mantissa = self._source[term_at : ten.pos].rstrip(" *×·⋅")
+        raise separators.calculator_exponent_slip(mantissa, found[1], found[0])
 
     def _number_after_a_power(self, factor_at: int, exponent: Token, number: Token) -> ParseError:
         """The refusal of `x^2 3`: the power typed from `factor_at` to its `exponent`, then a `number`
@@ -996,6 +1005,22 @@ def _after_times_ten(tokens: list[Token], at: int) -> bool:
         and not (at >= 4 and _is_raised(tokens[at - 4]))
         and tokens[at + 1].is_integer_literal
     )
+
+
+_ENDS_A_FACTOR = (Kind.NAME, Kind.CONST, Kind.RPAREN, Kind.POSTFIX, Kind.SUP)
+
+
+def _after_a_factor_and_ten(tokens: list[Token], at: int) -> bool:
+    """Whether the minus at `at` follows a 10 after a factor that is no number, `g sin α 10 -3` or
+    `m g*10-3`: the 10 no one writes there but as a power of ten."""
+    if at < 2 or tokens[at - 1].text != "10" or tokens[at - 1].kind is not Kind.NUM:
+        return False
+    before = tokens[at - 2]
+    if before.kind is Kind.OP and before.text == "*":
+        before = tokens[at - 3] if at >= 3 else before
+    elif not tokens[at - 1].space_before:
+        return False
+    return before.kind in _ENDS_A_FACTOR and tokens[at + 1].is_integer_literal
 
 
 def _times_a_power_of_ten(tokens: list[Token], at: int) -> bool:

@@ -97,6 +97,14 @@ REFUSED = [
     ("skier-friction", "acceleration", "g (sind(α) - μ cosd(α))", "Did you mean sin(α)?"),
     ("skier-friction", "acceleration_numeric", "4.58 10 -3 m/s^2", "Did you mean 4.58×10^-3?"),
     ("skier-friction", "acceleration", "3.0×10-3 g", "Did you mean 3.0×10^-3?"),  # was graded 3.0·10 − 3g
+    # were graded as g·sin α·10 − 3 and 9.81·sin 35°·10 − 3
+    ("skier-friction", "acceleration", "g sin α 10 -3", "Did you mean g sin α×10^-3?"),
+    (
+        "skier-friction",
+        "acceleration_numeric",
+        "9.81 sin 35° 10 -3 m/s^2",
+        "Did you mean 9.81 sin 35°×10^-3?",
+    ),
     ("skier-friction", "acceleration_numeric", "2 3^2 m/s^2", "2 3^2: two numbers side by side"),
     (
         "moving-wedge",
