@@ -137,13 +137,24 @@ def equals_sign(text: str, at: int) -> ParseError:
     return ParseError(f"Give the expression alone, without '{without}': type only {expression}.", at)
 
 
+# Words before the name, as a sentence introduces it: `the period T`, `so T`.
+_WORDS_THEN_NAME = re.compile(r"\s*((?:[A-Za-z]+\s+)+)" + _NAME_SIDE.pattern.removeprefix(r"\s*"))
+
+
+def _introduced_name(side: str) -> bool:
+    """Whether `side` is a name after words of a sentence, one of them a sentence's (`the period T`)."""
+    found = _WORDS_THEN_NAME.fullmatch(side)
+    return found is not None and any(word.lower() in _SENTENCE_WORDS for word in found.group(1).split())
+
+
 def named_side(text: str, at: int) -> tuple[str, str] | None:
-    """The name and the expression of `T = 2π√(L/g)` (or `2π√(L/g) = T`), the sign at `at`; None where
-    neither side is a name alone, or the answer has another sign."""
+    """The name and the expression of `T = 2π√(L/g)` (or `2π√(L/g) = T`, `the period T = 2π√(L/g)`, the
+    name with the words before it), the sign at `at`; None where neither side is a name alone (or after a
+    sentence's words), or the answer has another sign."""
     left, right = text[:at], text[at + 1 :]
     if any(sign in right for sign in "=≈") or not left.strip() or not right.strip():
         return None
-    if _NAME_SIDE.fullmatch(left):
+    if _NAME_SIDE.fullmatch(left) or _introduced_name(left):
         return left.strip(), right.strip()
     if _NAME_SIDE.fullmatch(right):
         return right.strip(), left.strip()

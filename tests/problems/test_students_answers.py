@@ -83,6 +83,14 @@ def test_a_students_answer_is_read_as_meant(problem_id: str, part_id: str, typed
 REFUSED = [
     # (problem, part, typed, the refusal's words): each once read otherwise or refused unhelpfully
     ("simple-pendulum", "period", "T = 2π√(L/g)", "without 'T =': type only 2π√(L/g)."),
+    # words, a left side, then the answer: was "without '=' (nor the name before it)"
+    ("simple-pendulum", "period", "the period T = 2π√(L/g)", "without 'the period T =': type only 2π√(L/g)."),
+    (
+        "simple-pendulum",
+        "period_numeric",
+        "the period T = 2.01 s",
+        "without 'the period T =': type only 2.01 s",
+    ),
     ("yo-yo-lagrangian", "lagrangian", "L = 1/2 m(1+k²/r²)d'² + mgd", "without 'L =': type only 1/2 m"),
     ("skier-friction", "friction_coefficient", "μ = tan α", "without 'μ =': type only tan α."),
     ("simple-pendulum", "period_numeric", "T=2.01s", "Give the value alone, without 'T =': type only 2.01s"),
