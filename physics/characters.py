@@ -62,9 +62,10 @@ _PLAIN: Final = MappingProxyType(
 )
 
 # Characters that show nothing and mean nothing in an answer: zero-width space, non-joiner and joiner,
-# word joiner, byte-order mark, soft hyphen, and the direction marks, embeddings and isolates.
+# word joiner, byte-order mark, soft hyphen, the direction marks, embeddings and isolates, and the
+# variation selectors a phone's keyboard puts after a character it also has as an emoji (`²️`).
 ZERO_WIDTH: Final = frozenset(
-    "\u200b\u200c\u200d\u2060\ufeff\u00ad\u200e\u200f\u061c"
+    "\u200b\u200c\u200d\u2060\ufeff\u00ad\u200e\u200f\u061c\ufe0e\ufe0f"
     + "".join(map(chr, range(0x202A, 0x202F)))
     + "".join(map(chr, range(0x2066, 0x206A)))
 )

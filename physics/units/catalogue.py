@@ -160,7 +160,7 @@ ALIASES: dict[str, str] = {
     "ohms": "ohm", "Ohm": "ohm", "Ohms": "ohm", "rads": "rad", "degs": "°", "revs": "rev",
     "amps": "A", "gm": "g", "gms": "g", "kgs": "kg", "mcg": "µg", "kilo": "kg", "kilos": "kg",
     "lbm": "lb", "ftlb": "ft·lbf", "ftlbs": "ft·lbf",
-    "kph": "km/h", "kmh": "km/h", "kmph": "km/h", "mps": "m/s", "kmps": "km/s", "cc": "cm^3", "AU": "au",
+    "kph": "km/h", "kmh": "km/h", "kmph": "km/h", "kmhr": "km/h", "mps": "m/s", "kmps": "km/s", "cc": "cm^3", "AU": "au",
     # The SI brochure's elided forms; `Cal` is the dietary calorie, the kilocalorie.
     "kilohm": "kΩ", "kilohms": "kΩ", "megohm": "MΩ", "megohms": "MΩ", "Cal": "kcal", "Cals": "kcal",
     # `ms-1` is how many textbooks print m·s⁻¹; no one writes a reciprocal millisecond that way.

@@ -5,8 +5,9 @@ form one name (`Nm`), which the parser looks up or splits, so `N m` and `Nm` bot
 A name with a negative integer glued to it is a power, as textbooks print it (`m s-2` is m·s⁻²), and
 `N.m` and `N-m` are N·m. Units said in words read as written: `per` divides (`per second` alone is 1/s),
 `squared` and `cubed` raise the unit before them (`metres per second squared` is m/s²), `sq`, `square`,
-`cu` and `cubic` the unit after them (`sq ft`, `cubic centimetres`); `fl oz` is the fluid ounce, and a
-degree word before a temperature scale one unit (`deg C`, `degrees Fahrenheit` are °C, °F).
+`cu` and `cubic` the unit after them (`sq ft`, `cubic centimetres`), or before them where none follows
+(`m/s sq`); `fl oz` is the fluid ounce, and a degree word before a temperature scale one unit (`deg C`,
+`degrees Fahrenheit` are °C, °F).
 """
 
 from __future__ import annotations
@@ -213,7 +214,8 @@ def _tokenize(text: str) -> list[Token]:
             continue
         start = i
         if leading is not None and not _is_name_char(char):
-            raise ParseError(f"{leading[1].text!r} needs a unit after it, as in sq m", leading[1].position)
+            _raise_the_unit_before(tokens, leading)
+            leading = None
         if _is_name_char(char):
             while i < n and _is_name_char(text[i]):
                 i += 1
@@ -330,7 +332,7 @@ def _tokenize(text: str) -> list[Token]:
             hint = _CHARACTER_HINTS.get(char, "")
             raise ParseError(f"Unexpected character {char!r} in the units{hint}", start)
     if leading is not None:
-        raise ParseError(f"{leading[1].text!r} needs a unit after it, as in sq m", leading[1].position)
+        _raise_the_unit_before(tokens, leading)
     tokens.append(Token(Kind.END, "", n))
     return tokens
 
@@ -357,6 +359,14 @@ def _raise_by(tokens: list[Token], leading: tuple[int, Token] | None) -> None:
         power, word = leading
         tokens.append(word)
         tokens.append(Token(Kind.INTEGER, str(power), word.position, power))
+
+
+def _raise_the_unit_before(tokens: list[Token], leading: tuple[int, Token]) -> None:
+    """`m/s sq`, `m/sec sq.`: a `sq` with no unit after it raises the unit before it, as `squared` does
+    (a phone's short form); with no unit before it either, it is refused."""
+    if not tokens or tokens[-1].kind is not Kind.NAME:
+        raise ParseError(f"{leading[1].text!r} needs a unit after it, as in sq m", leading[1].position)
+    _raise_by(tokens, leading)
 
 
 def second_quantity(number: str, unit: str, position: int) -> ParseError:

@@ -173,6 +173,11 @@ ANSWERS = [
     ("2 N–m", "N*m", "2"),
     ("4.58 m.s-²", "m/s^2", "4.58"),  # the minus typed, the ² from a palette
     ("25 C°", "K", "298.15"),  # the degree sign after the scale: once a coulomb times a degree
+    # as a phone types them: once km·h (graded a wrong dimension), refused, and an unexpected character
+    ("45 kmhr", "m/s", "12.5"),
+    ("4.58 m/s sq", "m/s^2", "4.58"),
+    ("4.58 m/sec sq.", "m/s^2", "4.58"),
+    ("4.58 m/s²\ufe0f", "m/s^2", "4.58"),  # the emoji keyboard's variation selector after ²
 ]
 
 
@@ -205,9 +210,10 @@ def test_pint_spellings_that_would_mislead_are_not_taken(typed: str) -> None:
         parse_units(typed)
 
 
-def test_a_leading_square_needs_a_unit_after_it() -> None:
+@pytest.mark.parametrize("typed", ["sq", "sq/s", "(m) sq"])
+def test_a_square_said_with_no_unit_after_or_before_it_is_refused(typed: str) -> None:
     with pytest.raises(ParseError, match="needs a unit after it"):
-        parse_units("m sq")
+        parse_units(typed)
 
 
 def test_units_beyond_si_are_refused_where_the_part_asks_for_si() -> None:
