@@ -47,6 +47,8 @@ INVISIBLE_GAPS: Final = MappingProxyType({"\u2061": " ", "\u2062": " "})
 # Dots and stars typed for a product: the bullet operator, the bullet (option-8 on a Mac keyboard), and
 # the asterisk operator (Word's symbol menu), as the middle dot and the asterisk they look like.
 TIMES_LOOKALIKES: Final = MappingProxyType({"∙": "·", "•": "·", "∗": "*"})
+# The modifier letter circumflex, which a Mac's option-i and some phones type for a caret: `m/sˆ2`.
+CARET_LOOKALIKES: Final = MappingProxyType({"ˆ": "^"})
 # The digits of Arabic script, as an Arabic (U+0660…) or Persian (U+06F0…) keyboard types them, and its
 # decimal separator: the same digits and point (`٤٫٥٨` is 4.58). Its thousands separator, ٬, is kept:
 # unlike a comma it is no decimal one, and the readers of numbers refuse it by its own name.
@@ -58,7 +60,15 @@ ARABIC_DIGITS: Final = MappingProxyType(
     }
 )
 _PLAIN: Final = MappingProxyType(
-    {**FULLWIDTH, **DEGREE_LOOKALIKES, **MATH_LETTERS, **INVISIBLE_GAPS, **TIMES_LOOKALIKES, **ARABIC_DIGITS}
+    {
+        **FULLWIDTH,
+        **DEGREE_LOOKALIKES,
+        **MATH_LETTERS,
+        **INVISIBLE_GAPS,
+        **TIMES_LOOKALIKES,
+        **CARET_LOOKALIKES,
+        **ARABIC_DIGITS,
+    }
 )
 
 # Characters that show nothing and mean nothing in an answer: zero-width space, non-joiner and joiner,
@@ -103,8 +113,8 @@ def lookalike_hint(word: str) -> str:
 
 
 def fullwidth_as_ascii(text: str) -> str:
-    """The text with fullwidth forms and Arabic script's digits as ASCII, the degree sign's and the times
-    signs' look-alikes as those signs, mathematical letters as plain ones, and Word's invisible operators
+    """The text with fullwidth forms and Arabic script's digits as ASCII, the degree sign's, the times
+    signs' and the caret's look-alikes as those signs, mathematical letters as plain ones, and Word's invisible operators
     as spaces."""
     if text.isascii():
         return text

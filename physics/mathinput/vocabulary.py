@@ -8,7 +8,14 @@ from __future__ import annotations
 from types import MappingProxyType
 from typing import Final
 
-from physics.characters import ARABIC_DIGITS, DEGREE_LOOKALIKES, FULLWIDTH, INVISIBLE_GAPS, MATH_LETTERS
+from physics.characters import (
+    ARABIC_DIGITS,
+    CARET_LOOKALIKES,
+    DEGREE_LOOKALIKES,
+    FULLWIDTH,
+    INVISIBLE_GAPS,
+    MATH_LETTERS,
+)
 
 GREEK_LETTERS: Final = MappingProxyType(
     {
@@ -43,6 +50,7 @@ CHARACTER_VARIANTS: Final = MappingProxyType(
         **DEGREE_LOOKALIKES,  # 30º, 30˚
         **MATH_LETTERS,  # 𝑚𝑔ℎ, 𝜃: an equation copied from Word or a PDF
         **INVISIBLE_GAPS,  # sin⁡θ as Word copies it: function application, invisible times
+        **CARET_LOOKALIKES,  # vˆ2, a Mac's option-i
     }
 )  # fmt: skip
 

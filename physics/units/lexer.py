@@ -87,6 +87,7 @@ def _word_tokens(word: str, position: int, first: bool) -> list[Token] | None:
 
 _SUPERSCRIPT_DIGITS = {c: i for i, c in enumerate("⁰¹²³⁴⁵⁶⁷⁸⁹")}
 _SUPERSCRIPT_SIGNS = {"⁻": -1, "⁺": 1}
+_PLAIN_DIGITS = {c: i for i, c in enumerate("0123456789")}
 _MAX_INTEGER_DIGITS = 6
 
 
@@ -290,13 +291,15 @@ def _tokenize(text: str) -> list[Token]:
                 sign = _SUPERSCRIPT_SIGNS[char]
                 i += 1
             digits_start = i
-            while i < n and text[i] in _SUPERSCRIPT_DIGITS and i - digits_start < _MAX_INTEGER_DIGITS:
+            # `s⁻2`: the sign from a phone's palette, the digits from its keyboard
+            digit_values = _SUPERSCRIPT_DIGITS if text[i : i + 1] not in _PLAIN_DIGITS else _PLAIN_DIGITS
+            while i < n and text[i] in digit_values and i - digits_start < _MAX_INTEGER_DIGITS:
                 i += 1
             if i == digits_start:
                 raise ParseError("A superscript sign must be followed by superscript digits", start)
             value = 0
             for digit in text[digits_start:i]:
-                value = value * 10 + _SUPERSCRIPT_DIGITS[digit]
+                value = value * 10 + digit_values[digit]
             if (
                 tokens
                 and tokens[-1].kind is Kind.POWER

@@ -52,6 +52,7 @@ CORRECT = [
     ("simple-pendulum", "period", "2π√(L/g)\u200b"),  # a zero-width space copied from a page
     ("simple-pendulum", "angular_frequency", "(g/L)^1/2"),
     ("simple-pendulum", "tension_at_bottom", "m(g+v²/L)"),
+    ("simple-pendulum", "tension_at_bottom", "m(g+vˆ2/L)"),  # a Mac's option-i circumflex for ^
     ("lennard-jones", "oscillation_frequency", "12 sqrt(U_0/m)/r_0"),
     ("lennard-jones", "spring_constant", "72U0/r0²"),
     ("lennard-jones", "equilibrium_separation", "r₀"),

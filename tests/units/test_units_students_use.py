@@ -178,6 +178,9 @@ ANSWERS = [
     ("4.58 m/s sq", "m/s^2", "4.58"),
     ("4.58 m/sec sq.", "m/s^2", "4.58"),
     ("4.58 m/s²\ufe0f", "m/s^2", "4.58"),  # the emoji keyboard's variation selector after ²
+    ("4.58 m/sˆ2", "m/s^2", "4.58"),  # a Mac's option-i circumflex for the caret: was a unit `sˆ`
+    ("4.58 ms⁻2", "m/s^2", "4.58"),  # the minus from a palette, the digit typed: was refused
+    ("12.5 m s⁻1", "m/s", "12.5"),
 ]
 
 
