@@ -24,7 +24,7 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 from physics.dimensions import Dimension, describe
-from physics.errors import AmbiguousInput, AnswerError, ParseError, TooLarge, UnknownUnit
+from physics.errors import AmbiguousInput, AnswerError, LikelySlip, ParseError, TooLarge, UnknownUnit
 from physics.units.catalogue import (
     ALIASES,
     FIRST_WHERE_NONE_FITS,
@@ -688,8 +688,13 @@ def read_units(text: str, expected: Dimension | None = None) -> UnitReading:
     """
     _check_length(text)
     reading = _read_cached(text, expected)
-    if text.startswith("in ") and expected is not None and reading.units.dimension != expected:
-        _refuse_the_word_in(text, expected)
+    if expected is not None and reading.units.dimension != expected:
+        if text.startswith("in "):
+            _refuse_the_word_in(text, expected)
+        if text.strip() == "dg" and expected == Dimension():  # `35 dg` for an angle: never 35 decigrams
+            raise LikelySlip(
+                "Did you mean degrees? dg is the decigram, a mass: for degrees write ° or deg, as in 30°", 0
+            )
     return reading
 
 

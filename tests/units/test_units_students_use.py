@@ -245,6 +245,8 @@ def test_an_alias_in_the_wrong_case_is_settled_by_dimension(typed: str, reading:
     [
         ("30o", "30", "deg", Reason.UNKNOWN_UNIT, "for degrees write ° or deg"),
         ("30 O", "30", "deg", Reason.UNKNOWN_UNIT, "for degrees write ° or deg"),
+        # degrees shortened as decigrams: was graded, "the units of a mass"
+        ("35 dg", "35", "deg", Reason.PARSE_ERROR, "Did you mean degrees? dg is the decigram"),
         ("5 ft 10 in", "1.778", "m", Reason.PARSE_ERROR, "second number with its own unit (10 in)"),
         ("2 h 30 min", "9000", "s", Reason.PARSE_ERROR, "second number with its own unit (30 min)"),
         # a decimal second number: was "A unit string holds whole numbers only"
