@@ -47,9 +47,7 @@ def bounced(simulator: Simulator, name: str, count: int, point: Point) -> tuple[
         def closed(y: Vector) -> float:  # >= 0 once the separation is back to zero
             return -sum(a * (q - q0) for a, q, q0 in zip(row, y[: dyn.n], start, strict=True))
 
-        _, arrival = reach._integrate(
-            [*start, *rates], 2 * parting / -pull, point, closed, lambda y: False, name
-        )
+        _, arrival = reach._integrate([*start, *rates], 2 * parting / -pull, point, closed, name)
         arriving = list(arrival[dyn.n : 2 * dyn.n])
         state = {
             **dict(model.state),

@@ -20,6 +20,7 @@ MAX_SCALES = 200
 BISECTIONS = 60
 PUSH = 1e-4  # a vanishing push off an unstable equilibrium, as a share of the motion's speed
 EQUILIBRIUM_ROUNDING = 1e-9  # an acceleration this small against its growth over the distance is none
+TANGENCY = 1e-6  # of the distance: a turn this close to the target is the target reached at zero rate
 SEPARATION_ROUNDING = 1e-7  # of the coordinates' size: bodies left just touching (e = 0) are not closing
 
 
@@ -34,17 +35,23 @@ class ReachMeasure:
     def __call__(self, quantity: Quantity, point: Point, expected: float) -> Measured:
         if quantity.kind in TRAJECTORY_KINDS:
             return self._flight(quantity, point)
-        return self._arrival(quantity, point)
+        return self._arrival(quantity, point, expected)
 
     # --- a coordinate reaching a value -----------------------------------------------------------
 
-    def _arrival(self, quantity: Quantity, point: Point) -> Measured:
+    def _arrival(self, quantity: Quantity, point: Point, expected: float) -> Measured:
         ((name, value),) = quantity.at
         target = _evaluate(value, point)
         key = (name, target, *sorted((str(s), v) for s, v in point.items()))
         if key not in self._events:
             self._events[key] = self._arrive(quantity, point, [target])[0]
-        return self._read(quantity, self._events[key][1], point)
+        compared, measured, error = self._read(quantity, self._events[key][1], point)
+        if quantity.kind is QuantityKind.VELOCITY and expected == 0:
+            # a rate that vanishes where it arrives (the top of a throw) is measured against its start
+            j = [c.name for c in self.simulator.model.coordinates].index(quantity.target)
+            start = abs(self.simulator._start(point)[1][j])
+            error = abs(measured) / start if start else None
+        return compared, measured, error
 
     def crossings(self, quantity: Quantity, point: Point, targets: list[float]) -> list[float]:
         """The quantity where one integrated motion reaches each of `targets` in turn (the same motion:
@@ -67,8 +74,9 @@ class ReachMeasure:
             scales = [self._push(q, qd, i, sign, distance, params, quantity.name)]
         scales += [math.sqrt(2 * distance / abs(acceleration))] if acceleration else []
 
-        def turned(y: Vector) -> bool:
-            return y[dyn.n + i] * sign < 0 and abs(y[i] - q[i]) > 1e-9 * max(distance, 1.0)
+        def heading(y: Vector) -> float:
+            """The rate towards the targets, once the coordinate has left its start (rounding at rest)."""
+            return y[dyn.n + i] * sign if abs(y[i] - q[i]) > 1e-9 * max(distance, 1.0) else 1.0
 
         events: list[tuple[float, Vector]] = []
         y, elapsed = dyn.initial(q, qd, params), 0.0  # with a clock when a support moves as prescribed
@@ -77,7 +85,11 @@ class ReachMeasure:
             def passed(state: Vector, at: float = target) -> float:
                 return sign * (state[i] - at)
 
-            time, y = self._integrate(y, min(scales), point, passed, turned, quantity.name)
+            def touches(state: Vector, at: float = target) -> bool:
+                # a turning point on the target (a projectile's top) is reached there, at zero rate
+                return abs(state[i] - at) <= TANGENCY * max(distance, 1e-12)
+
+            time, y = self._integrate(y, min(scales), point, passed, quantity.name, heading, touches)
             elapsed += time
             events.append((elapsed, y))
         return events
@@ -168,7 +180,7 @@ class ReachMeasure:
         def reversed_rate(y: Vector) -> float:
             return -heading * y[dyn.n + i]
 
-        _, y = self._integrate(q + qd, min(scales), point, reversed_rate, lambda y: False, quantity.name)
+        _, y = self._integrate(q + qd, min(scales), point, reversed_rate, quantity.name)
         return f"where the integrated motion of {quantity.target} stops and turns back", y[i], None
 
     # --- a body in flight --------------------------------------------------------------------------
@@ -221,7 +233,7 @@ class ReachMeasure:
                 return level - dyn.positions(y[: dyn.n], params)[place["y"]]
 
         if key not in self._events:
-            self._events[key] = self._integrate(q + qd, scale, point, event, lambda y: False, quantity.name)
+            self._events[key] = self._integrate(q + qd, scale, point, event, quantity.name)
         time, y = self._events[key]
         now = dyn.positions(y[: dyn.n], params)
         if quantity.kind is QuantityKind.TIME_OF_FLIGHT:
@@ -249,10 +261,12 @@ class ReachMeasure:
         scale: float,
         point: Point,
         event: Callable[[Vector], float],
-        turned: Callable[[Vector], bool],
         name: str,
+        heading: Callable[[Vector], float] | None = None,
+        touches: Callable[[Vector], bool] = lambda y: False,
     ) -> tuple[float, Vector]:
-        """(time, state) where `event` first goes from negative to zero or above, after the start."""
+        """(time, state) where `event` first goes from negative to zero or above, after the start; or,
+        with `heading` (the rate towards the event), where that rate first vanishes if `touches` there."""
         dyn = self.simulator.dynamics
         f = dyn.derivative(dyn.values(point))
         dt = scale / STEPS_PER_SCALE
@@ -261,15 +275,13 @@ class ReachMeasure:
             after_y = sim_rk4(f, y, dt)
             after = event(after_y)
             if before < 0 <= after:
-                low, high = 0.0, dt
-                for _ in range(BISECTIONS):
-                    middle = (low + high) / 2
-                    if event(sim_rk4(f, y, middle)) >= 0:
-                        high = middle
-                    else:
-                        low = middle
-                return step * dt + high, sim_rk4(f, y, high)
-            if turned(after_y):
+                time = _bisect(f, y, dt, event)
+                return step * dt + time, sim_rk4(f, y, time)
+            if heading is not None and heading(after_y) < 0:
+                time = _bisect(f, y, dt, lambda s: -heading(s))
+                turn = sim_rk4(f, y, time)
+                if touches(turn):
+                    return step * dt + time, turn
                 raise DerivationError(f"{name}: the integrated motion turns back before it gets there")
             self._keep_apart(after_y, name)
             y, before = after_y, after
@@ -297,6 +309,18 @@ class ReachMeasure:
             exprs = [time_derivative(e, model) for _, e in model.body(body).position]
             self._velocities[body] = _compile([*dyn.mech.q, *dyn.mech.qd, *dyn.params], exprs)
         return self._velocities[body]
+
+
+def _bisect(f: Callable[[Vector], Vector], y: Vector, dt: float, event: Callable[[Vector], float]) -> float:
+    """The time within a step of length dt from y where `event` goes from negative to zero or above."""
+    low, high = 0.0, dt
+    for _ in range(BISECTIONS):
+        middle = (low + high) / 2
+        if event(sim_rk4(f, y, middle)) >= 0:
+            high = middle
+        else:
+            low = middle
+    return high
 
 
 def sim_rk4(f: Callable[[Vector], Vector], y: Vector, dt: float) -> Vector:

@@ -143,6 +143,7 @@ def answer(method: Method, quantity: Quantity) -> sympy.Expr:
 
         method.arrivals[key] = staged(method, trip)[0]
         _check_reached(model, trip, method.arrivals[key], quantity.name)
+        _say_which_arrival(method, trip, method.arrivals[key])
     square = method.arrivals[key]
     c = trip.coordinate
     velocity = tidy.simplify(trip.sign * sympy.sqrt(square))
@@ -309,7 +310,10 @@ def _in_one_trig_function(expr: sympy.Expr, q: sympy.Symbol) -> sympy.Expr:
 
 
 def _check_reached(model: Model, trip: Journey, square: sympy.Expr, name: str) -> None:
-    """v^2 must be positive where the motion arrives, or it never gets there."""
+    """v^2 must be positive where the motion arrives, or it never gets there; v^2 = 0 on the whole domain
+    is the coordinate's turning point (a projectile's top), reached as the rate vanishes."""
+    if tidy.simplify(square) == 0:
+        return
     for point in domain_points(model, POINTS, seed=17):
         value = complex(sympy.N(square.subs(point), 15))
         if abs(value.imag) > 1e-9 * max(1.0, abs(value.real)) or value.real <= 0:
@@ -319,6 +323,28 @@ def _check_reached(model: Model, trip: Journey, square: sympy.Expr, name: str) -
                 + ", ".join(f"{s}={v:.4g}" for s, v in point.items()),
                 quantity=name,
             )
+
+
+def _say_which_arrival(method: Method, trip: Journey, square: sympy.Expr) -> None:
+    """The worked solution says which arrival it takes where the coordinate could be there twice: the top,
+    where the rate vanishes, or the first arrival while the potential slows it there (a projectile passes
+    a lower height again on its way down)."""
+    c, mech = trip.coordinate, method.mech
+    velocity = tidy.simplify(trip.sign * sympy.sqrt(square))
+    if tidy.simplify(square) == 0:
+        title = f"{method.named(c.name)} reaches ${method.tex(trip.end)}$ where its rate vanishes: its turning point"
+    else:
+        # the effective potential: V with the held motion's kinetic energy in q alone (Routh's reduction)
+        effective = mech.potential + sympy.expand(mech.kinetic.subs(trip.held)).subs(c.velocity, 0)
+        pull = -sympy.diff(effective, c.symbol).subs(c.symbol, trip.end)
+        values = [complex(sympy.N(pull.subs(p), 15)) for p in domain_points(method.model, POINTS, seed=17)]
+        if not all(trip.sign * v.real < 0 and abs(v.imag) <= 1e-9 * abs(v.real) for v in values):
+            return
+        title = (
+            f"{method.named(c.name)} reaches ${method.tex(trip.end)}$ slowing, so it may pass it again on its "
+            "way back: the velocity is taken at the first arrival"
+        )
+    method.step(title, method.tex(sympy.Eq(c.velocity, velocity)))
 
 
 # every other method (d'Alembert's principle, ...) integrates its own equation of motion

@@ -266,3 +266,49 @@ def test_newton_takes_a_ball_rolling_round_a_loop_to_its_side() -> None:
     expected = sqrt(v0**2 - 5 * sqrt(3) * g * rho / 7) / rho
     point = {R: 3, r: sympy.Rational(1, 2), g: sympy.Rational(49, 5), v0: 9}
     assert abs(sympy.N((found - expected).subs(point))) < 1e-12
+
+
+def thrown(height: str, quantity: str = "speed") -> dict[str, Any]:
+    """A ball thrown from the ground at v0, angle theta; asked about where y reaches `height`."""
+    target = {quantity: "ball" if quantity == "speed" else "y", "at": {"y": height}}
+    return {
+        "coordinates": ["x", "y"],
+        "bodies": {"ball": {"mass": "m", "position": {"x": "x", "y": "y"}}},
+        "gravity": "g",
+        "state": {"x": 0, "y": 0, "x_dot": "v0*cos(theta)", "y_dot": "v0*sin(theta)"},
+        "domain": {"ranges": {"theta": ["0", "pi/2"]}},
+        "quantities": {"there": target},
+    }
+
+
+TOP = "v0^2*sin(theta)^2/(2*g)"
+v0 = sympy.Symbol("v0", positive=True)
+
+
+@pytest.mark.parametrize(
+    ("height", "quantity", "expected", "said"),
+    [
+        (TOP, "speed", v0 * cos(theta), "where its rate vanishes: its turning point"),
+        (TOP, "velocity", sympy.Integer(0), "where its rate vanishes: its turning point"),
+        # 0.9 of the top is passed twice, rising then falling: the first arrival, rising, and it says so
+        (f"9/10*{TOP}", "velocity", v0 * sin(theta) / sqrt(10), "the velocity is taken at the first arrival"),
+    ],
+    ids=["speed-at-the-top", "rate-at-the-top", "rate-below-the-top"],
+)
+def test_a_projectile_reaches_its_top_at_zero_vertical_rate_and_a_lower_height_first_rising(
+    height: str, quantity: str, expected: sympy.Expr, said: str
+) -> None:
+    result = derive(load_model(thrown(height, quantity), {**SYMBOLS, "v0": v0}))
+    assert sympy.simplify(result.quantities["there"] - expected) == 0
+    assert {"lagrange", "newton", "conservation", "dalembert"} <= set(result.agreement["there"])
+    assert result.simulation["there"].max_relative_error < 1e-3
+    derived = [method for method in result.methods if method.name in result.agreement["there"]]
+    assert all(any(said in s.title for s in method.steps) for method in derived)
+
+
+def test_a_height_above_a_projectile_s_top_is_refused_as_never_reached() -> None:
+    with pytest.raises(DerivationError) as caught:
+        derive(load_model(thrown(f"11/10*{TOP}"), {**SYMBOLS, "v0": v0}))
+    assert "does not reach y = 11*v0^2*sin(theta)^2/(20*g): there y_dot^2 = -v0^2*sin(theta)^2/10" in str(
+        caught.value
+    )
