@@ -1064,7 +1064,7 @@ def _quantity(
     kind = QuantityKind(kinds[0])
     if reach_loading.handles(kind, spec):
         return reach_loading.load_quantity(
-            name, kind, spec, path, symbols, coordinates, constraints, errors.add
+            name, kind, spec, path, symbols, coordinates, constraints, errors.add, list(others or ())
         )
     allowed = (
         {kind.value}

@@ -12,7 +12,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Collection, Mapping, Sequence
 from typing import Any
 
 import sympy
@@ -48,8 +48,10 @@ def load_quantity(
     coordinates: Sequence[Coordinate],
     constraints: Sequence[Constraint],
     report: Report,
+    others: Collection[str] = (),
 ) -> Quantity | None:
-    """The quantity, or None with every fault reported at its path. Body targets are checked later
+    """The quantity, or None with every fault reported at its path; `others` are the model's other
+    quantities, named in the refusal of an `at` that names one. Body targets are checked later
     (`check_targets`), once the bodies are known."""
     allowed = (
         {kind.value, "after"}
@@ -83,7 +85,7 @@ def load_quantity(
         )
         faults += 1
     elif "at" in spec:
-        at, bad = _read_at(spec["at"], symbols, coordinates, (*path, "at"), report)
+        at, bad = _read_at(spec["at"], symbols, coordinates, (*path, "at"), report, others)
         faults += bad
     if "level" in spec and "slope" in spec:
         report(
@@ -132,6 +134,7 @@ def _read_at(
     coordinates: Sequence[Coordinate],
     path: Path,
     report: Report,
+    others: Collection[str],
 ) -> tuple[tuple[tuple[str, sympy.Expr], ...], int]:
     names = {c.name for c in coordinates}
     if not isinstance(value, Mapping) or len(value) != 1:
@@ -144,8 +147,27 @@ def _read_at(
     try:
         return ((str(name), read_expr(text, symbols, (*path, str(name)))),), 0
     except SpecError as error:
-        report(error.message, error.path)
+        report(error.message + _at_hint(text, name, symbols, others), error.path)
         return (), 1
+
+
+def _at_hint(
+    text: object, coordinate: str, symbols: Mapping[str, sympy.Symbol], others: Collection[str]
+) -> str:
+    """How to write an `at` that names a word no symbol has: often another quantity (`{y: top}`)."""
+    word = text.strip() if isinstance(text, str) else ""
+    if not word.isidentifier() or word in symbols:
+        return ""
+    said = (
+        f" `at` takes the value {coordinate} reaches as an expression in the problem's symbols, not the name "
+        "of another quantity"
+    )
+    if word in others:
+        said += (
+            f": {word} is a quantity of this model, so write in its place the expression it comes to, in "
+            f'those symbols, as {{{coordinate}: "..."}}'
+        )
+    return said + "."
 
 
 def check_targets(

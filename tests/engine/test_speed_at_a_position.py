@@ -141,6 +141,19 @@ def test_linear_drag_is_refused_with_each_route_s_reason() -> None:
             "unknown key",
             id="level-on-a-speed",
         ),
+        pytest.param(
+            {"bottom": {"equilibrium": "theta"}, "v": {"speed": "block", "at": {"theta": "bottom"}}},
+            ("quantities", "v", "at", "theta"),
+            "not the name of another quantity: bottom is a quantity of this model, so write in its place the "
+            "expression it comes to",
+            id="at-naming-a-quantity",
+        ),
+        pytest.param(
+            {"v": {"speed": "block", "at": {"theta": "bottom"}}},
+            ("quantities", "v", "at", "theta"),
+            "`at` takes the value theta reaches as an expression in the problem's symbols, not the name of",
+            id="at-naming-no-symbol",
+        ),
     ],
 )
 def test_a_wrong_speed_quantity_is_refused_at_its_path(
