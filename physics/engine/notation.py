@@ -519,6 +519,20 @@ def defined_symbols(model: Model) -> set[str]:
     return names
 
 
+def _rename(what: str) -> str:
+    """How an author tells two things written alike apart: `notation:` names a coordinate or a force."""
+    kind, _, key = what.partition(" ")
+    if kind not in ("coordinate", "force"):
+        return ""
+    said = f": give {key} a symbol of its own under the model's `notation:`, as {key}: {{symbol: Q, says: …}}"
+    if kind == "force":
+        said += (
+            f" (or, where {key} only holds a body at a fixed x or y, leave that axis out of the body's "
+            "position: nothing then holds it there, and no force is written)"
+        )
+    return said
+
+
 def audit(model: Model, notation: Notation, methods: Iterable[Any]) -> list[str]:
     """Why the worked solutions (the derivation's method reports) do not read cleanly: a constraint
     force without a physical name, two things written alike, a name that reads as the d of d/dt, a
@@ -540,7 +554,7 @@ def audit(model: Model, notation: Notation, methods: Iterable[Any]) -> list[str]
         if name.tex in RESERVED and not own:
             faults.append(f"{what} is written {name.tex!r}, which reads as a constant or the d of d/dt")
         if name.tex in written:
-            faults.append(f"{what} and {written[name.tex]} are both written {name.tex!r}")
+            faults.append(f"{what} and {written[name.tex]} are both written {name.tex!r}" + _rename(what))
         elif name.tex in problem.values() and not own:
             faults.append(f"{what} is written {name.tex!r}, like the problem's symbol")
         written[name.tex] = what

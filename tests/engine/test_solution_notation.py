@@ -235,3 +235,33 @@ def test_a_limit_of_static_friction_names_the_friction_force_as_the_solution_wri
     assert audit(model, derivation.notation, derivation.methods) == []
     titles = [s.title for m in derivation.methods for s in m.steps if s.title.startswith("Limit of static")]
     assert titles and all("$" in t for t in titles), titles
+
+
+def _hung_beside(notation: Mapping[str, Any] | None) -> Any:
+    """A block hung under a pulley's rim at x = R, which a constraint `side` holds there beside the axle's."""
+    data: dict[str, Any] = {
+        "coordinates": ["s"],
+        "bodies": {
+            "wheel": {"mass": "M", "inertia": "M*R^2/2", "position": {"x": 0, "y": 0}, "angle": "-s/R"},
+            "block": {"mass": "m", "position": {"x": "R", "y": "-s"}},
+        },
+        "gravity": "g",
+        "constraints": {
+            "string": {"kind": "string", "gap": "y_block - y_wheel - R*phi_wheel"},
+            "axleX": {"kind": "other", "gap": "x_wheel"},
+            "axleY": {"kind": "other", "gap": "y_wheel"},
+            "side": {"kind": "other", "gap": "x_block - R"},
+        },
+        "quantities": {"a": {"acceleration": "s"}},
+        **({"notation": notation} if notation else {}),
+    }
+    return load_model(data, {n: sympy.Symbol(n, positive=True) for n in ("m", "M", "R", "g")})
+
+
+def test_two_forces_written_alike_are_refused_saying_how_to_name_one_apart() -> None:
+    model = _hung_beside(None)
+    (fault,) = [f for f in audit(model, notation_of(model), []) if "both written" in f]
+    assert "give side a symbol of its own under the model's `notation:`" in fault
+    assert "leave that axis out of the body's position" in fault
+    named = _hung_beside({"side": {"symbol": "Q", "says": "the sideways force on the block"}})
+    assert not [f for f in audit(named, notation_of(named), []) if "both written" in f]
