@@ -241,12 +241,14 @@ def _too_few(
     name: str, derived: dict[str, sympy.Expr], stopped: dict[str, str], methods: list[Method]
 ) -> str:
     """What each method found and why the others stopped, for a quantity fewer than two methods reached:
-    a reason several methods share is said once, naming them all."""
+    a reason several methods share is said once, naming them all (each method's own title taken out: the
+    name before it says which)."""
     found = [f"{m.name} gives {typed_text(derived[m.name])}" for m in methods if m.name in derived]
     reasons: dict[str, list[str]] = {}
     for method in methods:
         if method.name not in derived:
-            reasons.setdefault(stopped[method.name], []).append(method.name)
+            reason = stopped[method.name].replace(f"{method.title}: ", "", 1)
+            reasons.setdefault(reason, []).append(method.name)
     found += [_who(names) + " " + (_plural(why) if len(names) > 1 else why) for why, names in reasons.items()]
     reached = (
         "no method could derive it"

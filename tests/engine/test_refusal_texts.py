@@ -85,3 +85,24 @@ def test_refusal_quotes_expressions_as_an_instructor_types_them(
     for text in quoted:
         assert text in message, message
     assert "**" not in message, message
+
+
+UPSIDE_DOWN_SPRING = """
+coordinates: [x]
+bodies:
+  block: {mass: m, position: {x: x}}
+potentials:
+  - {bodies: [block], anchor: {x: 0}, distance: d, energy: "-k*d^2/2"}
+quantities:
+  rest: {equilibrium: x}
+"""
+
+
+def test_a_cause_every_method_stops_for_is_said_once_naming_them_all() -> None:
+    message = _refusal("m k", UPSIDE_DOWN_SPRING)
+    assert (
+        "lagrange, newton, conservation and dalembert stopped: expected one stable equilibrium of x"
+        in message
+    )
+    assert message.count("expected one stable equilibrium") == 1, message
+    assert "Lagrange's equations" not in message, message
