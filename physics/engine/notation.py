@@ -516,6 +516,8 @@ def defined_symbols(model: Model) -> set[str]:
     for key, _ in model.cartesian:
         names |= {key, f"v_{key}", f"a_{key}", f"{key}_rel", f"v_{key}_rel", f"a_{key}_rel"}
     names |= {f"lambda_{c.name}" for c in model.constraints}
+    for _, scenario in model.scenarios:  # its steps print what it adds (a crate lifted gets y)
+        names |= defined_symbols(scenario)
     return names
 
 

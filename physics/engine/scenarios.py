@@ -16,6 +16,7 @@ questions, and each is derived, proved and simulated as a model of its own. Its 
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable, Mapping
 from typing import Any
 
@@ -178,8 +179,9 @@ def combined(base: Derivation, scenarios: list[tuple[str, Derivation]]) -> Deriv
 
 
 def _joined(first: MethodReport | None, then: MethodReport, scenario: str) -> MethodReport:
+    said = _in_words(scenario)
     steps = tuple(
-        Step(f"{step.title} (scenario {scenario})", step.latex, step.kind, step.unknowns, step.symbols)
+        Step(f"{step.title} (scenario {said})", step.latex, step.kind, step.unknowns, step.symbols)
         for step in then.steps
     )
     results = {qualified(scenario, k): v for k, v in then.results.items()}
@@ -194,3 +196,9 @@ def _joined(first: MethodReport | None, then: MethodReport, scenario: str) -> Me
         first.notes + notes,
         tuple(dict.fromkeys(first.forces + then.forces)),
     )
+
+
+def _in_words(scenario: str) -> str:
+    """A scenario's name as a worked solution's reader reads it: `other_side` and `otherSide` are
+    "other side", `case2` "case 2" (the name itself is the model's, never shown)."""
+    return re.sub(r"(?<=[a-z])(?=[A-Z0-9])", " ", scenario).replace("_", " ").lower()

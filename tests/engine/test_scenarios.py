@@ -11,6 +11,7 @@ import pytest
 import sympy
 
 from physics.engine import derive, load_model
+from physics.engine.notation import audit
 from physics.engine.scenarios import merged, quantity_names
 from physics.errors import DerivationError, SpecErrors
 
@@ -154,3 +155,16 @@ def test_two_uncoupled_springs_each_have_their_own_frequency_by_newton_too() -> 
     assert sympy.simplify(derived.quantities["first"] - sympy.sqrt(g / L)) == 0
     assert sympy.simplify(derived.quantities["second"] - sympy.sqrt(2 * g / L)) == 0
     assert "newton" in derived.agreement["second"]
+
+
+@pytest.mark.parametrize(("name", "said"), [("other_side", "other side"), ("otherSide", "other side")])
+def test_a_scenario_s_worked_steps_name_it_in_words_and_pass_the_notation_audit(name: str, said: str) -> None:
+    scenario = {
+        "forces": [{"body": "block2", "force": {"x": "-F"}}],
+        "quantities": {"contact_force": {"force": "contact"}},
+    }
+    model = load_model(pushed(**{name: scenario}), SYMBOLS)
+    derived = derive(model)
+    titles = [s.title for r in derived.methods for s in r.steps]
+    assert any(t.endswith(f"(scenario {said})") for t in titles)
+    assert audit(model, derived.notation, derived.methods) == []

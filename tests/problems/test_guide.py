@@ -13,6 +13,7 @@ import sympy
 import yaml
 
 from physics.engine import derive, load_model
+from physics.engine.notation import audit
 from physics.engine.settle import settle
 from physics.errors import DerivationError, SpecError
 from physics.mathinput import parse_math
@@ -76,7 +77,10 @@ def test_guide_model_example_derives_what_it_says(block: str) -> None:
         assert refused[0] in str(caught.value)
         return
     model = load_model(data, symbols, dimensions)
-    derived = derive(model).quantities
+    derivation = derive(model)
+    # as an upload's self-test does: the worked solutions show no engine-made name
+    assert audit(model, derivation.notation, derivation.methods) == []
+    derived = derivation.quantities
     gives = _comments(block, "gives")
     assert gives, "an example says what it gives"
     for line in gives:
