@@ -6,7 +6,7 @@ from __future__ import annotations
 import pytest
 import sympy
 
-from physics.engine import load_model
+from physics.engine import derive, load_model
 from physics.engine.model import Action
 
 SYMBOLS = {name: sympy.Symbol(name, positive=True) for name in ("m", "M", "R", "u", "e", "L")}
@@ -46,3 +46,42 @@ def test_the_impact_is_the_impulsive_constraint() -> None:
     model = load_model(DATA, SYMBOLS)
     assert model.acting(Action.IMPULSIVE) == (model.impact,)
     assert model.acting(Action.IMPULSIVE)[0].action is Action.IMPULSIVE
+
+
+def stacked(gap: str) -> dict[str, object]:
+    """A pull F on the top block; a grip written by hand holds it on the bottom one, which slides free."""
+    return {
+        "coordinates": ["X"],
+        "bodies": {
+            "bottom": {"mass": "M", "position": {"x": "X", "y": 0}},
+            "top": {"mass": "m", "position": {"x": "X", "y": 0}},
+        },
+        "gravity": "g",
+        "forces": [{"body": "top", "force": {"x": "F"}}],
+        "constraints": {
+            "floor": {"kind": "surface", "gap": "y_bottom"},
+            "rests": {"kind": "surface", "gap": "y_top - y_bottom"},
+            "grip": {"kind": "other", "gap": gap},
+        },
+        "quantities": {"friction": {"force": "grip"}},
+    }
+
+
+F, g = sympy.symbols("F g", positive=True)
+m, M = SYMBOLS["m"], SYMBOLS["M"]
+
+
+@pytest.mark.parametrize(
+    ("gap", "expected"),
+    [
+        # the friction on bottom, along +x (it drags bottom forward): bottom is written with +
+        ("x_bottom - x_top", F * M / (M + m)),
+        # the same friction is then that on top along +x, which holds it back
+        ("x_top - x_bottom", -F * M / (M + m)),
+    ],
+)
+def test_a_hand_written_constraint_s_force_acts_on_the_body_its_gap_grows_with(
+    gap: str, expected: sympy.Expr
+) -> None:
+    result = derive(load_model(stacked(gap), {**SYMBOLS, "F": F, "g": g}))
+    assert sympy.simplify(result.quantities["friction"] - expected) == 0
