@@ -341,8 +341,8 @@ def _say_which_arrival(method: Method, trip: Journey, square: sympy.Expr) -> Non
         if not all(trip.sign * v.real < 0 and abs(v.imag) <= 1e-9 * abs(v.real) for v in values):
             return
         title = (
-            f"{method.named(c.name)} reaches ${method.tex(trip.end)}$ slowing, so it may pass it again on its "
-            "way back: the velocity is taken at the first arrival"
+            f"{method.named(c.name)} reaches ${method.tex(trip.end)}$ slowing, so it may be there again later "
+            "(on its way back, or round again): the velocity is taken at the first arrival"
         )
     method.step(title, method.tex(sympy.Eq(c.velocity, velocity)))
 
