@@ -242,13 +242,16 @@ def _too_few(
 ) -> str:
     """What each method found and why the others stopped, for a quantity fewer than two methods reached:
     a reason several methods share is said once, naming them all (each method's own title taken out: the
-    name before it says which)."""
+    name before it says which). A method that does not apply to the model (frames, without a frame) is
+    named only when no method tried: beside a cause, it is noise."""
     found = [f"{m.name} gives {typed_text(derived[m.name])}" for m in methods if m.name in derived]
     reasons: dict[str, list[str]] = {}
     for method in methods:
         if method.name not in derived:
             reason = stopped[method.name].replace(f"{method.title}: ", "", 1)
             reasons.setdefault(reason, []).append(method.name)
+    if any(not why.startswith("does not apply") for why in reasons):  # a method that tried says why
+        reasons = {why: names for why, names in reasons.items() if not why.startswith("does not apply")}
     found += [_who(names) + " " + (_plural(why) if len(names) > 1 else why) for why, names in reasons.items()]
     reached = (
         "no method could derive it"

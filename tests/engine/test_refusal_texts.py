@@ -106,3 +106,4 @@ def test_a_cause_every_method_stops_for_is_said_once_naming_them_all() -> None:
     )
     assert message.count("expected one stable equilibrium") == 1, message
     assert "Lagrange's equations" not in message, message
+    assert "frames does not apply" not in message, message  # no frame to try: beside a cause, noise
