@@ -5,7 +5,8 @@ The math reader (its whitelist tokenizer, parser and size limits) reads the numb
 grammar the units. The number part ends at the first word outside brackets that is not arithmetic
 (a function with its argument, `pi`, `π`, `e`, `x` between numbers) or at a `°` outside brackets; a
 `*` or `·` between the number and its units is allowed. A number after units that follows a `*`
-begins another quantity (`0.5 kg * 9.8 m/s^2`); the quantities multiply, units and all. In LaTeX, a
+begins another quantity (`0.5 kg * 9.8 m/s^2`); the quantities multiply, units and all, but a whole
+number glued to a unit by a `*` at the end (`4.58 m/s*2`) is refused as a `^` mistyped. In LaTeX, a
 `\\mathrm{…}` or `\\text{…}` holds units (`\\frac{229}{50}\\,\\mathrm{m/s^2}`).
 """
 
@@ -172,10 +173,28 @@ def _quantities(tokens: list[Token], text: str) -> list[_Quantity]:
             ):
                 function_seen = True  # a FUNC is a LaTeX function command, `\sin`
         elif token.kind is Kind.NUM and tokens[i - 1].kind is Kind.OP and tokens[i - 1].text == "*":
+            if (slip := _power_typed_as_times(tokens, i, text, units_start)) is not None:
+                raise slip
             found.append(_Quantity(start, number_end, units_start, tokens[i - 1].pos))
             start, units_start, number_end, function_seen = token.pos, None, len(text), False
     found.append(_Quantity(start, number_end, units_start, len(text)))
     return found
+
+
+def _power_typed_as_times(tokens: list[Token], i: int, text: str, units_start: int) -> LikelySlip | None:
+    """The refusal of `4.58 m/s*2`: a whole number glued by a `*` to a unit's letters and ending the
+    answer is the `*` typed for `^` (shift-8 beside shift-6), never 4.58 m/s times 2; spaced, `2 m * 3`,
+    or after a power, `2.29 m/s^2*2`, it is the product typed."""
+    times, unit, number = tokens[i - 1], tokens[i - 2], tokens[i]
+    glued = unit.pos + len(unit.text) == times.pos and times.pos + 1 == number.pos
+    if not (glued and unit.kind is Kind.WORD and number.text.isdigit() and tokens[i + 1].kind is Kind.END):
+        return None
+    meant = f"{text[units_start : times.pos]}^{number.text}"
+    return LikelySlip(
+        f"Did you mean {meant}? Write a power with ^; for a product, put spaces round the * "
+        f"({text[: times.pos].strip()} * {number.text})",
+        times.pos,
+    )
 
 
 def _split(text: str) -> list[_Quantity]:

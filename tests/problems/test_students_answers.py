@@ -71,6 +71,9 @@ CORRECT = [
     ("skier-friction", "acceleration_numeric", "9.81 × (sin 35° − 0.13 cos 35°) m/s²"),
     ("skier-friction", "acceleration_numeric", "4.58 m s⁻²"),
     ("skier-friction", "acceleration_numeric", "4.58 meters per second squared"),
+    # a product of quantities typed with the `*` spaced, or after a power, is read as typed
+    ("skier-friction", "acceleration_numeric", "2.29 m/s^2 * 2"),
+    ("skier-friction", "acceleration_numeric", "2.29 m/s^2*2"),
 ]
 
 
@@ -152,6 +155,8 @@ REFUSED = [
     ("skier-friction", "acceleration_numeric", "4 .58 m/s^2", "Did you mean 4.58?"),  # was "4 and then ."
     ("simple-pendulum", "period_numeric", "2.01 (no units)", "Give the value alone: leave out (no units)"),
     ("simple-pendulum", "period", "2π√(L/g) (small angles)", "and type only 2π√(L/g)."),
+    # the `*` typed for `^`: was graded as 4.58·2 m/s, wrong_dimension with an attempt used
+    ("skier-friction", "acceleration_numeric", "4.58 m/s*2", "Did you mean m/s^2? Write a power with ^"),
 ]
 
 
