@@ -161,14 +161,21 @@ def calculator_exponent(text: str, after: int) -> tuple[int, str, int] | None:
 
 
 def calculator_exponent_slip(
-    mantissa: str, exponent: str, at: int, *, typed: str | None = None
+    mantissa: str, exponent: str, at: int, *, typed: str | None = None, negative: bool = True
 ) -> LikelySlip:
     """Why `3.0 x 10-3` (or, `typed` as it stands, `4.58 10 -3`, its × left out too) is refused: a
     calculator's display of mantissa×10^-exponent, which as arithmetic would be 3.0·10 − 3; asked as
-    `4.58 10 3` is."""
-    meant = f"{mantissa}×10^-{exponent}"
+    `4.58 10 3` is. Not `negative`: `g sin α 10 3`, the display of a positive power after symbols."""
+    sign = "-" if negative else ""
+    meant = f"{mantissa}×10^{sign}{exponent}"
     # `g sin α 10 -3`: a mantissa of symbols has no `e` form
-    scientific = f", or {mantissa}e-{exponent}" if mantissa.replace(".", "", 1).isdecimal() else ""
+    scientific = f", or {mantissa}e{sign}{exponent}" if mantissa.replace(".", "", 1).isdecimal() else ""
+    if not negative:
+        return LikelySlip(
+            f"10 {exponent}: numbers side by side. Did you mean {meant}? Write the power of ten with ^ "
+            f"({meant}{scientific}); for a product, write {mantissa}*10*{exponent}",
+            at,
+        )
     if typed is not None:
         shown = " ".join(typed.split())
         return LikelySlip(

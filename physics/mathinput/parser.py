@@ -190,7 +190,7 @@ class Parser:
 
     def _product(self) -> Node:
         tokens = self._tokens
-        factor_at = tokens[self._i].pos  # where the last factor read was typed
+        product_at = factor_at = tokens[self._i].pos  # where the last factor read was typed
         first = self._power()
         items: list[_Item] = []
         while True:
@@ -219,6 +219,9 @@ class Parser:
                     if _number_after_an_exponent(tokens, self._i):
                         raise self._number_after_a_power(factor_at, prev, tok)
                     self._refuse_a_mixed_number(prev, tok)
+                    if len(tok.text) <= 2 and _after_a_factor_and_ten(tokens, self._i):
+                        mantissa = self._source[product_at : prev.pos].rstrip(" *×·⋅")
+                        raise separators.calculator_exponent_slip(mantissa, tok.text, tok.pos, negative=False)
                     raise separators.side_by_side(self._source, prev.pos, tok.pos, product=True)
                 factor_at = tok.pos
                 items.append(_Item("*", self._power(), tok, True))
@@ -1011,8 +1014,8 @@ _ENDS_A_FACTOR = (Kind.NAME, Kind.CONST, Kind.RPAREN, Kind.POSTFIX, Kind.SUP)
 
 
 def _after_a_factor_and_ten(tokens: list[Token], at: int) -> bool:
-    """Whether the minus at `at` follows a 10 after a factor that is no number, `g sin α 10 -3` or
-    `m g*10-3`: the 10 no one writes there but as a power of ten."""
+    """Whether the minus (or the exponent's digits, `g sin α 10 3`) at `at` follows a 10 after a factor
+    that is no number, `g sin α 10 -3` or `m g*10-3`: the 10 no one writes there but as a power of ten."""
     if at < 2 or tokens[at - 1].text != "10" or tokens[at - 1].kind is not Kind.NUM:
         return False
     before = tokens[at - 2]
@@ -1020,7 +1023,8 @@ def _after_a_factor_and_ten(tokens: list[Token], at: int) -> bool:
         before = tokens[at - 3] if at >= 3 else before
     elif not tokens[at - 1].space_before:
         return False
-    return before.kind in _ENDS_A_FACTOR and tokens[at + 1].is_integer_literal
+    exponent = tokens[at] if tokens[at].kind is Kind.NUM else tokens[at + 1]
+    return before.kind in _ENDS_A_FACTOR and exponent.is_integer_literal
 
 
 def _times_a_power_of_ten(tokens: list[Token], at: int) -> bool:

@@ -117,6 +117,14 @@ REFUSED = [
         "9.81 sin 35° 10 -3 m/s^2",
         "Did you mean 9.81 sin 35°×10^-3?",
     ),
+    # a positive power likewise: was told "for one number, write 103"
+    ("skier-friction", "acceleration", "g sin α 10 3", "Did you mean g sin α×10^3?"),
+    (
+        "skier-friction",
+        "acceleration_numeric",
+        "9.81 sin 35° 10 3 m/s^2",
+        "Did you mean 9.81 sin 35°×10^3?",
+    ),
     ("skier-friction", "acceleration_numeric", "2 3^2 m/s^2", "2 3^2: two numbers side by side"),
     (
         "moving-wedge",
