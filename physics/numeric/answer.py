@@ -330,9 +330,18 @@ def _said_after_the_value(text: str, expected: Dimension | None, arithmetic: boo
     if (
         sign is not None
         and (value := text[: sign.start()].strip())
-        and _reads(value, expected, arithmetic) is not None
+        and (left := _reads(value, expected, arithmetic)) is not None
     ):
         at = sign.start()
+        result = text[sign.end() :].strip()
+        # `2π√(1/9.81) = 2.01 s`: the working without units, then the answer with them
+        if (
+            left.units is None
+            and left.literal is None
+            and (right := _reads(result, expected, arithmetic)) is not None
+            and right.units is not None
+        ):
+            return ParseError(f"Give the value alone, without '{value} {text[at]}': type only {result}", at)
         named = named_side(text, at)
         without = f"{text[at]} {named[0]}" if named is not None and named[1] == value else text[at:].strip()
         return ParseError(f"Give the value alone, without '{without}': type only {value}", at)

@@ -160,6 +160,13 @@ REFUSED = [
     # word 'no' in the number", "Unknown symbol "small""
     ("skier-friction", "acceleration_numeric", "4.58 m/s^2 = a", "without '= a': type only 4.58 m/s^2"),
     ("skier-friction", "acceleration_numeric", "4.58 m/s^2 ≈ 0.47g", "type only 4.58 m/s^2"),
+    # the working, then the value with units: was told to type the working, which has no units
+    (
+        "simple-pendulum",
+        "period_numeric",
+        "2π√(1/9.81) = 2.01 s",
+        "without '2π√(1/9.81) =': type only 2.01 s",
+    ),
     ("skier-friction", "acceleration_numeric", "4 .58 m/s^2", "Did you mean 4.58?"),  # was "4 and then ."
     ("simple-pendulum", "period_numeric", "2.01 (no units)", "Give the value alone: leave out (no units)"),
     ("simple-pendulum", "period", "2π√(L/g) (small angles)", "and type only 2π√(L/g)."),
