@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import itertools
 import math
+import re
 from collections.abc import Mapping
 from dataclasses import dataclass
 from functools import lru_cache
@@ -258,6 +259,9 @@ def _plural_of(name: str) -> UnitAtom | None:
     return None
 
 
+_SPACED_POWER = re.compile(r"(?<=[^\W\d_])\s+[-−–](\d+)")
+
+
 @lru_cache(maxsize=64)
 def _alias_factors(alias: str) -> Factors:
     return _Parser(alias, {}).parse().factors
@@ -267,6 +271,7 @@ class _Parser:
     """One reading of a unit string; `choices` picks a reading (by index) for names at given positions."""
 
     def __init__(self, text: str, choices: Mapping[int, int]) -> None:
+        self.text = text
         self.tokens = _prefixes_joined(tokenize(text))
         self.index = 0
         self.choices = choices
@@ -292,8 +297,25 @@ class _Parser:
             raise ParseError("No units were given", 0)
         result = self.units()
         if not self.at(Kind.END):
-            raise ParseError(f"Unexpected {self.token.text!r} in the units", self.token.position)
+            raise ParseError(
+                f"Unexpected {self.token.text!r} in the units{self._spaced_power_hint()}", self.token.position
+            )
         return result
+
+    def _spaced_power_hint(self) -> str:
+        """`. Did you mean m s^-2? …` for `m s -2`, a textbook's power with a space before its minus; or ""
+        (after a `/`, `m/s -2`, the power meant is anyone's guess)."""
+        minus, following = self.token, self.tokens[self.index + 1]
+        if not (
+            "/" not in self.text
+            and minus.kind is Kind.MINUS
+            and self.tokens[self.index - 1].kind is Kind.NAME
+            and following.kind is Kind.INTEGER
+            and following.position == minus.position + 1
+        ):
+            return ""
+        meant = _SPACED_POWER.sub(r"^-\1", self.text)
+        return f". Did you mean {meant}? Write a power with ^"
 
     def units(self) -> ParsedUnits:
         numerator, _ = self.product()

@@ -170,6 +170,8 @@ REFUSED = [
     ("skier-friction", "acceleration_numeric", "4 .58 m/s^2", "Did you mean 4.58?"),  # was "4 and then ."
     ("simple-pendulum", "period_numeric", "2.01 (no units)", "Give the value alone: leave out (no units)"),
     ("simple-pendulum", "period", "2π√(L/g) (small angles)", "and type only 2π√(L/g)."),
+    # a textbook's power with a space before its minus: was a bare "Unexpected '-' in the units"
+    ("skier-friction", "acceleration_numeric", "4.58 m s -2", "Did you mean m s^-2? Write a power with ^"),
     # the `*` typed for `^`: was graded as 4.58·2 m/s, wrong_dimension with an attempt used
     ("skier-friction", "acceleration_numeric", "4.58 m/s*2", "Did you mean m/s^2? Write a power with ^"),
 ]
