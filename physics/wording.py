@@ -7,6 +7,15 @@ from __future__ import annotations
 TRAILING_SEMICOLON = "Leave out the ';' at the end: an answer is not a command, so type it without one."
 # Arrows a phone's symbol keyboard offers, typed for a direction beside a value (`4.58 m/s^2 ↓`).
 ARROWS = "↓↑←→⇓⇑⇐⇒↙↘↖↗"
+# Directions said after a value, as in a sentence: no unit, and never read as one.
+DIRECTION_WORDS = frozenset(
+    {
+        "up", "upward", "upwards", "down", "downward", "downwards", "left", "right", "leftward",
+        "rightward", "north", "south", "east", "west", "forward", "forwards", "backward", "backwards",
+        "clockwise", "anticlockwise", "counterclockwise", "uphill", "downhill", "inward", "inwards",
+        "outward", "outwards",
+    }
+)  # fmt: skip
 # Why a direction said beside a value is not read: the sign carries it.
 DIRECTION_BY_SIGN = (
     "a direction is not read here; give it by the sign of the value (negative for the other way), as the "

@@ -21,7 +21,7 @@ from physics.numeric.literal import NumberLiteral, read_number, side_by_side, un
 from physics.units import ParsedUnits, UnitReading, read_units
 from physics.units.other_scripts import other_script_units_hint
 from physics.verdict import ReadAs
-from physics.wording import ARROWS, DIRECTION_BY_SIGN, TRAILING_SEMICOLON
+from physics.wording import ARROWS, DIRECTION_BY_SIGN, DIRECTION_WORDS, TRAILING_SEMICOLON
 
 MAX_ANSWER_LENGTH = 200
 
@@ -320,12 +320,32 @@ def _read_value(text: str, expected: Dimension | None, arithmetic: bool) -> Nume
 
 
 _EQUATION_SIGN = re.compile("[=≈]")
+# A direction said in a phrase after a value: `to the right`, `towards the left`, `at 30°` (`above the
+# horizontal` and such after it); a single word, `downwards`, the units' reader refuses itself.
+_DIRECTION_PHRASE = re.compile(
+    r"\s((?:to|towards?)\s+(?:the\s+)?([^\W\d_]+)|at\s+[-−+]?[\d.]+\s*(?:°|º|deg\w*)(?:\s+[^\W\d_]+)*)\s*$",
+    re.IGNORECASE,
+)
+
+
+def _direction_phrase(text: str, expected: Dimension | None, arithmetic: bool) -> ParseError | None:
+    """The refusal of a direction said in a phrase after a value that reads, `12.5 m/s to the right`,
+    `4 N at 30°`, as a single direction word is refused; None for other text."""
+    phrase = _DIRECTION_PHRASE.search(text)
+    if phrase is None or (phrase.group(2) is not None and phrase.group(2).lower() not in DIRECTION_WORDS):
+        return None
+    value = text[: phrase.start()].strip()
+    if not value or _reads(value, expected, arithmetic) is None:
+        return None
+    return ParseError(f"{phrase.group(1)!r}: {DIRECTION_BY_SIGN}. Type only {value}", phrase.start(1))
 
 
 def _said_after_the_value(text: str, expected: Dimension | None, arithmetic: bool) -> ParseError | None:
     """The refusal of what is said after a value that reads, in place of the reader's own: an equation (`4.58 m/s^2 =
     a`, `… ≈ 0.47g`) or a remark in brackets (`0.0612 (no units)`), showing the value to type; None
     for other text. Only ever on the refusal path: it reads the value again without what follows."""
+    if (direction := _direction_phrase(text, expected, arithmetic)) is not None:
+        return direction
     sign = _EQUATION_SIGN.search(text)
     if (
         sign is not None

@@ -37,7 +37,7 @@ from physics.units.catalogue import (
 from physics.units.lexer import Kind, Token, second_quantity, tokenize
 from physics.units.parsed import ParsedUnits
 from physics.units.registry import UnitAtom, case_variants, lookup, lookup_piece, pint_unit, suggestion
-from physics.wording import DIRECTION_BY_SIGN
+from physics.wording import DIRECTION_BY_SIGN, DIRECTION_WORDS
 
 MAX_UNIT_TEXT_LENGTH = 100
 MAX_UNIT_POWER = 12
@@ -170,16 +170,6 @@ def _readings(name: str, power: int = 1) -> _NameReadings:
         case_only=case_slip and not splits and not plural,
     )
 
-
-# Directions said after a value, as in a sentence: no unit, and never read as one.
-_DIRECTION_WORDS = frozenset(
-    {
-        "up", "upward", "upwards", "down", "downward", "downwards", "left", "right", "leftward",
-        "rightward", "north", "south", "east", "west", "forward", "forwards", "backward", "backwards",
-        "clockwise", "anticlockwise", "counterclockwise", "uphill", "downhill", "inward", "inwards",
-        "outward", "outwards",
-    }
-)  # fmt: skip
 
 # How near the value is, said after it as in a sentence (`4.58 m/s^2 approx`): no unit, and never read as one.
 _REMARK_WORDS = frozenset({"approx", "approximately", "about", "roughly", "exactly", "circa"})
@@ -404,7 +394,7 @@ class _Parser:
         self.names.append(token)
         readings = _readings(token.text, power)
         if not readings.options:
-            if token.text.lower() in _DIRECTION_WORDS:  # `-6.17 m/s^2 downward`, as said in a sentence
+            if token.text.lower() in DIRECTION_WORDS:  # `-6.17 m/s^2 downward`, as said in a sentence
                 raise UnknownUnit(
                     f"Unknown unit {token.text!r}: {DIRECTION_BY_SIGN}",
                     token.position,

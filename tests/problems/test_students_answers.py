@@ -146,6 +146,21 @@ REFUSED = [
     ),
     ("simple-pendulum", "period", "=2*pi*sqrt(L/g)", "Leave out the '=' at the start"),
     ("skier-friction", "acceleration_numeric", "4.58 m/s^2 downhill", "a direction is not read here"),
+    ("skier-friction", "acceleration_numeric", "4.58 m/s^2 downwards", "a direction is not read here"),
+    # a direction said in a phrase: was "Unknown unit 'to'", or a second number with its own unit
+    (
+        "skier-friction",
+        "acceleration_numeric",
+        "4.58 m/s^2 to the right",
+        "'to the right': a direction is not read",
+    ),
+    (
+        "skier-friction",
+        "acceleration_numeric",
+        "4.58 m/s^2 to the left",
+        "'to the left': a direction is not read",
+    ),
+    ("skier-friction", "acceleration_numeric", "4.58 m/s^2 at 30°", "'at 30°': a direction is not read here"),
     # a square root's name spelled out, or BASIC's square: was "Unknown function" with no hint
     ("simple-pendulum", "period", "2π root(L/g)", "Did you mean sqrt(L/g)?"),
     ("simple-pendulum", "period", "2π squareroot(L/g)", "Did you mean sqrt(L/g)?"),
