@@ -331,22 +331,25 @@ def other_names_hint(word: str, argument: str = "") -> str:
 
 # A square root's name as students spell it out, and `sqr`, BASIC's and Pascal's square (a square root to
 # many who type it).
-_ROOT_NAMES = frozenset({"root", "sqroot", "sqrroot", "squareroot"})
+_ROOT_SUFFIXES = ("squareroot", "sqrroot", "sqroot", "root", "sqr")  # the longest that ends a word first
 
 
 def root_hint(word: str, following: list[Token], text: str) -> str:
-    """A sentence for `root(L/g)`, `squareroot(L/g)`: "Did you mean sqrt(L/g)?"; for `sqr(x)`, asking
-    which of the square root and the square is meant; or "". `following`: the tokens after the word."""
+    """A sentence for `root(L/g)`, `squareroot(L/g)`: "Did you mean sqrt(L/g)?", and with what is glued
+    before the name kept, `2πroot(L/g)`: "Did you mean π sqrt(L/g)?"; for `sqr(x)`, asking which of the
+    square root and the square is meant; or "". `following`: the tokens after the word."""
     lowered = word.lower()
-    if lowered not in _ROOT_NAMES and lowered != "sqr":
+    name = next((n for n in _ROOT_SUFFIXES if lowered.endswith(n)), None)
+    if name is None:
         return ""
+    head = word[: -len(name)] + " " if len(word) > len(name) else ""
     argument = _bracketed_text(following, text) or "…"
-    if lowered == "sqr":
+    if name == "sqr":
         return (
-            f" Did you mean the square root, sqrt({argument}), or the square, ({argument})^2? Write one of them; "
-            "sqr is not read."
+            f" Did you mean the square root, {head}sqrt({argument}), or the square, {head}({argument})^2? "
+            "Write one of them; sqr is not read."
         )
-    return f" Did you mean sqrt({argument})? Write a square root as sqrt(…) or √(…)."
+    return f" Did you mean {head}sqrt({argument})? Write a square root as sqrt(…) or √(…)."
 
 
 _NUMBER_OF_DEGREES = re.compile(r"\d+(?:\.\d*)?\s*°?")

@@ -164,6 +164,7 @@ REFUSED = [
     # a square root's name spelled out, or BASIC's square: was "Unknown function" with no hint
     ("simple-pendulum", "period", "2π root(L/g)", "Did you mean sqrt(L/g)?"),
     ("simple-pendulum", "period", "2π squareroot(L/g)", "Did you mean sqrt(L/g)?"),
+    ("simple-pendulum", "period", "2πroot(L/g)", "Did you mean π sqrt(L/g)?"),  # glued: was no hint
     (
         "simple-pendulum",
         "period",
