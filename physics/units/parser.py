@@ -36,7 +36,15 @@ from physics.units.catalogue import (
 )
 from physics.units.lexer import Kind, Token, second_quantity, tokenize
 from physics.units.parsed import ParsedUnits
-from physics.units.registry import UnitAtom, case_variants, lookup, lookup_piece, pint_unit, suggestion
+from physics.units.registry import (
+    UnitAtom,
+    case_variants,
+    lookup,
+    lookup_piece,
+    pint_unit,
+    prefixed_name,
+    suggestion,
+)
 from physics.wording import DIRECTION_BY_SIGN, DIRECTION_WORDS
 
 MAX_UNIT_TEXT_LENGTH = 100
@@ -408,6 +416,11 @@ class _Parser:
                 )
             hint = suggestion(token.text)
             advice = f" (units are case-sensitive: did you mean {hint!r}?)" if hint else ""
+            if not hint and (spelled := prefixed_name(token.text)) is not None:  # `kJoules`
+                advice = (
+                    f": did you mean {spelled[0]}? Write the symbols together, {spelled[0]}, or the names together, "
+                    f"{spelled[1]}"
+                )
             if token.text in _DEGREE_LOOKALIKES:  # `30o`: the letter typed for a degree sign
                 advice = ": for degrees write ° or deg, as in 30°"
             raise UnknownUnit(f"Unknown unit {token.text!r}{advice}", token.position, token.text)

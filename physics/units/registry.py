@@ -304,3 +304,20 @@ def suggestion(spelling: str) -> str | None:
     """A spelling that differs only in letter case (`KG` → `kg`), to help with an unknown unit."""
     match = _by_folded_case().get(spelling.casefold())
     return match if match != spelling else None
+
+
+def prefixed_name(spelling: str) -> tuple[str, str] | None:
+    """The symbol and the name of a unit typed as a prefix's symbol glued to the unit's name (`kJoules`,
+    `mSeconds`): (`kJ`, `kilojoules`), to say what to type; None for other spellings. Never a reading:
+    `mNewtons` may be m·N as well as mN."""
+    ureg = registry()
+    for prefix in SI_PREFIXES:
+        symbol = ureg._prefixes[prefix].symbol
+        rest = spelling[len(symbol) :]
+        if not spelling.startswith(symbol) or len(rest) < 3 or not rest.isalpha():
+            continue
+        named = prefix + rest.lower()
+        atom = lookup(named)
+        if atom is not None and atom.symbol != named:
+            return atom.symbol, named
+    return None

@@ -181,6 +181,12 @@ ANSWERS = [
     ("4.58 m/sˆ2", "m/s^2", "4.58"),  # a Mac's option-i circumflex for the caret: was a unit `sˆ`
     ("4.58 ms⁻2", "m/s^2", "4.58"),  # the minus from a palette, the digit typed: was refused
     ("12.5 m s⁻1", "m/s", "12.5"),
+    # a unit's name spelled out, singular or plural, capitalised, British or American
+    ("45 kilojoule", "kJ", "45"),
+    ("2.4 kiloJoules", "kJ", "2.4"),
+    ("3 Newtons", "N", "3"),
+    ("5 metres per second", "m/s", "5"),
+    ("5 meters per second", "m/s", "5"),
 ]
 
 
@@ -247,6 +253,15 @@ def test_an_alias_in_the_wrong_case_is_settled_by_dimension(typed: str, reading:
         ("30 O", "30", "deg", Reason.UNKNOWN_UNIT, "for degrees write ° or deg"),
         # degrees shortened as decigrams: was graded, "the units of a mass"
         ("35 dg", "35", "deg", Reason.PARSE_ERROR, "Did you mean degrees? dg is the decigram"),
+        # a prefix's symbol glued to a unit's name: was a bare "Unknown unit 'kJoules'"
+        ("2.4 kJoules", "2.4", "kJ", Reason.UNKNOWN_UNIT, "did you mean kJ? Write the symbols together, kJ"),
+        (
+            "25 mSeconds",
+            "25",
+            "ms",
+            Reason.UNKNOWN_UNIT,
+            "did you mean ms? Write the symbols together, ms, or",
+        ),
         ("5 ft 10 in", "1.778", "m", Reason.PARSE_ERROR, "second number with its own unit (10 in)"),
         ("2 h 30 min", "9000", "s", Reason.PARSE_ERROR, "second number with its own unit (30 min)"),
         # a decimal second number: was "A unit string holds whole numbers only"
