@@ -6,8 +6,8 @@ grammar the units. The number part ends at the first word outside brackets that 
 (a function with its argument, `pi`, `π`, `e`, `x` between numbers) or at a `°` outside brackets; a
 `*` or `·` between the number and its units is allowed. A number after units that follows a `*`
 begins another quantity (`0.5 kg * 9.8 m/s^2`); the quantities multiply, units and all, but a whole
-number glued to a unit by a `*` at the end (`4.58 m/s*2`) is refused as a `^` mistyped. In LaTeX, a
-`\\mathrm{…}` or `\\text{…}` holds units (`\\frac{229}{50}\\,\\mathrm{m/s^2}`).
+number after a unit and a `*` not spaced on both sides, at the end (`4.58 m/s*2`), is refused as a `^`
+mistyped. In LaTeX, a `\\mathrm{…}` or `\\text{…}` holds units (`\\frac{229}{50}\\,\\mathrm{m/s^2}`).
 """
 
 from __future__ import annotations
@@ -182,14 +182,14 @@ def _quantities(tokens: list[Token], text: str) -> list[_Quantity]:
 
 
 def _power_typed_as_times(tokens: list[Token], i: int, text: str, units_start: int) -> LikelySlip | None:
-    """The refusal of `4.58 m/s*2`: a whole number glued by a `*` to a unit's letters and ending the
-    answer is the `*` typed for `^` (shift-8 beside shift-6), never 4.58 m/s times 2; spaced, `2 m * 3`,
-    or after a power, `2.29 m/s^2*2`, it is the product typed."""
+    """The refusal of `4.58 m/s*2` (or `m/s *2`): a whole number after a unit's letters and a `*`, ending
+    the answer, is the `*` typed for `^` (shift-8 beside shift-6), never 4.58 m/s times 2; with the `*`
+    spaced on both sides, `2 m * 3`, or after a power, `2.29 m/s^2*2`, it is the product typed."""
     times, unit, number = tokens[i - 1], tokens[i - 2], tokens[i]
-    glued = unit.pos + len(unit.text) == times.pos and times.pos + 1 == number.pos
+    glued = unit.pos + len(unit.text) == times.pos or times.pos + 1 == number.pos
     if not (glued and unit.kind is Kind.WORD and number.text.isdigit() and tokens[i + 1].kind is Kind.END):
         return None
-    meant = f"{text[units_start : times.pos]}^{number.text}"
+    meant = f"{text[units_start : times.pos].rstrip()}^{number.text}"
     return LikelySlip(
         f"Did you mean {meant}? Write a power with ^; for a product, put spaces round the * "
         f"({text[: times.pos].strip()} * {number.text})",

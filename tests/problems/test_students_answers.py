@@ -190,6 +190,7 @@ REFUSED = [
     ("skier-friction", "acceleration_numeric", "4.58 m s -2", "Did you mean m s^-2? Write a power with ^"),
     # the `*` typed for `^`: was graded as 4.58·2 m/s, wrong_dimension with an attempt used
     ("skier-friction", "acceleration_numeric", "4.58 m/s*2", "Did you mean m/s^2? Write a power with ^"),
+    ("skier-friction", "acceleration_numeric", "4.58 m/s *2", "Did you mean m/s^2? Write a power with ^"),
 ]
 
 
