@@ -10,6 +10,7 @@ is not declared would otherwise derive an equilibrium on the wrong side of the a
 from __future__ import annotations
 
 import dataclasses
+import itertools
 import random
 
 import sympy
@@ -93,19 +94,20 @@ def _side_from_bounds(
     separation: sympy.Expr, model: Model, ranges: dict[str, tuple[sympy.Expr, sympy.Expr]]
 ) -> int | None:
     """The sign proved from the coordinates' declared bounds alone (a spring's foot at -L0 with y >= -L0
-    gives L0 + y >= 0, also on a range open above): each coordinate is its bound plus or minus a
-    nonnegative amount, and sympy's assumptions must settle the sign for every such amount."""
+    gives L0 + y >= 0, also on a range open above): each coordinate is one of its bounds plus or minus a
+    nonnegative amount, and sympy's assumptions must settle the sign for every such amount. The bounds may
+    differ by coordinate: a molecule's middle atom in [0, L0] and the next in [L0, oo] keep x3 - x2 >= 0."""
     moved = [c for c in model.coordinates if c.symbol in separation.free_symbols]
     if not moved or any(c.name not in ranges for c in moved):
         return None
-    for end in (0, 1):  # from the lower bounds up, then from the upper bounds down
-        if not all(ranges[c.name][end].is_finite for c in moved):
+    for ends in itertools.product((0, 1), repeat=len(moved)):  # 0: from the lower bound up
+        if not all(ranges[c.name][end].is_finite for c, end in zip(moved, ends, strict=True)):
             continue
         shifted = separation.subs(
             {
                 c.symbol: ranges[c.name][end]
                 + (1 - 2 * end) * sympy.Symbol(f"shift_{c.name}", nonnegative=True)
-                for c in moved
+                for c, end in zip(moved, ends, strict=True)
             }
         )
         shifted = tidy.simplify(shifted)
