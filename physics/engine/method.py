@@ -24,14 +24,15 @@ from physics.errors import DerivationError
 
 
 @lru_cache(maxsize=32)
-def stable_equilibrium(model: Model) -> dict[sympy.Symbol, sympy.Expr]:
-    """The stable equilibrium of all the coordinates (shared by the methods: it is where they linearize)."""
+def stable_equilibrium(model: Model, translation: bool = False) -> dict[sympy.Symbol, sympy.Expr]:
+    """The stable equilibrium of all the coordinates (shared by the methods: it is where they linearize);
+    with `translation`, for normal modes, a point of a continuum of rests that is a free translation."""
     if driven(model):  # grad V = 0 is no rest relative to a moving support
         raise NotApplicable(
             "normal modes and damped oscillations are worked about a fixed support only (this one moves as "
             "prescribed): ask for angular_frequency of one coordinate"
         )
-    return modes.equilibrium_point(model, Mechanics(model))
+    return modes.equilibrium_point(model, Mechanics(model), translation)
 
 
 class NotApplicable(Exception):
@@ -170,7 +171,7 @@ class Method(ABC):
         """Squared normal-mode frequencies, lowest first."""
         if self.model.nonconservative_loads:
             raise NotApplicable("normal modes are for undamped systems")
-        point = stable_equilibrium(self.model)
+        point = stable_equilibrium(self.model, True)
         mass, stiffness = self.mode_matrices(point)
         squares = modes.squared_frequencies(self.model, mass, stiffness)
         self.step(

@@ -128,4 +128,4 @@ def _vanishes(matrix: sympy.Matrix, vector: sympy.Matrix, points: list[dict[symp
 def derived(method: Method, quantity: Quantity) -> sympy.Expr:
     from physics.engine.method import stable_equilibrium
 
-    return answer(method, quantity, stable_equilibrium(method.model))
+    return answer(method, quantity, stable_equilibrium(method.model, True))

@@ -2,7 +2,10 @@
 
 The equilibrium solves grad V = 0 in all coordinates at once (a coordinate V does not depend on is
 free: it is set to 0 and its zero-frequency mode left out); it must be stable (the Hessian of V has no
-negative eigenvalue at sampled domain points) and inside the coordinates' declared ranges. Each method
+negative eigenvalue at sampled domain points) and inside the coordinates' declared ranges. Where the rests
+form a continuum along which the mass and stiffness matrices stay the same (carts joined by a spring, a
+linear molecule: a free translation), the modes are those about any point of it, the translation's
+zero-frequency ones left out as well. Each method
 gives its own mass and stiffness matrices there; the squared frequencies are the non-zero roots of
 det(K - omega^2 M), ordered by their value at a domain point (and checked to keep that order).
 """
@@ -60,8 +63,11 @@ def coupled(matrices: Sequence[sympy.Matrix], index: int) -> list[int]:
     return sorted(block)
 
 
-def equilibrium_point(model: Model, mech: Mechanics) -> dict[sympy.Symbol, sympy.Expr]:
-    """The stable equilibrium of all coordinates together."""
+def equilibrium_point(
+    model: Model, mech: Mechanics, translation: bool = False
+) -> dict[sympy.Symbol, sympy.Expr]:
+    """The stable equilibrium of all coordinates together; with `translation`, where the rests form a
+    continuum along which nothing changes (carts joined by a spring, anywhere on the track), a point of it."""
     potential = mech.potential
     moving = [q for q in mech.q if potential.has(q)]
     gradient = [sympy.diff(potential, q) for q in moving]
@@ -77,9 +83,12 @@ def equilibrium_point(model: Model, mech: Mechanics) -> dict[sympy.Symbol, sympy
     continua = [solution for solution in solutions if not all(q in solution for q in moving)]
     if not stable and continua:
         line = continua[0]
-        free = [str(q) for q in moving if q not in line]
+        free = [q for q in moving if q not in line]
         where = ", ".join(f"{q} = {typed_text(v)}" for q, v in line.items())
-        raise DerivationError(continuum(free, f"wherever {where}" if where else "anywhere"), path=("domain",))
+        where = f"wherever {where}" if where else "anywhere"
+        if translation:
+            return _on_translation(model, mech, line, free, where)
+        raise DerivationError(continuum([str(q) for q in free], where), path=("domain",))
     if len(stable) != 1:
         raise DerivationError(
             f"expected one stable equilibrium of {', '.join(map(str, moving))}, found {len(stable)} among "
@@ -87,6 +96,65 @@ def equilibrium_point(model: Model, mech: Mechanics) -> dict[sympy.Symbol, sympy
             path=("domain",),
         )
     return stable[0]
+
+
+def _on_translation(
+    model: Model,
+    mech: Mechanics,
+    line: dict[sympy.Symbol, sympy.Expr],
+    free: list[sympy.Symbol],
+    where: str,
+) -> dict[sympy.Symbol, sympy.Expr]:
+    """A point of the continuum of rests `line` (the free coordinates at any value; `where` says it) inside
+    the declared ranges, where it is a free translation: the mass and stiffness matrices the same at every
+    point of it, so the small oscillations are too and its zero-frequency modes are the drift along it."""
+    said = continuum([str(q) for q in free], where)
+    mass = mech.mass_matrix.subs(line).applyfunc(tidy.simplify)
+    stiffness = sympy.hessian(mech.potential, list(mech.q)).subs(line).applyfunc(tidy.simplify)
+    varying = sorted({str(q) for q in free if mass.has(q) or stiffness.has(q)})
+    if varying:
+        raise DerivationError(
+            f"{said}: the mass or stiffness matrix changes with {', '.join(varying)} along it, so it is no "
+            "free translation whose small oscillations are the same everywhere",
+            path=("domain",),
+        )
+    for shift in _shifts(model, line, free):
+        at = {**dict.fromkeys(free, sympy.Integer(0)), **shift}
+        point = {q: tidy.simplify(line.get(q, at.get(q, sympy.Integer(0))).subs(at)) for q in mech.q}
+        if _in_ranges(model, point):
+            if not _stable(model, mech, point):
+                raise DerivationError(
+                    f"the bodies rest {where}, {' and '.join(map(str, free))} taking any value, but unstably: the "
+                    "potential's Hessian has a negative eigenvalue there, so a mode grows instead of oscillating "
+                    "(check the sign of a spring's energy)",
+                    path=("domain",),
+                )
+            return point
+    raise DerivationError(f"{said}, and none of it inside the coordinates' declared ranges", path=("domain",))
+
+
+def _shifts(
+    model: Model, line: dict[sympy.Symbol, sympy.Expr], free: list[sympy.Symbol]
+) -> list[dict[sympy.Symbol, sympy.Expr]]:
+    """Values of the free coordinates to try, the first free one moved: the middle of a finite declared
+    range (its own, or that of a coordinate the line ties to it), 0, then the ranges' ends."""
+    by_name = {c.name: c.symbol for c in model.coordinates}
+    middles: list[tuple[sympy.Symbol, sympy.Expr]] = []
+    ends: list[tuple[sympy.Symbol, sympy.Expr]] = []
+    for name, low, high in model.coordinate_ranges:
+        if low.is_finite and high.is_finite:
+            middles.append((by_name[name], (low + high) / 2))
+        ends += [(by_name[name], bound) for bound in (low, high) if bound.is_finite]
+
+    def solved(targets: list[tuple[sympy.Symbol, sympy.Expr]]) -> list[dict[sympy.Symbol, sympy.Expr]]:
+        return [
+            {free[0]: root}
+            for q, value in targets
+            for root in tidy.solve(line.get(q, q) - value, free[0])
+            if not root.has(*free)
+        ]
+
+    return [*solved(middles), {}, *solved(ends)]
 
 
 def _one_at_a_time(pairs: list[tuple[sympy.Expr, sympy.Symbol]]) -> list[dict[sympy.Symbol, sympy.Expr]]:

@@ -679,7 +679,8 @@ class Simulator:
         dyn = self.dynamics
         params = dyn.values(point)
         n = dyn.n
-        q0 = [_evaluate(stable_equilibrium(self.model)[c.symbol], point) for c in self.model.coordinates]
+        rest = stable_equilibrium(self.model, True)
+        q0 = [_evaluate(rest[c.symbol], point) for c in self.model.coordinates]
         h = 1e-4
         stiffness = mpmath.matrix(n, n)
         for i in range(n):

@@ -7,9 +7,11 @@ from typing import Any
 
 import pytest
 import sympy
+import yaml
 
 from physics.engine import derivation, load_model
-from physics.errors import SpecErrors
+from physics.engine.results import Derivation
+from physics.errors import DerivationError, SpecErrors
 
 uncached = derivation._derive.__wrapped__
 SYMBOLS = {name: sympy.Symbol(name, positive=True) for name in ("m", "k", "g", "L")}
@@ -74,3 +76,101 @@ def test_a_mode_number_beyond_the_coordinates_is_a_spec_error() -> None:
     with pytest.raises(SpecErrors) as caught:
         load_model(data, SYMBOLS)
     assert caught.value.errors[0].path == ("quantities", "third", "normal_frequency")
+
+
+# bodies on a frictionless track in absolute coordinates: at rest wherever the springs have their natural
+# lengths, the whole system anywhere on the track (a free translation, its zero-frequency mode)
+CARTS = """
+coordinates: [x1, x2]
+bodies:
+  a: {mass: m1, position: {x: X1}}
+  b: {mass: m2, position: {x: x2}}
+elements:
+  spring: {kind: spring, between: [a, b], stiffness: k, length: L0}
+domain:
+  ranges: {x1: ["-oo", "0"], x2: ["0", "oo"]}
+quantities:
+  stretch: {normal_frequency: 1}
+  shape: {mode_shape: {mode: 1, ratio: [x2, x1]}}
+"""
+CO2 = """
+coordinates: [x1, x2, x3]
+bodies:
+  o1: {mass: m, position: {x: x1}}
+  c: {mass: M, position: {x: x2}}
+  o2: {mass: m, position: {x: x3}}
+potentials:
+  - {bodies: [o1, c], distance: d, energy: "k*(d - L0)^2/2"}
+  - {bodies: [c, o2], distance: d, energy: "RIGHT*(d - L0)^2/2"}
+domain:
+  ranges: {x1: ["-oo", "0"], x2: ["0", "L0"], x3: ["L0", "oo"]}
+quantities:
+  symmetric: {normal_frequency: 1}
+  asymmetric: {normal_frequency: 2}
+"""
+_m1, _m2, _M, _k, _L0 = sympy.symbols("m1 m2 M k L0", positive=True)
+
+
+def _translating(text: str, names: str) -> Derivation:
+    symbols = {name: sympy.Symbol(name, positive=True) for name in names.split()}
+    return uncached(load_model(yaml.safe_load(text), symbols))
+
+
+@pytest.mark.parametrize(
+    ("text", "names", "expected"),
+    [
+        pytest.param(
+            CARTS.replace("X1", "x1"),
+            "m1 m2 k L0",
+            {"stretch": sympy.sqrt(_k * (_m1 + _m2) / (_m1 * _m2)), "shape": -_m1 / _m2},
+            id="carts",
+        ),
+        pytest.param(
+            CO2.replace("RIGHT", "k"),
+            "m M k L0",
+            {"symmetric": sympy.sqrt(_k / m), "asymmetric": sympy.sqrt(_k / m * (1 + 2 * m / _M))},
+            id="co2",
+        ),
+    ],
+)
+def test_a_free_translation_leaves_the_oscillating_modes_about_any_of_its_rests(
+    text: str, names: str, expected: dict[str, sympy.Expr]
+) -> None:
+    """The rests form a continuum, but the modes are the same about each: its zero frequency is the drift
+    along the track, left out, so mode 1 is the lowest oscillation (CO2's symmetric stretch)."""
+    result = _translating(text, names)
+    for name, value in expected.items():
+        assert sympy.simplify(result.quantities[name] - value) == 0, name
+        assert len(result.agreement[name]) >= 2
+        assert result.simulation[name].max_relative_error < 1e-6
+
+
+@pytest.mark.parametrize(
+    ("text", "names", "said"),
+    [
+        pytest.param(
+            CO2.replace("RIGHT", "-k"),
+            "m M k L0",
+            "x3 taking any value, but unstably: the potential's Hessian has a negative eigenvalue",
+            id="co2-spring-typed-negative",
+        ),
+        pytest.param(
+            CARTS.replace("X1", '"x1^3"'),
+            "m1 m2 k L0",
+            "a continuum of equilibria, with no one point to oscillate about: the mass or stiffness matrix "
+            "changes with x2 along it",
+            id="continuum-that-is-no-translation",
+        ),
+        pytest.param(
+            "coordinates: [x]\nbodies:\n  bead: {mass: m, position: {x: x}}\ngravity: g\n"
+            "quantities:\n  w: {normal_frequency: 1}\n",
+            "m g",
+            "mode 1 asked for, but the system has 0 oscillating modes",
+            id="bead-alone-on-a-rod",
+        ),
+    ],
+)
+def test_a_continuum_of_rests_with_no_stable_translation_is_refused(text: str, names: str, said: str) -> None:
+    with pytest.raises(DerivationError) as caught:
+        _translating(text, names)
+    assert said in caught.value.message
