@@ -125,6 +125,16 @@ def _translating(text: str, names: str) -> Derivation:
             {"stretch": sympy.sqrt(_k * (_m1 + _m2) / (_m1 * _m2)), "shape": -_m1 / _m2},
             id="carts",
         ),
+        pytest.param(  # the reduction to the separation d: x1 is cyclic, d has one rest
+            CARTS.replace("X1", "x1")
+            .replace("[x1, x2]", "[x1, d]")
+            .replace("{x: x2}", '{x: "x1 + d"}')
+            .replace('x1: ["-oo", "0"], x2', "d")
+            .replace("[x2, x1]", "[d, x1]"),
+            "m1 m2 k L0",
+            {"stretch": sympy.sqrt(_k * (_m1 + _m2) / (_m1 * _m2)), "shape": -(_m1 + _m2) / _m2},
+            id="carts-by-their-separation",
+        ),
         pytest.param(
             CO2.replace("RIGHT", "k"),
             "m M k L0",
