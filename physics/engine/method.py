@@ -174,8 +174,10 @@ class Method(ABC):
         point = stable_equilibrium(self.model, True)
         mass, stiffness = self.mode_matrices(point)
         squares = modes.squared_frequencies(self.model, mass, stiffness)
+        drift = len(squares) < mass.shape[0]  # a coordinate V leaves free, or the bodies moving together
         self.step(
-            "Normal modes: the mass matrix $\\mathbf{M}$ and stiffness matrix $\\mathbf{K}$ at the equilibrium",
+            "Normal modes: the mass matrix $\\mathbf{M}$ and stiffness matrix $\\mathbf{K}$ at the equilibrium"
+            + (" (the root $\\omega = 0$, a free drift with no restoring force, left out)" if drift else ""),
             r"\det(\mathbf{K} - \omega^2 \mathbf{M}) = 0,\ \mathbf{M} = "
             + self.tex(mass)
             + r",\ \mathbf{K} = "

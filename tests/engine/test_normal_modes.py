@@ -153,6 +153,10 @@ def test_a_free_translation_leaves_the_oscillating_modes_about_any_of_its_rests(
         assert sympy.simplify(result.quantities[name] - value) == 0, name
         assert len(result.agreement[name]) >= 2
         assert result.simulation[name].max_relative_error < 1e-6
+    worked = [
+        step.title for report in result.methods for step in report.steps if "Normal modes" in step.title
+    ]
+    assert worked and all("the root $\\omega = 0$, a free drift" in title for title in worked)
 
 
 @pytest.mark.parametrize(
