@@ -3,6 +3,7 @@
     AppError                       carries status, code, message, details
      ├── Unauthenticated   401    no key, unknown or revoked key
      ├── Forbidden         403    the key's role may not do this
+     │    └── InstructorsOnly     a course's TA asking what only its instructors may do (courses/access.py)
      ├── NotFound          404    unknown problem, part or submission (or not yours)
      ├── Conflict          409    e.g. no attempts left
      ├── PayloadTooLarge   413

@@ -1,6 +1,7 @@
 """Who may see what, in one place.
 
 - A course is seen only by its staff (instructors and TAs); to anyone else it does not exist (404).
+  Its TAs see it but may not change it: what only its instructors may do is refused them (403).
 - A student enrolled in any course sees only the problems of their courses' open assignments; a
   student in no course (an API key, or an LMS link to one problem) keeps the per-problem access they
   had before courses.
@@ -27,8 +28,19 @@ from app.courses.records import (
     StaffRole,
 )
 from app.db.records import ProblemRecord
+from app.errors import Forbidden
 from app.storage import Stores
 from app.storage.protocols import CourseStore
+
+
+class InstructorsOnly(Forbidden):
+    """A teaching assistant asking for what only the course's instructors may do: they see the course,
+    so it is not hidden from them as one they do not teach."""
+
+    def __init__(self, course_id: int, action: str) -> None:
+        super().__init__(f"Only the course's instructors may {action}; you are its teaching assistant.")
+        self.course_id = course_id
+        self.action = action
 
 
 def course_role(stores: Stores, principal: Principal, course_id: int) -> StaffRole | None:
@@ -41,12 +53,15 @@ def course_role(stores: Stores, principal: Principal, course_id: int) -> StaffRo
 
 
 def require_staff(
-    stores: Stores, principal: Principal, course_id: int, *, instructor: bool = False
+    stores: Stores, principal: Principal, course_id: int, *, only_instructors_may: str = ""
 ) -> CourseRecord:
-    """The course when the caller teaches it (as an instructor when `instructor`), else CourseNotFound."""
+    """The course when the caller teaches it, else CourseNotFound; with `only_instructors_may` (what
+    the caller asks to do, "import its roster"), InstructorsOnly for its teaching assistants."""
     role = course_role(stores, principal, course_id)
-    if role is None or (instructor and role is not StaffRole.INSTRUCTOR):
+    if role is None:
         raise CourseNotFound(course_id)
+    if only_instructors_may and role is not StaffRole.INSTRUCTOR:
+        raise InstructorsOnly(course_id, only_instructors_may)
     return stores.courses.get_course(course_id)
 
 

@@ -57,26 +57,34 @@ _PROBLEM_ID = re.compile(r"^[A-Za-z0-9][A-Za-z0-9._-]{0,99}$")
 
 
 def _course(
-    services: Services, who: auth.Visitor, course_id: int, *, instructor: bool = False
+    services: Services, who: auth.Visitor, course_id: int, *, only_instructors_may: str = ""
 ) -> CourseRecord:
     try:
-        return access.require_staff(services.stores, who.principal, course_id, instructor=instructor)
+        return access.require_staff(
+            services.stores, who.principal, course_id, only_instructors_may=only_instructors_may
+        )
     except CourseNotFound:
         raise PageError(404, "No such course", f"There is no course {course_id} of yours.") from None
+    except access.InstructorsOnly as refused:
+        raise PageError(403, "For the course's instructors", refused.message) from None
 
 
 def _assignment(
-    services: Services, who: auth.Visitor, assignment_id: int, *, instructor: bool = True
+    services: Services, who: auth.Visitor, assignment_id: int, *, only_instructors_may: str = ""
 ) -> tuple[CourseRecord, AssignmentRecord]:
     """The assignment and its course when the caller teaches it; one of another course is answered
     as one that does not exist, never naming its course (which would tell that it exists)."""
     try:
         record = services.stores.courses.get_assignment(assignment_id)
-        course = access.require_staff(services.stores, who.principal, record.course_id, instructor=instructor)
+        course = access.require_staff(
+            services.stores, who.principal, record.course_id, only_instructors_may=only_instructors_may
+        )
     except (AssignmentNotFound, CourseNotFound):
         raise PageError(
             404, "No such assignment", f"There is no assignment {assignment_id} of yours."
         ) from None
+    except access.InstructorsOnly as refused:
+        raise PageError(403, "For the course's instructors", refused.message) from None
     return course, record
 
 
@@ -186,7 +194,7 @@ async def import_roster(
     rows, problems = parse_roster(text)
 
     def save() -> dict[str, Any]:
-        course = _course(services, who, course_id, instructor=True)
+        course = _course(services, who, course_id, only_instructors_may="import its roster")
         values = _course_context(services, course)
         if problems or not rows:
             values["roster_problems"] = problems or []
@@ -295,7 +303,7 @@ async def new_assignment(
     """The builder; `pick` ticks a problem already (a problem's page links here to assign it)."""
 
     def load() -> dict[str, Any]:
-        course = _course(services, who, course_id, instructor=True)
+        course = _course(services, who, course_id, only_instructors_may="add assignments")
         chosen = [pick] if _PROBLEM_ID.match(pick) else []
         now = request.app.state.lti.clock()
         return _builder_context(services, who, course, None, q[:100], now, chosen)
@@ -311,7 +319,9 @@ async def edit_assignment(
     assignment_id: RecordId, request: Request, services: ServicesDep, who: Visitor, q: str = ""
 ) -> Response:
     def load() -> dict[str, Any]:
-        course, record = _assignment(services, who, assignment_id)
+        course, record = _assignment(
+            services, who, assignment_id, only_instructors_may="change its assignments"
+        )
         return _builder_context(services, who, course, record, q[:100], request.app.state.lti.clock())
 
     values = await run_in_threadpool(load)
@@ -378,10 +388,12 @@ async def _save_builder(
 
     def save() -> dict[str, Any] | int:
         if assignment_id is not None:
-            course, record = _assignment(services, who, assignment_id)
+            course, record = _assignment(
+                services, who, assignment_id, only_instructors_may="change its assignments"
+            )
         else:
             assert course_id is not None
-            course, record = _course(services, who, course_id, instructor=True), None
+            course, record = _course(services, who, course_id, only_instructors_may="add assignments"), None
         spec, picked, errors = _read_builder(form, course)
         colleagues = access.colleagues(services.stores, who.principal)
         shared = services.stores.courses.shared_problems()
@@ -437,7 +449,9 @@ async def delete_assignment(
     await auth.require_csrf(request, services, who)
 
     def remove() -> int:
-        course, record = _assignment(services, who, assignment_id)
+        course, record = _assignment(
+            services, who, assignment_id, only_instructors_may="delete its assignments"
+        )
         services.stores.courses.delete_assignment(record.id)
         return course.id
 
@@ -454,7 +468,9 @@ async def release_solutions(
     await auth.require_csrf(request, services, who)
 
     def release() -> int:
-        course, record = _assignment(services, who, assignment_id)
+        course, record = _assignment(
+            services, who, assignment_id, only_instructors_may="release its worked solutions"
+        )
         spec = replace(record.spec, solutions=SolutionRelease.RELEASED)
         services.stores.courses.update_assignment(record.id, spec)
         return course.id
@@ -591,7 +607,7 @@ async def join_code(course_id: RecordId, request: Request, services: ServicesDep
     enabled = str(form.get("enabled") or "1") != "0"
 
     def save() -> None:
-        _course(services, who, course_id, instructor=True)
+        _course(services, who, course_id, only_instructors_may="change its join code")
         services.stores.courses.set_join_code(course_id, course_sessions.new_join_code() if enabled else None)
 
     await run_in_threadpool(save)
@@ -607,7 +623,7 @@ async def assignment_results(
     now = request.app.state.lti.clock()
 
     def load() -> dict[str, Any]:
-        course, record = _assignment(services, who, assignment_id, instructor=False)
+        course, record = _assignment(services, who, assignment_id)
         book = service.course_gradebook(services.stores, services.catalog, course, now)
         cells = [book.cell(e.student, record.id) for e in book.students]
         rows = []

@@ -118,9 +118,11 @@ def student_out(enrolment: EnrolmentRecord) -> StudentOut:
 
 
 def _staff(
-    services: Services, principal: Principal, course_id: CourseIdPath, *, instructor: bool = False
+    services: Services, principal: Principal, course_id: CourseIdPath, *, only_instructors_may: str = ""
 ) -> CourseRecord:
-    return access.require_staff(services.stores, principal, course_id, instructor=instructor)
+    return access.require_staff(
+        services.stores, principal, course_id, only_instructors_may=only_instructors_may
+    )
 
 
 # ---- courses and staff -------------------------------------------------------------------------------
@@ -198,7 +200,7 @@ async def add_staff(
     """Add a co-instructor or TA (or change their role) by their key id or LMS identity."""
 
     def save() -> StaffOut:
-        _staff(services, principal, course_id, instructor=True)
+        _staff(services, principal, course_id, only_instructors_may="change its staff")
         made = services.stores.courses.add_staff(course_id, body.member, StaffRole(body.role), body.name)
         return StaffOut(member=made.member, role=made.role.value, name=made.name)
 
@@ -212,7 +214,7 @@ async def remove_staff(
     course_id: CourseIdPath, member: str, services: ServicesDep, principal: Instructor
 ) -> Response:
     def remove() -> None:
-        _staff(services, principal, course_id, instructor=True)
+        _staff(services, principal, course_id, only_instructors_may="change its staff")
         staff = services.stores.courses.staff(course_id)
         instructors = [s.member for s in staff if s.role is StaffRole.INSTRUCTOR]
         if instructors == [member]:
@@ -271,7 +273,7 @@ async def import_roster(
         )
 
     def save() -> RosterImportOut:
-        _staff(services, principal, course_id, instructor=True)
+        _staff(services, principal, course_id, only_instructors_may="import its roster")
         done = services.stores.courses.import_roster(course_id, rows)
         return RosterImportOut(added=done.added, updated=done.updated, unchanged=done.unchanged)
 
@@ -335,7 +337,7 @@ async def new_join_code(
     """A fresh join code (students enrol themselves at its URL), or none (`{"enabled": false}`)."""
 
     def save() -> JoinCodeOut:
-        _staff(services, principal, course_id, instructor=True)
+        _staff(services, principal, course_id, only_instructors_may="change its join code")
         code = course_sessions.new_join_code() if enabled else None
         course = services.stores.courses.set_join_code(course_id, code)
         url = None if code is None else str(request.base_url).rstrip("/") + course_sessions.JOIN_PATH + code
@@ -406,7 +408,7 @@ async def create_assignment(
     principal: Instructor,
 ) -> AssignmentOut:
     def save() -> AssignmentOut:
-        _staff(services, principal, course_id, instructor=True)
+        _staff(services, principal, course_id, only_instructors_may="add assignments")
         _check_problems(services, principal, body.problems)
         made = services.stores.courses.create_assignment(course_id, _spec(body))
         return assignment_out(made, _points(services, made))
@@ -461,13 +463,17 @@ def standing(record: AssignmentRecord, cell: AssignmentCell) -> StudentStanding:
 
 
 def _assignment_as_staff(
-    services: Services, principal: Principal, assignment_id: AssignmentIdPath, *, instructor: bool = False
+    services: Services,
+    principal: Principal,
+    assignment_id: AssignmentIdPath,
+    *,
+    only_instructors_may: str = "",
 ) -> AssignmentRecord:
     """The assignment when the caller teaches its course; else the 404 of one that does not exist,
     never naming its course (which would tell that it exists, and whose it is)."""
     record = services.stores.courses.get_assignment(assignment_id)
     try:
-        _staff(services, principal, record.course_id, instructor=instructor)
+        _staff(services, principal, record.course_id, only_instructors_may=only_instructors_may)
     except CourseNotFound:
         raise AssignmentNotFound(assignment_id) from None
     return record
@@ -507,7 +513,9 @@ async def update_assignment(
     principal: Instructor,
 ) -> AssignmentOut:
     def save() -> AssignmentOut:
-        current = _assignment_as_staff(services, principal, assignment_id, instructor=True)
+        current = _assignment_as_staff(
+            services, principal, assignment_id, only_instructors_may="change its assignments"
+        )
         _check_problems(services, principal, body.problems, current.problems)
         made = services.stores.courses.update_assignment(assignment_id, _spec(body))
         return assignment_out(made, _points(services, made))
@@ -522,7 +530,9 @@ async def delete_assignment(
     """The assignment goes; its students' submissions stay (the log is append-only)."""
 
     def remove() -> None:
-        _assignment_as_staff(services, principal, assignment_id, instructor=True)
+        _assignment_as_staff(
+            services, principal, assignment_id, only_instructors_may="delete its assignments"
+        )
         services.stores.courses.delete_assignment(assignment_id)
 
     await run_in_threadpool(remove)

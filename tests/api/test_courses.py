@@ -221,23 +221,58 @@ def test_no_instructor_reaches_another_courses_students(client, teacher, other_t
     ]
 
 
-def test_a_ta_reads_the_gradebook_but_does_not_change_the_course(client, teacher):
-    course = _course(client, teacher)
+def _ta(client: TestClient, teacher: dict[str, str], course: int) -> tuple[dict[str, str], int]:
+    """A new key made the course's teaching assistant: its headers and its id."""
     ta = key_headers(client, "instructor", "Tess")
     ta_id = client.app.state.services.stores.keys.list()[-1].id
-    assert (
-        client.put(
-            f"/v1/courses/{course}/staff", json={"member": f"key:{ta_id}", "role": "ta"}, headers=teacher
-        ).status_code
-        == 200
+    staffed = client.put(
+        f"/v1/courses/{course}/staff", json={"member": f"key:{ta_id}", "role": "ta"}, headers=teacher
     )
+    assert staffed.status_code == 200
+    return ta, ta_id
+
+
+HOMEWORK = {
+    "title": "HW",
+    "problems": ["yo-yo"],
+    "opens_at": "2026-01-01T09:00:00Z",
+    "due_at": "2026-01-08T09:00:00Z",
+}
+# What only a course's instructors may do, and the words a TA is refused with.
+TA_REFUSED = [
+    ("PUT", "/v1/courses/{course}/staff", {"json": {"member": "key:77", "role": "ta"}}, "change its staff"),
+    ("DELETE", "/v1/courses/{course}/staff/key:77", {}, "change its staff"),
+    ("POST", "/v1/courses/{course}/roster", {"content": ROSTER}, "import its roster"),
+    ("POST", "/v1/courses/{course}/join-code", {"json": {"enabled": True}}, "change its join code"),
+    ("POST", "/v1/courses/{course}/assignments", {"json": HOMEWORK}, "add assignments"),
+    ("PUT", "/v1/assignments/{assignment}", {"json": HOMEWORK}, "change its assignments"),
+    ("DELETE", "/v1/assignments/{assignment}", {}, "delete its assignments"),
+]
+
+
+@pytest.mark.parametrize(("method", "path", "body", "action"), TA_REFUSED)
+def test_a_ta_asking_what_only_instructors_may_do_is_forbidden_saying_so(
+    client, teacher, method, path, body, action
+):
+    # a TA sees the course: the 404 a stranger gets told them it did not exist
+    course = _course(client, teacher)
+    homework = _assignment(client, teacher, course)
+    ta, _ = _ta(client, teacher, course)
+    headers = {**ta, "Content-Type": "text/csv"} if "content" in body else ta
+    url = path.format(course=course, assignment=homework["id"])
+    refused = client.request(method, url, headers=headers, **body)
+    assert refused.status_code == 403
+    assert refused.json()["error"] == {
+        "code": "forbidden",
+        "message": f"Only the course's instructors may {action}; you are its teaching assistant.",
+        "details": [],
+    }
+
+
+def test_a_ta_reads_the_gradebook_until_they_leave_the_staff(client, teacher):
+    course = _course(client, teacher)
+    ta, ta_id = _ta(client, teacher, course)
     assert client.get(f"/v1/courses/{course}/gradebook", headers=ta).status_code == 200
-    assert (
-        client.post(
-            f"/v1/courses/{course}/roster", content=ROSTER, headers={**ta, "Content-Type": "text/csv"}
-        ).status_code
-        == 404
-    )
     assert client.delete(f"/v1/courses/{course}/staff/key:{ta_id}", headers=teacher).status_code == 204
     assert client.get(f"/v1/courses/{course}/gradebook", headers=ta).status_code == 404
 

@@ -875,3 +875,43 @@ def test_an_assignment_whose_only_problem_was_retired_says_there_is_nothing_to_a
     for path in ("/courses", f"/courses/{course}/assignments/{assignment}"):
         shown = student.get(path).text
         assert "Nothing to answer" in shown and "0 of 0" not in shown and "Not started" not in shown, path
+
+
+# What only a course's instructors may do from its pages, and the words a TA is refused with.
+TA_REFUSED_PAGES = [
+    ("GET", "/instructor/courses/{course}/assignments/new", "add assignments"),
+    ("POST", "/instructor/courses/{course}/assignments/new", "add assignments"),
+    ("POST", "/instructor/courses/{course}/roster", "import its roster"),
+    ("POST", "/instructor/courses/{course}/join-code", "change its join code"),
+    ("GET", "/instructor/assignments/{assignment}/edit", "change its assignments"),
+    ("POST", "/instructor/assignments/{assignment}/edit", "change its assignments"),
+    ("POST", "/instructor/assignments/{assignment}/delete", "delete its assignments"),
+    ("POST", "/instructor/assignments/{assignment}/release-solutions", "release its worked solutions"),
+]
+
+
+@pytest.mark.parametrize(("method", "path", "action"), TA_REFUSED_PAGES)
+def test_a_ta_asking_what_only_instructors_may_do_is_refused_saying_so(
+    signed_in: TestClient, stores: Stores, method: str, path: str, action: str
+):
+    # a TA sees the course: "There is no course 1 of yours" told them it did not exist
+    from datetime import UTC, datetime, timedelta
+
+    from app.courses.records import AssignmentSpec
+
+    course = _make_course(signed_in)
+    now = datetime.now(UTC)
+    homework = stores.courses.create_assignment(
+        course, AssignmentSpec("HW 1", ("yo-yo",), now - timedelta(days=1), now + timedelta(days=1))
+    )
+    ta = TestClient(signed_in.app, follow_redirects=False)
+    ta_key = new_key(stores, "instructor", "Tess")
+    stores.courses.add_staff(course, f"key:{stores.keys.list()[-1].id}", StaffRole.TA)
+    sign_in(ta, ta_key)
+    course_page = ta.get(f"/instructor/courses/{course}")
+    assert course_page.status_code == 200
+    url = path.format(course=course, assignment=homework.id)
+    refused = ta.request(method, url, data={"csrf": csrf_of(course_page.text)} if method == "POST" else None)
+    assert refused.status_code == 403
+    assert "For the course&#39;s instructors" in refused.text
+    assert f"Only the course&#39;s instructors may {action}; you are its teaching assistant." in refused.text
