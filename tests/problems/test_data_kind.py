@@ -131,6 +131,25 @@ def test_a_wrong_fit_is_named_from_the_answer_read_once(monkeypatch, scale, unit
     assert len(question.mistakes) >= 2 and len(reads) == 1
 
 
+def test_the_self_test_draws_each_students_data_once_more_only_to_see_it_reproduced(monkeypatch) -> None:
+    # Whether the quantity is proportional to the fitted value is the part's, settled as it compiles: it
+    # was simplified again for every student's question, and the self-test drew each student's data
+    # for the question and again for the fit.
+    from problems.kinds.data import CompiledDataPart, DataKind
+
+    part, variant = _student("alice")
+    draw = CompiledDataPart.lab
+    draws = []
+    monkeypatch.setattr(CompiledDataPart, "lab", lambda self, v: draws.append(v) or draw(self, v))
+    monkeypatch.setattr(sympy, "simplify", lambda *a, **k: pytest.fail("simplified per student"))
+    results = DataKind().selftest("incline-lab", part, [variant])
+    assert all(result.ok for result in results), results
+    assert [r.check for r in results if "wrong fit" in r.check] == [
+        f"student 0 wrong fit {j}" for j in (1, 2, 3, 4)
+    ]
+    assert draws == [variant, variant]
+
+
 def test_the_student_sees_their_own_table_plot_and_csv() -> None:
     doc, compiled = _lab()
     variant = draw_variant(doc, 1, "alice", "secret")

@@ -118,7 +118,6 @@ class Lab:
     settings: tuple[float, ...]
     measured: tuple[float, ...]
     fit: Fit  # in the part's units
-    linear: bool  # the quantity is proportional to the fitted parameter
 
 
 @dataclass(frozen=True)
@@ -134,6 +133,7 @@ class CompiledDataPart:
     units: str = "1"
     measured_units: str = "1"
     vary_unit: str = "1"
+    linear: bool = False  # the quantity is proportional to the fitted parameter
     derived: bool = True
 
     @property
@@ -167,20 +167,20 @@ class CompiledDataPart:
             self.quantity, self.vary, self.parameter, xs, [y * y_scale for y in shown], fixed, true
         )
         p_scale = float(unit_scale(self.units))
-        linear = (
-            sympy.simplify(self.quantity - self.parameter * sympy.diff(self.quantity, self.parameter)) == 0
-        )
-        return Lab(self.settings, shown, Fit(fit.value / p_scale, fit.standard_error / p_scale), bool(linear))
+        return Lab(self.settings, shown, Fit(fit.value / p_scale, fit.standard_error / p_scale))
 
     def question(self, variant: Variant | None = None) -> NumericSpec:
         """The student's fit, with the values wrong fits of their data give as its known mistakes (read
         once and held against each, within the fit's tolerance)."""
         if variant is None:
             raise ValueError(f"part {self.id!r} grades each student's own data: it needs their variant")
-        lab = self.lab(variant)
+        return self.question_of(self.lab(variant))
+
+    def question_of(self, lab: Lab) -> NumericSpec:
+        """`question` for data already drawn."""
         spec = _spec(lab.fit.value, WITHIN * lab.fit.standard_error, self.units)
         wrong: list[MistakenValue] = []
-        if lab.linear:
+        if self.linear:
             y_scale = float(unit_scale(self.measured_units)) / float(unit_scale(self.units))
             for unit_name, scale in (("radians", float(unit_scale(self.vary_unit))), (self.vary_unit, 1.0)):
                 slope = proportional_fit([x * scale for x in lab.settings], lab.measured) * y_scale
@@ -314,6 +314,8 @@ class DataKind:
             part.units,
             part.measured_units,
             doc.given[part.vary].unit,
+            # simplify takes a while, and the answer is the part's, not a student's
+            bool(sympy.simplify(quantity - parameter * sympy.diff(quantity, parameter)) == 0),
         )
 
     def student_view(self, part: DataPart, doc: ProblemDocument) -> dict[str, Any]:
@@ -334,8 +336,8 @@ class DataKind:
         fit recognised; the same data drawn twice for the same student."""
         results: list[CheckResult] = []
         for index, variant in enumerate(students[:5]):
-            question = part.question(variant)
             lab = part.lab(variant)
+            question = part.question_of(lab)
             value, error = lab.fit.value, lab.fit.standard_error
             unit = "" if part.units == "1" else f" {part.units}"
             for label, text, right in (
