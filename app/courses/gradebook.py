@@ -11,7 +11,7 @@ gradebook is always recomputed from it, never stored.
 from __future__ import annotations
 
 import io
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from datetime import datetime
 
@@ -196,7 +196,7 @@ def to_csv(book: Gradebook) -> str:
             if cell.frozen:
                 notes.append(f"{assignment.title}: grade frozen, worked solution opened ({_frozen(cell)})")
             if cell.extended:
-                notes.append(f"{assignment.title}: extended to {cell.due:%Y-%m-%d %H:%M} UTC{_granted(cell)}")
+                notes.append(f"{assignment.title}: {extension_note(cell, _utc)}")
         total, _ = book.total(enrolment.student)
         writer.writerow(
             [enrolment.shown_id, enrolment.name, enrolment.email]
@@ -206,12 +206,20 @@ def to_csv(book: Gradebook) -> str:
     return out.getvalue()
 
 
-def _granted(cell: AssignmentCell) -> str:
-    """When the extension began to count, which says which late penalties it lifted."""
+def extension_note(cell: AssignmentCell, when: Callable[[datetime], str]) -> str:
+    """An extension, its dates written by `when`: to when, and since when it counts, which says which
+    late penalties it lifted (the CSV's note and the gradebook page say it alike)."""
     granted_at = None if cell.extension is None else cell.extension.granted_at
-    if granted_at is None:
-        return ", covering the answers given before it too"
-    return f", granted {granted_at:%Y-%m-%d %H:%M} UTC"
+    since = (
+        ", covering the answers given before it too"
+        if granted_at is None
+        else f", granted {when(granted_at)}"
+    )
+    return f"extended to {when(cell.due)}{since}"
+
+
+def _utc(moment: datetime) -> str:
+    return f"{moment:%Y-%m-%d %H:%M} UTC"
 
 
 def _frozen(cell: AssignmentCell) -> str:

@@ -496,6 +496,9 @@ async def gradebook_page(
             "book": book,
             "student": student,
             "shown": shown,
+            "extension_note": lambda cell: gradebook.extension_note(
+                cell, lambda d: shown(d, course.timezone)
+            ),
             "titles": _titles(services, {p for a in book.assignments for p in a.problems}),
         }
 

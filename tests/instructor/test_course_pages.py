@@ -6,6 +6,7 @@ from __future__ import annotations
 import csv
 import io
 import re
+from zoneinfo import ZoneInfo
 
 import pytest
 from fastapi.testclient import TestClient
@@ -915,3 +916,52 @@ def test_a_ta_asking_what_only_instructors_may_do_is_refused_saying_so(
     assert refused.status_code == 403
     assert "For the course&#39;s instructors" in refused.text
     assert f"Only the course&#39;s instructors may {action}; you are its teaching assistant." in refused.text
+
+
+@pytest.mark.parametrize(
+    ("regrade_earlier", "since"),
+    [("", ", granted {granted}"), ("on", ", covering the answers given before it too")],
+)
+def test_an_extension_in_the_gradebook_opens_to_when_it_was_granted_and_to_when(
+    signed_in: TestClient, stores: Stores, regrade_earlier: str, since: str
+):
+    # its dates were a tooltip ("ext." titled with the due date alone), which no phone shows
+    from datetime import UTC, datetime, timedelta
+
+    from app.courses.policy import shown
+    from app.courses.records import AssignmentSpec
+
+    course = _make_course(signed_in)
+    signed_in.post(
+        f"/instructor/courses/{course}/roster",
+        data={"csrf": csrf_of(signed_in.get(f"/instructor/courses/{course}").text), "roster": ROSTER},
+    )
+    now = datetime.now(UTC).replace(second=0, microsecond=0)
+    homework = stores.courses.create_assignment(
+        course, AssignmentSpec("HW 1", ("yo-yo",), now - timedelta(days=2), now - timedelta(days=1))
+    )
+    page = signed_in.get(f"/instructor/courses/{course}/gradebook")
+    due = now + timedelta(days=3)
+    granted = signed_in.post(
+        f"/instructor/courses/{course}/extensions",
+        data={
+            "csrf": csrf_of(page.text),
+            "student": f"course:{course}:s002",
+            "assignment": str(homework.id),
+            "due_at": f"{due.astimezone(ZoneInfo('Europe/Paris')):%Y-%m-%dT%H:%M}",
+            "regrade_earlier": regrade_earlier,
+        },
+    )
+    assert granted.status_code == 303, granted.text
+    extension = stores.courses.extensions(homework.id)[f"course:{course}:s002"]
+    note = f"extended to {shown(due, 'Europe/Paris')}" + since.format(
+        granted=shown(extension.granted_at, "Europe/Paris") if extension.granted_at else ""
+    )
+    book = signed_in.get(f"/instructor/courses/{course}/gradebook").text
+    disclosures = re.findall(r'<details class="extension"><summary>(.*?)</summary>(.*?)</details>', book)
+    assert disclosures == [
+        (
+            '<span class="badge" aria-hidden="true">ext.</span><span class="visually-hidden">Extension</span>',
+            note,
+        )
+    ]
