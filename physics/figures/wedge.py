@@ -55,9 +55,11 @@ def draw_wedge(
     height = 3.2
     base = height / math.tan(angle)
     top, foot, corner = (0.0, height), (base, 0.0), (0.0, 0.0)
-    canvas.ground((-1.5, 0.0), (base + 2.0, 0.0))
+    canvas.ground((-2.0, 0.0), (base + 2.0, 0.0))
     canvas.polygon([corner, top, foot], fill=FILLS[0])
-    canvas.text((base * 0.25, height * 0.3), body_label(wedge, model))
+    # high up by the vertical face, as the angle's mark fills the foot; beside it, if too narrow there
+    name_at = (base * 0.15, height * 0.6) if base * 0.4 >= 1.0 else (-0.45, height * 0.6)
+    canvas.text(name_at, body_label(wedge, model))
     tangent = (math.cos(angle), -math.sin(angle))
     along = 0.4
     spot = (top[0] + (foot[0] - top[0]) * along, top[1] + (foot[1] - top[1]) * along)
@@ -66,8 +68,8 @@ def draw_wedge(
     # the axis the statement defines, and the coordinates with their positive directions
     axis_x(figure, (-1.4, -0.75))
     wedge_coordinate = moving_coordinate(model, wedge, exclude=())
-    if wedge_coordinate is not None:
-        mark_coordinate(figure, (0.0, 0.3), (1.2, 0.3), coordinate_label(model, wedge_coordinate))
+    if wedge_coordinate is not None:  # beside the wedge: inside, it crowded the name and the angle
+        mark_coordinate(figure, (-1.6, 0.4), (-0.35, 0.4), coordinate_label(model, wedge_coordinate))
     slide = moving_coordinate(model, block, exclude=(wedge_coordinate,))
     if slide is not None:
         lift = 1.45

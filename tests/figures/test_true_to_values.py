@@ -77,3 +77,26 @@ def test_the_wedge_figure_draws_the_x_axis_and_both_coordinates() -> None:
 def test_the_yoyo_figure_marks_the_distance_fallen_by_the_solutions_name() -> None:
     svg = _figure("yo-yo")
     assert "The coordinate s grows along the blue arrow marked s." in svg  # the model's notation renames d
+
+
+def _gap(a: tuple[float, float, float, float], b: tuple[float, float, float, float]) -> float:
+    """How far apart two label boxes are (0 when they touch or overlap)."""
+    return max(b[0] - a[2], a[0] - b[2], b[1] - a[3], a[1] - b[3], 0.0)
+
+
+@pytest.mark.parametrize("degrees", [20.0, 35.0, 50.0, 65.0])
+def test_the_wedges_labels_stand_apart_at_every_angle(degrees: float) -> None:
+    # "M", "X" and "θ" crowded the wedge's corner, one over another at the steep end of the range
+    import xml.etree.ElementTree as ET
+
+    from tests.figures.test_scene_labels import text_boxes
+
+    labels = text_boxes(ET.fromstring(_figure("moving-wedge", theta=degrees)))
+    assert {"M", "X", "θ", "m", "s", "x"} <= {text for text, _ in labels}
+    crowded = [
+        (first, second)
+        for i, (first, a) in enumerate(labels)
+        for second, b in labels[i + 1 :]
+        if _gap(a, b) < 0.3
+    ]
+    assert crowded == []
