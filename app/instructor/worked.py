@@ -68,7 +68,7 @@ class StepInfo:
 class CheckInfo:
     """A result of the method at the student's values beside what their numeric part expects."""
 
-    part_id: str
+    part: int  # its number in the answers' list: a hand-out's reader never sees part ids
     latex: str  # the method's result
     value: str  # e.g. "−1.83 m/s²"
     expected: str
@@ -212,7 +212,7 @@ def _checks(
         return ()
     doc = compiled.document
     found = []
-    for spec in doc.parts:
+    for number, spec in enumerate(doc.parts, 1):
         part = compiled.parts.get(spec.id)
         of = getattr(spec, "of", None)
         if not isinstance(part, CompiledNumericPart) or of is None:
@@ -233,7 +233,7 @@ def _checks(
         agrees = _close(mine, expected)
         found.append(
             CheckInfo(
-                spec.id,
+                number,
                 typeset.latex(result),
                 format_quantity(_round(mine), part.units),
                 format_quantity(_round(expected), part.units),

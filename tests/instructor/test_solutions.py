@@ -269,3 +269,13 @@ def test_the_comparison_names_the_parts_each_method_answers_by_their_numbers(sig
     assert all(re.fullmatch(r"\d(, \d)*", cell) for cell in answered), answered
     # Newton's laws give the acceleration and the tension, parts 1 and 2; the energy the acceleration
     assert {"1, 2", "1"} <= set(answered), answered
+
+
+def test_the_checks_at_the_variants_values_name_each_part_by_its_number(signed_in: TestClient) -> None:
+    # they named the part by its id, `acceleration_numeric`, which a hand-out's reader never sees
+    hand_out = signed_in.get("/instructor/problems/yo-yo/solution").text
+    checks = re.findall(r'<ul class="checks">(.*?)</ul>', hand_out, re.S)
+    assert checks and "acceleration_numeric" not in hand_out
+    assert all(re.findall(r"<li>Part 3: ", found) for found in checks), (
+        checks
+    )  # acceleration_numeric is third
