@@ -104,8 +104,8 @@ class NewtonMethod(Method):
                 second += 2 * sympy.Add(*(sympy.diff(c.gap, a.symbol, t) * a.velocity for a in mech.dofs))
                 second += sympy.diff(c.gap, t, 2)
             self.step(
-                f"The same constraint for the accelerations ({self.mech.notation.conditions[c.name]}), "
-                "differentiated twice in time",
+                f"Constraint ({self.mech.notation.conditions[c.name]}) differentiated twice in time, "
+                "for the accelerations",
                 self.tex(sympy.Eq(second, 0)),
                 StepKind.EQUATION,
             )

@@ -265,3 +265,14 @@ def test_two_forces_written_alike_are_refused_saying_how_to_name_one_apart() -> 
     assert "leave that axis out of the body's position" in fault
     named = _hung_beside({"side": {"symbol": "Q", "says": "the sideways force on the block"}})
     assert not [f for f in audit(named, notation_of(named), []) if "both written" in f]
+
+
+def test_newtons_constraints_for_the_accelerations_say_which_constraint_is_differentiated() -> None:
+    # "The same constraint for the accelerations (the wedge stays on the floor), differentiated twice
+    # in time" split the constraint from what was done to it
+    newton = next(m for m in derive(_model("moving-wedge")).methods if m.name == "newton")
+    titles = [s.title for s in newton.steps if "differentiated" in s.title]
+    assert titles == [  # «wedge»: the body, in the problem's words on the page
+        "Constraint («wedge» stays on the floor) differentiated twice in time, for the accelerations",
+        "Constraint («wedge» stays in contact with «block») differentiated twice in time, for the accelerations",
+    ]
