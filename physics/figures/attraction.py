@@ -8,7 +8,7 @@ import sympy
 from physics.engine.model import Body, Model, PairPotential
 from physics.figures.figure import Figure, body_label
 from physics.figures.geometry import other_symbols
-from physics.figures.svg import FILLS
+from physics.figures.svg import FILLS, INK
 from physics.wording import symbol_label
 
 
@@ -17,10 +17,12 @@ def draw_central(figure: Figure, model: Model, body: Body, potential: PairPotent
     canvas = figure.canvas
     canvas.circle((0.0, 0.0), 1.0, fill=FILLS[2])
     masses = [s for s in other_symbols(potential, body, model) if s.name[:1].isupper() and s.name != "G"]
+    # the names clear of the distance's line from the centre and of the orbit's arc, which struck them
     if masses:
-        canvas.text((0.0, 0.0), symbol_label(masses[0].name))
+        canvas.text((0.0, 0.5), symbol_label(masses[0].name))
+    canvas.circle((0.0, 0.0), 0.06, fill=INK)
     canvas.circle((5.5, 0.0), 0.35, fill=FILLS[0])
-    canvas.text((5.5, -0.75), body_label(body, model))
+    canvas.text((6.2, -0.5), body_label(body, model))
     canvas.line((0.0, 0.0), (5.15, 0.0), dashed=True, width=0.03)
     coordinate = model.coordinates[0].name if model.coordinates else ""
     canvas.text((3.0, 0.35), coordinate)

@@ -137,3 +137,34 @@ def test_falling_bodies_show_the_drag_each_free_body_diagram_names() -> None:
     for body in model.bodies:
         drags = {f.label for f in body_forces(model, body.name, {}) if not f.label.endswith("g")}
         assert drags and drags <= texts, (drags, texts)
+
+
+def _crosses(segment: tuple[Point, Point], box: Box) -> bool:
+    """Does the straight segment pass through the box (sampled finely along it)?"""
+    (x1, y1), (x2, y2) = segment
+    left, top, right, bottom = box
+    return any(
+        left < x1 + (x2 - x1) * t / 200 < right and top < y1 + (y2 - y1) * t / 200 < bottom
+        for t in range(201)
+    )
+
+
+@pytest.mark.parametrize("problem_id", ["orbit-effective-potential", "satellite-orbit"])
+def test_an_orbits_names_are_struck_by_neither_the_distance_nor_the_orbit(problem_id: str) -> None:
+    # the dashed distance from the centre ran through the centre's mass M, and the arc through m
+    root = figure_of(problem_id)
+    labels = text_boxes(root)
+    lines = [
+        (
+            (float(line.get("x1", 0)), float(line.get("y1", 0))),
+            (float(line.get("x2", 0)), float(line.get("y2", 0))),
+        )
+        for line in root.iter(f"{SVG}line")
+    ]
+    assert [(text, line) for text, box in labels for line in lines if _crosses(line, box)] == []
+    arc = next(root.iter(f"{SVG}path"))
+    radius = float(arc.get("d", "").split()[4])  # "M x y A r r …", about the centre at the origin
+    for text, (left, top, right, bottom) in labels:
+        near = math.hypot(max(left, min(0.0, right)), max(top, min(0.0, bottom)))
+        far = max(math.hypot(x, y) for x in (left, right) for y in (top, bottom))
+        assert not near < radius < far, f"{text!r} lies on the orbit"
