@@ -243,6 +243,37 @@ def _checks(
     return tuple(found)
 
 
+def _notes(notes: Sequence[str], compiled: CompiledProblem) -> tuple[str, ...]:
+    """Why the method gives no answer to some parts, each reason once, naming the parts by their
+    numbers in the answers' list ("Parts 1, 2 and 3: …"): the engine names its quantities, which a
+    hand-out's reader never sees."""
+    doc = compiled.document
+    numbers: dict[str, list[str]] = {}
+    for number, spec in enumerate(doc.parts, 1):
+        of = getattr(spec, "of", None)
+        try:
+            asked = (
+                getattr(doc.part(of), "quantity_name", of) if of else getattr(spec, "quantity_name", spec.id)
+            )
+        except KeyError:
+            asked = of
+        numbers.setdefault(asked, []).append(str(number))
+    said: dict[str, list[str]] = {}
+    for note in notes:
+        quantity, colon, why = note.partition(": ")
+        parts = numbers.get(quantity) if colon else None
+        if parts is None:
+            said.setdefault(note, [])
+        else:
+            said.setdefault(why, []).extend(parts)
+    return tuple(
+        why
+        if not parts
+        else f"{'Part' if len(parts) == 1 else 'Parts'} {_join(sorted(set(parts), key=int))}: {why}"
+        for why, parts in said.items()
+    )
+
+
 def _round(value: Decimal) -> Decimal:
     return Decimal(f"{value:.4g}")
 
@@ -301,7 +332,7 @@ def method_info(
         steps=tuple(steps),
         count=text,
         checks=_checks(report, compiled, variant),
-        notes=tuple(fill_bodies(n, fill) for n in report.notes),
+        notes=_notes([fill_bodies(n, fill) for n in report.notes], compiled),
         answers=tuple(report.results),
         equations=count,
         unknowns=len(unknowns),

@@ -279,3 +279,16 @@ def test_the_checks_at_the_variants_values_name_each_part_by_its_number(signed_i
     assert all(re.findall(r"<li>Part 3: ", found) for found in checks), (
         checks
     )  # acceleration_numeric is third
+
+
+def test_why_a_method_answers_no_part_names_the_parts_by_their_numbers_saying_each_reason_once() -> None:
+    # "slow_frequency: Cartesian normal modes …", then the same for fast_frequency and slow_shape: the
+    # engine's names for its quantities, which a hand-out's reader never sees, and one reason thrice
+    from app.instructor.described import describe
+    from problems.compiled import compile_problem
+
+    described = describe(compile_problem(bank_documents()["double-pendulum"]))
+    newton = next(m for m in described.methods if m.name == "newton")
+    assert newton.notes == (
+        "Parts 1, 2, 3 and 4: Cartesian normal modes are done here only without constraints",
+    )
