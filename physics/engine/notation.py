@@ -195,6 +195,27 @@ def _body_words(name: str) -> str:
     return "the " + humanize(name)
 
 
+def _bodies_said(model: Model, author: Mapping[str, tuple[str | None, str | None]]) -> dict[str, str]:
+    """Each body's words: the author's, else its name's ("the cart"); bodies whose names say alike
+    are told apart by their own mass ("the cart $m_{1}$"), else by their names' numbers ("cart 2"),
+    as "Newton's second law for the cart" twice, for two carts, read as one body's law said twice."""
+    alike = [_body_words(b.name) for b in model.bodies]
+    masses = [b.mass for b in model.bodies]
+    said = {}
+    for body, words in zip(model.bodies, alike, strict=True):
+        number = re.search(r"\d+$", body.name)
+        if author.get(body.name, (None, None))[1]:
+            words = str(author[body.name][1])
+        elif alike.count(words) == 1:
+            pass
+        elif isinstance(body.mass, sympy.Symbol) and masses.count(body.mass) == 1:
+            words = f"{words} ${typeset.latex(body.mass)}$"
+        elif number is not None:
+            words = f"{humanize(body.name)} {number.group()}"
+        said[body.name] = words
+    return said
+
+
 def fill_bodies(text: str, bodies: Mapping[str, str]) -> str:
     """`text` with each «body» replaced by that body's words (its default words if not in `bodies`)."""
     return BODY_MARK.sub(lambda m: bodies.get(m.group(1), _body_words(m.group(1))), text)
@@ -227,7 +248,7 @@ def notation_of(model: Model) -> Notation:
         taken.add(tex)
         coordinates[c.name] = Name(tex, says or _coordinate_words(c.name, model), source)
 
-    bodies = {b.name: author.get(b.name, (None, None))[1] or _body_words(b.name) for b in model.bodies}
+    bodies = _bodies_said(model, author)
     forces, conditions = _forces(model, author, taken, problem)
     frictions = _frictions(model, forces, taken)
     cartesian = _cartesian(model, taken, coordinates)

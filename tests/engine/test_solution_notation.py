@@ -276,3 +276,17 @@ def test_newtons_constraints_for_the_accelerations_say_which_constraint_is_diffe
         "Constraint («wedge» stays on the floor) differentiated twice in time, for the accelerations",
         "Constraint («wedge» stays in contact with «block») differentiated twice in time, for the accelerations",
     ]
+
+
+@pytest.mark.parametrize(
+    ("problem", "said"),
+    [
+        ("moving-wedge", {"wedge": "the wedge", "block": "the block"}),
+        ("yo-yo", {"yoyo": "the yo-yo"}),  # the author's words
+        ("cart-collision", {"cart1": "the cart $m_{1}$", "cart2": "the cart $m_{2}$"}),  # by their masses
+        ("double-pendulum", {"bob1": "bob 1", "bob2": "bob 2"}),  # one mass m: by their numbers
+    ],
+)
+def test_bodies_whose_names_say_alike_are_told_apart(problem: str, said: Mapping[str, str]) -> None:
+    # two carts were each "the cart": "Newton's second law for the cart, along x", twice, for two bodies
+    assert dict(notation_of(_model(problem)).bodies) == said
