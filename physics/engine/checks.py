@@ -38,7 +38,12 @@ def physical_checks(
         checks["dimensions"] = (
             "every position is a length; every mass, inertia, energy, gravity, gap and state consistent"
         )
-    balance = simulator.energy_balance(domain_points(model, ENERGY_POINTS, seed=9))
+    try:
+        balance = simulator.energy_balance(domain_points(model, ENERGY_POINTS, seed=9))
+    except ArithmeticError as error:  # an integration that overflows or divides by zero: the model's fault
+        raise DerivationError(
+            f"energy balance: the simulation failed: {type(error).__name__}: {error}", path=()
+        ) from error
     if balance is not None:
         checks["energy balance"] = (
             f"{balance.compared}: worst relative gap {balance.max_relative_error:.1e} at {balance.points} points"

@@ -79,8 +79,10 @@ def equilibrium_point(
         for solution in solutions
         if all(q in solution for q in moving)
     ]
-    stable = [point for point in stable if _in_ranges(model, point) and _stable(model, mech, point)]
     continua = [solution for solution in solutions if not all(q in solution for q in moving)]
+    # sympy gives a ring's top, {x: 0, y: L0}, beside the ring x = sqrt(L0^2 - y^2) as if isolated
+    stable = [point for point in stable if not any(_lies_on(point, line) for line in continua)]
+    stable = [point for point in stable if _in_ranges(model, point) and _stable(model, mech, point)]
     if not stable and continua:
         line = continua[0]
         free = [q for q in moving if q not in line]
@@ -96,6 +98,28 @@ def equilibrium_point(
             path=("domain",),
         )
     return stable[0]
+
+
+def _lies_on(point: dict[sympy.Symbol, sympy.Expr], line: dict[sympy.Symbol, sympy.Expr]) -> bool:
+    """The point is one of the continuum's rests: each coordinate the line ties is where the line puts it."""
+    return all(tidy.simplify(value.subs(point) - point[q]) == 0 for q, value in line.items())
+
+
+def _rotation(potential: sympy.Expr, free: Sequence[sympy.Symbol], moving: Sequence[sympy.Symbol]) -> str:
+    """Where the potential depends on two coordinates only through their distance from the origin (a spring
+    to it, free in x and y), the continuum is a ring, and the drift along it a rotation: said, with what to do."""
+    for i, a in enumerate(moving):
+        for b in moving[i + 1 :]:
+            if (a in free or b in free) and tidy.simplify(
+                b * sympy.diff(potential, a) - a * sympy.diff(potential, b)
+            ) == 0:
+                return (
+                    f"; the potential depends on {a} and {b} only through sqrt({a}^2 + {b}^2), so the rests are a "
+                    "ring about the origin and the drift along it a rotation, not a translation: write the position "
+                    "by a distance and an angle about the origin (coordinates of their own) and ask for the "
+                    "distance's oscillation"
+                )
+    return ""
 
 
 def _on_translation(
@@ -115,7 +139,8 @@ def _on_translation(
     if varying:
         raise DerivationError(
             f"{said}: the mass or stiffness matrix changes with {', '.join(varying)} along it, so it is no "
-            "free translation whose small oscillations are the same everywhere",
+            "free translation whose small oscillations are the same everywhere"
+            + _rotation(mech.potential, free, [q for q in mech.q if mech.potential.has(q)]),
             path=("domain",),
         )
     for shift in _shifts(model, line, free):

@@ -86,6 +86,34 @@ def test_a_mode_shape_is_derived_from_an_upload(client, instructor_headers, stud
     assert graded["verdict"] == "correct"
 
 
+def test_a_puck_on_a_ring_of_rests_is_refused_as_a_continuum_not_a_simulation_overflow(
+    client, instructor_headers
+):
+    """A spring of natural length L0 to the origin, the puck free in x and y: sympy gives the ring's top as
+    an isolated rest beside the ring, whose simulation overflowed."""
+    doc = three_springs()
+    doc["symbols"]["L0"] = {"meaning": "natural length", "dimension": "m"}
+    doc["given"]["L0"] = {"min": 0.1, "max": 0.5, "unit": "m"}
+    doc["parts"] = [{"id": "w", "kind": "symbolic", "prompt": "The angular frequency of small oscillations."}]
+    doc["model"] = {
+        "coordinates": ["x", "y"],
+        "bodies": {"puck": {"mass": "m", "position": {"x": "x", "y": "y"}}},
+        "elements": {
+            "spring": {
+                "kind": "spring",
+                "between": ["puck", {"x": 0, "y": 0}],
+                "stiffness": "k",
+                "length": "L0",
+            }
+        },
+        "quantities": {"w": {"normal_frequency": 1}},
+    }
+    said = _details(upload(client, instructor_headers, doc))["model.quantities.w"]
+    assert "a continuum of equilibria" in said
+    assert "a ring about the origin" in said
+    assert "OverflowError" not in said
+
+
 def driven_cart(state: dict[str, str]) -> dict[str, Any]:
     return {
         "id": "my-driven-cart",

@@ -11,6 +11,7 @@ import yaml
 
 from physics.engine import derivation, load_model
 from physics.engine.results import Derivation
+from physics.engine.simulation import Simulator
 from physics.errors import DerivationError, SpecErrors
 
 uncached = derivation._derive.__wrapped__
@@ -108,6 +109,15 @@ quantities:
   symmetric: {normal_frequency: 1}
   asymmetric: {normal_frequency: 2}
 """
+PUCK_ON_A_RING = """
+coordinates: [x, y]
+bodies:
+  puck: {mass: m, position: {x: x, y: y}}
+elements:
+  spring: {kind: spring, between: [puck, {x: 0, y: 0}], stiffness: k, length: L0}
+quantities:
+  w: {normal_frequency: 1}
+"""
 _m1, _m2, _M, _k, _L0 = sympy.symbols("m1 m2 M k L0", positive=True)
 
 
@@ -182,9 +192,34 @@ def test_a_free_translation_leaves_the_oscillating_modes_about_any_of_its_rests(
             "mode 1 asked for, but the system has 0 oscillating modes",
             id="bead-alone-on-a-rod",
         ),
+        pytest.param(  # sympy's isolated root {x: 0, y: L0} lies on the ring: no rest of its own
+            PUCK_ON_A_RING,
+            "m k L0",
+            "a continuum of equilibria, with no one point to oscillate about: the mass or stiffness matrix "
+            "changes with y along it, so it is no free translation whose small oscillations are the same "
+            "everywhere; the potential depends on x and y only through sqrt(x^2 + y^2), so the rests are a ring",
+            id="puck-on-a-spring-free-in-x-and-y",
+        ),
     ],
 )
 def test_a_continuum_of_rests_with_no_stable_translation_is_refused(text: str, names: str, said: str) -> None:
     with pytest.raises(DerivationError) as caught:
         _translating(text, names)
     assert said in caught.value.message
+
+
+@pytest.mark.parametrize("error", [OverflowError, ZeroDivisionError, FloatingPointError])
+@pytest.mark.parametrize(
+    ("step", "said"),
+    [("check", "slow: the simulation failed"), ("energy_balance", "energy balance: the simulation failed")],
+)
+def test_a_numeric_error_in_the_simulation_is_a_refusal_that_names_what_was_simulated(
+    monkeypatch: pytest.MonkeyPatch, error: type[ArithmeticError], step: str, said: str
+) -> None:
+    def failing(*args: object) -> None:
+        raise error("out of range")
+
+    monkeypatch.setattr(Simulator, step, failing)
+    with pytest.raises(DerivationError) as caught:
+        uncached(load_model(three_springs(), SYMBOLS))
+    assert f"{said}: {error.__name__}: out of range" in caught.value.message
