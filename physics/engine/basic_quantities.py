@@ -63,7 +63,7 @@ def period(method: Method, quantity: Quantity) -> sympy.Expr:
 
 @derives(QuantityKind.NORMAL_FREQUENCY)
 def normal_frequency(method: Method, quantity: Quantity) -> sympy.Expr:
-    return modes.pick(method.mode_frequencies, int(quantity.target))
+    return modes.pick(method.mode_frequencies, quantity)
 
 
 @derives(QuantityKind.TERMINAL_VELOCITY)

@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING, Any
 
 import sympy
 
-from physics.engine import tidy
+from physics.engine import modes, tidy
 from physics.engine.mechanics import solve_linear
 from physics.engine.model import Coordinate, Model, Quantity, QuantityKind
 from physics.engine.proof import domain_points
@@ -57,8 +57,7 @@ def answer(method: Method, quantity: Quantity, point: dict[sympy.Symbol, sympy.E
     model = method.model
     squares = method.mode_frequencies  # ordered, lowest first
     number = int(quantity.target)
-    if number > len(squares):
-        raise DerivationError(f"mode {number} asked for, but the system has {len(squares)} oscillating modes")
+    modes.check_mode_number(number, len(squares), ("quantities", quantity.name, "mode_shape", "mode"))
     omega2 = squares[number - 1]
     mass, stiffness = method.mode_matrices(point)
     vector = _null_vector(stiffness - omega2 * mass, model, quantity.name)

@@ -20,7 +20,7 @@ import sympy
 from physics.answer_text import typed_text
 from physics.engine import tidy
 from physics.engine.mechanics import Mechanics
-from physics.engine.model import Model
+from physics.engine.model import Model, Quantity
 from physics.engine.proof import domain_points
 from physics.errors import DerivationError
 
@@ -267,9 +267,17 @@ def squared_frequencies(model: Model, mass: sympy.Matrix, stiffness: sympy.Matri
     return ordered
 
 
-def pick(frequencies: Sequence[sympy.Expr], index: int) -> sympy.Expr:
-    if index > len(frequencies):
-        raise DerivationError(
-            f"mode {index} asked for, but the system has {len(frequencies)} oscillating modes"
-        )
+def pick(frequencies: Sequence[sympy.Expr], quantity: Quantity) -> sympy.Expr:
+    index = int(quantity.target)
+    check_mode_number(index, len(frequencies), ("quantities", quantity.name, "normal_frequency"))
     return tidy.simplify(sympy.sqrt(frequencies[index - 1]))
+
+
+def check_mode_number(number: int, count: int, path: tuple[str | int, ...]) -> None:
+    """The loader bounds a mode's number by the coordinates; how many of their modes oscillate (a free
+    drift's zero frequency left out) is known only here, so a number beyond them is refused at its path."""
+    if number <= count:
+        return
+    has = f"{count} oscillating mode{'' if count == 1 else 's'}" if count else "no oscillating mode"
+    bounds = "" if not count else f": ask for 1 (the lowest){f' to {count}' if count > 1 else ''}"
+    raise DerivationError(f"mode {number} asked for, but the system has {has}{bounds}", path=path)

@@ -189,7 +189,7 @@ def test_a_free_translation_leaves_the_oscillating_modes_about_any_of_its_rests(
             "coordinates: [x]\nbodies:\n  bead: {mass: m, position: {x: x}}\ngravity: g\n"
             "quantities:\n  w: {normal_frequency: 1}\n",
             "m g",
-            "mode 1 asked for, but the system has 0 oscillating modes",
+            "mode 1 asked for, but the system has no oscillating mode",
             id="bead-alone-on-a-rod",
         ),
         pytest.param(  # sympy's isolated root {x: 0, y: L0} lies on the ring: no rest of its own
@@ -205,6 +205,38 @@ def test_a_free_translation_leaves_the_oscillating_modes_about_any_of_its_rests(
 def test_a_continuum_of_rests_with_no_stable_translation_is_refused(text: str, names: str, said: str) -> None:
     with pytest.raises(DerivationError) as caught:
         _translating(text, names)
+    assert said in caught.value.message
+
+
+@pytest.mark.parametrize(
+    ("text", "names", "path", "said"),
+    [
+        pytest.param(
+            CO2.replace("RIGHT", "k").replace(
+                "asymmetric: {normal_frequency: 2}", "third: {normal_frequency: 3}"
+            ),
+            "m M k L0",
+            ("quantities", "third", "normal_frequency"),
+            "mode 3 asked for, but the system has 2 oscillating modes: ask for 1 (the lowest) to 2",
+            id="co2-third-mode",
+        ),
+        pytest.param(
+            CARTS.replace("X1", "x1").replace("{mode: 1,", "{mode: 2,"),
+            "m1 m2 k L0",
+            ("quantities", "shape", "mode_shape", "mode"),
+            "mode 2 asked for, but the system has 1 oscillating mode: ask for 1 (the lowest)",
+            id="carts-second-shape",
+        ),
+    ],
+)
+def test_a_mode_number_beyond_the_oscillating_modes_is_refused_at_its_path_with_their_count(
+    text: str, names: str, path: tuple[str, ...], said: str
+) -> None:
+    """The loader allows a number up to the coordinates' count; a free drift's zero frequency is no
+    oscillating mode, known only once derived."""
+    with pytest.raises(DerivationError) as caught:
+        _translating(text, names)
+    assert caught.value.path == path
     assert said in caught.value.message
 
 
