@@ -336,11 +336,13 @@ def _forces(
         partner = _PIN_PARTNERS.get(family)  # a support's R_x and R_y share their letter, no one else
         letters[family] = (letters.get(partner) if partner else None) or _letter(family, taken, problem)
         taken.add(letters[family])
+    supports = _support_numbers(families, model)
     for family, members in families.items():
         letter = letters[family]
         for index, member in enumerate(members, start=1):
             if family in ("pin_x", "pin_y"):
-                tex = f"{letter}_{{{family[-1]}}}"
+                number = supports.get(member)
+                tex = f"{letter}_{{{family[-1]}{'' if number is None else f',{number}'}}}"
             else:
                 tex = letter if len(members) == 1 else f"{letter}_{{{index}}}"
             source = Source.PHYSICS if letter in _LETTERS[family] else Source.GENERATED
@@ -348,6 +350,23 @@ def _forces(
             taken.add(tex)
     conditions = {name: kinds[name][2] for name in kinds}
     return forces, conditions
+
+
+def _support_numbers(families: Mapping[str, list[str]], model: Model) -> dict[str, int]:
+    """Each support's number where there are several (an axle's R_{x,1} and R_{y,1}, a wall's R_{x,2}):
+    by the body it holds, so a body's horizontal and vertical forces share it; where two hold one body
+    along one axis, by their order. None where one support holds along each axis: its R_x and R_y."""
+    pins = {family: families.get(family, []) for family in ("pin_x", "pin_y")}
+    if all(len(members) <= 1 for members in pins.values()):
+        return {}
+    by_name = {c.name: c for c in model.constraints}
+    held = {
+        name: tuple(constraint_bodies(by_name[name], model)) for members in pins.values() for name in members
+    }
+    if any(len({held[m] for m in members}) < len(members) for members in pins.values()):
+        return {m: i for members in pins.values() for i, m in enumerate(members, start=1)}
+    order = list(dict.fromkeys(held[m] for members in pins.values() for m in members))
+    return {m: order.index(held[m]) + 1 for members in pins.values() for m in members}
 
 
 _PIN_PARTNERS = {"pin_x": "pin_y", "pin_y": "pin_x"}
@@ -374,7 +393,7 @@ def _plain(tex: str) -> str:
         return ""
     if not sub:
         return base
-    return base + sub.translate(_SUBSCRIPT) if re.fullmatch(r"[0-9xy]+", sub) else ""
+    return base + sub.translate(_SUBSCRIPT) if re.fullmatch(r"[0-9xy,]+", sub) else ""
 
 
 def _force_kind(constraint: Constraint, model: Model) -> tuple[str, str, str]:
@@ -547,13 +566,7 @@ def _rename(what: str) -> str:
     kind, _, key = what.partition(" ")
     if kind not in ("coordinate", "force"):
         return ""
-    said = f": give {key} a symbol of its own under the model's `notation:`, as {key}: {{symbol: Q, says: …}}"
-    if kind == "force":
-        said += (
-            f" (or, where {key} only holds a body at a fixed x or y, leave that axis out of the body's "
-            "position: nothing then holds it there, and no force is written)"
-        )
-    return said
+    return f": give {key} a symbol of its own under the model's `notation:`, as {key}: {{symbol: Q, says: …}}"
 
 
 def audit(model: Model, notation: Notation, methods: Iterable[Any]) -> list[str]:

@@ -258,11 +258,19 @@ def _hung_beside(notation: Mapping[str, Any] | None) -> Any:
     return load_model(data, {n: sympy.Symbol(n, positive=True) for n in ("m", "M", "R", "g")})
 
 
-def test_two_forces_written_alike_are_refused_saying_how_to_name_one_apart() -> None:
+def test_each_support_of_several_has_its_own_number_shared_by_its_two_components() -> None:
+    """The block held beside the axle: its support's force was written P_{x} like the axle's."""
     model = _hung_beside(None)
+    forces = {key: name.tex for key, name in notation_of(model).forces.items()}
+    assert forces == {"string": "T", "axleX": "P_{x,1}", "axleY": "P_{y,1}", "side": "P_{x,2}"}
+    assert not audit(model, notation_of(model), [])
+
+
+def test_two_forces_written_alike_are_refused_saying_how_to_name_one_apart() -> None:
+    model = _hung_beside({"side": {"symbol": "Q"}, "axleX": {"symbol": "Q"}})
     (fault,) = [f for f in audit(model, notation_of(model), []) if "both written" in f]
+    assert "force side and force axleX are both written 'Q'" in fault
     assert "give side a symbol of its own under the model's `notation:`" in fault
-    assert "leave that axis out of the body's position" in fault
     named = _hung_beside({"side": {"symbol": "Q", "says": "the sideways force on the block"}})
     assert not [f for f in audit(named, notation_of(named), []) if "both written" in f]
 
