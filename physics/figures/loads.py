@@ -12,6 +12,7 @@ left out: the diagram is drawn in the ground's frame.
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 
 import numpy
 import sympy
@@ -26,11 +27,21 @@ from physics.wording import symbol_label
 Direction = tuple[float, float]
 _SUBSCRIPTS = dict(zip("0123456789aehijklmnoprstuvx", "₀₁₂₃₄₅₆₇₈₉ₐₑₕᵢⱼₖₗₘₙₒₚᵣₛₜᵤᵥₓ", strict=True))
 _EVALUATION_ERRORS = (TypeError, ValueError, ZeroDivisionError, OverflowError)
+_AXES = ("x", "y", depth.DEPTH)
 
 
 def _unit(x: float, y: float) -> Direction | None:
     norm = math.hypot(x, y)
     return None if not math.isfinite(norm) or norm < 1e-12 else (x / norm, y / norm)
+
+
+def _in_the_page(force: Sequence[float], what: str) -> Direction | None:
+    """The direction of a force (x, y, z) in the page; one with a part along z has none there: a
+    ValueError, never its x–y part drawn (a wrong arrow)."""
+    x, y, z = force
+    if abs(z) > 1e-9 * math.hypot(x, y, z):
+        raise ValueError(f"{what} has a part along z, out of the page")
+    return _unit(x, y)
 
 
 def spring_label(potential: PairPotential, model: Model) -> str:
@@ -74,33 +85,29 @@ def _potential_direction(
     model: Model, potential: PairPotential, body_name: str, values: Values, place: dict[sympy.Symbol, float]
 ) -> Direction | None:
     """The potential's force on the body at `place`; pulling towards the other end where it vanishes.
-    A force with a part along z has no direction in the page: a ValueError, never its x–y part drawn."""
+    A force with a part along z has no direction in the page (_in_the_page)."""
     mechanics = Mechanics(model)
     own = {d.name: d.symbol for d in mechanics.dofs}
     distance = mechanics.distance(potential, own)
     energy = potential.energy.subs(potential.distance, distance)
     where = {d.symbol: values.number(d.mapping, place) for d in mechanics.dofs}
-    symbols = [own.get(f"{axis}_{body_name}") for axis in ("x", "y", depth.DEPTH)]
+    symbols = [own.get(f"{axis}_{body_name}") for axis in _AXES]
 
     def along(expr: sympy.Expr) -> list[float]:
         return [values.number(-sympy.diff(expr, s), where) if s is not None else 0.0 for s in symbols]
 
-    def in_the_page(x: float, y: float, z: float) -> Direction | None:
-        if abs(z) > 1e-9 * math.hypot(x, y, z):
-            raise ValueError(f"a potential's force on {body_name} has a part along z, out of the page")
-        return _unit(x, y)
-
+    what = f"a potential's force on {body_name}"
     try:
         force = along(energy)
     except _EVALUATION_ERRORS:
         force = [math.nan] * 3
     if math.hypot(*force) > 1e-9 * _scale(energy, where, values):  # not a rounding error's: its way counts
-        return in_the_page(*force)
+        return _in_the_page(force, what)
     try:
         towards = along(distance)  # where the distance shrinks: towards the other end
     except _EVALUATION_ERRORS:
         return None
-    return in_the_page(*towards)
+    return _in_the_page(towards, what)
 
 
 def _scale(energy: sympy.Expr, where: dict[sympy.Symbol, float], values: Values) -> float:
@@ -158,11 +165,10 @@ def given_forces(model: Model, body_name: str, values: Values) -> list[tuple[str
             continue
         given = dict(force.components)
         try:
-            direction = _unit(
-                *(values.number(given.get(axis, sympy.Integer(0)), moving) for axis in ("x", "y"))
-            )
+            pushing = [values.number(given.get(axis, sympy.Integer(0)), moving) for axis in _AXES]
         except _EVALUATION_ERRORS:
             continue
+        direction = _in_the_page(pushing, f"a given force on {body_name}")
         if direction is not None:
             found.append((_given_label(force, values), direction))
     return found
@@ -183,7 +189,7 @@ def applied_forces(model: Model, body_name: str, values: Values) -> list[tuple[s
                 * speeds[c.velocity]
                 for c in model.coordinates
             )
-            for axis in ("x", "y")
+            for axis in _AXES
         ]
 
     for force in model.forces:
@@ -191,11 +197,11 @@ def applied_forces(model: Model, body_name: str, values: Values) -> list[tuple[s
             continue
         try:
             moving_at = velocity(moving)
-            if _unit(*moving_at) is None:  # at rest: as if moving towards increasing coordinates
+            if not math.hypot(*moving_at) >= 1e-12:  # at rest: as if moving towards increasing coordinates
                 moving_at = velocity({c.velocity: 1.0 for c in model.coordinates})
         except _EVALUATION_ERRORS:
             continue
-        direction = _unit(-moving_at[0], -moving_at[1])
+        direction = _in_the_page([-v for v in moving_at], f"the drag on {body_name}")
         if direction is not None:
             found.append((_drag_label(force), direction))
     return found

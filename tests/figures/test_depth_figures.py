@@ -5,6 +5,7 @@ else with z is drawn as its bodies side by side, and a force the side view would
 from __future__ import annotations
 
 import copy
+import math
 import re
 
 import pytest
@@ -13,7 +14,7 @@ import sympy
 from physics.engine import load_model
 from physics.figures import free_body_figure, model_figure
 from physics.figures.figure import Values
-from physics.figures.loads import potential_forces
+from physics.figures.loads import applied_forces, potential_forces
 from physics.figures.scene import compose
 from tests.engine.test_depth import CONE, CONE_SYMBOLS, LIFT, PUCK, SPRING_SYMBOLS, SPRUNG_BOB, SYMBOLS
 
@@ -126,3 +127,33 @@ def test_a_springs_force_with_a_part_along_z_has_no_direction_in_the_page(
         return
     with pytest.raises(ValueError, match="part along z"):
         potential_forces(model, "bob", values)
+
+
+@pytest.mark.parametrize(
+    ("forces", "state", "expected"),
+    [
+        ([{"body": "bob", "force": {"x": "F"}}], {}, [("F", (1.0, 0.0))]),
+        ([{"body": "bob", "force": {"x": "F", "z": "F"}}], {}, None),
+        # swinging in the page at theta = alpha = 0.6: the drag against it, along the arc
+        ([{"body": "bob", "drag": "b"}], {"theta_dot": "1"}, [("bv", (-math.cos(0.6), -math.sin(0.6)))]),
+        ([{"body": "bob", "drag": "b"}], {"phi_dot": "1"}, None),
+    ],
+    ids=["given-in-the-page", "given-along-z", "drag-swinging-in-the-page", "drag-going-round"],
+)
+def test_a_given_force_or_drag_with_a_part_along_z_has_no_direction_in_the_page(
+    forces: list[dict[str, object]],
+    state: dict[str, str],
+    expected: list[tuple[str, tuple[float, float]]] | None,
+) -> None:
+    """As a spring's pull: refused, never cut to its x–y part (the bob going round at phi = 0 moves
+    along z, and its drag is along -z)."""
+    data = {**CONE, "forces": forces, "state": {**CONE["state"], **state}}
+    symbols = {**CONE_SYMBOLS, "F": sympy.Symbol("F", positive=True), "b": sympy.Symbol("b", positive=True)}
+    model = load_model(data, symbols)
+    values = Values(model, {**VALUES, "F": 2.0, "b": 0.3})
+    if expected is not None:
+        found = applied_forces(model, "bob", values)
+        assert [(label, pytest.approx(direction)) for label, direction in found] == expected
+        return
+    with pytest.raises(ValueError, match="part along z"):
+        applied_forces(model, "bob", values)
