@@ -244,6 +244,7 @@ class AlreadyJoined:
     lose their work), and nobody signs in as that student by typing their name."""
 
     matched: str  # "name" or "email"
+    rostered: bool = False  # on the roster the instructor imported: they sign in by the link sent them
 
 
 def _same_name(a: str, b: str) -> bool:
@@ -261,10 +262,11 @@ def join(
     if course is None:
         return None
     for enrolment in courses.roster(course.id):
+        rostered = enrolment.roster_id is not None
         if email and enrolment.email.casefold() == email.casefold():
-            return AlreadyJoined("email")
+            return AlreadyJoined("email", rostered)
         if _same_name(enrolment.name, name):
-            return AlreadyJoined("name")
+            return AlreadyJoined("name", rostered)
     student = roster_identity(course.id, "join-" + secrets.token_hex(6))
     courses.enrol(course.id, student, name, email)
     session = CourseSession(course.id, student, name, secrets.token_urlsafe(32), now + SESSION_LIFETIME)

@@ -170,7 +170,12 @@ async def join(code: str, request: Request, context: LtiContextDep) -> Response:
     if joined is None:
         return page(request, "courses/join.html", {"title": "Join a course", "unknown": True}, status=404)
     if isinstance(joined, course_sessions.AlreadyJoined):
-        return page(request, "courses/join.html", {**values, "taken": joined.matched}, status=409)
+        return page(
+            request,
+            "courses/join.html",
+            {**values, "taken": joined.matched, "rostered": joined.rostered},
+            status=409,
+        )
     response = _return_link_page(request, course, joined.session.name, joined.return_token, joined=True)
     await course_cookie(response, request, context, joined.cookie, joined.session)
     return response
