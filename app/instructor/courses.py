@@ -22,6 +22,7 @@ import re
 from dataclasses import replace
 from datetime import datetime
 from typing import Any
+from urllib.parse import urlencode
 from zoneinfo import ZoneInfo
 
 from fastapi import APIRouter, Request
@@ -572,7 +573,9 @@ async def extension(course_id: RecordId, request: Request, services: ServicesDep
         service.resend_total(services.stores, services.catalog, record, student, now)
 
     await run_in_threadpool(save)
-    return RedirectResponse(f"/instructor/courses/{course_id}/gradebook", status_code=303)
+    # back to the student's own parts, with what now stands: the form alone had reset to the first student
+    shown_again = urlencode({"student": student, "extended": assignment_text})
+    return RedirectResponse(f"/instructor/courses/{course_id}/gradebook?{shown_again}", status_code=303)
 
 
 # ---- view as a student -----------------------------------------------------------------------------

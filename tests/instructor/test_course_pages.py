@@ -918,6 +918,47 @@ def test_a_ta_asking_what_only_instructors_may_do_is_refused_saying_so(
     assert f"Only the course&#39;s instructors may {action}; you are its teaching assistant." in refused.text
 
 
+def test_setting_or_removing_an_extension_says_so_with_the_students_due_date_now(
+    signed_in: TestClient, stores: Stores
+):
+    # the gradebook came back as before, its form reset to the first student: nothing said it was done
+    from datetime import UTC, datetime, timedelta
+
+    from app.courses.policy import shown
+    from app.courses.records import AssignmentSpec
+
+    course = _make_course(signed_in)
+    signed_in.post(
+        f"/instructor/courses/{course}/roster",
+        data={"csrf": csrf_of(signed_in.get(f"/instructor/courses/{course}").text), "roster": ROSTER},
+    )
+    now = datetime.now(UTC).replace(second=0, microsecond=0)
+    class_due = now - timedelta(days=1)
+    homework = stores.courses.create_assignment(
+        course, AssignmentSpec("HW 1", ("yo-yo",), now - timedelta(days=2), class_due)
+    )
+    extended = now + timedelta(days=3)
+    for due_at, said in (
+        (f"{extended.astimezone(ZoneInfo('Europe/Paris')):%Y-%m-%dT%H:%M}", "Extension saved: Alan Turing"),
+        ("", "Extension removed: Alan Turing"),
+    ):
+        sent = signed_in.post(
+            f"/instructor/courses/{course}/extensions",
+            data={
+                "csrf": csrf_of(signed_in.get(f"/instructor/courses/{course}/gradebook").text),
+                "student": f"course:{course}:s002",
+                "assignment": str(homework.id),
+                "due_at": due_at,
+            },
+        )
+        assert sent.status_code == 303, sent.text
+        book = signed_in.get(sent.headers["location"]).text
+        due = shown(extended if due_at else class_due, "Europe/Paris")
+        assert re.search(rf'role="status">{said} has HW 1 due {re.escape(due)}', book), book
+        assert f'<option value="course:{course}:s002" selected>' in book  # the form stays on them
+    assert "Extension" not in signed_in.get(f"/instructor/courses/{course}/gradebook").text.split("<h2")[0]
+
+
 @pytest.mark.parametrize(
     ("regrade_earlier", "since"),
     [("", ", granted {granted}"), ("on", ", covering the answers given before it too")],
