@@ -353,7 +353,11 @@ def _read_builder(form: Any, course: CourseRecord) -> tuple[AssignmentSpec | Non
     if opens is None or due is None:
         errors.append("Set both the opening and the due date.")
     elif due < opens:
-        errors.append("The due date is before the opening date.")
+        # moving a due date into the past meets the opening date left as it was: say which to move
+        errors.append(
+            f"The due date, {shown(due, course.timezone)}, is before the opening date,"
+            f" {shown(opens, course.timezone)}: set Opens earlier too, or the due date later."
+        )
     kind = (
         LateKind(str(form.get("late") or "closed"))
         if form.get("late") in ("closed", "penalty")

@@ -4,8 +4,10 @@ assignment, read the gradebook; and another instructor sees none of it."""
 from __future__ import annotations
 
 import csv
+import html
 import io
 import re
+from datetime import UTC, datetime
 from zoneinfo import ZoneInfo
 
 import pytest
@@ -121,6 +123,32 @@ def test_the_assignment_builder_saves_problems_in_the_chosen_order_and_dates_in_
         data={"csrf": csrf_of(form.text), "title": "", "opens_at": "", "due_at": ""},
     )
     assert refused.status_code == 422 and "Pick at least one problem" in refused.text
+
+
+def test_a_due_date_moved_before_the_opening_date_is_refused_saying_both_dates_and_what_to_move(
+    signed_in: TestClient,
+):
+    # moving an open assignment's due date into the past met "The due date is before the opening date."
+    from app.courses.policy import shown
+
+    course = _make_course(signed_in)
+    form = signed_in.get(f"/instructor/courses/{course}/assignments/new")
+    refused = signed_in.post(
+        f"/instructor/courses/{course}/assignments/new",
+        data={
+            "csrf": csrf_of(form.text),
+            "problem": ["yo-yo"],
+            "title": "Homework 1",
+            "opens_at": "2026-03-08T09:00",
+            "due_at": "2026-03-07T23:59",
+        },
+    )
+    assert refused.status_code == 422
+    assert (
+        f"The due date, {shown(datetime(2026, 3, 7, 22, 59, tzinfo=UTC), 'Europe/Paris')}, is before the"
+        f" opening date, {shown(datetime(2026, 3, 8, 8, 0, tzinfo=UTC), 'Europe/Paris')}: set Opens earlier"
+        " too, or the due date later." in html.unescape(refused.text)
+    )
 
 
 def test_the_gradebook_page_links_its_csv_and_another_instructor_sees_nothing(
