@@ -457,6 +457,7 @@ def assignment_banner(opened: access.Opening) -> dict[str, Any] | None:
         "course": opened.course,
         "assignment": opened.assignment,
         "due": shown(opened.due, opened.course.timezone),
+        "extended": opened.extension is not None,
         "late_policy": late_policy_text(opened.assignment.spec.late),
         "accepting": opened.accepting,
         "why": opened.why,

@@ -9,7 +9,7 @@ from datetime import UTC, datetime, timedelta
 import pytest
 from fastapi.testclient import TestClient
 
-from app.courses.policy import shown
+from app.courses.policy import granted, shown
 from app.courses.records import (
     AssignmentRecord,
     AssignmentSpec,
@@ -250,3 +250,20 @@ def test_an_extension_set_on_the_gradebook_page_regrades_an_earlier_late_answer_
     assert f"best score {score:g} of 1" in student.get("/p/yo-yo").text  # the page counts as the gradebook
     _file_right_answer(stores, identity)  # within the extension: in full either way
     assert _gradebook_score(signed_in, assignment, identity) == 1.0
+
+
+def test_the_problem_pages_banner_says_a_due_date_is_the_students_extension(
+    signed_in: TestClient, stores: Stores
+):
+    # the banner gave the extended date bare, beside "answered after the due date" on the answers before it,
+    # where the course's and the assignment's pages say "(your extension)"
+    now = datetime.now(UTC).replace(second=0, microsecond=0)
+    spec = AssignmentSpec("HW 1", ("yo-yo",), now - timedelta(days=2), now - timedelta(hours=1), PENALTY)
+    student, identity, assignment = _joined_student(signed_in, stores, spec)
+    banner = re.compile(r'<aside class="notice assignment-banner".*?</aside>', re.S)
+    before = banner.search(student.get("/p/yo-yo").text)
+    assert before and "your extension" not in before.group(0)
+    due = now + timedelta(days=2)
+    stores.courses.set_extension(assignment.id, identity, granted(None, due, now, regrade_earlier=False))
+    after = banner.search(student.get("/p/yo-yo").text)
+    assert after and f"due <strong>{shown(due, 'UTC')}</strong> (your extension)." in after.group(0)
