@@ -696,7 +696,8 @@ def test_one_students_gradebook_names_the_problems_by_title_and_sets_the_extensi
     page = signed_in.get(f"/instructor/courses/{course}/gradebook", params={"student": alan}).text
     title = stores.problems.get("yo-yo").document["title"]
     assert re.search(
-        rf'<td[^>]*><a href="/instructor/problems/yo-yo">{re.escape(title)}</a></td><td[^>]*>acceleration</td>',
+        rf'<td[^>]*><a href="/instructor/problems/yo-yo">{re.escape(title)}</a></td>'
+        r"<td[^>]*>Part 1: <code>acceleration</code></td>",
         page,
     )
     assert f'<option value="{alan}" selected>Alan Turing' in page  # not the roster's first, Ada
@@ -944,6 +945,32 @@ def test_a_ta_asking_what_only_instructors_may_do_is_refused_saying_so(
     assert refused.status_code == 403
     assert "For the course&#39;s instructors" in refused.text
     assert f"Only the course&#39;s instructors may {action}; you are its teaching assistant." in refused.text
+
+
+def test_a_students_parts_in_the_gradebook_are_numbered_as_their_problem_page_numbers_them(
+    signed_in: TestClient, stores: Stores
+):
+    # they were the engine's ids alone (acceleration_numeric), while the student asks about "part 3"
+    from datetime import UTC, datetime, timedelta
+
+    from app.courses.records import AssignmentSpec
+
+    course = _make_course(signed_in)
+    signed_in.post(
+        f"/instructor/courses/{course}/roster",
+        data={"csrf": csrf_of(signed_in.get(f"/instructor/courses/{course}").text), "roster": ROSTER},
+    )
+    now = datetime.now(UTC)
+    stores.courses.create_assignment(course, AssignmentSpec("HW 1", ("yo-yo",), now, now + timedelta(days=1)))
+    book = signed_in.get(
+        f"/instructor/courses/{course}/gradebook", params={"student": f"course:{course}:s001"}
+    )
+    parts = re.findall(r'data-label="Part">Part (\d+): <code>(\w+)</code>', book.text)
+    assert parts == [
+        ("1", "acceleration"),
+        ("2", "tension"),
+        ("3", "acceleration_numeric"),
+    ]
 
 
 def test_setting_or_removing_an_extension_says_so_with_the_students_due_date_now(
