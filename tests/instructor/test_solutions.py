@@ -213,6 +213,7 @@ def test_late_work_earns_nothing_once_the_student_has_opened_the_worked_solution
     student, course, who = _late_course_student(signed_in, stores)
     asked = student.get("/p/yo-yo/solution").text
     assert "stays as it is now" in asked and 'id="solution-answers"' not in asked  # asked first
+    assert '<p class="actions"><button type="submit">Open the worked solution' in asked  # apart from "Back"
     file_submissions(stores, [(who, "acceleration", "g", RIGHT)])  # before opening: counts, late
     assert student.post("/p/yo-yo/solution", data={"csrf": "forged"}).status_code == 403
     assert stores.courses.solutions_opened(who) == {}
