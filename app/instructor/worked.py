@@ -96,8 +96,8 @@ class MethodInfo:
 @dataclass(frozen=True)
 class ComparisonRow:
     method: str
-    equations: int
-    unknowns: int
+    equations: int | None  # None where its worked solution does not count them (shown "—", said why)
+    unknowns: int | None
     forces: str  # Markdown: "$N_{1}$, $N_{2}$" or "none"
     steps: int
     answers: str  # the numbers of the parts it answers, "1, 2, 3"
@@ -107,6 +107,9 @@ class ComparisonRow:
 class Comparison:
     rows: tuple[ComparisonRow, ...]
     advice: str  # Markdown: which method and why, for this problem
+    # Markdown, under the table: each worked method it leaves out, as it answers no part, and why; and
+    # those whose worked solutions do not count their equations and unknowns (an impact's, an energy's)
+    notes: tuple[str, ...] = ()
 
 
 def _split_top_level(tex: str, separators: tuple[str, ...]) -> list[str]:
@@ -361,10 +364,14 @@ def worked_solutions(
         for i, report in enumerate(ordered([r for r in derivation.methods if r.steps]), start=1)
     )
     useful = [m for m in infos if m.answers]
-    return infos, (compare(useful, compiled) if len(useful) >= 2 else None)
+    idle = [m for m in infos if not m.answers]
+    return infos, (compare(useful, compiled, idle) if len(useful) >= 2 else None)
 
 
-def compare(methods: Sequence[MethodInfo], compiled: CompiledProblem) -> Comparison:
+def compare(
+    methods: Sequence[MethodInfo], compiled: CompiledProblem, idle: Sequence[MethodInfo] = ()
+) -> Comparison:
+    """The table of `methods`; `idle`, worked methods that answer no part, are left out of it, saying why."""
     parts = compiled.document.parts
     rows = []
     for m in methods:
@@ -373,20 +380,41 @@ def compare(methods: Sequence[MethodInfo], compiled: CompiledProblem) -> Compari
         rows.append(
             ComparisonRow(
                 method=m.title,
-                equations=m.equations,
-                unknowns=m.unknowns,
+                equations=m.equations if _counted(m) else None,
+                unknowns=m.unknowns if _counted(m) else None,
                 forces=", ".join(f"${f}$" for f in m.constraint_forces) or "none",
                 steps=len(m.steps),
                 answers=", ".join(answered) or "—",
             )
         )
-    return Comparison(tuple(rows), _advice(methods))
+    notes = [
+        f"{m.title} {_verb([m], 'answer', 'answers')} no part here"
+        + (f" ({'; '.join(n.rstrip('.') for n in m.notes)})" if m.notes else "")
+        + f", so the table leaves {'it' if m.name in _SINGULAR else 'them'} out."
+        for m in idle
+    ]
+    uncounted = [m for m in methods if not _counted(m)]
+    if uncounted:
+        several = len(uncounted) > 1
+        its = "their" if several else "its"
+        notes.append(
+            f"—: the worked solution{'s' if several else ''} by {_join([m.title for m in uncounted])} "
+            f"{'do' if several else 'does'} not number {its} equations against {its} unknowns here; {its} "
+            "steps are set out below."
+        )
+    return Comparison(tuple(rows), _advice(methods), tuple(notes))
+
+
+def _counted(method: MethodInfo) -> bool:
+    """Whether the method's worked solution counts its equations against its unknowns: a count with
+    none of one or the other ("4 equations in 0 unknowns") would be false."""
+    return method.equations > 0 and method.unknowns > 0
 
 
 def _advice(methods: Sequence[MethodInfo]) -> str:
     """Which method suits this problem and why: the fewest equations for the motion, and who gives the
     constraint forces asked for."""
-    motion = [m for m in methods if m.equations]
+    motion = [m for m in methods if _counted(m)]
     if not motion:
         return ""
     quickest = min(motion, key=lambda m: (m.equations + m.unknowns, len(m.steps)))

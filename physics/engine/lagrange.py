@@ -188,6 +188,9 @@ class LagrangeMethod(Method):
         )
         return mass, stiffness
 
+    def mode_unknowns(self) -> list[sympy.Basic]:
+        return list(self.system[1])
+
     def frequency(self, coordinate: str, equilibrium: sympy.Expr) -> sympy.Expr:
         """Linearized Lagrange equations M q'' + K q = 0 about the equilibrium: omega^2 = eig(M^-1 K)."""
         mech = self.mech

@@ -68,12 +68,17 @@ class Method(ABC):
         return str(typeset.latex(tidy.single_angles(expr), symbol_names=self.mech.latex_names))
 
     def step(
-        self, title: str, latex: str, kind: StepKind = StepKind.WORK, unknowns: Sequence[sympy.Basic] = ()
+        self,
+        title: str,
+        latex: str,
+        kind: StepKind = StepKind.WORK,
+        unknowns: Sequence[sympy.Basic | str] = (),
     ) -> None:
-        """Log a line of the worked solution (once per title), with the symbols its formulas printed."""
+        """Log a line of the worked solution (once per title), with the symbols its formulas printed; an
+        unknown given as TeX (`\\omega^{2}`) is no symbol of the model's."""
         if title not in self._logged:
             self._logged.add(title)
-            written = tuple(self.tex(u) for u in unknowns)
+            written = tuple(u if isinstance(u, str) else self.tex(u) for u in unknowns)
             symbols = tuple(sorted(str(s) for s in self._printed))
             self.steps.append(Step(title, latex, kind, written, symbols))
         self._printed = set()
@@ -166,6 +171,11 @@ class Method(ABC):
         """(M, K) of the small oscillations about the equilibrium `point`, as this method sees them."""
         raise NotApplicable(f"{self.title} does not give normal modes")
 
+    def mode_unknowns(self) -> list[sympy.Basic]:
+        """The unknowns of the equations `mode_matrices` linearized, where the method wrote them as
+        equations of its own (Lagrange's): no solve lists them, as the modes need no solve."""
+        return []
+
     @cached_property
     def mode_frequencies(self) -> list[sympy.Expr]:
         """Squared normal-mode frequencies, lowest first."""
@@ -175,6 +185,7 @@ class Method(ABC):
         mass, stiffness = self.mode_matrices(point)
         squares = modes.squared_frequencies(self.model, mass, stiffness)
         drift = len(squares) < mass.shape[0]  # a coordinate V leaves free, or the bodies moving together
+        # the frequency equation is an equation of the method's, with omega^2 its unknown: the page counts it
         self.step(
             "Normal modes: the mass matrix $\\mathbf{M}$ and stiffness matrix $\\mathbf{K}$ at the equilibrium"
             + (" (the root $\\omega = 0$, a free drift with no restoring force, left out)" if drift else ""),
@@ -185,6 +196,8 @@ class Method(ABC):
             + r"\Rightarrow \omega^2 \in \{"
             + ", ".join(self.tex(v) for v in squares)
             + r"\}",
+            StepKind.EQUATION,
+            [*self.mode_unknowns(), r"\omega^{2}"],
         )
         return squares
 
