@@ -28,6 +28,7 @@ from app.db.records import ProblemRecord
 from app.derivation import DerivationFailed, DerivationPool, DerivationRefused, unpack
 from app.errors import GraderFault, Unavailable
 from app.grading.processes import PoolError
+from app.instructor.worked import body_captions
 from app.shipped_bank import ShippedBank, load_shipped, shipped_documents, vouched_documents
 from app.storage import CompiledCache, CompiledEntry, Stores
 from physics.checking import CheckJob
@@ -550,13 +551,18 @@ class Catalog:
         model, values, title = drawn
         return model_figure(model, values, title=title)
 
-    def free_body_figures(self, problem_id: str, student: str) -> tuple[str, ...]:
-        """One free-body diagram (SVG) per body of the problem's model, with this student's values."""
+    def free_body_figures(self, problem_id: str, student: str) -> tuple[tuple[str, str], ...]:
+        """One free-body diagram per body of the problem's model, with this student's values: (its
+        caption, the body's words as the worked solutions say them (Markdown); the SVG)."""
         drawn = self._model_and_values(problem_id, student)
         if drawn is None:
             return ()
         model, values, title = drawn
-        return tuple(free_body_figure(model, body.name, values, title=title) for body in model.bodies)
+        captions = body_captions(self.document(self.get(problem_id)), model)
+        return tuple(
+            (captions[body.name], free_body_figure(model, body.name, values, title=title))
+            for body in model.bodies
+        )
 
     def _model_and_values(self, problem_id: str, student: str) -> tuple[Model, dict[str, float], str] | None:
         try:

@@ -22,7 +22,8 @@ from decimal import Decimal
 import sympy
 
 from physics import typeset
-from physics.engine.notation import Notation, fill_bodies
+from physics.engine.model import Model
+from physics.engine.notation import Notation, fill_bodies, notation_of
 from physics.engine.results import Derivation, MethodReport, StepKind
 from physics.errors import PhyscheckError
 from problems.compiled import CompiledNumericPart, CompiledProblem
@@ -143,6 +144,24 @@ def body_words(doc: ProblemDocument, notation: Notation, masses: Mapping[str, st
         if match and words.get(body, "").startswith("the ") and not _authored(notation, body):
             words[body] = "the " + match.group(1).rstrip(".")
     return words
+
+
+def body_captions(doc: ProblemDocument, model: Model) -> dict[str, str]:
+    """Each body's caption under its free-body diagram: its words, with its own mass symbol where the
+    words do not already write one ("the wedge $M$"), so a reader knows which body each one shows."""
+    notation = notation_of(model)
+    words = body_words(doc, notation, notation.masses)
+    return {
+        body.name: words[body.name]
+        + (
+            f" ${typeset.latex(body.mass)}$"
+            if isinstance(body.mass, sympy.Symbol)
+            and [b.mass for b in model.bodies].count(body.mass) == 1
+            and "$" not in words[body.name]
+            else ""
+        )
+        for body in model.bodies
+    }
 
 
 def _authored(notation: Notation, body: str) -> bool:

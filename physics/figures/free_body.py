@@ -38,6 +38,9 @@ ARROW = 2.2
 RIGID = 0.8  # drawn radius of a rigid body
 FORCE_LABEL = 0.55  # force labels read at the size of the page's text, the diagram scaled to a column
 SIDE_BY_SIDE = 0.5  # how far apart arrows along one line are drawn
+# pixels to the model's unit: a page shows every body's diagram at this one size, so the arrows of one
+# compare with another's (each scaled to its box, a lone weight's arrow was drawn the longest)
+SCALE = 36.0
 
 
 @dataclass(frozen=True)
@@ -481,4 +484,4 @@ def free_body_figure(model: Model, body_name: str, given: Mapping[str, float], *
     description = f"Forces on {label}: " + ("; ".join(said) if said else "none") + "."
     if across:
         description = f"Forces on {label}: not drawn, as where the problem is drawn {label} is off the page or pulled across it (along z)."
-    return canvas.svg(f"Free-body diagram: {title}, {label}", description)
+    return canvas.svg(f"Free-body diagram: {title}, {label}", description, unit=SCALE)

@@ -167,8 +167,9 @@ class Canvas:
             q = (p[0] + 0.25 * nx - 0.2 * ux, p[1] + 0.25 * ny - 0.2 * uy)
             self.line(p, q, width=0.03)
 
-    def svg(self, title: str, description: str, *, margin: float = 0.4) -> str:
-        """The SVG document: role img, named by its <title>, described by its <desc>."""
+    def svg(self, title: str, description: str, *, margin: float = 0.4, unit: float = 40.0) -> str:
+        """The SVG document: role img, named by its <title>, described by its <desc>; `unit` pixels to
+        the drawing's unit, its size where a page does not scale it."""
         if not self.xs:
             self._extend((0.0, 0.0), (1.0, 1.0))
         left, right = min(self.xs) - margin, max(self.xs) + margin
@@ -179,7 +180,7 @@ class Canvas:
         ident = "figure-" + hashlib.sha256((title + description).encode()).hexdigest()[:10]
         return (
             f'<svg xmlns="http://www.w3.org/2000/svg" viewBox="{view}" role="img" '
-            f'width="{width * 40:.0f}" height="{height * 40:.0f}" '
+            f'width="{width * unit:.0f}" height="{height * unit:.0f}" '
             f'aria-labelledby="{ident}-title {ident}-desc" class="figure">'
             f'<title id="{ident}-title">{escape(title)}</title><desc id="{ident}-desc">{escape(description)}</desc>'
             + "".join(self.elements)

@@ -236,6 +236,30 @@ def test_a_rod_on_an_axle_shows_the_axle_holding_it_in_its_free_body_diagram(
     assert len(diagrams) == 1 and "R at 90°" in diagrams[0] and "mg at -90°" in diagrams[0], diagrams
 
 
+def test_each_free_body_diagram_is_captioned_with_its_body_and_all_are_drawn_at_one_scale(
+    settings: Settings, pages_pool: GradingPool, tmp_path: Path
+) -> None:
+    """Nothing said which body each diagram showed, and each was scaled to its own box, so a lone
+    weight's arrow could look longer than another body's heavier load."""
+    shutil.copytree(BANK_DIR / "moving-wedge", tmp_path / "moving-wedge")
+    with TestClient(make_app(settings.model_copy(update={"bank_dir": tmp_path}), pages_pool)) as client:
+        sign_in(client, new_key(stores_of(client), "instructor", "Prof Ada"))
+        html = client.get("/instructor/problems/moving-wedge/solution").text
+    figures = re.findall(
+        r'<figure class="free-body">\s*<svg[^>]*viewBox="\S+ \S+ ([\d.]+) [\d.]+"[^>]*width="(\d+)"'
+        r".*?</svg><figcaption>(.*?)</figcaption>",
+        html,
+        re.S,
+    )
+    # each body's words and its own mass, the symbol read by its MathML's alttext
+    captions = sorted(
+        re.sub(r'<math[^>]*alttext="([^"]*)".*?</math>', r"\1", c, flags=re.S) for *_, c in figures
+    )
+    assert captions == ["the block m", "the wedge M"], captions
+    scales = {round(int(pixels) / float(units)) for units, pixels, _ in figures}
+    assert len(scales) == 1, scales
+
+
 def test_a_students_variant_shows_their_values_and_expected_numbers(signed_in: TestClient):
     services = signed_in.app.state.services  # type: ignore[attr-defined]
     record = services.catalog.get(PROBLEM)
