@@ -188,8 +188,17 @@ def format_number(value: Decimal) -> str:
 
 
 def format_quantity(value: Decimal, unit: str) -> str:
-    """`2.5 kg`, `35°`, `0.031` (dimensionless), `9.81 m/s²`."""
-    number = format_number(value)
+    """`2.5 kg`, `35°`, `0.031` (dimensionless), `9.81 m/s²`: text that is also read back (an API's
+    value, a CSV's cell), so a negative one keeps the hyphen-minus a keyboard types."""
+    return _with_unit(format_number(value), unit)
+
+
+def shown_quantity(value: Decimal, unit: str) -> str:
+    """`format_quantity` as a typeset page shows it, with a true minus: `−3.044 m/s²`."""
+    return _with_unit(format_number(value).replace("-", "\u2212"), unit)
+
+
+def _with_unit(number: str, unit: str) -> str:
     if unit in _DEGREE_SPELLINGS:
         return f"{number}°"
     if unit in {"1", ""}:

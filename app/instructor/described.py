@@ -14,7 +14,7 @@ from problems.compiled import CompiledProblem
 from problems.kinds import Part, kind_of
 from problems.kinds.base import LimitInfo, MistakeInfo, PartInfo
 from problems.kinds.numeric import SHOWN_FIGURES, tolerance_text
-from problems.variants import Variant, format_quantity
+from problems.variants import Variant, shown_quantity
 
 __all__ = [
     "SHOWN_FIGURES",
@@ -61,7 +61,7 @@ def describe(compiled: CompiledProblem, variant: Variant | None = None) -> Descr
     given: tuple[tuple[str, str], ...] = ()
     if variant is not None:
         given = tuple(
-            (name, format_quantity(value, doc.given[name].unit))
+            (name, shown_quantity(value, doc.given[name].unit))
             for name, value in variant.values.items()
             if name in doc.given
         )

@@ -28,7 +28,7 @@ from physics.engine.results import Derivation, MethodReport, StepKind
 from physics.errors import PhyscheckError
 from problems.compiled import CompiledNumericPart, CompiledProblem
 from problems.schema import ProblemDocument
-from problems.variants import Variant, evaluate_reference, format_quantity, si_values
+from problems.variants import Variant, evaluate_reference, shown_quantity, si_values
 
 # The seed's order: vectorial methods first, then the scalar ones, Lagrange's last.
 ORDER = ("newton", "frames", "dalembert", "conservation", "lagrange")
@@ -257,8 +257,8 @@ def _checks(
             CheckInfo(
                 number,
                 typeset.latex(result),
-                format_quantity(_round(mine), part.units),
-                format_quantity(_round(expected), part.units),
+                shown_quantity(_round(mine), part.units),
+                shown_quantity(_round(expected), part.units),
                 agrees,
             )
         )

@@ -17,6 +17,7 @@ from problems.variants import (
     fill_statement,
     fixed_variant,
     format_quantity,
+    shown_quantity,
 )
 from tests.problems.documents import spring
 
@@ -129,3 +130,21 @@ def test_student_view_names_the_symbols_each_part_may_use() -> None:
 def test_variant_for_another_problem_fills_nothing() -> None:
     stray = Variant("other", 1, "alice", {"q": Decimal(1)})
     assert fill_statement("see {m}", doc(), stray) == "see {m}"
+
+
+# (value, unit, as a page shows it, as an API's value and a CSV's cell read it back)
+SHOWN = [
+    (Decimal("-3.044"), "m/s^2", "\u22123.044 m/s²", "-3.044 m/s²"),
+    (Decimal("-1.5E-5"), "m", "\u22121.5 × 10^\u22125 m", "-1.5 × 10^-5 m"),
+    (Decimal("-35"), "deg", "\u221235°", "-35°"),
+    (Decimal("2.5"), "kg", "2.5 kg", "2.5 kg"),
+]
+
+
+@pytest.mark.parametrize(("value", "unit", "shown", "read_back"), SHOWN)
+def test_a_page_shows_a_negative_value_with_a_true_minus_and_read_back_text_keeps_the_hyphen(
+    value: Decimal, unit: str, shown: str, read_back: str
+) -> None:
+    # a hand-out read "Part 4: -3.044 m/s²", a hyphen where a typeset page has a minus
+    assert shown_quantity(value, unit) == shown
+    assert format_quantity(value, unit) == read_back

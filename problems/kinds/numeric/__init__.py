@@ -58,7 +58,7 @@ from problems.kinds.base import (
     explain,
 )
 from problems.kinds.symbolic import described_mistake
-from problems.variants import evaluate_reference, format_number, format_quantity, si_values, unit_scale
+from problems.variants import evaluate_reference, format_number, shown_quantity, si_values, unit_scale
 
 if TYPE_CHECKING:
     from problems.compiled import CompiledProblem
@@ -446,8 +446,8 @@ def _shown_value(
     except SpecError as error:
         return None, None, error.message
     # A part graded to n significant figures shows the value an answer must equal, by the same rule.
-    shown = format_quantity(round_sigfigs(value, part.tolerance.sigfigs or SHOWN_FIGURES), part.units)
-    return shown, format_quantity(value, part.units), None
+    shown = shown_quantity(round_sigfigs(value, part.tolerance.sigfigs or SHOWN_FIGURES), part.units)
+    return shown, shown_quantity(value, part.units), None
 
 
 def _described_mistakes(
@@ -474,7 +474,7 @@ def _described_mistakes(
             if value is None:
                 continue
             shown = round_sigfigs(value, part.tolerance.sigfigs or SHOWN_FIGURES)
-            info = dataclasses.replace(info, value=format_quantity(shown, part.units))
+            info = dataclasses.replace(info, value=shown_quantity(shown, part.units))
         found.append(info)
     return tuple(found)
 
