@@ -147,21 +147,23 @@ def body_words(doc: ProblemDocument, notation: Notation, masses: Mapping[str, st
 
 
 def body_captions(doc: ProblemDocument, model: Model) -> dict[str, str]:
-    """Each body's caption under its free-body diagram: its words, with its own mass symbol where the
-    words do not already write one ("the wedge $M$"), so a reader knows which body each one shows."""
+    """Each body's caption under its free-body diagram: its words, with the letter the figures name it
+    by (its own mass, or the notation's) where the words do not already write one ("the wedge $M$"),
+    so a reader knows which body each one shows."""
     notation = notation_of(model)
     words = body_words(doc, notation, notation.masses)
-    return {
-        body.name: words[body.name]
-        + (
-            f" ${typeset.latex(body.mass)}$"
-            if isinstance(body.mass, sympy.Symbol)
-            and [b.mass for b in model.bodies].count(body.mass) == 1
-            and "$" not in words[body.name]
-            else ""
+    author = {key: symbol for key, symbol, _ in model.notation if symbol}
+    masses = [b.mass for b in model.bodies]
+    captions = {}
+    for body in model.bodies:
+        letter = author.get(body.name) or (
+            body.mass.name if isinstance(body.mass, sympy.Symbol) and masses.count(body.mass) == 1 else None
         )
-        for body in model.bodies
-    }
+        said = words[body.name]
+        captions[body.name] = (
+            said if letter is None or "$" in said else f"{said} ${typeset.latex(sympy.Symbol(letter))}$"
+        )
+    return captions
 
 
 def _authored(notation: Notation, body: str) -> bool:

@@ -502,8 +502,14 @@ def _cartesian(model: Model, taken: set[str], coordinates: Mapping[str, Name]) -
     subscripted form where the bare one is taken (a coordinate x that is the block's x)."""
     single = len(model.bodies) == 1
     result: dict[str, Name] = {}
+    letters = {key: symbol for key, symbol, _ in model.notation if symbol}
     for body in model.bodies:
-        label = body.name[1:] if re.fullmatch(r"[A-Za-z]\d+", body.name) else rf"\mathrm{{{body.name}}}"
+        if body.name in letters:  # the letter the author gives the body, as the figures name it
+            label = typeset.latex(sympy.Symbol(letters[body.name]))
+        elif re.fullmatch(r"[A-Za-z]\d+", body.name):
+            label = body.name[1:]
+        else:
+            label = rf"\mathrm{{{body.name}}}"
         for key in body.cartesian_names():
             axis = key.split("_", 1)[0]
             base = r"\varphi" if axis == "phi" else axis

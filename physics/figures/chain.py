@@ -10,7 +10,7 @@ import sympy
 
 from physics.engine.model import Body, Constraint, Model
 from physics.figures.figure import Figure, body_label
-from physics.figures.geometry import bodies_in
+from physics.figures.geometry import bodies_in, coordinate_label
 from physics.figures.svg import FILLS, Point
 from physics.wording import symbol_label
 
@@ -82,7 +82,7 @@ def draw_pendulum_chain(figure: Figure, model: Model, chain: list[tuple[Body, Co
             middle = -math.pi / 2 + angle / 2
             canvas.text(
                 (pivot[0] + 1.4 * math.cos(middle), pivot[1] + 1.4 * math.sin(middle)),
-                symbol_label(coordinate.name),
+                coordinate_label(model, coordinate.name),
                 size=0.36,
             )
         length = _length_symbol(rod, model)
@@ -98,7 +98,7 @@ def draw_pendulum_chain(figure: Figure, model: Model, chain: list[tuple[Body, Co
             f"{body_label(body, model)} hangs from {above} on a light rod"
             + (f" of length {symbol_label(length.name)}" if length is not None else "")
             + (
-                f", at the angle {symbol_label(coordinate.name)} from the vertical"
+                f", at the angle {coordinate_label(model, coordinate.name)} from the vertical"
                 if coordinate is not None
                 else ""
             )
@@ -111,9 +111,10 @@ def draw_pendulum_chain(figure: Figure, model: Model, chain: list[tuple[Body, Co
             fill=FILLS[index % len(FILLS)],
         )  # fmt: skip
         label = body_label(body, model)
-        if label != body.name and len(label) <= 3:
+        own_mass = isinstance(body.mass, sympy.Symbol) and label == symbol_label(body.mass.name)
+        if own_mass and len(label) <= 3:
             canvas.text(bob, label)
-        else:  # equal masses: the mass inside, the name beside
+        else:  # equal masses: the mass inside, the name (or the notation's letter) beside
             if isinstance(body.mass, sympy.Symbol):
                 canvas.text(bob, symbol_label(body.mass.name), size=0.36)
             canvas.text((bob[0] + half + 0.15, bob[1] - 0.1), label, size=0.32, anchor="start")

@@ -126,6 +126,11 @@ class Values:
 
 
 def body_label(body: Body, model: Model) -> str:
+    """The body as a figure names it: the symbol the model's notation gives it, else its own mass's
+    symbol, else its name (which the notation can spare a reader: two bobs of one mass m)."""
+    symbol = next((symbol for key, symbol, _ in model.notation if key == body.name and symbol), None)
+    if symbol is not None:
+        return symbol_label(symbol)
     masses = [b.mass for b in model.bodies]
     if isinstance(body.mass, sympy.Symbol) and masses.count(body.mass) == 1:
         return symbol_label(body.mass.name)

@@ -292,9 +292,18 @@ def test_newtons_constraints_for_the_accelerations_say_which_constraint_is_diffe
         ("moving-wedge", {"wedge": "the wedge", "block": "the block"}),
         ("yo-yo", {"yoyo": "the yo-yo"}),  # the author's words
         ("cart-collision", {"cart1": "the cart $m_{1}$", "cart2": "the cart $m_{2}$"}),  # by their masses
-        ("double-pendulum", {"bob1": "bob 1", "bob2": "bob 2"}),  # one mass m: by their numbers
+        ("double-pendulum", {"bob1": "the upper bob", "bob2": "the lower bob"}),  # the author's words
     ],
 )
 def test_bodies_whose_names_say_alike_are_told_apart(problem: str, said: Mapping[str, str]) -> None:
     # two carts were each "the cart": "Newton's second law for the cart, along x", twice, for two bodies
     assert dict(notation_of(_model(problem)).bodies) == said
+
+
+def test_bodies_of_one_mass_whose_names_say_alike_are_told_apart_by_their_numbers() -> None:
+    # the double pendulum without the words its notation gives: one mass m, so bob 1 and bob 2
+    doc = bank_documents()["double-pendulum"]
+    assert doc.model is not None
+    unsaid = doc.model_copy(update={"model": {k: v for k, v in doc.model.items() if k != "notation"}})
+    model = load_doc_model(unsaid, symbol_table(unsaid))
+    assert dict(notation_of(model).bodies) == {"bob1": "bob 1", "bob2": "bob 2"}

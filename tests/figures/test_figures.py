@@ -53,8 +53,8 @@ EXPECTED = {
     "incline-push-friction": ({"m", "θ", "μ", "F"}, "F pushes m"),
     "pushed-blocks": ({"m₁", "m₂", "μ", "F"}, "F pushes m₁"),
     "double-pendulum": (
-        {"bob1", "bob2", "m", "L", "p₁", "p₂"},
-        "bob2 hangs from bob1 on a light rod of length L",
+        {"A", "B", "m", "L", "φ₁", "φ₂"},  # the letters its notation gives, not bob1 and p1
+        "B hangs from A on a light rod of length L",
     ),
     "falling-drag": ({"pebble", "ball", "m", "bv", "cv²", "v"}, "pebble moving down at v, with drag bv"),
     "movable-pulley": ({"m₁", "m₂"}, "under a light movable pulley carrying m₂"),

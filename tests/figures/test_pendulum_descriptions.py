@@ -32,7 +32,7 @@ DESCRIPTIONS = {
         "it hangs (dashed), and sticks.",
         ("block",),
     ),
-    "double-pendulum": ("bob1 hangs from a fixed pivot", ("block",)),
+    "double-pendulum": ("A hangs from a fixed pivot", ("block", "bob1", "p₁")),
 }
 
 
@@ -48,8 +48,9 @@ def test_pendulum_description_names_the_body_and_its_motion(
 
 def test_double_pendulum_describes_both_bobs() -> None:
     description = figure_of("double-pendulum").findtext(f"{SVG}desc", "")
-    assert "bob1 hangs from a fixed pivot" in description
-    assert "bob2 hangs from bob1" in description
+    # by the letters its notation gives the bobs and the angles, never the model's names bob1 and p1
+    assert "A hangs from a fixed pivot" in description and "at the angle φ₁" in description
+    assert "B hangs from A" in description and "at the angle φ₂" in description
 
 
 @pytest.mark.parametrize(
