@@ -42,6 +42,7 @@ from app.courses.records import (
     LateKind,
     LatePolicy,
     SolutionRelease,
+    StaffRole,
 )
 from app.courses.roster_csv import parse_roster
 from app.db.errors import ProblemNotFound
@@ -149,10 +150,14 @@ async def create_course(request: Request, services: ServicesDep, who: Visitor) -
 # ---- one course: roster, links, assignments --------------------------------------------------------
 
 
-def _course_context(services: Services, course: CourseRecord) -> dict[str, Any]:
+def _course_context(services: Services, who: auth.Visitor, course: CourseRecord) -> dict[str, Any]:
     assignments = services.stores.courses.assignments(course.id)
+    role = access.course_role(services.stores, who.principal, course.id)
     return {
         "course": course,
+        # a teaching assistant is refused the roster's import, the join code and the assignments'
+        # changes: the page offers them only to the course's instructors
+        "instructs": role is StaffRole.INSTRUCTOR,
         "roster": services.stores.courses.roster(course.id),
         "staff": services.stores.courses.staff(course.id),
         "assignments": [
@@ -173,7 +178,7 @@ def _course_context(services: Services, course: CourseRecord) -> dict[str, Any]:
 @router.get("/courses/{course_id}")
 async def course_page(course_id: RecordId, request: Request, services: ServicesDep, who: Visitor) -> Response:
     def load() -> dict[str, Any]:
-        return _course_context(services, _course(services, who, course_id))
+        return _course_context(services, who, _course(services, who, course_id))
 
     values = await run_in_threadpool(load)
     return await _page(
@@ -196,14 +201,14 @@ async def import_roster(
 
     def save() -> dict[str, Any]:
         course = _course(services, who, course_id, only_instructors_may="import its roster")
-        values = _course_context(services, course)
+        values = _course_context(services, who, course)
         if problems or not rows:
             values["roster_problems"] = problems or []
             values["roster_text"] = text
             values["roster_empty"] = not problems
             return values
         done = services.stores.courses.import_roster(course_id, rows)
-        values = _course_context(services, course)
+        values = _course_context(services, who, course)
         values["imported"] = done
         return values
 

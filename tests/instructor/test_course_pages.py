@@ -1014,6 +1014,36 @@ def test_setting_or_removing_an_extension_says_so_with_the_students_due_date_now
     assert "Extension" not in signed_in.get(f"/instructor/courses/{course}/gradebook").text.split("<h2")[0]
 
 
+def test_a_tas_course_page_offers_only_what_a_ta_may_do(signed_in: TestClient, stores: Stores):
+    # a TA was shown the roster's import, the join code's and the assignments' forms, each refused (403)
+    from datetime import UTC, datetime, timedelta
+
+    from app.courses.records import AssignmentSpec
+
+    course = _make_course(signed_in)
+    page = signed_in.get(f"/instructor/courses/{course}")
+    signed_in.post(
+        f"/instructor/courses/{course}/roster", data={"csrf": csrf_of(page.text), "roster": ROSTER}
+    )
+    now = datetime.now(UTC)
+    homework = stores.courses.create_assignment(
+        course, AssignmentSpec("HW 1", ("yo-yo",), now - timedelta(days=1), now + timedelta(days=1))
+    )
+    refused = {path.format(course=course, assignment=homework.id) for _, path, _ in TA_REFUSED_PAGES}
+    ta = TestClient(signed_in.app, follow_redirects=False)
+    ta_key = new_key(stores, "instructor", "Tess")
+    stores.courses.add_staff(course, f"key:{stores.keys.list()[-1].id}", StaffRole.TA)
+    sign_in(ta, ta_key)
+    for client, teaches in ((signed_in, True), (ta, False)):
+        html = client.get(f"/instructor/courses/{course}").text
+        offered = set(re.findall(r'(?:href|action)="([^"]+)"', html))
+        assert bool(offered & refused) is teaches, offered & refused
+        # what a TA may do stays: the roster and the assignments read, sign-in links, the gradebook
+        assert "Ada Lovelace" in html and "HW 1" in html
+        assert f"/instructor/courses/{course}/links" in offered
+        assert f"/instructor/courses/{course}/gradebook" in offered
+
+
 @pytest.mark.parametrize(
     ("regrade_earlier", "since"),
     [("", ", granted {granted}"), ("on", ", covering the answers given before it too")],
