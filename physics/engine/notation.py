@@ -346,7 +346,8 @@ def _forces(
             else:
                 tex = letter if len(members) == 1 else f"{letter}_{{{index}}}"
             source = Source.PHYSICS if letter in _LETTERS[family] else Source.GENERATED
-            forces[member] = Name(tex, kinds[member][1], source, _plain(tex))
+            says = author.get(member, (None, None))[1]  # the author's words, with the letter physics gives
+            forces[member] = Name(tex, says or kinds[member][1], source, _plain(tex))
             taken.add(tex)
     conditions = {name: kinds[name][2] for name in kinds}
     return forces, conditions

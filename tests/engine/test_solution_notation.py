@@ -307,3 +307,12 @@ def test_bodies_of_one_mass_whose_names_say_alike_are_told_apart_by_their_number
     unsaid = doc.model_copy(update={"model": {k: v for k, v in doc.model.items() if k != "notation"}})
     model = load_doc_model(unsaid, symbol_table(unsaid))
     assert dict(notation_of(model).bodies) == {"bob1": "bob 1", "bob2": "bob 2"}
+
+
+def test_a_forces_words_under_the_notation_are_said_with_the_letter_physics_gives_it() -> None:
+    # `upper: {says: …}` without a symbol was dropped: "the tension in the upper string", of a rod
+    forces = notation_of(_model("double-pendulum")).forces
+    assert (forces["upper"].tex, forces["upper"].words) == (
+        "T_{1}",
+        "the tension in the upper rod, which pulls the upper bob towards the fixed point",
+    )
