@@ -17,7 +17,12 @@ from physics.errors import AmbiguousInput, AnswerError
 from physics.mathinput import InputLimits, parse_math
 from physics.mathinput.render import in_student_style
 from physics.mathinput.tokens import Kind, Token, tokenize
-from physics.symbolic.dimensional import DimensionMismatch, UnknownDimension, expression_dimension
+from physics.symbolic.dimensional import (
+    DimensionMismatch,
+    UnknownDimension,
+    expression_dimension,
+    named_dimension,
+)
 from physics.symbolic.reading import read_symbolic_answer
 
 # Divisions whose sums are bracketed, each one to three ways: a few parses at most, on a wrong answer.
@@ -51,7 +56,7 @@ def unbracketed_sum(
             other = read_symbolic_answer(bracketed, names, limits, dimensions, expected)
         except AnswerError:
             continue
-        if _dimension(other.expr, dimensions) == expected:
+        if named_dimension(other.expr, dimensions) == expected:
             meant.setdefault(in_student_style(other.read_as.text), slash)
     if not meant:
         return None
@@ -75,14 +80,6 @@ def _unlike_terms(expr: sympy.Expr, dimensions: Mapping[str, Dimension]) -> str 
     except UnknownDimension:
         return None
     return None
-
-
-def _dimension(expr: sympy.Expr, dimensions: Mapping[str, Dimension]) -> Dimension | None:
-    known = {s: dimensions[s.name] for s in expr.free_symbols if s.name in dimensions}
-    try:
-        return expression_dimension(expr, known)
-    except (DimensionMismatch, UnknownDimension):
-        return None
 
 
 def _bracketings(text: str, tokens: list[Token]) -> list[tuple[int, str]]:

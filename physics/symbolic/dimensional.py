@@ -43,6 +43,16 @@ class UnknownDimension(PhyscheckError):
 _KEEPS_DIMENSION = (sympy.Abs, sympy.floor, sympy.ceiling, sympy.re, sympy.im)
 
 
+def named_dimension(expr: sympy.Expr, dimensions: Mapping[str, Dimension]) -> Dimension | None:
+    """The dimension of `expr` from its symbols' names, or None where it has none (unlike quantities
+    added, a symbol of unknown dimension): a reading's dimension, compared with the answer's."""
+    known = {s: dimensions[s.name] for s in expr.free_symbols if s.name in dimensions}
+    try:
+        return expression_dimension(expr, known)
+    except (DimensionMismatch, UnknownDimension):
+        return None
+
+
 def expression_dimension(expr: sympy.Basic, dims: Mapping[sympy.Symbol, Dimension]) -> Dimension:
     """The dimension of `expr`; raises DimensionMismatch or UnknownDimension."""
     if expr.is_Symbol:

@@ -16,7 +16,9 @@ from physics.dimensions import Dimension, describe
 from physics.errors import AmbiguousInput, AnswerError
 from physics.mathinput import InputLimits
 from physics.mathinput.render import in_student_style
-from physics.symbolic.dimensional import DimensionMismatch, UnknownDimension, expression_dimension
+from physics.symbolic.dimensional import (
+    named_dimension,
+)
 from physics.symbolic.reading import read_symbolic_answer
 
 # `^3/2`, `**-1/3`: whole numbers either side of the slash, the divisor a number alone (`^3/2m` is a
@@ -43,7 +45,7 @@ def fraction_exponent(
         typed = read_symbolic_answer(text, names, limits, dimensions, expected)
     except AnswerError:
         return None
-    if _dimension(typed.expr, dimensions) in (expected, None):
+    if named_dimension(typed.expr, dimensions) in (expected, None):
         return None
     for found in glued[:_MAX_EXPONENTS]:
         top, bottom = found.group(1), found.group(2)
@@ -57,7 +59,7 @@ def fraction_exponent(
             )
         except AnswerError:
             continue
-        if _dimension(other.expr, dimensions) == expected:
+        if named_dimension(other.expr, dimensions) == expected:
             meant = in_student_style(other.read_as.text)
             caret = text[found.start() : found.start(1)]
             return AmbiguousInput(
@@ -68,11 +70,3 @@ def fraction_exponent(
                 [in_student_style(typed.read_as.text), meant],
             )
     return None
-
-
-def _dimension(expr: sympy.Expr, dimensions: Mapping[str, Dimension]) -> Dimension | None:
-    known = {s: dimensions[s.name] for s in expr.free_symbols if s.name in dimensions}
-    try:
-        return expression_dimension(expr, known)
-    except (DimensionMismatch, UnknownDimension):
-        return None
